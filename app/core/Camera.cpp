@@ -1,0 +1,17 @@
+#include "Camera.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace phonglab {
+
+glm::dmat4 Camera::viewMatrix() const
+{
+    return glm::lookAt(eye, target, up);
+}
+
+glm::dmat4 Camera::projectionMatrix(double aspect) const
+{
+    return glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane);
+}
+
+} // namespace phonglab

@@ -1,0 +1,21 @@
+#pragma once
+#include <glm/glm.hpp>
+
+namespace phonglab {
+
+// A pinhole camera looking from eye to target. fovDeg is the vertical field of
+// view; the aspect ratio (width / height) comes from the image being rendered.
+struct Camera {
+    glm::dvec3 eye{0.0, 0.0, 4.0};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovDeg = 45.0;
+    double nearPlane = 0.1;
+    double farPlane = 100.0;
+
+    glm::dmat4 viewMatrix() const;
+    glm::dmat4 projectionMatrix(double aspect) const;
+    bool operator==(const Camera &) const = default;
+};
+
+} // namespace phonglab

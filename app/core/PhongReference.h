@@ -1,0 +1,44 @@
+#pragma once
+#include "Material.h"
+#include "PointLight.h"
+
+#include <glm/glm.hpp>
+#include <span>
+
+namespace phonglab {
+
+// The CPU reference of PhongLab's illumination equation, in double precision:
+//
+//   I = Ia·ka + Σ_i f_att,i · (Id,i·kd·max(0, N·L_i) + Is,i·ks·max(0, R_i·V)^n)
+//   f_att = min(1 / (c1 + c2·d + c3·d²), 1)
+//
+// Everything here is in camera coordinates (the eye sits at the origin).
+// The one deliberate addition to the formula: where N·L ≤ 0 the light is
+// behind the surface and contributes no specular term either (otherwise R·V
+// can be positive for a light shining on the back and paint a highlight on an
+// unlit side). shaders/phong.frag does exactly the same.
+
+struct CameraSpaceLight {
+    glm::dvec3 position{0.0};      // camera coordinates (a point)
+    glm::dvec3 diffuse{1.0};       // Id
+    glm::dvec3 specular{1.0};      // Is
+    glm::dvec3 attenuation{1.0, 0.0, 0.0}; // c1, c2, c3
+};
+
+// f_att for distance d. Assumes c1 + c2·d + c3·d² > 0 (the scene loader
+// refuses attenuation that could make it non-positive).
+double attenuationFactor(const glm::dvec3 &c, double d);
+
+// Light arriving at surface point `position` (camera space) with unit or
+// non-unit normal `normal` (camera space; normalised here).
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                          const Material &material, const glm::dvec3 &ambient,
+                          std::span<const CameraSpaceLight> lights);
+
+// World-space lights moved into camera space with the view matrix alone.
+CameraSpaceLight toCameraSpace(const PointLight &light, const glm::dmat4 &view);
+
+// Output encoding shared with the GPU path: round(clamp(I, 0, 1) · 255).
+int encodeChannel(double intensity);
+
+} // namespace phonglab

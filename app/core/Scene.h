@@ -1,0 +1,40 @@
+#pragma once
+#include "Camera.h"
+#include "Material.h"
+#include "PointLight.h"
+#include "ShadingMethod.h"
+#include "Transform.h"
+
+#include <QString>
+#include <vector>
+
+namespace phonglab {
+
+// One mesh placed in the world with its own material. `mesh` is kept exactly
+// as written in the scene file: "builtin:sphere", "builtin:torus", or a path
+// relative to the scene file's folder (see Scene::resolveMeshPath).
+struct SceneObject {
+    QString mesh;
+    Transform transform;
+    Material material;
+
+    bool operator==(const SceneObject &) const = default;
+};
+
+struct Scene {
+    std::vector<SceneObject> objects;
+    Camera camera;
+    glm::dvec3 ambient{0.2, 0.2, 0.2}; // Ia
+    std::vector<PointLight> lights;
+    ShadingMethod shading = ShadingMethod::Phong;
+    glm::dvec3 background{0.08, 0.08, 0.1};
+
+    // Folder the scene was loaded from; relative mesh paths resolve against it.
+    // Not part of the scene's content, so not compared.
+    QString baseDir;
+
+    QString resolveMeshPath(const QString &mesh) const;
+    bool operator==(const Scene &other) const;
+};
+
+} // namespace phonglab

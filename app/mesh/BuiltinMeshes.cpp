@@ -1,0 +1,84 @@
+#include "BuiltinMeshes.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace phonglab {
+
+namespace {
+
+// Indices for a (columns+1) × (rows+1) vertex grid, two triangles per cell,
+// counter-clockwise when seen from outside.
+void appendGridIndices(MeshData &mesh, int columns, int rows)
+{
+    const int stride = columns + 1;
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            const std::uint32_t a = r * stride + c;
+            const std::uint32_t b = a + stride;
+            mesh.indices.insert(mesh.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    }
+}
+
+} // namespace
+
+MeshData makeUvSphere(int slices, int stacks)
+{
+    MeshData mesh;
+    constexpr double pi = std::numbers::pi;
+    for (int r = 0; r <= stacks; ++r) {
+        const double theta = pi * r / stacks; // 0 at +Y pole
+        for (int c = 0; c <= slices; ++c) {
+            const double phi = 2.0 * pi * c / slices;
+            const glm::dvec3 p(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+            mesh.positions.emplace_back(p);
+            mesh.normals.emplace_back(p);
+        }
+    }
+    appendGridIndices(mesh, slices, stacks);
+    return mesh;
+}
+
+MeshData makeTorus(int ringSegments, int tubeSegments, double majorRadius, double minorRadius)
+{
+    MeshData mesh;
+    constexpr double pi = std::numbers::pi;
+    for (int t = 0; t <= tubeSegments; ++t) {
+        const double v = 2.0 * pi * t / tubeSegments; // around the tube
+        for (int r = 0; r <= ringSegments; ++r) {
+            const double u = 2.0 * pi * r / ringSegments; // around Y
+            const glm::dvec3 ringDir(std::sin(u), 0.0, std::cos(u));
+            const glm::dvec3 normal = std::cos(v) * ringDir + glm::dvec3(0.0, std::sin(v), 0.0);
+            mesh.positions.emplace_back(majorRadius * ringDir + minorRadius * normal);
+            mesh.normals.emplace_back(normal);
+        }
+    }
+    // Rows advance along v (around the tube); columns along u. Flip the cell
+    // order so triangles wind counter-clockwise seen from outside.
+    const int stride = ringSegments + 1;
+    for (int t = 0; t < tubeSegments; ++t) {
+        for (int r = 0; r < ringSegments; ++r) {
+            const std::uint32_t a = t * stride + r;
+            const std::uint32_t b = a + stride;
+            mesh.indices.insert(mesh.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+        }
+    }
+    return mesh;
+}
+
+bool isBuiltinMeshSpec(const QString &spec)
+{
+    return spec.startsWith(QLatin1String("builtin:"));
+}
+
+std::optional<MeshData> builtinMesh(const QString &spec)
+{
+    if (spec == QLatin1String("builtin:sphere"))
+        return makeUvSphere(256, 128);
+    if (spec == QLatin1String("builtin:torus"))
+        return makeTorus(192, 96);
+    return std::nullopt;
+}
+
+} // namespace phonglab
