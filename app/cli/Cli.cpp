@@ -1,0 +1,59 @@
+#include "Cli.h"
+
+#include "CliCommon.h"
+#include "RenderCommand.h"
+
+#include <QString>
+
+namespace phonglab::cli {
+
+namespace {
+
+struct Subcommand {
+    const char *name;
+    const char *summary;
+    int (*run)(int, char **);
+};
+
+constexpr Subcommand kSubcommands[] = {
+    {"render", "render a scene offscreen into a PNG", runRender},
+};
+
+void printHelp()
+{
+    QString text = QStringLiteral(
+        "usage: phonglab [SCENE.json]          start the editor (default scene when none given)\n"
+        "       phonglab <command> [options]   run a command without a window\n\n"
+        "commands:\n");
+    for (const Subcommand &c : kSubcommands)
+        text += QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -10).arg(QString::fromLatin1(c.summary));
+    text += QStringLiteral("\n'phonglab <command> --help' describes a command's options.");
+    printLine(text);
+}
+
+} // namespace
+
+std::optional<int> dispatch(int argc, char **argv)
+{
+    if (argc < 2)
+        return std::nullopt;
+    const QString first = QString::fromLocal8Bit(argv[1]);
+    if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+        printHelp();
+        return kExitOk;
+    }
+    if (first == QLatin1String("--version")) {
+        printLine(QStringLiteral("phonglab " PHONGLAB_VERSION));
+        return kExitOk;
+    }
+    for (const Subcommand &c : kSubcommands)
+        if (first == QLatin1String(c.name))
+            return c.run(argc, argv);
+    if (first.startsWith(QLatin1Char('-'))) {
+        printError(QStringLiteral("unknown option '%1' (see phonglab --help)").arg(first));
+        return kExitUsage;
+    }
+    return std::nullopt; // a scene file for the GUI
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,24 @@
+#pragma once
+#include <QString>
+#include <QStringList>
+
+namespace phonglab::cli {
+
+// Exit codes shared by every subcommand (scripts rely on them).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1; // bad input, render or compile failure
+inline constexpr int kExitUsage = 2;   // wrong arguments
+
+// "phonglab: error: MESSAGE" on stderr.
+void printError(const QString &message);
+void printLine(const QString &text);     // stdout
+void printErrLine(const QString &text);  // stderr, verbatim
+
+QStringList argumentsFrom(int argc, char **argv);
+
+// Makes sure a GUI application can start without a display: when no X server
+// is reachable and no platform was chosen, use Qt's offscreen platform so the
+// failure becomes a clear "no OpenGL context" message rather than an abort.
+void chooseHeadlessPlatformIfNeeded();
+
+} // namespace phonglab::cli

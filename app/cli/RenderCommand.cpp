@@ -1,0 +1,194 @@
+#include "RenderCommand.h"
+
+#include "CliCommon.h"
+#include "core/ResourcePaths.h"
+#include "core/SceneJson.h"
+#include "render/OffscreenRenderer.h"
+#include "render/ShaderSource.h"
+
+#include <QCommandLineParser>
+#include <QGuiApplication>
+#include <QRegularExpression>
+#include <QSaveFile>
+#include <QSurfaceFormat>
+
+#include <optional>
+#include <variant>
+
+namespace phonglab::cli {
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+
+struct RenderArgs {
+    QString scenePath;
+    QString outputPath;
+    QSize size{800, 600};
+    QString vertexPath;
+    QString fragmentPath;
+};
+
+std::optional<QSize> parseSize(const QString &text)
+{
+    static const QRegularExpression re(QStringLiteral(R"(^(\d{1,6})[xX](\d{1,6})$)"));
+    const auto m = re.match(text);
+    if (!m.hasMatch())
+        return std::nullopt;
+    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        return std::nullopt;
+    return QSize(w, h);
+}
+
+// Returns the arguments, or an exit code for usage errors / --help.
+std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    parser.addOption(help);
+    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    QStringLiteral("Output PNG file."), QStringLiteral("file"));
+    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Image size, default 800x600."),
+                                  QStringLiteral("WxH"));
+    const QCommandLineOption vertex(QStringLiteral("vertex"),
+                                    QStringLiteral("Vertex shader to use instead of the scene's."), QStringLiteral("file"));
+    const QCommandLineOption fragment(QStringLiteral("fragment"),
+                                      QStringLiteral("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
+    parser.addOptions({output, size, vertex, fragment});
+
+    auto usage = [&](const QString &message) {
+        printError(message);
+        printErrLine(QStringLiteral("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--vertex FILE] [--fragment FILE]"));
+        return kExitUsage;
+    };
+    if (!parser.parse(arguments))
+        return usage(parser.errorText());
+    if (parser.isSet(help)) {
+        printLine(QStringLiteral(
+            "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--vertex FILE] [--fragment FILE]\n\n"
+            "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
+            "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
+            "  --size WxH          image size in pixels, default 800x600\n"
+            "  --vertex FILE       vertex shader instead of the scene's shading method\n"
+            "  --fragment FILE     fragment shader instead of the scene's shading method\n\n"
+            "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
+            "Compile errors are printed as FILE:LINE:COL: error: MESSAGE."));
+        return kExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1)
+        return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")
+                                          : QStringLiteral("exactly one scene file expected"));
+    if (!parser.isSet(output) || parser.value(output).isEmpty())
+        return usage(QStringLiteral("missing -o OUT.png"));
+
+    RenderArgs args;
+    args.scenePath = positional.first();
+    args.outputPath = parser.value(output);
+    if (parser.isSet(size)) {
+        const auto parsed = parseSize(parser.value(size));
+        if (!parsed)
+            return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
+                             .arg(kMaxImageSide).arg(parser.value(size)));
+        args.size = *parsed;
+    }
+    args.vertexPath = parser.value(vertex);
+    args.fragmentPath = parser.value(fragment);
+    return args;
+}
+
+bool writePng(const QImage &image, const QString &path, QString *error)
+{
+    // QSaveFile: the PNG appears only once it is complete.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    if (!image.save(&file, "PNG")) {
+        file.cancelWriting();
+        *error = QStringLiteral("%1: PNG encoding failed").arg(path);
+        return false;
+    }
+    if (!file.commit()) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+CompileResult buildProgram(Renderer &renderer, const RenderArgs &args, ShadingMethod shading, QString *error)
+{
+    if (args.vertexPath.isEmpty() && args.fragmentPath.isEmpty())
+        return renderer.loadShading(shading);
+    const QString name = shadingName(shading);
+    const QString vsPath = args.vertexPath.isEmpty() ? shaderPath(name + QStringLiteral(".vert")) : args.vertexPath;
+    const QString fsPath = args.fragmentPath.isEmpty() ? shaderPath(name + QStringLiteral(".frag")) : args.fragmentPath;
+    const ShaderSource vs = ShaderSource::fromFile(vsPath, error);
+    const ShaderSource fs = ShaderSource::fromFile(fsPath, error);
+    if (!error->isEmpty())
+        return {};
+    return renderer.setProgramSources(vs, fs);
+}
+
+int render(const RenderArgs &args, int argc, char **argv)
+{
+    const SceneLoadResult loaded = loadSceneFile(args.scenePath);
+    if (!loaded.ok()) {
+        printError(QStringLiteral("%1: %2").arg(args.scenePath, loaded.error));
+        return kExitFailure;
+    }
+    for (const QString &w : loaded.warnings)
+        printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
+
+    chooseHeadlessPlatformIfNeeded();
+    QGuiApplication app(argc, argv);
+    OffscreenRenderer offscreen;
+    QString error;
+    if (!offscreen.create(&error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    Renderer &renderer = offscreen.renderer();
+    if (!renderer.setScene(*loaded.scene, &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    const CompileResult program = buildProgram(renderer, args, loaded.scene->shading, &error);
+    if (!error.isEmpty()) {
+        printError(error);
+        return kExitFailure;
+    }
+    for (const ShaderDiagnostic &d : program.diagnostics)
+        printErrLine(d.format());
+    if (!program.ok) {
+        printError(QStringLiteral("the shaders did not compile; no image written"));
+        return kExitFailure;
+    }
+    const QImage image = offscreen.renderImage(args.size);
+    if (image.isNull()) {
+        printError(QStringLiteral("rendering failed"));
+        return kExitFailure;
+    }
+    if (!writePng(image, args.outputPath, &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+} // namespace
+
+int runRender(int argc, char **argv)
+{
+    // argv[0] is the program, argv[1] "render": the parser sees "render" as the program name.
+    const QStringList arguments = argumentsFrom(argc, argv).mid(1);
+    const auto parsed = parseArgs(arguments);
+    if (const int *code = std::get_if<int>(&parsed))
+        return *code;
+    return render(std::get<RenderArgs>(parsed), argc, argv);
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,46 @@
+#pragma once
+#include "Camera.h"
+#include "ReferenceImage.h"
+#include "Scene.h"
+
+#include <QString>
+#include <optional>
+
+namespace phonglab {
+
+// The CPU ground truth for a whole scene: every object is ray-cast against the
+// analytic surface its builtin mesh approximates ("builtin:sphere" is the unit
+// sphere, "builtin:torus" the torus of BuiltinMeshes.h), then shaded with
+// phongIntensity() at the exact hit point and exact normal. Rays follow the
+// GPU's conventions (pixel centres, vertical fov, near/far clip, normals by
+// the normal matrix, no back-face culling), so a correct GPU render differs
+// from this only by tessellation, interpolation and float precision.
+//
+// Objects with any other mesh have no analytic surface: the result is nullopt
+// and *error names the mesh.
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                           QString *error = nullptr);
+
+// A ray o + t·d; d need not be unit length (t then keeps its meaning across a
+// change of coordinates, which is what lets camera-space depth be compared
+// between objects intersected in their own object space).
+struct Ray {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};
+
+    glm::dvec3 at(double t) const { return origin + t * direction; }
+};
+
+// Camera-space ray through the centre of pixel (x, y), y = 0 the top row.
+// Its direction has z = -1, so the ray parameter t IS the camera-space depth -z.
+Ray cameraRay(const Camera &camera, int x, int y, int width, int height);
+
+// Smallest t in [tMin, tMax] where the ray meets the surface, if any.
+std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tMax);
+std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
+                                     double majorRadius, double minorRadius);
+
+// Exact outward object-space normal of the torus (around Y) at surface point p.
+glm::dvec3 torusNormal(const glm::dvec3 &p, double majorRadius);
+
+} // namespace phonglab

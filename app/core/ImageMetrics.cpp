@@ -1,0 +1,221 @@
+#include "ImageMetrics.h"
+
+#include "PhongReference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+namespace phonglab {
+
+namespace {
+
+// Sums squared channel differences one pixel at a time and keeps the worst.
+class ErrorAccumulator
+{
+public:
+    void add(const uchar *a, const uchar *b, int x, int y)
+    {
+        for (int c = 0; c < 3; ++c) {
+            const int diff = std::abs(int(a[c]) - int(b[c]));
+            m_sumSquares += double(diff) * diff;
+            if (diff > m_result.maxError) {
+                m_result.maxError = diff;
+                m_result.worstPixel = QPoint(x, y);
+            }
+        }
+        ++m_result.pixelsCompared;
+    }
+
+    ImageComparison result() const
+    {
+        ImageComparison r = m_result;
+        if (r.pixelsCompared == 0)
+            return r; // nothing compared: psnr stays 0 so no check passes vacuously
+        r.rmse = std::sqrt(m_sumSquares / (3.0 * double(r.pixelsCompared)));
+        r.psnr = r.rmse == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / r.rmse);
+        return r;
+    }
+
+private:
+    ImageComparison m_result;
+    double m_sumSquares = 0;
+};
+
+QImage toRgb888(const QImage &image)
+{
+    return image.format() == QImage::Format_RGB888 ? image : image.convertToFormat(QImage::Format_RGB888);
+}
+
+bool sameSize(const QImage &rendered, const ReferenceImage &reference)
+{
+    return !rendered.isNull() && !reference.isNull() && rendered.width() == reference.width
+        && rendered.height() == reference.height;
+}
+
+// 1 where a pixel's coverage differs from one of its 8 neighbours.
+std::vector<std::uint8_t> silhouettePixels(const ReferenceImage &ref)
+{
+    std::vector<std::uint8_t> edge(ref.coverage.size(), 0);
+    for (int y = 0; y < ref.height; ++y) {
+        for (int x = 0; x < ref.width; ++x) {
+            const bool here = ref.covered(x, y);
+            for (int dy = -1; dy <= 1 && !edge[ref.index(x, y)]; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height)
+                        continue; // the image border is not a silhouette
+                    if (ref.covered(nx, ny) != here) {
+                        edge[ref.index(x, y)] = 1;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    return edge;
+}
+
+// Dilates `mask` (width × height) by a (2r+1)² square, i.e. marks every pixel
+// within Chebyshev distance r of a set pixel. Separable: a row pass then a
+// column pass, each a sliding window count, so the cost does not grow with r.
+std::vector<std::uint8_t> dilateSquare(const std::vector<std::uint8_t> &mask, int width, int height, int r)
+{
+    auto pass = [r](const std::vector<std::uint8_t> &in, int count, int length, auto at) {
+        std::vector<std::uint8_t> out(in.size(), 0);
+        for (int line = 0; line < count; ++line) {
+            int inWindow = 0; // set pixels in [i - r, i + r]
+            for (int i = 0; i < std::min(r, length); ++i)
+                inWindow += in[at(line, i)];
+            for (int i = 0; i < length; ++i) {
+                if (i + r < length)
+                    inWindow += in[at(line, i + r)];
+                if (i - r - 1 >= 0)
+                    inWindow -= in[at(line, i - r - 1)];
+                out[at(line, i)] = inWindow > 0;
+            }
+        }
+        return out;
+    };
+    const auto rowMajor = [width](int row, int x) { return std::size_t(row) * width + x; };
+    const auto columnMajor = [width](int column, int y) { return std::size_t(y) * width + column; };
+    return pass(pass(mask, height, width, rowMajor), width, height, columnMajor);
+}
+
+// 1 for the pixels compareWithReference() compares.
+std::vector<std::uint8_t> comparedPixels(const ReferenceImage &reference, int bandPx)
+{
+    const std::vector<std::uint8_t> band =
+        dilateSquare(silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
+    std::vector<std::uint8_t> compared(band.size(), 0);
+    for (std::size_t i = 0; i < band.size(); ++i)
+        compared[i] = reference.coverage[i] != 0 && !band[i];
+    return compared;
+}
+
+void encodeReferencePixel(const ReferenceImage &reference, std::size_t i, uchar *out)
+{
+    const glm::dvec3 &I = reference.color[i];
+    out[0] = uchar(encodeChannel(I.r));
+    out[1] = uchar(encodeChannel(I.g));
+    out[2] = uchar(encodeChannel(I.b));
+}
+
+QRgb heatColor(int error)
+{
+    // Dark green at 0, yellow at 4/255, red at 8/255 and beyond.
+    const double t = std::min(error, 8) / 8.0;
+    if (error == 0)
+        return qRgb(0, 64, 0);
+    if (t <= 0.5)
+        return qRgb(int(510 * t), 255, 0);
+    return qRgb(255, int(510 * (1.0 - t)), 0);
+}
+
+} // namespace
+
+QString ImageComparison::summary() const
+{
+    if (pixelsCompared == 0)
+        return QStringLiteral("no pixels compared");
+    const QString psnrText = std::isinf(psnr) ? QStringLiteral("inf") : QString::number(psnr, 'f', 2);
+    return QStringLiteral("PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px")
+        .arg(psnrText)
+        .arg(rmse, 0, 'f', 2)
+        .arg(maxError)
+        .arg(worstPixel.x())
+        .arg(worstPixel.y())
+        .arg(pixelsCompared);
+}
+
+ImageComparison compareWithReference(const QImage &rendered, const ReferenceImage &reference, int bandPx)
+{
+    if (!sameSize(rendered, reference))
+        return {};
+    const QImage image = toRgb888(rendered);
+    const std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
+    ErrorAccumulator errors;
+    for (int y = 0; y < reference.height; ++y) {
+        const uchar *row = image.constScanLine(y);
+        for (int x = 0; x < reference.width; ++x) {
+            const std::size_t i = reference.index(x, y);
+            if (!compared[i])
+                continue;
+            uchar expected[3];
+            encodeReferencePixel(reference, i, expected);
+            errors.add(row + 3 * x, expected, x, y);
+        }
+    }
+    return errors.result();
+}
+
+ImageComparison compareImages(const QImage &a, const QImage &b)
+{
+    if (a.isNull() || b.isNull() || a.size() != b.size())
+        return {};
+    const QImage rgbA = toRgb888(a);
+    const QImage rgbB = toRgb888(b);
+    ErrorAccumulator errors;
+    for (int y = 0; y < rgbA.height(); ++y) {
+        const uchar *rowA = rgbA.constScanLine(y);
+        const uchar *rowB = rgbB.constScanLine(y);
+        for (int x = 0; x < rgbA.width(); ++x)
+            errors.add(rowA + 3 * x, rowB + 3 * x, x, y);
+    }
+    return errors.result();
+}
+
+QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx)
+{
+    if (!sameSize(rendered, reference))
+        return {};
+    const QImage image = toRgb888(rendered);
+    const std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
+    QImage heatmap(reference.width, reference.height, QImage::Format_RGB32);
+    for (int y = 0; y < reference.height; ++y) {
+        const uchar *row = image.constScanLine(y);
+        auto *out = reinterpret_cast<QRgb *>(heatmap.scanLine(y));
+        for (int x = 0; x < reference.width; ++x) {
+            const std::size_t i = reference.index(x, y);
+            if (!reference.coverage[i]) {
+                out[x] = qRgb(0, 0, 0);
+                continue;
+            }
+            if (!compared[i]) {
+                out[x] = qRgb(0, 0, 96);
+                continue;
+            }
+            uchar expected[3];
+            encodeReferencePixel(reference, i, expected);
+            int worst = 0;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(int(row[3 * x + c]) - int(expected[c])));
+            out[x] = heatColor(worst);
+        }
+    }
+    return heatmap;
+}
+
+} // namespace phonglab

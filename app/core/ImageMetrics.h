@@ -1,0 +1,40 @@
+#pragma once
+#include "ReferenceImage.h"
+
+#include <QImage>
+#include <QPoint>
+#include <QString>
+
+namespace phonglab {
+
+// How far an 8-bit render is from another image or from the CPU reference,
+// in 8-bit steps per channel.
+struct ImageComparison {
+    double psnr = 0;           // 20·log10(255 / rmse) dB; +inf when identical; 0 when nothing was compared
+    double rmse = 0;           // over every compared channel value
+    int maxError = 0;          // largest |difference| of one channel, 0..255
+    QPoint worstPixel;         // first pixel (row-major) with maxError
+    qint64 pixelsCompared = 0; // 0 on a size mismatch
+
+    // "PSNR 54.21 dB, RMSE 0.49, max 2/255 at (120,88), 41234 px"
+    QString summary() const;
+};
+
+// Compares `rendered` with the reference quantised by encodeChannel(), over
+// the pixels the reference covers that lie more than bandPx pixels
+// (Chebyshev distance) from every silhouette pixel. A silhouette pixel is one
+// whose coverage differs from one of its 8 neighbours; both sides of an edge
+// count, so bandPx = 0 already leaves out the edge pixels themselves, which a
+// tessellated mesh covers differently from the analytic surface.
+ImageComparison compareWithReference(const QImage &rendered, const ReferenceImage &reference, int bandPx);
+
+// Every pixel, R, G and B.
+ImageComparison compareImages(const QImage &a, const QImage &b);
+
+// A picture of where compareWithReference() found errors, for saving next to a
+// failing test: compared pixels ramp from dark green (exact) through yellow to
+// red (8/255 or more off), band pixels are dark blue, uncovered ones black.
+// Null on a size mismatch.
+QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx);
+
+} // namespace phonglab

@@ -1,0 +1,44 @@
+#pragma once
+#include "Scene.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace phonglab {
+
+// Reading and writing scene files (JSON). The format is described field by
+// field in docs/scene-format.md; keep the two in step.
+//
+// Errors are meant to be shown to the person who wrote the file, so every
+// message starts with the JSON path of the offending field, e.g.
+//   "lights[1].attenuation: c1 + c2 + c3 must be positive (got 0)"
+//   "camera.fov_deg: must be in (0, 180) degrees (got 180)"
+// The two exceptions are malformed JSON ("JSON syntax error at line L, ...")
+// and a top level that is not an object ("top level: ...").
+struct SceneLoadResult {
+    std::optional<Scene> scene; // set on success
+    QString error;              // set on failure
+    QStringList warnings;       // non-fatal findings, e.g. "camera.fovy: unknown key, ignored"
+
+    bool ok() const { return scene.has_value(); }
+};
+
+// Parses and validates a scene. `baseDir` becomes Scene::baseDir, the folder
+// relative mesh paths resolve against.
+SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir = {});
+
+// Reads `path` and parses it with baseDir = the file's folder (absolute).
+SceneLoadResult loadSceneFile(const QString &path);
+
+// Indented JSON that parseScene reads back into an equal Scene. Writes the
+// single-object form when the scene has exactly one object, else "objects".
+QByteArray sceneToJson(const Scene &scene);
+
+// Writes sceneToJson(scene) to `path` atomically (QSaveFile): on any failure
+// the previous file, if any, is left untouched. A scene that would not load
+// back (e.g. no objects, a zero scale) is refused rather than written.
+bool saveSceneFile(const Scene &scene, const QString &path, QString *error);
+
+} // namespace phonglab

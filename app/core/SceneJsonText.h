@@ -1,0 +1,28 @@
+#pragma once
+#include <QByteArray>
+#include <QJsonDocument>
+#include <QJsonValue>
+#include <QString>
+#include <optional>
+
+// Internal to SceneJson*.cpp: the JSON-text layer under the scene reader.
+namespace phonglab::scenejson {
+
+// QJsonDocument::fromJson rejects a number literal that overflows a double
+// (1e999) as a syntax error at a byte offset, which would hide which field it
+// was in. parseJsonText rewrites such literals into marker values so the
+// scene reader can refuse them with the field's path instead; literals that
+// underflow (1e-999) read as 0, the nearest double.
+//
+// On a genuine syntax error returns nullopt and sets *error to
+// "JSON syntax error at line L, column C (byte offset N): <Qt's reason>",
+// positions counted in the caller's original text.
+std::optional<QJsonDocument> parseJsonText(const QByteArray &json, QString *error);
+
+// The literal as written ("1e999") if `value` is an overflow marker.
+std::optional<QString> overflowLiteral(const QJsonValue &value);
+
+// "number", "string", ... for messages like "expected an array (got string)".
+QString describeType(const QJsonValue &value);
+
+} // namespace phonglab::scenejson

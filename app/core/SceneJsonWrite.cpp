@@ -1,0 +1,125 @@
+#include "SceneJson.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+namespace phonglab {
+
+namespace {
+
+// Every field is written, defaults included, so a saved file documents the
+// whole scene and does not change meaning if a default ever changes.
+// Qt writes doubles in shortest round-trip form, so values read back exactly.
+
+QJsonArray vec3Json(const glm::dvec3 &v)
+{
+    return QJsonArray{v.x, v.y, v.z};
+}
+
+QJsonObject transformJson(const Transform &transform)
+{
+    return QJsonObject{
+        {QStringLiteral("translate"), vec3Json(transform.translate)},
+        {QStringLiteral("rotate_deg"), vec3Json(transform.rotateDeg)},
+        {QStringLiteral("scale"), vec3Json(transform.scale)},
+    };
+}
+
+QJsonObject materialJson(const Material &material)
+{
+    return QJsonObject{
+        {QStringLiteral("ka"), vec3Json(material.ka)},
+        {QStringLiteral("kd"), vec3Json(material.kd)},
+        {QStringLiteral("ks"), vec3Json(material.ks)},
+        {QStringLiteral("shininess"), material.shininess},
+    };
+}
+
+QJsonObject cameraJson(const Camera &camera)
+{
+    return QJsonObject{
+        {QStringLiteral("eye"), vec3Json(camera.eye)},
+        {QStringLiteral("target"), vec3Json(camera.target)},
+        {QStringLiteral("up"), vec3Json(camera.up)},
+        {QStringLiteral("fov_deg"), camera.fovDeg},
+        {QStringLiteral("near"), camera.nearPlane},
+        {QStringLiteral("far"), camera.farPlane},
+    };
+}
+
+QJsonObject lightJson(const PointLight &light)
+{
+    return QJsonObject{
+        {QStringLiteral("position"), vec3Json(light.position)},
+        {QStringLiteral("diffuse"), vec3Json(light.diffuse)},
+        {QStringLiteral("specular"), vec3Json(light.specular)},
+        {QStringLiteral("attenuation"), vec3Json(light.attenuation)},
+    };
+}
+
+// The keys one object contributes: inside an "objects" entry, or at the top
+// level in the single-object form.
+void insertObject(QJsonObject &into, const SceneObject &object)
+{
+    into.insert(QStringLiteral("mesh"), object.mesh);
+    into.insert(QStringLiteral("transform"), transformJson(object.transform));
+    into.insert(QStringLiteral("material"), materialJson(object.material));
+}
+
+} // namespace
+
+QByteArray sceneToJson(const Scene &scene)
+{
+    QJsonObject root;
+    if (scene.objects.size() == 1) {
+        insertObject(root, scene.objects.front());
+    } else {
+        QJsonArray objects;
+        for (const SceneObject &object : scene.objects) {
+            QJsonObject entry;
+            insertObject(entry, object);
+            objects.append(entry);
+        }
+        root.insert(QStringLiteral("objects"), objects);
+    }
+    root.insert(QStringLiteral("camera"), cameraJson(scene.camera));
+    root.insert(QStringLiteral("ambient"), vec3Json(scene.ambient));
+    QJsonArray lights;
+    for (const PointLight &light : scene.lights)
+        lights.append(lightJson(light));
+    root.insert(QStringLiteral("lights"), lights);
+    root.insert(QStringLiteral("shading"), shadingName(scene.shading));
+    root.insert(QStringLiteral("background"), vec3Json(scene.background));
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool saveSceneFile(const Scene &scene, const QString &path, QString *error)
+{
+    const auto setError = [&](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+
+    const QByteArray json = sceneToJson(scene);
+    // Saving is the one place an invalid in-memory scene could become a file
+    // that no longer opens; check it by reading back what would be written.
+    const SceneLoadResult check = parseScene(json);
+    if (!check.ok())
+        return setError(QStringLiteral("refusing to save an invalid scene: %1").arg(check.error));
+
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return setError(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+    if (file.write(json) != json.size()) {
+        file.cancelWriting();
+        return setError(QStringLiteral("%1: write failed (%2)").arg(path, file.errorString()));
+    }
+    if (!file.commit())
+        return setError(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+    return true;
+}
+
+} // namespace phonglab

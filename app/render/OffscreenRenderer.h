@@ -1,0 +1,46 @@
+#pragma once
+#include "Renderer.h"
+
+#include <QImage>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <memory>
+
+namespace phonglab {
+
+// Headless rendering: its own context on a QOffscreenSurface, drawing into an
+// 8-bit RGBA framebuffer object without multisampling, so every pixel is
+// round(clamp(I, 0, 1) · 255) of exactly one fragment. Used by
+// `phonglab render`, the benchmarks and the GL tests.
+class OffscreenRenderer
+{
+public:
+    OffscreenRenderer();
+    ~OffscreenRenderer();
+
+    // Creates the context. False with a reason when no OpenGL 3.3 context can
+    // be had (no display, no driver).
+    bool create(QString *error);
+
+    // Must be called with nothing else current on this thread; makes the
+    // context current and leaves it so.
+    Renderer &renderer() { return m_renderer; }
+    void makeCurrent();
+
+    // Renders the renderer's current scene and reads it back as RGB888.
+    QImage renderImage(const QSize &size);
+
+    QString glRendererName() const { return m_rendererName; }
+
+private:
+    void destroy();
+
+    std::unique_ptr<QOpenGLContext> m_context;
+    std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
+    Renderer m_renderer;
+    QString m_rendererName;
+};
+
+} // namespace phonglab

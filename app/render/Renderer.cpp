@@ -1,0 +1,191 @@
+#include "Renderer.h"
+
+#include "core/ObjectMatrices.h"
+#include "core/ResourcePaths.h"
+#include "mesh/BuiltinMeshes.h"
+#include "mesh/MeshLoader.h"
+
+#include <algorithm>
+
+namespace phonglab {
+
+namespace {
+constexpr double kMarkerRadius = 0.06; // world units
+} // namespace
+
+Renderer::Renderer() = default;
+Renderer::~Renderer() = default;
+
+bool Renderer::initialize(QString *error)
+{
+    initializeOpenGLFunctions();
+    const ShaderSource vs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.vert")), error);
+    const ShaderSource fs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.frag")), error);
+    const CompileResult marker = m_markerProgram.build(vs, fs);
+    if (!marker.ok) {
+        if (error)
+            *error = QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary();
+        return false;
+    }
+    m_markerMesh.upload(makeUvSphere(16, 8));
+    m_initialized = true;
+    return true;
+}
+
+void Renderer::cleanup()
+{
+    if (!m_initialized)
+        return;
+    m_program.destroy();
+    m_markerProgram.destroy();
+    m_markerMesh.destroy();
+    for (auto &mesh : m_meshes)
+        mesh->destroy();
+    m_meshes.clear();
+    m_initialized = false;
+}
+
+bool Renderer::setScene(const Scene &scene, QString *error)
+{
+    QHash<QString, std::shared_ptr<GpuMesh>> meshes;
+    for (const SceneObject &object : scene.objects) {
+        const QString spec = scene.resolveMeshPath(object.mesh);
+        if (meshes.contains(spec))
+            continue;
+        if (auto existing = m_meshes.value(spec)) {
+            meshes.insert(spec, existing);
+            continue;
+        }
+        const MeshLoadResult loaded = loadMesh(spec);
+        if (!loaded.ok()) {
+            // Nothing uploaded so far is kept: the old scene stays intact.
+            for (auto it = meshes.begin(); it != meshes.end(); ++it)
+                if (!m_meshes.contains(it.key()))
+                    it.value()->destroy();
+            if (error)
+                *error = loaded.error;
+            return false;
+        }
+        auto gpu = std::make_shared<GpuMesh>();
+        gpu->upload(*loaded.mesh);
+        meshes.insert(spec, gpu);
+    }
+    for (auto it = m_meshes.begin(); it != m_meshes.end(); ++it)
+        if (!meshes.contains(it.key()))
+            it.value()->destroy();
+    m_meshes = std::move(meshes);
+    m_scene = scene;
+    return true;
+}
+
+void Renderer::updateSceneParameters(const Scene &scene)
+{
+    m_scene = scene;
+}
+
+CompileResult Renderer::loadShading(ShadingMethod method)
+{
+    const QString name = shadingName(method);
+    QString error;
+    const ShaderSource vs = ShaderSource::fromFile(shaderPath(name + QStringLiteral(".vert")), &error);
+    const ShaderSource fs = ShaderSource::fromFile(shaderPath(name + QStringLiteral(".frag")), &error);
+    if (!error.isEmpty()) {
+        CompileResult failed;
+        failed.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, error});
+        return failed;
+    }
+    return setProgramSources(vs, fs);
+}
+
+CompileResult Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
+{
+    return m_program.build(vertex, fragment);
+}
+
+void Renderer::render(const QSize &pixelSize)
+{
+    const glm::dvec3 bg = m_scene.background;
+    glViewport(0, 0, pixelSize.width(), pixelSize.height());
+    glClearColor(float(bg.r), float(bg.g), float(bg.b), 1.0f);
+    glClearDepthf(1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    m_trianglesDrawn = 0;
+    if (!m_program.isValid() || pixelSize.isEmpty())
+        return;
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    if (m_options.cullBackFaces) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+
+    const double aspect = double(pixelSize.width()) / double(pixelSize.height());
+    const glm::dmat4 view = m_scene.camera.viewMatrix();
+    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect);
+    drawObjects(view, projection);
+    if (m_options.drawLightMarkers)
+        drawLightMarkers(view, projection);
+    glUseProgram(0);
+}
+
+void Renderer::uploadLights(const glm::dmat4 &view)
+{
+    const int count = std::min<int>(int(m_scene.lights.size()), kMaxLights);
+    glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights], attenuation[kMaxLights];
+    for (int i = 0; i < count; ++i) {
+        const PointLight &l = m_scene.lights[i];
+        position[i] = glm::vec3(l.position); // world coordinates: the shader applies the view
+        diffuse[i] = glm::vec3(l.diffuse);
+        specular[i] = glm::vec3(l.specular);
+        attenuation[i] = glm::vec3(l.attenuation);
+    }
+    m_program.setUniform("viewMatrix", glm::mat4(view));
+    m_program.setUniform("Ia", glm::vec3(m_scene.ambient));
+    m_program.setUniform("lightCount", count);
+    m_program.setUniformArray("lightPosition", position, count);
+    m_program.setUniformArray("Id", diffuse, count);
+    m_program.setUniformArray("Is", specular, count);
+    m_program.setUniformArray("attenuation", attenuation, count);
+}
+
+void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
+{
+    m_program.bind();
+    uploadLights(view);
+    m_program.setUniform("projectionMatrix", glm::mat4(projection));
+    for (const SceneObject &object : m_scene.objects) {
+        const auto mesh = m_meshes.value(m_scene.resolveMeshPath(object.mesh));
+        if (!mesh)
+            continue;
+        // Matrices in double on the CPU, once per draw; the shader gets floats.
+        const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
+        m_program.setUniform("modelViewMatrix", glm::mat4(m.modelView));
+        m_program.setUniform("normalMatrix", glm::mat3(m.normalMatrix));
+        m_program.setUniform("ka", glm::vec3(object.material.ka));
+        m_program.setUniform("kd", glm::vec3(object.material.kd));
+        m_program.setUniform("ks", glm::vec3(object.material.ks));
+        m_program.setUniform("shininess", float(object.material.shininess));
+        mesh->draw();
+        m_trianglesDrawn += mesh->indexCount() / 3;
+    }
+}
+
+void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection)
+{
+    m_markerProgram.bind();
+    for (const PointLight &light : m_scene.lights) {
+        const glm::dmat4 model = glm::dmat4(kMarkerRadius, 0, 0, 0, 0, kMarkerRadius, 0, 0, 0, 0, kMarkerRadius, 0,
+                                            light.position.x, light.position.y, light.position.z, 1);
+        // Show the light's hue even when its intensity is above 1 or very dim.
+        const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});
+        m_markerProgram.setUniform("mvpMatrix", glm::mat4(projection * view * model));
+        m_markerProgram.setUniform("color", glm::vec3(light.diffuse / peak));
+        m_markerMesh.draw();
+    }
+}
+
+} // namespace phonglab

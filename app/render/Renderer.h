@@ -1,0 +1,71 @@
+#pragma once
+#include "CompileResult.h"
+#include "GpuMesh.h"
+#include "ShaderProgram.h"
+#include "core/Scene.h"
+
+#include <QHash>
+#include <QOpenGLExtraFunctions>
+#include <QSize>
+#include <memory>
+
+namespace phonglab {
+
+// Draws a Scene with the current lighting program into whatever framebuffer
+// is bound. Knows nothing about widgets: the viewport, the offscreen target
+// and the tests all drive this class. Every call needs the context current;
+// call cleanup() before that context is destroyed.
+class Renderer : protected QOpenGLExtraFunctions
+{
+public:
+    struct Options {
+        bool drawLightMarkers = false;
+        bool cullBackFaces = true; // builtin and imported meshes are closed
+    };
+
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer &) = delete;
+    Renderer &operator=(const Renderer &) = delete;
+
+    // Prepares GL state and the light-marker program. False (with a reason)
+    // when the context cannot run PhongLab's shaders.
+    bool initialize(QString *error);
+    void cleanup();
+
+    // Loads every object's mesh. On failure the previous scene stays.
+    bool setScene(const Scene &scene, QString *error);
+    const Scene &scene() const { return m_scene; }
+    // Changes camera/lights/materials without touching meshes (cheap; for
+    // interaction). Objects must name the same meshes as the current scene.
+    void updateSceneParameters(const Scene &scene);
+
+    // The lighting program: the shipped one for a shading method, or any
+    // user sources. On failure the previous program keeps rendering.
+    CompileResult loadShading(ShadingMethod method);
+    CompileResult setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment);
+    bool hasProgram() const { return m_program.isValid(); }
+
+    void setOptions(const Options &options) { m_options = options; }
+    const Options &options() const { return m_options; }
+
+    // Renders one frame into a pixelSize framebuffer (device pixels).
+    void render(const QSize &pixelSize);
+    qint64 trianglesDrawn() const { return m_trianglesDrawn; }
+
+private:
+    void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection);
+    void uploadLights(const glm::dmat4 &view);
+    void drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection);
+
+    bool m_initialized = false;
+    Options m_options;
+    Scene m_scene;
+    ShaderProgram m_program;
+    ShaderProgram m_markerProgram;
+    GpuMesh m_markerMesh;
+    QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by resolved mesh spec
+    qint64 m_trianglesDrawn = 0;
+};
+
+} // namespace phonglab

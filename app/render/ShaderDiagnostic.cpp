@@ -1,0 +1,132 @@
+#include "ShaderDiagnostic.h"
+
+#include <QRegularExpression>
+
+namespace phonglab {
+
+QString stageName(ShaderStage stage)
+{
+    switch (stage) {
+    case ShaderStage::Vertex: return QStringLiteral("vertex");
+    case ShaderStage::Fragment: return QStringLiteral("fragment");
+    case ShaderStage::Link: return QStringLiteral("link");
+    }
+    return {};
+}
+
+QString ShaderDiagnostic::format() const
+{
+    QString where = file.isEmpty() ? stageName(stage) : file;
+    if (line > 0) {
+        where += QLatin1Char(':') + QString::number(line);
+        if (column > 0)
+            where += QLatin1Char(':') + QString::number(column);
+    }
+    const QLatin1String kind = isError() ? QLatin1String("error") : QLatin1String("warning");
+    return QStringLiteral("%1: %2: %3").arg(where, kind, message);
+}
+
+namespace {
+
+struct LogPattern {
+    QRegularExpression regex;
+    int line, column, severity, message; // capture indices (0 = absent)
+};
+
+const std::vector<LogPattern> &logPatterns()
+{
+    using RE = QRegularExpression;
+    static const std::vector<LogPattern> patterns = {
+        // Mesa: 0:12(5): error: message
+        {RE(QStringLiteral(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:\s*(.*)$)"),
+            RE::CaseInsensitiveOption), 1, 2, 3, 4},
+        // NVIDIA: 0(12) : error C0000: message
+        {RE(QStringLiteral(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s*(?:[A-Z]\d+)?\s*:\s*(.*)$)"),
+            RE::CaseInsensitiveOption), 1, 0, 2, 3},
+        // AMD / ANGLE / glslang: ERROR: 0:12: message
+        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*\d+:(\d+)\s*:\s*(.*)$)"),
+            RE::CaseInsensitiveOption), 2, 0, 1, 3},
+        // Unlocated (linker): error: message
+        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 0, 0, 1, 2},
+    };
+    return patterns;
+}
+
+ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m,
+                           ShaderStage stage, const QString &file, int prologueLines)
+{
+    ShaderDiagnostic d;
+    d.stage = stage;
+    d.file = file;
+    d.severity = m.captured(p.severity).compare(QLatin1String("warning"), Qt::CaseInsensitive) == 0
+        ? ShaderDiagnostic::Severity::Warning : ShaderDiagnostic::Severity::Error;
+    d.message = m.captured(p.message).trimmed();
+    if (p.line) {
+        const int driverLine = m.captured(p.line).toInt();
+        d.line = driverLine > prologueLines ? driverLine - prologueLines : 0;
+    }
+    if (p.column && d.line > 0)
+        d.column = m.captured(p.column).toInt();
+    return d;
+}
+
+} // namespace
+
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage,
+                                             const QString &file, int prologueLines)
+{
+    std::vector<ShaderDiagnostic> out;
+    const QStringList lines = log.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (const QString &raw : lines) {
+        const QString text = raw.trimmed();
+        if (text.isEmpty())
+            continue;
+        bool matched = false;
+        for (const LogPattern &p : logPatterns()) {
+            const QRegularExpressionMatch m = p.regex.match(text);
+            if (m.hasMatch()) {
+                out.push_back(fromMatch(p, m, stage, file, prologueLines));
+                matched = true;
+                break;
+            }
+        }
+        // A continuation line (drivers wrap long messages): attach it to the
+        // previous diagnostic rather than dropping it.
+        if (!matched && !out.empty())
+            out.back().message += QLatin1Char(' ') + text;
+        else if (!matched) // banner or info text: keep it, but it decides nothing
+            out.push_back({stage, ShaderDiagnostic::Severity::Warning, file, 0, 0, text});
+    }
+    return out;
+}
+
+namespace {
+
+// 1-based column in `line` of the character at 1-based column `collapsed`
+// of the same line with each whitespace run collapsed to one space.
+int uncollapseColumn(const QByteArray &line, int collapsed)
+{
+    int position = 0;
+    for (int i = 0; i < line.size(); ++i) {
+        const bool space = line[i] == ' ' || line[i] == '\t' || line[i] == '\r';
+        if (space && i > 0 && (line[i - 1] == ' ' || line[i - 1] == '\t' || line[i - 1] == '\r'))
+            continue; // still inside the same run
+        if (++position == collapsed)
+            return i + 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+void mapColumnsToSource(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code)
+{
+    const QList<QByteArray> lines = code.split('\n');
+    for (ShaderDiagnostic &d : diagnostics) {
+        if (d.line <= 0 || d.column <= 0)
+            continue;
+        d.column = d.line <= lines.size() ? uncollapseColumn(lines[d.line - 1], d.column) : 0;
+    }
+}
+
+} // namespace phonglab

@@ -1,0 +1,43 @@
+#pragma once
+#include <QString>
+#include <vector>
+
+namespace phonglab {
+
+enum class ShaderStage { Vertex, Fragment, Link };
+
+// One compiler or linker message, located in the user's file: `line` and
+// `column` are 1-based in the text the user wrote (0 = unknown), whatever
+// the driver saw after any injected prologue.
+struct ShaderDiagnostic {
+    enum class Severity { Error, Warning };
+
+    ShaderStage stage = ShaderStage::Fragment;
+    Severity severity = Severity::Error;
+    QString file;   // path or label of the user's source
+    int line = 0;
+    int column = 0;
+    QString message;
+
+    // "FILE:LINE:COL: error: MESSAGE" (LINE/COL left out when unknown).
+    QString format() const;
+    bool isError() const { return severity == Severity::Error; }
+};
+
+// Parses a driver info log into diagnostics. Understands Mesa
+// ("0:12(5): error: ..."), NVIDIA ("0(12) : error C0000: ...") and the
+// "ERROR: 0:12: ..." form of AMD/ANGLE. `prologueLines` is the number of lines
+// the driver saw before the user's line 1 when no #line directive maps them
+// back; lines that fall inside the prologue are reported as line 0.
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage,
+                                             const QString &file, int prologueLines = 0);
+
+// Mesa reports columns in its preprocessor's output, where every run of
+// whitespace has become a single space. Maps such columns back onto the
+// user's text (the line of `code` the diagnostic names); columns beyond the
+// line are dropped. Lines are untouched.
+void mapColumnsToSource(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code);
+
+QString stageName(ShaderStage stage);
+
+} // namespace phonglab

@@ -1,0 +1,50 @@
+#pragma once
+#include "CompileResult.h"
+#include "ShaderSource.h"
+
+#include <QHash>
+#include <QOpenGLExtraFunctions>
+#include <glm/glm.hpp>
+
+namespace phonglab {
+
+// A linked GL program built from two user-visible sources. Compiles through
+// glShaderSource directly (not QOpenGLShader) so the driver sees exactly the
+// user's lines, plus an optional prologue that #line maps back. Requires a
+// current context for every call; destroy() before the context goes away.
+class ShaderProgram : protected QOpenGLExtraFunctions
+{
+public:
+    ShaderProgram() = default;
+    ShaderProgram(const ShaderProgram &) = delete;
+    ShaderProgram &operator=(const ShaderProgram &) = delete;
+    ~ShaderProgram() = default; // GL objects are freed by destroy(), with a context
+
+    // Builds a new program. On failure the previous program (if any) stays
+    // in place and usable; the result carries the diagnostics.
+    CompileResult build(const ShaderSource &vertex, const ShaderSource &fragment,
+                        const QStringList &defines = {});
+    void destroy();
+
+    bool isValid() const { return m_program != 0; }
+    GLuint id() const { return m_program; }
+    void bind();
+
+    GLint uniformLocation(const char *name);
+    void setUniform(const char *name, const glm::mat4 &m);
+    void setUniform(const char *name, const glm::mat3 &m);
+    void setUniform(const char *name, const glm::vec3 &v);
+    void setUniform(const char *name, float f);
+    void setUniform(const char *name, int i);
+    void setUniformArray(const char *name, const glm::vec3 *values, int count);
+
+private:
+    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
+                        CompileResult &result);
+
+    bool m_initialized = false;
+    GLuint m_program = 0;
+    QHash<QByteArray, GLint> m_locations;
+};
+
+} // namespace phonglab

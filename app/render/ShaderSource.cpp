@@ -1,0 +1,73 @@
+#include "ShaderSource.h"
+
+#include <QFile>
+
+namespace phonglab {
+
+ShaderSource ShaderSource::fromFile(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: cannot read shader: %2").arg(path, file.errorString());
+        return {path, {}};
+    }
+    return {path, file.readAll()};
+}
+
+namespace {
+
+// Index just past the line holding `#version`, or 0 if the first directive
+// is something else. Comments and blank lines may come before #version.
+qsizetype endOfVersionLine(const QByteArray &code, int *versionLine)
+{
+    qsizetype pos = 0;
+    int line = 1;
+    while (pos < code.size()) {
+        const qsizetype eol = code.indexOf('\n', pos);
+        const qsizetype end = eol < 0 ? code.size() : eol;
+        const QByteArray text = code.mid(pos, end - pos).trimmed();
+        if (text.startsWith("#version")) {
+            *versionLine = line;
+            return eol < 0 ? code.size() : eol + 1;
+        }
+        if (!text.isEmpty() && !text.startsWith("//"))
+            return 0;
+        pos = end + 1;
+        ++line;
+    }
+    return 0;
+}
+
+// GLSL 3.30 and ES 3.00 on: after "#line N" the next line is N. Before
+// that (1.10-1.50, ES 1.00) it was N + 1.
+int lineDirectiveFor(int nextLine, const QByteArray &versionHead)
+{
+    const qsizetype at = versionHead.indexOf("#version");
+    if (at < 0)
+        return nextLine;
+    const int version = versionHead.mid(at + 8).trimmed().split(' ').value(0).toInt();
+    const bool es = versionHead.contains(" es");
+    const bool newSemantics = es ? version >= 300 : version >= 330;
+    return newSemantics ? nextLine : nextLine - 1;
+}
+
+} // namespace
+
+QByteArray withPrologue(const QByteArray &code, const QStringList &defines)
+{
+    if (defines.isEmpty())
+        return code;
+    int versionLine = 0;
+    const qsizetype split = endOfVersionLine(code, &versionLine);
+    QByteArray head = code.left(split);
+    if (split > 0 && !head.endsWith('\n'))
+        head += '\n';
+    QByteArray prologue;
+    for (const QString &d : defines)
+        prologue += "#define " + d.toUtf8() + '\n';
+    prologue += "#line " + QByteArray::number(lineDirectiveFor(versionLine + 1, head)) + '\n';
+    return head + prologue + code.mid(split);
+}
+
+} // namespace phonglab

@@ -1,0 +1,23 @@
+#pragma once
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+namespace phonglab {
+
+// A shader stage's text as the user wrote it, with the name diagnostics
+// report it under (a file path, or a label such as ":/shaders/phong.frag").
+struct ShaderSource {
+    QString name;
+    QByteArray code;
+
+    static ShaderSource fromFile(const QString &path, QString *error);
+};
+
+// The text handed to the driver: the user's #version line first (GLSL needs
+// it there), then the injected `#define`s, then `#line` so that every line
+// after it is numbered exactly as in the user's file. Without a #version line
+// the prologue goes first and `#line 1` follows it.
+QByteArray withPrologue(const QByteArray &code, const QStringList &defines);
+
+} // namespace phonglab

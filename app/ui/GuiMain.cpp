@@ -1,0 +1,108 @@
+#include "GuiMain.h"
+
+#include "MainWindow.h"
+#include "core/ResourcePaths.h"
+#include "render/GlFormat.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <cstdio>
+
+namespace phonglab {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kViewportSamples = 4;
+
+void printError(const QString &message)
+{
+    std::fprintf(stderr, "phonglab: error: %s\n", message.toLocal8Bit().constData());
+    std::fflush(stderr);
+}
+
+// Without a display Qt's platform plugin aborts the process; say so plainly
+// instead. An explicit QT_QPA_PLATFORM (offscreen, vnc, eglfs...) is trusted.
+bool displayConfigured()
+{
+#if defined(Q_OS_UNIX) && !defined(Q_OS_DARWIN)
+    return qEnvironmentVariableIsSet("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY")
+        || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+#else
+    return true;
+#endif
+}
+
+// DISPLAY can be set yet unreachable (a stale value, a dead Xvfb), which Qt
+// would also abort on. In the plain X11 case let Qt fall back to the offscreen
+// platform instead, and treat landing there as "no display".
+bool armX11Fallback()
+{
+#if defined(Q_OS_UNIX) && !defined(Q_OS_DARWIN)
+    if (qEnvironmentVariableIsSet("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
+        || qEnvironmentVariable("XDG_SESSION_TYPE") == QLatin1String("wayland"))
+        return false;
+    qputenv("QT_QPA_PLATFORM", "xcb;offscreen"); // Qt tries each in turn
+    return true;
+#else
+    return false;
+#endif
+}
+
+// Opens the requested scene, else the default one. A broken requested scene
+// is reported and replaced by the default; a broken default is fatal.
+bool openStartupScene(MainWindow &window, const QString &requested)
+{
+    QString error;
+    if (!requested.isEmpty()) {
+        if (window.openScene(requested, &error))
+            return true;
+        QMessageBox::warning(nullptr, QObject::tr("Cannot open scene"),
+                             QObject::tr("%1\n\n%2\n\nOpening the default scene instead.")
+                                 .arg(QDir::toNativeSeparators(requested), error));
+    }
+    const QString fallback = defaultScenePath();
+    if (window.openScene(fallback, &error))
+        return true;
+    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(fallback, error);
+    printError(message);
+    QMessageBox::critical(nullptr, QObject::tr("PhongLab"), message);
+    return false;
+}
+
+} // namespace
+
+int runGui(int argc, char **argv)
+{
+    if (!displayConfigured()) {
+        printError(QStringLiteral("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is "
+                                  "set); run it inside a desktop session or under xvfb-run, or use "
+                                  "'phonglab render' to render without a window"));
+        return kExitFailure;
+    }
+    // Must precede QApplication: the global share context is created with it.
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(kViewportSamples));
+    const bool x11FallbackArmed = armX11Fallback();
+    QApplication app(argc, argv);
+    if (x11FallbackArmed) {
+        qunsetenv("QT_QPA_PLATFORM"); // not for child processes
+        if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
+            printError(QStringLiteral("cannot connect to the X display '%1' (DISPLAY)")
+                           .arg(qEnvironmentVariable("DISPLAY")));
+            return kExitFailure;
+        }
+    }
+    QApplication::setApplicationName(QStringLiteral("PhongLab"));
+    QApplication::setOrganizationName(QStringLiteral("PhongLab"));
+
+    MainWindow window;
+    const QString requested = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
+    if (!openStartupScene(window, requested))
+        return kExitFailure;
+    window.show();
+    return app.exec();
+}
+
+} // namespace phonglab

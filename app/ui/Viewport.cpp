@@ -1,0 +1,280 @@
+#include "Viewport.h"
+
+#include "mesh/MeshLoader.h"
+
+#include <QElapsedTimer>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QSet>
+#include <QWheelEvent>
+#include <cmath>
+
+namespace phonglab {
+
+namespace {
+
+constexpr double kOrbitDegPerPixel = 0.4;
+constexpr double kZoomPerWheelNotch = 0.85;  // distance factor for one notch towards the scene
+constexpr double kWheelNotch = 120.0;        // QWheelEvent::angleDelta() units per notch
+constexpr double kFrameTimeSmoothing = 0.1;  // weight of the newest frame in the running average
+
+// Before a GL context exists the renderer cannot load meshes, so check them on
+// the CPU: a scene accepted here must not fail later in initializeGL.
+bool checkMeshesLoad(const Scene &scene, QString *error)
+{
+    QSet<QString> checked;
+    for (const SceneObject &object : scene.objects) {
+        const QString spec = scene.resolveMeshPath(object.mesh);
+        if (checked.contains(spec))
+            continue;
+        const MeshLoadResult loaded = loadMesh(spec);
+        if (!loaded.ok()) {
+            if (error)
+                *error = loaded.error;
+            return false;
+        }
+        checked.insert(spec);
+    }
+    return true;
+}
+
+QString contextDescription(QOpenGLContext *context)
+{
+    QOpenGLFunctions *f = context->functions();
+    const auto text = [f](GLenum name) {
+        return QString::fromLatin1(reinterpret_cast<const char *>(f->glGetString(name)));
+    };
+    return QStringLiteral("OpenGL %1 (%2)").arg(text(GL_VERSION), text(GL_RENDERER));
+}
+
+} // namespace
+
+Viewport::Viewport(QWidget *parent)
+    : QOpenGLWidget(parent)
+{
+    setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
+}
+
+Viewport::~Viewport()
+{
+    cleanup();
+}
+
+QSize Viewport::minimumSizeHint() const
+{
+    return {200, 150};
+}
+
+QSize Viewport::sizeHint() const
+{
+    return {960, 720};
+}
+
+bool Viewport::setScene(const Scene &scene, QString *error)
+{
+    bool ok = false;
+    if (m_glInitialized) {
+        makeCurrent();
+        ok = uploadScene(scene, error);
+        doneCurrent();
+        m_renderReady = m_renderReady || ok;
+    } else {
+        ok = checkMeshesLoad(scene, error); // initializeGL uploads it
+    }
+    if (!ok)
+        return false;
+
+    m_scene = scene;
+    m_orbit.setOriginal(scene.camera);
+    cameraMoved();
+    return true;
+}
+
+Scene Viewport::currentScene() const
+{
+    Scene scene = m_scene;
+    scene.camera = m_orbit.camera();
+    return scene;
+}
+
+void Viewport::resetCamera()
+{
+    m_orbit.reset();
+    cameraMoved();
+}
+
+void Viewport::setShowLightMarkers(bool show)
+{
+    m_options.drawLightMarkers = show;
+    m_renderer.setOptions(m_options); // plain state, no GL call
+    update();
+}
+
+void Viewport::initializeGL()
+{
+    // Called again with a fresh context when the widget changes window; the
+    // old context's resources are freed in cleanup() just before it goes.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
+    m_glRendererName = contextDescription(context());
+    emit glRendererChanged(m_glRendererName);
+
+    QString error;
+    if (!m_renderer.initialize(&error)) {
+        emit renderError(tr("Cannot render with %1: %2").arg(m_glRendererName, error));
+        return;
+    }
+    m_renderer.setOptions(m_options);
+    m_glInitialized = true;
+    if (!uploadScene(currentScene(), &error)) {
+        emit renderError(error);
+        return;
+    }
+    m_parametersDirty = false;
+    m_renderReady = true;
+}
+
+// Needs the context current. The shading program goes first because it is the
+// cheap one to restore if the meshes then fail.
+bool Viewport::uploadScene(const Scene &scene, QString *error)
+{
+    const ShadingMethod previousShading = m_renderer.scene().shading;
+    const bool reloadShading = !m_renderer.hasProgram() || scene.shading != previousShading;
+    if (reloadShading) {
+        const CompileResult built = m_renderer.loadShading(scene.shading);
+        if (!built.ok) {
+            if (error)
+                *error = tr("Cannot build the %1 shading program:\n%2")
+                             .arg(shadingName(scene.shading), built.errorSummary());
+            return false; // the renderer keeps its previous program
+        }
+    }
+    if (!m_renderer.setScene(scene, error)) {
+        if (reloadShading && scene.shading != previousShading)
+            m_renderer.loadShading(previousShading);
+        return false;
+    }
+    return true;
+}
+
+void Viewport::cleanup()
+{
+    if (m_glInitialized) {
+        makeCurrent();
+        m_renderer.cleanup();
+        doneCurrent();
+    }
+    m_glInitialized = false;
+    m_renderReady = false;
+    if (context())
+        disconnect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
+}
+
+void Viewport::paintGL()
+{
+    QOpenGLFunctions *f = context()->functions();
+    if (!m_renderReady) {
+        // Nothing to draw (GL failed and was reported): show the background.
+        const glm::dvec3 bg = m_scene.background;
+        f->glClearColor(float(bg.r), float(bg.g), float(bg.b), 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return;
+    }
+    if (m_parametersDirty) {
+        m_renderer.updateSceneParameters(currentScene());
+        m_parametersDirty = false;
+    }
+
+    QElapsedTimer timer;
+    timer.start();
+    // The same rounding QOpenGLWidget uses to size its framebuffer.
+    m_renderer.render(size() * devicePixelRatioF());
+    // Without glFinish the timer would only measure command submission.
+    f->glFinish();
+    recordFrameTime(double(timer.nsecsElapsed()) / 1e6);
+    ++m_framesRendered;
+    emit frameRendered(m_smoothedFrameMs, m_renderer.trianglesDrawn());
+}
+
+void Viewport::recordFrameTime(double milliseconds)
+{
+    m_smoothedFrameMs = m_framesRendered == 0
+        ? milliseconds
+        : m_smoothedFrameMs + kFrameTimeSmoothing * (milliseconds - m_smoothedFrameMs);
+}
+
+void Viewport::cameraMoved()
+{
+    m_parametersDirty = true;
+    update();
+    emit cameraChanged();
+}
+
+void Viewport::mousePressEvent(QMouseEvent *event)
+{
+    switch (event->button()) {
+    case Qt::LeftButton:
+        m_drag = Drag::Orbit;
+        break;
+    case Qt::RightButton:
+    case Qt::MiddleButton:
+        m_drag = Drag::Pan;
+        break;
+    default:
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    m_lastMousePos = event->position();
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    const QPointF delta = event->position() - m_lastMousePos;
+    m_lastMousePos = event->position();
+    if (m_drag == Drag::Orbit) {
+        // "Grab the object" feel: dragging right turns its front to the right.
+        m_orbit.orbit(-delta.x() * kOrbitDegPerPixel, delta.y() * kOrbitDegPerPixel);
+    } else {
+        const double viewHeight = std::max(1, height());
+        m_orbit.pan(delta.x() / viewHeight, delta.y() / viewHeight);
+    }
+    cameraMoved();
+    event->accept();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (event->buttons() == Qt::NoButton)
+        m_drag = Drag::None;
+    event->accept();
+}
+
+void Viewport::wheelEvent(QWheelEvent *event)
+{
+    const double notches = event->angleDelta().y() / kWheelNotch;
+    if (notches == 0.0) {
+        event->ignore();
+        return;
+    }
+    m_orbit.zoom(std::pow(kZoomPerWheelNotch, notches));
+    cameraMoved();
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent *event)
+{
+    if ((event->key() == Qt::Key_R || event->key() == Qt::Key_Home) && event->modifiers() == Qt::NoModifier) {
+        resetCamera();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace phonglab

@@ -1,0 +1,80 @@
+#pragma once
+#include "core/OrbitCamera.h"
+#include "core/Scene.h"
+#include "render/Renderer.h"
+
+#include <QOpenGLWidget>
+#include <QPointF>
+
+namespace phonglab {
+
+// The interactive 3D view: a QOpenGLWidget that drives a Renderer and turns
+// mouse and keyboard input into OrbitCamera moves. Left drag orbits, right
+// or middle drag pans, the wheel zooms, R / Home resets the camera.
+class Viewport : public QOpenGLWidget
+{
+    Q_OBJECT
+
+public:
+    explicit Viewport(QWidget *parent = nullptr);
+    ~Viewport() override;
+
+    // Shows `scene` with its own camera. On failure (a mesh that cannot be
+    // loaded, a shading program that does not build) the current scene stays
+    // and `error` says why.
+    bool setScene(const Scene &scene, QString *error);
+    // The scene as shown, with the orbited camera in place of the original.
+    Scene currentScene() const;
+    const Camera &camera() const { return m_orbit.camera(); }
+
+    void resetCamera();
+    void setShowLightMarkers(bool show);
+    bool showLightMarkers() const { return m_options.drawLightMarkers; }
+
+    bool isRenderReady() const { return m_renderReady; }
+    qint64 framesRendered() const { return m_framesRendered; }
+    QString glRendererName() const { return m_glRendererName; }
+
+    QSize minimumSizeHint() const override;
+    QSize sizeHint() const override;
+
+signals:
+    // GL could not be set up or the scene could not be drawn; never fatal.
+    void renderError(const QString &message);
+    // After every frame: render time (ms, smoothed) and triangles drawn.
+    void frameRendered(double milliseconds, qint64 triangles);
+    void glRendererChanged(const QString &name);
+    void cameraChanged();
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan };
+
+    void cleanup();
+    bool uploadScene(const Scene &scene, QString *error);
+    void cameraMoved();
+    void recordFrameTime(double milliseconds);
+
+    Renderer m_renderer;
+    Renderer::Options m_options{.drawLightMarkers = true};
+    Scene m_scene; // as loaded; its camera is the orbit's original
+    OrbitCamera m_orbit;
+    bool m_glInitialized = false;  // the renderer holds GL resources
+    bool m_renderReady = false;    // ... and a scene and program to draw
+    bool m_parametersDirty = true; // camera moved since the renderer last saw it
+    Drag m_drag = Drag::None;
+    QPointF m_lastMousePos;
+    double m_smoothedFrameMs = 0.0;
+    qint64 m_framesRendered = 0;
+    QString m_glRendererName;
+};
+
+} // namespace phonglab

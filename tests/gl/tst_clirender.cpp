@@ -1,0 +1,167 @@
+// `phonglab render` as a script sees it: exit codes, stderr, and no output
+// file unless everything succeeded.
+#include "RenderCheck.h"
+
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace phonglab::test;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runPhonglab(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(PHONGLAB_EXE), args);
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        return {};
+    }
+    Run r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
+    r.out = QString::fromLocal8Bit(p.readAllStandardOutput());
+    r.err = QString::fromLocal8Bit(p.readAllStandardError());
+    return r;
+}
+
+QString dataFile(const QString &relative)
+{
+    return QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative;
+}
+
+} // namespace
+
+class TestCliRender : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void helpListsSubcommands();
+    void rendersPng();
+    void rendersDefaultScene();
+    void usageErrors_data();
+    void usageErrors();
+    void badInputFails_data();
+    void badInputFails();
+    void compileErrorPointsAtUserLine();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestCliRender::helpListsSubcommands()
+{
+    const Run r = runPhonglab({QStringLiteral("--help")});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.contains(QStringLiteral("render")), qPrintable(r.out));
+    const Run sub = runPhonglab({QStringLiteral("render"), QStringLiteral("--help")});
+    QCOMPARE(sub.exitCode, 0);
+    QVERIFY(sub.out.contains(QStringLiteral("--size")));
+}
+
+void TestCliRender::rendersPng()
+{
+    const QString out = m_dir.filePath(QStringLiteral("sphere.png"));
+    const Run r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+                               QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("160x120")});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QImage image(out);
+    QCOMPARE(image.size(), QSize(160, 120));
+    QVERIFY(!image.hasAlphaChannel());
+    QCOMPARE(image.format(), QImage::Format_RGB888); // 8-bit RGB on disk
+    // The sphere is lit in the middle and the corner is the background
+    // (0.1, 0.1, 0.12) -> (26, 26, 31).
+    QCOMPARE(image.pixelColor(0, 0), QColor(26, 26, 31));
+    QVERIFY(image.pixelColor(80, 60) != QColor(26, 26, 31));
+}
+
+void TestCliRender::rendersDefaultScene()
+{
+    const QString out = m_dir.filePath(QStringLiteral("default.png"));
+    const Run r = runPhonglab({QStringLiteral("render"), QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json"),
+                               QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY(QFile::exists(out));
+}
+
+void TestCliRender::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    const QString scene = dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"));
+    QTest::newRow("no scene") << QStringList{QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.png")};
+    QTest::newRow("no output") << QStringList{QStringLiteral("render"), scene};
+    QTest::newRow("two scenes") << QStringList{QStringLiteral("render"), scene, scene, QStringLiteral("-o"), QStringLiteral("x.png")};
+    QTest::newRow("bad size") << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"), QStringLiteral("x.png"),
+                                             QStringLiteral("--size"), QStringLiteral("12by4")};
+    QTest::newRow("zero size") << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"), QStringLiteral("x.png"),
+                                              QStringLiteral("--size"), QStringLiteral("0x10")};
+    QTest::newRow("huge size") << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"), QStringLiteral("x.png"),
+                                              QStringLiteral("--size"), QStringLiteral("100000x10")};
+    QTest::newRow("unknown option") << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"),
+                                                   QStringLiteral("x.png"), QStringLiteral("--frobnicate")};
+    QTest::newRow("unknown top-level option") << QStringList{QStringLiteral("--frobnicate")};
+}
+
+void TestCliRender::usageErrors()
+{
+    QFETCH(QStringList, args);
+    const Run r = runPhonglab(args);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
+    QVERIFY(!QFile::exists(QStringLiteral("x.png")));
+}
+
+void TestCliRender::badInputFails_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QStringList>("extra");
+    QTest::addColumn<QString>("expected"); // part of the error message
+    QTest::newRow("missing scene file") << m_dir.filePath(QStringLiteral("nope.json")) << QStringList() << "nope.json";
+    QTest::newRow("unknown builtin mesh") << dataFile(QStringLiteral("scenes/gl_bad_mesh.json")) << QStringList()
+                                          << "builtin:cube";
+    QTest::newRow("missing shader file")
+        << dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"))
+        << QStringList{QStringLiteral("--fragment"), m_dir.filePath(QStringLiteral("missing.frag"))} << "missing.frag";
+    QTest::newRow("unwritable output") << dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"))
+                                       << QStringList{QStringLiteral("-o"), QStringLiteral("/nonexistent-dir/out.png")}
+                                       << "/nonexistent-dir/out.png";
+}
+
+void TestCliRender::badInputFails()
+{
+    QFETCH(QString, scene);
+    QFETCH(QStringList, extra);
+    QFETCH(QString, expected);
+    const QString out = m_dir.filePath(QStringLiteral("bad.png"));
+    QStringList args{QStringLiteral("render"), scene};
+    if (!extra.contains(QStringLiteral("-o")))
+        args << QStringLiteral("-o") << out;
+    args << extra;
+    const Run r = runPhonglab(args);
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+    QVERIFY(!QFile::exists(out));
+}
+
+void TestCliRender::compileErrorPointsAtUserLine()
+{
+    const QString out = m_dir.filePath(QStringLiteral("broken.png"));
+    const QString frag = dataFile(QStringLiteral("shaders/error_line17.frag"));
+    const Run r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+                               QStringLiteral("-o"), out, QStringLiteral("--fragment"), frag});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
+    QVERIFY(!QFile::exists(out));
+}
+
+QTEST_GUILESS_MAIN(TestCliRender)
+#include "tst_clirender.moc"

@@ -1,0 +1,54 @@
+#pragma once
+#include "core/ImageMetrics.h"
+#include "core/Scene.h"
+#include "render/CompileResult.h"
+#include "render/ShaderSource.h"
+
+#include <QImage>
+#include <QString>
+#include <optional>
+
+namespace phonglab::test {
+
+// The bound a correct GPU render of an analytic builtin must meet against the
+// double-precision ray-cast reference, outside a thin silhouette band (where
+// the tessellated outline and the true outline cover different pixels).
+inline constexpr double kMinPsnrDb = 50.0;
+inline constexpr int kMaxErrorSteps = 3;   // in 8-bit steps, per channel
+inline constexpr int kSilhouetteBandPx = 2;
+inline constexpr int kTestImageSide = 256;
+
+struct RenderCheck {
+    QImage gpu;
+    QImage reference;
+    ImageComparison comparison;
+    CompileResult compile;
+    QString error;                 // set when something could not run at all
+
+    bool matches() const
+    {
+        return error.isEmpty() && comparison.pixelsCompared > 0 && comparison.psnr >= kMinPsnrDb
+            && comparison.maxError <= kMaxErrorSteps;
+    }
+};
+
+// Renders `scene` offscreen (kTestImageSide², no MSAA) with the shipped Phong
+// shaders, or with the given replacement stages, and compares it with the
+// ray-cast reference. Creates its own context; call from the GUI thread of a
+// QGuiApplication.
+RenderCheck checkAgainstReference(const Scene &scene,
+                                  const std::optional<ShaderSource> &vertex = std::nullopt,
+                                  const std::optional<ShaderSource> &fragment = std::nullopt);
+
+// Saves gpu / reference / heatmap PNGs under $PHONGLAB_TEST_ARTIFACTS (or
+// the system temp dir) so a failing render can be looked at; returns the folder.
+QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene);
+
+// Reads tests/data/<relative> as a shader source.
+ShaderSource testShader(const QString &relative);
+ShaderSource shippedShader(const QString &fileName);
+
+// A scene from tests/data/scenes/<name>.json (aborts the test on failure).
+Scene loadTestScene(const QString &name);
+
+} // namespace phonglab::test

@@ -1,0 +1,191 @@
+// Image comparison: PSNR/RMSE worked out by hand, the silhouette band, and
+// inputs that do not fit together.
+
+#include "core/ImageMetrics.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace phonglab;
+
+namespace {
+
+QImage filled(int w, int h, QRgb color)
+{
+    QImage image(w, h, QImage::Format_RGB888);
+    image.fill(color);
+    return image;
+}
+
+// A 20×20 reference covering the square [5, 15)² with I = 0.5 everywhere
+// (encoded 127.5 -> 128).
+ReferenceImage squareReference()
+{
+    ReferenceImage ref(20, 20);
+    for (int y = 5; y < 15; ++y) {
+        for (int x = 5; x < 15; ++x) {
+            ref.coverage[ref.index(x, y)] = 1;
+            ref.color[ref.index(x, y)] = glm::dvec3(0.5);
+        }
+    }
+    return ref;
+}
+
+// What a perfect render of squareReference() looks like on a black background.
+QImage squareRender()
+{
+    QImage image = filled(20, 20, qRgb(0, 0, 0));
+    for (int y = 5; y < 15; ++y)
+        for (int x = 5; x < 15; ++x)
+            image.setPixel(x, y, qRgb(128, 128, 128));
+    return image;
+}
+
+} // namespace
+
+class TestImageMetrics : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void identicalImages()
+    {
+        const QImage a = filled(16, 8, qRgb(10, 200, 30));
+        const ImageComparison c = compareImages(a, a);
+        QVERIFY(std::isinf(c.psnr) && c.psnr > 0);
+        QCOMPARE(c.rmse, 0.0);
+        QCOMPARE(c.maxError, 0);
+        QCOMPARE(c.pixelsCompared, qint64(128));
+        QVERIFY2(c.summary().startsWith(QStringLiteral("PSNR inf dB")), qPrintable(c.summary()));
+    }
+
+    void knownOffset()
+    {
+        // Red +3 on all 100 pixels: 300 channel values, 100 of them off by 3.
+        // MSE = 100·9 / 300 = 3, RMSE = √3 = 1.7320508,
+        // PSNR = 20·log10(255/√3) = 20·(2.4065402 - 0.2385606) = 43.359591 dB.
+        const QImage a = filled(10, 10, qRgb(100, 50, 25));
+        const QImage b = filled(10, 10, qRgb(103, 50, 25));
+        const ImageComparison c = compareImages(a, b);
+        QCOMPARE(c.pixelsCompared, qint64(100));
+        QCOMPARE(c.maxError, 3);
+        QCOMPARE(c.worstPixel, QPoint(0, 0)); // the first of the equally bad
+        QVERIFY(std::abs(c.rmse - 1.7320508) < 1e-6);
+        QVERIFY(std::abs(c.psnr - 43.359591) < 1e-5);
+        QCOMPARE(c.summary(), QStringLiteral("PSNR 43.36 dB, RMSE 1.73, max 3/255 at (0,0), 100 px"));
+    }
+
+    void singleWorstPixel()
+    {
+        // Green -5 at (7, 2) of 10×4: 120 values, one off by 5.
+        // RMSE = √(25/120) = 0.4564355; PSNR = 20·log10(255/0.4564355) = 54.94 dB.
+        const QImage a = filled(10, 4, qRgb(9, 9, 9));
+        QImage b = a;
+        b.setPixel(7, 2, qRgb(9, 4, 9));
+        const ImageComparison c = compareImages(a, b);
+        QCOMPARE(c.maxError, 5);
+        QCOMPARE(c.worstPixel, QPoint(7, 2));
+        QVERIFY(std::abs(c.rmse - 0.4564355) < 1e-6);
+        QVERIFY(std::abs(c.psnr - 54.9430) < 1e-3);
+    }
+
+    void formatsAreConverted()
+    {
+        // ARGB32 against RGB888 with the same colours: identical.
+        const QImage a = filled(5, 5, qRgb(1, 2, 3));
+        const QImage b = a.convertToFormat(QImage::Format_ARGB32);
+        QVERIFY(std::isinf(compareImages(a, b).psnr));
+    }
+
+    void referencePerfectRender()
+    {
+        const ImageComparison c = compareWithReference(squareRender(), squareReference(), 0);
+        QVERIFY(std::isinf(c.psnr));
+        QCOMPARE(c.maxError, 0);
+    }
+
+    void bandExcludesSilhouette_data()
+    {
+        // The 10×10 square's outermost ring has uncovered neighbours, so it is
+        // silhouette (as is the ring just outside, uncovered anyway). Pixels more
+        // than b away from both rings: a (8 - 2b)² square.
+        QTest::addColumn<int>("band");
+        QTest::addColumn<qint64>("compared");
+        QTest::newRow("0") << 0 << qint64(64);
+        QTest::newRow("1") << 1 << qint64(36);
+        QTest::newRow("2") << 2 << qint64(16);
+        QTest::newRow("4") << 4 << qint64(0);
+    }
+
+    void bandExcludesSilhouette()
+    {
+        QFETCH(int, band);
+        QFETCH(qint64, compared);
+        // Ruin the square's edge ring in the render: the band must hide it.
+        QImage rendered = squareRender();
+        for (int i = 5; i < 15; ++i) {
+            for (const QPoint &p : {QPoint(i, 5), QPoint(i, 14), QPoint(5, i), QPoint(14, i)})
+                rendered.setPixel(p, qRgb(255, 0, 255));
+        }
+        const ImageComparison c = compareWithReference(rendered, squareReference(), band);
+        QCOMPARE(c.pixelsCompared, compared);
+        if (compared > 0) {
+            QVERIFY(std::isinf(c.psnr));
+        } else {
+            QCOMPARE(c.psnr, 0.0); // nothing compared is not a pass
+        }
+    }
+
+    void interiorErrorIsFound()
+    {
+        // One interior pixel off by 2 in blue, compared over the 6×6 interior
+        // (band 1): 108 values, one off by 2 -> RMSE = √(4/108) = 0.19245009.
+        QImage rendered = squareRender();
+        rendered.setPixel(9, 10, qRgb(128, 128, 130));
+        const ImageComparison c = compareWithReference(rendered, squareReference(), 1);
+        QCOMPARE(c.pixelsCompared, qint64(36));
+        QCOMPARE(c.maxError, 2);
+        QCOMPARE(c.worstPixel, QPoint(9, 10));
+        QVERIFY(std::abs(c.rmse - 0.19245009) < 1e-7);
+    }
+
+    void referenceIsQuantisedAndClamped()
+    {
+        // I = 1.7 encodes to 255 and -0.2 to 0: a render of 255 / 0 is exact.
+        ReferenceImage ref(3, 3);
+        ref.coverage.assign(9, 1);
+        ref.color.assign(9, glm::dvec3(1.7, -0.2, 0.5));
+        const ImageComparison c = compareWithReference(filled(3, 3, qRgb(255, 0, 128)), ref, 0);
+        QCOMPARE(c.pixelsCompared, qint64(9)); // fully covered: no silhouette at all
+        QCOMPARE(c.maxError, 0);
+    }
+
+    void sizeMismatch()
+    {
+        const ImageComparison a = compareImages(filled(4, 4, 0), filled(4, 5, 0));
+        QCOMPARE(a.pixelsCompared, qint64(0));
+        QCOMPARE(a.psnr, 0.0);
+        QCOMPARE(a.summary(), QStringLiteral("no pixels compared"));
+        const ImageComparison b = compareWithReference(filled(19, 20, 0), squareReference(), 1);
+        QCOMPARE(b.pixelsCompared, qint64(0));
+        QCOMPARE(b.psnr, 0.0);
+        QCOMPARE(compareWithReference(QImage(), ReferenceImage(), 0).pixelsCompared, qint64(0));
+        QCOMPARE(compareImages(QImage(), QImage()).psnr, 0.0);
+        QVERIFY(errorHeatmap(filled(19, 20, 0), squareReference(), 1).isNull());
+    }
+
+    void heatmap()
+    {
+        QImage rendered = squareRender();
+        rendered.setPixel(9, 10, qRgb(128, 128, 140)); // 12 off: full red
+        const QImage map = errorHeatmap(rendered, squareReference(), 1);
+        QCOMPARE(map.size(), QSize(20, 20));
+        QCOMPARE(map.pixel(9, 10), qRgb(255, 0, 0));
+        QCOMPARE(map.pixel(8, 8), qRgb(0, 64, 0));  // compared, exact
+        QCOMPARE(map.pixel(6, 6), qRgb(0, 0, 96));  // in the band
+        QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));   // uncovered
+    }
+};
+
+QTEST_APPLESS_MAIN(TestImageMetrics)
+#include "tst_imagemetrics.moc"

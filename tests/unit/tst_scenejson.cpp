@@ -1,0 +1,435 @@
+#include "core/SceneJson.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace phonglab;
+
+namespace {
+
+const QString kSceneDataDir = QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes");
+
+// Every field away from its default, awkward doubles included, so a field
+// the writer or reader forgets (or rounds) shows up as an inequality.
+Scene fullScene()
+{
+    Scene scene;
+    SceneObject bunny;
+    bunny.mesh = QStringLiteral("meshes/bunny.obj");
+    bunny.transform.translate = {1.0, -2.0, 3.5};
+    bunny.transform.rotateDeg = {10.0, 20.0 / 3.0, -30.0};
+    bunny.transform.scale = {0.5, 2.0, -1.0};
+    bunny.material.ka = {0.1, 0.2, 0.3};
+    bunny.material.kd = {0.4, 0.5, 1.0 / 3.0};
+    bunny.material.ks = {0.7, 0.8, 0.9};
+    bunny.material.shininess = 64.5;
+    SceneObject torus;
+    torus.mesh = QStringLiteral("builtin:torus");
+    torus.transform.translate = {-1.5, 0.25, 0.0};
+    torus.transform.rotateDeg = {90.0, 0.0, 45.0};
+    torus.transform.scale = {0.8, 0.8, 0.8};
+    torus.material.kd = {0.9, 0.1, 0.1};
+    torus.material.shininess = 8.0;
+    scene.objects = {bunny, torus};
+
+    scene.camera.eye = {1.0, 2.0, 6.0};
+    scene.camera.target = {0.0, 0.5, 0.0};
+    scene.camera.up = {0.0, 0.0, 1.0};
+    scene.camera.fovDeg = 60.0;
+    scene.camera.nearPlane = 0.25;
+    scene.camera.farPlane = 250.0;
+    scene.ambient = {0.05, 0.1, 0.15};
+    scene.lights = {
+        PointLight{{3.0, 4.0, 5.0}, {1.0, 0.9, 0.8}, {0.5, 0.5, 0.5}, {1.0, 0.1, 0.01}},
+        PointLight{{-4.0, 2.0, 1.0}, {0.3, 0.3, 0.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.2}},
+        PointLight{{0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}},
+    };
+    scene.shading = ShadingMethod::Phong; // the only method so far
+    scene.background = {0.3, 0.2, 0.1};
+    return scene;
+}
+
+Scene sphereScene()
+{
+    Scene scene;
+    scene.objects = {SceneObject{QStringLiteral("builtin:sphere"), {}, {}}};
+    return scene;
+}
+
+QByteArray withSphere(const char *fields)
+{
+    return QByteArray(R"({"mesh": "builtin:sphere", )") + fields + '}';
+}
+
+QByteArray withLights(const char *lights)
+{
+    return QByteArray(R"({"mesh": "builtin:sphere", "lights": )") + lights + '}';
+}
+
+} // namespace
+
+class TestSceneJson : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void roundTripFullScene();
+    void roundTripSingleObject();
+    void defaultsWhenOptionalFieldsMissing();
+    void multiObjectFormDefaults();
+    void rejectsBadInput_data();
+    void rejectsBadInput();
+    void syntaxErrorGivesLineAndOffset();
+    void underflowReadsAsZero();
+    void warnsAboutUnknownKeys();
+    void warnsAboutTopLevelTransformWithObjects();
+    void loadMissingFileNamesPath();
+    void relativeMeshResolvesAgainstSceneFolder();
+    void saveThenLoadGivesEqualScene();
+    void saveIntoMissingDirectoryFails();
+    void saveRefusesInvalidSceneAndKeepsOldFile();
+    void docExampleLoadsCleanly();
+};
+
+void TestSceneJson::roundTripFullScene()
+{
+    const Scene scene = fullScene();
+    const QByteArray json = sceneToJson(scene);
+    QVERIFY(QJsonDocument::fromJson(json).object().contains(QStringLiteral("objects")));
+
+    const SceneLoadResult result = parseScene(json);
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+    QCOMPARE(result.scene->objects.size(), std::size_t(2));
+    QCOMPARE(result.scene->lights.size(), std::size_t(3));
+    QVERIFY(*result.scene == scene);
+}
+
+void TestSceneJson::roundTripSingleObject()
+{
+    Scene scene = fullScene();
+    scene.objects.resize(1);
+    const QByteArray json = sceneToJson(scene);
+    const QJsonObject root = QJsonDocument::fromJson(json).object();
+    QCOMPARE(root.value(QStringLiteral("mesh")).toString(), QStringLiteral("meshes/bunny.obj"));
+    QVERIFY(!root.contains(QStringLiteral("objects")));
+
+    const SceneLoadResult result = parseScene(json);
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(*result.scene == scene);
+}
+
+void TestSceneJson::defaultsWhenOptionalFieldsMissing()
+{
+    const SceneLoadResult result = parseScene(R"({"mesh": "builtin:sphere"})", QStringLiteral("/scenes"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    QVERIFY(*result.scene == sphereScene());
+    QVERIFY(result.scene->lights.empty());
+    QCOMPARE(result.scene->baseDir, QStringLiteral("/scenes"));
+
+    // Partial objects keep the defaults of the fields they leave out.
+    const SceneLoadResult partial = parseScene(withSphere(R"(
+        "camera": {"fov_deg": 30}, "material": {"shininess": 5}, "lights": [{"position": [1, 2, 3]}])"));
+    QVERIFY2(partial.ok(), qPrintable(partial.error));
+    Camera camera;
+    camera.fovDeg = 30.0;
+    QVERIFY(partial.scene->camera == camera);
+    Material material;
+    material.shininess = 5.0;
+    QVERIFY(partial.scene->objects.front().material == material);
+    QCOMPARE(partial.scene->lights.size(), std::size_t(1));
+    QVERIFY(partial.scene->lights.front() == (PointLight{{1.0, 2.0, 3.0}}));
+}
+
+void TestSceneJson::multiObjectFormDefaults()
+{
+    const SceneLoadResult result = loadSceneFile(kSceneDataDir + QStringLiteral("/two_objects.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    const Scene &scene = *result.scene;
+    QCOMPARE(scene.objects.size(), std::size_t(2));
+    QCOMPARE(scene.objects[0].mesh, QStringLiteral("builtin:sphere"));
+    QCOMPARE(scene.objects[0].transform.scale, glm::dvec3(1.0));
+    QCOMPARE(scene.objects[0].material.shininess, 64.0);
+    QCOMPARE(scene.objects[1].transform.rotateDeg, glm::dvec3(90.0, 0.0, 0.0));
+    QVERIFY(scene.objects[1].material == Material{});
+    QCOMPARE(scene.lights.size(), std::size_t(2));
+    QCOMPARE(scene.lights[0].attenuation, glm::dvec3(1.0, 0.0, 0.0));
+}
+
+void TestSceneJson::rejectsBadInput_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("pathPrefix"); // the error must start with this
+    QTest::addColumn<QString>("mentions");   // ... and contain this, when not empty
+
+    auto row = [](const char *name, const QByteArray &json, const char *prefix, const char *mentions = "") {
+        QTest::newRow(name) << json << QString::fromUtf8(prefix) << QString::fromUtf8(mentions);
+    };
+
+    // Document level
+    row("not json", R"({"mesh": "builtin:sphere",)", "JSON syntax error at line 1", "byte offset");
+    row("empty input", "", "JSON syntax error");
+    row("top level array", R"([{"mesh": "builtin:sphere"}])", "top level:", "object");
+
+    // Mesh / objects
+    row("no mesh", R"({"camera": {}})", "mesh: required field missing", "objects");
+    row("mesh and objects", R"({"mesh": "a.obj", "objects": [{"mesh": "b.obj"}]})", "objects:", "mesh");
+    row("mesh not string", R"({"mesh": ["a.obj"]})", "mesh:", "got array");
+    row("mesh empty", R"({"mesh": ""})", "mesh:", "empty");
+    row("objects not array", R"({"objects": {"mesh": "a.obj"}})", "objects:", "array");
+    row("objects empty", R"({"objects": []})", "objects:", "at least one");
+    row("object not object", R"({"objects": ["a.obj"]})", "objects[0]:", "expected an object");
+    row("object mesh missing", R"({"objects": [{"mesh": "a.obj"}, {}]})", "objects[1].mesh:", "required");
+    row("object mesh empty", R"({"objects": [{"mesh": ""}]})", "objects[0].mesh:", "empty");
+    row("object scale zero", R"({"objects": [{"mesh": "a"}, {"mesh": "b", "transform": {"scale": [1, 1, 0]}}]})",
+        "objects[1].transform.scale[2]:", "0");
+    row("object shininess zero", R"({"objects": [{"mesh": "a", "material": {"shininess": 0}}]})",
+        "objects[0].material.shininess:");
+
+    // Transform
+    row("transform not object", withSphere(R"("transform": [1, 2, 3])"), "transform:", "expected an object");
+    row("translate string", withSphere(R"("transform": {"translate": "1 2 3"})"), "transform.translate:", "got string");
+    row("translate two elements", withSphere(R"("transform": {"translate": [1, 2]})"), "transform.translate:", "got 2 elements");
+    row("rotate non-number", withSphere(R"("transform": {"rotate_deg": [0, "90", 0]})"), "transform.rotate_deg[1]:", "got string");
+    row("scale zero", withSphere(R"("transform": {"scale": [1, 0, 1]})"), "transform.scale[1]:", "0");
+
+    // Camera
+    row("camera not object", withSphere(R"("camera": "front")"), "camera:");
+    row("fov zero", withSphere(R"("camera": {"fov_deg": 0})"), "camera.fov_deg:", "(0, 180)");
+    row("fov 180", withSphere(R"("camera": {"fov_deg": 180})"), "camera.fov_deg:", "(0, 180)");
+    row("fov negative", withSphere(R"("camera": {"fov_deg": -45})"), "camera.fov_deg:");
+    row("fov string", withSphere(R"("camera": {"fov_deg": "45"})"), "camera.fov_deg:", "got string");
+    row("near zero", withSphere(R"("camera": {"near": 0})"), "camera.near:", "> 0");
+    row("near negative", withSphere(R"("camera": {"near": -1})"), "camera.near:");
+    row("far equals near", withSphere(R"("camera": {"near": 1, "far": 1})"), "camera.far:", "near");
+    row("far below near", withSphere(R"("camera": {"near": 5, "far": 2})"), "camera.far:");
+    row("eye equals target", withSphere(R"("camera": {"eye": [1, 2, 3], "target": [1, 2, 3]})"), "camera.target:", "eye");
+    row("up parallel", withSphere(R"("camera": {"eye": [0, 5, 0], "target": [0, 0, 0]})"), "camera.up:", "parallel");
+    row("up antiparallel", withSphere(R"("camera": {"eye": [0, 0, 4], "up": [0, 0, 2]})"), "camera.up:", "parallel");
+    row("up zero", withSphere(R"("camera": {"up": [0, 0, 0]})"), "camera.up:");
+
+    // Material, ambient, background, shading
+    row("ka negative", withSphere(R"("material": {"ka": [-0.1, 0, 0]})"), "material.ka[0]:", ">= 0");
+    row("kd wrong length", withSphere(R"("material": {"kd": [0.5, 0.5, 0.5, 1]})"), "material.kd:", "got 4 elements");
+    row("ks null element", withSphere(R"("material": {"ks": [0.5, null, 0.5]})"), "material.ks[1]:", "got null");
+    row("shininess zero", withSphere(R"("material": {"shininess": 0})"), "material.shininess:", "> 0");
+    row("shininess negative", withSphere(R"("material": {"shininess": -8})"), "material.shininess:");
+    row("ambient negative", withSphere(R"("ambient": [0.1, 0.1, -0.1])"), "ambient[2]:", ">= 0");
+    row("background string", withSphere(R"("background": "#202020")"), "background:", "got string");
+    row("shading unknown", withSphere(R"("shading": "gouraud")"), "shading:", "phong");
+    row("shading not string", withSphere(R"("shading": 1)"), "shading:", "got number");
+
+    // Lights
+    row("lights not array", withLights(R"({"position": [1, 1, 1]})"), "lights:", "expected an array");
+    row("light not object", withLights(R"([[1, 1, 1]])"), "lights[0]:", "expected an object");
+    row("light position missing", withLights(R"([{"position": [1, 1, 1]}, {"diffuse": [1, 1, 1]}])"),
+        "lights[1].position:", "required");
+    row("light diffuse element string", withLights(R"([{"position": [0, 0, 5]}, {"position": [1, 0, 5]},
+        {"position": [2, 0, 5], "diffuse": [1, "1", 1]}])"), "lights[2].diffuse[1]:", "got string");
+    row("light specular negative", withLights(R"([{"position": [1, 1, 1], "specular": [-1, 0, 0]}])"),
+        "lights[0].specular[0]:", ">= 0");
+    row("attenuation negative", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, -0.1, 0]}])"),
+        "lights[0].attenuation[1]:", ">= 0");
+    row("attenuation sum zero", withLights(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "attenuation": [0, 0, 0]}])"),
+        "lights[1].attenuation:", "c1 + c2 + c3 must be positive (got 0)");
+    row("attenuation wrong length", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, 0]}])"),
+        "lights[0].attenuation:", "3 numbers");
+    QByteArray nineLights = "[";
+    for (int i = 0; i < kMaxLights + 1; ++i)
+        nineLights += QByteArray(i ? ", " : "") + R"({"position": [1, 1, 1]})";
+    row("too many lights", withLights(nineLights + "]"), "lights:", "at most 8");
+
+    // Non-finite numbers: Qt cannot produce NaN, but these overflow a double.
+    row("fov overflow", withSphere(R"("camera": {"fov_deg": 1e999})"), "camera.fov_deg:", "finite");
+    row("position overflow", withLights(R"([{"position": [-1e999, 0, 0]}])"), "lights[0].position[0]:", "1e999");
+    row("translate overflow", withSphere(R"("transform": {"translate": [0, 0, 2e400]})"), "transform.translate[2]:", "finite");
+    row("overflow where object expected", withSphere(R"("camera": 1e999)"), "camera:", "out-of-range number");
+    row("overflow where string expected", R"({"mesh": 1e999})", "mesh:", "out-of-range number");
+}
+
+void TestSceneJson::rejectsBadInput()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, pathPrefix);
+    QFETCH(QString, mentions);
+
+    const SceneLoadResult result = parseScene(json);
+    QVERIFY2(!result.ok(), "accepted bad input");
+    QVERIFY2(result.error.startsWith(pathPrefix), qPrintable(result.error));
+    QVERIFY2(result.error.contains(mentions), qPrintable(result.error));
+}
+
+void TestSceneJson::syntaxErrorGivesLineAndOffset()
+{
+    // The missing comma sits on line 3. Positions must count in the original
+    // text even after the out-of-range literal before it has been rewritten,
+    // so they must match those of the same text with a same-length number.
+    const QByteArray json = "{\n  \"camera\": {\"fov_deg\": 1e999},\n  \"mesh\": \"a.obj\" \"x\": 1\n}";
+    QByteArray plain = json;
+    plain.replace("1e999", "45.00");
+    const SceneLoadResult result = parseScene(json);
+    const SceneLoadResult reference = parseScene(plain);
+    QVERIFY(!result.ok());
+    QVERIFY2(result.error.startsWith(QStringLiteral("JSON syntax error at line 3, column ")), qPrintable(result.error));
+    QVERIFY2(result.error.contains(QStringLiteral("(byte offset ")), qPrintable(result.error));
+    QCOMPARE(result.error, reference.error);
+
+    // Qt points at the offending token or one byte into it.
+    const qsizetype offset = json.indexOf("\"x\"");
+    const qsizetype column = offset - json.lastIndexOf('\n', offset);
+    QVERIFY2(result.error.contains(QStringLiteral("column %1 (byte offset %2)").arg(column).arg(offset))
+                 || result.error.contains(QStringLiteral("column %1 (byte offset %2)").arg(column + 1).arg(offset + 1)),
+             qPrintable(result.error));
+}
+
+void TestSceneJson::underflowReadsAsZero()
+{
+    const SceneLoadResult result = parseScene(withSphere(R"("transform": {"translate": [1e-999, -1e-400, 1]})"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(result.scene->objects.front().transform.translate, glm::dvec3(0.0, 0.0, 1.0));
+}
+
+void TestSceneJson::warnsAboutUnknownKeys()
+{
+    const SceneLoadResult result = parseScene(R"({
+        "mesh": "builtin:sphere",
+        "camera": {"fovy": 60},
+        "lights": [{"position": [1, 1, 1]}, {"position": [2, 2, 2], "colour": [1, 0, 0]}],
+        "objectz": [],
+        "material": {"shine": 3}
+    })");
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(result.warnings.size(), qsizetype(4));
+    QVERIFY(result.warnings.contains(QStringLiteral("camera.fovy: unknown key, ignored")));
+    QVERIFY(result.warnings.contains(QStringLiteral("lights[1].colour: unknown key, ignored")));
+    QVERIFY(result.warnings.contains(QStringLiteral("objectz: unknown key, ignored")));
+    QVERIFY(result.warnings.contains(QStringLiteral("material.shine: unknown key, ignored")));
+    // The unknown key changed nothing.
+    QCOMPARE(result.scene->camera.fovDeg, Camera{}.fovDeg);
+
+    const SceneLoadResult nested = parseScene(R"({"objects": [{"mesh": "a", "transform": {"rotate": [0, 90, 0]}}]})");
+    QVERIFY2(nested.ok(), qPrintable(nested.error));
+    QCOMPARE(nested.warnings, QStringList{QStringLiteral("objects[0].transform.rotate: unknown key, ignored")});
+}
+
+void TestSceneJson::warnsAboutTopLevelTransformWithObjects()
+{
+    const SceneLoadResult result = parseScene(R"({"objects": [{"mesh": "a"}], "transform": {"scale": [2, 2, 2]}})");
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(result.warnings.size(), qsizetype(1));
+    QVERIFY2(result.warnings.front().startsWith(QStringLiteral("transform:")), qPrintable(result.warnings.front()));
+    QCOMPARE(result.scene->objects.front().transform, Transform{});
+}
+
+void TestSceneJson::loadMissingFileNamesPath()
+{
+    const QString path = QStringLiteral("/nonexistent/phonglab/missing.json");
+    const SceneLoadResult result = loadSceneFile(path);
+    QVERIFY(!result.ok());
+    QVERIFY2(result.error.contains(path), qPrintable(result.error));
+}
+
+void TestSceneJson::relativeMeshResolvesAgainstSceneFolder()
+{
+    const QString dir = QDir(kSceneDataDir).absolutePath();
+    const SceneLoadResult result = loadSceneFile(kSceneDataDir + QStringLiteral("/relative_mesh.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    const Scene &scene = *result.scene;
+    QCOMPARE(scene.baseDir, dir);
+    QCOMPARE(scene.objects.front().mesh, QStringLiteral("meshes/teapot.obj")); // kept as written
+    QCOMPARE(scene.resolveMeshPath(scene.objects.front().mesh), dir + QStringLiteral("/meshes/teapot.obj"));
+    QCOMPARE(scene.resolveMeshPath(QStringLiteral("builtin:torus")), QStringLiteral("builtin:torus"));
+
+    // A relative path given to loadSceneFile still yields an absolute baseDir.
+    const QString previous = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(QFileInfo(dir).absolutePath()));
+    const SceneLoadResult relative = loadSceneFile(QFileInfo(dir).fileName() + QStringLiteral("/relative_mesh.json"));
+    QDir::setCurrent(previous);
+    QVERIFY2(relative.ok(), qPrintable(relative.error));
+    QCOMPARE(relative.scene->baseDir, dir);
+}
+
+void TestSceneJson::saveThenLoadGivesEqualScene()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("saved.json"));
+    QString error;
+    QVERIFY2(saveSceneFile(fullScene(), path, &error), qPrintable(error));
+
+    const SceneLoadResult result = loadSceneFile(path);
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(*result.scene == fullScene());
+    QCOMPARE(result.scene->baseDir, QFileInfo(path).absolutePath());
+    // QSaveFile renames its temporary into place: nothing else is left behind.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("saved.json")});
+}
+
+void TestSceneJson::saveIntoMissingDirectoryFails()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString missingDir = dir.filePath(QStringLiteral("no/such/dir"));
+    const QString path = missingDir + QStringLiteral("/scene.json");
+    QString error;
+    QVERIFY(!saveSceneFile(sphereScene(), path, &error));
+    QVERIFY2(error.contains(path), qPrintable(error));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("no"))));
+    QVERIFY(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty());
+}
+
+void TestSceneJson::saveRefusesInvalidSceneAndKeepsOldFile()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("scene.json"));
+    QString error;
+    QVERIFY2(saveSceneFile(sphereScene(), path, &error), qPrintable(error));
+    QFile original(path);
+    QVERIFY(original.open(QIODevice::ReadOnly));
+    const QByteArray before = original.readAll();
+    original.close();
+
+    Scene broken = sphereScene();
+    broken.objects.front().transform.scale.y = 0.0;
+    QVERIFY(!saveSceneFile(broken, path, &error));
+    QVERIFY2(error.contains(QStringLiteral("transform.scale[1]")), qPrintable(error));
+
+    Scene empty;
+    QVERIFY(!saveSceneFile(empty, path, &error));
+    QVERIFY2(error.contains(QStringLiteral("objects:")), qPrintable(error));
+
+    QVERIFY(original.open(QIODevice::ReadOnly));
+    QCOMPARE(original.readAll(), before);
+}
+
+// docs/scene-format.md's example must stay a valid, warning-free scene.
+void TestSceneJson::docExampleLoadsCleanly()
+{
+    QFile doc(QStringLiteral(PHONGLAB_SOURCE_DIR "/docs/scene-format.md"));
+    QVERIFY2(doc.open(QIODevice::ReadOnly | QIODevice::Text), qPrintable(doc.fileName()));
+    const QString text = QString::fromUtf8(doc.readAll());
+    static const QRegularExpression block(QStringLiteral("```json\\n(.*?)```"),
+                                          QRegularExpression::DotMatchesEverythingOption);
+    auto it = block.globalMatch(text);
+    int examples = 0;
+    while (it.hasNext()) {
+        const QString json = it.next().captured(1);
+        const SceneLoadResult result = parseScene(json.toUtf8());
+        QVERIFY2(result.ok(), qPrintable(result.error + QStringLiteral("\n") + json));
+        QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+        ++examples;
+    }
+    QVERIFY(examples >= 1);
+}
+
+QTEST_GUILESS_MAIN(TestSceneJson)
+#include "tst_scenejson.moc"
