@@ -1,0 +1,337 @@
+// The editor window end to end, on a real GL context (Mesa llvmpipe under
+// Xvfb): the default scene is drawn and lit, bad files leave the scene alone,
+// the mouse moves the camera, reset restores it, and saving round-trips.
+
+#include "core/SceneJson.h"
+#include "render/GlFormat.h"
+#include "ui/MainWindow.h"
+#include "ui/Viewport.h"
+
+#include <QDir>
+#include <QLabel>
+#include <QStatusBar>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QWheelEvent>
+#include <memory>
+
+using namespace phonglab;
+
+namespace {
+
+constexpr int kBackgroundTolerance = 6; // 8-bit steps, per channel
+constexpr int kTintMargin = 40;         // how much one channel must beat the other
+
+QString defaultScenePathInSource()
+{
+    return QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json");
+}
+
+QRgb toRgb(const glm::dvec3 &c)
+{
+    return qRgb(qRound(c.r * 255.0), qRound(c.g * 255.0), qRound(c.b * 255.0));
+}
+
+bool differsFrom(QRgb a, QRgb b, int tolerance)
+{
+    return std::abs(qRed(a) - qRed(b)) > tolerance || std::abs(qGreen(a) - qGreen(b)) > tolerance
+        || std::abs(qBlue(a) - qBlue(b)) > tolerance;
+}
+
+struct FrameStats {
+    double foregroundFraction = 0.0; // pixels that are not background
+    double warmFraction = 0.0;       // red clearly above blue
+    double coolFraction = 0.0;       // blue clearly above red
+};
+
+FrameStats analyse(const QImage &frame, QRgb background)
+{
+    const QImage image = frame.convertToFormat(QImage::Format_RGB32);
+    qint64 foreground = 0, warm = 0, cool = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        const auto *line = reinterpret_cast<const QRgb *>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = line[x];
+            if (!differsFrom(p, background, kBackgroundTolerance))
+                continue;
+            ++foreground;
+            warm += qRed(p) > qBlue(p) + kTintMargin;
+            cool += qBlue(p) > qRed(p) + kTintMargin;
+        }
+    }
+    const double total = double(image.width()) * image.height();
+    return {foreground / total, warm / total, cool / total};
+}
+
+qint64 differingPixels(const QImage &a, const QImage &b)
+{
+    const QImage x = a.convertToFormat(QImage::Format_RGB32);
+    const QImage y = b.convertToFormat(QImage::Format_RGB32);
+    if (x.size() != y.size())
+        return qint64(x.width()) * x.height();
+    qint64 count = 0;
+    for (int row = 0; row < x.height(); ++row)
+        for (int col = 0; col < x.width(); ++col)
+            count += differsFrom(x.pixel(col, row), y.pixel(col, row), 2);
+    return count;
+}
+
+void writeFile(const QString &path, const QByteArray &contents)
+{
+    QFile file(path);
+    QVERIFY2(file.open(QIODevice::WriteOnly), qPrintable(file.errorString()));
+    file.write(contents);
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void opensDefaultSceneAndDrawsLitObject();
+    void showsFrameStatsAndRenderer();
+    void lightMarkersCanBeHidden();
+    void failedOpenKeepsCurrentScene_data();
+    void failedOpenKeepsCurrentScene();
+    void leftDragOrbitsCamera();
+    void rightDragPansAndWheelZooms();
+    void resetRestoresOriginalCamera_data();
+    void resetRestoresOriginalCamera();
+    void saveThenReopenGivesEqualScene();
+
+private:
+    Viewport *viewport() const { return m_window->viewport(); }
+    QImage frame() const { return viewport()->grabFramebuffer(); }
+    void drag(Qt::MouseButton button, QPoint by);
+    void saveArtifact(const QString &name, const QImage &image) const;
+
+    std::unique_ptr<MainWindow> m_window;
+    Scene m_loaded; // default.json exactly as on disk
+};
+
+void TestMainWindow::initTestCase()
+{
+    // No multisampling: pixel colours are single fragments, easier to reason about.
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+    const SceneLoadResult loaded = loadSceneFile(defaultScenePathInSource());
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    m_loaded = *loaded.scene;
+}
+
+void TestMainWindow::init()
+{
+    m_window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(m_window->openScene(defaultScenePathInSource(), &error), qPrintable(error));
+    m_window->resize(800, 600);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    QVERIFY(viewport()->isRenderReady());
+}
+
+void TestMainWindow::cleanup()
+{
+    m_window.reset();
+}
+
+void TestMainWindow::drag(Qt::MouseButton button, QPoint by)
+{
+    const QPoint start = viewport()->rect().center();
+    QTest::mousePress(viewport(), button, Qt::NoModifier, start);
+    // Several steps, as a real drag would arrive.
+    for (int step = 1; step <= 4; ++step)
+        QTest::mouseMove(viewport(), start + by * step / 4);
+    QTest::mouseRelease(viewport(), button, Qt::NoModifier, start + by);
+}
+
+void TestMainWindow::saveArtifact(const QString &name, const QImage &image) const
+{
+    const QString dir = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
+    if (!dir.isEmpty() && QDir().mkpath(dir))
+        image.save(QDir(dir).filePath(name));
+}
+
+void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
+{
+    QCOMPARE(viewport()->currentScene(), m_loaded);
+    QVERIFY2(m_window->windowTitle().contains(QStringLiteral("default.json")), qPrintable(m_window->windowTitle()));
+
+    const QImage image = frame();
+    QVERIFY(!image.isNull());
+    saveArtifact(QStringLiteral("mainwindow-viewport.png"), image);
+    saveArtifact(QStringLiteral("mainwindow-window.png"), m_window->grab().toImage());
+
+    const FrameStats stats = analyse(image, toRgb(m_loaded.background));
+    QVERIFY2(stats.foregroundFraction > 0.05, qPrintable(QString::number(stats.foregroundFraction)));
+    QVERIFY(viewport()->showLightMarkers());
+}
+
+void TestMainWindow::showsFrameStatsAndRenderer()
+{
+    QStringList texts;
+    QTRY_VERIFY([&] {
+        texts.clear();
+        for (const QLabel *label : m_window->statusBar()->findChildren<QLabel *>())
+            texts << label->text();
+        return texts.join(u'|').contains(QStringLiteral(" ms")) && texts.join(u'|').contains(QStringLiteral("triangles"));
+    }());
+    QVERIFY2(texts.join(u'|').contains(QStringLiteral("OpenGL")), qPrintable(texts.join(u'|')));
+    QVERIFY(viewport()->glRendererName().startsWith(QStringLiteral("OpenGL")));
+}
+
+void TestMainWindow::lightMarkersCanBeHidden()
+{
+    const QImage withMarkers = frame();
+    viewport()->setShowLightMarkers(false);
+    const QImage withoutMarkers = frame();
+    QVERIFY(differingPixels(withMarkers, withoutMarkers) > 0);
+
+    // Without markers every tinted pixel belongs to the lit torus: the first
+    // light is reddish, the second bluish, and each lights part of it.
+    saveArtifact(QStringLiteral("mainwindow-no-markers.png"), withoutMarkers);
+    const FrameStats stats = analyse(withoutMarkers, toRgb(m_loaded.background));
+    QVERIFY2(stats.foregroundFraction > 0.05, qPrintable(QString::number(stats.foregroundFraction)));
+    QVERIFY2(stats.warmFraction > 0.005, qPrintable(QString::number(stats.warmFraction)));
+    QVERIFY2(stats.coolFraction > 0.005, qPrintable(QString::number(stats.coolFraction)));
+}
+
+void TestMainWindow::failedOpenKeepsCurrentScene_data()
+{
+    QTest::addColumn<QByteArray>("contents");
+    QTest::addColumn<QString>("expectedError");
+    QTest::newRow("malformed JSON") << QByteArray("{ \"mesh\": \"builtin:torus\", ") << QStringLiteral("JSON syntax error");
+    QTest::newRow("missing mesh file")
+        << QByteArray(R"({"mesh": "no-such-mesh.obj", "lights": [{"position": [1, 1, 1]}]})")
+        << QStringLiteral("no-such-mesh.obj");
+}
+
+void TestMainWindow::failedOpenKeepsCurrentScene()
+{
+    QFETCH(QByteArray, contents);
+    QFETCH(QString, expectedError);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    writeFile(path, contents);
+
+    drag(Qt::LeftButton, {30, 0}); // the kept scene includes the moved camera
+    const Scene before = viewport()->currentScene();
+    const QString title = m_window->windowTitle();
+    const QImage imageBefore = frame();
+
+    QString error;
+    QVERIFY(!m_window->openScene(path, &error));
+    QVERIFY2(error.contains(expectedError), qPrintable(error));
+
+    QCOMPARE(viewport()->currentScene(), before);
+    QCOMPARE(m_window->scenePath(), defaultScenePathInSource());
+    QCOMPARE(m_window->windowTitle(), title);
+    QCOMPARE(differingPixels(frame(), imageBefore), 0);
+}
+
+void TestMainWindow::leftDragOrbitsCamera()
+{
+    const Camera original = viewport()->camera();
+    const QImage before = frame();
+    drag(Qt::LeftButton, {80, 40});
+    const Camera moved = viewport()->camera();
+
+    QVERIFY(moved.eye != original.eye);
+    QCOMPARE(moved.target, original.target); // orbiting turns about the target
+    QVERIFY(qAbs(glm::length(moved.eye - moved.target) - glm::length(original.eye - original.target)) < 1e-9);
+    QCOMPARE(moved.fovDeg, original.fovDeg);
+    QCOMPARE(moved.nearPlane, original.nearPlane);
+    QCOMPARE(moved.farPlane, original.farPlane);
+
+    const QImage after = frame();
+    saveArtifact(QStringLiteral("mainwindow-orbited.png"), after);
+    QVERIFY(differingPixels(before, after) > before.width() * before.height() / 100);
+}
+
+void TestMainWindow::rightDragPansAndWheelZooms()
+{
+    const Camera original = viewport()->camera();
+    drag(Qt::RightButton, {50, 0});
+    const Camera panned = viewport()->camera();
+    QVERIFY(panned.target != original.target);
+    // Panning slides the camera without turning it.
+    QVERIFY(glm::length((panned.eye - panned.target) - (original.eye - original.target)) < 1e-9);
+
+    const QPointF centre = QPointF(viewport()->rect().center());
+    QWheelEvent wheel(centre, viewport()->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+    const Camera zoomed = viewport()->camera();
+    QVERIFY(glm::length(zoomed.eye - zoomed.target) < glm::length(panned.eye - panned.target));
+    QCOMPARE(zoomed.target, panned.target);
+}
+
+void TestMainWindow::resetRestoresOriginalCamera_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::newRow("R") << int(Qt::Key_R);
+    QTest::newRow("Home") << int(Qt::Key_Home);
+}
+
+void TestMainWindow::resetRestoresOriginalCamera()
+{
+    QFETCH(int, key);
+    const QImage originalFrame = frame();
+    drag(Qt::LeftButton, {-120, 70});
+    drag(Qt::MiddleButton, {25, -15});
+    QWheelEvent wheel(QPointF(10, 10), viewport()->mapToGlobal(QPointF(10, 10)), QPoint(), QPoint(0, -240),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+    QVERIFY(!(viewport()->camera() == m_loaded.camera));
+
+    viewport()->setFocus();
+    QTest::keyClick(viewport(), Qt::Key(key));
+    QCOMPARE(viewport()->camera(), m_loaded.camera); // exactly, not approximately
+    QCOMPARE(viewport()->currentScene(), m_loaded);
+    QCOMPARE(differingPixels(frame(), originalFrame), 0);
+}
+
+void TestMainWindow::saveThenReopenGivesEqualScene()
+{
+    drag(Qt::LeftButton, {45, -25});
+    const Scene shown = viewport()->currentScene();
+    QVERIFY(!(shown.camera == m_loaded.camera)); // the saved camera must be the current one
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("saved.json"));
+    QString error;
+    QVERIFY2(m_window->saveScene(path, &error), qPrintable(error));
+    QCOMPARE(m_window->scenePath(), path);
+    QVERIFY(m_window->windowTitle().contains(QStringLiteral("saved.json")));
+
+    const SceneLoadResult reread = loadSceneFile(path);
+    QVERIFY2(reread.ok(), qPrintable(reread.error));
+    QCOMPARE(*reread.scene, shown);
+
+    // Reopened in the window it is the same scene, and "reset" now goes back
+    // to the saved camera.
+    QVERIFY(m_window->openScene(defaultScenePathInSource(), &error));
+    QVERIFY2(m_window->openScene(path, &error), qPrintable(error));
+    QCOMPARE(viewport()->currentScene(), shown);
+    drag(Qt::LeftButton, {-60, 0});
+    viewport()->resetCamera();
+    QCOMPARE(viewport()->camera(), shown.camera);
+
+    // A failed save reports why and changes nothing.
+    const QString unwritable = dir.filePath(QStringLiteral("no-such-folder/saved.json"));
+    QVERIFY(!m_window->saveScene(unwritable, &error));
+    QVERIFY(!error.isEmpty());
+    QCOMPARE(m_window->scenePath(), path);
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"
