@@ -108,7 +108,7 @@ bool MainWindow::openScene(const QString &path, QString *error)
     if (!loaded.warnings.isEmpty())
         statusBar()->showMessage(loaded.warnings.join(QStringLiteral("; ")), kWarningTimeoutMs);
     else
-        statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), kWarningTimeoutMs);
+        statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
     return true;
 }
 
@@ -117,7 +117,7 @@ bool MainWindow::saveScene(const QString &path, QString *error)
     if (!saveSceneFile(rebasedOnto(m_viewport->currentScene(), path), path, error))
         return false;
     setScenePath(path);
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), kWarningTimeoutMs);
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
     return true;
 }
 

@@ -76,7 +76,13 @@ void TestCliRender::rendersPng()
     QImage image(out);
     QCOMPARE(image.size(), QSize(160, 120));
     QVERIFY(!image.hasAlphaChannel());
-    QCOMPARE(image.format(), QImage::Format_RGB888); // 8-bit RGB on disk
+    // 8-bit RGB on disk: the PNG header's IHDR says bit depth 8, colour type 2.
+    QFile file(out);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray header = file.read(26);
+    QCOMPARE(header.mid(12, 4), QByteArray("IHDR"));
+    QCOMPARE(int(header[24]), 8);
+    QCOMPARE(int(header[25]), 2);
     // The sphere is lit in the middle and the corner is the background
     // (0.1, 0.1, 0.12) -> (26, 26, 31).
     QCOMPARE(image.pixelColor(0, 0), QColor(26, 26, 31));

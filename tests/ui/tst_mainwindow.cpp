@@ -110,6 +110,7 @@ private:
     Viewport *viewport() const { return m_window->viewport(); }
     QImage frame() const { return viewport()->grabFramebuffer(); }
     void drag(Qt::MouseButton button, QPoint by);
+    void zoom(int notches); // > 0 towards the scene, as a wheel turned away from the user
     void saveArtifact(const QString &name, const QImage &image) const;
 
     std::unique_ptr<MainWindow> m_window;
@@ -152,6 +153,14 @@ void TestMainWindow::drag(Qt::MouseButton button, QPoint by)
     QTest::mouseRelease(viewport(), button, Qt::NoModifier, start + by);
 }
 
+void TestMainWindow::zoom(int notches)
+{
+    const QPointF centre = QPointF(viewport()->rect().center());
+    QWheelEvent wheel(centre, viewport()->mapToGlobal(centre), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+}
+
 void TestMainWindow::saveArtifact(const QString &name, const QImage &image) const
 {
     const QString dir = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
@@ -189,18 +198,24 @@ void TestMainWindow::showsFrameStatsAndRenderer()
 
 void TestMainWindow::lightMarkersCanBeHidden()
 {
-    const QImage withMarkers = frame();
-    viewport()->setShowLightMarkers(false);
-    const QImage withoutMarkers = frame();
-    QVERIFY(differingPixels(withMarkers, withoutMarkers) > 0);
-
     // Without markers every tinted pixel belongs to the lit torus: the first
     // light is reddish, the second bluish, and each lights part of it.
-    saveArtifact(QStringLiteral("mainwindow-no-markers.png"), withoutMarkers);
-    const FrameStats stats = analyse(withoutMarkers, toRgb(m_loaded.background));
+    viewport()->setShowLightMarkers(false);
+    const QImage unmarked = frame();
+    saveArtifact(QStringLiteral("mainwindow-no-markers.png"), unmarked);
+    const FrameStats stats = analyse(unmarked, toRgb(m_loaded.background));
     QVERIFY2(stats.foregroundFraction > 0.05, qPrintable(QString::number(stats.foregroundFraction)));
     QVERIFY2(stats.warmFraction > 0.005, qPrintable(QString::number(stats.warmFraction)));
     QVERIFY2(stats.coolFraction > 0.005, qPrintable(QString::number(stats.coolFraction)));
+
+    // The default camera frames the torus and leaves both lights just outside
+    // the view; step back until they are in it.
+    zoom(-4);
+    const QImage withoutMarkers = frame();
+    viewport()->setShowLightMarkers(true);
+    const QImage withMarkers = frame();
+    saveArtifact(QStringLiteral("mainwindow-markers.png"), withMarkers);
+    QVERIFY(differingPixels(withMarkers, withoutMarkers) > 0);
 }
 
 void TestMainWindow::failedOpenKeepsCurrentScene_data()
@@ -265,10 +280,7 @@ void TestMainWindow::rightDragPansAndWheelZooms()
     // Panning slides the camera without turning it.
     QVERIFY(glm::length((panned.eye - panned.target) - (original.eye - original.target)) < 1e-9);
 
-    const QPointF centre = QPointF(viewport()->rect().center());
-    QWheelEvent wheel(centre, viewport()->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
-                      Qt::NoModifier, Qt::NoScrollPhase, false);
-    QApplication::sendEvent(viewport(), &wheel);
+    zoom(1);
     const Camera zoomed = viewport()->camera();
     QVERIFY(glm::length(zoomed.eye - zoomed.target) < glm::length(panned.eye - panned.target));
     QCOMPARE(zoomed.target, panned.target);
@@ -287,9 +299,7 @@ void TestMainWindow::resetRestoresOriginalCamera()
     const QImage originalFrame = frame();
     drag(Qt::LeftButton, {-120, 70});
     drag(Qt::MiddleButton, {25, -15});
-    QWheelEvent wheel(QPointF(10, 10), viewport()->mapToGlobal(QPointF(10, 10)), QPoint(), QPoint(0, -240),
-                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
-    QApplication::sendEvent(viewport(), &wheel);
+    zoom(-2);
     QVERIFY(!(viewport()->camera() == m_loaded.camera));
 
     viewport()->setFocus();
