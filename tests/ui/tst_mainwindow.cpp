@@ -269,6 +269,14 @@ void TestMainWindow::leftDragOrbitsCamera()
     const QImage after = frame();
     saveArtifact(QStringLiteral("mainwindow-orbited.png"), after);
     QVERIFY(differingPixels(before, after) > before.width() * before.height() / 100);
+
+    // However far the drag goes, the view stops short of looking straight
+    // down, where lookAt would flip.
+    drag(Qt::LeftButton, {0, 1500});
+    const Camera top = viewport()->camera();
+    const double cosFromUp = glm::dot(glm::normalize(top.eye - top.target), glm::normalize(top.up));
+    QVERIFY2(cosFromUp > 0.99 && cosFromUp < 1.0, qPrintable(QString::number(cosFromUp, 'g', 17)));
+    QVERIFY(analyse(frame(), toRgb(m_loaded.background)).foregroundFraction > 0.05);
 }
 
 void TestMainWindow::rightDragPansAndWheelZooms()
