@@ -4,6 +4,7 @@
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
+#include "mesh/NormalOptions.h"
 
 #include <QString>
 #include <vector>
@@ -17,6 +18,7 @@ struct SceneObject {
     QString mesh;
     Transform transform;
     Material material;
+    NormalOptions normals; // how the mesh gets normals (file's, or computed)
 
     bool operator==(const SceneObject &) const = default;
 };

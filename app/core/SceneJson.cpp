@@ -62,6 +62,7 @@ private:
     bool readShading(const QJsonValue &value, const QString &path, ShadingMethod &out);
     bool readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out);
     bool readSingleObject(const QJsonObject &root, SceneObject &out);
+    bool readNormals(const QJsonValue &value, const QString &path, NormalOptions &out);
     bool readObjects(const QJsonObject &root, std::vector<SceneObject> &out);
 
     QString m_error;
@@ -311,10 +312,11 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path, s
         QJsonObject object;
         if (!readObject(array.at(i), objectPath, object))
             return false;
-        warnUnknownKeys(object, objectPath, {"mesh"_L1, "transform"_L1, "material"_L1});
+        warnUnknownKeys(object, objectPath, {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1});
         if (!readMesh(object.value("mesh"_L1), childPath(objectPath, "mesh"_L1), objects[i].mesh)
             || !readTransform(object.value("transform"_L1), childPath(objectPath, "transform"_L1), objects[i].transform)
-            || !readMaterial(object.value("material"_L1), childPath(objectPath, "material"_L1), objects[i].material))
+            || !readMaterial(object.value("material"_L1), childPath(objectPath, "material"_L1), objects[i].material)
+            || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1), objects[i].normals))
             return false;
     }
     out = std::move(objects);
@@ -325,7 +327,13 @@ bool SceneReader::readSingleObject(const QJsonObject &root, SceneObject &out)
 {
     return readMesh(root.value("mesh"_L1), QStringLiteral("mesh"), out.mesh)
         && readTransform(root.value("transform"_L1), QStringLiteral("transform"), out.transform)
-        && readMaterial(root.value("material"_L1), QStringLiteral("material"), out.material);
+        && readMaterial(root.value("material"_L1), QStringLiteral("material"), out.material)
+        && readNormals(root.value("normals"_L1), QStringLiteral("normals"), out.normals);
+}
+
+bool SceneReader::readNormals(const QJsonValue &value, const QString &path, NormalOptions &out)
+{
+    return scenejson::readNormalOptions(value, path, out, &m_error);
 }
 
 bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> &out)
@@ -338,7 +346,7 @@ bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> 
         return fail(QStringLiteral("mesh"), QStringLiteral("required field missing (or give \"objects\")"));
     if (hasObjects) {
         // Top-level transform/material belong to the single-object form only.
-        for (const auto key : {"transform"_L1, "material"_L1})
+        for (const auto key : {"transform"_L1, "material"_L1, "normals"_L1})
             if (root.contains(key))
                 m_warnings << QString(key) + QStringLiteral(": ignored with \"objects\" (give each object its own)");
         return readObjectList(root.value("objects"_L1), QStringLiteral("objects"), out);
@@ -359,7 +367,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     }
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
-                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "camera"_L1,
+                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "camera"_L1,
                      "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1});
     Scene scene;
     scene.baseDir = baseDir;

@@ -135,4 +135,57 @@ QString describeType(const QJsonValue &value)
     return QStringLiteral("nothing");
 }
 
+bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions &out, QString *error)
+{
+    if (value.isUndefined())
+        return true;
+    auto fail = [&](const QString &where, const QString &reason) {
+        *error = where + QStringLiteral(": ") + reason;
+        return false;
+    };
+    auto readMethod = [&](const QJsonValue &v, const QString &where) {
+        if (!v.isString())
+            return fail(where, QStringLiteral("expected a string (got %1)").arg(describeType(v)));
+        const auto method = normalMethodFromName(v.toString());
+        if (!method)
+            return fail(where, QStringLiteral("unknown normal method \"%1\" (known: %2)")
+                                   .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
+        out.method = *method;
+        return true;
+    };
+    if (value.isString())
+        return readMethod(value, path);
+    if (!value.isObject())
+        return fail(path, QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
+    const QJsonObject object = value.toObject();
+    for (auto it = object.begin(); it != object.end(); ++it)
+        if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
+            return fail(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
+    if (object.contains(QLatin1String("method")) && !readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method")))
+        return false;
+    const QJsonValue crease = object.value(QLatin1String("crease_deg"));
+    if (crease.isUndefined() || crease.isNull()) {
+        out.creaseAngleDeg.reset();
+        return true;
+    }
+    const QString creasePath = path + QStringLiteral(".crease_deg");
+    if (!crease.isDouble() || overflowLiteral(crease))
+        return fail(creasePath, QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
+    const double degrees = crease.toDouble();
+    if (!(degrees >= 0.0 && degrees <= 180.0))
+        return fail(creasePath, QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
+    out.creaseAngleDeg = degrees;
+    return true;
+}
+
+QJsonValue normalOptionsJson(const NormalOptions &options)
+{
+    if (!options.creaseAngleDeg)
+        return normalMethodName(options.method);
+    QJsonObject object;
+    object.insert(QStringLiteral("method"), normalMethodName(options.method));
+    object.insert(QStringLiteral("crease_deg"), *options.creaseAngleDeg);
+    return object;
+}
+
 } // namespace phonglab::scenejson

@@ -5,6 +5,8 @@
 #include <QString>
 #include <optional>
 
+#include "mesh/NormalOptions.h"
+
 // Internal to SceneJson*.cpp: the JSON-text layer under the scene reader.
 namespace phonglab::scenejson {
 
@@ -24,5 +26,11 @@ std::optional<QString> overflowLiteral(const QJsonValue &value);
 
 // "number", "string", ... for messages like "expected an array (got string)".
 QString describeType(const QJsonValue &value);
+
+// The "normals" field of an object: "auto" | "flat" | "average" | "area" |
+// "angle", or {"method": <one of those>, "crease_deg": <0..180>}. On failure
+// returns false with *error = "<path>: <reason>".
+bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions &out, QString *error);
+QJsonValue normalOptionsJson(const NormalOptions &options);
 
 } // namespace phonglab::scenejson

@@ -1,4 +1,5 @@
 #include "SceneJson.h"
+#include "SceneJsonText.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -66,6 +67,8 @@ void insertObject(QJsonObject &into, const SceneObject &object)
     into.insert(QStringLiteral("mesh"), object.mesh);
     into.insert(QStringLiteral("transform"), transformJson(object.transform));
     into.insert(QStringLiteral("material"), materialJson(object.material));
+    if (object.normals != NormalOptions{})
+        into.insert(QStringLiteral("normals"), scenejson::normalOptionsJson(object.normals));
 }
 
 } // namespace
