@@ -1,6 +1,7 @@
 #include "Cli.h"
 
 #include "CliCommon.h"
+#include "MeshInfoCommand.h"
 #include "RenderCommand.h"
 
 #include <QString>
@@ -17,6 +18,7 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a scene offscreen into a PNG", runRender},
+    {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
 };
 
 void printHelp()
@@ -26,7 +28,7 @@ void printHelp()
         "       phonglab <command> [options]   run a command without a window\n\n"
         "commands:\n");
     for (const Subcommand &c : kSubcommands)
-        text += QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -10).arg(QString::fromLatin1(c.summary));
+        text += QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -11).arg(QString::fromLatin1(c.summary));
     text += QStringLiteral("\n'phonglab <command> --help' describes a command's options.");
     printLine(text);
 }

@@ -1,0 +1,162 @@
+#include "MeshInfoCommand.h"
+
+#include "CliCommon.h"
+#include "mesh/MeshLoader.h"
+
+#include <QCommandLineParser>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <variant>
+
+namespace phonglab::cli {
+
+namespace {
+
+struct MeshInfoArgs {
+    QString path;
+    bool json = false;
+    NormalOptions normals;
+};
+
+const char kUsage[] = "usage: phonglab mesh-info FILE [--json] [--normals METHOD] [--crease DEG]";
+
+std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
+    const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal method."), QStringLiteral("method"));
+    const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."), QStringLiteral("deg"));
+    parser.addOptions({help, json, normals, crease});
+
+    auto usage = [](const QString &message) {
+        printError(message);
+        printErrLine(QString::fromLatin1(kUsage));
+        return kExitUsage;
+    };
+    if (!parser.parse(arguments))
+        return usage(parser.errorText());
+    if (parser.isSet(help)) {
+        printLine(QString::fromLatin1(kUsage) + QStringLiteral(
+            "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
+            "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
+            "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
+            "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
+            "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
+            "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
+            "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments."));
+        return kExitOk;
+    }
+    if (parser.positionalArguments().size() != 1)
+        return usage(QStringLiteral("expected exactly one mesh file"));
+
+    MeshInfoArgs args;
+    args.path = parser.positionalArguments().first();
+    args.json = parser.isSet(json);
+    if (parser.isSet(normals)) {
+        const auto method = normalMethodFromName(parser.value(normals));
+        if (!method)
+            return usage(QStringLiteral("--normals: unknown method '%1' (known: %2)")
+                             .arg(parser.value(normals), normalMethodNames().join(QStringLiteral(", "))));
+        args.normals.method = *method;
+    }
+    if (parser.isSet(crease)) {
+        bool ok = false;
+        const double degrees = parser.value(crease).toDouble(&ok);
+        if (!ok || !(degrees >= 0.0 && degrees <= 180.0))
+            return usage(QStringLiteral("--crease: expected degrees in [0, 180], got '%1'").arg(parser.value(crease)));
+        args.normals.creaseAngleDeg = degrees;
+    }
+    return args;
+}
+
+// Floats printed as the shortest decimal that reads back as the same float
+// (1.4f, not 1.399999976158142).
+double floatToJson(float f)
+{
+    for (int digits = 6; digits < 9; ++digits) {
+        const QString text = QString::number(double(f), 'g', digits);
+        if (text.toFloat() == f)
+            return text.toDouble();
+    }
+    return double(f);
+}
+
+QJsonArray vec3Json(const glm::vec3 &v)
+{
+    return QJsonArray{floatToJson(v.x), floatToJson(v.y), floatToJson(v.z)};
+}
+
+QString methodDescription(const MeshStats &s)
+{
+    QString text = normalMethodName(s.normalMethod);
+    if (s.creaseAngleDeg)
+        text += QStringLiteral(", crease %1°").arg(*s.creaseAngleDeg);
+    return text;
+}
+
+void printJson(const QString &path, const MeshLoadResult &r)
+{
+    const MeshStats &s = r.stats;
+    QJsonObject o;
+    o.insert(QStringLiteral("file"), path);
+    o.insert(QStringLiteral("vertices"), s.fileVertices);
+    o.insert(QStringLiteral("faces"), s.fileFaces);
+    o.insert(QStringLiteral("normals"), s.normalsFromFile ? QStringLiteral("file") : QStringLiteral("computed"));
+    o.insert(QStringLiteral("normal_method"), s.normalsFromFile ? QStringLiteral("file")
+                                              : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
+                                                                                          : normalMethodName(s.normalMethod));
+    o.insert(QStringLiteral("crease_deg"), s.creaseAngleDeg ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
+    o.insert(QStringLiteral("bounds"), QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)},
+                                                   {QStringLiteral("max"), vec3Json(s.boundsMax)}});
+    o.insert(QStringLiteral("gpu_vertices"), s.vertices);
+    o.insert(QStringLiteral("triangles"), s.triangles);
+    o.insert(QStringLiteral("split_vertices"), s.splitVertices);
+    o.insert(QStringLiteral("closed"), s.closed);
+    o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(r.warnings));
+    o.insert(QStringLiteral("load_ms"), s.loadMs);
+    printLine(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented)).trimmed());
+}
+
+void printText(const QString &path, const MeshLoadResult &r)
+{
+    const MeshStats &s = r.stats;
+    const auto v = [](const glm::vec3 &p) { return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z); };
+    printLine(QStringLiteral("file:            %1").arg(path));
+    printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
+    printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
+    printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
+    printLine(QStringLiteral("normals:         %1").arg(s.normalsFromFile ? QStringLiteral("from the file, per face corner")
+                                                                           : QStringLiteral("computed (%1)").arg(methodDescription(s))));
+    printLine(QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)").arg(s.vertices).arg(s.splitVertices));
+    printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
+    printLine(QStringLiteral("surface:         %1").arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
+    printLine(QStringLiteral("load time:       %1 ms").arg(s.loadMs, 0, 'f', 1));
+    printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
+    for (const QString &w : r.warnings)
+        printLine(QStringLiteral("  - ") + w);
+}
+
+} // namespace
+
+int runMeshInfo(int argc, char **argv)
+{
+    const auto parsed = parseArgs(argumentsFrom(argc, argv).mid(1));
+    if (const int *code = std::get_if<int>(&parsed))
+        return *code;
+    const MeshInfoArgs &args = std::get<MeshInfoArgs>(parsed);
+    const MeshLoadResult result = loadMesh(args.path, args.normals);
+    if (!result.ok()) {
+        printError(result.error);
+        return kExitFailure;
+    }
+    if (args.json)
+        printJson(args.path, result);
+    else
+        printText(args.path, result);
+    return kExitOk;
+}
+
+} // namespace phonglab::cli
