@@ -103,7 +103,7 @@ int rootsInInterval(const Coefficients &c, int degree, double lo, double hi, dou
 
 // --- Scene preparation -------------------------------------------------------
 
-enum class Surface { Sphere, Torus };
+enum class Surface { Sphere, Torus, Box };
 
 // Everything one object needs per ray, computed once per image.
 struct PreparedObject {
@@ -115,8 +115,11 @@ struct PreparedObject {
     const Material *material = nullptr;
 };
 
-std::optional<Surface> analyticSurfaceFor(const QString &mesh)
+std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten, const QHash<QString, QString> &standIns)
 {
+    const QString mesh = standIns.value(meshAsWritten, meshAsWritten);
+    if (mesh == QLatin1String("builtin:cube"))
+        return Surface::Box;
     if (mesh == QLatin1String("builtin:sphere"))
         return Surface::Sphere;
     if (mesh == QLatin1String("builtin:torus"))
@@ -124,18 +127,19 @@ std::optional<Surface> analyticSurfaceFor(const QString &mesh)
     return std::nullopt;
 }
 
-std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect, QString *error)
+std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect, QString *error,
+                                                          const QHash<QString, QString> &standIns)
 {
     const glm::dmat4 view = scene.camera.viewMatrix();
     const glm::dmat4 projection = scene.camera.projectionMatrix(aspect);
     std::vector<PreparedObject> prepared;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject &object = scene.objects[i];
-        const std::optional<Surface> surface = analyticSurfaceFor(object.mesh);
+        const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
         if (!surface) {
             if (error)
                 *error = QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
-                                        "(the reference ray caster knows builtin:sphere and builtin:torus)")
+                                        "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
                              .arg(i)
                              .arg(object.mesh);
             return std::nullopt;
@@ -175,9 +179,12 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
     for (const PreparedObject &object : objects) {
         const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
         const double tMax = std::min(farPlane, best.t);
-        const std::optional<double> t = object.surface == Surface::Sphere
-            ? intersectUnitSphere(ray, nearPlane, tMax)
-            : intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
+        std::optional<double> t;
+        switch (object.surface) {
+        case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
+        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
+        }
         // Strictly nearer only: on an exact tie the GPU's GL_LESS depth test
         // keeps the object drawn first.
         if (t && *t < best.t) {
@@ -196,7 +203,9 @@ glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpace
     // Exact normals of the analytic surface, mapped like the GPU maps vertex
     // normals. No flip towards the viewer: phong.frag does not flip either,
     // so an inside seen through the near plane is lit as the GPU lights it.
-    const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p : torusNormal(p, kTorusMajorRadius);
+    const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
+        : object.surface == Surface::Torus                             ? torusNormal(p, kTorusMajorRadius)
+                                                                       : boxNormal(p);
     const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(p, 1.0));
     const glm::dvec3 normal = object.normalMatrix * objectNormal;
     return phongIntensity(position, normal, *object.material, scene.ambient, lights);
@@ -282,6 +291,43 @@ std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
     return (uLo + roots[0]) / length;
 }
 
+std::optional<double> intersectUnitBox(const Ray &ray, double tMin, double tMax)
+{
+    // Slabs: the ray is inside the box where it is inside all three.
+    double enter = -std::numeric_limits<double>::infinity();
+    double leave = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0.0) {
+            if (o < -1.0 || o > 1.0)
+                return std::nullopt;
+            continue;
+        }
+        double t0 = (-1.0 - o) / d, t1 = (1.0 - o) / d;
+        if (t0 > t1)
+            std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    if (enter > leave)
+        return std::nullopt;
+    if (enter >= tMin && enter <= tMax)
+        return enter;
+    if (leave >= tMin && leave <= tMax) // the near plane cuts the box
+        return leave;
+    return std::nullopt;
+}
+
+glm::dvec3 boxNormal(const glm::dvec3 &p)
+{
+    const glm::dvec3 a = glm::abs(p);
+    if (a.x >= a.y && a.x >= a.z)
+        return {p.x > 0 ? 1.0 : -1.0, 0.0, 0.0};
+    if (a.y >= a.z)
+        return {0.0, p.y > 0 ? 1.0 : -1.0, 0.0};
+    return {0.0, 0.0, p.z > 0 ? 1.0 : -1.0};
+}
+
 glm::dvec3 torusNormal(const glm::dvec3 &p, double majorRadius)
 {
     // From p, away from the nearest point of the tube's centre circle.
@@ -289,7 +335,8 @@ glm::dvec3 torusNormal(const glm::dvec3 &p, double majorRadius)
     return glm::normalize(p - ringPoint);
 }
 
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error)
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error,
+                                           const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0) {
         if (error)
@@ -297,7 +344,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
         return std::nullopt;
     }
     const std::optional<std::vector<PreparedObject>> objects =
-        prepareObjects(scene, double(width) / double(height), error);
+        prepareObjects(scene, double(width) / double(height), error, standIns);
     if (!objects)
         return std::nullopt;
 

@@ -3,6 +3,7 @@
 #include "ReferenceImage.h"
 #include "Scene.h"
 
+#include <QHash>
 #include <QString>
 #include <optional>
 
@@ -18,8 +19,13 @@ namespace phonglab {
 //
 // Objects with any other mesh have no analytic surface: the result is nullopt
 // and *error names the mesh.
+//
+// `standIns` maps a mesh as written in the scene (e.g. a Blender cube's file
+// path) to the builtin whose analytic surface it should be compared with
+// ("builtin:cube" is the box [-1, 1]³ with its face normals).
 std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                           QString *error = nullptr);
+                                           QString *error = nullptr,
+                                           const QHash<QString, QString> &standIns = {});
 
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
 // change of coordinates, which is what lets camera-space depth be compared
@@ -39,6 +45,9 @@ Ray cameraRay(const Camera &camera, int x, int y, int width, int height);
 std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tMax);
 std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
                                      double majorRadius, double minorRadius);
+
+std::optional<double> intersectUnitBox(const Ray &ray, double tMin, double tMax);
+glm::dvec3 boxNormal(const glm::dvec3 &p);
 
 // Exact outward object-space normal of the torus (around Y) at surface point p.
 glm::dvec3 torusNormal(const glm::dvec3 &p, double majorRadius);

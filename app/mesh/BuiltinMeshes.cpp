@@ -67,6 +67,28 @@ MeshData makeTorus(int ringSegments, int tubeSegments, double majorRadius, doubl
     return mesh;
 }
 
+MeshData makeCube()
+{
+    MeshData mesh;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (float sign : {1.0f, -1.0f}) {
+            glm::vec3 n(0.0f);
+            n[axis] = sign;
+            // Two in-face directions with u × v = n, so corners run counter-clockwise seen from outside.
+            glm::vec3 u(0.0f), v(0.0f);
+            u[(axis + 1) % 3] = 1.0f;
+            v[(axis + 2) % 3] = sign;
+            const auto base = std::uint32_t(mesh.positions.size());
+            for (auto [a, b] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
+                mesh.positions.push_back(n + a * u + b * v);
+                mesh.normals.push_back(n);
+            }
+            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+    }
+    return mesh;
+}
+
 bool isBuiltinMeshSpec(const QString &spec)
 {
     return spec.startsWith(QLatin1String("builtin:"));
@@ -78,6 +100,8 @@ std::optional<MeshData> builtinMesh(const QString &spec)
         return makeUvSphere(256, 128);
     if (spec == QLatin1String("builtin:torus"))
         return makeTorus(192, 96);
+    if (spec == QLatin1String("builtin:cube"))
+        return makeCube();
     return std::nullopt;
 }
 

@@ -19,7 +19,11 @@ inline constexpr double kTorusMinorRadius = 0.4;
 MeshData makeTorus(int ringSegments, int tubeSegments,
                    double majorRadius = kTorusMajorRadius, double minorRadius = kTorusMinorRadius);
 
-// "builtin:sphere" / "builtin:torus" at the default (fine) tessellation;
+// The box [-1, 1]³ with one flat normal per face (24 vertices, 12 triangles).
+MeshData makeCube();
+
+// "builtin:sphere" / "builtin:torus" at the default (fine) tessellation,
+// "builtin:cube";
 // nullopt for any other name.
 std::optional<MeshData> builtinMesh(const QString &spec);
 bool isBuiltinMeshSpec(const QString &spec);

@@ -45,6 +45,7 @@ void TestRenderReference::matchesReference_data()
     QTest::newRow("ellipsoid, non-uniform scale") << "gl_ellipsoid_nonuniform";
     QTest::newRow("sphere, attenuated lights") << "gl_sphere_attenuated";
     QTest::newRow("torus, two lights") << "gl_torus";
+    QTest::newRow("box, flat faces, non-uniform scale") << "gl_cube";
 }
 
 void TestRenderReference::matchesReference()
