@@ -10,6 +10,7 @@ PACKAGES=(
   libglm-dev libopenmesh-dev
   libgl-dev libgl1-mesa-dri libegl-mesa0
   xvfb xauth
+  libtinyobjloader-dev libassimp-dev
 )
 
 missing=()

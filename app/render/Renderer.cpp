@@ -3,7 +3,6 @@
 #include "core/ObjectMatrices.h"
 #include "core/ResourcePaths.h"
 #include "mesh/BuiltinMeshes.h"
-#include "mesh/MeshLoader.h"
 
 #include <algorithm>
 
@@ -42,38 +41,62 @@ void Renderer::cleanup()
     for (auto &mesh : m_meshes)
         mesh->destroy();
     m_meshes.clear();
+    m_meshInfo.clear();
     m_initialized = false;
 }
 
 bool Renderer::setScene(const Scene &scene, QString *error)
 {
+    SceneMeshes meshes = loadSceneMeshes(scene, loadedKeys());
+    return setScene(scene, std::move(meshes), error);
+}
+
+QSet<QString> Renderer::loadedKeys() const
+{
+    QSet<QString> keys;
+    for (auto it = m_meshes.begin(); it != m_meshes.end(); ++it)
+        keys.insert(it.key());
+    return keys;
+}
+
+bool Renderer::setScene(const Scene &scene, SceneMeshes &&loaded, QString *error)
+{
+    if (!loaded.ok()) {
+        if (error)
+            *error = loaded.error;
+        return false;
+    }
     QHash<QString, std::shared_ptr<GpuMesh>> meshes;
+    QHash<QString, SceneMeshes::Entry> info;
     for (const SceneObject &object : scene.objects) {
-        const QString spec = scene.resolveMeshPath(object.mesh);
-        if (meshes.contains(spec))
+        const QString key = meshKey(scene, object);
+        if (meshes.contains(key))
             continue;
-        if (auto existing = m_meshes.value(spec)) {
-            meshes.insert(spec, existing);
+        if (auto existing = m_meshes.value(key)) {
+            meshes.insert(key, existing);
+            info.insert(key, m_meshInfo.value(key));
             continue;
         }
-        const MeshLoadResult loaded = loadMesh(spec);
-        if (!loaded.ok()) {
-            // Nothing uploaded so far is kept: the old scene stays intact.
-            for (auto it = meshes.begin(); it != meshes.end(); ++it)
-                if (!m_meshes.contains(it.key()))
-                    it.value()->destroy();
+        auto it = loaded.entries.find(key);
+        if (it == loaded.entries.end() || !it->mesh) {
             if (error)
-                *error = loaded.error;
+                *error = QStringLiteral("%1: mesh was not loaded").arg(key);
+            for (auto m = meshes.begin(); m != meshes.end(); ++m)
+                if (!m_meshes.contains(m.key()))
+                    m.value()->destroy();
             return false;
         }
         auto gpu = std::make_shared<GpuMesh>();
-        gpu->upload(*loaded.mesh);
-        meshes.insert(spec, gpu);
+        gpu->upload(*it->mesh);
+        it->mesh.reset(); // the GPU has it now
+        meshes.insert(key, gpu);
+        info.insert(key, *it);
     }
     for (auto it = m_meshes.begin(); it != m_meshes.end(); ++it)
         if (!meshes.contains(it.key()))
             it.value()->destroy();
     m_meshes = std::move(meshes);
+    m_meshInfo = std::move(info);
     m_scene = scene;
     return true;
 }
@@ -115,13 +138,8 @@ void Renderer::render(const QSize &pixelSize)
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    if (m_options.cullBackFaces) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-        glFrontFace(GL_CCW);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
 
     const double aspect = double(pixelSize.width()) / double(pixelSize.height());
     const glm::dmat4 view = m_scene.camera.viewMatrix();
@@ -158,9 +176,16 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
     uploadLights(view);
     m_program.setUniform("projectionMatrix", glm::mat4(projection));
     for (const SceneObject &object : m_scene.objects) {
-        const auto mesh = m_meshes.value(m_scene.resolveMeshPath(object.mesh));
+        const QString key = meshKey(m_scene, object);
+        const auto mesh = m_meshes.value(key);
         if (!mesh)
             continue;
+        // Only a closed surface hides its back faces; an open one (a leaf,
+        // a plane) must show them.
+        if (m_options.cullBackFaces && m_meshInfo.value(key).stats.closed)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
         // Matrices in double on the CPU, once per draw; the shader gets floats.
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
         m_program.setUniform("modelViewMatrix", glm::mat4(m.modelView));

@@ -3,6 +3,7 @@
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
 #include "core/Scene.h"
+#include "mesh/SceneMeshes.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>
@@ -33,8 +34,16 @@ public:
     bool initialize(QString *error);
     void cleanup();
 
-    // Loads every object's mesh. On failure the previous scene stays.
+    // Loads every object's mesh and uploads it. On failure the previous
+    // scene stays. Blocks while loading: the GUI loads with
+    // loadSceneMeshes() on a worker thread and calls the overload below.
     bool setScene(const Scene &scene, QString *error);
+    // Uploads meshes loaded elsewhere (loadSceneMeshes(scene, loadedKeys()))
+    // and switches to `scene`. Frees each uploaded MeshData's CPU copy.
+    bool setScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    QSet<QString> loadedKeys() const;
+    // Statistics and warnings of the meshes in use, by meshKey().
+    const QHash<QString, SceneMeshes::Entry> &meshInfo() const { return m_meshInfo; }
     const Scene &scene() const { return m_scene; }
     // Changes camera/lights/materials without touching meshes (cheap; for
     // interaction). Objects must name the same meshes as the current scene.
@@ -64,7 +73,8 @@ private:
     ShaderProgram m_program;
     ShaderProgram m_markerProgram;
     GpuMesh m_markerMesh;
-    QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by resolved mesh spec
+    QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
+    QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
 };
 

@@ -1,0 +1,151 @@
+#include "MeshCache.h"
+
+#include <QCryptographicHash>
+#include <QDataStream>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <QStandardPaths>
+
+#include <limits>
+
+namespace phonglab {
+
+namespace {
+
+constexpr quint32 kMagic = 0x50484d43; // "PHMC"
+constexpr quint32 kVersion = 1;
+
+// What must match for a cache entry to stand for the file as it is now.
+QByteArray sourceKey(const QString &file, const NormalOptions &normals)
+{
+    const QFileInfo info(file);
+    QByteArray key = info.absoluteFilePath().toUtf8();
+    key += '|' + QByteArray::number(info.size());
+    key += '|' + QByteArray::number(info.lastModified().toMSecsSinceEpoch());
+    key += '|' + normalMethodName(normals.method).toUtf8();
+    if (normals.creaseAngleDeg)
+        key += '|' + QByteArray::number(*normals.creaseAngleDeg, 'g', 17);
+    key += "|v" + QByteArray::number(kVersion);
+    return key;
+}
+
+template<typename T>
+void writeArray(QDataStream &out, const std::vector<T> &v)
+{
+    out << quint64(v.size());
+    out.writeRawData(reinterpret_cast<const char *>(v.data()), int(v.size() * sizeof(T)));
+}
+
+template<typename T>
+bool readArray(QDataStream &in, std::vector<T> &v, qint64 bytesLeft)
+{
+    quint64 count = 0;
+    in >> count;
+    // A count that cannot fit in what is left of the file is corruption:
+    // refuse it before allocating.
+    if (in.status() != QDataStream::Ok || count > quint64(bytesLeft) / sizeof(T))
+        return false;
+    v.resize(count);
+    const qint64 bytes = qint64(count * sizeof(T));
+    return in.readRawData(reinterpret_cast<char *>(v.data()), int(bytes)) == bytes;
+}
+
+QDataStream &operator<<(QDataStream &out, const glm::vec3 &v) { return out << v.x << v.y << v.z; }
+QDataStream &operator>>(QDataStream &in, glm::vec3 &v) { return in >> v.x >> v.y >> v.z; }
+
+void writeStats(QDataStream &out, const MeshStats &s)
+{
+    out << s.fileVertices << s.fileFaces << s.vertices << s.triangles << s.splitVertices << s.normalsFromFile
+        << qint32(s.normalMethod) << s.boundsMin << s.boundsMax << s.closed;
+}
+
+void readStats(QDataStream &in, MeshStats &s)
+{
+    qint32 method = 0;
+    in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices >> s.normalsFromFile
+        >> method >> s.boundsMin >> s.boundsMax >> s.closed;
+    s.normalMethod = NormalMethod(method);
+}
+
+} // namespace
+
+bool MeshCache::enabled()
+{
+    return qEnvironmentVariableIntValue("PHONGLAB_NO_MESH_CACHE") == 0;
+}
+
+QString MeshCache::directory()
+{
+    const QString fromEnv = qEnvironmentVariable("PHONGLAB_CACHE_DIR");
+    if (!fromEnv.isEmpty())
+        return fromEnv;
+    return QStandardPaths::writableLocation(QStandardPaths::GenericCacheLocation) + QStringLiteral("/phonglab/meshes");
+}
+
+QString MeshCache::entryPath(const QString &file, const NormalOptions &normals)
+{
+    const QByteArray hash = QCryptographicHash::hash(sourceKey(file, normals), QCryptographicHash::Sha1).toHex();
+    return QDir(directory()).filePath(QString::fromLatin1(hash) + QStringLiteral(".phmc"));
+}
+
+std::optional<MeshLoadResult> MeshCache::read(const QString &file, const NormalOptions &normals)
+{
+    if (!enabled())
+        return std::nullopt;
+    QFile entry(entryPath(file, normals));
+    if (!entry.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    QDataStream in(&entry);
+    in.setVersion(QDataStream::Qt_6_4);
+    quint32 magic = 0, version = 0;
+    QByteArray key;
+    in >> magic >> version >> key;
+    if (magic != kMagic || version != kVersion || key != sourceKey(file, normals)) {
+        entry.remove();
+        return std::nullopt;
+    }
+    MeshLoadResult result;
+    readStats(in, result.stats);
+    in >> result.warnings;
+    MeshData mesh;
+    const bool ok = readArray(in, mesh.positions, entry.bytesAvailable())
+        && readArray(in, mesh.normals, entry.bytesAvailable())
+        && readArray(in, mesh.indices, entry.bytesAvailable());
+    if (!ok || in.status() != QDataStream::Ok || !mesh.isValid()) {
+        entry.remove();
+        return std::nullopt;
+    }
+    result.stats.creaseAngleDeg = normals.creaseAngleDeg;
+    result.stats.fromCache = true;
+    result.mesh = std::move(mesh);
+    return result;
+}
+
+void MeshCache::write(const QString &file, const NormalOptions &normals, const MeshLoadResult &result)
+{
+    if (!enabled() || !result.mesh || !QDir().mkpath(directory()))
+        return;
+    const std::size_t largest = result.mesh->positions.size() * sizeof(glm::vec3);
+    if (largest > std::size_t(std::numeric_limits<int>::max()) / 2)
+        return; // QDataStream's raw blocks are int-sized
+
+    QSaveFile entry(entryPath(file, normals));
+    if (!entry.open(QIODevice::WriteOnly))
+        return;
+    QDataStream out(&entry);
+    out.setVersion(QDataStream::Qt_6_4);
+    out << kMagic << kVersion << sourceKey(file, normals);
+    writeStats(out, result.stats);
+    out << result.warnings;
+    writeArray(out, result.mesh->positions);
+    writeArray(out, result.mesh->normals);
+    writeArray(out, result.mesh->indices);
+    if (out.status() == QDataStream::Ok)
+        entry.commit();
+    else
+        entry.cancelWriting();
+}
+
+} // namespace phonglab

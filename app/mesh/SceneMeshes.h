@@ -1,0 +1,35 @@
+#pragma once
+#include "MeshLoader.h"
+#include "core/Scene.h"
+
+#include <QHash>
+#include <QSet>
+#include <memory>
+
+namespace phonglab {
+
+// The CPU side of a scene's meshes: every distinct (file, normal options) the
+// scene's objects use, loaded once. Produced on any thread, uploaded on the
+// GL thread by Renderer, then released: no second copy stays after upload.
+struct SceneMeshes {
+    struct Entry {
+        std::shared_ptr<const MeshData> mesh; // null once uploaded
+        MeshStats stats;
+        QStringList warnings;
+    };
+    QHash<QString, Entry> entries; // by meshKey()
+    QString error;                 // the first mesh that failed; nothing usable then
+
+    bool ok() const { return error.isEmpty(); }
+};
+
+// Identifies what an object's mesh is on the GPU: the resolved file and the
+// way its normals were made.
+QString meshKey(const Scene &scene, const SceneObject &object);
+
+// Loads every mesh `scene` needs, skipping keys in `alreadyLoaded`.
+// progress(fraction over all meshes); false cancels.
+SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded = {},
+                            const LoadProgress &progress = {});
+
+} // namespace phonglab
