@@ -1,6 +1,11 @@
 #include "MeshLoader.h"
 
 #include "BuiltinMeshes.h"
+#include "MeshCache.h"
+#include "MeshBuilder.h"
+#include "MeshFileReader.h"
+#include "MeshRepair.h"
+#include "MeshTopology.h"
 
 #include <QElapsedTimer>
 
@@ -38,6 +43,14 @@ MeshLoadResult loadBuiltin(const QString &spec)
     return result;
 }
 
+// Progress is split between reading (most of the time) and building.
+LoadProgress scaled(const LoadProgress &progress, double from, double to)
+{
+    if (!progress)
+        return {};
+    return [=](double f) { return progress(from + (to - from) * f); };
+}
+
 } // namespace
 
 MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const LoadProgress &progress)
@@ -50,8 +63,56 @@ MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const
         return result;
     }
 
+    if (auto cached = MeshCache::read(spec, normals)) {
+        cached->stats.loadMs = timer.nsecsElapsed() / 1e6;
+        if (progress)
+            progress(1.0);
+        return std::move(*cached);
+    }
+
     MeshLoadResult result;
-    result.error = QStringLiteral("%1: mesh files cannot be loaded yet").arg(spec);
+    MeshReadResult read = readMeshFile(spec, scaled(progress, 0.0, 0.8));
+    result.warnings = read.warnings;
+    if (!read.mesh) {
+        result.error = read.error;
+        return result;
+    }
+    PolygonMesh &polygons = *read.mesh;
+    const RepairReport repair = repairMesh(polygons);
+    result.warnings += repair.warnings();
+    if (polygons.faceCount() == 0) {
+        result.error = QStringLiteral("%1: no usable faces").arg(spec);
+        return result;
+    }
+    if (progress && !progress(0.85)) {
+        result.error = QStringLiteral("cancelled");
+        return result;
+    }
+
+    BuildStats build;
+    QString buildError;
+    MeshData mesh = buildMeshData(polygons, normals, &build, &result.warnings, &buildError);
+    if (mesh.positions.empty()) {
+        result.error = QStringLiteral("%1: %2").arg(spec, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
+        return result;
+    }
+    MeshStats &s = result.stats;
+    s.fileVertices = build.fileVertices;
+    s.fileFaces = qint64(polygons.faceCount());
+    s.vertices = build.vertices;
+    s.triangles = build.triangles;
+    s.splitVertices = build.splitVertices;
+    s.normalsFromFile = build.normalsFromFile;
+    s.normalMethod = build.method;
+    s.creaseAngleDeg = normals.creaseAngleDeg;
+    s.boundsMin = build.boundsMin;
+    s.boundsMax = build.boundsMax;
+    s.closed = isClosedSurface(polygons);
+    result.mesh = std::move(mesh);
+    if (progress)
+        progress(1.0);
+    MeshCache::write(spec, normals, result);
+    s.loadMs = timer.nsecsElapsed() / 1e6;
     return result;
 }
 

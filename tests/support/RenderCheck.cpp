@@ -11,7 +11,7 @@
 namespace phonglab::test {
 
 RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex,
-                                  const std::optional<ShaderSource> &fragment)
+                                  const std::optional<ShaderSource> &fragment, const QHash<QString, QString> &standIns)
 {
     RenderCheck check;
     OffscreenRenderer offscreen;
@@ -34,7 +34,7 @@ RenderCheck checkAgainstReference(const Scene &scene, const std::optional<Shader
     const QSize size(kTestImageSide, kTestImageSide);
     check.gpu = offscreen.renderImage(size);
 
-    const auto reference = raycastScene(scene, size.width(), size.height(), &check.error);
+    const auto reference = raycastScene(scene, size.width(), size.height(), &check.error, standIns);
     if (!reference)
         return check;
     check.reference = reference->toImage(scene.background);
@@ -42,7 +42,8 @@ RenderCheck checkAgainstReference(const Scene &scene, const std::optional<Shader
     return check;
 }
 
-QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene)
+QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene,
+                      const QHash<QString, QString> &standIns)
 {
     QString root = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
     if (root.isEmpty())
@@ -51,7 +52,7 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
     dir.mkpath(QStringLiteral("."));
     check.gpu.save(dir.filePath(name + QStringLiteral("-gpu.png")));
     check.reference.save(dir.filePath(name + QStringLiteral("-reference.png")));
-    if (const auto reference = raycastScene(scene, check.gpu.width(), check.gpu.height()))
+    if (const auto reference = raycastScene(scene, check.gpu.width(), check.gpu.height(), nullptr, standIns))
         errorHeatmap(check.gpu, *reference, kSilhouetteBandPx).save(dir.filePath(name + QStringLiteral("-error.png")));
     return dir.absolutePath();
 }

@@ -4,6 +4,7 @@
 #include "render/CompileResult.h"
 #include "render/ShaderSource.h"
 
+#include <QHash>
 #include <QImage>
 #include <QString>
 #include <optional>
@@ -36,13 +37,17 @@ struct RenderCheck {
 // shaders, or with the given replacement stages, and compares it with the
 // ray-cast reference. Creates its own context; call from the GUI thread of a
 // QGuiApplication.
+// `standIns` maps a scene's mesh (as written) to the builtin whose analytic
+// surface the reference ray-casts for it (e.g. a Blender cube -> "builtin:cube").
 RenderCheck checkAgainstReference(const Scene &scene,
                                   const std::optional<ShaderSource> &vertex = std::nullopt,
-                                  const std::optional<ShaderSource> &fragment = std::nullopt);
+                                  const std::optional<ShaderSource> &fragment = std::nullopt,
+                                  const QHash<QString, QString> &standIns = {});
 
 // Saves gpu / reference / heatmap PNGs under $PHONGLAB_TEST_ARTIFACTS (or
 // the system temp dir) so a failing render can be looked at; returns the folder.
-QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene);
+QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene,
+                      const QHash<QString, QString> &standIns = {});
 
 // Reads tests/data/<relative> as a shader source.
 ShaderSource testShader(const QString &relative);
