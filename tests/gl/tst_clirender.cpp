@@ -132,7 +132,7 @@ void TestCliRender::badInputFails_data()
     QTest::addColumn<QString>("expected"); // part of the error message
     QTest::newRow("missing scene file") << m_dir.filePath(QStringLiteral("nope.json")) << QStringList() << "nope.json";
     QTest::newRow("unknown builtin mesh") << dataFile(QStringLiteral("scenes/gl_bad_mesh.json")) << QStringList()
-                                          << "builtin:cube";
+                                          << "builtin:cylinder";
     QTest::newRow("missing shader file")
         << dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"))
         << QStringList{QStringLiteral("--fragment"), m_dir.filePath(QStringLiteral("missing.frag"))} << "missing.frag";
