@@ -117,6 +117,7 @@ void printJson(const QString &path, const MeshLoadResult &r)
     o.insert(QStringLiteral("closed"), s.closed);
     o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(r.warnings));
     o.insert(QStringLiteral("load_ms"), s.loadMs);
+    o.insert(QStringLiteral("from_cache"), s.fromCache);
     printLine(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented)).trimmed());
 }
 
@@ -128,12 +129,15 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
     printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
     printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
-    printLine(QStringLiteral("normals:         %1").arg(s.normalsFromFile ? QStringLiteral("from the file, per face corner")
-                                                                           : QStringLiteral("computed (%1)").arg(methodDescription(s))));
+    const QString normals = s.normalsFromFile ? QStringLiteral("from the file, per face corner")
+        : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
+                                                      : QStringLiteral("computed (%1)").arg(methodDescription(s));
+    printLine(QStringLiteral("normals:         %1").arg(normals));
     printLine(QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)").arg(s.vertices).arg(s.splitVertices));
     printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
     printLine(QStringLiteral("surface:         %1").arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
-    printLine(QStringLiteral("load time:       %1 ms").arg(s.loadMs, 0, 'f', 1));
+    printLine(QStringLiteral("load time:       %1 ms%2").arg(s.loadMs, 0, 'f', 1)
+                  .arg(s.fromCache ? QStringLiteral(" (from the mesh cache)") : QString()));
     printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
     for (const QString &w : r.warnings)
         printLine(QStringLiteral("  - ") + w);
