@@ -51,25 +51,29 @@ bool armX11Fallback()
 #endif
 }
 
-// Opens the requested scene, else the default one. A broken requested scene
-// is reported and replaced by the default; a broken default is fatal.
-bool openStartupScene(MainWindow &window, const QString &requested)
+// The default scene is small and open before the window shows, so there is
+// never an empty window; a broken default is fatal.
+bool openDefaultScene(MainWindow &window)
 {
     QString error;
-    if (!requested.isEmpty()) {
-        if (window.openScene(requested, &error))
-            return true;
-        QMessageBox::warning(nullptr, QObject::tr("Cannot open scene"),
-                             QObject::tr("%1\n\n%2\n\nOpening the default scene instead.")
-                                 .arg(QDir::toNativeSeparators(requested), error));
-    }
-    const QString fallback = defaultScenePath();
-    if (window.openScene(fallback, &error))
+    const QString path = defaultScenePath();
+    if (window.openScene(path, &error))
         return true;
-    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(fallback, error);
+    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(path, error);
     printError(message);
     QMessageBox::critical(nullptr, QObject::tr("PhongLab"), message);
     return false;
+}
+
+// The file named on the command line (a scene or a mesh) then loads in the
+// background like any opened file; a load failing reports itself.
+void openRequestedFile(MainWindow &window, const QString &path)
+{
+    QString error;
+    if (!window.openFiles({path}, &error))
+        QMessageBox::warning(&window, QObject::tr("Cannot open"),
+                             QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
+                                 .arg(QDir::toNativeSeparators(path), error));
 }
 
 } // namespace
@@ -98,10 +102,11 @@ int runGui(int argc, char **argv)
     QApplication::setOrganizationName(QStringLiteral("PhongLab"));
 
     MainWindow window;
-    const QString requested = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
-    if (!openStartupScene(window, requested))
+    if (!openDefaultScene(window))
         return kExitFailure;
     window.show();
+    if (argc > 1)
+        openRequestedFile(window, QString::fromLocal8Bit(argv[1]));
     return app.exec();
 }
 

@@ -1,5 +1,12 @@
 #include "MainWindow.h"
 
+#include "FileTypes.h"
+#include "LoadProgressWidget.h"
+#include "MeshStatsText.h"
+#include "RecentFiles.h"
+#include "SceneDock.h"
+#include "SceneLoadJob.h"
+#include "SceneLoadRequests.h"
 #include "Viewport.h"
 #include "core/SceneJson.h"
 
@@ -19,7 +26,7 @@ namespace phonglab {
 namespace {
 
 constexpr int kWarningTimeoutMs = 10000;
-const QString kSceneFilter = QStringLiteral("PhongLab scenes (*.json);;All files (*)");
+constexpr int kSceneDockWidth = 340; // fits the stats without eliding most of them
 
 // Scenes embedded in the binary (":/...") can be opened but not written.
 bool isWritableLocation(const QString &path)
@@ -41,15 +48,26 @@ Scene rebasedOnto(Scene scene, const QString &sceneFilePath)
     return scene;
 }
 
+QString firstLine(const QString &text)
+{
+    return text.section(QLatin1Char('\n'), 0, 0);
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_viewport(new Viewport(this))
+    , m_loadJob(new SceneLoadJob(m_viewport, this))
+    , m_sceneDock(new SceneDock(this))
 {
     setCentralWidget(m_viewport);
-    createMenus();
+    addDockWidget(Qt::RightDockWidgetArea, m_sceneDock);
+    resizeDocks({m_sceneDock}, {kSceneDockWidth}, Qt::Horizontal);
+    createFileMenu();
+    createViewMenu();
     createStatusBar();
+    connectLoading();
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     // Queued: the error is raised from inside initializeGL / paintGL, where a
@@ -58,11 +76,16 @@ MainWindow::MainWindow(QWidget *parent)
     setScenePath({});
 }
 
-void MainWindow::createMenus()
+void MainWindow::createFileMenu()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QAction *open = file->addAction(tr("&Open Scene…"), this, &MainWindow::chooseAndOpenScene);
     open->setShortcut(QKeySequence::Open);
+    QAction *openMesh = file->addAction(tr("Open &Mesh…"), this, &MainWindow::chooseAndOpenMeshes);
+    openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    m_recentFiles = new RecentFiles(file->addMenu(tr("&Recent")), this);
+    connect(m_recentFiles, &RecentFiles::fileChosen, this, [this](const QString &path) { openFilesOrExplain({path}); });
+    connect(m_recentFiles, &RecentFiles::missingFileChosen, this, &MainWindow::explainMissingRecentFile);
     file->addSeparator();
     QAction *save = file->addAction(tr("&Save Scene"), this, &MainWindow::saveSceneToCurrentFile);
     save->setShortcut(QKeySequence::Save);
@@ -72,7 +95,10 @@ void MainWindow::createMenus()
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence(tr("Ctrl+Q")));
     quit->setMenuRole(QAction::QuitRole);
+}
 
+void MainWindow::createViewMenu()
+{
     QMenu *view = menuBar()->addMenu(tr("&View"));
     m_resetCameraAction = view->addAction(tr("&Reset Camera"), m_viewport, &Viewport::resetCamera);
     m_resetCameraAction->setShortcuts({QKeySequence(Qt::Key_R), QKeySequence(Qt::Key_Home)});
@@ -85,18 +111,37 @@ void MainWindow::createMenus()
     m_lightMarkersAction->setCheckable(true);
     m_lightMarkersAction->setChecked(m_viewport->showLightMarkers());
     connect(m_lightMarkersAction, &QAction::toggled, m_viewport, &Viewport::setShowLightMarkers);
+
+    view->addSeparator();
+    QAction *dock = m_sceneDock->toggleViewAction();
+    dock->setText(tr("&Scene Dock"));
+    view->addAction(dock);
 }
 
 void MainWindow::createStatusBar()
 {
+    m_loadProgress = new LoadProgressWidget(m_loadJob, this);
     m_frameLabel = new QLabel(this);
     m_rendererLabel = new QLabel(tr("OpenGL not started"), this);
+    statusBar()->addPermanentWidget(m_loadProgress);
     statusBar()->addPermanentWidget(m_frameLabel);
     statusBar()->addPermanentWidget(m_rendererLabel);
 }
 
+void MainWindow::connectLoading()
+{
+    connect(m_viewport, &Viewport::sceneChanged, this, &MainWindow::refreshSceneDock);
+    // Queued: the dock is rebuilding itself or its editor is mid-signal when a
+    // drop or an edit arrives; both are handled once that is over.
+    connect(m_viewport, &Viewport::filesDropped, this, &MainWindow::openFilesOrExplain, Qt::QueuedConnection);
+    connect(m_sceneDock, &SceneDock::normalsChangeRequested, this, &MainWindow::changeNormals, Qt::QueuedConnection);
+    connect(m_loadJob, &SceneLoadJob::failed, this, &MainWindow::showLoadFailure);
+    connect(m_loadJob, &SceneLoadJob::cancelled, this, &MainWindow::showLoadCancelled);
+}
+
 bool MainWindow::openScene(const QString &path, QString *error)
 {
+    m_loadJob->cancel(); // one load at a time
     const SceneLoadResult loaded = loadSceneFile(path);
     QString reason = loaded.error;
     if (!loaded.ok() || !m_viewport->setScene(*loaded.scene, &reason)) {
@@ -117,19 +162,100 @@ bool MainWindow::saveScene(const QString &path, QString *error)
     if (!saveSceneFile(rebasedOnto(m_viewport->currentScene(), path), path, error))
         return false;
     setScenePath(path);
+    m_recentFiles->add(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
     return true;
 }
 
+bool MainWindow::openFiles(const QStringList &paths, QString *error)
+{
+    const QString reason = whyNotOpenable(paths);
+    if (!reason.isEmpty()) {
+        if (error)
+            *error = reason;
+        return false;
+    }
+    if (isSceneFile(paths.front())) // then it is the only one
+        return startSceneLoad(paths.front(), error);
+    m_lastFolder = QFileInfo(paths.front()).absolutePath();
+    SceneLoadRequest request = meshFilesRequest(m_viewport->currentScene(), paths);
+    request.shown = [this, paths] {
+        setScenePath({}, fileNameList(paths)); // a new, unsaved scene
+        for (const QString &path : paths)
+            m_recentFiles->add(path);
+        statusBar()->showMessage(tr("Opened %1").arg(fileNameList(paths)), kWarningTimeoutMs);
+    };
+    m_loadJob->start(std::move(request));
+    return true;
+}
+
+// The scene file itself is small and parsed here, so a broken one is refused
+// at once; only its meshes load in the background.
+bool MainWindow::startSceneLoad(const QString &path, QString *error)
+{
+    const SceneLoadResult parsed = loadSceneFile(path);
+    if (!parsed.ok()) {
+        if (error)
+            *error = parsed.error;
+        return false;
+    }
+    SceneLoadRequest request = sceneFileRequest(path, *parsed.scene);
+    request.shown = [this, path, warnings = parsed.warnings] {
+        setScenePath(path);
+        m_recentFiles->add(path);
+        const QString message = warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName())
+                                                   : warnings.join(QStringLiteral("; "));
+        statusBar()->showMessage(message, kWarningTimeoutMs);
+    };
+    m_loadJob->start(std::move(request));
+    return true;
+}
+
+void MainWindow::changeNormals(int objectIndex, const NormalOptions &options)
+{
+    const Scene current = m_viewport->currentScene();
+    if (objectIndex < 0 || objectIndex >= int(current.objects.size()))
+        return;
+    SceneLoadRequest request = normalsRequest(current, objectIndex, options);
+    request.shown = [this, objectIndex] {
+        const Scene scene = m_viewport->currentScene();
+        const SceneObject &object = scene.objects[objectIndex];
+        const MeshStats stats = m_viewport->meshInfo().value(meshKey(scene, object)).stats;
+        statusBar()->showMessage(tr("Normals of %1: %2")
+                                     .arg(QFileInfo(object.mesh).fileName(), normalsDescription(stats, false)),
+                                 kWarningTimeoutMs);
+    };
+    m_loadJob->start(std::move(request));
+}
+
 void MainWindow::chooseAndOpenScene()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), dialogFolder(), kSceneFilter);
-    if (path.isEmpty())
-        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), dialogFolder(), sceneFileFilter());
+    if (!path.isEmpty())
+        openFilesOrExplain({path});
+}
+
+void MainWindow::chooseAndOpenMeshes()
+{
+    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open Mesh"), dialogFolder(), meshFileFilter());
+    if (!paths.isEmpty())
+        openFilesOrExplain(paths);
+}
+
+void MainWindow::openFilesOrExplain(const QStringList &paths)
+{
     QString error;
-    if (!openScene(path, &error))
-        warn(tr("Cannot open scene"),
-             tr("%1\n\n%2\n\nThe current scene is still open.").arg(QDir::toNativeSeparators(path), error));
+    if (openFiles(paths, &error))
+        return;
+    statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(error)), kWarningTimeoutMs);
+    warn(tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(error));
+}
+
+void MainWindow::explainMissingRecentFile(const QString &path)
+{
+    warn(tr("File not found"),
+         tr("%1\n\nThe file no longer exists; it was removed from the recent files.")
+             .arg(QDir::toNativeSeparators(path)));
 }
 
 void MainWindow::saveSceneToCurrentFile()
@@ -145,7 +271,7 @@ void MainWindow::saveSceneToCurrentFile()
 
 void MainWindow::chooseAndSaveScene()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), dialogFolder(), kSceneFilter);
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), dialogFolder(), sceneFileFilter());
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
@@ -166,28 +292,56 @@ void MainWindow::showFrameStats(double milliseconds, qint64 triangles)
 
 void MainWindow::showRenderError(const QString &message)
 {
-    statusBar()->showMessage(tr("Rendering failed: %1").arg(message.section(QLatin1Char('\n'), 0, 0)));
-    // Non-blocking, so a broken GL setup never stalls the event loop.
+    statusBar()->showMessage(tr("Rendering failed: %1").arg(firstLine(message)));
     auto *box = new QMessageBox(QMessageBox::Critical, tr("Rendering failed"), message, QMessageBox::Ok, this);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }
 
-void MainWindow::setScenePath(const QString &path)
+void MainWindow::showLoadFailure(const QString &label, const QString &error)
+{
+    statusBar()->showMessage(tr("Cannot load %1: %2").arg(label, firstLine(error)), kWarningTimeoutMs);
+    warn(tr("Cannot load %1").arg(label),
+         tr("Cannot load %1:\n\n%2\n\nThe current scene is still shown.").arg(label, error));
+    refreshSceneDock(); // its normals control goes back to what is shown
+}
+
+void MainWindow::showLoadCancelled(const QString &label)
+{
+    statusBar()->showMessage(tr("Loading %1 cancelled").arg(label), kWarningTimeoutMs);
+    // A load superseded by a newer one leaves the dock showing the newer request.
+    if (!m_loadJob->isRunning())
+        refreshSceneDock();
+}
+
+void MainWindow::refreshSceneDock()
+{
+    m_sceneDock->showScene(m_viewport->currentScene(), m_viewport->meshInfo());
+}
+
+void MainWindow::setScenePath(const QString &path, const QString &title)
 {
     m_scenePath = path;
-    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    if (isWritableLocation(path))
+        m_lastFolder = QFileInfo(path).absolutePath();
+    QString name = title;
+    if (name.isEmpty())
+        name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
     setWindowTitle(tr("%1 — PhongLab").arg(name));
 }
 
 QString MainWindow::dialogFolder() const
 {
-    return isWritableLocation(m_scenePath) ? QFileInfo(m_scenePath).absolutePath() : QDir::homePath();
+    return m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
 }
 
+// Non-blocking, so neither a load finishing nor a drop ever waits on a
+// dialog, and nothing stalls the event loop.
 void MainWindow::warn(const QString &title, const QString &message)
 {
-    QMessageBox::warning(this, title, message);
+    auto *box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 } // namespace phonglab

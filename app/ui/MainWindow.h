@@ -1,4 +1,6 @@
 #pragma once
+#include "mesh/NormalOptions.h"
+
 #include <QMainWindow>
 
 class QAction;
@@ -6,10 +8,15 @@ class QLabel;
 
 namespace phonglab {
 
+class LoadProgressWidget;
+class RecentFiles;
+class SceneDock;
+class SceneLoadJob;
 class Viewport;
 
-// The editor window: the Viewport in the middle, File and View menus, and a
-// status bar with frame time, triangle count and the OpenGL renderer.
+// The editor window: the Viewport in the middle, the Scene dock on the
+// right, File and View menus, and a status bar with load progress, frame
+// time, triangle count and the OpenGL renderer.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -17,35 +24,62 @@ class MainWindow : public QMainWindow
 public:
     explicit MainWindow(QWidget *parent = nullptr);
 
-    // Load / save without any dialog (startup, tests); false with a reason on
-    // failure. A failed open keeps the current scene; saving writes the scene
-    // with the camera as currently orbited.
+    // Load / save without any dialog, on the calling thread (startup, tests);
+    // false with a reason on failure. A failed open keeps the current scene;
+    // saving writes the scene with the camera as currently orbited.
     bool openScene(const QString &path, QString *error);
     bool saveScene(const QString &path, QString *error);
 
+    // What File → Open, File → Recent and dropping files do: one scene
+    // (.json), or any number of meshes that replace the scene's objects, side
+    // by side. Loads in the background and reports through loadJob(). False
+    // with a reason, and nothing changes, when the files cannot be opened at
+    // all (an unsupported type, a broken scene file).
+    bool openFiles(const QStringList &paths, QString *error);
+    // Reloads object `objectIndex`'s mesh with other normals, in the background.
+    void changeNormals(int objectIndex, const NormalOptions &options);
+
     QString scenePath() const { return m_scenePath; }
     Viewport *viewport() const { return m_viewport; }
+    SceneLoadJob *loadJob() const { return m_loadJob; }
+    SceneDock *sceneDock() const { return m_sceneDock; }
+    RecentFiles *recentFiles() const { return m_recentFiles; }
+    LoadProgressWidget *loadProgress() const { return m_loadProgress; }
 
 private slots:
     void chooseAndOpenScene();
+    void chooseAndOpenMeshes();
+    void openFilesOrExplain(const QStringList &paths);
+    void explainMissingRecentFile(const QString &path);
     void saveSceneToCurrentFile();
     void chooseAndSaveScene();
     void showFrameStats(double milliseconds, qint64 triangles);
     void showRenderError(const QString &message);
+    void showLoadFailure(const QString &label, const QString &error);
+    void showLoadCancelled(const QString &label);
+    void refreshSceneDock();
 
 private:
-    void createMenus();
+    void createFileMenu();
+    void createViewMenu();
     void createStatusBar();
-    void setScenePath(const QString &path);
+    void connectLoading();
+    bool startSceneLoad(const QString &path, QString *error);
+    void setScenePath(const QString &path, const QString &title = {});
     QString dialogFolder() const;
     void warn(const QString &title, const QString &message);
 
     Viewport *m_viewport = nullptr;
+    SceneLoadJob *m_loadJob = nullptr;
+    SceneDock *m_sceneDock = nullptr;
+    RecentFiles *m_recentFiles = nullptr;
+    LoadProgressWidget *m_loadProgress = nullptr;
     QAction *m_resetCameraAction = nullptr;
     QAction *m_lightMarkersAction = nullptr;
     QLabel *m_frameLabel = nullptr;
     QLabel *m_rendererLabel = nullptr;
     QString m_scenePath;
+    QString m_lastFolder; // where the last file was opened from, for dialogs
 };
 
 } // namespace phonglab

@@ -1,13 +1,13 @@
 #include "Viewport.h"
 
-#include "mesh/MeshLoader.h"
-
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QElapsedTimer>
 #include <QKeyEvent>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
-#include <QSet>
 #include <QWheelEvent>
 #include <cmath>
 
@@ -20,24 +20,16 @@ constexpr double kZoomPerWheelNotch = 0.85;  // distance factor for one notch to
 constexpr double kWheelNotch = 120.0;        // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1;  // weight of the newest frame in the running average
 
-// Before a GL context exists the renderer cannot load meshes, so check them on
-// the CPU: a scene accepted here must not fail later in initializeGL.
-bool checkMeshesLoad(const Scene &scene, QString *error)
+// The local files among dropped URLs; anything else (web links) is not ours.
+QStringList localFiles(const QMimeData *data)
 {
-    QSet<QString> checked;
-    for (const SceneObject &object : scene.objects) {
-        const QString spec = scene.resolveMeshPath(object.mesh);
-        if (checked.contains(spec))
-            continue;
-        const MeshLoadResult loaded = loadMesh(spec);
-        if (!loaded.ok()) {
-            if (error)
-                *error = loaded.error;
-            return false;
-        }
-        checked.insert(spec);
-    }
-    return true;
+    QStringList paths;
+    if (!data || !data->hasUrls())
+        return paths;
+    for (const QUrl &url : data->urls())
+        if (url.isLocalFile())
+            paths << url.toLocalFile();
+    return paths;
 }
 
 QString contextDescription(QOpenGLContext *context)
@@ -55,6 +47,7 @@ Viewport::Viewport(QWidget *parent)
     : QOpenGLWidget(parent)
 {
     setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
+    setAcceptDrops(true);
 }
 
 Viewport::~Viewport()
@@ -74,22 +67,59 @@ QSize Viewport::sizeHint() const
 
 bool Viewport::setScene(const Scene &scene, QString *error)
 {
-    bool ok = false;
+    return setScene(scene, loadSceneMeshes(scene, loadedKeys()), error);
+}
+
+bool Viewport::setScene(const Scene &scene, SceneMeshes &&meshes, QString *error)
+{
+    if (!meshes.ok()) {
+        if (error)
+            *error = meshes.error;
+        return false;
+    }
     if (m_glInitialized) {
         makeCurrent();
-        ok = uploadScene(scene, error);
+        const bool ok = uploadScene(scene, std::move(meshes), error);
         doneCurrent();
-        m_renderReady = m_renderReady || ok;
+        if (!ok)
+            return false;
+        m_renderReady = true;
     } else {
-        ok = checkMeshesLoad(scene, error); // initializeGL uploads it
+        // A scene accepted here must not fail later in initializeGL, so check
+        // now that nothing is missing.
+        for (const SceneObject &object : scene.objects) {
+            if (!meshes.entries.contains(meshKey(scene, object))) {
+                if (error)
+                    *error = tr("%1: mesh was not loaded").arg(scene.resolveMeshPath(object.mesh));
+                return false;
+            }
+        }
+        m_pendingMeshes = std::move(meshes);
     }
-    if (!ok)
-        return false;
+    showUploaded(scene);
+    return true;
+}
 
+QSet<QString> Viewport::loadedKeys() const
+{
+    // Pending meshes are not counted: a new pending set replaces them.
+    return m_glInitialized ? m_renderer.loadedKeys() : QSet<QString>();
+}
+
+const QHash<QString, SceneMeshes::Entry> &Viewport::meshInfo() const
+{
+    static const QHash<QString, SceneMeshes::Entry> none;
+    if (m_glInitialized)
+        return m_renderer.meshInfo();
+    return m_pendingMeshes ? m_pendingMeshes->entries : none;
+}
+
+void Viewport::showUploaded(const Scene &scene)
+{
     m_scene = scene;
     m_orbit.setOriginal(scene.camera);
     cameraMoved();
-    return true;
+    emit sceneChanged();
 }
 
 Scene Viewport::currentScene() const
@@ -127,17 +157,22 @@ void Viewport::initializeGL()
     }
     m_renderer.setOptions(m_options);
     m_glInitialized = true;
-    if (!uploadScene(currentScene(), &error)) {
+    // Pending meshes are there after the first show; after a context change
+    // (the widget moved to another window) the scene is loaded again here.
+    SceneMeshes meshes = m_pendingMeshes ? std::move(*m_pendingMeshes) : loadSceneMeshes(m_scene);
+    m_pendingMeshes.reset();
+    if (!uploadScene(currentScene(), std::move(meshes), &error)) {
         emit renderError(error);
         return;
     }
     m_parametersDirty = false;
     m_renderReady = true;
+    emit sceneChanged(); // meshInfo() now comes from the renderer
 }
 
 // Needs the context current. The shading program goes first because it is the
 // cheap one to restore if the meshes then fail.
-bool Viewport::uploadScene(const Scene &scene, QString *error)
+bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error)
 {
     const ShadingMethod previousShading = m_renderer.scene().shading;
     const bool reloadShading = !m_renderer.hasProgram() || scene.shading != previousShading;
@@ -150,7 +185,7 @@ bool Viewport::uploadScene(const Scene &scene, QString *error)
             return false; // the renderer keeps its previous program
         }
     }
-    if (!m_renderer.setScene(scene, error)) {
+    if (!m_renderer.setScene(scene, std::move(meshes), error)) {
         if (reloadShading && scene.shading != previousShading)
             m_renderer.loadShading(previousShading);
         return false;
@@ -275,6 +310,23 @@ void Viewport::keyPressEvent(QKeyEvent *event)
         return;
     }
     QOpenGLWidget::keyPressEvent(event);
+}
+
+void Viewport::dragEnterEvent(QDragEnterEvent *event)
+{
+    // Any local file is welcome: an unsupported one is then explained by the
+    // window rather than refused without a word.
+    if (!localFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void Viewport::dropEvent(QDropEvent *event)
+{
+    const QStringList paths = localFiles(event->mimeData());
+    if (paths.isEmpty())
+        return;
+    event->acceptProposedAction();
+    emit filesDropped(paths);
 }
 
 } // namespace phonglab

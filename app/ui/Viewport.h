@@ -5,6 +5,7 @@
 
 #include <QOpenGLWidget>
 #include <QPointF>
+#include <optional>
 
 namespace phonglab {
 
@@ -21,8 +22,16 @@ public:
 
     // Shows `scene` with its own camera. On failure (a mesh that cannot be
     // loaded, a shading program that does not build) the current scene stays
-    // and `error` says why.
+    // and `error` says why. Loads the meshes on the calling thread: the
+    // window uses SceneLoadJob and the overload below instead.
     bool setScene(const Scene &scene, QString *error);
+    // Shows `scene` with meshes loaded elsewhere (loadSceneMeshes(scene,
+    // loadedKeys())). Before the first initializeGL they wait there.
+    bool setScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    // Meshes already on the GPU, which a load may skip (by meshKey()).
+    QSet<QString> loadedKeys() const;
+    // Statistics and warnings of the meshes the scene uses, by meshKey().
+    const QHash<QString, SceneMeshes::Entry> &meshInfo() const;
     // The scene as shown, with the orbited camera in place of the original.
     Scene currentScene() const;
     const Camera &camera() const { return m_orbit.camera(); }
@@ -45,6 +54,10 @@ signals:
     void frameRendered(double milliseconds, qint64 triangles);
     void glRendererChanged(const QString &name);
     void cameraChanged();
+    // A new scene (or a new mesh of it) is shown: objects or meshInfo() changed.
+    void sceneChanged();
+    // Local files were dropped onto the view.
+    void filesDropped(const QStringList &paths);
 
 protected:
     void initializeGL() override;
@@ -54,18 +67,23 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
 
 private:
     enum class Drag { None, Orbit, Pan };
 
     void cleanup();
-    bool uploadScene(const Scene &scene, QString *error);
+    bool uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    void showUploaded(const Scene &scene);
     void cameraMoved();
     void recordFrameTime(double milliseconds);
 
     Renderer m_renderer;
     Renderer::Options m_options{.drawLightMarkers = true};
     Scene m_scene; // as loaded; its camera is the orbit's original
+    // Meshes of m_scene loaded before GL was up; initializeGL uploads them.
+    std::optional<SceneMeshes> m_pendingMeshes;
     OrbitCamera m_orbit;
     bool m_glInitialized = false;  // the renderer holds GL resources
     bool m_renderReady = false;    // ... and a scene and program to draw

@@ -1,0 +1,36 @@
+#pragma once
+#include "MeshData.h"
+#include "NormalOptions.h"
+#include "PolygonMesh.h"
+
+#include <QString>
+#include <QStringList>
+#include <glm/glm.hpp>
+
+namespace phonglab {
+
+// What buildMeshData made of a mesh, for the status bar and the CLI.
+struct BuildStats {
+    qint64 fileVertices = 0;   // positions in the file
+    qint64 vertices = 0;       // GPU vertices
+    qint64 triangles = 0;
+    qint64 splitVertices = 0;  // GPU vertices − distinct positions used: the cost of hard edges
+    bool normalsFromFile = false;
+    // The method that produced the normals: Auto only when they came from
+    // the file, AngleWeighted when Auto had to compute them.
+    NormalMethod method = NormalMethod::Auto;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f}; // over the positions the GPU mesh uses
+};
+
+// Turns a repaired PolygonMesh into GPU-ready MeshData: triangulates,
+// chooses normals as `options` says, and welds, giving one GPU vertex per
+// distinct (position, normal) pair. Normals come from the file only for
+// NormalMethod::Auto and only when every corner has one; they are used as
+// written, normalised (zero or non-finite ones are replaced by computed
+// angle-weighted normals). Every compromise is appended to `warnings`.
+// On failure (no faces; more triangle corners than 32-bit indices reach)
+// returns an empty MeshData and sets `error`.
+MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats = nullptr,
+                       QStringList *warnings = nullptr, QString *error = nullptr);
+
+} // namespace phonglab

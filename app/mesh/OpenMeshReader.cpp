@@ -1,0 +1,213 @@
+#include "OpenMeshReader.h"
+
+#include "MeshTextTokens.h"
+#include "PolygonSoupImporter.h"
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+
+namespace phonglab {
+
+namespace {
+
+// Routes OpenMesh's console streams into buffers while it exists, then puts
+// the previous targets and enabled states back. OpenMesh sends these to
+// std::cerr / std::clog / std::cout by default; a GUI has no use for that
+// and the user needs the messages as warnings instead.
+class ConsoleCapture {
+public:
+    ConsoleCapture()
+    {
+        for (int i = 0; i < 3; ++i) {
+            OpenMesh::mostream &s = stream(i);
+            m_wasEnabled[i] = s.is_enabled();
+            m_hadCerr[i] = s.disconnect(std::cerr);
+            m_hadClog[i] = s.disconnect(std::clog);
+            m_hadCout[i] = s.disconnect(std::cout);
+            s.connect(m_buffers[i]);
+            s.enable();
+        }
+    }
+
+    ~ConsoleCapture()
+    {
+        for (int i = 0; i < 3; ++i) {
+            OpenMesh::mostream &s = stream(i);
+            s.flush();
+            s.disconnect(m_buffers[i]);
+            if (m_hadCerr[i]) s.connect(std::cerr);
+            if (m_hadClog[i]) s.connect(std::clog);
+            if (m_hadCout[i]) s.connect(std::cout);
+            m_wasEnabled[i] ? s.enable() : s.disable();
+        }
+    }
+
+    // The distinct lines written to omerr so far.
+    QStringList errorLines()
+    {
+        stream(0).flush();
+        QStringList lines;
+        std::istringstream in(m_buffers[0].str());
+        for (std::string line; std::getline(in, line);) {
+            const QString l = QString::fromStdString(line).trimmed();
+            if (!l.isEmpty() && !lines.contains(l))
+                lines << l;
+        }
+        return lines;
+    }
+
+    ConsoleCapture(const ConsoleCapture &) = delete;
+    ConsoleCapture &operator=(const ConsoleCapture &) = delete;
+
+private:
+    static OpenMesh::mostream &stream(int i) { return i == 0 ? omerr() : i == 1 ? omlog() : omout(); }
+
+    std::ostringstream m_buffers[3];
+    bool m_wasEnabled[3] = {};
+    bool m_hadCerr[3] = {};
+    bool m_hadClog[3] = {};
+    bool m_hadCout[3] = {};
+};
+
+std::mutex &openMeshMutex()
+{
+    static std::mutex mutex;
+    return mutex;
+}
+
+bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFilePrecheck &check,
+              OpenMesh::IO::Options options, QString &error)
+{
+    OpenMesh::IO::_IOManager_ &io = OpenMesh::IO::IOManager();
+    if (check.format == MeshFileFormat::Stl) {
+        // Told binary or ascii explicitly, as the precheck decided it.
+        if (check.binary)
+            options += OpenMesh::IO::Options::Binary;
+        if (!check.rewritten.empty()) {
+            std::istringstream in(check.rewritten, std::ios::binary);
+            return io.read(in, "stl", importer, options);
+        }
+        std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
+        if (!in) {
+            error = QStringLiteral("cannot open the file");
+            return false;
+        }
+        return io.read(in, "stl", importer, options);
+    }
+    if (check.format == MeshFileFormat::Om) {
+        // The OM reader stops at the end marker OpenMesh writes after the
+        // last chunk. Running into the end of the file instead means it was
+        // cut short, and the reader would have carried on with whatever a
+        // failed read leaves in its variables.
+        std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
+        if (!in) {
+            error = QStringLiteral("cannot open the file");
+            return false;
+        }
+        const bool ok = io.read(in, "om", importer, options);
+        if (in.eof())
+            error = QStringLiteral("the file ends before its end marker (truncated?)");
+        return ok && !in.eof();
+    }
+    if (!check.rewritten.empty()) {
+        // A cleaned OFF text. The OFF reader's stream entry point keeps the
+        // header flags of the previous file, so it goes through a file too.
+        QTemporaryDir dir;
+        QFile cleaned(dir.filePath(QStringLiteral("cleaned.off")));
+        if (!dir.isValid() || !cleaned.open(QIODevice::WriteOnly)
+            || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size())) != qint64(check.rewritten.size())) {
+            error = QStringLiteral("cannot write a cleaned copy of the OFF file to the temporary folder");
+            return false;
+        }
+        cleaned.close();
+        return io.read(QFile::encodeName(cleaned.fileName()).toStdString(), importer, options);
+    }
+    return io.read(QFile::encodeName(path).toStdString(), importer, options);
+}
+
+} // namespace
+
+MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &check,
+                                const std::function<bool(double)> &progress)
+{
+    std::lock_guard<std::mutex> lock(openMeshMutex());
+    MeshReadResult result;
+    PolygonSoupImporter importer;
+    const quint64 expected = check.declaredVertices + check.declaredFaces;
+    if (progress && expected) {
+        importer.setProgress([&](std::size_t n) { return progress(std::min(1.0, double(n) / double(expected))); },
+                             64 * 1024);
+    }
+    // Every element takes at least a byte of the file.
+    importer.setReserveLimit(std::size_t(check.fileSize));
+
+    // Face normals only from STL: that is where they are the file's normals;
+    // an OM file's are derived data.
+    OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexNormal;
+    if (check.format == MeshFileFormat::Stl)
+        options += OpenMesh::IO::Options::FaceNormal;
+
+    bool ok = false;
+    QStringList messages;
+    {
+        ConsoleCapture capture;
+        try {
+            ok = readInto(importer, path, check, options, result.error);
+        } catch (const PolygonSoupImporter::Cancelled &) {
+            result.error = QStringLiteral("cancelled");
+        } catch (const std::bad_alloc &) {
+            result.error = QStringLiteral("out of memory while reading the file");
+        } catch (const std::exception &e) {
+            result.error = QStringLiteral("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
+        } catch (...) {
+            result.error = QStringLiteral("the reader failed");
+        }
+        messages = capture.errorLines();
+    }
+    if (!result.error.isEmpty())
+        return result;
+    if (!ok) {
+        result.error = messages.isEmpty() ? QStringLiteral("OpenMesh could not read the file")
+                                          : QStringLiteral("OpenMesh could not read the file: %1").arg(messages.first());
+        return result;
+    }
+    constexpr int kMaxMessages = 5;
+    for (int i = 0; i < messages.size() && i < kMaxMessages; ++i)
+        result.warnings << QStringLiteral("OpenMesh: %1").arg(messages[i]);
+    if (messages.size() > kMaxMessages)
+        result.warnings << QStringLiteral("OpenMesh: %1 more")
+                               .arg(meshtext::counted(messages.size() - kMaxMessages, "message", "messages"));
+
+    const std::size_t faceCalls = importer.faceCallCount();
+    PolygonMesh mesh = importer.takeMesh(result.warnings);
+    if (check.declaredVertices && mesh.positions.size() != check.declaredVertices && check.format != MeshFileFormat::Stl)
+        result.warnings << QStringLiteral("read %1 of the %2 the header declares")
+                               .arg(mesh.positions.size())
+                               .arg(meshtext::counted(check.declaredVertices, "vertex", "vertices"));
+    if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
+        // OpenMesh's STL reader merges corners by position and skips
+        // triangles left with a repeated corner.
+        result.warnings << QStringLiteral("dropped %1 with two corners at the same position")
+                               .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle", "triangles"));
+    } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
+        result.warnings << QStringLiteral("read %1 of the %2 the header declares")
+                               .arg(faceCalls).arg(meshtext::counted(check.declaredFaces, "face", "faces"));
+    }
+    if (mesh.faceCount() == 0) {
+        result.error = QStringLiteral("no faces were read");
+        return result;
+    }
+    result.mesh = std::move(mesh);
+    return result;
+}
+
+} // namespace phonglab

@@ -1,0 +1,49 @@
+#include "MeshStatsText.h"
+
+#include <QLocale>
+#include <QObject>
+
+namespace phonglab {
+
+namespace {
+
+constexpr int kBoundsDigits = 4; // significant digits: enough to see the shape's proportions
+
+QString pointText(const glm::vec3 &p)
+{
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(double(p.x), 0, 'g', kBoundsDigits)
+        .arg(double(p.y), 0, 'g', kBoundsDigits)
+        .arg(double(p.z), 0, 'g', kBoundsDigits);
+}
+
+} // namespace
+
+QString normalsDescription(const MeshStats &stats, bool builtin)
+{
+    if (builtin)
+        return QObject::tr("analytic (exact)");
+    if (stats.normalsFromFile)
+        return QObject::tr("from file");
+    QString how = normalMethodName(stats.normalMethod);
+    if (stats.creaseAngleDeg)
+        how += QObject::tr(", crease %1°").arg(*stats.creaseAngleDeg, 0, 'g', 6);
+    return QObject::tr("computed (%1)").arg(how);
+}
+
+QString boundsDescription(const MeshStats &stats)
+{
+    return QObject::tr("%1 to %2").arg(pointText(stats.boundsMin), pointText(stats.boundsMax));
+}
+
+QString surfaceDescription(const MeshStats &stats)
+{
+    return stats.closed ? QObject::tr("closed") : QObject::tr("open (back faces drawn)");
+}
+
+QString countText(qint64 count)
+{
+    return QLocale().toString(count);
+}
+
+} // namespace phonglab

@@ -1,0 +1,18 @@
+#pragma once
+#include "mesh/MeshLoader.h"
+
+#include <QString>
+
+namespace phonglab {
+
+// How the Scene dock words a mesh's statistics.
+
+// "from file", "computed (flat)", "computed (angle, crease 30°)"; builtin
+// shapes: "analytic (exact)".
+QString normalsDescription(const MeshStats &stats, bool builtin);
+// "(-1, -0.5, -1) to (1, 0.5, 1)"
+QString boundsDescription(const MeshStats &stats);
+QString surfaceDescription(const MeshStats &stats);
+QString countText(qint64 count); // with the locale's digit grouping
+
+} // namespace phonglab

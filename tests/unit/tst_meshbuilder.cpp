@@ -1,0 +1,373 @@
+// From PolygonMesh to GPU MeshData: triangulation of quads, n-gons and
+// concave polygons, the choice between file and computed normals, the
+// replacement of unusable file normals, welding, and the statistics.
+
+#include "mesh/MeshBuilder.h"
+#include "mesh/Triangulation.h"
+
+#include <QPointF>
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <vector>
+
+using namespace phonglab;
+
+namespace {
+
+// The cube of side 2 at the origin as a file has it: 8 positions (x, y, z =
+// ±1 from bits 0, 1, 2) and six quads, counter-clockwise from outside.
+const std::uint32_t kCubeQuads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                                        {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+const glm::vec3 kCubeFaceNormals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+void addFace(PolygonMesh &mesh, std::initializer_list<std::uint32_t> positions)
+{
+    mesh.cornerPosition.insert(mesh.cornerPosition.end(), positions);
+    mesh.faceStart.push_back(std::uint32_t(mesh.cornerPosition.size()));
+}
+
+PolygonMesh cubeWithoutNormals()
+{
+    PolygonMesh mesh;
+    for (int i = 0; i < 8; ++i)
+        mesh.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    for (const auto &q : kCubeQuads)
+        addFace(mesh, {q[0], q[1], q[2], q[3]});
+    return mesh;
+}
+
+// Flat shaded: six normals, each corner pointing at its face's.
+PolygonMesh flatCube()
+{
+    PolygonMesh mesh = cubeWithoutNormals();
+    mesh.normals.assign(std::begin(kCubeFaceNormals), std::end(kCubeFaceNormals));
+    for (std::uint32_t f = 0; f < 6; ++f)
+        mesh.cornerNormal.insert(mesh.cornerNormal.end(), 4, f);
+    return mesh;
+}
+
+// Smooth: per-vertex normals, written unnormalised (the position itself,
+// length √3) as some exporters do.
+PolygonMesh smoothCube()
+{
+    PolygonMesh mesh = cubeWithoutNormals();
+    mesh.normals = mesh.positions;
+    mesh.cornerNormal = mesh.cornerPosition;
+    return mesh;
+}
+
+glm::dvec3 triangleNormal(const MeshData &data, std::size_t t)
+{
+    const glm::dvec3 a(data.positions[data.indices[3 * t]]);
+    return glm::cross(glm::dvec3(data.positions[data.indices[3 * t + 1]]) - a,
+                      glm::dvec3(data.positions[data.indices[3 * t + 2]]) - a);
+}
+
+// Maps a point of the plane into a tilted plane in space, so the
+// triangulator's projection is exercised rather than a trivial z = 0.
+glm::vec3 tilted(double x, double y)
+{
+    const glm::dvec3 u = glm::normalize(glm::dvec3(1, 1, 0));
+    const glm::dvec3 v = glm::normalize(glm::dvec3(-1, 1, 2));
+    return glm::vec3(glm::dvec3(0.5, -2, 3) + x * u + y * v);
+}
+const glm::dvec3 kTiltedNormal = glm::normalize(glm::cross(glm::dvec3(1, 1, 0), glm::dvec3(-1, 1, 2)));
+
+// Point in polygon (even-odd), in the plane's own coordinates.
+bool insidePolygon(const std::vector<glm::dvec2> &polygon, const glm::dvec2 &p)
+{
+    bool inside = false;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const glm::dvec2 &a = polygon[i], &b = polygon[j];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+            inside = !inside;
+    }
+    return inside;
+}
+
+} // namespace
+
+class TestMeshBuilder : public QObject {
+    Q_OBJECT
+
+private slots:
+    void flatCubeSplitsAtEdges();
+    void smoothCubeStaysWelded();
+    void explicitMethodIgnoresFileNormals();
+    void triangleCornersIndexThePolygonCorners();
+    void quadAndPentagonKeepWinding();
+    void concavePolygon_data();
+    void concavePolygon();
+    void bowtieFallsBackToFan();
+    void autoWithPartialNormalsComputes();
+    void unusableFileNormalsAreReplaced();
+    void fileNormalsKeptAsWritten();
+    void boundsAndStats();
+    void emptyMeshFails();
+};
+
+void TestMeshBuilder::flatCubeSplitsAtEdges()
+{
+    BuildStats stats;
+    QStringList warnings;
+    const MeshData data = buildMeshData(flatCube(), NormalOptions(), &stats, &warnings);
+    QVERIFY(data.isValid());
+    QVERIFY2(warnings.isEmpty(), qPrintable(warnings.join('\n')));
+    QCOMPARE(stats.triangles, 12);
+    QCOMPARE(stats.vertices, 24); // 8 corners × 3 faces
+    QCOMPARE(stats.splitVertices, 16);
+    QVERIFY(stats.normalsFromFile);
+    QCOMPARE(stats.method, NormalMethod::Auto);
+    // Quads stay in order, two triangles each: a face's triangles use the
+    // same four vertices, all with the face's normal.
+    for (int f = 0; f < 6; ++f) {
+        std::set<std::uint32_t> vertices;
+        for (int c = 0; c < 6; ++c) {
+            const std::uint32_t v = data.indices[6 * f + c];
+            vertices.insert(v);
+            QCOMPARE(data.normals[v], kCubeFaceNormals[f]);
+        }
+        QCOMPARE(vertices.size(), 4u);
+    }
+}
+
+void TestMeshBuilder::smoothCubeStaysWelded()
+{
+    BuildStats stats;
+    const MeshData data = buildMeshData(smoothCube(), NormalOptions(), &stats);
+    QCOMPARE(stats.vertices, 8);
+    QCOMPARE(stats.splitVertices, 0);
+    QVERIFY(stats.normalsFromFile);
+    for (std::size_t v = 0; v < data.positions.size(); ++v) {
+        const glm::vec3 expected = data.positions[v] / std::sqrt(3.0f);
+        QVERIFY(glm::all(glm::lessThan(glm::abs(data.normals[v] - expected), glm::vec3(1e-7f))));
+    }
+}
+
+void TestMeshBuilder::explicitMethodIgnoresFileNormals()
+{
+    // Angle-weighted over the flat cube's positions: one smooth vertex each.
+    BuildStats stats;
+    buildMeshData(flatCube(), {NormalMethod::AngleWeighted, std::nullopt}, &stats);
+    QVERIFY(!stats.normalsFromFile);
+    QCOMPARE(stats.method, NormalMethod::AngleWeighted);
+    QCOMPARE(stats.vertices, 8);
+    QCOMPARE(stats.splitVertices, 0);
+    // A 30° crease cuts every edge: the flat cube again, computed.
+    const MeshData creased = buildMeshData(smoothCube(), {NormalMethod::AngleWeighted, 30.0}, &stats);
+    QCOMPARE(stats.vertices, 24);
+    QCOMPARE(stats.splitVertices, 16);
+    for (int f = 0; f < 6; ++f)
+        for (int c = 0; c < 6; ++c)
+            QCOMPARE(creased.normals[creased.indices[6 * f + c]], kCubeFaceNormals[f]);
+    // Flat shading splits just as much, whatever the file says.
+    buildMeshData(smoothCube(), {NormalMethod::Flat, std::nullopt}, &stats);
+    QCOMPARE(stats.vertices, 24);
+    QCOMPARE(stats.method, NormalMethod::Flat);
+}
+
+void TestMeshBuilder::triangleCornersIndexThePolygonCorners()
+{
+    // A triangle, then a square: the square's corners are 3..6 and its
+    // triangles refer to those corners, not to positions.
+    PolygonMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    addFace(mesh, {0, 1, 2});
+    addFace(mesh, {0, 1, 2, 3});
+    const Triangulation triangulation = triangulate(mesh);
+    QCOMPARE(triangulation.corners, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 3, 5, 6}));
+    QCOMPARE(triangulation.fanFallbacks, 0u);
+}
+
+void TestMeshBuilder::quadAndPentagonKeepWinding()
+{
+    // A quad in the tilted plane and a regular pentagon wound clockwise in
+    // it (so facing the other way): each triangle faces like its polygon.
+    PolygonMesh mesh;
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.5, 1.5}, {0.0, 1.0}})
+        mesh.positions.push_back(tilted(x, y));
+    for (int k = 0; k < 5; ++k) {
+        const double a = -2.0 * std::numbers::pi * k / 5;
+        mesh.positions.push_back(tilted(5 + std::cos(a), std::sin(a)));
+    }
+    addFace(mesh, {0, 1, 2, 3});
+    addFace(mesh, {4, 5, 6, 7, 8});
+    const glm::dvec3 quadNormal = newellNormal(mesh.positions, std::span(mesh.cornerPosition).first(4));
+    const glm::dvec3 pentagonNormal = newellNormal(mesh.positions, std::span(mesh.cornerPosition).subspan(4));
+    QVERIFY(glm::dot(quadNormal, kTiltedNormal) > 0.0);
+    QVERIFY(glm::dot(pentagonNormal, kTiltedNormal) < 0.0);
+
+    BuildStats stats;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats);
+    QCOMPARE(stats.triangles, 2 + 3);
+    for (std::size_t t = 0; t < 5; ++t) {
+        const glm::dvec3 expected = t < 2 ? quadNormal : pentagonNormal;
+        QVERIFY2(glm::dot(glm::normalize(triangleNormal(data, t)), glm::normalize(expected)) > 0.999,
+                 qPrintable(QString::number(t)));
+    }
+}
+
+void TestMeshBuilder::concavePolygon_data()
+{
+    // The L: a 2×2 square missing its upper right quarter, area 3, reflex
+    // at (1, 1). The dart: a quad whose fourth corner (0.5, 1) is pushed
+    // inside, area 1.5. Each is tried with every corner first, so the
+    // reflex corner sits at every place in the order; a fan from the wrong
+    // corner (or the wrong diagonal of the dart) covers ground outside.
+    QTest::addColumn<QList<QPointF>>("outline");
+    QTest::addColumn<int>("rotation");
+    QTest::addColumn<double>("area");
+    const QList<QPointF> ell = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+    const QList<QPointF> dart = {{0, 0}, {2, 1}, {0, 2}, {0.5, 1}};
+    for (int r = 0; r < 6; ++r)
+        QTest::addRow("L, start %d", r) << ell << r << 3.0;
+    for (int r = 0; r < 4; ++r)
+        QTest::addRow("dart, start %d", r) << dart << r << 1.5;
+}
+
+void TestMeshBuilder::concavePolygon()
+{
+    QFETCH(QList<QPointF>, outline);
+    QFETCH(int, rotation);
+    QFETCH(double, area);
+    const int n = int(outline.size());
+    PolygonMesh mesh;
+    std::vector<glm::dvec2> plane;
+    for (int k = 0; k < n; ++k) {
+        const QPointF &p = outline[(k + rotation) % n];
+        plane.emplace_back(p.x(), p.y());
+        mesh.positions.push_back(tilted(p.x(), p.y()));
+        mesh.cornerPosition.push_back(std::uint32_t(k));
+    }
+    mesh.faceStart.push_back(std::uint32_t(n));
+
+    BuildStats stats;
+    QStringList warnings;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    QCOMPARE(stats.triangles, n - 2);
+    QVERIFY(warnings.isEmpty());
+    double sum = 0.0;
+    for (int t = 0; t < n - 2; ++t) {
+        const glm::dvec3 normal = triangleNormal(data, t);
+        QVERIFY2(glm::dot(normal, kTiltedNormal) > 0.0, "triangle wound against the polygon");
+        sum += glm::length(normal) / 2;
+        // The centroid, back in the plane's coordinates, lies inside.
+        glm::dvec3 centroid(0.0);
+        for (int k = 0; k < 3; ++k)
+            centroid += glm::dvec3(data.positions[data.indices[3 * t + k]]) / 3.0;
+        const glm::dvec3 d = centroid - glm::dvec3(0.5, -2, 3);
+        const glm::dvec2 local(glm::dot(d, glm::normalize(glm::dvec3(1, 1, 0))),
+                               glm::dot(d, glm::normalize(glm::dvec3(-1, 1, 2))));
+        QVERIFY2(insidePolygon(plane, local), qPrintable(QStringLiteral("triangle %1 outside").arg(t)));
+    }
+    QVERIFY2(std::abs(sum - area) < 1e-5, qPrintable(QString::number(sum)));
+}
+
+void TestMeshBuilder::bowtieFallsBackToFan()
+{
+    // A quad crossing itself: its two lobes cancel, so it has no plane.
+    PolygonMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}};
+    addFace(mesh, {0, 1, 2, 3});
+    QCOMPARE(triangulate(mesh).fanFallbacks, 1u);
+    BuildStats stats;
+    QStringList warnings;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    QCOMPARE(stats.triangles, 2);
+    QCOMPARE(warnings.size(), 1);
+    QVERIFY2(warnings.first().startsWith("1 polygons"), qPrintable(warnings.first()));
+    for (const glm::vec3 &n : data.normals)
+        QVERIFY(std::abs(glm::length(n) - 1.0f) < 1e-6f);
+}
+
+void TestMeshBuilder::autoWithPartialNormalsComputes()
+{
+    // The +X face (corners 0..3) lost its normals: compute all of them.
+    PolygonMesh mesh = flatCube();
+    for (int c = 0; c < 4; ++c)
+        mesh.cornerNormal[c] = PolygonMesh::kNoNormal;
+    BuildStats stats;
+    QStringList warnings;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    QVERIFY(!stats.normalsFromFile);
+    QCOMPARE(stats.method, NormalMethod::AngleWeighted);
+    QCOMPARE(stats.vertices, 8);
+    QCOMPARE(warnings.size(), 1);
+    QVERIFY2(warnings.first().startsWith("4 of 24 corners have no normal"), qPrintable(warnings.first()));
+    for (std::size_t v = 0; v < data.positions.size(); ++v)
+        QVERIFY(glm::length(data.normals[v] - data.positions[v] / std::sqrt(3.0f)) < 1e-6f);
+}
+
+void TestMeshBuilder::unusableFileNormalsAreReplaced()
+{
+    // The +X face's normal is zero, the −X face's NaN: their 8 corners get
+    // the computed angle-weighted normal, the cube diagonal; the other
+    // faces keep theirs. Those 8 corners are distinct vertices: 24 in all.
+    PolygonMesh mesh = flatCube();
+    mesh.normals[0] = glm::vec3(0.0f);
+    mesh.normals[1] = glm::vec3(std::nanf(""), 0, 0);
+    BuildStats stats;
+    QStringList warnings;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    QVERIFY(stats.normalsFromFile);
+    QCOMPARE(stats.vertices, 24);
+    QCOMPARE(warnings.size(), 1);
+    QVERIFY2(warnings.first().startsWith("8 of 24 corners have a zero or invalid normal"),
+             qPrintable(warnings.first()));
+    for (int f = 0; f < 6; ++f) {
+        for (int c = 0; c < 6; ++c) {
+            const std::uint32_t v = data.indices[6 * f + c];
+            const glm::vec3 expected = f < 2 ? data.positions[v] / std::sqrt(3.0f) : kCubeFaceNormals[f];
+            QVERIFY(glm::length(data.normals[v] - expected) < 1e-6f);
+        }
+    }
+}
+
+void TestMeshBuilder::fileNormalsKeptAsWritten()
+{
+    // Unit normals pass through bit for bit; others only get normalised.
+    PolygonMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.normals = {{0.6f, 0.8f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 3.0f, 4.0f}};
+    addFace(mesh, {0, 1, 2});
+    mesh.cornerNormal = {0, 1, 2};
+    const MeshData data = buildMeshData(mesh, NormalOptions());
+    QCOMPARE(data.normals[data.indices[0]], glm::vec3(0.6f, 0.8f, 0.0f));
+    QCOMPARE(data.normals[data.indices[1]], glm::vec3(0.0f, 0.0f, 1.0f));
+    QCOMPARE(data.normals[data.indices[2]], glm::vec3(0.0f, 0.6f, 0.8f));
+}
+
+void TestMeshBuilder::boundsAndStats()
+{
+    // A box from (−1, −2, 0) to (3, 2, 0.5), plus one position no face uses:
+    // it counts as a file vertex but neither as a GPU vertex nor in bounds.
+    PolygonMesh mesh = smoothCube();
+    for (glm::vec3 &p : mesh.positions)
+        p = glm::vec3(1, 0, 0.25f) + p * glm::vec3(2, 2, 0.25f);
+    mesh.positions.emplace_back(100, 100, 100);
+    BuildStats stats;
+    const MeshData data = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt}, &stats);
+    QCOMPARE(stats.fileVertices, 9);
+    QCOMPARE(stats.vertices, 24);
+    QCOMPARE(stats.splitVertices, 16);
+    QCOMPARE(stats.triangles, 12);
+    QCOMPARE(stats.boundsMin, glm::vec3(-1, -2, 0));
+    QCOMPARE(stats.boundsMax, glm::vec3(3, 2, 0.5f));
+    QCOMPARE(qint64(data.positions.size()), stats.vertices);
+}
+
+void TestMeshBuilder::emptyMeshFails()
+{
+    PolygonMesh mesh;
+    mesh.positions = {{0, 0, 0}};
+    QString error;
+    const MeshData data = buildMeshData(mesh, NormalOptions(), nullptr, nullptr, &error);
+    QVERIFY(data.positions.empty());
+    QVERIFY(data.indices.empty());
+    QCOMPARE(error, QStringLiteral("the mesh has no faces"));
+}
+
+QTEST_GUILESS_MAIN(TestMeshBuilder)
+#include "tst_meshbuilder.moc"
