@@ -39,38 +39,59 @@ bool startsWithSolid(std::string_view head)
            && qstrnicmp(head.data() + first, "solid", 5) == 0;
 }
 
-// Names the known format a file starts like, for "this is X, not Y" errors
-// (a PLY renamed to .obj, a zipped download, a saved web page).
-QString sniffFormat(std::string_view head)
+// The known format a file starts like, for "this is X, not Y" errors (a
+// PLY renamed to .obj, a zipped download, a saved web page), and what to do.
+struct Sniffed {
+    QString what;
+    QString hint;
+};
+
+Sniffed sniffFormat(std::string_view head)
 {
-    if (startsWith(head, "ply\n") || startsWith(head, "ply\r\n")) return QStringLiteral("a PLY file (rename it to .ply)");
-    if (head.size() >= 3 && startsWith(head, "OM") && std::strchr("TQP", head[2]))
-        return QStringLiteral("an OpenMesh file (rename it to .om)");
-    if (offHeaderAt(head)) return QStringLiteral("an OFF file (rename it to .off)");
-    if (startsWithSolid(head)) return QStringLiteral("an ascii STL file (rename it to .stl)");
-    if (startsWith(head, "\x89PNG")) return QStringLiteral("a PNG image");
-    if (startsWith(head, "\xFF\xD8\xFF")) return QStringLiteral("a JPEG image");
-    if (startsWith(head, "GIF8")) return QStringLiteral("a GIF image");
-    if (startsWith(head, "PK\x03\x04")) return QStringLiteral("a ZIP archive (unpack it first)");
-    if (startsWith(head, "\x1F\x8B")) return QStringLiteral("a gzip-compressed file (unpack it first)");
-    if (startsWith(head, "7z\xBC\xAF")) return QStringLiteral("a 7-Zip archive (unpack it first)");
-    if (startsWith(head, "glTF")) return QStringLiteral("a binary glTF file");
-    if (startsWith(head, "Kaydara FBX Binary")) return QStringLiteral("an FBX file");
-    if (startsWith(head, "%PDF")) return QStringLiteral("a PDF document");
+    struct Magic {
+        std::string_view bytes;
+        const char *what;
+        const char *hint;
+    };
+    static constexpr Magic kMagics[] = {
+        {"ply\n", "a PLY file", "rename it to .ply"},
+        {"ply\r\n", "a PLY file", "rename it to .ply"},
+        {"OMT", "an OpenMesh file", "rename it to .om"},
+        {"OMQ", "an OpenMesh file", "rename it to .om"},
+        {"OMP", "an OpenMesh file", "rename it to .om"},
+        {"\x89PNG", "a PNG image", ""},
+        {"\xFF\xD8\xFF", "a JPEG image", ""},
+        {"GIF8", "a GIF image", ""},
+        {"PK\x03\x04", "a ZIP archive", "unpack it first"},
+        {"\x1F\x8B", "a gzip-compressed file", "unpack it first"},
+        {"7z\xBC\xAF", "a 7-Zip archive", "unpack it first"},
+        {"glTF", "a binary glTF file", ""},
+        {"Kaydara FBX Binary", "an FBX file", ""},
+        {"%PDF", "a PDF document", ""},
+    };
+    for (const Magic &m : kMagics)
+        if (startsWith(head, m.bytes))
+            return {QString::fromLatin1(m.what), QString::fromLatin1(m.hint)};
+    if (offHeaderAt(head))
+        return {QStringLiteral("an OFF file"), QStringLiteral("rename it to .off")};
+    if (startsWithSolid(head))
+        return {QStringLiteral("an ascii STL file"), QStringLiteral("rename it to .stl")};
     const std::size_t first = head.find_first_not_of(" \t\r\n");
-    if (first != std::string_view::npos && head[first] == '{') return QStringLiteral("a JSON file");
-    if (first != std::string_view::npos && head[first] == '<') return QStringLiteral("an XML or HTML file");
+    if (first != std::string_view::npos && head[first] == '{')
+        return {QStringLiteral("a JSON file"), {}};
+    if (first != std::string_view::npos && head[first] == '<')
+        return {QStringLiteral("an XML or HTML file"), {}};
     return {};
 }
 
-QString formatName(MeshFileFormat format)
+QString suffixOf(MeshFileFormat format)
 {
     switch (format) {
-    case MeshFileFormat::Obj: return QStringLiteral("OBJ");
-    case MeshFileFormat::Ply: return QStringLiteral("PLY");
-    case MeshFileFormat::Off: return QStringLiteral("OFF");
-    case MeshFileFormat::Stl: return QStringLiteral("STL");
-    case MeshFileFormat::Om: return QStringLiteral("OpenMesh");
+    case MeshFileFormat::Obj: return QStringLiteral(".obj");
+    case MeshFileFormat::Ply: return QStringLiteral(".ply");
+    case MeshFileFormat::Off: return QStringLiteral(".off");
+    case MeshFileFormat::Stl: return QStringLiteral(".stl");
+    case MeshFileFormat::Om: return QStringLiteral(".om");
     }
     return {};
 }
@@ -79,22 +100,19 @@ QString formatName(MeshFileFormat format)
 // after what it looks like instead, when we recognise that.
 QString wrongMagic(std::string_view head, MeshFileFormat format, const QString &expected)
 {
-    const QString other = sniffFormat(head);
-    if (!other.isEmpty())
-        return QStringLiteral("this is %1, not %2 %3 file")
-            .arg(other, format == MeshFileFormat::Obj ? "an" : "a", formatName(format));
-    return expected;
+    const Sniffed other = sniffFormat(head);
+    if (other.what.isEmpty())
+        return expected;
+    const QString error = QStringLiteral("this is %1, not a %2 file").arg(other.what, suffixOf(format));
+    return other.hint.isEmpty() ? error : QStringLiteral("%1 (%2)").arg(error, other.hint);
 }
 
 void checkObj(std::string_view head, MeshFilePrecheck &check)
 {
     // OBJ has no magic; anything another format starts with is not OBJ.
-    const QString other = sniffFormat(head);
-    if (!other.isEmpty()) {
-        check.error = wrongMagic(head, check.format, {});
-        return;
-    }
-    check.error = meshtext::binaryDataError(head, QStringLiteral("OBJ"));
+    check.error = wrongMagic(head, check.format, {});
+    if (check.ok())
+        check.error = meshtext::binaryDataError(head, QStringLiteral("OBJ"));
 }
 
 void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
@@ -197,34 +215,35 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
     // matches the count exactly decides for binary before the keyword does.
     const qint64 size = check.fileSize;
     const qint64 expected = size >= 84 ? 84 + 50 * qint64(littleEndian32(head, 80)) : -1;
-    if (size == expected || !startsWithSolid(head)) {
-        if (size != expected) {
-            const QString other = sniffFormat(head);
-            if (!other.isEmpty())
-                check.error = wrongMagic(head, check.format, {});
-            else if (size < 84)
-                check.error = QStringLiteral("too small for a binary STL file (%1 bytes) and not an ascii one").arg(size);
-            else if (size < expected)
-                check.error = QStringLiteral("the binary STL header declares %1 triangles (%2 bytes) but the file has "
-                                             "only %3 bytes (truncated or not an STL file)")
-                                  .arg((expected - 84) / 50).arg(expected).arg(size);
-            else
-                check.warnings << QStringLiteral("ignored %1 after the last triangle")
-                                      .arg(meshtext::counted(size - expected, "byte", "bytes"));
-            if (!check.ok())
-                return;
-        }
-        check.binary = true;
-        check.declaredFaces = quint64(expected - 84) / 50;
-        if (check.declaredFaces == 0)
-            check.error = QStringLiteral("the STL file has no triangles");
-        else
-            dropNonFiniteTriangles(path, check);
+    if (size != expected && startsWithSolid(head)) {
+        std::string text;
+        if (readWholeFile(path, text, check.error))
+            validateAsciiStl(text, check);
         return;
     }
-    std::string text;
-    if (readWholeFile(path, text, check.error))
-        validateAsciiStl(text, check);
+    if (size != expected) {
+        check.error = wrongMagic(head, check.format, {});
+        if (!check.ok())
+            return;
+        if (size < 84) {
+            check.error = QStringLiteral("too small for a binary STL file (%1 bytes) and not an ascii one").arg(size);
+            return;
+        }
+        if (size < expected) {
+            check.error = QStringLiteral("the binary STL header declares %1 triangles (%2 bytes) but the file has "
+                                         "only %3 bytes (truncated or not an STL file)")
+                              .arg((expected - 84) / 50).arg(expected).arg(size);
+            return;
+        }
+        check.warnings << QStringLiteral("ignored %1 after the last triangle")
+                              .arg(meshtext::counted(size - expected, "byte", "bytes"));
+    }
+    check.binary = true;
+    check.declaredFaces = quint64(expected - 84) / 50;
+    if (check.declaredFaces == 0)
+        check.error = QStringLiteral("the STL file has no triangles");
+    else
+        dropNonFiniteTriangles(path, check);
 }
 
 void checkOm(std::string_view head, MeshFilePrecheck &check)

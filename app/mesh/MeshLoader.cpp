@@ -74,7 +74,7 @@ MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const
     MeshReadResult read = readMeshFile(spec, scaled(progress, 0.0, 0.8));
     result.warnings = read.warnings;
     if (!read.mesh) {
-        result.error = read.error;
+        result.error = QStringLiteral("%1: %2").arg(spec, read.error);
         return result;
     }
     PolygonMesh &polygons = *read.mesh;

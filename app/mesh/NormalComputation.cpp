@@ -100,72 +100,78 @@ CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const 
     return result;
 }
 
-// The hot path: one pass scattering weighted triangle normals onto their
-// vertices, then one pass normalising. The method is a template argument so
-// each variant compiles to its own tight loop.
+// The hot path: scatter weighted triangle normals onto their vertices,
+// then normalise once per vertex. Neighbouring triangles share vertices, so
+// each scatter waits for the one before it through memory; any arithmetic
+// between loading a triangle and scattering it (square roots, divisions,
+// angles) would sit on that chain. So the work goes in blocks: gather the
+// block's cross products, weigh them in a loop without indirection (which
+// the compiler vectorises), then scatter. The method is a template
+// argument so each variant compiles to its own loops.
 template <NormalMethod Method>
 void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count, Accumulator *sums)
 {
-    for (std::size_t t = 0; t < count; ++t, triangles += 3) {
-        const std::uint32_t i0 = triangles[0], i1 = triangles[1], i2 = triangles[2];
-        const glm::vec3 a = positions[i0];
-        glm::vec3 n = glm::cross(positions[i1] - a, positions[i2] - a);
-        if constexpr (Method == NormalMethod::Average) {
-            // Unit length; a degenerate triangle adds nothing.
-            n = normalizedOrZero(n);
-        }
-        // AreaWeighted: |n| is twice the area, so the raw cross product is
-        // already the weighted normal.
-        const Accumulator add(n, sizeOf(n));
-        sums[i0] += add;
-        sums[i1] += add;
-        sums[i2] += add;
-    }
-}
-
-// Angle weighting costs two angles per triangle (the third is π minus
-// those). Done inline, their arithmetic is several times the rest of the
-// loop; done per block of triangles in a loop with no indirection, the
-// compiler vectorises it. So: gather a block's cross and dot products,
-// turn them into weights, scatter.
-void accumulateAngleWeighted(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count,
-                             Accumulator *sums)
-{
     constexpr std::size_t kBlock = 256;
+    glm::vec3 normal[kBlock];
     // Zeroed once: a short last block leaves stale but finite values behind.
     alignas(16) float doubleArea[kBlock] = {}, dotA[kBlock] = {}, dotB[kBlock] = {};
-    alignas(16) float weightA[kBlock], weightB[kBlock], weightC[kBlock];
-    glm::vec3 normal[kBlock];
+    // Per corner: the factor for the cross product, and what the
+    // contribution adds to the total (its length).
+    alignas(16) float scale[3][kBlock], size[3][kBlock];
     for (std::size_t first = 0; first < count; first += kBlock) {
-        const std::size_t size = std::min(kBlock, count - first);
+        const std::size_t blockSize = std::min(kBlock, count - first);
         const std::uint32_t *block = triangles + 3 * first;
-        for (std::size_t i = 0; i < size; ++i) {
+        for (std::size_t i = 0; i < blockSize; ++i) {
             const glm::vec3 a = positions[block[3 * i]];
             const glm::vec3 ab = positions[block[3 * i + 1]] - a, ac = positions[block[3 * i + 2]] - a;
             normal[i] = glm::cross(ab, ac);
-            doubleArea[i] = std::sqrt(glm::dot(normal[i], normal[i]));
-            dotA[i] = glm::dot(ab, ac);
-            dotB[i] = glm::dot(ac - ab, -ab);
+            if constexpr (Method == NormalMethod::AreaWeighted) {
+                // |n| is twice the area: the raw cross product is the
+                // weighted normal. Its L1 norm (within √3 of its length)
+                // stands in for the size, saving a square root.
+                const glm::vec3 &n = normal[i];
+                size[0][i] = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+            } else {
+                doubleArea[i] = std::sqrt(glm::dot(normal[i], normal[i]));
+            }
+            if constexpr (Method == NormalMethod::AngleWeighted) {
+                dotA[i] = glm::dot(ab, ac);
+                dotB[i] = glm::dot(ac - ab, -ab);
+            }
         }
-        // Weight = angle / |n|, so weight · n is the angle times the unit
-        // normal; a degenerate triangle gets weight 0.
+        if constexpr (Method == NormalMethod::AreaWeighted) {
+            for (std::size_t i = 0; i < blockSize; ++i) {
+                const Accumulator add(normal[i], size[0][i]);
+                sums[block[3 * i]] += add;
+                sums[block[3 * i + 1]] += add;
+                sums[block[3 * i + 2]] += add;
+            }
+            continue;
+        }
         for (std::size_t i = 0; i < kBlock; ++i) {
-            const float atA = angleBetween(doubleArea[i], dotA[i]);
-            const float atB = angleBetween(doubleArea[i], dotB[i]);
-            const float atC = std::max(0.0f, kPi - atA - atB);
             // Selects, not a guarded division: a branch would stop the
             // vectoriser (a division may trap, so it cannot be if-converted).
-            const float inverse = (doubleArea[i] > 0.0f ? 1.0f : 0.0f) / std::max(doubleArea[i], kTiny);
-            weightA[i] = atA * inverse;
-            weightB[i] = atB * inverse;
-            weightC[i] = atC * inverse;
+            // A degenerate triangle gets factor and size 0.
+            const float valid = doubleArea[i] > 0.0f ? 1.0f : 0.0f;
+            const float inverse = valid / std::max(doubleArea[i], kTiny);
+            if constexpr (Method == NormalMethod::Average) {
+                scale[0][i] = scale[1][i] = scale[2][i] = inverse;
+                size[0][i] = size[1][i] = size[2][i] = valid;
+            } else {
+                const float atA = angleBetween(doubleArea[i], dotA[i]);
+                const float atB = angleBetween(doubleArea[i], dotB[i]);
+                const float atC = valid * std::max(0.0f, kPi - atA - atB);
+                scale[0][i] = atA * inverse;
+                scale[1][i] = atB * inverse;
+                scale[2][i] = atC * inverse;
+                size[0][i] = atA;
+                size[1][i] = atB;
+                size[2][i] = atC;
+            }
         }
-        for (std::size_t i = 0; i < size; ++i) {
-            const Accumulator n(normal[i], sizeOf(normal[i]));
-            sums[block[3 * i]] += weightA[i] * n;
-            sums[block[3 * i + 1]] += weightB[i] * n;
-            sums[block[3 * i + 2]] += weightC[i] * n;
-        }
+        for (std::size_t i = 0; i < blockSize; ++i)
+            for (int k = 0; k < 3; ++k)
+                sums[block[3 * i + k]] += Accumulator(scale[k][i] * normal[i], size[k][i]);
     }
 }
 
@@ -219,7 +225,7 @@ CornerNormals smoothNormals(std::span<const glm::vec3> positions, std::span<cons
     else if (method == NormalMethod::AreaWeighted)
         accumulate<NormalMethod::AreaWeighted>(positions.data(), triangles.data(), count, sums.data());
     else
-        accumulateAngleWeighted(positions.data(), triangles.data(), count, sums.data());
+        accumulate<NormalMethod::AngleWeighted>(positions.data(), triangles.data(), count, sums.data());
 
     CornerNormals result;
     result.indexing = CornerNormals::Indexing::PerPosition;

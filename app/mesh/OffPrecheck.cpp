@@ -109,6 +109,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         check.error = QStringLiteral("4D and nD OFF files are not supported");
         return;
     }
+    const meshtext::TextTokens afterHeader = tokens;
     if (k.rest.empty() && headerLine == 1 && tokens.nextOnLine() == "BINARY")
         return checkBinary(text, k, check);
     check.error = meshtext::binaryDataError(text, QStringLiteral("OFF"));
@@ -118,9 +119,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     // The reader takes the header from line 1 and drops the rest of it.
     bool rewrite = headerLine != 1;
     std::int64_t counts[3] = {};
-    meshtext::TextTokens afterHeader(text, 1, true);
-    afterHeader.next();
-    tokens = afterHeader;
+    tokens = afterHeader; // the token looked at for BINARY may be a count
     for (int i = 0; i < 3; ++i) {
         const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
         if (!meshtext::parseInteger(t, counts[i]) || counts[i] < 0 || counts[i] > UINT32_MAX) {

@@ -96,6 +96,7 @@ private slots:
     void flatCubeSplitsAtEdges();
     void smoothCubeStaysWelded();
     void explicitMethodIgnoresFileNormals();
+    void flatConeApexSplitsManyWays();
     void triangleCornersIndexThePolygonCorners();
     void quadAndPentagonKeepWinding();
     void concavePolygon_data();
@@ -166,6 +167,30 @@ void TestMeshBuilder::explicitMethodIgnoresFileNormals()
     buildMeshData(smoothCube(), {NormalMethod::Flat, std::nullopt}, &stats);
     QCOMPARE(stats.vertices, 24);
     QCOMPARE(stats.method, NormalMethod::Flat);
+}
+
+void TestMeshBuilder::flatConeApexSplitsManyWays()
+{
+    // A flat-shaded cone of 100 faces: the apex needs 100 vertices (more
+    // than a position's chain is walked for before a hash map takes over),
+    // each rim position 2. Every triangle's vertices carry its normal.
+    const int segments = 100;
+    PolygonMesh mesh;
+    mesh.positions.emplace_back(0, 1, 0);
+    for (int k = 0; k < segments; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / segments;
+        mesh.positions.emplace_back(std::sin(a), 0.0, std::cos(a));
+        addFace(mesh, {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
+    }
+    BuildStats stats;
+    const MeshData data = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt}, &stats);
+    QCOMPARE(stats.vertices, 3 * segments);
+    QCOMPARE(stats.splitVertices, 3 * segments - (segments + 1));
+    for (int t = 0; t < segments; ++t) {
+        const glm::vec3 n = glm::normalize(glm::vec3(triangleNormal(data, t)));
+        for (int k = 0; k < 3; ++k)
+            QVERIFY(glm::length(data.normals[data.indices[3 * t + k]] - n) < 1e-6f);
+    }
 }
 
 void TestMeshBuilder::triangleCornersIndexThePolygonCorners()

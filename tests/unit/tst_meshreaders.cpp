@@ -1,3 +1,4 @@
+#include "mesh/MeshFilePrecheck.h"
 #include "mesh/MeshFileReader.h"
 #include "mesh/MeshRepair.h"
 #include "mesh/ObjReader.h"
@@ -162,6 +163,7 @@ private slots:
     // --- bad input
     void rejected_data();
     void rejected();
+    void unreadableFile();
     void randomBytesRejected_data();
     void randomBytesRejected();
     void hugeVertexCountReturnsQuickly();
@@ -189,6 +191,10 @@ void TestMeshReaders::formatsReadTheSameTetrahedron_data()
     QTest::newRow("ply ascii, written") << writeTetra(m_dir, "w_ascii.ply", false);
     QTest::newRow("ply binary, written") << writeTetra(m_dir, "w_binary.ply", true);
     QTest::newRow("off, written") << writeTetra(m_dir, "w.off", false);
+    QTest::newRow("off binary, written") << writeTetra(m_dir, "w_binary.off", true);
+    const QString countsOnHeader = m_dir.filePath("counts_on_header.off");
+    writeBytes(countsOnHeader, "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    QTest::newRow("off, counts on the header line") << countsOnHeader;
     QTest::newRow("stl ascii, written") << writeTetra(m_dir, "w_ascii.stl", false);
     QTest::newRow("stl binary, written") << writeTetra(m_dir, "w_binary.stl", true);
     QTest::newRow("om, written") << writeTetra(m_dir, "w.om", true);
@@ -365,6 +371,11 @@ void TestMeshReaders::rejected_data()
     QDir().mkpath(dirWithSuffix);
     QTest::newRow("directory named .obj") << dirWithSuffix << "not a regular file";
     QTest::newRow("unsupported suffix") << kBad + "mesh.fbx" << ".obj, .ply, .off, .stl, .om";
+    const QString huge = m_dir.filePath("huge_sparse.obj");
+    QFile sparse(huge);
+    QVERIFY(sparse.open(QIODevice::WriteOnly) && sparse.resize(kMaxMeshFileBytes + 1));
+    sparse.close();
+    QTest::newRow("over the size limit") << huge << "too large";
     QTest::newRow("words in ascii ply") << kBad + "words.ply" << "line 11: expected a number for 'y' of vertex 2, found 'hello'";
     QTest::newRow("words in off") << kBad + "words.off" << "line 5: expected a number, found 'one'";
     QTest::newRow("words in ascii stl") << kBad + "words.stl" << "line 12: expected 'vertex x y z', found 'zero'";
@@ -402,6 +413,18 @@ void TestMeshReaders::rejected()
     QVERIFY(!l.mesh);
     QVERIFY2(l.error.contains(errorPart), qPrintable(l.error));
     QVERIFY2(l.ms < 2000, qPrintable(QString::number(l.ms)));
+}
+
+void TestMeshReaders::unreadableFile()
+{
+    const QString path = m_dir.filePath("locked.obj");
+    writeBytes(path, readBytes(kFormats + "tetra.obj"));
+    QFile::setPermissions(path, QFileDevice::Permissions());
+    if (QFile f(path); f.open(QIODevice::ReadOnly))
+        QSKIP("permissions do not stop this user (root?)");
+    const MeshReadResult r = readMeshFile(path);
+    QVERIFY(!r.ok());
+    QVERIFY2(r.error.startsWith("cannot open the file"), qPrintable(r.error));
 }
 
 void TestMeshReaders::randomBytesRejected_data()

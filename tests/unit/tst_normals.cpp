@@ -148,6 +148,7 @@ private slots:
     void cubeCrease();
     void cancellingFacesFallBackToFaceNormal();
     void degenerateTriangleBorrowsNeighbourNormal();
+    void coneApexBigFan();
     void unitLengthEverywhere();
     void sphereAgainstAnalytic();
     void sphereCreaseBelowFacetAngleChangesNothing();
@@ -331,6 +332,35 @@ void TestNormals::degenerateTriangleBorrowsNeighbourNormal()
     for (int c = 0; c < 3; ++c) {
         QCOMPARE(flat[c], glm::vec3(0, 0, -1));
         QCOMPARE(flat[3 + c], glm::vec3(0, 0, 1));
+    }
+}
+
+void TestNormals::coneApexBigFan()
+{
+    // An open cone of 100 triangles around +Y: at the apex 100 corners, far
+    // past the pairwise limit, so the crease path matches edges by sorting.
+    // Neighbouring faces differ by a few degrees: a 30° crease keeps the
+    // apex one smoothing group, the same as no crease, and by symmetry its
+    // normal is +Y. A 1° crease splits every edge: the faces come back.
+    const int segments = 100;
+    std::vector<glm::vec3> positions = {{0, 1, 0}};
+    std::vector<std::uint32_t> triangles;
+    for (int k = 0; k < segments; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / segments;
+        positions.emplace_back(std::sin(a), 0.0, std::cos(a));
+        triangles.insert(triangles.end(), {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
+    }
+    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+        const auto smooth = corners(positions, triangles, m);
+        const auto creased = corners(positions, triangles, m, 30.0);
+        const auto sharp = corners(positions, triangles, m, 1.0);
+        const auto flat = corners(positions, triangles, NormalMethod::Flat);
+        for (std::size_t c = 0; c < triangles.size(); ++c) {
+            COMPARE_VEC(creased[c], smooth[c]);
+            COMPARE_VEC(sharp[c], flat[c]);
+            if (c % 3 == 0)
+                COMPARE_VEC(smooth[c], glm::vec3(0, 1, 0));
+        }
     }
 }
 
