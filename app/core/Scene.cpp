@@ -8,7 +8,9 @@ QString Scene::resolveMeshPath(const QString &mesh) const
 {
     if (mesh.startsWith(QLatin1String("builtin:")) || QDir::isAbsolutePath(mesh) || baseDir.isEmpty())
         return mesh;
-    return QDir(baseDir).filePath(mesh);
+    // cleanPath folds "scenes/../meshes": Qt resource paths (":/assets/...")
+    // do not resolve ".." themselves.
+    return QDir::cleanPath(QDir(baseDir).filePath(mesh));
 }
 
 bool Scene::operator==(const Scene &other) const
