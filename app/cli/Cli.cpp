@@ -24,7 +24,8 @@ constexpr Subcommand kSubcommands[] = {
 void printHelp()
 {
     QString text = QStringLiteral(
-        "usage: phonglab [SCENE.json]          start the editor (default scene when none given)\n"
+        "usage: phonglab [SCENE.json | MESH]   start the editor on a scene or a mesh file\n"
+        "                                      (.obj .ply .off .stl .om; the default scene when none given)\n"
         "       phonglab <command> [options]   run a command without a window\n\n"
         "commands:\n");
     for (const Subcommand &c : kSubcommands)
