@@ -3,6 +3,7 @@
 #include "CliCommon.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
+#include "core/ShadingMethod.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ShaderSource.h"
 
@@ -27,6 +28,7 @@ struct RenderArgs {
     QSize size{800, 600};
     QString vertexPath;
     QString fragmentPath;
+    std::optional<ShadingMethod> shading; // overrides the scene's
 };
 
 std::optional<QSize> parseSize(const QString &text)
@@ -56,25 +58,32 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
                                     QStringLiteral("Vertex shader to use instead of the scene's."), QStringLiteral("file"));
     const QCommandLineOption fragment(QStringLiteral("fragment"),
                                       QStringLiteral("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
-    parser.addOptions({output, size, vertex, fragment});
+    const QCommandLineOption shading(QStringLiteral("shading"),
+                                     QStringLiteral("Shading method instead of the scene's."), QStringLiteral("name"));
+    parser.addOptions({output, size, vertex, fragment, shading});
 
+    const QString knownMethods = shadingNames().join(QStringLiteral(", "));
+    const QString synopsis = QStringLiteral(
+        "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE]");
     auto usage = [&](const QString &message) {
         printError(message);
-        printErrLine(QStringLiteral("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--vertex FILE] [--fragment FILE]"));
+        printErrLine(synopsis);
         return kExitUsage;
     };
     if (!parser.parse(arguments))
         return usage(parser.errorText());
     if (parser.isSet(help)) {
-        printLine(QStringLiteral(
-            "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--vertex FILE] [--fragment FILE]\n\n"
+        printLine(synopsis + QStringLiteral(
+            "\n\n"
             "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
             "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
             "  --size WxH          image size in pixels, default 800x600\n"
-            "  --vertex FILE       vertex shader instead of the scene's shading method\n"
-            "  --fragment FILE     fragment shader instead of the scene's shading method\n\n"
+            "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
+            "                      %1\n"
+            "  --vertex FILE       vertex shader instead of the shading method's\n"
+            "  --fragment FILE     fragment shader instead of the shading method's\n\n"
             "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
-            "Compile errors are printed as FILE:LINE:COL: error: MESSAGE."));
+            "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.").arg(knownMethods));
         return kExitOk;
     }
     const QStringList positional = parser.positionalArguments();
@@ -93,6 +102,12 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
             return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
                              .arg(kMaxImageSide).arg(parser.value(size)));
         args.size = *parsed;
+    }
+    if (parser.isSet(shading)) {
+        args.shading = shadingFromName(parser.value(shading));
+        if (!args.shading)
+            return usage(QStringLiteral("--shading: unknown method '%1' (known: %2)")
+                             .arg(parser.value(shading), knownMethods));
     }
     args.vertexPath = parser.value(vertex);
     args.fragmentPath = parser.value(fragment);
@@ -156,7 +171,8 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(error);
         return kExitFailure;
     }
-    const CompileResult program = buildProgram(renderer, args, loaded.scene->shading, &error);
+    const ShadingMethod shading = args.shading.value_or(loaded.scene->shading);
+    const CompileResult program = buildProgram(renderer, args, shading, &error);
     if (!error.isEmpty()) {
         printError(error);
         return kExitFailure;

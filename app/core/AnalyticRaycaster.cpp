@@ -196,7 +196,8 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
     return best;
 }
 
-glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights)
+glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights,
+                 ReferenceShading shading)
 {
     const PreparedObject &object = *hit.object;
     const glm::dvec3 p = hit.objectPoint;
@@ -208,6 +209,12 @@ glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpace
                                                                        : boxNormal(p);
     const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(p, 1.0));
     const glm::dvec3 normal = object.normalMatrix * objectNormal;
+    switch (shading) {
+    case ReferenceShading::Phong: break;
+    case ReferenceShading::BlinnPhong:
+        return blinnPhongIntensity(position, normal, *object.material, scene.ambient, lights);
+    case ReferenceShading::Normals: return normalViewColor(normal);
+    }
     return phongIntensity(position, normal, *object.material, scene.ambient, lights);
 }
 
@@ -335,8 +342,26 @@ glm::dvec3 torusNormal(const glm::dvec3 &p, double majorRadius)
     return glm::normalize(p - ringPoint);
 }
 
+ReferenceShading idealShadingFor(ShadingMethod method)
+{
+    switch (method) {
+    case ShadingMethod::BlinnPhong: return ReferenceShading::BlinnPhong;
+    case ShadingMethod::Normals: return ReferenceShading::Normals;
+    case ShadingMethod::Phong:
+    case ShadingMethod::Gouraud:
+    case ShadingMethod::Flat: break;
+    }
+    return ReferenceShading::Phong;
+}
+
 std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error,
                                            const QHash<QString, QString> &standIns)
+{
+    return raycastScene(scene, width, height, ReferenceShading::Phong, error, standIns);
+}
+
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, ReferenceShading shading,
+                                           QString *error, const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0) {
         if (error)
@@ -364,7 +389,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
             const std::size_t i = image.index(x, y);
             image.coverage[i] = 1;
             image.depth[i] = hit.t;
-            image.color[i] = shade(hit, scene, lights);
+            image.color[i] = shade(hit, scene, lights, shading);
         }
     }
     return image;

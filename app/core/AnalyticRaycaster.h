@@ -27,6 +27,24 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
                                            QString *error = nullptr,
                                            const QHash<QString, QString> &standIns = {});
 
+// What the reference computes at each hit point. Gouraud and flat shading
+// have no per-pixel analytic counterpart: their result depends on the mesh's
+// vertices and faces, which the analytic surface does not have.
+enum class ReferenceShading {
+    Phong,      // phongIntensity()
+    BlinnPhong, // blinnPhongIntensity()
+    Normals,    // normalViewColor(): the normals view
+};
+
+// The per-pixel shading a method computes, or for Gouraud and flat the one
+// they approximate (Phong), so that their error can be measured against it.
+ReferenceShading idealShadingFor(ShadingMethod method);
+
+// As above, shaded with `shading` instead of Phong.
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, ReferenceShading shading,
+                                           QString *error = nullptr,
+                                           const QHash<QString, QString> &standIns = {});
+
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
 // change of coordinates, which is what lets camera-space depth be compared
 // between objects intersected in their own object space).

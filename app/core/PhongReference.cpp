@@ -10,9 +10,14 @@ double attenuationFactor(const glm::dvec3 &c, double d)
     return std::min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);
 }
 
-glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
-                          const Material &material, const glm::dvec3 &ambient,
-                          std::span<const CameraSpaceLight> lights)
+namespace {
+
+// The specular model is the only difference between Phong and Blinn-Phong;
+// the rest of the equation is shared so the two cannot drift apart.
+enum class Specular { ReflectedRay, HalfVector };
+
+glm::dvec3 illumination(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                        const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model)
 {
     const glm::dvec3 N = glm::normalize(normal);
     const glm::dvec3 V = glm::normalize(-position); // the eye is at the origin
@@ -25,13 +30,46 @@ glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
         const double NdotL = glm::dot(N, L);
         if (NdotL <= 0.0)
             continue; // light behind the surface: no diffuse, no specular
-        const glm::dvec3 R = glm::reflect(-L, N);
-        const double RdotV = std::max(0.0, glm::dot(R, V));
+        double specularFactor = 0.0;
+        if (model == Specular::ReflectedRay) {
+            const glm::dvec3 R = glm::reflect(-L, N);
+            specularFactor = std::pow(std::max(0.0, glm::dot(R, V)), material.shininess);
+        } else {
+            // L + V vanishes only for a light exactly behind the point as
+            // seen from the eye; there is no half vector then, and no highlight.
+            const glm::dvec3 sum = L + V;
+            const double length = glm::length(sum);
+            if (length > 0.0) {
+                const double NdotH = std::max(0.0, glm::dot(N, sum / length));
+                specularFactor = std::pow(NdotH, kBlinnExponentFactor * material.shininess);
+            }
+        }
         const glm::dvec3 diffuse = light.diffuse * material.kd * NdotL;
-        const glm::dvec3 specular = light.specular * material.ks * std::pow(RdotV, material.shininess);
+        const glm::dvec3 specular = light.specular * material.ks * specularFactor;
         I += attenuationFactor(light.attenuation, d) * (diffuse + specular);
     }
     return I;
+}
+
+} // namespace
+
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                          const Material &material, const glm::dvec3 &ambient,
+                          std::span<const CameraSpaceLight> lights)
+{
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay);
+}
+
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                               const Material &material, const glm::dvec3 &ambient,
+                               std::span<const CameraSpaceLight> lights)
+{
+    return illumination(position, normal, material, ambient, lights, Specular::HalfVector);
+}
+
+glm::dvec3 normalViewColor(const glm::dvec3 &normal)
+{
+    return 0.5 * glm::normalize(normal) + 0.5;
 }
 
 CameraSpaceLight toCameraSpace(const PointLight &light, const glm::dmat4 &view)

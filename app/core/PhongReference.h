@@ -35,6 +35,24 @@ glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
                           const Material &material, const glm::dvec3 &ambient,
                           std::span<const CameraSpaceLight> lights);
 
+// Blinn-Phong: phongIntensity() with the specular term built on the half
+// vector H = normalize(L + V) instead of the reflected ray R:
+//
+//   Is·ks·max(0, N·H)^n'   with the matched exponent n' = kBlinnExponentFactor·n
+//
+// The angle between N and H is about half the angle between R and V, so the
+// same exponent would make the highlight about twice as wide; 4n makes the
+// two highlights match near their peak. Same N·L ≤ 0 rule as Phong.
+// shaders/blinn-phong.frag computes the same.
+inline constexpr double kBlinnExponentFactor = 4.0;
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                               const Material &material, const glm::dvec3 &ambient,
+                               std::span<const CameraSpaceLight> lights);
+
+// The normals view (shaders/normals.frag): the unit camera-space normal as a
+// colour, 0.5·N + 0.5 per channel. No lighting.
+glm::dvec3 normalViewColor(const glm::dvec3 &normal);
+
 // World-space lights moved into camera space with the view matrix alone.
 CameraSpaceLight toCameraSpace(const PointLight &light, const glm::dmat4 &view);
 

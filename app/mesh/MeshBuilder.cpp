@@ -24,15 +24,17 @@ NormalBits bitsOf(const glm::vec3 &n)
 
 bool sameBits(const glm::vec3 &a, const glm::vec3 &b) { return bitsOf(a) == bitsOf(b); }
 
-// The file's normal at unit length, computed in double so a normal written
-// at unit length comes back as written; zero when it has no direction.
+// The file's normal at unit length. One already at unit length, to about
+// the precision files write (six decimals), is kept bit for bit: dividing
+// by a length of 1 ± ε would still nudge the last bits. Zero when it has
+// no direction.
 glm::vec3 unitFileNormal(const glm::vec3 &n)
 {
     const glm::dvec3 d(n);
     const double length = glm::length(d);
     if (!(length > 0.0) || !std::isfinite(length))
         return glm::vec3(0.0f);
-    return glm::vec3(d / length);
+    return std::abs(length - 1.0) <= 1e-5 ? n : glm::vec3(d / length);
 }
 
 // The triangles as the rest of the build reads them: per triangle corner,
@@ -121,6 +123,8 @@ std::size_t weldPerPosition(std::span<const glm::vec3> positions, std::span<cons
     std::vector<std::uint32_t> vertexOf(positions.size(), 0);
     for (std::uint32_t p : triPositions)
         vertexOf[p] = 1;
+    out.positions.reserve(positions.size());
+    out.normals.reserve(positions.size());
     for (std::size_t p = 0; p < positions.size(); ++p) {
         if (vertexOf[p] != 0) {
             vertexOf[p] = std::uint32_t(out.positions.size());

@@ -26,8 +26,9 @@ struct BuildStats {
 // chooses normals as `options` says, and welds, giving one GPU vertex per
 // distinct (position, normal) pair. Normals come from the file only for
 // NormalMethod::Auto and only when every corner has one; they are used as
-// written, normalised (zero or non-finite ones are replaced by computed
-// angle-weighted normals). Every compromise is appended to `warnings`.
+// written, only normalised where not unit length (zero or non-finite ones
+// are replaced by computed angle-weighted normals). Every compromise is
+// appended to `warnings`.
 // On failure (no faces; more triangle corners than 32-bit indices reach)
 // returns an empty MeshData and sets `error`.
 MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats = nullptr,

@@ -1,6 +1,7 @@
 #include "NormalComputation.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -34,12 +35,20 @@ bool isZero(const glm::vec3 &v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.
 float sizeOf(const glm::vec3 &v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 
 // A weighted normal sum in xyz and, in w, the total size of what was added
-// (L1 norms: cheap, and within √3 of the lengths), so that a sum that
-// cancelled can be told from a merely small one.
+// (the lengths, or for raw cross products their L1 norms: cheaper, and
+// within √3), so that a sum that cancelled can be told from a small one.
 using Accumulator = glm::vec4;
 
-glm::vec3 resolve(const Accumulator &sum)
+constexpr glm::vec3 kLastResort(0.0f, 0.0f, 1.0f);
+
+// The unit normal a sum stands for. A sum of nothing (a position only
+// degenerate triangles touch, which are invisible, or none) gets the last
+// resort, +Z. A sum that cancelled gives zero: its corners need their
+// triangles' normals instead.
+inline glm::vec3 resolve(const Accumulator &sum)
 {
+    if (sum.w == 0.0f)
+        return kLastResort;
     const glm::vec3 v(sum);
     const float length = std::sqrt(glm::dot(v, v));
     return length > kCancelled * sum.w && length > kTiny && length <= kHuge ? v / length : glm::vec3(0.0f);
@@ -48,10 +57,11 @@ glm::vec3 resolve(const Accumulator &sum)
 // The angle atan2(y, x) for y ≥ 0, as between two edges with cross
 // product length y and dot product x: accurate for tiny and near-straight
 // angles, where acos of a normalised dot is not. atan on [0, 1] is a
-// degree-15 odd polynomial (a Lawson-weighted least-squares fit, within
-// 6e-8 rad), evaluated by Estrin's scheme for a short dependency chain; the
+// degree-15 odd polynomial (a Lawson-weighted least-squares fit within
+// 6e-8), evaluated by Estrin's scheme for a short dependency chain; the
 // octant folding uses selects, not branches, so loops of it vectorise.
-// The library's atan2f took most of the angle-weighted loop's time.
+// Within 4e-7 rad of the exact angle; the library's atan2f, in its place,
+// took most of the angle-weighted loop's time.
 inline float angleBetween(float y, float x)
 {
     const float ax = std::abs(x);
@@ -65,23 +75,15 @@ inline float angleBetween(float y, float x)
     return obtuse * kPi + (1.0f - 2.0f * obtuse) * acute;
 }
 
-// The normal for a corner whose own sum had no direction: its triangle's
-// normal, or for a degenerate triangle one that another of its corners
-// already has (`known(corner)` returns it, or null), or +Z.
-template <typename Known>
+// The normal for a corner whose own sum cancelled: its triangle's.
 glm::vec3 fallbackNormal(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                         std::size_t corner, Known known)
+                         std::size_t corner)
 {
     const std::size_t base = corner - corner % 3;
     const glm::vec3 &a = positions[triangles[base]];
     const glm::vec3 face = normalizedOrZero(glm::cross(positions[triangles[base + 1]] - a,
                                                        positions[triangles[base + 2]] - a));
-    if (!isZero(face))
-        return face;
-    for (std::size_t other = base; other < base + 3; ++other)
-        if (const glm::vec3 *n = other != corner ? known(other) : nullptr)
-            return *n;
-    return glm::vec3(0.0f, 0.0f, 1.0f);
+    return isZero(face) ? kLastResort : face;
 }
 
 CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles)
@@ -94,30 +96,55 @@ CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const 
         const glm::vec3 &a = positions[triangles[3 * t]];
         const glm::vec3 n = normalizedOrZero(glm::cross(positions[triangles[3 * t + 1]] - a,
                                                         positions[triangles[3 * t + 2]] - a));
-        // A degenerate triangle's corners have no neighbour to borrow from.
-        result.normals[t] = isZero(n) ? glm::vec3(0.0f, 0.0f, 1.0f) : n;
+        // A degenerate triangle is invisible; any normal will do.
+        result.normals[t] = isZero(n) ? kLastResort : n;
     }
     return result;
 }
 
-// The hot path: scatter weighted triangle normals onto their vertices,
-// then normalise once per vertex. Neighbouring triangles share vertices, so
-// each scatter waits for the one before it through memory; any arithmetic
-// between loading a triangle and scattering it (square roots, divisions,
-// angles) would sit on that chain. So the work goes in blocks: gather the
-// block's cross products, weigh them in a loop without indirection (which
-// the compiler vectorises), then scatter. The method is a template
-// argument so each variant compiles to its own loops.
+// The hot path: one pass scattering weighted triangle normals onto their
+// vertices, then one normalising each vertex's sum. The method is a
+// template argument so each variant compiles to its own tight loop.
 template <NormalMethod Method>
 void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count, Accumulator *sums)
+{
+    for (std::size_t t = 0; t < count; ++t, triangles += 3) {
+        const std::uint32_t i0 = triangles[0], i1 = triangles[1], i2 = triangles[2];
+        const glm::vec3 a = positions[i0];
+        const glm::vec3 n = glm::cross(positions[i1] - a, positions[i2] - a);
+        Accumulator add;
+        if constexpr (Method == NormalMethod::Average) {
+            // Unit length (selects, not branches: degenerate triangles come
+            // unpredictably, and add nothing).
+            const float length = std::sqrt(glm::dot(n, n));
+            const float valid = length > 0.0f ? 1.0f : 0.0f;
+            add = Accumulator(n * (valid / std::max(length, kTiny)), valid);
+        } else {
+            // |n| is twice the area: the raw cross product is the weighted
+            // normal.
+            add = Accumulator(n, sizeOf(n));
+        }
+        sums[i0] += add;
+        sums[i1] += add;
+        sums[i2] += add;
+    }
+}
+
+// Angle weighting needs two angles per triangle (the third is π minus
+// those). Computed inline, their arithmetic was several times the rest of
+// the loop. So triangles go in blocks: gather a block's cross and dot
+// products, turn them into weights in a loop without indirection (which
+// the compiler vectorises), then scatter.
+void accumulateAngleWeighted(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count,
+                             Accumulator *sums)
 {
     constexpr std::size_t kBlock = 256;
     glm::vec3 normal[kBlock];
     // Zeroed once: a short last block leaves stale but finite values behind.
     alignas(16) float doubleArea[kBlock] = {}, dotA[kBlock] = {}, dotB[kBlock] = {};
-    // Per corner: the factor for the cross product, and what the
-    // contribution adds to the total (its length).
-    alignas(16) float scale[3][kBlock], size[3][kBlock];
+    // Per corner: the angle, and the factor that turns the cross product
+    // into the angle times the unit normal.
+    alignas(16) float angle[3][kBlock], scale[3][kBlock];
     for (std::size_t first = 0; first < count; first += kBlock) {
         const std::size_t blockSize = std::min(kBlock, count - first);
         const std::uint32_t *block = triangles + 3 * first;
@@ -125,92 +152,41 @@ void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std:
             const glm::vec3 a = positions[block[3 * i]];
             const glm::vec3 ab = positions[block[3 * i + 1]] - a, ac = positions[block[3 * i + 2]] - a;
             normal[i] = glm::cross(ab, ac);
-            if constexpr (Method == NormalMethod::AreaWeighted) {
-                // |n| is twice the area: the raw cross product is the
-                // weighted normal. Its L1 norm (within √3 of its length)
-                // stands in for the size, saving a square root.
-                const glm::vec3 &n = normal[i];
-                size[0][i] = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
-            } else {
-                doubleArea[i] = std::sqrt(glm::dot(normal[i], normal[i]));
-            }
-            if constexpr (Method == NormalMethod::AngleWeighted) {
-                dotA[i] = glm::dot(ab, ac);
-                dotB[i] = glm::dot(ac - ab, -ab);
-            }
-        }
-        if constexpr (Method == NormalMethod::AreaWeighted) {
-            for (std::size_t i = 0; i < blockSize; ++i) {
-                const Accumulator add(normal[i], size[0][i]);
-                sums[block[3 * i]] += add;
-                sums[block[3 * i + 1]] += add;
-                sums[block[3 * i + 2]] += add;
-            }
-            continue;
+            doubleArea[i] = std::sqrt(glm::dot(normal[i], normal[i]));
+            dotA[i] = glm::dot(ab, ac);
+            dotB[i] = glm::dot(ac - ab, -ab);
         }
         for (std::size_t i = 0; i < kBlock; ++i) {
             // Selects, not a guarded division: a branch would stop the
             // vectoriser (a division may trap, so it cannot be if-converted).
-            // A degenerate triangle gets factor and size 0.
+            // A degenerate triangle gets angles and factors 0.
             const float valid = doubleArea[i] > 0.0f ? 1.0f : 0.0f;
             const float inverse = valid / std::max(doubleArea[i], kTiny);
-            if constexpr (Method == NormalMethod::Average) {
-                scale[0][i] = scale[1][i] = scale[2][i] = inverse;
-                size[0][i] = size[1][i] = size[2][i] = valid;
-            } else {
-                const float atA = angleBetween(doubleArea[i], dotA[i]);
-                const float atB = angleBetween(doubleArea[i], dotB[i]);
-                const float atC = valid * std::max(0.0f, kPi - atA - atB);
-                scale[0][i] = atA * inverse;
-                scale[1][i] = atB * inverse;
-                scale[2][i] = atC * inverse;
-                size[0][i] = atA;
-                size[1][i] = atB;
-                size[2][i] = atC;
-            }
+            angle[0][i] = angleBetween(doubleArea[i], dotA[i]);
+            angle[1][i] = angleBetween(doubleArea[i], dotB[i]);
+            angle[2][i] = valid * std::max(0.0f, kPi - angle[0][i] - angle[1][i]);
+            scale[0][i] = angle[0][i] * inverse;
+            scale[1][i] = angle[1][i] * inverse;
+            scale[2][i] = angle[2][i] * inverse;
         }
+        // The total grows by the angle: the length of what is added.
         for (std::size_t i = 0; i < blockSize; ++i)
             for (int k = 0; k < 3; ++k)
-                sums[block[3 * i + k]] += Accumulator(scale[k][i] * normal[i], size[k][i]);
+                sums[block[3 * i + k]] += Accumulator(scale[k][i] * normal[i], angle[k][i]);
     }
 }
 
-// Positions whose sum had no direction. Their corners take fallback
-// normals; where all of a position's corners agree on one (a degenerate
-// triangle's corner borrowing its neighbour's), the position simply gets
-// it. Only disagreement (faces back to back) costs per-corner indices.
-void repairSmooth(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                  CornerNormals &result)
+// Positions whose sum cancelled (faces back to back): each of their
+// corners takes its own triangle's normal, which needs per-corner indices.
+void splitCancelled(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
+                    CornerNormals &result)
 {
-    enum : std::uint8_t { Own, Empty, Borrowed, Mixed };
-    std::vector<std::uint8_t> state(result.normals.size());
-    for (std::size_t v = 0; v < state.size(); ++v)
-        state[v] = isZero(result.normals[v]) ? Empty : Own;
-    const auto known = [&](std::size_t corner) {
-        return state[triangles[corner]] == Own ? &result.normals[triangles[corner]] : nullptr;
-    };
-    bool mixed = false;
-    for (std::size_t c = 0; c < triangles.size(); ++c) {
-        const std::uint32_t v = triangles[c];
-        if (state[v] == Own || state[v] == Mixed)
-            continue;
-        const glm::vec3 n = fallbackNormal(positions, triangles, c, known);
-        if (state[v] == Empty) {
-            result.normals[v] = n;
-            state[v] = Borrowed;
-        } else if (n != result.normals[v]) {
-            state[v] = Mixed;
-            mixed = true;
-        }
-    }
-    if (!mixed)
-        return;
     result.indexing = CornerNormals::Indexing::PerCorner;
     result.cornerNormal.assign(triangles.begin(), triangles.end());
     for (std::size_t c = 0; c < triangles.size(); ++c) {
-        if (state[triangles[c]] == Mixed) {
+        if (isZero(result.normals[triangles[c]])) {
             result.cornerNormal[c] = std::uint32_t(result.normals.size());
-            result.normals.push_back(fallbackNormal(positions, triangles, c, known));
+            result.normals.push_back(fallbackNormal(positions, triangles, c));
         }
     }
 }
@@ -225,25 +201,25 @@ CornerNormals smoothNormals(std::span<const glm::vec3> positions, std::span<cons
     else if (method == NormalMethod::AreaWeighted)
         accumulate<NormalMethod::AreaWeighted>(positions.data(), triangles.data(), count, sums.data());
     else
-        accumulate<NormalMethod::AngleWeighted>(positions.data(), triangles.data(), count, sums.data());
+        accumulateAngleWeighted(positions.data(), triangles.data(), count, sums.data());
 
     CornerNormals result;
     result.indexing = CornerNormals::Indexing::PerPosition;
-    result.normals.resize(positions.size());
-    std::size_t zeros = 0; // includes positions no triangle uses
-    for (std::size_t v = 0; v < sums.size(); ++v) {
-        result.normals[v] = resolve(sums[v]);
-        zeros += isZero(result.normals[v]);
+    result.normals.reserve(positions.size()); // filled once, not zeroed first
+    bool cancelled = false;
+    for (const Accumulator &sum : sums) {
+        result.normals.push_back(resolve(sum));
+        cancelled |= result.normals.back() == glm::vec3(0.0f);
     }
-    if (zeros != 0)
-        repairSmooth(positions, triangles, result);
+    if (cancelled)
+        splitCancelled(positions, triangles, result);
     return result;
 }
 
 // Smoothing groups split at sharp edges. Each vertex's corners come from a
-// CSR adjacency; two corners whose triangles share an edge at the vertex
-// and meet at no more than the crease angle are joined with a tiny
-// union-find; each group gets one normal.
+// CSR adjacency; corners whose triangles share an edge at the vertex and
+// meet at no more than the crease angle are connected, and each connected
+// group of corners gets one normal.
 class CreasedNormals {
 public:
     CreasedNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
@@ -256,27 +232,29 @@ public:
     CornerNormals run();
 
 private:
-    // Above this many corners at a vertex, edges are matched by sorting
-    // rather than by comparing every pair.
-    static constexpr std::uint32_t kPairwiseLimit = 24;
+    // Up to this many corners at a vertex, edges are matched by comparing
+    // every pair and groups found over 32-bit sets; above (poles, cone
+    // tips), by sorting and union-find.
+    static constexpr std::uint32_t kSmallFan = 32;
+
+    struct Corner {
+        std::uint32_t next, prev; // the triangle's other two positions
+        std::uint32_t group;      // smoothing group, numbered from 0 per vertex
+        bool degenerate;
+        glm::vec3 unit;           // the triangle's normal
+    };
 
     void computeFaces();
     void buildAdjacency();
     void solveVertex(const std::uint32_t *corners, std::uint32_t count, CornerNormals &result);
-    void joinIfSmooth(std::uint32_t i, std::uint32_t j)
+    std::uint32_t groupSmallFan(std::uint32_t count);
+    std::uint32_t groupLargeFan(std::uint32_t count);
+    bool smooth(const Corner &a, const Corner &b) const
     {
         // A degenerate triangle has no direction to disagree with.
-        const Corner &a = m_corners[i], &b = m_corners[j];
-        if (a.degenerate || b.degenerate || glm::dot(a.unit, b.unit) >= m_cosCrease)
-            m_corners[find(i)].parent = find(j);
+        return a.degenerate || b.degenerate || glm::dot(a.unit, b.unit) >= m_cosCrease;
     }
     float weight(std::uint32_t corner) const;
-    std::uint32_t find(std::uint32_t j)
-    {
-        while (m_corners[j].parent != j)
-            j = m_corners[j].parent = m_corners[m_corners[j].parent].parent;
-        return j;
-    }
 
     std::span<const glm::vec3> m_positions;
     std::span<const std::uint32_t> m_triangles;
@@ -289,17 +267,11 @@ private:
     std::vector<std::uint32_t> m_vertexCorners; // m_vertexCorners[m_vertexStart[v] ..]
 
     // Per-vertex scratch, reused: the vertex's corners, gathered once.
-    struct Corner {
-        std::uint32_t next, prev; // the triangle's other two positions
-        std::uint32_t parent;     // union-find
-        bool degenerate;
-        glm::vec3 unit;           // the triangle's normal
-    };
     std::vector<Corner> m_corners;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> m_edges; // (other position, local corner)
+    std::vector<std::uint32_t> m_parent;
     std::vector<Accumulator> m_groupSum;
     std::vector<std::uint32_t> m_groupNormal;
-    std::vector<std::uint32_t> m_unresolved; // corners whose group cancelled
 };
 
 void CreasedNormals::computeFaces()
@@ -311,7 +283,7 @@ void CreasedNormals::computeFaces()
         const glm::vec3 &a = m_positions[m_triangles[3 * t]];
         const glm::vec3 n = glm::cross(m_positions[m_triangles[3 * t + 1]] - a, m_positions[m_triangles[3 * t + 2]] - a);
         m_faceUnit[t] = normalizedOrZero(n);
-        m_faceDoubleArea[t] = isZero(m_faceUnit[t]) ? 0.0f : std::sqrt(glm::dot(n, n));
+        m_faceDoubleArea[t] = isZero(m_faceUnit[t]) ? 0.0f : glm::dot(n, m_faceUnit[t]);
     }
 }
 
@@ -341,63 +313,108 @@ float CreasedNormals::weight(std::uint32_t corner) const
     return angleBetween(m_faceDoubleArea[t], glm::dot(q - p, r - p));
 }
 
+std::uint32_t CreasedNormals::groupSmallFan(std::uint32_t count)
+{
+    // Bit i of adjacent[j]: corners i and j meet across a smooth edge.
+    std::uint32_t adjacent[kSmallFan] = {};
+    for (std::uint32_t j = 1; j < count; ++j) {
+        const Corner &b = m_corners[j];
+        for (std::uint32_t i = 0; i < j; ++i) {
+            const Corner &a = m_corners[i];
+            if ((a.next == b.prev || a.prev == b.next || a.next == b.next || a.prev == b.prev) && smooth(a, b)) {
+                adjacent[i] |= 1u << j;
+                adjacent[j] |= 1u << i;
+            }
+        }
+    }
+    // Flood fill over the bit sets, one group at a time.
+    std::uint32_t remaining = count == 32 ? ~0u : (1u << count) - 1;
+    std::uint32_t groups = 0;
+    while (remaining != 0) {
+        std::uint32_t group = remaining & (~remaining + 1), frontier = group;
+        while (frontier != 0) {
+            const std::uint32_t fresh = adjacent[std::countr_zero(frontier)] & ~group;
+            frontier = (frontier & (frontier - 1)) | fresh;
+            group |= fresh;
+        }
+        remaining &= ~group;
+        for (; group != 0; group &= group - 1)
+            m_corners[std::countr_zero(group)].group = groups;
+        ++groups;
+    }
+    return groups;
+}
+
+std::uint32_t CreasedNormals::groupLargeFan(std::uint32_t count)
+{
+    // Union-find over edges matched by sorting (endpoint, corner) pairs;
+    // non-manifold edges give runs longer than two, all pairs join.
+    std::vector<std::uint32_t> &parent = m_parent;
+    parent.resize(count);
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto find = [&](std::uint32_t j) {
+        while (parent[j] != j)
+            j = parent[j] = parent[parent[j]];
+        return j;
+    };
+    m_edges.clear();
+    for (std::uint32_t j = 0; j < count; ++j) {
+        m_edges.emplace_back(m_corners[j].next, j);
+        m_edges.emplace_back(m_corners[j].prev, j);
+    }
+    std::sort(m_edges.begin(), m_edges.end());
+    for (std::size_t s = 0, e = 0; s < m_edges.size(); s = e) {
+        while (e < m_edges.size() && m_edges[e].first == m_edges[s].first)
+            ++e;
+        for (std::size_t x = s; x < e; ++x) {
+            for (std::size_t y = x + 1; y < e; ++y) {
+                const std::uint32_t i = m_edges[x].second, j = m_edges[y].second;
+                if (i != j && smooth(m_corners[i], m_corners[j]))
+                    parent[find(i)] = find(j);
+            }
+        }
+    }
+    // Number the roots 0, 1, ... in order of first appearance.
+    std::uint32_t groups = 0;
+    for (std::uint32_t j = 0; j < count; ++j)
+        m_corners[j].group = kUnassigned;
+    for (std::uint32_t j = 0; j < count; ++j) {
+        Corner &root = m_corners[find(j)];
+        if (root.group == kUnassigned)
+            root.group = groups++;
+        m_corners[j].group = root.group;
+    }
+    return groups;
+}
+
 void CreasedNormals::solveVertex(const std::uint32_t *corners, std::uint32_t count, CornerNormals &result)
 {
     m_corners.resize(count);
     for (std::uint32_t j = 0; j < count; ++j) {
         const std::uint32_t c = corners[j], k = c % 3, base = c - k;
         const glm::vec3 &unit = m_faceUnit[c / 3];
-        m_corners[j] = {m_triangles[base + (k == 2 ? 0 : k + 1)], m_triangles[base + (k == 0 ? 2 : k - 1)], j,
+        m_corners[j] = {m_triangles[base + (k == 2 ? 0 : k + 1)], m_triangles[base + (k == 0 ? 2 : k - 1)], 0,
                         isZero(unit), unit};
     }
-
     // Two corners meet across an edge when their triangles have the same
     // other endpoint there (matched either way round, so a flipped
     // neighbour still counts as adjacent; its normal keeps it apart).
-    if (count <= kPairwiseLimit) {
-        for (std::uint32_t j = 1; j < count; ++j) {
-            const Corner &b = m_corners[j];
-            for (std::uint32_t i = 0; i < j; ++i) {
-                const Corner &a = m_corners[i];
-                if (a.next == b.prev || a.prev == b.next || a.next == b.next || a.prev == b.prev)
-                    joinIfSmooth(i, j);
-            }
-        }
-    } else {
-        // Big fans (a pole, a cone's tip): sort (endpoint, corner) pairs
-        // instead; non-manifold edges give longer runs, all pairs join.
-        m_edges.clear();
-        for (std::uint32_t j = 0; j < count; ++j) {
-            m_edges.emplace_back(m_corners[j].next, j);
-            m_edges.emplace_back(m_corners[j].prev, j);
-        }
-        std::sort(m_edges.begin(), m_edges.end());
-        for (std::size_t s = 0, e = 0; s < m_edges.size(); s = e) {
-            while (e < m_edges.size() && m_edges[e].first == m_edges[s].first)
-                ++e;
-            for (std::size_t x = s; x < e; ++x)
-                for (std::size_t y = x + 1; y < e; ++y)
-                    if (m_edges[x].second != m_edges[y].second)
-                        joinIfSmooth(m_edges[x].second, m_edges[y].second);
-        }
-    }
+    const std::uint32_t groups = count <= kSmallFan ? groupSmallFan(count) : groupLargeFan(count);
 
-    m_groupSum.assign(count, Accumulator(0.0f));
+    m_groupSum.assign(groups, Accumulator(0.0f));
     for (std::uint32_t j = 0; j < count; ++j) {
         const glm::vec3 &unit = m_corners[j].unit;
-        m_groupSum[find(j)] += weight(corners[j]) * Accumulator(unit, sizeOf(unit));
+        m_groupSum[m_corners[j].group] += weight(corners[j]) * Accumulator(unit, sizeOf(unit));
     }
-    m_groupNormal.assign(count, kUnassigned);
+    m_groupNormal.assign(groups, kUnassigned);
     for (std::uint32_t j = 0; j < count; ++j) {
-        const std::uint32_t root = find(j);
-        std::uint32_t &index = m_groupNormal[root];
+        std::uint32_t &index = m_groupNormal[m_corners[j].group];
         if (index == kUnassigned) {
-            const glm::vec3 n = resolve(m_groupSum[root]);
+            const glm::vec3 n = resolve(m_groupSum[m_corners[j].group]);
             if (isZero(n)) {
-                // The group cancels out: each corner falls back on its own,
-                // once all the others have their normals to borrow.
-                result.cornerNormal[corners[j]] = kUnassigned;
-                m_unresolved.push_back(corners[j]);
+                // The group cancels out: each corner takes its triangle's.
+                result.cornerNormal[corners[j]] = std::uint32_t(result.normals.size());
+                result.normals.push_back(fallbackNormal(m_positions, m_triangles, corners[j]));
                 continue;
             }
             index = std::uint32_t(result.normals.size());
@@ -418,15 +435,6 @@ CornerNormals CreasedNormals::run()
         const std::uint32_t first = m_vertexStart[v], count = m_vertexStart[v + 1] - first;
         if (count != 0)
             solveVertex(m_vertexCorners.data() + first, count, result);
-    }
-    const auto known = [&](std::size_t corner) {
-        const std::uint32_t index = result.cornerNormal[corner];
-        return index != kUnassigned ? &result.normals[index] : nullptr;
-    };
-    for (std::uint32_t c : m_unresolved) {
-        const glm::vec3 n = fallbackNormal(m_positions, m_triangles, c, known);
-        result.cornerNormal[c] = std::uint32_t(result.normals.size());
-        result.normals.push_back(n);
     }
     return result;
 }

@@ -53,10 +53,9 @@ struct CornerNormals {
 // around its vertex across edges whose two triangles' normals differ by at
 // most that angle: sharp edges split the vertex into smoothing groups.
 // A corner whose sum cancels to nothing (faces back to back) gets its
-// triangle's normal. A degenerate triangle, which has none and is
-// invisible anyway, borrows a normal from another of its corners, so its
-// corners weld with their neighbours; +Z is the last resort. Every normal
-// is finite and unit length.
+// triangle's normal. Degenerate triangles add nothing; a corner with
+// nothing else to go on (it sees only degenerate, hence invisible,
+// triangles) gets +Z. Every normal is finite and unit length.
 // Triangles × 3 must fit in 32 bits (MeshBuilder checks).
 CornerNormals computeNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
                              NormalMethod method, std::optional<double> creaseAngleDeg = std::nullopt);

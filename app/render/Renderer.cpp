@@ -125,6 +125,13 @@ CompileResult Renderer::setProgramSources(const ShaderSource &vertex, const Shad
     return m_program.build(vertex, fragment);
 }
 
+void Renderer::adoptProgram(GLuint program)
+{
+    const UniformSnapshot kept = m_program.snapshot();
+    m_program.adopt(program);
+    m_program.restore(kept);
+}
+
 void Renderer::render(const QSize &pixelSize)
 {
     const glm::dvec3 bg = m_scene.background;

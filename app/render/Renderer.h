@@ -53,7 +53,13 @@ public:
     // user sources. On failure the previous program keeps rendering.
     CompileResult loadShading(ShadingMethod method);
     CompileResult setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment);
+    // Switches to a program linked elsewhere (a ProgramBuilder on a context
+    // sharing this one's objects) and takes ownership of it. Uniforms the
+    // user set on the old program carry over where name and type match; the
+    // ones the renderer drives are set again on every frame anyway.
+    void adoptProgram(GLuint program);
     bool hasProgram() const { return m_program.isValid(); }
+    ShaderProgram &program() { return m_program; }
 
     void setOptions(const Options &options) { m_options = options; }
     const Options &options() const { return m_options; }

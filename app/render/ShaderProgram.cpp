@@ -1,111 +1,212 @@
 #include "ShaderProgram.h"
 
+#include "ProgramBuilder.h"
+
 #include <glm/gtc/type_ptr.hpp>
+#include <algorithm>
+#include <optional>
 
 namespace phonglab {
 
 namespace {
 
-QString infoLog(QOpenGLExtraFunctions *gl, GLuint object, bool isProgram)
+struct UniformLayout {
+    UniformValue::Kind kind;
+    int components;
+};
+
+// How many 32-bit words a uniform of `type` holds and how glUniform* takes
+// them; nullopt for types that are not restored (doubles, images).
+std::optional<UniformLayout> layoutOf(GLenum type)
 {
-    GLint length = 0;
-    if (isProgram)
-        gl->glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else
-        gl->glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    if (length <= 1)
-        return {};
-    QByteArray log(length, '\0');
-    if (isProgram)
-        gl->glGetProgramInfoLog(object, length, nullptr, log.data());
-    else
-        gl->glGetShaderInfoLog(object, length, nullptr, log.data());
-    return QString::fromUtf8(log.constData());
+    using K = UniformValue::Kind;
+    switch (type) {
+    case GL_FLOAT: return UniformLayout{K::Float, 1};
+    case GL_FLOAT_VEC2: return UniformLayout{K::Float, 2};
+    case GL_FLOAT_VEC3: return UniformLayout{K::Float, 3};
+    case GL_FLOAT_VEC4: return UniformLayout{K::Float, 4};
+    case GL_FLOAT_MAT2: return UniformLayout{K::Float, 4};
+    case GL_FLOAT_MAT3: return UniformLayout{K::Float, 9};
+    case GL_FLOAT_MAT4: return UniformLayout{K::Float, 16};
+    case GL_FLOAT_MAT2x3: case GL_FLOAT_MAT3x2: return UniformLayout{K::Float, 6};
+    case GL_FLOAT_MAT2x4: case GL_FLOAT_MAT4x2: return UniformLayout{K::Float, 8};
+    case GL_FLOAT_MAT3x4: case GL_FLOAT_MAT4x3: return UniformLayout{K::Float, 12};
+    case GL_INT: case GL_BOOL: return UniformLayout{K::Int, 1};
+    case GL_INT_VEC2: case GL_BOOL_VEC2: return UniformLayout{K::Int, 2};
+    case GL_INT_VEC3: case GL_BOOL_VEC3: return UniformLayout{K::Int, 3};
+    case GL_INT_VEC4: case GL_BOOL_VEC4: return UniformLayout{K::Int, 4};
+    case GL_UNSIGNED_INT: return UniformLayout{K::UInt, 1};
+    case GL_UNSIGNED_INT_VEC2: return UniformLayout{K::UInt, 2};
+    case GL_UNSIGNED_INT_VEC3: return UniformLayout{K::UInt, 3};
+    case GL_UNSIGNED_INT_VEC4: return UniformLayout{K::UInt, 4};
+    // Samplers hold a texture unit, set with glUniform1i.
+    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_CUBE_SHADOW:
+    case GL_SAMPLER_1D_ARRAY: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_RECT:
+    case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D: case GL_INT_SAMPLER_CUBE: case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+        return UniformLayout{K::Int, 1};
+    default: return std::nullopt;
+    }
 }
 
-// A failed step must always say why, even when the driver's log is empty
-// or in a form the parser does not know.
-void ensureError(CompileResult &result, ShaderStage stage, const QString &file, const QString &log)
+struct ActiveUniform {
+    QByteArray name; // without a trailing "[0]"
+    GLenum type = 0;
+    GLint size = 0;  // array length (1 for a non-array)
+    bool isArray = false;
+};
+
+// The program's default-block uniforms; block members and built-ins
+// (gl_*) have no value of their own to keep.
+std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions *gl, GLuint program)
 {
-    for (const ShaderDiagnostic &d : result.diagnostics)
-        if (d.isError() && d.stage == stage)
-            return;
-    ShaderDiagnostic d;
-    d.stage = stage;
-    d.file = file;
-    d.message = log.trimmed().isEmpty() ? QStringLiteral("%1 failed without a message from the driver")
-                                               .arg(stage == ShaderStage::Link ? "linking" : "compiling")
-                                        : log.trimmed();
-    result.diagnostics.push_back(d);
+    std::vector<ActiveUniform> list;
+    GLint count = 0, maxLength = 0;
+    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
+    QByteArray buffer(std::max(maxLength, 1), '\0');
+    for (GLuint i = 0; i < GLuint(count); ++i) {
+        GLint block = -1;
+        gl->glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
+        ActiveUniform u;
+        GLsizei length = 0;
+        gl->glGetActiveUniform(program, i, GLsizei(buffer.size()), &length, &u.size, &u.type, buffer.data());
+        u.name = QByteArray(buffer.constData(), length);
+        if (block != -1 || u.name.startsWith("gl_"))
+            continue;
+        u.isArray = u.name.endsWith("[0]");
+        if (u.isArray)
+            u.name.chop(3);
+        list.push_back(u);
+    }
+    return list;
+}
+
+QByteArray elementName(const ActiveUniform &u, int element)
+{
+    return u.isArray ? u.name + '[' + QByteArray::number(element) + ']' : u.name;
 }
 
 } // namespace
 
-GLuint ShaderProgram::compileStage(GLenum type, const ShaderSource &source,
-                                   const QStringList &defines, CompileResult &result)
-{
-    const ShaderStage stage = type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment;
-    const QByteArray code = withPrologue(source.code, defines);
-    const char *text = code.constData();
-    const GLint length = GLint(code.size());
-
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &text, &length);
-    glCompileShader(shader);
-
-    GLint status = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &status);
-    const QString log = infoLog(this, shader, false);
-    auto diagnostics = parseShaderLog(log, stage, source.name);
-    mapColumnsToSource(diagnostics, source.code);
-    result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
-    if (status != GL_TRUE) {
-        ensureError(result, stage, source.name, log);
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
-CompileResult ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                                   const QStringList &defines)
+void ShaderProgram::ensureInitialized()
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
         m_initialized = true;
     }
-    CompileResult result;
-    const GLuint vs = compileStage(GL_VERTEX_SHADER, vertex, defines, result);
-    const GLuint fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, result);
-    if (!vs || !fs) {
-        if (vs) glDeleteShader(vs);
-        if (fs) glDeleteShader(fs);
-        return result;
-    }
+}
 
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs); // flagged; freed with the program
-    glDeleteShader(fs);
+CompileResult ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment,
+                                   const QStringList &defines)
+{
+    ensureInitialized();
+    ProgramBuild built = ProgramBuilder().build(vertex, fragment, defines);
+    if (built.ok())
+        adopt(built.program);
+    return built.result;
+}
 
-    GLint status = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &status);
-    const QString log = infoLog(this, program, true);
-    const QString linkName = vertex.name + QLatin1Char('+') + fragment.name;
-    auto diagnostics = parseShaderLog(log, ShaderStage::Link, linkName);
-    result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
-    if (status != GL_TRUE) {
-        ensureError(result, ShaderStage::Link, linkName, log);
-        glDeleteProgram(program);
-        return result;
-    }
-
+void ShaderProgram::adopt(GLuint program)
+{
+    ensureInitialized();
     destroy();
     m_program = program;
-    result.ok = true;
-    return result;
+}
+
+void ShaderProgram::readValue(GLint location, UniformValue &value)
+{
+    switch (value.kind) {
+    case UniformValue::Kind::Float: glGetUniformfv(m_program, location, value.floats.data()); break;
+    case UniformValue::Kind::Int: glGetUniformiv(m_program, location, value.ints.data()); break;
+    case UniformValue::Kind::UInt: glGetUniformuiv(m_program, location, value.uints.data()); break;
+    }
+}
+
+UniformSnapshot ShaderProgram::snapshot()
+{
+    UniformSnapshot snapshot;
+    if (!m_program)
+        return snapshot;
+    ensureInitialized();
+    for (const ActiveUniform &u : activeUniforms(this, m_program)) {
+        const auto layout = layoutOf(u.type);
+        if (!layout)
+            continue;
+        for (int element = 0; element < u.size; ++element) {
+            UniformValue value;
+            value.name = elementName(u, element);
+            value.type = u.type;
+            value.kind = layout->kind;
+            value.components = layout->components;
+            const GLint location = glGetUniformLocation(m_program, value.name.constData());
+            if (location < 0)
+                continue;
+            readValue(location, value);
+            snapshot.values.push_back(value);
+        }
+    }
+    return snapshot;
+}
+
+void ShaderProgram::writeValue(GLint location, const UniformValue &v)
+{
+    switch (v.type) {
+    case GL_FLOAT_MAT2: glUniformMatrix2fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT3: glUniformMatrix3fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT4: glUniformMatrix4fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT2x3: glUniformMatrix2x3fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT3x2: glUniformMatrix3x2fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT2x4: glUniformMatrix2x4fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT4x2: glUniformMatrix4x2fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT3x4: glUniformMatrix3x4fv(location, 1, GL_FALSE, v.floats.data()); return;
+    case GL_FLOAT_MAT4x3: glUniformMatrix4x3fv(location, 1, GL_FALSE, v.floats.data()); return;
+    default: break;
+    }
+    const GLfloat *f = v.floats.data();
+    const GLint *i = v.ints.data();
+    const GLuint *u = v.uints.data();
+    switch (v.kind) {
+    case UniformValue::Kind::Float:
+        v.components == 1 ? glUniform1fv(location, 1, f) : v.components == 2 ? glUniform2fv(location, 1, f)
+            : v.components == 3 ? glUniform3fv(location, 1, f) : glUniform4fv(location, 1, f);
+        break;
+    case UniformValue::Kind::Int:
+        v.components == 1 ? glUniform1iv(location, 1, i) : v.components == 2 ? glUniform2iv(location, 1, i)
+            : v.components == 3 ? glUniform3iv(location, 1, i) : glUniform4iv(location, 1, i);
+        break;
+    case UniformValue::Kind::UInt:
+        v.components == 1 ? glUniform1uiv(location, 1, u) : v.components == 2 ? glUniform2uiv(location, 1, u)
+            : v.components == 3 ? glUniform3uiv(location, 1, u) : glUniform4uiv(location, 1, u);
+        break;
+    }
+}
+
+void ShaderProgram::restore(const UniformSnapshot &snapshot)
+{
+    if (!m_program || snapshot.values.empty())
+        return;
+    ensureInitialized();
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(m_program);
+    for (const ActiveUniform &u : activeUniforms(this, m_program)) {
+        for (int element = 0; element < u.size; ++element) {
+            const QByteArray name = elementName(u, element);
+            const UniformValue *value = snapshot.find(name);
+            // Same name, other type (float became vec3): the old value means
+            // nothing to the new shader, which keeps its initialiser.
+            if (!value || value->type != u.type)
+                continue;
+            const GLint location = glGetUniformLocation(m_program, name.constData());
+            if (location >= 0)
+                writeValue(location, *value);
+        }
+    }
+    glUseProgram(GLuint(previous));
 }
 
 void ShaderProgram::destroy()

@@ -1,6 +1,7 @@
 #pragma once
 #include "CompileResult.h"
 #include "ShaderSource.h"
+#include "UniformSnapshot.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>
@@ -24,7 +25,18 @@ public:
     // in place and usable; the result carries the diagnostics.
     CompileResult build(const ShaderSource &vertex, const ShaderSource &fragment,
                         const QStringList &defines = {});
+    // Takes ownership of a program linked elsewhere (ProgramBuilder, possibly
+    // on another context of the same share group) and frees the previous one.
+    void adopt(GLuint program);
     void destroy();
+
+    // Every active default-block uniform's current value (double types are
+    // left out: GL 3.3 has none, and glGetUniformdv is not in the ES-based
+    // function set). restore() sets each value whose name AND type match an
+    // active uniform of this program; the rest are skipped. Binds the program
+    // for the duration and puts the previously bound one back.
+    UniformSnapshot snapshot();
+    void restore(const UniformSnapshot &snapshot);
 
     bool isValid() const { return m_program != 0; }
     GLuint id() const { return m_program; }
@@ -39,8 +51,9 @@ public:
     void setUniformArray(const char *name, const glm::vec3 *values, int count);
 
 private:
-    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                        CompileResult &result);
+    void ensureInitialized();
+    void readValue(GLint location, UniformValue &value);
+    void writeValue(GLint location, const UniformValue &value);
 
     bool m_initialized = false;
     GLuint m_program = 0;

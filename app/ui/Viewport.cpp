@@ -7,6 +7,7 @@
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
 #include <cmath>
@@ -129,6 +130,49 @@ Scene Viewport::currentScene() const
     return scene;
 }
 
+void Viewport::setShading(ShadingMethod method)
+{
+    m_scene.shading = method;
+    // The renderer's copy decides whether a later scene must reload its
+    // program, so it has to follow now rather than at the next paint.
+    if (m_renderReady)
+        m_renderer.updateSceneParameters(currentScene());
+    cameraMoved(); // the parameters changed; repaint
+}
+
+void Viewport::adoptProgram(GLuint program)
+{
+    if (!m_glInitialized)
+        return; // no context to free it with either; it goes with its share group
+    makeCurrent();
+    m_renderer.adoptProgram(program);
+    doneCurrent();
+    update();
+}
+
+ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSource &fragment)
+{
+    if (!m_glInitialized) {
+        ProgramBuild none;
+        none.result.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0,
+                                           tr("OpenGL is not running in the viewport")});
+        return none;
+    }
+    makeCurrent();
+    ProgramBuild built = ProgramBuilder().build(vertex, fragment);
+    doneCurrent();
+    return built;
+}
+
+void Viewport::releaseProgram(GLuint program)
+{
+    if (!m_glInitialized || !program)
+        return;
+    makeCurrent();
+    context()->extraFunctions()->glDeleteProgram(program);
+    doneCurrent();
+}
+
 void Viewport::resetCamera()
 {
     m_orbit.reset();
@@ -168,6 +212,7 @@ void Viewport::initializeGL()
     m_parametersDirty = false;
     m_renderReady = true;
     emit sceneChanged(); // meshInfo() now comes from the renderer
+    emit glInitialized();
 }
 
 // Needs the context current. The shading program goes first because it is the
@@ -196,6 +241,7 @@ bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *er
 void Viewport::cleanup()
 {
     if (m_glInitialized) {
+        emit glAboutToBeReleased();
         makeCurrent();
         m_renderer.cleanup();
         doneCurrent();

@@ -1,6 +1,7 @@
 #pragma once
 #include "core/OrbitCamera.h"
 #include "core/Scene.h"
+#include "render/ProgramBuilder.h"
 #include "render/Renderer.h"
 
 #include <QOpenGLWidget>
@@ -36,6 +37,20 @@ public:
     Scene currentScene() const;
     const Camera &camera() const { return m_orbit.camera(); }
 
+    // The scene's shading method changes without touching the program: the
+    // live shader controller builds it (so Save writes the preset in use).
+    void setShading(ShadingMethod method);
+
+    // Programs built elsewhere. adoptProgram() switches to a program linked
+    // on a context sharing this one's objects (or by buildProgram()) and owns
+    // it from then on; uniforms the user set carry over. buildProgram()
+    // compiles on the GUI thread with this context: the fallback when no
+    // shared context can be had. All need isRenderReady().
+    void adoptProgram(GLuint program);
+    ProgramBuild buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
+    void releaseProgram(GLuint program);
+    Renderer &renderer() { return m_renderer; } // call with the context current (makeCurrent())
+
     void resetCamera();
     void setShowLightMarkers(bool show);
     bool showLightMarkers() const { return m_options.drawLightMarkers; }
@@ -58,6 +73,11 @@ signals:
     void sceneChanged();
     // Local files were dropped onto the view.
     void filesDropped(const QStringList &paths);
+    // GL is up with a fresh context (first show, or after moving to another
+    // window) and the scene's shipped shading program is in use.
+    void glInitialized();
+    // The context is about to go: objects shared with it must be let go.
+    void glAboutToBeReleased();
 
 protected:
     void initializeGL() override;

@@ -3,6 +3,7 @@
 #include "core/AnalyticRaycaster.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
+#include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 
 #include <QDir>
@@ -10,19 +11,35 @@
 
 namespace phonglab::test {
 
-RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex,
-                                  const std::optional<ShaderSource> &fragment, const QHash<QString, QString> &standIns)
+namespace {
+
+// The scene's meshes as the renderer would load them, with every mesh's
+// vertices replaced by `mesh` when one is given (its stats, hence culling,
+// stay those of the object's own mesh).
+SceneMeshes meshesFor(const Scene &scene, const std::shared_ptr<const MeshData> &mesh)
+{
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    if (mesh && meshes.ok())
+        for (SceneMeshes::Entry &entry : meshes.entries)
+            entry.mesh = mesh;
+    return meshes;
+}
+
+} // namespace
+
+RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &options)
 {
     RenderCheck check;
     OffscreenRenderer offscreen;
     if (!offscreen.create(&check.error))
         return check;
     Renderer &renderer = offscreen.renderer();
-    if (!renderer.setScene(scene, &check.error))
+    if (!renderer.setScene(scene, meshesFor(scene, options.meshOverride), &check.error))
         return check;
-    if (vertex || fragment) {
-        const ShaderSource vs = vertex.value_or(shippedShader(QStringLiteral("phong.vert")));
-        const ShaderSource fs = fragment.value_or(shippedShader(QStringLiteral("phong.frag")));
+    if (options.vertex || options.fragment) {
+        const QString method = shadingName(scene.shading);
+        const ShaderSource vs = options.vertex.value_or(shippedShader(method + QStringLiteral(".vert")));
+        const ShaderSource fs = options.fragment.value_or(shippedShader(method + QStringLiteral(".frag")));
         check.compile = renderer.setProgramSources(vs, fs);
     } else {
         check.compile = renderer.loadShading(scene.shading);
@@ -34,12 +51,24 @@ RenderCheck checkAgainstReference(const Scene &scene, const std::optional<Shader
     const QSize size(kTestImageSide, kTestImageSide);
     check.gpu = offscreen.renderImage(size);
 
-    const auto reference = raycastScene(scene, size.width(), size.height(), &check.error, standIns);
+    const ReferenceShading shading = options.reference.value_or(idealShadingFor(scene.shading));
+    auto reference = raycastScene(scene, size.width(), size.height(), shading, &check.error, options.standIns);
     if (!reference)
         return check;
-    check.reference = reference->toImage(scene.background);
-    check.comparison = compareWithReference(check.gpu, *reference, kSilhouetteBandPx);
+    check.referenceData = std::move(*reference);
+    check.reference = check.referenceData.toImage(scene.background);
+    check.comparison = compareWithReference(check.gpu, check.referenceData, kSilhouetteBandPx);
     return check;
+}
+
+RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex,
+                                  const std::optional<ShaderSource> &fragment, const QHash<QString, QString> &standIns)
+{
+    CheckOptions options;
+    options.vertex = vertex;
+    options.fragment = fragment;
+    options.standIns = standIns;
+    return checkAgainstReference(scene, options);
 }
 
 QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene,
@@ -52,8 +81,11 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
     dir.mkpath(QStringLiteral("."));
     check.gpu.save(dir.filePath(name + QStringLiteral("-gpu.png")));
     check.reference.save(dir.filePath(name + QStringLiteral("-reference.png")));
-    if (const auto reference = raycastScene(scene, check.gpu.width(), check.gpu.height(), nullptr, standIns))
-        errorHeatmap(check.gpu, *reference, kSilhouetteBandPx).save(dir.filePath(name + QStringLiteral("-error.png")));
+    const QString heatmapPath = dir.filePath(name + QStringLiteral("-error.png"));
+    if (!check.referenceData.isNull())
+        errorHeatmap(check.gpu, check.referenceData, kSilhouetteBandPx).save(heatmapPath);
+    else if (const auto reference = raycastScene(scene, check.gpu.width(), check.gpu.height(), nullptr, standIns))
+        errorHeatmap(check.gpu, *reference, kSilhouetteBandPx).save(heatmapPath);
     return dir.absolutePath();
 }
 

@@ -1,12 +1,15 @@
 #pragma once
+#include "core/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
 #include "core/Scene.h"
+#include "mesh/MeshData.h"
 #include "render/CompileResult.h"
 #include "render/ShaderSource.h"
 
 #include <QHash>
 #include <QImage>
 #include <QString>
+#include <memory>
 #include <optional>
 
 namespace phonglab::test {
@@ -22,6 +25,7 @@ inline constexpr int kTestImageSide = 256;
 struct RenderCheck {
     QImage gpu;
     QImage reference;
+    ReferenceImage referenceData;  // the unquantised reference behind `reference`
     ImageComparison comparison;
     CompileResult compile;
     QString error;                 // set when something could not run at all
@@ -33,12 +37,28 @@ struct RenderCheck {
     }
 };
 
-// Renders `scene` offscreen (kTestImageSide², no MSAA) with the shipped Phong
-// shaders, or with the given replacement stages, and compares it with the
-// ray-cast reference. Creates its own context; call from the GUI thread of a
-// QGuiApplication.
-// `standIns` maps a scene's mesh (as written) to the builtin whose analytic
-// surface the reference ray-casts for it (e.g. a Blender cube -> "builtin:cube").
+// What checkAgainstReference() may vary besides the scene.
+struct CheckOptions {
+    // Replacement stages; a stage left empty is the shipped one of scene.shading.
+    std::optional<ShaderSource> vertex;
+    std::optional<ShaderSource> fragment;
+    // Maps a scene's mesh (as written) to the builtin whose analytic surface
+    // the reference ray-casts for it (e.g. a Blender cube -> "builtin:cube").
+    QHash<QString, QString> standIns;
+    // What the reference computes; idealShadingFor(scene.shading) when unset
+    // (Phong for Gouraud and flat: the error is what they get wrong).
+    std::optional<ReferenceShading> reference;
+    // When set, every object is drawn with this mesh instead of its own (a
+    // coarser tessellation, say); the reference still ray-casts the analytic
+    // surface the object's mesh names, and culling follows the object's mesh.
+    std::shared_ptr<const MeshData> meshOverride;
+};
+
+// Renders `scene` offscreen (kTestImageSide², no MSAA) with the shipped
+// shaders of scene.shading, or with replacement stages, and compares it with
+// the ray-cast reference. Creates its own context; call from the GUI thread
+// of a QGuiApplication.
+RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &options);
 RenderCheck checkAgainstReference(const Scene &scene,
                                   const std::optional<ShaderSource> &vertex = std::nullopt,
                                   const std::optional<ShaderSource> &fragment = std::nullopt,
@@ -46,6 +66,7 @@ RenderCheck checkAgainstReference(const Scene &scene,
 
 // Saves gpu / reference / heatmap PNGs under $PHONGLAB_TEST_ARTIFACTS (or
 // the system temp dir) so a failing render can be looked at; returns the folder.
+// The heatmap uses check.referenceData (ray-cast again, as Phong, if empty).
 QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene &scene,
                       const QHash<QString, QString> &standIns = {});
 

@@ -352,16 +352,20 @@ void TestMeshBuilder::unusableFileNormalsAreReplaced()
 
 void TestMeshBuilder::fileNormalsKeptAsWritten()
 {
-    // Unit normals pass through bit for bit; others only get normalised.
+    // Unit normals pass through bit for bit, including six-decimal ones as
+    // OBJ files write them ((1, 2, 3)/√14 here, length 1 − 4e-7), which
+    // dividing by their length would nudge. Others are normalised.
     PolygonMesh mesh;
-    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    mesh.normals = {{0.6f, 0.8f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 3.0f, 4.0f}};
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.normals = {{0.6f, 0.8f, 0.0f}, {0.267261f, 0.534522f, 0.801784f}, {0.0f, 3.0f, 4.0f}, {0.0f, 0.0f, 0.5f}};
     addFace(mesh, {0, 1, 2});
-    mesh.cornerNormal = {0, 1, 2};
+    addFace(mesh, {2, 1, 3});
+    mesh.cornerNormal = {0, 1, 2, 2, 1, 3};
     const MeshData data = buildMeshData(mesh, NormalOptions());
     QCOMPARE(data.normals[data.indices[0]], glm::vec3(0.6f, 0.8f, 0.0f));
-    QCOMPARE(data.normals[data.indices[1]], glm::vec3(0.0f, 0.0f, 1.0f));
+    QCOMPARE(data.normals[data.indices[1]], glm::vec3(0.267261f, 0.534522f, 0.801784f));
     QCOMPARE(data.normals[data.indices[2]], glm::vec3(0.0f, 0.6f, 0.8f));
+    QCOMPARE(data.normals[data.indices[5]], glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
 void TestMeshBuilder::boundsAndStats()

@@ -147,7 +147,7 @@ private slots:
     void cubeSmooth();
     void cubeCrease();
     void cancellingFacesFallBackToFaceNormal();
-    void degenerateTriangleBorrowsNeighbourNormal();
+    void degenerateTriangleAddsNothing();
     void coneApexBigFan();
     void unitLengthEverywhere();
     void sphereAgainstAnalytic();
@@ -312,22 +312,22 @@ void TestNormals::cancellingFacesFallBackToFaceNormal()
     }
 }
 
-void TestNormals::degenerateTriangleBorrowsNeighbourNormal()
+void TestNormals::degenerateTriangleAddsNothing()
 {
     // T0 = (A, C, B) faces −Z; T1 = (A, B, D) is a sliver along the x axis
-    // with no normal (and invisible). Smooth: its corners at A and B have
-    // the vertex normal (−Z), and D, which has nothing else, borrows it
-    // from A, so all of T1 welds with T0.
+    // with no normal (and invisible). At A and B it adds nothing: their
+    // corners in T1 too have T0's −Z. D sees nothing else and gets +Z, as
+    // does every corner of T1 under flat shading.
     const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
     const std::vector<std::uint32_t> triangles = {0, 2, 1, 0, 1, 3};
     for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         for (std::optional<double> crease : {std::optional<double>(), std::optional(30.0)}) {
             const auto normals = corners(positions, triangles, m, crease);
-            for (int c = 0; c < 6; ++c)
+            for (int c = 0; c < 5; ++c)
                 QCOMPARE(normals[c], glm::vec3(0, 0, -1));
+            QCOMPARE(normals[5], glm::vec3(0, 0, 1));
         }
     }
-    // Flat: T1's corners have no normal to borrow; the last resort is +Z.
     const auto flat = corners(positions, triangles, NormalMethod::Flat);
     for (int c = 0; c < 3; ++c) {
         QCOMPARE(flat[c], glm::vec3(0, 0, -1));

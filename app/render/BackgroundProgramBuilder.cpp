@@ -1,0 +1,163 @@
+#include "BackgroundProgramBuilder.h"
+
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QThread>
+#include <atomic>
+#include <chrono>
+
+namespace phonglab {
+
+namespace {
+
+// How long stop() waits for the worker. A shader stuck in an endless loop
+// keeps the worker in the driver forever; the app must still be able to quit.
+constexpr unsigned long kJoinTimeoutMs = 3000;
+
+qint64 monotonicNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+bool fail(QString *error, const QString &message)
+{
+    if (error)
+        *error = message;
+    return false;
+}
+
+} // namespace
+
+BackgroundProgramBuilder::BackgroundProgramBuilder(QObject *parent)
+    : QObject(parent)
+{
+}
+
+BackgroundProgramBuilder::~BackgroundProgramBuilder()
+{
+    stop();
+}
+
+bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, int warmSamples, QString *error)
+{
+    stop();
+    if (!shareContext)
+        return fail(error, QStringLiteral("the viewport has no OpenGL context yet"));
+    auto context = std::make_unique<QOpenGLContext>();
+    context->setFormat(shareContext->format());
+    context->setShareContext(shareContext);
+    if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
+        return fail(error, QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
+    // QOffscreenSurface must be created (and destroyed) on the GUI thread.
+    auto surface = std::make_unique<QOffscreenSurface>();
+    surface->setFormat(context->format());
+    surface->create();
+    if (!surface->isValid())
+        return fail(error, QStringLiteral("cannot create an offscreen surface for the compile thread"));
+
+    auto thread = std::make_unique<QThread>();
+    thread->setObjectName(QStringLiteral("phonglab-shader-build"));
+    auto *worker = new ProgramBuildWorker(context.get(), surface.get(), warmSamples);
+    worker->moveToThread(thread.get());
+    connect(thread.get(), &QThread::finished, worker, &QObject::deleteLater);
+    context->moveToThread(thread.get());
+    thread->start();
+
+    bool ok = false;
+    QString reason;
+    QThread *gui = this->thread();
+    QMetaObject::invokeMethod(worker, [&] {
+        ok = worker->initialize(&reason);
+        if (!ok)
+            worker->shutdown(gui);
+    }, Qt::BlockingQueuedConnection);
+    if (!ok) {
+        thread->quit();
+        thread->wait();
+        return fail(error, reason);
+    }
+    m_parallelShaderCompile = worker->hasParallelShaderCompile();
+    m_thread = std::move(thread);
+    m_surface = std::move(surface);
+    m_context = std::move(context);
+    m_worker = worker;
+    ++m_generation;
+    QMutexLocker lock(&m_mailbox->mutex);
+    m_mailbox->receiver = this;
+    return true;
+}
+
+void BackgroundProgramBuilder::stop()
+{
+    if (!m_worker)
+        return;
+    ProgramBuildWorker *worker = m_worker;
+    QThread *gui = thread();
+    m_worker = nullptr;
+    {
+        QMutexLocker lock(&m_mailbox->mutex);
+        m_mailbox->receiver = nullptr;
+    }
+    // Queued behind any build still waiting, which then runs to completion;
+    // its reply is dropped because this object no longer has a worker.
+    QMetaObject::invokeMethod(worker, [worker, gui] {
+        worker->shutdown(gui);
+        QThread::currentThread()->quit();
+    }, Qt::QueuedConnection);
+    if (!m_thread->wait(kJoinTimeoutMs)) {
+        // Stuck in the driver (an endless loop in a shader). Joining would
+        // hang the GUI and deleting a running QThread aborts, so leave the
+        // thread, its context and surface to the process exit.
+        qWarning("phonglab: the shader build thread did not stop (a shader that never finishes?); "
+                 "leaving it running");
+        (void)m_thread.release();
+        (void)m_context.release();
+        (void)m_surface.release();
+        return;
+    }
+    m_thread.reset();
+    m_context.reset(); // moved back to this thread by shutdown()
+    m_surface.reset();
+}
+
+quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment)
+{
+    ProgramBuildRequest request{++m_lastSerial, vertex, fragment, m_warmUp};
+    if (!m_worker)
+        return request.serial;
+    const qint64 queuedAt = monotonicNs();
+    ProgramBuildWorker *worker = m_worker;
+    QMetaObject::invokeMethod(worker, [mailbox = m_mailbox, worker, request, queuedAt, generation = m_generation] {
+        ProgramBuildReply reply = worker->build(request);
+        reply.queuedAtNs = queuedAt;
+        reply.finishedAtNs = monotonicNs();
+        QMutexLocker lock(&mailbox->mutex);
+        if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+            QMetaObject::invokeMethod(receiver, [receiver, reply, generation] { receiver->deliver(reply, generation); },
+                                      Qt::QueuedConnection);
+        else
+            worker->release(reply.program); // stopping: nobody will adopt it
+    }, Qt::QueuedConnection);
+    return request.serial;
+}
+
+void BackgroundProgramBuilder::deliver(const ProgramBuildReply &reply, quint64 generation)
+{
+    // Posted just before a stop(): its program belongs to a share group that
+    // may be gone with the viewport's old context. It is freed with that group.
+    if (!m_worker || generation != m_generation)
+        return;
+    emit built(reply);
+}
+
+void BackgroundProgramBuilder::release(GLuint program)
+{
+    if (!m_worker || !program)
+        return;
+    ProgramBuildWorker *worker = m_worker;
+    QMetaObject::invokeMethod(worker, [worker, program] { worker->release(program); }, Qt::QueuedConnection);
+}
+
+} // namespace phonglab

@@ -1,0 +1,75 @@
+#pragma once
+#include "ProgramBuildWorker.h"
+
+#include <QMutex>
+#include <QObject>
+#include <memory>
+
+class QOffscreenSurface;
+class QOpenGLContext;
+class QThread;
+
+namespace phonglab {
+
+// Builds lighting programs off the GUI thread. A worker QThread owns an
+// OpenGL context created in the same share group as the viewport's, on a
+// QOffscreenSurface (created here, on the GUI thread, as Qt requires). It
+// compiles, links, warms the program with one small draw (ProgramWarmer) and
+// glFinish()es; the GUI thread then gets built() with the program id, which
+// names the same object in the viewport's context. Typing never waits on the
+// driver: the GUI thread only adopts a finished program.
+class BackgroundProgramBuilder : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit BackgroundProgramBuilder(QObject *parent = nullptr);
+    ~BackgroundProgramBuilder() override;
+
+    // Creates the worker context sharing objects with `shareContext` (which
+    // must exist) and starts the thread. False with a reason when no shared
+    // context can be had; callers then build on the GUI thread.
+    // `warmSamples`: the sample count of the framebuffer programs will draw into.
+    bool start(QOpenGLContext *shareContext, int warmSamples, QString *error);
+    // Finishes the build in progress, frees the worker's GL objects and joins
+    // the thread. Replies not delivered yet are dropped (their programs are
+    // freed with the worker's context, or with the share group).
+    void stop();
+    bool isRunning() const { return m_worker != nullptr; }
+
+    // Queues a build; returns its serial, which the reply carries.
+    quint64 build(const ShaderSource &vertex, const ShaderSource &fragment);
+    // Frees a program that was built here but will not be used.
+    void release(GLuint program);
+
+    void setWarmUp(bool warm) { m_warmUp = warm; }
+    bool hasParallelShaderCompile() const { return m_parallelShaderCompile; }
+
+signals:
+    // On the GUI thread. The receiver owns reply.program.
+    void built(const phonglab::ProgramBuildReply &reply);
+
+private:
+    // Where the worker posts replies. Cleared under its mutex when this
+    // object stops, so a worker that outlives it (stuck in the driver and
+    // abandoned) never posts to a deleted object.
+    struct Mailbox {
+        QMutex mutex;
+        BackgroundProgramBuilder *receiver = nullptr;
+    };
+
+    void deliver(const ProgramBuildReply &reply, quint64 generation);
+
+    std::shared_ptr<Mailbox> m_mailbox = std::make_shared<Mailbox>();
+
+    std::unique_ptr<QThread> m_thread;
+    std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOpenGLContext> m_context;
+    ProgramBuildWorker *m_worker = nullptr; // lives on m_thread, deleted with it
+    quint64 m_lastSerial = 0;
+    quint64 m_generation = 0; // one per start(): a program belongs to its share group
+    bool m_warmUp = true;
+    bool m_parallelShaderCompile = false;
+};
+
+} // namespace phonglab

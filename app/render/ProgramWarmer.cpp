@@ -1,0 +1,66 @@
+#include "ProgramWarmer.h"
+
+#include "mesh/BuiltinMeshes.h"
+
+#include <QOpenGLFramebufferObject>
+
+namespace phonglab {
+
+namespace {
+constexpr int kTargetSide = 8; // pixels: enough to run every stage, cheap to fill
+} // namespace
+
+ProgramWarmer::ProgramWarmer() = default;
+ProgramWarmer::~ProgramWarmer() = default; // destroy() runs with the context current
+
+bool ProgramWarmer::create(int samples, QString *error)
+{
+    initializeOpenGLFunctions();
+    // QOpenGLWidget's own framebuffer: RGBA8 colour, packed depth-stencil.
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    format.setInternalTextureFormat(GL_RGBA8);
+    format.setSamples(samples);
+    m_fbo = std::make_unique<QOpenGLFramebufferObject>(QSize(kTargetSide, kTargetSide), format);
+    if (!m_fbo->isValid()) {
+        if (error)
+            *error = QStringLiteral("cannot create the %1-sample framebuffer for warming programs").arg(samples);
+        m_fbo.reset();
+        return false;
+    }
+    // Same interleaved layout as every scene mesh, so the vertex fetch code
+    // generated here is the one the viewport needs too.
+    m_mesh.upload(makeUvSphere(8, 4));
+    return true;
+}
+
+void ProgramWarmer::destroy()
+{
+    m_mesh.destroy();
+    m_fbo.reset();
+}
+
+void ProgramWarmer::warm(GLuint program)
+{
+    if (!m_fbo)
+        return;
+    m_fbo->bind();
+    glViewport(0, 0, kTargetSide, kTargetSide);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    // Renderer::render's state for a closed mesh.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    glUseProgram(program);
+    m_mesh.draw();
+    glUseProgram(0);
+    m_fbo->release();
+    // The hand-over contract: the program has linked and run before another
+    // context touches it.
+    glFinish();
+}
+
+} // namespace phonglab

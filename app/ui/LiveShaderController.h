@@ -1,0 +1,108 @@
+#pragma once
+#include "core/ShadingMethod.h"
+#include "render/ProgramBuildWorker.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+class QTimer;
+class QWidget;
+
+namespace phonglab {
+
+class BackgroundProgramBuilder;
+class ShaderDock;
+class ShaderRecovery;
+class Viewport;
+
+// Live shader editing: connects the Shaders dock to the viewport. After an
+// edit and a pause (QSettings "editor/debounceMs", 300 ms by default), and
+// only when the text of the two stages really changed since the last build,
+// it builds the program off the GUI thread (BackgroundProgramBuilder) and
+// switches the viewport to it; F5 builds at once. A failed build leaves the
+// last good program running and puts each message on the user's line. The
+// buffers are journaled (ShaderRecovery) before every build, and a sentinel
+// marks a program that has not yet drawn a few frames.
+class LiveShaderController : public QObject
+{
+    Q_OBJECT
+
+public:
+    LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent = nullptr);
+    ~LiveShaderController() override; // a clean exit: stops the worker, clears the journal
+
+    // Puts `method`'s shipped shaders into the dock without building them
+    // (the viewport builds its scene's program itself).
+    void showPreset(ShadingMethod method);
+    // The user chose a preset: load, build at once, and the scene follows.
+    void applyPreset(ShadingMethod method);
+    // The viewport's scene changed its shading method (a scene was opened).
+    void followSceneShading(ShadingMethod method);
+    // F5: builds now, even unchanged or suspect text.
+    void buildNow();
+
+    // Offers a dead session's journal (see ShaderRecovery). Call once at start.
+    void offerRecovery(QWidget *dialogParent);
+
+    // Benchmarks and tests: build on the GUI thread instead of the worker,
+    // and skip the worker's warm-up draw. Take effect at the next GL start.
+    void setBuildOnGuiThread(bool onGuiThread) { m_forceGuiThread = onGuiThread; }
+    void setWarmUp(bool warm);
+    int debounceMs() const { return m_debounceMs; }
+    bool buildsOnWorker() const;
+    bool isBuilding() const { return m_inFlight != 0; }
+    bool isAutoBuildHeld() const { return m_holdAutoBuild; }
+    QByteArray appliedHash() const { return m_appliedHash; }
+    QByteArray currentHash() const;
+    ShadingMethod shading() const { return m_shading; }
+    ShaderRecovery *recovery() const { return m_recovery; }
+
+signals:
+    // For the status bar.
+    void statusMessage(const QString &text, int timeoutMs);
+    // The viewport now draws with the program built from `hash`'s text.
+    void programApplied(const QByteArray &hash, const phonglab::ProgramBuildReply &timings);
+    void buildFailed(const QByteArray &hash);
+
+private:
+    void connectDock();
+    void onTextEdited();
+    void onGlInitialized();
+    void onGlAboutToBeReleased();
+    void startWorker();
+    void requestBuild(bool force);
+    void dispatch(const QByteArray &hash);
+    void onBuilt(const ProgramBuildReply &reply);
+    void finish(const QByteArray &hash, const ProgramBuildReply &reply);
+    void showFailure(const CompileResult &result);
+    void watchNewProgram(const QByteArray &hash);
+    void onFrameRendered();
+    void checkNewProgramProven();
+
+    ShaderDock *m_dock = nullptr;
+    Viewport *m_viewport = nullptr;
+    BackgroundProgramBuilder *m_builder = nullptr;
+    ShaderRecovery *m_recovery = nullptr;
+    QTimer *m_debounce = nullptr;
+    QTimer *m_provenTimer = nullptr;
+    int m_debounceMs = 300;
+    ShadingMethod m_shading = ShadingMethod::Phong;
+
+    bool m_glReady = false;
+    bool m_buildWhenReady = false;
+    bool m_forceGuiThread = false;
+    bool m_holdAutoBuild = false; // recovered suspect text: only F5 builds it
+    QByteArray m_lastBuiltHash;   // last text sent to the compiler
+    QByteArray m_appliedHash;     // text of the program the viewport draws with
+    quint64 m_inFlight = 0;       // serial of the build on the worker, 0 if none
+    QByteArray m_inFlightHash;
+    bool m_pending = false;       // another build was asked for meanwhile
+    bool m_pendingForce = false;
+    QElapsedTimer m_buildClock;   // from dispatch to reply, for the status
+
+    QByteArray m_unproven;        // adopted program that has not drawn enough yet
+    int m_unprovenFrames = 0;
+    QElapsedTimer m_unprovenClock;
+};
+
+} // namespace phonglab

@@ -1,0 +1,380 @@
+#include "ShaderDock.h"
+
+#include "DiagnosticList.h"
+#include "ShaderEditor.h"
+#include "ShaderFileSet.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSplitter>
+#include <QStyle>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <optional>
+#include <utility>
+
+namespace phonglab {
+
+namespace {
+
+const char kShaderFilter[] = "GLSL shaders (*.vert *.frag *.glsl *.vs *.fs);;All files (*)";
+
+std::optional<ShaderStage> stageFromSuffix(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("vert") || suffix == QLatin1String("vs") || suffix == QLatin1String("vsh"))
+        return ShaderStage::Vertex;
+    if (suffix == QLatin1String("frag") || suffix == QLatin1String("fs") || suffix == QLatin1String("fsh"))
+        return ShaderStage::Fragment;
+    return std::nullopt;
+}
+
+// "blinn-phong" -> "Blinn-Phong" for the preset box.
+QString displayName(const QString &name)
+{
+    QStringList parts = name.split(QLatin1Char('-'));
+    for (QString &part : parts)
+        if (!part.isEmpty())
+            part[0] = part[0].toUpper();
+    return parts.join(QLatin1Char('-'));
+}
+
+QString stageTitle(ShaderStage stage)
+{
+    return stage == ShaderStage::Vertex ? QObject::tr("Vertex") : QObject::tr("Fragment");
+}
+
+} // namespace
+
+ShaderDock::ShaderDock(QWidget *parent)
+    : QDockWidget(tr("Shaders"), parent)
+    , m_vertex(new ShaderEditor)
+    , m_fragment(new ShaderEditor)
+    , m_tabs(new QTabWidget)
+    , m_presets(new QComboBox)
+    , m_status(new QLabel)
+    , m_diagnostics(new DiagnosticList)
+    , m_files(new ShaderFileSet(this))
+{
+    setObjectName(QStringLiteral("shaderDock")); // for QMainWindow::saveState
+    m_vertex->setObjectName(QStringLiteral("vertexEditor"));
+    m_fragment->setObjectName(QStringLiteral("fragmentEditor"));
+    m_tabs->addTab(m_vertex, stageTitle(ShaderStage::Vertex));
+    m_tabs->addTab(m_fragment, stageTitle(ShaderStage::Fragment));
+    m_tabs->setCurrentWidget(m_fragment); // where most of the lighting lives
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_status->setWordWrap(true);
+    m_files->setDialogParent(this);
+
+    auto *splitter = new QSplitter(Qt::Vertical);
+    splitter->addWidget(m_tabs);
+    splitter->addWidget(m_diagnostics);
+    splitter->setStretchFactor(0, 4);
+    splitter->setStretchFactor(1, 1);
+
+    auto *contents = new QWidget;
+    auto *layout = new QVBoxLayout(contents);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(createToolBar());
+    layout->addWidget(splitter, 1);
+    layout->addWidget(m_status);
+    setWidget(contents);
+
+    connectEditor(ShaderStage::Vertex);
+    connectEditor(ShaderStage::Fragment);
+    connectFiles();
+    connect(m_diagnostics, &DiagnosticList::diagnosticActivated, this, &ShaderDock::goTo);
+    updateTab(ShaderStage::Vertex);
+    updateTab(ShaderStage::Fragment);
+}
+
+QWidget *ShaderDock::createToolBar()
+{
+    auto *bar = new QToolBar;
+    bar->setIconSize(QSize(16, 16));
+    for (const QString &name : shadingNames())
+        m_presets->addItem(displayName(name), name);
+    m_presets->setToolTip(tr("Load a shading method's shaders"));
+    connect(m_presets, &QComboBox::activated, this, [this](int index) {
+        if (const auto method = shadingFromName(m_presets->itemData(index).toString()))
+            emit presetRequested(*method);
+    });
+    bar->addWidget(m_presets);
+
+    // The shortcut works wherever the focus is inside the dock, the editors
+    // included (QScintilla does not bind F5).
+    m_compileAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Compile"), this);
+    m_compileAction->setShortcut(QKeySequence(Qt::Key_F5));
+    m_compileAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_compileAction->setToolTip(tr("Compile and link both stages (F5)"));
+    connect(m_compileAction, &QAction::triggered, this, &ShaderDock::compileRequested);
+    addAction(m_compileAction);
+    bar->addAction(m_compileAction);
+    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_compileAction)))
+        button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->addSeparator();
+
+    // Open and Save have no shortcuts: Ctrl+O / Ctrl+S belong to the window's
+    // scene commands, and the same keys in two contexts would be ambiguous.
+    bar->addAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("Open…"), this, &ShaderDock::chooseAndOpen)
+        ->setToolTip(tr("Open a shader, or a .vert/.frag pair"));
+    bar->addAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("Save"), this, &ShaderDock::saveCurrent)
+        ->setToolTip(tr("Save the current tab (shipped shaders are saved as a user copy)"));
+    bar->addAction(tr("Save As…"), this, &ShaderDock::chooseAndSaveAsCurrent)
+        ->setToolTip(tr("Save the current tab under another name"));
+    return bar;
+}
+
+void ShaderDock::connectEditor(ShaderStage stage)
+{
+    ShaderEditor *e = editor(stage);
+    connect(e, &QsciScintilla::textChanged, this, [this, stage] {
+        if (!m_settingText)
+            emit textEdited(stage);
+    });
+    connect(e, &QsciScintilla::modificationChanged, this, [this, stage](bool modified) {
+        if (!m_settingText)
+            m_files->setDirty(stage, modified);
+    });
+}
+
+void ShaderDock::connectFiles()
+{
+    connect(m_files, &ShaderFileSet::pathChanged, this, [this](ShaderStage stage) {
+        updateTab(stage);
+        if (!m_settingText)
+            emit filesChanged();
+    });
+    connect(m_files, &ShaderFileSet::dirtyChanged, this, &ShaderDock::updateTab);
+    connect(m_files, &ShaderFileSet::reloaded, this, [this](ShaderStage stage, const QByteArray &code) {
+        setEditorCode(stage, code);
+        emit textEdited(stage);
+        emit filesChanged();
+    });
+    connect(m_files, &ShaderFileSet::problem, this, [this](const QString &message) {
+        setCompileStatus(message, false); // not a dialog: this happens while typing
+    });
+}
+
+void ShaderDock::setEditorCode(ShaderStage stage, const QByteArray &code)
+{
+    const bool wasSetting = std::exchange(m_settingText, true);
+    editor(stage)->setCode(code);
+    m_settingText = wasSetting;
+}
+
+void ShaderDock::setSources(const ShaderSource &vertex, const ShaderSource &fragment)
+{
+    const bool wasSetting = std::exchange(m_settingText, true);
+    using Entry = std::pair<ShaderStage, const ShaderSource *>;
+    for (const auto &[stage, source] : {Entry{ShaderStage::Vertex, &vertex}, Entry{ShaderStage::Fragment, &fragment}}) {
+        editor(stage)->clearDiagnostics();
+        editor(stage)->setCode(source->code);
+        m_files->setFile(stage, source->name, source->code);
+    }
+    m_diagnostics->clear();
+    m_settingText = wasSetting;
+}
+
+QByteArray ShaderDock::text(ShaderStage stage) const
+{
+    return editor(stage)->code();
+}
+
+QString ShaderDock::filePath(ShaderStage stage) const
+{
+    return m_files->path(stage);
+}
+
+bool ShaderDock::isDirty(ShaderStage stage) const
+{
+    return m_files->isDirty(stage);
+}
+
+bool ShaderDock::hasUnsavedChanges() const
+{
+    return isDirty(ShaderStage::Vertex) || isDirty(ShaderStage::Fragment);
+}
+
+ShaderEditor *ShaderDock::editor(ShaderStage stage) const
+{
+    return stage == ShaderStage::Vertex ? m_vertex : m_fragment;
+}
+
+ShaderStage ShaderDock::currentStage() const
+{
+    return m_tabs->currentWidget() == m_vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
+}
+
+void ShaderDock::showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics)
+{
+    std::vector<ShaderDiagnostic> vertex;
+    std::vector<ShaderDiagnostic> fragment;
+    for (const ShaderDiagnostic &diagnostic : diagnostics) {
+        if (diagnostic.stage == ShaderStage::Vertex)
+            vertex.push_back(diagnostic);
+        else if (diagnostic.stage == ShaderStage::Fragment || diagnostic.line > 0)
+            fragment.push_back(diagnostic);
+    }
+    m_vertex->setDiagnostics(vertex);
+    m_fragment->setDiagnostics(fragment);
+    m_diagnostics->setDiagnostics(diagnostics);
+}
+
+void ShaderDock::setCompileStatus(const QString &text, bool ok)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(ok ? QStringLiteral("color: #2e7d32;") : QStringLiteral("color: #c62828;"));
+}
+
+void ShaderDock::setPreset(ShadingMethod method)
+{
+    const int index = m_presets->findData(shadingName(method));
+    if (index >= 0)
+        m_presets->setCurrentIndex(index); // activated() is for the user's choices only
+}
+
+void ShaderDock::goTo(ShaderStage stage, int line, int column)
+{
+    ShaderEditor *target = editor(stage == ShaderStage::Link ? ShaderStage::Fragment : stage);
+    m_tabs->setCurrentWidget(target);
+    if (line > 0)
+        target->goTo(line, column);
+    else
+        target->setFocus(Qt::OtherFocusReason);
+}
+
+bool ShaderDock::openFiles(const QStringList &paths, QString *error)
+{
+    const auto fail = [error](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    if (paths.isEmpty() || paths.size() > 2)
+        return fail(tr("Open one shader, or a vertex and a fragment shader."));
+    QList<std::pair<ShaderStage, ShaderSource>> opened;
+    for (const QString &path : paths) {
+        const auto stage = stageFromSuffix(path);
+        if (!stage && paths.size() == 2)
+            return fail(tr("%1: cannot tell which stage it is (use .vert or .frag)").arg(path));
+        QString readError;
+        ShaderSource source = ShaderSource::fromFile(path, &readError);
+        if (!readError.isEmpty())
+            return fail(readError);
+        opened.append({stage.value_or(currentStage()), source});
+    }
+    if (opened.size() == 2 && opened[0].first == opened[1].first)
+        return fail(tr("Both files are %1 shaders.").arg(stageName(opened[0].first)));
+
+    const bool wasSetting = std::exchange(m_settingText, true);
+    for (const auto &[stage, source] : opened) {
+        editor(stage)->clearDiagnostics();
+        editor(stage)->setCode(source.code);
+        m_files->setFile(stage, QFileInfo(source.name).absoluteFilePath(), source.code);
+    }
+    m_settingText = wasSetting;
+    m_tabs->setCurrentWidget(editor(opened.last().first));
+    for (const auto &entry : opened)
+        emit textEdited(entry.first);
+    emit filesChanged();
+    return true;
+}
+
+bool ShaderDock::save(ShaderStage stage, QString *error)
+{
+    if (!m_files->save(stage, text(stage), error))
+        return false;
+    editor(stage)->setModified(false); // the save point: undoing back to here is clean
+    return true;
+}
+
+bool ShaderDock::saveAs(ShaderStage stage, const QString &path, QString *error)
+{
+    if (!m_files->saveAs(stage, path, text(stage), error))
+        return false;
+    editor(stage)->setModified(false);
+    return true;
+}
+
+void ShaderDock::chooseAndOpen()
+{
+    const QString current = filePath(currentStage());
+    const QString folder = QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath()
+                                                           : ShaderFileSet::userFolder();
+    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, tr(kShaderFilter));
+    if (paths.isEmpty())
+        return;
+    QList<ShaderStage> replaced;
+    for (const QString &path : paths)
+        replaced << stageFromSuffix(path).value_or(currentStage());
+    if (!confirmDiscard(replaced))
+        return;
+    QString error;
+    if (!openFiles(paths, &error))
+        warn(error);
+}
+
+void ShaderDock::saveCurrent()
+{
+    QString error;
+    if (!save(currentStage(), &error))
+        warn(error);
+}
+
+void ShaderDock::chooseAndSaveAsCurrent()
+{
+    const ShaderStage stage = currentStage();
+    QDir().mkpath(ShaderFileSet::userFolder());
+    const QString name = QFileInfo(filePath(stage)).fileName();
+    const QString suggested = QDir(ShaderFileSet::userFolder()).filePath(name);
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!saveAs(stage, path, &error))
+        warn(error);
+}
+
+bool ShaderDock::confirmDiscard(const QList<ShaderStage> &stages)
+{
+    QStringList dirty;
+    for (ShaderStage stage : stages)
+        if (isDirty(stage))
+            dirty << QFileInfo(filePath(stage)).fileName();
+    if (dirty.isEmpty())
+        return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved changes"),
+        tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
+        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+    return answer == QMessageBox::Discard;
+}
+
+void ShaderDock::updateTab(ShaderStage stage)
+{
+    const QString path = filePath(stage);
+    const QString name = path.isEmpty() ? stageTitle(stage) : QFileInfo(path).fileName();
+    const int index = m_tabs->indexOf(editor(stage));
+    m_tabs->setTabText(index, isDirty(stage) ? name + QLatin1Char('*') : name);
+    QString tip = tr("%1 shader").arg(stageTitle(stage));
+    if (!path.isEmpty())
+        tip += QStringLiteral(": ") + QDir::toNativeSeparators(path);
+    if (m_files->isShipped(path))
+        tip += tr("\nShipped with PhongLab: edits go to a user copy.");
+    m_tabs->setTabToolTip(index, tip);
+}
+
+void ShaderDock::warn(const QString &message)
+{
+    QMessageBox::warning(this, tr("Shaders"), message);
+}
+
+} // namespace phonglab

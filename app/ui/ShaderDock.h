@@ -1,0 +1,101 @@
+#pragma once
+#include "core/ShadingMethod.h"
+#include "render/ShaderDiagnostic.h"
+#include "render/ShaderSource.h"
+
+#include <QDockWidget>
+#include <vector>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QTabWidget;
+
+namespace phonglab {
+
+class DiagnosticList;
+class ShaderEditor;
+class ShaderFileSet;
+
+// The Shaders dock: a vertex and a fragment ShaderEditor in tabs, a preset
+// chooser, Compile (F5), Open, Save and Save As, a status line and the
+// compiler's messages. It compiles nothing itself: it reports edits and
+// requests, and shows what the owner sends back. Nothing here does work
+// per keystroke beyond the editor's own; the owner debounces compiles.
+class ShaderDock : public QDockWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ShaderDock(QWidget *parent = nullptr);
+
+    // Shows both stages; each source's name is its path (or a label such as
+    // ":/shaders/phong.frag"). Both buffers become clean; no textEdited().
+    void setSources(const ShaderSource &vertex, const ShaderSource &fragment);
+    QByteArray text(ShaderStage stage) const;
+    QString filePath(ShaderStage stage) const;
+    bool isDirty(ShaderStage stage) const;
+    bool hasUnsavedChanges() const;
+
+    // Routes each diagnostic to its stage's editor (Link ones to the
+    // fragment editor when they carry a line) and lists them all.
+    void showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
+    // "compiled in 12 ms" (ok) or "2 errors — last good program still running".
+    void setCompileStatus(const QString &text, bool ok);
+    // Selects `method` in the preset box without emitting presetRequested().
+    void setPreset(ShadingMethod method);
+
+    // Without dialogs (tests, command line). openFiles() takes one file or a
+    // .vert/.frag pair; the stage comes from the suffix, else the current tab.
+    bool openFiles(const QStringList &paths, QString *error);
+    bool save(ShaderStage stage, QString *error);
+    bool saveAs(ShaderStage stage, const QString &path, QString *error);
+    // Shows `stage`'s editor (Link: the fragment one) with the cursor at the
+    // 1-based line and column, focused.
+    void goTo(ShaderStage stage, int line, int column);
+
+    ShaderEditor *editor(ShaderStage stage) const;
+    ShaderStage currentStage() const;
+    ShaderFileSet *files() const { return m_files; }
+    DiagnosticList *diagnosticList() const { return m_diagnostics; }
+    QTabWidget *tabs() const { return m_tabs; }
+    QComboBox *presetBox() const { return m_presets; }
+    QLabel *statusLabel() const { return m_status; }
+    QAction *compileAction() const { return m_compileAction; }
+
+public slots:
+    void chooseAndOpen();
+    void saveCurrent();
+    void chooseAndSaveAsCurrent();
+
+signals:
+    // A stage's text changed other than through setSources(): typing, a
+    // reload from disk, Open. Emitted per change; debounce before compiling.
+    void textEdited(phonglab::ShaderStage stage);
+    void compileRequested();
+    void presetRequested(phonglab::ShadingMethod method);
+    // A stage now shows another file (Open, Save As, a user copy of a
+    // shipped shader) or its file was reloaded from disk.
+    void filesChanged();
+
+private:
+    QWidget *createToolBar();
+    void connectEditor(ShaderStage stage);
+    void connectFiles();
+    void setEditorCode(ShaderStage stage, const QByteArray &code);
+    void updateTab(ShaderStage stage);
+    void warn(const QString &message);
+    bool confirmDiscard(const QList<ShaderStage> &stages);
+
+    ShaderEditor *m_vertex = nullptr;
+    ShaderEditor *m_fragment = nullptr;
+    QTabWidget *m_tabs = nullptr;
+    QComboBox *m_presets = nullptr;
+    QLabel *m_status = nullptr;
+    DiagnosticList *m_diagnostics = nullptr;
+    ShaderFileSet *m_files = nullptr;
+    QAction *m_compileAction = nullptr;
+    bool m_settingText = false; // our own setCode(): not an edit
+};
+
+} // namespace phonglab

@@ -1,0 +1,289 @@
+#include "ShaderEditor.h"
+
+#include "GlslApi.h"
+#include "GlslLexer.h"
+
+#include <Qsci/qscistyle.h>
+#include <Qsci/qscistyledtext.h>
+
+#include <QFontDatabase>
+#include <QImage>
+#include <QPainter>
+#include <QPainterPath>
+#include <QShortcut>
+#include <QTimer>
+#include <algorithm>
+#include <map>
+
+namespace phonglab {
+
+namespace {
+
+// Style numbers for the annotation boxes, clear of the C++ lexer's styles
+// (0-27, 32-39 predefined, 64-91 inactive code).
+constexpr int kErrorAnnotationStyle = 120;
+constexpr int kWarningAnnotationStyle = 121;
+constexpr int kLineNumberMargin = 0;
+constexpr int kMarkerMargin = 1;
+constexpr int kDeclarationRefreshMs = 400;
+
+const QColor kErrorColor(0xd7, 0x26, 0x26);
+const QColor kWarningColor(0xe8, 0x8a, 0x00);
+
+// Scintilla has no upward triangle, so the warning marker is painted.
+QImage warningTriangle(int size)
+{
+    QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const qreal m = size * 0.1;
+    QPainterPath triangle;
+    triangle.moveTo(size / 2.0, m);
+    triangle.lineTo(size - m, size - m);
+    triangle.lineTo(m, size - m);
+    triangle.closeSubpath();
+    painter.fillPath(triangle, kWarningColor);
+    painter.setPen(QPen(Qt::white, std::max(1.0, size / 8.0), Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(QPointF(size / 2.0, size * 0.38), QPointF(size / 2.0, size * 0.62));
+    painter.drawPoint(QPointF(size / 2.0, size * 0.76));
+    return image;
+}
+
+QString annotationLine(const ShaderDiagnostic &diagnostic)
+{
+    return (diagnostic.isError() ? QStringLiteral("error: ") : QStringLiteral("warning: ")) + diagnostic.message;
+}
+
+} // namespace
+
+ShaderEditor::ShaderEditor(QWidget *parent)
+    : QsciScintilla(parent)
+    , m_lexer(new GlslLexer(this))
+    , m_api(new GlslApi(m_lexer))
+    , m_declarationTimer(new QTimer(this))
+{
+    setUtf8(true);
+    setLexer(m_lexer); // applies the lexer's fonts and colours to every style
+    setUpAppearance();
+    setUpMargins();
+    setUpDiagnosticStyles();
+    setUpEditing();
+    addShortcuts();
+
+    // Parsing the whole text per keystroke would tax typing in long shaders;
+    // the names are only needed once the user pauses.
+    m_declarationTimer->setSingleShot(true);
+    m_declarationTimer->setInterval(kDeclarationRefreshMs);
+    connect(m_declarationTimer, &QTimer::timeout, this, &ShaderEditor::refreshDeclaredNames);
+    connect(this, &QsciScintilla::textChanged, m_declarationTimer, qOverload<>(&QTimer::start));
+}
+
+void ShaderEditor::setUpAppearance()
+{
+    setCaretLineVisible(true);
+    setCaretLineBackgroundColor(QColor(0xf3, 0xf6, 0xfb));
+    setMatchedBraceBackgroundColor(QColor(0xd8, 0xe8, 0xd0));
+    setUnmatchedBraceForegroundColor(kErrorColor);
+    setAnnotationDisplay(AnnotationBoxed);
+}
+
+void ShaderEditor::setUpMargins()
+{
+    const QFont fixed = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    setMarginsFont(fixed);
+    setMarginType(kLineNumberMargin, NumberMargin);
+    setMarginLineNumbers(kLineNumberMargin, true);
+    setMarginWidth(kLineNumberMargin, QStringLiteral("00000"));
+
+    m_errorMarker = markerDefine(Circle);
+    setMarkerBackgroundColor(kErrorColor, m_errorMarker);
+    setMarkerForegroundColor(kErrorColor.darker(130), m_errorMarker);
+    const int lineHeight = QFontMetrics(fixed).height();
+    m_warningMarker = markerDefine(warningTriangle(std::max(10, lineHeight - 2)));
+
+    setMarginType(kMarkerMargin, SymbolMargin);
+    setMarginWidth(kMarkerMargin, lineHeight + 4);
+    setMarginMarkerMask(kMarkerMargin, (1 << m_errorMarker) | (1 << m_warningMarker));
+}
+
+void ShaderEditor::setUpDiagnosticStyles()
+{
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setPointSizeF(font.pointSizeF() * 0.9);
+    QsciStyle(kErrorAnnotationStyle, tr("Error annotation"), QColor(0x8b, 0x0d, 0x0d),
+              QColor(0xfd, 0xe8, 0xe8), font)
+        .apply(this);
+    QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00),
+              QColor(0xfd, 0xf3, 0xdc), font)
+        .apply(this);
+
+    m_errorIndicator = indicatorDefine(SquiggleIndicator);
+    setIndicatorForegroundColor(kErrorColor, m_errorIndicator);
+    m_warningIndicator = indicatorDefine(SquiggleIndicator);
+    setIndicatorForegroundColor(kWarningColor, m_warningIndicator);
+}
+
+void ShaderEditor::setUpEditing()
+{
+    setTabWidth(4);
+    setIndentationsUseTabs(false);
+    setIndentationWidth(4);
+    setAutoIndent(true);
+    setBackspaceUnindents(true);
+    setBraceMatching(SloppyBraceMatch);
+    setEolMode(EolUnix);
+
+    setAutoCompletionSource(AcsAll);
+    setAutoCompletionThreshold(2);
+    setAutoCompletionCaseSensitivity(true);
+    setAutoCompletionUseSingle(AcusNever);
+    setCallTipsStyle(CallTipsNoContext);
+    setCallTipsVisible(0); // all matching tips
+    setCallTipsPosition(CallTipsBelowText);
+}
+
+void ShaderEditor::addShortcuts()
+{
+    auto *complete = new QShortcut(QKeySequence(tr("Ctrl+Space")), this, nullptr, nullptr, Qt::WidgetShortcut);
+    connect(complete, &QShortcut::activated, this, [this] {
+        refreshDeclaredNames();
+        autoCompleteFromAll();
+    });
+    auto *tip = new QShortcut(QKeySequence(tr("Ctrl+Shift+Space")), this, nullptr, nullptr, Qt::WidgetShortcut);
+    connect(tip, &QShortcut::activated, this, &ShaderEditor::callTip);
+}
+
+QByteArray ShaderEditor::code() const
+{
+    return bytes(0, length());
+}
+
+void ShaderEditor::setCode(const QByteArray &code)
+{
+    SendScintilla(SCI_SETTEXT, code.constData());
+    SendScintilla(SCI_EMPTYUNDOBUFFER);
+    setModified(false);
+    refreshDeclaredNames();
+}
+
+void ShaderEditor::refreshDeclaredNames()
+{
+    m_declarationTimer->stop();
+    m_api->setDeclaredNames(GlslApi::parseDeclaredNames(text()));
+}
+
+void ShaderEditor::clearDiagnostics()
+{
+    markerDeleteAll(m_errorMarker);
+    markerDeleteAll(m_warningMarker);
+    clearAnnotations();
+    clearIndicator(m_errorIndicator);
+    clearIndicator(m_warningIndicator);
+}
+
+void ShaderEditor::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics)
+{
+    clearDiagnostics();
+    const int lastLine = std::max(0, lines() - 1);
+    std::map<int, std::vector<const ShaderDiagnostic *>> byLine;
+    for (const ShaderDiagnostic &diagnostic : diagnostics) {
+        if (diagnostic.line <= 0)
+            continue;
+        const int line = std::min(diagnostic.line - 1, lastLine);
+        byLine[line].push_back(&diagnostic);
+        markerAdd(line, diagnostic.isError() ? m_errorMarker : m_warningMarker);
+        if (diagnostic.column > 0 && diagnostic.line - 1 <= lastLine)
+            underline(line, diagnostic.column, indicatorFor(diagnostic.severity));
+    }
+    for (const auto &[line, onLine] : byLine)
+        annotateLine(line, onLine);
+}
+
+void ShaderEditor::annotateLine(int line, const std::vector<const ShaderDiagnostic *> &diagnostics)
+{
+    QStringList messages;
+    QList<int> styles;
+    for (const ShaderDiagnostic *diagnostic : diagnostics) {
+        const QString text = annotationLine(*diagnostic);
+        if (messages.contains(text))
+            continue; // drivers repeat some messages verbatim
+        messages << text;
+        styles << (diagnostic->isError() ? kErrorAnnotationStyle : kWarningAnnotationStyle);
+    }
+    QList<QsciStyledText> texts;
+    for (qsizetype i = 0; i < messages.size(); ++i) {
+        const bool last = i + 1 == messages.size();
+        texts << QsciStyledText(last ? messages[i] : messages[i] + QLatin1Char('\n'), styles[i]);
+    }
+    annotate(line, texts);
+}
+
+void ShaderEditor::underline(int line, int column, int indicator)
+{
+    const long lineEnd = SendScintilla(SCI_GETLINEENDPOSITION, line);
+    long start = std::min<long>(positionFromLineIndex(line, column - 1), lineEnd);
+    long end = SendScintilla(SCI_WORDENDPOSITION, start, 1L);
+    if (end <= start) {
+        // Not on a word (an operator, or past the text): mark one character.
+        if (start == lineEnd && start > SendScintilla(SCI_POSITIONFROMLINE, line))
+            start = SendScintilla(SCI_POSITIONBEFORE, start);
+        end = SendScintilla(SCI_POSITIONAFTER, start);
+    }
+    SendScintilla(SCI_SETINDICATORCURRENT, indicator);
+    SendScintilla(SCI_INDICATORFILLRANGE, start, end - start);
+}
+
+void ShaderEditor::clearIndicator(int indicator)
+{
+    SendScintilla(SCI_SETINDICATORCURRENT, indicator);
+    SendScintilla(SCI_INDICATORCLEARRANGE, 0UL, length());
+}
+
+int ShaderEditor::indicatorFor(ShaderDiagnostic::Severity severity) const
+{
+    return severity == ShaderDiagnostic::Severity::Error ? m_errorIndicator : m_warningIndicator;
+}
+
+int ShaderEditor::markerNumber(ShaderDiagnostic::Severity severity) const
+{
+    return severity == ShaderDiagnostic::Severity::Error ? m_errorMarker : m_warningMarker;
+}
+
+QList<int> ShaderEditor::markerLines(ShaderDiagnostic::Severity severity) const
+{
+    QList<int> result;
+    const unsigned mask = 1u << markerNumber(severity);
+    for (int line = markerFindNext(0, mask); line >= 0; line = markerFindNext(line + 1, mask))
+        result << line + 1;
+    return result;
+}
+
+QString ShaderEditor::annotationText(int line) const
+{
+    return annotation(line - 1);
+}
+
+QString ShaderEditor::underlinedText(int line) const
+{
+    const long start = SendScintilla(SCI_POSITIONFROMLINE, line - 1);
+    const long end = SendScintilla(SCI_GETLINEENDPOSITION, line - 1);
+    QByteArray covered;
+    for (long pos = start; pos < end; ++pos) {
+        const bool marked = SendScintilla(SCI_INDICATORVALUEAT, m_errorIndicator, pos)
+                         || SendScintilla(SCI_INDICATORVALUEAT, m_warningIndicator, pos);
+        if (marked)
+            covered += static_cast<char>(SendScintilla(SCI_GETCHARAT, pos));
+    }
+    return QString::fromUtf8(covered);
+}
+
+void ShaderEditor::goTo(int line, int column)
+{
+    const int target = std::clamp(line - 1, 0, std::max(0, lines() - 1));
+    setCursorPosition(target, std::max(0, column - 1));
+    ensureLineVisible(target);
+    setFocus(Qt::OtherFocusReason);
+}
+
+} // namespace phonglab

@@ -1,0 +1,77 @@
+#pragma once
+#include "render/ShaderDiagnostic.h"
+
+#include <Qsci/qsciscintilla.h>
+
+#include <QList>
+#include <vector>
+
+class QTimer;
+
+namespace phonglab {
+
+class GlslApi;
+class GlslLexer;
+
+// A GLSL source editor: highlighting, line numbers, brace matching,
+// auto-indent, completion of built-ins and of the program's own names, call
+// tips, and compiler diagnostics shown where they point: a margin marker
+// (red circle for errors, orange triangle for warnings), a boxed message
+// under the line and a squiggle under the word at the reported column.
+class ShaderEditor : public QsciScintilla
+{
+    Q_OBJECT
+
+public:
+    explicit ShaderEditor(QWidget *parent = nullptr);
+
+    // The text as bytes, and replacing it without an undo step: the
+    // document is left unmodified (its save point is the new text).
+    QByteArray code() const;
+    void setCode(const QByteArray &code);
+
+    // Replaces all markers, annotations and squiggles. Diagnostics without
+    // a line are left to the diagnostic list; lines past the end go on the
+    // last line.
+    void setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
+    void clearDiagnostics();
+
+    // For tests and tools: 1-based lines holding a marker of `severity`,
+    // the annotation under 1-based `line`, and the text a diagnostic
+    // squiggle covers on that line (empty if none).
+    QList<int> markerLines(ShaderDiagnostic::Severity severity) const;
+    QString annotationText(int line) const;
+    QString underlinedText(int line) const;
+    int markerNumber(ShaderDiagnostic::Severity severity) const;
+
+    // Puts the cursor on 1-based `line` and `column` (0 = line start), scrolls
+    // there and takes the focus.
+    void goTo(int line, int column);
+
+    GlslLexer *glslLexer() const { return m_lexer; }
+    GlslApi *api() const { return m_api; }
+    // Re-reads the names the program declares for completion. Runs by itself
+    // shortly after typing pauses; call it to have them at once.
+    void refreshDeclaredNames();
+
+private:
+    void setUpAppearance();
+    void setUpMargins();
+    void setUpDiagnosticStyles();
+    void setUpEditing();
+    void addShortcuts();
+    void annotateLine(int line, const std::vector<const ShaderDiagnostic *> &diagnostics);
+    void underline(int line, int column, int indicator);
+    void clearIndicator(int indicator);
+    int indicatorFor(ShaderDiagnostic::Severity severity) const;
+
+    GlslLexer *m_lexer = nullptr;
+    GlslApi *m_api = nullptr;
+    QTimer *m_declarationTimer = nullptr;
+    int m_errorMarker = -1;
+    int m_warningMarker = -1;
+    int m_errorIndicator = -1;
+    int m_warningIndicator = -1;
+};
+
+} // namespace phonglab
