@@ -172,9 +172,16 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     std::vector<std::uint32_t> next;                          // the vertex made before it, per vertex
     std::vector<char> crowded(positions.size(), 0);
     std::unordered_map<Key, std::uint32_t, KeyHash> crowdedVertex;
-    next.reserve(positions.size());
-    out.positions.reserve(positions.size());
-    out.normals.reserve(positions.size());
+    // Room for every vertex up front: growing 100 MB of vertices by doubling
+    // costs more in copies and fresh pages than the welding itself. Flat
+    // shading gives about one vertex per corner; otherwise each normal
+    // usually serves one position (crease groups, file normals per vertex).
+    const std::size_t expected = normals.indexing == CornerNormals::Indexing::PerTriangle
+        ? triPositions.size()
+        : std::min(triPositions.size(), std::max(positions.size(), normals.normals.size()));
+    next.reserve(expected);
+    out.positions.reserve(expected);
+    out.normals.reserve(expected);
     out.indices.resize(triPositions.size());
     std::size_t positionsUsed = 0;
 

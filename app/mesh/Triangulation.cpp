@@ -17,6 +17,23 @@ double orient(const Point2 &o, const Point2 &a, const Point2 &b)
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
+// Whether the outline turns left at b, by more than rounding: a corner
+// that sits on the line through its neighbours (to within a sine of 1e-6,
+// float positions being no more exact) counts as no turn, so it is never
+// cut off as a flat sliver and it still blocks ears that would cover it.
+bool turnsLeft(const Point2 &a, const Point2 &b, const Point2 &c)
+{
+    const double abx = b.x - a.x, aby = b.y - a.y, bcx = c.x - b.x, bcy = c.y - b.y;
+    return orient(a, b, c) > 1e-6 * std::sqrt((abx * abx + aby * aby) * (bcx * bcx + bcy * bcy));
+}
+
+// Whether p lies left of the line a → b or on it, to the same tolerance.
+bool leftOrOn(const Point2 &a, const Point2 &b, const Point2 &p)
+{
+    const double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    return orient(a, b, p) >= -1e-6 * std::sqrt((abx * abx + aby * aby) * (apx * apx + apy * apy));
+}
+
 // Which half of the circle an edge direction points into: [0, π) or [π, 2π).
 int half(const Point2 &from, const Point2 &to)
 {
@@ -36,7 +53,7 @@ public:
 private:
     bool project(std::span<const glm::vec3> positions, const std::uint32_t *polygon, std::uint32_t n);
     bool isConvex() const;
-    bool isReflex(std::uint32_t i) const { return orient(m_points[m_prev[i]], m_points[i], m_points[m_next[i]]) <= 0.0; }
+    bool isReflex(std::uint32_t i) const { return !turnsLeft(m_points[m_prev[i]], m_points[i], m_points[m_next[i]]); }
     bool isEar(std::uint32_t i) const;
     void emit(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
@@ -88,7 +105,7 @@ bool PolygonTriangulator::isConvex() const
         const Point2 &a = m_points[i];
         const Point2 &b = m_points[(i + 1) % n];
         const Point2 &c = m_points[(i + 2) % n];
-        if (orient(a, b, c) <= 0.0)
+        if (!turnsLeft(a, b, c))
             return false;
         if (half(a, b) == 1 && half(b, c) == 0)
             ++wraps;
@@ -104,7 +121,7 @@ bool PolygonTriangulator::isEar(std::uint32_t i) const
 {
     const std::uint32_t prev = m_prev[i], next = m_next[i];
     const Point2 &a = m_points[prev], &b = m_points[i], &c = m_points[next];
-    if (orient(a, b, c) <= 0.0)
+    if (!turnsLeft(a, b, c))
         return false;
     for (std::uint32_t j = m_next[next]; j != prev; j = m_next[j]) {
         if (!m_reflex[j])
@@ -112,7 +129,7 @@ bool PolygonTriangulator::isEar(std::uint32_t i) const
         const Point2 &p = m_points[j];
         if (p == a || p == b || p == c)
             continue;
-        if (orient(a, b, p) >= 0.0 && orient(b, c, p) >= 0.0 && orient(c, a, p) >= 0.0)
+        if (leftOrOn(a, b, p) && leftOrOn(b, c, p) && leftOrOn(c, a, p))
             return false;
     }
     return true;
@@ -182,8 +199,8 @@ bool PolygonTriangulator::run(std::span<const glm::vec3> positions, const std::u
             reflexCount += int(reflex) - int(m_reflex[k]);
             m_reflex[k] = reflex;
         }
-        // Continue from the previous corner: it is the likeliest new ear,
-        // and walking on keeps the triangles from all sharing one corner.
+        // Continue from the previous corner: its turn just changed, so it
+        // is the likeliest new ear.
         i = prev;
     }
     emit(m_prev[i], i, m_next[i]);

@@ -20,10 +20,12 @@ struct Triangulation {
     std::size_t triangleCount() const { return corners.size() / 3; }
 };
 
-// Triangles pass through; convex polygons become a fan; other polygons are
-// ear-clipped in the plane of their Newell normal, and where that fails
-// (self-intersecting or degenerate outlines) the rest is fanned. Triangles
-// wind like the polygon: their normals agree with its Newell normal.
+// Triangles pass through; quads split along whichever diagonal keeps both
+// halves facing the quad's way; other convex polygons become a fan; the
+// rest are ear-clipped in the plane of their Newell normal, and where that
+// fails (self-intersecting or degenerate outlines) the remainder is
+// fanned. Triangles wind like the polygon: their normals agree with its
+// Newell normal.
 Triangulation triangulate(const PolygonMesh &mesh);
 
 // The polygon's Newell normal (not normalised): the area-weighted normal of

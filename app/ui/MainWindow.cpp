@@ -1,17 +1,22 @@
 #include "MainWindow.h"
 
 #include "FileTypes.h"
+#include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
 #include "MeshStatsText.h"
 #include "RecentFiles.h"
 #include "SceneDock.h"
 #include "SceneLoadJob.h"
 #include "SceneLoadRequests.h"
+#include "ShaderDock.h"
+#include "ShaderEditor.h"
+#include "ShaderRecovery.h"
 #include "Viewport.h"
 #include "core/SceneJson.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -20,6 +25,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace phonglab {
 
@@ -60,10 +66,17 @@ MainWindow::MainWindow(QWidget *parent)
     , m_viewport(new Viewport(this))
     , m_loadJob(new SceneLoadJob(m_viewport, this))
     , m_sceneDock(new SceneDock(this))
+    , m_shaderDock(new ShaderDock(this))
 {
     setCentralWidget(m_viewport);
     addDockWidget(Qt::RightDockWidgetArea, m_sceneDock);
+    // Tabbed with the Scene dock so the viewport keeps its width; the code is
+    // what a shader playground opens on.
+    addDockWidget(Qt::RightDockWidgetArea, m_shaderDock);
+    tabifyDockWidget(m_sceneDock, m_shaderDock);
+    m_shaderDock->raise();
     resizeDocks({m_sceneDock}, {kSceneDockWidth}, Qt::Horizontal);
+    createShaderDock();
     createFileMenu();
     createViewMenu();
     createStatusBar();
@@ -74,6 +87,70 @@ MainWindow::MainWindow(QWidget *parent)
     // dialog must not be opened.
     connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError, Qt::QueuedConnection);
     setScenePath({});
+}
+
+// Out of line: LiveShaderController's destructor (a clean exit: the journal
+// goes) runs with the dock and the viewport still alive.
+MainWindow::~MainWindow()
+{
+    delete m_liveShaders;
+}
+
+void MainWindow::createShaderDock()
+{
+    m_liveShaders = new LiveShaderController(m_shaderDock, m_viewport, this);
+    connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(), &QStatusBar::showMessage);
+    connect(m_viewport, &Viewport::sceneChanged, this,
+            [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
+    // Tests answer through the environment at once; a person is asked once
+    // the window is up.
+    if (ShaderRecovery::answerFromEnvironment() != ShaderRecovery::Answer::Ask)
+        m_liveShaders->offerRecovery(this);
+    else
+        QTimer::singleShot(0, this, [this] { m_liveShaders->offerRecovery(this); });
+    if (qEnvironmentVariableIsSet("PHONGLAB_TEST_TYPE_AFTER_START"))
+        connect(m_viewport, &Viewport::glInitialized, this, &MainWindow::typeTestTextAfterStart,
+                Qt::SingleShotConnection);
+}
+
+// For the crash-recovery test: an edit made by "the user" in a process the
+// test then kills. Typed as an edit, and journaled at once.
+void MainWindow::typeTestTextAfterStart()
+{
+    ShaderEditor *editor = m_shaderDock->editor(ShaderStage::Fragment);
+    editor->append(qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START"));
+    m_liveShaders->recovery()->writeNow();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (confirmUnsavedShaders())
+        event->accept();
+    else
+        event->ignore();
+}
+
+// A clean exit forgets the recovery journal, so unsaved shader edits are
+// offered for saving first.
+bool MainWindow::confirmUnsavedShaders()
+{
+    if (!m_shaderDock->hasUnsavedChanges())
+        return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved shader changes"), tr("The shaders have unsaved changes. Save them before quitting?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Discard)
+        return true;
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        QString error;
+        if (m_shaderDock->isDirty(stage) && !m_shaderDock->save(stage, &error)) {
+            warn(tr("Cannot save shader"), error);
+            return false;
+        }
+    }
+    return true;
 }
 
 void MainWindow::createFileMenu()
@@ -116,6 +193,9 @@ void MainWindow::createViewMenu()
     QAction *dock = m_sceneDock->toggleViewAction();
     dock->setText(tr("&Scene Dock"));
     view->addAction(dock);
+    QAction *shaders = m_shaderDock->toggleViewAction();
+    shaders->setText(tr("S&haders Dock"));
+    view->addAction(shaders);
 }
 
 void MainWindow::createStatusBar()

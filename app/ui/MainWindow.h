@@ -8,21 +8,26 @@ class QLabel;
 
 namespace phonglab {
 
+class LiveShaderController;
 class LoadProgressWidget;
 class RecentFiles;
 class SceneDock;
 class SceneLoadJob;
+class ShaderDock;
 class Viewport;
 
-// The editor window: the Viewport in the middle, the Scene dock on the
-// right, File and View menus, and a status bar with load progress, frame
-// time, triangle count and the OpenGL renderer.
+// The editor window: the Viewport in the middle, the Shaders dock (live
+// editing: LiveShaderController) tabbed with the Scene dock on the right,
+// File and View menus, and a status bar with load progress, frame time,
+// triangle count and the OpenGL renderer. At start it offers the shader
+// edits a crashed session left behind (ShaderRecovery).
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
 
 public:
     explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
 
     // Load / save without any dialog, on the calling thread (startup, tests);
     // false with a reason on failure. A failed open keeps the current scene;
@@ -43,6 +48,8 @@ public:
     Viewport *viewport() const { return m_viewport; }
     SceneLoadJob *loadJob() const { return m_loadJob; }
     SceneDock *sceneDock() const { return m_sceneDock; }
+    ShaderDock *shaderDock() const { return m_shaderDock; }
+    LiveShaderController *liveShaders() const { return m_liveShaders; }
     RecentFiles *recentFiles() const { return m_recentFiles; }
     LoadProgressWidget *loadProgress() const { return m_loadProgress; }
 
@@ -59,7 +66,13 @@ private slots:
     void showLoadCancelled(const QString &label);
     void refreshSceneDock();
 
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
 private:
+    void createShaderDock();
+    void typeTestTextAfterStart();
+    bool confirmUnsavedShaders();
     void createFileMenu();
     void createViewMenu();
     void createStatusBar();
@@ -72,6 +85,8 @@ private:
     Viewport *m_viewport = nullptr;
     SceneLoadJob *m_loadJob = nullptr;
     SceneDock *m_sceneDock = nullptr;
+    ShaderDock *m_shaderDock = nullptr;
+    LiveShaderController *m_liveShaders = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     LoadProgressWidget *m_loadProgress = nullptr;
     QAction *m_resetCameraAction = nullptr;

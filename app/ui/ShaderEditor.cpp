@@ -156,7 +156,12 @@ void ShaderEditor::addShortcuts()
 
 QByteArray ShaderEditor::code() const
 {
-    return bytes(0, length());
+    const int size = length();
+    QByteArray text = bytes(0, size);
+    // bytes() hands back Scintilla's buffer with its terminating NUL.
+    if (text.size() == size + 1)
+        text.chop(1);
+    return text;
 }
 
 void ShaderEditor::setCode(const QByteArray &code)
@@ -281,7 +286,9 @@ QString ShaderEditor::underlinedText(int line) const
 void ShaderEditor::goTo(int line, int column)
 {
     const int target = std::clamp(line - 1, 0, std::max(0, lines() - 1));
-    setCursorPosition(target, std::max(0, column - 1));
+    // Columns past the end would run on into the next line.
+    const int lineChars = int(text(target).remove(QLatin1Char('\n')).remove(QLatin1Char('\r')).size());
+    setCursorPosition(target, std::clamp(column - 1, 0, lineChars));
     ensureLineVisible(target);
     setFocus(Qt::OtherFocusReason);
 }

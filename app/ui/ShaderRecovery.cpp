@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QLocale>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QTimer>
 
 namespace phonglab {
@@ -65,12 +66,12 @@ ShaderRecovery::Outcome ShaderRecovery::offer(Answer answer, QWidget *parent)
     const bool yes = answer == Answer::Ask ? ask(session, parent) : answer == Answer::Restore;
     if (!yes) {
         m_journal.discard(session.id);
-        return {false, false, tr("Discarded the shader edits recovered from %1").arg(when(session.record.savedAt))};
+        return {false, false, tr("Discarded the shader edits recovered from %1").arg(when(session.record.savedAt)), {}};
     }
     restore(session);
     m_journal.discard(session.id); // from now on this session's journal holds them
     writeNow();
-    Outcome outcome{true, session.runningHash.has_value(), {}};
+    Outcome outcome{true, session.runningHash.has_value(), {}, session.record.shading};
     if (!outcome.suspect)
         outcome.note = tr("Restored the shader edits recovered from %1").arg(when(session.record.savedAt));
     else if (session.isSuspect())
@@ -95,7 +96,7 @@ bool ShaderRecovery::ask(const OrphanedSession &session, QWidget *parent) const
         box.setInformativeText(tr("A new shader was running when it stopped; it will not be compiled "
                                   "until you press F5."));
     box.exec();
-    return box.clickedButton() == restore;
+    return box.clickedButton() == static_cast<QAbstractButton *>(restore);
 }
 
 void ShaderRecovery::restore(const OrphanedSession &session)

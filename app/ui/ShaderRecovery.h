@@ -27,7 +27,8 @@ public:
         // The dead session was trying a new program when it died: the
         // restored text must not be compiled until the user asks.
         bool suspect = false;
-        QString note; // for the status line
+        QString note;    // for the status line
+        QString shading; // the preset the restored buffers came from
     };
 
     explicit ShaderRecovery(ShaderDock *dock, QObject *parent = nullptr);

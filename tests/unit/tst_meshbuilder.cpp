@@ -9,6 +9,7 @@
 #include <QtTest>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -101,6 +102,7 @@ private slots:
     void quadAndPentagonKeepWinding();
     void concavePolygon_data();
     void concavePolygon();
+    void randomStarPolygons();
     void bowtieFallsBackToFan();
     void autoWithPartialNormalsComputes();
     void unusableFileNormalsAreReplaced();
@@ -238,9 +240,9 @@ void TestMeshBuilder::concavePolygon_data()
 {
     // The L: a 2×2 square missing its upper right quarter, area 3, reflex
     // at (1, 1). The dart: a quad whose fourth corner (0.5, 1) is pushed
-    // inside, area 1.5. Each is tried with every corner first, so the
-    // reflex corner sits at every place in the order; a fan from the wrong
-    // corner (or the wrong diagonal of the dart) covers ground outside.
+    // inside, area 1.5. Each outline is tried with every corner first, so
+    // the awkward corner sits at every place in the order; a fan from the
+    // wrong corner (or the dart's wrong diagonal) covers ground outside.
     QTest::addColumn<QList<QPointF>>("outline");
     QTest::addColumn<int>("rotation");
     QTest::addColumn<double>("area");
@@ -250,6 +252,11 @@ void TestMeshBuilder::concavePolygon_data()
         QTest::addRow("L, start %d", r) << ell << r << 3.0;
     for (int r = 0; r < 4; ++r)
         QTest::addRow("dart, start %d", r) << dart << r << 1.5;
+    // A square with a corner in the middle of an edge: not strictly convex,
+    // and no triangle may come out flat along that edge.
+    const QList<QPointF> midpoint = {{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}};
+    for (int r = 0; r < 5; ++r)
+        QTest::addRow("midpoint, start %d", r) << midpoint << r << 4.0;
 }
 
 void TestMeshBuilder::concavePolygon()
@@ -288,6 +295,46 @@ void TestMeshBuilder::concavePolygon()
         QVERIFY2(insidePolygon(plane, local), qPrintable(QStringLiteral("triangle %1 outside").arg(t)));
     }
     QVERIFY2(std::abs(sum - area) < 1e-5, qPrintable(QString::number(sum)));
+}
+
+void TestMeshBuilder::randomStarPolygons()
+{
+    // Star-shaped polygons (corners at increasing angles, random radii) are
+    // simple but deeply concave. Each must come out as n − 2 triangles, all
+    // facing the polygon's way, with areas summing to the polygon's.
+    std::mt19937 random(20240611);
+    const auto uniform = [&] { return double(random()) / double(std::mt19937::max()); };
+    for (int round = 0; round < 200; ++round) {
+        const int n = 4 + int(uniform() * 40);
+        PolygonMesh mesh;
+        std::vector<glm::dvec2> plane;
+        for (int k = 0; k < n; ++k) {
+            const double angle = 2.0 * std::numbers::pi * (k + 0.8 * uniform()) / n;
+            const double radius = 0.2 + uniform();
+            plane.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+            mesh.positions.push_back(tilted(plane.back().x, plane.back().y));
+            mesh.cornerPosition.push_back(std::uint32_t(k));
+        }
+        mesh.faceStart.push_back(std::uint32_t(n));
+        double area = 0.0;
+        for (int k = 0; k < n; ++k) {
+            const glm::dvec2 &p = plane[k], &q = plane[(k + 1) % n];
+            area += (p.x * q.y - q.x * p.y) / 2;
+        }
+
+        const Triangulation triangulation = triangulate(mesh);
+        QCOMPARE(triangulation.fanFallbacks, 0u);
+        QCOMPARE(int(triangulation.triangleCount()), n - 2);
+        double sum = 0.0;
+        for (std::size_t t = 0; t < triangulation.corners.size(); t += 3) {
+            const glm::dvec2 &a = plane[triangulation.corners[t]], &b = plane[triangulation.corners[t + 1]],
+                             &c = plane[triangulation.corners[t + 2]];
+            const double doubleArea = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+            QVERIFY2(doubleArea > 0.0, qPrintable(QStringLiteral("round %1: triangle %2 flipped").arg(round).arg(t / 3)));
+            sum += doubleArea / 2;
+        }
+        QVERIFY2(std::abs(sum - area) < 1e-5, qPrintable(QStringLiteral("round %1: %2 vs %3").arg(round).arg(sum).arg(area)));
+    }
 }
 
 void TestMeshBuilder::bowtieFallsBackToFan()

@@ -1,0 +1,338 @@
+#include "LiveShaderController.h"
+
+#include "ShaderDock.h"
+#include "ShaderFileSet.h"
+#include "ShaderRecovery.h"
+#include "Viewport.h"
+#include "core/RecoveryJournal.h"
+#include "core/ResourcePaths.h"
+#include "render/BackgroundProgramBuilder.h"
+
+#include <QSettings>
+#include <QTimer>
+
+namespace phonglab {
+
+namespace {
+
+constexpr int kDefaultDebounceMs = 300;
+constexpr int kStatusTimeoutMs = 8000;
+// A new program is trusted once it has drawn this many frames, or one frame
+// and this much time: then a crash is no longer blamed on it.
+constexpr int kProvenFrames = 3;
+constexpr int kProvenAfterMs = 1000;
+
+std::pair<ShaderSource, ShaderSource> shippedSources(ShadingMethod method, QString *error)
+{
+    const QString name = shadingName(method);
+    return {ShaderSource::fromFile(shaderPath(name + QStringLiteral(".vert")), error),
+            ShaderSource::fromFile(shaderPath(name + QStringLiteral(".frag")), error)};
+}
+
+double toMs(qint64 ns)
+{
+    return double(ns) / 1e6;
+}
+
+} // namespace
+
+LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent)
+    : QObject(parent)
+    , m_dock(dock)
+    , m_viewport(viewport)
+    , m_builder(new BackgroundProgramBuilder(this))
+    , m_recovery(new ShaderRecovery(dock, this))
+    , m_debounce(new QTimer(this))
+    , m_provenTimer(new QTimer(this))
+    , m_debounceMs(QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
+{
+    m_forceGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(std::max(0, m_debounceMs));
+    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(false); });
+    m_provenTimer->setSingleShot(true);
+    m_provenTimer->setInterval(kProvenAfterMs);
+    connect(m_provenTimer, &QTimer::timeout, this, &LiveShaderController::checkNewProgramProven);
+    connect(m_builder, &BackgroundProgramBuilder::built, this, &LiveShaderController::onBuilt);
+    connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
+    connect(m_viewport, &Viewport::glAboutToBeReleased, this, &LiveShaderController::onGlAboutToBeReleased);
+    connect(m_viewport, &Viewport::frameRendered, this, &LiveShaderController::onFrameRendered);
+    connectDock();
+    showPreset(m_viewport->currentScene().shading);
+}
+
+LiveShaderController::~LiveShaderController()
+{
+    m_builder->stop();
+    m_recovery->clear();
+}
+
+void LiveShaderController::connectDock()
+{
+    connect(m_dock, &ShaderDock::textEdited, this, &LiveShaderController::onTextEdited);
+    connect(m_dock, &ShaderDock::compileRequested, this, &LiveShaderController::buildNow);
+    connect(m_dock, &ShaderDock::presetRequested, this, &LiveShaderController::applyPreset);
+    connect(m_dock, &ShaderDock::filesChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
+    connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
+}
+
+QByteArray LiveShaderController::currentHash() const
+{
+    return recoveryTextHash(m_dock->text(ShaderStage::Vertex), m_dock->text(ShaderStage::Fragment));
+}
+
+bool LiveShaderController::buildsOnWorker() const
+{
+    return m_builder->isRunning();
+}
+
+void LiveShaderController::setWarmUp(bool warm)
+{
+    m_builder->setWarmUp(warm);
+}
+
+void LiveShaderController::showPreset(ShadingMethod method)
+{
+    QString error;
+    const auto [vertex, fragment] = shippedSources(method, &error);
+    if (!error.isEmpty()) {
+        m_dock->setCompileStatus(error, false);
+        return;
+    }
+    m_dock->setSources(vertex, fragment);
+    m_dock->setPreset(method);
+    m_shading = method;
+    m_recovery->setShading(shadingName(method));
+}
+
+void LiveShaderController::applyPreset(ShadingMethod method)
+{
+    showPreset(method);
+    m_viewport->setShading(method); // so Save writes the method in use
+    m_holdAutoBuild = false;
+    requestBuild(true);
+}
+
+void LiveShaderController::followSceneShading(ShadingMethod method)
+{
+    if (method == m_shading)
+        return;
+    if (!m_dock->hasUnsavedChanges()) {
+        showPreset(method); // what the viewport has just loaded
+        m_appliedHash = m_lastBuiltHash = currentHash();
+        return;
+    }
+    // Unsaved edits are never replaced behind the user's back: they stay,
+    // are built again over the scene's program, and the scene follows them.
+    m_viewport->setShading(m_shading);
+    emit statusMessage(tr("Kept your unsaved shader edits; the scene's %1 shading was not loaded (choose it "
+                          "in the Shaders dock to switch)").arg(shadingName(method)), kStatusTimeoutMs);
+    if (!m_holdAutoBuild)
+        requestBuild(true);
+}
+
+void LiveShaderController::buildNow()
+{
+    m_debounce->stop();
+    m_holdAutoBuild = false;
+    requestBuild(true);
+}
+
+void LiveShaderController::offerRecovery(QWidget *dialogParent)
+{
+    const ShaderRecovery::Outcome outcome = m_recovery->offer(ShaderRecovery::answerFromEnvironment(), dialogParent);
+    if (outcome.note.isEmpty())
+        return;
+    if (outcome.restored) {
+        if (const auto method = shadingFromName(outcome.shading)) {
+            m_shading = *method; // the preset the restored buffers came from
+            m_dock->setPreset(*method);
+        }
+        m_holdAutoBuild = outcome.suspect;
+        m_debounce->stop(); // restoring typed the text in again; build it once, below
+        if (!outcome.suspect)
+            requestBuild(false);
+    }
+    m_dock->setCompileStatus(outcome.note, !outcome.suspect);
+    emit statusMessage(outcome.note, 0);
+}
+
+void LiveShaderController::onTextEdited()
+{
+    m_recovery->noteEdited();
+    if (!m_holdAutoBuild)
+        m_debounce->start();
+}
+
+void LiveShaderController::onGlInitialized()
+{
+    m_glReady = true;
+    // The viewport has just built its scene's shipped program itself.
+    QString error;
+    const auto [vertex, fragment] = shippedSources(m_viewport->currentScene().shading, &error);
+    m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
+    startWorker();
+    const bool wanted = std::exchange(m_buildWhenReady, false);
+    if (m_holdAutoBuild)
+        return;
+    if (wanted || currentHash() != m_appliedHash)
+        requestBuild(false);
+}
+
+void LiveShaderController::onGlAboutToBeReleased()
+{
+    // The worker's context shares with the one going away; a new one comes
+    // with the next glInitialized().
+    m_builder->stop();
+    m_glReady = false;
+    m_inFlight = 0;
+    m_pending = false;
+}
+
+void LiveShaderController::startWorker()
+{
+    if (m_forceGuiThread) {
+        emit statusMessage(tr("Shaders compile on the GUI thread (PHONGLAB_COMPILE_ON_GUI_THREAD)"), kStatusTimeoutMs);
+        return;
+    }
+    QString error;
+    const int samples = std::max(0, m_viewport->format().samples());
+    if (!m_builder->start(m_viewport->context(), samples, &error)) {
+        qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(error));
+        emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1")
+                               .arg(error), 0);
+        return;
+    }
+    qInfo("phonglab: shaders build on a worker thread with a shared context; "
+          "GL_KHR_parallel_shader_compile: %s", m_builder->hasParallelShaderCompile() ? "available" : "not available");
+}
+
+void LiveShaderController::requestBuild(bool force)
+{
+    if (!m_glReady) {
+        m_buildWhenReady = true;
+        return;
+    }
+    const QByteArray hash = currentHash();
+    if (!force && hash == m_lastBuiltHash)
+        return;
+    if (m_inFlight) {
+        m_pending = true;
+        m_pendingForce = m_pendingForce || force;
+        return;
+    }
+    dispatch(hash);
+}
+
+void LiveShaderController::dispatch(const QByteArray &hash)
+{
+    // Both before the program exists: a crash in the compiler, or in the
+    // warm-up draw, then leaves the text in the journal and marked suspect.
+    m_recovery->writeNow();
+    m_recovery->markRunning(hash);
+    m_lastBuiltHash = hash;
+    const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex), m_dock->text(ShaderStage::Vertex)};
+    const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment)};
+    m_buildClock.start();
+    if (m_builder->isRunning()) {
+        m_inFlightHash = hash;
+        m_inFlight = m_builder->build(vertex, fragment);
+        m_dock->setCompileStatus(tr("Compiling…"), true);
+        return;
+    }
+    ProgramBuild built = m_viewport->buildProgram(vertex, fragment);
+    ProgramBuildReply reply;
+    reply.program = built.program;
+    reply.result = std::move(built.result);
+    reply.compileNs = built.compileNs;
+    reply.linkNs = built.linkNs;
+    finish(hash, reply);
+}
+
+void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
+{
+    if (reply.serial != m_inFlight) { // from before a restart of the worker
+        m_builder->release(reply.program);
+        return;
+    }
+    m_inFlight = 0;
+    // Even when newer text waits, a finished program is shown: steady
+    // progress while someone keeps typing in bursts longer than a build.
+    finish(m_inFlightHash, reply);
+    if (std::exchange(m_pending, false))
+        requestBuild(std::exchange(m_pendingForce, false));
+}
+
+void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildReply &reply)
+{
+    if (!reply.program) {
+        showFailure(reply.result);
+        // The sentinel goes back to the program still on probation, if any.
+        if (!m_unproven.isEmpty())
+            m_recovery->markRunning(m_unproven);
+        else
+            m_recovery->clearRunning();
+        emit buildFailed(hash);
+        return;
+    }
+    m_viewport->adoptProgram(reply.program);
+    m_appliedHash = hash;
+    watchNewProgram(hash);
+    m_dock->showDiagnostics(reply.result.diagnostics); // warnings only; clears old errors
+    const int warnings = int(reply.result.diagnostics.size());
+    QString status = tr("Compiled in %1 ms (compile %2, link %3, first draw %4)")
+                         .arg(double(m_buildClock.nsecsElapsed()) / 1e6, 0, 'f', 0)
+                         .arg(toMs(reply.compileNs), 0, 'f', 0)
+                         .arg(toMs(reply.linkNs), 0, 'f', 0)
+                         .arg(toMs(reply.warmNs), 0, 'f', 0);
+    if (warnings > 0)
+        status += tr(" — %n warning(s)", nullptr, warnings);
+    m_dock->setCompileStatus(status, true);
+    emit programApplied(hash, reply);
+}
+
+void LiveShaderController::showFailure(const CompileResult &result)
+{
+    m_dock->showDiagnostics(result.diagnostics);
+    int errors = 0;
+    for (const ShaderDiagnostic &d : result.diagnostics)
+        errors += d.isError();
+    const QString text = tr("%n error(s) — last good program still running", nullptr, errors);
+    m_dock->setCompileStatus(text, false);
+    emit statusMessage(text, kStatusTimeoutMs);
+}
+
+void LiveShaderController::watchNewProgram(const QByteArray &hash)
+{
+    m_unproven = hash;
+    m_unprovenFrames = 0;
+    m_unprovenClock.start();
+    m_provenTimer->start();
+}
+
+void LiveShaderController::onFrameRendered()
+{
+    if (m_unproven.isEmpty())
+        return;
+    ++m_unprovenFrames;
+    checkNewProgramProven();
+}
+
+void LiveShaderController::checkNewProgramProven()
+{
+    if (m_unproven.isEmpty())
+        return;
+    const bool enoughFrames = m_unprovenFrames >= kProvenFrames;
+    const bool enoughTime = m_unprovenFrames >= 1 && m_unprovenClock.elapsed() >= kProvenAfterMs;
+    if (!enoughFrames && !enoughTime) {
+        if (!m_provenTimer->isActive())
+            m_provenTimer->start(); // e.g. hidden window: wait for a frame
+        return;
+    }
+    m_provenTimer->stop();
+    m_unproven.clear();
+    if (!m_inFlight) // a build on the worker keeps its own mark
+        m_recovery->clearRunning();
+}
+
+} // namespace phonglab

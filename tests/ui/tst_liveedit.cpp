@@ -1,0 +1,385 @@
+// Live shader editing end to end, in the real window on a real GL context
+// (Mesa llvmpipe under Xvfb): typing changes the picture within the debounce
+// plus a build; an error lands on its line while the last good frame stays;
+// user uniforms survive a rebuild; shipped shaders are never written; and
+// edits survive the process being killed, without running a suspect shader.
+
+#include "core/RecoveryJournal.h"
+#include "render/GlFormat.h"
+#include "ui/LiveShaderController.h"
+#include "ui/MainWindow.h"
+#include "ui/ShaderDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/ShaderFileSet.h"
+#include "ui/Viewport.h"
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QDirIterator>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QSysInfo>
+#include <QTemporaryDir>
+#include <QTest>
+#include <memory>
+
+using namespace phonglab;
+
+namespace {
+
+constexpr int kBuildTimeoutMs = 10000; // debounce + compile + link + JIT, generously
+const QString kOutputLine = QStringLiteral("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);");
+
+QString sourcePath(const QString &relative)
+{
+    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
+}
+
+QHash<QString, QByteArray> hashShippedShaders()
+{
+    QHash<QString, QByteArray> hashes;
+    QDirIterator it(sourcePath(QStringLiteral("shaders")), {QStringLiteral("*.vert"), QStringLiteral("*.frag")});
+    while (it.hasNext()) {
+        QFile file(it.next());
+        if (file.open(QIODevice::ReadOnly))
+            hashes.insert(file.fileName(), QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256));
+    }
+    return hashes;
+}
+
+QByteArray readShipped(const QString &name)
+{
+    QFile file(sourcePath(QStringLiteral("shaders/") + name));
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// 1-based line of the first line of `text` that contains `needle`.
+int lineOf(const QByteArray &text, const QString &needle)
+{
+    const QList<QByteArray> lines = text.split('\n');
+    for (int i = 0; i < lines.size(); ++i)
+        if (QString::fromUtf8(lines[i]).contains(needle))
+            return i + 1;
+    return 0;
+}
+
+// What a session killed by the OS leaves: its journal, its sentinel if a
+// program was on probation, and a lock naming a process that is gone.
+void leaveDeadSession(const QString &dir, const RecoveryRecord &record, bool withSentinel)
+{
+    const QString id = QStringLiteral("999999999-1");
+    {
+        RecoveryJournal journal(dir);
+        QVERIFY(journal.write(record));
+        QVERIFY(QFile::rename(journal.journalPath(), QDir(dir).filePath(id + ".journal")));
+    }
+    QFile lock(QDir(dir).filePath(id + ".lock"));
+    QVERIFY(lock.open(QIODevice::WriteOnly));
+    lock.write("999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
+    if (withSentinel) {
+        QFile sentinel(QDir(dir).filePath(id + ".running"));
+        QVERIFY(sentinel.open(QIODevice::WriteOnly));
+        sentinel.write(recoveryTextHash(record.vertex.text, record.fragment.text) + '\n');
+    }
+}
+
+} // namespace
+
+class TestLiveEdit : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void cleanupTestCase();
+
+    void typingChangesTheFrame();
+    void errorStaysOnItsLineAndFixClearsIt();
+    void userUniformSurvivesRebuild();
+    void unchangedTextIsNotRebuilt();
+    void editingNeverWritesShippedShaders();
+    void buildsOnGuiThreadWhenAsked();
+    void killedSessionIsRestored();
+    void suspectShaderWaitsForF5();
+
+private:
+    void openWindow();
+    ShaderDock *dock() const { return m_window->shaderDock(); }
+    ShaderEditor *fragmentEditor() const { return dock()->editor(ShaderStage::Fragment); }
+    LiveShaderController *live() const { return m_window->liveShaders(); }
+    Viewport *viewport() const { return m_window->viewport(); }
+    QImage frame() const { return viewport()->grabFramebuffer(); }
+    void typeAfter(const QString &anchor, const QString &keys);
+    bool waitForApplied(int timeoutMs = kBuildTimeoutMs);
+
+    std::unique_ptr<QTemporaryDir> m_recoveryDir;
+    std::unique_ptr<MainWindow> m_window;
+    QHash<QString, QByteArray> m_shippedHashes;
+    QTemporaryDir m_cacheDir;
+};
+
+void TestLiveEdit::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
+    if (qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR"))
+        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    QDir(ShaderFileSet::userFolder()).removeRecursively(); // user copies from earlier runs
+    m_shippedHashes = hashShippedShaders();
+    QVERIFY(m_shippedHashes.size() >= 4);
+}
+
+void TestLiveEdit::init()
+{
+    m_recoveryDir = std::make_unique<QTemporaryDir>();
+    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
+    qunsetenv("PHONGLAB_RECOVERY_ANSWER");
+    qunsetenv("PHONGLAB_COMPILE_ON_GUI_THREAD");
+}
+
+void TestLiveEdit::cleanup()
+{
+    m_window.reset();
+    QCOMPARE(hashShippedShaders(), m_shippedHashes);
+}
+
+void TestLiveEdit::cleanupTestCase()
+{
+    QDir(ShaderFileSet::userFolder()).removeRecursively();
+}
+
+void TestLiveEdit::openWindow()
+{
+    m_window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
+    m_window->resize(900, 600);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    QVERIFY(viewport()->isRenderReady());
+}
+
+// As a user would: cursor just after `anchor` in the fragment editor, then keys.
+void TestLiveEdit::typeAfter(const QString &anchor, const QString &keys)
+{
+    ShaderEditor *editor = fragmentEditor();
+    QVERIFY2(editor->findFirst(anchor, false, true, false, false, true, 0, 0), qPrintable(anchor));
+    int lineFrom = 0, indexFrom = 0, lineTo = 0, indexTo = 0;
+    editor->getSelection(&lineFrom, &indexFrom, &lineTo, &indexTo);
+    editor->setCursorPosition(lineTo, indexTo);
+    editor->setFocus();
+    QTest::keyClicks(editor, keys);
+}
+
+bool TestLiveEdit::waitForApplied(int timeoutMs)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < timeoutMs) {
+        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
+            return true;
+        QTest::qWait(10);
+    }
+    return false;
+}
+
+void TestLiveEdit::typingChangesTheFrame()
+{
+    openWindow();
+    QTRY_VERIFY(live()->buildsOnWorker());
+    const QImage before = frame();
+    QElapsedTimer timer;
+    timer.start();
+    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(fragmentEditor()->text().contains(QStringLiteral("clamp(I * 0.5, 0.0, 1.0)")));
+    QTRY_VERIFY_WITH_TIMEOUT(frame() != before, kBuildTimeoutMs);
+    qInfo("edit to new frame: %lld ms (debounce %d ms)", timer.elapsed(), live()->debounceMs());
+    QVERIFY(timer.elapsed() >= live()->debounceMs()); // nothing built before the pause
+    QVERIFY(waitForApplied());
+    QVERIFY(dock()->isDirty(ShaderStage::Fragment));
+    QVERIFY(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty());
+}
+
+void TestLiveEdit::errorStaysOnItsLineAndFixClearsIt()
+{
+    openWindow();
+    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(waitForApplied());
+    const QImage good = frame();
+
+    // "vec4(...), 1.0) +;" : the parser stops at the ';' of the output line.
+    typeAfter(QStringLiteral("0.0, 1.0), 1.0)"), QStringLiteral(" +"));
+    const int line = lineOf(dock()->text(ShaderStage::Fragment), QStringLiteral("fragColor = vec4("));
+    QVERIFY(line > 1);
+    QTRY_VERIFY_WITH_TIMEOUT(!fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty(),
+                             kBuildTimeoutMs);
+    QCOMPARE(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error), QList<int>{line});
+    QVERIFY2(!fragmentEditor()->annotationText(line).isEmpty(), "no boxed message under the line");
+    QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("last good program")));
+    QVERIFY(!live()->isBuilding());
+    QCOMPARE(frame(), good); // the last good program still draws, exactly
+
+    typeAfter(QStringLiteral("1.0) +"), QStringLiteral(" 0.25")); // valid again, and brighter
+    QVERIFY(waitForApplied());
+    QVERIFY(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty());
+    QVERIFY(fragmentEditor()->annotationText(line).isEmpty());
+    QTRY_VERIFY(frame() != good);
+}
+
+void TestLiveEdit::userUniformSurvivesRebuild()
+{
+    openWindow();
+    ShaderEditor *editor = fragmentEditor();
+    editor->insertAt(QStringLiteral("uniform float gain; // set by the user, not by the renderer\n"), 1, 0);
+    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("clamp(I * gain,"));
+    QVERIFY(waitForApplied());
+    const QImage black = frame(); // gain starts at 0
+
+    viewport()->makeCurrent();
+    ShaderProgram &program = viewport()->renderer().program();
+    program.bind();
+    program.setUniform("gain", 0.5f);
+    viewport()->doneCurrent();
+    viewport()->update();
+    QTRY_VERIFY(frame() != black);
+    const QImage withGain = frame();
+
+    editor->append(QStringLiteral("// an unrelated edit\n"));
+    const QByteArray before = live()->appliedHash();
+    QVERIFY(waitForApplied());
+    QVERIFY(live()->appliedHash() != before); // it was rebuilt...
+    QCOMPARE(frame(), withGain);              // ...and gain is still 0.5
+    viewport()->makeCurrent();
+    const UniformSnapshot kept = viewport()->renderer().program().snapshot();
+    viewport()->doneCurrent();
+    QVERIFY(kept.find("gain"));
+    QCOMPARE(kept.find("gain")->floats[0], 0.5f);
+}
+
+void TestLiveEdit::unchangedTextIsNotRebuilt()
+{
+    openWindow();
+    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(waitForApplied());
+    QSignalSpy applied(live(), &LiveShaderController::programApplied);
+    typeAfter(QStringLiteral("clamp(I * 0.5"), QStringLiteral("1")); // 0.51 ...
+    QTest::keyClick(fragmentEditor(), Qt::Key_Backspace);             // ... and back
+    QTest::qWait(live()->debounceMs() + 300);
+    QCOMPARE(applied.count(), 0);
+    // F5 builds even unchanged text.
+    dock()->compileAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(applied.count(), 1, kBuildTimeoutMs);
+}
+
+void TestLiveEdit::editingNeverWritesShippedShaders()
+{
+    openWindow();
+    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(waitForApplied());
+    QString error;
+    QVERIFY2(dock()->save(ShaderStage::Fragment, &error), qPrintable(error));
+    QVERIFY(dock()->filePath(ShaderStage::Fragment).startsWith(ShaderFileSet::userFolder()));
+    QCOMPARE(hashShippedShaders(), m_shippedHashes);
+    QCOMPARE(readShipped(QStringLiteral("phong.frag")).contains("clamp(I * 0.5"), false);
+}
+
+void TestLiveEdit::buildsOnGuiThreadWhenAsked()
+{
+    qputenv("PHONGLAB_COMPILE_ON_GUI_THREAD", "1");
+    openWindow();
+    QVERIFY(!live()->buildsOnWorker());
+    const QImage before = frame();
+    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(frame() != before);
+}
+
+// The real executable: an edit is typed into it, it journals the edit, and
+// it is killed with SIGKILL. The next start restores the edit and builds it.
+void TestLiveEdit::killedSessionIsRestored()
+{
+    const QString marker = QStringLiteral("// typed just before the crash %1").arg(QDateTime::currentMSecsSinceEpoch());
+    QTemporaryDir home;
+    // The child never builds (a 10-minute debounce), so the kill is certain
+    // to land mid-edit, before any new program exists.
+    QDir(home.path()).mkpath(QStringLiteral("config/PhongLab"));
+    QFile settings(home.filePath(QStringLiteral("config/PhongLab/PhongLab.conf")));
+    QVERIFY(settings.open(QIODevice::WriteOnly));
+    settings.write("[editor]\ndebounceMs=600000\n");
+    settings.close();
+
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("PHONGLAB_RECOVERY_DIR"), m_recoveryDir->path());
+    env.insert(QStringLiteral("PHONGLAB_TEST_TYPE_AFTER_START"), marker);
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+    env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+    child.setProcessEnvironment(env);
+    child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    child.start(QCoreApplication::applicationDirPath() + QStringLiteral("/../app/phonglab"), {});
+    QVERIFY2(child.waitForStarted(), qPrintable(child.errorString()));
+
+    const auto journaled = [&] {
+        for (const QString &name : QDir(m_recoveryDir->path()).entryList({QStringLiteral("*.journal")})) {
+            const auto record = RecoveryJournal::readFile(QDir(m_recoveryDir->path()).filePath(name));
+            if (record && record->fragment.text.contains(marker.toUtf8()))
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(journaled(), 30000);
+    child.kill(); // SIGKILL: no destructor, no clean-up
+    QVERIFY(child.waitForFinished());
+    QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+
+    qputenv("PHONGLAB_RECOVERY_ANSWER", "restore");
+    openWindow();
+    QVERIFY(dock()->text(ShaderStage::Fragment).contains(marker.toUtf8()));
+    QVERIFY(dock()->isDirty(ShaderStage::Fragment));
+    QVERIFY(!live()->isAutoBuildHeld());
+    QVERIFY(waitForApplied()); // a plain edit: built as usual
+    QVERIFY(RecoveryJournal(m_recoveryDir->path()).orphans().isEmpty()); // adopted, not offered again
+}
+
+void TestLiveEdit::suspectShaderWaitsForF5()
+{
+    RecoveryRecord record;
+    const QByteArray shippedFragment = readShipped(QStringLiteral("phong.frag"));
+    record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")), readShipped(QStringLiteral("phong.vert")), false};
+    QByteArray suspect = shippedFragment;
+    suspect.replace(kOutputLine.toUtf8(), "fragColor = vec4(clamp(I * 0.25, 0.0, 1.0), 1.0);");
+    QVERIFY(suspect != shippedFragment);
+    record.fragment = {sourcePath(QStringLiteral("shaders/phong.frag")), suspect, true};
+    record.shading = QStringLiteral("phong");
+    leaveDeadSession(m_recoveryDir->path(), record, true);
+
+    qputenv("PHONGLAB_RECOVERY_ANSWER", "restore");
+    openWindow();
+    QCOMPARE(dock()->text(ShaderStage::Fragment), suspect);
+    QVERIFY(live()->isAutoBuildHeld());
+    QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("F5")));
+    const QImage shipped = frame();
+    QTest::qWait(live()->debounceMs() + 500);
+    QVERIFY(!live()->isBuilding());
+    QVERIFY(live()->appliedHash() != live()->currentHash()); // not compiled
+    QCOMPARE(live()->appliedHash(), recoveryTextHash(record.vertex.text, shippedFragment));
+    QCOMPARE(frame(), shipped);
+
+    fragmentEditor()->setFocus();
+    QTest::keyClick(fragmentEditor(), Qt::Key_F5);
+    QVERIFY(waitForApplied());
+    QVERIFY(!live()->isAutoBuildHeld());
+    QTRY_VERIFY(frame() != shipped);
+}
+
+QTEST_MAIN(TestLiveEdit)
+#include "tst_liveedit.moc"
