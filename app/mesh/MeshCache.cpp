@@ -15,7 +15,7 @@ namespace phonglab {
 namespace {
 
 constexpr quint32 kMagic = 0x50484d43; // "PHMC"
-constexpr quint32 kVersion = 1;
+constexpr quint32 kVersion = 2; // 2: vertex order of split meshes is first use
 
 // What must match for a cache entry to stand for the file as it is now.
 QByteArray sourceKey(const QString &file, const NormalOptions &normals)

@@ -374,9 +374,12 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QCOMPARE(live()->appliedHash(), recoveryTextHash(record.vertex.text, shippedFragment));
     QCOMPARE(frame(), shipped);
 
+    // F5 is a window shortcut: it needs the window active, as it is for a user.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
     fragmentEditor()->setFocus();
     QTest::keyClick(fragmentEditor(), Qt::Key_F5);
-    QVERIFY(waitForApplied());
+    QVERIFY2(waitForApplied(), qPrintable(dock()->statusLabel()->text()));
     QVERIFY(!live()->isAutoBuildHeld());
     QTRY_VERIFY(frame() != shipped);
 }

@@ -90,8 +90,13 @@ void TestBlenderNormals::smoothSphereKeepsFileNormals()
         const auto it = normalsAt.find(key(c.position));
         QVERIFY2(it != normalsAt.end(), "a file position is missing on the GPU");
         QCOMPARE(it->second.size(), std::size_t(1));
-        // Exactly the file's normal, normalised (Blender writes 4 decimals).
-        QVERIFY2(glm::length(it->second[0] - glm::normalize(c.normal)) < 1e-6f, "normal differs from the file's");
+        // The file's normal as written, up to normalisation: the builder keeps
+        // normals already unit to 1e-5 bit for bit and renormalises the rest
+        // (Blender writes 4 decimals), so it sits within 2e-5 of either.
+        const glm::vec3 gpu = it->second[0];
+        QVERIFY2(glm::length(gpu - c.normal) < 2e-5f || glm::length(gpu - glm::normalize(c.normal)) < 2e-5f,
+                 "normal differs from the file's");
+        QVERIFY(std::abs(glm::length(gpu) - 1.0f) < 2e-5f);
     }
 }
 

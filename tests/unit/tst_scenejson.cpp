@@ -50,7 +50,7 @@ Scene fullScene()
         PointLight{{-4.0, 2.0, 1.0}, {0.3, 0.3, 0.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.2}},
         PointLight{{0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}},
     };
-    scene.shading = ShadingMethod::Phong; // the only method so far
+    scene.shading = ShadingMethod::BlinnPhong; // not the default
     scene.background = {0.3, 0.2, 0.1};
     return scene;
 }
@@ -224,7 +224,7 @@ void TestSceneJson::rejectsBadInput_data()
     row("shininess negative", withSphere(R"("material": {"shininess": -8})"), "material.shininess:");
     row("ambient negative", withSphere(R"("ambient": [0.1, 0.1, -0.1])"), "ambient[2]:", ">= 0");
     row("background string", withSphere(R"("background": "#202020")"), "background:", "got string");
-    row("shading unknown", withSphere(R"("shading": "gouraud")"), "shading:", "phong");
+    row("shading unknown", withSphere(R"("shading": "toon")"), "shading:", "blinn-phong");
     row("shading not string", withSphere(R"("shading": 1)"), "shading:", "got number");
 
     // Lights
