@@ -1,5 +1,7 @@
 #include "ShadingMethod.h"
 
+#include "core/EnumNames.h"
+
 #include <array>
 #include <utility>
 
@@ -17,26 +19,17 @@ constexpr std::array kMethods = {
 
 QString shadingName(ShadingMethod method)
 {
-    for (const auto &[m, name] : kMethods)
-        if (m == method)
-            return QString::fromLatin1(name);
-    return {};
+    return enumName(kMethods, method);
 }
 
 std::optional<ShadingMethod> shadingFromName(const QString &name)
 {
-    for (const auto &[m, n] : kMethods)
-        if (name == QLatin1String(n))
-            return m;
-    return std::nullopt;
+    return enumFromName(kMethods, name);
 }
 
 QStringList shadingNames()
 {
-    QStringList names;
-    for (const auto &entry : kMethods)
-        names << QString::fromLatin1(entry.second);
-    return names;
+    return enumNames(kMethods);
 }
 
 } // namespace phonglab

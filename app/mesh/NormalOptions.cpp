@@ -1,5 +1,7 @@
 #include "NormalOptions.h"
 
+#include "core/EnumNames.h"
+
 #include <array>
 #include <utility>
 
@@ -17,26 +19,17 @@ constexpr std::array kNames = {
 
 QString normalMethodName(NormalMethod method)
 {
-    for (const auto &[m, name] : kNames)
-        if (m == method)
-            return QString::fromLatin1(name);
-    return {};
+    return enumName(kNames, method);
 }
 
 std::optional<NormalMethod> normalMethodFromName(const QString &name)
 {
-    for (const auto &[m, n] : kNames)
-        if (name == QLatin1String(n))
-            return m;
-    return std::nullopt;
+    return enumFromName(kNames, name);
 }
 
 QStringList normalMethodNames()
 {
-    QStringList names;
-    for (const auto &entry : kNames)
-        names << QString::fromLatin1(entry.second);
-    return names;
+    return enumNames(kNames);
 }
 
 } // namespace phonglab
