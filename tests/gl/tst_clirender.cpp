@@ -1,36 +1,15 @@
 // `phonglab render` as a script sees it: exit codes, stderr, and no output
 // file unless everything succeeded.
+#include "PhonglabProcess.h"
 #include "RenderCheck.h"
 
 #include <QImage>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace phonglab::test;
 
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Run runPhonglab(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(PHONGLAB_EXE), args);
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        return {};
-    }
-    Run r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
-    r.out = QString::fromLocal8Bit(p.readAllStandardOutput());
-    r.err = QString::fromLocal8Bit(p.readAllStandardError());
-    return r;
-}
 
 QString dataFile(const QString &relative)
 {
@@ -59,18 +38,18 @@ private:
 
 void TestCliRender::helpListsSubcommands()
 {
-    const Run r = runPhonglab({QStringLiteral("--help")});
+    const ProcessRun r = runPhonglab({QStringLiteral("--help")});
     QCOMPARE(r.exitCode, 0);
-    QVERIFY2(r.out.contains(QStringLiteral("render")), qPrintable(r.out));
-    const Run sub = runPhonglab({QStringLiteral("render"), QStringLiteral("--help")});
+    QVERIFY2(QString::fromLocal8Bit(r.out).contains(QStringLiteral("render")), r.out.constData());
+    const ProcessRun sub = runPhonglab({QStringLiteral("render"), QStringLiteral("--help")});
     QCOMPARE(sub.exitCode, 0);
-    QVERIFY(sub.out.contains(QStringLiteral("--size")));
+    QVERIFY(QString::fromLocal8Bit(sub.out).contains(QStringLiteral("--size")));
 }
 
 void TestCliRender::rendersPng()
 {
     const QString out = m_dir.filePath(QStringLiteral("sphere.png"));
-    const Run r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
                                QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("160x120")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QImage image(out);
@@ -92,7 +71,7 @@ void TestCliRender::rendersPng()
 void TestCliRender::rendersDefaultScene()
 {
     const QString out = m_dir.filePath(QStringLiteral("default.png"));
-    const Run r = runPhonglab({QStringLiteral("render"), QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json"),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json"),
                                QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY(QFile::exists(out));
@@ -119,7 +98,7 @@ void TestCliRender::usageErrors_data()
 void TestCliRender::usageErrors()
 {
     QFETCH(QStringList, args);
-    const Run r = runPhonglab(args);
+    const ProcessRun r = runPhonglab(args);
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
     QVERIFY(!QFile::exists(QStringLiteral("x.png")));
@@ -151,7 +130,7 @@ void TestCliRender::badInputFails()
     if (!extra.contains(QStringLiteral("-o")))
         args << QStringLiteral("-o") << out;
     args << extra;
-    const Run r = runPhonglab(args);
+    const ProcessRun r = runPhonglab(args);
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
     QVERIFY2(r.err.contains(expected), qPrintable(r.err));
@@ -162,7 +141,7 @@ void TestCliRender::compileErrorPointsAtUserLine()
 {
     const QString out = m_dir.filePath(QStringLiteral("broken.png"));
     const QString frag = dataFile(QStringLiteral("shaders/error_line17.frag"));
-    const Run r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
                                QStringLiteral("-o"), out, QStringLiteral("--fragment"), frag});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));

@@ -2,6 +2,7 @@
 // Blinn-Phong and the normals view against their exact CPU references,
 // Gouraud and flat against the Phong reference they approximate, and the
 // `--shading` option of `phonglab render`. Prints the figures it measures.
+#include "PhonglabProcess.h"
 #include "RenderCheck.h"
 #include "core/ShadingMethod.h"
 #include "mesh/BuiltinMeshes.h"
@@ -107,39 +108,6 @@ Scene withShading(Scene scene, ShadingMethod method)
 {
     scene.shading = method;
     return scene;
-}
-
-QString phonglabExecutable()
-{
-    const QString fromEnv = qEnvironmentVariable("PHONGLAB_EXE");
-    if (!fromEnv.isEmpty())
-        return fromEnv;
-#ifdef PHONGLAB_EXE
-    return QStringLiteral(PHONGLAB_EXE);
-#else
-    // Tests build into <build>/tests, the application into <build>/app.
-    return QCoreApplication::applicationDirPath() + QStringLiteral("/../app/phonglab");
-#endif
-}
-
-struct Run {
-    int exitCode = -1;
-    QString err;
-};
-
-Run runPhonglab(const QStringList &args)
-{
-    QProcess p;
-    p.start(phonglabExecutable(), args);
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        return {};
-    }
-    Run r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
-    r.err = QString::fromLocal8Bit(p.readAllStandardError());
-    return r;
 }
 
 } // namespace
@@ -427,7 +395,7 @@ void TestShadingPresets::cliRendersGouraudScene()
     out.close();
 
     const QString png = m_dir.filePath(QStringLiteral("gouraud.png"));
-    const Run r = runPhonglab({QStringLiteral("render"), scenePath, QStringLiteral("-o"), png,
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), scenePath, QStringLiteral("-o"), png,
                                QStringLiteral("--size"), QStringLiteral("96x64")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QCOMPARE(QImage(png).size(), QSize(96, 64));
@@ -439,7 +407,7 @@ void TestShadingPresets::cliShadingOverridesScene()
     // A Phong scene rendered as the normals view: the sphere's centre faces
     // the camera, so it must come out as N = (0, 0, 1) -> (128, 128, 255).
     const QString png = m_dir.filePath(QStringLiteral("normals.png"));
-    const Run r = runPhonglab({QStringLiteral("render"),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"),
                                QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
                                QStringLiteral("-o"), png, QStringLiteral("--size"), QStringLiteral("65x65"),
                                QStringLiteral("--shading"), QStringLiteral("normals")});
@@ -455,7 +423,7 @@ void TestShadingPresets::cliRejectsUnknownShading()
 {
     QVERIFY2(QFileInfo(phonglabExecutable()).isExecutable(), qPrintable(phonglabExecutable()));
     const QString png = m_dir.filePath(QStringLiteral("nosuch.png"));
-    const Run r = runPhonglab({QStringLiteral("render"),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"),
                                QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
                                QStringLiteral("-o"), png, QStringLiteral("--shading"), QStringLiteral("nosuch")});
     QCOMPARE(r.exitCode, 2);

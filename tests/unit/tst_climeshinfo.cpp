@@ -1,30 +1,20 @@
 // `phonglab mesh-info` as scripts use it: the JSON keys, exit codes and the
 // error line.
+#include "PhonglabProcess.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
+using namespace phonglab::test;
+
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QString err;
-};
-
-Run meshInfo(const QStringList &args)
+ProcessRun meshInfo(const QStringList &args)
 {
-    QProcess p;
-    p.start(QStringLiteral(PHONGLAB_EXE), QStringList{QStringLiteral("mesh-info")} + args);
-    if (!p.waitForFinished(60000)) {
-        p.kill();
-        return {};
-    }
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
-            QString::fromLocal8Bit(p.readAllStandardError())};
+    return runPhonglab(QStringList{QStringLiteral("mesh-info")} + args, 60000);
 }
 
 QString blender(const QString &name)
@@ -49,7 +39,7 @@ private slots:
 
 void TestCliMeshInfo::jsonHasTheDocumentedKeys()
 {
-    const Run r = meshInfo({blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--json")});
+    const ProcessRun r = meshInfo({blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--json")});
     QCOMPARE(r.exitCode, 0);
     QJsonParseError error;
     const QJsonObject o = QJsonDocument::fromJson(r.out, &error).object();
@@ -72,13 +62,13 @@ void TestCliMeshInfo::jsonHasTheDocumentedKeys()
 
 void TestCliMeshInfo::normalsFromFileOrComputed()
 {
-    const Run none = meshInfo({blender(QStringLiteral("sphere_nonormals.obj")), QStringLiteral("--json")});
+    const ProcessRun none = meshInfo({blender(QStringLiteral("sphere_nonormals.obj")), QStringLiteral("--json")});
     QCOMPARE(none.exitCode, 0);
     QJsonObject o = QJsonDocument::fromJson(none.out).object();
     QCOMPARE(o.value("normals").toString(), QStringLiteral("computed"));
     QCOMPARE(o.value("normal_method").toString(), QStringLiteral("angle"));
 
-    const Run forced = meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"),
+    const ProcessRun forced = meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"),
                                  QStringLiteral("--normals"), QStringLiteral("area"), QStringLiteral("--crease"),
                                  QStringLiteral("45")});
     QCOMPARE(forced.exitCode, 0);
@@ -90,7 +80,7 @@ void TestCliMeshInfo::normalsFromFileOrComputed()
 
 void TestCliMeshInfo::textOutputMentionsEverything()
 {
-    const Run r = meshInfo({blender(QStringLiteral("cube_flat.obj"))});
+    const ProcessRun r = meshInfo({blender(QStringLiteral("cube_flat.obj"))});
     QCOMPARE(r.exitCode, 0);
     for (const char *word : {"vertices:", "faces:", "normals:", "bounds:", "warnings:", "load time:", "split"})
         QVERIFY2(r.out.contains(word), word);
@@ -102,7 +92,7 @@ void TestCliMeshInfo::unloadableFileExitsOne()
     const QString empty = dir.filePath(QStringLiteral("empty.obj"));
     QFile(empty).open(QIODevice::WriteOnly);
     for (const QString &path : {empty, dir.filePath(QStringLiteral("missing.ply"))}) {
-        const Run r = meshInfo({path, QStringLiteral("--json")});
+        const ProcessRun r = meshInfo({path, QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.startsWith(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
@@ -123,7 +113,7 @@ void TestCliMeshInfo::usageErrorsExitTwo_data()
 void TestCliMeshInfo::usageErrorsExitTwo()
 {
     QFETCH(QStringList, args);
-    const Run r = meshInfo(args);
+    const ProcessRun r = meshInfo(args);
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains(QStringLiteral("phonglab: error: ")));
 }
