@@ -12,6 +12,7 @@
 #include <QStandardPaths>
 #include <QStringDecoder>
 #include <algorithm>
+#include <atomic>
 
 namespace phonglab {
 
@@ -52,10 +53,15 @@ std::optional<RecoveryBuffer> bufferFromJson(const QJsonValue &value)
     return buffer;
 }
 
-// Unique among sessions sharing a folder, even across a PID being reused.
+// Unique among sessions sharing a folder, even across a PID being reused
+// and for several journals in one process (tests).
 QString newSessionId()
 {
-    return QStringLiteral("%1-%2").arg(QCoreApplication::applicationPid()).arg(QDateTime::currentMSecsSinceEpoch());
+    static std::atomic<int> instances{0};
+    return QStringLiteral("%1-%2-%3")
+        .arg(QCoreApplication::applicationPid())
+        .arg(QDateTime::currentMSecsSinceEpoch())
+        .arg(instances++);
 }
 
 bool fail(QString *error, const QString &message)

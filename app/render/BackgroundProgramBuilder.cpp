@@ -40,7 +40,7 @@ BackgroundProgramBuilder::~BackgroundProgramBuilder()
     stop();
 }
 
-bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, int warmSamples, QString *error)
+bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *error)
 {
     stop();
     if (!shareContext)
@@ -56,10 +56,14 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, int warmSampl
     surface->create();
     if (!surface->isValid())
         return fail(error, QStringLiteral("cannot create an offscreen surface for the compile thread"));
+    // For the viewport's own context when it is lent: a surface of its format.
+    auto loanSurface = std::make_unique<QOffscreenSurface>();
+    loanSurface->setFormat(shareContext->format());
+    loanSurface->create();
 
     auto thread = std::make_unique<QThread>();
     thread->setObjectName(QStringLiteral("phonglab-shader-build"));
-    auto *worker = new ProgramBuildWorker(context.get(), surface.get(), warmSamples);
+    auto *worker = new ProgramBuildWorker(context.get(), surface.get());
     worker->moveToThread(thread.get());
     connect(thread.get(), &QThread::finished, worker, &QObject::deleteLater);
     context->moveToThread(thread.get());
@@ -81,6 +85,7 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, int warmSampl
     m_parallelShaderCompile = worker->hasParallelShaderCompile();
     m_thread = std::move(thread);
     m_surface = std::move(surface);
+    m_loanSurface = std::move(loanSurface);
     m_context = std::move(context);
     m_worker = worker;
     ++m_generation;
@@ -115,16 +120,18 @@ void BackgroundProgramBuilder::stop()
         (void)m_thread.release();
         (void)m_context.release();
         (void)m_surface.release();
+        (void)m_loanSurface.release();
         return;
     }
     m_thread.reset();
     m_context.reset(); // moved back to this thread by shutdown()
     m_surface.reset();
+    m_loanSurface.reset();
 }
 
-quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment)
+quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples)
 {
-    ProgramBuildRequest request{++m_lastSerial, vertex, fragment, m_warmUp};
+    ProgramBuildRequest request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples};
     if (!m_worker)
         return request.serial;
     const qint64 queuedAt = monotonicNs();
@@ -150,6 +157,25 @@ void BackgroundProgramBuilder::deliver(const ProgramBuildReply &reply, quint64 g
     if (!m_worker || generation != m_generation)
         return;
     emit built(reply);
+}
+
+void BackgroundProgramBuilder::warmInLentContext(const LentContext &loan, GLuint program, LoanDone done)
+{
+    if (!m_worker) {
+        done(-1, QStringLiteral("the build thread is not running"));
+        return;
+    }
+    ProgramBuildWorker *worker = m_worker;
+    QOffscreenSurface *surface = m_loanSurface.get();
+    QThread *owner = thread();
+    QMetaObject::invokeMethod(worker, [mailbox = m_mailbox, worker, loan, surface, program, owner, done] {
+        QString error;
+        const qint64 ns = worker->warmInLentContext(loan, surface, program, owner, &error);
+        loan.returned->release(); // the context is back on the owner's thread
+        QMutexLocker lock(&mailbox->mutex);
+        if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+            QMetaObject::invokeMethod(receiver, [done, ns, error] { done(ns, error); }, Qt::QueuedConnection);
+    }, Qt::QueuedConnection);
 }
 
 void BackgroundProgramBuilder::release(GLuint program)

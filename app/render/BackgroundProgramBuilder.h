@@ -3,6 +3,7 @@
 
 #include <QMutex>
 #include <QObject>
+#include <functional>
 #include <memory>
 
 class QOffscreenSurface;
@@ -29,8 +30,7 @@ public:
     // Creates the worker context sharing objects with `shareContext` (which
     // must exist) and starts the thread. False with a reason when no shared
     // context can be had; callers then build on the GUI thread.
-    // `warmSamples`: the sample count of the framebuffer programs will draw into.
-    bool start(QOpenGLContext *shareContext, int warmSamples, QString *error);
+    bool start(QOpenGLContext *shareContext, QString *error);
     // Finishes the build in progress, frees the worker's GL objects and joins
     // the thread. Replies not delivered yet are dropped (their programs are
     // freed with the worker's context, or with the share group).
@@ -38,10 +38,23 @@ public:
     bool isRunning() const { return m_worker != nullptr; }
 
     // Queues a build; returns its serial, which the reply carries.
-    quint64 build(const ShaderSource &vertex, const ShaderSource &fragment);
+    // `warmSamples`: the sample count of the framebuffer the program will
+    // draw into, for the warm-up in the worker's context (setWarmUp).
+    quint64 build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples = 0);
     // Frees a program that was built here but will not be used.
     void release(GLuint program);
 
+    // Draws `program` once in the viewport's own context, which the caller
+    // has lent to workerThread(). The worker gives it back (moves it to this
+    // thread, releases loan.returned); then `done` runs here with the time it
+    // took, or -1 and a reason. Queued behind any build in progress.
+    using LoanDone = std::function<void(qint64 warmNs, const QString &error)>;
+    void warmInLentContext(const LentContext &loan, GLuint program, LoanDone done);
+    QThread *workerThread() const { return m_thread.get(); }
+
+    // Whether each build also draws once in the worker's own context before
+    // handing the program over (helps drivers whose shader variants are
+    // shared by the share group; not llvmpipe).
     void setWarmUp(bool warm) { m_warmUp = warm; }
     bool hasParallelShaderCompile() const { return m_parallelShaderCompile; }
 
@@ -64,6 +77,7 @@ private:
 
     std::unique_ptr<QThread> m_thread;
     std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOffscreenSurface> m_loanSurface; // in the viewport context's format
     std::unique_ptr<QOpenGLContext> m_context;
     ProgramBuildWorker *m_worker = nullptr; // lives on m_thread, deleted with it
     quint64 m_lastSerial = 0;

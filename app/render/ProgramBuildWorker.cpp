@@ -8,10 +8,9 @@
 
 namespace phonglab {
 
-ProgramBuildWorker::ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface, int warmSamples)
+ProgramBuildWorker::ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
     : m_context(context)
     , m_surface(surface)
-    , m_warmSamples(warmSamples)
 {
 }
 
@@ -26,7 +25,7 @@ bool ProgramBuildWorker::initialize(QString *error)
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
     m_rendererName = QString::fromLatin1(
         reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
-    return m_warmer.create(m_warmSamples, error);
+    return true;
 }
 
 ProgramBuildReply ProgramBuildWorker::build(const ProgramBuildRequest &request)
@@ -40,7 +39,11 @@ ProgramBuildReply ProgramBuildWorker::build(const ProgramBuildRequest &request)
     reply.linkNs = built.linkNs;
     QElapsedTimer timer;
     timer.start();
-    if (built.ok() && request.warm)
+    if (built.ok() && request.warm && m_warmSamples != request.warmSamples) {
+        m_warmer.destroy(); // the viewport's framebuffer changed (or this is the first warm-up)
+        m_warmSamples = m_warmer.create(request.warmSamples, nullptr) ? request.warmSamples : -1;
+    }
+    if (built.ok() && request.warm && m_warmer.isCreated())
         m_warmer.warm(built.program); // ends in glFinish
     else
         m_context->functions()->glFinish(); // the program object is complete before it changes hands
@@ -52,6 +55,26 @@ void ProgramBuildWorker::release(GLuint program)
 {
     if (program)
         m_context->extraFunctions()->glDeleteProgram(program);
+}
+
+qint64 ProgramBuildWorker::warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program,
+                                             QThread *owner, QString *error)
+{
+    QElapsedTimer timer;
+    timer.start();
+    bool ok = loan.context->makeCurrent(surface);
+    if (!ok && error)
+        *error = QStringLiteral("the viewport's context cannot be made current on the build thread");
+    if (ok && loan.whileCurrent)
+        loan.whileCurrent();
+    if (ok && !loan.warmer->isCreated())
+        ok = loan.warmer->create(loan.samples, error);
+    if (ok)
+        loan.warmer->warm(program); // ends in glFinish
+    loan.context->doneCurrent();
+    loan.context->moveToThread(owner);
+    m_context->makeCurrent(m_surface); // ready for the next build
+    return ok ? timer.nsecsElapsed() : -1;
 }
 
 void ProgramBuildWorker::shutdown(QThread *owner)

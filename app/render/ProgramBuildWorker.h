@@ -1,4 +1,5 @@
 #pragma once
+#include "LentContext.h"
 #include "ProgramBuilder.h"
 #include "ProgramWarmer.h"
 
@@ -13,7 +14,8 @@ struct ProgramBuildRequest {
     quint64 serial = 0;
     ShaderSource vertex;
     ShaderSource fragment;
-    bool warm = true; // run one draw before handing the program over
+    bool warm = true;     // run one draw before handing the program over
+    int warmSamples = 0;  // ... into a framebuffer with this many samples
 };
 
 // A finished build. `program` (0 on failure) lives in the share group and is
@@ -31,17 +33,24 @@ struct ProgramBuildReply {
 
 // The half of BackgroundProgramBuilder that lives on the worker thread:
 // every member runs there, with the worker's context current from
-// initialize() to shutdown().
+// initialize() to shutdown() (but for the time a lent context is).
 class ProgramBuildWorker : public QObject
 {
     Q_OBJECT
 
 public:
-    ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface, int warmSamples);
+    ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface);
 
     bool initialize(QString *error);
     ProgramBuildReply build(const ProgramBuildRequest &request);
     void release(GLuint program);
+    // Makes a context lent to this thread (see LentContext) current on
+    // `surface`, runs loan.whileCurrent, draws `program` once, then hands the
+    // context back to `owner` and makes the worker's own context current
+    // again. The nanoseconds it took, or -1 with a reason when the lent
+    // context could not be used.
+    qint64 warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program,
+                             QThread *owner, QString *error);
     // Frees the worker's GL objects, releases the context and hands it back
     // to `owner` (the GUI thread) so that it can be deleted there.
     void shutdown(QThread *owner);
@@ -52,7 +61,7 @@ public:
 private:
     QOpenGLContext *m_context = nullptr;
     QOffscreenSurface *m_surface = nullptr;
-    int m_warmSamples = 0;
+    int m_warmSamples = -1; // of m_warmer's framebuffer
     ProgramBuilder m_builder;
     ProgramWarmer m_warmer;
     bool m_parallelShaderCompile = false;

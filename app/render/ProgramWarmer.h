@@ -10,12 +10,15 @@ namespace phonglab {
 
 // Draws a new program once into a tiny framebuffer so that the driver's
 // draw-time work lands here instead of on the first frame the viewport draws:
-// Mesa's llvmpipe JIT-compiles a shader variant for the framebuffer and
-// pipeline state on the first draw (80–100 ms for Phong), and keeps it with
-// the program, where any context of the share group finds it. The target
-// mirrors what Renderer draws into (RGBA8, depth-stencil, the viewport's
-// sample count, depth test, the mesh vertex layout), because a variant is
-// only reused for the same state. Needs its context current for every call.
+// Mesa's llvmpipe JIT-compiles shader variants for the framebuffer and
+// pipeline state on the first draw (80–150 ms for Phong). The target mirrors
+// what Renderer draws into (RGBA8, depth-stencil, the viewport's sample
+// count, depth test, the mesh vertex layout), because a variant is only
+// reused for the same state. Where the variant is kept depends on the
+// driver: drivers with shareable shaders keep it with the program (any
+// context of the share group benefits), llvmpipe keeps it per context, so
+// there the warming must happen in the viewport's own context (LentContext).
+// Needs its context current for every call.
 class ProgramWarmer : protected QOpenGLExtraFunctions
 {
 public:
@@ -25,6 +28,7 @@ public:
     ProgramWarmer &operator=(const ProgramWarmer &) = delete;
 
     bool create(int samples, QString *error);
+    bool isCreated() const { return m_fbo != nullptr; }
     void destroy();
     // One draw, then glFinish: when it returns, the program has run.
     void warm(GLuint program);

@@ -33,8 +33,8 @@ public:
     // Every active default-block uniform's current value (double types are
     // left out: GL 3.3 has none, and glGetUniformdv is not in the ES-based
     // function set). restore() sets each value whose name AND type match an
-    // active uniform of this program; the rest are skipped. Binds the program
-    // for the duration and puts the previously bound one back.
+    // active uniform of this program; the rest are skipped. It binds the
+    // program for the duration and puts the previously bound one back.
     UniformSnapshot snapshot();
     void restore(const UniformSnapshot &snapshot);
 

@@ -10,6 +10,7 @@
 
 #include <QSettings>
 #include <QTimer>
+#include <atomic>
 
 namespace phonglab {
 
@@ -17,10 +18,8 @@ namespace {
 
 constexpr int kDefaultDebounceMs = 300;
 constexpr int kStatusTimeoutMs = 8000;
-// A new program is trusted once it has drawn this many frames, or one frame
-// and this much time: then a crash is no longer blamed on it.
-constexpr int kProvenFrames = 3;
-constexpr int kProvenAfterMs = 1000;
+constexpr int kSlowBuildNoteMs = 250;
+constexpr int kHangNoteMs = 5000;
 
 std::pair<ShaderSource, ShaderSource> shippedSources(ShadingMethod method, QString *error)
 {
@@ -34,6 +33,19 @@ double toMs(qint64 ns)
     return double(ns) / 1e6;
 }
 
+std::optional<LiveShaderController::WarmUp> warmUpFromEnvironment()
+{
+    using W = LiveShaderController::WarmUp;
+    const QString value = qEnvironmentVariable("PHONGLAB_WARM_UP").trimmed().toLower();
+    if (value == QLatin1String("off"))
+        return W::Off;
+    if (value == QLatin1String("worker"))
+        return W::WorkerContext;
+    if (value == QLatin1String("viewport"))
+        return W::ViewportContext;
+    return std::nullopt;
+}
+
 } // namespace
 
 LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent)
@@ -43,27 +55,47 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_builder(new BackgroundProgramBuilder(this))
     , m_recovery(new ShaderRecovery(dock, this))
     , m_debounce(new QTimer(this))
-    , m_provenTimer(new QTimer(this))
+    , m_slowBuildNote(new QTimer(this))
+    , m_hangNote(new QTimer(this))
     , m_debounceMs(QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
 {
     m_forceGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
-    m_debounce->setSingleShot(true);
-    m_debounce->setInterval(std::max(0, m_debounceMs));
-    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(false); });
-    m_provenTimer->setSingleShot(true);
-    m_provenTimer->setInterval(kProvenAfterMs);
-    connect(m_provenTimer, &QTimer::timeout, this, &LiveShaderController::checkNewProgramProven);
+    setWarmUp(warmUpFromEnvironment().value_or(WarmUp::ViewportContext));
+    setUpTimers();
     connect(m_builder, &BackgroundProgramBuilder::built, this, &LiveShaderController::onBuilt);
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
     connect(m_viewport, &Viewport::glAboutToBeReleased, this, &LiveShaderController::onGlAboutToBeReleased);
-    connect(m_viewport, &Viewport::frameRendered, this, &LiveShaderController::onFrameRendered);
+    connect(m_viewport, &Viewport::frameRendered, m_recovery, &ShaderRecovery::frameRendered);
+    connect(m_viewport, &Viewport::shippedProgramLoaded, this, &LiveShaderController::onShippedProgramLoaded);
     connectDock();
     showPreset(m_viewport->currentScene().shading);
+}
+
+void LiveShaderController::setUpTimers()
+{
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(std::max(0, m_debounceMs));
+    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(false); });
+    // Said only when a build is slow: relaying out the dock for a status that
+    // lasts 3 ms would cost the GUI thread more than the build itself.
+    m_slowBuildNote->setSingleShot(true);
+    m_slowBuildNote->setInterval(kSlowBuildNoteMs);
+    connect(m_slowBuildNote, &QTimer::timeout, this, [this] { m_dock->setCompileStatus(tr("Compiling…"), true); });
+    m_hangNote->setSingleShot(true);
+    m_hangNote->setInterval(kHangNoteMs);
+    connect(m_hangNote, &QTimer::timeout, this, [this] {
+        const QString text = tr("The new shader has not finished its first draw after %1 s (an endless loop?). "
+                                "It is marked: PhongLab will not run it by itself at the next start.")
+                                 .arg(kHangNoteMs / 1000);
+        m_dock->setCompileStatus(text, false);
+        emit statusMessage(text, 0);
+    });
 }
 
 LiveShaderController::~LiveShaderController()
 {
     m_builder->stop();
+    endLoanNow();
     m_recovery->clear();
 }
 
@@ -86,9 +118,10 @@ bool LiveShaderController::buildsOnWorker() const
     return m_builder->isRunning();
 }
 
-void LiveShaderController::setWarmUp(bool warm)
+void LiveShaderController::setWarmUp(WarmUp warmUp)
 {
-    m_builder->setWarmUp(warm);
+    m_warmUp = warmUp;
+    m_builder->setWarmUp(warmUp == WarmUp::WorkerContext);
 }
 
 void LiveShaderController::showPreset(ShadingMethod method)
@@ -179,14 +212,37 @@ void LiveShaderController::onGlInitialized()
         requestBuild(false);
 }
 
+// The viewport replaced the program with a shipped one. For another
+// method (a scene was opened) followSceneShading() comes next and decides;
+// for the dock's own method (a failed open put it back) the dock's text is
+// built again if it differs.
+void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
+{
+    QString error;
+    const auto [vertex, fragment] = shippedSources(method, &error);
+    m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
+    if (method == m_shading && !m_holdAutoBuild && currentHash() != m_appliedHash)
+        requestBuild(false);
+}
+
 void LiveShaderController::onGlAboutToBeReleased()
 {
     // The worker's context shares with the one going away; a new one comes
     // with the next glInitialized().
     m_builder->stop();
+    endLoanNow();
     m_glReady = false;
     m_inFlight = 0;
     m_pending = false;
+    m_slowBuildNote->stop();
+    m_hangNote->stop();
+}
+
+// The worker has stopped: a loan it had is over, even if its reply is lost.
+void LiveShaderController::endLoanNow()
+{
+    if (std::exchange(m_loanActive, false))
+        m_viewport->endLoan(0);
 }
 
 void LiveShaderController::startWorker()
@@ -196,8 +252,7 @@ void LiveShaderController::startWorker()
         return;
     }
     QString error;
-    const int samples = std::max(0, m_viewport->format().samples());
-    if (!m_builder->start(m_viewport->context(), samples, &error)) {
+    if (!m_builder->start(m_viewport->context(), &error)) {
         qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(error));
         emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1")
                                .arg(error), 0);
@@ -229,15 +284,16 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     // Both before the program exists: a crash in the compiler, or in the
     // warm-up draw, then leaves the text in the journal and marked suspect.
     m_recovery->writeNow();
-    m_recovery->markRunning(hash);
+    m_recovery->buildStarted(hash);
     m_lastBuiltHash = hash;
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex), m_dock->text(ShaderStage::Vertex)};
     const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment)};
     m_buildClock.start();
     if (m_builder->isRunning()) {
         m_inFlightHash = hash;
-        m_inFlight = m_builder->build(vertex, fragment);
-        m_dock->setCompileStatus(tr("Compiling…"), true);
+        m_inFlight = m_builder->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
+        m_slowBuildNote->start();
+        m_hangNote->start();
         return;
     }
     ProgramBuild built = m_viewport->buildProgram(vertex, fragment);
@@ -256,6 +312,7 @@ void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
         return;
     }
     m_inFlight = 0;
+    m_slowBuildNote->stop();
     // Even when newer text waits, a finished program is shown: steady
     // progress while someone keeps typing in bursts longer than a build.
     finish(m_inFlightHash, reply);
@@ -266,19 +323,62 @@ void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
 void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildReply &reply)
 {
     if (!reply.program) {
+        m_hangNote->stop();
         showFailure(reply.result);
-        // The sentinel goes back to the program still on probation, if any.
-        if (!m_unproven.isEmpty())
-            m_recovery->markRunning(m_unproven);
-        else
-            m_recovery->clearRunning();
+        m_recovery->buildFailed();
         emit buildFailed(hash);
         return;
     }
-    m_viewport->adoptProgram(reply.program);
-    m_appliedHash = hash;
-    watchNewProgram(hash);
     m_dock->showDiagnostics(reply.result.diagnostics); // warnings only; clears old errors
+    if (warmInViewport(hash, reply))
+        return; // the hang note now waits for the draw in the lent context
+    m_hangNote->stop();
+    m_viewport->adoptProgram(reply.program);
+    announce(hash, reply);
+}
+
+// The switch to the new program and its first draw, in the viewport's own
+// context lent to the worker: where the driver keeps draw-time variants and
+// per-program state per context (llvmpipe), this is the only way that work
+// stays off the GUI thread.
+bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramBuildReply &reply)
+{
+    if (m_warmUp != WarmUp::ViewportContext || !m_builder->isRunning())
+        return false;
+    std::optional<LentContext> loan = m_viewport->lendContext(m_builder->workerThread());
+    if (!loan)
+        return false;
+    // The GUI thread leaves the renderer alone while the context is lent.
+    auto adopted = std::make_shared<std::atomic_bool>(false);
+    loan->whileCurrent = [viewport = m_viewport, program = reply.program, adopted] {
+        viewport->renderer().adoptProgram(program);
+        *adopted = true;
+    };
+    m_loanActive = true;
+    m_builder->warmInLentContext(*loan, reply.program, [this, hash, reply, adopted](qint64 warmNs,
+                                                                                  const QString &error) {
+        m_loanActive = false;
+        m_hangNote->stop();
+        m_viewport->endLoan();
+        if (!*adopted)
+            m_viewport->adoptProgram(reply.program);
+        ProgramBuildReply warmed = reply;
+        if (warmNs >= 0) {
+            warmed.warmNs = warmNs;
+        } else {
+            qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(error));
+            setWarmUp(WarmUp::Off);
+        }
+        announce(hash, warmed);
+    });
+    return true;
+}
+
+void LiveShaderController::announce(const QByteArray &hash, const ProgramBuildReply &reply)
+{
+    m_appliedHash = hash;
+    m_lastApplied = reply;
+    m_recovery->programShown(hash);
     const int warnings = int(reply.result.diagnostics.size());
     QString status = tr("Compiled in %1 ms (compile %2, link %3, first draw %4)")
                          .arg(double(m_buildClock.nsecsElapsed()) / 1e6, 0, 'f', 0)
@@ -300,39 +400,6 @@ void LiveShaderController::showFailure(const CompileResult &result)
     const QString text = tr("%n error(s) — last good program still running", nullptr, errors);
     m_dock->setCompileStatus(text, false);
     emit statusMessage(text, kStatusTimeoutMs);
-}
-
-void LiveShaderController::watchNewProgram(const QByteArray &hash)
-{
-    m_unproven = hash;
-    m_unprovenFrames = 0;
-    m_unprovenClock.start();
-    m_provenTimer->start();
-}
-
-void LiveShaderController::onFrameRendered()
-{
-    if (m_unproven.isEmpty())
-        return;
-    ++m_unprovenFrames;
-    checkNewProgramProven();
-}
-
-void LiveShaderController::checkNewProgramProven()
-{
-    if (m_unproven.isEmpty())
-        return;
-    const bool enoughFrames = m_unprovenFrames >= kProvenFrames;
-    const bool enoughTime = m_unprovenFrames >= 1 && m_unprovenClock.elapsed() >= kProvenAfterMs;
-    if (!enoughFrames && !enoughTime) {
-        if (!m_provenTimer->isActive())
-            m_provenTimer->start(); // e.g. hidden window: wait for a frame
-        return;
-    }
-    m_provenTimer->stop();
-    m_unproven.clear();
-    if (!m_inFlight) // a build on the worker keeps its own mark
-        m_recovery->clearRunning();
 }
 
 } // namespace phonglab

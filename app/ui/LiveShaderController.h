@@ -28,6 +28,14 @@ class LiveShaderController : public QObject
     Q_OBJECT
 
 public:
+    // Where a new program draws once before the viewport shows it, so that
+    // the driver's draw-time compile does not stall the GUI thread.
+    enum class WarmUp {
+        Off,
+        WorkerContext,   // the worker's own context: enough where drivers share variants
+        ViewportContext, // the viewport's context, lent to the worker: works on llvmpipe too
+    };
+
     LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent = nullptr);
     ~LiveShaderController() override; // a clean exit: stops the worker, clears the journal
 
@@ -44,15 +52,19 @@ public:
     // Offers a dead session's journal (see ShaderRecovery). Call once at start.
     void offerRecovery(QWidget *dialogParent);
 
-    // Benchmarks and tests: build on the GUI thread instead of the worker,
-    // and skip the worker's warm-up draw. Take effect at the next GL start.
+    // Benchmarks and tests: build on the GUI thread instead of the worker
+    // (from the next GL start on; also $PHONGLAB_COMPILE_ON_GUI_THREAD=1), and
+    // choose the warm-up ($PHONGLAB_WARM_UP=off|worker|viewport).
     void setBuildOnGuiThread(bool onGuiThread) { m_forceGuiThread = onGuiThread; }
-    void setWarmUp(bool warm);
+    void setWarmUp(WarmUp warmUp);
+    WarmUp warmUp() const { return m_warmUp; }
     int debounceMs() const { return m_debounceMs; }
     bool buildsOnWorker() const;
-    bool isBuilding() const { return m_inFlight != 0; }
+    bool isBuilding() const { return m_inFlight != 0 || m_loanActive; }
     bool isAutoBuildHeld() const { return m_holdAutoBuild; }
     QByteArray appliedHash() const { return m_appliedHash; }
+    // Timings of the program in use (warmNs > 0: warmed before it was shown).
+    const ProgramBuildReply &lastApplied() const { return m_lastApplied; }
     QByteArray currentHash() const;
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
@@ -65,44 +77,47 @@ signals:
     void buildFailed(const QByteArray &hash);
 
 private:
+    void setUpTimers();
     void connectDock();
     void onTextEdited();
     void onGlInitialized();
     void onGlAboutToBeReleased();
+    void onShippedProgramLoaded(ShadingMethod method);
     void startWorker();
     void requestBuild(bool force);
     void dispatch(const QByteArray &hash);
     void onBuilt(const ProgramBuildReply &reply);
     void finish(const QByteArray &hash, const ProgramBuildReply &reply);
+    bool warmInViewport(const QByteArray &hash, const ProgramBuildReply &reply);
+    void announce(const QByteArray &hash, const ProgramBuildReply &reply);
+    void endLoanNow();
     void showFailure(const CompileResult &result);
-    void watchNewProgram(const QByteArray &hash);
-    void onFrameRendered();
-    void checkNewProgramProven();
 
     ShaderDock *m_dock = nullptr;
     Viewport *m_viewport = nullptr;
     BackgroundProgramBuilder *m_builder = nullptr;
     ShaderRecovery *m_recovery = nullptr;
     QTimer *m_debounce = nullptr;
-    QTimer *m_provenTimer = nullptr;
+    QTimer *m_slowBuildNote = nullptr;
+    QTimer *m_hangNote = nullptr; // a build or first draw that does not come back
     int m_debounceMs = 300;
     ShadingMethod m_shading = ShadingMethod::Phong;
 
     bool m_glReady = false;
     bool m_buildWhenReady = false;
     bool m_forceGuiThread = false;
+    WarmUp m_warmUp = WarmUp::ViewportContext;
+    bool m_loanActive = false;    // the viewport's context is on the worker
     bool m_holdAutoBuild = false; // recovered suspect text: only F5 builds it
     QByteArray m_lastBuiltHash;   // last text sent to the compiler
     QByteArray m_appliedHash;     // text of the program the viewport draws with
+    ProgramBuildReply m_lastApplied;
     quint64 m_inFlight = 0;       // serial of the build on the worker, 0 if none
     QByteArray m_inFlightHash;
     bool m_pending = false;       // another build was asked for meanwhile
     bool m_pendingForce = false;
     QElapsedTimer m_buildClock;   // from dispatch to reply, for the status
 
-    QByteArray m_unproven;        // adopted program that has not drawn enough yet
-    int m_unprovenFrames = 0;
-    QElapsedTimer m_unprovenClock;
 };
 
 } // namespace phonglab

@@ -122,35 +122,14 @@ void MainWindow::typeTestTextAfterStart()
     m_liveShaders->recovery()->writeNow();
 }
 
+// A clean exit forgets the recovery journal: unsaved shaders are offered
+// for saving first.
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (confirmUnsavedShaders())
+    if (m_liveShaders->recovery()->confirmUnsaved(this))
         event->accept();
     else
         event->ignore();
-}
-
-// A clean exit forgets the recovery journal, so unsaved shader edits are
-// offered for saving first.
-bool MainWindow::confirmUnsavedShaders()
-{
-    if (!m_shaderDock->hasUnsavedChanges())
-        return true;
-    const auto answer = QMessageBox::question(
-        this, tr("Unsaved shader changes"), tr("The shaders have unsaved changes. Save them before quitting?"),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Cancel)
-        return false;
-    if (answer == QMessageBox::Discard)
-        return true;
-    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-        QString error;
-        if (m_shaderDock->isDirty(stage) && !m_shaderDock->save(stage, &error)) {
-            warn(tr("Cannot save shader"), error);
-            return false;
-        }
-    }
-    return true;
 }
 
 void MainWindow::createFileMenu()

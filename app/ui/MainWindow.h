@@ -72,7 +72,6 @@ protected:
 private:
     void createShaderDock();
     void typeTestTextAfterStart();
-    bool confirmUnsavedShaders();
     void createFileMenu();
     void createViewMenu();
     void createStatusBar();

@@ -38,9 +38,13 @@ ShaderRecovery::ShaderRecovery(ShaderDock *dock, QObject *parent)
     : QObject(parent)
     , m_dock(dock)
     , m_timer(new QTimer(this))
+    , m_probationTimer(new QTimer(this))
 {
     m_timer->setInterval(kJournalPeriodMs);
     connect(m_timer, &QTimer::timeout, this, &ShaderRecovery::writeIfStale);
+    m_probationTimer->setSingleShot(true);
+    m_probationTimer->setInterval(kProvenAfterMs);
+    connect(m_probationTimer, &QTimer::timeout, this, &ShaderRecovery::checkProbation);
 }
 
 ShaderRecovery::~ShaderRecovery() = default;
@@ -161,9 +165,79 @@ void ShaderRecovery::noteFilesChanged()
 void ShaderRecovery::clear()
 {
     m_timer->stop();
+    m_probationTimer->stop();
     m_journal.clear();
     m_running = false;
     m_stale = false;
+}
+
+bool ShaderRecovery::confirmUnsaved(QWidget *parent)
+{
+    if (!m_dock->hasUnsavedChanges())
+        return true;
+    const auto answer = QMessageBox::question(
+        parent, tr("Unsaved shader changes"), tr("The shaders have unsaved changes. Save them before quitting?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer != QMessageBox::Save)
+        return answer == QMessageBox::Discard;
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        QString error;
+        if (m_dock->isDirty(stage) && !m_dock->save(stage, &error)) {
+            QMessageBox::warning(parent, tr("Cannot save shader"), error);
+            return false;
+        }
+    }
+    return true;
+}
+
+void ShaderRecovery::buildStarted(const QByteArray &hash)
+{
+    m_building = true;
+    markRunning(hash);
+}
+
+void ShaderRecovery::buildFailed()
+{
+    m_building = false;
+    // The program that never existed is no suspect; one still on probation is.
+    if (!m_probation.isEmpty())
+        markRunning(m_probation);
+    else
+        clearRunning();
+}
+
+void ShaderRecovery::programShown(const QByteArray &hash)
+{
+    m_building = false;
+    m_probation = hash; // the sentinel already names it
+    m_probationFrames = 0;
+    m_probationClock.start();
+    m_probationTimer->start();
+}
+
+void ShaderRecovery::frameRendered()
+{
+    if (m_probation.isEmpty())
+        return;
+    ++m_probationFrames;
+    checkProbation();
+}
+
+void ShaderRecovery::checkProbation()
+{
+    if (m_probation.isEmpty())
+        return;
+    const bool enoughFrames = m_probationFrames >= kProvenFrames;
+    const bool enoughTime = m_probationFrames >= 1 && m_probationClock.elapsed() >= kProvenAfterMs;
+    if (!enoughFrames && !enoughTime) {
+        if (!m_probationTimer->isActive())
+            m_probationTimer->start(); // e.g. a hidden window: wait for a frame
+        return;
+    }
+    m_probationTimer->stop();
+    m_probation.clear();
+    if (!m_building) // a newer build keeps its own mark
+        clearRunning();
 }
 
 void ShaderRecovery::markRunning(const QByteArray &hash)

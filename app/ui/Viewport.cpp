@@ -8,6 +8,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QResizeEvent>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
 #include <cmath>
@@ -20,6 +21,7 @@ constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85;  // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;        // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1;  // weight of the newest frame in the running average
+constexpr int kLoanReturnTimeoutMs = 5000;   // a borrower stuck in the driver (a shader that never ends)
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -46,6 +48,7 @@ QString contextDescription(QOpenGLContext *context)
 
 Viewport::Viewport(QWidget *parent)
     : QOpenGLWidget(parent)
+    , m_loan(this)
 {
     setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
     setAcceptDrops(true);
@@ -79,9 +82,14 @@ bool Viewport::setScene(const Scene &scene, SceneMeshes &&meshes, QString *error
         return false;
     }
     if (m_glInitialized) {
+        endLoan();
         makeCurrent();
+        const GLuint programBefore = m_renderer.program().id();
         const bool ok = uploadScene(scene, std::move(meshes), error);
+        const bool programReplaced = m_renderer.program().id() != programBefore;
         doneCurrent();
+        if (programReplaced) // the new scene's shading, or the old one restored after a failure
+            emit shippedProgramLoaded(ok ? scene.shading : m_scene.shading);
         if (!ok)
             return false;
         m_renderReady = true;
@@ -144,6 +152,7 @@ void Viewport::adoptProgram(GLuint program)
 {
     if (!m_glInitialized)
         return; // no context to free it with either; it goes with its share group
+    endLoan();
     makeCurrent();
     m_renderer.adoptProgram(program);
     doneCurrent();
@@ -152,25 +161,53 @@ void Viewport::adoptProgram(GLuint program)
 
 ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSource &fragment)
 {
+    ProgramBuild built;
     if (!m_glInitialized) {
-        ProgramBuild none;
-        none.result.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0,
-                                           tr("OpenGL is not running in the viewport")});
-        return none;
+        built.result.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0,
+                                            tr("OpenGL is not running in the viewport")});
+        return built;
     }
+    endLoan();
     makeCurrent();
-    ProgramBuild built = ProgramBuilder().build(vertex, fragment);
+    built = ProgramBuilder().build(vertex, fragment);
     doneCurrent();
     return built;
 }
 
-void Viewport::releaseProgram(GLuint program)
+std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
-    if (!m_glInitialized || !program)
-        return;
-    makeCurrent();
-    context()->extraFunctions()->glDeleteProgram(program);
-    doneCurrent();
+    if (!m_glInitialized)
+        return std::nullopt;
+    return m_loan.lend(borrower, &m_warmer, std::max(0, m_framebufferSamples));
+}
+
+bool Viewport::endLoan(int timeoutMs)
+{
+    return m_loan.end(timeoutMs);
+}
+
+QImage Viewport::grabFramebuffer()
+{
+    endLoan();
+    return QOpenGLWidget::grabFramebuffer();
+}
+
+// QOpenGLWidget makes its context current for these on its own; with the
+// context lent they wait for it. Input goes on (the view repaints when the
+// context is back), so the window stays responsive during a loan.
+bool Viewport::event(QEvent *event)
+{
+    const QEvent::Type type = event->type();
+    if (type == QEvent::Show || type == QEvent::WindowChangeInternal
+        || type == QEvent::WindowAboutToChangeInternal || type == QEvent::ScreenChangeInternal)
+        endLoan();
+    return QOpenGLWidget::event(event);
+}
+
+void Viewport::resizeEvent(QResizeEvent *event)
+{
+    endLoan(); // the framebuffer is recreated with the context current
+    QOpenGLWidget::resizeEvent(event);
 }
 
 void Viewport::resetCamera()
@@ -191,6 +228,7 @@ void Viewport::initializeGL()
     // Called again with a fresh context when the widget changes window; the
     // old context's resources are freed in cleanup() just before it goes.
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
+    m_framebufferSamples = -1; // a new context, a new framebuffer
     m_glRendererName = contextDescription(context());
     emit glRendererChanged(m_glRendererName);
 
@@ -241,10 +279,15 @@ bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *er
 void Viewport::cleanup()
 {
     if (m_glInitialized) {
-        emit glAboutToBeReleased();
-        makeCurrent();
-        m_renderer.cleanup();
-        doneCurrent();
+        emit glAboutToBeReleased(); // the borrower stops, and gives the context back
+        if (endLoan(kLoanReturnTimeoutMs)) {
+            makeCurrent();
+            m_warmer.destroy();
+            m_renderer.cleanup();
+            doneCurrent();
+        } else {
+            qWarning("phonglab: the viewport's OpenGL context was not given back; its resources are left");
+        }
     }
     m_glInitialized = false;
     m_renderReady = false;
@@ -254,6 +297,7 @@ void Viewport::cleanup()
 
 void Viewport::paintGL()
 {
+    m_loan.framePainted();
     QOpenGLFunctions *f = context()->functions();
     if (!m_renderReady) {
         // Nothing to draw (GL failed and was reported): show the background.
@@ -267,6 +311,11 @@ void Viewport::paintGL()
         m_parametersDirty = false;
     }
 
+    if (m_framebufferSamples < 0) {
+        // What QOpenGLWidget really allocated (format() reports the
+        // context's, which has none): a warm-up must draw with the same.
+        f->glGetIntegerv(GL_SAMPLES, &m_framebufferSamples);
+    }
     QElapsedTimer timer;
     timer.start();
     // The same rounding QOpenGLWidget uses to size its framebuffer.

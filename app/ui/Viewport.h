@@ -1,7 +1,10 @@
 #pragma once
+#include "ContextLoan.h"
 #include "core/OrbitCamera.h"
 #include "core/Scene.h"
+#include "render/LentContext.h"
 #include "render/ProgramBuilder.h"
+#include "render/ProgramWarmer.h"
 #include "render/Renderer.h"
 
 #include <QOpenGLWidget>
@@ -45,11 +48,26 @@ public:
     // on a context sharing this one's objects (or by buildProgram()) and owns
     // it from then on; uniforms the user set carry over. buildProgram()
     // compiles on the GUI thread with this context: the fallback when no
-    // shared context can be had. All need isRenderReady().
+    // shared context can be had. Both need GL to be up (glInitialized()).
     void adoptProgram(GLuint program);
     ProgramBuild buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
-    void releaseProgram(GLuint program);
     Renderer &renderer() { return m_renderer; } // call with the context current (makeCurrent())
+
+    // Lends the GL context to `borrower` (see LentContext), so that a new
+    // program's draw-time compile happens in this very context but off the
+    // GUI thread. Until endLoan() the view does not paint, and anything that
+    // needs the context on this thread first waits for it to come back.
+    // Refused (nullopt) while a painted frame waits to be composed (the
+    // window is hidden, or a grab): the caller then does the work itself.
+    std::optional<LentContext> lendContext(QThread *borrower);
+    // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
+    // and paints again. False if it did not come back in time.
+    bool endLoan(int timeoutMs = -1);
+    bool isContextLent() const { return m_loan.isActive(); }
+    // Samples of the framebuffer the view draws into (-1 before the first frame).
+    int framebufferSamples() const { return m_framebufferSamples; }
+    // QOpenGLWidget::grabFramebuffer() once a lent context is back.
+    QImage grabFramebuffer();
 
     void resetCamera();
     void setShowLightMarkers(bool show);
@@ -78,8 +96,14 @@ signals:
     void glInitialized();
     // The context is about to go: objects shared with it must be let go.
     void glAboutToBeReleased();
+    // setScene() put `method`'s shipped program in place of whatever was
+    // drawing (the new scene's shading, or the old one's after a failure).
+    // Emitted before sceneChanged().
+    void shippedProgramLoaded(phonglab::ShadingMethod method);
 
 protected:
+    bool event(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
     void initializeGL() override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent *event) override;
@@ -113,6 +137,9 @@ private:
     double m_smoothedFrameMs = 0.0;
     qint64 m_framesRendered = 0;
     QString m_glRendererName;
+    ContextLoan m_loan;
+    ProgramWarmer m_warmer;          // created in this context by a borrower; freed in cleanup()
+    GLint m_framebufferSamples = -1; // of QOpenGLWidget's framebuffer; -1: not known yet
 };
 
 } // namespace phonglab

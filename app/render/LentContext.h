@@ -1,0 +1,29 @@
+#pragma once
+#include <QSemaphore>
+#include <functional>
+#include <memory>
+
+class QOpenGLContext;
+
+namespace phonglab {
+
+class ProgramWarmer;
+
+// A QOpenGLWidget's context lent to another thread, the way QOpenGLWidget
+// documents drawing off the GUI thread: the owner stops painting, releases
+// the context and moves it to the borrower's thread. The borrower makes it
+// current on a surface of its own, draws, releases it, moves it back to the
+// owner's thread and only then releases `returned`; the owner waits on that
+// before it touches GL again.
+struct LentContext {
+    QOpenGLContext *context = nullptr;
+    ProgramWarmer *warmer = nullptr; // owned by the lender, lives in `context`
+    int samples = 0;                 // of the lender's framebuffer
+    std::shared_ptr<QSemaphore> returned;
+    // Runs on the borrower's thread with the context current, before the
+    // warm-up draw (e.g. switching the renderer to the new program, whose
+    // first use in a context has a cost of its own on llvmpipe).
+    std::function<void()> whileCurrent;
+};
+
+} // namespace phonglab

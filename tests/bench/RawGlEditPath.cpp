@@ -1,0 +1,162 @@
+// Plain GL entry points, as a program without Qt's wrappers calls them.
+#define GL_GLEXT_PROTOTYPES 1
+
+#include "RawGlEditPath.h"
+
+#include "core/ObjectMatrices.h"
+#include "core/ResourcePaths.h"
+#include "render/GlFormat.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <cstdio>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace phonglab::bench {
+
+bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, const MeshData &mesh)
+{
+    QFile vertex(shaderPath(QStringLiteral("phong.vert")));
+    if (!vertex.open(QIODevice::ReadOnly))
+        return false;
+    m_vertex = vertex.readAll();
+    m_context.setFormat(phonglabSurfaceFormat(0));
+    m_surface.setFormat(m_context.format());
+    m_surface.create();
+    if (!m_context.create() || !m_context.makeCurrent(&m_surface))
+        return false;
+    m_size = size;
+    m_scene = scene;
+    // The viewport's target: RGBA8 + depth-stencil, same size and samples.
+    glGenRenderbuffers(1, &m_color);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_color);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, size.width(), size.height());
+    glGenRenderbuffers(1, &m_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_depth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, size.width(), size.height());
+    glGenFramebuffers(1, &m_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_color);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, m_depth);
+
+    std::vector<float> interleaved;
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        interleaved.insert(interleaved.end(), {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
+                                               mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
+    glGenVertexArrays(1, &m_vao);
+    glBindVertexArray(m_vao);
+    glGenBuffers(1, &m_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &m_ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
+    m_indexCount = GLsizei(mesh.indices.size());
+    return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+RawGlEditPath::~RawGlEditPath()
+{
+    if (!m_context.makeCurrent(&m_surface))
+        return;
+    glDeleteVertexArrays(1, &m_vao);
+    GLuint buffers[] = {m_vbo, m_ibo};
+    glDeleteBuffers(2, buffers);
+    glDeleteFramebuffers(1, &m_fbo);
+    GLuint renderbuffers[] = {m_color, m_depth};
+    glDeleteRenderbuffers(2, renderbuffers);
+    m_context.doneCurrent();
+}
+
+GLuint RawGlEditPath::compile(GLenum type, const QByteArray &text)
+{
+    const GLuint shader = glCreateShader(type);
+    const char *source = text.constData();
+    const GLint length = GLint(text.size());
+    glShaderSource(shader, 1, &source, &length);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    return ok ? shader : 0;
+}
+
+void RawGlEditPath::setUniforms(GLuint p)
+{
+    const auto at = [p](const char *name) { return glGetUniformLocation(p, name); };
+    const double aspect = double(m_size.width()) / m_size.height();
+    const glm::dmat4 view = m_scene.camera.viewMatrix();
+    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect);
+    const SceneObject &object = m_scene.objects.front();
+    const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
+    glUniformMatrix4fv(at("viewMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(view)));
+    glUniformMatrix4fv(at("projectionMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(projection)));
+    glUniformMatrix4fv(at("modelViewMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(m.modelView)));
+    glUniformMatrix3fv(at("normalMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat3(m.normalMatrix)));
+    glUniform3fv(at("Ia"), 1, glm::value_ptr(glm::vec3(m_scene.ambient)));
+    glUniform3fv(at("ka"), 1, glm::value_ptr(glm::vec3(object.material.ka)));
+    glUniform3fv(at("kd"), 1, glm::value_ptr(glm::vec3(object.material.kd)));
+    glUniform3fv(at("ks"), 1, glm::value_ptr(glm::vec3(object.material.ks)));
+    glUniform1f(at("shininess"), float(object.material.shininess));
+    const int count = std::min<int>(int(m_scene.lights.size()), kMaxLights);
+    glUniform1i(at("lightCount"), count);
+    for (int i = 0; i < count; ++i) {
+        const PointLight &l = m_scene.lights[i];
+        const auto element = [&](const char *name) { return at(QByteArray(name).append('[').append(QByteArray::number(i)).append(']')); };
+        glUniform3fv(element("lightPosition"), 1, glm::value_ptr(glm::vec3(l.position)));
+        glUniform3fv(element("Id"), 1, glm::value_ptr(glm::vec3(l.diffuse)));
+        glUniform3fv(element("Is"), 1, glm::value_ptr(glm::vec3(l.specular)));
+        glUniform3fv(element("attenuation"), 1, glm::value_ptr(glm::vec3(l.attenuation)));
+    }
+}
+
+EditSample RawGlEditPath::edit(const QByteArray &fragment)
+{
+    m_context.makeCurrent(&m_surface);
+    EditSample s;
+    QElapsedTimer total, step;
+    total.start();
+    step.start();
+    const GLuint vs = compile(GL_VERTEX_SHADER, m_vertex);
+    const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment);
+    s.compileMs = ms(step.nsecsElapsed());
+    step.restart();
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, vs);
+    glAttachShader(program, fs);
+    glLinkProgram(program);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    s.linkMs = ms(step.nsecsElapsed());
+    step.restart();
+    glBindFramebuffer(GL_FRAMEBUFFER, m_fbo);
+    glViewport(0, 0, m_size.width(), m_size.height());
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glUseProgram(program);
+    setUniforms(program);
+    glBindVertexArray(m_vao);
+    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    glFinish();
+    s.frameMs = ms(step.nsecsElapsed());
+    s.totalMs = ms(total.nsecsElapsed());
+    s.stallMs = s.totalMs; // it all happens on the calling thread
+    step.restart();
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    glFinish();
+    s.steadyMs = ms(step.nsecsElapsed());
+    glUseProgram(0);
+    glDeleteProgram(program);
+    if (!linked)
+        std::fprintf(stderr, "raw GL: the edited shader did not link\n");
+    return s;
+}
+
+} // namespace phonglab::bench

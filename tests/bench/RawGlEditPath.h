@@ -1,0 +1,43 @@
+#pragma once
+#include "EditSample.h"
+#include "core/Scene.h"
+#include "mesh/MeshData.h"
+
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QSize>
+
+namespace phonglab::bench {
+
+// The baseline an edit is measured against: the same steps with plain GL
+// calls (glCreateShader, glCompileShader, glLinkProgram, one draw of the
+// mesh with the scene's uniforms, glFinish), no Qt wrappers, on a context of
+// its own drawing into a framebuffer like the viewport's (RGBA8 +
+// depth-stencil, same size and samples).
+class RawGlEditPath
+{
+public:
+    RawGlEditPath() = default;
+    ~RawGlEditPath();
+    RawGlEditPath(const RawGlEditPath &) = delete;
+    RawGlEditPath &operator=(const RawGlEditPath &) = delete;
+
+    // Scene's first object and `mesh` (its mesh) are what every edit draws.
+    bool create(const QSize &size, int samples, const Scene &scene, const MeshData &mesh);
+    // Builds `fragment` with the shipped Phong vertex shader and draws once.
+    EditSample edit(const QByteArray &fragment);
+
+private:
+    GLuint compile(GLenum type, const QByteArray &text);
+    void setUniforms(GLuint program);
+
+    QOpenGLContext m_context;
+    QOffscreenSurface m_surface;
+    QSize m_size;
+    Scene m_scene;
+    QByteArray m_vertex;
+    GLuint m_fbo = 0, m_color = 0, m_depth = 0, m_vao = 0, m_vbo = 0, m_ibo = 0;
+    GLsizei m_indexCount = 0;
+};
+
+} // namespace phonglab::bench
