@@ -209,8 +209,10 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
 void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection)
 {
     m_markerProgram.bind();
-    for (const PointLight &light : m_scene.lights) {
-        const glm::dmat4 model = glm::dmat4(kMarkerRadius, 0, 0, 0, 0, kMarkerRadius, 0, 0, 0, 0, kMarkerRadius, 0,
+    for (int i = 0; i < int(m_scene.lights.size()); ++i) {
+        const PointLight &light = m_scene.lights[i];
+        const double r = i == m_options.selectedLight ? 2.0 * kMarkerRadius : kMarkerRadius;
+        const glm::dmat4 model = glm::dmat4(r, 0, 0, 0, 0, r, 0, 0, 0, 0, r, 0,
                                             light.position.x, light.position.y, light.position.z, 1);
         // Show the light's hue even when its intensity is above 1 or very dim.
         const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});

@@ -22,6 +22,7 @@ public:
     struct Options {
         bool drawLightMarkers = false;
         bool cullBackFaces = true; // builtin and imported meshes are closed
+        int selectedLight = -1;    // its marker is drawn larger (the Lights dock's selection)
     };
 
     Renderer();

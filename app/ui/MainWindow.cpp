@@ -6,11 +6,13 @@
 #include "MeshStatsText.h"
 #include "RecentFiles.h"
 #include "SceneDock.h"
+#include "SceneEditDocks.h"
 #include "SceneLoadJob.h"
 #include "SceneLoadRequests.h"
 #include "ShaderDock.h"
 #include "ShaderEditor.h"
 #include "ShaderRecovery.h"
+#include "UniformsDock.h"
 #include "Viewport.h"
 #include "core/SceneJson.h"
 
@@ -20,6 +22,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -77,7 +80,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_shaderDock->raise();
     resizeDocks({m_sceneDock}, {kSceneDockWidth}, Qt::Horizontal);
     createShaderDock();
+    createUniformsDock();
+    m_editDocks = new SceneEditDocks(this, m_viewport, m_sceneDock);
+    m_shaderDock->raise(); // still the tab shown first
     createFileMenu();
+    m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
     createViewMenu();
     createStatusBar();
     connectLoading();
@@ -132,6 +139,25 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
 }
 
+// Rebuilt from the linked program after every build, including the shipped
+// program a scene or a fresh context loads.
+void MainWindow::createUniformsDock()
+{
+    m_uniformsDock = new UniformsDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_uniformsDock);
+    tabifyDockWidget(m_shaderDock, m_uniformsDock);
+    m_shaderDock->raise();
+    m_uniformsDock->attach(m_viewport, m_shaderDock);
+    // Queued: glInitialized comes from inside initializeGL, where the
+    // viewport must not be asked to repaint.
+    for (auto signal : {&Viewport::glInitialized, &Viewport::sceneChanged})
+        connect(m_viewport, signal, m_uniformsDock, &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::shippedProgramLoaded, m_uniformsDock, &UniformsDock::scheduleRebuild,
+            Qt::QueuedConnection);
+    connect(m_liveShaders, &LiveShaderController::programApplied, m_uniformsDock, &UniformsDock::scheduleRebuild,
+            Qt::QueuedConnection);
+}
+
 void MainWindow::createFileMenu()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
@@ -147,6 +173,7 @@ void MainWindow::createFileMenu()
     save->setShortcut(QKeySequence::Save);
     QAction *saveAs = file->addAction(tr("Save Scene &As…"), this, &MainWindow::chooseAndSaveScene);
     saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
+    file->addAction(tr("&Export Image…"), this, &MainWindow::chooseAndExportImage);
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence(tr("Ctrl+Q")));
@@ -175,6 +202,10 @@ void MainWindow::createViewMenu()
     QAction *shaders = m_shaderDock->toggleViewAction();
     shaders->setText(tr("S&haders Dock"));
     view->addAction(shaders);
+    QAction *uniforms = m_uniformsDock->toggleViewAction();
+    uniforms->setText(tr("&Uniforms Dock"));
+    view->addAction(uniforms);
+    m_editDocks->addDockToggles(view);
 }
 
 void MainWindow::createStatusBar()
@@ -396,6 +427,42 @@ QString MainWindow::dialogFolder() const
 
 // Non-blocking, so neither a load finishing nor a drop ever waits on a
 // dialog, and nothing stalls the event loop.
+bool MainWindow::exportImage(const QString &path, const QSize &size, QString *error)
+{
+    const QImage image = m_viewport->renderImage(size);
+    if (image.isNull()) {
+        if (error)
+            *error = tr("Cannot render a %1×%2 image").arg(size.width()).arg(size.height());
+        return false;
+    }
+    if (!image.save(path, "PNG")) {
+        if (error)
+            *error = tr("Cannot write %1").arg(path);
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::chooseAndExportImage()
+{
+    const QSize shown = m_viewport->size() * m_viewport->devicePixelRatioF();
+    bool ok = false;
+    const int width = QInputDialog::getInt(this, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1, 16384, 1, &ok);
+    if (!ok)
+        return;
+    const int height = QInputDialog::getInt(this, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1, 16384, 1, &ok);
+    if (!ok)
+        return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!exportImage(path, {width, height}, &error))
+        warn(tr("Export Image"), error);
+    else
+        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
+}
+
 void MainWindow::warn(const QString &title, const QString &message)
 {
     auto *box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);

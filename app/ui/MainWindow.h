@@ -12,8 +12,10 @@ class LiveShaderController;
 class LoadProgressWidget;
 class RecentFiles;
 class SceneDock;
+class SceneEditDocks;
 class SceneLoadJob;
 class ShaderDock;
+class UniformsDock;
 class Viewport;
 
 // The editor window: the Viewport in the middle, the Shaders dock (live
@@ -44,11 +46,16 @@ public:
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
 
+    // Renders the current view at `size` pixels and writes it as PNG.
+    bool exportImage(const QString &path, const QSize &size, QString *error);
+
     QString scenePath() const { return m_scenePath; }
     Viewport *viewport() const { return m_viewport; }
     SceneLoadJob *loadJob() const { return m_loadJob; }
     SceneDock *sceneDock() const { return m_sceneDock; }
     ShaderDock *shaderDock() const { return m_shaderDock; }
+    UniformsDock *uniformsDock() const { return m_uniformsDock; }
+    SceneEditDocks *editDocks() const { return m_editDocks; }
     LiveShaderController *liveShaders() const { return m_liveShaders; }
     RecentFiles *recentFiles() const { return m_recentFiles; }
     LoadProgressWidget *loadProgress() const { return m_loadProgress; }
@@ -65,12 +72,14 @@ private slots:
     void showLoadFailure(const QString &label, const QString &error);
     void showLoadCancelled(const QString &label);
     void refreshSceneDock();
+    void chooseAndExportImage();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
     void createShaderDock();
+    void createUniformsDock();
     void typeTestTextAfterStart();
     void createFileMenu();
     void createViewMenu();
@@ -84,7 +93,9 @@ private:
     Viewport *m_viewport = nullptr;
     SceneLoadJob *m_loadJob = nullptr;
     SceneDock *m_sceneDock = nullptr;
+    SceneEditDocks *m_editDocks = nullptr; // lights, material, object docks + undo stack
     ShaderDock *m_shaderDock = nullptr;
+    UniformsDock *m_uniformsDock = nullptr;
     LiveShaderController *m_liveShaders = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     LoadProgressWidget *m_loadProgress = nullptr;

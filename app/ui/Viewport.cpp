@@ -1,5 +1,7 @@
 #include "Viewport.h"
 
+#include "LightPicking.h"
+
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QElapsedTimer>
@@ -8,6 +10,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLFramebufferObject>
 #include <QResizeEvent>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
@@ -21,7 +24,8 @@ constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85;  // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;        // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1;  // weight of the newest frame in the running average
-constexpr int kLoanReturnTimeoutMs = 5000;   // a borrower stuck in the driver (a shader that never ends)
+constexpr int kLoanReturnTimeoutMs = 5000;
+constexpr double kLightPickRadiusPx = 8.0;   // how near a click must be to a marker   // a borrower stuck in the driver (a shader that never ends)
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -144,7 +148,7 @@ void Viewport::setShading(ShadingMethod method)
     // The renderer's copy decides whether a later scene must reload its
     // program, so it has to follow now rather than at the next paint.
     if (m_renderReady)
-        m_renderer.updateSceneParameters(currentScene());
+        m_renderer.updateSceneParameters(renderedScene());
     cameraMoved(); // the parameters changed; repaint
 }
 
@@ -208,6 +212,104 @@ void Viewport::resizeEvent(QResizeEvent *event)
 {
     endLoan(); // the framebuffer is recreated with the context current
     QOpenGLWidget::resizeEvent(event);
+}
+
+void Viewport::setSceneParameters(const Scene &scene)
+{
+    m_scene.ambient = scene.ambient;
+    m_scene.lights = scene.lights;
+    const size_t count = std::min(m_scene.objects.size(), scene.objects.size());
+    for (size_t i = 0; i < count; ++i) {
+        m_scene.objects[i].material = scene.objects[i].material;
+        m_scene.objects[i].transform = scene.objects[i].transform;
+    }
+    if (m_options.selectedLight >= int(m_scene.lights.size()))
+        setSelectedLight(int(m_scene.lights.size()) - 1);
+    m_parametersDirty = true;
+    update();
+    emit sceneParametersChanged();
+}
+
+QImage Viewport::renderImage(const QSize &pixelSize)
+{
+    if (!m_renderReady || pixelSize.isEmpty())
+        return {};
+    endLoan();
+    makeCurrent();
+    if (m_parametersDirty) {
+        m_renderer.updateSceneParameters(renderedScene());
+        m_parametersDirty = false;
+    }
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    format.setInternalTextureFormat(GL_RGBA8);
+    QImage image;
+    {
+        QOpenGLFramebufferObject fbo(pixelSize, format);
+        if (fbo.isValid() && fbo.bind()) {
+            m_renderer.render(pixelSize);
+            image = fbo.toImage(true);
+            fbo.release();
+        }
+    }
+    doneCurrent();
+    return image;
+}
+
+void Viewport::setHeadlight(bool on)
+{
+    m_headlight = on;
+    m_parametersDirty = true;
+    update();
+}
+
+Scene Viewport::renderedScene() const
+{
+    Scene scene = currentScene();
+    if (m_headlight && int(scene.lights.size()) < kMaxLights) {
+        PointLight head;
+        head.position = scene.camera.eye; // moves with every orbit, pan and zoom
+        scene.lights.push_back(head);
+    }
+    return scene;
+}
+
+void Viewport::setSelectedLight(int index)
+{
+    m_options.selectedLight = index;
+    m_renderer.setOptions(m_options); // plain state, no GL call
+    update();
+}
+
+bool Viewport::startLightDrag(const QPointF &position)
+{
+    if (!m_options.drawLightMarkers)
+        return false; // nothing visible to grab
+    m_dragLight = pickLight(m_scene.lights, m_orbit.camera(), QSizeF(size()), position, kLightPickRadiusPx);
+    if (m_dragLight < 0)
+        return false;
+    m_dragStart = m_scene.lights[m_dragLight];
+    setSelectedLight(m_dragLight);
+    emit lightPicked(m_dragLight);
+    return true;
+}
+
+void Viewport::dragLight(const QPointF &position, bool alongView)
+{
+    glm::dvec3 &p = m_scene.lights[m_dragLight].position;
+    p = alongView ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
+                  : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
+    m_parametersDirty = true;
+    update();
+    emit sceneParametersChanged();
+}
+
+void Viewport::finishLightDrag()
+{
+    const int index = m_dragLight;
+    m_dragLight = -1;
+    if (index >= 0 && index < int(m_scene.lights.size()) && !(m_scene.lights[index] == m_dragStart))
+        emit lightDragged(index, m_dragStart, m_scene.lights[index]);
 }
 
 void Viewport::resetCamera()
@@ -307,7 +409,7 @@ void Viewport::paintGL()
         return;
     }
     if (m_parametersDirty) {
-        m_renderer.updateSceneParameters(currentScene());
+        m_renderer.updateSceneParameters(renderedScene());
         m_parametersDirty = false;
     }
 
@@ -345,7 +447,7 @@ void Viewport::mousePressEvent(QMouseEvent *event)
 {
     switch (event->button()) {
     case Qt::LeftButton:
-        m_drag = Drag::Orbit;
+        m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
         break;
     case Qt::RightButton:
     case Qt::MiddleButton:
@@ -365,6 +467,12 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
+    if (m_drag == Drag::Light) {
+        dragLight(event->position(), event->modifiers() & Qt::ShiftModifier);
+        m_lastMousePos = event->position();
+        event->accept();
+        return;
+    }
     const QPointF delta = event->position() - m_lastMousePos;
     m_lastMousePos = event->position();
     if (m_drag == Drag::Orbit) {
@@ -380,8 +488,11 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
 
 void Viewport::mouseReleaseEvent(QMouseEvent *event)
 {
-    if (event->buttons() == Qt::NoButton)
+    if (event->buttons() == Qt::NoButton) {
+        if (m_drag == Drag::Light)
+            finishLightDrag(); // the whole drag is one undo step
         m_drag = Drag::None;
+    }
     event->accept();
 }
 

@@ -69,6 +69,25 @@ public:
     // QOpenGLWidget::grabFramebuffer() once a lent context is back.
     QImage grabFramebuffer();
 
+    // The cheap path for dock edits: takes lights, ambient, materials and
+    // transforms from `scene` (same objects and meshes as shown) without
+    // reloading anything; the camera as orbited stays.
+    void setSceneParameters(const Scene &scene);
+    // The current frame rendered again at `pixelSize` into a framebuffer
+    // object with this view's renderer and program (File → Export Image).
+    // Null when GL is not up or the size cannot be allocated.
+    QImage renderImage(const QSize &pixelSize);
+    // A white light at the eye that follows the camera: the one light not in
+    // world space. A view setting, not part of the scene (currentScene() has
+    // no trace of it); added only while fewer than kMaxLights are in use.
+    void setHeadlight(bool on);
+    bool headlight() const { return m_headlight; }
+    // currentScene() plus the headlight: what the renderer draws.
+    Scene renderedScene() const;
+    // The light whose marker is drawn highlighted (-1: none).
+    void setSelectedLight(int index);
+    int selectedLight() const { return m_options.selectedLight; }
+
     void resetCamera();
     void setShowLightMarkers(bool show);
     bool showLightMarkers() const { return m_options.drawLightMarkers; }
@@ -100,6 +119,12 @@ signals:
     // drawing (the new scene's shading, or the old one's after a failure).
     // Emitted before sceneChanged().
     void shippedProgramLoaded(phonglab::ShadingMethod method);
+    // setSceneParameters() or a marker drag changed lights / materials / transforms.
+    void sceneParametersChanged();
+    // A marker drag ended: one finished move of light `index` (for undo).
+    void lightDragged(int index, const phonglab::PointLight &before, const phonglab::PointLight &after);
+    // A light marker was clicked.
+    void lightPicked(int index);
 
 protected:
     bool event(QEvent *event) override;
@@ -115,13 +140,16 @@ protected:
     void dropEvent(QDropEvent *event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan };
+    enum class Drag { None, Orbit, Pan, Light };
 
     void cleanup();
     bool uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
     void showUploaded(const Scene &scene);
     void cameraMoved();
     void recordFrameTime(double milliseconds);
+    bool startLightDrag(const QPointF &position);
+    void dragLight(const QPointF &position, bool alongView);
+    void finishLightDrag();
 
     Renderer m_renderer;
     Renderer::Options m_options{.drawLightMarkers = true};
@@ -134,6 +162,9 @@ private:
     bool m_parametersDirty = true; // camera moved since the renderer last saw it
     Drag m_drag = Drag::None;
     QPointF m_lastMousePos;
+    bool m_headlight = false;
+    int m_dragLight = -1;      // the light a Drag::Light moves
+    PointLight m_dragStart;    // ... as it was when the drag began
     double m_smoothedFrameMs = 0.0;
     qint64 m_framesRendered = 0;
     QString m_glRendererName;

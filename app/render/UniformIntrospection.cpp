@@ -1,0 +1,73 @@
+#include "UniformIntrospection.h"
+
+#include <algorithm>
+
+namespace phonglab {
+
+std::vector<ActiveUniformInfo> activeUniformsOf(QOpenGLExtraFunctions *gl, GLuint program)
+{
+    std::vector<ActiveUniformInfo> list;
+    if (program == 0)
+        return list;
+    GLint count = 0, maxLength = 0;
+    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
+    QByteArray buffer(std::max(maxLength, 1), '\0');
+    for (GLuint i = 0; i < GLuint(count); ++i) {
+        GLint block = -1;
+        gl->glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
+        ActiveUniformInfo u;
+        GLsizei length = 0;
+        gl->glGetActiveUniform(program, i, GLsizei(buffer.size()), &length, &u.size, &u.type, buffer.data());
+        u.name = QByteArray(buffer.constData(), length);
+        if (block != -1 || u.name.startsWith("gl_"))
+            continue; // block members and built-ins have no value of their own to set
+        u.location = gl->glGetUniformLocation(program, u.name.constData());
+        u.isArray = u.name.endsWith("[0]");
+        if (u.isArray)
+            u.name.chop(3);
+        list.push_back(u);
+    }
+    std::sort(list.begin(), list.end(),
+              [](const ActiveUniformInfo &a, const ActiveUniformInfo &b) { return a.name < b.name; });
+    return list;
+}
+
+QString glslTypeName(GLenum type)
+{
+    switch (type) {
+    case GL_FLOAT: return QStringLiteral("float");
+    case GL_FLOAT_VEC2: return QStringLiteral("vec2");
+    case GL_FLOAT_VEC3: return QStringLiteral("vec3");
+    case GL_FLOAT_VEC4: return QStringLiteral("vec4");
+    case GL_INT: return QStringLiteral("int");
+    case GL_INT_VEC2: return QStringLiteral("ivec2");
+    case GL_INT_VEC3: return QStringLiteral("ivec3");
+    case GL_INT_VEC4: return QStringLiteral("ivec4");
+    case GL_UNSIGNED_INT: return QStringLiteral("uint");
+    case GL_UNSIGNED_INT_VEC2: return QStringLiteral("uvec2");
+    case GL_UNSIGNED_INT_VEC3: return QStringLiteral("uvec3");
+    case GL_UNSIGNED_INT_VEC4: return QStringLiteral("uvec4");
+    case GL_BOOL: return QStringLiteral("bool");
+    case GL_BOOL_VEC2: return QStringLiteral("bvec2");
+    case GL_BOOL_VEC3: return QStringLiteral("bvec3");
+    case GL_BOOL_VEC4: return QStringLiteral("bvec4");
+    case GL_FLOAT_MAT2: return QStringLiteral("mat2");
+    case GL_FLOAT_MAT3: return QStringLiteral("mat3");
+    case GL_FLOAT_MAT4: return QStringLiteral("mat4");
+    case GL_FLOAT_MAT2x3: return QStringLiteral("mat2x3");
+    case GL_FLOAT_MAT2x4: return QStringLiteral("mat2x4");
+    case GL_FLOAT_MAT3x2: return QStringLiteral("mat3x2");
+    case GL_FLOAT_MAT3x4: return QStringLiteral("mat3x4");
+    case GL_FLOAT_MAT4x2: return QStringLiteral("mat4x2");
+    case GL_FLOAT_MAT4x3: return QStringLiteral("mat4x3");
+    case GL_SAMPLER_2D: return QStringLiteral("sampler2D");
+    case GL_SAMPLER_3D: return QStringLiteral("sampler3D");
+    case GL_SAMPLER_CUBE: return QStringLiteral("samplerCube");
+    case GL_SAMPLER_2D_SHADOW: return QStringLiteral("sampler2DShadow");
+    case GL_SAMPLER_2D_ARRAY: return QStringLiteral("sampler2DArray");
+    default: return {};
+    }
+}
+
+} // namespace phonglab

@@ -1,0 +1,236 @@
+#include "LightsDock.h"
+
+#include "Vec3Field.h"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QListWidgetItem>
+#include <QPushButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace phonglab {
+
+namespace {
+
+constexpr double kMaxPosition = 1e4;
+constexpr double kMaxIntensity = 100.0;
+constexpr double kMaxAttenuation = 1e6;
+
+// f_att = 1 / (c1 + c2·d + c3·d²): a sum of zero divides by zero at d = 0.
+QString refuseNoAttenuation(const glm::dvec3 &c)
+{
+    if (c.x + c.y + c.z <= 0.0)
+        return LightsDock::tr("c1 + c2 + c3 must be positive (got %1)").arg(c.x + c.y + c.z);
+    return {};
+}
+
+} // namespace
+
+LightsDock::LightsDock(QWidget *parent)
+    : QDockWidget(tr("Lights"), parent)
+{
+    setObjectName(QStringLiteral("LightsDock"));
+    auto *content = new QWidget(this);
+    auto *layout = new QVBoxLayout(content);
+    layout->addWidget(buildList(content));
+
+    m_editor = new QWidget(content);
+    auto *form = new QFormLayout(m_editor);
+    form->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_editor);
+    setWidget(content);
+    addField(tr("Position (world)"), LightField::Position, -kMaxPosition, kMaxPosition);
+    addField(tr("Id (diffuse)"), LightField::Diffuse, 0.0, kMaxIntensity)->enableColourPicker();
+    addField(tr("Is (specular)"), LightField::Specular, 0.0, kMaxIntensity)->enableColourPicker();
+    addField(tr("c1, c2, c3"), LightField::Attenuation, 0.0, kMaxAttenuation)->setCheck(refuseNoAttenuation);
+
+    auto *ambientForm = new QFormLayout;
+    m_ambient = new Vec3Field(0.0, kMaxIntensity, content);
+    m_ambient->enableColourPicker();
+    connect(m_ambient, &Vec3Field::edited, this, [this](const glm::dvec3 &before, const glm::dvec3 &after) {
+        if (m_stack)
+            m_stack->push(new SetAmbientCommand(m_access, before, after));
+    });
+    ambientForm->addRow(tr("Ambient Ia"), m_ambient);
+    layout->addLayout(ambientForm);
+    m_headlight = new QCheckBox(tr("Headlight: follows the camera (not in world space, not saved)"), content);
+    connect(m_headlight, &QCheckBox::toggled, this, &LightsDock::headlightToggled);
+    layout->addWidget(m_headlight);
+    layout->addStretch(1);
+    updateButtons();
+}
+
+QWidget *LightsDock::buildList(QWidget *parent)
+{
+    auto *box = new QWidget(parent);
+    auto *layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_list = new QListWidget(box);
+    m_list->setMaximumHeight(120);
+    connect(m_list, &QListWidget::currentRowChanged, this, [this](int row) {
+        showSelected();
+        updateButtons();
+        emit lightSelected(selectedLight());
+    });
+    connect(m_list, &QListWidget::itemChanged, this, &LightsDock::itemToggled);
+    layout->addWidget(m_list);
+    m_status = new QLabel(box);
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+    auto *buttons = new QHBoxLayout;
+    m_add = new QPushButton(tr("Add Light"), box);
+    m_remove = new QPushButton(tr("Remove"), box);
+    connect(m_add, &QPushButton::clicked, this, &LightsDock::addLight);
+    connect(m_remove, &QPushButton::clicked, this, &LightsDock::removeSelectedLight);
+    buttons->addWidget(m_add);
+    buttons->addWidget(m_remove);
+    layout->addLayout(buttons);
+    return box;
+}
+
+Vec3Field *LightsDock::addField(const QString &label, LightField which, double minimum, double maximum)
+{
+    auto *field = new Vec3Field(minimum, maximum, m_editor);
+    connect(field, &Vec3Field::edited, this,
+            [this, which](const glm::dvec3 &, const glm::dvec3 &after) { push(which, after); });
+    static_cast<QFormLayout *>(m_editor->layout())->addRow(label, field);
+    m_fields[int(which)] = field;
+    return field;
+}
+
+void LightsDock::bind(QUndoStack *stack, SceneAccess access)
+{
+    m_stack = stack;
+    m_access = std::move(access);
+}
+
+void LightsDock::refresh(const Scene &scene)
+{
+    m_scene = scene;
+    const int keep = selectedLight();
+    m_showing = true;
+    m_list->clear();
+    const auto addItem = [this](const QString &text, bool on) {
+        auto *item = new QListWidgetItem(text, m_list);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
+    };
+    for (int i = 0; i < int(scene.lights.size()); ++i)
+        addItem(tr("Light %1").arg(i + 1), true);
+    for (int i = 0; i < int(m_shelf->size()); ++i)
+        addItem(tr("Off %1 (not in the scene)").arg(i + 1), false);
+    m_list->setCurrentRow(std::min(keep < 0 ? 0 : keep, m_list->count() - 1));
+    m_showing = false;
+    m_ambient->setValue(scene.ambient);
+    showSelected();
+    updateButtons();
+    emit lightSelected(selectedLight());
+}
+
+int LightsDock::selectedLight() const
+{
+    const int row = m_list->currentRow();
+    return row < int(m_scene.lights.size()) ? row : -1;
+}
+
+QString LightsDock::statusText() const
+{
+    return m_status->text();
+}
+
+void LightsDock::itemToggled(QListWidgetItem *item)
+{
+    if (m_showing)
+        return;
+    const bool on = item->checkState() == Qt::Checked;
+    const int row = m_list->row(item);
+    if (!setLightEnabled(row, on)) {
+        m_showing = true; // put the box back as it was
+        item->setCheckState(on ? Qt::Unchecked : Qt::Checked);
+        m_showing = false;
+    }
+}
+
+bool LightsDock::setLightEnabled(int row, bool on)
+{
+    const int sceneCount = int(m_scene.lights.size());
+    const bool isOn = row < sceneCount;
+    if (!m_stack || row < 0 || row >= sceneCount + int(m_shelf->size()) || isOn == on)
+        return false;
+    if (on && sceneCount >= kMaxLights) {
+        m_status->setText(tr("%1 lights are on already: switch one off first").arg(kMaxLights));
+        return false;
+    }
+    m_status->clear();
+    if (on)
+        m_stack->push(new EnableLightCommand(m_access, m_shelf, row - sceneCount));
+    else
+        m_stack->push(new DisableLightCommand(m_access, m_shelf, row, m_scene.lights[row]));
+    return true;
+}
+
+void LightsDock::selectLight(int index)
+{
+    m_list->setCurrentRow(index);
+}
+
+void LightsDock::showSelected()
+{
+    const int index = selectedLight();
+    const bool valid = index >= 0 && index < int(m_scene.lights.size());
+    m_editor->setEnabled(valid);
+    if (!valid || m_showing)
+        return;
+    const PointLight &light = m_scene.lights[index];
+    m_fields[int(LightField::Position)]->setValue(light.position);
+    m_fields[int(LightField::Diffuse)]->setValue(light.diffuse);
+    m_fields[int(LightField::Specular)]->setValue(light.specular);
+    m_fields[int(LightField::Attenuation)]->setValue(light.attenuation);
+}
+
+void LightsDock::updateButtons()
+{
+    m_add->setEnabled(int(m_scene.lights.size()) < kMaxLights);
+    m_remove->setEnabled(selectedLight() >= 0); // a switched-off light is switched on to be removed
+}
+
+void LightsDock::push(LightField which, const glm::dvec3 &after)
+{
+    const int index = selectedLight();
+    if (!m_stack || index < 0)
+        return;
+    const PointLight before = m_scene.lights.at(index);
+    PointLight changed = before;
+    switch (which) {
+    case LightField::Position: changed.position = after; break;
+    case LightField::Diffuse: changed.diffuse = after; break;
+    case LightField::Specular: changed.specular = after; break;
+    case LightField::Attenuation: changed.attenuation = after; break;
+    }
+    m_stack->push(new SetLightCommand(m_access, index, before, changed, which));
+}
+
+void LightsDock::addLight()
+{
+    if (!m_stack || int(m_scene.lights.size()) >= kMaxLights)
+        return;
+    // Above and in front of the target, where a new light is visible at once.
+    PointLight light;
+    light.position = m_scene.camera.target + glm::dvec3(2.0, 3.0, 2.0);
+    m_stack->push(new AddLightCommand(m_access, light));
+    selectLight(int(m_scene.lights.size()) - 1);
+}
+
+void LightsDock::removeSelectedLight()
+{
+    const int index = selectedLight();
+    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()))
+        return;
+    m_stack->push(new RemoveLightCommand(m_access, index, m_scene.lights[index]));
+}
+
+} // namespace phonglab

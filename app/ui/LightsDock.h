@@ -1,0 +1,74 @@
+#pragma once
+#include "SceneCommands.h"
+
+#include <QDockWidget>
+
+class QCheckBox;
+class QLabel;
+class QListWidget;
+class QListWidgetItem;
+class QPushButton;
+class QUndoStack;
+
+namespace phonglab {
+
+class Vec3Field;
+
+// The scene's point lights (at most kMaxLights) in world space: add, remove,
+// and for the selected light its position, Id, Is and attenuation c1/c2/c3;
+// plus the global ambient Ia. Every change is an undoable command.
+class LightsDock : public QDockWidget
+{
+    Q_OBJECT
+
+public:
+    explicit LightsDock(QWidget *parent = nullptr);
+
+    void bind(QUndoStack *stack, SceneAccess access);
+    void refresh(const Scene &scene);
+
+    // The selected scene light; -1 when none or a switched-off one is selected.
+    int selectedLight() const;
+    // `row` of the list: a scene light (on) or, after them, a shelved one (off).
+    bool setLightEnabled(int row, bool on);
+    int switchedOffCount() const { return int(m_shelf->size()); }
+    // A new scene: the lights switched off in the old one are forgotten.
+    void clearShelf() { m_shelf->clear(); }
+    QString statusText() const;
+    void selectLight(int index);
+    Vec3Field *field(LightField which) const { return m_fields[int(which)]; }
+    Vec3Field *ambientField() const { return m_ambient; }
+    QCheckBox *headlightBox() const { return m_headlight; }
+    void addLight();
+    void removeSelectedLight();
+
+signals:
+    // The highlighted light changed (-1: none); the viewport marks it.
+    void lightSelected(int index);
+    // The headlight check box: a view setting, so not an undo step.
+    void headlightToggled(bool on);
+
+private:
+    QWidget *buildList(QWidget *parent);
+    Vec3Field *addField(const QString &label, LightField which, double minimum, double maximum);
+    void showSelected();
+    void push(LightField which, const glm::dvec3 &after);
+    void updateButtons();
+    void itemToggled(QListWidgetItem *item);
+
+    QUndoStack *m_stack = nullptr;
+    SceneAccess m_access;
+    Scene m_scene;
+    std::shared_ptr<LightShelf> m_shelf = std::make_shared<LightShelf>();
+    QListWidget *m_list = nullptr;
+    QLabel *m_status = nullptr;
+    QCheckBox *m_headlight = nullptr;
+    QPushButton *m_add = nullptr;
+    QPushButton *m_remove = nullptr;
+    QWidget *m_editor = nullptr;
+    Vec3Field *m_fields[4] = {nullptr, nullptr, nullptr, nullptr};
+    Vec3Field *m_ambient = nullptr;
+    bool m_showing = false;
+};
+
+} // namespace phonglab

@@ -1,0 +1,185 @@
+#include "MaterialPanel.h"
+
+#include "Vec3Field.h"
+#include "core/MaterialPresets.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QPushButton>
+#include <QSlider>
+#include <QUndoStack>
+
+namespace phonglab {
+
+namespace {
+
+constexpr double kMaxCoefficient = 10.0; // beyond this a coefficient is a typo
+constexpr double kMinShininess = 0.01;   // the scene format needs n > 0
+constexpr double kMaxShininess = 4096.0;
+constexpr int kSliderMax = 512;          // the slider covers the useful part
+
+} // namespace
+
+MaterialPanel::MaterialPanel(QWidget *parent)
+    : QDockWidget(tr("Material"), parent)
+{
+    setObjectName(QStringLiteral("MaterialPanel"));
+    setWidget(buildForm());
+}
+
+QWidget *MaterialPanel::buildForm()
+{
+    auto *form = new QWidget(this);
+    auto *layout = new QFormLayout(form);
+    m_objects = new QComboBox(form);
+    connect(m_objects, &QComboBox::currentIndexChanged, this, &MaterialPanel::showSelected);
+    layout->addRow(tr("Object"), m_objects);
+
+    const auto addCoefficient = [&](const QString &label, MaterialField which) {
+        auto *field = new Vec3Field(0.0, kMaxCoefficient, form);
+        field->enableColourPicker();
+        connect(field, &Vec3Field::edited, this, [this, which](const glm::dvec3 &, const glm::dvec3 &after) {
+            Material m = m_scene.objects.at(selectedObject()).material;
+            (which == MaterialField::Ka ? m.ka : which == MaterialField::Kd ? m.kd : m.ks) = after;
+            pushMaterial(m, which);
+        });
+        layout->addRow(label, field);
+        return field;
+    };
+    m_ka = addCoefficient(tr("ka (ambient)"), MaterialField::Ka);
+    m_kd = addCoefficient(tr("kd (diffuse)"), MaterialField::Kd);
+    m_ks = addCoefficient(tr("ks (specular)"), MaterialField::Ks);
+
+    m_shininess = new QDoubleSpinBox(form);
+    m_shininess->setRange(kMinShininess, kMaxShininess);
+    m_shininess->setDecimals(2);
+    m_shininess->setKeyboardTracking(false); // one edit per finished number, not per key
+    m_shininessSlider = new QSlider(Qt::Horizontal, form);
+    m_shininessSlider->setRange(1, kSliderMax);
+    connect(m_shininessSlider, &QSlider::valueChanged, this, [this](int v) {
+        if (!m_showing)
+            m_shininess->setValue(v);
+    });
+    connect(m_shininess, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (m_showing || selectedObject() < 0)
+            return;
+        Material m = m_scene.objects.at(selectedObject()).material;
+        m.shininess = v;
+        pushMaterial(m, MaterialField::Shininess);
+    });
+    auto *shininessRow = new QHBoxLayout;
+    shininessRow->addWidget(m_shininessSlider, 1);
+    shininessRow->addWidget(m_shininess);
+    layout->addRow(tr("Shininess n"), shininessRow);
+
+    m_presets = new QComboBox(form);
+    auto *apply = new QPushButton(tr("Apply"), form);
+    auto *save = new QPushButton(tr("Save as Preset…"), form);
+    connect(apply, &QPushButton::clicked, this, [this] { applyPreset(m_presets->currentIndex()); });
+    connect(save, &QPushButton::clicked, this, &MaterialPanel::askPresetName);
+    auto *presetRow = new QHBoxLayout;
+    presetRow->addWidget(m_presets, 1);
+    presetRow->addWidget(apply);
+    layout->addRow(tr("Preset"), presetRow);
+    layout->addRow(QString(), save);
+    reloadPresets();
+    return form;
+}
+
+void MaterialPanel::bind(QUndoStack *stack, SceneAccess access)
+{
+    m_stack = stack;
+    m_access = std::move(access);
+}
+
+void MaterialPanel::refresh(const Scene &scene)
+{
+    m_scene = scene;
+    const int keep = selectedObject();
+    m_showing = true;
+    m_objects->clear();
+    for (int i = 0; i < int(scene.objects.size()); ++i)
+        m_objects->addItem(tr("%1: %2").arg(i + 1).arg(QFileInfo(scene.objects[i].mesh).fileName()));
+    m_objects->setCurrentIndex(keep >= 0 && keep < m_objects->count() ? keep : 0);
+    m_showing = false;
+    showSelected();
+}
+
+int MaterialPanel::selectedObject() const
+{
+    return m_objects->currentIndex();
+}
+
+void MaterialPanel::selectObject(int index)
+{
+    m_objects->setCurrentIndex(index);
+}
+
+Vec3Field *MaterialPanel::field(MaterialField which) const
+{
+    return which == MaterialField::Ka ? m_ka : which == MaterialField::Kd ? m_kd : m_ks;
+}
+
+void MaterialPanel::showSelected()
+{
+    const int index = selectedObject();
+    const bool valid = index >= 0 && index < int(m_scene.objects.size());
+    widget()->setEnabled(valid);
+    if (!valid || m_showing)
+        return;
+    const Material &m = m_scene.objects[index].material;
+    m_showing = true;
+    m_ka->setValue(m.ka);
+    m_kd->setValue(m.kd);
+    m_ks->setValue(m.ks);
+    m_shininess->setValue(m.shininess);
+    m_shininessSlider->setValue(int(std::round(m.shininess)));
+    m_showing = false;
+}
+
+void MaterialPanel::pushMaterial(const Material &after, MaterialField field)
+{
+    const int index = selectedObject();
+    const Material before = m_scene.objects.at(index).material;
+    if (!m_stack || before == after)
+        return;
+    m_stack->push(new SetMaterialCommand(m_access, index, before, after, field));
+}
+
+void MaterialPanel::applyPreset(int index)
+{
+    const QList<MaterialPreset> presets = allMaterialPresets();
+    if (index < 0 || index >= presets.size() || selectedObject() < 0)
+        return;
+    pushMaterial(presets[index].material, MaterialField::Preset);
+}
+
+void MaterialPanel::saveAsPreset(const QString &name)
+{
+    if (name.trimmed().isEmpty() || selectedObject() < 0)
+        return;
+    saveUserMaterialPreset({name.trimmed(), m_scene.objects.at(selectedObject()).material});
+    reloadPresets();
+    m_presets->setCurrentIndex(m_presets->findText(name.trimmed()));
+}
+
+void MaterialPanel::askPresetName()
+{
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"), QLineEdit::Normal, {}, &ok);
+    if (ok)
+        saveAsPreset(name);
+}
+
+void MaterialPanel::reloadPresets()
+{
+    m_presets->clear();
+    for (const MaterialPreset &preset : allMaterialPresets())
+        m_presets->addItem(preset.name);
+}
+
+} // namespace phonglab

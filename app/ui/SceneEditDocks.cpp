@@ -1,0 +1,90 @@
+#include "SceneEditDocks.h"
+
+#include "LightsDock.h"
+#include "MaterialPanel.h"
+#include "ObjectPanel.h"
+#include "Viewport.h"
+
+#include <QAction>
+#include <QMainWindow>
+#include <QMenu>
+#include <QUndoStack>
+
+namespace phonglab {
+
+SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWidget *tabWith)
+    : QObject(window)
+    , m_viewport(viewport)
+    , m_stack(new QUndoStack(this))
+    , m_lights(new LightsDock(window))
+    , m_material(new MaterialPanel(window))
+    , m_object(new ObjectPanel(window))
+{
+    QDockWidget *previous = tabWith;
+    for (QDockWidget *dock : {static_cast<QDockWidget *>(m_lights), static_cast<QDockWidget *>(m_material),
+                              static_cast<QDockWidget *>(m_object)}) {
+        window->addDockWidget(window->dockWidgetArea(tabWith), dock);
+        window->tabifyDockWidget(previous, dock);
+        previous = dock;
+    }
+
+    m_lights->bind(m_stack, access());
+    m_material->bind(m_stack, access());
+    m_object->bind(m_stack, access());
+    connect(m_viewport, &Viewport::sceneChanged, this, &SceneEditDocks::sceneReplaced);
+    connect(m_viewport, &Viewport::sceneParametersChanged, this, &SceneEditDocks::refresh);
+    connect(m_viewport, &Viewport::lightDragged, this, &SceneEditDocks::pushDrag);
+    connect(m_viewport, &Viewport::lightPicked, m_lights, &LightsDock::selectLight);
+    connect(m_lights, &LightsDock::lightSelected, m_viewport, &Viewport::setSelectedLight);
+    connect(m_lights, &LightsDock::headlightToggled, m_viewport, &Viewport::setHeadlight);
+    refresh();
+}
+
+SceneAccess SceneEditDocks::access() const
+{
+    Viewport *viewport = m_viewport;
+    return {[viewport] { return viewport->currentScene(); },
+            [viewport](const Scene &scene) { viewport->setSceneParameters(scene); }};
+}
+
+void SceneEditDocks::addEditActions(QMenu *edit)
+{
+    QAction *undo = m_stack->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence(tr("Ctrl+Z")));
+    QAction *redo = m_stack->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence(tr("Ctrl+Shift+Z")));
+    edit->addAction(undo);
+    edit->addAction(redo);
+}
+
+void SceneEditDocks::addDockToggles(QMenu *view)
+{
+    view->addAction(m_lights->toggleViewAction());
+    view->addAction(m_material->toggleViewAction());
+    view->addAction(m_object->toggleViewAction());
+}
+
+void SceneEditDocks::refresh()
+{
+    const Scene scene = m_viewport->currentScene();
+    m_lights->refresh(scene);
+    m_material->refresh(scene);
+    m_object->refresh(scene);
+}
+
+void SceneEditDocks::sceneReplaced()
+{
+    // Also when only a mesh's normals were reloaded: commands hold light and
+    // object indices, and a reloaded scene may no longer have them.
+    m_stack->clear();
+    m_lights->clearShelf();
+    refresh();
+}
+
+void SceneEditDocks::pushDrag(int index, const PointLight &before, const PointLight &after)
+{
+    // The viewport has already moved the light; redo() on push writes the same.
+    m_stack->push(new SetLightCommand(access(), index, before, after, LightField::Position, false));
+}
+
+} // namespace phonglab

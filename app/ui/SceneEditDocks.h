@@ -1,0 +1,53 @@
+#pragma once
+#include "SceneCommands.h"
+
+#include <QObject>
+
+class QDockWidget;
+class QMainWindow;
+class QMenu;
+class QUndoStack;
+
+namespace phonglab {
+
+class LightsDock;
+class MaterialPanel;
+class ObjectPanel;
+class Viewport;
+
+// The docks that edit the shown scene in place (lights, material, object
+// placement) and the undo stack their edits go on. Edits reach the viewport
+// through its cheap parameter path (Viewport::setSceneParameters), so no
+// mesh is reloaded; a new scene clears the stack, since its commands name
+// lights and objects of the old one.
+class SceneEditDocks : public QObject
+{
+    Q_OBJECT
+
+public:
+    // The docks go into `window` tabbed with `tabWith`, so the viewport keeps its size.
+    SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWidget *tabWith);
+
+    // Undo / Redo (Ctrl+Z, Ctrl+Shift+Z) into `edit`; the docks' toggles into `view`.
+    void addEditActions(QMenu *edit);
+    void addDockToggles(QMenu *view);
+
+    QUndoStack *undoStack() const { return m_stack; }
+    LightsDock *lightsDock() const { return m_lights; }
+    MaterialPanel *materialPanel() const { return m_material; }
+    ObjectPanel *objectPanel() const { return m_object; }
+    SceneAccess access() const;
+
+private:
+    void refresh();
+    void sceneReplaced();
+    void pushDrag(int index, const PointLight &before, const PointLight &after);
+
+    Viewport *m_viewport = nullptr;
+    QUndoStack *m_stack = nullptr;
+    LightsDock *m_lights = nullptr;
+    MaterialPanel *m_material = nullptr;
+    ObjectPanel *m_object = nullptr;
+};
+
+} // namespace phonglab

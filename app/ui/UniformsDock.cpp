@@ -1,0 +1,238 @@
+#include "UniformsDock.h"
+
+#include "ShaderDock.h"
+#include "UniformBoolRow.h"
+#include "UniformFloatRow.h"
+#include "UniformIntRow.h"
+#include "UniformRowFactory.h"
+#include "UniformVectorRow.h"
+#include "Viewport.h"
+
+#include <QBoxLayout>
+#include <QFormLayout>
+#include <QLabel>
+#include <QOpenGLContext>
+#include <QScrollArea>
+#include <QStyle>
+
+namespace phonglab {
+
+namespace {
+
+constexpr qint64 kDrivenRefreshMs = 250;
+
+const UniformDeclaration *findDeclaration(const std::vector<UniformDeclaration> &declared, const QString &name)
+{
+    for (const UniformDeclaration &d : declared)
+        if (d.name == name)
+            return &d;
+    return nullptr;
+}
+
+} // namespace
+
+UniformsDock::UniformsDock(QWidget *parent)
+    : QDockWidget(tr("Uniforms"), parent)
+    , m_contents(new QWidget)
+    , m_form(new QFormLayout(m_contents))
+{
+    setObjectName(QStringLiteral("UniformsDock"));
+    m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(m_contents);
+    setWidget(scroll);
+    m_sinceRefresh.start();
+}
+
+void UniformsDock::attach(Viewport *viewport, ShaderDock *shaders)
+{
+    m_viewport = viewport;
+    m_shaders = shaders;
+    // Queued: frameRendered comes from inside paintGL, where the context
+    // must not be released.
+    connect(m_viewport, &Viewport::frameRendered, this, &UniformsDock::onFrameRendered, Qt::QueuedConnection);
+}
+
+void UniformsDock::scheduleRebuild()
+{
+    m_rebuildPending = true;
+    if (m_viewport)
+        m_viewport->update();
+}
+
+void UniformsDock::onFrameRendered()
+{
+    if (m_rebuildPending) {
+        rebuild();
+        return;
+    }
+    if (m_sinceRefresh.elapsed() >= kDrivenRefreshMs && !m_viewport->isContextLent())
+        refreshDrivenValues();
+}
+
+bool UniformsDock::readProgram(Program &program)
+{
+    if (!m_viewport || !m_viewport->isRenderReady())
+        return false;
+    m_viewport->endLoan(); // as the viewport does itself before taking its context
+    m_viewport->makeCurrent();
+    ShaderProgram &shader = m_viewport->renderer().program();
+    program.active = activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
+    program.values = shader.snapshot();
+    m_viewport->doneCurrent();
+    return true;
+}
+
+std::vector<UniformDeclaration> UniformsDock::declarations() const
+{
+    std::vector<UniformDeclaration> all = parseUniformDeclarations(
+        QString::fromUtf8(m_shaders->text(ShaderStage::Vertex)));
+    for (UniformDeclaration &d : parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Fragment))))
+        all.push_back(std::move(d));
+    return all;
+}
+
+bool UniformsDock::rebuild()
+{
+    Program program;
+    if (!readProgram(program))
+        return false;
+    m_rebuildPending = false;
+    const std::vector<UniformDeclaration> declared = declarations();
+    clearRows();
+    m_values = program.values;
+    for (const ActiveUniformInfo &uniform : program.active)
+        addActive(uniform, declared);
+    for (const UniformDeclaration &d : declared) {
+        const bool active = std::any_of(program.active.begin(), program.active.end(),
+                                        [&](const ActiveUniformInfo &u) { return u.name == d.name.toUtf8(); });
+        if (!active && !m_rows.contains(d.name))
+            addInactive(d);
+    }
+    m_sinceRefresh.restart();
+    emit rebuilt();
+    return true;
+}
+
+void UniformsDock::clearRows()
+{
+    while (m_form->rowCount() > 0)
+        m_form->removeRow(0); // deletes the label and the row widget
+    m_rows.clear();
+    m_owners.clear();
+    m_order.clear();
+    m_inactive.clear();
+}
+
+void UniformsDock::addActive(const ActiveUniformInfo &uniform, const std::vector<UniformDeclaration> &declared)
+{
+    UniformRowSpec spec;
+    spec.baseName = QString::fromUtf8(uniform.name);
+    spec.type = uniform.type;
+    spec.owner = uniformOwner(spec.baseName);
+    spec.declaration = findDeclaration(declared, spec.baseName);
+    for (int element = 0; element < uniform.size; ++element) {
+        spec.element = uniform.isArray ? QStringLiteral("%1[%2]").arg(spec.baseName).arg(element) : spec.baseName;
+        spec.value = m_values.find(spec.element.toUtf8());
+        QWidget *row = createUniformRow(spec, m_contents);
+        m_owners.insert(spec.element, spec.owner);
+        addRow(spec.element, spec.element, row);
+        if (spec.owner == UniformOwner::User)
+            connectRow(row, spec.element);
+    }
+}
+
+void UniformsDock::addInactive(const UniformDeclaration &declaration)
+{
+    auto *row = new QWidget(m_contents);
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto *icon = new QLabel(row);
+    const int size = style()->pixelMetric(QStyle::PM_SmallIconSize);
+    icon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(size, size));
+    auto *text = new QLabel(tr("declared but optimised away: not used by the program"), row);
+    text->setWordWrap(true);
+    layout->addWidget(icon);
+    layout->addWidget(text, 1);
+    row->setObjectName(QStringLiteral("uniform:") + declaration.name);
+    row->setToolTip(tr("The compiler removed %1 %2 because nothing the output depends on reads it.")
+                        .arg(declaration.type, declaration.name));
+    m_inactive.append(declaration.name);
+    addRow(declaration.name, declaration.name, row);
+}
+
+void UniformsDock::addRow(const QString &element, const QString &label, QWidget *row)
+{
+    m_form->addRow(label, row);
+    m_rows.insert(element, row);
+    m_order.append(element);
+}
+
+void UniformsDock::connectRow(QWidget *row, const QString &element)
+{
+    if (auto *f = qobject_cast<UniformFloatRow *>(row))
+        connect(f, &UniformFloatRow::edited, this, [this, element](float v) { writeFloats(element, {v}); });
+    else if (auto *v = qobject_cast<UniformVectorRow *>(row))
+        connect(v, &UniformVectorRow::edited, this, [this, element](const QList<float> &values) {
+            writeFloats(element, values);
+        });
+    else if (auto *i = qobject_cast<UniformIntRow *>(row))
+        connect(i, &UniformIntRow::edited, this, [this, element](int value) { writeInt(element, value); });
+    else if (auto *b = qobject_cast<UniformBoolRow *>(row))
+        connect(b, &UniformBoolRow::edited, this, [this, element](bool value) { writeInt(element, value ? 1 : 0); });
+}
+
+void UniformsDock::writeFloats(const QString &element, const QList<float> &values)
+{
+    const UniformValue *known = m_values.find(element.toUtf8());
+    if (!known)
+        return;
+    UniformValue value = *known;
+    for (int i = 0; i < value.components && i < values.size(); ++i)
+        value.floats[size_t(i)] = values[i];
+    write(value);
+}
+
+void UniformsDock::writeInt(const QString &element, int number)
+{
+    const UniformValue *known = m_values.find(element.toUtf8());
+    if (!known)
+        return;
+    UniformValue value = *known;
+    value.ints[0] = number;
+    value.uints[0] = GLuint(std::max(number, 0));
+    write(value);
+}
+
+void UniformsDock::write(const UniformValue &value)
+{
+    if (!m_viewport || !m_viewport->isRenderReady())
+        return;
+    m_viewport->endLoan();
+    m_viewport->makeCurrent();
+    // restore() sets it only where name and type still match the program.
+    m_viewport->renderer().program().restore(UniformSnapshot{{value}});
+    m_viewport->doneCurrent();
+    for (UniformValue &kept : m_values.values)
+        if (kept.name == value.name)
+            kept = value;
+    m_viewport->update();
+}
+
+void UniformsDock::refreshDrivenValues()
+{
+    m_sinceRefresh.restart();
+    if (m_rows.isEmpty() || !isVisible())
+        return;
+    Program program;
+    if (!readProgram(program))
+        return;
+    for (const UniformValue &value : program.values.values) {
+        const QString element = QString::fromUtf8(value.name);
+        if (m_owners.value(element, UniformOwner::User) != UniformOwner::User)
+            showUniformValue(m_rows.value(element), value);
+    }
+}
+
+} // namespace phonglab

@@ -1,0 +1,411 @@
+// The scene-editing docks end to end on a real GL context (llvmpipe under
+// Xvfb): a material edit changes the frame and still matches the CPU
+// reference, a light placed through the dock stays put in world space while
+// the camera orbits, undo gives back the exact frame, bad values are refused
+// at the field, and a marker drag is one undo step.
+
+#include "RenderCheck.h"
+#include "core/AnalyticRaycaster.h"
+#include "core/MaterialPresets.h"
+#include "core/PhongReference.h"
+#include "render/GlFormat.h"
+#include "ui/LightsDock.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialPanel.h"
+#include "ui/ObjectPanel.h"
+#include "ui/SceneEditDocks.h"
+#include "ui/Vec3Field.h"
+#include "ui/Viewport.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QUndoStack>
+#include <memory>
+
+using namespace phonglab;
+
+namespace {
+
+constexpr int kGridStep = 6;     // pixels compared with the reference, every kGridStep-th
+constexpr int kInteriorPx = 2;   // skip pixels this near the silhouette
+
+QString sphereScenePath()
+{
+    return QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json");
+}
+
+void type(Vec3Field *field, const glm::dvec3 &value)
+{
+    for (int axis = 0; axis < 3; ++axis)
+        field->component(axis)->setText(QString::number(value[axis], 'g', 17));
+    field->commit();
+}
+
+bool interior(const ReferenceImage &ref, int x, int y)
+{
+    for (int dy = -kInteriorPx; dy <= kInteriorPx; ++dy)
+        for (int dx = -kInteriorPx; dx <= kInteriorPx; ++dx) {
+            const int px = x + dx, py = y + dy;
+            if (px < 0 || py < 0 || px >= ref.width || py >= ref.height || !ref.covered(px, py))
+                return false;
+        }
+    return true;
+}
+
+// The grabbed viewport against the ray-cast reference of the same scene at
+// the same size: covered interior pixels within kMaxErrorSteps. Returns a
+// description of the first mismatch, or empty.
+QString compareWithReference(const QImage &grab, const Scene &scene)
+{
+    const auto ref = raycastScene(scene, grab.width(), grab.height());
+    if (!ref)
+        return QStringLiteral("no reference");
+    const QImage expected = ref->toImage(scene.background);
+    const QImage actual = grab.convertToFormat(QImage::Format_RGB32);
+    int compared = 0;
+    for (int y = 0; y < ref->height; y += kGridStep)
+        for (int x = 0; x < ref->width; x += kGridStep) {
+            if (!interior(*ref, x, y))
+                continue;
+            ++compared;
+            const QRgb a = actual.pixel(x, y), e = expected.pixel(x, y);
+            const int err = std::max({std::abs(qRed(a) - qRed(e)), std::abs(qGreen(a) - qGreen(e)),
+                                      std::abs(qBlue(a) - qBlue(e))});
+            if (err > test::kMaxErrorSteps)
+                return QStringLiteral("pixel (%1, %2): %3 vs reference %4")
+                    .arg(x).arg(y).arg(QColor(a).name(), QColor(e).name());
+        }
+    return compared > 50 ? QString() : QStringLiteral("only %1 pixels compared").arg(compared);
+}
+
+} // namespace
+
+class TestLightsDock : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void kdEditChangesFrameAndMatchesReference();
+    void dockLightStaysFixedInWorldWhileOrbiting();
+    void undoRestoresTheExactFrame();
+    void badValuesAreRefused();
+    void addAndRemoveLights();
+    void markerDragIsOneUndoStep();
+    void switchedOffLightIsNotRendered();
+    void shortcutsUndoAndRedo();
+    void headlightFollowsTheCamera();
+    void presetsAndShininess();
+    void exportImageAtAnySize();
+
+private:
+    Viewport *viewport() const { return m_window->viewport(); }
+    SceneEditDocks *docks() const { return m_window->editDocks(); }
+    QImage frame() const { return viewport()->grabFramebuffer(); }
+    void orbit(QPoint by);
+    void verifyMatchesReference();
+
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestLightsDock::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+}
+
+void TestLightsDock::init()
+{
+    m_window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(m_window->openScene(sphereScenePath(), &error), qPrintable(error));
+    m_window->resize(900, 600);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    QVERIFY(viewport()->isRenderReady());
+    viewport()->setShowLightMarkers(false); // the reference has no markers
+}
+
+void TestLightsDock::cleanup()
+{
+    m_window.reset();
+}
+
+void TestLightsDock::orbit(QPoint by)
+{
+    const QPoint start = viewport()->rect().topLeft() + QPoint(10, 10);
+    QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, start);
+    for (int step = 1; step <= 4; ++step)
+        QTest::mouseMove(viewport(), start + by * step / 4);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, start + by);
+}
+
+void TestLightsDock::verifyMatchesReference()
+{
+    const Scene scene = viewport()->currentScene();
+    const QString mismatch = compareWithReference(frame(), scene);
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+    const test::RenderCheck check = test::checkAgainstReference(scene);
+    QVERIFY2(check.matches(), qPrintable(check.error + QStringLiteral(" psnr %1 max %2")
+                                             .arg(check.comparison.psnr).arg(check.comparison.maxError)));
+}
+
+void TestLightsDock::kdEditChangesFrameAndMatchesReference()
+{
+    const QImage before = frame();
+    MaterialPanel *panel = docks()->materialPanel();
+    type(panel->field(MaterialField::Kd), {0.1, 0.8, 0.3});
+    QCOMPARE(viewport()->currentScene().objects[0].material.kd, glm::dvec3(0.1, 0.8, 0.3));
+    const QImage after = frame();
+    QVERIFY(after != before);
+    verifyMatchesReference();
+    // For a look at the docks: PHONGLAB_TEST_ARTIFACTS=<folder>.
+    const QString artifacts = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
+    if (!artifacts.isEmpty() && QDir().mkpath(artifacts)) {
+        for (QDockWidget *dock : {static_cast<QDockWidget *>(docks()->lightsDock()),
+                                  static_cast<QDockWidget *>(panel), static_cast<QDockWidget *>(docks()->objectPanel())}) {
+            dock->raise();
+            m_window->grab().save(QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
+        }
+    }
+}
+
+void TestLightsDock::dockLightStaysFixedInWorldWhileOrbiting()
+{
+    LightsDock *dock = docks()->lightsDock();
+    dock->selectLight(0);
+    const glm::dvec3 placed{-3.0, 2.0, 2.5};
+    type(dock->field(LightField::Position), placed);
+    QCOMPARE(viewport()->currentScene().lights[0].position, placed);
+    verifyMatchesReference();
+
+    const QImage first = frame();
+    orbit({120, 30});
+    QCOMPARE(viewport()->currentScene().lights[0].position, placed);
+    QVERIFY(frame() != first); // the camera did move
+    verifyMatchesReference();
+    orbit({-260, -10});
+    QCOMPARE(viewport()->currentScene().lights[0].position, placed);
+    verifyMatchesReference();
+}
+
+void TestLightsDock::undoRestoresTheExactFrame()
+{
+    const QImage original = frame();
+    const Scene scene = viewport()->currentScene();
+    QUndoStack *stack = docks()->undoStack();
+    type(docks()->materialPanel()->field(MaterialField::Kd), {0.9, 0.9, 0.1});
+    type(docks()->lightsDock()->field(LightField::Diffuse), {0.3, 0.3, 1.0});
+    type(docks()->objectPanel()->field(TransformField::Scale), {1.5, 0.5, 1.0});
+    QCOMPARE(stack->count(), 3);
+    const QImage edited = frame();
+    QVERIFY(edited != original);
+    stack->undo();
+    stack->undo();
+    stack->undo();
+    QCOMPARE(viewport()->currentScene(), scene);
+    QVERIFY(frame() == original);
+    stack->redo();
+    stack->redo();
+    stack->redo();
+    QVERIFY(frame() == edited);
+}
+
+void TestLightsDock::badValuesAreRefused()
+{
+    const Scene scene = viewport()->currentScene();
+    QUndoStack *stack = docks()->undoStack();
+    struct Case {
+        Vec3Field *field;
+        glm::dvec3 value;
+    };
+    const double nan = std::nan(""), inf = INFINITY;
+    const QList<Case> cases = {
+        {docks()->lightsDock()->field(LightField::Position), {nan, 0, 0}},
+        {docks()->materialPanel()->field(MaterialField::Kd), {0.5, inf, 0.5}},
+        {docks()->materialPanel()->field(MaterialField::Ks), {-0.1, 0.5, 0.5}}, // out of range
+        {docks()->objectPanel()->field(TransformField::Scale), {1.0, 0.0, 1.0}},
+        {docks()->lightsDock()->field(LightField::Attenuation), {0.0, 0.0, 0.0}},
+        {docks()->lightsDock()->ambientField(), {0.2, -inf, 0.2}},
+    };
+    for (const Case &c : cases) {
+        const glm::dvec3 shown = c.field->value();
+        type(c.field, c.value);
+        QVERIFY2(!c.field->errorText().isEmpty(), "no reason shown");
+        QCOMPARE(c.field->value(), shown); // the last valid value stays...
+        QCOMPARE(c.field->component(1)->text(), QLocale().toString(shown.y, 'g', 6)); // ...in the field too
+        QCOMPARE(stack->count(), 0);
+        QCOMPARE(viewport()->currentScene(), scene);
+    }
+    // A good value afterwards is taken and clears the reason.
+    Vec3Field *attenuation = docks()->lightsDock()->field(LightField::Attenuation);
+    type(attenuation, {1.0, 0.0, 0.1});
+    QVERIFY(attenuation->errorText().isEmpty());
+    QCOMPARE(viewport()->currentScene().lights[0].attenuation, glm::dvec3(1.0, 0.0, 0.1));
+}
+
+void TestLightsDock::addAndRemoveLights()
+{
+    LightsDock *dock = docks()->lightsDock();
+    for (int i = 1; i < kMaxLights + 2; ++i)
+        dock->addLight();
+    QCOMPARE(int(viewport()->currentScene().lights.size()), kMaxLights); // no more than 8
+    dock->selectLight(2);
+    dock->removeSelectedLight();
+    QCOMPARE(int(viewport()->currentScene().lights.size()), kMaxLights - 1);
+    while (docks()->undoStack()->canUndo())
+        docks()->undoStack()->undo();
+    QCOMPARE(int(viewport()->currentScene().lights.size()), 1);
+}
+
+void TestLightsDock::markerDragIsOneUndoStep()
+{
+    viewport()->setShowLightMarkers(true);
+    // The file's light sits level with the eye (view depth 0): bring it into view first.
+    type(docks()->lightsDock()->field(LightField::Position), {1.5, 1.0, 1.0});
+    const int stepsBefore = docks()->undoStack()->count();
+    const Scene scene = viewport()->currentScene();
+    const Camera camera = viewport()->camera();
+    const glm::dvec3 light = scene.lights[0].position;
+    const double aspect = double(viewport()->width()) / viewport()->height();
+    const glm::dvec4 clip = camera.projectionMatrix(aspect) * camera.viewMatrix() * glm::dvec4(light, 1.0);
+    const QPoint marker(qRound((clip.x / clip.w + 1) * 0.5 * viewport()->width()),
+                        qRound((1 - clip.y / clip.w) * 0.5 * viewport()->height()));
+    QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, marker);
+    for (int step = 1; step <= 5; ++step)
+        QTest::mouseMove(viewport(), marker + QPoint(-8 * step, 6 * step));
+    QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, marker + QPoint(-40, 30));
+
+    QCOMPARE(viewport()->camera(), camera); // grabbing a marker does not orbit
+    QCOMPARE(docks()->undoStack()->count(), stepsBefore + 1);
+    const glm::dvec3 moved = viewport()->currentScene().lights[0].position;
+    QVERIFY(glm::length(moved - light) > 0.1);
+    // Parallel to the view plane: the depth along the view direction is kept.
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    QVERIFY(std::abs(glm::dot(moved - light, forward)) < 1e-6 * glm::length(light));
+    QCOMPARE(docks()->lightsDock()->field(LightField::Position)->value(), moved);
+    docks()->undoStack()->undo();
+    QCOMPARE(viewport()->currentScene(), scene);
+}
+
+void TestLightsDock::exportImageAtAnySize()
+{
+    const QString path = QDir::temp().filePath(QStringLiteral("phonglab-export-test.png"));
+    QString error;
+    QVERIFY2(m_window->exportImage(path, {333, 211}, &error), qPrintable(error));
+    const QImage image(path);
+    QCOMPARE(image.size(), QSize(333, 211));
+    QFile::remove(path);
+    const QString mismatch = compareWithReference(image, viewport()->currentScene());
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+void TestLightsDock::switchedOffLightIsNotRendered()
+{
+    const QImage lit = frame();
+    LightsDock *dock = docks()->lightsDock();
+    QVERIFY(dock->setLightEnabled(0, false));
+    QVERIFY(viewport()->currentScene().lights.empty()); // not sent to the shader...
+    QCOMPARE(dock->switchedOffCount(), 1);              // ...but kept in the dock
+    QVERIFY(frame() != lit);
+    verifyMatchesReference(); // ambient only
+    QVERIFY(dock->setLightEnabled(0, true));
+    QVERIFY(frame() == lit);
+    docks()->undoStack()->undo();
+    docks()->undoStack()->undo();
+    QVERIFY(frame() == lit);
+    QCOMPARE(dock->switchedOffCount(), 0);
+
+    // Nine lights cannot be on at once.
+    dock->setLightEnabled(0, false);
+    for (int i = 0; i < kMaxLights; ++i)
+        dock->addLight();
+    QVERIFY(!dock->setLightEnabled(kMaxLights, true));
+    QVERIFY(!dock->statusText().isEmpty());
+}
+
+void TestLightsDock::shortcutsUndoAndRedo()
+{
+    const QImage original = frame();
+    type(docks()->materialPanel()->field(MaterialField::Ks), {0.1, 0.1, 0.1});
+    const QImage edited = frame();
+    QVERIFY(edited != original);
+    // Xvfb has no window manager to activate the window, so key presses do
+    // not reach window shortcuts: find the Edit menu's actions by their keys.
+    QAction *undo = nullptr, *redo = nullptr;
+    for (QAction *action : m_window->findChildren<QAction *>()) {
+        if (action->shortcut() == QKeySequence(QStringLiteral("Ctrl+Z")))
+            undo = action;
+        if (action->shortcut() == QKeySequence(QStringLiteral("Ctrl+Shift+Z")))
+            redo = action;
+    }
+    QVERIFY(undo && redo);
+    undo->trigger();
+    QVERIFY(frame() == original);
+    redo->trigger();
+    QVERIFY(frame() == edited);
+}
+
+// The headlight is drawn at the eye wherever the camera goes, yet never
+// enters the scene model.
+void TestLightsDock::headlightFollowsTheCamera()
+{
+    const Scene scene = viewport()->currentScene();
+    const QImage without = frame();
+    docks()->lightsDock()->headlightBox()->setChecked(true);
+    QCOMPARE(viewport()->currentScene(), scene);
+    QVERIFY(frame() != without);
+    for (const QPoint by : {QPoint(0, 0), QPoint(150, 40)}) {
+        orbit(by);
+        const Scene rendered = viewport()->renderedScene();
+        QCOMPARE(int(rendered.lights.size()), 2);
+        QCOMPARE(rendered.lights.back().position, viewport()->camera().eye);
+        const QString mismatch = compareWithReference(frame(), rendered);
+        QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+    }
+    docks()->lightsDock()->headlightBox()->setChecked(false);
+    QCOMPARE(int(viewport()->renderedScene().lights.size()), 1);
+}
+
+// A preset is one step; shininess steps merge; a saved preset comes back
+// (QSettings in test mode) and applies the material it was saved from.
+void TestLightsDock::presetsAndShininess()
+{
+    MaterialPanel *panel = docks()->materialPanel();
+    QUndoStack *stack = docks()->undoStack();
+    const Material original = viewport()->currentScene().objects[0].material;
+    const QList<MaterialPreset> builtins = builtinMaterialPresets();
+    const int chalk = panel->presetBox()->findText(QStringLiteral("Chalk"));
+    QVERIFY(chalk >= 0);
+    panel->applyPreset(chalk);
+    QCOMPARE(viewport()->currentScene().objects[0].material, builtins[chalk].material);
+    for (double n : {5.0, 6.0, 7.0})
+        panel->shininessBox()->setValue(n);
+    QCOMPARE(viewport()->currentScene().objects[0].material.shininess, 7.0);
+    QCOMPARE(stack->count(), 2);
+    panel->saveAsPreset(QStringLiteral("test chalk 7"));
+    stack->undo();
+    stack->undo();
+    QCOMPARE(viewport()->currentScene().objects[0].material, original);
+    const int saved = panel->presetBox()->findText(QStringLiteral("test chalk 7"));
+    QVERIFY(saved >= int(builtins.size()));
+    panel->applyPreset(saved);
+    QCOMPARE(viewport()->currentScene().objects[0].material.shininess, 7.0);
+    QCOMPARE(viewport()->currentScene().objects[0].material.kd, builtins[chalk].material.kd);
+}
+
+QTEST_MAIN(TestLightsDock)
+#include "tst_lightsdock.moc"

@@ -1,0 +1,295 @@
+// The Uniforms dock in the real window on a real GL context (llvmpipe under
+// Xvfb): rows come from the linked program after every build; what the scene
+// or the renderer sets is read-only; a user uniform is edited through the
+// dock, changes the frame, survives a recompile; bad input is refused.
+#include "render/GlFormat.h"
+#include "ui/LiveShaderController.h"
+#include "ui/MainWindow.h"
+#include "ui/ShaderDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/ShaderFileSet.h"
+#include "ui/UniformBoolRow.h"
+#include "ui/UniformFloatRow.h"
+#include "ui/UniformIntRow.h"
+#include "ui/UniformNumberField.h"
+#include "ui/UniformVectorRow.h"
+#include "ui/UniformsDock.h"
+#include "ui/Viewport.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
+#include <QCheckBox>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <memory>
+
+using namespace phonglab;
+
+namespace {
+
+constexpr int kBuildTimeoutMs = 10000;
+
+QString sourcePath(const QString &relative)
+{
+    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
+}
+
+} // namespace
+
+class TestUniformsDock : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void cleanupTestCase();
+
+    void drivenUniformsAreReadOnly();
+    void userUniformIsEditedAndKept();
+    void badInputIsRefused();
+    void optimisedAwayUniformIsFlagged();
+    void colourIntAndBoolRows();
+
+private:
+    void openWindow();
+    void addGain();
+    void typeInto(UniformNumberField *field, const QString &text);
+    bool waitForApplied();
+    float programValue(const QByteArray &name);
+    UniformsDock *dock() const { return m_window->uniformsDock(); }
+    ShaderEditor *fragmentEditor() const { return m_window->shaderDock()->editor(ShaderStage::Fragment); }
+    LiveShaderController *live() const { return m_window->liveShaders(); }
+    Viewport *viewport() const { return m_window->viewport(); }
+    UniformFloatRow *gainRow() const { return qobject_cast<UniformFloatRow *>(dock()->row(QStringLiteral("gain"))); }
+    QImage frame() const { return viewport()->grabFramebuffer(); }
+
+    QTemporaryDir m_cacheDir;
+    std::unique_ptr<QTemporaryDir> m_recoveryDir;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestUniformsDock::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
+    if (qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR"))
+        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    QDir(ShaderFileSet::userFolder()).removeRecursively();
+}
+
+void TestUniformsDock::init()
+{
+    m_recoveryDir = std::make_unique<QTemporaryDir>();
+    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
+    qunsetenv("PHONGLAB_RECOVERY_ANSWER");
+}
+
+void TestUniformsDock::cleanup()
+{
+    m_window.reset();
+}
+
+void TestUniformsDock::cleanupTestCase()
+{
+    QDir(ShaderFileSet::userFolder()).removeRecursively();
+}
+
+void TestUniformsDock::openWindow()
+{
+    m_window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
+    m_window->resize(1000, 700);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    dock()->raise();
+    QTRY_VERIFY(dock()->row(QStringLiteral("kd")));
+}
+
+bool TestUniformsDock::waitForApplied()
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < kBuildTimeoutMs) {
+        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
+            return true;
+        QTest::qWait(10);
+    }
+    return false;
+}
+
+// `uniform float gain; // @range 0 2` scales the output: 0 (its initial
+// value) draws black.
+void TestUniformsDock::addGain()
+{
+    ShaderEditor *editor = fragmentEditor();
+    editor->insertAt(QStringLiteral("uniform float gain; // @range 0 2\n"), 1, 0);
+    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("clamp(I * gain,"));
+    m_window->shaderDock()->compileAction()->trigger();
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(gainRow());
+}
+
+void TestUniformsDock::typeInto(UniformNumberField *field, const QString &text)
+{
+    field->selectAll();
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
+
+float TestUniformsDock::programValue(const QByteArray &name)
+{
+    viewport()->makeCurrent();
+    const UniformSnapshot values = viewport()->renderer().program().snapshot();
+    viewport()->doneCurrent();
+    const UniformValue *value = values.find(name);
+    return value ? value->floats[0] : -1.0f;
+}
+
+void TestUniformsDock::drivenUniformsAreReadOnly()
+{
+    openWindow();
+    auto *kd = qobject_cast<UniformVectorRow *>(dock()->row(QStringLiteral("kd")));
+    QVERIFY(kd);
+    QVERIFY(kd->colorButton());
+    QVERIFY(!kd->isEnabled());
+    QVERIFY(kd->toolTip().contains(QStringLiteral("set by the scene")));
+    // The program holds the material of the object drawn last.
+    const glm::dvec3 material = viewport()->currentScene().objects.back().material.kd;
+    QCOMPARE(kd->values().value(0), float(material.x));
+    QCOMPARE(kd->values().value(2), float(material.z));
+    QVERIFY(kd->values().value(0) + kd->values().value(1) + kd->values().value(2) > 0.0f);
+
+    QWidget *matrix = dock()->row(QStringLiteral("modelViewMatrix"));
+    QVERIFY(matrix);
+    QVERIFY(!matrix->isEnabled());
+    QCOMPARE(matrix->toolTip(), QStringLiteral("set by the renderer"));
+    QVERIFY(qobject_cast<UniformFloatRow *>(dock()->row(QStringLiteral("shininess"))));
+    for (int i = 0; i < 8; ++i) // one row per array element
+        QVERIFY(dock()->row(QStringLiteral("Id[%1]").arg(i)));
+    QVERIFY(dock()->inactiveNames().isEmpty());
+}
+
+void TestUniformsDock::userUniformIsEditedAndKept()
+{
+    openWindow();
+    addGain();
+    UniformFloatRow *gain = gainRow();
+    QVERIFY(gain->isEnabled());
+    QVERIFY(gain->slider()->isVisibleTo(gain));
+    QCOMPARE(gain->field()->maximum(), 2.0); // from @range
+    QCOMPARE(gain->value(), 0.0f);
+    const QImage black = frame();
+
+    typeInto(gain->field(), QStringLiteral("0.5"));
+    QCOMPARE(gain->value(), 0.5f);
+    QCOMPARE(gain->slider()->value(), gain->slider()->maximum() / 4); // 0.5 of 0..2
+    QCOMPARE(programValue("gain"), 0.5f);
+    QTRY_VERIFY(frame() != black);
+    const QImage withGain = frame();
+
+    QSignalSpy rebuilt(dock(), &UniformsDock::rebuilt);
+    fragmentEditor()->append(QStringLiteral("// an unrelated edit\n"));
+    m_window->shaderDock()->compileAction()->trigger();
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(rebuilt.count() > 0);
+    QVERIFY(gainRow());
+    QCOMPARE(gainRow()->value(), 0.5f); // the dock shows the carried value
+    QCOMPARE(programValue("gain"), 0.5f);
+    QCOMPARE(frame(), withGain);
+}
+
+void TestUniformsDock::badInputIsRefused()
+{
+    openWindow();
+    addGain();
+    UniformNumberField *field = gainRow()->field();
+    typeInto(field, QStringLiteral("0.5"));
+    QCOMPARE(programValue("gain"), 0.5f);
+
+    typeInto(field, QStringLiteral("nan"));
+    QTRY_VERIFY(!field->refusal().isEmpty());
+    QCOMPARE(field->value(), 0.5);
+    QVERIFY(field->toolTip().contains(QStringLiteral("Refused")));
+    QVERIFY(field->styleSheet().contains(QStringLiteral("border")));
+    QVERIFY(gainRow()->refusalLabel()->isVisibleTo(gainRow()));
+    QCOMPARE(programValue("gain"), 0.5f);
+
+    typeInto(field, QStringLiteral("5"));
+    QTRY_VERIFY(field->refusal().contains(QStringLiteral("outside the range")));
+    QCOMPARE(field->value(), 0.5);
+    QCOMPARE(programValue("gain"), 0.5f);
+
+    typeInto(field, QStringLiteral("1.5")); // a good value clears the mark
+    QCOMPARE(field->value(), 1.5);
+    QVERIFY(field->refusal().isEmpty());
+    QVERIFY(!gainRow()->refusalLabel()->isVisibleTo(gainRow()));
+    QCOMPARE(programValue("gain"), 1.5f);
+}
+
+void TestUniformsDock::optimisedAwayUniformIsFlagged()
+{
+    openWindow();
+    fragmentEditor()->insertAt(QStringLiteral("uniform float unusedGain; // @range 0 1\n"), 1, 0);
+    m_window->shaderDock()->compileAction()->trigger();
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(dock()->inactiveNames().contains(QStringLiteral("unusedGain")));
+    QWidget *row = dock()->row(QStringLiteral("unusedGain"));
+    QVERIFY(row);
+    bool explained = false;
+    for (const QLabel *label : row->findChildren<QLabel *>())
+        explained |= label->text() == QStringLiteral("declared but optimised away: not used by the program");
+    QVERIFY(explained);
+    QVERIFY(!qobject_cast<UniformFloatRow *>(row));
+}
+
+void TestUniformsDock::colourIntAndBoolRows()
+{
+    openWindow();
+    ShaderEditor *editor = fragmentEditor();
+    editor->insertAt(QStringLiteral("uniform vec3 tint; // @color\nuniform int steps; // @range 0 8\n"
+                                    "uniform bool flip;\n"), 1, 0);
+    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("clamp(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
+    m_window->shaderDock()->compileAction()->trigger();
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(dock()->row(QStringLiteral("tint")));
+
+    auto *tint = qobject_cast<UniformVectorRow *>(dock()->row(QStringLiteral("tint")));
+    QVERIFY(tint);
+    QVERIFY(tint->isEnabled());
+    QVERIFY(tint->colorButton()); // @color on a vec3 that is not named like one
+    QCOMPARE(tint->field(0)->maximum(), 1e6); // no @range: any finite number
+    typeInto(tint->field(1), QStringLiteral("0.25"));
+    viewport()->makeCurrent();
+    const UniformSnapshot values = viewport()->renderer().program().snapshot();
+    viewport()->doneCurrent();
+    QCOMPARE(values.find("tint")->floats[1], 0.25f);
+
+    auto *steps = qobject_cast<UniformIntRow *>(dock()->row(QStringLiteral("steps")));
+    QVERIFY(steps);
+    QCOMPARE(steps->spinBox()->maximum(), 8);
+    steps->spinBox()->setValue(3);
+    auto *flip = qobject_cast<UniformBoolRow *>(dock()->row(QStringLiteral("flip")));
+    QVERIFY(flip);
+    flip->checkBox()->setChecked(true);
+    viewport()->makeCurrent();
+    const UniformSnapshot after = viewport()->renderer().program().snapshot();
+    viewport()->doneCurrent();
+    QCOMPARE(after.find("steps")->ints[0], 3);
+    QCOMPARE(after.find("flip")->ints[0], 1);
+}
+
+QTEST_MAIN(TestUniformsDock)
+#include "tst_uniformsdock.moc"
