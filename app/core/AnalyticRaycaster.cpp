@@ -377,7 +377,8 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
     std::vector<CameraSpaceLight> lights;
     lights.reserve(scene.lights.size());
     for (const PointLight &light : scene.lights)
-        lights.push_back(toCameraSpace(light, view));
+        if (light.enabled) // a disabled light lights nothing, as on the GPU
+            lights.push_back(toCameraSpace(light, view));
 
     ReferenceImage image(width, height);
     for (int y = 0; y < height; ++y) {

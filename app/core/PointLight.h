@@ -1,5 +1,6 @@
 #pragma once
 #include <glm/glm.hpp>
+#include <string>
 
 namespace phonglab {
 
@@ -10,6 +11,11 @@ struct PointLight {
     glm::dvec3 diffuse{1.0, 1.0, 1.0};
     glm::dvec3 specular{1.0, 1.0, 1.0};
     glm::dvec3 attenuation{1.0, 0.0, 0.0};
+    // Shown in the Lights dock; empty means "Light N" (N = index + 1). UTF-8.
+    std::string name;
+    // A disabled light stays in the scene (and the file) but lights nothing:
+    // it is not sent to the shader nor used by the CPU reference.
+    bool enabled = true;
 
     bool operator==(const PointLight &) const = default;
 };

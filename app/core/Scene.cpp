@@ -13,10 +13,18 @@ QString Scene::resolveMeshPath(const QString &mesh) const
     return QDir::cleanPath(QDir(baseDir).filePath(mesh));
 }
 
+QString Scene::resolveShaderPath(const QString &shader) const
+{
+    if (shader.isEmpty() || QDir::isAbsolutePath(shader) || baseDir.isEmpty())
+        return shader;
+    return QDir::cleanPath(QDir(baseDir).filePath(shader));
+}
+
 bool Scene::operator==(const Scene &other) const
 {
     return objects == other.objects && camera == other.camera && ambient == other.ambient
-        && lights == other.lights && shading == other.shading && background == other.background;
+        && lights == other.lights && shading == other.shading && background == other.background
+        && vertexShader == other.vertexShader && fragmentShader == other.fragmentShader;
 }
 
 } // namespace phonglab

@@ -30,12 +30,18 @@ struct Scene {
     std::vector<PointLight> lights;
     ShadingMethod shading = ShadingMethod::Phong;
     glm::dvec3 background{0.08, 0.08, 0.1};
+    // Optional "shaders": files that replace the shading method's shipped
+    // ones. Kept exactly as written (relative to the scene file, like meshes;
+    // resolve with resolveShaderPath); empty = the shipped file.
+    QString vertexShader;
+    QString fragmentShader;
 
     // Folder the scene was loaded from; relative mesh paths resolve against it.
     // Not part of the scene's content, so not compared.
     QString baseDir;
 
     QString resolveMeshPath(const QString &mesh) const;
+    QString resolveShaderPath(const QString &shader) const;
     bool operator==(const Scene &other) const;
 };
 

@@ -60,6 +60,7 @@ private:
     bool readLight(const QJsonValue &value, const QString &path, PointLight &out);
     bool readLights(const QJsonValue &value, const QString &path, std::vector<PointLight> &out);
     bool readShading(const QJsonValue &value, const QString &path, ShadingMethod &out);
+    bool readShaderFiles(const QJsonValue &value, const QString &path, Scene &out);
     bool readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out);
     bool readSingleObject(const QJsonObject &root, SceneObject &out);
     bool readNormals(const QJsonValue &value, const QString &path, NormalOptions &out);
@@ -248,7 +249,8 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path, {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1});
+    warnUnknownKeys(object, path, {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1,
+                                   "name"_L1, "enabled"_L1});
     // A light with no position would silently sit at the origin, inside the object.
     if (!object.contains("position"_L1))
         return fail(childPath(path, "position"_L1), QStringLiteral("required field missing"));
@@ -263,6 +265,17 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     const double sum = light.attenuation.x + light.attenuation.y + light.attenuation.z;
     if (sum <= 0.0)
         return fail(attenuationPath, QStringLiteral("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
+    if (const QJsonValue name = object.value("name"_L1); !name.isUndefined()) {
+        if (!name.isString())
+            return fail(childPath(path, "name"_L1), QStringLiteral("expected a string (got %1)").arg(describeType(name)));
+        light.name = name.toString().toStdString();
+    }
+    if (const QJsonValue enabled = object.value("enabled"_L1); !enabled.isUndefined()) {
+        if (!enabled.isBool())
+            return fail(childPath(path, "enabled"_L1),
+                        QStringLiteral("expected true or false (got %1)").arg(describeType(enabled)));
+        light.enabled = enabled.toBool();
+    }
     out = light;
     return true;
 }
@@ -296,6 +309,32 @@ bool SceneReader::readShading(const QJsonValue &value, const QString &path, Shad
         return fail(path, QStringLiteral("unknown shading method \"%1\" (known: %2)")
                               .arg(value.toString(), shadingNames().join(QStringLiteral(", "))));
     out = *method;
+    return true;
+}
+
+bool SceneReader::readShaderFiles(const QJsonValue &value, const QString &path, Scene &out)
+{
+    if (value.isUndefined())
+        return true;
+    QJsonObject object;
+    if (!readObject(value, path, object))
+        return false;
+    warnUnknownKeys(object, path, {"vertex"_L1, "fragment"_L1});
+    QString files[2];
+    const QLatin1StringView keys[2] = {"vertex"_L1, "fragment"_L1};
+    for (int i = 0; i < 2; ++i) {
+        const QJsonValue file = object.value(keys[i]);
+        if (file.isUndefined())
+            continue;
+        const QString filePath = childPath(path, keys[i]);
+        if (!file.isString())
+            return fail(filePath, QStringLiteral("expected a string (got %1)").arg(describeType(file)));
+        if (file.toString().isEmpty())
+            return fail(filePath, QStringLiteral("must not be empty (give a shader file path, or leave the key out)"));
+        files[i] = file.toString();
+    }
+    out.vertexShader = files[0];
+    out.fragmentShader = files[1];
     return true;
 }
 
@@ -368,7 +407,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "camera"_L1,
-                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1});
+                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readObjects(root, scene.objects)
@@ -376,7 +415,8 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && readColor(root.value("ambient"_L1), QStringLiteral("ambient"), scene.ambient)
         && readLights(root.value("lights"_L1), QStringLiteral("lights"), scene.lights)
         && readShading(root.value("shading"_L1), QStringLiteral("shading"), scene.shading)
-        && readColor(root.value("background"_L1), QStringLiteral("background"), scene.background);
+        && readColor(root.value("background"_L1), QStringLiteral("background"), scene.background)
+        && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene);
     if (ok)
         result.scene = std::move(scene);
     else

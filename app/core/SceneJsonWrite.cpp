@@ -52,12 +52,18 @@ QJsonObject cameraJson(const Camera &camera)
 
 QJsonObject lightJson(const PointLight &light)
 {
-    return QJsonObject{
+    QJsonObject json{
         {QStringLiteral("position"), vec3Json(light.position)},
         {QStringLiteral("diffuse"), vec3Json(light.diffuse)},
         {QStringLiteral("specular"), vec3Json(light.specular)},
         {QStringLiteral("attenuation"), vec3Json(light.attenuation)},
     };
+    // Only when not the default, so files without them stay as they were.
+    if (!light.name.empty())
+        json.insert(QStringLiteral("name"), QString::fromStdString(light.name));
+    if (!light.enabled)
+        json.insert(QStringLiteral("enabled"), false);
+    return json;
 }
 
 // The keys one object contributes: inside an "objects" entry, or at the top
@@ -95,6 +101,14 @@ QByteArray sceneToJson(const Scene &scene)
     root.insert(QStringLiteral("lights"), lights);
     root.insert(QStringLiteral("shading"), shadingName(scene.shading));
     root.insert(QStringLiteral("background"), vec3Json(scene.background));
+    if (!scene.vertexShader.isEmpty() || !scene.fragmentShader.isEmpty()) {
+        QJsonObject shaders;
+        if (!scene.vertexShader.isEmpty())
+            shaders.insert(QStringLiteral("vertex"), scene.vertexShader);
+        if (!scene.fragmentShader.isEmpty())
+            shaders.insert(QStringLiteral("fragment"), scene.fragmentShader);
+        root.insert(QStringLiteral("shaders"), shaders);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

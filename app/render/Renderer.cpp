@@ -159,14 +159,19 @@ void Renderer::render(const QSize &pixelSize)
 
 void Renderer::uploadLights(const glm::dmat4 &view)
 {
-    const int count = std::min<int>(int(m_scene.lights.size()), kMaxLights);
+    // Only the enabled lights are packed; lightCount counts them.
+    int count = 0;
     glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights], attenuation[kMaxLights];
-    for (int i = 0; i < count; ++i) {
-        const PointLight &l = m_scene.lights[i];
-        position[i] = glm::vec3(l.position); // world coordinates: the shader applies the view
-        diffuse[i] = glm::vec3(l.diffuse);
-        specular[i] = glm::vec3(l.specular);
-        attenuation[i] = glm::vec3(l.attenuation);
+    for (const PointLight &l : m_scene.lights) {
+        if (!l.enabled)
+            continue;
+        if (count == kMaxLights)
+            break;
+        position[count] = glm::vec3(l.position); // world coordinates: the shader applies the view
+        diffuse[count] = glm::vec3(l.diffuse);
+        specular[count] = glm::vec3(l.specular);
+        attenuation[count] = glm::vec3(l.attenuation);
+        ++count;
     }
     m_program.setUniform("viewMatrix", glm::mat4(view));
     m_program.setUniform("Ia", glm::vec3(m_scene.ambient));
@@ -217,7 +222,10 @@ void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projec
         // Show the light's hue even when its intensity is above 1 or very dim.
         const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});
         m_markerProgram.setUniform("mvpMatrix", glm::mat4(projection * view * model));
-        m_markerProgram.setUniform("color", glm::vec3(light.diffuse / peak));
+        // A disabled light keeps its marker (it can still be picked and
+        // dragged), drawn dimmed to a quarter of its hue.
+        const double dim = light.enabled ? 1.0 : 0.25;
+        m_markerProgram.setUniform("color", glm::vec3(dim * light.diffuse / peak));
         m_markerMesh.draw();
     }
 }

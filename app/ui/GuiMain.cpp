@@ -102,6 +102,7 @@ int runGui(int argc, char **argv)
     QApplication::setOrganizationName(QStringLiteral("PhongLab"));
 
     MainWindow window;
+    window.restoreWindowSettings(); // geometry and docks as the last session left them
     if (!openDefaultScene(window))
         return kExitFailure;
     window.show();

@@ -6,11 +6,13 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QListWidgetItem>
 #include <QPushButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace phonglab {
 
@@ -43,6 +45,10 @@ LightsDock::LightsDock(QWidget *parent)
     form->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_editor);
     setWidget(content);
+    m_name = new QLineEdit(m_editor);
+    m_name->setObjectName(QStringLiteral("lightName"));
+    connect(m_name, &QLineEdit::editingFinished, this, [this] { renameLight(selectedLight(), m_name->text()); });
+    form->addRow(tr("Name"), m_name);
     addField(tr("Position (world)"), LightField::Position, -kMaxPosition, kMaxPosition);
     addField(tr("Id (diffuse)"), LightField::Diffuse, 0.0, kMaxIntensity)->enableColourPicker();
     addField(tr("Is (specular)"), LightField::Specular, 0.0, kMaxIntensity)->enableColourPicker();
@@ -120,9 +126,7 @@ void LightsDock::refresh(const Scene &scene)
         item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
     };
     for (int i = 0; i < int(scene.lights.size()); ++i)
-        addItem(tr("Light %1").arg(i + 1), true);
-    for (int i = 0; i < int(m_shelf->size()); ++i)
-        addItem(tr("Off %1 (not in the scene)").arg(i + 1), false);
+        addItem(displayName(i), scene.lights[i].enabled);
     m_list->setCurrentRow(std::min(keep < 0 ? 0 : keep, m_list->count() - 1));
     m_showing = false;
     m_ambient->setValue(scene.ambient);
@@ -155,22 +159,36 @@ void LightsDock::itemToggled(QListWidgetItem *item)
     }
 }
 
-bool LightsDock::setLightEnabled(int row, bool on)
+bool LightsDock::setLightEnabled(int index, bool on)
 {
-    const int sceneCount = int(m_scene.lights.size());
-    const bool isOn = row < sceneCount;
-    if (!m_stack || row < 0 || row >= sceneCount + int(m_shelf->size()) || isOn == on)
+    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()) || m_scene.lights[index].enabled == on)
         return false;
-    if (on && sceneCount >= kMaxLights) {
-        m_status->setText(tr("%1 lights are on already: switch one off first").arg(kMaxLights));
-        return false;
-    }
     m_status->clear();
-    if (on)
-        m_stack->push(new EnableLightCommand(m_access, m_shelf, row - sceneCount));
-    else
-        m_stack->push(new DisableLightCommand(m_access, m_shelf, row, m_scene.lights[row]));
+    m_stack->push(new SetLightEnabledCommand(m_access, index, on));
     return true;
+}
+
+int LightsDock::switchedOffCount() const
+{
+    return int(std::count_if(m_scene.lights.begin(), m_scene.lights.end(),
+                             [](const PointLight &l) { return !l.enabled; }));
+}
+
+bool LightsDock::renameLight(int index, const QString &name)
+{
+    const std::string after = name.trimmed().toStdString();
+    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()) || m_scene.lights[index].name == after)
+        return false;
+    m_stack->push(new RenameLightCommand(m_access, index, m_scene.lights[index].name, after));
+    return true;
+}
+
+QString LightsDock::displayName(int index) const
+{
+    if (index < 0 || index >= int(m_scene.lights.size()))
+        return {};
+    const std::string &name = m_scene.lights[index].name;
+    return name.empty() ? tr("Light %1").arg(index + 1) : QString::fromStdString(name);
 }
 
 void LightsDock::selectLight(int index)
@@ -186,6 +204,8 @@ void LightsDock::showSelected()
     if (!valid || m_showing)
         return;
     const PointLight &light = m_scene.lights[index];
+    m_name->setText(QString::fromStdString(light.name));
+    m_name->setPlaceholderText(tr("Light %1").arg(index + 1));
     m_fields[int(LightField::Position)]->setValue(light.position);
     m_fields[int(LightField::Diffuse)]->setValue(light.diffuse);
     m_fields[int(LightField::Specular)]->setValue(light.specular);
@@ -195,7 +215,7 @@ void LightsDock::showSelected()
 void LightsDock::updateButtons()
 {
     m_add->setEnabled(int(m_scene.lights.size()) < kMaxLights);
-    m_remove->setEnabled(selectedLight() >= 0); // a switched-off light is switched on to be removed
+    m_remove->setEnabled(selectedLight() >= 0);
 }
 
 void LightsDock::push(LightField which, const glm::dvec3 &after)

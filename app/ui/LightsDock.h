@@ -5,6 +5,7 @@
 
 class QCheckBox;
 class QLabel;
+class QLineEdit;
 class QListWidget;
 class QListWidgetItem;
 class QPushButton;
@@ -15,7 +16,7 @@ namespace phonglab {
 class Vec3Field;
 
 // The scene's point lights (at most kMaxLights) in world space: add, remove,
-// and for the selected light its position, Id, Is and attenuation c1/c2/c3;
+// switch on/off, and for the selected light its name, position, Id, Is and attenuation c1/c2/c3;
 // plus the global ambient Ia. Every change is an undoable command.
 class LightsDock : public QDockWidget
 {
@@ -27,13 +28,18 @@ public:
     void bind(QUndoStack *stack, SceneAccess access);
     void refresh(const Scene &scene);
 
-    // The selected scene light; -1 when none or a switched-off one is selected.
+    // The selected light (switched on or off); -1 when none.
     int selectedLight() const;
-    // `row` of the list: a scene light (on) or, after them, a shelved one (off).
-    bool setLightEnabled(int row, bool on);
-    int switchedOffCount() const { return int(m_shelf->size()); }
-    // A new scene: the lights switched off in the old one are forgotten.
-    void clearShelf() { m_shelf->clear(); }
+    // The list's check box: switches light `index` on or off (the light stays
+    // in the scene either way) through an undoable command; false if nothing changed.
+    bool setLightEnabled(int index, bool on);
+    // Lights in the scene that are switched off.
+    int switchedOffCount() const;
+    // The name field: renames light `index` (empty: shown as "Light N"); false if unchanged.
+    bool renameLight(int index, const QString &name);
+    // What the list shows for light `index`: its name, or "Light N".
+    QString displayName(int index) const;
+    QLineEdit *nameField() const { return m_name; }
     QString statusText() const;
     void selectLight(int index);
     Vec3Field *field(LightField which) const { return m_fields[int(which)]; }
@@ -59,13 +65,13 @@ private:
     QUndoStack *m_stack = nullptr;
     SceneAccess m_access;
     Scene m_scene;
-    std::shared_ptr<LightShelf> m_shelf = std::make_shared<LightShelf>();
     QListWidget *m_list = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_headlight = nullptr;
     QPushButton *m_add = nullptr;
     QPushButton *m_remove = nullptr;
     QWidget *m_editor = nullptr;
+    QLineEdit *m_name = nullptr;
     Vec3Field *m_fields[4] = {nullptr, nullptr, nullptr, nullptr};
     Vec3Field *m_ambient = nullptr;
     bool m_showing = false;

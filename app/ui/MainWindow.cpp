@@ -11,6 +11,7 @@
 #include "SceneLoadRequests.h"
 #include "ShaderDock.h"
 #include "ShaderEditor.h"
+#include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
 #include "UniformsDock.h"
 #include "Viewport.h"
@@ -27,7 +28,9 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 
 namespace phonglab {
@@ -133,10 +136,35 @@ void MainWindow::typeTestTextAfterStart()
 // for saving first.
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_liveShaders->recovery()->confirmUnsaved(this))
+    if (m_liveShaders->recovery()->confirmUnsaved(this)) {
+        saveWindowSettings();
         event->accept();
-    else
+    } else {
         event->ignore();
+    }
+}
+
+namespace {
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+constexpr int kWindowStateVersion = 1; // bump when the docks change incompatibly
+} // namespace
+
+void MainWindow::saveWindowSettings() const
+{
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState(kWindowStateVersion));
+}
+
+bool MainWindow::restoreWindowSettings()
+{
+    const QSettings settings;
+    const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
+    const QByteArray state = settings.value(kStateKey).toByteArray();
+    const bool geometryOk = !geometry.isEmpty() && restoreGeometry(geometry);
+    const bool stateOk = !state.isEmpty() && restoreState(state, kWindowStateVersion);
+    return geometryOk && stateOk;
 }
 
 // Rebuilt from the linked program after every build, including the shipped
@@ -240,6 +268,7 @@ bool MainWindow::openScene(const QString &path, QString *error)
         return false;
     }
     setScenePath(path);
+    openSceneShaders(*loaded.scene);
     if (!loaded.warnings.isEmpty())
         statusBar()->showMessage(loaded.warnings.join(QStringLiteral("; ")), kWarningTimeoutMs);
     else
@@ -249,12 +278,100 @@ bool MainWindow::openScene(const QString &path, QString *error)
 
 bool MainWindow::saveScene(const QString &path, QString *error)
 {
-    if (!saveSceneFile(rebasedOnto(m_viewport->currentScene(), path), path, error))
+    if (!saveShaderBuffers(error))
+        return false;
+    Scene scene = rebasedOnto(m_viewport->currentScene(), path);
+    addShaderFiles(scene, path);
+    if (!saveSceneFile(scene, path, error))
         return false;
     setScenePath(path);
     m_recentFiles->add(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
     return true;
+}
+
+// A scene names its shader files, so their unsaved edits are saved with it
+// (a shipped shader's go to its user copy).
+bool MainWindow::saveShaderBuffers(QString *error)
+{
+    for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        if (!m_shaderDock->isDirty(stage))
+            continue;
+        QString reason;
+        if (!m_shaderDock->save(stage, &reason)) {
+            if (error)
+                *error = tr("Cannot save the %1 shader: %2").arg(stageName(stage), reason);
+            return false;
+        }
+    }
+    return true;
+}
+
+// The dock's files, where they are not shipped ones: relative to the scene
+// file when under its folder, else absolute.
+void MainWindow::addShaderFiles(Scene &scene, const QString &sceneFilePath) const
+{
+    const QDir folder = QFileInfo(sceneFilePath).absoluteDir();
+    const auto entry = [&](ShaderStage stage) {
+        const QString file = m_shaderDock->filePath(stage);
+        if (file.isEmpty() || !isWritableLocation(file) || m_shaderDock->files()->isShipped(file))
+            return QString();
+        const QString absolute = QFileInfo(file).absoluteFilePath();
+        const QString relative = folder.relativeFilePath(absolute);
+        return relative.startsWith(QLatin1String("..")) || QDir::isAbsolutePath(relative) ? absolute : relative;
+    };
+    scene.vertexShader = entry(ShaderStage::Vertex);
+    scene.fragmentShader = entry(ShaderStage::Fragment);
+}
+
+void MainWindow::openSceneShaders(const Scene &scene)
+{
+    m_lastShaderError.clear();
+    if (scene.vertexShader.isEmpty() && scene.fragmentShader.isEmpty())
+        return;
+    if (m_shaderDock->hasUnsavedChanges()) {
+        // Unsaved edits are never replaced behind the user's back.
+        statusBar()->showMessage(tr("Kept your unsaved shader edits; the scene's shader files were not loaded"),
+                                 kWarningTimeoutMs);
+        return;
+    }
+    const std::pair<ShaderStage, QString> files[] = {{ShaderStage::Vertex, scene.vertexShader},
+                                                     {ShaderStage::Fragment, scene.fragmentShader}};
+    QStringList missing;
+    for (const auto &[stage, name] : files) {
+        const QString path = scene.resolveShaderPath(name);
+        if (!name.isEmpty() && !QFileInfo(path).isFile())
+            missing << tr("shaders.%1: %2: file not found")
+                           .arg(stage == ShaderStage::Vertex ? QStringLiteral("vertex") : QStringLiteral("fragment"),
+                                QDir::toNativeSeparators(path));
+    }
+    // The shading method's shipped shaders, shown and built, under whatever is missing.
+    if (!missing.isEmpty())
+        m_liveShaders->applyPreset(scene.shading);
+    bool opened = false;
+    for (const auto &[stage, name] : files) {
+        const QString path = scene.resolveShaderPath(name);
+        if (name.isEmpty() || !QFileInfo(path).isFile())
+            continue;
+        // One at a time, on its stage's tab, so any suffix goes to the right stage.
+        m_shaderDock->tabs()->setCurrentWidget(m_shaderDock->editor(stage));
+        QString error;
+        if (m_shaderDock->openFiles({path}, &error))
+            opened = true;
+        else
+            missing << tr("shaders.%1: %2")
+                           .arg(stage == ShaderStage::Vertex ? QStringLiteral("vertex") : QStringLiteral("fragment"),
+                                error);
+    }
+    if (opened)
+        m_liveShaders->buildNow(); // a failure shows in the dock; the last good program stays
+    if (!missing.isEmpty()) {
+        m_lastShaderError = missing.join(QLatin1Char('\n'));
+        statusBar()->showMessage(tr("Cannot open the scene's shaders: %1").arg(missing.join(QStringLiteral("; "))),
+                                 kWarningTimeoutMs);
+        warn(tr("Cannot open the scene's shaders"),
+             tr("%1\n\nThe scene uses its shading method's shipped shaders instead.").arg(m_lastShaderError));
+    }
 }
 
 bool MainWindow::openFiles(const QStringList &paths, QString *error)
@@ -290,8 +407,9 @@ bool MainWindow::startSceneLoad(const QString &path, QString *error)
         return false;
     }
     SceneLoadRequest request = sceneFileRequest(path, *parsed.scene);
-    request.shown = [this, path, warnings = parsed.warnings] {
+    request.shown = [this, path, warnings = parsed.warnings, scene = *parsed.scene] {
         setScenePath(path);
+        openSceneShaders(scene);
         m_recentFiles->add(path);
         const QString message = warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName())
                                                    : warnings.join(QStringLiteral("; "));

@@ -8,6 +8,8 @@ class QLabel;
 
 namespace phonglab {
 
+struct Scene;
+
 class LiveShaderController;
 class LoadProgressWidget;
 class RecentFiles;
@@ -33,7 +35,11 @@ public:
 
     // Load / save without any dialog, on the calling thread (startup, tests);
     // false with a reason on failure. A failed open keeps the current scene;
-    // saving writes the scene with the camera as currently orbited.
+    // saving writes the scene with the camera as currently orbited. Saving
+    // first saves the Shaders dock's unsaved buffers, then writes the dock's
+    // files as the scene's "shaders" when they are not the shipped ones;
+    // opening a scene with "shaders" loads and builds those files (a missing
+    // one: a warning, and the shading method's shipped shaders stay).
     bool openScene(const QString &path, QString *error);
     bool saveScene(const QString &path, QString *error);
 
@@ -46,10 +52,19 @@ public:
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
 
+    // Window geometry and dock layout in QSettings ("window/geometry",
+    // "window/state"): saved when the window closes, restored at start
+    // (GuiMain; not in the constructor, so tests start from the default
+    // layout). False when nothing usable was stored.
+    void saveWindowSettings() const;
+    bool restoreWindowSettings();
+
     // Renders the current view at `size` pixels and writes it as PNG.
     bool exportImage(const QString &path, const QSize &size, QString *error);
 
     QString scenePath() const { return m_scenePath; }
+    // Why the last opened scene's "shaders" could not be used; empty if they could.
+    QString lastShaderError() const { return m_lastShaderError; }
     Viewport *viewport() const { return m_viewport; }
     SceneLoadJob *loadJob() const { return m_loadJob; }
     SceneDock *sceneDock() const { return m_sceneDock; }
@@ -86,6 +101,9 @@ private:
     void createStatusBar();
     void connectLoading();
     bool startSceneLoad(const QString &path, QString *error);
+    bool saveShaderBuffers(QString *error);
+    void addShaderFiles(Scene &scene, const QString &sceneFilePath) const;
+    void openSceneShaders(const Scene &scene);
     void setScenePath(const QString &path, const QString &title = {});
     QString dialogFolder() const;
     void warn(const QString &title, const QString &message);
@@ -104,6 +122,7 @@ private:
     QLabel *m_frameLabel = nullptr;
     QLabel *m_rendererLabel = nullptr;
     QString m_scenePath;
+    QString m_lastShaderError;
     QString m_lastFolder; // where the last file was opened from, for dialogs
 };
 

@@ -96,46 +96,41 @@ void RemoveLightCommand::undo()
     change([this](Scene &scene) { scene.lights.insert(scene.lights.begin() + m_index, m_light); });
 }
 
-DisableLightCommand::DisableLightCommand(SceneAccess access, std::shared_ptr<LightShelf> shelf, int index,
-                                         const PointLight &light)
-    : SceneCommand(std::move(access), tr("Switch off light %1").arg(index + 1), -1)
-    , m_shelf(std::move(shelf))
+SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
+    : SceneCommand(std::move(access),
+                   (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1), -1)
     , m_index(index)
-    , m_light(light)
+    , m_on(on)
 {
 }
 
-// The shelf changes before the scene is written: whoever shows both refreshes on that write.
-void DisableLightCommand::redo()
+void SetLightEnabledCommand::redo()
 {
-    m_shelf->push_back(m_light);
-    change([this](Scene &scene) { scene.lights.erase(scene.lights.begin() + m_index); });
+    change([this](Scene &scene) { scene.lights.at(m_index).enabled = m_on; });
 }
 
-void DisableLightCommand::undo()
+void SetLightEnabledCommand::undo()
 {
-    m_shelf->pop_back();
-    change([this](Scene &scene) { scene.lights.insert(scene.lights.begin() + m_index, m_light); });
+    change([this](Scene &scene) { scene.lights.at(m_index).enabled = !m_on; });
 }
 
-EnableLightCommand::EnableLightCommand(SceneAccess access, std::shared_ptr<LightShelf> shelf, int shelfIndex)
-    : SceneCommand(std::move(access), tr("Switch on light"), -1)
-    , m_shelf(std::move(shelf))
-    , m_shelfIndex(shelfIndex)
-    , m_light(m_shelf->at(shelfIndex))
+RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
+                                       const std::string &after)
+    : SceneCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1)
+    , m_index(index)
+    , m_before(before)
+    , m_after(after)
 {
 }
 
-void EnableLightCommand::redo()
+void RenameLightCommand::redo()
 {
-    m_shelf->erase(m_shelf->begin() + m_shelfIndex);
-    change([this](Scene &scene) { scene.lights.push_back(m_light); });
+    change([this](Scene &scene) { scene.lights.at(m_index).name = m_after; });
 }
 
-void EnableLightCommand::undo()
+void RenameLightCommand::undo()
 {
-    m_shelf->insert(m_shelf->begin() + m_shelfIndex, m_light);
-    change([](Scene &scene) { scene.lights.pop_back(); });
+    change([this](Scene &scene) { scene.lights.at(m_index).name = m_before; });
 }
 
 SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after)

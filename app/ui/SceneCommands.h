@@ -78,36 +78,32 @@ private:
     PointLight m_light; // put back at m_index on undo
 };
 
-// Switched-off lights. The scene format has no "enabled" flag, so a light
-// that is off leaves the scene (and the shader) and waits here, in the
-// Lights dock, until it is switched on again; it is not saved with the scene.
-using LightShelf = std::vector<PointLight>;
-
-class DisableLightCommand : public SceneCommand
+// Switches a light on or off: an off light stays in the scene (and the file,
+// as "enabled": false) but is not sent to the shader. Never merges.
+class SetLightEnabledCommand : public SceneCommand
 {
 public:
-    DisableLightCommand(SceneAccess access, std::shared_ptr<LightShelf> shelf, int index, const PointLight &light);
+    SetLightEnabledCommand(SceneAccess access, int index, bool on);
     void redo() override;
     void undo() override;
 
 private:
-    std::shared_ptr<LightShelf> m_shelf;
     int m_index = 0;
-    PointLight m_light;
+    bool m_on = true;
 };
 
-// Puts shelf entry `shelfIndex` back into the scene as its last light.
-class EnableLightCommand : public SceneCommand
+// Renames a light; an empty name shows as "Light N". Never merges.
+class RenameLightCommand : public SceneCommand
 {
 public:
-    EnableLightCommand(SceneAccess access, std::shared_ptr<LightShelf> shelf, int shelfIndex);
+    RenameLightCommand(SceneAccess access, int index, const std::string &before, const std::string &after);
     void redo() override;
     void undo() override;
 
 private:
-    std::shared_ptr<LightShelf> m_shelf;
-    int m_shelfIndex = 0;
-    PointLight m_light;
+    int m_index = 0;
+    std::string m_before;
+    std::string m_after;
 };
 
 class SetAmbientCommand : public SceneCommand

@@ -77,7 +77,6 @@ void SceneEditDocks::sceneReplaced()
     // Also when only a mesh's normals were reloaded: commands hold light and
     // object indices, and a reloaded scene may no longer have them.
     m_stack->clear();
-    m_lights->clearShelf();
     refresh();
 }
 

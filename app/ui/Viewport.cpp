@@ -14,6 +14,7 @@
 #include <QResizeEvent>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 namespace phonglab {
@@ -266,7 +267,10 @@ void Viewport::setHeadlight(bool on)
 Scene Viewport::renderedScene() const
 {
     Scene scene = currentScene();
-    if (m_headlight && int(scene.lights.size()) < kMaxLights) {
+    // Disabled lights are not sent to the shader, so they leave room for it.
+    const auto enabledLights = std::count_if(scene.lights.begin(), scene.lights.end(),
+                                             [](const PointLight &l) { return l.enabled; });
+    if (m_headlight && enabledLights < kMaxLights) {
         PointLight head;
         head.position = scene.camera.eye; // moves with every orbit, pan and zoom
         scene.lights.push_back(head);

@@ -25,6 +25,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -105,6 +106,7 @@ private slots:
     void addAndRemoveLights();
     void markerDragIsOneUndoStep();
     void switchedOffLightIsNotRendered();
+    void renameLightThroughNameField();
     void shortcutsUndoAndRedo();
     void headlightFollowsTheCamera();
     void presetsAndShininess();
@@ -318,23 +320,64 @@ void TestLightsDock::switchedOffLightIsNotRendered()
     const QImage lit = frame();
     LightsDock *dock = docks()->lightsDock();
     QVERIFY(dock->setLightEnabled(0, false));
-    QVERIFY(viewport()->currentScene().lights.empty()); // not sent to the shader...
-    QCOMPARE(dock->switchedOffCount(), 1);              // ...but kept in the dock
+    QCOMPARE(viewport()->currentScene().lights.size(), size_t(1)); // stays in the scene...
+    QVERIFY(!viewport()->currentScene().lights[0].enabled);        // ...switched off
+    QCOMPARE(dock->switchedOffCount(), 1);
     QVERIFY(frame() != lit);
-    verifyMatchesReference(); // ambient only
+    verifyMatchesReference(); // ambient only: the CPU reference skips it too
+    QVERIFY(!dock->setLightEnabled(0, false)); // already off
     QVERIFY(dock->setLightEnabled(0, true));
     QVERIFY(frame() == lit);
     docks()->undoStack()->undo();
+    QCOMPARE(dock->switchedOffCount(), 1);
     docks()->undoStack()->undo();
     QVERIFY(frame() == lit);
     QCOMPARE(dock->switchedOffCount(), 0);
 
-    // Nine lights cannot be on at once.
-    dock->setLightEnabled(0, false);
-    for (int i = 0; i < kMaxLights; ++i)
+    // The list's check box is the same switch, and the list shows names.
+    auto *list = dock->findChild<QListWidget *>();
+    QVERIFY(list);
+    list->item(0)->setCheckState(Qt::Unchecked);
+    QVERIFY(!viewport()->currentScene().lights[0].enabled);
+    QVERIFY(dock->renameLight(0, QStringLiteral("Key")));
+    QCOMPARE(list->item(0)->text(), QStringLiteral("Key"));
+    QCOMPARE(list->item(0)->checkState(), Qt::Unchecked);
+    docks()->undoStack()->undo();
+    docks()->undoStack()->undo();
+    QCOMPARE(list->item(0)->text(), QStringLiteral("Light 1"));
+    QCOMPARE(list->item(0)->checkState(), Qt::Checked);
+
+    // One light on, one off: the image is that of the enabled one alone.
+    dock->addLight();
+    QVERIFY(frame() != lit);
+    QVERIFY(dock->setLightEnabled(1, false));
+    QVERIFY(frame() == lit);
+    verifyMatchesReference();
+
+    // The 8-light limit counts switched-off lights too.
+    for (int i = 2; i < kMaxLights; ++i)
         dock->addLight();
-    QVERIFY(!dock->setLightEnabled(kMaxLights, true));
-    QVERIFY(!dock->statusText().isEmpty());
+    QCOMPARE(int(viewport()->currentScene().lights.size()), kMaxLights);
+    dock->addLight();
+    QCOMPARE(int(viewport()->currentScene().lights.size()), kMaxLights);
+}
+
+void TestLightsDock::renameLightThroughNameField()
+{
+    LightsDock *dock = docks()->lightsDock();
+    dock->selectLight(0);
+    QCOMPARE(dock->displayName(0), QStringLiteral("Light 1"));
+    QLineEdit *name = dock->nameField();
+    name->setText(QStringLiteral("Key light"));
+    emit name->editingFinished();
+    QCOMPARE(viewport()->currentScene().lights[0].name, std::string("Key light"));
+    QCOMPARE(dock->displayName(0), QStringLiteral("Key light"));
+    docks()->undoStack()->undo();
+    QVERIFY(viewport()->currentScene().lights[0].name.empty());
+    QCOMPARE(dock->displayName(0), QStringLiteral("Light 1"));
+    QVERIFY(name->text().isEmpty());
+    docks()->undoStack()->redo();
+    QCOMPARE(name->text(), QStringLiteral("Key light"));
 }
 
 void TestLightsDock::shortcutsUndoAndRedo()

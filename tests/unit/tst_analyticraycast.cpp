@@ -99,6 +99,21 @@ private slots:
         QVERIFY(near(image.colorAt(50, 50), glm::dvec3(1.14, 1.06, 0.98), 1e-12));
     }
 
+    // A switched-off light lights nothing: the image is that of the others alone.
+    void disabledLightIsSkipped()
+    {
+        Scene scene = sphereScene();
+        const ReferenceImage enabledOnly = render(scene, 64, 64);
+        PointLight off;
+        off.position = {-3.0, 1.0, 4.0};
+        off.diffuse = {2.0, 0.5, 0.5};
+        off.enabled = false;
+        scene.lights.push_back(off);
+        QVERIFY(render(scene, 64, 64).color == enabledOnly.color);
+        scene.lights.back().enabled = true;
+        QVERIFY(render(scene, 64, 64).color != enabledOnly.color);
+    }
+
     void sphereCoverageArea()
     {
         // Sphere of radius 1 seen from distance 4: the tangent cone has

@@ -85,22 +85,30 @@ private slots:
         QVERIFY(m_scene == sampleScene());
     }
 
-    // Switching off moves a light to the shelf; on brings it back as the
-    // last light. Undo restores both the scene and the shelf.
+    // Switching off keeps the light in the scene, flagged; undo switches it back on.
     void switchLightsOffAndOn()
     {
-        auto shelf = std::make_shared<LightShelf>();
-        const PointLight first = m_scene.lights[0];
-        roundTrip(new DisableLightCommand(access(), shelf, 0, first),
-                  [](Scene &s) { s.lights.erase(s.lights.begin()); });
-        QCOMPARE(shelf->size(), size_t(1));
-        QVERIFY(shelf->front() == first);
-        roundTrip(new EnableLightCommand(access(), shelf, 0), [&](Scene &s) { s.lights.push_back(first); });
-        QVERIFY(shelf->empty());
+        roundTrip(new SetLightEnabledCommand(access(), 0, false), [](Scene &s) { s.lights[0].enabled = false; });
+        QCOMPARE(m_scene.lights.size(), sampleScene().lights.size());
+        roundTrip(new SetLightEnabledCommand(access(), 0, true), [](Scene &s) { s.lights[0].enabled = true; });
         m_stack.undo();
         m_stack.undo();
         QVERIFY(m_scene == sampleScene());
-        QVERIFY(shelf->empty());
+        m_stack.redo();
+        QVERIFY(!m_scene.lights[0].enabled);
+        m_stack.redo();
+        QVERIFY(m_scene == sampleScene());
+    }
+
+    void renameLight()
+    {
+        roundTrip(new RenameLightCommand(access(), 0, "", "Key light"), [](Scene &s) { s.lights[0].name = "Key light"; });
+        roundTrip(new RenameLightCommand(access(), 0, "Key light", ""), [](Scene &s) { s.lights[0].name.clear(); });
+        QCOMPARE(m_stack.count(), 2); // renames never merge
+        m_stack.undo();
+        QCOMPARE(m_scene.lights[0].name, std::string("Key light"));
+        m_stack.undo();
+        QVERIFY(m_scene == sampleScene());
     }
 
     void setAmbient()

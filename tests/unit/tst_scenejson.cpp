@@ -46,9 +46,9 @@ Scene fullScene()
     scene.camera.farPlane = 250.0;
     scene.ambient = {0.05, 0.1, 0.15};
     scene.lights = {
-        PointLight{{3.0, 4.0, 5.0}, {1.0, 0.9, 0.8}, {0.5, 0.5, 0.5}, {1.0, 0.1, 0.01}},
-        PointLight{{-4.0, 2.0, 1.0}, {0.3, 0.3, 0.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.2}},
-        PointLight{{0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}},
+        PointLight{{3.0, 4.0, 5.0}, {1.0, 0.9, 0.8}, {0.5, 0.5, 0.5}, {1.0, 0.1, 0.01}, "key light", true},
+        PointLight{{-4.0, 2.0, 1.0}, {0.3, 0.3, 0.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.2}, "", false},
+        PointLight{{0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}, "rim", true},
     };
     scene.shading = ShadingMethod::BlinnPhong; // not the default
     scene.background = {0.3, 0.2, 0.1};
@@ -58,7 +58,7 @@ Scene fullScene()
 Scene sphereScene()
 {
     Scene scene;
-    scene.objects = {SceneObject{QStringLiteral("builtin:sphere"), {}, {}}};
+    scene.objects = {SceneObject{QStringLiteral("builtin:sphere"), {}, {}, {}}};
     return scene;
 }
 
@@ -145,7 +145,9 @@ void TestSceneJson::defaultsWhenOptionalFieldsMissing()
     material.shininess = 5.0;
     QVERIFY(partial.scene->objects.front().material == material);
     QCOMPARE(partial.scene->lights.size(), std::size_t(1));
-    QVERIFY(partial.scene->lights.front() == (PointLight{{1.0, 2.0, 3.0}}));
+    PointLight expected;
+    expected.position = {1.0, 2.0, 3.0};
+    QVERIFY(partial.scene->lights.front() == expected);
 }
 
 void TestSceneJson::multiObjectFormDefaults()

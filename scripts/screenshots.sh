@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Regenerates the pictures in docs/images/ (README, first-five-minutes) with
+# the app's own code, under a virtual X server.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images

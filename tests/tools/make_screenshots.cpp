@@ -1,0 +1,89 @@
+// Renders the pictures in README.md and docs/first-five-minutes.md with the
+// app's own code: the main window on the default scene, a shader error in the
+// live editor, and the Lights dock. Run under Xvfb:
+//   xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
+#include "core/ResourcePaths.h"
+#include "render/GlFormat.h"
+#include "ui/LightsDock.h"
+#include "ui/LiveShaderController.h"
+#include "ui/MainWindow.h"
+#include "ui/SceneEditDocks.h"
+#include "ui/ShaderDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/Viewport.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QThread>
+
+#include <cstdio>
+
+using namespace phonglab;
+
+namespace {
+
+// Lets the window render and settle: background builds, dock layout.
+void settle(int ms)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < ms) {
+        QApplication::processEvents(QEventLoop::AllEvents, 20);
+        QThread::msleep(10);
+    }
+}
+
+bool save(QWidget &window, const QDir &out, const char *name)
+{
+    const QString path = out.filePath(QString::fromLatin1(name));
+    const bool ok = window.grab().save(path);
+    std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
+    return ok;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QTemporaryDir state;
+    qputenv("PHONGLAB_RECOVERY_DIR", state.filePath(QStringLiteral("recovery")).toUtf8());
+    qputenv("PHONGLAB_CACHE_DIR", state.filePath(QStringLiteral("cache")).toUtf8());
+    QStandardPaths::setTestModeEnabled(true); // no user settings, no recent files
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(4));
+    QApplication app(argc, argv);
+    const QDir out(argc > 1 ? QString::fromLocal8Bit(argv[1]) : QStringLiteral("docs/images"));
+    QDir().mkpath(out.path());
+
+    MainWindow window;
+    window.resize(1280, 760);
+    QString error;
+    if (!window.openScene(defaultScenePath(), &error)) {
+        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
+        return 1;
+    }
+    window.show();
+    settle(2500);
+    bool ok = save(window, out, "app.png");
+
+    // A typo in the fragment shader: the last good program keeps rendering,
+    // the error sits on its line.
+    window.shaderDock()->raise();
+    ShaderEditor *fragment = window.shaderDock()->editor(ShaderStage::Fragment);
+    QByteArray code = fragment->code();
+    code.replace("vec3 V = normalize(-positionCam);", "vec3 V = normalise(-positionCam);");
+    fragment->setCode(code);
+    window.liveShaders()->buildNow();
+    settle(2500);
+    const int errorLine = int(code.left(code.indexOf("normalise(")).count('\n'));
+    fragment->setFirstVisibleLine(std::max(0, errorLine - 8));
+    settle(300);
+    ok = save(window, out, "shader-error.png") && ok;
+
+    window.editDocks()->lightsDock()->raise();
+    settle(800);
+    ok = save(window, out, "lights.png") && ok;
+    return ok ? 0 : 1;
+}

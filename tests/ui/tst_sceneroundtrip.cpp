@@ -1,0 +1,233 @@
+// Save then open gives an identical render: a scene saved with an edited
+// shader and an orbited camera reopens with the same picture and the edited
+// shader in the dock; a scene naming a missing shader opens with the shipped
+// ones and an error; the window layout round-trips through QSettings.
+
+#include "core/SceneJson.h"
+#include "render/GlFormat.h"
+#include "ui/LiveShaderController.h"
+#include "ui/MainWindow.h"
+#include "ui/ShaderDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/SceneDock.h"
+#include "ui/ShaderFileSet.h"
+#include "ui/UniformsDock.h"
+#include "ui/Viewport.h"
+
+#include <QAction>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <memory>
+
+using namespace phonglab;
+
+namespace {
+
+constexpr int kBuildTimeoutMs = 10000;
+
+QString sourcePath(const QString &relative)
+{
+    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
+}
+
+QByteArray readFile(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TestSceneRoundTrip : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void cleanupTestCase();
+
+    void saveThenOpenGivesIdenticalRender();
+    void missingShaderFallsBackToShipped();
+    void windowStateRoundTrips();
+
+private:
+    void openWindow();
+    ShaderDock *dock() const { return m_window->shaderDock(); }
+    ShaderEditor *fragmentEditor() const { return dock()->editor(ShaderStage::Fragment); }
+    LiveShaderController *live() const { return m_window->liveShaders(); }
+    Viewport *viewport() const { return m_window->viewport(); }
+    QImage frame() const { return viewport()->grabFramebuffer(); }
+    bool waitForApplied();
+    void drag(QPoint by);
+
+    std::unique_ptr<QTemporaryDir> m_recoveryDir;
+    std::unique_ptr<MainWindow> m_window;
+    QTemporaryDir m_cacheDir;
+    QTemporaryDir m_sceneDir;
+};
+
+void TestSceneRoundTrip::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
+    qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    QVERIFY(m_sceneDir.isValid());
+    QDir(ShaderFileSet::userFolder()).removeRecursively(); // user copies from earlier runs
+}
+
+void TestSceneRoundTrip::init()
+{
+    m_recoveryDir = std::make_unique<QTemporaryDir>();
+    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
+    qputenv("PHONGLAB_RECOVERY_ANSWER", "discard");
+}
+
+void TestSceneRoundTrip::cleanup()
+{
+    m_window.reset();
+}
+
+void TestSceneRoundTrip::cleanupTestCase()
+{
+    QDir(ShaderFileSet::userFolder()).removeRecursively();
+}
+
+void TestSceneRoundTrip::openWindow()
+{
+    m_window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
+    m_window->resize(900, 600);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    QVERIFY(viewport()->isRenderReady());
+}
+
+bool TestSceneRoundTrip::waitForApplied()
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < kBuildTimeoutMs) {
+        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
+            return true;
+        QTest::qWait(10);
+    }
+    return false;
+}
+
+void TestSceneRoundTrip::drag(QPoint by)
+{
+    const QPoint start = viewport()->rect().center();
+    QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, start);
+    for (int step = 1; step <= 4; ++step)
+        QTest::mouseMove(viewport(), start + by * step / 4);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, start + by);
+}
+
+void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
+{
+    openWindow();
+    // An edit to the fragment shader, typed as a user would.
+    ShaderEditor *editor = fragmentEditor();
+    QVERIFY(editor->findFirst(QStringLiteral("clamp(I"), false, true, false, false, true, 0, 0));
+    int lineFrom = 0, indexFrom = 0, lineTo = 0, indexTo = 0;
+    editor->getSelection(&lineFrom, &indexFrom, &lineTo, &indexTo);
+    editor->setCursorPosition(lineTo, indexTo);
+    editor->setFocus();
+    QTest::keyClicks(editor, QStringLiteral(" * 0.5"));
+    QVERIFY(waitForApplied());
+    const QString edited = editor->text();
+    QVERIFY(edited.contains(QStringLiteral("clamp(I * 0.5")));
+    // And to the camera.
+    drag({80, 40});
+    QTest::qWait(50);
+    const QImage before = frame();
+
+    const QString scenePath = m_sceneDir.filePath(QStringLiteral("saved.json"));
+    QString error;
+    QVERIFY2(m_window->saveScene(scenePath, &error), qPrintable(error));
+    QVERIFY(!dock()->hasUnsavedChanges()); // the shader buffer was saved with the scene
+    const QString fragmentFile = dock()->filePath(ShaderStage::Fragment);
+    QCOMPARE(readFile(fragmentFile), edited.toUtf8());
+    const SceneLoadResult written = loadSceneFile(scenePath);
+    QVERIFY2(written.ok(), qPrintable(written.error));
+    QCOMPARE(written.scene->resolveShaderPath(written.scene->fragmentShader),
+             QFileInfo(fragmentFile).absoluteFilePath());
+    QVERIFY(written.scene->vertexShader.isEmpty()); // still the shipped one: not written
+
+    // Another scene, and the shipped shaders back in the dock.
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error), qPrintable(error));
+    live()->applyPreset(ShadingMethod::Phong);
+    QVERIFY(waitForApplied());
+    QVERIFY(!fragmentEditor()->text().contains(QStringLiteral("clamp(I * 0.5")));
+    QVERIFY(frame() != before);
+
+    QVERIFY2(m_window->openScene(scenePath, &error), qPrintable(error));
+    QVERIFY(m_window->lastShaderError().isEmpty());
+    QCOMPARE(fragmentEditor()->text(), edited);
+    QCOMPARE(QFileInfo(dock()->filePath(ShaderStage::Fragment)).absoluteFilePath(),
+             QFileInfo(fragmentFile).absoluteFilePath());
+    QVERIFY(waitForApplied());
+    QTest::qWait(50);
+    const QImage after = frame();
+    QCOMPARE(after.size(), before.size());
+    QVERIFY2(after == before, "the reopened scene renders differently");
+}
+
+void TestSceneRoundTrip::missingShaderFallsBackToShipped()
+{
+    openWindow();
+    const QByteArray shipped = fragmentEditor()->text().toUtf8();
+    const QImage shippedFrame = frame();
+    const QString scenePath = m_sceneDir.filePath(QStringLiteral("missing.json"));
+    {
+        QFile file(scenePath);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"mesh": "builtin:sphere", "shading": "phong",
+                      "shaders": {"fragment": "nowhere/gone.frag"}})");
+    }
+    QString error;
+    QVERIFY2(m_window->openScene(scenePath, &error), qPrintable(error));
+    QVERIFY2(m_window->lastShaderError().contains(QStringLiteral("shaders.fragment")),
+             qPrintable(m_window->lastShaderError()));
+    QVERIFY(m_window->lastShaderError().contains(QStringLiteral("gone.frag")));
+    QCOMPARE(fragmentEditor()->text().toUtf8(), shipped);
+    QVERIFY(dock()->files()->isShipped(dock()->filePath(ShaderStage::Fragment)));
+    QVERIFY(waitForApplied());
+    QVERIFY(!frame().isNull());
+    Q_UNUSED(shippedFrame);
+}
+
+void TestSceneRoundTrip::windowStateRoundTrips()
+{
+    QSettings().remove(QStringLiteral("window"));
+    openWindow();
+    QVERIFY(!m_window->restoreWindowSettings()); // nothing stored yet
+    QVERIFY(m_window->uniformsDock()->toggleViewAction()->isChecked());
+    m_window->uniformsDock()->hide();
+    QVERIFY(m_window->shaderDock()->toggleViewAction()->isChecked());
+    m_window->saveWindowSettings();
+    const bool sceneDockShown = m_window->sceneDock()->toggleViewAction()->isChecked();
+    m_window.reset();
+
+    MainWindow restored;
+    QVERIFY(restored.restoreWindowSettings());
+    restored.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&restored));
+    QVERIFY(!restored.uniformsDock()->toggleViewAction()->isChecked());
+    QVERIFY(restored.shaderDock()->toggleViewAction()->isChecked());
+    QCOMPARE(restored.sceneDock()->toggleViewAction()->isChecked(), sceneDockShown);
+    QSettings().remove(QStringLiteral("window"));
+}
+
+QTEST_MAIN(TestSceneRoundTrip)
+#include "tst_sceneroundtrip.moc"
