@@ -134,13 +134,27 @@ bool writePng(const QImage &image, const QString &path, QString *error)
     return true;
 }
 
-CompileResult buildProgram(Renderer &renderer, const RenderArgs &args, ShadingMethod shading, QString *error)
+// Each stage, first found: --vertex/--fragment, the scene's "shaders" (unless
+// --shading chose a method), the shipped file of the shading method.
+QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene &scene, bool methodChosen,
+                  const QString &shipped)
 {
-    if (args.vertexPath.isEmpty() && args.fragmentPath.isEmpty())
-        return renderer.loadShading(shading);
+    if (!fromArgs.isEmpty())
+        return fromArgs;
+    if (!fromScene.isEmpty() && !methodChosen)
+        return scene.resolveShaderPath(fromScene);
+    return shipped;
+}
+
+CompileResult buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene, QString *error)
+{
+    const bool methodChosen = args.shading.has_value();
+    const ShadingMethod shading = args.shading.value_or(scene.shading);
     const QString name = shadingName(shading);
-    const QString vsPath = args.vertexPath.isEmpty() ? shaderPath(name + QStringLiteral(".vert")) : args.vertexPath;
-    const QString fsPath = args.fragmentPath.isEmpty() ? shaderPath(name + QStringLiteral(".frag")) : args.fragmentPath;
+    const QString vsPath = stagePath(args.vertexPath, scene.vertexShader, scene, methodChosen,
+                                     shaderPath(name + QStringLiteral(".vert")));
+    const QString fsPath = stagePath(args.fragmentPath, scene.fragmentShader, scene, methodChosen,
+                                     shaderPath(name + QStringLiteral(".frag")));
     const ShaderSource vs = ShaderSource::fromFile(vsPath, error);
     const ShaderSource fs = ShaderSource::fromFile(fsPath, error);
     if (!error->isEmpty())
@@ -171,8 +185,7 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(error);
         return kExitFailure;
     }
-    const ShadingMethod shading = args.shading.value_or(loaded.scene->shading);
-    const CompileResult program = buildProgram(renderer, args, shading, &error);
+    const CompileResult program = buildProgram(renderer, args, *loaded.scene, &error);
     if (!error.isEmpty()) {
         printError(error);
         return kExitFailure;

@@ -31,6 +31,7 @@ private slots:
     void badInputFails_data();
     void badInputFails();
     void compileErrorPointsAtUserLine();
+    void sceneShadersAreUsed();
 
 private:
     QTemporaryDir m_dir;
@@ -146,6 +147,36 @@ void TestCliRender::compileErrorPointsAtUserLine()
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
     QVERIFY(!QFile::exists(out));
+}
+
+void TestCliRender::sceneShadersAreUsed()
+{
+    // A scene naming its own fragment shader (relative to the scene file)
+    // renders with it; --shading picks the shipped method instead.
+    QFile shipped(QStringLiteral(PHONGLAB_SOURCE_DIR "/shaders/phong.frag"));
+    QVERIFY(shipped.open(QIODevice::ReadOnly));
+    QByteArray swapped = shipped.readAll();
+    QVERIFY(swapped.contains("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);"));
+    swapped.replace("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);", "fragColor = vec4(clamp(I, 0.0, 1.0).bgr, 1.0);");
+    QFile frag(m_dir.filePath(QStringLiteral("swap.frag")));
+    QVERIFY(frag.open(QIODevice::WriteOnly) && frag.write(swapped) == swapped.size());
+    frag.close();
+    QFile scene(m_dir.filePath(QStringLiteral("own-shader.json")));
+    QVERIFY(scene.open(QIODevice::WriteOnly));
+    scene.write(R"({"mesh": "builtin:sphere", "material": {"kd": [0.9, 0.1, 0.1]},
+                    "lights": [{"position": [3, 3, 4]}], "shaders": {"fragment": "swap.frag"}})");
+    scene.close();
+
+    const QString own = m_dir.filePath(QStringLiteral("own.png"));
+    const QString method = m_dir.filePath(QStringLiteral("method.png"));
+    QCOMPARE(runPhonglab({QStringLiteral("render"), scene.fileName(), QStringLiteral("-o"), own, QStringLiteral("--size"),
+                          QStringLiteral("64x64")}).exitCode, 0);
+    QCOMPARE(runPhonglab({QStringLiteral("render"), scene.fileName(), QStringLiteral("-o"), method, QStringLiteral("--size"),
+                          QStringLiteral("64x64"), QStringLiteral("--shading"), QStringLiteral("phong")}).exitCode, 0);
+    const QColor a = QImage(own).pixelColor(32, 32), b = QImage(method).pixelColor(32, 32);
+    QVERIFY2(b.red() > b.blue(), "the shipped Phong shader shows the red material");
+    QCOMPARE(a.red(), b.blue()); // the scene's shader swapped the channels
+    QCOMPARE(a.blue(), b.red());
 }
 
 QTEST_GUILESS_MAIN(TestCliRender)
