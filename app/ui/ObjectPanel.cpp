@@ -1,5 +1,7 @@
 #include "ObjectPanel.h"
 
+#include "ObjectChoice.h"
+
 #include "Vec3Field.h"
 
 #include <QComboBox>
@@ -59,12 +61,8 @@ void ObjectPanel::bind(QUndoStack *stack, SceneAccess access)
 void ObjectPanel::refresh(const Scene &scene)
 {
     m_scene = scene;
-    const int keep = selectedObject();
     m_showing = true;
-    m_objects->clear();
-    for (int i = 0; i < int(scene.objects.size()); ++i)
-        m_objects->addItem(tr("%1: %2").arg(i + 1).arg(QFileInfo(scene.objects[i].mesh).fileName()));
-    m_objects->setCurrentIndex(keep >= 0 && keep < m_objects->count() ? keep : 0);
+    fillObjectChoice(m_objects, scene);
     m_showing = false;
     showSelected();
 }
