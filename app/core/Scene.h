@@ -7,6 +7,7 @@
 #include "mesh/NormalOptions.h"
 
 #include <QString>
+#include <map>
 #include <vector>
 
 namespace phonglab {
@@ -35,6 +36,11 @@ struct Scene {
     // resolve with resolveShaderPath); empty = the shipped file.
     QString vertexShader;
     QString fragmentShader;
+
+    // Values of the shader's own uniforms (those neither the renderer nor
+    // the scene's material/lights set), by name as the program knows them
+    // ("gain", "tint[1]"); applied to the program once it declares them.
+    std::map<QString, std::vector<double>> uniforms;
 
     // Folder the scene was loaded from; relative mesh paths resolve against it.
     // Not part of the scene's content, so not compared.

@@ -407,7 +407,8 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "camera"_L1,
-                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1});
+                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1,
+                     "uniforms"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readObjects(root, scene.objects)
@@ -416,7 +417,8 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && readLights(root.value("lights"_L1), QStringLiteral("lights"), scene.lights)
         && readShading(root.value("shading"_L1), QStringLiteral("shading"), scene.shading)
         && readColor(root.value("background"_L1), QStringLiteral("background"), scene.background)
-        && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene);
+        && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene)
+        && scenejson::readUserUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms, &m_error);
     if (ok)
         result.scene = std::move(scene);
     else

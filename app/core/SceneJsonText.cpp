@@ -1,5 +1,7 @@
 #include "SceneJsonText.h"
 
+#include <QJsonArray>
+
 #include <QJsonObject>
 #include <QRegularExpression>
 
@@ -185,6 +187,78 @@ QJsonValue normalOptionsJson(const NormalOptions &options)
     QJsonObject object;
     object.insert(QStringLiteral("method"), normalMethodName(options.method));
     object.insert(QStringLiteral("crease_deg"), *options.creaseAngleDeg);
+    return object;
+}
+
+namespace {
+
+bool readUniformNumber(const QJsonValue &v, const QString &where, double &out, QString *error)
+{
+    if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble())) {
+        *error = where + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v));
+        return false;
+    }
+    out = v.toDouble();
+    return true;
+}
+
+} // namespace
+
+bool readUserUniforms(const QJsonValue &value, const QString &path,
+                      std::map<QString, std::vector<double>> &out, QString *error)
+{
+    if (value.isUndefined())
+        return true;
+    if (!value.isObject()) {
+        *error = path + QStringLiteral(": expected an object of name: value (got %1)").arg(describeType(value));
+        return false;
+    }
+    const QJsonObject object = value.toObject();
+    std::map<QString, std::vector<double>> read;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const QString where = path + QLatin1Char('.') + it.key();
+        if (it.key().trimmed().isEmpty()) {
+            *error = path + QStringLiteral(": a uniform name must not be empty");
+            return false;
+        }
+        std::vector<double> values;
+        if (it.value().isArray()) {
+            const QJsonArray array = it.value().toArray();
+            if (array.isEmpty() || array.size() > 16) {
+                *error = where + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size());
+                return false;
+            }
+            for (qsizetype i = 0; i < array.size(); ++i) {
+                double v = 0;
+                if (!readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i), v, error))
+                    return false;
+                values.push_back(v);
+            }
+        } else {
+            double v = 0;
+            if (!readUniformNumber(it.value(), where, v, error))
+                return false;
+            values.push_back(v);
+        }
+        read[it.key()] = std::move(values);
+    }
+    out = std::move(read);
+    return true;
+}
+
+QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms)
+{
+    QJsonObject object;
+    for (const auto &[name, values] : uniforms) {
+        if (values.size() == 1) {
+            object.insert(name, values.front());
+            continue;
+        }
+        QJsonArray array;
+        for (double v : values)
+            array.append(v);
+        object.insert(name, array);
+    }
     return object;
 }
 

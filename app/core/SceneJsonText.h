@@ -3,7 +3,9 @@
 #include <QJsonDocument>
 #include <QJsonValue>
 #include <QString>
+#include <map>
 #include <optional>
+#include <vector>
 
 #include "mesh/NormalOptions.h"
 
@@ -32,5 +34,12 @@ QString describeType(const QJsonValue &value);
 // returns false with *error = "<path>: <reason>".
 bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions &out, QString *error);
 QJsonValue normalOptionsJson(const NormalOptions &options);
+
+// The "uniforms" field: {"name": number | [numbers (1..16)], ...}, values of
+// the shader's own uniforms. On failure returns false with *error =
+// "<path>.<name>: <reason>".
+bool readUserUniforms(const QJsonValue &value, const QString &path,
+                      std::map<QString, std::vector<double>> &out, QString *error);
+QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms);
 
 } // namespace phonglab::scenejson

@@ -101,6 +101,8 @@ QByteArray sceneToJson(const Scene &scene)
     root.insert(QStringLiteral("lights"), lights);
     root.insert(QStringLiteral("shading"), shadingName(scene.shading));
     root.insert(QStringLiteral("background"), vec3Json(scene.background));
+    if (!scene.uniforms.empty())
+        root.insert(QStringLiteral("uniforms"), scenejson::userUniformsJson(scene.uniforms));
     if (!scene.vertexShader.isEmpty() || !scene.fragmentShader.isEmpty()) {
         QJsonObject shaders;
         if (!scene.vertexShader.isEmpty())

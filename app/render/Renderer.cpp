@@ -5,6 +5,7 @@
 #include "mesh/BuiltinMeshes.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phonglab {
 
@@ -98,6 +99,8 @@ bool Renderer::setScene(const Scene &scene, SceneMeshes &&loaded, QString *error
     m_meshes = std::move(meshes);
     m_meshInfo = std::move(info);
     m_scene = scene;
+    m_pendingUniforms = scene.uniforms;
+    m_pendingTriedProgram = 0;
     return true;
 }
 
@@ -132,6 +135,34 @@ void Renderer::adoptProgram(GLuint program)
     m_program.restore(kept);
 }
 
+// Each pending value is written once, into the first program that declares
+// it with as many components; from then on the program keeps it and
+// rebuilds carry it (ShaderProgram::snapshot/restore).
+void Renderer::applySceneUniforms()
+{
+    if (m_pendingUniforms.empty() || m_program.id() == m_pendingTriedProgram)
+        return;
+    m_pendingTriedProgram = m_program.id();
+    const UniformSnapshot active = m_program.snapshot();
+    UniformSnapshot values;
+    for (auto it = m_pendingUniforms.begin(); it != m_pendingUniforms.end();) {
+        const UniformValue *current = active.find(it->first.toUtf8());
+        if (!current || current->components != int(it->second.size())) {
+            ++it;
+            continue;
+        }
+        UniformValue v = *current;
+        for (int i = 0; i < v.components; ++i) {
+            v.floats[i] = GLfloat(it->second[i]);
+            v.ints[i] = GLint(std::lround(it->second[i]));
+            v.uints[i] = GLuint(std::max(0L, std::lround(it->second[i])));
+        }
+        values.values.push_back(v);
+        it = m_pendingUniforms.erase(it);
+    }
+    m_program.restore(values);
+}
+
 void Renderer::render(const QSize &pixelSize)
 {
     const glm::dvec3 bg = m_scene.background;
@@ -142,6 +173,7 @@ void Renderer::render(const QSize &pixelSize)
     m_trianglesDrawn = 0;
     if (!m_program.isValid() || pixelSize.isEmpty())
         return;
+    applySceneUniforms();
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QOpenGLExtraFunctions>
 #include <QSize>
+#include <map>
 #include <memory>
 
 namespace phonglab {
@@ -72,6 +73,7 @@ public:
 private:
     void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection);
     void uploadLights(const glm::dmat4 &view);
+    void applySceneUniforms();
     void drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection);
 
     bool m_initialized = false;
@@ -83,6 +85,10 @@ private:
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
     QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
+    // The scene's values for the shader's own uniforms, until a program that
+    // declares them is in place (a scene may open before its shaders build).
+    std::map<QString, std::vector<double>> m_pendingUniforms;
+    GLuint m_pendingTriedProgram = 0;
 };
 
 } // namespace phonglab

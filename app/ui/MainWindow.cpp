@@ -1,5 +1,9 @@
 #include "MainWindow.h"
 
+#include "render/UniformSnapshot.h"
+
+#include "core/UniformOwner.h"
+
 #include "FileTypes.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
@@ -282,12 +286,58 @@ bool MainWindow::saveScene(const QString &path, QString *error)
         return false;
     Scene scene = rebasedOnto(m_viewport->currentScene(), path);
     addShaderFiles(scene, path);
+    scene.uniforms = userUniformValues();
     if (!saveSceneFile(scene, path, error))
         return false;
     setScenePath(path);
     m_recentFiles->add(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
     return true;
+}
+
+namespace {
+
+// Numbers a scene file can hold: scalars, vectors and matrices of float,
+// int, uint and bool (not samplers, whose values are texture units).
+bool isPlainNumberType(GLenum type)
+{
+    switch (type) {
+    case GL_FLOAT: case GL_FLOAT_VEC2: case GL_FLOAT_VEC3: case GL_FLOAT_VEC4:
+    case GL_INT: case GL_INT_VEC2: case GL_INT_VEC3: case GL_INT_VEC4:
+    case GL_UNSIGNED_INT: case GL_UNSIGNED_INT_VEC2: case GL_UNSIGNED_INT_VEC3: case GL_UNSIGNED_INT_VEC4:
+    case GL_BOOL: case GL_BOOL_VEC2: case GL_BOOL_VEC3: case GL_BOOL_VEC4:
+    case GL_FLOAT_MAT2: case GL_FLOAT_MAT3: case GL_FLOAT_MAT4:
+        return true;
+    default:
+        return false;
+    }
+}
+
+} // namespace
+
+// The running program's values for the uniforms only the user sets (the
+// Uniforms dock's editable rows), so a saved scene reopens with them.
+std::map<QString, std::vector<double>> MainWindow::userUniformValues()
+{
+    std::map<QString, std::vector<double>> values;
+    if (!m_viewport->isRenderReady())
+        return values;
+    m_viewport->endLoan();
+    m_viewport->makeCurrent();
+    const UniformSnapshot snapshot = m_viewport->renderer().program().snapshot();
+    m_viewport->doneCurrent();
+    for (const UniformValue &v : snapshot.values) {
+        const QString name = QString::fromUtf8(v.name);
+        if (!isPlainNumberType(v.type) || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)
+            continue;
+        std::vector<double> numbers;
+        for (int i = 0; i < v.components; ++i)
+            numbers.push_back(v.kind == UniformValue::Kind::Float ? double(v.floats[i])
+                              : v.kind == UniformValue::Kind::Int ? double(v.ints[i])
+                                                                   : double(v.uints[i]));
+        values[name] = std::move(numbers);
+    }
+    return values;
 }
 
 // A scene names its shader files, so their unsaved edits are saved with it

@@ -3,6 +3,9 @@
 
 #include <QMainWindow>
 
+#include <map>
+#include <vector>
+
 class QAction;
 class QLabel;
 
@@ -101,6 +104,7 @@ private:
     void createStatusBar();
     void connectLoading();
     bool startSceneLoad(const QString &path, QString *error);
+    std::map<QString, std::vector<double>> userUniformValues();
     bool saveShaderBuffers(QString *error);
     void addShaderFiles(Scene &scene, const QString &sceneFilePath) const;
     void openSceneShaders(const Scene &scene);

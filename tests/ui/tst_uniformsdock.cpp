@@ -26,6 +26,8 @@
 #include <QCheckBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+
+#include "core/SceneJson.h"
 #include <QTest>
 #include <QToolButton>
 #include <memory>
@@ -55,6 +57,7 @@ private slots:
 
     void drivenUniformsAreReadOnly();
     void userUniformIsEditedAndKept();
+    void userUniformIsSavedWithTheScene();
     void badInputIsRefused();
     void optimisedAwayUniformIsFlagged();
     void colourIntAndBoolRows();
@@ -208,6 +211,32 @@ void TestUniformsDock::userUniformIsEditedAndKept()
     QCOMPARE(gainRow()->value(), 0.5f); // the dock shows the carried value
     QCOMPARE(programValue("gain"), 0.5f);
     QCOMPARE(frame(), withGain);
+}
+
+void TestUniformsDock::userUniformIsSavedWithTheScene()
+{
+    openWindow();
+    addGain();
+    typeInto(gainRow()->field(), QStringLiteral("0.5"));
+    QCOMPARE(programValue("gain"), 0.5f);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("with-gain.json"));
+    QString error;
+    QVERIFY2(m_window->saveScene(path, &error), qPrintable(error));
+    const SceneLoadResult saved = loadSceneFile(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error));
+    QCOMPARE(saved.scene->uniforms.size(), std::size_t(1)); // only the user's: not kd, not the matrices
+    QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
+
+    // Away, change it, and back: the reopened scene sets the saved value.
+    QVERIFY2(m_window->openScene(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/torus.json"), &error),
+             qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
+    typeInto(gainRow()->field(), QStringLiteral("1.5"));
+    QCOMPARE(programValue("gain"), 1.5f);
+    QVERIFY2(m_window->openScene(path, &error), qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
 }
 
 void TestUniformsDock::badInputIsRefused()

@@ -1,0 +1,76 @@
+// The scene's "uniforms": values of the shader's own uniforms.
+#include "core/SceneJson.h"
+
+#include <QTest>
+
+using namespace phonglab;
+
+namespace {
+QByteArray sceneWith(const QByteArray &uniforms)
+{
+    return R"({"mesh": "builtin:sphere", "uniforms": )" + uniforms + "}";
+}
+} // namespace
+
+class TestSceneUniforms : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void absentMeansNone();
+    void readsNumbersAndVectors();
+    void roundTrips();
+    void refusesBadValues_data();
+    void refusesBadValues();
+};
+
+void TestSceneUniforms::absentMeansNone()
+{
+    const SceneLoadResult r = parseScene(R"({"mesh": "builtin:sphere"})");
+    QVERIFY(r.ok());
+    QVERIFY(r.scene->uniforms.empty());
+    QVERIFY(!sceneToJson(*r.scene).contains("\"uniforms\""));
+}
+
+void TestSceneUniforms::readsNumbersAndVectors()
+{
+    const SceneLoadResult r = parseScene(sceneWith(R"({"gain": 0.5, "tint": [1, 0.25, 0], "lights[2]": 3})"));
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    QCOMPARE(r.scene->uniforms.size(), std::size_t(3));
+    QCOMPARE(r.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
+    QCOMPARE(r.scene->uniforms.at(QStringLiteral("tint")), (std::vector<double>{1.0, 0.25, 0.0}));
+    QVERIFY(r.warnings.isEmpty());
+}
+
+void TestSceneUniforms::roundTrips()
+{
+    const SceneLoadResult first = parseScene(sceneWith(R"({"gain": 0.5, "tint": [1, 0.25, 0]})"));
+    QVERIFY(first.ok());
+    const SceneLoadResult again = parseScene(sceneToJson(*first.scene));
+    QVERIFY2(again.ok(), qPrintable(again.error));
+    QVERIFY(*again.scene == *first.scene);
+}
+
+void TestSceneUniforms::refusesBadValues_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("prefix");
+    QTest::newRow("not an object") << sceneWith("[1, 2]") << "uniforms:";
+    QTest::newRow("string value") << sceneWith(R"({"gain": "high"})") << "uniforms.gain:";
+    QTest::newRow("empty array") << sceneWith(R"({"tint": []})") << "uniforms.tint:";
+    QTest::newRow("17 numbers") << sceneWith(R"({"m": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17]})") << "uniforms.m:";
+    QTest::newRow("overflow") << sceneWith(R"({"gain": 1e999})") << "uniforms.gain:";
+    QTest::newRow("element not a number") << sceneWith(R"({"tint": [1, "x", 0]})") << "uniforms.tint[1]:";
+}
+
+void TestSceneUniforms::refusesBadValues()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, prefix);
+    const SceneLoadResult r = parseScene(json);
+    QVERIFY(!r.ok());
+    QVERIFY2(r.error.startsWith(prefix), qPrintable(r.error));
+}
+
+QTEST_APPLESS_MAIN(TestSceneUniforms)
+#include "tst_sceneuniforms.moc"
