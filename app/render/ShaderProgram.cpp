@@ -1,6 +1,7 @@
 #include "ShaderProgram.h"
 
 #include "ProgramBuilder.h"
+#include "UniformIntrospection.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <algorithm>
@@ -52,40 +53,7 @@ std::optional<UniformLayout> layoutOf(GLenum type)
     }
 }
 
-struct ActiveUniform {
-    QByteArray name; // without a trailing "[0]"
-    GLenum type = 0;
-    GLint size = 0;  // array length (1 for a non-array)
-    bool isArray = false;
-};
-
-// The program's default-block uniforms; block members and built-ins
-// (gl_*) have no value of their own to keep.
-std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions *gl, GLuint program)
-{
-    std::vector<ActiveUniform> list;
-    GLint count = 0, maxLength = 0;
-    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
-    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
-    QByteArray buffer(std::max(maxLength, 1), '\0');
-    for (GLuint i = 0; i < GLuint(count); ++i) {
-        GLint block = -1;
-        gl->glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
-        ActiveUniform u;
-        GLsizei length = 0;
-        gl->glGetActiveUniform(program, i, GLsizei(buffer.size()), &length, &u.size, &u.type, buffer.data());
-        u.name = QByteArray(buffer.constData(), length);
-        if (block != -1 || u.name.startsWith("gl_"))
-            continue;
-        u.isArray = u.name.endsWith("[0]");
-        if (u.isArray)
-            u.name.chop(3);
-        list.push_back(u);
-    }
-    return list;
-}
-
-QByteArray elementName(const ActiveUniform &u, int element)
+QByteArray elementName(const ActiveUniformInfo &u, int element)
 {
     return u.isArray ? u.name + '[' + QByteArray::number(element) + ']' : u.name;
 }
@@ -132,7 +100,7 @@ UniformSnapshot ShaderProgram::snapshot()
     if (!m_program)
         return snapshot;
     ensureInitialized();
-    for (const ActiveUniform &u : activeUniforms(this, m_program)) {
+    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program)) {
         const auto layout = layoutOf(u.type);
         if (!layout)
             continue;
@@ -193,7 +161,7 @@ void ShaderProgram::restore(const UniformSnapshot &snapshot)
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(m_program);
-    for (const ActiveUniform &u : activeUniforms(this, m_program)) {
+    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program)) {
         for (int element = 0; element < u.size; ++element) {
             const QByteArray name = elementName(u, element);
             const UniformValue *value = snapshot.find(name);
