@@ -171,6 +171,44 @@ ImageComparison compareWithReference(const QImage &rendered, const ReferenceImag
     return errors.result();
 }
 
+BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference,
+                                  const glm::dvec3 &background, int bandPx,
+                                  const std::vector<std::uint8_t> *mask)
+{
+    BandComparison out;
+    if (!sameSize(rendered, reference) || (mask && mask->size() != reference.color.size()))
+        return out;
+    const QImage image = toRgb888(rendered);
+    const std::vector<std::uint8_t> band =
+        dilateSquare(silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
+    const uchar bg[3] = {uchar(encodeChannel(background.r)), uchar(encodeChannel(background.g)),
+                         uchar(encodeChannel(background.b))};
+    ErrorAccumulator errors;
+    for (int y = 0; y < reference.height; ++y) {
+        const uchar *row = image.constScanLine(y);
+        for (int x = 0; x < reference.width; ++x) {
+            const std::size_t i = reference.index(x, y);
+            if (band[i] || (mask && !(*mask)[i]))
+                continue;
+            const uchar *got = row + 3 * x;
+            const bool renderCovers = got[0] != bg[0] || got[1] != bg[1] || got[2] != bg[2];
+            const bool referenceCovers = reference.coverage[i] != 0;
+            if (!referenceCovers && !renderCovers)
+                continue;
+            if (referenceCovers != renderCovers)
+                ++out.coverageErrors;
+            uchar expected[3];
+            if (referenceCovers)
+                encodeReferencePixel(reference, i, expected);
+            else
+                std::copy(bg, bg + 3, expected);
+            errors.add(got, expected, x, y);
+        }
+    }
+    out.error = errors.result();
+    return out;
+}
+
 ImageComparison compareImages(const QImage &a, const QImage &b)
 {
     if (a.isNull() || b.isNull() || a.size() != b.size())

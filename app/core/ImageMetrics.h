@@ -28,6 +28,19 @@ struct ImageComparison {
 // tessellated mesh covers differently from the analytic surface.
 ImageComparison compareWithReference(const QImage &rendered, const ReferenceImage &reference, int bandPx);
 
+// What the speed-against-accuracy bench measures: every pixel more than
+// bandPx from a silhouette of the reference where either image shows a
+// surface — the reference's covered pixels, and the ones the render covers
+// although the reference shows `background` there (a coarse mesh bulging out
+// of the true outline). With a mask, only pixels where mask[i] != 0.
+struct BandComparison {
+    ImageComparison error;
+    qint64 coverageErrors = 0; // compared pixels covered in one image and not in the other
+};
+BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference,
+                                  const glm::dvec3 &background, int bandPx,
+                                  const std::vector<std::uint8_t> *mask = nullptr);
+
 // Every pixel, R, G and B.
 ImageComparison compareImages(const QImage &a, const QImage &b);
 

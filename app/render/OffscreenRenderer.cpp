@@ -2,6 +2,8 @@
 
 #include "GlFormat.h"
 
+#include <QElapsedTimer>
+#include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
 
 namespace phonglab {
@@ -57,6 +59,18 @@ QImage OffscreenRenderer::renderImage(const QSize &size)
 {
     if (!m_context || size.isEmpty())
         return {};
+    bindTarget(size);
+    m_renderer.render(size);
+    m_context->functions()->glFinish();
+    // Flipped to raster order (row 0 on top). Alpha is 1 everywhere, so the
+    // premultiplied format changes no colour value.
+    QImage image = m_fbo->toImage(true);
+    m_fbo->release();
+    return image.convertToFormat(QImage::Format_RGB888);
+}
+
+void OffscreenRenderer::bindTarget(const QSize &size)
+{
     makeCurrent();
     if (!m_fbo || m_fbo->size() != size) {
         QOpenGLFramebufferObjectFormat format;
@@ -66,13 +80,63 @@ QImage OffscreenRenderer::renderImage(const QSize &size)
         m_fbo = std::make_unique<QOpenGLFramebufferObject>(size, format);
     }
     m_fbo->bind();
-    m_renderer.render(size);
-    m_context->functions()->glFinish();
-    // Flipped to raster order (row 0 on top). Alpha is 1 everywhere, so the
-    // premultiplied format changes no colour value.
-    QImage image = m_fbo->toImage(true);
+}
+
+FrameTiming OffscreenRenderer::timeFrames(const QSize &size, int warmup, int frames)
+{
+    FrameTiming timing;
+    if (!m_context || size.isEmpty() || frames <= 0)
+        return timing;
+    bindTarget(size);
+    QOpenGLFunctions *gl = m_context->functions();
+    for (int i = 0; i < warmup; ++i) {
+        m_renderer.render(size);
+        gl->glFinish();
+    }
+    std::vector<double> wall, submit;
+    wall.reserve(std::size_t(frames));
+    submit.reserve(std::size_t(frames));
+    for (int i = 0; i < frames; ++i) {
+        QElapsedTimer timer;
+        timer.start();
+        m_renderer.render(size);
+        submit.push_back(timer.nsecsElapsed() / 1e6);
+        gl->glFinish();
+        wall.push_back(timer.nsecsElapsed() / 1e6);
+    }
+    timing.wallMedianMs = medianOf(wall);
+    timing.wallP90Ms = percentileOf(wall, 0.9);
+    timing.cpuSubmitMedianMs = medianOf(submit);
+    timing.frames = frames;
+    if (timerQueryTrusted(m_rendererName))
+        timing.gpuMedianMs = medianOf(timerQueryFrames(size, frames));
     m_fbo->release();
-    return image.convertToFormat(QImage::Format_RGB888);
+    return timing;
+}
+
+// GL_TIME_ELAPSED around each frame, a separate pass so the queries do not
+// disturb the wall-time figures. Empty when the driver lacks the entry points.
+std::vector<double> OffscreenRenderer::timerQueryFrames(const QSize &size, int frames)
+{
+    using GetQueryObjectui64v = void (*)(GLuint, GLenum, GLuint64 *);
+    auto getResult = reinterpret_cast<GetQueryObjectui64v>(
+        m_context->getProcAddress("glGetQueryObjectui64v"));
+    QOpenGLExtraFunctions *gl = m_context->extraFunctions();
+    std::vector<double> ms;
+    if (!getResult)
+        return ms;
+    GLuint query = 0;
+    gl->glGenQueries(1, &query);
+    for (int i = 0; i < frames; ++i) {
+        gl->glBeginQuery(GL_TIME_ELAPSED, query);
+        m_renderer.render(size);
+        gl->glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ns = 0;
+        getResult(query, GL_QUERY_RESULT, &ns);
+        ms.push_back(double(ns) / 1e6);
+    }
+    gl->glDeleteQueries(1, &query);
+    return ms;
 }
 
 void OffscreenRenderer::destroy()

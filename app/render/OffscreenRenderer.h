@@ -1,4 +1,5 @@
 #pragma once
+#include "FrameTiming.h"
 #include "Renderer.h"
 
 #include <QImage>
@@ -31,10 +32,16 @@ public:
     // Renders the renderer's current scene and reads it back as RGB888.
     QImage renderImage(const QSize &size);
 
+    // Draws `warmup` frames, then times `frames` more at `size` (see
+    // FrameTiming for what is measured and why).
+    FrameTiming timeFrames(const QSize &size, int warmup, int frames);
+
     QString glRendererName() const { return m_rendererName; }
 
 private:
     void destroy();
+    void bindTarget(const QSize &size);
+    std::vector<double> timerQueryFrames(const QSize &size, int frames);
 
     std::unique_ptr<QOpenGLContext> m_context;
     std::unique_ptr<QOffscreenSurface> m_surface;

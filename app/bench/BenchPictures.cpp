@@ -1,0 +1,34 @@
+#include "BenchPictures.h"
+
+#include "core/ImageMetrics.h"
+
+#include <QPainter>
+
+namespace phonglab {
+
+QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
+                     int bandPx, const QString &caption)
+{
+    const int w = rendered.width(), h = rendered.height();
+    constexpr int kGap = 4;
+    constexpr int kCaption = 26;
+    QImage out(3 * w + 2 * kGap, h + 2 * kCaption, QImage::Format_RGB32);
+    out.fill(QColor(24, 24, 28));
+    QPainter painter(&out);
+    painter.drawImage(0, kCaption, rendered);
+    painter.drawImage(w + kGap, kCaption, reference.toImage(background));
+    painter.drawImage(2 * (w + kGap), kCaption, errorHeatmap(rendered, reference, bandPx));
+    painter.setPen(QColor(235, 235, 235));
+    QFont font = painter.font();
+    font.setPixelSize(14);
+    painter.setFont(font);
+    painter.drawText(QRect(6, 0, out.width() - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft, caption);
+    const QStringList labels{QStringLiteral("GPU"), QStringLiteral("CPU reference (exact)"),
+                             QStringLiteral("error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
+    for (int i = 0; i < 3; ++i)
+        painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption),
+                         Qt::AlignVCenter | Qt::AlignLeft, labels[i]);
+    return out;
+}
+
+} // namespace phonglab

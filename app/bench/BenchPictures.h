@@ -1,0 +1,15 @@
+#pragma once
+#include "core/ReferenceImage.h"
+
+#include <QImage>
+#include <QString>
+
+namespace phonglab {
+
+// render | reference | error heatmap side by side under a caption: the
+// picture that shows where a method or a detail level breaks (see
+// errorHeatmap() for the colours; the silhouette band is dark blue).
+QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
+                     int bandPx, const QString &caption);
+
+} // namespace phonglab
