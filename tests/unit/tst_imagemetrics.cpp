@@ -174,6 +174,56 @@ private slots:
         QVERIFY(errorHeatmap(filled(19, 20, 0), squareReference(), 1).isNull());
     }
 
+    // The bench's comparison also counts pixels the render covers where the
+    // reference shows background (a coarse mesh bulging out of the outline).
+    void outsideBandCountsBothCoverages()
+    {
+        const ReferenceImage ref = squareReference();
+        const glm::dvec3 black(0.0);
+        QImage render = squareRender();
+        BandComparison exact = compareOutsideBand(render, ref, black, 1);
+        QCOMPARE(exact.error.maxError, 0);
+        QCOMPARE(exact.coverageErrors, qint64(0));
+        // Interior of the square minus the 1 px band on both sides of its edge: 6×6.
+        QCOMPARE(exact.error.pixelsCompared, qint64(36));
+
+        // A blob of surface far outside the outline: 2 px, 128 steps off each.
+        render.setPixel(1, 1, qRgb(128, 128, 128));
+        render.setPixel(18, 18, qRgb(128, 128, 128));
+        const BandComparison bulge = compareOutsideBand(render, ref, black, 1);
+        QCOMPARE(bulge.coverageErrors, qint64(2));
+        QCOMPARE(bulge.error.maxError, 128);
+        QCOMPARE(bulge.error.pixelsCompared, qint64(38));
+        // compareWithReference() only looks where the reference has a surface.
+        QCOMPARE(compareWithReference(render, ref, 1).maxError, 0);
+
+        // A hole in the surface is a coverage error too.
+        QImage hole = squareRender();
+        hole.setPixel(10, 10, qRgb(0, 0, 0));
+        const BandComparison holed = compareOutsideBand(hole, ref, black, 1);
+        QCOMPARE(holed.coverageErrors, qint64(1));
+        QCOMPARE(holed.error.maxError, 128);
+    }
+
+    void outsideBandMask()
+    {
+        const ReferenceImage ref = squareReference();
+        QImage render = squareRender();
+        render.setPixel(8, 8, qRgb(140, 128, 128));  // 12 off, inside the mask
+        render.setPixel(11, 11, qRgb(160, 128, 128)); // 32 off, outside it
+        std::vector<std::uint8_t> mask(ref.color.size(), 0);
+        for (int y = 7; y < 10; ++y)
+            for (int x = 7; x < 10; ++x)
+                mask[ref.index(x, y)] = 1;
+        const BandComparison masked = compareOutsideBand(render, ref, glm::dvec3(0.0), 1, &mask);
+        QCOMPARE(masked.error.pixelsCompared, qint64(9));
+        QCOMPARE(masked.error.maxError, 12);
+        QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1).error.maxError, 32);
+        // A mask of the wrong size compares nothing rather than reading past it.
+        std::vector<std::uint8_t> wrong(3, 1);
+        QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1, &wrong).error.pixelsCompared, qint64(0));
+    }
+
     void heatmap()
     {
         QImage rendered = squareRender();
