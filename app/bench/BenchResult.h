@@ -54,5 +54,10 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows);
 // Parses what benchRowsToCsv() wrote (columns found by name, so files with
 // more columns still read). False with a reason naming the line on bad input.
 bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error);
+// The same, with errors naming `sourceName` (e.g. the file's path) where the
+// overload above says "results.csv": "<sourceName> line 7: frame_ms is not a
+// number: 'abc'". *rows is only replaced on success.
+bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error,
+                      const QString &sourceName);
 
 } // namespace phonglab

@@ -1,0 +1,391 @@
+#include "BenchResult.h"
+
+#include <QHash>
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <system_error>
+
+namespace phonglab {
+
+namespace {
+
+// Column indices, in kCsvColumns order.
+enum Column {
+    ColScene,
+    ColMethod,
+    ColDetail,
+    ColTriangles,
+    ColLights,
+    ColSceneLights,
+    ColFrameMs,
+    ColFrameMsP90,
+    ColCpuSubmitMs,
+    ColGpuMs,
+    ColFrames,
+    ColPsnr,
+    ColRmse,
+    ColMaxError,
+    ColSpecPsnr,
+    ColSpecRmse,
+    ColSpecMaxError,
+    ColSpecPixels,
+    ColPixelsCompared,
+    ColCoverageErrors,
+    ColumnCount
+};
+
+const char *const kColumnNames[ColumnCount] = {
+    "scene",        "method",       "detail",         "triangles",   "lights",
+    "scene_lights", "frame_ms",     "frame_ms_p90",   "cpu_submit_ms", "gpu_ms",
+    "frames",       "psnr_db",      "rmse",           "max_error",   "spec_psnr_db",
+    "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors",
+};
+
+// Shortest text that reads back as exactly the same double.
+QString formatDouble(double v)
+{
+    if (std::isnan(v))
+        return QString();
+    if (std::isinf(v))
+        return v > 0 ? QStringLiteral("inf") : QStringLiteral("-inf");
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    if (result.ec != std::errc())
+        return QString::number(v, 'g', 17);
+    return QString::fromLatin1(buffer, int(result.ptr - buffer));
+}
+
+QString quoteField(const QString &field)
+{
+    const bool needsQuotes = field.contains(QLatin1Char(',')) || field.contains(QLatin1Char('"'))
+        || field.contains(QLatin1Char('\n')) || field.contains(QLatin1Char('\r'))
+        || (!field.isEmpty() && (field.front().isSpace() || field.back().isSpace()));
+    if (!needsQuotes)
+        return field;
+    QString quoted = field;
+    quoted.replace(QLatin1Char('"'), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+// One CSV record and the (1-based) line it starts on.
+struct Record {
+    int line = 0;
+    QStringList fields;
+};
+
+// RFC 4180: fields separated by commas, records by \n or \r\n, quoted fields
+// may hold commas, quotes ("") and line breaks. Blank lines are skipped.
+bool splitRecords(const QString &text, std::vector<Record> *records, int *badLine)
+{
+    int line = 1;
+    qsizetype i = 0;
+    const qsizetype n = text.size();
+    while (i < n) {
+        Record record;
+        record.line = line;
+        QString field;
+        bool quoted = false;
+        bool recordDone = false;
+        bool structure = false; // saw a comma or a quote: not a blank line
+        while (i < n && !recordDone) {
+            const QChar c = text.at(i);
+            if (quoted) {
+                if (c == QLatin1Char('"')) {
+                    if (i + 1 < n && text.at(i + 1) == QLatin1Char('"')) {
+                        field += QLatin1Char('"');
+                        i += 2;
+                    } else {
+                        quoted = false;
+                        ++i;
+                    }
+                } else {
+                    if (c == QLatin1Char('\n'))
+                        ++line;
+                    field += c;
+                    ++i;
+                }
+                continue;
+            }
+            if (c == QLatin1Char('"')) {
+                if (!field.isEmpty()) { // a quote inside an unquoted field
+                    *badLine = line;
+                    return false;
+                }
+                quoted = true;
+                structure = true;
+                ++i;
+            } else if (c == QLatin1Char(',')) {
+                record.fields.append(field);
+                field.clear();
+                structure = true;
+                ++i;
+            } else if (c == QLatin1Char('\r') || c == QLatin1Char('\n')) {
+                if (c == QLatin1Char('\r') && i + 1 < n && text.at(i + 1) == QLatin1Char('\n'))
+                    ++i;
+                ++i;
+                ++line;
+                recordDone = true;
+            } else {
+                field += c;
+                ++i;
+            }
+        }
+        if (quoted) { // an opening quote never closed
+            *badLine = record.line;
+            return false;
+        }
+        if (!structure && field.trimmed().isEmpty())
+            continue;
+        record.fields.append(field);
+        records->push_back(std::move(record));
+    }
+    return true;
+}
+
+class FieldReader
+{
+public:
+    FieldReader(const QString &source, int line) : m_source(source), m_line(line) {}
+
+    bool readDouble(const QString &column, const QString &text, double *out, QString *error) const
+    {
+        const QString t = text.trimmed();
+        if (t.isEmpty()) {
+            *out = std::numeric_limits<double>::quiet_NaN();
+            return true;
+        }
+        const QString lower = t.toLower();
+        if (lower == QLatin1String("inf") || lower == QLatin1String("+inf")
+            || lower == QLatin1String("infinity")) {
+            *out = std::numeric_limits<double>::infinity();
+            return true;
+        }
+        if (lower == QLatin1String("-inf") || lower == QLatin1String("-infinity")) {
+            *out = -std::numeric_limits<double>::infinity();
+            return true;
+        }
+        if (lower == QLatin1String("nan")) {
+            *out = std::numeric_limits<double>::quiet_NaN();
+            return true;
+        }
+        const QByteArray bytes = t.toLatin1();
+        const char *begin = bytes.constData();
+        const char *end = begin + bytes.size();
+        if (begin != end && *begin == '+')
+            ++begin;
+        double value = 0;
+        const auto result = std::from_chars(begin, end, value);
+        if (result.ec != std::errc() || result.ptr != end || lower.contains(QLatin1String("inf"))
+            || lower.contains(QLatin1String("nan"))) {
+            fail(column, QStringLiteral("is not a number"), text, error);
+            return false;
+        }
+        *out = value;
+        return true;
+    }
+
+    bool readInt64(const QString &column, const QString &text, qint64 *out, QString *error) const
+    {
+        bool ok = false;
+        const qint64 value = text.trimmed().toLongLong(&ok);
+        if (!ok) {
+            fail(column, QStringLiteral("is not a whole number"), text, error);
+            return false;
+        }
+        *out = value;
+        return true;
+    }
+
+    bool readInt(const QString &column, const QString &text, int *out, QString *error) const
+    {
+        qint64 value = 0;
+        if (!readInt64(column, text, &value, error))
+            return false;
+        if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
+            fail(column, QStringLiteral("is out of range"), text, error);
+            return false;
+        }
+        *out = int(value);
+        return true;
+    }
+
+    bool readBool(const QString &column, const QString &text, bool *out, QString *error) const
+    {
+        const QString t = text.trimmed().toLower();
+        if (t == QLatin1String("1") || t == QLatin1String("true")) {
+            *out = true;
+            return true;
+        }
+        if (t == QLatin1String("0") || t == QLatin1String("false")) {
+            *out = false;
+            return true;
+        }
+        fail(column, QStringLiteral("is not 0 or 1"), text, error);
+        return false;
+    }
+
+    QString where() const { return QStringLiteral("%1 line %2").arg(m_source).arg(m_line); }
+
+private:
+    void fail(const QString &column, const QString &what, const QString &text, QString *error) const
+    {
+        if (error)
+            *error = QStringLiteral("%1: %2 %3: '%4'").arg(where(), column, what, text);
+    }
+
+    QString m_source;
+    int m_line;
+};
+
+} // namespace
+
+QStringList benchCsvColumns()
+{
+    QStringList columns;
+    for (const char *name : kColumnNames)
+        columns.append(QString::fromLatin1(name));
+    return columns;
+}
+
+QString benchRowsToCsv(const std::vector<BenchRow> &rows)
+{
+    QString out = benchCsvColumns().join(QLatin1Char(',')) + QLatin1Char('\n');
+    for (const BenchRow &row : rows) {
+        const QStringList fields = {
+            quoteField(row.scene),
+            quoteField(row.method),
+            formatDouble(row.detail),
+            QString::number(row.triangles),
+            QString::number(row.lights),
+            row.sceneLights ? QStringLiteral("1") : QStringLiteral("0"),
+            formatDouble(row.frameMs),
+            formatDouble(row.frameMsP90),
+            formatDouble(row.cpuSubmitMs),
+            formatDouble(row.gpuMs),
+            QString::number(row.frames),
+            formatDouble(row.psnr),
+            formatDouble(row.rmse),
+            QString::number(row.maxError),
+            formatDouble(row.specularPsnr),
+            formatDouble(row.specularRmse),
+            QString::number(row.specularMaxError),
+            QString::number(row.specularPixels),
+            QString::number(row.pixelsCompared),
+            QString::number(row.coverageErrors),
+        };
+        out += fields.join(QLatin1Char(',')) + QLatin1Char('\n');
+    }
+    return out;
+}
+
+bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error)
+{
+    return benchRowsFromCsv(text, rows, error, QStringLiteral("results.csv"));
+}
+
+bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error,
+                      const QString &sourceName)
+{
+    QString body = text;
+    if (body.startsWith(QChar(0xFEFF)))
+        body.remove(0, 1);
+
+    std::vector<Record> records;
+    int badLine = 0;
+    if (!splitRecords(body, &records, &badLine)) {
+        if (error)
+            *error = QStringLiteral("%1 line %2: unbalanced quotes").arg(sourceName).arg(badLine);
+        return false;
+    }
+    if (records.empty()) {
+        if (error)
+            *error = QStringLiteral("%1: empty file, expected a header line starting with '%2'")
+                         .arg(sourceName, QString::fromLatin1(kColumnNames[0]));
+        return false;
+    }
+
+    // Header: find each known column by name; unknown ones are skipped.
+    const Record &header = records.front();
+    int index[ColumnCount];
+    std::fill(std::begin(index), std::end(index), -1);
+    for (int f = 0; f < header.fields.size(); ++f) {
+        const QString name = header.fields.at(f).trimmed();
+        for (int c = 0; c < ColumnCount; ++c) {
+            if (name == QLatin1String(kColumnNames[c])) {
+                if (index[c] != -1) {
+                    if (error)
+                        *error = QStringLiteral("%1 line %2: column '%3' appears twice")
+                                     .arg(sourceName).arg(header.line).arg(name);
+                    return false;
+                }
+                index[c] = f;
+            }
+        }
+    }
+    QStringList missing;
+    for (int c = 0; c < ColumnCount; ++c)
+        if (index[c] == -1)
+            missing.append(QString::fromLatin1(kColumnNames[c]));
+    if (!missing.isEmpty()) {
+        if (error)
+            *error = QStringLiteral("%1 line %2: missing column%3 %4")
+                         .arg(sourceName)
+                         .arg(header.line)
+                         .arg(missing.size() == 1 ? QString() : QStringLiteral("s"))
+                         .arg(missing.join(QStringLiteral(", ")));
+        return false;
+    }
+
+    std::vector<BenchRow> parsed;
+    parsed.reserve(records.size() - 1);
+    for (size_t r = 1; r < records.size(); ++r) {
+        const Record &record = records[r];
+        const FieldReader reader(sourceName, record.line);
+        if (record.fields.size() != header.fields.size()) {
+            if (error)
+                *error = QStringLiteral("%1: expected %2 fields as in the header, found %3")
+                             .arg(reader.where())
+                             .arg(header.fields.size())
+                             .arg(record.fields.size());
+            return false;
+        }
+        auto field = [&](Column c) { return record.fields.at(index[c]); };
+        auto name = [](Column c) { return QString::fromLatin1(kColumnNames[c]); };
+
+        BenchRow row;
+        row.scene = field(ColScene);
+        row.method = field(ColMethod).trimmed();
+        const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail, error)
+            && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles, error)
+            && reader.readInt(name(ColLights), field(ColLights), &row.lights, error)
+            && reader.readBool(name(ColSceneLights), field(ColSceneLights), &row.sceneLights, error)
+            && reader.readDouble(name(ColFrameMs), field(ColFrameMs), &row.frameMs, error)
+            && reader.readDouble(name(ColFrameMsP90), field(ColFrameMsP90), &row.frameMsP90, error)
+            && reader.readDouble(name(ColCpuSubmitMs), field(ColCpuSubmitMs), &row.cpuSubmitMs, error)
+            && reader.readDouble(name(ColGpuMs), field(ColGpuMs), &row.gpuMs, error)
+            && reader.readInt(name(ColFrames), field(ColFrames), &row.frames, error)
+            && reader.readDouble(name(ColPsnr), field(ColPsnr), &row.psnr, error)
+            && reader.readDouble(name(ColRmse), field(ColRmse), &row.rmse, error)
+            && reader.readInt(name(ColMaxError), field(ColMaxError), &row.maxError, error)
+            && reader.readDouble(name(ColSpecPsnr), field(ColSpecPsnr), &row.specularPsnr, error)
+            && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse, error)
+            && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError, error)
+            && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels, error)
+            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared), &row.pixelsCompared, error)
+            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors), &row.coverageErrors, error);
+        if (!ok)
+            return false;
+        if (row.method.isEmpty()) {
+            if (error)
+                *error = QStringLiteral("%1: method is empty").arg(reader.where());
+            return false;
+        }
+        parsed.push_back(std::move(row));
+    }
+    *rows = std::move(parsed);
+    return true;
+}
+
+} // namespace phonglab

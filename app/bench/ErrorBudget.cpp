@@ -1,0 +1,264 @@
+#include "ErrorBudget.h"
+
+#include <QRegularExpression>
+
+#include <cmath>
+#include <limits>
+
+namespace phonglab {
+
+namespace {
+
+// "13 650": digits grouped by threes with a space, whatever the locale.
+QString groupedNumber(qint64 value)
+{
+    const bool negative = value < 0;
+    QString digits = QString::number(negative ? -value : value);
+    for (qsizetype i = digits.size() - 3; i > 0; i -= 3)
+        digits.insert(i, QLatin1Char(' '));
+    return negative ? QLatin1Char('-') + digits : digits;
+}
+
+QString formatMs(double ms)
+{
+    const double a = std::abs(ms);
+    if (a >= 100)
+        return QString::number(ms, 'f', 0);
+    if (a >= 1)
+        return QString::number(ms, 'f', 1);
+    return QString::number(ms, 'f', 2);
+}
+
+QString formatPercent(double fraction)
+{
+    const double percent = fraction * 100.0;
+    if (std::abs(percent) >= 100)
+        return QString::number(percent, 'f', 0);
+    return QString::number(percent, 'g', 3);
+}
+
+QString formatDb(double db)
+{
+    if (std::isinf(db))
+        return db > 0 ? QStringLiteral("∞") : QStringLiteral("-∞");
+    return QString::number(db, 'f', 1);
+}
+
+// flat < gouraud < blinn-phong < phong < anything else.
+int methodCost(const QString &method)
+{
+    static const char *const order[] = {"flat", "gouraud", "blinn-phong", "phong"};
+    for (int i = 0; i < 4; ++i)
+        if (method == QLatin1String(order[i]))
+            return i;
+    return 4;
+}
+
+QString methodTitle(const QString &method)
+{
+    if (method == QLatin1String("phong"))
+        return QStringLiteral("Phong");
+    if (method == QLatin1String("blinn-phong"))
+        return QStringLiteral("Blinn-Phong");
+    return method;
+}
+
+// "gouraud at detail 25 %" / "gouraud at full detail"
+QString rowLabel(const BenchRow &row)
+{
+    if (row.detail >= 1.0)
+        return QStringLiteral("%1 at full detail").arg(row.method);
+    return QStringLiteral("%1 at detail %2 %").arg(row.method, formatPercent(row.detail));
+}
+
+// "3 412 triangles, 1.9 ms"
+QString rowCost(const BenchRow &row)
+{
+    return QStringLiteral("%1 triangles, %2 ms").arg(groupedNumber(row.triangles), formatMs(row.frameMs));
+}
+
+// The row's error in the budget's own terms: "max error 2/255" / "PSNR 41.3 dB".
+QString rowError(const BenchRow &row, ErrorBudget::Kind kind)
+{
+    if (kind == ErrorBudget::Kind::MaxError)
+        return QStringLiteral("max error %1/255").arg(row.maxError);
+    return QStringLiteral("PSNR %1 dB").arg(formatDb(row.psnr));
+}
+
+} // namespace
+
+bool ErrorBudget::accepts(const BenchRow &row) const
+{
+    switch (kind) {
+    case Kind::MaxError:
+        return row.maxError >= 0 && row.maxError <= maxError;
+    case Kind::Psnr:
+        return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
+    }
+    return false;
+}
+
+QString ErrorBudget::describe() const
+{
+    if (kind == Kind::MaxError)
+        return QStringLiteral("max error ≤ %1/255").arg(maxError);
+    return QStringLiteral("PSNR ≥ %1 dB").arg(QString::number(minPsnr, 'g', 6));
+}
+
+std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
+{
+    const QString t = text.trimmed().toLower();
+
+    // "2", "max:2", "max: 2", "2/255", "max:2/255"
+    static const QRegularExpression maxForm(
+        QStringLiteral("^(?:max\\s*:\\s*)?(\\d{1,3})(?:\\s*/\\s*255)?$"));
+    QRegularExpressionMatch m = maxForm.match(t);
+    if (m.hasMatch()) {
+        const int value = m.captured(1).toInt();
+        if (value > 255)
+            return std::nullopt;
+        ErrorBudget budget;
+        budget.kind = Kind::MaxError;
+        budget.maxError = value;
+        return budget;
+    }
+
+    // "psnr:40", "psnr: 38.5", "40dB", "40 dB", "psnr:40dB"
+    static const QRegularExpression psnrForm(
+        QStringLiteral("^(?:psnr\\s*:\\s*(\\d+(?:\\.\\d*)?|\\.\\d+)(?:\\s*db)?"
+                       "|(\\d+(?:\\.\\d*)?|\\.\\d+)\\s*db)$"));
+    m = psnrForm.match(t);
+    if (m.hasMatch()) {
+        const QString number = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
+        bool ok = false;
+        const double value = number.toDouble(&ok);
+        if (!ok || !std::isfinite(value) || value <= 0)
+            return std::nullopt;
+        ErrorBudget budget;
+        budget.kind = Kind::Psnr;
+        budget.minPsnr = value;
+        return budget;
+    }
+    return std::nullopt;
+}
+
+BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+{
+    BudgetFit fit;
+    const int n = int(rows.size());
+
+    for (int i = 0; i < n; ++i) {
+        if (rows[i].isBaseline()) {
+            fit.baseline = i;
+            break;
+        }
+    }
+
+    // The fastest accepted time; every accepted row within kTimeTieFraction
+    // of it counts as equally fast.
+    double fastest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i)
+        if (budget.accepts(rows[i]) && std::isfinite(rows[i].frameMs))
+            fastest = std::min(fastest, rows[i].frameMs);
+
+    if (std::isfinite(fastest)) {
+        const double tieLimit = fastest + std::abs(fastest) * kTimeTieFraction;
+        for (int i = 0; i < n; ++i) {
+            const BenchRow &row = rows[i];
+            if (!budget.accepts(row) || !std::isfinite(row.frameMs) || row.frameMs > tieLimit)
+                continue;
+            if (fit.chosen < 0) {
+                fit.chosen = i;
+                continue;
+            }
+            const BenchRow &best = rows[fit.chosen];
+            bool better = false;
+            if (row.triangles != best.triangles)
+                better = row.triangles < best.triangles;
+            else if (methodCost(row.method) != methodCost(best.method))
+                better = methodCost(row.method) < methodCost(best.method);
+            else if (row.method != best.method)
+                better = row.method < best.method;
+            else
+                better = row.frameMs < best.frameMs;
+            if (better)
+                fit.chosen = i;
+        }
+    }
+
+    if (fit.chosen < 0) {
+        // Nothing fits: say so, and how close the best measurement came.
+        int bestIndex = -1;
+        for (int i = 0; i < n; ++i) {
+            const BenchRow &row = rows[i];
+            if (budget.kind == ErrorBudget::Kind::MaxError) {
+                if (row.maxError < 0)
+                    continue;
+                if (bestIndex < 0 || row.maxError < rows[bestIndex].maxError)
+                    bestIndex = i;
+            } else {
+                if (std::isnan(row.psnr))
+                    continue;
+                if (bestIndex < 0 || row.psnr > rows[bestIndex].psnr)
+                    bestIndex = i;
+            }
+        }
+        if (bestIndex < 0)
+            fit.summary = QStringLiteral("nothing meets %1: no measured rows").arg(budget.describe());
+        else
+            fit.summary = QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
+                              .arg(budget.describe(), rowError(rows[bestIndex], budget.kind),
+                                   rowLabel(rows[bestIndex]));
+        return fit;
+    }
+
+    const BenchRow &chosen = rows[fit.chosen];
+    const QString error = rowError(chosen, budget.kind);
+
+    if (fit.baseline < 0) {
+        fit.summary = QStringLiteral("%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
+                          .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
+        return fit;
+    }
+
+    const BenchRow &base = rows[fit.baseline];
+    fit.trianglesSaved = base.triangles - chosen.triangles;
+    fit.msSaved = base.frameMs - chosen.frameMs;
+    const QString baseText = QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
+
+    if (fit.chosen == fit.baseline) {
+        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3")
+                          .arg(baseText, budget.describe(), error);
+        return fit;
+    }
+
+    QStringList parts;
+    if (fit.trianglesSaved > 0)
+        parts << QStringLiteral("%1 triangles").arg(groupedNumber(fit.trianglesSaved));
+    QString timePart;
+    if (std::isfinite(fit.msSaved) && fit.msSaved > 0) {
+        timePart = QStringLiteral("%1 ms").arg(formatMs(fit.msSaved));
+        if (base.frameMs > 0)
+            timePart += QStringLiteral(" (%1 %)").arg(QString::number(fit.msSaved / base.frameMs * 100.0, 'f', 0));
+        parts << timePart;
+    }
+    QString effect;
+    if (!parts.isEmpty())
+        effect = QStringLiteral("saves %1").arg(parts.join(QStringLiteral(" and ")));
+    QStringList costs;
+    if (fit.trianglesSaved < 0)
+        costs << QStringLiteral("%1 more triangles").arg(groupedNumber(-fit.trianglesSaved));
+    if (std::isfinite(fit.msSaved) && fit.msSaved < 0)
+        costs << QStringLiteral("%1 ms more").arg(formatMs(-fit.msSaved));
+    if (!costs.isEmpty())
+        effect += (effect.isEmpty() ? QStringLiteral("costs ") : QStringLiteral(" but costs "))
+            + costs.join(QStringLiteral(" and "));
+    if (effect.isEmpty())
+        effect = QStringLiteral("saves nothing");
+
+    fit.summary = QStringLiteral("%1 (%2): %3 against %4; %5")
+                      .arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
+    return fit;
+}
+
+} // namespace phonglab

@@ -1,0 +1,261 @@
+// Speed-against-accuracy charts: a 2-scene × 3-light-setup grid written as
+// PNG and SVG without showing a window, the SVG naming every method and the
+// Pareto front, and unwritable paths refused with a reason.
+
+#include "bench/SpeedAccuracyChart.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QGraphicsScene>
+#include <QImage>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtCharts/QChart>
+#include <QtCharts/QLegendMarker>
+#include <QtCharts/QLogValueAxis>
+#include <QtCharts/QValueAxis>
+#include <QtCharts/QXYSeries>
+#include <QtTest>
+
+using namespace phonglab;
+
+namespace {
+
+const QStringList kMethods = {"flat", "gouraud", "blinn-phong", "phong"};
+const std::vector<double> kDetails = {1.0, 0.5, 0.25, 0.1};
+
+// Frame time grows with triangles, lights and method cost; error falls with
+// detail and is zero for full-detail Phong.
+std::vector<BenchRow> syntheticRows()
+{
+    std::vector<BenchRow> rows;
+    const QStringList scenes = {"default", "teapot, glossy"};
+    const std::vector<std::pair<int, bool>> setups = {{1, false}, {2, true}, {8, false}};
+    for (int s = 0; s < scenes.size(); ++s) {
+        for (const auto &[lights, own] : setups) {
+            for (int m = 0; m < kMethods.size(); ++m) {
+                for (double detail : kDetails) {
+                    BenchRow r;
+                    r.scene = scenes[s];
+                    r.method = kMethods[m];
+                    r.detail = detail;
+                    r.triangles = qint64(13650 * detail) * (s + 1);
+                    r.lights = lights;
+                    r.sceneLights = own;
+                    r.frameMs = 0.4 + r.triangles * 1e-4 * (1 + 0.1 * lights) * (1 + 0.3 * m);
+                    const double methodError = (3 - m) * 1.5 + (m == 2 ? 0.4 : 0.0);
+                    r.rmse = methodError + (1 - detail) * 4;
+                    r.maxError = int(r.rmse * 3);
+                    r.psnr = r.rmse > 0 ? 20 * std::log10(255 / r.rmse) : std::numeric_limits<double>::infinity();
+                    rows.push_back(r);
+                }
+            }
+        }
+    }
+    return rows;
+}
+
+// Every piece of text in an SVG document (element text and attributes).
+bool readSvg(const QString &path, QString *allText, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = file.errorString();
+        return false;
+    }
+    QXmlStreamReader xml(&file);
+    bool sawSvg = false;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isStartElement() && xml.name() == QLatin1String("svg"))
+            sawSvg = true;
+        if (xml.isCharacters())
+            *allText += xml.text().toString() + '\n';
+    }
+    if (xml.hasError()) {
+        *error = QStringLiteral("line %1: %2").arg(xml.lineNumber()).arg(xml.errorString());
+        return false;
+    }
+    if (!sawSvg) {
+        *error = QStringLiteral("no <svg> element");
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+class TestBenchChart : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void writesPngAndSvgGrid()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString png = dir.filePath("charts.png");
+        const QString svg = dir.filePath("charts.svg");
+        QString error;
+        QVERIFY2(writeSpeedAccuracyCharts(syntheticRows(), png, svg, &error, QSize(600, 420)),
+                 qPrintable(error));
+
+        QImage image(png);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(3 * 600, 2 * 420)); // 3 light setups × 2 scenes
+        // Something was drawn: not a blank page.
+        QSet<QRgb> colors;
+        for (int y = 0; y < image.height(); y += 7)
+            for (int x = 0; x < image.width(); x += 7)
+                colors.insert(image.pixel(x, y));
+        QVERIFY2(colors.size() > 10, qPrintable(QString::number(colors.size())));
+
+        QString text;
+        QVERIFY2(readSvg(svg, &text, &error), qPrintable(error));
+        for (const QString &method : kMethods)
+            QVERIFY2(text.contains(method), qPrintable(method));
+        QVERIFY(text.contains("Pareto front"));
+        QVERIFY(text.contains("frame time (ms"));
+        QVERIFY(text.contains("8-bit steps"));
+        QVERIFY(text.contains("teapot, glossy"));
+        QVERIFY(text.contains("25 %"));
+
+        // Written atomically: no temporary files left beside them.
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);
+
+        // PHONGLAB_KEEP_CHARTS=<folder>: keep a copy to look at.
+        const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
+        if (!keep.isEmpty()) {
+            QDir().mkpath(keep);
+            QFile::remove(keep + "/speed-accuracy.png");
+            QFile::remove(keep + "/speed-accuracy.svg");
+            QFile::copy(png, keep + "/speed-accuracy.png");
+            QFile::copy(svg, keep + "/speed-accuracy.svg");
+        }
+    }
+
+    void chartHasSeriesPerMethodAndFront()
+    {
+        std::vector<BenchRow> rows;
+        for (const BenchRow &r : syntheticRows())
+            if (r.scene == "default" && r.lights == 2)
+                rows.push_back(r);
+        QGraphicsScene scene;
+        QChart *chart = createSpeedAccuracyChart(rows, "default");
+        scene.addItem(chart); // the scene owns it
+        chart->setGeometry(0, 0, 640, 440);
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(chart->title(), QStringLiteral("default"));
+        QStringList legend;
+        for (QLegendMarker *marker : chart->legend()->markers())
+            if (marker->isVisible())
+                legend << marker->label();
+        QCOMPARE(legend, (QStringList{"flat", "gouraud", "blinn-phong", "phong", "Pareto front"}));
+
+        // Points along each method's line run in order of detail.
+        for (QAbstractSeries *series : chart->series()) {
+            auto *xy = qobject_cast<QXYSeries *>(series);
+            QVERIFY(xy);
+            if (series->name() == "phong" && xy->count() == int(kDetails.size())) {
+                // Frame time rises with detail in the synthetic data.
+                for (int i = 1; i < xy->count(); ++i)
+                    QVERIFY(xy->at(i).x() > xy->at(i - 1).x());
+            }
+        }
+        // Full-detail Phong has zero error and the rest span < 2 decades... or
+        // not: either way the y axis can show it.
+        QCOMPARE(chart->axes(Qt::Vertical).size(), 1);
+    }
+
+    void logAxisWhenErrorsSpanDecades()
+    {
+        std::vector<BenchRow> rows;
+        const double errors[] = {0.0, 0.01, 0.3, 5.0, 40.0};
+        for (int i = 0; i < 5; ++i) {
+            BenchRow r;
+            r.scene = "s";
+            r.method = "phong";
+            r.detail = 1.0 - i * 0.2;
+            r.frameMs = 5.0 - i;
+            r.rmse = errors[i];
+            rows.push_back(r);
+        }
+        std::unique_ptr<QChart> chart(createSpeedAccuracyChart(rows, "log"));
+        auto *log = qobject_cast<QLogValueAxis *>(chart->axes(Qt::Vertical).value(0));
+        QVERIFY(log);
+        QVERIFY(log->min() > 0);
+        QVERIFY(log->min() < 0.01); // zero drawn below the smallest error
+        QVERIFY2(log->titleText().contains("0 drawn at"), qPrintable(log->titleText()));
+
+        // A narrow span stays linear and starts at zero.
+        for (BenchRow &r : rows)
+            r.rmse = 1 + r.rmse / 100;
+        chart.reset(createSpeedAccuracyChart(rows, "linear"));
+        auto *linear = qobject_cast<QValueAxis *>(chart->axes(Qt::Vertical).value(0));
+        QVERIFY(linear);
+        QCOMPARE(linear->min(), 0.0);
+    }
+
+    void methodColoursAreFixed()
+    {
+        QCOMPARE(methodColor("phong"), methodColor("phong"));
+        QVERIFY(methodColor("phong") != methodColor("gouraud"));
+        QVERIFY(methodColor("flat") != methodColor("blinn-phong"));
+        QCOMPARE(methodColor("toon"), methodColor("toon"));
+    }
+
+    void unwritablePathFailsWithReason()
+    {
+        QTemporaryDir dir;
+        const QString missing = dir.filePath("no/such/folder/charts.png");
+        QString error;
+        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"), &error));
+        QVERIFY2(error.contains(missing), qPrintable(error));
+        // Nothing half-written beside it.
+        QVERIFY(!QFile::exists(dir.filePath("ok.svg")));
+
+        error.clear();
+        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"),
+                                          dir.filePath("missing/charts.svg"), &error));
+        QVERIFY2(error.contains("charts.svg"), qPrintable(error));
+        QVERIFY(!QFile::exists(dir.filePath("ok.png")));
+    }
+
+    void nothingToDrawIsAnError()
+    {
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY(!writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"), &error));
+        QVERIFY(!error.isEmpty());
+    }
+
+    void singleChartImage()
+    {
+        QTemporaryDir dir;
+        std::vector<LabelledSeries> series(2);
+        series[0].name = "subdivided";
+        series[0].color = Qt::darkCyan;
+        series[0].points = {{1.0, 2.0, "area"}, {1.5, 1.0, "angle"}};
+        series[1].name = "original";
+        series[1].color = Qt::darkRed;
+        series[1].points = {{0.5, 4.0, "area"}, {0.8, 3.0, "angle"}};
+        std::unique_ptr<QChart> chart(createLabelledChart(series, "normals", "time (ms)", "mean error (°)"));
+        QString error;
+        QVERIFY2(writeChartImages(chart.get(), dir.filePath("n.png"), QString(), &error, QSize(500, 350)),
+                 qPrintable(error));
+        QCOMPARE(QImage(dir.filePath("n.png")).size(), QSize(500, 350));
+        QVERIFY(!chart->scene()); // handed back, still ours
+    }
+};
+
+int main(int argc, char **argv)
+{
+    // Charts are widgets; they need a QApplication but never a window.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    TestBenchChart test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_benchchart.moc"
