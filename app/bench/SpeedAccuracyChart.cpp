@@ -84,8 +84,10 @@ YScale chooseYScale(const std::vector<double> &values)
         if (scale.hasZero && floor >= minPositive * 0.999)
             floor /= 10.0;
         scale.floor = floor;
-        scale.min = floor;
-        scale.max = std::pow(10.0, std::ceil(std::log10(maxValue)));
+        // A little room below the floor and above the largest value, so no
+        // point sits on the frame and the floor's own label shows.
+        scale.min = floor / 1.6;
+        scale.max = std::pow(10.0, std::ceil(std::log10(maxValue * 1.25)));
         if (scale.max <= scale.min)
             scale.max = scale.min * 10.0;
     } else {
@@ -259,10 +261,11 @@ QChart *buildChart(const ChartSpec &spec)
         axis->setBase(10);
         axis->setLabelFormat(QStringLiteral("%g"));
         axis->setMinorTickCount(8);
+        axis->setMinorGridLineColor(QColor(238, 238, 238));
         axis->setRange(yScale.min, yScale.max);
         yNotes << (yScale.hasZero
-                       ? QStringLiteral("log scale; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
-                       : QStringLiteral("log scale"));
+                       ? QStringLiteral("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
+                       : QStringLiteral("log"));
         yAxis = axis;
     } else {
         auto *axis = new QValueAxis;
@@ -494,7 +497,7 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
     ChartSpec spec;
     spec.title = title;
     spec.xTitle = QStringLiteral("frame time (ms, median)");
-    spec.yTitle = QStringLiteral("error: RMSE against the reference");
+    spec.yTitle = QStringLiteral("error: RMSE");
     spec.yUnit = QStringLiteral("8-bit steps");
 
     std::map<QString, std::vector<const BenchRow *>, decltype(&methodLess)> byMethod(&methodLess);

@@ -186,6 +186,11 @@ private slots:
         QVERIFY(log->min() > 0);
         QVERIFY(log->min() < 0.01); // zero drawn below the smallest error
         QVERIFY2(log->titleText().contains("0 drawn at"), qPrintable(log->titleText()));
+        const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
+        if (!keep.isEmpty()) {
+            QString error;
+            QVERIFY2(writeChartImages(chart.get(), keep + "/log-axis.png", QString(), &error), qPrintable(error));
+        }
 
         // A narrow span stays linear and starts at zero.
         for (BenchRow &r : rows)
