@@ -547,6 +547,33 @@ bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgP
     return ok;
 }
 
+bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
+                                 const QString &svgPath, QString *error, QSize size)
+{
+    if (!haveApplication(error))
+        return false;
+    if (series.empty()) {
+        if (error)
+            *error = QStringLiteral("no normal-study rows to chart");
+        return false;
+    }
+    // Tessellations have no fixed colours of their own: a fixed sequence.
+    static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22),
+                                     QColor(0x2c, 0xa0, 0x2c), QColor(0xc0, 0x39, 0x2b),
+                                     QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
+                                     QColor(0x17, 0xa2, 0xb8), QColor(0x7f, 0x7f, 0x7f)};
+    for (size_t i = 0; i < series.size(); ++i) {
+        if (!series[i].color.isValid())
+            series[i].color = palette[i % std::size(palette)];
+        std::stable_sort(series[i].points.begin(), series[i].points.end(),
+                         [](const LabelledPoint &a, const LabelledPoint &b) { return a.x < b.x; });
+    }
+    std::unique_ptr<QChart> chart(createLabelledChart(
+        series, QStringLiteral("Normal methods: time against angular error"),
+        QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
+    return writeChartImages(chart.get(), pngPath, svgPath, error, size);
+}
+
 bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
                               const QString &svgPath, QString *error, QSize panelSize)
 {

@@ -4,6 +4,7 @@
 #include <QColor>
 #include <QSize>
 #include <QString>
+#include <algorithm>
 #include <vector>
 
 QT_BEGIN_NAMESPACE
@@ -59,5 +60,30 @@ QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QSt
                             const QString &xTitle, const QString &yTitle);
 bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
                       QString *error, QSize size = {640, 440});
+
+// The normal-method study (app/mesh/NormalMethodStudy.h, NormalStudyRow:
+// tessellation, method, triangles, ms, maxAngleDeg, meanAngleDeg): time (x,
+// ms) against mean angular error (y, degrees), one series per tessellation
+// with its points labelled by method. A template over the row type so this
+// header does not depend on the mesh study; any range of rows with those
+// fields will do. Written like writeChartImages().
+bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
+                                 const QString &svgPath, QString *error, QSize size = {640, 440});
+template <typename NormalStudyRows>
+bool writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath,
+                           QString *error, QSize size = {640, 440})
+{
+    std::vector<LabelledSeries> series;
+    for (const auto &row : rows) {
+        auto it = std::find_if(series.begin(), series.end(),
+                               [&](const LabelledSeries &s) { return s.name == row.tessellation; });
+        if (it == series.end()) {
+            series.push_back(LabelledSeries{row.tessellation, QColor(), {}});
+            it = series.end() - 1;
+        }
+        it->points.push_back(LabelledPoint{double(row.ms), double(row.meanAngleDeg), row.method});
+    }
+    return writeNormalStudySeriesChart(std::move(series), pngPath, svgPath, error, size);
+}
 
 } // namespace phonglab

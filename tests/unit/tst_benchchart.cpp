@@ -251,6 +251,41 @@ private slots:
         QCOMPARE(QImage(dir.filePath("n.png")).size(), QSize(500, 350));
         QVERIFY(!chart->scene()); // handed back, still ours
     }
+
+    void normalStudyChart()
+    {
+        // The fields of NormalStudyRow (app/mesh/NormalMethodStudy.h).
+        struct Row {
+            QString tessellation;
+            QString method;
+            qint64 triangles;
+            double ms;
+            double maxAngleDeg;
+            double meanAngleDeg;
+        };
+        const std::vector<Row> rows = {
+            {"uv sphere", "area", 960, 0.12, 9.5, 2.1},   {"uv sphere", "angle", 960, 0.15, 6.0, 1.2},
+            {"uv sphere", "unweighted", 960, 0.10, 14.0, 3.4},
+            {"icosphere", "area", 1280, 0.14, 4.0, 0.9},  {"icosphere", "angle", 1280, 0.18, 3.1, 0.8},
+            {"icosphere", "unweighted", 1280, 0.11, 4.2, 0.95},
+        };
+        QTemporaryDir dir;
+        const QString png = dir.filePath("normals.png");
+        const QString svg = dir.filePath("normals.svg");
+        QString error;
+        QVERIFY2(writeNormalStudyChart(rows, png, svg, &error, QSize(560, 400)), qPrintable(error));
+        QCOMPARE(QImage(png).size(), QSize(560, 400));
+        QString text;
+        QVERIFY2(readSvg(svg, &text, &error), qPrintable(error));
+        for (const char *name : {"uv sphere", "icosphere", "unweighted", "mean angular error"})
+            QVERIFY2(text.contains(name), qPrintable(name));
+        QVERIFY(!writeNormalStudyChart(std::vector<Row>{}, png, svg, &error));
+        const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
+        if (!keep.isEmpty()) {
+            QFile::remove(keep + "/normal-study.png");
+            QFile::copy(png, keep + "/normal-study.png");
+        }
+    }
 };
 
 int main(int argc, char **argv)
