@@ -3,6 +3,7 @@
 #include "mesh/BuiltinMeshes.h"
 #include "ObjectMatrices.h"
 #include "PhongReference.h"
+#include "ReferenceSample.h"
 
 #include <algorithm>
 #include <array>
@@ -196,8 +197,8 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
     return best;
 }
 
-glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights,
-                 ReferenceShading shading)
+ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights,
+                      ReferenceShading shading)
 {
     const PreparedObject &object = *hit.object;
     const glm::dvec3 p = hit.objectPoint;
@@ -209,13 +210,7 @@ glm::dvec3 shade(const Hit &hit, const Scene &scene, std::span<const CameraSpace
                                                                        : boxNormal(p);
     const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(p, 1.0));
     const glm::dvec3 normal = object.normalMatrix * objectNormal;
-    switch (shading) {
-    case ReferenceShading::Phong: break;
-    case ReferenceShading::BlinnPhong:
-        return blinnPhongIntensity(position, normal, *object.material, scene.ambient, lights);
-    case ReferenceShading::Normals: return normalViewColor(normal);
-    }
-    return phongIntensity(position, normal, *object.material, scene.ambient, lights);
+    return shadeReferenceSample(position, normal, *object.material, scene.ambient, lights, shading);
 }
 
 } // namespace
@@ -373,12 +368,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
     if (!objects)
         return std::nullopt;
 
-    const glm::dmat4 view = scene.camera.viewMatrix();
-    std::vector<CameraSpaceLight> lights;
-    lights.reserve(scene.lights.size());
-    for (const PointLight &light : scene.lights)
-        if (light.enabled) // a disabled light lights nothing, as on the GPU
-            lights.push_back(toCameraSpace(light, view));
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
 
     ReferenceImage image(width, height);
     for (int y = 0; y < height; ++y) {
@@ -390,7 +380,9 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
             const std::size_t i = image.index(x, y);
             image.coverage[i] = 1;
             image.depth[i] = hit.t;
-            image.color[i] = shade(hit, scene, lights, shading);
+            const ReferenceSample sample = shade(hit, scene, lights, shading);
+            image.color[i] = sample.color;
+            image.specular[i] = sample.specular;
         }
     }
     return image;

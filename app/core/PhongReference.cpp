@@ -16,13 +16,14 @@ namespace {
 // the rest of the equation is shared so the two cannot drift apart.
 enum class Specular { ReflectedRay, HalfVector };
 
-glm::dvec3 illumination(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                        const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model)
+IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model)
 {
     const glm::dvec3 N = glm::normalize(normal);
     const glm::dvec3 V = glm::normalize(-position); // the eye is at the origin
 
     glm::dvec3 I = ambient * material.ka;
+    glm::dvec3 S(0.0); // the specular part alone, summed beside I (I itself is unchanged)
     for (const CameraSpaceLight &light : lights) {
         const glm::dvec3 toLight = light.position - position;
         const double d = glm::length(toLight);
@@ -46,9 +47,11 @@ glm::dvec3 illumination(const glm::dvec3 &position, const glm::dvec3 &normal, co
         }
         const glm::dvec3 diffuse = light.diffuse * material.kd * NdotL;
         const glm::dvec3 specular = light.specular * material.ks * specularFactor;
-        I += attenuationFactor(light.attenuation, d) * (diffuse + specular);
+        const double attenuation = attenuationFactor(light.attenuation, d);
+        I += attenuation * (diffuse + specular);
+        S += attenuation * specular;
     }
-    return I;
+    return {I, S};
 }
 
 } // namespace
@@ -57,12 +60,24 @@ glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
                           const Material &material, const glm::dvec3 &ambient,
                           std::span<const CameraSpaceLight> lights)
 {
-    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay);
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay).intensity;
 }
 
 glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
                                const Material &material, const glm::dvec3 &ambient,
                                std::span<const CameraSpaceLight> lights)
+{
+    return illumination(position, normal, material, ambient, lights, Specular::HalfVector).intensity;
+}
+
+IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                             const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+{
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay);
+}
+
+IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                                  const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::HalfVector);
 }

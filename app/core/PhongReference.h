@@ -49,6 +49,20 @@ glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &nor
                                const Material &material, const glm::dvec3 &ambient,
                                std::span<const CameraSpaceLight> lights);
 
+// The same equations with the specular part reported on its own, for
+// measuring the error inside a highlight alone: `specular` is
+// Σ_i f_att,i · Is,i·ks·max(0, R_i·V)^n (N·H and n' for Blinn-Phong), not
+// clamped. `intensity` is bit for bit what phongIntensity() /
+// blinnPhongIntensity() return (they are these functions' first member).
+struct IlluminationTerms {
+    glm::dvec3 intensity{0.0};
+    glm::dvec3 specular{0.0};
+};
+IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                             const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
+IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                                  const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
+
 // The normals view (shaders/normals.frag): the unit camera-space normal as a
 // colour, 0.5·N + 0.5 per channel. No lighting.
 glm::dvec3 normalViewColor(const glm::dvec3 &normal);

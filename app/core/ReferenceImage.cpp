@@ -13,6 +13,7 @@ ReferenceImage::ReferenceImage(int w, int h)
     , color(std::size_t(width) * std::size_t(height), glm::dvec3(0.0))
     , coverage(std::size_t(width) * std::size_t(height), 0)
     , depth(std::size_t(width) * std::size_t(height), std::numeric_limits<double>::infinity())
+    , specular(std::size_t(width) * std::size_t(height), glm::dvec3(0.0))
 {
 }
 

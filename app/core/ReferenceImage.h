@@ -17,6 +17,10 @@ struct ReferenceImage {
     std::vector<glm::dvec3> color;       // I, not clamped; zero where uncovered
     std::vector<std::uint8_t> coverage;  // 1 where a surface was hit
     std::vector<double> depth;           // camera-space distance -z of the hit; +inf where uncovered
+    // The specular part of `color` alone (Σ f_att·Is·ks·max(0,R·V)^n, or the
+    // Blinn-Phong one), not clamped; zero where uncovered and for the normals
+    // view. Lets an error be measured inside the highlight alone.
+    std::vector<glm::dvec3> specular;
 
     ReferenceImage() = default;
     ReferenceImage(int width, int height); // all pixels uncovered

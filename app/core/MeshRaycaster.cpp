@@ -1,0 +1,251 @@
+#include "MeshRaycaster.h"
+
+#include "MeshBvh.h"
+#include "ObjectMatrices.h"
+#include "ReferenceSample.h"
+#include "mesh/BuiltinMeshes.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <system_error>
+#include <thread>
+#include <unordered_map>
+
+namespace phonglab {
+
+namespace {
+
+enum class Surface { Mesh, Sphere, Torus, Box };
+
+// Everything one object needs per ray, computed once per image.
+struct PreparedObject {
+    Surface surface = Surface::Mesh;
+    const MeshData *mesh = nullptr;       // Surface::Mesh: its vertex normals
+    std::shared_ptr<const MeshBvh> bvh;   // Surface::Mesh: its triangles
+    glm::dmat4 modelView{1.0};
+    glm::dmat3 normalMatrix{1.0};
+    glm::dmat3 inverseLinear{1.0}; // camera-space directions -> object space
+    glm::dvec3 eyeInObject{0.0};   // the camera-space origin in object space
+    const Material *material = nullptr;
+};
+
+std::optional<Surface> builtinSurface(const QString &spec)
+{
+    if (spec == QLatin1String("builtin:sphere"))
+        return Surface::Sphere;
+    if (spec == QLatin1String("builtin:torus"))
+        return Surface::Torus;
+    if (spec == QLatin1String("builtin:cube"))
+        return Surface::Box;
+    return std::nullopt;
+}
+
+bool fail(QString *error, const QString &message)
+{
+    if (error)
+        *error = message;
+    return false;
+}
+
+// Checks the inputs, builds one BVH per distinct mesh (reporting the first
+// tenth of the progress) and prepares the objects. False with *error on bad
+// input or "cancelled".
+bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                    double aspect, std::vector<PreparedObject> &prepared, QString *error,
+                    const std::function<bool(double)> &progress)
+{
+    if (objectMeshes.size() != scene.objects.size())
+        return fail(error, QStringLiteral("The scene has %1 objects but %2 meshes were given")
+                               .arg(scene.objects.size())
+                               .arg(objectMeshes.size()));
+    std::size_t trianglesToBuild = 0;
+    std::unordered_map<const MeshData *, std::shared_ptr<const MeshBvh>> bvhs;
+    for (std::size_t i = 0; i < objectMeshes.size(); ++i) {
+        const MeshData *mesh = objectMeshes[i].get();
+        if (!mesh) {
+            if (!builtinSurface(scene.objects[i].mesh))
+                return fail(error, QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                                                  "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
+                                       .arg(i)
+                                       .arg(scene.objects[i].mesh));
+        } else if (!mesh->isValid()) {
+            return fail(error, QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
+                                   .arg(i)
+                                   .arg(scene.objects[i].mesh));
+        } else if (bvhs.emplace(mesh, nullptr).second) {
+            trianglesToBuild += mesh->triangleCount();
+        }
+    }
+
+    const glm::dmat4 view = scene.camera.viewMatrix();
+    const glm::dmat4 projection = scene.camera.projectionMatrix(aspect);
+    std::size_t trianglesBuilt = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject &object = scene.objects[i];
+        const ObjectMatrices matrices = ObjectMatrices::make(object.transform.matrix(), view, projection);
+        // A zero scale flattens the object to something with no defined
+        // normals; as in raycastScene() there is no reference for it.
+        const double det = glm::determinant(glm::dmat3(matrices.modelView));
+        if (!std::isfinite(det) || std::abs(det) < 1e-300)
+            continue;
+        PreparedObject p;
+        if (const MeshData *mesh = objectMeshes[i].get()) {
+            std::shared_ptr<const MeshBvh> &bvh = bvhs[mesh];
+            if (!bvh) {
+                if (progress && !progress(0.1 * double(trianglesBuilt) / double(std::max<std::size_t>(trianglesToBuild, 1))))
+                    return fail(error, QStringLiteral("cancelled"));
+                bvh = std::make_shared<const MeshBvh>(*mesh);
+                trianglesBuilt += mesh->triangleCount();
+            }
+            p.surface = Surface::Mesh;
+            p.mesh = mesh;
+            p.bvh = bvh;
+        } else {
+            p.surface = *builtinSurface(object.mesh);
+        }
+        const glm::dmat4 inverse = glm::inverse(matrices.modelView);
+        p.modelView = matrices.modelView;
+        p.normalMatrix = matrices.normalMatrix;
+        p.inverseLinear = glm::dmat3(inverse);
+        p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        p.material = &object.material;
+        prepared.push_back(std::move(p));
+    }
+    return true;
+}
+
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    const PreparedObject *object = nullptr;
+    glm::dvec3 objectPoint{0.0};
+    glm::dvec3 objectNormal{0.0}; // not normalised: the normal matrix comes first
+};
+
+// The interpolated vertex normal at a mesh hit, in object space.
+glm::dvec3 interpolatedNormal(const MeshData &mesh, const TriangleHit &hit)
+{
+    const std::size_t base = 3 * std::size_t(hit.triangle);
+    return hit.interpolate(glm::dvec3(mesh.normals[mesh.indices[base]]),
+                           glm::dvec3(mesh.normals[mesh.indices[base + 1]]),
+                           glm::dvec3(mesh.normals[mesh.indices[base + 2]]));
+}
+
+// The nearest surface along a camera ray over all objects, each intersected
+// in its own space; a linear map keeps t, so t stays the camera depth.
+Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
+               double farPlane)
+{
+    Hit best;
+    for (const PreparedObject &object : objects) {
+        const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
+        const double tMax = std::min(farPlane, best.t);
+        std::optional<double> t;
+        glm::dvec3 normal(0.0);
+        switch (object.surface) {
+        case Surface::Mesh:
+            if (const std::optional<TriangleHit> hit = object.bvh->closestHit(ray, nearPlane, tMax)) {
+                t = hit->t;
+                normal = interpolatedNormal(*object.mesh, *hit);
+            }
+            break;
+        case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
+        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
+        }
+        // Strictly nearer only: on an exact tie the GPU's GL_LESS depth test
+        // keeps the object drawn first.
+        if (!t || !(*t < best.t))
+            continue;
+        best.t = *t;
+        best.object = &object;
+        best.objectPoint = ray.at(*t);
+        switch (object.surface) {
+        case Surface::Mesh: best.objectNormal = normal; break;
+        case Surface::Sphere: best.objectNormal = best.objectPoint; break;
+        case Surface::Torus: best.objectNormal = torusNormal(best.objectPoint, kTorusMajorRadius); break;
+        case Surface::Box: best.objectNormal = boxNormal(best.objectPoint); break;
+        }
+    }
+    return best;
+}
+
+// Ray-casts and shades row y into `image` (rows are disjoint, so any number
+// of threads can fill different rows at once).
+void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
+               const std::vector<CameraSpaceLight> &lights, ReferenceShading shading, ReferenceImage &image, int y)
+{
+    for (int x = 0; x < image.width; ++x) {
+        const Ray ray = cameraRay(scene.camera, x, y, image.width, image.height);
+        const Hit hit = nearestHit(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
+        if (!hit.object)
+            continue;
+        const PreparedObject &object = *hit.object;
+        const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(hit.objectPoint, 1.0));
+        const ReferenceSample sample = shadeReferenceSample(position, object.normalMatrix * hit.objectNormal,
+                                                            *object.material, scene.ambient, lights, shading);
+        const std::size_t i = image.index(x, y);
+        image.coverage[i] = 1;
+        image.depth[i] = hit.t;
+        image.color[i] = sample.color;
+        image.specular[i] = sample.specular;
+    }
+}
+
+} // namespace
+
+std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
+                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                 int width, int height, ReferenceShading shading, QString *error,
+                                                 const std::function<bool(double)> &progress)
+{
+    if (width <= 0 || height <= 0) {
+        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return std::nullopt;
+    }
+    std::vector<PreparedObject> objects;
+    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), objects, error, progress))
+        return std::nullopt;
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
+
+    ReferenceImage image(width, height);
+    // Rows are handed out one at a time from a shared counter (rows differ
+    // a lot in cost: empty sky against dense foliage). The calling thread
+    // works too and is the only one that calls progress().
+    std::atomic<int> nextRow{0};
+    std::atomic<int> rowsDone{0};
+    std::atomic<bool> cancelled{false};
+    const auto work = [&](bool reports) {
+        for (;;) {
+            if (cancelled.load(std::memory_order_relaxed))
+                return;
+            const int y = nextRow.fetch_add(1, std::memory_order_relaxed);
+            if (y >= height)
+                return;
+            renderRow(scene, objects, lights, shading, image, y);
+            const int done = rowsDone.fetch_add(1, std::memory_order_relaxed) + 1;
+            if (reports && progress && !progress(0.1 + 0.9 * double(done) / double(height)))
+                cancelled = true;
+        }
+    };
+    const int threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> helpers;
+    for (int i = 1; i < std::min(threadCount, height); ++i) {
+        try {
+            helpers.emplace_back(work, false);
+        } catch (const std::system_error &) {
+            break; // no more threads to be had: fewer helpers, same image
+        }
+    }
+    work(true);
+    for (std::thread &helper : helpers)
+        helper.join();
+    if (cancelled) {
+        fail(error, QStringLiteral("cancelled"));
+        return std::nullopt;
+    }
+    return image;
+}
+
+} // namespace phonglab

@@ -1,0 +1,57 @@
+#pragma once
+#include "AnalyticRaycaster.h"
+#include "ReferenceImage.h"
+#include "Scene.h"
+#include "mesh/MeshData.h"
+
+#include <QString>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phonglab {
+
+// The CPU ground truth for scenes of real meshes: every pixel centre is
+// ray-cast against the full-resolution triangle mesh of each object (through
+// a MeshBvh, so a 512² frame of a million-triangle mesh takes seconds), and
+// the hit is shaded in double precision with the normal the GPU would
+// compute there: the barycentric interpolation of the triangle's three
+// object-space vertex normals, mapped by the normal matrix (inverse transpose
+// of the model-view) and normalised per pixel. That is exactly what
+// phong.vert/.frag compute (perspective-correct interpolation of a linearly
+// mapped normal, normalised per fragment), so against a correct GPU render
+// only float precision and rasterisation differ, never the tessellation.
+//
+// Same conventions as raycastScene(): cameraRay() pixel centres, the
+// near/far clip on camera depth, each object intersected in its own space
+// with the camera ray mapped by inverse(modelView) (so t stays the camera
+// depth), the nearest hit over all objects (an exact tie keeps the earlier
+// object, like GL_LESS), no flip of normals towards the viewer, objects with
+// a zero-determinant transform left out, and the same shading code
+// (shadeReferenceSample), `specular` included.
+//
+// No back-face culling: both faces of every triangle are hit. The GPU culls
+// back faces of closed meshes only, and along any ray the nearest hit on a
+// closed mesh seen from outside is a front face, so culling would change
+// nothing there, while open meshes are drawn two-sided on the GPU too.
+//
+// objectMeshes has one entry per scene object, in the same order: the
+// triangle mesh to ray-cast, or null to use the analytic surface of the
+// object's builtin ("builtin:sphere|torus|cube", as raycastScene() does).
+// A size mismatch, an invalid mesh, or a null entry for a non-builtin mesh
+// gives nullopt and *error. Objects sharing one MeshData pointer share one
+// BVH, built once per call.
+//
+// Rows run in parallel on all cores; each pixel depends on nothing but its
+// own ray, so the image is identical whatever the thread count.
+// progress(fraction done) is called now and then from the calling thread
+// (the first tenth covers building the BVHs); returning false cancels: the
+// result is nullopt and *error is "cancelled".
+std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
+                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                 int width, int height, ReferenceShading shading,
+                                                 QString *error = nullptr,
+                                                 const std::function<bool(double)> &progress = {});
+
+} // namespace phonglab

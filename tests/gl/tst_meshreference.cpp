@@ -1,0 +1,242 @@
+// GPU renders of real meshes (the default scene: Blender tree and cloud)
+// against the CPU mesh reference, which ray-casts the same full-resolution
+// triangles with interpolated normals in double precision. Same bound as the
+// analytic references (RenderCheck.h); deliberately wrong variants must fail
+// the very same comparison.
+#include "RenderCheck.h"
+#include "core/MeshRaycaster.h"
+#include "core/SceneJson.h"
+#include "mesh/SceneMeshes.h"
+#include "render/GlFormat.h"
+#include "render/OffscreenRenderer.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QTest>
+#include <glm/gtc/matrix_transform.hpp>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+namespace {
+
+using MeshPtr = std::shared_ptr<const MeshData>;
+
+Scene defaultScene()
+{
+    const QString path = QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json");
+    const SceneLoadResult loaded = loadSceneFile(path);
+    if (!loaded.ok())
+        qFatal("%s: %s", qPrintable(path), qPrintable(loaded.error));
+    return *loaded.scene;
+}
+
+// The same triangles, each with its own three vertices carrying the
+// geometric face normal: what the reference would see if it ignored the
+// vertex normals (the "wrong" reference).
+MeshPtr withFaceNormals(const MeshData &mesh)
+{
+    auto flat = std::make_shared<MeshData>();
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]],
+                        c = mesh.positions[mesh.indices[i + 2]];
+        const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+        for (const glm::vec3 &p : {a, b, c}) {
+            flat->indices.push_back(std::uint32_t(flat->positions.size()));
+            flat->positions.push_back(p);
+            flat->normals.push_back(n);
+        }
+    }
+    return flat;
+}
+
+// The camera turned by a fraction of a pixel: every pixel centre moves by
+// about (dx, dy) pixels (exactly at the image centre, up to 17% more at the
+// corners of a 45° view), with no parallax since the eye stays put.
+Scene withPixelShift(Scene scene, int side, double dx, double dy)
+{
+    const double tanHalfFov = std::tan(glm::radians(scene.camera.fovDeg) * 0.5);
+    const glm::dvec3 forward = scene.camera.target - scene.camera.eye;
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
+    const glm::dvec3 up = glm::normalize(glm::cross(right, forward));
+    glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), -2.0 * dx / side * tanHalfFov, up);
+    turn = glm::rotate(turn, -2.0 * dy / side * tanHalfFov, right);
+    scene.camera.target = scene.camera.eye + glm::dvec3(turn * glm::dvec4(forward, 0.0));
+    return scene;
+}
+
+// Pixels whose surface the GPU may legitimately pick differently from the
+// exact reference: a rasteriser snaps vertices to 1/2^SUBPIXEL_BITS of a
+// pixel, so a pixel centre closer than that to an occluding edge (the outer
+// silhouette, or one part of a mesh in front of another, like the tree's
+// tiers) can show either surface. Found by ray-casting with every pixel
+// centre moved by ±step: where the coverage changes or the depth jumps, the
+// pixel is ambiguous. A jump is more than 0.1 % of the depth: over 1/16 px
+// or less (~2e-4 rad at 256 px) a continuous surface changes its depth by
+// that much only when seen within a fraction of a degree of edge-on, while
+// the tree's tiers overlap with gaps of under 1 % (the case that made this
+// necessary: pixel (32, 114) at 256², 0.0008 px from a tier's lower edge).
+std::vector<std::uint8_t> ambiguousPixels(const Scene &scene, const std::vector<MeshPtr> &meshes,
+                                          const ReferenceImage &reference, ReferenceShading shading, double step)
+{
+    std::vector<std::uint8_t> ambiguous(reference.coverage.size(), 0);
+    const int side = reference.width;
+    for (const auto &[dx, dy] : {std::pair{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}}) {
+        const std::optional<ReferenceImage> shifted =
+            raycastSceneMeshes(withPixelShift(scene, side, dx, dy), meshes, side, side, shading);
+        if (!shifted)
+            qFatal("shifted reference failed");
+        for (std::size_t i = 0; i < ambiguous.size(); ++i)
+            if (shifted->coverage[i] != reference.coverage[i]
+                || (reference.coverage[i] && std::abs(shifted->depth[i] - reference.depth[i]) > 1e-3 * reference.depth[i]))
+                ambiguous[i] = 1;
+    }
+    return ambiguous;
+}
+
+struct Variant {
+    std::optional<ShadingMethod> gpuShading;          // scene.shading when unset
+    ReferenceShading reference = ReferenceShading::Phong;
+    bool referenceWithFaceNormals = false;
+    int side = kTestImageSide;
+};
+
+// Renders `scene` offscreen with the meshes loadSceneMeshes gives and
+// ray-casts the very same MeshData (kept here before the renderer frees its
+// copies after upload) with raycastSceneMeshes.
+RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
+{
+    RenderCheck check;
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    if (!meshes.ok()) {
+        check.error = meshes.error;
+        return check;
+    }
+    std::vector<MeshPtr> perObject;
+    for (const SceneObject &object : scene.objects) {
+        const MeshPtr mesh = meshes.entries.value(meshKey(scene, object)).mesh;
+        perObject.push_back(variant.referenceWithFaceNormals ? withFaceNormals(*mesh) : mesh);
+    }
+
+    OffscreenRenderer offscreen;
+    if (!offscreen.create(&check.error))
+        return check;
+    Renderer &renderer = offscreen.renderer();
+    if (!renderer.setScene(scene, std::move(meshes), &check.error))
+        return check;
+    check.compile = renderer.loadShading(variant.gpuShading.value_or(scene.shading));
+    if (!check.compile.ok) {
+        check.error = QStringLiteral("shaders did not build:\n") + check.compile.errorSummary();
+        return check;
+    }
+    check.gpu = offscreen.renderImage(QSize(variant.side, variant.side));
+    GLint subpixelBits = 0;
+    offscreen.makeCurrent();
+    QOpenGLContext::currentContext()->functions()->glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
+    // OpenGL requires at least 4 bits; snapping moves an edge by at most
+    // half a step, so one whole step is a margin of two.
+    const double step = std::ldexp(1.0, -std::max(subpixelBits, 4));
+
+    std::optional<ReferenceImage> reference =
+        raycastSceneMeshes(scene, perObject, variant.side, variant.side, variant.reference, &check.error);
+    if (!reference)
+        return check;
+    // Ambiguous pixels count as uncovered, so the comparison leaves out the
+    // same silhouette band around them as around the outer outline.
+    const std::vector<std::uint8_t> ambiguous =
+        ambiguousPixels(scene, perObject, *reference, variant.reference, step);
+    qint64 ambiguousCount = 0;
+    for (std::size_t i = 0; i < ambiguous.size(); ++i) {
+        if (!ambiguous[i] || !reference->coverage[i])
+            continue;
+        ++ambiguousCount;
+        reference->coverage[i] = 0;
+        reference->color[i] = reference->specular[i] = glm::dvec3(0.0);
+        reference->depth[i] = std::numeric_limits<double>::infinity();
+    }
+    qInfo("%d subpixel bits: %lld covered pixels within 1/%g px of an occluding edge", subpixelBits,
+          ambiguousCount, 1.0 / step);
+    check.referenceData = std::move(*reference);
+    check.reference = check.referenceData.toImage(scene.background);
+    check.comparison = compareWithReference(check.gpu, check.referenceData, kSilhouetteBandPx);
+    return check;
+}
+
+} // namespace
+
+class TestMeshReference : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+        qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band",
+              kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx);
+    }
+
+    void gpuMatchesMeshReference_data()
+    {
+        QTest::addColumn<int>("method");
+        QTest::addColumn<int>("side");
+        QTest::newRow("phong 256") << int(ShadingMethod::Phong) << kTestImageSide;
+        QTest::newRow("phong 512") << int(ShadingMethod::Phong) << 512;
+        QTest::newRow("blinn-phong 256") << int(ShadingMethod::BlinnPhong) << kTestImageSide;
+        QTest::newRow("normals 256") << int(ShadingMethod::Normals) << kTestImageSide;
+    }
+
+    void gpuMatchesMeshReference()
+    {
+        QFETCH(int, method);
+        QFETCH(int, side);
+        Scene scene = defaultScene();
+        scene.shading = ShadingMethod(method);
+        Variant variant;
+        variant.reference = idealShadingFor(scene.shading);
+        variant.side = side;
+        const RenderCheck check = checkMeshScene(scene, variant);
+        QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
+        qInfo("tree + cloud, %-12s %dx%d: %s", qPrintable(shadingName(scene.shading)), side, side,
+              qPrintable(check.comparison.summary()));
+        // A render that compared almost nothing proves nothing.
+        QVERIFY2(check.comparison.pixelsCompared > side * side / 25, qPrintable(check.comparison.summary()));
+        if (!check.matches())
+            QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
+                                 .arg(check.comparison.summary(),
+                                      saveArtifacts(QStringLiteral("mesh-reference-%1-%2")
+                                                        .arg(shadingName(scene.shading))
+                                                        .arg(side),
+                                                    check, scene))));
+    }
+
+    void wrongVariantsFail_data()
+    {
+        QTest::addColumn<bool>("faceNormalReference");
+        QTest::addColumn<bool>("flatGpu");
+        // The reference ignores the vertex normals (one normal per face),
+        // the GPU renders correctly.
+        QTest::newRow("reference with face normals") << true << false;
+        // The GPU renders with flat shading, the reference is correct Phong.
+        QTest::newRow("GPU with the flat shader") << false << true;
+    }
+
+    void wrongVariantsFail()
+    {
+        QFETCH(bool, faceNormalReference);
+        QFETCH(bool, flatGpu);
+        const Scene scene = defaultScene();
+        Variant variant;
+        variant.referenceWithFaceNormals = faceNormalReference;
+        if (flatGpu)
+            variant.gpuShading = ShadingMethod::Flat;
+        const RenderCheck check = checkMeshScene(scene, variant);
+        QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
+        qInfo("WRONG %-28s %s", QTest::currentDataTag(), qPrintable(check.comparison.summary()));
+        QVERIFY2(check.comparison.pixelsCompared > 0, "nothing compared");
+        QVERIFY2(!check.matches(), qPrintable(QStringLiteral("a wrong variant passed: ") + check.comparison.summary()));
+    }
+};
+
+QTEST_MAIN(TestMeshReference)
+#include "tst_meshreference.moc"
