@@ -171,6 +171,32 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
     return best;
 }
 
+// The nearest hit's depth alone: nearestHit() without the hit point and the
+// normal, which only shading needs. Same objects, order and tie rule, so the
+// same t as nearestHit().t.
+double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
+                    double farPlane)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const PreparedObject &object : objects) {
+        const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
+        const double tMax = std::min(farPlane, best);
+        std::optional<double> t;
+        switch (object.surface) {
+        case Surface::Mesh:
+            if (const std::optional<TriangleHit> hit = object.bvh->closestHit(ray, nearPlane, tMax))
+                t = hit->t;
+            break;
+        case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
+        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
+        }
+        if (t && *t < best)
+            best = *t;
+    }
+    return best;
+}
+
 // Ray-casts and shades row y into `image` (rows are disjoint, so any number
 // of threads can fill different rows at once).
 void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
@@ -246,6 +272,48 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
         return std::nullopt;
     }
     return image;
+}
+
+struct SceneDepthCaster::Objects {
+    std::vector<PreparedObject> prepared;
+};
+
+SceneDepthCaster::SceneDepthCaster() = default;
+SceneDepthCaster::~SceneDepthCaster() = default;
+
+std::unique_ptr<SceneDepthCaster> SceneDepthCaster::create(const Scene &scene,
+                                                           const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                           int width, int height, QString *error)
+{
+    if (width <= 0 || height <= 0) {
+        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return nullptr;
+    }
+    std::unique_ptr<SceneDepthCaster> caster(new SceneDepthCaster);
+    caster->m_objects = std::make_unique<Objects>();
+    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), caster->m_objects->prepared, error, {}))
+        return nullptr;
+    for (PreparedObject &object : caster->m_objects->prepared) {
+        object.mesh = nullptr;     // normals are never looked up here, and
+        object.material = nullptr; // nothing may point into the caller's data
+    }
+    caster->m_width = width;
+    caster->m_height = height;
+    caster->m_tanHalfFov = std::tan(glm::radians(scene.camera.fovDeg) * 0.5);
+    caster->m_nearPlane = scene.camera.nearPlane;
+    caster->m_farPlane = scene.camera.farPlane;
+    return caster;
+}
+
+double SceneDepthCaster::depthAt(double px, double py) const
+{
+    // cameraRay()'s arithmetic, term for term, so that a pixel centre gives
+    // bit for bit the ray (and the depth) of raycastSceneMeshes().
+    const double aspect = double(m_width) / double(m_height);
+    const double ndcX = 2.0 * px / m_width - 1.0;
+    const double ndcY = 1.0 - 2.0 * py / m_height;
+    const glm::dvec3 direction(ndcX * m_tanHalfFov * aspect, ndcY * m_tanHalfFov, -1.0);
+    return nearestDepth(m_objects->prepared, direction, m_nearPlane, m_farPlane);
 }
 
 } // namespace phonglab

@@ -54,4 +54,46 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
                                                  QString *error = nullptr,
                                                  const std::function<bool(double)> &progress = {});
 
+// Geometry only: the camera depth of the nearest surface along the ray
+// through any point of the image, with the objects, meshes, conventions and
+// nearest-hit rule of raycastSceneMeshes() but no shading (no normal is even
+// interpolated). For questions about where surfaces are rather than how they
+// look, such as ambiguousReferencePixels() (ReferenceEdges.h), which casts
+// each pixel several times at sub-pixel offsets.
+//
+// The BVHs are built once, in create() (per distinct mesh, as in
+// raycastSceneMeshes()); depthAt() is const and may be called from any
+// number of threads at once.
+class SceneDepthCaster
+{
+public:
+    // nullptr and *error for the inputs raycastSceneMeshes() rejects.
+    static std::unique_ptr<SceneDepthCaster> create(const Scene &scene,
+                                                    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                    int width, int height, QString *error = nullptr);
+    ~SceneDepthCaster();
+
+    // The depth (camera-space -z) of the nearest hit along the ray through
+    // image point (px, py), in pixels from the top-left corner of the image:
+    // (x + 0.5, y + 0.5) is the centre of pixel (x, y), whose ray and depth
+    // are exactly raycastSceneMeshes()'s. +infinity where nothing is hit.
+    double depthAt(double px, double py) const;
+
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+
+private:
+    struct Objects;
+    SceneDepthCaster();
+
+    // Nothing refers to the scene or the meshes after create(): the BVHs
+    // hold their own triangles.
+    std::unique_ptr<Objects> m_objects;
+    int m_width = 0;
+    int m_height = 0;
+    double m_tanHalfFov = 0.0;
+    double m_nearPlane = 0.0;
+    double m_farPlane = 0.0;
+};
+
 } // namespace phonglab

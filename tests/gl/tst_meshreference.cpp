@@ -5,6 +5,7 @@
 // the very same comparison.
 #include "RenderCheck.h"
 #include "core/MeshRaycaster.h"
+#include "core/ReferenceEdges.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
@@ -13,7 +14,6 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QTest>
-#include <glm/gtc/matrix_transform.hpp>
 
 using namespace phonglab;
 using namespace phonglab::test;
@@ -48,50 +48,6 @@ MeshPtr withFaceNormals(const MeshData &mesh)
         }
     }
     return flat;
-}
-
-// The camera turned by a fraction of a pixel: every pixel centre moves by
-// about (dx, dy) pixels (exactly at the image centre, up to 17% more at the
-// corners of a 45° view), with no parallax since the eye stays put.
-Scene withPixelShift(Scene scene, int side, double dx, double dy)
-{
-    const double tanHalfFov = std::tan(glm::radians(scene.camera.fovDeg) * 0.5);
-    const glm::dvec3 forward = scene.camera.target - scene.camera.eye;
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
-    const glm::dvec3 up = glm::normalize(glm::cross(right, forward));
-    glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), -2.0 * dx / side * tanHalfFov, up);
-    turn = glm::rotate(turn, -2.0 * dy / side * tanHalfFov, right);
-    scene.camera.target = scene.camera.eye + glm::dvec3(turn * glm::dvec4(forward, 0.0));
-    return scene;
-}
-
-// Pixels whose surface the GPU may legitimately pick differently from the
-// exact reference: a rasteriser snaps vertices to 1/2^SUBPIXEL_BITS of a
-// pixel, so a pixel centre closer than that to an occluding edge (the outer
-// silhouette, or one part of a mesh in front of another, like the tree's
-// tiers) can show either surface. Found by ray-casting with every pixel
-// centre moved by ±step: where the coverage changes or the depth jumps, the
-// pixel is ambiguous. A jump is more than 0.1 % of the depth: over 1/16 px
-// or less (~2e-4 rad at 256 px) a continuous surface changes its depth by
-// that much only when seen within a fraction of a degree of edge-on, while
-// the tree's tiers overlap with gaps of under 1 % (the case that made this
-// necessary: pixel (32, 114) at 256², 0.0008 px from a tier's lower edge).
-std::vector<std::uint8_t> ambiguousPixels(const Scene &scene, const std::vector<MeshPtr> &meshes,
-                                          const ReferenceImage &reference, ReferenceShading shading, double step)
-{
-    std::vector<std::uint8_t> ambiguous(reference.coverage.size(), 0);
-    const int side = reference.width;
-    for (const auto &[dx, dy] : {std::pair{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}}) {
-        const std::optional<ReferenceImage> shifted =
-            raycastSceneMeshes(withPixelShift(scene, side, dx, dy), meshes, side, side, shading);
-        if (!shifted)
-            qFatal("shifted reference failed");
-        for (std::size_t i = 0; i < ambiguous.size(); ++i)
-            if (shifted->coverage[i] != reference.coverage[i]
-                || (reference.coverage[i] && std::abs(shifted->depth[i] - reference.depth[i]) > 1e-3 * reference.depth[i]))
-                ambiguous[i] = 1;
-    }
-    return ambiguous;
 }
 
 struct Variant {
@@ -133,18 +89,24 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
     GLint subpixelBits = 0;
     offscreen.makeCurrent();
     QOpenGLContext::currentContext()->functions()->glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
-    // OpenGL requires at least 4 bits; snapping moves an edge by at most
-    // half a step, so one whole step is a margin of two.
+    // OpenGL requires at least 4 bits (ambiguousReferencePixels counts
+    // fewer as 4 too); snapping moves an edge by at most half a step, so one
+    // whole step is a margin of two.
     const double step = std::ldexp(1.0, -std::max(subpixelBits, 4));
 
     std::optional<ReferenceImage> reference =
         raycastSceneMeshes(scene, perObject, variant.side, variant.side, variant.reference, &check.error);
     if (!reference)
         return check;
-    // Ambiguous pixels count as uncovered, so the comparison leaves out the
-    // same silhouette band around them as around the outer outline.
+    // Pixels a rasteriser may legitimately give either surface (a centre
+    // within one sub-pixel step of an occluding edge: the outline, or one
+    // part of a mesh in front of another, like the tree's tiers) count as
+    // uncovered, so the comparison leaves out the same silhouette band
+    // around them as around the outer outline.
     const std::vector<std::uint8_t> ambiguous =
-        ambiguousPixels(scene, perObject, *reference, variant.reference, step);
+        ambiguousReferencePixels(scene, perObject, variant.side, variant.side, subpixelBits, &check.error);
+    if (ambiguous.empty())
+        return check;
     qint64 ambiguousCount = 0;
     for (std::size_t i = 0; i < ambiguous.size(); ++i) {
         if (!ambiguous[i] || !reference->coverage[i])

@@ -1,0 +1,82 @@
+#include "ReferenceEdges.h"
+
+#include "MeshRaycaster.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <system_error>
+#include <thread>
+
+namespace phonglab {
+
+namespace {
+
+// Relative size of a jump in inverse depth (about the same relative jump in
+// depth) that counts as an occluding edge; see the header.
+constexpr double kJumpTolerance = 1e-3;
+
+// Whether a, c, b (inverse depths at -step, 0, +step along one axis) lie on
+// one continuous surface.
+bool continuous(double a, double c, double b)
+{
+    return std::abs(a + b - 2.0 * c) <= kJumpTolerance * c;
+}
+
+void classifyRow(const SceneDepthCaster &caster, double step, std::uint8_t *row, int y)
+{
+    const double py = y + 0.5;
+    for (int x = 0; x < caster.width(); ++x) {
+        const double px = x + 0.5;
+        const double centre = caster.depthAt(px, py);
+        const double shifted[4] = {caster.depthAt(px - step, py), caster.depthAt(px + step, py),
+                                   caster.depthAt(px, py - step), caster.depthAt(px, py + step)};
+        const bool covered = std::isfinite(centre);
+        bool ambiguous = false;
+        for (const double depth : shifted)
+            ambiguous = ambiguous || std::isfinite(depth) != covered;
+        if (covered && !ambiguous)
+            ambiguous = !continuous(1.0 / shifted[0], 1.0 / centre, 1.0 / shifted[1])
+                || !continuous(1.0 / shifted[2], 1.0 / centre, 1.0 / shifted[3]);
+        row[x] = ambiguous ? 1 : 0;
+    }
+}
+
+} // namespace
+
+std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
+                                                   const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                   int width, int height, int subpixelBits, QString *error)
+{
+    const std::unique_ptr<SceneDepthCaster> caster = SceneDepthCaster::create(scene, objectMeshes, width, height, error);
+    if (!caster)
+        return {};
+    // OpenGL requires at least 4 sub-pixel bits; more than 30 would only
+    // test the rounding of double.
+    const double step = std::ldexp(1.0, -std::clamp(subpixelBits, 4, 30));
+    std::vector<std::uint8_t> mask(std::size_t(width) * std::size_t(height), 0);
+
+    // Rows from a shared counter, as in raycastSceneMeshes(); each pixel
+    // depends on its own rays only, so the mask is the same for any number
+    // of threads.
+    std::atomic<int> nextRow{0};
+    const auto work = [&] {
+        for (int y; (y = nextRow.fetch_add(1, std::memory_order_relaxed)) < height;)
+            classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y);
+    };
+    const int threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> helpers;
+    for (int i = 1; i < std::min(threadCount, height); ++i) {
+        try {
+            helpers.emplace_back(work);
+        } catch (const std::system_error &) {
+            break; // fewer helpers, same mask
+        }
+    }
+    work();
+    for (std::thread &helper : helpers)
+        helper.join();
+    return mask;
+}
+
+} // namespace phonglab
