@@ -20,6 +20,11 @@ struct SceneObject {
     Transform transform;
     Material material;
     NormalOptions normals; // how the mesh gets normals (file's, or computed)
+    // Fraction of the full triangle count to draw: 1 = the mesh as loaded;
+    // < 1 = decimated (files, mesh/MeshDecimation) or tessellated coarser
+    // (builtins). In (0, 1]. Lets the bench store the level of detail a
+    // scene needs.
+    double detail = 1.0;
 
     bool operator==(const SceneObject &) const = default;
 };

@@ -64,6 +64,7 @@ private:
     bool readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out);
     bool readSingleObject(const QJsonObject &root, SceneObject &out);
     bool readNormals(const QJsonValue &value, const QString &path, NormalOptions &out);
+    bool readDetail(const QJsonValue &value, const QString &path, double &out);
     bool readObjects(const QJsonObject &root, std::vector<SceneObject> &out);
 
     QString m_error;
@@ -351,11 +352,12 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path, s
         QJsonObject object;
         if (!readObject(array.at(i), objectPath, object))
             return false;
-        warnUnknownKeys(object, objectPath, {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1});
+        warnUnknownKeys(object, objectPath, {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1});
         if (!readMesh(object.value("mesh"_L1), childPath(objectPath, "mesh"_L1), objects[i].mesh)
             || !readTransform(object.value("transform"_L1), childPath(objectPath, "transform"_L1), objects[i].transform)
             || !readMaterial(object.value("material"_L1), childPath(objectPath, "material"_L1), objects[i].material)
-            || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1), objects[i].normals))
+            || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1), objects[i].normals)
+            || !readDetail(object.value("detail"_L1), childPath(objectPath, "detail"_L1), objects[i].detail))
             return false;
     }
     out = std::move(objects);
@@ -367,12 +369,31 @@ bool SceneReader::readSingleObject(const QJsonObject &root, SceneObject &out)
     return readMesh(root.value("mesh"_L1), QStringLiteral("mesh"), out.mesh)
         && readTransform(root.value("transform"_L1), QStringLiteral("transform"), out.transform)
         && readMaterial(root.value("material"_L1), QStringLiteral("material"), out.material)
-        && readNormals(root.value("normals"_L1), QStringLiteral("normals"), out.normals);
+        && readNormals(root.value("normals"_L1), QStringLiteral("normals"), out.normals)
+        && readDetail(root.value("detail"_L1), QStringLiteral("detail"), out.detail);
 }
 
 bool SceneReader::readNormals(const QJsonValue &value, const QString &path, NormalOptions &out)
 {
     return scenejson::readNormalOptions(value, path, out, &m_error);
+}
+
+// A fraction of the full triangle count: 0 would draw nothing, and more
+// than the mesh has cannot be made.
+bool SceneReader::readDetail(const QJsonValue &value, const QString &path, double &out)
+{
+    if (value.isUndefined())
+        return true;
+    const QString expected = QStringLiteral("expected a number in (0, 1]");
+    if (const auto literal = overflowLiteral(value))
+        return fail(path, expected + QStringLiteral(", got %1").arg(*literal));
+    if (!value.isDouble())
+        return fail(path, expected + QStringLiteral(", got %1").arg(describeType(value)));
+    const double detail = value.toDouble();
+    if (!(detail > 0.0 && detail <= 1.0))
+        return fail(path, expected + QStringLiteral(", got %1").arg(number(detail)));
+    out = detail;
+    return true;
 }
 
 bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> &out)
@@ -385,7 +406,7 @@ bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> 
         return fail(QStringLiteral("mesh"), QStringLiteral("required field missing (or give \"objects\")"));
     if (hasObjects) {
         // Top-level transform/material belong to the single-object form only.
-        for (const auto key : {"transform"_L1, "material"_L1, "normals"_L1})
+        for (const auto key : {"transform"_L1, "material"_L1, "normals"_L1, "detail"_L1})
             if (root.contains(key))
                 m_warnings << QString(key) + QStringLiteral(": ignored with \"objects\" (give each object its own)");
         return readObjectList(root.value("objects"_L1), QStringLiteral("objects"), out);
@@ -406,7 +427,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     }
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
-                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "camera"_L1,
+                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1, "camera"_L1,
                      "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1,
                      "uniforms"_L1});
     Scene scene;

@@ -75,6 +75,9 @@ void insertObject(QJsonObject &into, const SceneObject &object)
     into.insert(QStringLiteral("material"), materialJson(object.material));
     if (object.normals != NormalOptions{})
         into.insert(QStringLiteral("normals"), scenejson::normalOptionsJson(object.normals));
+    // Only when reduced, so files from before "detail" keep their shape.
+    if (object.detail != 1.0)
+        into.insert(QStringLiteral("detail"), object.detail);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "BuiltinMeshes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -29,9 +30,13 @@ MeshData makeUvSphere(int slices, int stacks)
     constexpr double pi = std::numbers::pi;
     for (int r = 0; r <= stacks; ++r) {
         const double theta = pi * r / stacks; // 0 at +Y pole
+        // Exactly 0 at both poles and the seam column exactly the first one
+        // (sin(pi) and sin(2 pi) are not 0 in floating point): the copies of
+        // a point are then the same point, which welding (decimation) needs.
+        const double ringRadius = (r == 0 || r == stacks) ? 0.0 : std::sin(theta);
         for (int c = 0; c <= slices; ++c) {
-            const double phi = 2.0 * pi * c / slices;
-            const glm::dvec3 p(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+            const double phi = 2.0 * pi * (c % slices) / slices;
+            const glm::dvec3 p(ringRadius * std::sin(phi), std::cos(theta), ringRadius * std::cos(phi));
             mesh.positions.emplace_back(p);
             mesh.normals.emplace_back(p);
         }
@@ -45,9 +50,10 @@ MeshData makeTorus(int ringSegments, int tubeSegments, double majorRadius, doubl
     MeshData mesh;
     constexpr double pi = std::numbers::pi;
     for (int t = 0; t <= tubeSegments; ++t) {
-        const double v = 2.0 * pi * t / tubeSegments; // around the tube
+        // The last row and column repeat the first exactly (see makeUvSphere).
+        const double v = 2.0 * pi * (t % tubeSegments) / tubeSegments; // around the tube
         for (int r = 0; r <= ringSegments; ++r) {
-            const double u = 2.0 * pi * r / ringSegments; // around Y
+            const double u = 2.0 * pi * (r % ringSegments) / ringSegments; // around Y
             const glm::dvec3 ringDir(std::sin(u), 0.0, std::cos(u));
             const glm::dvec3 normal = std::cos(v) * ringDir + glm::dvec3(0.0, std::sin(v), 0.0);
             mesh.positions.emplace_back(majorRadius * ringDir + minorRadius * normal);
@@ -96,13 +102,38 @@ bool isBuiltinMeshSpec(const QString &spec)
 
 std::optional<MeshData> builtinMesh(const QString &spec)
 {
-    if (spec == QLatin1String("builtin:sphere"))
-        return makeUvSphere(256, 128);
-    if (spec == QLatin1String("builtin:torus"))
-        return makeTorus(192, 96);
+    return builtinMesh(spec, 1.0);
+}
+
+std::optional<BuiltinTessellation> builtinTessellation(const QString &spec, double detail)
+{
+    const bool sphere = spec == QLatin1String("builtin:sphere");
+    if (!sphere && spec != QLatin1String("builtin:torus"))
+        return std::nullopt;
+    // Both counts scale by sqrt(detail), so the triangle count scales by detail.
+    const double scale = (detail > 0.0 && detail <= 1.0) ? std::sqrt(detail) : 1.0;
+    const BuiltinTessellation full = sphere ? BuiltinTessellation{256, 128} : BuiltinTessellation{192, 96};
+    return BuiltinTessellation{std::max(kMinBuiltinColumns, int(std::lround(full.columns * scale))),
+                               std::max(kMinBuiltinRows, int(std::lround(full.rows * scale)))};
+}
+
+std::optional<MeshData> builtinMesh(const QString &spec, double detail)
+{
+    if (const auto grid = builtinTessellation(spec, detail)) {
+        if (spec == QLatin1String("builtin:sphere"))
+            return makeUvSphere(grid->columns, grid->rows);
+        return makeTorus(grid->columns, grid->rows);
+    }
     if (spec == QLatin1String("builtin:cube"))
         return makeCube();
     return std::nullopt;
+}
+
+QString builtinDetailLabel(const QString &spec, double detail)
+{
+    if (const auto grid = builtinTessellation(spec, detail))
+        return QStringLiteral("%1\u00d7%2").arg(grid->columns).arg(grid->rows);
+    return spec == QLatin1String("builtin:cube") ? QStringLiteral("6 faces") : QString();
 }
 
 } // namespace phonglab

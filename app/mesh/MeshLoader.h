@@ -24,6 +24,12 @@ struct MeshStats {
     bool closed = false;       // every edge has exactly two faces (safe to cull back faces)
     bool fromCache = false;    // read back from MeshCache, not parsed
     double loadMs = 0.0;
+    // A scene object's "detail" (SceneMeshes): the fraction asked for and the
+    // triangles of the full mesh; vertices, triangles, bounds and closed then
+    // describe the reduced mesh that is drawn. Not stored in MeshCache,
+    // which keeps the full mesh.
+    double detail = 1.0;
+    qint64 fullTriangles = 0;  // set only when detail != 1
 };
 
 struct MeshLoadResult {

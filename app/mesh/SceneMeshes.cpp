@@ -1,18 +1,94 @@
 #include "SceneMeshes.h"
 
+#include "BuiltinMeshes.h"
+#include "MeshDecimation.h"
+
+#include <QElapsedTimer>
+#include <QLocale>
 #include <QSet>
 
+#include <algorithm>
+#include <array>
+#include <bit>
+
 namespace phonglab {
+
+namespace {
+
+QString detailSuffix(double detail)
+{
+    if (detail == 1.0)
+        return {};
+    // Shortest round-trip form: "0.25", and two details differ in the key
+    // exactly when they differ as numbers.
+    return QStringLiteral("|detail=") + QString::number(detail, 'g', QLocale::FloatingPointShortest);
+}
+
+void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
+{
+    s.vertices = qint64(mesh.positions.size());
+    s.triangles = qint64(mesh.triangleCount());
+    if (countSplits) {
+        // GPU vertices beyond one per position (exact bits, -0 = +0), as MeshBuilder counts them.
+        const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); };
+        std::vector<std::array<std::uint32_t, 3>> keys;
+        keys.reserve(mesh.positions.size());
+        for (const glm::vec3 &p : mesh.positions)
+            keys.push_back({bits(p.x), bits(p.y), bits(p.z)});
+        std::sort(keys.begin(), keys.end());
+        const auto distinct = qint64(std::unique(keys.begin(), keys.end()) - keys.begin());
+        s.splitVertices = s.vertices - distinct;
+    }
+    if (!mesh.positions.empty()) {
+        s.boundsMin = s.boundsMax = mesh.positions.front();
+        for (const glm::vec3 &p : mesh.positions) {
+            s.boundsMin = glm::min(s.boundsMin, p);
+            s.boundsMax = glm::max(s.boundsMax, p);
+        }
+    }
+}
+
+// Replaces the full mesh with the one drawn at `detail`: builtins
+// tessellated coarser, files decimated (the mesh cache keeps the full one).
+void applyDetail(MeshLoadResult &loaded, const QString &spec, double detail)
+{
+    if (detail == 1.0 || !loaded.mesh)
+        return;
+    QElapsedTimer timer;
+    timer.start();
+    MeshStats &s = loaded.stats;
+    s.detail = detail;
+    s.fullTriangles = s.triangles;
+    if (isBuiltinMeshSpec(spec)) {
+        if (std::optional<MeshData> coarse = builtinMesh(spec, detail))
+            *loaded.mesh = std::move(*coarse);
+        fillDrawnStats(*loaded.mesh, s, false);
+        s.fileVertices = s.vertices; // as loadMesh counts builtins
+        s.fileFaces = s.triangles;
+    } else {
+        QString note;
+        *loaded.mesh = decimateMesh(*loaded.mesh, detail, &note);
+        if (!note.isEmpty())
+            loaded.warnings << QStringLiteral("detail %1: %2").arg(detail).arg(note);
+        fillDrawnStats(*loaded.mesh, s, true);
+        // Decimation keeps a closed surface closed unless it had to leave
+        // faces out; check rather than assume (back faces are culled on it).
+        s.closed = s.closed && isClosedMesh(*loaded.mesh);
+    }
+    s.loadMs += timer.nsecsElapsed() / 1e6;
+}
+
+} // namespace
 
 QString meshKey(const Scene &scene, const SceneObject &object)
 {
     const QString spec = scene.resolveMeshPath(object.mesh);
     if (spec.startsWith(QLatin1String("builtin:")))
-        return spec; // analytic normals: the options do not apply
+        return spec + detailSuffix(object.detail); // analytic normals: the options do not apply
     QString key = spec + QLatin1Char('|') + normalMethodName(object.normals.method);
     if (object.normals.creaseAngleDeg)
         key += QLatin1Char('|') + QString::number(*object.normals.creaseAngleDeg, 'g', 17);
-    return key;
+    return key + detailSuffix(object.detail);
 }
 
 SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded,
@@ -36,12 +112,15 @@ SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoad
             const double from = double(i) / todo.size(), to = double(i + 1) / todo.size();
             part = [&progress, from, to](double f) { return progress(from + (to - from) * f); };
         }
-        MeshLoadResult loaded = loadMesh(scene.resolveMeshPath(object.mesh), object.normals, part);
+        // The full mesh first (what the mesh cache holds), then its level of detail.
+        const QString spec = scene.resolveMeshPath(object.mesh);
+        MeshLoadResult loaded = loadMesh(spec, object.normals, part);
         if (!loaded.ok()) {
             result.entries.clear();
             result.error = loaded.error;
             return result;
         }
+        applyDetail(loaded, spec, object.detail);
         SceneMeshes::Entry entry;
         entry.mesh = std::make_shared<const MeshData>(std::move(*loaded.mesh));
         entry.stats = loaded.stats;

@@ -46,4 +46,13 @@ QString countText(qint64 count)
     return QLocale().toString(count);
 }
 
+QString detailDescription(const MeshStats &stats)
+{
+    if (stats.detail == 1.0)
+        return {};
+    return QObject::tr("%1 %: %2 of %3 triangles")
+        .arg(QLocale().toString(stats.detail * 100.0, 'g', 4), countText(stats.triangles),
+             countText(stats.fullTriangles));
+}
+
 } // namespace phonglab

@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QStyle>
 #include <QTreeWidget>
@@ -98,6 +99,8 @@ void SceneDock::addObject(int index, const SceneObject &object, const SceneMeshe
     }
     // Warnings first: they are what must not be cut off in a narrow dock.
     QString summary = tr("%1 triangles").arg(countText(entry->stats.triangles));
+    if (entry->stats.detail != 1.0)
+        summary += tr(" (detail %1 %)").arg(QLocale().toString(entry->stats.detail * 100.0, 'g', 4));
     if (!entry->warnings.isEmpty()) {
         const qsizetype count = entry->warnings.size();
         summary = (count == 1 ? tr("1 warning") : tr("%1 warnings").arg(count)) + QStringLiteral(" · ") + summary;
@@ -113,6 +116,11 @@ void SceneDock::addStats(QTreeWidgetItem *item, const SceneMeshes::Entry &entry,
     const MeshStats &stats = entry.stats;
     addField(item, tr("Vertices"), countText(stats.vertices));
     addField(item, tr("Triangles"), countText(stats.triangles));
+    // The counts above are the reduced mesh's; say so, and what it came from.
+    if (const QString detail = detailDescription(stats); !detail.isEmpty())
+        addField(item, tr("Detail"), detail)
+            ->setToolTip(0, builtin ? tr("Tessellated coarser (the object's \"detail\")")
+                                    : tr("Decimated from the loaded mesh (the object's \"detail\")"));
     addField(item, tr("Split vertices"), countText(stats.splitVertices))
         ->setToolTip(0, tr("Vertices duplicated where a position has several normals"));
     if (!builtin)

@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
@@ -36,6 +37,7 @@ Scene fullScene()
     torus.transform.scale = {0.8, 0.8, 0.8};
     torus.material.kd = {0.9, 0.1, 0.1};
     torus.material.shininess = 8.0;
+    torus.detail = 0.0625; // a level of detail; the bunny keeps the default 1
     scene.objects = {bunny, torus};
 
     scene.camera.eye = {1.0, 2.0, 6.0};
@@ -95,6 +97,7 @@ private slots:
     void saveIntoMissingDirectoryFails();
     void saveRefusesInvalidSceneAndKeepsOldFile();
     void docExampleLoadsCleanly();
+    void detailRoundTripsAndDefaultsAreNotWritten();
 };
 
 void TestSceneJson::roundTripFullScene()
@@ -195,6 +198,14 @@ void TestSceneJson::rejectsBadInput_data()
         "objects[1].transform.scale[2]:", "0");
     row("object shininess zero", R"({"objects": [{"mesh": "a", "material": {"shininess": 0}}]})",
         "objects[0].material.shininess:");
+    row("detail zero", R"({"objects": [{"mesh": "a"}, {"mesh": "b", "detail": 0}]})",
+        "objects[1].detail: expected a number in (0, 1], got 0");
+    row("detail negative", R"({"objects": [{"mesh": "a", "detail": -0.5}]})", "objects[0].detail:", "got -0.5");
+    row("detail above one", R"({"objects": [{"mesh": "a", "detail": 1.5}]})", "objects[0].detail:", "(0, 1]");
+    row("detail string", R"({"objects": [{"mesh": "a", "detail": "0.5"}]})", "objects[0].detail:", "got string");
+    row("detail null", R"({"objects": [{"mesh": "a", "detail": null}]})", "objects[0].detail:", "got null");
+    row("detail overflow", R"({"objects": [{"mesh": "a", "detail": 1e999}]})", "objects[0].detail:", "(0, 1]");
+    row("single-object detail zero", withSphere(R"("detail": 0)"), "detail: expected a number in (0, 1], got 0");
 
     // Transform
     row("transform not object", withSphere(R"("transform": [1, 2, 3])"), "transform:", "expected an object");
@@ -431,6 +442,36 @@ void TestSceneJson::docExampleLoadsCleanly()
         ++examples;
     }
     QVERIFY(examples >= 1);
+}
+
+// "detail" is written only when it is not 1, in both forms, and reads back
+// exactly; a top-level "detail" next to "objects" is ignored with a warning.
+void TestSceneJson::detailRoundTripsAndDefaultsAreNotWritten()
+{
+    const Scene scene = fullScene();
+    const QJsonObject root = QJsonDocument::fromJson(sceneToJson(scene)).object();
+    const QJsonArray objects = root.value(QStringLiteral("objects")).toArray();
+    QVERIFY(!objects.at(0).toObject().contains(QStringLiteral("detail")));
+    QCOMPARE(objects.at(1).toObject().value(QStringLiteral("detail")).toDouble(), 0.0625);
+
+    Scene single = sphereScene();
+    QVERIFY(!QJsonDocument::fromJson(sceneToJson(single)).object().contains(QStringLiteral("detail")));
+    single.objects.front().detail = 0.1; // not a binary fraction: must still read back exactly
+    const QByteArray json = sceneToJson(single);
+    QCOMPARE(QJsonDocument::fromJson(json).object().value(QStringLiteral("detail")).toDouble(), 0.1);
+    const SceneLoadResult back = parseScene(json);
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QVERIFY2(back.warnings.isEmpty(), qPrintable(back.warnings.join(u'\n')));
+    QVERIFY(*back.scene == single);
+
+    const SceneLoadResult one = parseScene(R"({"objects": [{"mesh": "a", "detail": 1}]})");
+    QVERIFY2(one.ok(), qPrintable(one.error));
+    QCOMPARE(one.scene->objects.front().detail, 1.0);
+
+    const SceneLoadResult ignored = parseScene(R"({"objects": [{"mesh": "a"}], "detail": 0.5})");
+    QVERIFY2(ignored.ok(), qPrintable(ignored.error));
+    QCOMPARE(ignored.scene->objects.front().detail, 1.0);
+    QVERIFY(ignored.warnings.join(u'\n').contains(QStringLiteral("detail: ignored")));
 }
 
 QTEST_GUILESS_MAIN(TestSceneJson)
