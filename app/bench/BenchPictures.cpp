@@ -7,7 +7,7 @@
 namespace phonglab {
 
 QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
-                     int bandPx, const QString &caption)
+                     int bandPx, const std::vector<std::uint8_t> *compared, const QString &caption)
 {
     const int w = rendered.width(), h = rendered.height();
     constexpr int kGap = 4;
@@ -17,7 +17,7 @@ QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, co
     QPainter painter(&out);
     painter.drawImage(0, kCaption, rendered);
     painter.drawImage(w + kGap, kCaption, reference.toImage(background));
-    painter.drawImage(2 * (w + kGap), kCaption, errorHeatmap(rendered, reference, bandPx));
+    painter.drawImage(2 * (w + kGap), kCaption, errorHeatmap(rendered, reference, bandPx, compared));
     painter.setPen(QColor(235, 235, 235));
     QFont font = painter.font();
     font.setPixelSize(14);

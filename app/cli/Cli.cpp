@@ -1,5 +1,6 @@
 #include "Cli.h"
 
+#include "BenchCommand.h"
 #include "CliCommon.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
@@ -19,6 +20,7 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a scene offscreen into a PNG", runRender},
     {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
+    {"bench", "measure speed against accuracy of every shading method and detail", runBench},
 };
 
 void printHelp()

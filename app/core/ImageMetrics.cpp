@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace phonglab {
@@ -209,6 +210,36 @@ BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &
     return out;
 }
 
+std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference, double relativeJump)
+{
+    const int w = reference.width, h = reference.height;
+    std::vector<std::uint8_t> contour(reference.color.size(), 0);
+    auto inverseDepth = [&](int x, int y) { return 1.0 / reference.depthAt(x, y); };
+    auto covered = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && reference.covered(x, y); };
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (!covered(x, y))
+                continue;
+            const double here = inverseDepth(x, y);
+            for (const auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                if (!covered(x - dx, y - dy) || !covered(x + dx, y + dy))
+                    continue; // the outline: the coverage band handles it
+                const double second = inverseDepth(x + dx, y + dy) + inverseDepth(x - dx, y - dy) - 2.0 * here;
+                if (std::abs(second) > relativeJump * here)
+                    contour[reference.index(x, y)] = 1;
+            }
+        }
+    }
+    return contour;
+}
+
+std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height, int r)
+{
+    if (mask.size() != std::size_t(width) * std::size_t(height))
+        return {};
+    return dilateSquare(mask, width, height, std::max(r, 0));
+}
+
 ImageComparison compareImages(const QImage &a, const QImage &b)
 {
     if (a.isNull() || b.isNull() || a.size() != b.size())
@@ -225,12 +256,16 @@ ImageComparison compareImages(const QImage &a, const QImage &b)
     return errors.result();
 }
 
-QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx)
+QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx,
+                    const std::vector<std::uint8_t> *alsoCompared)
 {
     if (!sameSize(rendered, reference))
         return {};
     const QImage image = toRgb888(rendered);
-    const std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
+    std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
+    if (alsoCompared && alsoCompared->size() == compared.size())
+        for (std::size_t i = 0; i < compared.size(); ++i)
+            compared[i] = compared[i] && (*alsoCompared)[i];
     QImage heatmap(reference.width, reference.height, QImage::Format_RGB32);
     for (int y = 0; y < reference.height; ++y) {
         const uchar *row = image.constScanLine(y);

@@ -41,13 +41,28 @@ BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &
                                   const glm::dvec3 &background, int bandPx,
                                   const std::vector<std::uint8_t> *mask = nullptr);
 
+// Pixels next to an occluding contour inside the reference: where one
+// surface passes in front of another, so the covered pixels on either side
+// belong to different surfaces (the tree's tiers). Judged per axis on the
+// second difference of inverse depth over neighbouring pixels, which is zero
+// on any plane whatever its angle and small on smooth surfaces, and jumps
+// across an occlusion: flagged where it exceeds `relativeJump` · 1/z.
+// Together with the outline these are the silhouettes the bench's band
+// leaves out.
+std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference, double relativeJump = 0.002);
+
+// Every pixel within Chebyshev distance r of a set pixel of `mask`.
+std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height, int r);
+
 // Every pixel, R, G and B.
 ImageComparison compareImages(const QImage &a, const QImage &b);
 
 // A picture of where compareWithReference() found errors, for saving next to a
 // failing test: compared pixels ramp from dark green (exact) through yellow to
 // red (8/255 or more off), band pixels are dark blue, uncovered ones black.
-// Null on a size mismatch.
-QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx);
+// Null on a size mismatch. With `alsoCompared`, pixels where it is 0 count
+// as band too (the bench's occluding contours).
+QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx,
+                    const std::vector<std::uint8_t> *alsoCompared = nullptr);
 
 } // namespace phonglab

@@ -224,6 +224,36 @@ private slots:
         QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1, &wrong).error.pixelsCompared, qint64(0));
     }
 
+    // A plane seen at any angle has 1/z affine in the image: no contour
+    // however fast its depth changes. A step between two surfaces is one.
+    void occludingContours()
+    {
+        ReferenceImage ref(40, 20);
+        for (int y = 0; y < 20; ++y) {
+            for (int x = 0; x < 40; ++x) {
+                ref.coverage[ref.index(x, y)] = 1;
+                ref.depth[ref.index(x, y)] = 1.0 / (0.9 - 0.02 * x + 0.005 * y); // steep plane
+            }
+        }
+        for (std::uint8_t c : occludingContourPixels(ref))
+            QCOMPARE(c, std::uint8_t(0));
+        // Columns 20.. move 1 % further away: another surface behind the first.
+        for (int y = 0; y < 20; ++y)
+            for (int x = 20; x < 40; ++x)
+                ref.depth[ref.index(x, y)] *= 1.01;
+        const std::vector<std::uint8_t> contour = occludingContourPixels(ref);
+        for (int y = 0; y < 20; ++y) {
+            for (int x = 0; x < 40; ++x) {
+                const bool atStep = x == 19 || x == 20;
+                QVERIFY2(bool(contour[ref.index(x, y)]) == atStep, qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
+            }
+        }
+        const std::vector<std::uint8_t> wide = dilatePixels(contour, 40, 20, 2);
+        QCOMPARE(wide[ref.index(17, 5)], std::uint8_t(1));
+        QCOMPARE(wide[ref.index(16, 5)], std::uint8_t(0));
+        QVERIFY(dilatePixels(contour, 41, 20, 2).empty()); // wrong size: nothing, no overrun
+    }
+
     void heatmap()
     {
         QImage rendered = squareRender();

@@ -1,0 +1,289 @@
+#include "BenchEngine.h"
+
+#include "BenchPictures.h"
+#include "LightSetups.h"
+#include "core/AnalyticRaycaster.h"
+#include "core/ImageMetrics.h"
+#include "core/MeshRaycaster.h"
+#include "core/ReferenceEdges.h"
+#include "core/SceneJson.h"
+#include "mesh/BuiltinMeshes.h"
+#include "mesh/SceneMeshes.h"
+#include "render/OffscreenRenderer.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <set>
+
+namespace phonglab {
+
+struct BenchEngine::SceneRun {
+    QString name;
+    Scene scene;
+    std::vector<std::shared_ptr<const MeshData>> fullMeshes; // per object; null = analytic builtin
+    std::vector<int> lightCounts;
+    int ownLights = 0;
+    std::vector<ReferenceImage> references;           // per light count
+    std::vector<std::uint8_t> compared;               // 1 away from every silhouette (lights do not move them)
+    std::vector<std::vector<std::uint8_t>> specular;  // compared ∧ highlight, per light count
+};
+
+namespace {
+
+std::vector<std::uint8_t> highlightMask(const ReferenceImage &reference, const std::vector<std::uint8_t> &compared,
+                                        double threshold)
+{
+    std::vector<std::uint8_t> mask(reference.color.size(), 0);
+    if (reference.specular.size() != mask.size())
+        return mask;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        const glm::dvec3 &s = reference.specular[i];
+        mask[i] = compared[i] && reference.coverage[i] && std::max({s.r, s.g, s.b}) >= threshold;
+    }
+    return mask;
+}
+
+// "Away from silhouettes": not within bandPx of an occluding contour inside
+// the image (one part of a mesh in front of another) nor of a pixel the GPU
+// may legitimately cover either way at its sub-pixel precision. The outline
+// band itself is compareOutsideBand()'s.
+std::vector<std::uint8_t> awayFromContours(const ReferenceImage &reference, const Scene &scene,
+                                           const std::vector<std::shared_ptr<const MeshData>> &meshes,
+                                           int bandPx, QString *error)
+{
+    std::vector<std::uint8_t> edges = occludingContourPixels(reference);
+    const std::vector<std::uint8_t> ambiguous = ambiguousReferencePixels(
+        scene, meshes, reference.width, reference.height, kDefaultSubpixelBits, error);
+    if (ambiguous.size() != edges.size())
+        return {};
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        edges[i] = edges[i] || ambiguous[i];
+    std::vector<std::uint8_t> compared = dilatePixels(edges, reference.width, reference.height, bandPx);
+    for (auto &c : compared)
+        c = !c;
+    return compared;
+}
+
+Scene withLights(Scene scene, int count)
+{
+    scene.lights = lightsForCount(scene, count);
+    return scene;
+}
+
+Scene withDetail(Scene scene, double detail)
+{
+    for (SceneObject &object : scene.objects)
+        object.detail = detail;
+    return scene;
+}
+
+QString percentText(double detail)
+{
+    const double pct = detail * 100.0;
+    return QString::number(pct, 'g', pct >= 10 ? 3 : 2) + QStringLiteral(" %");
+}
+
+} // namespace
+
+std::vector<int> benchLightCounts(const BenchOptions &options, int sceneLights)
+{
+    std::set<int> counts;
+    for (int c : options.lightCounts)
+        counts.insert(std::clamp(c, 1, kMaxLights));
+    if (options.sceneLights)
+        counts.insert(std::clamp(sceneLights, 0, kMaxLights));
+    return {counts.begin(), counts.end()};
+}
+
+int benchConfigurationCount(const BenchOptions &options, const std::vector<int> &sceneLightCounts)
+{
+    int total = 0;
+    for (int own : sceneLightCounts)
+        total += int(options.details.size() * options.methods.size() * benchLightCounts(options, own).size());
+    return total;
+}
+
+BenchEngine::BenchEngine() = default;
+BenchEngine::~BenchEngine() = default;
+
+bool BenchEngine::initialize(QString *error)
+{
+    m_offscreen = std::make_unique<OffscreenRenderer>();
+    if (m_offscreen->create(error))
+        return true;
+    m_offscreen.reset();
+    return false;
+}
+
+QString BenchEngine::glRendererName() const
+{
+    return m_offscreen ? m_offscreen->glRendererName() : QString();
+}
+
+bool BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, QString *error,
+                      const BenchProgressFn &progress)
+{
+    if (!m_offscreen) {
+        *error = QStringLiteral("the bench has no OpenGL context (initialize() failed or was not called)");
+        return false;
+    }
+    // Load every scene first: a bad file fails the run before any measuring,
+    // and the progress total is known from the start.
+    std::vector<SceneRun> runs(std::size_t(options.scenes.size()));
+    std::vector<int> own;
+    for (qsizetype i = 0; i < options.scenes.size(); ++i) {
+        const QString &path = options.scenes[i];
+        const SceneLoadResult loaded = loadSceneFile(path);
+        if (!loaded.ok()) {
+            *error = QStringLiteral("%1: %2").arg(path, loaded.error);
+            return false;
+        }
+        SceneRun &state = runs[std::size_t(i)];
+        state.name = QFileInfo(path).completeBaseName();
+        state.scene = *loaded.scene;
+        state.ownLights = enabledLightCount(state.scene);
+        state.lightCounts = benchLightCounts(options, state.ownLights);
+        own.push_back(state.ownLights);
+    }
+    m_done = 0;
+    m_total = benchConfigurationCount(options, own);
+    for (qsizetype i = 0; i < options.scenes.size(); ++i)
+        if (!runScene(options, options.scenes[i], runs[std::size_t(i)], rows, error, progress))
+            return false;
+    return true;
+}
+
+bool BenchEngine::runScene(const BenchOptions &options, const QString &path, SceneRun &state,
+                           std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress)
+{
+    auto report = [&](const QString &stage) {
+        return !progress || progress(BenchProgress{m_done, m_total, stage, nullptr});
+    };
+    // The reference always sees the full-resolution meshes: it is the exact
+    // answer every detail level is measured against.
+    const Scene full = withDetail(state.scene, 1.0);
+    if (!report(QStringLiteral("%1: loading meshes").arg(state.name)))
+        return *error = QStringLiteral("cancelled"), false;
+    SceneMeshes meshes = loadSceneMeshes(full);
+    if (!meshes.ok()) {
+        *error = QStringLiteral("%1: %2").arg(path, meshes.error);
+        return false;
+    }
+    for (const SceneObject &object : full.objects) {
+        const bool analytic = isBuiltinMeshSpec(object.mesh);
+        state.fullMeshes.push_back(analytic ? nullptr : meshes.entries.value(meshKey(full, object)).mesh);
+    }
+    for (int count : state.lightCounts) {
+        if (!report(QStringLiteral("%1: reference, %2 light(s)").arg(state.name).arg(count)))
+            return *error = QStringLiteral("cancelled"), false;
+        QString why;
+        auto reference = raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
+                                            options.size.height(), ReferenceShading::Phong, &why);
+        if (!reference) {
+            *error = QStringLiteral("%1: no reference: %2").arg(path, why);
+            return false;
+        }
+        if (state.compared.empty()) {
+            state.compared = awayFromContours(*reference, full, state.fullMeshes, options.bandPx, &why);
+            if (state.compared.empty()) {
+                *error = QStringLiteral("%1: no silhouette mask: %2").arg(path, why);
+                return false;
+            }
+        }
+        state.specular.push_back(highlightMask(*reference, state.compared, options.specularThreshold));
+        state.references.push_back(std::move(*reference));
+    }
+    for (double detail : options.details)
+        if (!measureDetail(options, state, detail, rows, error, progress))
+            return false;
+    return true;
+}
+
+bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, double detail,
+                                std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress)
+{
+    const Scene scene = withDetail(state.scene, detail);
+    Renderer &renderer = m_offscreen->renderer();
+    m_offscreen->makeCurrent();
+    if (!renderer.setScene(scene, loadSceneMeshes(scene), error)) {
+        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, percentText(detail), *error);
+        return false;
+    }
+    for (ShadingMethod method : options.methods) {
+        const CompileResult built = renderer.loadShading(method);
+        if (!built.ok) {
+            *error = QStringLiteral("%1: the shipped %2 shaders did not build: %3")
+                         .arg(state.name, shadingName(method), built.errorSummary());
+            return false;
+        }
+        for (std::size_t s = 0; s < state.lightCounts.size(); ++s) {
+            rows->push_back(measure(options, state, s, method, detail));
+            ++m_done;
+            const QString stage = QStringLiteral("%1: %2, detail %3, %4 light(s)")
+                                      .arg(state.name, shadingName(method), percentText(detail))
+                                      .arg(state.lightCounts[s]);
+            if (progress && !progress(BenchProgress{m_done, m_total, stage, &rows->back()}))
+                return *error = QStringLiteral("cancelled"), false;
+        }
+    }
+    return true;
+}
+
+BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                              ShadingMethod method, double detail)
+{
+    Renderer &renderer = m_offscreen->renderer();
+    const int count = state.lightCounts[setup];
+    Scene scene = withLights(withDetail(state.scene, detail), count);
+    scene.shading = method;
+    renderer.updateSceneParameters(scene);
+
+    const FrameTiming timing = m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
+    const QImage image = m_offscreen->renderImage(options.size);
+    const ReferenceImage &reference = state.references[setup];
+    const BandComparison all = compareOutsideBand(image, reference, scene.background, options.bandPx, &state.compared);
+    const BandComparison highlight =
+        compareOutsideBand(image, reference, scene.background, options.bandPx, &state.specular[setup]);
+
+    BenchRow row;
+    row.scene = state.name;
+    row.method = shadingName(method);
+    row.detail = detail;
+    row.triangles = renderer.trianglesDrawn();
+    row.lights = count;
+    row.sceneLights = count == state.ownLights;
+    row.frameMs = timing.wallMedianMs;
+    row.frameMsP90 = timing.wallP90Ms;
+    row.cpuSubmitMs = timing.cpuSubmitMedianMs;
+    row.gpuMs = timing.gpuMedianMs;
+    row.frames = timing.frames;
+    row.psnr = all.error.psnr;
+    row.rmse = all.error.rmse;
+    row.maxError = all.error.maxError;
+    row.pixelsCompared = all.error.pixelsCompared;
+    row.coverageErrors = all.coverageErrors;
+    row.specularPsnr = highlight.error.psnr;
+    row.specularRmse = highlight.error.rmse;
+    row.specularMaxError = highlight.error.maxError;
+    row.specularPixels = highlight.error.pixelsCompared;
+
+    if (!options.imageDir.isEmpty() && row.sceneLights) {
+        const QString file = QStringLiteral("%1/%2_%3_detail%4.png")
+                                 .arg(options.imageDir, state.name, row.method)
+                                 .arg(qRound(detail * 10000), 5, 10, QLatin1Char('0'));
+        QDir().mkpath(options.imageDir);
+        benchTriptych(image, reference, scene.background, options.bandPx, &state.compared,
+                      QStringLiteral("%1 · %2 · detail %3 · %4 triangles · %5 ms · max %6/255")
+                          .arg(state.name, row.method, percentText(detail))
+                          .arg(row.triangles)
+                          .arg(row.frameMs, 0, 'f', 2)
+                          .arg(row.maxError))
+            .save(file);
+    }
+    return row;
+}
+
+} // namespace phonglab

@@ -1,0 +1,73 @@
+#pragma once
+#include "BenchOptions.h"
+#include "BenchResult.h"
+#include "core/ReferenceImage.h"
+#include "core/Scene.h"
+
+#include <QImage>
+#include <QString>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace phonglab {
+
+class OffscreenRenderer;
+struct MeshData;
+
+// Where a bench run is; the callback returns false to cancel.
+struct BenchProgress {
+    int done = 0;   // configurations measured so far
+    int total = 0;  // configurations in the whole run
+    QString stage;  // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
+    const BenchRow *row = nullptr; // the row just measured, if this step measured one
+};
+using BenchProgressFn = std::function<bool(const BenchProgress &)>;
+
+// The speed-against-accuracy sweep behind `phonglab bench` and the
+// Performance dock: every scene × detail × method × light setup of the
+// options, timed on the GPU (glFinish-bounded wall time, CPU submission,
+// GL_TIME_ELAPSED where trusted) and compared with the CPU double-precision
+// reference of the Phong equation (analytic surfaces for builtins, the
+// full-resolution mesh ray-cast with interpolated normals otherwise).
+//
+// Needs a QGuiApplication and makes its own offscreen context; run it on the
+// thread that owns the application.
+class BenchEngine
+{
+public:
+    BenchEngine();
+    ~BenchEngine();
+
+    // False with a reason when no GL context can be made.
+    bool initialize(QString *error);
+    QString glRendererName() const;
+
+    // Appends one row per configuration to *rows. False with a reason when a
+    // scene cannot be loaded or a shader does not build, or "cancelled".
+    bool run(const BenchOptions &options, std::vector<BenchRow> *rows, QString *error,
+             const BenchProgressFn &progress = {});
+
+private:
+    struct SceneRun;
+    bool runScene(const BenchOptions &options, const QString &path, SceneRun &state,
+                  std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress);
+    bool measureDetail(const BenchOptions &options, SceneRun &state, double detail,
+                       std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress);
+    BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
+                     double detail);
+
+    std::unique_ptr<OffscreenRenderer> m_offscreen;
+    int m_done = 0;
+    int m_total = 0;
+};
+
+// Configurations a run of `options` over `sceneLightCounts` (each scene's
+// own enabled light count) measures, for progress totals.
+int benchConfigurationCount(const BenchOptions &options, const std::vector<int> &sceneLightCounts);
+
+// The light counts measured for a scene with `sceneLights` enabled lights:
+// the options' counts plus the scene's own, ascending, each once.
+std::vector<int> benchLightCounts(const BenchOptions &options, int sceneLights);
+
+} // namespace phonglab

@@ -1,0 +1,151 @@
+#include "BenchCommand.h"
+
+#include "BenchArgs.h"
+#include "CliCommon.h"
+#include "bench/BenchEngine.h"
+#include "bench/BenchTable.h"
+#include "bench/NormalStudyOutput.h"
+#include "bench/SpeedAccuracyChart.h"
+#include "core/ResourcePaths.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QSaveFile>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace phonglab::cli {
+
+namespace {
+
+bool writeText(const QString &path, const QString &text, QString *error)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+// Progress on stderr: one line rewritten in place on a terminal, a line per
+// step otherwise (logs, and the Performance dock, which reads them).
+class ProgressPrinter
+{
+public:
+    bool operator()(const BenchProgress &p)
+    {
+        const QString line = QStringLiteral("[%1/%2] %3").arg(p.done).arg(p.total).arg(p.stage);
+        if (m_tty) {
+            std::fprintf(stderr, "\r\033[K%s", qPrintable(line));
+            std::fflush(stderr);
+        } else {
+            printErrLine(line);
+        }
+        if (p.row) {
+            if (m_tty)
+                std::fprintf(stderr, "\r\033[K");
+            printLine(benchTableLine(*p.row));
+            std::fflush(stdout);
+        }
+        return true;
+    }
+    void finish()
+    {
+        if (m_tty)
+            std::fprintf(stderr, "\r\033[K");
+    }
+
+private:
+    bool m_tty = isatty(fileno(stderr)) != 0;
+};
+
+int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows)
+{
+    QString error;
+    const QDir out(args.outDir);
+    if (!writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows), &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    const std::vector<SceneFit> fits = fitScenes(rows, args.budget);
+    if (!writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget), &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    printLine(QStringLiteral("\nfit to budget (%1, the scene's own lights, %2 px silhouette band left out):")
+                  .arg(args.budget.describe())
+                  .arg(args.options.bandPx));
+    for (const SceneFit &f : fits)
+        printLine(QStringLiteral("  %1: %2").arg(f.scene, f.fit.summary));
+
+    const QString png = out.filePath(QStringLiteral("chart.png"));
+    const QString svg = out.filePath(QStringLiteral("chart.svg"));
+    if (!writeSpeedAccuracyCharts(rows, png, svg, &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    printLine(QStringLiteral("\nwrote %1, %2, %3 and %4")
+                  .arg(out.filePath(QStringLiteral("results.csv")), out.filePath(QStringLiteral("fit.csv")), png, svg));
+    return kExitOk;
+}
+
+int bench(const BenchArgs &args, int argc, char **argv)
+{
+    chooseHeadlessPlatformIfNeeded();
+    QApplication app(argc, argv); // Qt Charts draws with widgets
+    if (!QDir().mkpath(args.outDir)) {
+        printError(QStringLiteral("%1: cannot create the output folder").arg(args.outDir));
+        return kExitFailure;
+    }
+    BenchEngine engine;
+    QString error;
+    if (!engine.initialize(&error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    printLine(QStringLiteral("phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
+                  .arg(args.quick ? QStringLiteral(" --quick") : QString())
+                  .arg(args.options.scenes.size())
+                  .arg(args.options.size.width())
+                  .arg(args.options.size.height())
+                  .arg(args.options.frames)
+                  .arg(args.options.warmupFrames)
+                  .arg(engine.glRendererName()));
+    printLine(QStringLiteral("frame ms = median wall time of render + glFinish; cpu ms = submission; "
+                             "errors in 8-bit steps against the CPU reference; hl = inside the specular "
+                             "highlight; * = the scene's own lights\n"));
+    printLine(benchTableHeader());
+    QElapsedTimer clock;
+    clock.start();
+    std::vector<BenchRow> rows;
+    ProgressPrinter printer;
+    const bool ok = engine.run(args.options, &rows, &error, std::ref(printer));
+    printer.finish();
+    if (!ok) {
+        printError(error);
+        return kExitFailure;
+    }
+    if (args.normalStudy && !writeNormalStudy(args.outDir, &error)) {
+        printError(error);
+        return kExitFailure;
+    }
+    const int written = writeOutputs(args, rows);
+    printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    return written;
+}
+
+} // namespace
+
+int runBench(int argc, char **argv)
+{
+    const QStringList arguments = argumentsFrom(argc, argv).mid(1);
+    const auto parsed = parseBenchArgs(arguments);
+    if (const int *code = std::get_if<int>(&parsed))
+        return *code;
+    return bench(std::get<BenchArgs>(parsed), argc, argv);
+}
+
+} // namespace phonglab::cli

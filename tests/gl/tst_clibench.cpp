@@ -1,0 +1,150 @@
+// `phonglab bench` as a script sees it: --quick writes a well-formed
+// results.csv, fit.csv and chart (PNG + SVG), prints the table and the fit,
+// and finishes in time; bad arguments are usage errors (exit 2), a bad scene
+// a failure (exit 1) with nothing half-written.
+#include "PhonglabProcess.h"
+#include "bench/BenchResult.h"
+#include "bench/ErrorBudget.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QImage>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+#include <cmath>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+namespace {
+
+QString readText(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(file.readAll()) : QString();
+}
+
+} // namespace
+
+class TestCliBench : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void quickRunWritesCsvAndChart();
+    void usageErrors_data();
+    void usageErrors();
+    void badSceneFails();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestCliBench::quickRunWritesCsvAndChart()
+{
+    const QString out = m_dir.filePath(QStringLiteral("quick"));
+    QElapsedTimer clock;
+    clock.start();
+    const ProcessRun r = runPhonglab({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--out"), out},
+                                     240000);
+    const double seconds = clock.elapsed() / 1000.0;
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    qInfo("phonglab bench --quick took %.1f s here (the aim is under 60 s on two idle cores)", seconds);
+    const QString stdoutText = QString::fromUtf8(r.out);
+    QVERIFY2(stdoutText.contains(QStringLiteral("frame ms")), qPrintable(stdoutText.left(400)));
+    QVERIFY2(stdoutText.contains(QStringLiteral("fit to budget")), qPrintable(stdoutText.right(800)));
+
+    // results.csv: the documented header, one well-formed row per configuration.
+    const QString csv = readText(out + QStringLiteral("/results.csv"));
+    QVERIFY(!csv.isEmpty());
+    QCOMPARE(csv.section(QLatin1Char('\n'), 0, 0).split(QLatin1Char(',')), benchCsvColumns());
+    std::vector<BenchRow> rows;
+    QString error;
+    QVERIFY2(benchRowsFromCsv(csv, &rows, &error), qPrintable(error));
+    // Two scenes (default: tree and cloud with 2 lights; sphere: 1 light),
+    // 3 details, 4 methods; light setups 1, 4, 8 (+ the default's own 2).
+    QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 4));
+    QSet<QString> methods, scenes;
+    for (const BenchRow &row : rows) {
+        methods.insert(row.method);
+        scenes.insert(row.scene);
+        QVERIFY(row.frames >= 20);
+        QVERIFY(row.frameMs > 0 && std::isfinite(row.frameMs));
+        QVERIFY(row.cpuSubmitMs >= 0 && row.cpuSubmitMs <= row.frameMs * 1.5 + 1.0);
+        QVERIFY(row.triangles > 0);
+        QVERIFY(row.pixelsCompared > 1000);
+        QVERIFY(row.maxError >= 0 && row.maxError <= 255);
+        QVERIFY(row.rmse >= 0);
+    }
+    QCOMPARE(methods, (QSet<QString>{"flat", "gouraud", "blinn-phong", "phong"}));
+    QCOMPARE(scenes, (QSet<QString>{"default", "sphere"}));
+
+    // The fit: one line per scene; its choice meets the default budget.
+    const QString fit = readText(out + QStringLiteral("/fit.csv"));
+    const QStringList fitLines = fit.trimmed().split(QLatin1Char('\n'));
+    QCOMPARE(fitLines.size(), 3);
+    for (const BenchRow &row : rows) {
+        if (!row.sceneLights)
+            continue;
+        const QString line = fitLines[row.scene == QLatin1String("default") ? 1 : 2];
+        const QStringList f = line.split(QLatin1Char(','));
+        if (f.value(2) == row.method && f.value(3).toDouble() == row.detail)
+            QVERIFY2(row.maxError <= 2, qPrintable(line));
+    }
+
+    // The chart: a PNG of the grid and an SVG naming every method and the front.
+    QImage png(out + QStringLiteral("/chart.png"));
+    QVERIFY(!png.isNull());
+    QVERIFY(png.width() >= 640 * 3 && png.height() >= 440 * 2);
+    const QString svg = readText(out + QStringLiteral("/chart.svg"));
+    QXmlStreamReader xml(svg);
+    while (!xml.atEnd())
+        xml.readNext();
+    QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+    for (const QString &name : {QStringLiteral("gouraud"), QStringLiteral("Pareto front")})
+        QVERIFY2(svg.contains(name), qPrintable(name));
+}
+
+void TestCliBench::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("frames below 20") << QStringList{QStringLiteral("--frames"), QStringLiteral("5")};
+    QTest::newRow("unknown method") << QStringList{QStringLiteral("--methods"), QStringLiteral("phong,toon")};
+    QTest::newRow("detail above 1") << QStringList{QStringLiteral("--details"), QStringLiteral("1,2")};
+    QTest::newRow("detail zero") << QStringList{QStringLiteral("--details"), QStringLiteral("0")};
+    QTest::newRow("lights 9") << QStringList{QStringLiteral("--lights"), QStringLiteral("9")};
+    QTest::newRow("bad budget") << QStringList{QStringLiteral("--budget"), QStringLiteral("lots")};
+    QTest::newRow("bad size") << QStringList{QStringLiteral("--size"), QStringLiteral("4x4")};
+    QTest::newRow("stray argument") << QStringList{QStringLiteral("scene.json")};
+    QTest::newRow("unknown option") << QStringList{QStringLiteral("--fast")};
+}
+
+void TestCliBench::usageErrors()
+{
+    QFETCH(QStringList, args);
+    const ProcessRun r = runPhonglab(QStringList{QStringLiteral("bench")} + args);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: ")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("usage: phonglab bench")), qPrintable(r.err));
+}
+
+void TestCliBench::badSceneFails()
+{
+    const QString out = m_dir.filePath(QStringLiteral("bad"));
+    const QString scene = m_dir.filePath(QStringLiteral("broken.json"));
+    QFile file(scene);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\"objects\": [ {\"mesh\": 3} ]}");
+    file.close();
+    const ProcessRun r = runPhonglab({QStringLiteral("bench"), QStringLiteral("--scene"), scene,
+                                      QStringLiteral("--out"), out});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("broken.json")), qPrintable(r.err));
+    QVERIFY(!QFile::exists(out + QStringLiteral("/results.csv")));
+}
+
+QTEST_GUILESS_MAIN(TestCliBench)
+#include "tst_clibench.moc"
