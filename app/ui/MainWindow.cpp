@@ -8,6 +8,7 @@
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
 #include "MeshStatsText.h"
+#include "PerformanceDock.h"
 #include "RecentFiles.h"
 #include "SceneDock.h"
 #include "SceneEditDocks.h"
@@ -88,6 +89,7 @@ MainWindow::MainWindow(QWidget *parent)
     resizeDocks({m_sceneDock}, {kSceneDockWidth}, Qt::Horizontal);
     createShaderDock();
     createUniformsDock();
+    createPerformanceDock();
     m_editDocks = new SceneEditDocks(this, m_viewport, m_sceneDock);
     m_shaderDock->raise(); // still the tab shown first
     createFileMenu();
@@ -190,6 +192,22 @@ void MainWindow::createUniformsDock()
             Qt::QueuedConnection);
 }
 
+// Tabbed with the Scene dock: measuring is occasional, the code is not.
+void MainWindow::createPerformanceDock()
+{
+    m_performanceDock = new PerformanceDock(m_viewport, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_performanceDock);
+    tabifyDockWidget(m_sceneDock, m_performanceDock);
+    connect(m_performanceDock, &PerformanceDock::applyModelRequested, this, &MainWindow::applyModel);
+}
+
+void MainWindow::applyModel(ShadingMethod method, double detail)
+{
+    SceneLoadRequest request = modelRequest(m_viewport->currentScene(), method, detail);
+    request.shown = [this] { refreshSceneDock(); };
+    m_loadJob->start(std::move(request));
+}
+
 void MainWindow::createFileMenu()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
@@ -237,6 +255,9 @@ void MainWindow::createViewMenu()
     QAction *uniforms = m_uniformsDock->toggleViewAction();
     uniforms->setText(tr("&Uniforms Dock"));
     view->addAction(uniforms);
+    QAction *performance = m_performanceDock->toggleViewAction();
+    performance->setText(tr("&Performance Dock"));
+    view->addAction(performance);
     m_editDocks->addDockToggles(view);
 }
 

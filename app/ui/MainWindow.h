@@ -1,4 +1,5 @@
 #pragma once
+#include "core/ShadingMethod.h"
 #include "mesh/NormalOptions.h"
 
 #include <QMainWindow>
@@ -15,6 +16,7 @@ struct Scene;
 
 class LiveShaderController;
 class LoadProgressWidget;
+class PerformanceDock;
 class RecentFiles;
 class SceneDock;
 class SceneEditDocks;
@@ -54,6 +56,9 @@ public:
     bool openFiles(const QStringList &paths, QString *error);
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
+    // Shows every object at `detail` with `method` shading (Fit to budget),
+    // loading the coarser meshes in the background.
+    void applyModel(ShadingMethod method, double detail);
 
     // Window geometry and dock layout in QSettings ("window/geometry",
     // "window/state"): saved when the window closes, restored at start
@@ -73,6 +78,7 @@ public:
     SceneDock *sceneDock() const { return m_sceneDock; }
     ShaderDock *shaderDock() const { return m_shaderDock; }
     UniformsDock *uniformsDock() const { return m_uniformsDock; }
+    PerformanceDock *performanceDock() const { return m_performanceDock; }
     SceneEditDocks *editDocks() const { return m_editDocks; }
     LiveShaderController *liveShaders() const { return m_liveShaders; }
     RecentFiles *recentFiles() const { return m_recentFiles; }
@@ -98,6 +104,7 @@ protected:
 private:
     void createShaderDock();
     void createUniformsDock();
+    void createPerformanceDock();
     void typeTestTextAfterStart();
     void createFileMenu();
     void createViewMenu();
@@ -118,6 +125,7 @@ private:
     SceneEditDocks *m_editDocks = nullptr; // lights, material, object docks + undo stack
     ShaderDock *m_shaderDock = nullptr;
     UniformsDock *m_uniformsDock = nullptr;
+    PerformanceDock *m_performanceDock = nullptr;
     LiveShaderController *m_liveShaders = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     LoadProgressWidget *m_loadProgress = nullptr;

@@ -49,4 +49,24 @@ SceneLoadRequest normalsRequest(const Scene &current, int objectIndex, const Nor
     return request;
 }
 
+SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double detail)
+{
+    auto apply = [method, detail](Scene scene) {
+        scene.shading = method;
+        for (SceneObject &object : scene.objects)
+            object.detail = detail;
+        return scene;
+    };
+    SceneLoadRequest request;
+    request.scene = apply(current);
+    request.label = QObject::tr("%1 at %2 % detail").arg(shadingName(method)).arg(detail * 100.0, 0, 'g', 3);
+    // Applied to the scene on screen when loading ends: the camera and lights
+    // may have moved meanwhile. Objects only change through loads, so its
+    // objects are still the ones loaded here.
+    request.finish = [apply, requested = request.scene](const Scene &shown, const SceneLoadRequest::MeshInfo &) {
+        return shown.objects.size() == requested.objects.size() ? apply(shown) : requested;
+    };
+    return request;
+}
+
 } // namespace phonglab

@@ -1,0 +1,86 @@
+#pragma once
+#include "bench/BenchResult.h"
+#include "bench/ErrorBudget.h"
+#include "core/ShadingMethod.h"
+
+#include <QDockWidget>
+#include <vector>
+
+class QChartView;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace phonglab {
+
+class BenchProcess;
+class Viewport;
+
+// "Model no more than a scene needs": live frame time, the speed-against-
+// accuracy chart of the scene in the window (every shipped method at every
+// detail level, measured for the current view and lights by `phonglab
+// bench` in a child process), and Fit to budget, which picks the cheapest
+// method and coarsest detail whose measured error stays within the budget,
+// applies it and reports the triangles and milliseconds saved.
+class PerformanceDock : public QDockWidget
+{
+    Q_OBJECT
+
+public:
+    explicit PerformanceDock(Viewport *viewport, QWidget *parent = nullptr);
+    ~PerformanceDock() override;
+
+    ErrorBudget budget() const;
+    void setBudget(const ErrorBudget &budget);
+
+    // The rows of the last measurement (empty before the first).
+    const std::vector<BenchRow> &rows() const { return m_rows; }
+    // What the last fit chose (chosen -1 before one ran or when nothing fits).
+    const BudgetFit &lastFit() const { return m_fit; }
+    QString reportText() const;
+    bool isMeasuring() const;
+
+public slots:
+    void measure();    // measure only: chart, no change to the scene
+    void fitToBudget(); // measure, then apply the cheapest model within budget
+    void restoreFullDetail();
+    void cancel();
+
+signals:
+    // Show the scene with every object at `detail` and `method` shading.
+    void applyModelRequested(phonglab::ShadingMethod method, double detail);
+    void measured();    // rows() are new (or the run failed: rows() empty)
+    void fitApplied();  // the model was handed to applyModelRequested
+
+private:
+    void startMeasurement(bool thenFit);
+    void showProgress(int done, int total, const QString &stage);
+    void measurementFinished(const std::vector<BenchRow> &rows, const QString &error);
+    void applyFit();
+    void showChart();
+    void showFrame(double milliseconds, qint64 triangles);
+    void setRunning(bool running);
+
+    Viewport *m_viewport = nullptr;
+    BenchProcess *m_process = nullptr;
+    QLabel *m_frameLabel = nullptr;
+    QComboBox *m_budgetKind = nullptr;
+    QDoubleSpinBox *m_budgetValue = nullptr;
+    QPushButton *m_measureButton = nullptr;
+    QPushButton *m_fitButton = nullptr;
+    QPushButton *m_fullButton = nullptr;
+    QPushButton *m_cancelButton = nullptr;
+    QProgressBar *m_progress = nullptr;
+    QChartView *m_chartView = nullptr;
+    QLabel *m_report = nullptr;
+
+    std::vector<BenchRow> m_rows;
+    BudgetFit m_fit;
+    bool m_fitAfterMeasuring = false;
+    // The model shown before the last fit, for Full detail.
+    ShadingMethod m_shadingBeforeFit = ShadingMethod::Phong;
+};
+
+} // namespace phonglab
