@@ -29,6 +29,7 @@ struct BenchEngine::SceneRun {
     std::vector<ReferenceImage> references;           // per light count
     std::vector<std::uint8_t> compared;               // 1 away from every silhouette (lights do not move them)
     std::vector<std::vector<std::uint8_t>> specular;  // compared ∧ highlight, per light count
+    qint64 previousTriangles = -1;                    // of the last detail level measured
 };
 
 namespace {
@@ -206,9 +207,25 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
                                 std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress)
 {
     const Scene scene = withDetail(state.scene, detail);
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    qint64 triangles = 0;
+    for (const SceneObject &object : scene.objects)
+        triangles += meshes.entries.value(meshKey(scene, object)).stats.triangles;
+    if (meshes.ok() && triangles == state.previousTriangles) {
+        // Nothing coarser to be had (a box has no levels; a tessellation at
+        // its minimum): the same meshes again would only repeat rows.
+        m_done += int(options.methods.size() * state.lightCounts.size());
+        const QString stage = QStringLiteral("%1: detail %2 draws the same %3 triangles as the level before; skipped")
+                                  .arg(state.name, percentText(detail))
+                                  .arg(triangles);
+        if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
+            return *error = QStringLiteral("cancelled"), false;
+        return true;
+    }
+    state.previousTriangles = triangles;
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
-    if (!renderer.setScene(scene, loadSceneMeshes(scene), error)) {
+    if (!renderer.setScene(scene, std::move(meshes), error)) {
         *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, percentText(detail), *error);
         return false;
     }

@@ -175,6 +175,8 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
             bool better = false;
             if (row.triangles != best.triangles)
                 better = row.triangles < best.triangles;
+            else if (row.rmse != best.rmse && !std::isnan(row.rmse) && !std::isnan(best.rmse))
+                better = row.rmse < best.rmse; // as cheap either way: the accuracy is free
             else if (methodCost(row.method) != methodCost(best.method))
                 better = methodCost(row.method) < methodCost(best.method);
             else if (row.method != best.method)

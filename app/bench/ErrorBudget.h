@@ -32,9 +32,11 @@ struct BudgetFit {
 };
 
 // Among `rows` (one scene, one light setup), the cheapest that meets the
-// budget: least frame time, where times within kTimeTieFraction of each other
-// count as equal and the fewer triangles, then the cheaper method (flat <
-// gouraud < blinn-phong < phong) win. Never returns a row the budget refuses.
+// budget: least frame time, where times within kTimeTieFraction of the
+// fastest accepted one count as equal (frame times are noisy); among those
+// the fewest triangles win, then the lower error (equally cheap, so the
+// accuracy is free), then the cheaper method (flat < gouraud < blinn-phong
+// < phong). Never returns a row the budget refuses.
 inline constexpr double kTimeTieFraction = 0.05;
 BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budget);
 

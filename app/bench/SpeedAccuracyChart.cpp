@@ -585,37 +585,45 @@ bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &
         return false;
     }
 
-    // Grid rows: scenes in order of first appearance; columns: light setups.
+    // Grid rows: scenes in order of first appearance; along each row that
+    // scene's light setups by count (its own lights among them), packed
+    // left so scenes with different setups leave no holes.
     QStringList scenes;
-    std::vector<std::pair<int, bool>> setups;
+    std::vector<std::vector<std::pair<int, bool>>> setups; // per scene
     for (const BenchRow &row : rows) {
-        if (!scenes.contains(row.scene))
+        if (!scenes.contains(row.scene)) {
             scenes.append(row.scene);
+            setups.emplace_back();
+        }
+        auto &own = setups[std::size_t(scenes.indexOf(row.scene))];
         const std::pair<int, bool> setup(row.lights, row.sceneLights);
-        if (std::find(setups.begin(), setups.end(), setup) == setups.end())
-            setups.push_back(setup);
+        if (std::find(own.begin(), own.end(), setup) == own.end())
+            own.push_back(setup);
     }
     if (scenes.isEmpty()) {
         if (error)
             *error = QStringLiteral("no benchmark rows to chart");
         return false;
     }
-    std::sort(setups.begin(), setups.end());
+    std::size_t columns = 0;
+    for (auto &own : setups) {
+        std::sort(own.begin(), own.end());
+        columns = std::max(columns, own.size());
+    }
 
-    const QSize total(panelSize.width() * int(setups.size()), panelSize.height() * int(scenes.size()));
+    const QSize total(panelSize.width() * int(columns), panelSize.height() * int(scenes.size()));
     QGraphicsScene scene(QRectF(QPointF(0, 0), QSizeF(total)));
     std::vector<QChart *> charts;
     for (int r = 0; r < scenes.size(); ++r) {
-        for (int c = 0; c < int(setups.size()); ++c) {
+        const auto &own = setups[std::size_t(r)];
+        for (int c = 0; c < int(own.size()); ++c) {
             std::vector<BenchRow> panel;
             for (const BenchRow &row : rows)
-                if (row.scene == scenes[r] && row.lights == setups[c].first
-                    && row.sceneLights == setups[c].second)
+                if (row.scene == scenes[r] && row.lights == own[std::size_t(c)].first
+                    && row.sceneLights == own[std::size_t(c)].second)
                     panel.push_back(row);
-            if (panel.empty())
-                continue;
             const QString title = QStringLiteral("%1 — %2")
-                                      .arg(scenes[r], lightsText(setups[c].first, setups[c].second));
+                                      .arg(scenes[r], lightsText(own[std::size_t(c)].first, own[std::size_t(c)].second));
             QChart *chart = createSpeedAccuracyChart(panel, title);
             scene.addItem(chart); // the scene owns it from here
             chart->setGeometry(QRectF(QPointF(c * panelSize.width(), r * panelSize.height()),

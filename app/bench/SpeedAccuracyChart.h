@@ -33,9 +33,10 @@ QColor methodColor(const QString &method);
 QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QString &title);
 
 // A grid of charts, one panel per (scene, light setup) in rows: scenes as
-// grid rows (in order of first appearance), light counts as columns (scene's
-// own lights after a synthetic setup of the same count). Written as PNG
-// (device pixel ratio 1, panelSize × grid) and SVG (same size, 96 dpi), each
+// grid rows (in order of first appearance), along each row that scene's
+// light setups by count (scene's own lights after a synthetic setup of the
+// same count), packed to the left; as many columns as the scene with the
+// most setups. Written as PNG (device pixel ratio 1, panelSize × grid) and SVG (same size, 96 dpi), each
 // through QSaveFile. An empty path skips that file. False with a reason when
 // there is nothing to draw, no QApplication, or a file cannot be written.
 bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,

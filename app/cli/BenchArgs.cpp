@@ -16,7 +16,8 @@ namespace {
 
 const QString kSynopsis = QStringLiteral(
     "usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]\n"
-    "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] [--images] [--normals]");
+    "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] [--images] [--normals]\n"
+    "       phonglab bench --from results.csv [--out DIR] [--budget SPEC]");
 
 QString helpText()
 {
@@ -35,10 +36,14 @@ QString helpText()
         "  --methods LIST   shading methods, comma separated (default flat,gouraud,blinn-phong,phong)\n"
         "  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625\n"
         "  --images         also write render | reference | error pictures into DIR/images\n"
-        "  --normals        also run the normal-method study (DIR/normals.csv, normals.png/svg)\n\n"
+        "  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.\n"
+        "                   against another --budget); writes fit.csv and the chart into DIR\n"
+        "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run\n"
+        "                   too (a full run always has it)\n\n"
         "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the\n"
         "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit\n"
-        "steps, more than 2 px from a silhouette.\n\n"
+        "steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong\n"
+        "uses the matched exponent 4n (n = the material's shininess), as shaders/blinn-phong.frag does.\n\n"
         "Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.");
 }
 
@@ -98,7 +103,8 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     const QCommandLineOption details(QStringLiteral("details"), QStringLiteral("Detail fractions."), QStringLiteral("list"));
     const QCommandLineOption images(QStringLiteral("images"), QStringLiteral("Write pictures."));
     const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal-method study."));
-    parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details, images, normals});
+    const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."), QStringLiteral("csv"));
+    parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details, images, normals, from});
 
     auto usage = [](const QString &message) {
         printError(message);
@@ -116,13 +122,21 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                          .arg(parser.positionalArguments().first()));
 
     BenchArgs args;
+    args.fromCsv = parser.value(from);
+    if (parser.isSet(from)) {
+        for (const QCommandLineOption *measuring : {&scene, &quick, &size, &frames, &lights, &methods, &details, &images, &normals})
+            if (parser.isSet(*measuring))
+                return usage(QStringLiteral("--from measures nothing: --%1 does not go with it").arg(measuring->names().constLast()));
+        if (args.fromCsv.isEmpty())
+            return usage(QStringLiteral("--from: empty file name"));
+    }
     args.quick = parser.isSet(quick);
     args.options = args.quick ? BenchOptions::quick() : BenchOptions::full();
     args.options.scenes = parser.isSet(scene) ? parser.values(scene) : defaultScenes(args.quick);
     args.outDir = parser.isSet(out) ? parser.value(out) : QStringLiteral("phonglab-bench");
     if (args.outDir.isEmpty())
         return usage(QStringLiteral("--out: empty folder name"));
-    args.normalStudy = parser.isSet(normals);
+    args.normalStudy = args.fromCsv.isEmpty() && (parser.isSet(normals) || !args.quick);
     if (parser.isSet(images))
         args.options.imageDir = QDir(args.outDir).filePath(QStringLiteral("images"));
 

@@ -14,6 +14,7 @@ struct BenchArgs {
     ErrorBudget budget;
     bool quick = false;
     bool normalStudy = false;
+    QString fromCsv; // --from: fit and chart these results instead of measuring
 };
 
 // The arguments of `phonglab bench`, or an exit code for usage errors and --help.

@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QSaveFile>
 
 #include <cstdio>
@@ -62,11 +63,11 @@ private:
     bool m_tty = isatty(fileno(stderr)) != 0;
 };
 
-int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows)
+int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool writeResults = true)
 {
     QString error;
     const QDir out(args.outDir);
-    if (!writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows), &error)) {
+    if (writeResults && !writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows), &error)) {
         printError(error);
         return kExitFailure;
     }
@@ -87,9 +88,31 @@ int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows)
         printError(error);
         return kExitFailure;
     }
-    printLine(QStringLiteral("\nwrote %1, %2, %3 and %4")
-                  .arg(out.filePath(QStringLiteral("results.csv")), out.filePath(QStringLiteral("fit.csv")), png, svg));
+    QStringList written{out.filePath(QStringLiteral("fit.csv")), png, svg};
+    if (writeResults)
+        written.prepend(out.filePath(QStringLiteral("results.csv")));
+    printLine(QStringLiteral("\nwrote %1").arg(written.join(QStringLiteral(", "))));
     return kExitOk;
+}
+
+// --from: the rows of an earlier run, fitted and charted again.
+int refit(const BenchArgs &args)
+{
+    QFile file(args.fromCsv);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        printError(QStringLiteral("%1: cannot read: %2").arg(args.fromCsv, file.errorString()));
+        return kExitFailure;
+    }
+    std::vector<BenchRow> rows;
+    QString error;
+    if (!benchRowsFromCsv(QString::fromUtf8(file.readAll()), &rows, &error, args.fromCsv)) {
+        printError(error);
+        return kExitFailure;
+    }
+    printLine(benchTableHeader());
+    for (const BenchRow &row : rows)
+        printLine(benchTableLine(row));
+    return writeOutputs(args, rows, false);
 }
 
 int bench(const BenchArgs &args, int argc, char **argv)
@@ -100,6 +123,8 @@ int bench(const BenchArgs &args, int argc, char **argv)
         printError(QStringLiteral("%1: cannot create the output folder").arg(args.outDir));
         return kExitFailure;
     }
+    if (!args.fromCsv.isEmpty())
+        return refit(args);
     BenchEngine engine;
     QString error;
     if (!engine.initialize(&error)) {
@@ -116,7 +141,7 @@ int bench(const BenchArgs &args, int argc, char **argv)
                   .arg(engine.glRendererName()));
     printLine(QStringLiteral("frame ms = median wall time of render + glFinish; cpu ms = submission; "
                              "errors in 8-bit steps against the CPU reference; hl = inside the specular "
-                             "highlight; * = the scene's own lights\n"));
+                             "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
     printLine(benchTableHeader());
     QElapsedTimer clock;
     clock.start();

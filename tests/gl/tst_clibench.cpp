@@ -106,6 +106,20 @@ void TestCliBench::quickRunWritesCsvAndChart()
     QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
     for (const QString &name : {QStringLiteral("gouraud"), QStringLiteral("Pareto front")})
         QVERIFY2(svg.contains(name), qPrintable(name));
+
+    // --from fits the same rows again against another budget without
+    // measuring: an impossible PSNR leaves nothing chosen, and says so.
+    const QString refit = m_dir.filePath(QStringLiteral("refit"));
+    const ProcessRun again = runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"),
+                                          out + QStringLiteral("/results.csv"), QStringLiteral("--budget"),
+                                          QStringLiteral("psnr:99"), QStringLiteral("--out"), refit});
+    QVERIFY2(again.exitCode == 0, qPrintable(again.err));
+    QVERIFY(!QFile::exists(refit + QStringLiteral("/results.csv")));
+    QVERIFY(QFile::exists(refit + QStringLiteral("/chart.png")));
+    QVERIFY2(QString::fromUtf8(again.out).contains(QStringLiteral("nothing meets PSNR")), again.out.constData());
+    const QStringList refitLines = readText(refit + QStringLiteral("/fit.csv")).trimmed().split(QLatin1Char('\n'));
+    QCOMPARE(refitLines.size(), 3);
+    QCOMPARE(refitLines[1].split(QLatin1Char(',')).value(2), QString()); // no method chosen
 }
 
 void TestCliBench::usageErrors_data()
@@ -120,6 +134,8 @@ void TestCliBench::usageErrors_data()
     QTest::newRow("bad size") << QStringList{QStringLiteral("--size"), QStringLiteral("4x4")};
     QTest::newRow("stray argument") << QStringList{QStringLiteral("scene.json")};
     QTest::newRow("unknown option") << QStringList{QStringLiteral("--fast")};
+    QTest::newRow("from with scene") << QStringList{QStringLiteral("--from"), QStringLiteral("r.csv"),
+                                                    QStringLiteral("--scene"), QStringLiteral("s.json")};
 }
 
 void TestCliBench::usageErrors()
@@ -144,6 +160,12 @@ void TestCliBench::badSceneFails()
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("broken.json")), qPrintable(r.err));
     QVERIFY(!QFile::exists(out + QStringLiteral("/results.csv")));
+
+    // A results file that is not one: exit 1 naming it.
+    const ProcessRun bad = runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), scene,
+                                        QStringLiteral("--out"), out});
+    QCOMPARE(bad.exitCode, 1);
+    QVERIFY2(bad.err.contains(QStringLiteral("broken.json")), qPrintable(bad.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliBench)

@@ -120,6 +120,17 @@ private slots:
         QVERIFY(text.contains("teapot, glossy"));
         QVERIFY(text.contains("25 %"));
 
+        // A scene with fewer setups takes the leftmost columns of its row:
+        // the grid is as wide as the scene with the most.
+        std::vector<BenchRow> uneven;
+        for (const BenchRow &r : syntheticRows())
+            if (r.scene == QLatin1String("default") ? r.lights != 2 : r.lights == 2)
+                uneven.push_back(r);
+        const QString unevenPng = dir.filePath("uneven.png");
+        QVERIFY2(writeSpeedAccuracyCharts(uneven, unevenPng, QString(), &error, QSize(600, 420)), qPrintable(error));
+        QCOMPARE(QImage(unevenPng).size(), QSize(2 * 600, 2 * 420));
+        QFile::remove(unevenPng);
+
         // Written atomically: no temporary files left beside them.
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);
 

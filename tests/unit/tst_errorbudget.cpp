@@ -1,6 +1,6 @@
 // Error budgets: the accepted spellings, what a budget accepts, and
 // fitToBudget() — never a row over budget (checked over many random row
-// sets), ties broken towards fewer triangles and cheaper methods, savings
+// sets), ties broken towards fewer triangles, lower error and cheaper methods, savings
 // against the full-detail Phong row, and a clear "nothing fits".
 
 #include "bench/ErrorBudget.h"
@@ -153,9 +153,11 @@ private slots:
         QCOMPARE(fit.chosen, 2);
     }
 
-    void prefersCheaperMethodOnAFullTie()
+    void prefersLowerErrorThenCheaperMethodOnATie()
     {
-        const std::vector<BenchRow> rows = {
+        // Same time (within 5 %) and triangles: the more accurate wins, since
+        // it costs nothing more; at equal error the cheaper method.
+        std::vector<BenchRow> rows = {
             row("phong", 1.0, 10000, 3.0, 0),
             row("phong", 0.5, 5000, 2.0, 0),
             row("blinn-phong", 0.5, 5000, 2.01, 0),
@@ -163,9 +165,11 @@ private slots:
             row("toon", 0.5, 5000, 1.99, 0), // unknown methods come after phong
         };
         BudgetFit fit = fitToBudget(rows, maxBudget(2));
-        QCOMPARE(rows[fit.chosen].method, QStringLiteral("gouraud"));
-        fit = fitToBudget(rows, maxBudget(0));
         QCOMPARE(rows[fit.chosen].method, QStringLiteral("blinn-phong"));
+        rows[3].maxError = 0;
+        rows[3].rmse = 0.0; // now as accurate as the others, and cheapest
+        fit = fitToBudget(rows, maxBudget(2));
+        QCOMPARE(rows[fit.chosen].method, QStringLiteral("gouraud"));
     }
 
     void baselineChosenSaysSo()
