@@ -58,7 +58,7 @@ void printStudy(const std::vector<NormalStudyRow> &rows)
 
 bool writeNormalStudy(const QString &outDir, QString *error)
 {
-    const std::vector<NormalStudyRow> rows = runNormalStudy(5);
+    const std::vector<NormalStudyRow> rows = runNormalStudy(31);
     printStudy(rows);
     const QDir dir(outDir);
     QSaveFile csv(dir.filePath(QStringLiteral("normals.csv")));
