@@ -205,7 +205,8 @@ void PerformanceDock::applyFit()
     m_fullButton->setEnabled(true);
     emit applyModelRequested(*method, chosen.detail);
     const QLocale locale;
-    QString text = tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame.")
+    QString text = tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured "
+                      "offscreen, without multisampling).")
                        .arg(budget().describe(), chosen.method, percent(chosen.detail),
                             locale.toString(chosen.triangles), locale.toString(chosen.frameMs, 'f', 2));
     if (m_fit.baseline >= 0) {
