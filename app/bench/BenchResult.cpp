@@ -57,7 +57,9 @@ QString formatDouble(double v)
     return QString::fromLatin1(buffer, int(result.ptr - buffer));
 }
 
-QString quoteField(const QString &field)
+} // namespace
+
+QString csvField(const QString &field)
 {
     const bool needsQuotes = field.contains(QLatin1Char(',')) || field.contains(QLatin1Char('"'))
         || field.contains(QLatin1Char('\n')) || field.contains(QLatin1Char('\r'))
@@ -68,6 +70,8 @@ QString quoteField(const QString &field)
     quoted.replace(QLatin1Char('"'), QLatin1String("\"\""));
     return QLatin1Char('"') + quoted + QLatin1Char('"');
 }
+
+namespace {
 
 // One CSV record and the (1-based) line it starts on.
 struct Record {
@@ -254,8 +258,8 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows)
     QString out = benchCsvColumns().join(QLatin1Char(',')) + QLatin1Char('\n');
     for (const BenchRow &row : rows) {
         const QStringList fields = {
-            quoteField(row.scene),
-            quoteField(row.method),
+            csvField(row.scene),
+            csvField(row.method),
             formatDouble(row.detail),
             QString::number(row.triangles),
             QString::number(row.lights),

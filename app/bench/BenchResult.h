@@ -45,6 +45,10 @@ struct BenchRow {
     bool isBaseline() const { return method == QLatin1String("phong") && detail >= 1.0; }
 };
 
+// One CSV field as written: quoted (RFC 4180) when it holds a comma, a
+// quote, a line break or edge spaces. Shared by every CSV the bench writes.
+QString csvField(const QString &field);
+
 // The results.csv header, in column order.
 QStringList benchCsvColumns();
 

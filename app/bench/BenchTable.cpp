@@ -83,18 +83,13 @@ QString sceneFitsToCsv(const std::vector<SceneFit> &fits, const ErrorBudget &bud
 {
     QString out = QStringLiteral("scene,budget,method,detail,triangles,frame_ms,max_error,psnr_db,"
                                  "baseline_triangles,baseline_frame_ms,triangles_saved,ms_saved\n");
-    auto quoted = [](QString s) {
-        if (s.contains(QLatin1Char(',')) || s.contains(QLatin1Char('"')))
-            s = QLatin1Char('"') + s.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
-        return s;
-    };
     for (const SceneFit &f : fits) {
         const bool chosen = f.fit.chosen >= 0;
         const bool base = f.fit.baseline >= 0;
         const BenchRow none;
         const BenchRow &c = chosen ? f.rows[std::size_t(f.fit.chosen)] : none;
         const BenchRow &b = base ? f.rows[std::size_t(f.fit.baseline)] : none;
-        out += QStringList{quoted(f.scene), quoted(budget.describe()),
+        out += QStringList{csvField(f.scene), csvField(budget.describe()),
                            chosen ? c.method : QString(),
                            chosen ? QString::number(c.detail, 'g', 17) : QString(),
                            chosen ? QString::number(c.triangles) : QString(),

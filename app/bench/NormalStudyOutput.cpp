@@ -1,5 +1,6 @@
 #include "NormalStudyOutput.h"
 
+#include "BenchResult.h"
 #include "SpeedAccuracyChart.h"
 #include "mesh/NormalMethodStudy.h"
 
@@ -13,18 +14,11 @@ namespace phonglab {
 
 namespace {
 
-QString quoted(QString s)
-{
-    if (s.contains(QLatin1Char(',')) || s.contains(QLatin1Char('"')))
-        s = QLatin1Char('"') + s.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
-    return s;
-}
-
 QString studyCsv(const std::vector<NormalStudyRow> &rows)
 {
     QString out = QStringLiteral("tessellation,method,triangles,ms,max_angle_deg,mean_angle_deg\n");
     for (const NormalStudyRow &r : rows)
-        out += QStringList{quoted(r.tessellation), r.method, QString::number(r.triangles),
+        out += QStringList{csvField(r.tessellation), r.method, QString::number(r.triangles),
                            QString::number(r.ms, 'g', 17), QString::number(r.maxAngleDeg, 'g', 17),
                            QString::number(r.meanAngleDeg, 'g', 17)}
                    .join(QLatin1Char(','))

@@ -6,7 +6,6 @@
 
 #include <QCommandLineParser>
 #include <QDir>
-#include <QRegularExpression>
 
 #include <optional>
 
@@ -45,18 +44,6 @@ QString helpText()
         "steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong\n"
         "uses the matched exponent 4n (n = the material's shininess), as shaders/blinn-phong.frag does.\n\n"
         "Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.");
-}
-
-std::optional<QSize> parseSize(const QString &text)
-{
-    static const QRegularExpression re(QStringLiteral(R"(^(\d{1,5})[xX](\d{1,5})$)"));
-    const auto m = re.match(text);
-    if (!m.hasMatch())
-        return std::nullopt;
-    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
-    if (w < 16 || h < 16 || w > 8192 || h > 8192)
-        return std::nullopt;
-    return QSize(w, h);
 }
 
 // Parses each comma-separated item with `item`; nullopt on the first bad one.
@@ -148,7 +135,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         args.budget = *parsed;
     }
     if (parser.isSet(size)) {
-        const auto parsed = parseSize(parser.value(size));
+        const auto parsed = parseSizeArgument(parser.value(size), 16, 8192);
         if (!parsed)
             return usage(QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'")
                              .arg(parser.value(size)));

@@ -1,5 +1,7 @@
 #include "CliCommon.h"
 
+#include <QRegularExpression>
+
 #include <cstdio>
 
 namespace phonglab::cli {
@@ -20,6 +22,18 @@ void printErrLine(const QString &text)
 {
     std::fprintf(stderr, "%s\n", text.toLocal8Bit().constData());
     std::fflush(stderr);
+}
+
+std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide)
+{
+    static const QRegularExpression re(QStringLiteral(R"(^(\d{1,6})[xX](\d{1,6})$)"));
+    const auto m = re.match(text);
+    if (!m.hasMatch())
+        return std::nullopt;
+    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
+    if (w < minSide || h < minSide || w > maxSide || h > maxSide)
+        return std::nullopt;
+    return QSize(w, h);
 }
 
 QStringList argumentsFrom(int argc, char **argv)

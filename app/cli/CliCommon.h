@@ -1,6 +1,8 @@
 #pragma once
+#include <QSize>
 #include <QString>
 #include <QStringList>
+#include <optional>
 
 namespace phonglab::cli {
 
@@ -15,6 +17,9 @@ void printLine(const QString &text);     // stdout
 void printErrLine(const QString &text);  // stderr, verbatim
 
 QStringList argumentsFrom(int argc, char **argv);
+
+// "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
+std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);
 
 // Makes sure a GUI application can start without a display: when no X server
 // is reachable and no platform was chosen, use Qt's offscreen platform so the

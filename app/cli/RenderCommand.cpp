@@ -9,7 +9,6 @@
 
 #include <QCommandLineParser>
 #include <QGuiApplication>
-#include <QRegularExpression>
 #include <QSaveFile>
 #include <QSurfaceFormat>
 
@@ -30,18 +29,6 @@ struct RenderArgs {
     QString fragmentPath;
     std::optional<ShadingMethod> shading; // overrides the scene's
 };
-
-std::optional<QSize> parseSize(const QString &text)
-{
-    static const QRegularExpression re(QStringLiteral(R"(^(\d{1,6})[xX](\d{1,6})$)"));
-    const auto m = re.match(text);
-    if (!m.hasMatch())
-        return std::nullopt;
-    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
-    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-        return std::nullopt;
-    return QSize(w, h);
-}
 
 // Returns the arguments, or an exit code for usage errors / --help.
 std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
@@ -97,7 +84,7 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     args.scenePath = positional.first();
     args.outputPath = parser.value(output);
     if (parser.isSet(size)) {
-        const auto parsed = parseSize(parser.value(size));
+        const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
         if (!parsed)
             return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
                              .arg(kMaxImageSide).arg(parser.value(size)));
