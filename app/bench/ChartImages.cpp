@@ -1,0 +1,109 @@
+#include "ChartImages.h"
+#include "SpeedAccuracyChart.h"
+
+#include <QApplication>
+#include <QGraphicsLayout>
+#include <QGraphicsScene>
+#include <QImage>
+#include <QImageWriter>
+#include <QPainter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+#include <QtCharts/QChart>
+
+namespace phonglab {
+
+bool haveApplication(QString *error)
+{
+    if (qobject_cast<QApplication *>(QCoreApplication::instance()))
+        return true;
+    if (error)
+        *error = QStringLiteral("charts need a QApplication (Qt Charts are widgets)");
+    return false;
+}
+
+void settleLayouts(const std::vector<QChart *> &charts)
+{
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    for (QChart *chart : charts)
+        if (chart->layout())
+            chart->layout()->activate();
+}
+
+bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath,
+                 const QString &svgPath, const QString &title, QString *error)
+{
+    auto fail = [&](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    if (pngPath.isEmpty() && svgPath.isEmpty())
+        return fail(QStringLiteral("no output file given"));
+
+    const QRectF rect(QPointF(0, 0), QSizeF(size));
+
+    // Open both first so a bad path writes nothing.
+    QSaveFile pngFile(pngPath), svgFile(svgPath);
+    if (!pngPath.isEmpty() && !pngFile.open(QIODevice::WriteOnly))
+        return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
+    if (!svgPath.isEmpty() && !svgFile.open(QIODevice::WriteOnly))
+        return fail(QStringLiteral("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
+
+    if (!pngPath.isEmpty()) {
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.setDevicePixelRatio(1.0);
+        image.fill(Qt::white);
+        {
+            QPainter painter(&image);
+            painter.setRenderHint(QPainter::Antialiasing);
+            painter.setRenderHint(QPainter::TextAntialiasing);
+            scene.render(&painter, rect, rect);
+        }
+        QImageWriter writer(&pngFile, "png");
+        if (!writer.write(image))
+            return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, writer.errorString()));
+    }
+    if (!svgPath.isEmpty()) {
+        QSvgGenerator generator;
+        generator.setOutputDevice(&svgFile);
+        generator.setSize(size);
+        generator.setViewBox(rect);
+        generator.setResolution(96);
+        generator.setTitle(title);
+        generator.setDescription(QStringLiteral("PhongLab benchmark chart"));
+        QPainter painter;
+        if (!painter.begin(&generator))
+            return fail(QStringLiteral("cannot write %1: SVG output failed").arg(svgPath));
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.fillRect(rect, Qt::white);
+        scene.render(&painter, rect, rect);
+        painter.end();
+    }
+    if (!pngPath.isEmpty() && !pngFile.commit())
+        return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
+    if (!svgPath.isEmpty() && !svgFile.commit())
+        return fail(QStringLiteral("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
+    return true;
+}
+
+bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
+                      QString *error, QSize size)
+{
+    if (!haveApplication(error))
+        return false;
+    if (!chart || size.isEmpty()) {
+        if (error)
+            *error = QStringLiteral("nothing to draw");
+        return false;
+    }
+    QGraphicsScene scene(QRectF(QPointF(0, 0), QSizeF(size)));
+    scene.addItem(chart);
+    chart->setGeometry(QRectF(QPointF(0, 0), QSizeF(size)));
+    settleLayouts({chart});
+    const bool ok = renderScene(scene, size, pngPath, svgPath, chart->title(), error);
+    scene.removeItem(chart); // the chart stays the caller's
+    return ok;
+}
+
+} // namespace phonglab
