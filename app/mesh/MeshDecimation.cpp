@@ -5,6 +5,9 @@
 #include "DecimationMesh.h"
 
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/Observer.hh>
+
+#include <memory>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <QLocale>
@@ -328,9 +331,34 @@ QString count(std::size_t n)
     return QLocale::c().toString(qulonglong(n));
 }
 
+// Reports the collapses done against the ones needed for the coarsest level,
+// and stops the Decimater when the caller says so.
+class ProgressObserver : public OpenMesh::Decimater::Observer
+{
+public:
+    ProgressObserver(const DecimationProgress &progress, std::size_t collapses)
+        : Observer(std::max<std::size_t>(1, collapses / 50))
+        , m_progress(progress)
+        , m_collapses(std::max<std::size_t>(1, collapses))
+    {
+    }
+    void notify(std::size_t step) override
+    {
+        m_cancelled = m_cancelled || !m_progress(std::min(1.0, double(step) / double(m_collapses)));
+    }
+    bool abort() const override { return m_cancelled; }
+    bool cancelled() const { return m_cancelled; }
+
+private:
+    const DecimationProgress &m_progress;
+    std::size_t m_collapses;
+    bool m_cancelled = false;
+};
+
 } // namespace
 
-std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions, QString *note)
+std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions, QString *note,
+                                         const DecimationProgress &progress)
 {
     std::vector<MeshData> levels(fractions.size());
     QStringList notes;
@@ -394,6 +422,14 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     std::stable_sort(todo.begin(), todo.end(), [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
     const bool faceted = isFaceted(mesh);
     std::size_t faces = faceTriangle.size();
+    // Each collapse removes about two faces: that many to reach the coarsest level.
+    const double coarsest = fractions[todo.back()];
+    std::unique_ptr<ProgressObserver> observer;
+    if (progress) {
+        const auto collapses = std::size_t(double(faces) * (1.0 - coarsest) / 2.0);
+        observer = std::make_unique<ProgressObserver>(progress, collapses);
+        decimater.set_observer(observer.get());
+    }
     for (std::size_t i : todo) {
         const std::size_t target =
             std::max<std::size_t>(1, std::size_t(std::llround(fractions[i] * double(mesh.triangleCount()))));
@@ -402,6 +438,12 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
             // collection here: face handles index faceTriangle) as present.
             decimater.decimate_to_faces(0, target + (om.n_faces() - faces));
             faces = liveFaces(om);
+            if (observer && observer->cancelled()) {
+                decimater.set_observer(nullptr);
+                notes = QStringList{QStringLiteral("cancelled")};
+                levels.assign(fractions.size(), MeshData{});
+                return finish();
+            }
         }
         // Some slack: collapses remove two faces at a time, and closed
         // pieces cannot shrink below a tetrahedron.
@@ -411,12 +453,14 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
                          .arg(count(faces), count(target));
         levels[i] = rebuild(mesh, weld, om, faceTriangle, faceted);
     }
+    if (observer)
+        decimater.set_observer(nullptr);
     return finish();
 }
 
-MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note)
+MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note, const DecimationProgress &progress)
 {
-    return std::move(decimateMeshLevels(mesh, {fraction}, note).front());
+    return std::move(decimateMeshLevels(mesh, {fraction}, note, progress).front());
 }
 
 bool isClosedMesh(const MeshData &mesh)

@@ -2,6 +2,7 @@
 #include "MeshData.h"
 
 #include <QString>
+#include <functional>
 #include <vector>
 
 namespace phonglab {
@@ -30,7 +31,13 @@ namespace phonglab {
 // UV sphere's poles) have no area and are dropped without a word. The decimation may stop
 // above the target when every remaining collapse is refused; *note says so.
 // Deterministic; no GL; safe on any thread.
-MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note = nullptr);
+//
+// progress(fraction done) is called now and then on the calling thread;
+// returning false stops the decimation: the result is then empty and *note
+// says "cancelled".
+using DecimationProgress = std::function<bool(double)>;
+MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note = nullptr,
+                      const DecimationProgress &progress = {});
 
 // Several levels at once, in the order of `fractions`, for the price of one
 // decimation to the coarsest: one run goes from fine to coarse and each
@@ -38,7 +45,7 @@ MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note = nul
 // same fraction only in the order of equally good collapses). *note
 // gathers what each level would say.
 std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
-                                         QString *note = nullptr);
+                                         QString *note = nullptr, const DecimationProgress &progress = {});
 
 // True when the mesh, welded by exact position (MeshData splits a point into
 // one vertex per normal), has every edge on exactly two triangles

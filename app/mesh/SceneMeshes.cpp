@@ -50,10 +50,11 @@ void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
 
 // Replaces the full mesh with the one drawn at `detail`: builtins
 // tessellated coarser, files decimated (the mesh cache keeps the full one).
-void applyDetail(MeshLoadResult &loaded, const QString &spec, double detail)
+// False when `progress` cancelled the decimation.
+bool applyDetail(MeshLoadResult &loaded, const QString &spec, double detail, const LoadProgress &progress)
 {
     if (detail == 1.0 || !loaded.mesh)
-        return;
+        return true;
     QElapsedTimer timer;
     timer.start();
     MeshStats &s = loaded.stats;
@@ -67,7 +68,15 @@ void applyDetail(MeshLoadResult &loaded, const QString &spec, double detail)
         s.fileFaces = s.triangles;
     } else {
         QString note;
-        *loaded.mesh = decimateMesh(*loaded.mesh, detail, &note);
+        bool cancelled = false;
+        const DecimationProgress step = [&](double f) {
+            cancelled = progress && !progress(f);
+            return !cancelled;
+        };
+        MeshData coarse = decimateMesh(*loaded.mesh, detail, &note, progress ? step : DecimationProgress{});
+        if (cancelled)
+            return false;
+        *loaded.mesh = std::move(coarse);
         if (!note.isEmpty())
             loaded.warnings << QStringLiteral("detail %1: %2").arg(detail).arg(note);
         fillDrawnStats(*loaded.mesh, s, true);
@@ -76,6 +85,7 @@ void applyDetail(MeshLoadResult &loaded, const QString &spec, double detail)
         s.closed = s.closed && isClosedMesh(*loaded.mesh);
     }
     s.loadMs += timer.nsecsElapsed() / 1e6;
+    return true;
 }
 
 } // namespace
@@ -107,20 +117,29 @@ SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoad
     }
     for (qsizetype i = 0; i < todo.size(); ++i) {
         const SceneObject &object = *todo[i];
-        LoadProgress part;
-        if (progress) {
-            const double from = double(i) / todo.size(), to = double(i + 1) / todo.size();
-            part = [&progress, from, to](double f) { return progress(from + (to - from) * f); };
-        }
-        // The full mesh first (what the mesh cache holds), then its level of detail.
+        // The full mesh first (what the mesh cache holds), then its level of
+        // detail: half of this object's share of the progress bar each when
+        // it is decimated.
         const QString spec = scene.resolveMeshPath(object.mesh);
-        MeshLoadResult loaded = loadMesh(spec, object.normals, part);
+        const bool decimated = object.detail != 1.0 && !isBuiltinMeshSpec(spec);
+        const double from = double(i) / todo.size(), to = double(i + 1) / todo.size();
+        const double split = decimated ? 0.5 * (from + to) : to;
+        const auto part = [&progress](double a, double b) -> LoadProgress {
+            if (!progress)
+                return {};
+            return [&progress, a, b](double f) { return progress(a + (b - a) * f); };
+        };
+        MeshLoadResult loaded = loadMesh(spec, object.normals, part(from, split));
         if (!loaded.ok()) {
             result.entries.clear();
             result.error = loaded.error;
             return result;
         }
-        applyDetail(loaded, spec, object.detail);
+        if (!applyDetail(loaded, spec, object.detail, part(split, to))) {
+            result.entries.clear();
+            result.error = QStringLiteral("cancelled");
+            return result;
+        }
         SceneMeshes::Entry entry;
         entry.mesh = std::make_shared<const MeshData>(std::move(*loaded.mesh));
         entry.stats = loaded.stats;
