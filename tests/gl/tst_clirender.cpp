@@ -2,21 +2,13 @@
 // file unless everything succeeded.
 #include "PhonglabProcess.h"
 #include "RenderCheck.h"
+#include "TestPaths.h"
 
 #include <QImage>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace phonglab::test;
-
-namespace {
-
-QString dataFile(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative;
-}
-
-} // namespace
 
 class TestCliRender : public QObject
 {
@@ -50,7 +42,7 @@ void TestCliRender::helpListsSubcommands()
 void TestCliRender::rendersPng()
 {
     const QString out = m_dir.filePath(QStringLiteral("sphere.png"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
                                QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("160x120")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QImage image(out);
@@ -72,7 +64,7 @@ void TestCliRender::rendersPng()
 void TestCliRender::rendersDefaultScene()
 {
     const QString out = m_dir.filePath(QStringLiteral("default.png"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"), QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json"),
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), sourcePath(QStringLiteral("assets/scenes/default.json")),
                                QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY(QFile::exists(out));
@@ -81,7 +73,7 @@ void TestCliRender::rendersDefaultScene()
 void TestCliRender::usageErrors_data()
 {
     QTest::addColumn<QStringList>("args");
-    const QString scene = dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"));
+    const QString scene = testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"));
     QTest::newRow("no scene") << QStringList{QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.png")};
     QTest::newRow("no output") << QStringList{QStringLiteral("render"), scene};
     QTest::newRow("two scenes") << QStringList{QStringLiteral("render"), scene, scene, QStringLiteral("-o"), QStringLiteral("x.png")};
@@ -111,12 +103,12 @@ void TestCliRender::badInputFails_data()
     QTest::addColumn<QStringList>("extra");
     QTest::addColumn<QString>("expected"); // part of the error message
     QTest::newRow("missing scene file") << m_dir.filePath(QStringLiteral("nope.json")) << QStringList() << "nope.json";
-    QTest::newRow("unknown builtin mesh") << dataFile(QStringLiteral("scenes/gl_bad_mesh.json")) << QStringList()
+    QTest::newRow("unknown builtin mesh") << testDataPath(QStringLiteral("scenes/gl_bad_mesh.json")) << QStringList()
                                           << "builtin:cylinder";
     QTest::newRow("missing shader file")
-        << dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"))
+        << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
         << QStringList{QStringLiteral("--fragment"), m_dir.filePath(QStringLiteral("missing.frag"))} << "missing.frag";
-    QTest::newRow("unwritable output") << dataFile(QStringLiteral("scenes/gl_sphere_one_light.json"))
+    QTest::newRow("unwritable output") << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
                                        << QStringList{QStringLiteral("-o"), QStringLiteral("/nonexistent-dir/out.png")}
                                        << "/nonexistent-dir/out.png";
 }
@@ -141,8 +133,8 @@ void TestCliRender::badInputFails()
 void TestCliRender::compileErrorPointsAtUserLine()
 {
     const QString out = m_dir.filePath(QStringLiteral("broken.png"));
-    const QString frag = dataFile(QStringLiteral("shaders/error_line17.frag"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"), dataFile(QStringLiteral("scenes/gl_sphere_one_light.json")),
+    const QString frag = testDataPath(QStringLiteral("shaders/error_line17.frag"));
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
                                QStringLiteral("-o"), out, QStringLiteral("--fragment"), frag});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
@@ -153,7 +145,7 @@ void TestCliRender::sceneShadersAreUsed()
 {
     // A scene naming its own fragment shader (relative to the scene file)
     // renders with it; --shading picks the shipped method instead.
-    QFile shipped(QStringLiteral(PHONGLAB_SOURCE_DIR "/shaders/phong.frag"));
+    QFile shipped(sourcePath(QStringLiteral("shaders/phong.frag")));
     QVERIFY(shipped.open(QIODevice::ReadOnly));
     QByteArray swapped = shipped.readAll();
     QVERIFY(swapped.contains("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);"));

@@ -5,10 +5,11 @@
 // at the field, and a marker drag is one undo step.
 
 #include "RenderCheck.h"
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/AnalyticRaycaster.h"
 #include "core/MaterialPresets.h"
 #include "core/PhongReference.h"
-#include "render/GlFormat.h"
 #include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
 #include "ui/MaterialPanel.h"
@@ -26,8 +27,6 @@
 #include <QFile>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QStandardPaths>
-#include <QSurfaceFormat>
 #include <QTest>
 #include <QUndoStack>
 #include <memory>
@@ -41,7 +40,7 @@ constexpr int kInteriorPx = 2;   // skip pixels this near the silhouette
 
 QString sphereScenePath()
 {
-    return QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json");
+    return test::testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"));
 }
 
 void type(Vec3Field *field, const glm::dvec3 &value)
@@ -90,7 +89,7 @@ QString compareWithReference(const QImage &grab, const Scene &scene)
 
 } // namespace
 
-class TestLightsDock : public QObject
+class TestLightsDock : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -113,31 +112,21 @@ private slots:
     void exportImageAtAnySize();
 
 private:
-    Viewport *viewport() const { return m_window->viewport(); }
     SceneEditDocks *docks() const { return m_window->editDocks(); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
     void orbit(QPoint by);
     void verifyMatchesReference();
-
-    std::unique_ptr<MainWindow> m_window;
 };
 
 void TestLightsDock::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+    test::useTestSettingsAndExactFrames();
 }
 
 void TestLightsDock::init()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(sphereScenePath(), &error), qPrintable(error));
-    m_window->resize(900, 600);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
+    openWindow(sphereScenePath(), {900, 600});
+    if (QTest::currentTestFailed())
+        return;
     viewport()->setShowLightMarkers(false); // the reference has no markers
 }
 

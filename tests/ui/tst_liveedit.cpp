@@ -4,8 +4,9 @@
 // user uniforms survive a rebuild; shipped shaders are never written; and
 // edits survive the process being killed, without running a suspect shader.
 
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/RecoveryJournal.h"
-#include "render/GlFormat.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -20,26 +21,19 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QProcess>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QSignalSpy>
-#include <QSurfaceFormat>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
 #include <memory>
 
 using namespace phonglab;
+using phonglab::test::sourcePath;
 
 namespace {
 
-constexpr int kBuildTimeoutMs = 10000; // debounce + compile + link + JIT, generously
 const QString kOutputLine = QStringLiteral("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);");
-
-QString sourcePath(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
-}
 
 QHash<QString, QByteArray> hashShippedShaders()
 {
@@ -91,7 +85,7 @@ void leaveDeadSession(const QString &dir, const RecoveryRecord &record, bool wit
 
 } // namespace
 
-class TestLiveEdit : public QObject
+class TestLiveEdit : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -114,25 +108,14 @@ private slots:
 private:
     void openWindow();
     ShaderDock *dock() const { return m_window->shaderDock(); }
-    ShaderEditor *fragmentEditor() const { return dock()->editor(ShaderStage::Fragment); }
-    LiveShaderController *live() const { return m_window->liveShaders(); }
-    Viewport *viewport() const { return m_window->viewport(); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
     void typeAfter(const QString &anchor, const QString &keys);
-    bool waitForApplied(int timeoutMs = kBuildTimeoutMs);
 
-    std::unique_ptr<QTemporaryDir> m_recoveryDir;
-    std::unique_ptr<MainWindow> m_window;
     QHash<QString, QByteArray> m_shippedHashes;
-    QTemporaryDir m_cacheDir;
 };
 
 void TestLiveEdit::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
-    if (qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR"))
-        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    m_env.isolate();
     QDir(ShaderFileSet::userFolder()).removeRecursively(); // user copies from earlier runs
     m_shippedHashes = hashShippedShaders();
     QVERIFY(m_shippedHashes.size() >= 4);
@@ -140,9 +123,7 @@ void TestLiveEdit::initTestCase()
 
 void TestLiveEdit::init()
 {
-    m_recoveryDir = std::make_unique<QTemporaryDir>();
-    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
-    qunsetenv("PHONGLAB_RECOVERY_ANSWER");
+    m_env.useFreshRecoveryDir(nullptr);
     qunsetenv("PHONGLAB_COMPILE_ON_GUI_THREAD");
 }
 
@@ -159,14 +140,7 @@ void TestLiveEdit::cleanupTestCase()
 
 void TestLiveEdit::openWindow()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
-    m_window->resize(900, 600);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
+    UiTestWindow::openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
 }
 
 // As a user would: cursor just after `anchor` in the fragment editor, then keys.
@@ -179,18 +153,6 @@ void TestLiveEdit::typeAfter(const QString &anchor, const QString &keys)
     editor->setCursorPosition(lineTo, indexTo);
     editor->setFocus();
     QTest::keyClicks(editor, keys);
-}
-
-bool TestLiveEdit::waitForApplied(int timeoutMs)
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < timeoutMs) {
-        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
-            return true;
-        QTest::qWait(10);
-    }
-    return false;
 }
 
 void TestLiveEdit::typingChangesTheFrame()
@@ -353,7 +315,7 @@ void TestLiveEdit::killedSessionIsRestored()
 
     QProcess child;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("PHONGLAB_RECOVERY_DIR"), m_recoveryDir->path());
+    env.insert(QStringLiteral("PHONGLAB_RECOVERY_DIR"), m_env.recoveryDir());
     env.insert(QStringLiteral("PHONGLAB_TEST_TYPE_AFTER_START"), marker);
     env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
     env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
@@ -368,8 +330,8 @@ void TestLiveEdit::killedSessionIsRestored()
     QVERIFY2(child.waitForStarted(), qPrintable(child.errorString()));
 
     const auto journaled = [&] {
-        for (const QString &name : QDir(m_recoveryDir->path()).entryList({QStringLiteral("*.journal")})) {
-            const auto record = RecoveryJournal::readFile(QDir(m_recoveryDir->path()).filePath(name));
+        for (const QString &name : QDir(m_env.recoveryDir()).entryList({QStringLiteral("*.journal")})) {
+            const auto record = RecoveryJournal::readFile(QDir(m_env.recoveryDir()).filePath(name));
             if (record && record->fragment.text.contains(marker.toUtf8()))
                 return true;
         }
@@ -386,7 +348,7 @@ void TestLiveEdit::killedSessionIsRestored()
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));
     QVERIFY(!live()->isAutoBuildHeld());
     QVERIFY(waitForApplied()); // a plain edit: built as usual
-    QVERIFY(RecoveryJournal(m_recoveryDir->path()).orphans().isEmpty()); // adopted, not offered again
+    QVERIFY(RecoveryJournal(m_env.recoveryDir()).orphans().isEmpty()); // adopted, not offered again
 }
 
 void TestLiveEdit::suspectShaderWaitsForF5()
@@ -399,7 +361,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QVERIFY(suspect != shippedFragment);
     record.fragment = {sourcePath(QStringLiteral("shaders/phong.frag")), suspect, true};
     record.shading = QStringLiteral("phong");
-    leaveDeadSession(m_recoveryDir->path(), record, true);
+    leaveDeadSession(m_env.recoveryDir(), record, true);
 
     qputenv("PHONGLAB_RECOVERY_ANSWER", "restore");
     openWindow();

@@ -2,16 +2,15 @@
 // Xvfb): the default scene is drawn and lit, bad files leave the scene alone,
 // the mouse moves the camera, reset restores it, and saving round-trips.
 
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/SceneJson.h"
-#include "render/GlFormat.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
 
 #include <QDir>
 #include <QLabel>
-#include <QStandardPaths>
 #include <QStatusBar>
-#include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QWheelEvent>
@@ -26,7 +25,7 @@ constexpr int kTintMargin = 40;         // how much one channel must beat the ot
 
 QString defaultScenePathInSource()
 {
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/default.json");
+    return test::sourcePath(QStringLiteral("assets/scenes/default.json"));
 }
 
 QRgb toRgb(const glm::dvec3 &c)
@@ -96,7 +95,7 @@ void writeFile(const QString &path, const QByteArray &contents)
 
 } // namespace
 
-class TestMainWindow : public QObject
+class TestMainWindow : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -117,22 +116,18 @@ private slots:
     void saveThenReopenGivesEqualScene();
 
 private:
-    Viewport *viewport() const { return m_window->viewport(); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
     void drag(Qt::MouseButton button, QPoint by);
     void zoom(int notches); // > 0 towards the scene, as a wheel turned away from the user
     void saveArtifact(const QString &name, const QImage &image) const;
 
-    std::unique_ptr<MainWindow> m_window;
     Scene m_loaded; // default.json exactly as on disk
 };
 
 void TestMainWindow::initTestCase()
 {
     // Saving adds to the recent files: keep them out of the user's settings.
-    QStandardPaths::setTestModeEnabled(true);
     // No multisampling: pixel colours are single fragments, easier to reason about.
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+    test::useTestSettingsAndExactFrames();
     const SceneLoadResult loaded = loadSceneFile(defaultScenePathInSource());
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     m_loaded = *loaded.scene;
@@ -140,14 +135,7 @@ void TestMainWindow::initTestCase()
 
 void TestMainWindow::init()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(defaultScenePathInSource(), &error), qPrintable(error));
-    m_window->resize(800, 600);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
+    openWindow(defaultScenePathInSource(), {800, 600});
 }
 
 void TestMainWindow::cleanup()

@@ -4,9 +4,10 @@
 // other normals from it, survive save / reopen, and arrive by drag and drop.
 // Broken and unsupported files, and cancelling, leave the scene alone.
 
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/SceneJson.h"
 #include "mesh/MeshLoader.h"
-#include "render/GlFormat.h"
 #include "ui/LoadProgressWidget.h"
 #include "ui/MainWindow.h"
 #include "ui/MeshPlacement.h"
@@ -28,9 +29,7 @@
 #include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QStatusBar>
-#include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -41,6 +40,7 @@
 #include <memory>
 
 using namespace phonglab;
+using phonglab::test::sourcePath;
 
 namespace {
 
@@ -49,11 +49,6 @@ constexpr int kBackgroundTolerance = 6; // 8-bit steps, per channel
 constexpr int kLargeGridSide = 710;     // 2 · 709² ≈ 1M triangles: loads for a good fraction of a second
 constexpr int kTickIntervalMs = 10;
 constexpr qint64 kMaxTickGapMs = 250;   // a frame or two of llvmpipe, far below the large mesh's load time
-
-QString sourcePath(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
-}
 
 QString treePath() { return sourcePath(QStringLiteral("assets/meshes/tree.obj")); }
 QString cloudPath() { return sourcePath(QStringLiteral("assets/meshes/cloud.obj")); }
@@ -128,7 +123,7 @@ QString dockField(SceneDock *dock, int index, const QString &name)
 
 } // namespace
 
-class TestMeshLoading : public QObject
+class TestMeshLoading : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -153,9 +148,7 @@ private slots:
     void warningsAreListed();
 
 private:
-    Viewport *viewport() const { return m_window->viewport(); }
     SceneDock *dock() const { return m_window->sceneDock(); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
     // Starts opening `paths` and waits for the load's outcome; true when it loaded.
     bool openAndWait(const QStringList &paths);
     bool waitForLoad(const std::function<void()> &start);
@@ -164,7 +157,6 @@ private:
     bool dropFiles(const QStringList &paths);
     void saveArtifact(const QString &name, const QImage &image) const;
 
-    std::unique_ptr<MainWindow> m_window;
     QTemporaryDir m_dir;
     QString m_largeObj;
     Scene m_default;
@@ -174,8 +166,7 @@ private:
 void TestMeshLoading::initTestCase()
 {
     // Recent files go to a throwaway settings folder, not the user's.
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+    test::useTestSettingsAndExactFrames();
     QVERIFY(m_dir.isValid());
     // A fresh mesh cache: the first load of every file here really parses it.
     qputenv("PHONGLAB_CACHE_DIR", QFile::encodeName(m_dir.filePath(QStringLiteral("cache"))));
@@ -192,11 +183,7 @@ void TestMeshLoading::init()
     m_window->recentFiles()->clear();
     QString error;
     QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
-    m_window->resize(1000, 640);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
+    test::showAndWaitForFrame(*m_window, {1000, 640});
 }
 
 void TestMeshLoading::cleanup()
@@ -550,11 +537,9 @@ void TestMeshLoading::meshOpenedBeforeFirstShow()
     QVERIFY2(openAndWait({treePath()}), qPrintable(m_lastError));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QVERIFY(!dockField(dock(), 0, QStringLiteral("Triangles")).isEmpty());
-    m_window->resize(800, 600);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
+    test::showAndWaitForFrame(*m_window, {800, 600});
+    if (QTest::currentTestFailed())
+        return;
     QVERIFY(foregroundFraction(frame(), viewport()->currentScene().background) > 0.05);
 }
 

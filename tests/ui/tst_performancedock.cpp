@@ -3,8 +3,9 @@
 // a model whose measured error is within the default budget (max 2/255 away
 // from silhouettes), shows it, draws fewer or equal triangles, charts the
 // measurement and reports the savings; Full detail goes back.
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/Scene.h"
-#include "render/GlFormat.h"
 #include "ui/MainWindow.h"
 #include "ui/PerformanceDock.h"
 #include "ui/Viewport.h"
@@ -12,26 +13,19 @@
 #include <QChart>
 #include <QChartView>
 #include <QSignalSpy>
-#include <QStandardPaths>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QTest>
 #include <memory>
 
 using namespace phonglab;
+using phonglab::test::sourcePath;
 
 namespace {
 
 constexpr int kMeasureTimeoutMs = 240000; // 2 loaded cores; about 20 s when idle
 
-QString sourcePath(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
-}
-
 } // namespace
 
-class TestPerformanceDock : public QObject
+class TestPerformanceDock : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -43,33 +37,20 @@ private slots:
 private:
     void openWindow();
     PerformanceDock *dock() const { return m_window->performanceDock(); }
-    Viewport *viewport() const { return m_window->viewport(); }
-
-    QTemporaryDir m_cacheDir;
-    QTemporaryDir m_recoveryDir;
-    std::unique_ptr<MainWindow> m_window;
 };
 
 void TestPerformanceDock::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    if (qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR"))
-        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
-    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir.path().toUtf8());
-    qputenv("PHONGLAB_RECOVERY_ANSWER", "discard");
+    m_env.isolate();
+    m_env.useFreshRecoveryDir("discard"); // one for the whole test case
     QVERIFY2(!qEnvironmentVariableIsEmpty("PHONGLAB_EXE"), "the dock runs the phonglab binary: set PHONGLAB_EXE");
 }
 
 void TestPerformanceDock::openWindow()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
-    m_window->resize(1000, 700);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    UiTestWindow::openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {1000, 700});
+    if (QTest::currentTestFailed())
+        return;
     dock()->raise();
 }
 

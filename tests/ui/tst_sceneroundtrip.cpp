@@ -3,8 +3,9 @@
 // shader in the dock; a scene naming a missing shader opens with the shipped
 // ones and an error; the window layout round-trips through QSettings.
 
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "core/SceneJson.h"
-#include "render/GlFormat.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -16,25 +17,16 @@
 
 #include <QAction>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QSettings>
-#include <QStandardPaths>
-#include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
 #include <memory>
 
 using namespace phonglab;
+using phonglab::test::sourcePath;
 
 namespace {
-
-constexpr int kBuildTimeoutMs = 10000;
-
-QString sourcePath(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
-}
 
 QByteArray readFile(const QString &path)
 {
@@ -44,7 +36,7 @@ QByteArray readFile(const QString &path)
 
 } // namespace
 
-class TestSceneRoundTrip : public QObject
+class TestSceneRoundTrip : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -61,33 +53,21 @@ private slots:
 private:
     void openWindow();
     ShaderDock *dock() const { return m_window->shaderDock(); }
-    ShaderEditor *fragmentEditor() const { return dock()->editor(ShaderStage::Fragment); }
-    LiveShaderController *live() const { return m_window->liveShaders(); }
-    Viewport *viewport() const { return m_window->viewport(); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
-    bool waitForApplied();
     void drag(QPoint by);
 
-    std::unique_ptr<QTemporaryDir> m_recoveryDir;
-    std::unique_ptr<MainWindow> m_window;
-    QTemporaryDir m_cacheDir;
     QTemporaryDir m_sceneDir;
 };
 
 void TestSceneRoundTrip::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
-    qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    m_env.isolate(test::UiTestEnvironment::Cache::AlwaysPrivate);
     QVERIFY(m_sceneDir.isValid());
     QDir(ShaderFileSet::userFolder()).removeRecursively(); // user copies from earlier runs
 }
 
 void TestSceneRoundTrip::init()
 {
-    m_recoveryDir = std::make_unique<QTemporaryDir>();
-    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
-    qputenv("PHONGLAB_RECOVERY_ANSWER", "discard");
+    m_env.useFreshRecoveryDir("discard");
 }
 
 void TestSceneRoundTrip::cleanup()
@@ -102,26 +82,7 @@ void TestSceneRoundTrip::cleanupTestCase()
 
 void TestSceneRoundTrip::openWindow()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
-    m_window->resize(900, 600);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
-    QVERIFY(viewport()->isRenderReady());
-}
-
-bool TestSceneRoundTrip::waitForApplied()
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < kBuildTimeoutMs) {
-        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
-            return true;
-        QTest::qWait(10);
-    }
-    return false;
+    UiTestWindow::openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
 }
 
 void TestSceneRoundTrip::drag(QPoint by)

@@ -2,7 +2,8 @@
 // Xvfb): rows come from the linked program after every build; what the scene
 // or the renderer sets is read-only; a user uniform is edited through the
 // dock, changes the frame, survives a recompile; bad input is refused.
-#include "render/GlFormat.h"
+#include "TestPaths.h"
+#include "UiTestWindow.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -17,14 +18,12 @@
 #include "ui/Viewport.h"
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QCheckBox>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include "core/SceneJson.h"
@@ -33,19 +32,14 @@
 #include <memory>
 
 using namespace phonglab;
+using phonglab::test::sourcePath;
 
 namespace {
 
-constexpr int kBuildTimeoutMs = 10000;
-
-QString sourcePath(const QString &relative)
-{
-    return QStringLiteral(PHONGLAB_SOURCE_DIR "/") + relative;
-}
 
 } // namespace
 
-class TestUniformsDock : public QObject
+class TestUniformsDock : public QObject, private test::UiTestWindow
 {
     Q_OBJECT
 
@@ -66,34 +60,20 @@ private:
     void openWindow();
     void addGain();
     void typeInto(UniformNumberField *field, const QString &text);
-    bool waitForApplied();
     float programValue(const QByteArray &name);
     UniformsDock *dock() const { return m_window->uniformsDock(); }
-    ShaderEditor *fragmentEditor() const { return m_window->shaderDock()->editor(ShaderStage::Fragment); }
-    LiveShaderController *live() const { return m_window->liveShaders(); }
-    Viewport *viewport() const { return m_window->viewport(); }
     UniformFloatRow *gainRow() const { return qobject_cast<UniformFloatRow *>(dock()->row(QStringLiteral("gain"))); }
-    QImage frame() const { return viewport()->grabFramebuffer(); }
-
-    QTemporaryDir m_cacheDir;
-    std::unique_ptr<QTemporaryDir> m_recoveryDir;
-    std::unique_ptr<MainWindow> m_window;
 };
 
 void TestUniformsDock::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
-    if (qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR"))
-        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir.path().toUtf8());
+    m_env.isolate();
     QDir(ShaderFileSet::userFolder()).removeRecursively();
 }
 
 void TestUniformsDock::init()
 {
-    m_recoveryDir = std::make_unique<QTemporaryDir>();
-    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
-    qunsetenv("PHONGLAB_RECOVERY_ANSWER");
+    m_env.useFreshRecoveryDir(nullptr);
 }
 
 void TestUniformsDock::cleanup()
@@ -108,27 +88,11 @@ void TestUniformsDock::cleanupTestCase()
 
 void TestUniformsDock::openWindow()
 {
-    m_window = std::make_unique<MainWindow>();
-    QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
-    m_window->resize(1000, 700);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QTRY_VERIFY(viewport()->framesRendered() > 0);
+    UiTestWindow::openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {1000, 700});
+    if (QTest::currentTestFailed())
+        return;
     dock()->raise();
     QTRY_VERIFY(dock()->row(QStringLiteral("kd")));
-}
-
-bool TestUniformsDock::waitForApplied()
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < kBuildTimeoutMs) {
-        if (live()->appliedHash() == live()->currentHash() && !live()->isBuilding())
-            return true;
-        QTest::qWait(10);
-    }
-    return false;
 }
 
 // `uniform float gain; // @range 0 2` scales the output: 0 (its initial
@@ -230,7 +194,7 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
-    QVERIFY2(m_window->openScene(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/scenes/torus.json"), &error),
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error),
              qPrintable(error));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
     typeInto(gainRow()->field(), QStringLiteral("1.5"));

@@ -1,0 +1,91 @@
+#include "UiTestWindow.h"
+
+#include "render/GlFormat.h"
+#include "ui/LiveShaderController.h"
+#include "ui/MainWindow.h"
+#include "ui/ShaderDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/Viewport.h"
+
+#include <QElapsedTimer>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTest>
+
+namespace phonglab::test {
+
+void useTestSettingsAndExactFrames()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0)); // single-sample: exact frames
+}
+
+void UiTestEnvironment::isolate(Cache cache)
+{
+    useTestSettingsAndExactFrames();
+    if (cache == Cache::AlwaysPrivate || qEnvironmentVariableIsEmpty("PHONGLAB_CACHE_DIR")) {
+        m_cacheDir = std::make_unique<QTemporaryDir>();
+        qputenv("PHONGLAB_CACHE_DIR", m_cacheDir->path().toUtf8());
+    }
+}
+
+void UiTestEnvironment::useFreshRecoveryDir(const char *answer)
+{
+    m_recoveryDir = std::make_unique<QTemporaryDir>();
+    qputenv("PHONGLAB_RECOVERY_DIR", m_recoveryDir->path().toUtf8());
+    if (answer)
+        qputenv("PHONGLAB_RECOVERY_ANSWER", answer);
+    else
+        qunsetenv("PHONGLAB_RECOVERY_ANSWER");
+}
+
+void showAndWaitForFrame(MainWindow &window, QSize size)
+{
+    window.resize(size);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_VERIFY(window.viewport()->framesRendered() > 0);
+    QVERIFY(window.viewport()->isRenderReady());
+}
+
+void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, QSize size)
+{
+    window = std::make_unique<MainWindow>();
+    QString error;
+    QVERIFY2(window->openScene(scenePath, &error), qPrintable(error));
+    showAndWaitForFrame(*window, size);
+}
+
+bool waitForApplied(const LiveShaderController &live, int timeoutMs)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < timeoutMs) {
+        if (live.appliedHash() == live.currentHash() && !live.isBuilding())
+            return true;
+        QTest::qWait(10);
+    }
+    return false;
+}
+
+Viewport *UiTestWindow::viewport() const
+{
+    return m_window->viewport();
+}
+
+QImage UiTestWindow::frame() const
+{
+    return viewport()->grabFramebuffer();
+}
+
+LiveShaderController *UiTestWindow::live() const
+{
+    return m_window->liveShaders();
+}
+
+ShaderEditor *UiTestWindow::fragmentEditor() const
+{
+    return m_window->shaderDock()->editor(ShaderStage::Fragment);
+}
+
+} // namespace phonglab::test
