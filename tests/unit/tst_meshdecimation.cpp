@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -106,6 +107,7 @@ private slots:
     void nonManifoldFacesAreLeftOutAndSaid();
     void builtinDetailTessellation();
     void sceneObjectDetail();
+    void progressAndCancel();
 };
 
 void TestMeshDecimation::shrinksToTheFraction_data()
@@ -382,6 +384,48 @@ void TestMeshDecimation::sceneObjectDetail()
     QCOMPARE(coarseSphere.triangles, qint64(64 * 32 * 2));
     QCOMPARE(coarseSphere.fullTriangles, qint64(256 * 128 * 2));
     QVERIFY(coarseSphere.closed);
+}
+
+// Long decimations report progress and stop when asked: the same result
+// with and without a progress callback, a rising fraction, and an empty
+// mesh with "cancelled" when the callback says no. A scene load cancelled
+// during decimation fails with "cancelled" and keeps nothing.
+void TestMeshDecimation::progressAndCancel()
+{
+    const MeshData sphere = makeUvSphere(128, 64);
+    std::vector<double> seen;
+    QString note;
+    const MeshData withProgress = decimateMesh(sphere, 0.1, &note, [&seen](double f) {
+        seen.push_back(f);
+        return true;
+    });
+    QVERIFY2(note.isEmpty(), qPrintable(note));
+    QVERIFY(seen.size() >= 10);
+    QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+    QVERIFY(seen.front() >= 0.0 && seen.back() <= 1.0 && seen.back() > 0.8);
+    const MeshData plain = decimateMesh(sphere, 0.1);
+    QCOMPARE(withProgress.indices, plain.indices);
+    QCOMPARE(withProgress.positions, plain.positions);
+
+    int calls = 0;
+    const MeshData stopped = decimateMesh(sphere, 0.1, &note, [&calls](double) { return ++calls < 3; });
+    QCOMPARE(note, QStringLiteral("cancelled"));
+    QVERIFY(stopped.indices.empty());
+    QCOMPARE(calls, 3); // not asked again once it said no
+
+    Scene scene;
+    SceneObject tree;
+    tree.mesh = asset("tree.obj");
+    tree.detail = 0.25;
+    scene.objects = {tree};
+    double last = 0.0;
+    const SceneMeshes loaded = loadSceneMeshes(scene, {}, [&last](double f) {
+        last = f;
+        return f < 0.6; // past loading (first half), into decimating
+    });
+    QCOMPARE(loaded.error, QStringLiteral("cancelled"));
+    QVERIFY(loaded.entries.isEmpty());
+    QVERIFY(last >= 0.5);
 }
 
 QTEST_APPLESS_MAIN(TestMeshDecimation)
