@@ -4,6 +4,7 @@
 // `--shading` option of `phonglab render`. Prints the figures it measures.
 #include "PhonglabProcess.h"
 #include "RenderCheck.h"
+#include "core/PhongReference.h"
 #include "core/ShadingMethod.h"
 #include "mesh/BuiltinMeshes.h"
 #include "render/GlFormat.h"
@@ -203,8 +204,18 @@ void TestShadingPresets::presetBuilds()
     const QSet<QByteArray> attributes = activeAttributes(preset.id());
     qInfo("%-12s uniforms: %s; attributes: %s", qPrintable(method), qPrintable(joined(uniforms)),
           qPrintable(joined(attributes)));
-    QVERIFY2((uniforms - allowedUniforms).isEmpty(),
-             qPrintable(QStringLiteral("uniforms phong.* does not have: ") + joined(uniforms - allowedUniforms)));
+    // Beyond Phong's, a preset may only declare its own tuning uniforms,
+    // and those must carry a default in the source (nobody else sets them):
+    // Blinn-Phong's exponentFactor starts at the matched 4.
+    const QHash<QByteArray, float> ownDefaults{{"exponentFactor", float(kBlinnExponentFactor)}};
+    for (const QByteArray &extra : uniforms - allowedUniforms) {
+        QVERIFY2(ownDefaults.contains(extra),
+                 qPrintable(QStringLiteral("uniform phong.* does not have and nobody sets: ") + QString::fromLatin1(extra)));
+        QOpenGLExtraFunctions *gl = QOpenGLContext::currentContext()->extraFunctions();
+        GLfloat value = 0.0f;
+        gl->glGetUniformfv(preset.id(), gl->glGetUniformLocation(preset.id(), extra.constData()), &value);
+        QCOMPARE(value, ownDefaults.value(extra));
+    }
     QVERIFY2((attributes - activeAttributes(phong.id())).isEmpty(),
              qPrintable(QStringLiteral("unexpected attributes: ") + joined(attributes)));
     QVERIFY2(attributes.contains("position"), "the preset does not read the vertex position");
@@ -251,7 +262,7 @@ void TestShadingPresets::blinnPhongMistakesFail()
     } else {
         // The half vector right, but max(0, N.H)^n: a highlight twice as wide.
         wrong = mutatedShader(QStringLiteral("blinn-phong.frag"),
-                              "float exponent = BLINN_EXPONENT_FACTOR * shininess;", "float exponent = shininess;");
+                              "float exponent = exponentFactor * shininess;", "float exponent = shininess;");
         QVERIFY2(wrong, "the shipped blinn-phong.frag no longer has the line this test changes");
     }
 
