@@ -81,12 +81,6 @@ Scene withDetail(Scene scene, double detail)
     return scene;
 }
 
-QString percentText(double detail)
-{
-    const double pct = detail * 100.0;
-    return QString::number(pct, 'g', pct >= 10 ? 3 : 2) + QStringLiteral(" %");
-}
-
 } // namespace
 
 std::vector<int> benchLightCounts(const BenchOptions &options, int sceneLights)
@@ -216,7 +210,7 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
         // its minimum): the same meshes again would only repeat rows.
         m_done += int(options.methods.size() * state.lightCounts.size());
         const QString stage = QStringLiteral("%1: detail %2 draws the same %3 triangles as the level before; skipped")
-                                  .arg(state.name, percentText(detail))
+                                  .arg(state.name, detailPercent(detail))
                                   .arg(triangles);
         if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
             return *error = QStringLiteral("cancelled"), false;
@@ -226,7 +220,7 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
     if (!renderer.setScene(scene, std::move(meshes), error)) {
-        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, percentText(detail), *error);
+        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), *error);
         return false;
     }
     for (ShadingMethod method : options.methods) {
@@ -240,7 +234,7 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
             rows->push_back(measure(options, state, s, method, detail));
             ++m_done;
             const QString stage = QStringLiteral("%1: %2, detail %3, %4 light(s)")
-                                      .arg(state.name, shadingName(method), percentText(detail))
+                                      .arg(state.name, shadingName(method), detailPercent(detail))
                                       .arg(state.lightCounts[s]);
             if (progress && !progress(BenchProgress{m_done, m_total, stage, &rows->back()}))
                 return *error = QStringLiteral("cancelled"), false;
@@ -294,7 +288,7 @@ BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std:
         QDir().mkpath(options.imageDir);
         benchTriptych(image, reference, scene.background, options.bandPx, &state.compared,
                       QStringLiteral("%1 · %2 · detail %3 · %4 triangles · %5 ms · max %6/255")
-                          .arg(state.name, row.method, percentText(detail))
+                          .arg(state.name, row.method, detailPercent(detail))
                           .arg(row.triangles)
                           .arg(row.frameMs, 0, 'f', 2)
                           .arg(row.maxError))

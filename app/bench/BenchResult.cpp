@@ -59,6 +59,14 @@ QString formatDouble(double v)
 
 } // namespace
 
+QString detailPercent(double detail)
+{
+    const double percent = detail * 100.0;
+    const QString number = std::abs(percent) >= 100 ? QString::number(percent, 'f', 0)
+                                                     : QString::number(percent, 'g', 3);
+    return number + QStringLiteral(" %");
+}
+
 QString csvField(const QString &field)
 {
     const bool needsQuotes = field.contains(QLatin1Char(',')) || field.contains(QLatin1Char('"'))

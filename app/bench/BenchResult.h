@@ -45,6 +45,9 @@ struct BenchRow {
     bool isBaseline() const { return method == QLatin1String("phong") && detail >= 1.0; }
 };
 
+// A detail fraction for people: "100 %", "25 %", "12.5 %", "1.56 %".
+QString detailPercent(double detail);
+
 // One CSV field as written: quoted (RFC 4180) when it holds a comma, a
 // quote, a line break or edge spaces. Shared by every CSV the bench writes.
 QString csvField(const QString &field);

@@ -16,12 +16,6 @@ QString number(double value, int precision, int width)
     return QString::number(value, 'f', precision).rightJustified(width);
 }
 
-QString detailText(double detail)
-{
-    const double pct = detail * 100.0;
-    return QString::number(pct, 'g', pct >= 10 ? 3 : 2) + QStringLiteral("%");
-}
-
 } // namespace
 
 QString benchTableHeader()
@@ -47,7 +41,7 @@ QString benchTableLine(const BenchRow &row)
     return QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12 %13")
         .arg(row.scene.left(10), -10)
         .arg(row.method, -11)
-        .arg(detailText(row.detail), 7)
+        .arg(detailPercent(row.detail), 7)
         .arg(row.triangles, 9)
         .arg(QString::number(row.lights) + (row.sceneLights ? QStringLiteral("*") : QStringLiteral(" ")), 6)
         .arg(number(row.frameMs, 2, 8))

@@ -29,14 +29,6 @@ QString formatMs(double ms)
     return QString::number(ms, 'f', 2);
 }
 
-QString formatPercent(double fraction)
-{
-    const double percent = fraction * 100.0;
-    if (std::abs(percent) >= 100)
-        return QString::number(percent, 'f', 0);
-    return QString::number(percent, 'g', 3);
-}
-
 QString formatDb(double db)
 {
     if (std::isinf(db))
@@ -68,7 +60,7 @@ QString rowLabel(const BenchRow &row)
 {
     if (row.detail >= 1.0)
         return QStringLiteral("%1 at full detail").arg(row.method);
-    return QStringLiteral("%1 at detail %2 %").arg(row.method, formatPercent(row.detail));
+    return QStringLiteral("%1 at detail %2").arg(row.method, detailPercent(row.detail));
 }
 
 // "3 412 triangles, 1.9 ms"

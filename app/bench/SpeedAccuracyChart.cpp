@@ -18,14 +18,6 @@ namespace phonglab {
 
 namespace {
 
-QString formatPercent(double fraction)
-{
-    const double percent = fraction * 100.0;
-    if (std::abs(percent) >= 100)
-        return QString::number(percent, 'f', 0) + QStringLiteral(" %");
-    return QString::number(percent, 'g', 3) + QStringLiteral(" %");
-}
-
 // flat < gouraud < blinn-phong < phong < normals < anything else (by name).
 int methodRank(const QString &method)
 {
@@ -97,7 +89,7 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
         series.name = method;
         series.color = methodColor(method);
         for (const BenchRow *row : list)
-            series.points.push_back({row->frameMs, row->rmse, formatPercent(row->detail)});
+            series.points.push_back({row->frameMs, row->rmse, detailPercent(row->detail)});
         spec.series.push_back(std::move(series));
     }
 

@@ -22,12 +22,6 @@ namespace {
 constexpr int kMaxErrorIndex = 0;
 constexpr int kPsnrIndex = 1;
 
-QString percent(double detail)
-{
-    const double pct = detail * 100.0;
-    return QString::number(pct, 'g', pct >= 10 ? 3 : 2) + QStringLiteral(" %");
-}
-
 } // namespace
 
 PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
@@ -52,14 +46,7 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     budgetRow->addWidget(m_budgetKind, 1);
     budgetRow->addWidget(m_budgetValue);
     layout->addLayout(budgetRow);
-    connect(m_budgetKind, &QComboBox::currentIndexChanged, this, [this](int index) {
-        // Each kind keeps a sensible range; switching resets to its default.
-        const bool psnr = index == kPsnrIndex;
-        m_budgetValue->setDecimals(psnr ? 1 : 0);
-        m_budgetValue->setRange(psnr ? 10.0 : 0.0, psnr ? 99.0 : 255.0);
-        m_budgetValue->setValue(psnr ? 40.0 : 2.0);
-        m_budgetValue->setSuffix(psnr ? tr(" dB") : tr(" /255"));
-    });
+    connect(m_budgetKind, &QComboBox::currentIndexChanged, this, &PerformanceDock::setBudgetKind);
     setBudget(ErrorBudget{});
 
     auto *buttons = new QHBoxLayout;
@@ -122,8 +109,18 @@ void PerformanceDock::setBudget(const ErrorBudget &budget)
 {
     const bool psnr = budget.kind == ErrorBudget::Kind::Psnr;
     m_budgetKind->setCurrentIndex(psnr ? kPsnrIndex : kMaxErrorIndex);
-    emit m_budgetKind->currentIndexChanged(m_budgetKind->currentIndex()); // ranges even if unchanged
+    setBudgetKind(m_budgetKind->currentIndex()); // the ranges, even if the kind did not change
     m_budgetValue->setValue(psnr ? budget.minPsnr : double(budget.maxError));
+}
+
+// Each kind keeps a sensible range; switching resets to its default.
+void PerformanceDock::setBudgetKind(int index)
+{
+    const bool psnr = index == kPsnrIndex;
+    m_budgetValue->setDecimals(psnr ? 1 : 0);
+    m_budgetValue->setRange(psnr ? 10.0 : 0.0, psnr ? 99.0 : 255.0);
+    m_budgetValue->setValue(psnr ? 40.0 : 2.0);
+    m_budgetValue->setSuffix(psnr ? tr(" dB") : tr(" /255"));
 }
 
 QString PerformanceDock::reportText() const
@@ -207,7 +204,7 @@ void PerformanceDock::applyFit()
     const QLocale locale;
     QString text = tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured "
                       "offscreen, without multisampling).")
-                       .arg(budget().describe(), chosen.method, percent(chosen.detail),
+                       .arg(budget().describe(), chosen.method, detailPercent(chosen.detail),
                             locale.toString(chosen.triangles), locale.toString(chosen.frameMs, 'f', 2));
     if (m_fit.baseline >= 0) {
         const BenchRow &full = m_rows[std::size_t(m_fit.baseline)];

@@ -55,6 +55,7 @@ signals:
     void fitApplied();  // the model was handed to applyModelRequested
 
 private:
+    void setBudgetKind(int index);
     void startMeasurement(bool thenFit);
     void showProgress(int done, int total, const QString &stage);
     void measurementFinished(const std::vector<BenchRow> &rows, const QString &error);

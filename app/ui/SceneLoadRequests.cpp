@@ -1,6 +1,7 @@
 #include "SceneLoadRequests.h"
 
 #include "FileTypes.h"
+#include "bench/BenchResult.h"
 #include "MeshPlacement.h"
 
 #include <QFileInfo>
@@ -59,7 +60,7 @@ SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double
     };
     SceneLoadRequest request;
     request.scene = apply(current);
-    request.label = QObject::tr("%1 at %2 % detail").arg(shadingName(method)).arg(detail * 100.0, 0, 'g', 3);
+    request.label = QObject::tr("%1 at %2 detail").arg(shadingName(method), detailPercent(detail));
     // Applied to the scene on screen when loading ends: the camera and lights
     // may have moved meanwhile. Objects only change through loads, so its
     // objects are still the ones loaded here.

@@ -10,6 +10,7 @@
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ShaderProgram.h"
+#include "render/UniformIntrospection.h"
 
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -47,24 +48,11 @@ constexpr int kFlatBoxMaxSteps = 1;
 // Faceting of the fine sphere must show: at least this far off somewhere.
 constexpr int kFlatSphereMinMaxSteps = 10;
 
-QSet<QByteArray> activeUniforms(GLuint program)
+QSet<QByteArray> activeUniformNames(GLuint program)
 {
-    QOpenGLExtraFunctions *gl = QOpenGLContext::currentContext()->extraFunctions();
-    GLint count = 0, maxLength = 0;
-    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
-    gl->glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
     QSet<QByteArray> names;
-    QByteArray name(qMax(maxLength, 1), '\0');
-    for (GLint i = 0; i < count; ++i) {
-        GLsizei length = 0;
-        GLint size = 0;
-        GLenum type = 0;
-        gl->glGetActiveUniform(program, GLuint(i), maxLength, &length, &size, &type, name.data());
-        QByteArray n = name.left(length);
-        if (n.endsWith("[0]"))
-            n.chop(3); // arrays are reported as "name[0]"
-        names.insert(n);
-    }
+    for (const ActiveUniformInfo &u : activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), program))
+        names.insert(u.name);
     return names;
 }
 
@@ -199,8 +187,8 @@ void TestShadingPresets::presetBuilds()
     QVERIFY(phong.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag"))).ok);
     QVERIFY(preset.build(shippedShader(method + QStringLiteral(".vert")),
                          shippedShader(method + QStringLiteral(".frag"))).ok);
-    const QSet<QByteArray> allowedUniforms = activeUniforms(phong.id());
-    const QSet<QByteArray> uniforms = activeUniforms(preset.id());
+    const QSet<QByteArray> allowedUniforms = activeUniformNames(phong.id());
+    const QSet<QByteArray> uniforms = activeUniformNames(preset.id());
     const QSet<QByteArray> attributes = activeAttributes(preset.id());
     qInfo("%-12s uniforms: %s; attributes: %s", qPrintable(method), qPrintable(joined(uniforms)),
           qPrintable(joined(attributes)));

@@ -4,6 +4,7 @@
 
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "PixelDiff.h"
 #include "core/SceneJson.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
@@ -17,6 +18,7 @@
 #include <memory>
 
 using namespace phonglab;
+using namespace phonglab::test;
 
 namespace {
 
@@ -31,12 +33,6 @@ QString defaultScenePathInSource()
 QRgb toRgb(const glm::dvec3 &c)
 {
     return qRgb(qRound(c.r * 255.0), qRound(c.g * 255.0), qRound(c.b * 255.0));
-}
-
-bool differsFrom(QRgb a, QRgb b, int tolerance)
-{
-    return std::abs(qRed(a) - qRed(b)) > tolerance || std::abs(qGreen(a) - qGreen(b)) > tolerance
-        || std::abs(qBlue(a) - qBlue(b)) > tolerance;
 }
 
 struct FrameStats {
@@ -62,19 +58,6 @@ FrameStats analyse(const QImage &frame, QRgb background)
     }
     const double total = double(image.width()) * image.height();
     return {foreground / total, warm / total, cool / total};
-}
-
-qint64 differingPixels(const QImage &a, const QImage &b)
-{
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    if (x.size() != y.size())
-        return qint64(x.width()) * x.height();
-    qint64 count = 0;
-    for (int row = 0; row < x.height(); ++row)
-        for (int col = 0; col < x.width(); ++col)
-            count += differsFrom(x.pixel(col, row), y.pixel(col, row), 2);
-    return count;
 }
 
 // Saving into another folder rewrites relative mesh paths; the same meshes

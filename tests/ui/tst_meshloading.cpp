@@ -6,6 +6,7 @@
 
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "PixelDiff.h"
 #include "core/SceneJson.h"
 #include "mesh/MeshLoader.h"
 #include "ui/LoadProgressWidget.h"
@@ -40,6 +41,7 @@
 #include <memory>
 
 using namespace phonglab;
+using namespace phonglab::test;
 using phonglab::test::sourcePath;
 
 namespace {
@@ -53,12 +55,6 @@ constexpr qint64 kMaxTickGapMs = 250;   // a frame or two of llvmpipe, far below
 QString treePath() { return sourcePath(QStringLiteral("assets/meshes/tree.obj")); }
 QString cloudPath() { return sourcePath(QStringLiteral("assets/meshes/cloud.obj")); }
 
-bool differsFrom(QRgb a, QRgb b, int tolerance)
-{
-    return std::abs(qRed(a) - qRed(b)) > tolerance || std::abs(qGreen(a) - qGreen(b)) > tolerance
-        || std::abs(qBlue(a) - qBlue(b)) > tolerance;
-}
-
 double foregroundFraction(const QImage &frame, const glm::dvec3 &background)
 {
     const QRgb bg = qRgb(qRound(background.r * 255), qRound(background.g * 255), qRound(background.b * 255));
@@ -68,19 +64,6 @@ double foregroundFraction(const QImage &frame, const glm::dvec3 &background)
         for (int x = 0; x < image.width(); ++x)
             foreground += differsFrom(image.pixel(x, y), bg, kBackgroundTolerance);
     return double(foreground) / (double(image.width()) * image.height());
-}
-
-qint64 differingPixels(const QImage &a, const QImage &b)
-{
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    if (x.size() != y.size())
-        return qint64(x.width()) * x.height();
-    qint64 count = 0;
-    for (int row = 0; row < x.height(); ++row)
-        for (int col = 0; col < x.width(); ++col)
-            count += differsFrom(x.pixel(col, row), y.pixel(col, row), 2);
-    return count;
 }
 
 void writeFile(const QString &path, const QByteArray &contents)
