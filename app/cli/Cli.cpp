@@ -2,6 +2,7 @@
 
 #include "BenchCommand.h"
 #include "CliCommon.h"
+#include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
 
@@ -54,6 +55,8 @@ std::optional<int> dispatch(int argc, char **argv)
     for (const Subcommand &c : kSubcommands)
         if (first == QLatin1String(c.name))
             return c.run(argc, argv);
+    if (first == QLatin1String("__import-mesh")) // internal, not in --help
+        return runImportMesh(argc, argv);
     if (first.startsWith(QLatin1Char('-'))) {
         printError(QStringLiteral("unknown option '%1' (see phonglab --help)").arg(first));
         return kExitUsage;

@@ -8,6 +8,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 
+#include <cstdio>
 #include <limits>
 
 namespace phonglab {
@@ -16,20 +17,6 @@ namespace {
 
 constexpr quint32 kMagic = 0x50484d43; // "PHMC"
 constexpr quint32 kVersion = 2; // 2: vertex order of split meshes is first use
-
-// What must match for a cache entry to stand for the file as it is now.
-QByteArray sourceKey(const QString &file, const NormalOptions &normals)
-{
-    const QFileInfo info(file);
-    QByteArray key = info.absoluteFilePath().toUtf8();
-    key += '|' + QByteArray::number(info.size());
-    key += '|' + QByteArray::number(info.lastModified().toMSecsSinceEpoch());
-    key += '|' + normalMethodName(normals.method).toUtf8();
-    if (normals.creaseAngleDeg)
-        key += '|' + QByteArray::number(*normals.creaseAngleDeg, 'g', 17);
-    key += "|v" + QByteArray::number(kVersion);
-    return key;
-}
 
 template<typename T>
 void writeArray(QDataStream &out, const std::vector<T> &v)
@@ -90,6 +77,63 @@ QString MeshCache::entryPath(const QString &file, const NormalOptions &normals)
     return QDir(directory()).filePath(QString::fromLatin1(hash) + QStringLiteral(".phmc"));
 }
 
+QByteArray MeshCache::sourceKey(const QString &file, const NormalOptions &normals)
+{
+    const QFileInfo info(file);
+    QByteArray key = info.absoluteFilePath().toUtf8();
+    key += '|' + QByteArray::number(info.size());
+    key += '|' + QByteArray::number(info.lastModified().toMSecsSinceEpoch());
+    key += '|' + normalMethodName(normals.method).toUtf8();
+    if (normals.creaseAngleDeg)
+        key += '|' + QByteArray::number(*normals.creaseAngleDeg, 'g', 17);
+    key += "|v" + QByteArray::number(kVersion);
+    return key;
+}
+
+std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device, const std::optional<QByteArray> &expectedKey)
+{
+    QDataStream in(&device);
+    in.setVersion(QDataStream::Qt_6_4);
+    quint32 magic = 0, version = 0;
+    in >> magic >> version;
+    if (in.status() != QDataStream::Ok || magic != kMagic || version != kVersion)
+        return std::nullopt;
+    QByteArray key;
+    in >> key;
+    if (in.status() != QDataStream::Ok || (expectedKey && key != *expectedKey))
+        return std::nullopt;
+    MeshLoadResult result;
+    readStats(in, result.stats);
+    in >> result.warnings;
+    MeshData mesh;
+    const bool ok = in.status() == QDataStream::Ok
+        && readArray(in, mesh.positions, device.bytesAvailable())
+        && readArray(in, mesh.normals, device.bytesAvailable())
+        && readArray(in, mesh.indices, device.bytesAvailable());
+    if (!ok || in.status() != QDataStream::Ok || !mesh.isValid())
+        return std::nullopt;
+    result.mesh = std::move(mesh);
+    return result;
+}
+
+bool MeshCache::encode(QIODevice &device, const QByteArray &key, const MeshLoadResult &result)
+{
+    if (!result.mesh)
+        return false;
+    const std::size_t largest = result.mesh->positions.size() * sizeof(glm::vec3);
+    if (largest > std::size_t(std::numeric_limits<int>::max()) / 2)
+        return false; // QDataStream's raw blocks are int-sized
+    QDataStream out(&device);
+    out.setVersion(QDataStream::Qt_6_4);
+    out << kMagic << kVersion << key;
+    writeStats(out, result.stats);
+    out << result.warnings;
+    writeArray(out, result.mesh->positions);
+    writeArray(out, result.mesh->normals);
+    writeArray(out, result.mesh->indices);
+    return out.status() == QDataStream::Ok;
+}
+
 std::optional<MeshLoadResult> MeshCache::read(const QString &file, const NormalOptions &normals)
 {
     if (!enabled())
@@ -97,29 +141,13 @@ std::optional<MeshLoadResult> MeshCache::read(const QString &file, const NormalO
     QFile entry(entryPath(file, normals));
     if (!entry.open(QIODevice::ReadOnly))
         return std::nullopt;
-    QDataStream in(&entry);
-    in.setVersion(QDataStream::Qt_6_4);
-    quint32 magic = 0, version = 0;
-    QByteArray key;
-    in >> magic >> version >> key;
-    if (magic != kMagic || version != kVersion || key != sourceKey(file, normals)) {
-        entry.remove();
+    std::optional<MeshLoadResult> result = decode(entry, sourceKey(file, normals));
+    if (!result) {
+        entry.remove(); // stale or corrupt: never trusted, never read again
         return std::nullopt;
     }
-    MeshLoadResult result;
-    readStats(in, result.stats);
-    in >> result.warnings;
-    MeshData mesh;
-    const bool ok = readArray(in, mesh.positions, entry.bytesAvailable())
-        && readArray(in, mesh.normals, entry.bytesAvailable())
-        && readArray(in, mesh.indices, entry.bytesAvailable());
-    if (!ok || in.status() != QDataStream::Ok || !mesh.isValid()) {
-        entry.remove();
-        return std::nullopt;
-    }
-    result.stats.creaseAngleDeg = normals.creaseAngleDeg;
-    result.stats.fromCache = true;
-    result.mesh = std::move(mesh);
+    result->stats.creaseAngleDeg = normals.creaseAngleDeg;
+    result->stats.fromCache = true;
     return result;
 }
 
@@ -127,25 +155,25 @@ void MeshCache::write(const QString &file, const NormalOptions &normals, const M
 {
     if (!enabled() || !result.mesh || !QDir().mkpath(directory()))
         return;
-    const std::size_t largest = result.mesh->positions.size() * sizeof(glm::vec3);
-    if (largest > std::size_t(std::numeric_limits<int>::max()) / 2)
-        return; // QDataStream's raw blocks are int-sized
-
     QSaveFile entry(entryPath(file, normals));
     if (!entry.open(QIODevice::WriteOnly))
         return;
-    QDataStream out(&entry);
-    out.setVersion(QDataStream::Qt_6_4);
-    out << kMagic << kVersion << sourceKey(file, normals);
-    writeStats(out, result.stats);
-    out << result.warnings;
-    writeArray(out, result.mesh->positions);
-    writeArray(out, result.mesh->normals);
-    writeArray(out, result.mesh->indices);
-    if (out.status() == QDataStream::Ok)
+    if (encode(entry, sourceKey(file, normals), result))
         entry.commit();
     else
         entry.cancelWriting();
+}
+
+void MeshCache::adopt(const QString &entryFile, const QString &file, const NormalOptions &normals)
+{
+    if (!enabled() || !QDir().mkpath(directory())) {
+        QFile::remove(entryFile);
+        return;
+    }
+    const QString target = entryPath(file, normals);
+    // rename(2) replaces atomically; QFile::rename would refuse an existing target.
+    if (std::rename(QFile::encodeName(entryFile).constData(), QFile::encodeName(target).constData()) != 0)
+        QFile::remove(entryFile); // another file system: the next open parses again
 }
 
 } // namespace phonglab

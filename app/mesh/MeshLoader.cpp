@@ -4,6 +4,7 @@
 #include "MeshCache.h"
 #include "MeshBuilder.h"
 #include "MeshFileReader.h"
+#include "MeshImportProcess.h"
 #include "MeshRepair.h"
 #include "MeshTopology.h"
 
@@ -53,35 +54,22 @@ LoadProgress scaled(const LoadProgress &progress, double from, double to)
 
 } // namespace
 
-MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const LoadProgress &progress)
+MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals, const LoadProgress &progress)
 {
     QElapsedTimer timer;
     timer.start();
-    if (isBuiltinMeshSpec(spec)) {
-        MeshLoadResult result = loadBuiltin(spec);
-        result.stats.loadMs = timer.nsecsElapsed() / 1e6;
-        return result;
-    }
-
-    if (auto cached = MeshCache::read(spec, normals)) {
-        cached->stats.loadMs = timer.nsecsElapsed() / 1e6;
-        if (progress)
-            progress(1.0);
-        return std::move(*cached);
-    }
-
     MeshLoadResult result;
-    MeshReadResult read = readMeshFile(spec, scaled(progress, 0.0, 0.8));
+    MeshReadResult read = readMeshFile(path, scaled(progress, 0.0, 0.8));
     result.warnings = read.warnings;
     if (!read.mesh) {
-        result.error = QStringLiteral("%1: %2").arg(spec, read.error);
+        result.error = QStringLiteral("%1: %2").arg(path, read.error);
         return result;
     }
     PolygonMesh &polygons = *read.mesh;
     const RepairReport repair = repairMesh(polygons);
     result.warnings += repair.warnings();
     if (polygons.faceCount() == 0) {
-        result.error = QStringLiteral("%1: no usable faces").arg(spec);
+        result.error = QStringLiteral("%1: no usable faces").arg(path);
         return result;
     }
     if (progress && !progress(0.85)) {
@@ -93,7 +81,7 @@ MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const
     QString buildError;
     MeshData mesh = buildMeshData(polygons, normals, &build, &result.warnings, &buildError);
     if (mesh.positions.empty()) {
-        result.error = QStringLiteral("%1: %2").arg(spec, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
+        result.error = QStringLiteral("%1: %2").arg(path, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
         return result;
     }
     MeshStats &s = result.stats;
@@ -111,8 +99,28 @@ MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const
     result.mesh = std::move(mesh);
     if (progress)
         progress(1.0);
-    MeshCache::write(spec, normals, result);
     s.loadMs = timer.nsecsElapsed() / 1e6;
+    return result;
+}
+
+MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const LoadProgress &progress)
+{
+    QElapsedTimer timer;
+    timer.start();
+    if (isBuiltinMeshSpec(spec)) {
+        MeshLoadResult result = loadBuiltin(spec);
+        result.stats.loadMs = timer.nsecsElapsed() / 1e6;
+        return result;
+    }
+    if (auto cached = MeshCache::read(spec, normals)) {
+        cached->stats.loadMs = timer.nsecsElapsed() / 1e6;
+        if (progress)
+            progress(1.0);
+        return std::move(*cached);
+    }
+    // Not parsed here: the child writes the cache entry this process adopts.
+    MeshLoadResult result = importMeshIsolated(spec, normals, progress);
+    result.stats.loadMs = timer.nsecsElapsed() / 1e6;
     return result;
 }
 

@@ -46,9 +46,19 @@ struct MeshLoadResult {
 using LoadProgress = std::function<bool(double)>;
 
 // Loads what a scene's "mesh" names (already resolved against the scene's
-// folder): a builtin shape or a mesh file (OBJ, PLY, OFF, STL, OM). Safe to
-// call from any thread; touches no GL.
+// folder): a builtin shape or a mesh file (OBJ, PLY, OFF, STL, OM). A file
+// the mesh cache does not hold yet is parsed in a child process under time
+// and memory limits (MeshImportProcess), so a reader that hangs, runs out
+// of memory or crashes costs an error message, never the app. Safe to call
+// from any thread; touches no GL. The app, mesh-info, render and bench all
+// load through here.
 MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals = {},
                         const LoadProgress &progress = {});
+
+// Parses, repairs and builds a mesh file in this process: what the import
+// child runs, and what fuzzers and reader tests call directly. No cache,
+// no limits: a reader bug here is this process's bug.
+MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals = {},
+                              const LoadProgress &progress = {});
 
 } // namespace phonglab
