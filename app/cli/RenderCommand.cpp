@@ -188,6 +188,8 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(QStringLiteral("rendering failed"));
         return kExitFailure;
     }
+    if (const std::optional<QString> depth = depthPrecisionWarning(renderer.depthRange()))
+        printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, *depth));
     if (!writePng(image, args.outputPath, &error)) {
         printError(error);
         return kExitFailure;

@@ -11,7 +11,12 @@ glm::dmat4 Camera::viewMatrix() const
 
 glm::dmat4 Camera::projectionMatrix(double aspect) const
 {
-    return glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane);
+    return projectionMatrix(aspect, nearPlane, farPlane);
+}
+
+glm::dmat4 Camera::projectionMatrix(double aspect, double nearZ, double farZ) const
+{
+    return glm::perspective(glm::radians(fovDeg), aspect, nearZ, farZ);
 }
 
 } // namespace phonglab

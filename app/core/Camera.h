@@ -15,6 +15,8 @@ struct Camera {
 
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix(double aspect) const;
+    // The same projection clipping at other planes (a fitted DepthRange).
+    glm::dmat4 projectionMatrix(double aspect, double nearZ, double farZ) const;
     bool operator==(const Camera &) const = default;
 };
 

@@ -13,6 +13,10 @@ struct ObjectMatrices {
     glm::dmat3 normalMatrix{1.0};
     glm::dmat4 projection{1.0};
 
+    // A mirroring transform (det < 0) turns counter-clockwise triangles
+    // clockwise on screen: the front faces of this object wind the other way.
+    bool mirrors() const { return glm::determinant(glm::dmat3(modelView)) < 0.0; }
+
     static ObjectMatrices make(const glm::dmat4 &model, const glm::dmat4 &view,
                                const glm::dmat4 &projection);
 };

@@ -178,11 +178,11 @@ void Renderer::render(const QSize &pixelSize)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
 
     const double aspect = double(pixelSize.width()) / double(pixelSize.height());
     const glm::dmat4 view = m_scene.camera.viewMatrix();
-    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect);
+    m_depthRange = fitDepthRange(m_scene.camera, boundingSpheres());
+    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect, m_depthRange.nearPlane, m_depthRange.farPlane);
     drawObjects(view, projection);
     if (m_options.drawLightMarkers)
         drawLightMarkers(view, projection);
@@ -232,6 +232,7 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
             glDisable(GL_CULL_FACE);
         // Matrices in double on the CPU, once per draw; the shader gets floats.
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
+        glFrontFace(m.mirrors() ? GL_CW : GL_CCW);
         m_program.setUniform("modelViewMatrix", glm::mat4(m.modelView));
         m_program.setUniform("normalMatrix", glm::mat3(m.normalMatrix));
         m_program.setUniform("ka", glm::vec3(object.material.ka));
@@ -241,6 +242,23 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
         mesh->draw();
         m_trianglesDrawn += mesh->indexCount() / 3;
     }
+}
+
+std::vector<BoundingSphere> Renderer::boundingSpheres() const
+{
+    std::vector<BoundingSphere> spheres;
+    for (const SceneObject &object : m_scene.objects) {
+        const QString key = meshKey(m_scene, object);
+        if (!m_meshes.contains(key))
+            continue;
+        const MeshStats &stats = m_meshInfo.value(key).stats;
+        spheres.push_back(boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax),
+                                         object.transform.matrix()));
+    }
+    if (m_options.drawLightMarkers)
+        for (const PointLight &light : m_scene.lights)
+            spheres.push_back({light.position, 2.0 * kMarkerRadius});
+    return spheres;
 }
 
 void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection)

@@ -2,6 +2,7 @@
 #include "CompileResult.h"
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
+#include "core/DepthRange.h"
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
 
@@ -69,12 +70,16 @@ public:
     // Renders one frame into a pixelSize framebuffer (device pixels).
     void render(const QSize &pixelSize);
     qint64 trianglesDrawn() const { return m_trianglesDrawn; }
+    // The near and far planes the last frame was drawn with: the camera's,
+    // fitted to what the scene occupies (DepthRange.h).
+    const DepthRange &depthRange() const { return m_depthRange; }
 
 private:
     void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection);
     void uploadLights(const glm::dmat4 &view);
     void applySceneUniforms();
     void drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection);
+    std::vector<BoundingSphere> boundingSpheres() const;
 
     bool m_initialized = false;
     Options m_options;
@@ -85,6 +90,7 @@ private:
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
     QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
+    DepthRange m_depthRange;
     // The scene's values for the shader's own uniforms, until a program that
     // declares them is in place (a scene may open before its shaders build).
     std::map<QString, std::vector<double>> m_pendingUniforms;

@@ -564,9 +564,16 @@ void MainWindow::chooseAndSaveScene()
 
 void MainWindow::showFrameStats(double milliseconds, qint64 triangles)
 {
-    m_frameLabel->setText(tr("%1 ms · %2 triangles")
+    const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
+    m_frameLabel->setText(tr("%1 ms · %2 triangles%3")
                               .arg(milliseconds, 0, 'f', 2)
-                              .arg(QLocale().toString(triangles)));
+                              .arg(QLocale().toString(triangles))
+                              .arg(depth ? tr(" · low depth precision") : QString()));
+    m_frameLabel->setToolTip(depth.value_or(QString()));
+    // Said once when it starts, not on every frame of an orbit.
+    if (depth && !m_depthWarningShown)
+        statusBar()->showMessage(*depth, 15000);
+    m_depthWarningShown = depth.has_value();
 }
 
 void MainWindow::showRenderError(const QString &message)

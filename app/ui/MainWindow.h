@@ -132,6 +132,7 @@ private:
     QAction *m_resetCameraAction = nullptr;
     QAction *m_lightMarkersAction = nullptr;
     QLabel *m_frameLabel = nullptr;
+    bool m_depthWarningShown = false; // the status bar said the depth range is too wide
     QLabel *m_rendererLabel = nullptr;
     QString m_scenePath;
     QString m_lastShaderError;

@@ -52,6 +52,8 @@ public:
     void adoptProgram(GLuint program);
     ProgramBuild buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
     Renderer &renderer() { return m_renderer; } // call with the context current (makeCurrent())
+    // The near/far planes of the last frame (no GL call; any time).
+    const DepthRange &depthRange() const { return m_renderer.depthRange(); }
 
     // Lends the GL context to `borrower` (see LentContext), so that a new
     // program's draw-time compile happens in this very context but off the
