@@ -48,13 +48,16 @@ std::optional<QString> depthPrecisionWarning(const DepthRange &range)
     if (!(range.ratio() > kDepthRatioWarning))
         return std::nullopt;
     const double resolved = 100.0 * range.ratio() / double(1 << 24); // percent of the distance, at far
-    return QStringLiteral("camera: near %1 and far %2 are %3 orders of magnitude apart where the eye is inside "
-                          "an object's bounds; surfaces closer than about %4 % of their distance may show "
-                          "through each other (raise near)")
+    const QString effect = resolved < 50.0
+        ? QStringLiteral("surfaces closer than about %1 % of their distance may show through each other")
+              .arg(resolved, 0, 'g', 2)
+        : QStringLiteral("the depth buffer cannot tell surfaces apart");
+    return QStringLiteral("camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
+                          "object's bounds); %4: raise near")
         .arg(range.nearPlane, 0, 'g', 3)
         .arg(range.farPlane, 0, 'g', 3)
         .arg(std::log10(range.ratio()), 0, 'f', 0)
-        .arg(std::min(resolved, 100.0), 0, 'g', 2);
+        .arg(effect);
 }
 
 } // namespace phonglab
