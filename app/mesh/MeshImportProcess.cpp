@@ -197,7 +197,12 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     const MeshImportLimits limits = MeshImportLimits::forFile(QFileInfo(path).size());
 
     QProcess child;
-    child.setProcessChannelMode(QProcess::ForwardedErrorChannel); // the reader's own log, for whoever reads stderr
+    // A looping reader can log megabytes a second (OpenMesh's does): its
+    // stderr goes nowhere unless asked for. Our own errors come on stdout.
+    if (qEnvironmentVariableIsSet("PHONGLAB_IMPORT_STDERR"))
+        child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    else
+        child.setStandardErrorFile(QProcess::nullDevice());
     child.start(executable, childArguments(path, normals, entryFile, limits), QIODevice::ReadOnly);
     if (!child.waitForStarted(10'000)) {
         QFile::remove(entryFile);

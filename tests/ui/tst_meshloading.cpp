@@ -4,6 +4,7 @@
 // other normals from it, survive save / reopen, and arrive by drag and drop.
 // Broken and unsupported files, and cancelling, leave the scene alone.
 
+#include "ImportChildren.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "PixelDiff.h"
@@ -121,6 +122,8 @@ private slots:
     void unsupportedFileIsRefused();
     void staysResponsiveWhileLoading();
     void cancelKeepsScene();
+    void hangingReaderIsStoppedAndSceneKept();
+    void cancelEndsTheImportChild();
     void closingWhileLoading();
     void flatNormalsFromTheDock();
     void normalsSurviveSaveAndReopen();
@@ -395,6 +398,51 @@ void TestMeshLoading::cancelKeepsScene()
     QCOMPARE(viewport()->currentScene(), before);
     QVERIFY(!visibleMessageBox()); // cancelling is not an error
     QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("cancelled")));
+}
+
+void TestMeshLoading::hangingReaderIsStoppedAndSceneKept()
+{
+    // Any reader bug that loops: the child is stopped at its time limit,
+    // the user is told, and the scene (and anything unsaved) stays.
+    const QString path = m_dir.filePath(QStringLiteral("hangs.obj"));
+    QFile::copy(sourcePath(QStringLiteral("assets/meshes/tree.obj")), path);
+    const Scene before = viewport()->currentScene();
+    qputenv("PHONGLAB_IMPORT_FAULT", "hang");
+    qputenv("PHONGLAB_IMPORT_TIMEOUT_S", "1");
+    const bool loaded = openAndWait({path});
+    qunsetenv("PHONGLAB_IMPORT_FAULT");
+    qunsetenv("PHONGLAB_IMPORT_TIMEOUT_S");
+    QVERIFY(!loaded);
+    QVERIFY2(m_lastError.contains(QStringLiteral("stopped answering after 1 s")), qPrintable(m_lastError));
+    QCOMPARE(viewport()->currentScene(), before);
+    QVERIFY(importChildren().isEmpty());
+    QMessageBox *box = visibleMessageBox();
+    QVERIFY(box);
+    QVERIFY(box->text().contains(QStringLiteral("hangs.obj")) || box->informativeText().contains(QStringLiteral("hangs.obj"))
+            || box->detailedText().contains(QStringLiteral("hangs.obj")));
+    box->close();
+}
+
+void TestMeshLoading::cancelEndsTheImportChild()
+{
+    const QString path = m_dir.filePath(QStringLiteral("never_ends.obj"));
+    QFile::copy(sourcePath(QStringLiteral("assets/meshes/tree.obj")), path);
+    const Scene before = viewport()->currentScene();
+    qputenv("PHONGLAB_IMPORT_FAULT", "hang");
+    QString error;
+    QVERIFY2(m_window->openFiles({path}, &error), qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(!importChildren().isEmpty(), 5000);
+    qunsetenv("PHONGLAB_IMPORT_FAULT");
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(m_window->loadProgress()->cancelButton(), Qt::LeftButton);
+    const qint64 toIdleMs = clock.elapsed(); // the window takes input again
+    QVERIFY(!m_window->loadJob()->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(importChildren().isEmpty(), 2000);
+    const qint64 childGoneMs = clock.elapsed();
+    qInfo("Cancel: window idle after %lld ms, import child gone after %lld ms", toIdleMs, childGoneMs);
+    QCOMPARE(viewport()->currentScene(), before);
+    QVERIFY(!visibleMessageBox());
 }
 
 void TestMeshLoading::closingWhileLoading()

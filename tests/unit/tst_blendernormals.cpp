@@ -77,7 +77,7 @@ private slots:
 
 void TestBlenderNormals::smoothSphereKeepsFileNormals()
 {
-    const MeshLoadResult r = loadMesh(blenderMesh(QStringLiteral("sphere_smooth.obj")));
+    const MeshLoadResult r = importMeshFile(blenderMesh(QStringLiteral("sphere_smooth.obj")));
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(r.stats.normalsFromFile);
     QCOMPARE(r.stats.splitVertices, 0); // one normal per position in a smooth export
@@ -102,7 +102,7 @@ void TestBlenderNormals::smoothSphereKeepsFileNormals()
 
 void TestBlenderNormals::flatCubeSplitsEveryCorner()
 {
-    const MeshLoadResult r = loadMesh(blenderMesh(QStringLiteral("cube_flat.obj")));
+    const MeshLoadResult r = importMeshFile(blenderMesh(QStringLiteral("cube_flat.obj")));
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(r.stats.normalsFromFile);
     QCOMPARE(r.stats.fileVertices, 8);
@@ -119,7 +119,7 @@ void TestBlenderNormals::flatCubeSplitsEveryCorner()
 
 void TestBlenderNormals::flatTreeHasOneNormalPerFace()
 {
-    const MeshLoadResult r = loadMesh(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/tree_flat.obj"));
+    const MeshLoadResult r = importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/tree_flat.obj"));
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(r.stats.normalsFromFile);
     QVERIFY(r.stats.splitVertices > 0);
@@ -154,7 +154,7 @@ void TestBlenderNormals::computedNormalsApproachTheSphere()
     QFETCH(double, meanDeg);
     NormalOptions options;
     options.method = *normalMethodFromName(method);
-    const MeshLoadResult r = loadMesh(blenderMesh(QStringLiteral("sphere_nonormals.obj")), options);
+    const MeshLoadResult r = importMeshFile(blenderMesh(QStringLiteral("sphere_nonormals.obj")), options);
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(!r.stats.normalsFromFile);
     double worst = 0.0, sum = 0.0;

@@ -22,7 +22,7 @@ using MeshPtr = std::shared_ptr<const MeshData>;
 
 MeshPtr assetMesh(const QString &name)
 {
-    const MeshLoadResult loaded = loadMesh(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/") + name);
+    const MeshLoadResult loaded = importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/") + name);
     if (!loaded.ok())
         qFatal("%s: %s", qPrintable(name), qPrintable(loaded.error));
     return std::make_shared<const MeshData>(*loaded.mesh);
