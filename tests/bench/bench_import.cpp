@@ -153,6 +153,12 @@ long long openMeshRead(const std::string &path)
     return static_cast<long long>(mesh.n_faces());
 }
 
+long long phonglabInProcess(const std::string &path)
+{
+    const phonglab::MeshLoadResult r = phonglab::importMeshFile(QString::fromStdString(path));
+    return r.ok() ? r.stats.triangles : -1;
+}
+
 long long phonglabLoad(const std::string &path)
 {
     const phonglab::MeshLoadResult r = phonglab::loadMesh(QString::fromStdString(path));
@@ -174,12 +180,19 @@ void benchFile(const std::string &path, int runs, const QString &cacheDir)
     printRow("tinyobjloader", tiny, tiny, bare);
     printRow("assimp (Triangulate)", median([&] { return assimpRead(path); }, runs), tiny, bare);
     printRow("OpenMesh read_mesh", median([&] { return openMeshRead(path); }, 1), tiny, bare);
-    // First open: a cache folder with nothing in it, emptied before each run.
+    // Parsed here, without the child process, the cache or its limits: the
+    // peer that says what isolation costs.
+    const Sample inProcess = median([&] { return phonglabInProcess(path); }, runs);
+    printRow("PhongLab importMeshFile, in process", inProcess, tiny, bare);
+    // First open: a cache folder with nothing in it, emptied before each run;
+    // the file is parsed in the import child, its answer read back.
     const Sample first = median([&] {
         QDir(cacheDir).removeRecursively();
         return phonglabLoad(path);
     }, runs);
     printRow("PhongLab loadMesh, first open", first, tiny, bare);
+    std::printf("  isolation (child process, limits, answer through the cache format): %+.1f %% of in-process\n",
+                100.0 * (first.ms / inProcess.ms - 1.0));
     phonglabLoad(path); // leaves the cache entry for the re-open
     printRow("PhongLab loadMesh, re-open (cache)", median([&] { return phonglabLoad(path); }, runs), tiny, bare);
 }
