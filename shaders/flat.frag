@@ -62,5 +62,7 @@ void main()
         float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);
         I += fatt * (Id[i] * kd * NdotL + Is[i] * ks * pow(RdotV, shininess));
     }
-    fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);    // alpha added here
+    // Not clamped here: the 8-bit target clamps to [0, 1] as it stores the
+    // pixel, and a float target keeps a NaN or an infinity visible.
+    fragColor = vec4(I, 1.0);    // alpha added here
 }

@@ -9,5 +9,7 @@ out vec4 fragColor;
 
 void main()
 {
-    fragColor = vec4(clamp(intensity, 0.0, 1.0), 1.0);    // alpha added here
+    // Not clamped here: the 8-bit target clamps to [0, 1] as it stores the
+    // pixel, and a float target keeps a NaN or an infinity visible.
+    fragColor = vec4(intensity, 1.0);    // alpha added here
 }

@@ -34,7 +34,7 @@ uniform vec3 Id[MAX_LIGHTS];              // diffuse intensity
 uniform vec3 Is[MAX_LIGHTS];              // specular intensity
 uniform vec3 attenuation[MAX_LIGHTS];     // c1, c2, c3
 
-// Unclamped: clamping is part of writing the pixel (gouraud.frag), so the
+// Unclamped: clamping is part of writing the pixel (the target), so the
 // only difference from Phong is where the equation is evaluated.
 out vec3 intensity;
 

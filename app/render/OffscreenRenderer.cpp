@@ -69,6 +69,39 @@ QImage OffscreenRenderer::renderImage(const QSize &size)
     return image.convertToFormat(QImage::Format_RGB888);
 }
 
+std::vector<float> OffscreenRenderer::renderFloatPixels(const QSize &size)
+{
+    if (!m_context || size.isEmpty())
+        return {};
+    bindFloatTarget(size);
+    m_renderer.render(size);
+    QOpenGLFunctions *gl = m_context->functions();
+    std::vector<float> rows(std::size_t(size.width()) * size.height() * 4);
+    gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl->glReadPixels(0, 0, size.width(), size.height(), GL_RGBA, GL_FLOAT, rows.data());
+    m_floatFbo->release();
+    // GL's rows run bottom-up.
+    std::vector<float> pixels(rows.size());
+    const std::size_t stride = std::size_t(size.width()) * 4;
+    for (int y = 0; y < size.height(); ++y)
+        std::copy_n(rows.begin() + std::ptrdiff_t(stride * (size.height() - 1 - y)), stride,
+                    pixels.begin() + std::ptrdiff_t(stride * y));
+    return pixels;
+}
+
+void OffscreenRenderer::bindFloatTarget(const QSize &size)
+{
+    makeCurrent();
+    if (!m_floatFbo || m_floatFbo->size() != size) {
+        QOpenGLFramebufferObjectFormat format;
+        format.setAttachment(QOpenGLFramebufferObject::Depth);
+        format.setInternalTextureFormat(GL_RGBA32F);
+        format.setSamples(0);
+        m_floatFbo = std::make_unique<QOpenGLFramebufferObject>(size, format);
+    }
+    m_floatFbo->bind();
+}
+
 void OffscreenRenderer::bindTarget(const QSize &size)
 {
     makeCurrent();
@@ -147,6 +180,7 @@ void OffscreenRenderer::destroy()
         m_context->makeCurrent(m_surface.get());
     m_renderer.cleanup();
     m_fbo.reset();
+    m_floatFbo.reset();
     m_context->doneCurrent();
     m_context.reset();
     m_surface.reset();

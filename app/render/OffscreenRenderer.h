@@ -31,6 +31,10 @@ public:
 
     // Renders the renderer's current scene and reads it back as RGB888.
     QImage renderImage(const QSize &size);
+    // The same into a 32-bit float target, read back unclamped: a NaN or
+    // an infinity a shader wrote is seen, where 8 bits would clamp it away.
+    // RGBA floats in raster order (row 0 on top); empty on failure.
+    std::vector<float> renderFloatPixels(const QSize &size);
 
     // Draws `warmup` frames, then times `frames` more at `size` (see
     // FrameTiming for what is measured and why).
@@ -41,11 +45,13 @@ public:
 private:
     void destroy();
     void bindTarget(const QSize &size);
+    void bindFloatTarget(const QSize &size);
     std::vector<double> timerQueryFrames(const QSize &size, int frames);
 
     std::unique_ptr<QOpenGLContext> m_context;
     std::unique_ptr<QOffscreenSurface> m_surface;
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
+    std::unique_ptr<QOpenGLFramebufferObject> m_floatFbo;
     Renderer m_renderer;
     QString m_rendererName;
 };

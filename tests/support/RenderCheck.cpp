@@ -7,6 +7,9 @@
 #include "render/OffscreenRenderer.h"
 
 #include <QDir>
+
+#include <algorithm>
+#include <cmath>
 #include <QTest>
 
 namespace phonglab::test {
@@ -23,6 +26,25 @@ SceneMeshes meshesFor(const Scene &scene, const std::shared_ptr<const MeshData> 
         for (SceneMeshes::Entry &entry : meshes.entries)
             entry.mesh = mesh;
     return meshes;
+}
+
+// What an 8-bit target stores for each float pixel; non-finite ones are
+// counted and shown magenta.
+QImage quantised(const std::vector<float> &rgba, const QSize &size, qint64 *nonFinite)
+{
+    QImage image(size, QImage::Format_RGB888);
+    *nonFinite = 0;
+    for (int y = 0; y < size.height(); ++y) {
+        uchar *line = image.scanLine(y);
+        for (int x = 0; x < size.width(); ++x) {
+            const float *p = &rgba[(std::size_t(y) * size.width() + x) * 4];
+            const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+            *nonFinite += !finite;
+            for (int c = 0; c < 3; ++c)
+                line[x * 3 + c] = finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
+        }
+    }
+    return image;
 }
 
 } // namespace
@@ -49,7 +71,10 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
         return check;
     }
     const QSize size(kTestImageSide, kTestImageSide);
-    check.gpu = offscreen.renderImage(size);
+    if (options.floatTarget)
+        check.gpu = quantised(offscreen.renderFloatPixels(size), size, &check.nonFinitePixels);
+    else
+        check.gpu = offscreen.renderImage(size);
 
     const ReferenceShading shading = options.reference.value_or(idealShadingFor(scene.shading));
     auto reference = raycastScene(scene, size.width(), size.height(), shading, &check.error, options.standIns);

@@ -29,6 +29,9 @@ struct RenderCheck {
     ImageComparison comparison;
     CompileResult compile;
     QString error;                 // set when something could not run at all
+    // With CheckOptions::floatTarget: pixels whose R, G or B came out NaN or
+    // infinite (drawn magenta in `gpu`); -1 when not rendered that way.
+    qint64 nonFinitePixels = -1;
 
     bool matches() const
     {
@@ -52,6 +55,9 @@ struct CheckOptions {
     // coarser tessellation, say); the reference still ray-casts the analytic
     // surface the object's mesh names, and culling follows the object's mesh.
     std::shared_ptr<const MeshData> meshOverride;
+    // Render into a 32-bit float target and quantise on the CPU as an 8-bit
+    // target would (round(clamp(I, 0, 1) · 255)), counting non-finite pixels.
+    bool floatTarget = false;
 };
 
 // Renders `scene` offscreen (kTestImageSide², no MSAA) with the shipped
