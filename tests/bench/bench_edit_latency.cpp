@@ -60,8 +60,7 @@ QByteArray editedFragment(double k)
     QFile file(shaderPath(QStringLiteral("phong.frag")));
     file.open(QIODevice::ReadOnly);
     QByteArray text = file.readAll();
-    text.replace("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);",
-                 "fragColor = vec4(clamp(I * " + QByteArray::number(k, 'f', 6) + ", 0.0, 1.0), 1.0);");
+    text.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
     return text;
 }
 

@@ -33,7 +33,7 @@ using phonglab::test::sourcePath;
 
 namespace {
 
-const QString kOutputLine = QStringLiteral("fragColor = vec4(clamp(I, 0.0, 1.0), 1.0);");
+const QString kOutputLine = QStringLiteral("fragColor = vec4(I, 1.0);");
 
 QHash<QString, QByteArray> hashShippedShaders()
 {
@@ -163,8 +163,8 @@ void TestLiveEdit::typingChangesTheFrame()
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
     QElapsedTimer timer;
     timer.start();
-    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
-    QVERIFY(fragmentEditor()->text().contains(QStringLiteral("clamp(I * 0.5, 0.0, 1.0)")));
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
+    QVERIFY(fragmentEditor()->text().contains(QStringLiteral("vec4(I * 0.5, 1.0)")));
     // Waiting without grabbing: a grab renders on this thread and would
     // keep the viewport from lending its context for the warm-up.
     QTRY_VERIFY_WITH_TIMEOUT(applied.count() == 1, kBuildTimeoutMs);
@@ -180,7 +180,7 @@ void TestLiveEdit::typingChangesTheFrame()
     // Journaled before the build; the sentinel goes once the program has
     // drawn its frames, the journal stays while the edit is unsaved.
     RecoveryJournal &journal = live()->recovery()->journal();
-    QVERIFY(journal.read().value_or(RecoveryRecord()).fragment.text.contains("clamp(I * 0.5"));
+    QVERIFY(journal.read().value_or(RecoveryRecord()).fragment.text.contains("vec4(I * 0.5"));
     QTRY_VERIFY_WITH_TIMEOUT(!QFile::exists(journal.sentinelPath()), 5000);
     QVERIFY(journal.hasJournal());
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));
@@ -190,12 +190,12 @@ void TestLiveEdit::typingChangesTheFrame()
 void TestLiveEdit::errorStaysOnItsLineAndFixClearsIt()
 {
     openWindow();
-    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     const QImage good = frame();
 
-    // "vec4(...), 1.0) +;" : the parser stops at the ';' of the output line.
-    typeAfter(QStringLiteral("0.0, 1.0), 1.0)"), QStringLiteral(" +"));
+    // "vec4(I * 0.5, 1.0) +;" : the parser stops at the ';' of the output line.
+    typeAfter(QStringLiteral("vec4(I * 0.5, 1.0)"), QStringLiteral(" +"));
     const int line = lineOf(dock()->text(ShaderStage::Fragment), QStringLiteral("fragColor = vec4("));
     QVERIFY(line > 1);
     QTRY_VERIFY_WITH_TIMEOUT(!fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty(),
@@ -218,8 +218,8 @@ void TestLiveEdit::userUniformSurvivesRebuild()
     openWindow();
     ShaderEditor *editor = fragmentEditor();
     editor->insertAt(QStringLiteral("uniform float gain; // set by the user, not by the renderer\n"), 1, 0);
-    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
-    editor->replace(QStringLiteral("clamp(I * gain,"));
+    QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("vec4(I * gain,"));
     QVERIFY(waitForApplied());
     const QImage black = frame(); // gain starts at 0
 
@@ -247,10 +247,10 @@ void TestLiveEdit::userUniformSurvivesRebuild()
 void TestLiveEdit::unchangedTextIsNotRebuilt()
 {
     openWindow();
-    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
-    typeAfter(QStringLiteral("clamp(I * 0.5"), QStringLiteral("1")); // 0.51 ...
+    typeAfter(QStringLiteral("vec4(I * 0.5"), QStringLiteral("1")); // 0.51 ...
     QTest::keyClick(fragmentEditor(), Qt::Key_Backspace);             // ... and back
     QTest::qWait(live()->debounceMs() + 300);
     QCOMPARE(applied.count(), 0);
@@ -262,7 +262,7 @@ void TestLiveEdit::unchangedTextIsNotRebuilt()
 void TestLiveEdit::editingNeverWritesShippedShaders()
 {
     openWindow();
-    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     QString error;
     QVERIFY2(dock()->save(ShaderStage::Fragment, &error), qPrintable(error));
@@ -270,7 +270,7 @@ void TestLiveEdit::editingNeverWritesShippedShaders()
     // Everything saved: nothing left to recover.
     QTRY_VERIFY_WITH_TIMEOUT(!live()->recovery()->journal().hasJournal(), 5000);
     QCOMPARE(hashShippedShaders(), m_shippedHashes);
-    QCOMPARE(readShipped(QStringLiteral("phong.frag")).contains("clamp(I * 0.5"), false);
+    QCOMPARE(readShipped(QStringLiteral("phong.frag")).contains("vec4(I * 0.5"), false);
 }
 
 void TestLiveEdit::buildsOnGuiThreadWhenAsked()
@@ -281,7 +281,7 @@ void TestLiveEdit::buildsOnGuiThreadWhenAsked()
     QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("GUI thread")),
              qPrintable(m_window->statusBar()->currentMessage()));
     const QImage before = frame();
-    typeAfter(QStringLiteral("clamp(I"), QStringLiteral(" * 0.5"));
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     QTRY_VERIFY(frame() != before);
 }
@@ -357,7 +357,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     const QByteArray shippedFragment = readShipped(QStringLiteral("phong.frag"));
     record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")), readShipped(QStringLiteral("phong.vert")), false};
     QByteArray suspect = shippedFragment;
-    suspect.replace(kOutputLine.toUtf8(), "fragColor = vec4(clamp(I * 0.25, 0.0, 1.0), 1.0);");
+    suspect.replace(kOutputLine.toUtf8(), "fragColor = vec4(I * 0.25, 1.0);");
     QVERIFY(suspect != shippedFragment);
     record.fragment = {sourcePath(QStringLiteral("shaders/phong.frag")), suspect, true};
     record.shading = QStringLiteral("phong");

@@ -101,8 +101,8 @@ void TestUniformsDock::addGain()
 {
     ShaderEditor *editor = fragmentEditor();
     editor->insertAt(QStringLiteral("uniform float gain; // @range 0 2\n"), 1, 0);
-    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
-    editor->replace(QStringLiteral("clamp(I * gain,"));
+    QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("vec4(I * gain,"));
     m_window->shaderDock()->compileAction()->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(gainRow());
@@ -253,8 +253,8 @@ void TestUniformsDock::colourIntAndBoolRows()
     ShaderEditor *editor = fragmentEditor();
     editor->insertAt(QStringLiteral("uniform vec3 tint; // @color\nuniform int steps; // @range 0 8\n"
                                     "uniform bool flip;\n"), 1, 0);
-    QVERIFY(editor->findFirst(QStringLiteral("clamp(I,"), false, true, false, false, true, 0, 0));
-    editor->replace(QStringLiteral("clamp(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
+    QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
+    editor->replace(QStringLiteral("vec4(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
     m_window->shaderDock()->compileAction()->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(dock()->row(QStringLiteral("tint")));

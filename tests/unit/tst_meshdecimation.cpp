@@ -27,7 +27,7 @@ QString asset(const char *name)
 
 MeshData load(const QString &path, NormalOptions options = {})
 {
-    MeshLoadResult r = importMeshFile(path, options);
+    MeshLoadResult r = loadMesh(path, options);
     if (!r.ok())
         qFatal("cannot load %s: %s", qPrintable(path), qPrintable(r.error));
     return std::move(*r.mesh);
