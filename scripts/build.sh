@@ -1,7 +1,30 @@
 #!/usr/bin/env bash
-# Installs what is missing, then configures and builds PhongLab in ./build.
+# Installs what is missing, then configures and builds PhongLab.
+#   scripts/build.sh                        ./build (the compiler cmake finds, g++ on Debian)
+#   scripts/build.sh --sanitize [TARGET...] ./build-sanitize: clang 14, ASan + UBSan
+#       everywhere, libFuzzer targets added (PHONGLAB_FUZZ=ON, see
+#       cmake/Sanitizers.cmake); only TARGETs (and what they need) when given.
+#       scripts/test.sh --sanitize and scripts/fuzz.sh build here.
+# Uses ccache when it is installed (scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+
+if [ "${1:-}" = "--sanitize" ]; then
+  shift
+  targets=()
+  for t in "$@"; do targets+=(--target "$t"); done
+  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_COMPILER=clang++-14 -DPHONGLAB_FUZZ=ON -DPHONGLAB_SANITIZE=address,undefined \
+    "${launcher[@]}" >/dev/null
+  cmake --build build-sanitize --parallel "$(nproc)" "${targets[@]}"
+  exit 0
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}"
 cmake --build build --parallel "$(nproc)"

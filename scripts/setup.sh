@@ -11,6 +11,8 @@ PACKAGES=(
   libgl-dev libgl1-mesa-dri libegl-mesa0
   xvfb xauth
   libtinyobjloader-dev libassimp-dev
+  clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
+  ccache                                # faster rebuilds (build.sh uses it when found)
 )
 
 missing=()

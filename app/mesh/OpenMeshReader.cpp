@@ -20,35 +20,24 @@ namespace phonglab {
 namespace {
 
 // Routes OpenMesh's console streams into buffers while it exists, then puts
-// the previous targets and enabled states back. OpenMesh sends these to
-// std::cerr / std::clog / std::cout by default; a GUI has no use for that
-// and the user needs the messages as warnings instead.
+// the previous ones back. OpenMesh sends these to std::cerr / std::clog /
+// std::cout by default; a GUI has no use for that and the user needs the
+// messages as warnings instead. The streams' buffers are swapped (rdbuf)
+// rather than their targets changed with mostream::connect/disconnect:
+// OpenMesh's disconnect() forgets the target object connect() allocated
+// without deleting it, a leak on every file read.
 class ConsoleCapture {
 public:
     ConsoleCapture()
     {
-        for (int i = 0; i < 3; ++i) {
-            OpenMesh::mostream &s = stream(i);
-            m_wasEnabled[i] = s.is_enabled();
-            m_hadCerr[i] = s.disconnect(std::cerr);
-            m_hadClog[i] = s.disconnect(std::clog);
-            m_hadCout[i] = s.disconnect(std::cout);
-            s.connect(m_buffers[i]);
-            s.enable();
-        }
+        for (int i = 0; i < 3; ++i)
+            m_previous[i] = stream(i).rdbuf(&m_buffers[i]);
     }
 
     ~ConsoleCapture()
     {
-        for (int i = 0; i < 3; ++i) {
-            OpenMesh::mostream &s = stream(i);
-            s.flush();
-            s.disconnect(m_buffers[i]);
-            if (m_hadCerr[i]) s.connect(std::cerr);
-            if (m_hadClog[i]) s.connect(std::clog);
-            if (m_hadCout[i]) s.connect(std::cout);
-            m_wasEnabled[i] ? s.enable() : s.disable();
-        }
+        for (int i = 0; i < 3; ++i)
+            stream(i).rdbuf(m_previous[i]);
     }
 
     // The distinct lines written to omerr so far.
@@ -69,13 +58,10 @@ public:
     ConsoleCapture &operator=(const ConsoleCapture &) = delete;
 
 private:
-    static OpenMesh::mostream &stream(int i) { return i == 0 ? omerr() : i == 1 ? omlog() : omout(); }
+    static std::ostream &stream(int i) { return i == 0 ? omerr() : i == 1 ? omlog() : omout(); }
 
-    std::ostringstream m_buffers[3];
-    bool m_wasEnabled[3] = {};
-    bool m_hadCerr[3] = {};
-    bool m_hadClog[3] = {};
-    bool m_hadCout[3] = {};
+    std::stringbuf m_buffers[3];
+    std::streambuf *m_previous[3] = {};
 };
 
 std::mutex &openMeshMutex()

@@ -1,0 +1,234 @@
+#pragma once
+// What each fuzz target does with one input, shared by the libFuzzer targets
+// (tests/fuzz/fuzz_<name>.cpp) and the context-free regression test
+// (tests/unit/tst_fuzzregressions.cpp), so a file under tests/data/fuzz/
+// goes through exactly the code path the fuzzer found it on.
+//
+// Every target also checks the promises its entry point makes about what
+// it returns (a loaded mesh is valid, a parsed scene writes back to the
+// same scene, ...); a broken promise aborts, which the fuzzer reports as a
+// crash like any other.
+//
+// Header-only on purpose: the fuzz build links it with libFuzzer, the unit
+// test with QtTest, and neither needs a library of its own.
+
+#include "core/RecoveryJournal.h"
+#include "core/SceneJson.h"
+#include "core/UniformAnnotations.h"
+#include "mesh/MeshCache.h"
+#include "mesh/MeshLoader.h"
+#include "render/ShaderDiagnostic.h"
+
+#include <QBuffer>
+#include <QByteArray>
+#include <QDir>
+#include <QFile>
+#include <QString>
+#include <QStringList>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <unistd.h>
+
+namespace phonglab::fuzz {
+
+// What an entry point made of one input: loaded/parsed (ok) or the error it
+// gave. Parsers that only return a list (shader logs, uniforms) are always ok.
+struct Outcome {
+    bool ok = false;
+    QString error;
+};
+
+// Every target, by the name used in fuzz_<name>, tests/fuzz/corpus/<name>
+// and tests/data/fuzz/<name>.
+inline const QStringList &targetNames()
+{
+    static const QStringList names{"obj", "ply", "off", "stl", "om", "meshcache",
+                                   "scene", "shaderlog", "uniforms", "journal"};
+    return names;
+}
+
+[[noreturn]] inline void brokenPromise(const char *target, const char *what)
+{
+    std::fprintf(stderr, "fuzz_%s: broken promise: %s\n", target, what);
+    std::abort();
+}
+
+// One scratch file per process and file name: the entry points that read
+// files get the input under the name (and suffix) they dispatch on.
+inline QString scratchPath(const QString &fileName)
+{
+    // Made on first use, removed at a normal exit (a crash leaves it for
+    // the post-mortem).
+    static const struct ScratchDir {
+        QString path;
+        ScratchDir()
+        {
+            QString base = qEnvironmentVariable("TMPDIR");
+            if (base.isEmpty())
+                base = QStringLiteral("/tmp");
+            path = QStringLiteral("%1/phonglab-fuzz-%2").arg(base).arg(::getpid());
+            QDir().mkpath(path);
+        }
+        ~ScratchDir() { QDir(path).removeRecursively(); }
+    } dir;
+    return dir.path + QLatin1Char('/') + fileName;
+}
+
+inline bool writeScratch(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(bytes) == bytes.size();
+}
+
+inline void checkMesh(const char *target, const MeshLoadResult &result)
+{
+    if (!result.ok()) {
+        if (result.error.isEmpty())
+            brokenPromise(target, "a failed load without an error message");
+        return;
+    }
+    const MeshData &mesh = *result.mesh;
+    if (!mesh.isValid())
+        brokenPromise(target, "a loaded mesh that is not valid (empty, normals do not match, index out of range)");
+    if (mesh.indices.empty())
+        brokenPromise(target, "a loaded mesh without triangles");
+    for (const glm::vec3 &p : mesh.positions)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            brokenPromise(target, "a loaded mesh with a NaN or infinite position");
+    for (const glm::vec3 &n : mesh.normals)
+        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+            brokenPromise(target, "a loaded mesh with a NaN or infinite normal");
+    if (result.stats.triangles != qint64(mesh.triangleCount())
+        || result.stats.vertices != qint64(mesh.positions.size()))
+        brokenPromise(target, "stats that do not describe the loaded mesh");
+}
+
+// OBJ, PLY, OFF, STL, OM: the input as a file with the format's suffix,
+// through importMeshFile, what the app's import child runs.
+inline Outcome runMesh(const std::string &suffix, const QByteArray &bytes)
+{
+    const QString path = scratchPath(QStringLiteral("input.") + QString::fromStdString(suffix));
+    if (!writeScratch(path, bytes))
+        brokenPromise(suffix.c_str(), "cannot write the scratch file");
+    const MeshLoadResult result = importMeshFile(path, NormalOptions{}, LoadProgress{});
+    checkMesh(suffix.c_str(), result);
+    return {result.ok(), result.error};
+}
+
+// A mesh cache entry (the import child's answer, the cache file): any key.
+inline Outcome runMeshCache(const QByteArray &bytes)
+{
+    QByteArray copy = bytes;
+    QBuffer buffer(&copy);
+    buffer.open(QIODevice::ReadOnly);
+    const std::optional<MeshLoadResult> result = MeshCache::decode(buffer, std::nullopt);
+    if (!result)
+        return {false, QStringLiteral("refused")};
+    if (!result->mesh || !result->mesh->isValid())
+        brokenPromise("meshcache", "an accepted entry with an invalid mesh");
+    return {true, {}};
+}
+
+// A scene file's text. What parses must write back to the same scene.
+inline Outcome runScene(const QByteArray &bytes)
+{
+    const SceneLoadResult result = parseScene(bytes, QStringLiteral("/phonglab-fuzz-base"));
+    if (!result.ok()) {
+        if (result.error.isEmpty())
+            brokenPromise("scene", "a refused scene without an error message");
+        return {false, result.error};
+    }
+    const SceneLoadResult again = parseScene(sceneToJson(*result.scene), QStringLiteral("/phonglab-fuzz-base"));
+    if (!again.ok()) {
+        std::fprintf(stderr, "fuzz_scene: the written scene does not parse: %s\n", qPrintable(again.error));
+        brokenPromise("scene", "sceneToJson wrote a scene that parseScene refuses");
+    }
+    if (!(*again.scene == *result.scene))
+        brokenPromise("scene", "sceneToJson + parseScene changed the scene");
+    return {true, {}};
+}
+
+// A driver info log. Byte 0 picks the stage and how many prologue lines the
+// driver saw; the rest is the log, then (after the first NUL byte, if any)
+// the source text its columns are mapped onto.
+inline Outcome runShaderLog(const QByteArray &bytes)
+{
+    const unsigned char head = bytes.isEmpty() ? 0 : static_cast<unsigned char>(bytes[0]);
+    const ShaderStage stage = ShaderStage(head % 3);
+    const int prologueLines = (head / 3) % 16;
+    const QByteArray rest = bytes.mid(1);
+    const qsizetype nul = rest.indexOf('\0');
+    const QByteArray log = nul < 0 ? rest : rest.left(nul);
+    const QByteArray code = nul < 0 ? QByteArray() : rest.mid(nul + 1);
+    std::vector<ShaderDiagnostic> diagnostics =
+        parseShaderLog(QString::fromUtf8(log), stage, QStringLiteral("shader.frag"), prologueLines);
+    mapColumnsToSource(diagnostics, code);
+    for (const ShaderDiagnostic &d : diagnostics) {
+        if (d.line < 0 || d.column < 0)
+            brokenPromise("shaderlog", "a negative line or column");
+        (void)d.format();
+    }
+    return {true, {}};
+}
+
+// Shader text with uniform declarations and their // @range ... comments.
+inline Outcome runUniforms(const QByteArray &bytes)
+{
+    const std::vector<UniformDeclaration> uniforms = parseUniformDeclarations(QString::fromUtf8(bytes));
+    for (const UniformDeclaration &u : uniforms) {
+        if (u.name.isEmpty())
+            brokenPromise("uniforms", "a uniform without a name");
+        if (u.arraySize < 0)
+            brokenPromise("uniforms", "a negative array size");
+    }
+    return {true, {}};
+}
+
+// A shader recovery journal file.
+inline Outcome runJournal(const QByteArray &bytes)
+{
+    const QString path = scratchPath(QStringLiteral("session.journal"));
+    if (!writeScratch(path, bytes))
+        brokenPromise("journal", "cannot write the scratch file");
+    QString error;
+    const std::optional<RecoveryRecord> record = RecoveryJournal::readFile(path, &error);
+    if (!record && error.isEmpty())
+        brokenPromise("journal", "a refused journal without an error message");
+    return {record.has_value(), error};
+}
+
+// Dispatch by target name (see targetNames()).
+inline Outcome run(std::string_view target, const QByteArray &bytes)
+{
+    if (target == "obj" || target == "ply" || target == "off" || target == "stl" || target == "om")
+        return runMesh(std::string(target), bytes);
+    if (target == "meshcache") return runMeshCache(bytes);
+    if (target == "scene") return runScene(bytes);
+    if (target == "shaderlog") return runShaderLog(bytes);
+    if (target == "uniforms") return runUniforms(bytes);
+    if (target == "journal") return runJournal(bytes);
+    std::fprintf(stderr, "phonglab fuzz: unknown target %.*s\n", int(target.size()), target.data());
+    std::abort();
+}
+
+} // namespace phonglab::fuzz
+
+// Defines the libFuzzer entry point of one target (in fuzz_<name>.cpp).
+// PHONGLAB_FUZZ_VERBOSE=1 prints what became of each input (ok or the
+// error), e.g. to see what the seeds exercise: fuzz_ply -runs=0 corpus/ply.
+#define PHONGLAB_FUZZ_TARGET(name)                                                              \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)         \
+    {                                                                                           \
+        static const bool verbose = qEnvironmentVariableIntValue("PHONGLAB_FUZZ_VERBOSE") != 0; \
+        const phonglab::fuzz::Outcome outcome = phonglab::fuzz::run(                            \
+            name, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size))); \
+        if (verbose)                                                                            \
+            std::fprintf(stderr, "fuzz_%s: %zu bytes: %s\n", name, size,                       \
+                         outcome.ok ? "ok" : qPrintable(outcome.error));                        \
+        return 0;                                                                               \
+    }
