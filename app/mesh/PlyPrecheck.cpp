@@ -71,6 +71,26 @@ std::vector<std::string_view> words(std::string_view line)
     return out;
 }
 
+// "1.0" or "1": digits, optionally a point and more digits.
+bool isPlainVersion(std::string_view v)
+{
+    const auto digits = [&](std::size_t &i) {
+        const std::size_t start = i;
+        while (i < v.size() && v[i] >= '0' && v[i] <= '9')
+            ++i;
+        return i > start;
+    };
+    std::size_t i = 0;
+    if (!digits(i))
+        return false;
+    if (i < v.size() && v[i] == '.') {
+        ++i;
+        if (!digits(i))
+            return false;
+    }
+    return i == v.size();
+}
+
 QString parseHeader(std::string_view text, PlyHeader &h)
 {
     std::size_t pos = 0;
@@ -100,6 +120,10 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             else if (w[1] == "binary_little_endian") h.format = PlyHeader::LittleEndian;
             else if (w[1] == "binary_big_endian") h.format = PlyHeader::BigEndian;
             else return where + QStringLiteral(": unknown format %1").arg(quoted(w[1]));
+            // OpenMesh reads the version with operator>>(float) and, on a failed read,
+            // loops over the header forever; so accept only a plain number here.
+            if (w.size() != 3 || !isPlainVersion(w[2]))
+                return where + QStringLiteral(": expected 'format %1 1.0'").arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
         } else if (w[0] == "element") {
             std::int64_t count = -1;
             if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0 || count > UINT32_MAX)

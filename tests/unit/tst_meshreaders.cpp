@@ -167,6 +167,8 @@ private slots:
     void randomBytesRejected_data();
     void randomBytesRejected();
     void hugeVertexCountReturnsQuickly();
+    void plyFormatLineMustCarryAVersion_data();
+    void plyFormatLineMustCarryAVersion();
     void binaryTruncated_data();
     void binaryTruncated();
     void objCutAnywhereNeverCrashes();
@@ -478,6 +480,38 @@ void TestMeshReaders::hugeVertexCountReturnsQuickly()
     writeBytes(om, omBytes);
     QVERIFY(readMeshFile(om).error.contains("declares 1000000000 vertices"));
     QVERIFY(timer.elapsed() < 2000);
+}
+
+void TestMeshReaders::plyFormatLineMustCarryAVersion_data()
+{
+    QTest::addColumn<QByteArray>("formatLine");
+    QTest::newRow("no version") << QByteArray("format ascii");
+    QTest::newRow("exponent without digits") << QByteArray("format ascii 1.0e");
+    QTest::newRow("not a number") << QByteArray("format binary_big_endian /.0");
+    QTest::newRow("a word too many") << QByteArray("format ascii 1.0 x");
+    QTest::newRow("point without digits") << QByteArray("format ascii 1.");
+}
+
+void TestMeshReaders::plyFormatLineMustCarryAVersion()
+{
+    // OpenMesh's PLY header loop never ends when the version after the
+    // format does not read as a float (found by fuzzing; it hung mesh-info
+    // and grew by ~80 MB/s): the precheck refuses such a line, located.
+    QFETCH(QByteArray, formatLine);
+    const QString path = m_dir.filePath("format.ply");
+    writeBytes(path, "ply\n" + formatLine + "\nelement vertex 3\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                     "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    QElapsedTimer timer;
+    timer.start();
+    const MeshReadResult r = readMeshFile(path);
+    QVERIFY(timer.elapsed() < 2000);
+    QVERIFY(!r.ok());
+    QVERIFY2(r.error.contains(QLatin1String("PLY header line 2: expected 'format")), qPrintable(r.error));
+
+    // The same file with a version reads.
+    writeBytes(path, readBytes(path).replace(formatLine, "format ascii 1.0"));
+    QVERIFY2(readMeshFile(path).ok(), qPrintable(readMeshFile(path).error));
 }
 
 void TestMeshReaders::binaryTruncated_data()
