@@ -2,15 +2,46 @@
 # Installs, builds, and runs the whole test suite (CTest) under a virtual X
 # server: the GL and UI tests need OpenGL, which Mesa provides inside Xvfb.
 # Extra arguments go to ctest (e.g. -R render -V).
+#
+#   scripts/test.sh --sanitize [ctest args]
+#       the same suite built with clang 14 under ASan + UBSan with leak
+#       detection (build-sanitize/, see cmake/Sanitizers.cmake); any report
+#       fails its test. Suppressions: tests/sanitizer/ (Mesa, LLVM, X only).
+#   scripts/test.sh --sanitize --context-free
+#       only the context-free tests (ctest -L unit) under the sanitizers,
+#       then every fuzz seed and past find replayed (scripts/fuzz.sh
+#       --replay): what CI adds to the plain run (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
-export PHONGLAB_TEST_ARTIFACTS="$PWD/build/test-artifacts"
+
+build=build
+if [ "${1:-}" = "--sanitize" ]; then
+  shift
+  build=build-sanitize
+  context_free=0
+  if [ "${1:-}" = "--context-free" ]; then
+    context_free=1
+    shift
+  fi
+  supp="$PWD/tests/sanitizer"
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_stack_use_after_return=0:${ASAN_OPTIONS:-}"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
+  export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0:${LSAN_OPTIONS:-}"
+  if [ "$context_free" = 1 ]; then
+    bash scripts/build.sh --sanitize phonglab_unit_tests phonglab_fuzzers
+    ctest --test-dir "$build" --output-on-failure --parallel 2 --timeout 900 -L unit "$@"
+    FUZZ_NO_BUILD=1 exec bash scripts/fuzz.sh --replay all
+  fi
+  bash scripts/build.sh --sanitize
+else
+  bash scripts/build.sh
+fi
+export PHONGLAB_TEST_ARTIFACTS="$PWD/$build/test-artifacts"
 xvfb-run -a -s "-screen 0 1280x1024x24" \
-  ctest --test-dir build --output-on-failure --parallel 2 --timeout 600 "$@"
+  ctest --test-dir "$build" --output-on-failure --parallel 2 --timeout 600 "$@"
 
 # The render-versus-reference figures, which passing tests do not show.
-log=build/Testing/Temporary/LastTest.log
+log=$build/Testing/Temporary/LastTest.log
 if [ -f "$log" ] && grep -q "PSNR" "$log"; then
   echo
   echo "GPU render versus CPU reference (from $log):"

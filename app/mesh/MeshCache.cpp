@@ -48,12 +48,31 @@ void writeStats(QDataStream &out, const MeshStats &s)
         << qint32(s.normalMethod) << s.boundsMin << s.boundsMax << s.closed;
 }
 
-void readStats(QDataStream &in, MeshStats &s)
+bool readStats(QDataStream &in, MeshStats &s)
 {
     qint32 method = 0;
     in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices >> s.normalsFromFile
         >> method >> s.boundsMin >> s.boundsMax >> s.closed;
     s.normalMethod = NormalMethod(method);
+    return method >= qint32(NormalMethod::Auto) && method <= qint32(NormalMethod::AngleWeighted);
+}
+
+// QDataStream reserves a list's declared length before reading it, so a
+// corrupt count would ask for gigabytes; every string takes at least the
+// four bytes of its length.
+bool readStrings(QDataStream &in, QStringList &list, qint64 bytesLeft)
+{
+    quint32 count = 0;
+    in >> count;
+    if (in.status() != QDataStream::Ok || count > quint64(bytesLeft) / 4)
+        return false;
+    list.reserve(count);
+    for (quint32 i = 0; i < count && in.status() == QDataStream::Ok; ++i) {
+        QString s;
+        in >> s;
+        list << s;
+    }
+    return in.status() == QDataStream::Ok;
 }
 
 } // namespace
@@ -103,10 +122,8 @@ std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device, const std::op
     if (in.status() != QDataStream::Ok || (expectedKey && key != *expectedKey))
         return std::nullopt;
     MeshLoadResult result;
-    readStats(in, result.stats);
-    in >> result.warnings;
     MeshData mesh;
-    const bool ok = in.status() == QDataStream::Ok
+    const bool ok = readStats(in, result.stats) && readStrings(in, result.warnings, device.bytesAvailable())
         && readArray(in, mesh.positions, device.bytesAvailable())
         && readArray(in, mesh.normals, device.bytesAvailable())
         && readArray(in, mesh.indices, device.bytesAvailable());

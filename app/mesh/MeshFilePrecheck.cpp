@@ -2,6 +2,7 @@
 
 #include "MeshTextTokens.h"
 #include "OffPrecheck.h"
+#include "OmPrecheck.h"
 #include "PlyPrecheck.h"
 
 #include <QFile>
@@ -246,23 +247,12 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
         dropNonFiniteTriangles(path, check);
 }
 
-void checkOm(std::string_view head, MeshFilePrecheck &check)
+void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check)
 {
-    if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2])) {
+    if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2]))
         check.error = wrongMagic(head, check.format, QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
-        return;
-    }
-    check.binary = true;
-    check.declaredVertices = littleEndian32(head, 4);
-    check.declaredFaces = littleEndian32(head, 8);
-    // At the least three floats a vertex and a byte a face.
-    const quint64 needed = 16 + 12 * check.declaredVertices + check.declaredFaces;
-    if (needed > quint64(check.fileSize))
-        check.error = QStringLiteral("the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
-                                     "bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(check.declaredVertices).arg(check.declaredFaces).arg(needed).arg(check.fileSize);
-    else if (check.declaredFaces == 0)
-        check.error = QStringLiteral("the OpenMesh file has no faces");
+    else
+        precheckOm(path, check);
 }
 
 } // namespace
@@ -339,7 +329,7 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
         checkStl(path, head, check);
         break;
     case MeshFileFormat::Om:
-        checkOm(head, check);
+        checkOm(path, head, check);
         break;
     }
     return check;

@@ -53,6 +53,25 @@ std::uint32_t littleEndian32(std::string_view bytes, std::size_t at)
     return v;
 }
 
+// OpenMesh reads a binary face as a corner count and that many indices,
+// growing its index list one read at a time, past the end of the file if the
+// count says so: a count of 10^9 asks for gigabytes. Walk the faces first.
+QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
+{
+    for (quint64 f = 0; f < faces; ++f) {
+        if (text.size() - at < 4)
+            return QStringLiteral("the binary OFF file ends after %1 of %2 faces (truncated?)").arg(f).arg(faces);
+        const quint64 corners = littleEndian32(text, at);
+        at += 4;
+        if (corners > (text.size() - at) / 4)
+            return QStringLiteral("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
+                                  "left can hold (corrupt?)")
+                .arg(f + 1).arg(at - 4).arg(corners).arg(text.size() - at);
+        at += 4 * corners;
+    }
+    return {};
+}
+
 void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &check)
 {
     // "OFF BINARY": the counts and values follow the first line as 32-bit
@@ -62,16 +81,27 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
         check.error = QStringLiteral("the binary OFF file ends before its counts");
         return;
     }
+    // Colour and texture layouts depend on reader options this check cannot
+    // see, so the faces could not be walked safely.
+    if (k.colors || k.keyword.substr(0, 2) == "ST") {
+        check.error = QStringLiteral("binary %1 files (with colours or texture coordinates) are not supported; "
+                                     "save it as ascii OFF or as PLY")
+                          .arg(QString::fromLatin1(k.keyword.data(), qsizetype(k.keyword.size())));
+        return;
+    }
     check.binary = true;
     check.declaredVertices = littleEndian32(text, body);
     check.declaredFaces = littleEndian32(text, body + 4);
-    const quint64 needed = body + 12 + check.declaredVertices * (k.normals ? 24 : 12) + check.declaredFaces * 16;
+    const quint64 vertexBytes = check.declaredVertices * (k.normals ? 24 : 12);
+    const quint64 needed = body + 12 + vertexBytes + check.declaredFaces * 16;
     if (needed > text.size())
         check.error = QStringLiteral("the binary OFF header declares %1 vertices and %2 faces, which need at least "
                                      "%3 bytes, but the file has %4 (truncated or corrupt)")
                           .arg(check.declaredVertices).arg(check.declaredFaces).arg(needed).arg(text.size());
     else if (check.declaredFaces == 0)
         check.error = QStringLiteral("the OFF file has no faces");
+    else
+        check.error = checkBinaryFaces(text, body + 12 + vertexBytes, check.declaredFaces);
 }
 
 void appendLine(std::string &out, const std::vector<std::string_view> &tokens, std::size_t count)

@@ -70,6 +70,35 @@ std::mutex &openMeshMutex()
     return mutex;
 }
 
+// The OM reader stops at the end marker OpenMesh writes after the last
+// chunk. Running into the end of the file instead means it was cut short,
+// and the reader would have carried on with whatever a failed read leaves in
+// its variables.
+bool readOm(std::istream &in, PolygonSoupImporter &importer, OpenMesh::IO::Options options, QString &error)
+{
+    const bool ok = OpenMesh::IO::IOManager().read(in, "om", importer, options);
+    if (in.eof())
+        error = QStringLiteral("the file ends before its end marker (truncated?)");
+    return ok && !in.eof();
+}
+
+// Hands `read` the precheck's cleaned copy when there is one (STL without
+// non-finite triangles, OM without custom properties), else the file.
+template <typename Read>
+bool readFileOrCopy(const QString &path, const MeshFilePrecheck &check, QString &error, Read read)
+{
+    if (!check.rewritten.empty()) {
+        std::istringstream in(check.rewritten, std::ios::binary);
+        return read(in);
+    }
+    std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
+    if (!in) {
+        error = QStringLiteral("cannot open the file");
+        return false;
+    }
+    return read(in);
+}
+
 bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFilePrecheck &check,
               OpenMesh::IO::Options options, QString &error)
 {
@@ -78,32 +107,10 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         // Told binary or ascii explicitly, as the precheck decided it.
         if (check.binary)
             options += OpenMesh::IO::Options::Binary;
-        if (!check.rewritten.empty()) {
-            std::istringstream in(check.rewritten, std::ios::binary);
-            return io.read(in, "stl", importer, options);
-        }
-        std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
-        if (!in) {
-            error = QStringLiteral("cannot open the file");
-            return false;
-        }
-        return io.read(in, "stl", importer, options);
+        return readFileOrCopy(path, check, error, [&](std::istream &in) { return io.read(in, "stl", importer, options); });
     }
-    if (check.format == MeshFileFormat::Om) {
-        // The OM reader stops at the end marker OpenMesh writes after the
-        // last chunk. Running into the end of the file instead means it was
-        // cut short, and the reader would have carried on with whatever a
-        // failed read leaves in its variables.
-        std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
-        if (!in) {
-            error = QStringLiteral("cannot open the file");
-            return false;
-        }
-        const bool ok = io.read(in, "om", importer, options);
-        if (in.eof())
-            error = QStringLiteral("the file ends before its end marker (truncated?)");
-        return ok && !in.eof();
-    }
+    if (check.format == MeshFileFormat::Om)
+        return readFileOrCopy(path, check, error, [&](std::istream &in) { return readOm(in, importer, options, error); });
     if (!check.rewritten.empty()) {
         // A cleaned OFF text. The OFF reader's stream entry point keeps the
         // header flags of the previous file, so it goes through a file too.

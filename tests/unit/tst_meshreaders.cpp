@@ -3,9 +3,7 @@
 #include "mesh/MeshRepair.h"
 #include "mesh/ObjReader.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
+#include "MeshFiles.h"
 
 #include <QElapsedTimer>
 #include <QtEndian>
@@ -20,6 +18,7 @@
 #include <cmath>
 
 using namespace phonglab;
+using namespace phonglab::test;
 
 namespace {
 
@@ -75,45 +74,6 @@ std::vector<std::vector<Point>> canonicalFaces(const PolygonMesh &m)
     return faces;
 }
 
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
-
-TriMesh referenceTetra()
-{
-    TriMesh m;
-    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0});
-    const auto c = m.add_vertex({0, 1, 0}), d = m.add_vertex({0, 0, 1});
-    m.add_face(a, c, b);
-    m.add_face(a, b, d);
-    m.add_face(a, d, c);
-    m.add_face(b, c, d);
-    return m;
-}
-
-// OpenMesh's writers chat on omlog and switch it back on when done.
-bool writeMesh(const TriMesh &m, const QString &path, OpenMesh::IO::Options options)
-{
-    omlog().disable();
-    const bool ok = OpenMesh::IO::write_mesh(m, path.toStdString(), options);
-    omlog().disable();
-    return ok;
-}
-
-QString writeTetra(const QTemporaryDir &dir, const QString &name, bool binary)
-{
-    const QString path = dir.filePath(name);
-    OpenMesh::IO::Options options;
-    if (binary)
-        options += OpenMesh::IO::Options::Binary;
-    return writeMesh(referenceTetra(), path, options) ? path : QString();
-}
-
-void writeBytes(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    QCOMPARE(f.write(bytes), bytes.size());
-}
-
 // A binary STL whose header starts with "solid", as many exporters write
 // it, with zero facet normals (which means "compute them").
 QByteArray binaryStl(const std::vector<std::array<glm::vec3, 3>> &triangles)
@@ -128,12 +88,6 @@ QByteArray binaryStl(const std::vector<std::array<glm::vec3, 3>> &triangles)
         bytes.append(2, '\0');
     }
     return bytes;
-}
-
-QByteArray readBytes(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 } // namespace
