@@ -117,6 +117,9 @@ void injectFault()
         for (;;)
             ::pause();
     } else if (fault == "crash") {
+        // The default action, even where a sanitizer has its own handler
+        // (which would report and exit with status 1 instead).
+        std::signal(SIGSEGV, SIG_DFL);
         std::raise(SIGSEGV);
     } else if (fault == "oom") {
         for (;;) {

@@ -97,7 +97,8 @@ void TestRecoveryJournal::nonUtf8TextRoundTrips()
 {
     RecoveryJournal journal(m_dir->path());
     RecoveryRecord record = sampleRecord();
-    record.fragment.text = QByteArray("bad \xff\xfe bytes\0 and a nul", 26);
+    static constexpr char kText[] = "bad \xff\xfe bytes\0 and a nul";
+    record.fragment.text = QByteArray(kText, sizeof kText - 1); // the nul inside included
     QVERIFY(journal.write(record));
     const auto read = journal.read();
     QVERIFY(read);
