@@ -251,7 +251,8 @@ void benchNormals(const std::string &path, int runs)
                                         {"area", NormalMethod::AreaWeighted, std::optional<double>()},
                                         {"angle", NormalMethod::AngleWeighted, std::optional<double>()},
                                         {"angle, crease 30 deg", NormalMethod::AngleWeighted, std::optional<double>(30.0)}}) {
-        const Sample s = median([&] {
+        // Bindings captured by copy, by name: clang 14 cannot capture a structured binding.
+        const Sample s = median([&, method = method, crease = crease] {
             return static_cast<long long>(phonglab::computeNormals(positions, triangles, method, crease).normals.size());
         }, runs);
         std::printf("  %-34s %9.1f ms %8.2fx\n", name, s.ms, s.ms / plain.ms);
