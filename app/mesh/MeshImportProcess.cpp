@@ -8,7 +8,6 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QProcess>
-#include <QSaveFile>
 #include <QTemporaryFile>
 
 #include <algorithm>
@@ -276,9 +275,12 @@ int runMeshImportChild(const QString &path, const NormalOptions &normals, const 
         std::fflush(stdout);
         return 1;
     }
-    QSaveFile out(entryFile);
-    if (!out.open(QIODevice::WriteOnly) || !MeshCache::encode(out, MeshCache::sourceKey(path, normals), result)
-        || !out.commit()) {
+    // A plain write, not QSaveFile: the parent reads the entry only after a
+    // clean exit, and QSaveFile's fsync of tens of megabytes bought nothing
+    // (a cache entry cut short by a power cut fails decode() and is dropped).
+    QFile out(entryFile);
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)
+        || !MeshCache::encode(out, MeshCache::sourceKey(path, normals), result) || !out.flush()) {
         std::printf("error %s\n", QStringLiteral("cannot write the result to %1").arg(entryFile).toUtf8().constData());
         return 1;
     }
