@@ -4,6 +4,7 @@
 
 #include <QFile>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -112,8 +113,22 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         }
         const std::vector<std::string_view> w = words(line);
         if (w.empty() || w[0] == "comment" || w[0] == "obj_info")
-            continue;
+            continue; // OpenMesh skips the rest of these lines, whatever they hold
+        // OpenMesh splits header words at any whitespace (form feeds and
+        // vertical tabs too) and reads counts with operator>>; a header
+        // word it cannot read sends it round its header loop forever. The
+        // other header lines are text: control and non-ASCII bytes are refused.
+        const auto odd = std::find_if(line.begin(), line.end(), [](char c) {
+            const auto u = static_cast<unsigned char>(c);
+            return (u < 0x20 && c != '\t') || u > 0x7e;
+        });
+        if (odd != line.end())
+            return where + QStringLiteral(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                               .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
+                               .arg(odd - line.begin() + 1);
         if (w[0] == "format") {
+            if (h.format != PlyHeader::Unknown)
+                return where + QStringLiteral(": a second 'format' line");
             if (w.size() < 2)
                 return where + QStringLiteral(": 'format' without a format");
             if (w[1] == "ascii") h.format = PlyHeader::Ascii;

@@ -123,6 +123,8 @@ private slots:
     void hugeVertexCountReturnsQuickly();
     void plyFormatLineMustCarryAVersion_data();
     void plyFormatLineMustCarryAVersion();
+    void plyHeaderMustBeText_data();
+    void plyHeaderMustBeText();
     void binaryTruncated_data();
     void binaryTruncated();
     void objCutAnywhereNeverCrashes();
@@ -466,6 +468,39 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion()
     // The same file with a version reads.
     writeBytes(path, readBytes(path).replace(formatLine, "format ascii 1.0"));
     QVERIFY2(readMeshFile(path).ok(), qPrintable(readMeshFile(path).error));
+}
+
+void TestMeshReaders::plyHeaderMustBeText_data()
+{
+    QTest::addColumn<QByteArray>("elementLine");
+    QTest::addColumn<QString>("error"); // empty: the file reads
+    static constexpr char kFound[] = "element v\x01\0a`\0\x0c\x88vertex 3";
+    QTest::newRow("nul and form feed in a name (fuzz find)")
+        << QByteArray(kFound, sizeof kFound - 1) << "PLY header line 3: byte 0x01 at column 10 is not text";
+    QTest::newRow("form feed between words") << QByteArray("element vertex\x0c" "3") << "byte 0x0c at column 15";
+    QTest::newRow("a second format line")
+        << QByteArray("format binary_little_endian 1.0\nelement vertex 3") << "PLY header line 3: a second 'format' line";
+    QTest::newRow("UTF-8 in a comment reads") << QByteArray("comment made by Jos\xc3\xa9\nelement vertex 3") << "";
+}
+
+void TestMeshReaders::plyHeaderMustBeText()
+{
+    // OpenMesh splits header words at any whitespace and reads counts with
+    // operator>>; a word it cannot read sent it round its header loop,
+    // logging, until the fuzzer's memory limit (2 GB) stopped it.
+    QFETCH(QByteArray, elementLine);
+    QFETCH(QString, error);
+    const QString path = m_dir.filePath("header.ply");
+    writeBytes(path, "ply\nformat ascii 1.0\n" + elementLine + "\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                     "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const MeshReadResult r = readMeshFile(path);
+    if (error.isEmpty()) {
+        QVERIFY2(r.ok(), qPrintable(r.error));
+    } else {
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains(error), qPrintable(r.error));
+    }
 }
 
 void TestMeshReaders::binaryTruncated_data()
