@@ -146,53 +146,63 @@ ChunkSize faceIndexSize(const OmHeader &h, const ChunkHeader &c, std::string_vie
     return sized(at);
 }
 
-// The reader's size rules, entity by entity, with the dimensions it asserts.
+// Topology: a halfedge per vertex and per face (from format 2.0 on; vertex
+// indices before), three links per halfedge.
+ChunkSize topologySize(const OmHeader &h, const ChunkHeader &c, std::string_view rest)
+{
+    const quint64 index = 1u << c.bits;
+    switch (c.entity) {
+    case Vertex: return sized(h.vertices * index);
+    case Face: return h.version < kVersion2_0 ? faceIndexSize(h, c, rest) : sized(h.faces * index);
+    case Halfedge: return sized(h.edges * 6 * index);
+    default: return sized(skippedSize(h, c));
+    }
+}
+
+// The reader's size rules. It asserts the dimensions of the standard types
+// (positions and normals 3, texture coordinates 2, colours 3, status 1), on
+// more entities in some versions than in others; they are required on all.
+// Only the chunks isDrawnChunk() names reach the reader, so a rule for the
+// others only has to walk past what a writer puts there.
 ChunkSize dataSize(const OmHeader &h, const ChunkHeader &c, std::string_view rest)
 {
-    const quint64 count = elementCount(h, c.entity);
-    const quint64 index = 1u << c.bits;
-    if (c.type == Custom && c.entity != Sentinel)
-        return customSize(h, rest);
-    switch (c.entity) {
-    case Vertex:
-        switch (c.type) {
-        case Pos:
-        case Normal: return vectorSize(c, count);
-        case Texcoord: return fixedSize(c, 2, count, 8);
-        case Color: return fixedSize(c, 3, count, 3);
-        case Status: return fixedSize(c, 1, count, 4);
-        case Topology: return sized(count * index);
-        default: return sized(skippedSize(h, c));
-        }
-    case Face:
-        switch (c.type) {
-        case Topology: return h.version < kVersion2_0 ? faceIndexSize(h, c, rest) : sized(count * index);
-        case Normal: return vectorSize(c, count);
-        case Color: return fixedSize(c, 3, count, 3);
-        case Status: return fixedSize(c, 1, count, 4);
-        default: return sized(skippedSize(h, c));
-        }
-    case Edge:
-        return c.type == Status ? fixedSize(c, 1, count, 4) : sized(skippedSize(h, c));
-    case Halfedge:
-        if (c.type == Topology)
-            return sized(h.edges * 6 * index);
-        return c.type == Status ? fixedSize(c, 1, count, 4) : sized(skippedSize(h, c));
-    case Mesh:
-        return sized(skippedSize(h, c));
-    default:
+    if (c.entity != Vertex && c.entity != Mesh && c.entity != Face && c.entity != Edge && c.entity != Halfedge)
         return {0, QStringLiteral("a chunk for an unknown kind of element (%1)").arg(c.entity)};
+    const quint64 count = elementCount(h, c.entity);
+    switch (c.type) {
+    case Pos:
+    case Normal: return vectorSize(c, count);
+    case Texcoord: return fixedSize(c, 2, count, 8);
+    case Color: return fixedSize(c, 3, count, 3);
+    case Status: return fixedSize(c, 1, count, 4);
+    case Custom: return customSize(h, rest);
+    case Topology: return topologySize(h, c, rest);
+    default: return sized(skippedSize(h, c));
+    }
+}
+
+// The chunks PolygonSoupImporter takes from the reader: positions,
+// normals and topology. Everything else (texture coordinates, colours,
+// status, custom properties) carries nothing PhongLab draws, and the
+// reader's handling of it differs between OpenMesh versions.
+bool isDrawnChunk(const ChunkHeader &c)
+{
+    switch (c.entity) {
+    case Vertex: return c.type == Pos || c.type == Normal || c.type == Topology;
+    case Face:
+    case Halfedge: return c.type == Topology;
+    default: return false;
     }
 }
 
 // Walks the chunks after the header. Returns the error, if any; sets `end`
-// to the byte after the end marker and `kept` to the file without custom
-// property chunks when it had some.
+// to the byte after the end marker and `kept` to the file with only the
+// chunks isDrawnChunk() names, when it had others.
 QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, std::string &kept)
 {
     std::size_t at = kHeaderBytes;
-    std::string withoutCustom(bytes.substr(0, kHeaderBytes));
-    bool droppedCustom = false;
+    std::string drawn(bytes.substr(0, kHeaderBytes));
+    bool droppedAny = false;
     for (int chunk = 1;; ++chunk) {
         const std::size_t start = at;
         if (bytes.size() - at < 2)
@@ -207,9 +217,9 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
         }
         if (c.entity == Sentinel) {
             end = at;
-            withoutCustom.append(bytes.substr(start, at - start));
-            if (droppedCustom)
-                kept = std::move(withoutCustom);
+            drawn.append(bytes.substr(start, at - start));
+            if (droppedAny)
+                kept = std::move(drawn);
             return {};
         }
         const ChunkSize size = dataSize(h, c, bytes.substr(at));
@@ -219,10 +229,10 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
             return QStringLiteral("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left (truncated or corrupt)")
                 .arg(chunk).arg(start).arg(describe(c)).arg(size.bytes).arg(bytes.size() - at);
         at += std::size_t(size.bytes);
-        if (c.type == Custom)
-            droppedCustom = true;
+        if (isDrawnChunk(c))
+            drawn.append(bytes.substr(start, at - start));
         else
-            withoutCustom.append(bytes.substr(start, at - start));
+            droppedAny = true;
     }
 }
 

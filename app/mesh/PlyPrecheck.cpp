@@ -72,9 +72,12 @@ std::vector<std::string_view> words(std::string_view line)
     return out;
 }
 
-// "1.0" or "1": digits, optionally a point and more digits.
+// "1.0" or "1": digits, optionally a point and more digits, short enough
+// for a float (a version that overflows one fails operator>> just the same).
 bool isPlainVersion(std::string_view v)
 {
+    if (v.size() > 8)
+        return false;
     const auto digits = [&](std::size_t &i) {
         const std::size_t start = i;
         while (i < v.size() && v[i] >= '0' && v[i] <= '9')
@@ -164,6 +167,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             }
             h.elements.back().properties.push_back(std::move(p));
         } else if (w[0] == "end_header") {
+            if (w.size() != 1)
+                return where + QStringLiteral(": words after 'end_header'");
             if (h.format == PlyHeader::Unknown)
                 return QStringLiteral("the PLY header has no 'format' line");
             h.bodyOffset = qint64(pos);

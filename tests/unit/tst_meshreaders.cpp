@@ -446,6 +446,7 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion_data()
     QTest::newRow("not a number") << QByteArray("format binary_big_endian /.0");
     QTest::newRow("a word too many") << QByteArray("format ascii 1.0 x");
     QTest::newRow("point without digits") << QByteArray("format ascii 1.");
+    QTest::newRow("a version past a float (fuzz find)") << QByteArray("format ascii 6666666666666666666666661.0");
 }
 
 void TestMeshReaders::plyFormatLineMustCarryAVersion()
@@ -480,6 +481,8 @@ void TestMeshReaders::plyHeaderMustBeText_data()
     QTest::newRow("form feed between words") << QByteArray("element vertex\x0c" "3") << "byte 0x0c at column 15";
     QTest::newRow("a second format line")
         << QByteArray("format binary_little_endian 1.0\nelement vertex 3") << "PLY header line 3: a second 'format' line";
+    QTest::newRow("words after end_header")
+        << QByteArray("element vertex 3\nend_header float nz") << "PLY header line 4: words after 'end_header'";
     QTest::newRow("UTF-8 in a comment reads") << QByteArray("comment made by Jos\xc3\xa9\nelement vertex 3") << "";
 }
 
