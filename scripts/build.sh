@@ -19,8 +19,8 @@ if [ "${1:-}" = "--sanitize" ]; then
   shift
   targets=()
   for t in "$@"; do targets+=(--target "$t"); done
-  # -O1 and line tables only: what libFuzzer recommends, readable stack
-  # traces, and a build about a third faster than -O2 -g (CI builds it).
+  # -O1 and line tables only: what libFuzzer recommends, with readable
+  # stack traces and no full debug info to build (CI builds this too).
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
     -DCMAKE_CXX_COMPILER=clang++-14 -DPHONGLAB_FUZZ=ON -DPHONGLAB_SANITIZE=address,undefined \
