@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace phonglab {
 
@@ -16,24 +17,34 @@ namespace {
 // the rest of the equation is shared so the two cannot drift apart.
 enum class Specular { ReflectedRay, HalfVector };
 
+// The equation, exact, or with one pointwise mistake (ShaderMistake.h) made
+// where a shader would make it: one sequence, so the mistaken images differ
+// from the exact one by that mistake alone.
 IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model)
+                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model,
+                               std::optional<ShaderMistake> mistake = std::nullopt)
 {
-    const glm::dvec3 N = glm::normalize(normal);
-    const glm::dvec3 V = glm::normalize(-position); // the eye is at the origin
+    const auto made = [&](ShaderMistake m) { return mistake == m; };
+    const glm::dvec3 N = made(ShaderMistake::Unnormalized) ? normal : glm::normalize(normal);
+    // The eye is at the origin: V = normalize(-P).
+    const glm::dvec3 V = glm::normalize(made(ShaderMistake::ViewVector) ? position : -position);
 
-    glm::dvec3 I = ambient * material.ka;
+    glm::dvec3 I = made(ShaderMistake::Ambient) ? glm::dvec3(0.0) : ambient * material.ka;
     glm::dvec3 S(0.0); // the specular part alone, summed beside I (I itself is unchanged)
     for (const CameraSpaceLight &light : lights) {
         const glm::dvec3 toLight = light.position - position;
         const double d = glm::length(toLight);
         const glm::dvec3 L = toLight / d;
         const double NdotL = glm::dot(N, L);
-        if (NdotL <= 0.0)
-            continue; // light behind the surface: no diffuse, no specular
+        // A light behind the surface gives no diffuse and no specular light.
+        const bool behind = NdotL <= 0.0;
+        if (behind && !made(ShaderMistake::NegativeLight) && !made(ShaderMistake::BackfaceSpecular))
+            continue;
         double specularFactor = 0.0;
-        if (model == Specular::ReflectedRay) {
-            const glm::dvec3 R = glm::reflect(-L, N);
+        if (behind && made(ShaderMistake::NegativeLight)) {
+            // max(0, N·L) missing: the diffuse term goes negative; still no highlight.
+        } else if (model == Specular::ReflectedRay) {
+            const glm::dvec3 R = made(ShaderMistake::ReflectIncident) ? glm::reflect(L, N) : glm::reflect(-L, N);
             specularFactor = std::pow(std::max(0.0, glm::dot(R, V)), material.shininess);
         } else {
             // L + V vanishes only for a light exactly behind the point as
@@ -45,9 +56,10 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
                 specularFactor = std::pow(NdotH, kBlinnExponentFactor * material.shininess);
             }
         }
-        const glm::dvec3 diffuse = light.diffuse * material.kd * NdotL;
+        const double diffuseFactor = behind && !made(ShaderMistake::NegativeLight) ? 0.0 : NdotL;
+        const glm::dvec3 diffuse = light.diffuse * material.kd * diffuseFactor;
         const glm::dvec3 specular = light.specular * material.ks * specularFactor;
-        const double attenuation = attenuationFactor(light.attenuation, d);
+        const double attenuation = made(ShaderMistake::Attenuation) ? 1.0 : attenuationFactor(light.attenuation, d);
         I += attenuation * (diffuse + specular);
         S += attenuation * specular;
     }
@@ -80,6 +92,13 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
                                   const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::HalfVector);
+}
+
+IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                                    const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+                                    ShaderMistake mistake)
+{
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay, mistake);
 }
 
 glm::dvec3 normalViewColor(const glm::dvec3 &normal)

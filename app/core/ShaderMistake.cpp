@@ -1,0 +1,103 @@
+#include "ShaderMistake.h"
+
+#include "core/EnumNames.h"
+
+#include <array>
+#include <utility>
+
+namespace phonglab {
+
+namespace {
+constexpr std::array kKeys = {
+    std::pair{ShaderMistake::NormalMatrix, "normal-matrix"},
+    std::pair{ShaderMistake::Unnormalized, "unnormalized"},
+    std::pair{ShaderMistake::LightSpace, "light-space"},
+    std::pair{ShaderMistake::HomogeneousW, "homogeneous-w"},
+    std::pair{ShaderMistake::ReflectIncident, "reflect-incident"},
+    std::pair{ShaderMistake::ViewVector, "view-vector"},
+    std::pair{ShaderMistake::Attenuation, "attenuation"},
+    std::pair{ShaderMistake::NegativeLight, "negative-light"},
+    std::pair{ShaderMistake::BackfaceSpecular, "backface-specular"},
+    std::pair{ShaderMistake::Ambient, "ambient"},
+    std::pair{ShaderMistake::Gouraud, "gouraud"},
+};
+
+constexpr std::array kRules = {
+    std::pair{ShaderMistake::NormalMatrix,
+              "the normal N: it must be transformed by the inverse transpose of the model-view matrix, "
+              "not by the model-view or model matrix (which bends it under non-uniform scale)"},
+    std::pair{ShaderMistake::Unnormalized,
+              "the normal N: it must be normalised in the fragment shader, after interpolation has "
+              "shortened it (and L and V must be unit length too)"},
+    std::pair{ShaderMistake::LightSpace,
+              "the light vector L: the light is placed in world coordinates and must be moved into "
+              "camera coordinates by the view matrix before L = light - P"},
+    std::pair{ShaderMistake::HomogeneousW,
+              "the position P: a point is transformed with w = 1 (a direction with w = 0); with w = 0 "
+              "the translation is lost"},
+    std::pair{ShaderMistake::ReflectIncident,
+              "the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which "
+              "points from the light to the surface"},
+    std::pair{ShaderMistake::ViewVector,
+              "the specular term: V must point from the surface to the eye, V = normalize(-P) in camera "
+              "coordinates"},
+    std::pair{ShaderMistake::Attenuation,
+              "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's diffuse "
+              "and specular parts, with d the distance from the surface to the light"},
+    std::pair{ShaderMistake::NegativeLight,
+              "the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds "
+              "nothing, it does not darken"},
+    std::pair{ShaderMistake::BackfaceSpecular,
+              "the specular term: where N·L <= 0 the light is behind the surface and there is no "
+              "highlight either"},
+    std::pair{ShaderMistake::Ambient, "the ambient term Ia·ka must be added once, outside the sum over the lights"},
+    std::pair{ShaderMistake::Gouraud,
+              "where the equation is evaluated: per fragment, with the interpolated normal; evaluated per "
+              "vertex and interpolated, highlights smear and vanish between vertices"},
+};
+} // namespace
+
+QString shaderMistakeKey(ShaderMistake mistake)
+{
+    return enumName(kKeys, mistake);
+}
+
+std::optional<ShaderMistake> shaderMistakeFromKey(const QString &key)
+{
+    return enumFromName(kKeys, key);
+}
+
+QStringList shaderMistakeKeys()
+{
+    return enumNames(kKeys);
+}
+
+QString shaderMistakeRule(ShaderMistake mistake)
+{
+    for (const auto &[m, rule] : kRules) // UTF-8 (·, ²), unlike the keys
+        if (m == mistake)
+            return QString::fromUtf8(rule);
+    return {};
+}
+
+bool isPointwiseMistake(ShaderMistake mistake)
+{
+    switch (mistake) {
+    case ShaderMistake::Unnormalized:
+    case ShaderMistake::ReflectIncident:
+    case ShaderMistake::ViewVector:
+    case ShaderMistake::Attenuation:
+    case ShaderMistake::NegativeLight:
+    case ShaderMistake::BackfaceSpecular:
+    case ShaderMistake::Ambient:
+        return true;
+    case ShaderMistake::NormalMatrix:
+    case ShaderMistake::LightSpace:
+    case ShaderMistake::HomogeneousW:
+    case ShaderMistake::Gouraud:
+        return false;
+    }
+    return false;
+}
+
+} // namespace phonglab
