@@ -198,7 +198,7 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
 }
 
 ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights,
-                      ReferenceShading shading)
+                      const ReferenceShader &shader)
 {
     const PreparedObject &object = *hit.object;
     const glm::dvec3 p = hit.objectPoint;
@@ -208,9 +208,8 @@ ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const Camera
     const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
         : object.surface == Surface::Torus                             ? torusNormal(p, kTorusMajorRadius)
                                                                        : boxNormal(p);
-    const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(p, 1.0));
-    const glm::dvec3 normal = object.normalMatrix * objectNormal;
-    return shadeReferenceSample(position, normal, *object.material, scene.ambient, lights, shading);
+    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix}, *object.material, scene.ambient,
+                             lights, shader);
 }
 
 } // namespace
@@ -355,7 +354,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
     return raycastScene(scene, width, height, ReferenceShading::Phong, error, standIns);
 }
 
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, ReferenceShading shading,
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
                                            QString *error, const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0) {
@@ -368,7 +367,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
     if (!objects)
         return std::nullopt;
 
-    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
 
     ReferenceImage image(width, height);
     for (int y = 0; y < height; ++y) {
@@ -380,7 +379,7 @@ std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int he
             const std::size_t i = image.index(x, y);
             image.coverage[i] = 1;
             image.depth[i] = hit.t;
-            const ReferenceSample sample = shade(hit, scene, lights, shading);
+            const ReferenceSample sample = shade(hit, scene, lights, shader);
             image.color[i] = sample.color;
             image.specular[i] = sample.specular;
         }

@@ -2,6 +2,7 @@
 #include "Camera.h"
 #include "ReferenceImage.h"
 #include "Scene.h"
+#include "ShaderMistake.h"
 
 #include <QHash>
 #include <QString>
@@ -40,8 +41,25 @@ enum class ReferenceShading {
 // they approximate (Phong), so that their error can be measured against it.
 ReferenceShading idealShadingFor(ShadingMethod method);
 
-// As above, shaded with `shading` instead of Phong.
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, ReferenceShading shading,
+// What the reference shades a hit with: a shading, exact, or Phong with one
+// of the classic mistakes made (ShaderMistake.h), to tell which one explains
+// a wrong render. Every mistake but `gouraud` is made where a shader makes
+// it: the normal's or the position's transform, the lights' coordinates, the
+// equation at the point. `gouraud` needs the mesh's vertices, which a ray
+// does not see: it shades exactly.
+struct ReferenceShader {
+    ReferenceShading shading = ReferenceShading::Phong;
+    std::optional<ShaderMistake> mistake; // with Phong only
+
+    ReferenceShader(ReferenceShading s = ReferenceShading::Phong, std::optional<ShaderMistake> m = std::nullopt)
+        : shading(s), mistake(m)
+    {
+    }
+    bool makes(ShaderMistake m) const { return mistake == m; }
+};
+
+// As above, shaded with `shader` instead of exact Phong.
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
                                            QString *error = nullptr,
                                            const QHash<QString, QString> &standIns = {});
 

@@ -200,7 +200,7 @@ double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3
 // Ray-casts and shades row y into `image` (rows are disjoint, so any number
 // of threads can fill different rows at once).
 void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
-               const std::vector<CameraSpaceLight> &lights, ReferenceShading shading, ReferenceImage &image, int y)
+               const std::vector<CameraSpaceLight> &lights, const ReferenceShader &shader, ReferenceImage &image, int y)
 {
     for (int x = 0; x < image.width; ++x) {
         const Ray ray = cameraRay(scene.camera, x, y, image.width, image.height);
@@ -208,9 +208,9 @@ void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
         if (!hit.object)
             continue;
         const PreparedObject &object = *hit.object;
-        const glm::dvec3 position = glm::dvec3(object.modelView * glm::dvec4(hit.objectPoint, 1.0));
-        const ReferenceSample sample = shadeReferenceSample(position, object.normalMatrix * hit.objectNormal,
-                                                            *object.material, scene.ambient, lights, shading);
+        const ReferenceSample sample =
+            shadeReferenceHit({hit.objectPoint, hit.objectNormal, object.modelView, object.normalMatrix},
+                              *object.material, scene.ambient, lights, shader);
         const std::size_t i = image.index(x, y);
         image.coverage[i] = 1;
         image.depth[i] = hit.t;
@@ -223,8 +223,8 @@ void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
 
 std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
                                                  const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, ReferenceShading shading, QString *error,
-                                                 const std::function<bool(double)> &progress)
+                                                 int width, int height, const ReferenceShader &shader,
+                                                 QString *error, const std::function<bool(double)> &progress)
 {
     if (width <= 0 || height <= 0) {
         fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
@@ -233,7 +233,7 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
     std::vector<PreparedObject> objects;
     if (!prepareObjects(scene, objectMeshes, double(width) / double(height), objects, error, progress))
         return std::nullopt;
-    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
 
     ReferenceImage image(width, height);
     // Rows are handed out one at a time from a shared counter (rows differ
@@ -249,7 +249,7 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
             const int y = nextRow.fetch_add(1, std::memory_order_relaxed);
             if (y >= height)
                 return;
-            renderRow(scene, objects, lights, shading, image, y);
+            renderRow(scene, objects, lights, shader, image, y);
             const int done = rowsDone.fetch_add(1, std::memory_order_relaxed) + 1;
             if (reports && progress && !progress(0.1 + 0.9 * double(done) / double(height)))
                 cancelled = true;

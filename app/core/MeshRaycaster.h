@@ -50,7 +50,7 @@ namespace phonglab {
 // result is nullopt and *error is "cancelled".
 std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
                                                  const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, ReferenceShading shading,
+                                                 int width, int height, const ReferenceShader &shader,
                                                  QString *error = nullptr,
                                                  const std::function<bool(double)> &progress = {});
 

@@ -30,8 +30,26 @@ ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec
                                      const Material &material, const glm::dvec3 &ambient,
                                      std::span<const CameraSpaceLight> lights, ReferenceShading shading);
 
+// A ray's hit on an object before the vertex shader's transforms: the point
+// and normal in object space, and the object's matrices.
+struct ObjectSpaceHit {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0, 0.0, 1.0};
+    const glm::dmat4 &modelView;
+    const glm::dmat3 &normalMatrix; // inverse transpose of modelView's upper 3×3
+};
+
+// Moves a hit into camera space as the vertex shader does (P = MV·(p, 1),
+// N = normal matrix · n) and shades it there; with `shader.mistake` the
+// transforms and the equation are the mistaken ones (normal-matrix: N =
+// MV·(n, 0); homogeneous-w: P = MV·(p, 0)). The one function both
+// ray-casters shade with.
+ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &material, const glm::dvec3 &ambient,
+                                  std::span<const CameraSpaceLight> lights, const ReferenceShader &shader);
+
 // The scene's enabled lights in camera space (a disabled light lights
-// nothing, as on the GPU).
-std::vector<CameraSpaceLight> enabledCameraSpaceLights(const Scene &scene);
+// nothing, as on the GPU); with the light-space mistake, their world
+// positions taken as camera coordinates.
+std::vector<CameraSpaceLight> enabledCameraSpaceLights(const Scene &scene, const ReferenceShader &shader = {});
 
 } // namespace phonglab
