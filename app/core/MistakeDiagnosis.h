@@ -1,0 +1,50 @@
+#pragma once
+#include "ReferenceImage.h"
+#include "ShaderMistake.h"
+
+#include <QImage>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace phonglab {
+
+// Which classic mistake explains a wrong render. For each mistake the
+// reference is rendered with that mistake made (ReferenceShader); a mistake
+// explains the render as far as the render agrees with that image where
+// either of them differs from the exact one.
+
+struct MistakeFinding {
+    ShaderMistake key = ShaderMistake::NormalMatrix;
+    // Mistakes that give the same image in this scene (reflect-incident and
+    // view-vector always do): named beside `key` rather than guessed between.
+    std::vector<ShaderMistake> also;
+    double confidence = 0.0; // 0..1, the fraction of the difference it explains
+};
+
+struct MistakeDiagnosis {
+    qint64 differingPixels = 0;              // compared pixels off the exact image by more than the tolerance
+    std::vector<MistakeFinding> findings;    // best first; those explaining at least kMinListedConfidence
+    std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
+    // Differs, and no mistake explains at least kExplainedConfidence of it
+    // (`unknown`: the heatmap is the answer).
+    bool unexplained() const;
+};
+
+inline constexpr double kExplainedConfidence = 0.5;
+inline constexpr double kMinListedConfidence = 0.1;
+
+// `yours` is the render (RGB, the reference's size); `exact` the reference;
+// `mistaken` the reference with each mistake made; `compared` the pixels to
+// judge (1: compared; the silhouette band left out), one per pixel. A pixel
+// matches another within `toleranceSteps` 8-bit steps in every channel.
+// Where two mistakes give the same image, the one earlier in
+// ShaderMistake's order is `key`. A render of another size than the
+// reference differs everywhere and has no finding.
+MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exact,
+                                  const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
+                                  const std::vector<std::uint8_t> &compared, int toleranceSteps,
+                                  const glm::dvec3 &background);
+
+} // namespace phonglab
