@@ -3,6 +3,7 @@
 // mistakes that give the same image), with full confidence; the exact
 // image has no finding; noise is unexplained; a mistake the scene cannot
 // show is listed as undetectable.
+#include "MistakeScenes.h"
 #include "core/AnalyticRaycaster.h"
 #include "core/MistakeDiagnosis.h"
 
@@ -12,35 +13,12 @@
 #include <algorithm>
 
 using namespace phonglab;
+using phonglab::test::mistakeScene;
 
 namespace {
 
 constexpr int kSize = 64;
 const glm::dvec3 kBackground(0.1);
-
-// An ellipsoid off the origin, lit from the front (with attenuation) and
-// from behind: every mistake but gouraud shows here.
-Scene scene(const glm::dvec3 &scale = {1.2, 0.7, 0.9})
-{
-    SceneObject o;
-    o.mesh = QStringLiteral("builtin:sphere");
-    o.transform.scale = scale;
-    o.transform.translate = {0.2, -0.1, 0.0};
-    o.material.ka = {0.2, 0.2, 0.2};
-    o.material.kd = {0.6, 0.5, 0.4};
-    o.material.ks = {0.5, 0.5, 0.5};
-    o.material.shininess = 20.0;
-    Scene s;
-    s.objects.push_back(o);
-    PointLight front;
-    front.position = {3.0, 4.0, 5.0};
-    front.attenuation = {1.0, 0.05, 0.0};
-    s.lights.push_back(front);
-    PointLight back;
-    back.position = {-1.0, 1.5, -6.0};
-    s.lights.push_back(back);
-    return s;
-}
 
 ReferenceImage render(const Scene &s, const ReferenceShader &shader)
 {
@@ -77,7 +55,7 @@ class TestMistakeDiagnosis : public QObject
     Q_OBJECT
 
 private slots:
-    void initTestCase() { m_setup = setup(scene()); }
+    void initTestCase() { m_setup = setup(mistakeScene()); }
 
     void exactRenderHasNoFinding()
     {
@@ -148,7 +126,7 @@ private slots:
 
     void uniformScaleHidesTheNormalMatrix()
     {
-        const Setup uniform = setup(scene(glm::dvec3(0.8)));
+        const Setup uniform = setup(mistakeScene(glm::dvec3(0.8)));
         const MistakeDiagnosis d = diagnose(uniform, uniform.exact.toImage(kBackground));
         QVERIFY(std::find(d.undetectable.begin(), d.undetectable.end(), ShaderMistake::NormalMatrix)
                 != d.undetectable.end());

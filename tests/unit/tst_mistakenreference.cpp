@@ -1,6 +1,7 @@
 // The reference image with a classic shader mistake made: each mistake
 // changes the image where it should and nowhere else, and one that cannot
 // show in a scene (normal-matrix under uniform scale) changes nothing there.
+#include "MistakeScenes.h"
 #include "core/AnalyticRaycaster.h"
 #include "core/ShaderMistake.h"
 
@@ -9,36 +10,9 @@
 #include <cmath>
 
 using namespace phonglab;
+using phonglab::test::mistakeScene;
 
 namespace {
-
-// A sphere scaled non-uniformly and moved off the origin, seen from the
-// default camera (on +Z at distance 4), lit from the front with attenuation
-// and from behind.
-Scene ellipsoidScene(const glm::dvec3 &scale = {1.2, 0.7, 0.9})
-{
-    SceneObject o;
-    o.mesh = QStringLiteral("builtin:sphere");
-    o.transform.scale = scale;
-    o.transform.translate = {0.2, -0.1, 0.0};
-    o.material.ka = {0.2, 0.2, 0.2};
-    o.material.kd = {0.6, 0.5, 0.4};
-    o.material.ks = {0.5, 0.5, 0.5};
-    o.material.shininess = 20.0;
-    Scene scene;
-    scene.objects.push_back(o);
-    PointLight light;
-    light.position = {3.0, 4.0, 5.0};
-    light.attenuation = {1.0, 0.05, 0.0};
-    scene.lights.push_back(light);
-    // Behind the object, almost opposite the eye: near the rim the surface
-    // faces away from it (N·L < 0) while R·V > 0, where backface-specular
-    // shows.
-    PointLight back;
-    back.position = {-1.0, 1.5, -6.0};
-    scene.lights.push_back(back);
-    return scene;
-}
 
 constexpr int kSize = 64;
 
@@ -81,7 +55,7 @@ private slots:
     void everyMistakeButGouraudShowsOnTheEllipsoid()
     {
         QFETCH(QString, key);
-        const Scene scene = ellipsoidScene();
+        const Scene scene = mistakeScene();
         const ReferenceImage exact = render(scene, ReferenceShading::Phong);
         const ReferenceImage mistaken = render(scene, {ReferenceShading::Phong, shaderMistakeFromKey(key)});
         QVERIFY(!exact.isNull() && !mistaken.isNull());
@@ -97,12 +71,12 @@ private slots:
     {
         // MV·n and its inverse transpose differ by a factor of s² along
         // every direction under a uniform scale s: the same unit normal.
-        const Scene uniform = ellipsoidScene(glm::dvec3(0.8));
+        const Scene uniform = mistakeScene(glm::dvec3(0.8));
         const ReferenceImage exact = render(uniform, ReferenceShading::Phong);
         const ReferenceImage mistaken = render(uniform, {ReferenceShading::Phong, ShaderMistake::NormalMatrix});
         QCOMPARE(differingPixels(exact, mistaken), 0);
         // The same shader mistake is plain under a non-uniform scale.
-        const Scene stretched = ellipsoidScene();
+        const Scene stretched = mistakeScene();
         QVERIFY(differingPixels(render(stretched, ReferenceShading::Phong),
                                 render(stretched, {ReferenceShading::Phong, ShaderMistake::NormalMatrix}))
                 > kSize);
@@ -112,7 +86,7 @@ private slots:
     {
         // Per-vertex evaluation needs the mesh's vertices, which the ray
         // caster does not have.
-        const Scene scene = ellipsoidScene();
+        const Scene scene = mistakeScene();
         QCOMPARE(differingPixels(render(scene, ReferenceShading::Phong),
                                  render(scene, {ReferenceShading::Phong, ShaderMistake::Gouraud})),
                  0);
@@ -120,7 +94,7 @@ private slots:
 
     void exactShaderIsTheDefault()
     {
-        const Scene scene = ellipsoidScene();
+        const Scene scene = mistakeScene();
         QString error;
         const std::optional<ReferenceImage> byDefault = raycastScene(scene, kSize, kSize, &error);
         QVERIFY2(byDefault, qPrintable(error));
