@@ -1,5 +1,6 @@
 #include "MeshFilePrecheck.h"
 
+#include "ByteOrder.h"
 #include "MeshTextTokens.h"
 #include "OffPrecheck.h"
 #include "OmPrecheck.h"
@@ -19,14 +20,6 @@ namespace {
 using meshtext::quoted;
 
 constexpr qint64 kSampleBytes = 64 * 1024;
-
-std::uint32_t littleEndian32(std::string_view bytes, std::size_t at)
-{
-    std::uint32_t v = 0;
-    for (int i = 3; i >= 0; --i)
-        v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
-    return v;
-}
 
 bool startsWith(std::string_view s, std::string_view prefix)
 {
@@ -215,7 +208,7 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
     // Plenty of exporters start that header with "solid", so a size that
     // matches the count exactly decides for binary before the keyword does.
     const qint64 size = check.fileSize;
-    const qint64 expected = size >= 84 ? 84 + 50 * qint64(littleEndian32(head, 80)) : -1;
+    const qint64 expected = size >= 84 ? 84 + 50 * qint64(littleEndian(head, 80)) : -1;
     if (size != expected && startsWithSolid(head)) {
         std::string text;
         if (readWholeFile(path, text, check.error))

@@ -1,5 +1,6 @@
 #include "OffPrecheck.h"
 
+#include "ByteOrder.h"
 #include "MeshTextTokens.h"
 
 #include <vector>
@@ -45,14 +46,6 @@ OffKeyword parseKeyword(std::string_view token)
     return k;
 }
 
-std::uint32_t littleEndian32(std::string_view bytes, std::size_t at)
-{
-    std::uint32_t v = 0;
-    for (int i = 3; i >= 0; --i)
-        v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
-    return v;
-}
-
 // OpenMesh reads a binary face as a corner count and that many indices,
 // growing its index list one read at a time, past the end of the file if the
 // count says so: a count of 10^9 asks for gigabytes. Walk the faces first.
@@ -61,7 +54,7 @@ QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
     for (quint64 f = 0; f < faces; ++f) {
         if (text.size() - at < 4)
             return QStringLiteral("the binary OFF file ends after %1 of %2 faces (truncated?)").arg(f).arg(faces);
-        const quint64 corners = littleEndian32(text, at);
+        const quint64 corners = littleEndian(text, at);
         at += 4;
         if (corners > (text.size() - at) / 4)
             return QStringLiteral("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
@@ -90,8 +83,8 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
         return;
     }
     check.binary = true;
-    check.declaredVertices = littleEndian32(text, body);
-    check.declaredFaces = littleEndian32(text, body + 4);
+    check.declaredVertices = littleEndian(text, body);
+    check.declaredFaces = littleEndian(text, body + 4);
     const quint64 vertexBytes = check.declaredVertices * (k.normals ? 24 : 12);
     const quint64 needed = body + 12 + vertexBytes + check.declaredFaces * 16;
     if (needed > text.size())

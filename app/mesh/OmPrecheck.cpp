@@ -1,5 +1,7 @@
 #include "OmPrecheck.h"
 
+#include "ByteOrder.h"
+
 #include <cstdint>
 #include <string_view>
 
@@ -32,14 +34,6 @@ struct ChunkHeader {
     unsigned dims = 1;
     unsigned bits = 0;
 };
-
-std::uint32_t littleEndian(std::string_view bytes, std::size_t at, int size)
-{
-    std::uint32_t v = 0;
-    for (int i = size - 1; i >= 0; --i)
-        v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
-    return v;
-}
 
 ChunkHeader decodeChunkHeader(std::uint32_t v)
 {
