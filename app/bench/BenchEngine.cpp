@@ -47,27 +47,6 @@ std::vector<std::uint8_t> highlightMask(const ReferenceImage &reference, const s
     return mask;
 }
 
-// "Away from silhouettes": not within bandPx of an occluding contour inside
-// the image (one part of a mesh in front of another) nor of a pixel the GPU
-// may legitimately cover either way at its sub-pixel precision. The outline
-// band itself is compareOutsideBand()'s.
-std::vector<std::uint8_t> awayFromContours(const ReferenceImage &reference, const Scene &scene,
-                                           const std::vector<std::shared_ptr<const MeshData>> &meshes,
-                                           int bandPx, QString *error)
-{
-    std::vector<std::uint8_t> edges = occludingContourPixels(reference);
-    const std::vector<std::uint8_t> ambiguous = ambiguousReferencePixels(
-        scene, meshes, reference.width, reference.height, kDefaultSubpixelBits, error);
-    if (ambiguous.size() != edges.size())
-        return {};
-    for (std::size_t i = 0; i < edges.size(); ++i)
-        edges[i] = edges[i] || ambiguous[i];
-    std::vector<std::uint8_t> compared = dilatePixels(edges, reference.width, reference.height, bandPx);
-    for (auto &c : compared)
-        c = !c;
-    return compared;
-}
-
 Scene withLights(Scene scene, int count)
 {
     scene.lights = lightsForCount(scene, count);
@@ -182,7 +161,7 @@ bool BenchEngine::runScene(const BenchOptions &options, const QString &path, Sce
             return false;
         }
         if (state.compared.empty()) {
-            state.compared = awayFromContours(*reference, full, state.fullMeshes, options.bandPx, &why);
+            state.compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx, &why);
             if (state.compared.empty()) {
                 *error = QStringLiteral("%1: no silhouette mask: %2").arg(path, why);
                 return false;

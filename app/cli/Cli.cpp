@@ -1,6 +1,7 @@
 #include "Cli.h"
 
 #include "BenchCommand.h"
+#include "CheckCommand.h"
 #include "CliCommon.h"
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
@@ -20,6 +21,7 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a scene offscreen into a PNG", runRender},
+    {"check", "judge a shader against the exact image and name the mistake that explains a wrong one", runCheck},
     {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
     {"bench", "measure speed against accuracy of every shading method and detail", runBench},
 };

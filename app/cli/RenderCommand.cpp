@@ -1,15 +1,14 @@
 #include "RenderCommand.h"
 
 #include "CliCommon.h"
+#include "SceneStages.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "core/ShadingMethod.h"
 #include "render/OffscreenRenderer.h"
-#include "render/ShaderSource.h"
 
 #include <QCommandLineParser>
 #include <QGuiApplication>
-#include <QSaveFile>
 #include <QSurfaceFormat>
 
 #include <optional>
@@ -101,52 +100,12 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     return args;
 }
 
-bool writePng(const QImage &image, const QString &path, QString *error)
-{
-    // QSaveFile: the PNG appears only once it is complete.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    if (!image.save(&file, "PNG")) {
-        file.cancelWriting();
-        *error = QStringLiteral("%1: PNG encoding failed").arg(path);
-        return false;
-    }
-    if (!file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
-}
-
-// Each stage, first found: --vertex/--fragment, the scene's "shaders" (unless
-// --shading chose a method), the shipped file of the shading method.
-QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene &scene, bool methodChosen,
-                  const QString &shipped)
-{
-    if (!fromArgs.isEmpty())
-        return fromArgs;
-    if (!fromScene.isEmpty() && !methodChosen)
-        return scene.resolveShaderPath(fromScene);
-    return shipped;
-}
-
 CompileResult buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene, QString *error)
 {
-    const bool methodChosen = args.shading.has_value();
-    const ShadingMethod shading = args.shading.value_or(scene.shading);
-    const QString name = shadingName(shading);
-    const QString vsPath = stagePath(args.vertexPath, scene.vertexShader, scene, methodChosen,
-                                     shaderPath(name + QStringLiteral(".vert")));
-    const QString fsPath = stagePath(args.fragmentPath, scene.fragmentShader, scene, methodChosen,
-                                     shaderPath(name + QStringLiteral(".frag")));
-    const ShaderSource vs = ShaderSource::fromFile(vsPath, error);
-    const ShaderSource fs = ShaderSource::fromFile(fsPath, error);
-    if (!error->isEmpty())
-        return {};
-    return renderer.setProgramSources(vs, fs);
+    Scene chosen = scene;
+    chosen.shading = args.shading.value_or(scene.shading);
+    return buildStages(renderer, chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()),
+                       error);
 }
 
 int render(const RenderArgs &args, int argc, char **argv)

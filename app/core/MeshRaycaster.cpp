@@ -3,6 +3,7 @@
 #include "MeshBvh.h"
 #include "ObjectMatrices.h"
 #include "ReferenceSample.h"
+#include "SceneHits.h"
 #include "mesh/BuiltinMeshes.h"
 
 #include <algorithm>
@@ -22,6 +23,7 @@ enum class Surface { Mesh, Sphere, Torus, Box };
 // Everything one object needs per ray, computed once per image.
 struct PreparedObject {
     Surface surface = Surface::Mesh;
+    int index = 0;                        // in Scene::objects
     const MeshData *mesh = nullptr;       // Surface::Mesh: its vertex normals
     std::shared_ptr<const MeshBvh> bvh;   // Surface::Mesh: its triangles
     glm::dmat4 modelView{1.0};
@@ -91,6 +93,7 @@ bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const 
         if (!std::isfinite(det) || std::abs(det) < 1e-300)
             continue;
         PreparedObject p;
+        p.index = int(i);
         if (const MeshData *mesh = objectMeshes[i].get()) {
             std::shared_ptr<const MeshBvh> &bvh = bvhs[mesh];
             if (!bvh) {
@@ -121,6 +124,8 @@ struct Hit {
     const PreparedObject *object = nullptr;
     glm::dvec3 objectPoint{0.0};
     glm::dvec3 objectNormal{0.0}; // not normalised: the normal matrix comes first
+    std::int32_t triangle = -1;
+    glm::dvec3 barycentric{0.0};
 };
 
 // The interpolated vertex normal at a mesh hit, in object space.
@@ -143,11 +148,12 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
         const double tMax = std::min(farPlane, best.t);
         std::optional<double> t;
         glm::dvec3 normal(0.0);
+        std::optional<TriangleHit> triangleHit;
         switch (object.surface) {
         case Surface::Mesh:
-            if (const std::optional<TriangleHit> hit = object.bvh->closestHit(ray, nearPlane, tMax)) {
-                t = hit->t;
-                normal = interpolatedNormal(*object.mesh, *hit);
+            if ((triangleHit = object.bvh->closestHit(ray, nearPlane, tMax))) {
+                t = triangleHit->t;
+                normal = interpolatedNormal(*object.mesh, *triangleHit);
             }
             break;
         case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
@@ -161,6 +167,8 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
         best.t = *t;
         best.object = &object;
         best.objectPoint = ray.at(*t);
+        best.triangle = triangleHit ? std::int32_t(triangleHit->triangle) : -1;
+        best.barycentric = triangleHit ? triangleHit->barycentric : glm::dvec3(0.0);
         switch (object.surface) {
         case Surface::Mesh: best.objectNormal = normal; break;
         case Surface::Sphere: best.objectNormal = best.objectPoint; break;
@@ -197,45 +205,30 @@ double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3
     return best;
 }
 
-// Ray-casts and shades row y into `image` (rows are disjoint, so any number
-// of threads can fill different rows at once).
-void renderRow(const Scene &scene, const std::vector<PreparedObject> &objects,
-               const std::vector<CameraSpaceLight> &lights, const ReferenceShader &shader, ReferenceImage &image, int y)
+// Ray-casts row y into `hits` (rows are disjoint, so any number of threads
+// can fill different rows at once).
+void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, SceneHits &hits, int y)
 {
-    for (int x = 0; x < image.width; ++x) {
-        const Ray ray = cameraRay(scene.camera, x, y, image.width, image.height);
+    for (int x = 0; x < hits.width; ++x) {
+        const Ray ray = cameraRay(scene.camera, x, y, hits.width, hits.height);
         const Hit hit = nearestHit(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
         if (!hit.object)
             continue;
-        const PreparedObject &object = *hit.object;
-        const ReferenceSample sample =
-            shadeReferenceHit({hit.objectPoint, hit.objectNormal, object.modelView, object.normalMatrix},
-                              *object.material, scene.ambient, lights, shader);
-        const std::size_t i = image.index(x, y);
-        image.coverage[i] = 1;
-        image.depth[i] = hit.t;
-        image.color[i] = sample.color;
-        image.specular[i] = sample.specular;
+        ReferenceHit &out = hits.hits[std::size_t(y) * std::size_t(hits.width) + std::size_t(x)];
+        out.object = hit.object->index;
+        out.triangle = hit.triangle;
+        out.depth = hit.t;
+        out.point = hit.objectPoint;
+        out.normal = hit.objectNormal;
+        out.barycentric = hit.barycentric;
     }
 }
 
 } // namespace
 
-std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
-                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, const ReferenceShader &shader,
-                                                 QString *error, const std::function<bool(double)> &progress)
+bool forEachRowInParallel(int height, const std::function<void(int)> &rowFunction,
+                          const std::function<bool(double)> &progress)
 {
-    if (width <= 0 || height <= 0) {
-        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
-        return std::nullopt;
-    }
-    std::vector<PreparedObject> objects;
-    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), objects, error, progress))
-        return std::nullopt;
-    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
-
-    ReferenceImage image(width, height);
     // Rows are handed out one at a time from a shared counter (rows differ
     // a lot in cost: empty sky against dense foliage). The calling thread
     // works too and is the only one that calls progress().
@@ -249,9 +242,9 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
             const int y = nextRow.fetch_add(1, std::memory_order_relaxed);
             if (y >= height)
                 return;
-            renderRow(scene, objects, lights, shader, image, y);
+            rowFunction(y);
             const int done = rowsDone.fetch_add(1, std::memory_order_relaxed) + 1;
-            if (reports && progress && !progress(0.1 + 0.9 * double(done) / double(height)))
+            if (reports && progress && !progress(double(done) / double(height)))
                 cancelled = true;
         }
     };
@@ -267,11 +260,52 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
     work(true);
     for (std::thread &helper : helpers)
         helper.join();
-    if (cancelled) {
+    return !cancelled;
+}
+
+std::optional<SceneHits> castSceneHits(const Scene &scene,
+                                       const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+                                       int height, QString *error, const std::function<bool(double)> &progress)
+{
+    if (width <= 0 || height <= 0) {
+        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return std::nullopt;
+    }
+    std::vector<PreparedObject> objects;
+    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), objects, error, progress))
+        return std::nullopt;
+
+    SceneHits hits;
+    hits.width = width;
+    hits.height = height;
+    hits.objects.resize(scene.objects.size());
+    for (const PreparedObject &object : objects) {
+        SceneHits::Object &o = hits.objects[std::size_t(object.index)];
+        o.modelView = object.modelView;
+        o.normalMatrix = object.normalMatrix;
+        if (object.surface == Surface::Mesh)
+            o.mesh = objectMeshes[std::size_t(object.index)];
+    }
+    hits.hits.resize(std::size_t(width) * std::size_t(height));
+    const bool done = forEachRowInParallel(
+        height, [&](int y) { castRow(scene, objects, hits, y); },
+        [&](double fraction) { return !progress || progress(0.1 + 0.9 * fraction); });
+    if (!done) {
         fail(error, QStringLiteral("cancelled"));
         return std::nullopt;
     }
-    return image;
+    return hits;
+}
+
+std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
+                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                 int width, int height, const ReferenceShader &shader,
+                                                 QString *error, const std::function<bool(double)> &progress)
+{
+    const std::optional<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, error, progress);
+    if (!hits)
+        return std::nullopt;
+    return shadeSceneHits(*hits, scene, shader);
 }
 
 struct SceneDepthCaster::Objects {

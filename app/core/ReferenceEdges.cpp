@@ -1,5 +1,6 @@
 #include "ReferenceEdges.h"
 
+#include "ImageMetrics.h"
 #include "MeshRaycaster.h"
 
 #include <algorithm>
@@ -77,6 +78,23 @@ std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
     for (std::thread &helper : helpers)
         helper.join();
     return mask;
+}
+
+std::vector<std::uint8_t> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
+                                              const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                              int bandPx, QString *error)
+{
+    std::vector<std::uint8_t> edges = occludingContourPixels(reference);
+    const std::vector<std::uint8_t> ambiguous = ambiguousReferencePixels(
+        scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits, error);
+    if (ambiguous.size() != edges.size())
+        return {};
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        edges[i] = edges[i] || ambiguous[i];
+    std::vector<std::uint8_t> compared = dilatePixels(edges, reference.width, reference.height, bandPx);
+    for (auto &c : compared)
+        c = !c;
+    return compared;
 }
 
 } // namespace phonglab

@@ -1,4 +1,5 @@
 #pragma once
+#include "ReferenceImage.h"
 #include "Scene.h"
 #include "mesh/MeshData.h"
 
@@ -57,5 +58,14 @@ inline constexpr int kDefaultSubpixelBits = 8;
 std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
                                                    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
                                                    int width, int height, int subpixelBits, QString *error = nullptr);
+
+// The pixels a render is judged on against the reference: every pixel more
+// than bandPx (Chebyshev) from an occluding contour (occludingContourPixels())
+// or an ambiguous pixel (ambiguousReferencePixels()), which together are the
+// silhouettes, the outline included. 1 = compared. What `phonglab bench` and
+// `phonglab check` compare. Empty and *error on bad input.
+std::vector<std::uint8_t> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
+                                              const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                              int bandPx, QString *error = nullptr);
 
 } // namespace phonglab

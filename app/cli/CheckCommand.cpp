@@ -1,0 +1,229 @@
+#include "CheckCommand.h"
+
+#include "CheckReportOutput.h"
+#include "CliCommon.h"
+#include "SceneStages.h"
+#include "core/SceneJson.h"
+#include "mesh/SceneMeshes.h"
+#include "render/OffscreenRenderer.h"
+
+#include <QCommandLineParser>
+#include <QGuiApplication>
+#include <QJsonDocument>
+
+#include <optional>
+#include <variant>
+
+namespace phonglab::cli {
+
+namespace {
+
+constexpr int kMaxImageSide = 4096;
+
+struct CheckArgs {
+    QString scenePath;
+    QSize size{800, 600};
+    QString vertexPath;
+    QString fragmentPath;
+    std::optional<ShadingMethod> shading;
+    int toleranceSteps = kDefaultCheckToleranceSteps;
+    bool json = false;
+    QString diffPath;
+};
+
+const QString &synopsis()
+{
+    static const QString text = QStringLiteral(
+        "usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]\n"
+        "                      [--tolerance STEPS] [--json] [--diff OUT.png]");
+    return text;
+}
+
+QString helpText()
+{
+    return synopsis() + QStringLiteral(
+        "\n\n"
+        "Renders SCENE.json with the shaders `render` would use, compares the image with the exact\n"
+        "(double-precision) reference of the same scene, leaving out a band around silhouettes,\n"
+        "and when it differs names the classic mistake that explains it.\n\n"
+        "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
+        "  --fragment FILE     fragment shader instead of the scene's or the shading method's\n"
+        "  --shading NAME      shading method instead of the scene's; one of %1\n"
+        "  --size WxH          image size in pixels, default 800x600\n"
+        "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2\n"
+        "  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,\n"
+        "                      worst, diagnosis, undetectable, errors) instead of text\n"
+        "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;\n"
+        "                      dark blue the silhouette band left out, black the background\n\n"
+        "Mistake keys: %3, unknown.\n\n"
+        "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.\n"
+        "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
+        .arg(shadingNames().join(QStringLiteral(", ")))
+        .arg(kDefaultCheckToleranceSteps)
+        .arg(shaderMistakeKeys().join(QStringLiteral(", ")));
+}
+
+// The arguments, or an exit code for usage errors and --help.
+std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
+    const QCommandLineOption vertex(QStringLiteral("vertex"), QString(), QStringLiteral("file"));
+    const QCommandLineOption fragment(QStringLiteral("fragment"), QString(), QStringLiteral("file"));
+    const QCommandLineOption shading(QStringLiteral("shading"), QString(), QStringLiteral("name"));
+    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(), QStringLiteral("steps"));
+    const QCommandLineOption json(QStringLiteral("json"), QString());
+    const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
+    parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff});
+    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
+
+    const auto usage = [&](const QString &message) {
+        printError(message);
+        printErrLine(synopsis());
+        return kExitUsage;
+    };
+    if (!parser.parse(arguments))
+        return usage(parser.errorText());
+    if (parser.isSet(help)) {
+        printLine(helpText());
+        return kExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1)
+        return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")
+                                          : QStringLiteral("exactly one scene file expected"));
+    CheckArgs args;
+    args.scenePath = positional.first();
+    if (parser.isSet(size)) {
+        const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
+        if (!parsed)
+            return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
+                             .arg(kMaxImageSide).arg(parser.value(size)));
+        args.size = *parsed;
+    }
+    if (parser.isSet(shading)) {
+        args.shading = shadingFromName(parser.value(shading));
+        if (!args.shading)
+            return usage(QStringLiteral("--shading: unknown method '%1' (known: %2)")
+                             .arg(parser.value(shading), shadingNames().join(QStringLiteral(", "))));
+    }
+    if (parser.isSet(tolerance)) {
+        bool ok = false;
+        args.toleranceSteps = parser.value(tolerance).toInt(&ok);
+        if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
+            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'").arg(parser.value(tolerance)));
+    }
+    if (parser.isSet(diff) && parser.value(diff).isEmpty())
+        return usage(QStringLiteral("--diff: missing the output file"));
+    args.vertexPath = parser.value(vertex);
+    args.fragmentPath = parser.value(fragment);
+    args.json = parser.isSet(json);
+    args.diffPath = parser.value(diff);
+    return args;
+}
+
+ShaderDiagnostic inputError(const QString &file, const QString &message)
+{
+    ShaderDiagnostic d;
+    d.file = file;
+    d.message = message;
+    return d;
+}
+
+// Everything up to the verdict; `yours` receives the render for --diff.
+CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReference *reference, QImage *yours)
+{
+    CheckOutcome outcome;
+    const auto fail = [&](const QString &file, const QString &message) {
+        outcome.errors.push_back(inputError(file, message));
+        return outcome;
+    };
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    if (!meshes.ok())
+        return fail(args.scenePath, meshes.error);
+    // Builtins too: the reference casts the triangles the GPU draws.
+    std::vector<std::shared_ptr<const MeshData>> objectMeshes;
+    for (const SceneObject &object : scene.objects)
+        objectMeshes.push_back(meshes.entries.value(meshKey(scene, object)).mesh);
+
+    OffscreenRenderer offscreen;
+    QString error;
+    if (!offscreen.create(&error))
+        return fail(QString(), error);
+    Renderer &renderer = offscreen.renderer();
+    if (!renderer.setScene(scene, std::move(meshes), &error))
+        return fail(args.scenePath, error);
+    const StageFiles files = chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
+    const CompileResult program = buildStages(renderer, files, &error, &outcome.stages);
+    if (!error.isEmpty())
+        return fail(QString(), error);
+    for (const ShaderDiagnostic &d : program.diagnostics)
+        if (d.isError() || !args.json)
+            printErrLine(d.format());
+    if (!program.ok) {
+        for (const ShaderDiagnostic &d : program.diagnostics)
+            if (d.isError())
+                outcome.errors.push_back(d);
+        if (outcome.errors.empty())
+            outcome.errors.push_back(inputError(files.fragment, QStringLiteral("the shaders did not compile")));
+        return outcome;
+    }
+    *yours = offscreen.renderImage(args.size);
+    if (yours->isNull())
+        return fail(QString(), QStringLiteral("rendering failed"));
+
+    std::optional<CheckReference> made =
+        makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height(), &error);
+    if (!made)
+        return fail(args.scenePath, QStringLiteral("no reference: %1").arg(error));
+    *reference = std::move(*made);
+    outcome.report = checkRender(*yours, *reference, args.toleranceSteps);
+    outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    return outcome;
+}
+
+int check(const CheckArgs &args, int argc, char **argv)
+{
+    const SceneLoadResult loaded = loadSceneFile(args.scenePath);
+    Scene scene = loaded.ok() ? *loaded.scene : Scene{};
+    if (args.shading)
+        scene.shading = *args.shading;
+
+    chooseHeadlessPlatformIfNeeded();
+    QGuiApplication app(argc, argv);
+    CheckOutcome outcome;
+    CheckReference reference;
+    QImage yours;
+    if (!loaded.ok())
+        outcome.errors.push_back(inputError(args.scenePath, loaded.error));
+    else
+        outcome = runCheckOn(args, scene, &reference, &yours);
+
+    if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
+        QString error;
+        if (!writePng(checkHeatmap(yours, reference), args.diffPath, &error))
+            outcome = CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
+    }
+    if (args.json) {
+        printLine(QString::fromUtf8(QJsonDocument(checkJson(outcome, scene)).toJson(QJsonDocument::Indented)).trimmed());
+    } else {
+        for (const ShaderDiagnostic &e : outcome.errors)
+            if (e.line == 0) // compile errors with a line are printed as the compiler's
+                printError(e.file.isEmpty() ? e.message : QStringLiteral("%1: %2").arg(e.file, e.message));
+        printLine(checkText(outcome, scene));
+    }
+    return outcome.verdict == CheckOutcome::Verdict::Pass ? kExitOk : kExitFailure;
+}
+
+} // namespace
+
+int runCheck(int argc, char **argv)
+{
+    const auto parsed = parseArgs(argumentsFrom(argc, argv).mid(1));
+    if (const int *code = std::get_if<int>(&parsed))
+        return *code;
+    return check(std::get<CheckArgs>(parsed), argc, argv);
+}
+
+} // namespace phonglab::cli

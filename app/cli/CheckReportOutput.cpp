@@ -1,0 +1,169 @@
+#include "CheckReportOutput.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace phonglab::cli {
+
+namespace {
+
+QString verdictName(CheckOutcome::Verdict v)
+{
+    switch (v) {
+    case CheckOutcome::Verdict::Pass: return QStringLiteral("pass");
+    case CheckOutcome::Verdict::Fail: return QStringLiteral("fail");
+    case CheckOutcome::Verdict::Error: break;
+    }
+    return QStringLiteral("error");
+}
+
+// The finding's own lines, then those of the mistakes it names beside it.
+std::vector<SourceLine> findingLines(const MistakeFinding &f, const std::vector<ShaderStageText> &stages)
+{
+    std::vector<SourceLine> lines = mistakeSourceLines(f.key, stages);
+    for (ShaderMistake m : f.also)
+        for (const SourceLine &l : mistakeSourceLines(m, stages))
+            if (std::none_of(lines.begin(), lines.end(),
+                             [&](const SourceLine &o) { return o.file == l.file && o.line == l.line; }))
+                lines.push_back(l);
+    return lines;
+}
+
+QString findingMessage(const MistakeFinding &f)
+{
+    QString text = QStringLiteral("%1 explains %2 % of the difference: %3")
+                       .arg(shaderMistakeKey(f.key))
+                       .arg(qRound(100.0 * f.confidence))
+                       .arg(shaderMistakeRule(f.key));
+    for (ShaderMistake m : f.also)
+        text += QStringLiteral("; or, with the same image, %1: %2").arg(shaderMistakeKey(m), shaderMistakeRule(m));
+    return text;
+}
+
+QString objectLabel(const Scene &scene, int object)
+{
+    if (object < 0 || std::size_t(object) >= scene.objects.size())
+        return QStringLiteral("the background");
+    return QStringLiteral("object %1 (%2)").arg(object).arg(scene.objects[std::size_t(object)].mesh);
+}
+
+QJsonArray keysJson(const std::vector<ShaderMistake> &mistakes)
+{
+    QJsonArray out;
+    for (ShaderMistake m : mistakes)
+        out.append(shaderMistakeKey(m));
+    return out;
+}
+
+QJsonObject unknownFinding()
+{
+    return {{QStringLiteral("key"), QStringLiteral("unknown")},
+            {QStringLiteral("also"), QJsonArray()},
+            {QStringLiteral("confidence"), 0.0},
+            {QStringLiteral("message"), QStringLiteral("no classic mistake explains the difference; "
+                                                       "the error heatmap (--diff) shows where it is")},
+            {QStringLiteral("lines"), QJsonArray()}};
+}
+
+QJsonArray diagnosisJson(const CheckOutcome &outcome)
+{
+    QJsonArray out;
+    const MistakeDiagnosis &d = outcome.report.diagnosis;
+    if (d.unexplained())
+        out.append(unknownFinding());
+    for (const MistakeFinding &f : d.findings) {
+        QJsonArray lines;
+        for (const SourceLine &l : findingLines(f, outcome.stages))
+            lines.append(QJsonObject{{QStringLiteral("file"), l.file},
+                                     {QStringLiteral("line"), l.line},
+                                     {QStringLiteral("text"), l.text}});
+        out.append(QJsonObject{{QStringLiteral("key"), shaderMistakeKey(f.key)},
+                               {QStringLiteral("also"), keysJson(f.also)},
+                               {QStringLiteral("confidence"), f.confidence},
+                               {QStringLiteral("message"), findingMessage(f)},
+                               {QStringLiteral("lines"), lines}});
+    }
+    return out;
+}
+
+QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
+{
+    QJsonArray out;
+    for (const ShaderDiagnostic &e : errors)
+        out.append(QJsonObject{{QStringLiteral("file"), e.file},
+                               {QStringLiteral("line"), e.line},
+                               {QStringLiteral("column"), e.column},
+                               {QStringLiteral("message"), e.message}});
+    return out;
+}
+
+} // namespace
+
+QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene)
+{
+    Q_UNUSED(scene);
+    const bool judged = outcome.verdict != CheckOutcome::Verdict::Error;
+    const ImageComparison &c = outcome.report.comparison;
+    QJsonObject o;
+    o.insert(QStringLiteral("verdict"), verdictName(outcome.verdict));
+    // Identical images have an infinite PSNR, which JSON cannot write: null.
+    o.insert(QStringLiteral("psnr_db"), judged && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
+    o.insert(QStringLiteral("max_error"), judged ? QJsonValue(c.maxError) : QJsonValue());
+    o.insert(QStringLiteral("bad_fraction"), judged ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
+    o.insert(QStringLiteral("tolerance"), outcome.report.toleranceSteps);
+    QJsonObject worst;
+    if (judged && c.pixelsCompared > 0) {
+        worst.insert(QStringLiteral("x"), c.worstPixel.x());
+        worst.insert(QStringLiteral("y"), c.worstPixel.y());
+        worst.insert(QStringLiteral("object"), outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject)
+                                                                                : QJsonValue());
+    }
+    o.insert(QStringLiteral("worst"), judged && c.pixelsCompared > 0 ? QJsonValue(worst) : QJsonValue());
+    o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
+    o.insert(QStringLiteral("undetectable"), keysJson(outcome.report.diagnosis.undetectable));
+    o.insert(QStringLiteral("errors"), errorsJson(outcome.errors));
+    return o;
+}
+
+QString checkText(const CheckOutcome &outcome, const Scene &scene)
+{
+    if (outcome.verdict == CheckOutcome::Verdict::Error)
+        return QStringLiteral("check: error");
+    const CheckReport &r = outcome.report;
+    const ImageComparison &c = r.comparison;
+    QStringList out;
+    out << QStringLiteral("check: %1").arg(verdictName(outcome.verdict));
+    out << QStringLiteral("%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
+               .arg(std::isfinite(c.psnr) ? QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 2) : QStringLiteral("PSNR inf"))
+               .arg(c.maxError)
+               .arg(r.toleranceSteps)
+               .arg(100.0 * r.badFraction(), 0, 'f', 2)
+               .arg(c.pixelsCompared);
+    if (c.pixelsCompared > 0)
+        out << QStringLiteral("worst pixel (%1, %2) on %3")
+                   .arg(c.worstPixel.x())
+                   .arg(c.worstPixel.y())
+                   .arg(objectLabel(scene, r.worstObject));
+    const MistakeDiagnosis &d = r.diagnosis;
+    if (outcome.verdict == CheckOutcome::Verdict::Fail) {
+        out << QStringLiteral("diagnosis:");
+        if (d.unexplained())
+            out << QStringLiteral("  unknown: no classic mistake explains the difference; the heatmap (--diff) "
+                                  "shows where it is");
+        for (const MistakeFinding &f : d.findings) {
+            out << QStringLiteral("  ") + findingMessage(f);
+            for (const SourceLine &l : findingLines(f, outcome.stages))
+                out << QStringLiteral("    %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
+        }
+    }
+    if (!d.undetectable.empty()) {
+        QStringList keys;
+        for (ShaderMistake m : d.undetectable)
+            keys << shaderMistakeKey(m);
+        out << QStringLiteral("cannot show in this scene: %1").arg(keys.join(QStringLiteral(", ")));
+    }
+    return out.join(QLatin1Char('\n'));
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,66 @@
+#include "SceneStages.h"
+
+#include "core/ResourcePaths.h"
+#include "render/ShaderSource.h"
+
+#include <QSaveFile>
+
+namespace phonglab::cli {
+
+namespace {
+
+QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene &scene, bool methodChosen,
+                  const QString &shipped)
+{
+    if (!fromArgs.isEmpty())
+        return fromArgs;
+    if (!fromScene.isEmpty() && !methodChosen)
+        return scene.resolveShaderPath(fromScene);
+    return shipped;
+}
+
+} // namespace
+
+StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg,
+                            bool methodChosen)
+{
+    const QString name = shadingName(scene.shading);
+    return {stagePath(vertexArg, scene.vertexShader, scene, methodChosen, shaderPath(name + QStringLiteral(".vert"))),
+            stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen,
+                      shaderPath(name + QStringLiteral(".frag")))};
+}
+
+CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,
+                          std::vector<ShaderStageText> *texts)
+{
+    const ShaderSource vs = ShaderSource::fromFile(files.vertex, error);
+    const ShaderSource fs = ShaderSource::fromFile(files.fragment, error);
+    if (!error->isEmpty())
+        return {};
+    if (texts) {
+        texts->push_back({vs.name, QString::fromUtf8(vs.code), true});
+        texts->push_back({fs.name, QString::fromUtf8(fs.code), false});
+    }
+    return renderer.setProgramSources(vs, fs);
+}
+
+bool writePng(const QImage &image, const QString &path, QString *error)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    if (!image.save(&file, "PNG")) {
+        file.cancelWriting();
+        *error = QStringLiteral("%1: PNG encoding failed").arg(path);
+        return false;
+    }
+    if (!file.commit()) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,34 @@
+#pragma once
+#include "core/MistakeSourceLines.h"
+#include "core/Scene.h"
+#include "core/ShadingMethod.h"
+#include "render/CompileResult.h"
+#include "render/Renderer.h"
+
+#include <QImage>
+#include <QString>
+#include <optional>
+#include <vector>
+
+namespace phonglab::cli {
+
+// The shader files a command draws a scene with, chosen the one way both
+// `render` and `check` choose them. Each stage, first found: --vertex /
+// --fragment, the scene's "shaders" (unless --shading chose a method), the
+// shipped file of the shading method.
+struct StageFiles {
+    QString vertex;
+    QString fragment;
+};
+StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg,
+                            bool methodChosen);
+
+// Reads both files and builds the program. *error is set (and nothing built)
+// when a file cannot be read; `texts` receives what was read.
+CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,
+                          std::vector<ShaderStageText> *texts = nullptr);
+
+// Writes a PNG that appears only once complete. False with *error.
+bool writePng(const QImage &image, const QString &path, QString *error);
+
+} // namespace phonglab::cli

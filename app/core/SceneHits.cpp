@@ -1,0 +1,70 @@
+#include "SceneHits.h"
+
+#include "ReferenceSample.h"
+
+namespace phonglab {
+
+namespace {
+
+// Gouraud: the exact equation at the triangle's three vertices, the colours
+// interpolated like a perspective-correct varying.
+ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHit &hit, const Material &material,
+                              const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+{
+    const MeshData &mesh = *object.mesh;
+    const std::size_t base = 3 * std::size_t(hit.triangle);
+    ReferenceSample out;
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh.indices[base + std::size_t(k)];
+        const ReferenceSample vertex = shadeReferenceHit(
+            {glm::dvec3(mesh.positions[v]), glm::dvec3(mesh.normals[v]), object.modelView, object.normalMatrix},
+            material, ambient, lights, ReferenceShading::Phong);
+        out.color += hit.barycentric[k] * vertex.color;
+        out.specular += hit.barycentric[k] * vertex.specular;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<int> SceneHits::objectIds() const
+{
+    std::vector<int> ids(hits.size());
+    for (std::size_t i = 0; i < hits.size(); ++i)
+        ids[i] = hits[i].object;
+    return ids;
+}
+
+ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const ReferenceShader &shader)
+{
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
+    ReferenceImage image(hits.width, hits.height);
+    forEachRowInParallel(hits.height, [&](int y) {
+        for (int x = 0; x < hits.width; ++x) {
+            const ReferenceHit &hit = hits.at(x, y);
+            if (hit.object < 0)
+                continue;
+            const SceneHits::Object &object = hits.objects[std::size_t(hit.object)];
+            const Material &material = scene.objects[std::size_t(hit.object)].material;
+            const ReferenceSample sample = shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0
+                ? shadeVertices(object, hit, material, scene.ambient, lights)
+                : shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix}, material,
+                                    scene.ambient, lights, shader);
+            const std::size_t i = image.index(x, y);
+            image.coverage[i] = 1;
+            image.depth[i] = hit.depth;
+            image.color[i] = sample.color;
+            image.specular[i] = sample.specular;
+        }
+    });
+    return image;
+}
+
+CameraSpaceHit cameraSpaceHit(const SceneHits &hits, const ReferenceHit &hit)
+{
+    const SceneHits::Object &object = hits.objects[std::size_t(hit.object)];
+    return {glm::dvec3(object.modelView * glm::dvec4(hit.point, 1.0)),
+            glm::normalize(object.normalMatrix * hit.normal)};
+}
+
+} // namespace phonglab

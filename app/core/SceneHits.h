@@ -1,0 +1,76 @@
+#pragma once
+#include "AnalyticRaycaster.h"
+#include "ReferenceImage.h"
+#include "Scene.h"
+#include "mesh/MeshData.h"
+
+#include <QString>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phonglab {
+
+// What the reference's rays found, before any shading: per pixel the nearest
+// hit's object, its object-space point and normal and, on a triangle mesh,
+// the triangle and the barycentric coordinates of the hit. Casting is the
+// expensive half of the reference; shading the same hits again with another
+// ReferenceShader (each classic mistake, say) costs a fraction of it, and
+// the pixel inspector reads one hit to explain one pixel.
+
+struct ReferenceHit {
+    int object = -1;               // index into Scene::objects; -1 where nothing was hit
+    std::int32_t triangle = -1;    // on a triangle mesh; -1 on an analytic surface
+    double depth = 0.0;            // camera-space -z
+    glm::dvec3 point{0.0};         // object space
+    glm::dvec3 normal{0.0};        // object space, not normalised (the normal matrix comes first)
+    glm::dvec3 barycentric{0.0};   // on a triangle: the weights of its three vertices
+};
+
+struct SceneHits {
+    // Per scene object: its matrices and the mesh its triangles index.
+    struct Object {
+        glm::dmat4 modelView{1.0};
+        glm::dmat3 normalMatrix{1.0};
+        std::shared_ptr<const MeshData> mesh; // null for an analytic surface
+    };
+    int width = 0;
+    int height = 0;
+    std::vector<Object> objects;   // one per scene object
+    std::vector<ReferenceHit> hits; // row-major, row 0 at the top
+
+    const ReferenceHit &at(int x, int y) const { return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    // The scene object each pixel shows, -1 for the background.
+    std::vector<int> objectIds() const;
+};
+
+// raycastSceneMeshes()'s rays (MeshRaycaster.h: same inputs, conventions,
+// errors, progress and cancelling), keeping the hits instead of shading them.
+std::optional<SceneHits> castSceneHits(const Scene &scene,
+                                       const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+                                       int height, QString *error = nullptr,
+                                       const std::function<bool(double)> &progress = {});
+
+// The reference image of `hits` shaded with `shader` (rows in parallel). The
+// gouraud mistake shades the three vertices of the hit triangle and
+// interpolates their colours with the hit's barycentric weights (which is
+// what a perspective-correct varying does); on an analytic surface, which
+// has no vertices, it shades exactly.
+ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const ReferenceShader &shader);
+
+// The illumination equation's inputs at one hit, as the exact vertex stage
+// computes them: camera-space point and (normalised) normal.
+struct CameraSpaceHit {
+    glm::dvec3 position{0.0};
+    glm::dvec3 normal{0.0, 0.0, 1.0};
+};
+CameraSpaceHit cameraSpaceHit(const SceneHits &hits, const ReferenceHit &hit);
+
+// Runs rowFunction(y) for every row 0..height-1 on all cores, rows handed out
+// one at a time. progress(rows done / height) is called from the calling
+// thread; returning false stops early and makes this return false.
+bool forEachRowInParallel(int height, const std::function<void(int)> &rowFunction,
+                          const std::function<bool(double)> &progress = {});
+
+} // namespace phonglab

@@ -1,0 +1,136 @@
+#include "ShaderCheck.h"
+
+#include "PhongReference.h"
+#include "ReferenceEdges.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phonglab {
+
+namespace {
+
+std::vector<ShaderMistake> allMistakes()
+{
+    std::vector<ShaderMistake> out;
+    for (const QString &key : shaderMistakeKeys())
+        out.push_back(*shaderMistakeFromKey(key));
+    return out;
+}
+
+} // namespace
+
+std::optional<CheckReference> makeCheckReference(const Scene &scene,
+                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                 int width, int height, QString *error,
+                                                 const std::function<bool(double)> &progress)
+{
+    // Casting is most of the work; shading each mistake is a fraction of it.
+    const auto castProgress = [&](double f) { return !progress || progress(0.7 * f); };
+    std::optional<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, error, castProgress);
+    if (!hits)
+        return std::nullopt;
+    CheckReference out;
+    out.shader = idealShadingFor(scene.shading);
+    out.background = scene.background;
+    out.exact = shadeSceneHits(*hits, scene, out.shader);
+    out.compared = awayFromSilhouettes(out.exact, scene, objectMeshes, kCheckBandPx, error);
+    if (out.compared.empty())
+        return std::nullopt;
+    for (std::size_t i = 0; i < out.compared.size(); ++i)
+        out.compared[i] = out.compared[i] && out.exact.coverage[i];
+    if (out.shader.shading == ReferenceShading::Phong) {
+        const std::vector<ShaderMistake> mistakes = allMistakes();
+        for (std::size_t m = 0; m < mistakes.size(); ++m) {
+            if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size()))) {
+                if (error)
+                    *error = QStringLiteral("cancelled");
+                return std::nullopt;
+            }
+            out.mistaken.emplace_back(mistakes[m], shadeSceneHits(*hits, scene, ReferenceShader(ReferenceShading::Phong, mistakes[m])));
+        }
+    }
+    out.undetectable = diagnoseMistakes(out.exact.toImage(out.background), out.exact, out.mistaken, out.compared,
+                                        kDefaultCheckToleranceSteps, out.background)
+                           .undetectable;
+    out.hits = std::move(*hits);
+    return out;
+}
+
+double CheckReport::badFraction() const
+{
+    return comparison.pixelsCompared > 0 ? double(badPixels) / double(comparison.pixelsCompared) : 0.0;
+}
+
+CheckReport checkRender(const QImage &yours, const CheckReference &reference, int toleranceSteps)
+{
+    CheckReport report;
+    report.toleranceSteps = toleranceSteps;
+    report.comparison = compareOutsideBand(yours, reference.exact, reference.background, 0, &reference.compared).error;
+    const std::vector<int> errors = checkErrorSteps(yours, reference);
+    report.badPixels = std::count_if(errors.begin(), errors.end(), [&](int e) { return e > toleranceSteps; });
+    if (report.comparison.pixelsCompared > 0) {
+        const QPoint w = report.comparison.worstPixel;
+        report.worstObject = reference.hits.at(w.x(), w.y()).object;
+    }
+    if (!report.passed())
+        report.diagnosis = diagnoseMistakes(yours, reference.exact, reference.mistaken, reference.compared,
+                                            toleranceSteps, reference.background);
+    report.diagnosis.undetectable = reference.undetectable;
+    return report;
+}
+
+QImage checkHeatmap(const QImage &yours, const CheckReference &reference)
+{
+    return errorHeatmap(yours, reference.exact, 0, &reference.compared);
+}
+
+std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &reference)
+{
+    const ReferenceImage &exact = reference.exact;
+    std::vector<int> out(exact.color.size(), -1);
+    if (yours.size() != QSize(exact.width, exact.height))
+        return out;
+    const QImage image = yours.convertToFormat(QImage::Format_RGB888);
+    for (int y = 0; y < exact.height; ++y) {
+        const uchar *row = image.constScanLine(y);
+        for (int x = 0; x < exact.width; ++x) {
+            const std::size_t i = exact.index(x, y);
+            if (!reference.compared[i])
+                continue;
+            int worst = 0;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(int(row[3 * x + c]) - encodeChannel(exact.color[i][c])));
+            out[i] = worst;
+        }
+    }
+    return out;
+}
+
+QString checkSummary(const CheckReport &report)
+{
+    const ImageComparison &c = report.comparison;
+    const QString psnr = std::isinf(c.psnr) ? QStringLiteral("PSNR ∞") : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+    if (report.passed())
+        return QStringLiteral("✓ matches the exact image (%1, max %2/255)").arg(psnr).arg(c.maxError);
+    QString line = QStringLiteral("✗ %1, max %2/255, %3 % of pixels off")
+                       .arg(psnr)
+                       .arg(c.maxError)
+                       .arg(100.0 * report.badFraction(), 0, 'f', 1);
+    const MistakeDiagnosis &d = report.diagnosis;
+    if (d.unexplained()) {
+        line += QStringLiteral(" — unknown: no classic mistake explains it; see the heatmap");
+    } else if (!d.findings.empty()) {
+        const MistakeFinding &top = d.findings.front();
+        QStringList keys{shaderMistakeKey(top.key)};
+        for (ShaderMistake m : top.also)
+            keys << shaderMistakeKey(m);
+        line += QStringLiteral(" — %1 (%2 %): %3")
+                    .arg(keys.join(QStringLiteral(" or ")))
+                    .arg(qRound(100.0 * top.confidence))
+                    .arg(shaderMistakeRule(top.key));
+    }
+    return line;
+}
+
+} // namespace phonglab

@@ -1,0 +1,74 @@
+#pragma once
+#include "ImageMetrics.h"
+#include "MistakeDiagnosis.h"
+#include "SceneHits.h"
+
+#include <QImage>
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace phonglab {
+
+// `phonglab check` and the editor's check: a render judged against the
+// exact reference of the same scene at the same size, and when it is off,
+// which classic mistake explains it.
+
+inline constexpr int kDefaultCheckToleranceSteps = 2; // max error 2/255
+inline constexpr int kCheckBandPx = 2;                // the render tests' silhouette band
+
+// Everything a check needs that depends on the scene and the size alone, not
+// on the shader: computed once, then any number of renders are judged
+// against it.
+struct CheckReference {
+    SceneHits hits;
+    ReferenceShader shader;        // the exact shading of the scene's method
+    ReferenceImage exact;
+    // The reference with each classic mistake made, when the exact shading
+    // is Phong (the mistakes are mistakes of Phong's equation); else empty.
+    std::vector<std::pair<ShaderMistake, ReferenceImage>> mistaken;
+    std::vector<std::uint8_t> compared; // covered pixels away from every silhouette
+    glm::dvec3 background{0.0};
+    std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
+};
+
+// Casts the scene once and shades it exactly and with every mistake. Every
+// object is ray-cast as the triangle mesh the GPU draws (builtins included:
+// objectMeshes has no null entry here), so a correct shader differs from the
+// reference by float precision and rasterisation only. progress and
+// cancelling as in castSceneHits().
+std::optional<CheckReference> makeCheckReference(const Scene &scene,
+                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                 int width, int height, QString *error = nullptr,
+                                                 const std::function<bool(double)> &progress = {});
+
+struct CheckReport {
+    int toleranceSteps = kDefaultCheckToleranceSteps;
+    ImageComparison comparison;  // over the compared pixels
+    qint64 badPixels = 0;        // compared pixels off by more than the tolerance
+    int worstObject = -1;        // the scene object under comparison.worstPixel
+    MistakeDiagnosis diagnosis;
+
+    bool passed() const { return comparison.pixelsCompared > 0 && comparison.maxError <= toleranceSteps; }
+    double badFraction() const;
+};
+
+CheckReport checkRender(const QImage &yours, const CheckReference &reference,
+                        int toleranceSteps = kDefaultCheckToleranceSteps);
+
+// |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
+// from dark green (exact) through yellow to red (8/255 or more), the left-out
+// silhouette band dark blue, uncovered pixels black.
+QImage checkHeatmap(const QImage &yours, const CheckReference &reference);
+
+// The largest channel error of each pixel in 8-bit steps; -1 where the pixel
+// is not compared.
+std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &reference);
+
+// "✓ matches the exact image (PSNR 58.2 dB, max 1/255)" or
+// "✗ PSNR 21.4 dB, max 87/255 — reflect-incident: ..." — one line for a
+// status bar.
+QString checkSummary(const CheckReport &report);
+
+} // namespace phonglab

@@ -1,0 +1,90 @@
+// The check's confusion matrix on the GPU: each classic mistake made in the
+// shipped Phong shaders (ShaderMutations.h), rendered on the check scene
+// (assets/scenes/check.json), must be diagnosed with its own key first
+// (reflect-incident and view-vector as one finding naming both); the shipped
+// shaders of the exact methods must pass.
+#include "CheckScene.h"
+#include "ShaderMutations.h"
+#include "render/OffscreenRenderer.h"
+
+#include <QTest>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+class TestCheckMistakes : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        m_scene = loadCheckScene();
+        m_reference = makeTestCheckReference(m_scene);
+        QString error;
+        QVERIFY2(m_offscreen.create(&error), qPrintable(error));
+        QVERIFY2(m_offscreen.renderer().setScene(m_scene, &error), qPrintable(error));
+    }
+
+    void shippedShadersPass_data()
+    {
+        QTest::addColumn<QString>("method");
+        QTest::newRow("phong") << QStringLiteral("phong");
+        QTest::newRow("blinn-phong") << QStringLiteral("blinn-phong");
+        QTest::newRow("normals") << QStringLiteral("normals");
+    }
+
+    void shippedShadersPass()
+    {
+        QFETCH(QString, method);
+        Scene scene = m_scene;
+        scene.shading = *shadingFromName(method);
+        const CheckReference reference = makeTestCheckReference(scene);
+        QString error;
+        const ShaderSource vs = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)), &error);
+        const ShaderSource fs = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.frag").arg(method)), &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const CheckReport report = checkRender(render(vs, fs), reference);
+        QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
+        QVERIFY(report.comparison.pixelsCompared > 10000);
+    }
+
+    void confusionMatrix_data()
+    {
+        QTest::addColumn<QString>("key");
+        for (const QString &key : shaderMistakeKeys())
+            QTest::newRow(qPrintable(key)) << key;
+    }
+
+    void confusionMatrix()
+    {
+        QFETCH(QString, key);
+        const ShaderMistake mistake = *shaderMistakeFromKey(key);
+        const ShaderPair shaders = withMistake(mistake);
+        const CheckReport report = checkRender(render(shaders.vertex, shaders.fragment), m_reference);
+        QVERIFY2(!report.passed(), qPrintable(checkSummary(report)));
+        QVERIFY2(!report.diagnosis.findings.empty(), qPrintable(checkSummary(report)));
+        const MistakeFinding &top = report.diagnosis.findings.front();
+        const bool named = top.key == mistake
+            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        QVERIFY2(named, qPrintable(checkSummary(report)));
+        QVERIFY2(top.confidence >= kExplainedConfidence, qPrintable(checkSummary(report)));
+        qInfo("%s", qPrintable(QStringLiteral("%1: %2").arg(key, checkSummary(report))));
+    }
+
+private:
+    QImage render(const ShaderSource &vertex, const ShaderSource &fragment)
+    {
+        const CompileResult program = m_offscreen.renderer().setProgramSources(vertex, fragment);
+        if (!program.ok)
+            qFatal("%s", qPrintable(program.errorSummary()));
+        return m_offscreen.renderImage(QSize(kCheckWidth, kCheckHeight));
+    }
+
+    Scene m_scene;
+    CheckReference m_reference;
+    OffscreenRenderer m_offscreen;
+};
+
+QTEST_MAIN(TestCheckMistakes)
+#include "tst_checkmistakes.moc"

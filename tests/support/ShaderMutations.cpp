@@ -1,0 +1,94 @@
+#include "ShaderMutations.h"
+
+#include "TestPaths.h"
+
+#include <QtGlobal>
+
+namespace phonglab::test {
+
+namespace {
+
+ShaderSource readShipped(const QString &fileName)
+{
+    QString error;
+    ShaderSource source = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/") + fileName), &error);
+    if (!error.isEmpty())
+        qFatal("%s", qPrintable(error));
+    return source;
+}
+
+// Replaces `from` (which must occur) by `to`, and names the result after
+// the mistake so diagnostics read "reflect-incident.frag:52: ...".
+void replace(ShaderSource &source, const char *from, const char *to, const QString &key)
+{
+    if (!source.code.contains(from))
+        qFatal("%s: the shipped shader no longer contains \"%s\"", qPrintable(source.name), from);
+    source.code.replace(from, to);
+    source.name = key + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert") : QStringLiteral(".frag"));
+}
+
+constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
+
+} // namespace
+
+ShaderPair shippedPhong()
+{
+    return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};
+}
+
+ShaderPair withMistake(ShaderMistake mistake)
+{
+    if (mistake == ShaderMistake::Gouraud)
+        return {readShipped(QStringLiteral("gouraud.vert")), readShipped(QStringLiteral("gouraud.frag"))};
+    ShaderPair s = shippedPhong();
+    const QString key = shaderMistakeKey(mistake);
+    switch (mistake) {
+    case ShaderMistake::NormalMatrix:
+        replace(s.vertex, "normalCam = normalMatrix * normal;", "normalCam = mat3(modelViewMatrix) * normal;", key);
+        break;
+    case ShaderMistake::Unnormalized:
+        replace(s.fragment, "vec3 N = normalize(normalCam);", "vec3 N = normalCam;", key);
+        break;
+    case ShaderMistake::LightSpace:
+        replace(s.fragment, "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;",
+                "vec3 lightCam = lightPosition[i];", key);
+        break;
+    case ShaderMistake::HomogeneousW:
+        // The lit position only: gl_Position keeps w = 1, or nothing would be drawn.
+        replace(s.vertex, "positionCam = p.xyz;", "positionCam = (modelViewMatrix * vec4(position, 0.0)).xyz;", key);
+        break;
+    case ShaderMistake::ReflectIncident:
+        replace(s.fragment, "reflect(-L, N)", "reflect(L, N)", key);
+        break;
+    case ShaderMistake::ViewVector:
+        replace(s.fragment, "vec3 V = normalize(-positionCam);", "vec3 V = normalize(positionCam);", key);
+        break;
+    case ShaderMistake::Attenuation:
+        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);", "float fatt = 1.0;", key);
+        break;
+    case ShaderMistake::NegativeLight:
+        // No max(0, N·L) on the diffuse term; the highlight keeps its guard.
+        replace(s.fragment, kGuard,
+                "        vec3 c0 = attenuation[i];\n"
+                "        float f0 = min(1.0 / (c0.x + c0.y * d + c0.z * d * d), 1.0);\n"
+                "        if (NdotL <= 0.0) {\n"
+                "            I += f0 * Id[i] * kd * NdotL;\n"
+                "            continue;\n"
+                "        }\n",
+                key);
+        break;
+    case ShaderMistake::BackfaceSpecular:
+        // Diffuse clamped, the highlight not guarded by N·L > 0.
+        replace(s.fragment, kGuard, "", key);
+        replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", key);
+        break;
+    case ShaderMistake::Ambient:
+        replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
+        break;
+    case ShaderMistake::Gouraud:
+        break;
+    }
+    return s;
+}
+
+} // namespace phonglab::test

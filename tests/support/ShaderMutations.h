@@ -1,0 +1,21 @@
+#pragma once
+#include "core/ShaderMistake.h"
+#include "render/ShaderSource.h"
+
+// The shipped Phong shaders (shaders/phong.vert, phong.frag) with one classic
+// mistake made in them, the way a student makes it: what the confusion-matrix
+// tests hand to the check, and the docs' pictures show. Each mutation is a
+// textual replacement that must match the shipped text exactly, so a change
+// of the shipped shaders that would silently void a mutation aborts instead.
+// `gouraud` is the shipped gouraud.vert/.frag: the whole equation per vertex.
+namespace phonglab::test {
+
+struct ShaderPair {
+    ShaderSource vertex;
+    ShaderSource fragment;
+};
+
+ShaderPair shippedPhong();
+ShaderPair withMistake(ShaderMistake mistake);
+
+} // namespace phonglab::test

@@ -1,0 +1,82 @@
+// The check's reference on its own scene (assets/scenes/check.json), without
+// a GPU: every mistake's image, diagnosed, names that mistake first with full
+// confidence (reflect-incident and view-vector together: they always give the
+// same image); none is undetectable there; the exact image passes.
+#include "CheckScene.h"
+
+#include <QTest>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+class TestCheckReference : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        m_scene = loadCheckScene();
+        m_reference = makeTestCheckReference(m_scene);
+    }
+
+    void everyMistakeShowsInTheCheckScene()
+    {
+        QStringList hidden;
+        for (ShaderMistake m : m_reference.undetectable)
+            hidden << shaderMistakeKey(m);
+        QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(QStringLiteral(", ")) + QStringLiteral(" cannot show")));
+        QCOMPARE(int(m_reference.mistaken.size()), int(shaderMistakeKeys().size()));
+    }
+
+    void exactImagePasses()
+    {
+        const CheckReport report = checkRender(m_reference.exact.toImage(m_scene.background), m_reference);
+        QVERIFY(report.passed());
+        QCOMPARE(report.comparison.maxError, 0);
+        QVERIFY(report.diagnosis.findings.empty());
+    }
+
+    void confusionMatrix_data()
+    {
+        QTest::addColumn<QString>("key");
+        for (const QString &key : shaderMistakeKeys())
+            QTest::newRow(qPrintable(key)) << key;
+    }
+
+    void confusionMatrix()
+    {
+        QFETCH(QString, key);
+        const ShaderMistake mistake = *shaderMistakeFromKey(key);
+        const auto it = std::find_if(m_reference.mistaken.begin(), m_reference.mistaken.end(),
+                                     [&](const auto &p) { return p.first == mistake; });
+        const CheckReport report = checkRender(it->second.toImage(m_scene.background), m_reference);
+        QVERIFY(!report.passed());
+        QVERIFY(!report.diagnosis.findings.empty());
+        const MistakeFinding &top = report.diagnosis.findings.front();
+        const bool named = top.key == mistake
+            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        QVERIFY2(named, qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
+        QCOMPARE(top.confidence, 1.0);
+        // Only the pair that always looks the same shares a finding.
+        const bool pair = mistake == ShaderMistake::ReflectIncident || mistake == ShaderMistake::ViewVector;
+        QCOMPARE(int(top.also.size()), pair ? 1 : 0);
+        if (report.diagnosis.findings.size() > 1)
+            QVERIFY(report.diagnosis.findings[1].confidence < 1.0);
+    }
+
+    void worstPixelNamesItsObject()
+    {
+        const auto &[mistake, image] = m_reference.mistaken.front();
+        const CheckReport report = checkRender(image.toImage(m_scene.background), m_reference);
+        QCOMPARE(report.worstObject, 0);
+        QVERIFY(report.badFraction() > 0.0 && report.badFraction() <= 1.0);
+    }
+
+private:
+    Scene m_scene;
+    CheckReference m_reference;
+};
+
+QTEST_GUILESS_MAIN(TestCheckReference)
+#include "tst_checkreference.moc"
