@@ -113,13 +113,15 @@ QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene)
     o.insert(QStringLiteral("bad_fraction"), judged ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
     o.insert(QStringLiteral("tolerance"), outcome.report.toleranceSteps);
     QJsonObject worst;
-    if (judged && c.pixelsCompared > 0) {
+    // No worst pixel when every compared pixel is exact.
+    const bool hasWorst = judged && c.pixelsCompared > 0 && c.maxError > 0;
+    if (hasWorst) {
         worst.insert(QStringLiteral("x"), c.worstPixel.x());
         worst.insert(QStringLiteral("y"), c.worstPixel.y());
         worst.insert(QStringLiteral("object"), outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject)
                                                                                 : QJsonValue());
     }
-    o.insert(QStringLiteral("worst"), judged && c.pixelsCompared > 0 ? QJsonValue(worst) : QJsonValue());
+    o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
     o.insert(QStringLiteral("undetectable"), keysJson(outcome.report.diagnosis.undetectable));
     o.insert(QStringLiteral("errors"), errorsJson(outcome.errors));
@@ -140,7 +142,7 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
                .arg(r.toleranceSteps)
                .arg(100.0 * r.badFraction(), 0, 'f', 2)
                .arg(c.pixelsCompared);
-    if (c.pixelsCompared > 0)
+    if (c.pixelsCompared > 0 && c.maxError > 0)
         out << QStringLiteral("worst pixel (%1, %2) on %3")
                    .arg(c.worstPixel.x())
                    .arg(c.worstPixel.y())

@@ -1,0 +1,183 @@
+// `phonglab check` as a script sees it: exit codes, the JSON keys, the
+// diagnosis of a wrong shader with its lines, compile errors on the user's
+// line, the heatmap file.
+#include "PhonglabProcess.h"
+#include "ShaderMutations.h"
+#include "TestPaths.h"
+
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+namespace {
+
+const QString kSize = QStringLiteral("320x240"); // the size check.json tells every mistake apart at
+
+QString checkScene()
+{
+    return sourcePath(QStringLiteral("assets/scenes/check.json"));
+}
+
+QJsonObject parseJson(const ProcessRun &r)
+{
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(r.out, &error);
+    if (error.error != QJsonParseError::NoError || !doc.isObject())
+        qWarning("not one JSON object: %s\n%s", qPrintable(error.errorString()), r.out.constData());
+    return doc.object();
+}
+
+} // namespace
+
+class TestCliCheck : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void helpNamesCheckAndItsKeys()
+    {
+        const ProcessRun top = runPhonglab({QStringLiteral("--help")});
+        QVERIFY(QString::fromLocal8Bit(top.out).contains(QStringLiteral("check")));
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), QStringLiteral("--help")});
+        QCOMPARE(r.exitCode, 0);
+        for (const QString &key : shaderMistakeKeys())
+            QVERIFY2(QString::fromUtf8(r.out).contains(key), qPrintable(key));
+    }
+
+    void usageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("no scene") << QStringList{};
+        QTest::newRow("two scenes") << QStringList{checkScene(), checkScene()};
+        QTest::newRow("bad size") << QStringList{checkScene(), QStringLiteral("--size"), QStringLiteral("0x5")};
+        QTest::newRow("bad tolerance") << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("-1")};
+        QTest::newRow("tolerance not a number") << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("two")};
+        QTest::newRow("unknown shading") << QStringList{checkScene(), QStringLiteral("--shading"), QStringLiteral("toon")};
+        QTest::newRow("unknown option") << QStringList{checkScene(), QStringLiteral("--frobnicate")};
+    }
+
+    void usageErrors()
+    {
+        QFETCH(QStringList, args);
+        const ProcessRun r = runPhonglab(QStringList{QStringLiteral("check")} + args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("usage: phonglab check")), qPrintable(r.err));
+    }
+
+    void shippedShaderPasses()
+    {
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                                          QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err + QString::fromUtf8(r.out)));
+        const QJsonObject o = parseJson(r);
+        for (const char *key : {"verdict", "psnr_db", "max_error", "bad_fraction", "worst", "diagnosis",
+                                "undetectable", "errors"})
+            QVERIFY2(o.contains(QLatin1String(key)), key);
+        QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
+        QVERIFY(o.value(QStringLiteral("max_error")).toInt() <= 2);
+        QCOMPARE(o.value(QStringLiteral("bad_fraction")).toDouble(), 0.0);
+        QVERIFY(o.value(QStringLiteral("diagnosis")).toArray().isEmpty());
+        QVERIFY(o.value(QStringLiteral("undetectable")).toArray().isEmpty());
+        QVERIFY(o.value(QStringLiteral("errors")).toArray().isEmpty());
+        // Text: the verdict line first.
+        const ProcessRun text = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize});
+        QCOMPARE(text.exitCode, 0);
+        QVERIFY(text.out.startsWith("check: pass"));
+    }
+
+    void wrongShaderIsDiagnosedWithItsLine()
+    {
+        const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code, QStringLiteral("r.frag"));
+        const QString diff = m_dir.filePath(QStringLiteral("diff.png"));
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                                          QStringLiteral("--fragment"), frag, QStringLiteral("--json"),
+                                          QStringLiteral("--diff"), diff});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject o = parseJson(r);
+        QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("fail"));
+        QVERIFY(o.value(QStringLiteral("max_error")).toInt() > 2);
+        QVERIFY(o.value(QStringLiteral("bad_fraction")).toDouble() > 0.0);
+        QVERIFY(o.value(QStringLiteral("psnr_db")).toDouble() < 40.0);
+        const QJsonObject worst = o.value(QStringLiteral("worst")).toObject();
+        QVERIFY(worst.value(QStringLiteral("x")).toInt() >= 0 && worst.value(QStringLiteral("x")).toInt() < 320);
+        QVERIFY(worst.value(QStringLiteral("object")).toInt(-1) >= 0);
+        const QJsonObject top = o.value(QStringLiteral("diagnosis")).toArray().first().toObject();
+        QCOMPARE(top.value(QStringLiteral("key")).toString(), QStringLiteral("reflect-incident"));
+        QCOMPARE(top.value(QStringLiteral("also")).toArray(), QJsonArray{QStringLiteral("view-vector")});
+        QVERIFY(top.value(QStringLiteral("confidence")).toDouble() >= 0.5);
+        QVERIFY(top.value(QStringLiteral("message")).toString().contains(QStringLiteral("reflect(-L, N)")));
+        // Both candidate lines: the reflect() and the definition of V.
+        const QStringList source = QString::fromUtf8(withMistake(ShaderMistake::ReflectIncident).fragment.code).split(QLatin1Char('\n'));
+        QStringList named;
+        for (const QJsonValue &v : top.value(QStringLiteral("lines")).toArray()) {
+            const QJsonObject line = v.toObject();
+            QCOMPARE(line.value(QStringLiteral("file")).toString(), frag);
+            named << source.value(line.value(QStringLiteral("line")).toInt() - 1).trimmed();
+        }
+        QVERIFY2(named.filter(QStringLiteral("reflect(L, N)")).size() == 1, qPrintable(named.join(QLatin1Char('|'))));
+        QVERIFY2(named.filter(QStringLiteral("vec3 V =")).size() == 1, qPrintable(named.join(QLatin1Char('|'))));
+        const QImage heatmap(diff);
+        QCOMPARE(heatmap.size(), QSize(320, 240));
+    }
+
+    void unexplainedDifferenceIsUnknown()
+    {
+        QByteArray code = shippedPhong().fragment.code;
+        QVERIFY(code.contains("fragColor = vec4(I, 1.0);"));
+        code.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I.bgr, 1.0);");
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                                          QStringLiteral("--fragment"), write(code, QStringLiteral("bgr.frag")),
+                                          QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject top = parseJson(r).value(QStringLiteral("diagnosis")).toArray().first().toObject();
+        QCOMPARE(top.value(QStringLiteral("key")).toString(), QStringLiteral("unknown"));
+    }
+
+    void compileErrorIsAnError()
+    {
+        const QString frag = testDataPath(QStringLiteral("shaders/error_line17.frag"));
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                                          QStringLiteral("--fragment"), frag, QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
+        const QJsonObject o = parseJson(r);
+        QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
+        const QJsonObject e = o.value(QStringLiteral("errors")).toArray().first().toObject();
+        QCOMPARE(e.value(QStringLiteral("file")).toString(), frag);
+        QCOMPARE(e.value(QStringLiteral("line")).toInt(), 17);
+        QCOMPARE(e.value(QStringLiteral("column")).toInt(), 9);
+        QVERIFY(!e.value(QStringLiteral("message")).toString().isEmpty());
+    }
+
+    void badSceneIsAnError()
+    {
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")),
+                                          QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject o = parseJson(r);
+        QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
+        QCOMPARE(o.value(QStringLiteral("errors")).toArray().size(), 1);
+    }
+
+private:
+    QString write(const QByteArray &code, const QString &name)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly) || file.write(code) != code.size())
+            qFatal("cannot write %s", qPrintable(path));
+        return path;
+    }
+
+    QTemporaryDir m_dir;
+};
+
+QTEST_GUILESS_MAIN(TestCliCheck)
+#include "tst_clicheck.moc"
