@@ -5,6 +5,7 @@
 #include "core/UniformOwner.h"
 
 #include "FileTypes.h"
+#include "LiveCheck.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
 #include "MeshStatsText.h"
@@ -96,6 +97,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
     createViewMenu();
     createStatusBar();
+    // After the status bar: its ✓/✗ sits beside the frame statistics.
+    m_liveCheck = new LiveCheck(this, m_viewport, m_liveShaders);
     connectLoading();
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);

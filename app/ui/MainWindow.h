@@ -14,6 +14,7 @@ namespace phonglab {
 
 struct Scene;
 
+class LiveCheck;
 class LiveShaderController;
 class LoadProgressWidget;
 class PerformanceDock;
@@ -81,6 +82,7 @@ public:
     PerformanceDock *performanceDock() const { return m_performanceDock; }
     SceneEditDocks *editDocks() const { return m_editDocks; }
     LiveShaderController *liveShaders() const { return m_liveShaders; }
+    LiveCheck *liveCheck() const { return m_liveCheck; }
     RecentFiles *recentFiles() const { return m_recentFiles; }
     LoadProgressWidget *loadProgress() const { return m_loadProgress; }
 
@@ -127,6 +129,7 @@ private:
     UniformsDock *m_uniformsDock = nullptr;
     PerformanceDock *m_performanceDock = nullptr;
     LiveShaderController *m_liveShaders = nullptr;
+    LiveCheck *m_liveCheck = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     LoadProgressWidget *m_loadProgress = nullptr;
     QAction *m_resetCameraAction = nullptr;

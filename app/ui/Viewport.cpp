@@ -231,7 +231,7 @@ void Viewport::setSceneParameters(const Scene &scene)
     emit sceneParametersChanged();
 }
 
-QImage Viewport::renderImage(const QSize &pixelSize)
+QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
 {
     if (!m_renderReady || pixelSize.isEmpty())
         return {};
@@ -248,7 +248,11 @@ QImage Viewport::renderImage(const QSize &pixelSize)
     {
         QOpenGLFramebufferObject fbo(pixelSize, format);
         if (fbo.isValid() && fbo.bind()) {
+            Renderer::Options options = m_options;
+            options.drawLightMarkers = options.drawLightMarkers && lightMarkers;
+            m_renderer.setOptions(options);
             m_renderer.render(pixelSize);
+            m_renderer.setOptions(m_options);
             image = fbo.toImage(true);
             fbo.release();
         }

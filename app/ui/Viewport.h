@@ -77,8 +77,9 @@ public:
     void setSceneParameters(const Scene &scene);
     // The current frame rendered again at `pixelSize` into a framebuffer
     // object with this view's renderer and program (File → Export Image).
-    // Null when GL is not up or the size cannot be allocated.
-    QImage renderImage(const QSize &pixelSize);
+    // Null when GL is not up or the size cannot be allocated. Without
+    // `lightMarkers` the frame is the scene alone (what a check compares).
+    QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
     // A white light at the eye that follows the camera: the one light not in
     // world space. A view setting, not part of the scene (currentScene() has
     // no trace of it); added only while fewer than kMaxLights are in use.

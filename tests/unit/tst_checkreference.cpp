@@ -3,6 +3,7 @@
 // confidence (reflect-incident and view-vector together: they always give the
 // same image); none is undetectable there; the exact image passes.
 #include "CheckScene.h"
+#include "core/PixelTerms.h"
 
 #include <QTest>
 
@@ -71,6 +72,33 @@ private slots:
         const CheckReport report = checkRender(image.toImage(m_scene.background), m_reference);
         QCOMPARE(report.worstObject, 0);
         QVERIFY(report.badFraction() > 0.0 && report.badFraction() <= 1.0);
+    }
+
+    // The inspector's terms add up to the reference's pixel, and they are
+    // the equation's: unit N, L, V; R the mirror of L about N.
+    void pixelTermsSumToTheReference()
+    {
+        int checked = 0;
+        for (int y = 0; y < kCheckHeight; y += 7) {
+            for (int x = 0; x < kCheckWidth; x += 7) {
+                const std::optional<PixelTerms> t = pixelTerms(m_reference.hits, m_scene, x, y);
+                QCOMPARE(t.has_value(), m_reference.exact.covered(x, y));
+                if (!t)
+                    continue;
+                ++checked;
+                const glm::dvec3 d = t->intensity - m_reference.exact.colorAt(x, y);
+                QVERIFY(glm::length(d) < 1e-12);
+                QVERIFY(std::abs(glm::length(t->N) - 1.0) < 1e-12);
+                for (const LightTerms &l : t->lights) {
+                    QVERIFY(std::abs(glm::dot(l.R, t->N) - glm::dot(l.L, t->N)) < 1e-12);
+                    QVERIFY(l.attenuation > 0.0 && l.attenuation <= 1.0);
+                }
+            }
+        }
+        QVERIFY(checked > 100);
+        QVERIFY(!pixelTerms(m_reference.hits, m_scene, 0, 0)); // the corner is background
+        const std::optional<PixelTerms> centre = pixelTerms(m_reference.hits, m_scene, kCheckWidth / 2, kCheckHeight / 2);
+        QVERIFY(centre && centre->toText().contains(QStringLiteral("f_att")));
     }
 
 private:

@@ -1,0 +1,92 @@
+#include "PixelTerms.h"
+
+#include "PhongReference.h"
+
+#include <QStringList>
+#include <algorithm>
+#include <cmath>
+
+namespace phonglab {
+
+namespace {
+
+QString vec(const glm::dvec3 &v)
+{
+    return QStringLiteral("(%1, %2, %3)").arg(v.x, 0, 'f', 4).arg(v.y, 0, 'f', 4).arg(v.z, 0, 'f', 4);
+}
+
+} // namespace
+
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, int x, int y)
+{
+    if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
+        return std::nullopt;
+    const ReferenceHit &hit = hits.at(x, y);
+    if (hit.object < 0)
+        return std::nullopt;
+    const CameraSpaceHit at = cameraSpaceHit(hits, hit);
+    const Material &material = scene.objects[std::size_t(hit.object)].material;
+    PixelTerms out;
+    out.x = x;
+    out.y = y;
+    out.object = hit.object;
+    out.positionCamera = at.position;
+    out.positionWorld = glm::dvec3(glm::inverse(scene.camera.viewMatrix()) * glm::dvec4(at.position, 1.0));
+    out.N = at.normal;
+    out.V = glm::normalize(-at.position);
+    out.ambient = scene.ambient * material.ka;
+    out.intensity = out.ambient;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const PointLight &light = scene.lights[i];
+        if (!light.enabled)
+            continue;
+        const CameraSpaceLight cam = toCameraSpace(light, scene.camera.viewMatrix());
+        LightTerms t;
+        t.light = int(i);
+        t.positionCamera = cam.position;
+        const glm::dvec3 toLight = cam.position - at.position;
+        t.distance = glm::length(toLight);
+        t.L = toLight / t.distance;
+        t.R = glm::reflect(-t.L, out.N);
+        t.NdotL = glm::dot(out.N, t.L);
+        t.RdotV = glm::dot(t.R, out.V);
+        t.attenuation = attenuationFactor(cam.attenuation, t.distance);
+        if (t.NdotL > 0.0) {
+            t.diffuse = t.attenuation * cam.diffuse * material.kd * t.NdotL;
+            t.specular = t.attenuation * cam.specular * material.ks * std::pow(std::max(0.0, t.RdotV), material.shininess);
+        }
+        out.intensity += t.diffuse + t.specular;
+        out.lights.push_back(t);
+    }
+    return out;
+}
+
+QString PixelTerms::toText() const
+{
+    QStringList lines;
+    lines << QStringLiteral("pixel (%1, %2), object %3").arg(x).arg(y).arg(object);
+    lines << QStringLiteral("P world  %1").arg(vec(positionWorld));
+    lines << QStringLiteral("P camera %1").arg(vec(positionCamera));
+    lines << QStringLiteral("N        %1").arg(vec(N));
+    lines << QStringLiteral("V        %1").arg(vec(V));
+    lines << QStringLiteral("Ia·ka    %1").arg(vec(ambient));
+    for (const LightTerms &t : lights) {
+        lines << QStringLiteral("light %1").arg(t.light);
+        lines << QStringLiteral("  L      %1").arg(vec(t.L));
+        lines << QStringLiteral("  R      %1").arg(vec(t.R));
+        lines << QStringLiteral("  d      %1").arg(t.distance, 0, 'f', 4);
+        lines << QStringLiteral("  f_att  %1").arg(t.attenuation, 0, 'f', 4);
+        lines << QStringLiteral("  N·L    %1").arg(t.NdotL, 0, 'f', 4);
+        lines << QStringLiteral("  R·V    %1").arg(t.RdotV, 0, 'f', 4);
+        lines << QStringLiteral("  diffuse  %1").arg(vec(t.diffuse));
+        lines << QStringLiteral("  specular %1").arg(vec(t.specular));
+    }
+    lines << QStringLiteral("I exact  %1 -> 8-bit (%2, %3, %4)")
+                 .arg(vec(intensity))
+                 .arg(encodeChannel(intensity.r))
+                 .arg(encodeChannel(intensity.g))
+                 .arg(encodeChannel(intensity.b));
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace phonglab

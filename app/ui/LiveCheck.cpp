@@ -1,0 +1,216 @@
+#include "LiveCheck.h"
+
+#include "LiveShaderController.h"
+#include "PixelInspectorDock.h"
+#include "Viewport.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QMainWindow>
+#include <QMouseEvent>
+#include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+
+namespace phonglab {
+
+namespace {
+
+// Long enough to let an orbit drag or a burst of edits settle, short enough
+// to feel immediate after a compile.
+constexpr int kDebounceMs = 150;
+constexpr int kDividerGrabPx = 6;
+
+QString shortSummary(const CheckResult &result)
+{
+    if (!result.error.isEmpty())
+        return QObject::tr("check: %1").arg(result.error);
+    QString text = checkSummary(result.report);
+    // The status bar shows the verdict and the key; the rule goes in the tooltip.
+    const int rule = text.indexOf(QStringLiteral("): "));
+    return rule > 0 ? text.left(rule + 1) : text;
+}
+
+} // namespace
+
+LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderController *live)
+    : QObject(window)
+    , m_viewport(viewport)
+    , m_checker(new ShaderChecker(this))
+    , m_overlay(new CheckOverlay(viewport))
+    , m_inspector(new PixelInspectorDock(window))
+    , m_status(new QLabel(window))
+    , m_debounce(new QTimer(this))
+{
+    m_status->setObjectName(QStringLiteral("checkStatus"));
+    m_status->setText(tr("check: waiting for the first frame"));
+    window->statusBar()->addPermanentWidget(m_status);
+    window->addDockWidget(Qt::RightDockWidgetArea, m_inspector);
+    m_inspector->hide();
+    createToolBar(window);
+
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(kDebounceMs);
+    connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
+    connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
+    connect(live, &LiveShaderController::programApplied, this, &LiveCheck::schedule);
+    for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged, &Viewport::cameraChanged,
+                        &Viewport::glInitialized})
+        connect(viewport, signal, this, &LiveCheck::schedule);
+    connect(viewport, &Viewport::shippedProgramLoaded, this, &LiveCheck::schedule);
+    connect(viewport, &Viewport::cameraChanged, this, [this] { m_overlay->setCamera(m_viewport->camera()); });
+    viewport->installEventFilter(this);
+}
+
+void LiveCheck::createToolBar(QMainWindow *window)
+{
+    QToolBar *bar = window->addToolBar(tr("Check"));
+    bar->setObjectName(QStringLiteral("checkToolBar"));
+    bar->addWidget(new QLabel(tr(" Overlay: "), bar));
+    m_modes = new QComboBox(bar);
+    m_modes->setObjectName(QStringLiteral("overlayMode"));
+    m_modes->addItem(tr("Off"), int(OverlayMode::Off));
+    m_modes->addItem(tr("Error heatmap"), int(OverlayMode::Heatmap));
+    m_modes->addItem(tr("Split: exact | yours"), int(OverlayMode::Split));
+    m_modes->addItem(tr("Exact"), int(OverlayMode::Exact));
+    m_modes->setToolTip(tr("Compare the view with the exact image of the illumination equation"));
+    bar->addWidget(m_modes);
+    connect(m_modes, &QComboBox::currentIndexChanged, this,
+            [this](int i) { setOverlayMode(OverlayMode(m_modes->itemData(i).toInt())); });
+    m_inspectAction = bar->addAction(tr("Inspect"));
+    m_inspectAction->setCheckable(true);
+    m_inspectAction->setShortcut(Qt::Key_I);
+    m_inspectAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_viewport->addAction(m_inspectAction);
+    m_inspectAction->setToolTip(tr("Click a pixel to see the terms of the equation there (or Ctrl+click) [I]"));
+    connect(m_inspectAction, &QAction::toggled, this, [this](bool on) {
+        m_viewport->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+        if (on)
+            m_inspector->show();
+    });
+}
+
+void LiveCheck::setOverlayMode(OverlayMode mode)
+{
+    m_overlay->setMode(mode);
+    const int index = m_modes->findData(int(mode));
+    if (index != m_modes->currentIndex())
+        m_modes->setCurrentIndex(index);
+}
+
+void LiveCheck::schedule()
+{
+    m_pending = true;
+    m_overlay->setFresh(false);
+    m_debounce->start();
+}
+
+void LiveCheck::run()
+{
+    if (!m_viewport->isRenderReady() || m_viewport->isContextLent() || !m_viewport->isVisible()) {
+        m_debounce->start(); // the frame cannot be had now: try again shortly
+        return;
+    }
+    m_pending = false;
+    const QSize size = m_viewport->size() * m_viewport->devicePixelRatioF();
+    const QImage yours = m_viewport->renderImage(size, false);
+    if (yours.isNull())
+        return;
+    m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…") : tr("checking…"));
+    m_checker->request(m_viewport->renderedScene(), yours.convertToFormat(QImage::Format_RGB888));
+}
+
+bool LiveCheck::isCurrent(const CheckResult &result) const
+{
+    return !m_pending && !m_checker->isBusy() && result.reference
+        && result.yours.size() == m_viewport->size() * m_viewport->devicePixelRatioF();
+}
+
+void LiveCheck::show(const CheckResult &result)
+{
+    m_last = result;
+    m_status->setText(shortSummary(result));
+    m_status->setToolTip(result.error.isEmpty() ? checkSummary(result.report) : result.error);
+    m_overlay->setImages(result.exact, result.heatmap);
+    m_overlay->setFresh(isCurrent(result));
+    if (m_inspectWhenReady && isCurrent(result)) {
+        showInspected(*m_inspectWhenReady);
+        m_inspectWhenReady.reset();
+    }
+    emit checked(result);
+}
+
+void LiveCheck::inspect(QPoint position)
+{
+    const QPoint pixel = (QPointF(position) * m_viewport->devicePixelRatioF()).toPoint();
+    m_inspector->show();
+    if (m_last && isCurrent(*m_last)) {
+        showInspected(pixel);
+        return;
+    }
+    m_inspectWhenReady = pixel;
+    m_inspector->showMessage(tr("Checking the current view; the pixel is shown when that is done."));
+}
+
+void LiveCheck::showInspected(QPoint pixel)
+{
+    const CheckResult &r = *m_last;
+    const std::optional<PixelTerms> terms = pixelTerms(r.reference->hits, r.scene, pixel.x(), pixel.y());
+    if (!terms) {
+        m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
+                                     .arg(pixel.x()).arg(pixel.y()));
+        m_overlay->setArrows(std::nullopt, {});
+        return;
+    }
+    m_inspector->showPixel(*terms, r.yours.pixelColor(pixel), r.exact.pixelColor(pixel));
+    m_overlay->setCamera(m_viewport->camera());
+    m_overlay->setArrows(terms, r.scene.camera.viewMatrix());
+}
+
+bool LiveCheck::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched != m_viewport)
+        return false;
+    if (event->type() == QEvent::Resize) {
+        m_overlay->setGeometry(m_viewport->rect());
+        schedule();
+        return false;
+    }
+    if (dragDivider(event))
+        return true;
+    if (event->type() == QEvent::MouseButtonPress) {
+        const auto *mouse = static_cast<QMouseEvent *>(event);
+        const bool inspecting = m_inspectAction->isChecked() || mouse->modifiers().testFlag(Qt::ControlModifier);
+        if (mouse->button() == Qt::LeftButton && inspecting) {
+            inspect(mouse->position().toPoint());
+            return true;
+        }
+    }
+    return false;
+}
+
+// In split mode a press near the divider moves the divider, not the camera.
+bool LiveCheck::dragDivider(QEvent *event)
+{
+    if (m_overlay->mode() != OverlayMode::Split)
+        return false;
+    const auto type = event->type();
+    if (type != QEvent::MouseButtonPress && type != QEvent::MouseMove && type != QEvent::MouseButtonRelease)
+        return false;
+    const auto *mouse = static_cast<QMouseEvent *>(event);
+    const double x = mouse->position().x();
+    if (type == QEvent::MouseButtonPress && mouse->button() == Qt::LeftButton
+        && std::abs(x - m_overlay->divider() * m_viewport->width()) <= kDividerGrabPx) {
+        m_draggingDivider = true;
+        return true;
+    }
+    if (!m_draggingDivider)
+        return false;
+    m_overlay->setDivider(x / std::max(1, m_viewport->width()));
+    if (type == QEvent::MouseButtonRelease)
+        m_draggingDivider = false;
+    return true;
+}
+
+} // namespace phonglab

@@ -1,0 +1,76 @@
+#pragma once
+#include "CheckOverlay.h"
+#include "ShaderChecker.h"
+
+#include <QObject>
+#include <QPoint>
+#include <optional>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QMainWindow;
+class QTimer;
+class QToolBar;
+
+namespace phonglab {
+
+class LiveShaderController;
+class PixelInspectorDock;
+class Viewport;
+
+// The editor's check (issue 12, C and D): after every applied program, and
+// whenever the view or the scene changes, the frame is checked against the
+// exact image in the background (ShaderChecker; typing is never blocked and
+// the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
+// the status bar, the overlays over the viewport, and the pixel inspector.
+class LiveCheck : public QObject
+{
+    Q_OBJECT
+
+public:
+    LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderController *live);
+
+    void setOverlayMode(OverlayMode mode);
+    OverlayMode overlayMode() const { return m_overlay->mode(); }
+    // Inspects the pixel under `position` (viewport coordinates): at once
+    // when the newest check shows the current view, else when it arrives.
+    void inspect(QPoint position);
+
+    const std::optional<CheckResult> &lastResult() const { return m_last; }
+    bool isChecking() const { return m_pending || m_checker->isBusy(); }
+    QLabel *statusLabel() const { return m_status; }
+    CheckOverlay *overlay() const { return m_overlay; }
+    PixelInspectorDock *inspector() const { return m_inspector; }
+    QAction *inspectAction() const { return m_inspectAction; }
+
+signals:
+    void checked(const phonglab::CheckResult &result);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    void createToolBar(QMainWindow *window);
+    void schedule();
+    void run();
+    void show(const CheckResult &result);
+    void showInspected(QPoint pixel);
+    bool isCurrent(const CheckResult &result) const;
+    bool dragDivider(QEvent *event);
+
+    Viewport *m_viewport = nullptr;
+    ShaderChecker *m_checker = nullptr;
+    CheckOverlay *m_overlay = nullptr;
+    PixelInspectorDock *m_inspector = nullptr;
+    QLabel *m_status = nullptr;
+    QComboBox *m_modes = nullptr;
+    QAction *m_inspectAction = nullptr;
+    QTimer *m_debounce = nullptr;
+    std::optional<CheckResult> m_last;
+    std::optional<QPoint> m_inspectWhenReady; // a pixel, in the frame's pixels
+    bool m_pending = false;                   // scheduled, not yet handed to the checker
+    bool m_draggingDivider = false;
+};
+
+} // namespace phonglab

@@ -1,0 +1,65 @@
+#pragma once
+#include "core/Scene.h"
+#include "core/ShaderCheck.h"
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QHash>
+#include <QImage>
+#include <QObject>
+#include <memory>
+#include <optional>
+
+namespace phonglab {
+
+// One finished check of the window's frame against the exact image.
+struct CheckResult {
+    quint64 generation = 0;
+    Scene scene;                                   // as checked (headlight included)
+    std::shared_ptr<const CheckReference> reference;
+    QImage yours;                                  // the frame, without light markers
+    QImage exact;                                  // the reference, 8-bit
+    QImage heatmap;                                // checkHeatmap()
+    CheckReport report;
+    QString error;                                 // no reference could be made
+    double milliseconds = 0.0;                     // request to result
+};
+
+// Runs checks off the GUI thread, one at a time; while one runs only the
+// newest request waits (an older waiting one is dropped). The reference is
+// kept between checks of the same scene at the same size, so after a shader
+// edit only the comparison runs; the meshes are kept by meshKey() across
+// scene edits that do not change them.
+class ShaderChecker : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit ShaderChecker(QObject *parent = nullptr);
+    ~ShaderChecker() override;
+
+    void request(const Scene &scene, const QImage &yours);
+    bool isBusy() const { return m_watcher.isRunning() || m_waiting.has_value(); }
+
+signals:
+    void finished(const phonglab::CheckResult &result);
+
+private:
+    struct Request {
+        quint64 generation = 0;
+        Scene scene;
+        QImage yours;
+        QElapsedTimer clock;
+    };
+    struct Cache; // touched only by the one running job
+
+    void start(Request request);
+    void onFinished();
+
+    QFutureWatcher<CheckResult> m_watcher;
+    std::optional<Request> m_waiting;
+    std::shared_ptr<Cache> m_cache;
+    quint64 m_generation = 0;
+};
+
+} // namespace phonglab

@@ -1,0 +1,135 @@
+// The editor's check, end to end in the real window: the shipped shader gets
+// ✓; a reflect(L, N) typed into it gets ✗ with reflect-incident, and an
+// error heatmap that is non-zero where that mistake shows and zero elsewhere;
+// the overlay draws it; Ctrl+click inspects a pixel; undoing the mistake
+// brings ✓ back.
+#include "TestPaths.h"
+#include "UiTestWindow.h"
+#include "ui/CheckOverlay.h"
+#include "ui/LiveCheck.h"
+#include "ui/MainWindow.h"
+#include "ui/PixelInspectorDock.h"
+#include "ui/ShaderEditor.h"
+#include "ui/Viewport.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QLabel>
+#include <QTest>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+namespace {
+
+constexpr int kCheckTimeoutMs = 30000;
+constexpr int kTolerance = kDefaultCheckToleranceSteps;
+
+int maxChannelDifference(QRgb a, QRgb b)
+{
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+}
+
+} // namespace
+
+class TestLiveCheck : public QObject, public UiTestWindow
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { m_env.isolate(); }
+    void cleanup() { m_window.reset(); }
+
+    void wrongShaderGetsCrossAndHeatmap()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        LiveCheck *check = m_window->liveCheck();
+        QVERIFY(waitForVerdict(true));
+        QVERIFY2(check->statusLabel()->text().startsWith(QStringLiteral("✓")), qPrintable(check->statusLabel()->text()));
+
+        replaceInFragment(QStringLiteral("reflect(-L, N)"), QStringLiteral("reflect(L, N)"));
+        QVERIFY(waitForVerdict(false));
+        const CheckResult &result = *check->lastResult();
+        const QString status = check->statusLabel()->text();
+        QVERIFY2(status.startsWith(QStringLiteral("✗")) && status.contains(QStringLiteral("reflect-incident")),
+                 qPrintable(status));
+        QCOMPARE(result.report.diagnosis.findings.front().key, ShaderMistake::ReflectIncident);
+
+        // Where the mistake shows (its image off the exact one by more than
+        // the tolerance) the heatmap is red-to-yellow, elsewhere dark green.
+        const CheckReference &reference = *result.reference;
+        const QImage mistaken = std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
+                                    return p.first == ShaderMistake::ReflectIncident;
+                                })->second.toImage(reference.background);
+        const std::vector<int> errors = checkErrorSteps(result.yours, reference);
+        qint64 shows = 0, showsAndOff = 0, hidden = 0, hiddenAndExact = 0;
+        for (int y = 0; y < result.exact.height(); ++y) {
+            for (int x = 0; x < result.exact.width(); ++x) {
+                const int error = errors[reference.exact.index(x, y)];
+                if (error < 0)
+                    continue;
+                const bool mistakeShows = maxChannelDifference(mistaken.pixel(x, y), result.exact.pixel(x, y)) > kTolerance;
+                const QRgb heat = result.heatmap.pixel(x, y);
+                if (mistakeShows) {
+                    ++shows;
+                    showsAndOff += error > kTolerance && qRed(heat) >= 128;
+                } else {
+                    ++hidden;
+                    hiddenAndExact += error <= kTolerance && qRed(heat) < 128;
+                }
+            }
+        }
+        QVERIFY2(shows > 1000 && hidden > 1000, qPrintable(QStringLiteral("%1 %2").arg(shows).arg(hidden)));
+        QVERIFY2(showsAndOff >= 0.97 * shows, qPrintable(QStringLiteral("%1 of %2").arg(showsAndOff).arg(shows)));
+        QVERIFY2(hiddenAndExact >= 0.995 * hidden, qPrintable(QStringLiteral("%1 of %2").arg(hiddenAndExact).arg(hidden)));
+
+        // The overlay draws that heatmap over the view.
+        check->setOverlayMode(OverlayMode::Heatmap);
+        QVERIFY(check->overlay()->isVisible());
+        const QImage overlay = check->overlay()->grab().toImage();
+        const QPoint worst = result.report.comparison.worstPixel;
+        if (overlay.size() == result.heatmap.size())
+            QCOMPARE(overlay.pixel(worst), result.heatmap.pixel(worst));
+        check->setOverlayMode(OverlayMode::Split);
+        check->setOverlayMode(OverlayMode::Off);
+        QVERIFY(!check->overlay()->isVisible());
+
+        // Ctrl+click on the ellipsoid: the exact terms there, copyable.
+        const QPoint centre = m_window->viewport()->rect().center() + QPoint(10, 10);
+        QTest::mouseClick(m_window->viewport(), Qt::LeftButton, Qt::ControlModifier, centre);
+        QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")), kCheckTimeoutMs);
+        QVERIFY(check->inspector()->text().contains(QStringLiteral("N·L")));
+        QVERIFY(check->overlay()->hasArrows());
+
+        // Undo the mistake: ✓ again.
+        replaceInFragment(QStringLiteral("reflect(L, N)"), QStringLiteral("reflect(-L, N)"));
+        QVERIFY(waitForVerdict(true));
+        QVERIFY(check->statusLabel()->text().startsWith(QStringLiteral("✓")));
+    }
+
+private:
+    void replaceInFragment(const QString &from, const QString &to)
+    {
+        ShaderEditor *editor = fragmentEditor();
+        QVERIFY2(editor->findFirst(from, false, true, false, false, true, 0, 0), qPrintable(from));
+        editor->setFocus();
+        QTest::keyClicks(editor, to);
+        QVERIFY(editor->text().contains(to));
+    }
+
+    // Waits for a finished check of the current frame with this verdict.
+    bool waitForVerdict(bool passed)
+    {
+        LiveCheck *check = m_window->liveCheck();
+        return QTest::qWaitFor(
+            [&] {
+                return !check->isChecking() && check->lastResult() && check->lastResult()->reference
+                    && check->lastResult()->report.passed() == passed;
+            },
+            kCheckTimeoutMs);
+    }
+};
+
+QTEST_MAIN(TestLiveCheck)
+#include "tst_livecheck.moc"
