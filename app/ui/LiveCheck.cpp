@@ -17,9 +17,6 @@ namespace phonglab {
 
 namespace {
 
-// Long enough to let an orbit drag or a burst of edits settle, short enough
-// to feel immediate after a compile.
-constexpr int kDebounceMs = 150;
 constexpr int kDividerGrabPx = 6;
 
 QString shortSummary(const CheckResult &result)
@@ -51,14 +48,14 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     createToolBar(window);
 
     m_debounce->setSingleShot(true);
-    m_debounce->setInterval(kDebounceMs);
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
     connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
-    connect(live, &LiveShaderController::programApplied, this, &LiveCheck::schedule);
+    // A new program is checked at once; view and scene changes come in bursts.
+    connect(live, &LiveShaderController::programApplied, this, [this] { schedule(0); });
     for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged, &Viewport::cameraChanged,
                         &Viewport::glInitialized})
-        connect(viewport, signal, this, &LiveCheck::schedule);
-    connect(viewport, &Viewport::shippedProgramLoaded, this, &LiveCheck::schedule);
+        connect(viewport, signal, this, [this] { schedule(); });
+    connect(viewport, &Viewport::shippedProgramLoaded, this, [this] { schedule(); });
     connect(viewport, &Viewport::cameraChanged, this, [this] { m_overlay->setCamera(m_viewport->camera()); });
     viewport->installEventFilter(this);
 }
@@ -99,17 +96,18 @@ void LiveCheck::setOverlayMode(OverlayMode mode)
         m_modes->setCurrentIndex(index);
 }
 
-void LiveCheck::schedule()
+void LiveCheck::schedule(int delayMs)
 {
     m_pending = true;
     m_overlay->setFresh(false);
-    m_debounce->start();
+    if (!m_debounce->isActive() || delayMs < m_debounce->remainingTime())
+        m_debounce->start(delayMs);
 }
 
 void LiveCheck::run()
 {
     if (!m_viewport->isRenderReady() || m_viewport->isContextLent() || !m_viewport->isVisible()) {
-        m_debounce->start(); // the frame cannot be had now: try again shortly
+        m_debounce->start(kCheckDebounceMs); // the frame cannot be had now: try again shortly
         return;
     }
     m_pending = false;

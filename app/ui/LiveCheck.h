@@ -24,6 +24,8 @@ class Viewport;
 // exact image in the background (ShaderChecker; typing is never blocked and
 // the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
 // the status bar, the overlays over the viewport, and the pixel inspector.
+inline constexpr int kCheckDebounceMs = 150; // lets an orbit drag or a burst of edits settle
+
 class LiveCheck : public QObject
 {
     Q_OBJECT
@@ -52,7 +54,7 @@ protected:
 
 private:
     void createToolBar(QMainWindow *window);
-    void schedule();
+    void schedule(int delayMs = kCheckDebounceMs);
     void run();
     void show(const CheckResult &result);
     void showInspected(QPoint pixel);

@@ -7,6 +7,8 @@
 #include "render/GlFormat.h"
 #include "ui/LightsDock.h"
 #include "ui/LiveShaderController.h"
+#include "ui/CheckOverlay.h"
+#include "ui/LiveCheck.h"
 #include "ui/MainWindow.h"
 #include "ui/PerformanceDock.h"
 #include "ui/SceneEditDocks.h"
@@ -88,12 +90,38 @@ int main(int argc, char **argv)
     settle(800);
     ok = save(window, out, "lights.png") && ok;
 
+    // The check on its own scene with reflect(L, N) typed in: the verdict in
+    // the status bar, the heatmap, the split view, the pixel inspector.
+    fragment->setCode(code.replace("normalise(", "normalize("));
+    if (!window.openScene(assetPath(QStringLiteral("scenes/check.json")), &error)) {
+        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
+        return 1;
+    }
+    settle(1500);
+    QByteArray wrong = fragment->code();
+    wrong.replace("reflect(-L, N)", "reflect(L, N)");
+    fragment->setCode(wrong);
+    window.liveShaders()->buildNow();
+    settle(3000);
+    LiveCheck *check = window.liveCheck();
+    check->setOverlayMode(OverlayMode::Heatmap);
+    settle(500);
+    ok = save(window, out, "check-heatmap.png") && ok;
+    check->setOverlayMode(OverlayMode::Split);
+    check->overlay()->setDivider(0.45);
+    settle(500);
+    ok = save(window, out, "check-split.png") && ok;
+    check->setOverlayMode(OverlayMode::Off);
+    check->inspect(window.viewport()->rect().center() + QPoint(40, 10));
+    settle(1500);
+    ok = save(window, out, "check-inspector.png") && ok;
+    fragment->setCode(code);
+    window.liveShaders()->buildNow();
+
     // Fit to budget on the sphere scene: the dock measures the view with the
     // phonglab binary beside this tool's build folder.
     if (qEnvironmentVariableIsEmpty("PHONGLAB_EXE"))
         qputenv("PHONGLAB_EXE", (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab")).toUtf8());
-    fragment->setCode(code.replace("normalise(", "normalize("));
-    window.liveShaders()->buildNow();
     if (!window.openScene(assetPath(QStringLiteral("scenes/sphere.json")), &error)) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
         return 1;
