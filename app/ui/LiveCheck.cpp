@@ -2,6 +2,7 @@
 
 #include "LiveShaderController.h"
 #include "PixelInspectorDock.h"
+#include "SceneLoadJob.h"
 #include "Viewport.h"
 
 #include <QAction>
@@ -60,6 +61,12 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     viewport->installEventFilter(this);
 }
 
+void LiveCheck::pauseWhileLoading(const SceneLoadJob *job)
+{
+    m_loadJob = job;
+    connect(job, &SceneLoadJob::started, m_checker, &ShaderChecker::cancel);
+}
+
 void LiveCheck::createToolBar(QMainWindow *window)
 {
     QToolBar *bar = window->addToolBar(tr("Check"));
@@ -106,7 +113,8 @@ void LiveCheck::schedule(int delayMs)
 
 void LiveCheck::run()
 {
-    if (!m_viewport->isRenderReady() || m_viewport->isContextLent() || !m_viewport->isVisible()) {
+    if (!m_viewport->isRenderReady() || m_viewport->isContextLent() || !m_viewport->isVisible()
+        || (m_loadJob && m_loadJob->isRunning())) {
         m_debounce->start(kCheckDebounceMs); // the frame cannot be had now: try again shortly
         return;
     }

@@ -17,6 +17,7 @@ namespace phonglab {
 
 class LiveShaderController;
 class PixelInspectorDock;
+class SceneLoadJob;
 class Viewport;
 
 // The editor's check (issue 12, C and D): after every applied program, and
@@ -32,6 +33,9 @@ class LiveCheck : public QObject
 
 public:
     LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderController *live);
+    // No check runs while `job` loads a scene (the load gets every core);
+    // the loaded scene is checked when it is shown.
+    void pauseWhileLoading(const SceneLoadJob *job);
 
     void setOverlayMode(OverlayMode mode);
     OverlayMode overlayMode() const { return m_overlay->mode(); }
@@ -73,6 +77,7 @@ private:
     std::optional<QPoint> m_inspectWhenReady; // a pixel, in the frame's pixels
     bool m_pending = false;                   // scheduled, not yet handed to the checker
     bool m_draggingDivider = false;
+    const SceneLoadJob *m_loadJob = nullptr;
 };
 
 } // namespace phonglab

@@ -100,6 +100,7 @@ MainWindow::MainWindow(QWidget *parent)
     // After the status bar: its ✓/✗ sits beside the frame statistics.
     m_liveCheck = new LiveCheck(this, m_viewport, m_liveShaders);
     connectLoading();
+    m_liveCheck->pauseWhileLoading(m_loadJob);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     // Queued: the error is raised from inside initializeGL / paintGL, where a

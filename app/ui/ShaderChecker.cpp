@@ -2,6 +2,8 @@
 
 #include "mesh/SceneMeshes.h"
 
+#include <QScopeGuard>
+#include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 
 namespace phonglab {
@@ -32,14 +34,16 @@ struct ShaderChecker::Cache {
         return out;
     }
 
-    std::shared_ptr<const CheckReference> referenceFor(const Scene &s, QSize sz, QString *error)
+    std::shared_ptr<const CheckReference> referenceFor(const Scene &s, QSize sz, QString *error,
+                                                       const std::atomic<bool> &cancelled)
     {
         if (reference && scene && *scene == s && size == sz)
             return reference;
         const auto objectMeshes = this->objectMeshes(s, error);
         if (!objectMeshes)
             return nullptr;
-        std::optional<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), error);
+        std::optional<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), error,
+                                                             [&](double) { return !cancelled.load(); });
         if (!made)
             return nullptr;
         reference = std::make_shared<const CheckReference>(std::move(*made));
@@ -72,15 +76,29 @@ void ShaderChecker::request(const Scene &scene, const QImage &yours)
         start(std::move(r));
 }
 
+void ShaderChecker::cancel()
+{
+    m_waiting.reset();
+    if (m_watcher.isRunning())
+        m_cancelled->store(true);
+}
+
 void ShaderChecker::start(Request request)
 {
     std::shared_ptr<Cache> cache = m_cache;
-    m_watcher.setFuture(QtConcurrent::run([cache, request = std::move(request)]() {
+    m_cancelled = std::make_shared<std::atomic<bool>>(false);
+    m_watcher.setFuture(QtConcurrent::run([cache, cancelled = m_cancelled, request = std::move(request)]() {
+        // Background work must never take a core from the window or a mesh
+        // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
+        // threads started from here inherit. The pool thread is reused, so
+        // its priority is put back afterwards.
+        QThread::currentThread()->setPriority(QThread::IdlePriority);
+        const auto restore = qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
         CheckResult result;
         result.generation = request.generation;
         result.scene = request.scene;
         result.yours = request.yours;
-        result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error);
+        result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
         if (result.reference) {
             result.report = checkRender(request.yours, *result.reference);
             result.exact = result.reference->exact.toImage(result.reference->background);
@@ -94,6 +112,14 @@ void ShaderChecker::start(Request request)
 void ShaderChecker::onFinished()
 {
     const CheckResult result = m_watcher.result();
+    if (m_cancelled->load()) {
+        if (m_waiting) {
+            Request next = std::move(*m_waiting);
+            m_waiting.reset();
+            start(std::move(next));
+        }
+        return;
+    }
     if (m_waiting) {
         Request next = std::move(*m_waiting);
         m_waiting.reset();

@@ -7,6 +7,7 @@
 #include <QHash>
 #include <QImage>
 #include <QObject>
+#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -39,6 +40,9 @@ public:
     ~ShaderChecker() override;
 
     void request(const Scene &scene, const QImage &yours);
+    // Stops the running check as soon as it can (its result is dropped) and
+    // forgets the waiting one: a scene load wants every core.
+    void cancel();
     bool isBusy() const { return m_watcher.isRunning() || m_waiting.has_value(); }
 
 signals:
@@ -60,6 +64,7 @@ private:
     std::optional<Request> m_waiting;
     std::shared_ptr<Cache> m_cache;
     quint64 m_generation = 0;
+    std::shared_ptr<std::atomic<bool>> m_cancelled = std::make_shared<std::atomic<bool>>(false);
 };
 
 } // namespace phonglab
