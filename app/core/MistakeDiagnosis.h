@@ -47,4 +47,11 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exa
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps,
                                   const glm::dvec3 &background);
 
+// The same on images already encoded as the GPU writes them
+// (ReferenceImage::toImage()), which is all the diagnosis looks at: what a
+// caller judging many renders against one reference keeps.
+using MistakeImages = std::vector<std::pair<ShaderMistake, QImage>>;
+MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, const MistakeImages &mistaken,
+                                  const std::vector<std::uint8_t> &compared, int toleranceSteps);
+
 } // namespace phonglab

@@ -47,12 +47,14 @@ std::optional<CheckReference> makeCheckReference(const Scene &scene,
                     *error = QStringLiteral("cancelled");
                 return std::nullopt;
             }
-            out.mistaken.emplace_back(mistakes[m], shadeSceneHits(*hits, scene, ReferenceShader(ReferenceShading::Phong, mistakes[m])));
+            const ReferenceShader shader(ReferenceShading::Phong, mistakes[m]);
+            out.mistaken.emplace_back(mistakes[m], shadeSceneHits(*hits, scene, shader).toImage(out.background));
         }
     }
-    out.undetectable = diagnoseMistakes(out.exact.toImage(out.background), out.exact, out.mistaken, out.compared,
-                                        kDefaultCheckToleranceSteps, out.background)
-                           .undetectable;
+    out.exactImage = out.exact.toImage(out.background);
+    out.undetectable =
+        diagnoseMistakes(out.exactImage, out.exactImage, out.mistaken, out.compared, kDefaultCheckToleranceSteps)
+            .undetectable;
     out.hits = std::move(*hits);
     return out;
 }
@@ -74,8 +76,8 @@ CheckReport checkRender(const QImage &yours, const CheckReference &reference, in
         report.worstObject = reference.hits.at(w.x(), w.y()).object;
     }
     if (!report.passed())
-        report.diagnosis = diagnoseMistakes(yours, reference.exact, reference.mistaken, reference.compared,
-                                            toleranceSteps, reference.background);
+        report.diagnosis =
+            diagnoseMistakes(yours, reference.exactImage, reference.mistaken, reference.compared, toleranceSteps);
     report.diagnosis.undetectable = reference.undetectable;
     return report;
 }
@@ -107,10 +109,34 @@ std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &refe
     return out;
 }
 
+namespace {
+
+QString psnrText(const ImageComparison &c)
+{
+    return std::isinf(c.psnr) ? QStringLiteral("PSNR ∞") : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+}
+
+} // namespace
+
+QString checkStatusLine(const CheckReport &report)
+{
+    const QString psnr = psnrText(report.comparison);
+    if (report.passed())
+        return QStringLiteral("✓ %1").arg(psnr);
+    const MistakeDiagnosis &d = report.diagnosis;
+    if (d.unexplained() || d.findings.empty())
+        return QStringLiteral("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
+    const MistakeFinding &top = d.findings.front();
+    QString line = QStringLiteral("✗ %1 — %2: %3").arg(psnr, shaderMistakeKey(top.key), shaderMistakeSummary(top.key));
+    for (ShaderMistake m : top.also)
+        line += QStringLiteral(" (or %1: %2)").arg(shaderMistakeKey(m), shaderMistakeSummary(m));
+    return line;
+}
+
 QString checkSummary(const CheckReport &report)
 {
     const ImageComparison &c = report.comparison;
-    const QString psnr = std::isinf(c.psnr) ? QStringLiteral("PSNR ∞") : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+    const QString psnr = psnrText(c);
     if (report.passed())
         return QStringLiteral("✓ matches the exact image (%1, max %2/255)").arg(psnr).arg(c.maxError);
     QString line = QStringLiteral("✗ %1, max %2/255, %3 % of pixels off")

@@ -25,9 +25,11 @@ struct CheckReference {
     SceneHits hits;
     ReferenceShader shader;        // the exact shading of the scene's method
     ReferenceImage exact;
-    // The reference with each classic mistake made, when the exact shading
-    // is Phong (the mistakes are mistakes of Phong's equation); else empty.
-    std::vector<std::pair<ShaderMistake, ReferenceImage>> mistaken;
+    QImage exactImage; // exact, 8-bit as the GPU writes it
+    // The reference with each classic mistake made, 8-bit (all the diagnosis
+    // looks at, at 4 bytes a pixel), when the exact shading is Phong (the
+    // mistakes are mistakes of Phong's equation); else empty.
+    MistakeImages mistaken;
     std::vector<std::uint8_t> compared; // covered pixels away from every silhouette
     glm::dvec3 background{0.0};
     std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
@@ -67,8 +69,11 @@ QImage checkHeatmap(const QImage &yours, const CheckReference &reference);
 std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &reference);
 
 // "✓ matches the exact image (PSNR 58.2 dB, max 1/255)" or
-// "✗ PSNR 21.4 dB, max 87/255 — reflect-incident: ..." — one line for a
-// status bar.
+// "✗ PSNR 21.4 dB, max 87/255, 12.0 % of pixels off — reflect-incident
+// or view-vector (100 %): <the rule>" — everything in one line.
 QString checkSummary(const CheckReport &report);
+// The same for a status bar: "✓ 58.2 dB" or "✗ 21.4 dB — reflect-incident:
+// reflect(L, N) instead of reflect(-L, N) (or view-vector)".
+QString checkStatusLine(const CheckReport &report);
 
 } // namespace phonglab

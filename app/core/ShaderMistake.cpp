@@ -55,6 +55,27 @@ constexpr std::array kRules = {
               "where the equation is evaluated: per fragment, with the interpolated normal; evaluated per "
               "vertex and interpolated, highlights smear and vanish between vertices"},
 };
+constexpr std::array kSummaries = {
+    std::pair{ShaderMistake::NormalMatrix, "N moved by the model-view matrix, not its inverse transpose"},
+    std::pair{ShaderMistake::Unnormalized, "N not normalised after interpolation"},
+    std::pair{ShaderMistake::LightSpace, "the light's world position used as a camera-space one"},
+    std::pair{ShaderMistake::HomogeneousW, "the position moved with w = 0"},
+    std::pair{ShaderMistake::ReflectIncident, "reflect(L, N) instead of reflect(-L, N)"},
+    std::pair{ShaderMistake::ViewVector, "V points away from the eye"},
+    std::pair{ShaderMistake::Attenuation, "f_att missing or wrong"},
+    std::pair{ShaderMistake::NegativeLight, "N·L not clamped with max(0, ·)"},
+    std::pair{ShaderMistake::BackfaceSpecular, "a highlight where N·L <= 0"},
+    std::pair{ShaderMistake::Ambient, "Ia·ka missing or wrong"},
+    std::pair{ShaderMistake::Gouraud, "lit per vertex, not per fragment"},
+};
+
+QString textOf(const auto &table, ShaderMistake mistake)
+{
+    for (const auto &[m, text] : table) // UTF-8 (·, ²), unlike the keys
+        if (m == mistake)
+            return QString::fromUtf8(text);
+    return {};
+}
 } // namespace
 
 QString shaderMistakeKey(ShaderMistake mistake)
@@ -74,10 +95,12 @@ QStringList shaderMistakeKeys()
 
 QString shaderMistakeRule(ShaderMistake mistake)
 {
-    for (const auto &[m, rule] : kRules) // UTF-8 (·, ²), unlike the keys
-        if (m == mistake)
-            return QString::fromUtf8(rule);
-    return {};
+    return textOf(kRules, mistake);
+}
+
+QString shaderMistakeSummary(ShaderMistake mistake)
+{
+    return textOf(kSummaries, mistake);
 }
 
 bool isPointwiseMistake(ShaderMistake mistake)

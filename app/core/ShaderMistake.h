@@ -30,6 +30,8 @@ QStringList shaderMistakeKeys(); // in the order of the enum
 // The term of the equation a mistake breaks and the rule it breaks, in a
 // sentence for the user ("the specular term: R must be reflect(-L, N), ...").
 QString shaderMistakeRule(ShaderMistake mistake);
+// The mistake in a few words, for a status bar ("reflect(L, N) instead of reflect(-L, N)").
+QString shaderMistakeSummary(ShaderMistake mistake);
 
 // Whether the mistake is made where the equation is evaluated at a point
 // (mistakenPhongTerms() applies it); the others change what reaches that

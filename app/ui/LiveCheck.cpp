@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QMainWindow>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QStatusBar>
 #include <QTimer>
@@ -24,10 +25,7 @@ QString shortSummary(const CheckResult &result)
 {
     if (!result.error.isEmpty())
         return QObject::tr("check: %1").arg(result.error);
-    QString text = checkSummary(result.report);
-    // The status bar shows the verdict and the key; the rule goes in the tooltip.
-    const int rule = text.indexOf(QStringLiteral("): "));
-    return rule > 0 ? text.left(rule + 1) : text;
+    return checkStatusLine(result.report); // the whole rule goes in the tooltip
 }
 
 } // namespace
@@ -67,9 +65,20 @@ void LiveCheck::pauseWhileLoading(const SceneLoadJob *job)
     connect(job, &SceneLoadJob::started, m_checker, &ShaderChecker::cancel);
 }
 
+void LiveCheck::addViewActions(QMenu *view)
+{
+    view->addSeparator();
+    QAction *dock = m_inspector->toggleViewAction();
+    dock->setText(tr("Pi&xel Inspector"));
+    view->addAction(dock);
+    QAction *bar = m_toolBar->toggleViewAction();
+    bar->setText(tr("&Check Toolbar"));
+    view->addAction(bar);
+}
+
 void LiveCheck::createToolBar(QMainWindow *window)
 {
-    QToolBar *bar = window->addToolBar(tr("Check"));
+    QToolBar *bar = m_toolBar = window->addToolBar(tr("Check"));
     bar->setObjectName(QStringLiteral("checkToolBar"));
     bar->addWidget(new QLabel(tr(" Overlay: "), bar));
     m_modes = new QComboBox(bar);

@@ -10,6 +10,7 @@ class QAction;
 class QComboBox;
 class QLabel;
 class QMainWindow;
+class QMenu;
 class QTimer;
 class QToolBar;
 
@@ -36,6 +37,8 @@ public:
     // No check runs while `job` loads a scene (the load gets every core);
     // the loaded scene is checked when it is shown.
     void pauseWhileLoading(const SceneLoadJob *job);
+    // The View menu's entries: the inspector dock, the Check toolbar.
+    void addViewActions(QMenu *view);
 
     void setOverlayMode(OverlayMode mode);
     OverlayMode overlayMode() const { return m_overlay->mode(); }
@@ -72,6 +75,7 @@ private:
     QLabel *m_status = nullptr;
     QComboBox *m_modes = nullptr;
     QAction *m_inspectAction = nullptr;
+    QToolBar *m_toolBar = nullptr;
     QTimer *m_debounce = nullptr;
     std::optional<CheckResult> m_last;
     std::optional<QPoint> m_inspectWhenReady; // a pixel, in the frame's pixels

@@ -95,10 +95,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_shaderDock->raise(); // still the tab shown first
     createFileMenu();
     m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
+    // Before the status bar: the verdict comes first among its permanent
+    // widgets, where a long diagnosis pushes nothing else out of sight.
+    m_liveCheck = new LiveCheck(this, m_viewport, m_liveShaders);
     createViewMenu();
     createStatusBar();
-    // After the status bar: its ✓/✗ sits beside the frame statistics.
-    m_liveCheck = new LiveCheck(this, m_viewport, m_liveShaders);
     connectLoading();
     m_liveCheck->pauseWhileLoading(m_loadJob);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
@@ -263,6 +264,7 @@ void MainWindow::createViewMenu()
     performance->setText(tr("&Performance Dock"));
     view->addAction(performance);
     m_editDocks->addDockToggles(view);
+    m_liveCheck->addViewActions(view);
 }
 
 void MainWindow::createStatusBar()

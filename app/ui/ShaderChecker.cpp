@@ -101,7 +101,7 @@ void ShaderChecker::start(Request request)
         result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
         if (result.reference) {
             result.report = checkRender(request.yours, *result.reference);
-            result.exact = result.reference->exact.toImage(result.reference->background);
+            result.exact = result.reference->exactImage;
             result.heatmap = checkHeatmap(request.yours, *result.reference);
         }
         result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;

@@ -156,6 +156,17 @@ private slots:
         QVERIFY(!e.value(QStringLiteral("message")).toString().isEmpty());
     }
 
+    void uniformScaleHidesNormalMatrix()
+    {
+        // The shipped sphere scene scales nothing: N moved by the model-view
+        // matrix is still perpendicular, so that mistake cannot show there.
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/sphere.json")),
+                                          QStringLiteral("--size"), kSize, QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray hidden = parseJson(r).value(QStringLiteral("undetectable")).toArray();
+        QVERIFY2(hidden.contains(QStringLiteral("normal-matrix")), r.out.constData());
+    }
+
     void badSceneIsAnError()
     {
         const ProcessRun r = runPhonglab({QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")),

@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QLabel>
+#include <QPushButton>
 #include <QTest>
 
 using namespace phonglab;
@@ -61,7 +62,7 @@ private slots:
         const CheckReference &reference = *result.reference;
         const QImage mistaken = std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
                                     return p.first == ShaderMistake::ReflectIncident;
-                                })->second.toImage(reference.background);
+                                })->second;
         const std::vector<int> errors = checkErrorSteps(result.yours, reference);
         qint64 shows = 0, showsAndOff = 0, hidden = 0, hiddenAndExact = 0;
         for (int y = 0; y < result.exact.height(); ++y) {
@@ -101,6 +102,10 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")), kCheckTimeoutMs);
         QVERIFY(check->inspector()->text().contains(QStringLiteral("N·L")));
         QVERIFY(check->overlay()->hasArrows());
+        auto *copy = check->inspector()->findChild<QPushButton *>();
+        QVERIFY(copy && copy->isEnabled());
+        copy->click();
+        QCOMPARE(QApplication::clipboard()->text(), check->inspector()->text());
 
         // Undo the mistake: ✓ again.
         replaceInFragment(QStringLiteral("reflect(L, N)"), QStringLiteral("reflect(-L, N)"));

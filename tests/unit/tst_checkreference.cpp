@@ -51,7 +51,7 @@ private slots:
         const ShaderMistake mistake = *shaderMistakeFromKey(key);
         const auto it = std::find_if(m_reference.mistaken.begin(), m_reference.mistaken.end(),
                                      [&](const auto &p) { return p.first == mistake; });
-        const CheckReport report = checkRender(it->second.toImage(m_scene.background), m_reference);
+        const CheckReport report = checkRender(it->second, m_reference);
         QVERIFY(!report.passed());
         QVERIFY(!report.diagnosis.findings.empty());
         const MistakeFinding &top = report.diagnosis.findings.front();
@@ -69,7 +69,7 @@ private slots:
     void worstPixelNamesItsObject()
     {
         const auto &[mistake, image] = m_reference.mistaken.front();
-        const CheckReport report = checkRender(image.toImage(m_scene.background), m_reference);
+        const CheckReport report = checkRender(image, m_reference);
         QCOMPARE(report.worstObject, 0);
         QVERIFY(report.badFraction() > 0.0 && report.badFraction() <= 1.0);
     }

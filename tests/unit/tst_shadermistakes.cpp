@@ -70,6 +70,7 @@ private slots:
             QVERIFY2(mistake, qPrintable(key));
             QCOMPARE(shaderMistakeKey(*mistake), key);
             QVERIFY2(!shaderMistakeRule(*mistake).isEmpty(), qPrintable(key));
+            QVERIFY2(!shaderMistakeSummary(*mistake).isEmpty(), qPrintable(key));
         }
         QVERIFY(!shaderMistakeFromKey(QStringLiteral("unknown")));
         QVERIFY(!shaderMistakeFromKey(QStringLiteral("Ambient")));
