@@ -57,13 +57,16 @@ ShaderChecker::ShaderChecker(QObject *parent)
     : QObject(parent)
     , m_cache(std::make_shared<Cache>())
 {
+    m_pool.setMaxThreadCount(1); // one check at a time; its ray casting has threads of its own
     connect(&m_watcher, &QFutureWatcher<CheckResult>::finished, this, &ShaderChecker::onFinished);
 }
 
 ShaderChecker::~ShaderChecker()
 {
+    // The job uses the cache, which goes with this: stop it early and wait.
     m_waiting.reset();
-    m_watcher.waitForFinished(); // the job uses the cache, which goes with this
+    m_cancelled->store(true);
+    m_watcher.waitForFinished();
 }
 
 void ShaderChecker::request(const Scene &scene, const QImage &yours)
@@ -87,7 +90,7 @@ void ShaderChecker::start(Request request)
 {
     std::shared_ptr<Cache> cache = m_cache;
     m_cancelled = std::make_shared<std::atomic<bool>>(false);
-    m_watcher.setFuture(QtConcurrent::run([cache, cancelled = m_cancelled, request = std::move(request)]() {
+    m_watcher.setFuture(QtConcurrent::run(&m_pool, [cache, cancelled = m_cancelled, request = std::move(request)]() {
         // Background work must never take a core from the window or a mesh
         // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
         // threads started from here inherit. The pool thread is reused, so

@@ -7,6 +7,7 @@
 #include <QHash>
 #include <QImage>
 #include <QObject>
+#include <QThreadPool>
 #include <atomic>
 #include <memory>
 #include <optional>
@@ -60,6 +61,11 @@ private:
     void start(Request request);
     void onFinished();
 
+    // Its own pool, never Qt's global one: Qt paints and converts images on
+    // the global pool's threads and waits for them on the GUI thread, so a
+    // check occupying one there froze the window (a progress bar's paint
+    // waited ~400 ms for a pool thread during a mesh load).
+    QThreadPool m_pool;
     QFutureWatcher<CheckResult> m_watcher;
     std::optional<Request> m_waiting;
     std::shared_ptr<Cache> m_cache;
