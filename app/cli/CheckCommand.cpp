@@ -179,6 +179,9 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
         return fail(args.scenePath, QStringLiteral("no reference: %1").arg(error));
     *reference = std::move(*made);
     outcome.report = checkRender(*yours, *reference, args.toleranceSteps);
+    if (!outcome.report.comparable())
+        return fail(args.scenePath, QStringLiteral("nothing to compare: no surface away from silhouettes in this "
+                                                   "view at %1x%2").arg(args.size.width()).arg(args.size.height()));
     outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
     return outcome;
 }

@@ -17,7 +17,8 @@ QString vec(const glm::dvec3 &v)
 
 } // namespace
 
-std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, int x, int y)
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x,
+                                     int y)
 {
     if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
         return std::nullopt;
@@ -27,6 +28,7 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
     const CameraSpaceHit at = cameraSpaceHit(hits, hit);
     const Material &material = scene.objects[std::size_t(hit.object)].material;
     PixelTerms out;
+    out.shading = shading;
     out.x = x;
     out.y = y;
     out.object = hit.object;
@@ -34,6 +36,10 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
     out.positionWorld = glm::dvec3(glm::inverse(scene.camera.viewMatrix()) * glm::dvec4(at.position, 1.0));
     out.N = at.normal;
     out.V = glm::normalize(-at.position);
+    if (shading == ReferenceShading::Normals) {
+        out.intensity = normalViewColor(out.N);
+        return out;
+    }
     out.ambient = scene.ambient * material.ka;
     out.intensity = out.ambient;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -50,10 +56,16 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
         t.R = glm::reflect(-t.L, out.N);
         t.NdotL = glm::dot(out.N, t.L);
         t.RdotV = glm::dot(t.R, out.V);
+        const glm::dvec3 sum = t.L + out.V;
+        t.H = glm::length(sum) > 0.0 ? glm::normalize(sum) : glm::dvec3(0.0); // none for a light straight behind
+        t.NdotH = glm::dot(out.N, t.H);
         t.attenuation = attenuationFactor(cam.attenuation, t.distance);
         if (t.NdotL > 0.0) {
+            const double factor = shading == ReferenceShading::BlinnPhong
+                ? std::pow(std::max(0.0, t.NdotH), kBlinnExponentFactor * material.shininess)
+                : std::pow(std::max(0.0, t.RdotV), material.shininess);
             t.diffuse = t.attenuation * cam.diffuse * material.kd * t.NdotL;
-            t.specular = t.attenuation * cam.specular * material.ks * std::pow(std::max(0.0, t.RdotV), material.shininess);
+            t.specular = t.attenuation * cam.specular * material.ks * factor;
         }
         out.intensity += t.diffuse + t.specular;
         out.lights.push_back(t);
@@ -64,7 +76,10 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
 QString PixelTerms::toText() const
 {
     QStringList lines;
-    lines << QStringLiteral("pixel (%1, %2), object %3").arg(x).arg(y).arg(object);
+    const QString equation = shading == ReferenceShading::BlinnPhong ? QStringLiteral("Blinn-Phong")
+        : shading == ReferenceShading::Normals                       ? QStringLiteral("normals view")
+                                                                     : QStringLiteral("Phong");
+    lines << QStringLiteral("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
     lines << QStringLiteral("P world  %1").arg(vec(positionWorld));
     lines << QStringLiteral("P camera %1").arg(vec(positionCamera));
     lines << QStringLiteral("N        %1").arg(vec(N));
@@ -77,7 +92,12 @@ QString PixelTerms::toText() const
         lines << QStringLiteral("  d      %1").arg(t.distance, 0, 'f', 4);
         lines << QStringLiteral("  f_att  %1").arg(t.attenuation, 0, 'f', 4);
         lines << QStringLiteral("  N·L    %1").arg(t.NdotL, 0, 'f', 4);
-        lines << QStringLiteral("  R·V    %1").arg(t.RdotV, 0, 'f', 4);
+        if (shading == ReferenceShading::BlinnPhong) {
+            lines << QStringLiteral("  H      %1").arg(vec(t.H));
+            lines << QStringLiteral("  N·H    %1").arg(t.NdotH, 0, 'f', 4);
+        } else {
+            lines << QStringLiteral("  R·V    %1").arg(t.RdotV, 0, 'f', 4);
+        }
         lines << QStringLiteral("  diffuse  %1").arg(vec(t.diffuse));
         lines << QStringLiteral("  specular %1").arg(vec(t.specular));
     }

@@ -75,10 +75,17 @@ CheckReport checkRender(const QImage &yours, const CheckReference &reference, in
         const QPoint w = report.comparison.worstPixel;
         report.worstObject = reference.hits.at(w.x(), w.y()).object;
     }
+    if (!report.comparable())
+        return report;
     if (!report.passed())
         report.diagnosis =
             diagnoseMistakes(yours, reference.exactImage, reference.mistaken, reference.compared, toleranceSteps);
-    report.diagnosis.undetectable = reference.undetectable;
+    else if (toleranceSteps != kDefaultCheckToleranceSteps)
+        report.diagnosis.undetectable = diagnoseMistakes(reference.exactImage, reference.exactImage, reference.mistaken,
+                                                         reference.compared, toleranceSteps)
+                                            .undetectable;
+    else
+        report.diagnosis.undetectable = reference.undetectable;
     return report;
 }
 

@@ -52,7 +52,10 @@ struct CheckReport {
     int worstObject = -1;        // the scene object under comparison.worstPixel
     MistakeDiagnosis diagnosis;
 
-    bool passed() const { return comparison.pixelsCompared > 0 && comparison.maxError <= toleranceSteps; }
+    // False when no pixel could be compared (nothing in view, or a tiny
+    // image all silhouette): no verdict then, neither pass nor fail.
+    bool comparable() const { return comparison.pixelsCompared > 0; }
+    bool passed() const { return comparable() && comparison.maxError <= toleranceSteps; }
     double badFraction() const;
 };
 

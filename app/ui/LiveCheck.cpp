@@ -15,6 +15,9 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include <algorithm>
+#include <cmath>
+
 namespace phonglab {
 
 namespace {
@@ -25,6 +28,12 @@ QString shortSummary(const CheckResult &result)
 {
     if (!result.error.isEmpty())
         return QObject::tr("check: %1").arg(result.error);
+    if (!result.report.comparable())
+        return QObject::tr("check: nothing to compare in this view");
+    // Gouraud and flat are approximations by design: say what they are judged against.
+    const ShadingMethod method = result.scene.shading;
+    if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat)
+        return QObject::tr("%1 against exact Phong: %2").arg(shadingName(method), checkStatusLine(result.report));
     return checkStatusLine(result.report); // the whole rule goes in the tooltip
 }
 
@@ -55,6 +64,12 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
                         &Viewport::glInitialized})
         connect(viewport, signal, this, [this] { schedule(); });
     connect(viewport, &Viewport::shippedProgramLoaded, this, [this] { schedule(); });
+    connect(viewport, &Viewport::headlightChanged, this, [this] { schedule(); });
+    // A new scene: what was inspected belongs to the old one.
+    connect(viewport, &Viewport::sceneChanged, this, [this] {
+        m_inspectWhenReady.reset();
+        m_overlay->setArrows(std::nullopt, {});
+    });
     connect(viewport, &Viewport::cameraChanged, this, [this] { m_overlay->setCamera(m_viewport->camera()); });
     viewport->installEventFilter(this);
 }
@@ -63,6 +78,9 @@ void LiveCheck::pauseWhileLoading(const SceneLoadJob *job)
 {
     m_loadJob = job;
     connect(job, &SceneLoadJob::started, m_checker, &ShaderChecker::cancel);
+    // A load that does not end in a new scene leaves the old one to check again.
+    connect(job, &SceneLoadJob::failed, this, [this] { schedule(); });
+    connect(job, &SceneLoadJob::cancelled, this, [this] { schedule(); });
 }
 
 void LiveCheck::addViewActions(QMenu *view)
@@ -116,7 +134,10 @@ void LiveCheck::schedule(int delayMs)
 {
     m_pending = true;
     m_overlay->setFresh(false);
-    if (!m_debounce->isActive() || delayMs < m_debounce->remainingTime())
+    // Every change restarts the wait, so a drag is checked once it rests;
+    // only a check already due at once (a new program) is not put off.
+    const bool immediateDue = m_debounce->isActive() && m_debounce->interval() == 0;
+    if (delayMs == 0 || !immediateDue)
         m_debounce->start(delayMs);
 }
 
@@ -128,18 +149,27 @@ void LiveCheck::run()
         return;
     }
     m_pending = false;
-    const QSize size = m_viewport->size() * m_viewport->devicePixelRatioF();
-    const QImage yours = m_viewport->renderImage(size, false);
+    const QImage yours = m_viewport->renderImage(checkSize(), false);
     if (yours.isNull())
         return;
     m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…") : tr("checking…"));
     m_checker->request(m_viewport->renderedScene(), yours.convertToFormat(QImage::Format_RGB888));
 }
 
+QSize LiveCheck::checkSize() const
+{
+    const QSize full = m_viewport->size() * m_viewport->devicePixelRatioF();
+    const qint64 pixels = qint64(full.width()) * full.height();
+    if (pixels <= kMaxCheckPixels)
+        return full;
+    const double scale = std::sqrt(double(kMaxCheckPixels) / double(pixels));
+    return QSize(std::max(1, int(full.width() * scale)), std::max(1, int(full.height() * scale)));
+}
+
 bool LiveCheck::isCurrent(const CheckResult &result) const
 {
-    return !m_pending && !m_checker->isBusy() && result.reference
-        && result.yours.size() == m_viewport->size() * m_viewport->devicePixelRatioF();
+    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy()
+        && result.reference && result.yours.size() == checkSize();
 }
 
 void LiveCheck::show(const CheckResult &result)
@@ -158,20 +188,26 @@ void LiveCheck::show(const CheckResult &result)
 
 void LiveCheck::inspect(QPoint position)
 {
-    const QPoint pixel = (QPointF(position) * m_viewport->devicePixelRatioF()).toPoint();
+    // Pixel centres: the point's fraction of the view, whatever the size the
+    // frame was checked at.
+    const QPointF fraction((position.x() + 0.5) / std::max(1, m_viewport->width()),
+                           (position.y() + 0.5) / std::max(1, m_viewport->height()));
     m_inspector->show();
     if (m_last && isCurrent(*m_last)) {
-        showInspected(pixel);
+        showInspected(fraction);
         return;
     }
-    m_inspectWhenReady = pixel;
+    m_inspectWhenReady = fraction;
     m_inspector->showMessage(tr("Checking the current view; the pixel is shown when that is done."));
 }
 
-void LiveCheck::showInspected(QPoint pixel)
+void LiveCheck::showInspected(QPointF fraction)
 {
     const CheckResult &r = *m_last;
-    const std::optional<PixelTerms> terms = pixelTerms(r.reference->hits, r.scene, pixel.x(), pixel.y());
+    const QPoint pixel(std::clamp(int(std::floor(fraction.x() * r.yours.width())), 0, r.yours.width() - 1),
+                       std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));
+    const std::optional<PixelTerms> terms =
+        pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y());
     if (!terms) {
         m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
                                      .arg(pixel.x()).arg(pixel.y()));

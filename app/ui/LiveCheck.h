@@ -27,6 +27,9 @@ class Viewport;
 // the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
 // the status bar, the overlays over the viewport, and the pixel inspector.
 inline constexpr int kCheckDebounceMs = 150; // lets an orbit drag or a burst of edits settle
+// A larger view is checked at a smaller size of the same shape: the reference
+// costs ~190 bytes a pixel, and a 5K screen would ask for gigabytes.
+inline constexpr qint64 kMaxCheckPixels = 1920 * 1080;
 
 class LiveCheck : public QObject
 {
@@ -39,6 +42,8 @@ public:
     void pauseWhileLoading(const SceneLoadJob *job);
     // The View menu's entries: the inspector dock, the Check toolbar.
     void addViewActions(QMenu *view);
+    // Something the check cannot see changed the frame (a uniform's value).
+    void frameChanged() { schedule(); }
 
     void setOverlayMode(OverlayMode mode);
     OverlayMode overlayMode() const { return m_overlay->mode(); }
@@ -64,7 +69,8 @@ private:
     void schedule(int delayMs = kCheckDebounceMs);
     void run();
     void show(const CheckResult &result);
-    void showInspected(QPoint pixel);
+    void showInspected(QPointF position);
+    QSize checkSize() const;
     bool isCurrent(const CheckResult &result) const;
     bool dragDivider(QEvent *event);
 
@@ -78,7 +84,7 @@ private:
     QToolBar *m_toolBar = nullptr;
     QTimer *m_debounce = nullptr;
     std::optional<CheckResult> m_last;
-    std::optional<QPoint> m_inspectWhenReady; // a pixel, in the frame's pixels
+    std::optional<QPointF> m_inspectWhenReady; // where, as a fraction of the view's width and height
     bool m_pending = false;                   // scheduled, not yet handed to the checker
     bool m_draggingDivider = false;
     const SceneLoadJob *m_loadJob = nullptr;

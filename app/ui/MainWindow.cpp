@@ -102,6 +102,7 @@ MainWindow::MainWindow(QWidget *parent)
     createStatusBar();
     connectLoading();
     m_liveCheck->pauseWhileLoading(m_loadJob);
+    connect(m_uniformsDock, &UniformsDock::valueWritten, m_liveCheck, &LiveCheck::frameChanged);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     // Queued: the error is raised from inside initializeGL / paintGL, where a

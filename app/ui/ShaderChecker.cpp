@@ -6,44 +6,65 @@
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <exception>
+
 namespace phonglab {
 
+namespace {
+
+// A reference answers a scene exactly, folder included: relative mesh paths
+// of two equal scenes in different folders name different files.
+bool sameScene(const Scene &a, const Scene &b)
+{
+    return a == b && a.baseDir == b.baseDir;
+}
+
+} // namespace
+
 struct ShaderChecker::Cache {
-    QHash<QString, std::shared_ptr<const MeshData>> meshes; // by meshKey()
+    QHash<QString, std::shared_ptr<const MeshData>> meshes; // by meshKey(), of the scene last checked
     std::optional<Scene> scene;
     QSize size;
     std::shared_ptr<const CheckReference> reference;
 
-    // The meshes of every object, loading only those not kept already.
-    std::optional<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(const Scene &s, QString *error)
+    // The meshes of every object, loading only those not kept already and
+    // keeping no others.
+    std::optional<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(const Scene &s, QString *error,
+                                                                             const std::atomic<bool> &cancelled)
     {
         QSet<QString> kept;
         for (auto it = meshes.cbegin(); it != meshes.cend(); ++it)
             kept.insert(it.key());
-        const SceneMeshes loaded = loadSceneMeshes(s, kept);
+        const SceneMeshes loaded = loadSceneMeshes(s, kept, [&](double) { return !cancelled.load(); });
         if (!loaded.ok()) {
             *error = loaded.error;
             return std::nullopt;
         }
-        for (auto it = loaded.entries.cbegin(); it != loaded.entries.cend(); ++it)
-            if (it->mesh)
-                meshes.insert(it.key(), it->mesh);
+        QHash<QString, std::shared_ptr<const MeshData>> used;
         std::vector<std::shared_ptr<const MeshData>> out;
-        for (const SceneObject &object : s.objects)
-            out.push_back(meshes.value(meshKey(s, object)));
+        for (const SceneObject &object : s.objects) {
+            const QString key = meshKey(s, object);
+            std::shared_ptr<const MeshData> mesh = meshes.value(key);
+            if (!mesh)
+                mesh = loaded.entries.value(key).mesh;
+            used.insert(key, mesh);
+            out.push_back(mesh);
+        }
+        meshes = std::move(used);
         return out;
     }
 
     std::shared_ptr<const CheckReference> referenceFor(const Scene &s, QSize sz, QString *error,
                                                        const std::atomic<bool> &cancelled)
     {
-        if (reference && scene && *scene == s && size == sz)
+        if (reference && scene && sameScene(*scene, s) && size == sz)
             return reference;
-        const auto objectMeshes = this->objectMeshes(s, error);
+        reference.reset(); // not kept beside the new one while it is made
+        const auto objectMeshes = this->objectMeshes(s, error, cancelled);
         if (!objectMeshes)
             return nullptr;
-        std::optional<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), error,
-                                                             [&](double) { return !cancelled.load(); });
+        std::optional<CheckReference> made = makeCheckReference(
+            s, *objectMeshes, sz.width(), sz.height(), error, [&](double) { return !cancelled.load(); });
         if (!made)
             return nullptr;
         reference = std::make_shared<const CheckReference>(std::move(*made));
@@ -73,10 +94,15 @@ void ShaderChecker::request(const Scene &scene, const QImage &yours)
 {
     Request r{++m_generation, scene, yours, {}};
     r.clock.start();
-    if (m_watcher.isRunning())
-        m_waiting = std::move(r); // newest wins
-    else
+    if (!m_watcher.isRunning()) {
         start(std::move(r));
+        return;
+    }
+    // Newest wins. A running job making the reference of another view is
+    // wasted work; one judging the same view is nearly done.
+    if (m_running && !(sameScene(m_running->first, scene) && m_running->second == yours.size()))
+        m_cancelled->store(true);
+    m_waiting = std::move(r);
 }
 
 void ShaderChecker::cancel()
@@ -90,6 +116,7 @@ void ShaderChecker::start(Request request)
 {
     std::shared_ptr<Cache> cache = m_cache;
     m_cancelled = std::make_shared<std::atomic<bool>>(false);
+    m_running = std::make_pair(request.scene, request.yours.size());
     m_watcher.setFuture(QtConcurrent::run(&m_pool, [cache, cancelled = m_cancelled, request = std::move(request)]() {
         // Background work must never take a core from the window or a mesh
         // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
@@ -101,11 +128,17 @@ void ShaderChecker::start(Request request)
         result.generation = request.generation;
         result.scene = request.scene;
         result.yours = request.yours;
-        result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
-        if (result.reference) {
-            result.report = checkRender(request.yours, *result.reference);
-            result.exact = result.reference->exactImage;
-            result.heatmap = checkHeatmap(request.yours, *result.reference);
+        try {
+            result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
+            if (result.reference) {
+                result.report = checkRender(request.yours, *result.reference);
+                result.exact = result.reference->exactImage;
+                result.heatmap = checkHeatmap(request.yours, *result.reference);
+            }
+        } catch (const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
+            result = CheckResult{request.generation, request.scene, {}, {}, {}, {}, {},
+                                 QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())), 0.0};
+            cache->reference.reset();
         }
         result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;
         return result;
@@ -115,21 +148,16 @@ void ShaderChecker::start(Request request)
 void ShaderChecker::onFinished()
 {
     const CheckResult result = m_watcher.result();
-    if (m_cancelled->load()) {
-        if (m_waiting) {
-            Request next = std::move(*m_waiting);
-            m_waiting.reset();
-            start(std::move(next));
-        }
-        return;
-    }
+    const bool cancelled = m_cancelled->load();
+    m_running.reset();
     if (m_waiting) {
         Request next = std::move(*m_waiting);
         m_waiting.reset();
         start(std::move(next));
         return; // a newer request supersedes this result
     }
-    emit finished(result);
+    if (!cancelled)
+        emit finished(result);
 }
 
 } // namespace phonglab

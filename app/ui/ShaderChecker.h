@@ -4,7 +4,6 @@
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
-#include <QHash>
 #include <QImage>
 #include <QObject>
 #include <QThreadPool>
@@ -16,7 +15,7 @@ namespace phonglab {
 
 // One finished check of the window's frame against the exact image.
 struct CheckResult {
-    quint64 generation = 0;
+    quint64 generation = 0;                        // of the request it answers
     Scene scene;                                   // as checked (headlight included)
     std::shared_ptr<const CheckReference> reference;
     QImage yours;                                  // the frame, without light markers
@@ -28,10 +27,11 @@ struct CheckResult {
 };
 
 // Runs checks off the GUI thread, one at a time; while one runs only the
-// newest request waits (an older waiting one is dropped). The reference is
-// kept between checks of the same scene at the same size, so after a shader
-// edit only the comparison runs; the meshes are kept by meshKey() across
-// scene edits that do not change them.
+// newest request waits (an older waiting one is dropped), and a running one
+// that is still making the reference of another view is cancelled. The
+// reference is kept between checks of the same scene at the same size, so
+// after a shader edit only the comparison runs; the meshes of the scene last
+// checked are kept for its next view.
 class ShaderChecker : public QObject
 {
     Q_OBJECT
@@ -45,6 +45,9 @@ public:
     // forgets the waiting one: a scene load wants every core.
     void cancel();
     bool isBusy() const { return m_watcher.isRunning() || m_waiting.has_value(); }
+    // The generation of the newest request: a result with another one
+    // describes a frame that is no longer on screen.
+    quint64 newestGeneration() const { return m_generation; }
 
 signals:
     void finished(const phonglab::CheckResult &result);
@@ -68,6 +71,7 @@ private:
     QThreadPool m_pool;
     QFutureWatcher<CheckResult> m_watcher;
     std::optional<Request> m_waiting;
+    std::optional<std::pair<Scene, QSize>> m_running; // what the running job checks
     std::shared_ptr<Cache> m_cache;
     quint64 m_generation = 0;
     std::shared_ptr<std::atomic<bool>> m_cancelled = std::make_shared<std::atomic<bool>>(false);

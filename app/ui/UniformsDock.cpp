@@ -218,6 +218,7 @@ void UniformsDock::write(const UniformValue &value)
         if (kept.name == value.name)
             kept = value;
     m_viewport->update();
+    emit valueWritten();
 }
 
 void UniformsDock::refreshDrivenValues()

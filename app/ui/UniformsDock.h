@@ -45,6 +45,8 @@ public:
 
 signals:
     void rebuilt();
+    // A value the user set went into the program: the frame changed.
+    void valueWritten();
 
 private:
     struct Program {

@@ -266,6 +266,7 @@ void Viewport::setHeadlight(bool on)
     m_headlight = on;
     m_parametersDirty = true;
     update();
+    emit headlightChanged(on);
 }
 
 Scene Viewport::renderedScene() const

@@ -128,6 +128,8 @@ signals:
     void lightDragged(int index, const phonglab::PointLight &before, const phonglab::PointLight &after);
     // A light marker was clicked.
     void lightPicked(int index);
+    // The headlight was switched: the frame changed, the scene did not.
+    void headlightChanged(bool on);
 
 protected:
     bool event(QEvent *event) override;

@@ -167,6 +167,19 @@ private slots:
         QVERIFY2(hidden.contains(QStringLiteral("normal-matrix")), r.out.constData());
     }
 
+    void nothingToCompareIsAnError()
+    {
+        // At 4x3 every covered pixel lies in the silhouette band: no
+        // verdict, so no grader fails (or passes) a shader on it.
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"),
+                                          QStringLiteral("4x3"), QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject o = parseJson(r);
+        QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
+        QVERIFY(o.value(QStringLiteral("errors")).toArray().first().toObject().value(QStringLiteral("message"))
+                    .toString().contains(QStringLiteral("nothing to compare")));
+    }
+
     void badSceneIsAnError()
     {
         const ProcessRun r = runPhonglab({QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")),

@@ -111,6 +111,18 @@ private slots:
         replaceInFragment(QStringLiteral("reflect(L, N)"), QStringLiteral("reflect(-L, N)"));
         QVERIFY(waitForVerdict(true));
         QVERIFY(check->statusLabel()->text().startsWith(QStringLiteral("✓")));
+
+        // The headlight changes the frame, not the scene: checked again, with it.
+        const quint64 before = check->lastResult()->generation;
+        const std::size_t lights = check->lastResult()->scene.lights.size();
+        m_window->viewport()->setHeadlight(true);
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return !check->isChecking() && check->lastResult()->generation > before
+                    && check->lastResult()->scene.lights.size() == lights + 1;
+            },
+            kCheckTimeoutMs));
+        QVERIFY(check->lastResult()->report.passed());
     }
 
 private:

@@ -81,7 +81,7 @@ private slots:
         int checked = 0;
         for (int y = 0; y < kCheckHeight; y += 7) {
             for (int x = 0; x < kCheckWidth; x += 7) {
-                const std::optional<PixelTerms> t = pixelTerms(m_reference.hits, m_scene, x, y);
+                const std::optional<PixelTerms> t = pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, x, y);
                 QCOMPARE(t.has_value(), m_reference.exact.covered(x, y));
                 if (!t)
                     continue;
@@ -96,9 +96,38 @@ private slots:
             }
         }
         QVERIFY(checked > 100);
-        QVERIFY(!pixelTerms(m_reference.hits, m_scene, 0, 0)); // the corner is background
-        const std::optional<PixelTerms> centre = pixelTerms(m_reference.hits, m_scene, kCheckWidth / 2, kCheckHeight / 2);
+        QVERIFY(!pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, 0, 0)); // the corner is background
+        const std::optional<PixelTerms> centre =
+            pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, kCheckWidth / 2, kCheckHeight / 2);
         QVERIFY(centre && centre->toText().contains(QStringLiteral("f_att")));
+    }
+
+    // For the other exact methods the terms are theirs: Blinn-Phong's with
+    // the half vector, the normals view's colour.
+    void pixelTermsFollowTheMethod_data()
+    {
+        QTest::addColumn<QString>("method");
+        QTest::newRow("blinn-phong") << QStringLiteral("blinn-phong");
+        QTest::newRow("normals") << QStringLiteral("normals");
+    }
+
+    void pixelTermsFollowTheMethod()
+    {
+        QFETCH(QString, method);
+        Scene scene = m_scene;
+        scene.shading = *shadingFromName(method);
+        const CheckReference reference = makeTestCheckReference(scene);
+        int checked = 0;
+        for (int y = 0; y < kCheckHeight; y += 9) {
+            for (int x = 0; x < kCheckWidth; x += 9) {
+                const std::optional<PixelTerms> t = pixelTerms(reference.hits, scene, reference.shader.shading, x, y);
+                if (!t)
+                    continue;
+                ++checked;
+                QVERIFY(glm::length(t->intensity - reference.exact.colorAt(x, y)) < 1e-12);
+            }
+        }
+        QVERIFY(checked > 100);
     }
 
 private:
