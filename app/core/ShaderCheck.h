@@ -76,7 +76,8 @@ std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &refe
 // or view-vector (100 %): <the rule>" — everything in one line.
 QString checkSummary(const CheckReport &report);
 // The same for a status bar: "✓ 58.2 dB" or "✗ 21.4 dB — reflect-incident:
-// reflect(L, N) instead of reflect(-L, N) (or view-vector)".
+// reflect(L, N) instead of reflect(-L, N) (or view-vector)": the top
+// finding in words, the keys it is grouped with by name.
 QString checkStatusLine(const CheckReport &report);
 
 } // namespace phonglab
