@@ -1,17 +1,15 @@
 #include "MeshRaycaster.h"
 
 #include "MeshBvh.h"
+#include "ParallelRows.h"
 #include "ObjectMatrices.h"
 #include "ReferenceSample.h"
 #include "SceneHits.h"
 #include "mesh/BuiltinMeshes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <system_error>
-#include <thread>
 #include <unordered_map>
 
 namespace phonglab {
@@ -225,43 +223,6 @@ void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, Sce
 }
 
 } // namespace
-
-bool forEachRowInParallel(int height, const std::function<void(int)> &rowFunction,
-                          const std::function<bool(double)> &progress)
-{
-    // Rows are handed out one at a time from a shared counter (rows differ
-    // a lot in cost: empty sky against dense foliage). The calling thread
-    // works too and is the only one that calls progress().
-    std::atomic<int> nextRow{0};
-    std::atomic<int> rowsDone{0};
-    std::atomic<bool> cancelled{false};
-    const auto work = [&](bool reports) {
-        for (;;) {
-            if (cancelled.load(std::memory_order_relaxed))
-                return;
-            const int y = nextRow.fetch_add(1, std::memory_order_relaxed);
-            if (y >= height)
-                return;
-            rowFunction(y);
-            const int done = rowsDone.fetch_add(1, std::memory_order_relaxed) + 1;
-            if (reports && progress && !progress(double(done) / double(height)))
-                cancelled = true;
-        }
-    };
-    const int threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> helpers;
-    for (int i = 1; i < std::min(threadCount, height); ++i) {
-        try {
-            helpers.emplace_back(work, false);
-        } catch (const std::system_error &) {
-            break; // no more threads to be had: fewer helpers, same image
-        }
-    }
-    work(true);
-    for (std::thread &helper : helpers)
-        helper.join();
-    return !cancelled;
-}
 
 std::optional<SceneHits> castSceneHits(const Scene &scene,
                                        const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,

@@ -2,12 +2,10 @@
 
 #include "ImageMetrics.h"
 #include "MeshRaycaster.h"
+#include "ParallelRows.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <system_error>
-#include <thread>
 
 namespace phonglab {
 
@@ -57,26 +55,9 @@ std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
     const double step = std::ldexp(1.0, -std::clamp(subpixelBits, 4, 30));
     std::vector<std::uint8_t> mask(std::size_t(width) * std::size_t(height), 0);
 
-    // Rows from a shared counter, as in raycastSceneMeshes(); each pixel
-    // depends on its own rays only, so the mask is the same for any number
-    // of threads.
-    std::atomic<int> nextRow{0};
-    const auto work = [&] {
-        for (int y; (y = nextRow.fetch_add(1, std::memory_order_relaxed)) < height;)
-            classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y);
-    };
-    const int threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> helpers;
-    for (int i = 1; i < std::min(threadCount, height); ++i) {
-        try {
-            helpers.emplace_back(work);
-        } catch (const std::system_error &) {
-            break; // fewer helpers, same mask
-        }
-    }
-    work();
-    for (std::thread &helper : helpers)
-        helper.join();
+    forEachRowInParallel(height, [&](int y) {
+        classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y);
+    });
     return mask;
 }
 

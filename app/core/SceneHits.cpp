@@ -1,5 +1,6 @@
 #include "SceneHits.h"
 
+#include "ParallelRows.h"
 #include "ReferenceSample.h"
 
 namespace phonglab {

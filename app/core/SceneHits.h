@@ -67,10 +67,4 @@ struct CameraSpaceHit {
 };
 CameraSpaceHit cameraSpaceHit(const SceneHits &hits, const ReferenceHit &hit);
 
-// Runs rowFunction(y) for every row 0..height-1 on all cores, rows handed out
-// one at a time. progress(rows done / height) is called from the calling
-// thread; returning false stops early and makes this return false.
-bool forEachRowInParallel(int height, const std::function<void(int)> &rowFunction,
-                          const std::function<bool(double)> &progress = {});
-
 } // namespace phonglab
