@@ -9,8 +9,8 @@
 #       scripts/test.sh --sanitize uses it (build-sanitize/).
 #
 #   -DPHONGLAB_FUZZ=ON   (clang only)
-#       adds the libFuzzer targets of tests/fuzz (fuzz_<name>); phonglab_core,
-#       all they link of the project, is compiled with
+#       adds the libFuzzer targets of tests/fuzz (fuzz_<name>); the core, mesh and
+#       render libraries, all they link of the project, are compiled with
 #       -fsanitize=fuzzer-no-link on top of PHONGLAB_SANITIZE (which defaults
 #       to address,undefined here), the fuzz targets are linked with
 #       -fsanitize=fuzzer. The same build still makes the ordinary programs
@@ -49,7 +49,7 @@ if(NOT PHONGLAB_SANITIZE STREQUAL "")
   endif()
 endif()
 
-# Called once phonglab_core exists: coverage instrumentation for what the
+# Called for each library below the GUI: coverage instrumentation for what the
 # fuzzers exercise (the other libraries stay uninstrumented, they are not fuzzed).
 function(phonglab_instrument_for_fuzzing target)
   if(PHONGLAB_FUZZ)

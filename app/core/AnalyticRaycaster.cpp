@@ -1,6 +1,6 @@
 #include "AnalyticRaycaster.h"
 
-#include "mesh/BuiltinMeshes.h"
+#include "AnalyticShapes.h"
 #include "ObjectMatrices.h"
 #include "PhongReference.h"
 #include "ReferenceSample.h"
@@ -104,7 +104,7 @@ int rootsInInterval(const Coefficients &c, int degree, double lo, double hi, dou
 
 // --- Scene preparation -------------------------------------------------------
 
-enum class Surface { Sphere, Torus, Box };
+using Surface = AnalyticShape;
 
 // Everything one object needs per ray, computed once per image.
 struct PreparedObject {
@@ -118,14 +118,7 @@ struct PreparedObject {
 
 std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten, const QHash<QString, QString> &standIns)
 {
-    const QString mesh = standIns.value(meshAsWritten, meshAsWritten);
-    if (mesh == QLatin1String("builtin:cube"))
-        return Surface::Box;
-    if (mesh == QLatin1String("builtin:sphere"))
-        return Surface::Sphere;
-    if (mesh == QLatin1String("builtin:torus"))
-        return Surface::Torus;
-    return std::nullopt;
+    return analyticShapeFor(standIns.value(meshAsWritten, meshAsWritten));
 }
 
 std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect, QString *error,

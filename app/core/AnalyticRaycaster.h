@@ -12,7 +12,7 @@ namespace phonglab {
 
 // The CPU ground truth for a whole scene: every object is ray-cast against the
 // analytic surface its builtin mesh approximates ("builtin:sphere" is the unit
-// sphere, "builtin:torus" the torus of BuiltinMeshes.h), then shaded with
+// sphere, "builtin:torus" the torus of AnalyticShapes.h), then shaded with
 // phongIntensity() at the exact hit point and exact normal. Rays follow the
 // GPU's conventions (pixel centres, vertical fov, near/far clip, normals by
 // the normal matrix, no back-face culling), so a correct GPU render differs

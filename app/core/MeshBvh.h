@@ -1,6 +1,6 @@
 #pragma once
 #include "AnalyticRaycaster.h" // Ray
-#include "mesh/MeshData.h"
+#include "core/MeshData.h"
 
 #include <glm/glm.hpp>
 

@@ -1,11 +1,11 @@
 #include "MeshRaycaster.h"
 
+#include "AnalyticShapes.h"
 #include "MeshBvh.h"
 #include "ParallelRows.h"
 #include "ObjectMatrices.h"
 #include "ReferenceSample.h"
 #include "SceneHits.h"
-#include "mesh/BuiltinMeshes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,14 +31,17 @@ struct PreparedObject {
     const Material *material = nullptr;
 };
 
+// A builtin's analytic surface (the mesh ray-caster has one more kind: Mesh).
 std::optional<Surface> builtinSurface(const QString &spec)
 {
-    if (spec == QLatin1String("builtin:sphere"))
-        return Surface::Sphere;
-    if (spec == QLatin1String("builtin:torus"))
-        return Surface::Torus;
-    if (spec == QLatin1String("builtin:cube"))
-        return Surface::Box;
+    const std::optional<AnalyticShape> shape = analyticShapeFor(spec);
+    if (!shape)
+        return std::nullopt;
+    switch (*shape) {
+    case AnalyticShape::Sphere: return Surface::Sphere;
+    case AnalyticShape::Torus: return Surface::Torus;
+    case AnalyticShape::Box: return Surface::Box;
+    }
     return std::nullopt;
 }
 

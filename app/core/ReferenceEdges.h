@@ -1,7 +1,7 @@
 #pragma once
 #include "ReferenceImage.h"
 #include "Scene.h"
-#include "mesh/MeshData.h"
+#include "core/MeshData.h"
 
 #include <QString>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
-#include "mesh/NormalOptions.h"
+#include "core/NormalOptions.h"
 
 #include <QString>
 #include <map>

@@ -2,7 +2,7 @@
 #include "AnalyticRaycaster.h"
 #include "ReferenceImage.h"
 #include "Scene.h"
-#include "mesh/MeshData.h"
+#include "core/MeshData.h"
 
 #include <QString>
 #include <functional>

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/NormalOptions.h"
+#include "core/NormalOptions.h"
 
 // Internal to SceneJson*.cpp: the JSON-text layer under the scene reader.
 namespace phonglab::scenejson {

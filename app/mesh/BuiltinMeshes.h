@@ -1,5 +1,6 @@
 #pragma once
-#include "MeshData.h"
+#include "core/AnalyticShapes.h"
+#include "core/MeshData.h"
 
 #include <QString>
 #include <optional>
@@ -13,9 +14,8 @@ namespace phonglab {
 // Unit sphere: radius 1 at the origin. `slices` around Y, `stacks` pole to pole.
 MeshData makeUvSphere(int slices, int stacks);
 
-// Torus around the Y axis: ring radius `majorRadius`, tube radius `minorRadius`.
-inline constexpr double kTorusMajorRadius = 1.0;
-inline constexpr double kTorusMinorRadius = 0.4;
+// Torus around the Y axis: ring radius `majorRadius`, tube radius `minorRadius`
+// (by default the analytic torus of core/AnalyticShapes.h).
 MeshData makeTorus(int ringSegments, int tubeSegments,
                    double majorRadius = kTorusMajorRadius, double minorRadius = kTorusMinorRadius);
 

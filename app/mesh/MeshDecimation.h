@@ -1,5 +1,5 @@
 #pragma once
-#include "MeshData.h"
+#include "core/MeshData.h"
 
 #include <QString>
 #include <functional>

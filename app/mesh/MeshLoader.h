@@ -1,6 +1,6 @@
 #pragma once
-#include "MeshData.h"
-#include "NormalOptions.h"
+#include "core/MeshData.h"
+#include "core/NormalOptions.h"
 
 #include <QString>
 #include <QStringList>

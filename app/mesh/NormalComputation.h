@@ -1,5 +1,5 @@
 #pragma once
-#include "NormalOptions.h"
+#include "core/NormalOptions.h"
 
 #include <glm/glm.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "mesh/MeshData.h"
+#include "core/MeshData.h"
 
 #include <QOpenGLExtraFunctions>
 

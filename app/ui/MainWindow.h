@@ -1,6 +1,6 @@
 #pragma once
 #include "core/ShadingMethod.h"
-#include "mesh/NormalOptions.h"
+#include "core/NormalOptions.h"
 
 #include <QMainWindow>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "mesh/NormalOptions.h"
+#include "core/NormalOptions.h"
 
 #include <QGroupBox>
 

@@ -2,7 +2,7 @@
 #include "core/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
 #include "core/Scene.h"
-#include "mesh/MeshData.h"
+#include "core/MeshData.h"
 #include "render/CompileResult.h"
 #include "render/ShaderSource.h"
 
