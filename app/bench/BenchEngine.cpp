@@ -26,10 +26,10 @@ struct BenchEngine::SceneRun {
     std::vector<std::shared_ptr<const MeshData>> fullMeshes; // per object; null = analytic builtin
     std::vector<int> lightCounts;
     int ownLights = 0;
-    std::vector<ReferenceImage> references;           // per light count
-    std::vector<std::uint8_t> compared;               // 1 away from every silhouette (lights do not move them)
-    std::vector<std::vector<std::uint8_t>> specular;  // compared ∧ highlight, per light count
-    qint64 previousTriangles = -1;                    // of the last detail level measured
+    std::vector<ReferenceImage> references;          // per light count
+    std::vector<std::uint8_t> compared;              // 1 away from every silhouette (lights do not move them)
+    std::vector<std::vector<std::uint8_t>> specular; // compared ∧ highlight, per light count
+    qint64 previousTriangles = -1;                   // of the last detail level measured
 };
 
 namespace {
@@ -222,8 +222,8 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
     return true;
 }
 
-BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
-                              ShadingMethod method, double detail)
+BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
+                              double detail)
 {
     Renderer &renderer = m_offscreen->renderer();
     const int count = state.lightCounts[setup];

@@ -17,9 +17,9 @@ struct MeshData;
 
 // Where a bench run is; the callback returns false to cancel.
 struct BenchProgress {
-    int done = 0;   // configurations measured so far
-    int total = 0;  // configurations in the whole run
-    QString stage;  // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
+    int done = 0;                  // configurations measured so far
+    int total = 0;                 // configurations in the whole run
+    QString stage;                 // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
     const BenchRow *row = nullptr; // the row just measured, if this step measured one
 };
 using BenchProgressFn = std::function<bool(const BenchProgress &)>;
@@ -50,10 +50,10 @@ public:
 
 private:
     struct SceneRun;
-    bool runScene(const BenchOptions &options, const QString &path, SceneRun &state,
-                  std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress);
-    bool measureDetail(const BenchOptions &options, SceneRun &state, double detail,
-                       std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress);
+    bool runScene(const BenchOptions &options, const QString &path, SceneRun &state, std::vector<BenchRow> *rows,
+                  QString *error, const BenchProgressFn &progress);
+    bool measureDetail(const BenchOptions &options, SceneRun &state, double detail, std::vector<BenchRow> *rows,
+                       QString *error, const BenchProgressFn &progress);
     BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
                      double detail);
 

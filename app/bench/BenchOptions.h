@@ -12,20 +12,20 @@ namespace phonglab {
 // method at every detail under every light setup; quick() and full() are the
 // two presets the command offers.
 struct BenchOptions {
-    QStringList scenes;               // scene files
-    QSize size{800, 600};             // frame size for timing and accuracy alike
+    QStringList scenes;   // scene files
+    QSize size{800, 600}; // frame size for timing and accuracy alike
     int warmupFrames = 3;
-    int frames = 20;                  // timed frames per configuration (median)
+    int frames = 20; // timed frames per configuration (median)
     std::vector<double> details{1.0, 1.0 / 4, 1.0 / 16, 1.0 / 64};
     std::vector<int> lightCounts{1, 4, 8};
-    bool sceneLights = true;          // also the scene's own lights (what fit-to-budget uses)
-    std::vector<ShadingMethod> methods{ShadingMethod::Flat, ShadingMethod::Gouraud,
-                                       ShadingMethod::BlinnPhong, ShadingMethod::Phong};
-    int bandPx = 2;                   // silhouette band left out of the error
+    bool sceneLights = true; // also the scene's own lights (what fit-to-budget uses)
+    std::vector<ShadingMethod> methods{ShadingMethod::Flat, ShadingMethod::Gouraud, ShadingMethod::BlinnPhong,
+                                       ShadingMethod::Phong};
+    int bandPx = 2; // silhouette band left out of the error
     // A pixel belongs to the specular highlight where the reference's
     // specular term reaches this much in some channel (4/255: visible).
     double specularThreshold = 4.0 / 255.0;
-    QString imageDir;                 // when set: render | reference | error pictures per method
+    QString imageDir; // when set: render | reference | error pictures per method
 
     static BenchOptions quick();
     static BenchOptions full();

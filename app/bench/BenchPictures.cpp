@@ -6,8 +6,8 @@
 
 namespace phonglab {
 
-QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
-                     int bandPx, const std::vector<std::uint8_t> *compared, const QString &caption)
+QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background, int bandPx,
+                     const std::vector<std::uint8_t> *compared, const QString &caption)
 {
     const int w = rendered.width(), h = rendered.height();
     constexpr int kGap = 4;
@@ -26,8 +26,8 @@ QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, co
     const QStringList labels{QStringLiteral("GPU"), QStringLiteral("CPU reference (exact)"),
                              QStringLiteral("error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
     for (int i = 0; i < 3; ++i)
-        painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption),
-                         Qt::AlignVCenter | Qt::AlignLeft, labels[i]);
+        painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
+                         labels[i]);
     return out;
 }
 

@@ -37,9 +37,9 @@ enum Column {
 };
 
 const char *const kColumnNames[ColumnCount] = {
-    "scene",        "method",       "detail",         "triangles",   "lights",
-    "scene_lights", "frame_ms",     "frame_ms_p90",   "cpu_submit_ms", "gpu_ms",
-    "frames",       "psnr_db",      "rmse",           "max_error",   "spec_psnr_db",
+    "scene",        "method",         "detail",       "triangles",       "lights",
+    "scene_lights", "frame_ms",       "frame_ms_p90", "cpu_submit_ms",   "gpu_ms",
+    "frames",       "psnr_db",        "rmse",         "max_error",       "spec_psnr_db",
     "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors",
 };
 
@@ -62,8 +62,8 @@ QString formatDouble(double v)
 QString detailPercent(double detail)
 {
     const double percent = detail * 100.0;
-    const QString number = std::abs(percent) >= 100 ? QString::number(percent, 'f', 0)
-                                                     : QString::number(percent, 'g', 3);
+    const QString number =
+        std::abs(percent) >= 100 ? QString::number(percent, 'f', 0) : QString::number(percent, 'g', 3);
     return number + QStringLiteral(" %");
 }
 
@@ -159,7 +159,11 @@ bool splitRecords(const QString &text, std::vector<Record> *records, int *badLin
 class FieldReader
 {
 public:
-    FieldReader(const QString &source, int line) : m_source(source), m_line(line) {}
+    FieldReader(const QString &source, int line)
+        : m_source(source)
+        , m_line(line)
+    {
+    }
 
     bool readDouble(const QString &column, const QString &text, double *out, QString *error) const
     {
@@ -169,8 +173,7 @@ public:
             return true;
         }
         const QString lower = t.toLower();
-        if (lower == QLatin1String("inf") || lower == QLatin1String("+inf")
-            || lower == QLatin1String("infinity")) {
+        if (lower == QLatin1String("inf") || lower == QLatin1String("+inf") || lower == QLatin1String("infinity")) {
             *out = std::numeric_limits<double>::infinity();
             return true;
         }
@@ -297,8 +300,7 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
     return benchRowsFromCsv(text, rows, error, QStringLiteral("results.csv"));
 }
 
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error,
-                      const QString &sourceName)
+bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error, const QString &sourceName)
 {
     QString body = text;
     if (body.startsWith(QChar(0xFEFF)))
@@ -329,7 +331,9 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
                 if (index[c] != -1) {
                     if (error)
                         *error = QStringLiteral("%1 line %2: column '%3' appears twice")
-                                     .arg(sourceName).arg(header.line).arg(name);
+                                     .arg(sourceName)
+                                     .arg(header.line)
+                                     .arg(name);
                     return false;
                 }
                 index[c] = f;

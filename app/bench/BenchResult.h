@@ -17,22 +17,22 @@ namespace phonglab {
 // One row is one line of results.csv; the column names (kCsvColumns) are an
 // interface other tools rely on: add columns at the end, never rename.
 struct BenchRow {
-    QString scene;         // scene name (file base name, e.g. "default")
-    QString method;        // shadingName(): "flat", "gouraud", "phong", "blinn-phong"
-    double detail = 1.0;   // requested fraction of the full triangle count (1 = full)
-    qint64 triangles = 0;  // triangles drawn per frame at this detail
-    int lights = 0;        // number of point lights
+    QString scene;            // scene name (file base name, e.g. "default")
+    QString method;           // shadingName(): "flat", "gouraud", "phong", "blinn-phong"
+    double detail = 1.0;      // requested fraction of the full triangle count (1 = full)
+    qint64 triangles = 0;     // triangles drawn per frame at this detail
+    int lights = 0;           // number of point lights
     bool sceneLights = false; // true: exactly the scene's own lights (the fit uses these rows)
 
-    double frameMs = 0;      // median wall time of render + glFinish, ms
-    double frameMsP90 = 0;   // 90th percentile of the same
-    double cpuSubmitMs = 0;  // median time until render() returned (CPU submission), ms
+    double frameMs = 0;                                      // median wall time of render + glFinish, ms
+    double frameMsP90 = 0;                                   // 90th percentile of the same
+    double cpuSubmitMs = 0;                                  // median time until render() returned (CPU submission), ms
     double gpuMs = std::numeric_limits<double>::quiet_NaN(); // GL_TIME_ELAPSED median; NaN where not trusted (llvmpipe)
-    int frames = 0;          // frames timed after warm-up
+    int frames = 0;                                          // frames timed after warm-up
 
-    double psnr = 0;        // dB; +inf when identical
-    double rmse = 0;        // 8-bit steps
-    int maxError = 0;       // 8-bit steps, 0..255
+    double psnr = 0;         // dB; +inf when identical
+    double rmse = 0;         // 8-bit steps
+    int maxError = 0;        // 8-bit steps, 0..255
     double specularPsnr = 0; // the same three inside the specular highlight alone
     double specularRmse = 0;
     int specularMaxError = 0;
@@ -64,7 +64,6 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
 // The same, with errors naming `sourceName` (e.g. the file's path) where the
 // overload above says "results.csv": "<sourceName> line 7: frame_ms is not a
 // number: 'abc'". *rows is only replaced on success.
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error,
-                      const QString &sourceName);
+bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error, const QString &sourceName);
 
 } // namespace phonglab

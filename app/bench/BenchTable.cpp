@@ -83,13 +83,15 @@ QString sceneFitsToCsv(const std::vector<SceneFit> &fits, const ErrorBudget &bud
         const BenchRow none;
         const BenchRow &c = chosen ? f.rows[std::size_t(f.fit.chosen)] : none;
         const BenchRow &b = base ? f.rows[std::size_t(f.fit.baseline)] : none;
-        out += QStringList{csvField(f.scene), csvField(budget.describe()),
+        out += QStringList{csvField(f.scene),
+                           csvField(budget.describe()),
                            chosen ? c.method : QString(),
                            chosen ? QString::number(c.detail, 'g', 17) : QString(),
                            chosen ? QString::number(c.triangles) : QString(),
                            chosen ? QString::number(c.frameMs, 'g', 17) : QString(),
                            chosen ? QString::number(c.maxError) : QString(),
-                           chosen ? (std::isinf(c.psnr) ? QStringLiteral("inf") : QString::number(c.psnr, 'g', 17)) : QString(),
+                           chosen ? (std::isinf(c.psnr) ? QStringLiteral("inf") : QString::number(c.psnr, 'g', 17))
+                                  : QString(),
                            base ? QString::number(b.triangles) : QString(),
                            base ? QString::number(b.frameMs, 'g', 17) : QString(),
                            chosen && base ? QString::number(f.fit.trianglesSaved) : QString(),

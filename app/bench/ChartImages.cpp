@@ -30,8 +30,8 @@ void settleLayouts(const std::vector<QChart *> &charts)
             chart->layout()->activate();
 }
 
-bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath,
-                 const QString &svgPath, const QString &title, QString *error)
+bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
+                 const QString &title, QString *error)
 {
     auto fail = [&](const QString &message) {
         if (error)
@@ -87,8 +87,7 @@ bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPat
     return true;
 }
 
-bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
-                      QString *error, QSize size)
+bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QString *error, QSize size)
 {
     if (!haveApplication(error))
         return false;

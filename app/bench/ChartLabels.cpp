@@ -52,18 +52,18 @@ void LabelPlacer::place() const
         const QSizeF s = label.item->boundingRect().size();
         const double w = s.width(), h = s.height();
         const QPointF offsets[] = {
-            {7, -h / 2},          // right
-            {5, -h - 1},          // above right
-            {-w / 2, -h - 6},     // above
-            {5, 1},               // below right
-            {-w / 2, 6},          // below
-            {-7 - w, -h / 2},     // left
-            {-5 - w, -h - 1},     // above left
-            {-5 - w, 1},          // below left
-            {12, -h / 2},         // further right
-            {-w / 2, -h - 14},    // further above
-            {-w / 2, 14},         // further below
-            {-12 - w, -h / 2},    // further left
+            {7, -h / 2},       // right
+            {5, -h - 1},       // above right
+            {-w / 2, -h - 6},  // above
+            {5, 1},            // below right
+            {-w / 2, 6},       // below
+            {-7 - w, -h / 2},  // left
+            {-5 - w, -h - 1},  // above left
+            {-5 - w, 1},       // below left
+            {12, -h / 2},      // further right
+            {-w / 2, -h - 14}, // further above
+            {-w / 2, 14},      // further below
+            {-12 - w, -h / 2}, // further left
         };
         QRectF best;
         double bestScore = std::numeric_limits<double>::infinity();
@@ -88,8 +88,7 @@ void LabelPlacer::place() const
     }
 }
 
-void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis,
-                      QAbstractAxis *yAxis)
+void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis, QAbstractAxis *yAxis)
 {
     QChart *chart = placer->chart;
     QObject::connect(chart, &QChart::plotAreaChanged, chart, [placer] { placer->place(); });

@@ -82,10 +82,8 @@ QString rowError(const BenchRow &row, ErrorBudget::Kind kind)
 bool ErrorBudget::accepts(const BenchRow &row) const
 {
     switch (kind) {
-    case Kind::MaxError:
-        return row.maxError >= 0 && row.maxError <= maxError;
-    case Kind::Psnr:
-        return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
+    case Kind::MaxError: return row.maxError >= 0 && row.maxError <= maxError;
+    case Kind::Psnr: return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
     }
     return false;
 }
@@ -102,8 +100,7 @@ std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
     const QString t = text.trimmed().toLower();
 
     // "2", "max:2", "max: 2", "2/255", "max:2/255"
-    static const QRegularExpression maxForm(
-        QStringLiteral("^(?:max\\s*:\\s*)?(\\d{1,3})(?:\\s*/\\s*255)?$"));
+    static const QRegularExpression maxForm(QStringLiteral("^(?:max\\s*:\\s*)?(\\d{1,3})(?:\\s*/\\s*255)?$"));
     QRegularExpressionMatch m = maxForm.match(t);
     if (m.hasMatch()) {
         const int value = m.captured(1).toInt();
@@ -116,9 +113,8 @@ std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
     }
 
     // "psnr:40", "psnr: 38.5", "40dB", "40 dB", "psnr:40dB"
-    static const QRegularExpression psnrForm(
-        QStringLiteral("^(?:psnr\\s*:\\s*(\\d+(?:\\.\\d*)?|\\.\\d+)(?:\\s*db)?"
-                       "|(\\d+(?:\\.\\d*)?|\\.\\d+)\\s*db)$"));
+    static const QRegularExpression psnrForm(QStringLiteral("^(?:psnr\\s*:\\s*(\\d+(?:\\.\\d*)?|\\.\\d+)(?:\\s*db)?"
+                                                            "|(\\d+(?:\\.\\d*)?|\\.\\d+)\\s*db)$"));
     m = psnrForm.match(t);
     if (m.hasMatch()) {
         const QString number = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
@@ -200,9 +196,9 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
         if (bestIndex < 0)
             fit.summary = QStringLiteral("nothing meets %1: no measured rows").arg(budget.describe());
         else
-            fit.summary = QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
-                              .arg(budget.describe(), rowError(rows[bestIndex], budget.kind),
-                                   rowLabel(rows[bestIndex]));
+            fit.summary =
+                QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
+                    .arg(budget.describe(), rowError(rows[bestIndex], budget.kind), rowLabel(rows[bestIndex]));
         return fit;
     }
 
@@ -221,8 +217,7 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     const QString baseText = QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
 
     if (fit.chosen == fit.baseline) {
-        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3")
-                          .arg(baseText, budget.describe(), error);
+        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3").arg(baseText, budget.describe(), error);
         return fit;
     }
 
@@ -250,8 +245,8 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     if (effect.isEmpty())
         effect = QStringLiteral("saves nothing");
 
-    fit.summary = QStringLiteral("%1 (%2): %3 against %4; %5")
-                      .arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
+    fit.summary =
+        QStringLiteral("%1 (%2): %3 against %4; %5").arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
     return fit;
 }
 

@@ -10,7 +10,10 @@ namespace phonglab {
 // How far from the exact answer a scene may be drawn ("model no more than a
 // scene needs"). Measured away from silhouettes (the bench's 2 px band).
 struct ErrorBudget {
-    enum class Kind { MaxError, Psnr };
+    enum class Kind {
+        MaxError,
+        Psnr
+    };
     Kind kind = Kind::MaxError;
     int maxError = 2;      // Kind::MaxError: largest allowed error, 8-bit steps
     double minPsnr = 40.0; // Kind::Psnr: smallest allowed PSNR, dB
@@ -24,8 +27,8 @@ struct ErrorBudget {
 
 // What fitToBudget() chose for one scene and light setup.
 struct BudgetFit {
-    int chosen = -1;    // index into the rows given, -1 when nothing meets the budget
-    int baseline = -1;  // the full-detail Phong row, -1 if it was not measured
+    int chosen = -1;           // index into the rows given, -1 when nothing meets the budget
+    int baseline = -1;         // the full-detail Phong row, -1 if it was not measured
     qint64 trianglesSaved = 0; // baseline.triangles - chosen.triangles
     double msSaved = 0;        // baseline.frameMs - chosen.frameMs
     QString summary;           // one line for people: what was chosen and what it saves

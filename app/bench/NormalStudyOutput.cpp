@@ -18,8 +18,11 @@ QString studyCsv(const std::vector<NormalStudyRow> &rows)
 {
     QString out = QStringLiteral("tessellation,method,triangles,ms,max_angle_deg,mean_angle_deg\n");
     for (const NormalStudyRow &r : rows)
-        out += QStringList{csvField(r.tessellation), r.method, QString::number(r.triangles),
-                           QString::number(r.ms, 'g', 17), QString::number(r.maxAngleDeg, 'g', 17),
+        out += QStringList{csvField(r.tessellation),
+                           r.method,
+                           QString::number(r.triangles),
+                           QString::number(r.ms, 'g', 17),
+                           QString::number(r.maxAngleDeg, 'g', 17),
                            QString::number(r.meanAngleDeg, 'g', 17)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');

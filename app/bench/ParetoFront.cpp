@@ -29,7 +29,7 @@ std::vector<int> paretoFront(const std::vector<BenchRow> &rows)
     // duplicates (same time and error) do not dominate each other.
     std::vector<int> front;
     bool haveBest = false;
-    double bestError = 0;   // least error seen so far
+    double bestError = 0;     // least error seen so far
     double bestErrorTime = 0; // the least time at which bestError was seen
     for (int i : order) {
         const BenchRow &row = rows[i];

@@ -82,9 +82,8 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
         byMethod[row.method].push_back(&row);
 
     for (auto &[method, list] : byMethod) {
-        std::stable_sort(list.begin(), list.end(), [](const BenchRow *a, const BenchRow *b) {
-            return a->detail < b->detail;
-        });
+        std::stable_sort(list.begin(), list.end(),
+                         [](const BenchRow *a, const BenchRow *b) { return a->detail < b->detail; });
         LabelledSeries series;
         series.name = method;
         series.color = methodColor(method);
@@ -99,8 +98,8 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
     return buildChart(spec);
 }
 
-bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
-                                 const QString &svgPath, QString *error, QSize size)
+bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
+                                 QString *error, QSize size)
 {
     if (!haveApplication(error))
         return false;
@@ -110,9 +109,8 @@ bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QStri
         return false;
     }
     // Tessellations have no fixed colours of their own: a fixed sequence.
-    static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22),
-                                     QColor(0x2c, 0xa0, 0x2c), QColor(0xc0, 0x39, 0x2b),
-                                     QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
+    static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22), QColor(0x2c, 0xa0, 0x2c),
+                                     QColor(0xc0, 0x39, 0x2b), QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
                                      QColor(0x17, 0xa2, 0xb8), QColor(0x7f, 0x7f, 0x7f)};
     for (size_t i = 0; i < series.size(); ++i) {
         if (!series[i].color.isValid())
@@ -120,14 +118,14 @@ bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QStri
         std::stable_sort(series[i].points.begin(), series[i].points.end(),
                          [](const LabelledPoint &a, const LabelledPoint &b) { return a.x < b.x; });
     }
-    std::unique_ptr<QChart> chart(createLabelledChart(
-        series, QStringLiteral("Normal methods: time against angular error"),
-        QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
+    std::unique_ptr<QChart> chart(
+        createLabelledChart(series, QStringLiteral("Normal methods: time against angular error"),
+                            QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
     return writeChartImages(chart.get(), pngPath, svgPath, error, size);
 }
 
-bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
-                              const QString &svgPath, QString *error, QSize panelSize)
+bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
+                              QString *error, QSize panelSize)
 {
     if (!haveApplication(error))
         return false;
@@ -174,18 +172,16 @@ bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &
                 if (row.scene == scenes[r] && row.lights == own[std::size_t(c)].first
                     && row.sceneLights == own[std::size_t(c)].second)
                     panel.push_back(row);
-            const QString title = QStringLiteral("%1 — %2")
-                                      .arg(scenes[r], lightsText(own[std::size_t(c)].first, own[std::size_t(c)].second));
+            const QString title = QStringLiteral("%1 — %2").arg(
+                scenes[r], lightsText(own[std::size_t(c)].first, own[std::size_t(c)].second));
             QChart *chart = createSpeedAccuracyChart(panel, title);
             scene.addItem(chart); // the scene owns it from here
-            chart->setGeometry(QRectF(QPointF(c * panelSize.width(), r * panelSize.height()),
-                                      QSizeF(panelSize)));
+            chart->setGeometry(QRectF(QPointF(c * panelSize.width(), r * panelSize.height()), QSizeF(panelSize)));
             charts.push_back(chart);
         }
     }
     settleLayouts(charts);
-    return renderScene(scene, total, pngPath, svgPath,
-                       QStringLiteral("PhongLab: frame time against error"), error);
+    return renderScene(scene, total, pngPath, svgPath, QStringLiteral("PhongLab: frame time against error"), error);
 }
 
 } // namespace phonglab

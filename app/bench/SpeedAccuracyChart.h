@@ -39,8 +39,8 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
 // most setups. Written as PNG (device pixel ratio 1, panelSize × grid) and SVG (same size, 96 dpi), each
 // through QSaveFile. An empty path skips that file. False with a reason when
 // there is nothing to draw, no QApplication, or a file cannot be written.
-bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
-                              const QString &svgPath, QString *error, QSize panelSize = {640, 440});
+bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
+                              QString *error, QSize panelSize = {640, 440});
 
 // The general shape both charts above and the normal-method study use:
 // named series of (x, y, point label) drawn as line + markers, labels placed
@@ -57,10 +57,10 @@ struct LabelledSeries {
     QColor color;
     std::vector<LabelledPoint> points; // drawn in this order
 };
-QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title,
-                            const QString &xTitle, const QString &yTitle);
-bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
-                      QString *error, QSize size = {640, 440});
+QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title, const QString &xTitle,
+                            const QString &yTitle);
+bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QString *error,
+                      QSize size = {640, 440});
 
 // The normal-method study (app/mesh/NormalMethodStudy.h, NormalStudyRow:
 // tessellation, method, triangles, ms, maxAngleDeg, meanAngleDeg): time (x,
@@ -68,11 +68,11 @@ bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgP
 // with its points labelled by method. A template over the row type so this
 // header does not depend on the mesh study; any range of rows with those
 // fields will do. Written like writeChartImages().
-bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
-                                 const QString &svgPath, QString *error, QSize size = {640, 440});
+bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
+                                 QString *error, QSize size = {640, 440});
 template <typename NormalStudyRows>
-bool writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath,
-                           QString *error, QSize size = {640, 440})
+bool writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath, QString *error,
+                           QSize size = {640, 440})
 {
     std::vector<LabelledSeries> series;
     for (const auto &row : rows) {

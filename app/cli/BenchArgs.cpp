@@ -20,35 +20,35 @@ const QString kSynopsis = QStringLiteral(
 
 QString helpText()
 {
-    return kSynopsis + QStringLiteral(
-        "\n\n"
-        "Measures every shading method at every level of detail under 1, 4 and 8 lights (and the\n"
-        "scene's own lights): frame time against the error from the CPU double-precision reference.\n\n"
-        "  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and\n"
-        "                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)\n"
-        "  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores\n"
-        "  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)\n"
-        "  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB\n"
-        "  --size WxH       frame size (default 800x600, --quick 400x300)\n"
-        "  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)\n"
-        "  --lights LIST    light counts, comma separated, 1..8, and/or 'scene' (default 1,4,8,scene)\n"
-        "  --methods LIST   shading methods, comma separated (default flat,gouraud,blinn-phong,phong)\n"
-        "  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625\n"
-        "  --images         also write render | reference | error pictures into DIR/images\n"
-        "  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.\n"
-        "                   against another --budget); writes fit.csv and the chart into DIR\n"
-        "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run\n"
-        "                   too (a full run always has it)\n\n"
-        "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the\n"
-        "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit\n"
-        "steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong\n"
-        "uses the matched exponent 4n (n = the material's shininess), as shaders/blinn-phong.frag does.\n\n"
-        "Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.");
+    return kSynopsis
+        + QStringLiteral(
+               "\n\n"
+               "Measures every shading method at every level of detail under 1, 4 and 8 lights (and the\n"
+               "scene's own lights): frame time against the error from the CPU double-precision reference.\n\n"
+               "  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and\n"
+               "                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)\n"
+               "  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores\n"
+               "  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)\n"
+               "  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB\n"
+               "  --size WxH       frame size (default 800x600, --quick 400x300)\n"
+               "  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)\n"
+               "  --lights LIST    light counts, comma separated, 1..8, and/or 'scene' (default 1,4,8,scene)\n"
+               "  --methods LIST   shading methods, comma separated (default flat,gouraud,blinn-phong,phong)\n"
+               "  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625\n"
+               "  --images         also write render | reference | error pictures into DIR/images\n"
+               "  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.\n"
+               "                   against another --budget); writes fit.csv and the chart into DIR\n"
+               "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run\n"
+               "                   too (a full run always has it)\n\n"
+               "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the\n"
+               "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit\n"
+               "steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong\n"
+               "uses the matched exponent 4n (n = the material's shininess), as shaders/blinn-phong.frag does.\n\n"
+               "Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.");
 }
 
 // Parses each comma-separated item with `item`; nullopt on the first bad one.
-template <typename T, typename F>
-std::optional<std::vector<T>> parseList(const QString &text, F item)
+template <typename T, typename F> std::optional<std::vector<T>> parseList(const QString &text, F item)
 {
     std::vector<T> out;
     for (const QString &part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -87,7 +87,8 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     const QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Timed frames."), QStringLiteral("n"));
     const QCommandLineOption lights(QStringLiteral("lights"), QStringLiteral("Light counts."), QStringLiteral("list"));
     const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("Methods."), QStringLiteral("list"));
-    const QCommandLineOption details(QStringLiteral("details"), QStringLiteral("Detail fractions."), QStringLiteral("list"));
+    const QCommandLineOption details(QStringLiteral("details"), QStringLiteral("Detail fractions."),
+                                     QStringLiteral("list"));
     const QCommandLineOption images(QStringLiteral("images"), QStringLiteral("Write pictures."));
     const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal-method study."));
     const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."), QStringLiteral("csv"));
@@ -111,9 +112,11 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     BenchArgs args;
     args.fromCsv = parser.value(from);
     if (parser.isSet(from)) {
-        for (const QCommandLineOption *measuring : {&scene, &quick, &size, &frames, &lights, &methods, &details, &images, &normals})
+        for (const QCommandLineOption *measuring :
+             {&scene, &quick, &size, &frames, &lights, &methods, &details, &images, &normals})
             if (parser.isSet(*measuring))
-                return usage(QStringLiteral("--from measures nothing: --%1 does not go with it").arg(measuring->names().constLast()));
+                return usage(QStringLiteral("--from measures nothing: --%1 does not go with it")
+                                 .arg(measuring->names().constLast()));
         if (args.fromCsv.isEmpty())
             return usage(QStringLiteral("--from: empty file name"));
     }
@@ -137,8 +140,8 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     if (parser.isSet(size)) {
         const auto parsed = parseSizeArgument(parser.value(size), 16, 8192);
         if (!parsed)
-            return usage(QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'")
-                             .arg(parser.value(size)));
+            return usage(
+                QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'").arg(parser.value(size)));
         args.options.size = *parsed;
     }
     if (parser.isSet(frames)) {
@@ -162,7 +165,8 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         });
         if (!counts)
             return usage(QStringLiteral("--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
-                             .arg(kMaxLights).arg(parser.value(lights)));
+                             .arg(kMaxLights)
+                             .arg(parser.value(lights)));
         args.options.lightCounts.clear();
         for (int n : *counts)
             if (n > 0)

@@ -41,26 +41,27 @@ const QString &synopsis()
 
 QString helpText()
 {
-    return synopsis() + QStringLiteral(
-        "\n\n"
-        "Renders SCENE.json with the shaders `render` would use, compares the image with the exact\n"
-        "(double-precision) reference of the same scene, leaving out a band around silhouettes,\n"
-        "and when it differs names the classic mistake that explains it.\n\n"
-        "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
-        "  --fragment FILE     fragment shader instead of the scene's or the shading method's\n"
-        "  --shading NAME      shading method instead of the scene's; one of %1\n"
-        "  --size WxH          image size in pixels, default 800x600\n"
-        "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2\n"
-        "  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,\n"
-        "                      worst, diagnosis, undetectable, errors) instead of text\n"
-        "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;\n"
-        "                      dark blue the silhouette band left out, black the background\n\n"
-        "Mistake keys: %3, unknown.\n\n"
-        "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.\n"
-        "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
-        .arg(shadingNames().join(QStringLiteral(", ")))
-        .arg(kDefaultCheckToleranceSteps)
-        .arg(shaderMistakeKeys().join(QStringLiteral(", ")));
+    return synopsis()
+        + QStringLiteral(
+              "\n\n"
+              "Renders SCENE.json with the shaders `render` would use, compares the image with the exact\n"
+              "(double-precision) reference of the same scene, leaving out a band around silhouettes,\n"
+              "and when it differs names the classic mistake that explains it.\n\n"
+              "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
+              "  --fragment FILE     fragment shader instead of the scene's or the shading method's\n"
+              "  --shading NAME      shading method instead of the scene's; one of %1\n"
+              "  --size WxH          image size in pixels, default 800x600\n"
+              "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2\n"
+              "  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,\n"
+              "                      worst, diagnosis, undetectable, errors) instead of text\n"
+              "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;\n"
+              "                      dark blue the silhouette band left out, black the background\n\n"
+              "Mistake keys: %3, unknown.\n\n"
+              "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.\n"
+              "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
+              .arg(shadingNames().join(QStringLiteral(", ")))
+              .arg(kDefaultCheckToleranceSteps)
+              .arg(shaderMistakeKeys().join(QStringLiteral(", ")));
 }
 
 // The arguments, or an exit code for usage errors and --help.
@@ -99,7 +100,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
         const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
         if (!parsed)
             return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
-                             .arg(kMaxImageSide).arg(parser.value(size)));
+                             .arg(kMaxImageSide)
+                             .arg(parser.value(size)));
         args.size = *parsed;
     }
     if (parser.isSet(shading)) {
@@ -112,7 +114,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
         bool ok = false;
         args.toleranceSteps = parser.value(tolerance).toInt(&ok);
         if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
-            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'").arg(parser.value(tolerance)));
+            return usage(
+                QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'").arg(parser.value(tolerance)));
     }
     if (parser.isSet(diff) && parser.value(diff).isEmpty())
         return usage(QStringLiteral("--diff: missing the output file"));
@@ -180,8 +183,11 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     *reference = std::move(*made);
     outcome.report = checkRender(*yours, *reference, args.toleranceSteps);
     if (!outcome.report.comparable())
-        return fail(args.scenePath, QStringLiteral("nothing to compare: no surface away from silhouettes in this "
-                                                   "view at %1x%2").arg(args.size.width()).arg(args.size.height()));
+        return fail(args.scenePath,
+                    QStringLiteral("nothing to compare: no surface away from silhouettes in this "
+                                   "view at %1x%2")
+                        .arg(args.size.width())
+                        .arg(args.size.height()));
     outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
     return outcome;
 }
@@ -206,10 +212,12 @@ int check(const CheckArgs &args, int argc, char **argv)
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
         QString error;
         if (!writePng(checkHeatmap(yours, reference), args.diffPath, &error))
-            outcome = CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
+            outcome =
+                CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
     }
     if (args.json) {
-        printLine(QString::fromUtf8(QJsonDocument(checkJson(outcome, scene)).toJson(QJsonDocument::Indented)).trimmed());
+        printLine(
+            QString::fromUtf8(QJsonDocument(checkJson(outcome, scene)).toJson(QJsonDocument::Indented)).trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)
             if (e.line == 0) // compile errors with a line are printed as the compiler's

@@ -61,8 +61,9 @@ QJsonObject unknownFinding()
     return {{QStringLiteral("key"), QStringLiteral("unknown")},
             {QStringLiteral("also"), QJsonArray()},
             {QStringLiteral("confidence"), 0.0},
-            {QStringLiteral("message"), QStringLiteral("no classic mistake explains the difference; "
-                                                       "the error heatmap (--diff) shows where it is")},
+            {QStringLiteral("message"),
+             QStringLiteral("no classic mistake explains the difference; "
+                            "the error heatmap (--diff) shows where it is")},
             {QStringLiteral("lines"), QJsonArray()}};
 }
 
@@ -75,9 +76,8 @@ QJsonArray diagnosisJson(const CheckOutcome &outcome)
     for (const MistakeFinding &f : d.findings) {
         QJsonArray lines;
         for (const SourceLine &l : findingLines(f, outcome.stages))
-            lines.append(QJsonObject{{QStringLiteral("file"), l.file},
-                                     {QStringLiteral("line"), l.line},
-                                     {QStringLiteral("text"), l.text}});
+            lines.append(QJsonObject{
+                {QStringLiteral("file"), l.file}, {QStringLiteral("line"), l.line}, {QStringLiteral("text"), l.text}});
         out.append(QJsonObject{{QStringLiteral("key"), shaderMistakeKey(f.key)},
                                {QStringLiteral("also"), keysJson(f.also)},
                                {QStringLiteral("confidence"), f.confidence},
@@ -118,8 +118,8 @@ QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene)
     if (hasWorst) {
         worst.insert(QStringLiteral("x"), c.worstPixel.x());
         worst.insert(QStringLiteral("y"), c.worstPixel.y());
-        worst.insert(QStringLiteral("object"), outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject)
-                                                                                : QJsonValue());
+        worst.insert(QStringLiteral("object"),
+                     outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject) : QJsonValue());
     }
     o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
@@ -137,7 +137,8 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     QStringList out;
     out << QStringLiteral("check: %1").arg(verdictName(outcome.verdict));
     out << QStringLiteral("%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
-               .arg(std::isfinite(c.psnr) ? QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 2) : QStringLiteral("PSNR inf"))
+               .arg(std::isfinite(c.psnr) ? QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 2)
+                                          : QStringLiteral("PSNR inf"))
                .arg(c.maxError)
                .arg(r.toleranceSteps)
                .arg(100.0 * r.badFraction(), 0, 'f', 2)

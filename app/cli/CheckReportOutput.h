@@ -17,11 +17,15 @@ namespace phonglab::cli {
 // message}]. Never renamed; new keys may be added.
 
 struct CheckOutcome {
-    enum class Verdict { Pass, Fail, Error };
+    enum class Verdict {
+        Pass,
+        Fail,
+        Error
+    };
     Verdict verdict = Verdict::Error;
-    CheckReport report;                       // Pass and Fail
-    std::vector<ShaderDiagnostic> errors;     // Error: compile errors, or one for bad input
-    std::vector<ShaderStageText> stages;      // the user's sources, for the diagnosis' lines
+    CheckReport report;                   // Pass and Fail
+    std::vector<ShaderDiagnostic> errors; // Error: compile errors, or one for bad input
+    std::vector<ShaderStageText> stages;  // the user's sources, for the diagnosis' lines
 };
 
 QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene);

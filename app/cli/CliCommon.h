@@ -13,8 +13,8 @@ inline constexpr int kExitUsage = 2;   // wrong arguments
 
 // "phonglab: error: MESSAGE" on stderr.
 void printError(const QString &message);
-void printLine(const QString &text);     // stdout
-void printErrLine(const QString &text);  // stderr, verbatim
+void printLine(const QString &text);    // stdout
+void printErrLine(const QString &text); // stderr, verbatim
 
 QStringList argumentsFrom(int argc, char **argv);
 

@@ -27,7 +27,8 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
     const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
-    const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal method."), QStringLiteral("method"));
+    const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal method."),
+                                     QStringLiteral("method"));
     const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."), QStringLiteral("deg"));
     parser.addOptions({help, json, normals, crease});
 
@@ -39,14 +40,15 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     if (!parser.parse(arguments))
         return usage(parser.errorText());
     if (parser.isSet(help)) {
-        printLine(QString::fromLatin1(kUsage) + QStringLiteral(
-            "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
-            "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
-            "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
-            "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
-            "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
-            "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
-            "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments."));
+        printLine(QString::fromLatin1(kUsage)
+                  + QStringLiteral(
+                      "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
+                      "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
+                      "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
+                      "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
+                      "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
+                      "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
+                      "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments."));
         return kExitOk;
     }
     if (parser.positionalArguments().size() != 1)
@@ -105,12 +107,14 @@ void printJson(const QString &path, const MeshLoadResult &r)
     o.insert(QStringLiteral("vertices"), s.fileVertices);
     o.insert(QStringLiteral("faces"), s.fileFaces);
     o.insert(QStringLiteral("normals"), s.normalsFromFile ? QStringLiteral("file") : QStringLiteral("computed"));
-    o.insert(QStringLiteral("normal_method"), s.normalsFromFile ? QStringLiteral("file")
-                                              : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
-                                                                                          : normalMethodName(s.normalMethod));
+    o.insert(QStringLiteral("normal_method"),
+             s.normalsFromFile                                ? QStringLiteral("file")
+                 : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
+                                                              : normalMethodName(s.normalMethod));
     o.insert(QStringLiteral("crease_deg"), s.creaseAngleDeg ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
-    o.insert(QStringLiteral("bounds"), QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)},
-                                                   {QStringLiteral("max"), vec3Json(s.boundsMax)}});
+    o.insert(
+        QStringLiteral("bounds"),
+        QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)}, {QStringLiteral("max"), vec3Json(s.boundsMax)}});
     o.insert(QStringLiteral("gpu_vertices"), s.vertices);
     o.insert(QStringLiteral("triangles"), s.triangles);
     o.insert(QStringLiteral("split_vertices"), s.splitVertices);
@@ -129,14 +133,16 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
     printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
     printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
-    const QString normals = s.normalsFromFile ? QStringLiteral("from the file, per face corner")
+    const QString normals = s.normalsFromFile        ? QStringLiteral("from the file, per face corner")
         : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
-                                                      : QStringLiteral("computed (%1)").arg(methodDescription(s));
+                                                     : QStringLiteral("computed (%1)").arg(methodDescription(s));
     printLine(QStringLiteral("normals:         %1").arg(normals));
-    printLine(QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)").arg(s.vertices).arg(s.splitVertices));
+    printLine(
+        QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)").arg(s.vertices).arg(s.splitVertices));
     printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
     printLine(QStringLiteral("surface:         %1").arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
-    printLine(QStringLiteral("load time:       %1 ms%2").arg(s.loadMs, 0, 'f', 1)
+    printLine(QStringLiteral("load time:       %1 ms%2")
+                  .arg(s.loadMs, 0, 'f', 1)
                   .arg(s.fromCache ? QStringLiteral(" (from the mesh cache)") : QString()));
     printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
     for (const QString &w : r.warnings)

@@ -36,14 +36,16 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
     parser.addOption(help);
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Output PNG file."), QStringLiteral("file"));
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, QStringLiteral("Output PNG file."),
+                                    QStringLiteral("file"));
     const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Image size, default 800x600."),
                                   QStringLiteral("WxH"));
     const QCommandLineOption vertex(QStringLiteral("vertex"),
-                                    QStringLiteral("Vertex shader to use instead of the scene's."), QStringLiteral("file"));
+                                    QStringLiteral("Vertex shader to use instead of the scene's."),
+                                    QStringLiteral("file"));
     const QCommandLineOption fragment(QStringLiteral("fragment"),
-                                      QStringLiteral("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
+                                      QStringLiteral("Fragment shader to use instead of the scene's."),
+                                      QStringLiteral("file"));
     const QCommandLineOption shading(QStringLiteral("shading"),
                                      QStringLiteral("Shading method instead of the scene's."), QStringLiteral("name"));
     parser.addOptions({output, size, vertex, fragment, shading});
@@ -59,17 +61,19 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     if (!parser.parse(arguments))
         return usage(parser.errorText());
     if (parser.isSet(help)) {
-        printLine(synopsis + QStringLiteral(
-            "\n\n"
-            "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
-            "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
-            "  --size WxH          image size in pixels, default 800x600\n"
-            "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
-            "                      %1\n"
-            "  --vertex FILE       vertex shader instead of the shading method's\n"
-            "  --fragment FILE     fragment shader instead of the shading method's\n\n"
-            "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
-            "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.").arg(knownMethods));
+        printLine(
+            synopsis
+            + QStringLiteral("\n\n"
+                             "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
+                             "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
+                             "  --size WxH          image size in pixels, default 800x600\n"
+                             "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
+                             "                      %1\n"
+                             "  --vertex FILE       vertex shader instead of the shading method's\n"
+                             "  --fragment FILE     fragment shader instead of the shading method's\n\n"
+                             "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
+                             "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
+                  .arg(knownMethods));
         return kExitOk;
     }
     const QStringList positional = parser.positionalArguments();
@@ -86,14 +90,15 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
         const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
         if (!parsed)
             return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
-                             .arg(kMaxImageSide).arg(parser.value(size)));
+                             .arg(kMaxImageSide)
+                             .arg(parser.value(size)));
         args.size = *parsed;
     }
     if (parser.isSet(shading)) {
         args.shading = shadingFromName(parser.value(shading));
         if (!args.shading)
-            return usage(QStringLiteral("--shading: unknown method '%1' (known: %2)")
-                             .arg(parser.value(shading), knownMethods));
+            return usage(
+                QStringLiteral("--shading: unknown method '%1' (known: %2)").arg(parser.value(shading), knownMethods));
     }
     args.vertexPath = parser.value(vertex);
     args.fragmentPath = parser.value(fragment);

@@ -21,13 +21,12 @@ QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene
 
 } // namespace
 
-StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg,
-                            bool methodChosen)
+StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg, bool methodChosen)
 {
     const QString name = shadingName(scene.shading);
-    return {stagePath(vertexArg, scene.vertexShader, scene, methodChosen, shaderPath(name + QStringLiteral(".vert"))),
-            stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen,
-                      shaderPath(name + QStringLiteral(".frag")))};
+    return {
+        stagePath(vertexArg, scene.vertexShader, scene, methodChosen, shaderPath(name + QStringLiteral(".vert"))),
+        stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen, shaderPath(name + QStringLiteral(".frag")))};
 }
 
 CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,

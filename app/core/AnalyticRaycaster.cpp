@@ -132,10 +132,11 @@ std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, do
         const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
         if (!surface) {
             if (error)
-                *error = QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
-                                        "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
-                             .arg(i)
-                             .arg(object.mesh);
+                *error =
+                    QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
+                                   "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
+                        .arg(i)
+                        .arg(object.mesh);
             return std::nullopt;
         }
         const ObjectMatrices matrices = ObjectMatrices::make(object.transform.matrix(), view, projection);
@@ -166,8 +167,8 @@ struct Hit {
 // The nearest surface along a camera ray over all objects. Each object is
 // intersected in its own space with the ray mapped through inverse(modelView);
 // a linear map keeps the parameter t, so t stays the camera-space depth.
-Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
-               double nearPlane, double farPlane)
+Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
+               double farPlane)
 {
     Hit best;
     for (const PreparedObject &object : objects) {
@@ -199,8 +200,8 @@ ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const Camera
     // normals. No flip towards the viewer: phong.frag does not flip either,
     // so an inside seen through the near plane is lit as the GPU lights it.
     const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
-        : object.surface == Surface::Torus                             ? torusNormal(p, kTorusMajorRadius)
-                                                                       : boxNormal(p);
+        : object.surface == Surface::Torus                            ? torusNormal(p, kTorusMajorRadius)
+                                                                      : boxNormal(p);
     return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix}, *object.material, scene.ambient,
                              lights, shader);
 }
@@ -240,8 +241,7 @@ std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tM
     return std::nullopt;
 }
 
-std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
-                                     double majorRadius, double minorRadius)
+std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius, double minorRadius)
 {
     const double length = glm::length(ray.direction);
     if (length == 0.0 || !(tMin <= tMax))
@@ -274,11 +274,8 @@ std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
     const double e = d.x * d.x + d.z * d.z;
     const double g = o.x * d.x + o.z * d.z;
     const double h = o.x * o.x + o.z * o.z;
-    const Coefficients c{b * b - 4.0 * R2 * h,
-                         4.0 * a * b - 8.0 * R2 * g,
-                         4.0 * a * a + 2.0 * b - 4.0 * R2 * e,
-                         4.0 * a,
-                         1.0};
+    const Coefficients c{b * b - 4.0 * R2 * h, 4.0 * a * b - 8.0 * R2 * g, 4.0 * a * a + 2.0 * b - 4.0 * R2 * e,
+                         4.0 * a, 1.0};
     std::array<double, kMaxDegree> roots{};
     if (rootsInInterval(c, kMaxDegree, 0.0, uHi - uLo, roots.data()) == 0)
         return std::nullopt;

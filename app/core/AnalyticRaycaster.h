@@ -24,8 +24,7 @@ namespace phonglab {
 // `standIns` maps a mesh as written in the scene (e.g. a Blender cube's file
 // path) to the builtin whose analytic surface it should be compared with
 // ("builtin:cube" is the box [-1, 1]³ with its face normals).
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                           QString *error = nullptr,
+std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error = nullptr,
                                            const QHash<QString, QString> &standIns = {});
 
 // What the reference computes at each hit point. Gouraud and flat shading
@@ -52,7 +51,8 @@ struct ReferenceShader {
     std::optional<ShaderMistake> mistake; // with Phong only
 
     ReferenceShader(ReferenceShading s = ReferenceShading::Phong, std::optional<ShaderMistake> m = std::nullopt)
-        : shading(s), mistake(m)
+        : shading(s)
+        , mistake(m)
     {
     }
     bool makes(ShaderMistake m) const { return mistake == m; }
@@ -60,8 +60,7 @@ struct ReferenceShader {
 
 // As above, shaded with `shader` instead of exact Phong.
 std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
-                                           QString *error = nullptr,
-                                           const QHash<QString, QString> &standIns = {});
+                                           QString *error = nullptr, const QHash<QString, QString> &standIns = {});
 
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
 // change of coordinates, which is what lets camera-space depth be compared
@@ -79,8 +78,7 @@ Ray cameraRay(const Camera &camera, int x, int y, int width, int height);
 
 // Smallest t in [tMin, tMax] where the ray meets the surface, if any.
 std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tMax);
-std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax,
-                                     double majorRadius, double minorRadius);
+std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius, double minorRadius);
 
 std::optional<double> intersectUnitBox(const Ray &ray, double tMin, double tMax);
 glm::dvec3 boxNormal(const glm::dvec3 &p);

@@ -9,8 +9,7 @@ namespace phonglab {
 
 // Lookups over a constexpr table of {enum value, name as written in files
 // and on the command line}, shared by every enum that has such names.
-template<typename Table, typename Enum>
-QString enumName(const Table &table, Enum value)
+template <typename Table, typename Enum> QString enumName(const Table &table, Enum value)
 {
     for (const auto &[v, name] : table)
         if (v == value)
@@ -18,7 +17,7 @@ QString enumName(const Table &table, Enum value)
     return {};
 }
 
-template<typename Table>
+template <typename Table>
 auto enumFromName(const Table &table, const QString &name) -> std::optional<typename Table::value_type::first_type>
 {
     for (const auto &[v, n] : table)
@@ -27,8 +26,7 @@ auto enumFromName(const Table &table, const QString &name) -> std::optional<type
     return std::nullopt;
 }
 
-template<typename Table>
-QStringList enumNames(const Table &table)
+template <typename Table> QStringList enumNames(const Table &table)
 {
     QStringList names;
     for (const auto &entry : table)

@@ -172,9 +172,8 @@ ImageComparison compareWithReference(const QImage &rendered, const ReferenceImag
     return errors.result();
 }
 
-BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference,
-                                  const glm::dvec3 &background, int bandPx,
-                                  const std::vector<std::uint8_t> *mask)
+BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
+                                  int bandPx, const std::vector<std::uint8_t> *mask)
 {
     BandComparison out;
     if (!sameSize(rendered, reference) || (mask && mask->size() != reference.color.size()))

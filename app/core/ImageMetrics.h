@@ -37,9 +37,8 @@ struct BandComparison {
     ImageComparison error;
     qint64 coverageErrors = 0; // compared pixels covered in one image and not in the other
 };
-BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference,
-                                  const glm::dvec3 &background, int bandPx,
-                                  const std::vector<std::uint8_t> *mask = nullptr);
+BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
+                                  int bandPx, const std::vector<std::uint8_t> *mask = nullptr);
 
 // Pixels next to an occluding contour inside the reference: where one
 // surface passes in front of another, so the covered pixels on either side

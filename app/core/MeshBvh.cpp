@@ -19,7 +19,7 @@ struct ShearedRay {
     glm::dvec3 origin{0.0};
     int kx = 0, ky = 1, kz = 2; // kz: the direction's dominant axis
     double sx = 0.0, sy = 0.0, sz = 1.0;
-    bool valid = false;         // false for a zero direction: it hits nothing
+    bool valid = false; // false for a zero direction: it hits nothing
 
     explicit ShearedRay(const Ray &ray)
         : origin(ray.origin)
@@ -84,8 +84,16 @@ struct Box {
     glm::vec3 lo{std::numeric_limits<float>::infinity()};
     glm::vec3 hi{-std::numeric_limits<float>::infinity()};
 
-    void grow(const glm::vec3 &p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-    void grow(const Box &b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void grow(const glm::vec3 &p)
+    {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void grow(const Box &b)
+    {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     bool empty() const { return lo.x > hi.x; }
     // Half the surface area: SAH only compares areas, the factor 2 cancels.
     double halfArea() const
@@ -120,8 +128,8 @@ struct Split {
 
 // The cheapest binned-SAH split of triangles [begin, end) over all three axes.
 Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin, std::uint32_t end,
-                   const std::vector<Box> &boxes, const std::vector<glm::vec3> &centroids,
-                   const Box &centroidBounds, double parentArea)
+                   const std::vector<Box> &boxes, const std::vector<glm::vec3> &centroids, const Box &centroidBounds,
+                   double parentArea)
 {
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
@@ -327,9 +335,8 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 const glm::vec3 *v = &m_vertices[3 * std::size_t(i)];
-                std::optional<TriangleHit> hit =
-                    intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]), glm::dvec3(v[2]), tMin,
-                                     best ? best->t : tMax);
+                std::optional<TriangleHit> hit = intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]),
+                                                                  glm::dvec3(v[2]), tMin, best ? best->t : tMax);
                 if (!hit)
                     continue;
                 hit->triangle = m_triangleIds[i];

@@ -2,8 +2,8 @@
 
 #include "AnalyticShapes.h"
 #include "MeshBvh.h"
-#include "ParallelRows.h"
 #include "ObjectMatrices.h"
+#include "ParallelRows.h"
 #include "ReferenceSample.h"
 #include "SceneHits.h"
 
@@ -16,14 +16,19 @@ namespace phonglab {
 
 namespace {
 
-enum class Surface { Mesh, Sphere, Torus, Box };
+enum class Surface {
+    Mesh,
+    Sphere,
+    Torus,
+    Box
+};
 
 // Everything one object needs per ray, computed once per image.
 struct PreparedObject {
     Surface surface = Surface::Mesh;
-    int index = 0;                        // in Scene::objects
-    const MeshData *mesh = nullptr;       // Surface::Mesh: its vertex normals
-    std::shared_ptr<const MeshBvh> bvh;   // Surface::Mesh: its triangles
+    int index = 0;                      // in Scene::objects
+    const MeshData *mesh = nullptr;     // Surface::Mesh: its vertex normals
+    std::shared_ptr<const MeshBvh> bvh; // Surface::Mesh: its triangles
     glm::dmat4 modelView{1.0};
     glm::dmat3 normalMatrix{1.0};
     glm::dmat3 inverseLinear{1.0}; // camera-space directions -> object space
@@ -55,28 +60,30 @@ bool fail(QString *error, const QString &message)
 // Checks the inputs, builds one BVH per distinct mesh (reporting the first
 // tenth of the progress) and prepares the objects. False with *error on bad
 // input or "cancelled".
-bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                    double aspect, std::vector<PreparedObject> &prepared, QString *error,
-                    const std::function<bool(double)> &progress)
+bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, double aspect,
+                    std::vector<PreparedObject> &prepared, QString *error, const std::function<bool(double)> &progress)
 {
     if (objectMeshes.size() != scene.objects.size())
-        return fail(error, QStringLiteral("The scene has %1 objects but %2 meshes were given")
-                               .arg(scene.objects.size())
-                               .arg(objectMeshes.size()));
+        return fail(error,
+                    QStringLiteral("The scene has %1 objects but %2 meshes were given")
+                        .arg(scene.objects.size())
+                        .arg(objectMeshes.size()));
     std::size_t trianglesToBuild = 0;
     std::unordered_map<const MeshData *, std::shared_ptr<const MeshBvh>> bvhs;
     for (std::size_t i = 0; i < objectMeshes.size(); ++i) {
         const MeshData *mesh = objectMeshes[i].get();
         if (!mesh) {
             if (!builtinSurface(scene.objects[i].mesh))
-                return fail(error, QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
-                                                  "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
-                                       .arg(i)
-                                       .arg(scene.objects[i].mesh));
+                return fail(error,
+                            QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                                           "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
+                                .arg(i)
+                                .arg(scene.objects[i].mesh));
         } else if (!mesh->isValid()) {
-            return fail(error, QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
-                                   .arg(i)
-                                   .arg(scene.objects[i].mesh));
+            return fail(error,
+                        QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
+                            .arg(i)
+                            .arg(scene.objects[i].mesh));
         } else if (bvhs.emplace(mesh, nullptr).second) {
             trianglesToBuild += mesh->triangleCount();
         }
@@ -98,7 +105,8 @@ bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const 
         if (const MeshData *mesh = objectMeshes[i].get()) {
             std::shared_ptr<const MeshBvh> &bvh = bvhs[mesh];
             if (!bvh) {
-                if (progress && !progress(0.1 * double(trianglesBuilt) / double(std::max<std::size_t>(trianglesToBuild, 1))))
+                if (progress
+                    && !progress(0.1 * double(trianglesBuilt) / double(std::max<std::size_t>(trianglesToBuild, 1))))
                     return fail(error, QStringLiteral("cancelled"));
                 bvh = std::make_shared<const MeshBvh>(*mesh);
                 trianglesBuilt += mesh->triangleCount();
@@ -263,8 +271,8 @@ std::optional<SceneHits> castSceneHits(const Scene &scene,
 
 std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
                                                  const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, const ReferenceShader &shader,
-                                                 QString *error, const std::function<bool(double)> &progress)
+                                                 int width, int height, const ReferenceShader &shader, QString *error,
+                                                 const std::function<bool(double)> &progress)
 {
     const std::optional<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, error, progress);
     if (!hits)
@@ -279,9 +287,9 @@ struct SceneDepthCaster::Objects {
 SceneDepthCaster::SceneDepthCaster() = default;
 SceneDepthCaster::~SceneDepthCaster() = default;
 
-std::unique_ptr<SceneDepthCaster> SceneDepthCaster::create(const Scene &scene,
-                                                           const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                           int width, int height, QString *error)
+std::unique_ptr<SceneDepthCaster> SceneDepthCaster::create(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
+    QString *error)
 {
     if (width <= 0 || height <= 0) {
         fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));

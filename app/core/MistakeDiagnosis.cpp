@@ -73,7 +73,8 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, cons
     MistakeDiagnosis diagnosis;
     const std::size_t pixelCount = std::size_t(exact.width()) * std::size_t(exact.height());
     const bool sizesAgree = yours.size() == exact.size() && compared.size() == pixelCount
-        && std::all_of(mistaken.begin(), mistaken.end(), [&](const auto &m) { return m.second.size() == exact.size(); });
+        && std::all_of(mistaken.begin(), mistaken.end(),
+                       [&](const auto &m) { return m.second.size() == exact.size(); });
     if (!sizesAgree) {
         // Nothing to compare pixel by pixel: every compared pixel differs.
         diagnosis.differingPixels = std::count(compared.begin(), compared.end(), std::uint8_t(1));

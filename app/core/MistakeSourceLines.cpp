@@ -8,7 +8,11 @@ namespace {
 
 constexpr int kMaxLinesPerStage = 3;
 
-enum class Stage { Vertex, Fragment, Both };
+enum class Stage {
+    Vertex,
+    Fragment,
+    Both
+};
 
 struct Pattern {
     Stage stage;
@@ -22,26 +26,18 @@ std::vector<Pattern> patternsFor(ShaderMistake mistake)
     switch (mistake) {
     case ShaderMistake::NormalMatrix:
         return {{Stage::Vertex, R"(=.*\*.*\bnormal\b)"}, {Stage::Both, R"(\bnormalMatrix\b)"}};
-    case ShaderMistake::Unnormalized:
-        return {{Stage::Fragment, R"(\bN\s*=)"}, {Stage::Fragment, R"(normalize\s*\()"}};
-    case ShaderMistake::LightSpace:
-        return {{Stage::Both, R"(\blightPosition\b)"}};
-    case ShaderMistake::HomogeneousW:
-        return {{Stage::Both, R"(\*\s*vec4\s*\()"}};
-    case ShaderMistake::ReflectIncident:
-        return {{Stage::Both, R"(\breflect\s*\()"}};
-    case ShaderMistake::ViewVector:
-        return {{Stage::Both, R"(\bV\s*=[^=])"}};
+    case ShaderMistake::Unnormalized: return {{Stage::Fragment, R"(\bN\s*=)"}, {Stage::Fragment, R"(normalize\s*\()"}};
+    case ShaderMistake::LightSpace: return {{Stage::Both, R"(\blightPosition\b)"}};
+    case ShaderMistake::HomogeneousW: return {{Stage::Both, R"(\*\s*vec4\s*\()"}};
+    case ShaderMistake::ReflectIncident: return {{Stage::Both, R"(\breflect\s*\()"}};
+    case ShaderMistake::ViewVector: return {{Stage::Both, R"(\bV\s*=[^=])"}};
     case ShaderMistake::Attenuation:
         return {{Stage::Both, R"(\bf_?att\w*\s*=[^=])"}, {Stage::Both, R"(\battenuation\s*\[)"}};
-    case ShaderMistake::NegativeLight:
-        return {{Stage::Both, R"(dot\s*\(\s*N\s*,\s*L\s*\)|dot\s*\(\s*L\s*,\s*N\s*\))"}};
+    case ShaderMistake::NegativeLight: return {{Stage::Both, R"(dot\s*\(\s*N\s*,\s*L\s*\)|dot\s*\(\s*L\s*,\s*N\s*\))"}};
     case ShaderMistake::BackfaceSpecular:
         return {{Stage::Both, R"(\bif\s*\(.*(NdotL|dot\s*\(\s*N\s*,\s*L))"}, {Stage::Both, R"(\bpow\s*\()"}};
-    case ShaderMistake::Ambient:
-        return {{Stage::Both, R"(\bIa\b.*\bka\b|\bka\b.*\bIa\b)"}};
-    case ShaderMistake::Gouraud:
-        return {{Stage::Vertex, R"(\bdot\s*\(|\bpow\s*\()"}};
+    case ShaderMistake::Ambient: return {{Stage::Both, R"(\bIa\b.*\bka\b|\bka\b.*\bIa\b)"}};
+    case ShaderMistake::Gouraud: return {{Stage::Vertex, R"(\bdot\s*\(|\bpow\s*\()"}};
     }
     return {};
 }
@@ -74,7 +70,8 @@ std::vector<SourceLine> mistakeSourceLines(ShaderMistake mistake, const std::vec
         for (const Pattern &pattern : patternsFor(mistake)) {
             if (pattern.stage != Stage::Both && (pattern.stage == Stage::Vertex) != stage.vertex)
                 continue;
-            const std::vector<SourceLine> found = matchingLines(stage, QRegularExpression(QString::fromLatin1(pattern.regex)));
+            const std::vector<SourceLine> found =
+                matchingLines(stage, QRegularExpression(QString::fromLatin1(pattern.regex)));
             if (!found.empty()) {
                 out.insert(out.end(), found.begin(), found.end());
                 break;

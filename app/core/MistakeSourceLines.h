@@ -19,8 +19,8 @@ struct ShaderStageText {
 
 struct SourceLine {
     QString file;
-    int line = 0;  // 1-based, in the user's file
-    QString text;  // trimmed
+    int line = 0; // 1-based, in the user's file
+    QString text; // trimmed
 };
 
 // At most a few lines per stage, in file order; empty when no line looks

@@ -9,10 +9,8 @@ namespace phonglab {
 
 namespace {
 constexpr std::array kNames = {
-    std::pair{NormalMethod::Auto, "auto"},
-    std::pair{NormalMethod::Flat, "flat"},
-    std::pair{NormalMethod::Average, "average"},
-    std::pair{NormalMethod::AreaWeighted, "area"},
+    std::pair{NormalMethod::Auto, "auto"},           std::pair{NormalMethod::Flat, "flat"},
+    std::pair{NormalMethod::Average, "average"},     std::pair{NormalMethod::AreaWeighted, "area"},
     std::pair{NormalMethod::AngleWeighted, "angle"},
 };
 } // namespace

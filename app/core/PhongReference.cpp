@@ -15,7 +15,10 @@ namespace {
 
 // The specular model is the only difference between Phong and Blinn-Phong;
 // the rest of the equation is shared so the two cannot drift apart.
-enum class Specular { ReflectedRay, HalfVector };
+enum class Specular {
+    ReflectedRay,
+    HalfVector
+};
 
 // The equation, exact, or with one pointwise mistake (ShaderMistake.h) made
 // where a shader would make it: one sequence, so the mistaken images differ
@@ -68,16 +71,14 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
 
 } // namespace
 
-glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
-                          const Material &material, const glm::dvec3 &ambient,
-                          std::span<const CameraSpaceLight> lights)
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                          const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay).intensity;
 }
 
-glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
-                               const Material &material, const glm::dvec3 &ambient,
-                               std::span<const CameraSpaceLight> lights)
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::HalfVector).intensity;
 }
@@ -95,8 +96,8 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 }
 
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                    const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
-                                    ShaderMistake mistake)
+                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+                                     ShaderMistake mistake)
 {
     return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay, mistake);
 }

@@ -20,9 +20,9 @@ namespace phonglab {
 // unlit side). shaders/phong.frag does exactly the same.
 
 struct CameraSpaceLight {
-    glm::dvec3 position{0.0};      // camera coordinates (a point)
-    glm::dvec3 diffuse{1.0};       // Id
-    glm::dvec3 specular{1.0};      // Is
+    glm::dvec3 position{0.0};              // camera coordinates (a point)
+    glm::dvec3 diffuse{1.0};               // Id
+    glm::dvec3 specular{1.0};              // Is
     glm::dvec3 attenuation{1.0, 0.0, 0.0}; // c1, c2, c3
 };
 
@@ -32,9 +32,8 @@ double attenuationFactor(const glm::dvec3 &c, double d);
 
 // Light arriving at surface point `position` (camera space) with unit or
 // non-unit normal `normal` (camera space; normalised here).
-glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
-                          const Material &material, const glm::dvec3 &ambient,
-                          std::span<const CameraSpaceLight> lights);
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                          const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
 
 // Blinn-Phong: phongIntensity() with the specular term built on the half
 // vector H = normalize(L + V) instead of the reflected ray R:
@@ -46,9 +45,8 @@ glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
 // two highlights match near their peak. Same N·L ≤ 0 rule as Phong.
 // shaders/blinn-phong.frag computes the same.
 inline constexpr double kBlinnExponentFactor = 4.0;
-glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
-                               const Material &material, const glm::dvec3 &ambient,
-                               std::span<const CameraSpaceLight> lights);
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
 
 // The same equations with the specular part reported on its own, for
 // measuring the error inside a highlight alone: `specular` is
@@ -71,8 +69,8 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 // ambient term. For the other mistakes the inputs differ, not the
 // equation: this returns phongTerms() of the inputs it is given.
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                    const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
-                                    ShaderMistake mistake);
+                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+                                     ShaderMistake mistake);
 
 // The normals view (shaders/normals.frag): the unit camera-space normal as a
 // colour, 0.5·N + 0.5 per channel. No lighting.

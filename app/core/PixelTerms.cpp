@@ -17,8 +17,7 @@ QString vec(const glm::dvec3 &v)
 
 } // namespace
 
-std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x,
-                                     int y)
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x, int y)
 {
     if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
         return std::nullopt;

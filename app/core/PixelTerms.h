@@ -13,18 +13,18 @@ namespace phonglab {
 // unless named world.
 
 struct LightTerms {
-    int light = 0;                  // index into Scene::lights
-    glm::dvec3 L{0.0};              // unit, towards the light
-    glm::dvec3 R{0.0};              // reflect(-L, N)
-    glm::dvec3 H{0.0};              // normalize(L + V), Blinn-Phong's half vector
-    double NdotH = 0.0;             // unclamped; Blinn-Phong's specular factor is max(0, N·H)^(4n)
+    int light = 0;      // index into Scene::lights
+    glm::dvec3 L{0.0};  // unit, towards the light
+    glm::dvec3 R{0.0};  // reflect(-L, N)
+    glm::dvec3 H{0.0};  // normalize(L + V), Blinn-Phong's half vector
+    double NdotH = 0.0; // unclamped; Blinn-Phong's specular factor is max(0, N·H)^(4n)
     glm::dvec3 positionCamera{0.0};
-    double distance = 0.0;          // d
-    double attenuation = 0.0;       // f_att
-    double NdotL = 0.0;             // unclamped
-    double RdotV = 0.0;             // unclamped
-    glm::dvec3 diffuse{0.0};        // f_att · Id·kd·max(0, N·L)
-    glm::dvec3 specular{0.0};       // f_att · Is·ks·max(0, R·V)^n (Blinn-Phong: N·H), 0 where N·L <= 0
+    double distance = 0.0;    // d
+    double attenuation = 0.0; // f_att
+    double NdotL = 0.0;       // unclamped
+    double RdotV = 0.0;       // unclamped
+    glm::dvec3 diffuse{0.0};  // f_att · Id·kd·max(0, N·L)
+    glm::dvec3 specular{0.0}; // f_att · Is·ks·max(0, R·V)^n (Blinn-Phong: N·H), 0 where N·L <= 0
 };
 
 struct PixelTerms {
@@ -46,7 +46,6 @@ struct PixelTerms {
 // Nullopt where pixel (x, y) shows no object. `shading` is the exact
 // equation of the view (CheckReference::shader): Phong, Blinn-Phong, or the
 // normals view, which lights nothing.
-std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x,
-                                     int y);
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x, int y);
 
 } // namespace phonglab

@@ -225,7 +225,7 @@ bool RecoveryJournal::isSessionAlive(const QString &id) const
     lock.setStaleLockTime(0);
     if (!lock.tryLock(0))
         return lock.error() == QLockFile::LockFailedError; // held by a live process
-    lock.unlock(); // it was stale (or missing): the session is gone
+    lock.unlock();                                         // it was stale (or missing): the session is gone
     return false;
 }
 
@@ -248,9 +248,8 @@ QList<OrphanedSession> RecoveryJournal::orphans() const
             session.runningHash = sentinel.readAll().trimmed();
         sessions << session;
     }
-    std::sort(sessions.begin(), sessions.end(), [](const OrphanedSession &a, const OrphanedSession &b) {
-        return a.record.savedAt > b.record.savedAt;
-    });
+    std::sort(sessions.begin(), sessions.end(),
+              [](const OrphanedSession &a, const OrphanedSession &b) { return a.record.savedAt > b.record.savedAt; });
     return sessions;
 }
 

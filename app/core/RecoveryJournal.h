@@ -12,7 +12,7 @@ namespace phonglab {
 
 // One editor buffer as it was when the journal was written.
 struct RecoveryBuffer {
-    QString filePath;  // the file the buffer was opened from ("" = none)
+    QString filePath; // the file the buffer was opened from ("" = none)
     QByteArray text;
     bool dirty = false; // differs from filePath's contents
 

@@ -47,7 +47,8 @@ std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
                                                    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
                                                    int width, int height, int subpixelBits, QString *error)
 {
-    const std::unique_ptr<SceneDepthCaster> caster = SceneDepthCaster::create(scene, objectMeshes, width, height, error);
+    const std::unique_ptr<SceneDepthCaster> caster =
+        SceneDepthCaster::create(scene, objectMeshes, width, height, error);
     if (!caster)
         return {};
     // OpenGL requires at least 4 sub-pixel bits; more than 30 would only
@@ -55,9 +56,8 @@ std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
     const double step = std::ldexp(1.0, -std::clamp(subpixelBits, 4, 30));
     std::vector<std::uint8_t> mask(std::size_t(width) * std::size_t(height), 0);
 
-    forEachRowInParallel(height, [&](int y) {
-        classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y);
-    });
+    forEachRowInParallel(
+        height, [&](int y) { classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y); });
     return mask;
 }
 
@@ -66,8 +66,8 @@ std::vector<std::uint8_t> awayFromSilhouettes(const ReferenceImage &reference, c
                                               int bandPx, QString *error)
 {
     std::vector<std::uint8_t> edges = occludingContourPixels(reference);
-    const std::vector<std::uint8_t> ambiguous = ambiguousReferencePixels(
-        scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits, error);
+    const std::vector<std::uint8_t> ambiguous =
+        ambiguousReferencePixels(scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits, error);
     if (ambiguous.size() != edges.size())
         return {};
     for (std::size_t i = 0; i < edges.size(); ++i)

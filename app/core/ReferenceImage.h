@@ -14,9 +14,9 @@ namespace phonglab {
 struct ReferenceImage {
     int width = 0;
     int height = 0;
-    std::vector<glm::dvec3> color;       // I, not clamped; zero where uncovered
-    std::vector<std::uint8_t> coverage;  // 1 where a surface was hit
-    std::vector<double> depth;           // camera-space distance -z of the hit; +inf where uncovered
+    std::vector<glm::dvec3> color;      // I, not clamped; zero where uncovered
+    std::vector<std::uint8_t> coverage; // 1 where a surface was hit
+    std::vector<double> depth;          // camera-space distance -z of the hit; +inf where uncovered
     // The specular part of `color` alone (Σ f_att·Is·ks·max(0,R·V)^n, or the
     // Blinn-Phong one), not clamped; zero where uncovered and for the normals
     // view. Lets an error be measured inside the highlight alone.

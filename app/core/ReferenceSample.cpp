@@ -2,9 +2,9 @@
 
 namespace phonglab {
 
-ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal,
-                                     const Material &material, const glm::dvec3 &ambient,
-                                     std::span<const CameraSpaceLight> lights, ReferenceShading shading)
+ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+                                     ReferenceShading shading)
 {
     IlluminationTerms terms;
     switch (shading) {
@@ -23,7 +23,8 @@ ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &mat
     const glm::dvec3 normal = shader.makes(ShaderMistake::NormalMatrix) ? glm::dmat3(hit.modelView) * hit.normal
                                                                         : hit.normalMatrix * hit.normal;
     if (shader.shading == ReferenceShading::Phong && shader.mistake && isPointwiseMistake(*shader.mistake)) {
-        const IlluminationTerms terms = mistakenPhongTerms(position, normal, material, ambient, lights, *shader.mistake);
+        const IlluminationTerms terms =
+            mistakenPhongTerms(position, normal, material, ambient, lights, *shader.mistake);
         return {terms.intensity, terms.specular};
     }
     return shadeReferenceSample(position, normal, material, ambient, lights, shader.shading);

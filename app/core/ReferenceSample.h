@@ -26,9 +26,9 @@ struct ReferenceSample {
 // object-space normal already mapped by the normal matrix; not necessarily
 // unit length: it is normalised here, per pixel, as the fragment shaders do).
 // No flip towards the viewer: the shipped fragment shaders do not flip either.
-ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal,
-                                     const Material &material, const glm::dvec3 &ambient,
-                                     std::span<const CameraSpaceLight> lights, ReferenceShading shading);
+ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
+                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+                                     ReferenceShading shading);
 
 // A ray's hit on an object before the vertex shader's transforms: the point
 // and normal in object space, and the object's matrices.

@@ -16,8 +16,7 @@ QString findFile(const char *envVar, const QString &folder, const char *sourceDi
         dirs << fromEnv;
     if (QCoreApplication::instance()) {
         const QString appDir = QCoreApplication::applicationDirPath();
-        dirs << appDir + QLatin1Char('/') + folder
-             << appDir + QStringLiteral("/../") + folder
+        dirs << appDir + QLatin1Char('/') + folder << appDir + QStringLiteral("/../") + folder
              << appDir + QStringLiteral("/../share/phonglab/") + folder;
     }
     dirs << QString::fromUtf8(sourceDir);

@@ -22,10 +22,9 @@ QString Scene::resolveShaderPath(const QString &shader) const
 
 bool Scene::operator==(const Scene &other) const
 {
-    return objects == other.objects && camera == other.camera && ambient == other.ambient
-        && lights == other.lights && shading == other.shading && background == other.background
-        && vertexShader == other.vertexShader && fragmentShader == other.fragmentShader
-        && uniforms == other.uniforms;
+    return objects == other.objects && camera == other.camera && ambient == other.ambient && lights == other.lights
+        && shading == other.shading && background == other.background && vertexShader == other.vertexShader
+        && fragmentShader == other.fragmentShader && uniforms == other.uniforms;
 }
 
 } // namespace phonglab

@@ -20,12 +20,12 @@ namespace phonglab {
 // the pixel inspector reads one hit to explain one pixel.
 
 struct ReferenceHit {
-    int object = -1;               // index into Scene::objects; -1 where nothing was hit
-    std::int32_t triangle = -1;    // on a triangle mesh; -1 on an analytic surface
-    double depth = 0.0;            // camera-space -z
-    glm::dvec3 point{0.0};         // object space
-    glm::dvec3 normal{0.0};        // object space, not normalised (the normal matrix comes first)
-    glm::dvec3 barycentric{0.0};   // on a triangle: the weights of its three vertices
+    int object = -1;             // index into Scene::objects; -1 where nothing was hit
+    std::int32_t triangle = -1;  // on a triangle mesh; -1 on an analytic surface
+    double depth = 0.0;          // camera-space -z
+    glm::dvec3 point{0.0};       // object space
+    glm::dvec3 normal{0.0};      // object space, not normalised (the normal matrix comes first)
+    glm::dvec3 barycentric{0.0}; // on a triangle: the weights of its three vertices
 };
 
 struct SceneHits {
@@ -37,7 +37,7 @@ struct SceneHits {
     };
     int width = 0;
     int height = 0;
-    std::vector<Object> objects;   // one per scene object
+    std::vector<Object> objects;    // one per scene object
     std::vector<ReferenceHit> hits; // row-major, row 0 at the top
 
     const ReferenceHit &at(int x, int y) const { return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }

@@ -84,8 +84,7 @@ void SceneReader::warnUnknownKeys(const QJsonObject &object, const QString &path
 {
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (std::find(known.begin(), known.end(), it.key()) == known.end())
-            m_warnings << childPath(path, it.key())
-                              + QStringLiteral(": unknown key, ignored");
+            m_warnings << childPath(path, it.key()) + QStringLiteral(": unknown key, ignored");
     }
 }
 
@@ -206,8 +205,7 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path,
-                    {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1});
+    warnUnknownKeys(object, path, {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1});
     Camera camera;
     if (!readVec3(object.value("eye"_L1), childPath(path, "eye"_L1), camera.eye)
         || !readVec3(object.value("target"_L1), childPath(path, "target"_L1), camera.target)
@@ -228,11 +226,11 @@ bool SceneReader::validateCamera(const Camera &camera, const QString &path)
         return fail(childPath(path, "fov_deg"_L1),
                     QStringLiteral("must be in (0, 180) degrees (got %1)").arg(number(camera.fovDeg)));
     if (camera.nearPlane <= 0.0)
-        return fail(childPath(path, "near"_L1),
-                    QStringLiteral("must be > 0 (got %1)").arg(number(camera.nearPlane)));
+        return fail(childPath(path, "near"_L1), QStringLiteral("must be > 0 (got %1)").arg(number(camera.nearPlane)));
     if (camera.farPlane <= camera.nearPlane)
-        return fail(childPath(path, "far"_L1), QStringLiteral("must be greater than near (%1) (got %2)")
-                                                   .arg(number(camera.nearPlane), number(camera.farPlane)));
+        return fail(childPath(path, "far"_L1),
+                    QStringLiteral("must be greater than near (%1) (got %2)")
+                        .arg(number(camera.nearPlane), number(camera.farPlane)));
     if (camera.eye == camera.target)
         return fail(childPath(path, "target"_L1), QStringLiteral("must differ from eye"));
     const double upLength = glm::length(camera.up);
@@ -250,8 +248,8 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path, {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1,
-                                   "name"_L1, "enabled"_L1});
+    warnUnknownKeys(object, path,
+                    {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1, "name"_L1, "enabled"_L1});
     // A light with no position would silently sit at the origin, inside the object.
     if (!object.contains("position"_L1))
         return fail(childPath(path, "position"_L1), QStringLiteral("required field missing"));
@@ -268,7 +266,8 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
         return fail(attenuationPath, QStringLiteral("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
     if (const QJsonValue name = object.value("name"_L1); !name.isUndefined()) {
         if (!name.isString())
-            return fail(childPath(path, "name"_L1), QStringLiteral("expected a string (got %1)").arg(describeType(name)));
+            return fail(childPath(path, "name"_L1),
+                        QStringLiteral("expected a string (got %1)").arg(describeType(name)));
         light.name = name.toString().toStdString();
     }
     if (const QJsonValue enabled = object.value("enabled"_L1); !enabled.isUndefined()) {
@@ -307,8 +306,9 @@ bool SceneReader::readShading(const QJsonValue &value, const QString &path, Shad
         return fail(path, QStringLiteral("expected a string (got %1)").arg(describeType(value)));
     const auto method = shadingFromName(value.toString());
     if (!method)
-        return fail(path, QStringLiteral("unknown shading method \"%1\" (known: %2)")
-                              .arg(value.toString(), shadingNames().join(QStringLiteral(", "))));
+        return fail(path,
+                    QStringLiteral("unknown shading method \"%1\" (known: %2)")
+                        .arg(value.toString(), shadingNames().join(QStringLiteral(", "))));
     out = *method;
     return true;
 }
@@ -428,8 +428,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1, "camera"_L1,
-                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1,
-                     "uniforms"_L1});
+                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1, "uniforms"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readObjects(root, scene.objects)

@@ -47,8 +47,7 @@ std::pair<qsizetype, qsizetype> literalBefore(const QByteArray &text, qsizetype 
 // literal is illegal for another reason (e.g. "01"), which stays an error.
 bool rewriteOutOfRangeLiteral(QByteArray &text, qsizetype offset, std::vector<Rewrite> &rewrites)
 {
-    static const QRegularExpression jsonNumber(
-        QStringLiteral("^-?(0|[1-9][0-9]*)(\\.[0-9]+)?([eE][+-]?[0-9]+)?$"));
+    static const QRegularExpression jsonNumber(QStringLiteral("^-?(0|[1-9][0-9]*)(\\.[0-9]+)?([eE][+-]?[0-9]+)?$"));
     const auto [begin, end] = literalBefore(text, offset);
     const QByteArray literal = text.mid(begin, end - begin);
     if (literal.isEmpty() || !jsonNumber.match(QString::fromLatin1(literal)).hasMatch())
@@ -101,12 +100,10 @@ std::optional<QJsonDocument> parseJsonText(const QByteArray &json, QString *erro
         QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
         if (parseError.error == QJsonParseError::NoError)
             return doc;
-        if (parseError.error == QJsonParseError::IllegalNumber
-            && int(rewrites.size()) < kMaxRewrites
+        if (parseError.error == QJsonParseError::IllegalNumber && int(rewrites.size()) < kMaxRewrites
             && rewriteOutOfRangeLiteral(text, parseError.offset, rewrites))
             continue;
-        *error = syntaxError(json, originalOffset(parseError.offset, rewrites),
-                             parseError.errorString());
+        *error = syntaxError(json, originalOffset(parseError.offset, rewrites), parseError.errorString());
         return std::nullopt;
     }
 }
@@ -150,8 +147,9 @@ bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptio
             return fail(where, QStringLiteral("expected a string (got %1)").arg(describeType(v)));
         const auto method = normalMethodFromName(v.toString());
         if (!method)
-            return fail(where, QStringLiteral("unknown normal method \"%1\" (known: %2)")
-                                   .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
+            return fail(where,
+                        QStringLiteral("unknown normal method \"%1\" (known: %2)")
+                            .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
         out.method = *method;
         return true;
     };
@@ -163,7 +161,8 @@ bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptio
     for (auto it = object.begin(); it != object.end(); ++it)
         if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
             return fail(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
-    if (object.contains(QLatin1String("method")) && !readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method")))
+    if (object.contains(QLatin1String("method"))
+        && !readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method")))
         return false;
     const QJsonValue crease = object.value(QLatin1String("crease_deg"));
     if (crease.isUndefined() || crease.isNull()) {
@@ -204,8 +203,8 @@ bool readUniformNumber(const QJsonValue &v, const QString &where, double &out, Q
 
 } // namespace
 
-bool readUserUniforms(const QJsonValue &value, const QString &path,
-                      std::map<QString, std::vector<double>> &out, QString *error)
+bool readUserUniforms(const QJsonValue &value, const QString &path, std::map<QString, std::vector<double>> &out,
+                      QString *error)
 {
     if (value.isUndefined())
         return true;

@@ -38,8 +38,8 @@ QJsonValue normalOptionsJson(const NormalOptions &options);
 // The "uniforms" field: {"name": number | [numbers (1..16)], ...}, values of
 // the shader's own uniforms. On failure returns false with *error =
 // "<path>.<name>: <reason>".
-bool readUserUniforms(const QJsonValue &value, const QString &path,
-                      std::map<QString, std::vector<double>> &out, QString *error);
+bool readUserUniforms(const QJsonValue &value, const QString &path, std::map<QString, std::vector<double>> &out,
+                      QString *error);
 QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms);
 
 } // namespace phonglab::scenejson

@@ -41,12 +41,9 @@ QJsonObject materialJson(const Material &material)
 QJsonObject cameraJson(const Camera &camera)
 {
     return QJsonObject{
-        {QStringLiteral("eye"), vec3Json(camera.eye)},
-        {QStringLiteral("target"), vec3Json(camera.target)},
-        {QStringLiteral("up"), vec3Json(camera.up)},
-        {QStringLiteral("fov_deg"), camera.fovDeg},
-        {QStringLiteral("near"), camera.nearPlane},
-        {QStringLiteral("far"), camera.farPlane},
+        {QStringLiteral("eye"), vec3Json(camera.eye)}, {QStringLiteral("target"), vec3Json(camera.target)},
+        {QStringLiteral("up"), vec3Json(camera.up)},   {QStringLiteral("fov_deg"), camera.fovDeg},
+        {QStringLiteral("near"), camera.nearPlane},    {QStringLiteral("far"), camera.farPlane},
     };
 }
 

@@ -23,7 +23,7 @@ inline constexpr int kCheckBandPx = 2;                // the render tests' silho
 // against it.
 struct CheckReference {
     SceneHits hits;
-    ReferenceShader shader;        // the exact shading of the scene's method
+    ReferenceShader shader; // the exact shading of the scene's method
     ReferenceImage exact;
     QImage exactImage; // exact, 8-bit as the GPU writes it
     // The reference with each classic mistake made, 8-bit (all the diagnosis
@@ -47,9 +47,9 @@ std::optional<CheckReference> makeCheckReference(const Scene &scene,
 
 struct CheckReport {
     int toleranceSteps = kDefaultCheckToleranceSteps;
-    ImageComparison comparison;  // over the compared pixels
-    qint64 badPixels = 0;        // compared pixels off by more than the tolerance
-    int worstObject = -1;        // the scene object under comparison.worstPixel
+    ImageComparison comparison; // over the compared pixels
+    qint64 badPixels = 0;       // compared pixels off by more than the tolerance
+    int worstObject = -1;       // the scene object under comparison.worstPixel
     MistakeDiagnosis diagnosis;
 
     // False when no pixel could be compared (nothing in view, or a tiny

@@ -112,13 +112,11 @@ bool isPointwiseMistake(ShaderMistake mistake)
     case ShaderMistake::Attenuation:
     case ShaderMistake::NegativeLight:
     case ShaderMistake::BackfaceSpecular:
-    case ShaderMistake::Ambient:
-        return true;
+    case ShaderMistake::Ambient: return true;
     case ShaderMistake::NormalMatrix:
     case ShaderMistake::LightSpace:
     case ShaderMistake::HomogeneousW:
-    case ShaderMistake::Gouraud:
-        return false;
+    case ShaderMistake::Gouraud: return false;
     }
     return false;
 }

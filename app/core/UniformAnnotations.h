@@ -11,10 +11,10 @@ namespace phonglab {
 //   uniform vec3 tint, glow[2];  // @color
 // The annotations apply to every declarator of the line.
 struct UniformDeclaration {
-    QString type;                 // "float", "vec3", "sampler2D", ...
+    QString type; // "float", "vec3", "sampler2D", ...
     QString name;
     bool isArray = false;
-    int arraySize = 0;            // 0: not an array, or a size given by a constant
+    int arraySize = 0; // 0: not an array, or a size given by a constant
     std::optional<double> rangeLow;
     std::optional<double> rangeHigh;
     std::optional<double> step;

@@ -10,11 +10,16 @@ UniformOwner uniformOwner(const QString &name)
     // Must match what Renderer::drawObjects / uploadLights set.
     static const QStringList renderer = {QStringLiteral("modelViewMatrix"), QStringLiteral("normalMatrix"),
                                          QStringLiteral("projectionMatrix"), QStringLiteral("viewMatrix")};
-    static const QStringList scene = {QStringLiteral("Ia"),          QStringLiteral("ka"),
-                                      QStringLiteral("kd"),          QStringLiteral("ks"),
-                                      QStringLiteral("shininess"),   QStringLiteral("lightCount"),
-                                      QStringLiteral("lightPosition"), QStringLiteral("Id"),
-                                      QStringLiteral("Is"),          QStringLiteral("attenuation")};
+    static const QStringList scene = {QStringLiteral("Ia"),
+                                      QStringLiteral("ka"),
+                                      QStringLiteral("kd"),
+                                      QStringLiteral("ks"),
+                                      QStringLiteral("shininess"),
+                                      QStringLiteral("lightCount"),
+                                      QStringLiteral("lightPosition"),
+                                      QStringLiteral("Id"),
+                                      QStringLiteral("Is"),
+                                      QStringLiteral("attenuation")};
     if (renderer.contains(name))
         return UniformOwner::Renderer;
     if (scene.contains(name))
@@ -25,12 +30,10 @@ UniformOwner uniformOwner(const QString &name)
 QString uniformOwnerNote(UniformOwner owner)
 {
     switch (owner) {
-    case UniformOwner::Renderer:
-        return QCoreApplication::translate("UniformOwner", "set by the renderer");
+    case UniformOwner::Renderer: return QCoreApplication::translate("UniformOwner", "set by the renderer");
     case UniformOwner::Scene:
         return QCoreApplication::translate("UniformOwner", "set by the scene (Material/Lights docks)");
-    case UniformOwner::User:
-        break;
+    case UniformOwner::User: break;
     }
     return {};
 }

@@ -16,8 +16,8 @@ MeshData makeUvSphere(int slices, int stacks);
 
 // Torus around the Y axis: ring radius `majorRadius`, tube radius `minorRadius`
 // (by default the analytic torus of core/AnalyticShapes.h).
-MeshData makeTorus(int ringSegments, int tubeSegments,
-                   double majorRadius = kTorusMajorRadius, double minorRadius = kTorusMinorRadius);
+MeshData makeTorus(int ringSegments, int tubeSegments, double majorRadius = kTorusMajorRadius,
+                   double minorRadius = kTorusMinorRadius);
 
 // The box [-1, 1]³ with one flat normal per face (24 vertices, 12 triangles).
 MeshData makeCube();

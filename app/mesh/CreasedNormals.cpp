@@ -14,7 +14,8 @@ void CreasedNormals::computeFaces()
     m_faceDoubleArea.resize(count);
     for (std::size_t t = 0; t < count; ++t) {
         const glm::vec3 &a = m_positions[m_triangles[3 * t]];
-        const glm::vec3 n = glm::cross(m_positions[m_triangles[3 * t + 1]] - a, m_positions[m_triangles[3 * t + 2]] - a);
+        const glm::vec3 n =
+            glm::cross(m_positions[m_triangles[3 * t + 1]] - a, m_positions[m_triangles[3 * t + 2]] - a);
         m_faceUnit[t] = normalizedOrZero(n);
         m_faceDoubleArea[t] = isZero(m_faceUnit[t]) ? 0.0f : glm::dot(n, m_faceUnit[t]);
     }

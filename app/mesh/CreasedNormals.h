@@ -14,14 +14,20 @@ namespace phonglab::normals {
 // CSR adjacency; corners whose triangles share an edge at the vertex and
 // meet at no more than the crease angle are connected, and each connected
 // group of corners gets one normal.
-class CreasedNormals {
+class CreasedNormals
+{
 public:
-    CreasedNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                   NormalMethod method, double creaseAngleDeg)
-        : m_positions(positions), m_triangles(triangles), m_method(method),
-          // The small slack lets faces at exactly the crease angle (a
-          // cube's 90° with a 90° crease) join despite rounding.
-          m_cosCrease(float(std::cos(std::clamp(creaseAngleDeg, 0.0, 180.0) * std::numbers::pi / 180.0)) - 1e-6f) {}
+    CreasedNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles, NormalMethod method,
+                   double creaseAngleDeg)
+        : m_positions(positions)
+        , m_triangles(triangles)
+        , m_method(method)
+        ,
+        // The small slack lets faces at exactly the crease angle (a
+        // cube's 90° with a 90° crease) join despite rounding.
+        m_cosCrease(float(std::cos(std::clamp(creaseAngleDeg, 0.0, 180.0) * std::numbers::pi / 180.0)) - 1e-6f)
+    {
+    }
 
     CornerNormals run();
 
@@ -35,7 +41,7 @@ private:
         std::uint32_t next, prev; // the triangle's other two positions
         std::uint32_t group;      // smoothing group, numbered from 0 per vertex
         bool degenerate;
-        glm::vec3 unit;           // the triangle's normal
+        glm::vec3 unit; // the triangle's normal
     };
 
     void computeFaces();

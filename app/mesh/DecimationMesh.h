@@ -68,7 +68,8 @@ struct OmMesh : OpenMesh::TriMesh_ArrayKernelT<> {
             ring1[ring1Size++] = v;
         }
         for (OpenMesh::VertexHandle v : vv_range(v0))
-            if (v != vl && v != vr && std::find(ring1.begin(), ring1.begin() + ring1Size, v) != ring1.begin() + ring1Size)
+            if (v != vl && v != vr
+                && std::find(ring1.begin(), ring1.begin() + ring1Size, v) != ring1.begin() + ring1Size)
                 return false;
         return !pinches(v0v1, v1v0, v0, v1);
     }
@@ -102,13 +103,15 @@ private:
 // (cos > 0 for a limit below 90°). The library's version spent half of all
 // decimation time in those square roots. The decimater itself keeps the
 // stored face normals current after each collapse.
-template <typename MeshT>
-class ModFlipGuardT : public OpenMesh::Decimater::ModBaseT<MeshT>
+template <typename MeshT> class ModFlipGuardT : public OpenMesh::Decimater::ModBaseT<MeshT>
 {
 public:
     DECIMATING_MODULE(ModFlipGuardT, MeshT, FlipGuard);
 
-    explicit ModFlipGuardT(MeshT &mesh) : Base(mesh, true) {}
+    explicit ModFlipGuardT(MeshT &mesh)
+        : Base(mesh, true)
+    {
+    }
 
     void set_max_normal_deviation(double degrees)
     {

@@ -22,7 +22,10 @@ NormalBits bitsOf(const glm::vec3 &n)
     return {std::bit_cast<std::uint32_t>(n.x), std::bit_cast<std::uint32_t>(n.y), std::bit_cast<std::uint32_t>(n.z)};
 }
 
-bool sameBits(const glm::vec3 &a, const glm::vec3 &b) { return bitsOf(a) == bitsOf(b); }
+bool sameBits(const glm::vec3 &a, const glm::vec3 &b)
+{
+    return bitsOf(a) == bitsOf(b);
+}
 
 // The file's normal at unit length. One already at unit length, to about
 // the precision files write (six decimals), is kept bit for bit: dividing
@@ -100,8 +103,8 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, c
     if (badCorners == 0)
         return result;
 
-    const CornerNormals computed = computeNormals(mesh.positions, triangles.positions, NormalMethod::AngleWeighted,
-                                                  options.creaseAngleDeg);
+    const CornerNormals computed =
+        computeNormals(mesh.positions, triangles.positions, NormalMethod::AngleWeighted, options.creaseAngleDeg);
     for (std::size_t c = 0; c < result.cornerNormal.size(); ++c) {
         if (unusable[result.cornerNormal[c]]) {
             result.cornerNormal[c] = std::uint32_t(result.normals.size());
@@ -111,7 +114,8 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, c
     if (warnings)
         *warnings << QStringLiteral("%1 of %2 corners have a zero or invalid normal in the file; "
                                     "computed angle-weighted normals replace them")
-                         .arg(qint64(badCorners)).arg(qint64(mesh.cornerNormal.size()));
+                         .arg(qint64(badCorners))
+                         .arg(qint64(mesh.cornerNormal.size()));
     return result;
 }
 
@@ -219,8 +223,8 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
 
 } // namespace
 
-MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats,
-                       QStringList *warnings, QString *error)
+MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats, QStringList *warnings,
+                       QString *error)
 {
     const auto fail = [error](const QString &message) {
         if (error)
@@ -253,12 +257,14 @@ MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, Bu
             missingNormals += n == PolygonMesh::kNoNormal || n >= mesh.normals.size();
     }
     const bool fromFile = options.method == NormalMethod::Auto && missingNormals == 0;
-    const NormalMethod method = fromFile ? NormalMethod::Auto
-        : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted : options.method;
+    const NormalMethod method = fromFile       ? NormalMethod::Auto
+        : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted
+                                               : options.method;
     if (warnings && options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
         *warnings << QStringLiteral("%1 of %2 corners have no normal in the file; "
                                     "computed angle-weighted normals for the whole mesh")
-                         .arg(qint64(missingNormals)).arg(qint64(mesh.cornerPosition.size()));
+                         .arg(qint64(missingNormals))
+                         .arg(qint64(mesh.cornerPosition.size()));
 
     const CornerNormals normals = fromFile
         ? fileNormals(mesh, triangles, options, warnings)

@@ -1,7 +1,7 @@
 #pragma once
+#include "PolygonMesh.h"
 #include "core/MeshData.h"
 #include "core/NormalOptions.h"
-#include "PolygonMesh.h"
 
 #include <QString>
 #include <QStringList>
@@ -11,10 +11,10 @@ namespace phonglab {
 
 // What buildMeshData made of a mesh, for the status bar and the CLI.
 struct BuildStats {
-    qint64 fileVertices = 0;   // positions in the file
-    qint64 vertices = 0;       // GPU vertices
+    qint64 fileVertices = 0; // positions in the file
+    qint64 vertices = 0;     // GPU vertices
     qint64 triangles = 0;
-    qint64 splitVertices = 0;  // GPU vertices − distinct positions used: the cost of hard edges
+    qint64 splitVertices = 0; // GPU vertices − distinct positions used: the cost of hard edges
     bool normalsFromFile = false;
     // The method that produced the normals: Auto only when they came from
     // the file, AngleWeighted when Auto had to compute them.

@@ -16,17 +16,15 @@ namespace phonglab {
 namespace {
 
 constexpr quint32 kMagic = 0x50484d43; // "PHMC"
-constexpr quint32 kVersion = 2; // 2: vertex order of split meshes is first use
+constexpr quint32 kVersion = 2;        // 2: vertex order of split meshes is first use
 
-template<typename T>
-void writeArray(QDataStream &out, const std::vector<T> &v)
+template <typename T> void writeArray(QDataStream &out, const std::vector<T> &v)
 {
     out << quint64(v.size());
     out.writeRawData(reinterpret_cast<const char *>(v.data()), int(v.size() * sizeof(T)));
 }
 
-template<typename T>
-bool readArray(QDataStream &in, std::vector<T> &v, qint64 bytesLeft)
+template <typename T> bool readArray(QDataStream &in, std::vector<T> &v, qint64 bytesLeft)
 {
     quint64 count = 0;
     in >> count;
@@ -39,8 +37,14 @@ bool readArray(QDataStream &in, std::vector<T> &v, qint64 bytesLeft)
     return in.readRawData(reinterpret_cast<char *>(v.data()), int(bytes)) == bytes;
 }
 
-QDataStream &operator<<(QDataStream &out, const glm::vec3 &v) { return out << v.x << v.y << v.z; }
-QDataStream &operator>>(QDataStream &in, glm::vec3 &v) { return in >> v.x >> v.y >> v.z; }
+QDataStream &operator<<(QDataStream &out, const glm::vec3 &v)
+{
+    return out << v.x << v.y << v.z;
+}
+QDataStream &operator>>(QDataStream &in, glm::vec3 &v)
+{
+    return in >> v.x >> v.y >> v.z;
+}
 
 void writeStats(QDataStream &out, const MeshStats &s)
 {
@@ -51,8 +55,8 @@ void writeStats(QDataStream &out, const MeshStats &s)
 bool readStats(QDataStream &in, MeshStats &s)
 {
     qint32 method = 0;
-    in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices >> s.normalsFromFile
-        >> method >> s.boundsMin >> s.boundsMax >> s.closed;
+    in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices >> s.normalsFromFile >> method
+        >> s.boundsMin >> s.boundsMax >> s.closed;
     s.normalMethod = NormalMethod(method);
     return method >= qint32(NormalMethod::Auto) && method <= qint32(NormalMethod::AngleWeighted);
 }
@@ -125,8 +129,7 @@ std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device, const std::op
     MeshData mesh;
     const bool ok = readStats(in, result.stats) && readStrings(in, result.warnings, device.bytesAvailable())
         && readArray(in, mesh.positions, device.bytesAvailable())
-        && readArray(in, mesh.normals, device.bytesAvailable())
-        && readArray(in, mesh.indices, device.bytesAvailable());
+        && readArray(in, mesh.normals, device.bytesAvailable()) && readArray(in, mesh.indices, device.bytesAvailable());
     if (!ok || in.status() != QDataStream::Ok || !mesh.isValid())
         return std::nullopt;
     result.mesh = std::move(mesh);

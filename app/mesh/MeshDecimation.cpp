@@ -7,8 +7,8 @@
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/Observer.hh>
 
-#include <memory>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <memory>
 
 #include <QLocale>
 #include <QStringList>
@@ -215,7 +215,11 @@ std::size_t liveFaces(const OmMesh &om)
 class VertexTable
 {
 public:
-    explicit VertexTable(const MeshData &input, const Weld &weld) : m_input(input), m_weld(weld) {}
+    explicit VertexTable(const MeshData &input, const Weld &weld)
+        : m_input(input)
+        , m_weld(weld)
+    {
+    }
 
     std::uint32_t add(std::uint32_t welded, const glm::vec3 &normal)
     {
@@ -293,8 +297,8 @@ MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om, const s
         };
 
         glm::vec3 normal[3];
-        const bool untouched = originalCorner(v[0]) != kNone && originalCorner(v[1]) != kNone
-            && originalCorner(v[2]) != kNone;
+        const bool untouched =
+            originalCorner(v[0]) != kNone && originalCorner(v[1]) != kNone && originalCorner(v[2]) != kNone;
         if (untouched) {
             for (int c = 0; c < 3; ++c)
                 normal[c] = input.normals[originalCorner(v[c])];
@@ -419,7 +423,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
 
     // Finest first: each coarser level goes on from the one before (the
     // quadrics carry over), so all levels cost one run to the coarsest.
-    std::stable_sort(todo.begin(), todo.end(), [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
+    std::stable_sort(todo.begin(), todo.end(),
+                     [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
     const bool faceted = isFaceted(mesh);
     std::size_t faces = faceTriangle.size();
     // Each collapse removes about two faces: that many to reach the coarsest level.

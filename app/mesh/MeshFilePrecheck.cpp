@@ -30,7 +30,7 @@ bool startsWithSolid(std::string_view head)
 {
     const std::size_t first = head.find_first_not_of(" \t\r\n");
     return first != std::string_view::npos && head.size() - first >= 5
-           && qstrnicmp(head.data() + first, "solid", 5) == 0;
+        && qstrnicmp(head.data() + first, "solid", 5) == 0;
 }
 
 // The known format a file starts like, for "this is X, not Y" errors (a
@@ -226,7 +226,9 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
         if (size < expected) {
             check.error = QStringLiteral("the binary STL header declares %1 triangles (%2 bytes) but the file has "
                                          "only %3 bytes (truncated or not an STL file)")
-                              .arg((expected - 84) / 50).arg(expected).arg(size);
+                              .arg((expected - 84) / 50)
+                              .arg(expected)
+                              .arg(size);
             return;
         }
         check.warnings << QStringLiteral("ignored %1 after the last triangle")
@@ -243,7 +245,8 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
 void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check)
 {
     if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2]))
-        check.error = wrongMagic(head, check.format, QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
+        check.error =
+            wrongMagic(head, check.format, QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
     else
         precheckOm(path, check);
 }
@@ -253,11 +256,16 @@ void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check
 std::optional<MeshFileFormat> meshFileFormatForPath(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("obj")) return MeshFileFormat::Obj;
-    if (suffix == QLatin1String("ply")) return MeshFileFormat::Ply;
-    if (suffix == QLatin1String("off")) return MeshFileFormat::Off;
-    if (suffix == QLatin1String("stl")) return MeshFileFormat::Stl;
-    if (suffix == QLatin1String("om")) return MeshFileFormat::Om;
+    if (suffix == QLatin1String("obj"))
+        return MeshFileFormat::Obj;
+    if (suffix == QLatin1String("ply"))
+        return MeshFileFormat::Ply;
+    if (suffix == QLatin1String("off"))
+        return MeshFileFormat::Off;
+    if (suffix == QLatin1String("stl"))
+        return MeshFileFormat::Stl;
+    if (suffix == QLatin1String("om"))
+        return MeshFileFormat::Om;
     return std::nullopt;
 }
 
@@ -291,7 +299,8 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     }
     if (check.fileSize > kMaxMeshFileBytes) {
         check.error = QStringLiteral("the file is too large (%1 MiB; the limit is %2 MiB)")
-                          .arg(check.fileSize >> 20).arg(kMaxMeshFileBytes >> 20);
+                          .arg(check.fileSize >> 20)
+                          .arg(kMaxMeshFileBytes >> 20);
         return check;
     }
     const QByteArray headBytes = file.read(kSampleBytes);
@@ -303,9 +312,7 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     const std::string_view head(headBytes.constData(), std::size_t(headBytes.size()));
 
     switch (format) {
-    case MeshFileFormat::Obj:
-        checkObj(head, check);
-        break;
+    case MeshFileFormat::Obj: checkObj(head, check); break;
     case MeshFileFormat::Ply:
         if (!startsWith(head, "ply\n") && !startsWith(head, "ply\r\n"))
             check.error = wrongMagic(head, format, QStringLiteral("not a PLY file (it does not start with 'ply')"));
@@ -314,16 +321,13 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
         break;
     case MeshFileFormat::Off:
         if (!offHeaderAt(head))
-            check.error = wrongMagic(head, format, QStringLiteral("not an OFF file (it does not start with an OFF header)"));
+            check.error =
+                wrongMagic(head, format, QStringLiteral("not an OFF file (it does not start with an OFF header)"));
         else
             precheckOff(path, check);
         break;
-    case MeshFileFormat::Stl:
-        checkStl(path, head, check);
-        break;
-    case MeshFileFormat::Om:
-        checkOm(path, head, check);
-        break;
+    case MeshFileFormat::Stl: checkStl(path, head, check); break;
+    case MeshFileFormat::Om: checkOm(path, head, check); break;
     }
     return check;
 }
@@ -338,7 +342,8 @@ bool readWholeFile(const QString &path, std::string &bytes, QString &error, cons
     const qint64 size = file.size();
     if (size > kMaxMeshFileBytes) {
         error = QStringLiteral("the file is too large (%1 MiB; the limit is %2 MiB)")
-                    .arg(size >> 20).arg(kMaxMeshFileBytes >> 20);
+                    .arg(size >> 20)
+                    .arg(kMaxMeshFileBytes >> 20);
         return false;
     }
     bytes.resize(std::size_t(size));

@@ -8,7 +8,13 @@
 
 namespace phonglab {
 
-enum class MeshFileFormat { Obj, Ply, Off, Stl, Om };
+enum class MeshFileFormat {
+    Obj,
+    Ply,
+    Off,
+    Stl,
+    Om
+};
 
 // Larger files are refused before anything is read: a mesh this big would
 // not fit the GPU buffers anyway, and every reader holds the whole file.
@@ -21,9 +27,9 @@ struct MeshFilePrecheck {
     QString error;        // set when the file must not be parsed
     QStringList warnings; // harmless oddities (trailing bytes, ...)
     qint64 fileSize = 0;
-    bool binary = false;           // binary PLY, STL or OFF (OM is always binary)
-    quint64 declaredVertices = 0;  // from the header (PLY, OFF, OM); 0 where the format has none
-    quint64 declaredFaces = 0;     // from the header (PLY, OFF, OM, binary STL) or counted (ascii STL)
+    bool binary = false;          // binary PLY, STL or OFF (OM is always binary)
+    quint64 declaredVertices = 0; // from the header (PLY, OFF, OM); 0 where the format has none
+    quint64 declaredFaces = 0;    // from the header (PLY, OFF, OM, binary STL) or counted (ascii STL)
     // A cleaned copy of the file for the reader, which cannot cope with what
     // was cleaned: OFF comments, counts on the header line, stray face
     // values; binary STL triangles with NaN or infinite corners (OpenMesh

@@ -16,15 +16,15 @@
 #include <csignal>
 #include <cstring>
 #include <new>
-#include <unistd.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 namespace phonglab {
 
 namespace {
 
-constexpr int kPollMs = 20;     // how soon Cancel and the wall clock are noticed
+constexpr int kPollMs = 20; // how soon Cancel and the wall clock are noticed
 constexpr qint64 kMiB = 1024 * 1024;
 
 QString signalName(int signal)
@@ -39,10 +39,9 @@ QStringList childArguments(const QString &path, const NormalOptions &normals, co
     QStringList args{QStringLiteral("__import-mesh"), QStringLiteral("--normals"), normalMethodName(normals.method)};
     if (normals.creaseAngleDeg)
         args << QStringLiteral("--crease") << QString::number(*normals.creaseAngleDeg, 'g', 17);
-    args << QStringLiteral("--out") << entryFile
-         << QStringLiteral("--address-space-mb") << QString::number(limits.addressSpaceBytes / kMiB)
-         << QStringLiteral("--cpu-seconds") << QString::number(limits.cpuSeconds)
-         << QStringLiteral("--") << path;
+    args << QStringLiteral("--out") << entryFile << QStringLiteral("--address-space-mb")
+         << QString::number(limits.addressSpaceBytes / kMiB) << QStringLiteral("--cpu-seconds")
+         << QString::number(limits.cpuSeconds) << QStringLiteral("--") << path;
     return args;
 }
 
@@ -135,8 +134,8 @@ void injectFault()
 QString temporaryEntryFile()
 {
     // Beside the cache, so adopting the answer is a rename.
-    const QString folder = MeshCache::enabled() && QDir().mkpath(MeshCache::directory())
-        ? MeshCache::directory() : QDir::tempPath();
+    const QString folder =
+        MeshCache::enabled() && QDir().mkpath(MeshCache::directory()) ? MeshCache::directory() : QDir::tempPath();
     QTemporaryFile reserve(folder + QStringLiteral("/import-XXXXXX.phmc"));
     reserve.setAutoRemove(false);
     if (!reserve.open())
@@ -219,8 +218,10 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         if (progress && !progress(report.progress)) {
             stopped = QStringLiteral("cancelled");
         } else if (clock.elapsed() > limits.wallClockMs) {
-            stopped = QStringLiteral("%1: the reader stopped answering after %2 s and was stopped; the file is probably malformed")
-                          .arg(path).arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
+            stopped = QStringLiteral(
+                          "%1: the reader stopped answering after %2 s and was stopped; the file is probably malformed")
+                          .arg(path)
+                          .arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
         }
         if (!stopped.isEmpty()) {
             child.kill();

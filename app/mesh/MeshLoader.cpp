@@ -1,8 +1,8 @@
 #include "MeshLoader.h"
 
 #include "BuiltinMeshes.h"
-#include "MeshCache.h"
 #include "MeshBuilder.h"
+#include "MeshCache.h"
 #include "MeshFileReader.h"
 #include "MeshImportProcess.h"
 #include "MeshRepair.h"
@@ -30,7 +30,8 @@ MeshLoadResult loadBuiltin(const QString &spec)
     MeshLoadResult result;
     result.mesh = builtinMesh(spec);
     if (!result.mesh) {
-        result.error = QStringLiteral("%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)").arg(spec);
+        result.error =
+            QStringLiteral("%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)").arg(spec);
         return result;
     }
     MeshStats &s = result.stats;
@@ -81,7 +82,8 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
     QString buildError;
     MeshData mesh = buildMeshData(polygons, normals, &build, &result.warnings, &buildError);
     if (mesh.positions.empty()) {
-        result.error = QStringLiteral("%1: %2").arg(path, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
+        result.error = QStringLiteral("%1: %2").arg(
+            path, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
         return result;
     }
     MeshStats &s = result.stats;

@@ -100,7 +100,7 @@ void dropUnusableFaces(PolygonMesh &mesh, RepairReport &report)
 
 // Edge adjacency: every face side, grouped by its undirected edge.
 struct Side {
-    std::uint32_t other;  // the larger vertex index of the edge
+    std::uint32_t other; // the larger vertex index of the edge
     std::uint32_t face;
     std::uint32_t corner; // the corner the side starts at
     bool forward;         // runs from the smaller vertex to the larger
@@ -146,14 +146,14 @@ Adjacency buildAdjacency(const PolygonMesh &mesh)
             adj.sides[fill[std::min(a, b)]++] = {std::max(a, b), adj.cornerFace[c], c, a < b};
     }
     for (std::size_t v = 0; v + 1 < adj.bucketStart.size(); ++v)
-        std::sort(adj.sides.begin() + adj.bucketStart[v], adj.sides.begin() + adj.bucketStart[v + 1],
-                  [](const Side &x, const Side &y) { return x.other < y.other || (x.other == y.other && x.face < y.face); });
+        std::sort(
+            adj.sides.begin() + adj.bucketStart[v], adj.sides.begin() + adj.bucketStart[v + 1],
+            [](const Side &x, const Side &y) { return x.other < y.other || (x.other == y.other && x.face < y.face); });
     return adj;
 }
 
 // Calls visit(first, count) for each run of sides sharing an edge.
-template<typename Visit>
-void forEachEdge(const Adjacency &adj, Visit visit)
+template <typename Visit> void forEachEdge(const Adjacency &adj, Visit visit)
 {
     const std::size_t n = adj.sides.size();
     for (std::size_t v = 0; v + 1 < adj.bucketStart.size(); ++v) {
@@ -191,8 +191,8 @@ void orientFaces(PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
     // Neighbours across manifold edges, and whether the two faces run the
     // edge the same way (then one of them must turn).
     std::vector<std::uint32_t> start(faces + 1, 0);
-    std::vector<std::uint32_t> sides(faces, 0);   // sides with an edge per face
-    std::vector<std::uint32_t> paired(faces, 0);  // of those, on manifold edges
+    std::vector<std::uint32_t> sides(faces, 0);  // sides with an edge per face
+    std::vector<std::uint32_t> paired(faces, 0); // of those, on manifold edges
     forEachEdge(adj, [&](std::size_t i, std::size_t n) {
         for (std::size_t k = i; k < i + n; ++k)
             ++sides[adj.sides[k].face];

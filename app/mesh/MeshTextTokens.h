@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cfloat>
-#include <climits>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <string_view>
@@ -15,10 +15,15 @@ namespace phonglab::meshtext {
 // Whitespace-separated tokens of a text mesh file with line numbers, for the
 // prechecks that validate ascii PLY, OFF and STL before OpenMesh reads them
 // (its readers use operator>> and carry on with garbage after a failure).
-class TextTokens {
+class TextTokens
+{
 public:
     explicit TextTokens(std::string_view text, std::size_t firstLine = 1, bool hashComments = false)
-        : m_text(text), m_line(firstLine), m_comments(hashComments) {}
+        : m_text(text)
+        , m_line(firstLine)
+        , m_comments(hashComments)
+    {
+    }
 
     // The next token, crossing line ends; empty at the end of the text.
     std::string_view next()
@@ -160,7 +165,9 @@ inline QString binaryDataError(std::string_view text, const QString &format)
     }
     if (controls * 100 > text.size())
         return QStringLiteral("binary data in a text %1 file (%2 control characters in %3 bytes)")
-            .arg(format).arg(controls).arg(text.size());
+            .arg(format)
+            .arg(controls)
+            .arg(text.size());
     return {};
 }
 

@@ -25,8 +25,8 @@ CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const 
     result.normals.resize(count);
     for (std::size_t t = 0; t < count; ++t) {
         const glm::vec3 &a = positions[triangles[3 * t]];
-        const glm::vec3 n = normalizedOrZero(glm::cross(positions[triangles[3 * t + 1]] - a,
-                                                        positions[triangles[3 * t + 2]] - a));
+        const glm::vec3 n =
+            normalizedOrZero(glm::cross(positions[triangles[3 * t + 1]] - a, positions[triangles[3 * t + 2]] - a));
         // A degenerate triangle is invisible; any normal will do.
         result.normals[t] = isZero(n) ? kLastResort : n;
     }

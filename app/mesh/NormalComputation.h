@@ -19,7 +19,11 @@ namespace phonglab {
 //   PerTriangle  flat normals, one per triangle: the index is c / 3;
 //   PerCorner    everything else: cornerNormal holds one index per corner.
 struct CornerNormals {
-    enum class Indexing { PerPosition, PerTriangle, PerCorner };
+    enum class Indexing {
+        PerPosition,
+        PerTriangle,
+        PerCorner
+    };
 
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> cornerNormal; // PerCorner only
@@ -28,12 +32,9 @@ struct CornerNormals {
     std::uint32_t index(std::size_t corner, std::span<const std::uint32_t> triangles) const
     {
         switch (indexing) {
-        case Indexing::PerPosition:
-            return triangles[corner];
-        case Indexing::PerTriangle:
-            return std::uint32_t(corner / 3);
-        case Indexing::PerCorner:
-            break;
+        case Indexing::PerPosition: return triangles[corner];
+        case Indexing::PerTriangle: return std::uint32_t(corner / 3);
+        case Indexing::PerCorner: break;
         }
         return cornerNormal[corner];
     }

@@ -30,9 +30,15 @@ inline glm::vec3 normalizedOrZero(const glm::vec3 &v)
     return length > kTiny && length <= kHuge ? v / length : glm::vec3(0.0f);
 }
 
-inline bool isZero(const glm::vec3 &v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
+inline bool isZero(const glm::vec3 &v)
+{
+    return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f;
+}
 
-inline float sizeOf(const glm::vec3 &v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+inline float sizeOf(const glm::vec3 &v)
+{
+    return std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+}
 
 // A weighted normal sum in xyz and, in w, the total size of what was added
 // (the lengths, or for raw cross products their L1 norms: cheaper, and
@@ -68,8 +74,9 @@ inline float angleBetween(float y, float x)
     const float lo = std::min(ax, y), hi = std::max(ax, y);
     const float t = lo / std::max(hi, kTiny);
     const float z = t * t, z2 = z * z, z4 = z2 * z2;
-    const float atanT = t * ((0.999999336f - 0.333298608f * z) + z2 * (0.199465661f - 0.139086307f * z)
-        + z4 * ((0.0964219876f - 0.0559123329f * z) + z2 * (0.0218629554f - 0.00405456518f * z)));
+    const float atanT = t
+        * ((0.999999336f - 0.333298608f * z) + z2 * (0.199465661f - 0.139086307f * z)
+           + z4 * ((0.0964219876f - 0.0559123329f * z) + z2 * (0.0218629554f - 0.00405456518f * z)));
     const float steep = y > ax ? 1.0f : 0.0f, obtuse = x < 0.0f ? 1.0f : 0.0f;
     const float acute = steep * (kPi / 2) + (1.0f - 2.0f * steep) * atanT;
     return obtuse * kPi + (1.0f - 2.0f * obtuse) * acute;
@@ -77,12 +84,12 @@ inline float angleBetween(float y, float x)
 
 // The normal for a corner whose own sum cancelled: its triangle's.
 inline glm::vec3 fallbackNormal(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                         std::size_t corner)
+                                std::size_t corner)
 {
     const std::size_t base = corner - corner % 3;
     const glm::vec3 &a = positions[triangles[base]];
-    const glm::vec3 face = normalizedOrZero(glm::cross(positions[triangles[base + 1]] - a,
-                                                       positions[triangles[base + 2]] - a));
+    const glm::vec3 face =
+        normalizedOrZero(glm::cross(positions[triangles[base + 1]] - a, positions[triangles[base + 2]] - a));
     return isZero(face) ? kLastResort : face;
 }
 

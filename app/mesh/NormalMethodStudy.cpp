@@ -63,13 +63,13 @@ double uniform(std::mt19937 &random)
 Surface jitteredIcosphere(int levels, double jitter, std::uint32_t seed)
 {
     const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<glm::dvec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                                 {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    std::vector<glm::dvec3> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                 {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
     for (glm::dvec3 &v : p)
         v = glm::normalize(v);
-    std::vector<std::uint32_t> t = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
-                                    11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
-                                    3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    std::vector<std::uint32_t> t = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                    4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                    6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
     for (int level = 0; level < levels; ++level) {
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
         const auto mid = [&](std::uint32_t a, std::uint32_t b) {
@@ -146,8 +146,8 @@ std::vector<NormalStudyRow> runNormalStudy(int repeats)
     };
     std::vector<NormalStudyRow> rows;
     for (const auto &[name, surface] : tessellations)
-        for (const NormalMethod method : {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted,
-                                          NormalMethod::AngleWeighted})
+        for (const NormalMethod method :
+             {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted})
             rows.push_back(measure(name, surface, method, repeats));
     return rows;
 }

@@ -10,8 +10,8 @@ namespace phonglab {
 // the exact normal is known: how far off each method is, and what it costs.
 // For the bench's "which normals does a scene need" and docs.
 struct NormalStudyRow {
-    QString tessellation;   // e.g. "UV sphere 64×32", "icosphere (jittered)"
-    QString method;         // normalMethodName(): "flat", "average", "area", "angle"
+    QString tessellation; // e.g. "UV sphere 64×32", "icosphere (jittered)"
+    QString method;       // normalMethodName(): "flat", "average", "area", "angle"
     qint64 triangles = 0;
     double ms = 0;          // computeNormals, median of the repeats
     double maxAngleDeg = 0; // per corner, against normalize(corner position)

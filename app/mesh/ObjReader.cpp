@@ -147,7 +147,8 @@ bool keywordIn(std::string_view k, std::initializer_list<std::string_view> list)
     return false;
 }
 
-class ObjParser {
+class ObjParser
+{
 public:
     MeshReadResult run(std::string_view text, const std::function<bool(double)> &progress);
 
@@ -229,11 +230,13 @@ bool ObjParser::parseLine(const char *p, const char *e)
         return parseFace(p, e);
     if (key == "vn")
         return parseVec3(p, e, m_mesh.normals);
-    if (keywordIn(key, {"vt", "o", "g", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel", "c_interp",
-                        "d_interp", "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech"}))
+    if (keywordIn(key,
+                  {"vt", "o", "g", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel", "c_interp", "d_interp",
+                   "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech"}))
         return true;
-    if (keywordIn(key, {"vp", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole",
-                        "scrv", "sp", "end", "con"})) {
+    if (keywordIn(key,
+                  {"vp", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
+                   "end", "con"})) {
         ++m_freeform;
         return true;
     }

@@ -59,7 +59,10 @@ QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
         if (corners > (text.size() - at) / 4)
             return QStringLiteral("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
                                   "left can hold (corrupt?)")
-                .arg(f + 1).arg(at - 4).arg(corners).arg(text.size() - at);
+                .arg(f + 1)
+                .arg(at - 4)
+                .arg(corners)
+                .arg(text.size() - at);
         at += 4 * corners;
     }
     return {};
@@ -90,7 +93,10 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     if (needed > text.size())
         check.error = QStringLiteral("the binary OFF header declares %1 vertices and %2 faces, which need at least "
                                      "%3 bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(check.declaredVertices).arg(check.declaredFaces).arg(needed).arg(text.size());
+                          .arg(check.declaredVertices)
+                          .arg(check.declaredFaces)
+                          .arg(needed)
+                          .arg(text.size());
     else if (check.declaredFaces == 0)
         check.error = QStringLiteral("the OFF file has no faces");
     else
@@ -147,7 +153,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
         if (!meshtext::parseInteger(t, counts[i]) || counts[i] < 0 || counts[i] > UINT32_MAX) {
             check.error = QStringLiteral("line %1: expected the vertex, face and edge counts, found %2")
-                              .arg(tokens.line()).arg(quoted(t));
+                              .arg(tokens.line())
+                              .arg(quoted(t));
             return;
         }
         rewrite = rewrite || tokens.line() == headerLine;
@@ -163,7 +170,10 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     if (needed > text.size()) {
         check.error = QStringLiteral("the OFF header declares %1 vertices and %2 faces, which need at least %3 "
                                      "bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(check.declaredVertices).arg(check.declaredFaces).arg(needed).arg(text.size());
+                          .arg(check.declaredVertices)
+                          .arg(check.declaredFaces)
+                          .arg(needed)
+                          .arg(text.size());
         return;
     }
     if (check.declaredFaces == 0) {
@@ -174,8 +184,12 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     std::string out;
     out.reserve(text.size());
     out.append(k.keyword).append("\n");
-    out.append(std::to_string(counts[0])).append(" ").append(std::to_string(counts[1])).append(" ")
-        .append(std::to_string(counts[2])).append("\n");
+    out.append(std::to_string(counts[0]))
+        .append(" ")
+        .append(std::to_string(counts[1]))
+        .append(" ")
+        .append(std::to_string(counts[2]))
+        .append("\n");
 
     std::vector<std::string_view> line;
     auto readLine = [&] {
@@ -187,7 +201,9 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             line.push_back(t);
         return !line.empty();
     };
-    auto fail = [&](const QString &message) { check.error = QStringLiteral("line %1: %2").arg(tokens.line()).arg(message); };
+    auto fail = [&](const QString &message) {
+        check.error = QStringLiteral("line %1: %2").arg(tokens.line()).arg(message);
+    };
 
     const std::size_t vertexNumbers = k.normals ? 6 : 3;
     for (quint64 v = 0; v < check.declaredVertices; ++v) {
@@ -196,8 +212,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             return;
         }
         if (line.size() < vertexNumbers)
-            return fail(QStringLiteral("vertex %1 needs %2 numbers, found %3")
-                            .arg(v + 1).arg(vertexNumbers).arg(line.size()));
+            return fail(
+                QStringLiteral("vertex %1 needs %2 numbers, found %3").arg(v + 1).arg(vertexNumbers).arg(line.size()));
         for (std::string_view t : line)
             if (!meshtext::isReal(t))
                 return fail(QStringLiteral("expected a number, found %1").arg(quoted(t)));
@@ -212,16 +228,20 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         }
         std::int64_t corners = -1;
         if (!meshtext::parseInteger(line[0], corners) || corners < 0)
-            return fail(QStringLiteral("expected the corner count of face %1, found %2").arg(f + 1).arg(quoted(line[0])));
+            return fail(
+                QStringLiteral("expected the corner count of face %1, found %2").arg(f + 1).arg(quoted(line[0])));
         if (std::size_t(corners) > line.size() - 1)
             return fail(QStringLiteral("face %1 has %2 corners but only %3 indices")
-                            .arg(f + 1).arg(corners).arg(line.size() - 1));
+                            .arg(f + 1)
+                            .arg(corners)
+                            .arg(line.size() - 1));
         const std::size_t indicesEnd = std::size_t(corners) + 1;
         for (std::size_t i = 1; i < line.size(); ++i) {
             const bool index = i < indicesEnd;
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
-                return fail(QStringLiteral("expected %1, found %2")
-                                .arg(index ? QStringLiteral("a vertex index") : QStringLiteral("a number"), quoted(line[i])));
+                return fail(
+                    QStringLiteral("expected %1, found %2")
+                        .arg(index ? QStringLiteral("a vertex index") : QStringLiteral("a number"), quoted(line[i])));
         }
         // Values after the indices are a colour, which the reader only takes
         // from the rest of the line under a COFF header; otherwise it would

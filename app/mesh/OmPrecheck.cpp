@@ -10,8 +10,23 @@ namespace phonglab {
 namespace {
 
 // The numbers in OpenMesh's OMFormat.hh; its reader is the contract here.
-enum Entity : unsigned { Vertex = 0, Mesh = 1, Face = 2, Edge = 4, Halfedge = 6, Sentinel = 7 };
-enum Type : unsigned { Pos = 0, Normal = 1, Texcoord = 2, Status = 3, Color = 4, Custom = 6, Topology = 7 };
+enum Entity : unsigned {
+    Vertex = 0,
+    Mesh = 1,
+    Face = 2,
+    Edge = 4,
+    Halfedge = 6,
+    Sentinel = 7
+};
+enum Type : unsigned {
+    Pos = 0,
+    Normal = 1,
+    Texcoord = 2,
+    Status = 3,
+    Color = 4,
+    Custom = 6,
+    Topology = 7
+};
 constexpr std::uint8_t kVersion2_0 = 2 << 5;
 constexpr std::uint8_t kVersion2_1 = (2 << 5) | 1;
 constexpr std::size_t kHeaderBytes = 16;
@@ -49,11 +64,13 @@ ChunkHeader decodeChunkHeader(std::uint32_t v)
 
 QString describe(const ChunkHeader &c)
 {
-    static const char *const kEntities[] = {"vertex", "mesh", "face", "entity 3", "edge", "entity 5", "halfedge", "end"};
-    static const char *const kTypes[] = {"positions", "normals", "texture coordinates", "status", "colours",
-                                         "type 5", "custom property", "topology"};
+    static const char *const kEntities[] = {"vertex", "mesh",     "face",     "entity 3",
+                                            "edge",   "entity 5", "halfedge", "end"};
+    static const char *const kTypes[] = {"positions", "normals", "texture coordinates", "status",
+                                         "colours",   "type 5",  "custom property",     "topology"};
     return QStringLiteral("%1 %2").arg(QLatin1String(kEntities[c.entity]),
-                                       c.type < 8 ? QLatin1String(kTypes[c.type]) : QStringLiteral("type %1").arg(c.type));
+                                       c.type < 8 ? QLatin1String(kTypes[c.type])
+                                                  : QStringLiteral("type %1").arg(c.type));
 }
 
 quint64 elementCount(const OmHeader &h, unsigned entity)
@@ -82,12 +99,18 @@ struct ChunkSize {
     QString error;
 };
 
-ChunkSize sized(quint64 bytes) { return {bytes, {}}; }
+ChunkSize sized(quint64 bytes)
+{
+    return {bytes, {}};
+}
 
 ChunkSize wrongDims(const ChunkHeader &c, unsigned expected)
 {
-    return {0, QStringLiteral("a %1 chunk with %2 components per element, where the reader expects %3")
-                   .arg(describe(c)).arg(c.dims).arg(expected)};
+    return {0,
+            QStringLiteral("a %1 chunk with %2 components per element, where the reader expects %3")
+                .arg(describe(c))
+                .arg(c.dims)
+                .arg(expected)};
 }
 
 // Vectors of three floats or doubles: positions and normals.
@@ -135,7 +158,8 @@ ChunkSize faceIndexSize(const OmHeader &h, const ChunkHeader &c, std::string_vie
             return {0, QStringLiteral("the file ends after %1 of %2 faces (truncated?)").arg(f).arg(h.faces)};
         at += 2 + index * littleEndian(rest, std::size_t(at), 2);
         if (at > rest.size())
-            return {0, QStringLiteral("face %1 of %2 runs past the end of the file (truncated?)").arg(f + 1).arg(h.faces)};
+            return {0,
+                    QStringLiteral("face %1 of %2 runs past the end of the file (truncated?)").arg(f + 1).arg(h.faces)};
     }
     return sized(at);
 }
@@ -201,12 +225,15 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
         const std::size_t start = at;
         if (bytes.size() - at < 2)
             return QStringLiteral("the file ends after %1 chunks, before the end marker OpenMesh writes "
-                                  "(truncated?)").arg(chunk - 1);
+                                  "(truncated?)")
+                .arg(chunk - 1);
         const ChunkHeader c = decodeChunkHeader(littleEndian(bytes, at, 2));
         at += 2;
         if (c.named) {
             if (at >= bytes.size() || bytes.size() - at - 1 < static_cast<unsigned char>(bytes[at]))
-                return QStringLiteral("chunk %1 (byte %2): the file ends inside its property name").arg(chunk).arg(start);
+                return QStringLiteral("chunk %1 (byte %2): the file ends inside its property name")
+                    .arg(chunk)
+                    .arg(start);
             at += 1 + static_cast<unsigned char>(bytes[at]);
         }
         if (c.entity == Sentinel) {
@@ -221,7 +248,11 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
             return QStringLiteral("chunk %1 (byte %2): %3").arg(chunk).arg(start).arg(size.error);
         if (size.bytes > bytes.size() - at)
             return QStringLiteral("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left (truncated or corrupt)")
-                .arg(chunk).arg(start).arg(describe(c)).arg(size.bytes).arg(bytes.size() - at);
+                .arg(chunk)
+                .arg(start)
+                .arg(describe(c))
+                .arg(size.bytes)
+                .arg(bytes.size() - at);
         at += std::size_t(size.bytes);
         if (isDrawnChunk(c))
             drawn.append(bytes.substr(start, at - start));
@@ -255,7 +286,10 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     if (needed > bytes.size()) {
         check.error = QStringLiteral("the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
                                      "bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(h.vertices).arg(h.faces).arg(needed).arg(bytes.size());
+                          .arg(h.vertices)
+                          .arg(h.faces)
+                          .arg(needed)
+                          .arg(bytes.size());
         return;
     }
     if (h.faces == 0) {

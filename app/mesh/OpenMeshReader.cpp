@@ -26,7 +26,8 @@ namespace {
 // rather than their targets changed with mostream::connect/disconnect:
 // OpenMesh's disconnect() forgets the target object connect() allocated
 // without deleting it, a leak on every file read.
-class ConsoleCapture {
+class ConsoleCapture
+{
 public:
     ConsoleCapture()
     {
@@ -107,17 +108,20 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         // Told binary or ascii explicitly, as the precheck decided it.
         if (check.binary)
             options += OpenMesh::IO::Options::Binary;
-        return readFileOrCopy(path, check, error, [&](std::istream &in) { return io.read(in, "stl", importer, options); });
+        return readFileOrCopy(path, check, error,
+                              [&](std::istream &in) { return io.read(in, "stl", importer, options); });
     }
     if (check.format == MeshFileFormat::Om)
-        return readFileOrCopy(path, check, error, [&](std::istream &in) { return readOm(in, importer, options, error); });
+        return readFileOrCopy(path, check, error,
+                              [&](std::istream &in) { return readOm(in, importer, options, error); });
     if (!check.rewritten.empty()) {
         // A cleaned OFF text. The OFF reader's stream entry point keeps the
         // header flags of the previous file, so it goes through a file too.
         QTemporaryDir dir;
         QFile cleaned(dir.filePath(QStringLiteral("cleaned.off")));
         if (!dir.isValid() || !cleaned.open(QIODevice::WriteOnly)
-            || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size())) != qint64(check.rewritten.size())) {
+            || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size()))
+                != qint64(check.rewritten.size())) {
             error = QStringLiteral("cannot write a cleaned copy of the OFF file to the temporary folder");
             return false;
         }
@@ -169,8 +173,9 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
     if (!result.error.isEmpty())
         return result;
     if (!ok) {
-        result.error = messages.isEmpty() ? QStringLiteral("OpenMesh could not read the file")
-                                          : QStringLiteral("OpenMesh could not read the file: %1").arg(messages.first());
+        result.error = messages.isEmpty()
+            ? QStringLiteral("OpenMesh could not read the file")
+            : QStringLiteral("OpenMesh could not read the file: %1").arg(messages.first());
         return result;
     }
     constexpr int kMaxMessages = 5;
@@ -182,7 +187,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
 
     const std::size_t faceCalls = importer.faceCallCount();
     PolygonMesh mesh = importer.takeMesh(result.warnings);
-    if (check.declaredVertices && mesh.positions.size() != check.declaredVertices && check.format != MeshFileFormat::Stl)
+    if (check.declaredVertices && mesh.positions.size() != check.declaredVertices
+        && check.format != MeshFileFormat::Stl)
         result.warnings << QStringLiteral("read %1 of the %2 the header declares")
                                .arg(mesh.positions.size())
                                .arg(meshtext::counted(check.declaredVertices, "vertex", "vertices"));
@@ -193,7 +199,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
                                .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle", "triangles"));
     } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
         result.warnings << QStringLiteral("read %1 of the %2 the header declares")
-                               .arg(faceCalls).arg(meshtext::counted(check.declaredFaces, "face", "faces"));
+                               .arg(faceCalls)
+                               .arg(meshtext::counted(check.declaredFaces, "face", "faces"));
     }
     if (mesh.faceCount() == 0) {
         result.error = QStringLiteral("no faces were read");

@@ -25,14 +25,22 @@ struct PlyType {
 
 std::optional<PlyType> plyType(std::string_view n)
 {
-    if (n == "char" || n == "int8") return PlyType{1, true, true};
-    if (n == "uchar" || n == "uint8") return PlyType{1, true, false};
-    if (n == "short" || n == "int16") return PlyType{2, true, true};
-    if (n == "ushort" || n == "uint16") return PlyType{2, true, false};
-    if (n == "int" || n == "int32") return PlyType{4, true, true};
-    if (n == "uint" || n == "uint32") return PlyType{4, true, false};
-    if (n == "float" || n == "float32") return PlyType{4, false, true};
-    if (n == "double" || n == "float64") return PlyType{8, false, true};
+    if (n == "char" || n == "int8")
+        return PlyType{1, true, true};
+    if (n == "uchar" || n == "uint8")
+        return PlyType{1, true, false};
+    if (n == "short" || n == "int16")
+        return PlyType{2, true, true};
+    if (n == "ushort" || n == "uint16")
+        return PlyType{2, true, false};
+    if (n == "int" || n == "int32")
+        return PlyType{4, true, true};
+    if (n == "uint" || n == "uint32")
+        return PlyType{4, true, false};
+    if (n == "float" || n == "float32")
+        return PlyType{4, false, true};
+    if (n == "double" || n == "float64")
+        return PlyType{8, false, true};
     return std::nullopt;
 }
 
@@ -50,7 +58,12 @@ struct PlyElement {
 };
 
 struct PlyHeader {
-    enum Format { Unknown, Ascii, LittleEndian, BigEndian } format = Unknown;
+    enum Format {
+        Unknown,
+        Ascii,
+        LittleEndian,
+        BigEndian
+    } format = Unknown;
     std::vector<PlyElement> elements;
     qint64 bodyOffset = 0;
     std::size_t bodyLine = 1;
@@ -126,22 +139,29 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             return (u < 0x20 && c != '\t') || u > 0x7e;
         });
         if (odd != line.end())
-            return where + QStringLiteral(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
-                               .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
-                               .arg(odd - line.begin() + 1);
+            return where
+                + QStringLiteral(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                      .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
+                      .arg(odd - line.begin() + 1);
         if (w[0] == "format") {
             if (h.format != PlyHeader::Unknown)
                 return where + QStringLiteral(": a second 'format' line");
             if (w.size() < 2)
                 return where + QStringLiteral(": 'format' without a format");
-            if (w[1] == "ascii") h.format = PlyHeader::Ascii;
-            else if (w[1] == "binary_little_endian") h.format = PlyHeader::LittleEndian;
-            else if (w[1] == "binary_big_endian") h.format = PlyHeader::BigEndian;
-            else return where + QStringLiteral(": unknown format %1").arg(quoted(w[1]));
+            if (w[1] == "ascii")
+                h.format = PlyHeader::Ascii;
+            else if (w[1] == "binary_little_endian")
+                h.format = PlyHeader::LittleEndian;
+            else if (w[1] == "binary_big_endian")
+                h.format = PlyHeader::BigEndian;
+            else
+                return where + QStringLiteral(": unknown format %1").arg(quoted(w[1]));
             // OpenMesh reads the version with operator>>(float) and, on a failed read,
             // loops over the header forever; so accept only a plain number here.
             if (w.size() != 3 || !isPlainVersion(w[2]))
-                return where + QStringLiteral(": expected 'format %1 1.0'").arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
+                return where
+                    + QStringLiteral(": expected 'format %1 1.0'")
+                          .arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
         } else if (w[0] == "element") {
             std::int64_t count = -1;
             if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0 || count > UINT32_MAX)
@@ -207,9 +227,15 @@ bool hasFaceIndices(const PlyElement &e)
 
 // Sequential reads over the body of a binary PLY with a large buffer, so the
 // walk over list lengths costs about as much as reading the file once.
-class BodyReader {
+class BodyReader
+{
 public:
-    BodyReader(QFile &file, qint64 offset, qint64 size) : m_file(file), m_pos(offset), m_size(size) {}
+    BodyReader(QFile &file, qint64 offset, qint64 size)
+        : m_file(file)
+        , m_pos(offset)
+        , m_size(size)
+    {
+    }
 
     qint64 remaining() const { return m_size - m_pos; }
 
@@ -260,7 +286,9 @@ std::int64_t decodeInteger(const unsigned char *b, const PlyType &t, bool bigEnd
 QString truncatedAt(const PlyElement &e, quint64 index)
 {
     return QStringLiteral("the file ends inside %1 %2 of %3 (truncated?)")
-        .arg(QString::fromStdString(e.name)).arg(index + 1).arg(e.count);
+        .arg(QString::fromStdString(e.name))
+        .arg(index + 1)
+        .arg(e.count);
 }
 
 void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
@@ -298,7 +326,8 @@ void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
                 const std::int64_t n = decodeInteger(raw, p.countType, bigEndian);
                 if (n < 0) {
                     check.error = QStringLiteral("%1 %2 has a negative list length")
-                                      .arg(QString::fromStdString(e.name)).arg(i + 1);
+                                      .arg(QString::fromStdString(e.name))
+                                      .arg(i + 1);
                     return;
                 }
                 if (!body.skip(quint64(n) * quint64(p.type.size))) {
@@ -332,8 +361,10 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
                 }
                 auto bad = [&](const QString &what) {
                     check.error = QStringLiteral("line %1: expected %2 for '%3' of %4 %5, found %6")
-                                      .arg(tokens.line()).arg(what, QString::fromStdString(p.name), name)
-                                      .arg(i + 1).arg(quoted(t));
+                                      .arg(tokens.line())
+                                      .arg(what, QString::fromStdString(p.name), name)
+                                      .arg(i + 1)
+                                      .arg(quoted(t));
                 };
                 if (!p.isList) {
                     if (!valueFits(t, p.type))
@@ -401,7 +432,10 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
         if (needed > bodyBytes + 1) {
             check.error = QStringLiteral("the header declares %1 %2 elements, which need at least %3 bytes, "
                                          "but the file has %4 bytes after the header (truncated or corrupt)")
-                              .arg(e.count).arg(QString::fromStdString(e.name)).arg(needed).arg(bodyBytes);
+                              .arg(e.count)
+                              .arg(QString::fromStdString(e.name))
+                              .arg(needed)
+                              .arg(bodyBytes);
             return;
         }
     }

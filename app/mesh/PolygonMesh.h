@@ -15,10 +15,10 @@ struct PolygonMesh {
     static constexpr std::uint32_t kNoNormal = 0xffffffffu;
 
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;           // the file's normals (may be empty)
-    std::vector<std::uint32_t> faceStart{0};  // face f uses corners [faceStart[f], faceStart[f+1])
+    std::vector<glm::vec3> normals;          // the file's normals (may be empty)
+    std::vector<std::uint32_t> faceStart{0}; // face f uses corners [faceStart[f], faceStart[f+1])
     std::vector<std::uint32_t> cornerPosition;
-    std::vector<std::uint32_t> cornerNormal;  // parallel to cornerPosition; empty if no normals
+    std::vector<std::uint32_t> cornerNormal; // parallel to cornerPosition; empty if no normals
 
     std::size_t faceCount() const { return faceStart.size() - 1; }
     std::size_t cornerCount(std::size_t face) const { return faceStart[face + 1] - faceStart[face]; }

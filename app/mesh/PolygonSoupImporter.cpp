@@ -20,7 +20,7 @@ std::uint32_t cornerIndex(int idx)
 bool usableNormal(const glm::vec3 &n)
 {
     return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)
-           && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f);
+        && (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f);
 }
 
 } // namespace

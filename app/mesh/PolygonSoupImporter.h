@@ -21,11 +21,13 @@ namespace phonglab {
 // Index convention: a corner index the file gives as negative is stored as
 // 0xffffffff, which is never a valid position index, so MeshRepair drops the
 // face as out of range like any other bad index.
-class PolygonSoupImporter final : public OpenMesh::IO::BaseImporter {
+class PolygonSoupImporter final : public OpenMesh::IO::BaseImporter
+{
 public:
     // Thrown out of add_vertex/add_face when the progress callback asks to
     // stop: the only way to interrupt an OpenMesh reader module.
-    struct Cancelled {};
+    struct Cancelled {
+    };
 
     // Called with the number of vertices plus faces added so far, every
     // `every` elements; returning false throws Cancelled.
@@ -62,33 +64,37 @@ public:
 
     // Attributes we do not use: texture coordinates, colours, status bits,
     // the halfedge-to-face links (a face's own halfedge is enough).
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec2f> &) override {}
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec3f> &) override {}
-    void set_face_texindex(OpenMesh::FaceHandle, int) override {}
-    void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc &) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc &) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f &) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f &) override {}
-    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f &) override {}
-    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f &) override {}
-    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f &) override {}
-    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f &) override {}
-    void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo &) override {}
-    void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo &) override {}
-    void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo &) override {}
-    void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo &) override {}
-    void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
-    void request_face_texcoords2D() override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc &) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc &) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f &) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f &) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc &) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc &) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f &) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f &) override {}
-    void add_texture_information(int, std::string) override {}
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec2f> &) override
+    {
+    }
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec3f> &) override
+    {
+    }
+    void set_face_texindex(OpenMesh::FaceHandle, int) override { }
+    void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override { }
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc &) override { }
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc &) override { }
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f &) override { }
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f &) override { }
+    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f &) override { }
+    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f &) override { }
+    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f &) override { }
+    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f &) override { }
+    void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo &) override { }
+    void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo &) override { }
+    void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo &) override { }
+    void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo &) override { }
+    void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override { }
+    void request_face_texcoords2D() override { }
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc &) override { }
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc &) override { }
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f &) override { }
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f &) override { }
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc &) override { }
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc &) override { }
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f &) override { }
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f &) override { }
+    void add_texture_information(int, std::string) override { }
 
 private:
     void countElement();

@@ -101,8 +101,7 @@ QString meshKey(const Scene &scene, const SceneObject &object)
     return key + detailSuffix(object.detail);
 }
 
-SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded,
-                            const LoadProgress &progress)
+SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded, const LoadProgress &progress)
 {
     SceneMeshes result;
     // Distinct keys to load, in object order.

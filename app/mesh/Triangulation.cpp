@@ -43,12 +43,13 @@ int half(const Point2 &from, const Point2 &to)
 
 // Splits one polygon. Keeps its scratch buffers between polygons so a mesh
 // of quads and n-gons costs no allocation per face.
-class PolygonTriangulator {
+class PolygonTriangulator
+{
 public:
     // Appends the triangles of corners [first, first + n) to `out`; false
     // when ear clipping failed and (part of) the polygon was fanned.
-    bool run(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition,
-             std::uint32_t first, std::uint32_t n, std::vector<std::uint32_t> &out);
+    bool run(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition, std::uint32_t first,
+             std::uint32_t n, std::vector<std::uint32_t> &out);
 
 private:
     bool project(std::span<const glm::vec3> positions, const std::uint32_t *polygon, std::uint32_t n);

@@ -14,8 +14,8 @@ namespace phonglab {
 // position indices, so every triangle corner keeps the normal the file gave
 // that polygon corner.
 struct Triangulation {
-    std::vector<std::uint32_t> corners;  // 3 per triangle
-    std::size_t fanFallbacks = 0;        // polygons ear clipping could not handle
+    std::vector<std::uint32_t> corners; // 3 per triangle
+    std::size_t fanFallbacks = 0;       // polygons ear clipping could not handle
 
     std::size_t triangleCount() const { return corners.size() / 3; }
 };

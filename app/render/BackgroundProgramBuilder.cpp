@@ -16,8 +16,7 @@ constexpr unsigned long kJoinTimeoutMs = 3000;
 
 qint64 monotonicNs()
 {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::steady_clock::now().time_since_epoch())
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
 }
 
@@ -72,11 +71,14 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *erro
     bool ok = false;
     QString reason;
     QThread *gui = this->thread();
-    QMetaObject::invokeMethod(worker, [&] {
-        ok = worker->initialize(&reason);
-        if (!ok)
-            worker->shutdown(gui);
-    }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(
+        worker,
+        [&] {
+            ok = worker->initialize(&reason);
+            if (!ok)
+                worker->shutdown(gui);
+        },
+        Qt::BlockingQueuedConnection);
     if (!ok) {
         thread->quit();
         thread->wait();
@@ -107,10 +109,13 @@ void BackgroundProgramBuilder::stop()
     }
     // Queued behind any build still waiting, which then runs to completion;
     // its reply is dropped because this object no longer has a worker.
-    QMetaObject::invokeMethod(worker, [worker, gui] {
-        worker->shutdown(gui);
-        QThread::currentThread()->quit();
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker,
+        [worker, gui] {
+            worker->shutdown(gui);
+            QThread::currentThread()->quit();
+        },
+        Qt::QueuedConnection);
     if (!m_thread->wait(kJoinTimeoutMs)) {
         // Stuck in the driver (an endless loop in a shader). Joining would
         // hang the GUI and deleting a running QThread aborts, so leave the
@@ -136,17 +141,21 @@ quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const Shader
         return request.serial;
     const qint64 queuedAt = monotonicNs();
     ProgramBuildWorker *worker = m_worker;
-    QMetaObject::invokeMethod(worker, [mailbox = m_mailbox, worker, request, queuedAt, generation = m_generation] {
-        ProgramBuildReply reply = worker->build(request);
-        reply.queuedAtNs = queuedAt;
-        reply.finishedAtNs = monotonicNs();
-        QMutexLocker lock(&mailbox->mutex);
-        if (BackgroundProgramBuilder *receiver = mailbox->receiver)
-            QMetaObject::invokeMethod(receiver, [receiver, reply, generation] { receiver->deliver(reply, generation); },
-                                      Qt::QueuedConnection);
-        else
-            worker->release(reply.program); // stopping: nobody will adopt it
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker,
+        [mailbox = m_mailbox, worker, request, queuedAt, generation = m_generation] {
+            ProgramBuildReply reply = worker->build(request);
+            reply.queuedAtNs = queuedAt;
+            reply.finishedAtNs = monotonicNs();
+            QMutexLocker lock(&mailbox->mutex);
+            if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+                QMetaObject::invokeMethod(
+                    receiver, [receiver, reply, generation] { receiver->deliver(reply, generation); },
+                    Qt::QueuedConnection);
+            else
+                worker->release(reply.program); // stopping: nobody will adopt it
+        },
+        Qt::QueuedConnection);
     return request.serial;
 }
 
@@ -168,14 +177,18 @@ void BackgroundProgramBuilder::warmInLentContext(const LentContext &loan, GLuint
     ProgramBuildWorker *worker = m_worker;
     QOffscreenSurface *surface = m_loanSurface.get();
     QThread *owner = thread();
-    QMetaObject::invokeMethod(worker, [mailbox = m_mailbox, worker, loan, surface, program, owner, done] {
-        QString error;
-        const qint64 ns = worker->warmInLentContext(loan, surface, program, owner, &error);
-        loan.returned->release(); // the context is back on the owner's thread
-        QMutexLocker lock(&mailbox->mutex);
-        if (BackgroundProgramBuilder *receiver = mailbox->receiver)
-            QMetaObject::invokeMethod(receiver, [done, ns, error] { done(ns, error); }, Qt::QueuedConnection);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker,
+        [mailbox = m_mailbox, worker, loan, surface, program, owner, done] {
+            QString error;
+            const qint64 ns = worker->warmInLentContext(loan, surface, program, owner, &error);
+            loan.returned->release(); // the context is back on the owner's thread
+            QMutexLocker lock(&mailbox->mutex);
+            if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+                QMetaObject::invokeMethod(
+                    receiver, [done, ns, error] { done(ns, error); }, Qt::QueuedConnection);
+        },
+        Qt::QueuedConnection);
 }
 
 void BackgroundProgramBuilder::release(GLuint program)
@@ -183,7 +196,8 @@ void BackgroundProgramBuilder::release(GLuint program)
     if (!m_worker || !program)
         return;
     ProgramBuildWorker *worker = m_worker;
-    QMetaObject::invokeMethod(worker, [worker, program] { worker->release(program); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker, [worker, program] { worker->release(program); }, Qt::QueuedConnection);
 }
 
 } // namespace phonglab

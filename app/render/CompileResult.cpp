@@ -6,8 +6,7 @@ namespace phonglab {
 
 bool CompileResult::hasErrors() const
 {
-    return std::any_of(diagnostics.begin(), diagnostics.end(),
-                       [](const ShaderDiagnostic &d) { return d.isError(); });
+    return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ShaderDiagnostic &d) { return d.isError(); });
 }
 
 QStringList CompileResult::formatted() const

@@ -13,8 +13,8 @@ struct CompileResult {
     std::vector<ShaderDiagnostic> diagnostics;
 
     bool hasErrors() const;
-    QStringList formatted() const;      // one "FILE:LINE:COL: error: MSG" per entry
-    QString errorSummary() const;       // formatted() joined by newlines
+    QStringList formatted() const; // one "FILE:LINE:COL: error: MSG" per entry
+    QString errorSummary() const;  // formatted() joined by newlines
 };
 
 } // namespace phonglab

@@ -15,9 +15,9 @@ namespace phonglab {
 // driver says the frame is done. Where the driver is a real GPU the timer
 // query is read as well.
 struct FrameTiming {
-    double wallMedianMs = 0;  // render() + glFinish()
+    double wallMedianMs = 0; // render() + glFinish()
     double wallP90Ms = 0;
-    double cpuSubmitMedianMs = 0; // until render() returned: CPU-side submission
+    double cpuSubmitMedianMs = 0;                                  // until render() returned: CPU-side submission
     double gpuMedianMs = std::numeric_limits<double>::quiet_NaN(); // GL_TIME_ELAPSED; NaN when not trusted
     int frames = 0;
 };

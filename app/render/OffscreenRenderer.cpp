@@ -31,7 +31,8 @@ bool OffscreenRenderer::create(QString *error)
     if (got.version() < qMakePair(3, 3)) {
         if (error)
             *error = QStringLiteral("OpenGL 3.3 is required, the driver offers %1.%2")
-                         .arg(got.majorVersion()).arg(got.minorVersion());
+                         .arg(got.majorVersion())
+                         .arg(got.minorVersion());
         m_context.reset();
         return false;
     }
@@ -44,8 +45,8 @@ bool OffscreenRenderer::create(QString *error)
         destroy();
         return false;
     }
-    m_rendererName = QString::fromLatin1(
-        reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
+    m_rendererName =
+        QString::fromLatin1(reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
     return m_renderer.initialize(error);
 }
 
@@ -152,8 +153,7 @@ FrameTiming OffscreenRenderer::timeFrames(const QSize &size, int warmup, int fra
 std::vector<double> OffscreenRenderer::timerQueryFrames(const QSize &size, int frames)
 {
     using GetQueryObjectui64v = void (*)(GLuint, GLenum, GLuint64 *);
-    auto getResult = reinterpret_cast<GetQueryObjectui64v>(
-        m_context->getProcAddress("glGetQueryObjectui64v"));
+    auto getResult = reinterpret_cast<GetQueryObjectui64v>(m_context->getProcAddress("glGetQueryObjectui64v"));
     QOpenGLExtraFunctions *gl = m_context->extraFunctions();
     std::vector<double> ms;
     if (!getResult)

@@ -14,8 +14,8 @@ struct ProgramBuildRequest {
     quint64 serial = 0;
     ShaderSource vertex;
     ShaderSource fragment;
-    bool warm = true;     // run one draw before handing the program over
-    int warmSamples = 0;  // ... into a framebuffer with this many samples
+    bool warm = true;    // run one draw before handing the program over
+    int warmSamples = 0; // ... into a framebuffer with this many samples
 };
 
 // A finished build. `program` (0 on failure) lives in the share group and is
@@ -49,8 +49,8 @@ public:
     // context back to `owner` and makes the worker's own context current
     // again. The nanoseconds it took, or -1 with a reason when the lent
     // context could not be used.
-    qint64 warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program,
-                             QThread *owner, QString *error);
+    qint64 warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program, QThread *owner,
+                             QString *error);
     // Frees the worker's GL objects, releases the context and hands it back
     // to `owner` (the GUI thread) so that it can be deleted there.
     void shutdown(QThread *owner);

@@ -17,7 +17,7 @@ void ensureError(CompileResult &result, ShaderStage stage, const QString &file, 
     d.stage = stage;
     d.file = file;
     d.message = log.trimmed().isEmpty() ? QStringLiteral("%1 failed without a message from the driver")
-                                               .arg(stage == ShaderStage::Link ? "linking" : "compiling")
+                                              .arg(stage == ShaderStage::Link ? "linking" : "compiling")
                                         : log.trimmed();
     result.diagnostics.push_back(d);
 }
@@ -89,8 +89,7 @@ GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, Compi
     return program;
 }
 
-ProgramBuild ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                                   const QStringList &defines)
+ProgramBuild ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
@@ -103,8 +102,10 @@ ProgramBuild ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
     const GLuint fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.result);
     out.compileNs = timer.nsecsElapsed();
     if (!vs || !fs) {
-        if (vs) glDeleteShader(vs);
-        if (fs) glDeleteShader(fs);
+        if (vs)
+            glDeleteShader(vs);
+        if (fs)
+            glDeleteShader(fs);
         return out;
     }
     timer.restart();

@@ -26,12 +26,10 @@ struct ProgramBuild {
 class ProgramBuilder : protected QOpenGLExtraFunctions
 {
 public:
-    ProgramBuild build(const ShaderSource &vertex, const ShaderSource &fragment,
-                       const QStringList &defines = {});
+    ProgramBuild build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
 
 private:
-    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                        CompileResult &result);
+    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines, CompileResult &result);
     GLuint link(GLuint vertexShader, GLuint fragmentShader, const QString &linkName, CompileResult &result);
     QString infoLog(GLuint object, bool isProgram);
 

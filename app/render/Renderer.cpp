@@ -182,7 +182,8 @@ void Renderer::render(const QSize &pixelSize)
     const double aspect = double(pixelSize.width()) / double(pixelSize.height());
     const glm::dmat4 view = m_scene.camera.viewMatrix();
     m_depthRange = fitDepthRange(m_scene.camera, boundingSpheres());
-    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect, m_depthRange.nearPlane, m_depthRange.farPlane);
+    const glm::dmat4 projection =
+        m_scene.camera.projectionMatrix(aspect, m_depthRange.nearPlane, m_depthRange.farPlane);
     drawObjects(view, projection);
     if (m_options.drawLightMarkers)
         drawLightMarkers(view, projection);
@@ -252,8 +253,8 @@ std::vector<BoundingSphere> Renderer::boundingSpheres() const
         if (!m_meshes.contains(key))
             continue;
         const MeshStats &stats = m_meshInfo.value(key).stats;
-        spheres.push_back(boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax),
-                                         object.transform.matrix()));
+        spheres.push_back(
+            boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), object.transform.matrix()));
     }
     if (m_options.drawLightMarkers)
         for (const PointLight &light : m_scene.lights)
@@ -267,8 +268,8 @@ void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projec
     for (int i = 0; i < int(m_scene.lights.size()); ++i) {
         const PointLight &light = m_scene.lights[i];
         const double r = i == m_options.selectedLight ? 2.0 * kMarkerRadius : kMarkerRadius;
-        const glm::dmat4 model = glm::dmat4(r, 0, 0, 0, 0, r, 0, 0, 0, 0, r, 0,
-                                            light.position.x, light.position.y, light.position.z, 1);
+        const glm::dmat4 model =
+            glm::dmat4(r, 0, 0, 0, 0, r, 0, 0, 0, 0, r, 0, light.position.x, light.position.y, light.position.z, 1);
         // Show the light's hue even when its intensity is above 1 or very dim.
         const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});
         m_markerProgram.setUniform("mvpMatrix", glm::mat4(projection * view * model));

@@ -38,28 +38,30 @@ const std::vector<LogPattern> &logPatterns()
     using RE = QRegularExpression;
     static const std::vector<LogPattern> patterns = {
         // Mesa: 0:12(5): error: message
-        {RE(QStringLiteral(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:\s*(.*)$)"),
-            RE::CaseInsensitiveOption), 1, 2, 3, 4},
+        {RE(QStringLiteral(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 1,
+         2, 3, 4},
         // NVIDIA: 0(12) : error C0000: message
         {RE(QStringLiteral(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s*(?:[A-Z]\d+)?\s*:\s*(.*)$)"),
-            RE::CaseInsensitiveOption), 1, 0, 2, 3},
+            RE::CaseInsensitiveOption),
+         1, 0, 2, 3},
         // AMD / ANGLE / glslang: ERROR: 0:12: message
-        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*\d+:(\d+)\s*:\s*(.*)$)"),
-            RE::CaseInsensitiveOption), 2, 0, 1, 3},
+        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*\d+:(\d+)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 2, 0, 1,
+         3},
         // Unlocated (linker): error: message
         {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 0, 0, 1, 2},
     };
     return patterns;
 }
 
-ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m,
-                           ShaderStage stage, const QString &file, int prologueLines)
+ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m, ShaderStage stage,
+                           const QString &file, int prologueLines)
 {
     ShaderDiagnostic d;
     d.stage = stage;
     d.file = file;
     d.severity = m.captured(p.severity).compare(QLatin1String("warning"), Qt::CaseInsensitive) == 0
-        ? ShaderDiagnostic::Severity::Warning : ShaderDiagnostic::Severity::Error;
+        ? ShaderDiagnostic::Severity::Warning
+        : ShaderDiagnostic::Severity::Error;
     d.message = m.captured(p.message).trimmed();
     if (p.line) {
         const int driverLine = m.captured(p.line).toInt();
@@ -72,8 +74,8 @@ ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m
 
 } // namespace
 
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage,
-                                             const QString &file, int prologueLines)
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage, const QString &file,
+                                             int prologueLines)
 {
     std::vector<ShaderDiagnostic> out;
     const QStringList lines = log.split(QLatin1Char('\n'), Qt::SkipEmptyParts);

@@ -4,17 +4,24 @@
 
 namespace phonglab {
 
-enum class ShaderStage { Vertex, Fragment, Link };
+enum class ShaderStage {
+    Vertex,
+    Fragment,
+    Link
+};
 
 // One compiler or linker message, located in the user's file: `line` and
 // `column` are 1-based in the text the user wrote (0 = unknown), whatever
 // the driver saw after any injected prologue.
 struct ShaderDiagnostic {
-    enum class Severity { Error, Warning };
+    enum class Severity {
+        Error,
+        Warning
+    };
 
     ShaderStage stage = ShaderStage::Fragment;
     Severity severity = Severity::Error;
-    QString file;   // path or label of the user's source
+    QString file; // path or label of the user's source
     int line = 0;
     int column = 0;
     QString message;
@@ -29,8 +36,8 @@ struct ShaderDiagnostic {
 // "ERROR: 0:12: ..." form of AMD/ANGLE. `prologueLines` is the number of lines
 // the driver saw before the user's line 1 when no #line directive maps them
 // back; lines that fall inside the prologue are reported as line 0.
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage,
-                                             const QString &file, int prologueLines = 0);
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage, const QString &file,
+                                             int prologueLines = 0);
 
 // Mesa reports columns in its preprocessor's output, where every run of
 // whitespace has become a single space. Maps such columns back onto the

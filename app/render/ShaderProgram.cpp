@@ -3,8 +3,8 @@
 #include "ProgramBuilder.h"
 #include "UniformIntrospection.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
 #include <optional>
 
 namespace phonglab {
@@ -29,26 +29,46 @@ std::optional<UniformLayout> layoutOf(GLenum type)
     case GL_FLOAT_MAT2: return UniformLayout{K::Float, 4};
     case GL_FLOAT_MAT3: return UniformLayout{K::Float, 9};
     case GL_FLOAT_MAT4: return UniformLayout{K::Float, 16};
-    case GL_FLOAT_MAT2x3: case GL_FLOAT_MAT3x2: return UniformLayout{K::Float, 6};
-    case GL_FLOAT_MAT2x4: case GL_FLOAT_MAT4x2: return UniformLayout{K::Float, 8};
-    case GL_FLOAT_MAT3x4: case GL_FLOAT_MAT4x3: return UniformLayout{K::Float, 12};
-    case GL_INT: case GL_BOOL: return UniformLayout{K::Int, 1};
-    case GL_INT_VEC2: case GL_BOOL_VEC2: return UniformLayout{K::Int, 2};
-    case GL_INT_VEC3: case GL_BOOL_VEC3: return UniformLayout{K::Int, 3};
-    case GL_INT_VEC4: case GL_BOOL_VEC4: return UniformLayout{K::Int, 4};
+    case GL_FLOAT_MAT2x3:
+    case GL_FLOAT_MAT3x2: return UniformLayout{K::Float, 6};
+    case GL_FLOAT_MAT2x4:
+    case GL_FLOAT_MAT4x2: return UniformLayout{K::Float, 8};
+    case GL_FLOAT_MAT3x4:
+    case GL_FLOAT_MAT4x3: return UniformLayout{K::Float, 12};
+    case GL_INT:
+    case GL_BOOL: return UniformLayout{K::Int, 1};
+    case GL_INT_VEC2:
+    case GL_BOOL_VEC2: return UniformLayout{K::Int, 2};
+    case GL_INT_VEC3:
+    case GL_BOOL_VEC3: return UniformLayout{K::Int, 3};
+    case GL_INT_VEC4:
+    case GL_BOOL_VEC4: return UniformLayout{K::Int, 4};
     case GL_UNSIGNED_INT: return UniformLayout{K::UInt, 1};
     case GL_UNSIGNED_INT_VEC2: return UniformLayout{K::UInt, 2};
     case GL_UNSIGNED_INT_VEC3: return UniformLayout{K::UInt, 3};
     case GL_UNSIGNED_INT_VEC4: return UniformLayout{K::UInt, 4};
     // Samplers hold a texture unit, set with glUniform1i.
-    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
-    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_CUBE_SHADOW:
-    case GL_SAMPLER_1D_ARRAY: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_2D_ARRAY_SHADOW:
-    case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_RECT:
-    case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D: case GL_INT_SAMPLER_CUBE: case GL_INT_SAMPLER_2D_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_CUBE:
-    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
-        return UniformLayout{K::Int, 1};
+    case GL_SAMPLER_1D:
+    case GL_SAMPLER_2D:
+    case GL_SAMPLER_3D:
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_SHADOW:
+    case GL_SAMPLER_2D_SHADOW:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_SAMPLER_1D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_SAMPLER_BUFFER:
+    case GL_SAMPLER_2D_RECT:
+    case GL_INT_SAMPLER_2D:
+    case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_CUBE:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY: return UniformLayout{K::Int, 1};
     default: return std::nullopt;
     }
 }
@@ -68,8 +88,7 @@ void ShaderProgram::ensureInitialized()
     }
 }
 
-CompileResult ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                                   const QStringList &defines)
+CompileResult ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
 {
     ensureInitialized();
     ProgramBuild built = ProgramBuilder().build(vertex, fragment, defines);
@@ -139,16 +158,22 @@ void ShaderProgram::writeValue(GLint location, const UniformValue &v)
     const GLuint *u = v.uints.data();
     switch (v.kind) {
     case UniformValue::Kind::Float:
-        v.components == 1 ? glUniform1fv(location, 1, f) : v.components == 2 ? glUniform2fv(location, 1, f)
-            : v.components == 3 ? glUniform3fv(location, 1, f) : glUniform4fv(location, 1, f);
+        v.components == 1       ? glUniform1fv(location, 1, f)
+            : v.components == 2 ? glUniform2fv(location, 1, f)
+            : v.components == 3 ? glUniform3fv(location, 1, f)
+                                : glUniform4fv(location, 1, f);
         break;
     case UniformValue::Kind::Int:
-        v.components == 1 ? glUniform1iv(location, 1, i) : v.components == 2 ? glUniform2iv(location, 1, i)
-            : v.components == 3 ? glUniform3iv(location, 1, i) : glUniform4iv(location, 1, i);
+        v.components == 1       ? glUniform1iv(location, 1, i)
+            : v.components == 2 ? glUniform2iv(location, 1, i)
+            : v.components == 3 ? glUniform3iv(location, 1, i)
+                                : glUniform4iv(location, 1, i);
         break;
     case UniformValue::Kind::UInt:
-        v.components == 1 ? glUniform1uiv(location, 1, u) : v.components == 2 ? glUniform2uiv(location, 1, u)
-            : v.components == 3 ? glUniform3uiv(location, 1, u) : glUniform4uiv(location, 1, u);
+        v.components == 1       ? glUniform1uiv(location, 1, u)
+            : v.components == 2 ? glUniform2uiv(location, 1, u)
+            : v.components == 3 ? glUniform3uiv(location, 1, u)
+                                : glUniform4uiv(location, 1, u);
         break;
     }
 }

@@ -23,8 +23,7 @@ public:
 
     // Builds a new program. On failure the previous program (if any) stays
     // in place and usable; the result carries the diagnostics.
-    CompileResult build(const ShaderSource &vertex, const ShaderSource &fragment,
-                        const QStringList &defines = {});
+    CompileResult build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
     // Takes ownership of a program linked elsewhere (ProgramBuilder, possibly
     // on another context of the same share group) and frees the previous one.
     void adopt(GLuint program);

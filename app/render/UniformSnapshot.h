@@ -10,10 +10,14 @@ namespace phonglab {
 // array element ("gain", "lights[2]"). Values are kept as the 32-bit words
 // glGetUniform{f,i,ui}v returned, which is how glUniform* sets them back.
 struct UniformValue {
-    enum class Kind { Float, Int, UInt };
+    enum class Kind {
+        Float,
+        Int,
+        UInt
+    };
 
-    QByteArray name;   // as glGetUniformLocation takes it
-    GLenum type = 0;   // GL_FLOAT_VEC3, GL_SAMPLER_2D, ...
+    QByteArray name; // as glGetUniformLocation takes it
+    GLenum type = 0; // GL_FLOAT_VEC3, GL_SAMPLER_2D, ...
     Kind kind = Kind::Float;
     int components = 0; // 1..16
     std::array<GLfloat, 16> floats{};

@@ -79,13 +79,20 @@ bool BenchProcess::start(const Scene &scene, const QSize &size, const ErrorBudge
     QStringList details;
     for (double d : detailLevels())
         details << QString::number(d, 'g', 17);
-    const QStringList arguments{QStringLiteral("bench"), QStringLiteral("--scene"), scenePath,
-                                QStringLiteral("--lights"), QStringLiteral("scene"),
-                                QStringLiteral("--details"), details.join(QLatin1Char(',')),
-                                QStringLiteral("--size"),
-                                QStringLiteral("%1x%2").arg(std::max(size.width(), 16)).arg(std::max(size.height(), 16)),
-                                QStringLiteral("--budget"), budgetArgument(budget),
-                                QStringLiteral("--out"), m_dir->filePath(QStringLiteral("out"))};
+    const QStringList arguments{
+        QStringLiteral("bench"),
+        QStringLiteral("--scene"),
+        scenePath,
+        QStringLiteral("--lights"),
+        QStringLiteral("scene"),
+        QStringLiteral("--details"),
+        details.join(QLatin1Char(',')),
+        QStringLiteral("--size"),
+        QStringLiteral("%1x%2").arg(std::max(size.width(), 16)).arg(std::max(size.height(), 16)),
+        QStringLiteral("--budget"),
+        budgetArgument(budget),
+        QStringLiteral("--out"),
+        m_dir->filePath(QStringLiteral("out"))};
     m_process = new QProcess(this);
     m_stderr.clear();
     m_lastErrorLine.clear();

@@ -58,8 +58,8 @@ void DiagnosticList::emitActivated(QListWidgetItem *item)
 {
     if (!item)
         return;
-    emit diagnosticActivated(static_cast<ShaderStage>(item->data(kStageRole).toInt()),
-                             item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
+    emit diagnosticActivated(static_cast<ShaderStage>(item->data(kStageRole).toInt()), item->data(kLineRole).toInt(),
+                             item->data(kColumnRole).toInt());
 }
 
 } // namespace phonglab

@@ -20,12 +20,14 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"tan", "genType angle", "Tangent; angle in radians."},
     {"asin", "genType x", "Arc sine in [-pi/2, pi/2]; undefined for |x| > 1."},
     {"acos", "genType x", "Arc cosine in [0, pi]; undefined for |x| > 1."},
-    {"atan", "genType y, genType x", "Arc tangent of y/x in [-pi, pi], using the signs for the quadrant; atan(y_over_x) also exists."},
+    {"atan", "genType y, genType x",
+     "Arc tangent of y/x in [-pi, pi], using the signs for the quadrant; atan(y_over_x) also exists."},
     {"sinh", "genType x", "Hyperbolic sine."},
     {"cosh", "genType x", "Hyperbolic cosine."},
     {"tanh", "genType x", "Hyperbolic tangent."},
     // Exponential
-    {"pow", "genType x, genType y", "x raised to y; undefined for x < 0, or x = 0 with y <= 0 (guard specular exponents)."},
+    {"pow", "genType x, genType y",
+     "x raised to y; undefined for x < 0, or x = 0 with y <= 0 (guard specular exponents)."},
     {"exp", "genType x", "e raised to x."},
     {"log", "genType x", "Natural logarithm; undefined for x <= 0."},
     {"exp2", "genType x", "2 raised to x."},
@@ -44,8 +46,10 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"mod", "genType x, genType y", "x - y * floor(x / y) (y may be a float)."},
     {"modf", "genType x, out genType i", "Fractional part of x; the integer part goes to i."},
     {"min", "genType x, genType y", "The smaller of x and y, per component (y may be a scalar)."},
-    {"max", "genType x, genType y", "The larger of x and y, per component; max(0.0, dot(N, L)) clamps back-facing light."},
-    {"clamp", "genType x, genType minVal, genType maxVal", "min(max(x, minVal), maxVal); undefined if minVal > maxVal."},
+    {"max", "genType x, genType y",
+     "The larger of x and y, per component; max(0.0, dot(N, L)) clamps back-facing light."},
+    {"clamp", "genType x, genType minVal, genType maxVal",
+     "min(max(x, minVal), maxVal); undefined if minVal > maxVal."},
     {"mix", "genType x, genType y, genType a", "Linear blend x*(1-a) + y*a; with a bvec it selects y where a is true."},
     {"step", "genType edge, genType x", "0.0 where x < edge, else 1.0."},
     {"smoothstep", "genType edge0, genType edge1, genType x", "Hermite ramp from 0 at edge0 to 1 at edge1."},
@@ -85,19 +89,22 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"not", "bvec x", "Component-wise logical complement."},
     // Integers
     {"bitfieldExtract", "genIType value, int offset, int bits", "Extracts bits [offset, offset + bits) of value."},
-    {"bitfieldInsert", "genIType base, genIType insert, int offset, int bits", "Inserts the low bits of insert into base."},
+    {"bitfieldInsert", "genIType base, genIType insert, int offset, int bits",
+     "Inserts the low bits of insert into base."},
     {"bitCount", "genIType value", "Number of one bits."},
     {"findLSB", "genIType value", "Index of the lowest one bit, -1 for zero."},
     {"findMSB", "genIType value", "Index of the highest one bit (sign-aware), -1 if none."},
     // Textures
-    {"texture", "gsampler sampler, vec P [, float bias]", "Samples the texture at coordinates P (the shadow forms compare against P's last component)."},
+    {"texture", "gsampler sampler, vec P [, float bias]",
+     "Samples the texture at coordinates P (the shadow forms compare against P's last component)."},
     {"textureLod", "gsampler sampler, vec P, float lod", "Samples mip level lod explicitly."},
     {"textureOffset", "gsampler sampler, vec P, ivec offset [, float bias]", "Samples with a constant texel offset."},
     {"textureProj", "gsampler sampler, vec P [, float bias]", "Samples at P.xy / P.w (projective texturing)."},
     {"textureGrad", "gsampler sampler, vec P, vec dPdx, vec dPdy", "Samples with explicit derivatives."},
     {"textureSize", "gsampler sampler, int lod", "Size of mip level lod in texels."},
     {"texelFetch", "gsampler sampler, ivec P, int lod", "Reads one texel by integer coordinates, no filtering."},
-    {"textureGather", "gsampler2D sampler, vec2 P [, int comp]", "The four texels bilinear filtering would use, one component each."},
+    {"textureGather", "gsampler2D sampler, vec2 P [, int comp]",
+     "The four texels bilinear filtering would use, one component each."},
     {"textureQueryLod", "gsampler sampler, vec P", "The mip level (x) and lambda (y) the sampler would use."},
     // Fragment processing
     {"dFdx", "genType p", "Derivative of p along window x (fragment shaders only)."},
@@ -105,7 +112,8 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"fwidth", "genType p", "abs(dFdx(p)) + abs(dFdy(p)); handy for anti-aliased edges."},
     {"interpolateAtCentroid", "genType interpolant", "The input interpolated at the pixel's covered centroid."},
     {"interpolateAtSample", "genType interpolant, int sample", "The input interpolated at a sample."},
-    {"interpolateAtOffset", "genType interpolant, vec2 offset", "The input interpolated at an offset from the pixel centre."},
+    {"interpolateAtOffset", "genType interpolant, vec2 offset",
+     "The input interpolated at an offset from the pixel centre."},
     // Geometry shaders
     {"EmitVertex", "", "Emits the current output values as a vertex (geometry shaders)."},
     {"EndPrimitive", "", "Ends the current output primitive (geometry shaders)."},
@@ -228,7 +236,8 @@ QStringList GlslApi::parseDeclaredNames(const QString &code)
     for (const auto &match : structNames.globalMatch(text))
         found.insert(match.captured(1));
     // A declaration is a type followed by a name; the user's structs are types too.
-    QString types = QStringLiteral(R"(void|bool|int|uint|float|double|[bdiu]?vec[234]|d?mat[234](?:x[234])?|[iu]?sampler\w+)");
+    QString types =
+        QStringLiteral(R"(void|bool|int|uint|float|double|[bdiu]?vec[234]|d?mat[234](?:x[234])?|[iu]?sampler\w+)");
     for (const QString &structName : std::as_const(found))
         types += QLatin1Char('|') + QRegularExpression::escape(structName);
     const QRegularExpression declarations(QStringLiteral(R"(\b(%1)\s*(?:\[[^\]]*\])?\s+([A-Za-z_]\w*))").arg(types));

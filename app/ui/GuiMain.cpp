@@ -71,9 +71,9 @@ void openRequestedFile(MainWindow &window, const QString &path)
 {
     QString error;
     if (!window.openFiles({path}, &error))
-        QMessageBox::warning(&window, QObject::tr("Cannot open"),
-                             QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
-                                 .arg(QDir::toNativeSeparators(path), error));
+        QMessageBox::warning(
+            &window, QObject::tr("Cannot open"),
+            QObject::tr("%1\n\n%2\n\nShowing the default scene instead.").arg(QDir::toNativeSeparators(path), error));
 }
 
 } // namespace
@@ -93,8 +93,8 @@ int runGui(int argc, char **argv)
     if (x11FallbackArmed) {
         qunsetenv("QT_QPA_PLATFORM"); // not for child processes
         if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
-            printError(QStringLiteral("cannot connect to the X display '%1' (DISPLAY)")
-                           .arg(qEnvironmentVariable("DISPLAY")));
+            printError(
+                QStringLiteral("cannot connect to the X display '%1' (DISPLAY)").arg(qEnvironmentVariable("DISPLAY")));
             return kExitFailure;
         }
     }

@@ -30,8 +30,8 @@ QPointF toScreen(const glm::dvec3 &ndc, const QSizeF &view)
 
 } // namespace
 
-int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const QSizeF &view,
-              const QPointF &point, double radiusPx)
+int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const QSizeF &view, const QPointF &point,
+              double radiusPx)
 {
     const glm::dmat4 vp = viewProjection(camera, view);
     int best = -1;
@@ -50,8 +50,7 @@ int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const
     return best;
 }
 
-glm::dvec3 moveInViewPlane(const glm::dvec3 &position, const Camera &camera, const QSizeF &view,
-                           const QPointF &point)
+glm::dvec3 moveInViewPlane(const glm::dvec3 &position, const Camera &camera, const QSizeF &view, const QPointF &point)
 {
     const glm::dmat4 vp = viewProjection(camera, view);
     glm::dvec3 ndc;

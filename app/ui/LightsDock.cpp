@@ -170,8 +170,8 @@ bool LightsDock::setLightEnabled(int index, bool on)
 
 int LightsDock::switchedOffCount() const
 {
-    return int(std::count_if(m_scene.lights.begin(), m_scene.lights.end(),
-                             [](const PointLight &l) { return !l.enabled; }));
+    return int(
+        std::count_if(m_scene.lights.begin(), m_scene.lights.end(), [](const PointLight &l) { return !l.enabled; }));
 }
 
 bool LightsDock::renameLight(int index, const QString &name)

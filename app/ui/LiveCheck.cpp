@@ -168,8 +168,8 @@ QSize LiveCheck::checkSize() const
 
 bool LiveCheck::isCurrent(const CheckResult &result) const
 {
-    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy()
-        && result.reference && result.yours.size() == checkSize();
+    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy() && result.reference
+        && result.yours.size() == checkSize();
 }
 
 void LiveCheck::show(const CheckResult &result)
@@ -209,8 +209,8 @@ void LiveCheck::showInspected(QPointF fraction)
     const std::optional<PixelTerms> terms =
         pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y());
     if (!terms) {
-        m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
-                                     .arg(pixel.x()).arg(pixel.y()));
+        m_inspector->showMessage(
+            tr("Pixel (%1, %2) shows the background: no surface, no equation.").arg(pixel.x()).arg(pixel.y()));
         m_overlay->setArrows(std::nullopt, {});
         return;
     }

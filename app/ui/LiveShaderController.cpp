@@ -159,7 +159,9 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
     // are built again over the scene's program, and the scene follows them.
     m_viewport->setShading(m_shading);
     emit statusMessage(tr("Kept your unsaved shader edits; the scene's %1 shading was not loaded (choose it "
-                          "in the Shaders dock to switch)").arg(shadingName(method)), kStatusTimeoutMs);
+                          "in the Shaders dock to switch)")
+                           .arg(shadingName(method)),
+                       kStatusTimeoutMs);
     if (!m_holdAutoBuild)
         requestBuild(true);
 }
@@ -254,12 +256,13 @@ void LiveShaderController::startWorker()
     QString error;
     if (!m_builder->start(m_viewport->context(), &error)) {
         qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(error));
-        emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1")
-                               .arg(error), 0);
+        emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1").arg(error),
+                           0);
         return;
     }
     qInfo("phonglab: shaders build on a worker thread with a shared context; "
-          "GL_KHR_parallel_shader_compile: %s", m_builder->hasParallelShaderCompile() ? "available" : "not available");
+          "GL_KHR_parallel_shader_compile: %s",
+          m_builder->hasParallelShaderCompile() ? "available" : "not available");
 }
 
 void LiveShaderController::requestBuild(bool force)
@@ -355,22 +358,22 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramB
         *adopted = true;
     };
     m_loanActive = true;
-    m_builder->warmInLentContext(*loan, reply.program, [this, hash, reply, adopted](qint64 warmNs,
-                                                                                  const QString &error) {
-        m_loanActive = false;
-        m_hangNote->stop();
-        m_viewport->endLoan();
-        if (!*adopted)
-            m_viewport->adoptProgram(reply.program);
-        ProgramBuildReply warmed = reply;
-        if (warmNs >= 0) {
-            warmed.warmNs = warmNs;
-        } else {
-            qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(error));
-            setWarmUp(WarmUp::Off);
-        }
-        announce(hash, warmed);
-    });
+    m_builder->warmInLentContext(
+        *loan, reply.program, [this, hash, reply, adopted](qint64 warmNs, const QString &error) {
+            m_loanActive = false;
+            m_hangNote->stop();
+            m_viewport->endLoan();
+            if (!*adopted)
+                m_viewport->adoptProgram(reply.program);
+            ProgramBuildReply warmed = reply;
+            if (warmNs >= 0) {
+                warmed.warmNs = warmNs;
+            } else {
+                qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(error));
+                setWarmUp(WarmUp::Off);
+            }
+            announce(hash, warmed);
+        });
     return true;
 }
 

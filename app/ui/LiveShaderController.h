@@ -112,12 +112,11 @@ private:
     QByteArray m_lastBuiltHash;   // last text sent to the compiler
     QByteArray m_appliedHash;     // text of the program the viewport draws with
     ProgramBuildReply m_lastApplied;
-    quint64 m_inFlight = 0;       // serial of the build on the worker, 0 if none
+    quint64 m_inFlight = 0; // serial of the build on the worker, 0 if none
     QByteArray m_inFlightHash;
-    bool m_pending = false;       // another build was asked for meanwhile
+    bool m_pending = false; // another build was asked for meanwhile
     bool m_pendingForce = false;
-    QElapsedTimer m_buildClock;   // from dispatch to reply, for the status
-
+    QElapsedTimer m_buildClock; // from dispatch to reply, for the status
 };
 
 } // namespace phonglab

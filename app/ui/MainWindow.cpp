@@ -330,14 +330,26 @@ namespace {
 bool isPlainNumberType(GLenum type)
 {
     switch (type) {
-    case GL_FLOAT: case GL_FLOAT_VEC2: case GL_FLOAT_VEC3: case GL_FLOAT_VEC4:
-    case GL_INT: case GL_INT_VEC2: case GL_INT_VEC3: case GL_INT_VEC4:
-    case GL_UNSIGNED_INT: case GL_UNSIGNED_INT_VEC2: case GL_UNSIGNED_INT_VEC3: case GL_UNSIGNED_INT_VEC4:
-    case GL_BOOL: case GL_BOOL_VEC2: case GL_BOOL_VEC3: case GL_BOOL_VEC4:
-    case GL_FLOAT_MAT2: case GL_FLOAT_MAT3: case GL_FLOAT_MAT4:
-        return true;
-    default:
-        return false;
+    case GL_FLOAT:
+    case GL_FLOAT_VEC2:
+    case GL_FLOAT_VEC3:
+    case GL_FLOAT_VEC4:
+    case GL_INT:
+    case GL_INT_VEC2:
+    case GL_INT_VEC3:
+    case GL_INT_VEC4:
+    case GL_UNSIGNED_INT:
+    case GL_UNSIGNED_INT_VEC2:
+    case GL_UNSIGNED_INT_VEC3:
+    case GL_UNSIGNED_INT_VEC4:
+    case GL_BOOL:
+    case GL_BOOL_VEC2:
+    case GL_BOOL_VEC3:
+    case GL_BOOL_VEC4:
+    case GL_FLOAT_MAT2:
+    case GL_FLOAT_MAT3:
+    case GL_FLOAT_MAT4: return true;
+    default: return false;
     }
 }
 
@@ -360,9 +372,9 @@ std::map<QString, std::vector<double>> MainWindow::userUniformValues()
             continue;
         std::vector<double> numbers;
         for (int i = 0; i < v.components; ++i)
-            numbers.push_back(v.kind == UniformValue::Kind::Float ? double(v.floats[i])
-                              : v.kind == UniformValue::Kind::Int ? double(v.ints[i])
-                                                                   : double(v.uints[i]));
+            numbers.push_back(v.kind == UniformValue::Kind::Float     ? double(v.floats[i])
+                                  : v.kind == UniformValue::Kind::Int ? double(v.ints[i])
+                                                                      : double(v.uints[i]));
         values[name] = std::move(numbers);
     }
     return values;
@@ -489,8 +501,8 @@ bool MainWindow::startSceneLoad(const QString &path, QString *error)
         setScenePath(path);
         openSceneShaders(scene);
         m_recentFiles->add(path);
-        const QString message = warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName())
-                                                   : warnings.join(QStringLiteral("; "));
+        const QString message =
+            warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName()) : warnings.join(QStringLiteral("; "));
         statusBar()->showMessage(message, kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
@@ -507,9 +519,9 @@ void MainWindow::changeNormals(int objectIndex, const NormalOptions &options)
         const Scene scene = m_viewport->currentScene();
         const SceneObject &object = scene.objects[objectIndex];
         const MeshStats stats = m_viewport->meshInfo().value(meshKey(scene, object)).stats;
-        statusBar()->showMessage(tr("Normals of %1: %2")
-                                     .arg(QFileInfo(object.mesh).fileName(), normalsDescription(stats, false)),
-                                 kWarningTimeoutMs);
+        statusBar()->showMessage(
+            tr("Normals of %1: %2").arg(QFileInfo(object.mesh).fileName(), normalsDescription(stats, false)),
+            kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
 }
@@ -650,13 +662,16 @@ void MainWindow::chooseAndExportImage()
 {
     const QSize shown = m_viewport->size() * m_viewport->devicePixelRatioF();
     bool ok = false;
-    const int width = QInputDialog::getInt(this, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1, 16384, 1, &ok);
+    const int width =
+        QInputDialog::getInt(this, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1, 16384, 1, &ok);
     if (!ok)
         return;
-    const int height = QInputDialog::getInt(this, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1, 16384, 1, &ok);
+    const int height =
+        QInputDialog::getInt(this, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1, 16384, 1, &ok);
     if (!ok)
         return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     QString error;

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/ShadingMethod.h"
 #include "core/NormalOptions.h"
+#include "core/ShadingMethod.h"
 
 #include <QMainWindow>
 

@@ -22,7 +22,7 @@ namespace {
 constexpr double kMaxCoefficient = 10.0; // beyond this a coefficient is a typo
 constexpr double kMinShininess = 0.01;   // the scene format needs n > 0
 constexpr double kMaxShininess = 4096.0;
-constexpr int kSliderMax = 512;          // the slider covers the useful part
+constexpr int kSliderMax = 512; // the slider covers the useful part
 
 } // namespace
 
@@ -168,7 +168,8 @@ void MaterialPanel::saveAsPreset(const QString &name)
 void MaterialPanel::askPresetName()
 {
     bool ok = false;
-    const QString name = QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"), QLineEdit::Normal, {}, &ok);
+    const QString name =
+        QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"), QLineEdit::Normal, {}, &ok);
     if (ok)
         saveAsPreset(name);
 }

@@ -17,16 +17,11 @@ constexpr int kMaxCreaseDeg = 180;
 QString methodToolTip(NormalMethod method)
 {
     switch (method) {
-    case NormalMethod::Auto:
-        return QObject::tr("The file's normals; computed angle-weighted when it has none");
-    case NormalMethod::Flat:
-        return QObject::tr("Each face's own normal at all its corners (faceted)");
-    case NormalMethod::Average:
-        return QObject::tr("Unweighted mean of the normals of the faces around a vertex");
-    case NormalMethod::AreaWeighted:
-        return QObject::tr("Face normals weighted by face area");
-    case NormalMethod::AngleWeighted:
-        return QObject::tr("Face normals weighted by the face's angle at the vertex");
+    case NormalMethod::Auto: return QObject::tr("The file's normals; computed angle-weighted when it has none");
+    case NormalMethod::Flat: return QObject::tr("Each face's own normal at all its corners (faceted)");
+    case NormalMethod::Average: return QObject::tr("Unweighted mean of the normals of the faces around a vertex");
+    case NormalMethod::AreaWeighted: return QObject::tr("Face normals weighted by face area");
+    case NormalMethod::AngleWeighted: return QObject::tr("Face normals weighted by the face's angle at the vertex");
     }
     return {};
 }

@@ -102,9 +102,9 @@ void ObjectPanel::push(TransformField which, const glm::dvec3 &after)
         return;
     const Transform before = m_scene.objects.at(index).transform;
     Transform changed = before;
-    (which == TransformField::Translate ? changed.translate
-     : which == TransformField::Rotate  ? changed.rotateDeg
-                                        : changed.scale) = after;
+    (which == TransformField::Translate    ? changed.translate
+         : which == TransformField::Rotate ? changed.rotateDeg
+                                           : changed.scale) = after;
     m_stack->push(new SetTransformCommand(m_access, index, before, changed, which));
 }
 

@@ -178,7 +178,7 @@ void PerformanceDock::measurementFinished(const std::vector<BenchRow> &rows, con
     m_fit = {};
     if (!error.isEmpty()) {
         m_report->setText(error == QLatin1String("cancelled") ? tr("Measurement cancelled.")
-                                                             : tr("Measurement failed: %1").arg(error));
+                                                              : tr("Measurement failed: %1").arg(error));
         emit measured();
         return;
     }
@@ -237,8 +237,8 @@ void PerformanceDock::showChart()
 void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
 {
     const QLocale locale;
-    m_frameLabel->setText(tr("Frame: %1 ms · %2 triangles").arg(locale.toString(milliseconds, 'f', 2),
-                                                                  locale.toString(triangles)));
+    m_frameLabel->setText(
+        tr("Frame: %1 ms · %2 triangles").arg(locale.toString(milliseconds, 'f', 2), locale.toString(triangles)));
 }
 
 void PerformanceDock::setRunning(bool running)

@@ -43,7 +43,7 @@ public:
     bool isMeasuring() const;
 
 public slots:
-    void measure();    // measure only: chart, no change to the scene
+    void measure();     // measure only: chart, no change to the scene
     void fitToBudget(); // measure, then apply the cheapest model within budget
     void restoreFullDetail();
     void cancel();
@@ -51,8 +51,8 @@ public slots:
 signals:
     // Show the scene with every object at `detail` and `method` shading.
     void applyModelRequested(phonglab::ShadingMethod method, double detail);
-    void measured();    // rows() are new (or the run failed: rows() empty)
-    void fitApplied();  // the model was handed to applyModelRequested
+    void measured();   // rows() are new (or the run failed: rows() empty)
+    void fitApplied(); // the model was handed to applyModelRequested
 
 private:
     void setBudgetKind(int index);

@@ -55,8 +55,12 @@ void PixelInspectorDock::showPixel(const PixelTerms &terms, QColor yours, QColor
     m_yours->setText(swatch(tr("yours"), yours));
     m_exact->setText(swatch(tr("exact"), exact));
     m_terms->setPlainText(QStringLiteral("yours    (%1, %2, %3)\nexact    (%4, %5, %6)\n")
-                              .arg(yours.red()).arg(yours.green()).arg(yours.blue())
-                              .arg(exact.red()).arg(exact.green()).arg(exact.blue())
+                              .arg(yours.red())
+                              .arg(yours.green())
+                              .arg(yours.blue())
+                              .arg(exact.red())
+                              .arg(exact.green())
+                              .arg(exact.blue())
                           + terms.toText());
     m_copy->setEnabled(true);
 }

@@ -64,7 +64,8 @@ void RecentFiles::fillMenu()
         const QString text = tr("&%1 %2").arg((i + 1) % 10).arg(QFileInfo(path).fileName());
         QAction *action = m_menu->addAction(text);
         // Queued: choosing rebuilds this menu, which deletes the action.
-        connect(action, &QAction::triggered, this, [this, path] { choose(path); }, Qt::QueuedConnection);
+        connect(
+            action, &QAction::triggered, this, [this, path] { choose(path); }, Qt::QueuedConnection);
         action->setToolTip(QDir::toNativeSeparators(path));
         action->setStatusTip(QDir::toNativeSeparators(path));
     }

@@ -37,10 +37,9 @@ void SceneCommand::change(const std::function<void(Scene &)> &edit) const
     m_access.write(scene);
 }
 
-SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before,
-                                 const PointLight &after, LightField field, bool merge)
-    : SceneCommand(std::move(access), tr("Edit light %1").arg(index + 1),
-                   merge ? mergeIdFor(1, index, int(field)) : -1)
+SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after,
+                                 LightField field, bool merge)
+    : SceneCommand(std::move(access), tr("Edit light %1").arg(index + 1), merge ? mergeIdFor(1, index, int(field)) : -1)
     , m_index(index)
     , m_before(before)
     , m_after(after)
@@ -97,8 +96,7 @@ void RemoveLightCommand::undo()
 }
 
 SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
-    : SceneCommand(std::move(access),
-                   (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1), -1)
+    : SceneCommand(std::move(access), (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1), -1)
     , m_index(index)
     , m_on(on)
 {
@@ -156,8 +154,8 @@ bool SetAmbientCommand::mergeWith(const QUndoCommand *other)
     return true;
 }
 
-SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before,
-                                       const Material &after, MaterialField field)
+SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
+                                       MaterialField field)
     : SceneCommand(std::move(access), tr("Edit material"),
                    field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)))
     , m_object(object)

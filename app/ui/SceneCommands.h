@@ -19,9 +19,24 @@ struct SceneAccess {
 
 // Fields a spin-box edit can touch; consecutive edits of the same field of
 // the same light / object merge into one undo step.
-enum class LightField { Position, Diffuse, Specular, Attenuation };
-enum class MaterialField { Ka, Kd, Ks, Shininess, Preset };
-enum class TransformField { Translate, Rotate, Scale };
+enum class LightField {
+    Position,
+    Diffuse,
+    Specular,
+    Attenuation
+};
+enum class MaterialField {
+    Ka,
+    Kd,
+    Ks,
+    Shininess,
+    Preset
+};
+enum class TransformField {
+    Translate,
+    Rotate,
+    Scale
+};
 
 // Base of every dock edit: applies a change to a copy of the scene and
 // writes it back. mergeId < 0 never merges (a drag, an add, a preset).
@@ -43,8 +58,8 @@ class SetLightCommand : public SceneCommand
 {
 public:
     // merge: false for a viewport drag, which is one step on its own.
-    SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after,
-                    LightField field, bool merge = true);
+    SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after, LightField field,
+                    bool merge = true);
     void redo() override;
     void undo() override;
     bool mergeWith(const QUndoCommand *other) override;

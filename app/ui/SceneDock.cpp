@@ -119,13 +119,14 @@ void SceneDock::addStats(QTreeWidgetItem *item, const SceneMeshes::Entry &entry,
     // The counts above are the reduced mesh's; say so, and what it came from.
     if (const QString detail = detailDescription(stats); !detail.isEmpty())
         addField(item, tr("Detail"), detail)
-            ->setToolTip(0, builtin ? tr("Tessellated coarser (the object's \"detail\")")
-                                    : tr("Decimated from the loaded mesh (the object's \"detail\")"));
+            ->setToolTip(0,
+                         builtin ? tr("Tessellated coarser (the object's \"detail\")")
+                                 : tr("Decimated from the loaded mesh (the object's \"detail\")"));
     addField(item, tr("Split vertices"), countText(stats.splitVertices))
         ->setToolTip(0, tr("Vertices duplicated where a position has several normals"));
     if (!builtin)
-        addField(item, tr("In the file"), tr("%1 vertices, %2 faces")
-                                              .arg(countText(stats.fileVertices), countText(stats.fileFaces)));
+        addField(item, tr("In the file"),
+                 tr("%1 vertices, %2 faces").arg(countText(stats.fileVertices), countText(stats.fileFaces)));
     addField(item, tr("Normals"), normalsDescription(stats, builtin));
     addField(item, tr("Bounds"), boundsDescription(stats));
     addField(item, tr("Surface"), surfaceDescription(stats));

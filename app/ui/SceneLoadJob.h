@@ -48,8 +48,8 @@ public slots:
 
 signals:
     void started(const QString &label);
-    void progressChanged(double fraction); // 0 to 1
-    void loaded(const QString &label);      // the viewport shows the new scene
+    void progressChanged(double fraction);                   // 0 to 1
+    void loaded(const QString &label);                       // the viewport shows the new scene
     void failed(const QString &label, const QString &error); // the old scene stays
     void cancelled(const QString &label);
 

@@ -1,8 +1,8 @@
 #include "SceneLoadRequests.h"
 
 #include "FileTypes.h"
-#include "bench/BenchResult.h"
 #include "MeshPlacement.h"
+#include "bench/BenchResult.h"
 
 #include <QFileInfo>
 
@@ -20,8 +20,8 @@ SceneLoadRequest meshFilesRequest(const Scene &current, const QStringList &paths
 {
     SceneLoadRequest request;
     request.scene = sceneWithMeshes(current, paths);
-    request.label = paths.size() == 1 ? QFileInfo(paths.front()).fileName()
-                                      : QObject::tr("%1 meshes").arg(paths.size());
+    request.label =
+        paths.size() == 1 ? QFileInfo(paths.front()).fileName() : QObject::tr("%1 meshes").arg(paths.size());
     // Fitted into the scene shown when loading ends: the camera may have
     // moved meanwhile, and the bounds are only known now.
     request.finish = [paths](const Scene &shown, const SceneLoadRequest::MeshInfo &meshes) {
@@ -38,7 +38,7 @@ SceneLoadRequest normalsRequest(const Scene &current, int objectIndex, const Nor
     request.scene.objects[objectIndex].normals = options;
     request.label = QObject::tr("%1 (%2 normals)").arg(QFileInfo(mesh).fileName(), normalMethodName(options.method));
     request.finish = [objectIndex, options, mesh, requested = request.scene](const Scene &shown,
-                                                                              const SceneLoadRequest::MeshInfo &) {
+                                                                             const SceneLoadRequest::MeshInfo &) {
         // Objects only change through loads, one at a time, so `shown` still
         // has this object; anything else gets the scene as requested.
         if (objectIndex >= int(shown.objects.size()) || shown.objects[objectIndex].mesh != mesh)

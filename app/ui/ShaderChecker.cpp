@@ -63,8 +63,8 @@ struct ShaderChecker::Cache {
         const auto objectMeshes = this->objectMeshes(s, error, cancelled);
         if (!objectMeshes)
             return nullptr;
-        std::optional<CheckReference> made = makeCheckReference(
-            s, *objectMeshes, sz.width(), sz.height(), error, [&](double) { return !cancelled.load(); });
+        std::optional<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), error,
+                                                                [&](double) { return !cancelled.load(); });
         if (!made)
             return nullptr;
         reference = std::make_shared<const CheckReference>(std::move(*made));
@@ -136,8 +136,15 @@ void ShaderChecker::start(Request request)
                 result.heatmap = checkHeatmap(request.yours, *result.reference);
             }
         } catch (const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
-            result = CheckResult{request.generation, request.scene, {}, {}, {}, {}, {},
-                                 QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())), 0.0};
+            result = CheckResult{request.generation,
+                                 request.scene,
+                                 {},
+                                 {},
+                                 {},
+                                 {},
+                                 {},
+                                 QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
+                                 0.0};
             cache->reference.reset();
         }
         result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;

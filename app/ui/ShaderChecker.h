@@ -15,15 +15,15 @@ namespace phonglab {
 
 // One finished check of the window's frame against the exact image.
 struct CheckResult {
-    quint64 generation = 0;                        // of the request it answers
-    Scene scene;                                   // as checked (headlight included)
+    quint64 generation = 0; // of the request it answers
+    Scene scene;            // as checked (headlight included)
     std::shared_ptr<const CheckReference> reference;
-    QImage yours;                                  // the frame, without light markers
-    QImage exact;                                  // the reference, 8-bit
-    QImage heatmap;                                // checkHeatmap()
+    QImage yours;   // the frame, without light markers
+    QImage exact;   // the reference, 8-bit
+    QImage heatmap; // checkHeatmap()
     CheckReport report;
-    QString error;                                 // no reference could be made
-    double milliseconds = 0.0;                     // request to result
+    QString error;             // no reference could be made
+    double milliseconds = 0.0; // request to result
 };
 
 // Runs checks off the GUI thread, one at a time; while one runs only the

@@ -307,8 +307,8 @@ bool ShaderDock::saveAs(ShaderStage stage, const QString &path, QString *error)
 void ShaderDock::chooseAndOpen()
 {
     const QString current = filePath(currentStage());
-    const QString folder = QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath()
-                                                           : ShaderFileSet::userFolder();
+    const QString folder =
+        QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath() : ShaderFileSet::userFolder();
     const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, tr(kShaderFilter));
     if (paths.isEmpty())
         return;
@@ -351,10 +351,9 @@ bool ShaderDock::confirmDiscard(const QList<ShaderStage> &stages)
             dirty << QFileInfo(filePath(stage)).fileName();
     if (dirty.isEmpty())
         return true;
-    const auto answer = QMessageBox::question(
-        this, tr("Unsaved changes"),
-        tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
-        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
+                                              tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
+                                              QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
     return answer == QMessageBox::Discard;
 }
 

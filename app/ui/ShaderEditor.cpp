@@ -111,11 +111,10 @@ void ShaderEditor::setUpDiagnosticStyles()
 {
     QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     font.setPointSizeF(font.pointSizeF() * 0.9);
-    QsciStyle(kErrorAnnotationStyle, tr("Error annotation"), QColor(0x8b, 0x0d, 0x0d),
-              QColor(0xfd, 0xe8, 0xe8), font)
+    QsciStyle(kErrorAnnotationStyle, tr("Error annotation"), QColor(0x8b, 0x0d, 0x0d), QColor(0xfd, 0xe8, 0xe8), font)
         .apply(this);
-    QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00),
-              QColor(0xfd, 0xf3, 0xdc), font)
+    QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00), QColor(0xfd, 0xf3, 0xdc),
+              font)
         .apply(this);
 
     m_errorIndicator = indicatorDefine(SquiggleIndicator);
@@ -276,7 +275,7 @@ QString ShaderEditor::underlinedText(int line) const
     QByteArray covered;
     for (long pos = start; pos < end; ++pos) {
         const bool marked = SendScintilla(SCI_INDICATORVALUEAT, m_errorIndicator, pos)
-                         || SendScintilla(SCI_INDICATORVALUEAT, m_warningIndicator, pos);
+            || SendScintilla(SCI_INDICATORVALUEAT, m_warningIndicator, pos);
         if (marked)
             covered += static_cast<char>(SendScintilla(SCI_GETCHARAT, pos));
     }

@@ -31,7 +31,11 @@ class ShaderFileSet : public QObject
     Q_OBJECT
 
 public:
-    enum class ExternalChangePolicy { Ask, Reload, Keep };
+    enum class ExternalChangePolicy {
+        Ask,
+        Reload,
+        Keep
+    };
     Q_ENUM(ExternalChangePolicy)
 
     explicit ShaderFileSet(QObject *parent = nullptr);

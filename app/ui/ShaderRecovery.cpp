@@ -91,7 +91,8 @@ bool ShaderRecovery::ask(const OrphanedSession &session, QWidget *parent) const
 {
     QMessageBox box(QMessageBox::Question, tr("Recover shader edits"),
                     tr("PhongLab did not shut down cleanly. Shader edits from %1 were recovered.\n\n"
-                       "Restore them into the editor?").arg(when(session.record.savedAt)),
+                       "Restore them into the editor?")
+                        .arg(when(session.record.savedAt)),
                     QMessageBox::NoButton, parent);
     QPushButton *restore = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
     box.addButton(tr("Discard"), QMessageBox::DestructiveRole);

@@ -23,7 +23,11 @@ class ShaderRecovery : public QObject
     Q_OBJECT
 
 public:
-    enum class Answer { Restore, Discard, Ask };
+    enum class Answer {
+        Restore,
+        Discard,
+        Ask
+    };
 
     // What the offer at start did.
     struct Outcome {

@@ -59,8 +59,8 @@ QWidget *createFloatRow(const UniformRowSpec &spec, QWidget *parent)
 QWidget *createVectorRow(const UniformRowSpec &spec, int components, QWidget *parent)
 {
     const FloatRange r = floatRangeOf(spec);
-    const bool color = components == 3
-        && (isColorUniformName(spec.baseName) || (spec.declaration && spec.declaration->color));
+    const bool color =
+        components == 3 && (isColorUniformName(spec.baseName) || (spec.declaration && spec.declaration->color));
     return new UniformVectorRow(components, color, r.fieldLow, r.fieldHigh, r.step, parent);
 }
 

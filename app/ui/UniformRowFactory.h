@@ -9,8 +9,8 @@ namespace phonglab {
 
 // What the Uniforms dock knows about one uniform element ("gain", "Id[2]").
 struct UniformRowSpec {
-    QString element;                               // as glGetUniformLocation takes it
-    QString baseName;                              // without the element index
+    QString element;  // as glGetUniformLocation takes it
+    QString baseName; // without the element index
     GLenum type = 0;
     UniformOwner owner = UniformOwner::User;
     const UniformDeclaration *declaration = nullptr; // its annotations, if the text declares it

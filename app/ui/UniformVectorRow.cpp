@@ -12,8 +12,7 @@
 
 namespace phonglab {
 
-UniformVectorRow::UniformVectorRow(int components, bool color, double low, double high, double step,
-                                   QWidget *parent)
+UniformVectorRow::UniformVectorRow(int components, bool color, double low, double high, double step, QWidget *parent)
     : QWidget(parent)
     , m_refusal(new QLabel(this))
 {

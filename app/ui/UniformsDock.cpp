@@ -86,8 +86,8 @@ bool UniformsDock::readProgram(Program &program)
 
 std::vector<UniformDeclaration> UniformsDock::declarations() const
 {
-    std::vector<UniformDeclaration> all = parseUniformDeclarations(
-        QString::fromUtf8(m_shaders->text(ShaderStage::Vertex)));
+    std::vector<UniformDeclaration> all =
+        parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Vertex)));
     for (UniformDeclaration &d : parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Fragment))))
         all.push_back(std::move(d));
     return all;
@@ -174,9 +174,8 @@ void UniformsDock::connectRow(QWidget *row, const QString &element)
     if (auto *f = qobject_cast<UniformFloatRow *>(row))
         connect(f, &UniformFloatRow::edited, this, [this, element](float v) { writeFloats(element, {v}); });
     else if (auto *v = qobject_cast<UniformVectorRow *>(row))
-        connect(v, &UniformVectorRow::edited, this, [this, element](const QList<float> &values) {
-            writeFloats(element, values);
-        });
+        connect(v, &UniformVectorRow::edited, this,
+                [this, element](const QList<float> &values) { writeFloats(element, values); });
     else if (auto *i = qobject_cast<UniformIntRow *>(row))
         connect(i, &UniformIntRow::edited, this, [this, element](int value) { writeInt(element, value); });
     else if (auto *b = qobject_cast<UniformBoolRow *>(row))

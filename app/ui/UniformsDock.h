@@ -75,7 +75,7 @@ private:
     QHash<QString, UniformOwner> m_owners;
     QStringList m_order;
     QStringList m_inactive;
-    UniformSnapshot m_values;     // as last read: the type and layout each write needs
+    UniformSnapshot m_values; // as last read: the type and layout each write needs
     bool m_rebuildPending = false;
     QElapsedTimer m_sinceRefresh; // read-only values follow the scene a few times a second
 };

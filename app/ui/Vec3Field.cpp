@@ -76,8 +76,9 @@ void Vec3Field::showValue()
     for (int axis = 0; axis < 3; ++axis)
         m_edits[axis]->setText(QLocale().toString(m_value[axis], 'g', kDecimals + 2));
     if (m_colour) {
-        const QColor c = QColor::fromRgbF(float(std::clamp(m_value.r, 0.0, 1.0)), float(std::clamp(m_value.g, 0.0, 1.0)),
-                                          float(std::clamp(m_value.b, 0.0, 1.0)));
+        const QColor c =
+            QColor::fromRgbF(float(std::clamp(m_value.r, 0.0, 1.0)), float(std::clamp(m_value.g, 0.0, 1.0)),
+                             float(std::clamp(m_value.b, 0.0, 1.0)));
         m_colour->setStyleSheet(QStringLiteral("background-color: %1").arg(c.name()));
     }
 }

@@ -11,8 +11,8 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFramebufferObject>
-#include <QResizeEvent>
 #include <QOpenGLFunctions>
+#include <QResizeEvent>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -22,11 +22,12 @@ namespace phonglab {
 namespace {
 
 constexpr double kOrbitDegPerPixel = 0.4;
-constexpr double kZoomPerWheelNotch = 0.85;  // distance factor for one notch towards the scene
-constexpr double kWheelNotch = 120.0;        // QWheelEvent::angleDelta() units per notch
-constexpr double kFrameTimeSmoothing = 0.1;  // weight of the newest frame in the running average
+constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
+constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
+constexpr double kFrameTimeSmoothing = 0.1; // weight of the newest frame in the running average
 constexpr int kLoanReturnTimeoutMs = 5000;
-constexpr double kLightPickRadiusPx = 8.0;   // how near a click must be to a marker   // a borrower stuck in the driver (a shader that never ends)
+constexpr double kLightPickRadiusPx =
+    8.0; // how near a click must be to a marker   // a borrower stuck in the driver (a shader that never ends)
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -168,7 +169,11 @@ ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
 {
     ProgramBuild built;
     if (!m_glInitialized) {
-        built.result.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0,
+        built.result.diagnostics.push_back({ShaderStage::Link,
+                                            ShaderDiagnostic::Severity::Error,
+                                            {},
+                                            0,
+                                            0,
                                             tr("OpenGL is not running in the viewport")});
         return built;
     }
@@ -203,8 +208,8 @@ QImage Viewport::grabFramebuffer()
 bool Viewport::event(QEvent *event)
 {
     const QEvent::Type type = event->type();
-    if (type == QEvent::Show || type == QEvent::WindowChangeInternal
-        || type == QEvent::WindowAboutToChangeInternal || type == QEvent::ScreenChangeInternal)
+    if (type == QEvent::Show || type == QEvent::WindowChangeInternal || type == QEvent::WindowAboutToChangeInternal
+        || type == QEvent::ScreenChangeInternal)
         endLoan();
     return QOpenGLWidget::event(event);
 }
@@ -273,8 +278,8 @@ Scene Viewport::renderedScene() const
 {
     Scene scene = currentScene();
     // Disabled lights are not sent to the shader, so they leave room for it.
-    const auto enabledLights = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                             [](const PointLight &l) { return l.enabled; });
+    const auto enabledLights =
+        std::count_if(scene.lights.begin(), scene.lights.end(), [](const PointLight &l) { return l.enabled; });
     if (m_headlight && enabledLights < kMaxLights) {
         PointLight head;
         head.position = scene.camera.eye; // moves with every orbit, pan and zoom
@@ -455,16 +460,10 @@ void Viewport::cameraMoved()
 void Viewport::mousePressEvent(QMouseEvent *event)
 {
     switch (event->button()) {
-    case Qt::LeftButton:
-        m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
-        break;
+    case Qt::LeftButton: m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit; break;
     case Qt::RightButton:
-    case Qt::MiddleButton:
-        m_drag = Drag::Pan;
-        break;
-    default:
-        QOpenGLWidget::mousePressEvent(event);
-        return;
+    case Qt::MiddleButton: m_drag = Drag::Pan; break;
+    default: QOpenGLWidget::mousePressEvent(event); return;
     }
     m_lastMousePos = event->position();
     event->accept();

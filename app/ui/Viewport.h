@@ -145,7 +145,12 @@ protected:
     void dropEvent(QDropEvent *event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Light };
+    enum class Drag {
+        None,
+        Orbit,
+        Pan,
+        Light
+    };
 
     void cleanup();
     bool uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
@@ -168,8 +173,8 @@ private:
     Drag m_drag = Drag::None;
     QPointF m_lastMousePos;
     bool m_headlight = false;
-    int m_dragLight = -1;      // the light a Drag::Light moves
-    PointLight m_dragStart;    // ... as it was when the drag began
+    int m_dragLight = -1;   // the light a Drag::Light moves
+    PointLight m_dragStart; // ... as it was when the drag began
     double m_smoothedFrameMs = 0.0;
     qint64 m_framesRendered = 0;
     QString m_glRendererName;

@@ -41,8 +41,9 @@ bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, c
 
     std::vector<float> interleaved;
     for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-        interleaved.insert(interleaved.end(), {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
-                                               mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
+        interleaved.insert(interleaved.end(),
+                           {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z, mesh.normals[i].x,
+                            mesh.normals[i].y, mesh.normals[i].z});
     glGenVertexArrays(1, &m_vao);
     glBindVertexArray(m_vao);
     glGenBuffers(1, &m_vbo);
@@ -105,7 +106,9 @@ void RawGlEditPath::setUniforms(GLuint p)
     glUniform1i(at("lightCount"), count);
     for (int i = 0; i < count; ++i) {
         const PointLight &l = m_scene.lights[i];
-        const auto element = [&](const char *name) { return at(QByteArray(name).append('[').append(QByteArray::number(i)).append(']')); };
+        const auto element = [&](const char *name) {
+            return at(QByteArray(name).append('[').append(QByteArray::number(i)).append(']'));
+        };
         glUniform3fv(element("lightPosition"), 1, glm::value_ptr(glm::vec3(l.position)));
         glUniform3fv(element("Id"), 1, glm::value_ptr(glm::vec3(l.diffuse)));
         glUniform3fv(element("Is"), 1, glm::value_ptr(glm::vec3(l.specular)));

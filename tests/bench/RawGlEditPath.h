@@ -1,7 +1,7 @@
 #pragma once
 #include "EditSample.h"
-#include "core/Scene.h"
 #include "core/MeshData.h"
+#include "core/Scene.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

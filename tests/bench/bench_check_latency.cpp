@@ -88,9 +88,12 @@ int main(int argc, char **argv)
     QStandardPaths::setTestModeEnabled(true);
     QCommandLineParser parser;
     parser.addHelpOption();
-    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits (default 30)."), QStringLiteral("N"), QStringLiteral("30")});
-    parser.addOption({QStringLiteral("width"), QStringLiteral("Window width (default 1280)."), QStringLiteral("W"), QStringLiteral("1280")});
-    parser.addOption({QStringLiteral("height"), QStringLiteral("Window height (default 800)."), QStringLiteral("H"), QStringLiteral("800")});
+    parser.addOption(
+        {QStringLiteral("edits"), QStringLiteral("Edits (default 30)."), QStringLiteral("N"), QStringLiteral("30")});
+    parser.addOption({QStringLiteral("width"), QStringLiteral("Window width (default 1280)."), QStringLiteral("W"),
+                      QStringLiteral("1280")});
+    parser.addOption({QStringLiteral("height"), QStringLiteral("Window height (default 800)."), QStringLiteral("H"),
+                      QStringLiteral("800")});
     parser.process(app);
     const int edits = std::max(1, parser.value(QStringLiteral("edits")).toInt());
 
@@ -128,7 +131,8 @@ int main(int argc, char **argv)
                 QThread::idealThreadCount());
     std::printf("| measure | p50 ms | p95 ms |\n|---|---|---|\n");
     std::printf("| good compile -> verdict (reference kept) | %.0f | %.0f |\n", p50, p95);
-    std::printf("| of which the check itself (worker) | %.0f | %.0f |\n", percentile(worker, 0.5), percentile(worker, 0.95));
+    std::printf("| of which the check itself (worker) | %.0f | %.0f |\n", percentile(worker, 0.5),
+                percentile(worker, 0.95));
     std::printf("| peer: one frame of the same view | %.0f | %.0f |\n", f50, percentile(frame, 0.95));
     std::printf("| first check of a view (makes the reference) | %.0f | |\n", cold.compileToVerdictMs);
     std::printf("verdict / frame at p50: %.1fx\n", p50 / std::max(f50, 1e-9));

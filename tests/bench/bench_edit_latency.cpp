@@ -36,8 +36,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <cstdio>
+#include <functional>
 #include <memory>
 
 using namespace phonglab;
@@ -63,7 +63,6 @@ QByteArray editedFragment(double k)
     text.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
     return text;
 }
-
 
 // ---- PhongLab's path: the real window, dock, controller and viewport ------
 
@@ -97,7 +96,7 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread
         return;
     }
     m_window->viewport()->setShowLightMarkers(false); // the same single draw as the raw path
-    m_window->viewport()->setFixedSize(size); // the raw path's framebuffer size
+    m_window->viewport()->setFixedSize(size);         // the raw path's framebuffer size
     m_window->show();
     QElapsedTimer wait;
     wait.start();
@@ -132,9 +131,9 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     });
     auto applied = QObject::connect(live, &LiveShaderController::programApplied,
                                     [&](const QByteArray &, const ProgramBuildReply &reply) {
-        appliedAt = clock.nsecsElapsed();
-        timings = reply;
-    });
+                                        appliedAt = clock.nsecsElapsed();
+                                        timings = reply;
+                                    });
     auto framed = QObject::connect(viewport, &Viewport::frameRendered, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
             frameAt = clock.nsecsElapsed();
@@ -208,8 +207,9 @@ double column(const std::vector<EditSample> &samples, double EditSample::*field,
 
 void printTable(const std::vector<Row> &rows)
 {
-    std::printf("\n| path | edit→pixel median | p95 | compile | link | warm-up draw (worker thread) | first frame "
-                "(GUI thread) | rest (queues, hops, adopt) | next frame, same program | longest GUI stall median | p95 |\n");
+    std::printf(
+        "\n| path | edit→pixel median | p95 | compile | link | warm-up draw (worker thread) | first frame "
+        "(GUI thread) | rest (queues, hops, adopt) | next frame, same program | longest GUI stall median | p95 |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Row &row : rows) {
         const auto &v = row.samples;
@@ -239,9 +239,11 @@ int main(int argc, char **argv)
     QStandardPaths::setTestModeEnabled(true); // user copies of the shaders go to a test folder
     QCommandLineParser parser;
     parser.addHelpOption();
-    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits per path (default 50)."), QStringLiteral("N"), QStringLiteral("50")});
-    parser.addOption({QStringLiteral("samples"), QStringLiteral("MSAA samples of the viewport (default 4, as the app)."),
-                      QStringLiteral("S"), QStringLiteral("4")});
+    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits per path (default 50)."), QStringLiteral("N"),
+                      QStringLiteral("50")});
+    parser.addOption({QStringLiteral("samples"),
+                      QStringLiteral("MSAA samples of the viewport (default 4, as the app)."), QStringLiteral("S"),
+                      QStringLiteral("4")});
     parser.process(app);
     const int edits = std::max(1, parser.value(QStringLiteral("edits")).toInt());
     const int samples = std::max(0, parser.value(QStringLiteral("samples")).toInt());
@@ -267,7 +269,11 @@ int main(int argc, char **argv)
         return 1;
     }
     using W = LiveShaderController::WarmUp;
-    struct Mode { QString name; bool guiThread; W warmUp; };
+    struct Mode {
+        QString name;
+        bool guiThread;
+        W warmUp;
+    };
     const Mode modes[] = {
         {QStringLiteral("PhongLab: worker, warm-up in lent viewport context (default)"), false, W::ViewportContext},
         {QStringLiteral("PhongLab: worker, warm-up in worker context"), false, W::WorkerContext},
@@ -285,9 +291,8 @@ int main(int argc, char **argv)
     }
     constexpr int kWarmUpRounds = 3;
     const QSize pixels = paths.front()->viewportPixels();
-    std::printf("viewport %dx%d px, %d samples, %d edits per path (+%d warm-up), %d CPUs, load %s\n",
-                pixels.width(), pixels.height(), samples, edits, kWarmUpRounds, QThread::idealThreadCount(),
-                qPrintable(loadAverage()));
+    std::printf("viewport %dx%d px, %d samples, %d edits per path (+%d warm-up), %d CPUs, load %s\n", pixels.width(),
+                pixels.height(), samples, edits, kWarmUpRounds, QThread::idealThreadCount(), qPrintable(loadAverage()));
     int serial = 0;
     for (int round = 0; round < kWarmUpRounds + edits; ++round) {
         for (std::size_t p = 0; p < rows.size(); ++p) {

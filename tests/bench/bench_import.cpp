@@ -21,18 +21,18 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
-#include <tuple>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -185,7 +185,8 @@ void printRow(const char *name, const Sample &s, const Sample &peer, const Sampl
 
 void benchFile(const std::string &path, int runs, const QString &cacheDir)
 {
-    std::printf("\n%s\n  %-34s %12s %13s %9s %9s\n", path.c_str(), "loader", "time", "peak RSS", "vs tinyobj", "vs bare");
+    std::printf("\n%s\n  %-34s %12s %13s %9s %9s\n", path.c_str(), "loader", "time", "peak RSS", "vs tinyobj",
+                "vs bare");
     const Sample bare = median([&] { return bareParse(path); }, runs);
     const Sample tiny = median([&] { return tinyObj(path); }, runs);
     printRow("bare parse (floor)", bare, tiny, bare);
@@ -196,17 +197,21 @@ void benchFile(const std::string &path, int runs, const QString &cacheDir)
     // peer that says what isolation costs.
     const Sample inProcess = median([&] { return phonglabInProcess(path); }, runs);
     printRow("PhongLab importMeshFile, in process", inProcess, tiny, bare);
-    const Sample inProcessCached = median([&] {
-        QDir(cacheDir).removeRecursively();
-        return phonglabInProcessCached(path);
-    }, runs);
+    const Sample inProcessCached = median(
+        [&] {
+            QDir(cacheDir).removeRecursively();
+            return phonglabInProcessCached(path);
+        },
+        runs);
     printRow("  + cache write (unisolated open)", inProcessCached, tiny, bare);
     // First open: a cache folder with nothing in it, emptied before each run;
     // the file is parsed in the import child, its answer read back.
-    const Sample first = median([&] {
-        QDir(cacheDir).removeRecursively();
-        return phonglabLoad(path);
-    }, runs);
+    const Sample first = median(
+        [&] {
+            QDir(cacheDir).removeRecursively();
+            return phonglabLoad(path);
+        },
+        runs);
     printRow("PhongLab loadMesh, first open", first, tiny, bare);
     std::printf("  isolation (child process, limits, answer through the cache format): %+.1f %% of the parse "
                 "in process, %+.1f %% of the unisolated first open\n",
@@ -259,20 +264,24 @@ void benchNormals(const std::string &path, int runs)
             triangles.push_back(remap[i]);
     }
     r.mesh.reset();
-    std::printf("\nnormals for %zu positions, %zu triangles\n  %-34s %12s %9s\n", positions.size(), triangles.size() / 3,
-                "method", "time", "vs plain");
+    std::printf("\nnormals for %zu positions, %zu triangles\n  %-34s %12s %9s\n", positions.size(),
+                triangles.size() / 3, "method", "time", "vs plain");
     const Sample plain = median([&] { return plainNormalLoop(positions, triangles); }, runs);
     std::printf("  %-34s %9.1f ms %8.2fx\n", "plain loop (area-weighted)", plain.ms, 1.0);
     using phonglab::NormalMethod;
-    for (auto [name, method, crease] : {std::tuple{"flat", NormalMethod::Flat, std::optional<double>()},
-                                        {"average", NormalMethod::Average, std::optional<double>()},
-                                        {"area", NormalMethod::AreaWeighted, std::optional<double>()},
-                                        {"angle", NormalMethod::AngleWeighted, std::optional<double>()},
-                                        {"angle, crease 30 deg", NormalMethod::AngleWeighted, std::optional<double>(30.0)}}) {
+    for (auto [name, method, crease] :
+         {std::tuple{"flat", NormalMethod::Flat, std::optional<double>()},
+          {"average", NormalMethod::Average, std::optional<double>()},
+          {"area", NormalMethod::AreaWeighted, std::optional<double>()},
+          {"angle", NormalMethod::AngleWeighted, std::optional<double>()},
+          {"angle, crease 30 deg", NormalMethod::AngleWeighted, std::optional<double>(30.0)}}) {
         // Bindings captured by copy, by name: clang 14 cannot capture a structured binding.
-        const Sample s = median([&, method = method, crease = crease] {
-            return static_cast<long long>(phonglab::computeNormals(positions, triangles, method, crease).normals.size());
-        }, runs);
+        const Sample s = median(
+            [&, method = method, crease = crease] {
+                return static_cast<long long>(
+                    phonglab::computeNormals(positions, triangles, method, crease).normals.size());
+            },
+            runs);
         std::printf("  %-34s %9.1f ms %8.2fx\n", name, s.ms, s.ms / plain.ms);
         std::fflush(stdout);
     }

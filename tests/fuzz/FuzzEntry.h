@@ -47,8 +47,8 @@ struct Outcome {
 // and tests/data/fuzz/<name>.
 inline const QStringList &targetNames()
 {
-    static const QStringList names{"obj", "ply", "off", "stl", "om", "meshcache",
-                                   "scene", "shaderlog", "uniforms", "journal"};
+    static const QStringList names{"obj",       "ply",   "off",       "stl",      "om",
+                                   "meshcache", "scene", "shaderlog", "uniforms", "journal"};
     return names;
 }
 
@@ -207,11 +207,16 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
 {
     if (target == "obj" || target == "ply" || target == "off" || target == "stl" || target == "om")
         return runMesh(std::string(target), bytes);
-    if (target == "meshcache") return runMeshCache(bytes);
-    if (target == "scene") return runScene(bytes);
-    if (target == "shaderlog") return runShaderLog(bytes);
-    if (target == "uniforms") return runUniforms(bytes);
-    if (target == "journal") return runJournal(bytes);
+    if (target == "meshcache")
+        return runMeshCache(bytes);
+    if (target == "scene")
+        return runScene(bytes);
+    if (target == "shaderlog")
+        return runShaderLog(bytes);
+    if (target == "uniforms")
+        return runUniforms(bytes);
+    if (target == "journal")
+        return runJournal(bytes);
     std::fprintf(stderr, "phonglab fuzz: unknown target %.*s\n", int(target.size()), target.data());
     std::abort();
 }
@@ -221,14 +226,14 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
 // Defines the libFuzzer entry point of one target (in fuzz_<name>.cpp).
 // PHONGLAB_FUZZ_VERBOSE=1 prints what became of each input (ok or the
 // error), e.g. to see what the seeds exercise: fuzz_ply -runs=0 corpus/ply.
-#define PHONGLAB_FUZZ_TARGET(name)                                                              \
-    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)         \
-    {                                                                                           \
-        static const bool verbose = qEnvironmentVariableIntValue("PHONGLAB_FUZZ_VERBOSE") != 0; \
-        const phonglab::fuzz::Outcome outcome = phonglab::fuzz::run(                            \
-            name, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size))); \
-        if (verbose)                                                                            \
-            std::fprintf(stderr, "fuzz_%s: %zu bytes: %s\n", name, size,                       \
-                         outcome.ok ? "ok" : qPrintable(outcome.error));                        \
-        return 0;                                                                               \
+#define PHONGLAB_FUZZ_TARGET(name)                                                                                     \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)                                  \
+    {                                                                                                                  \
+        static const bool verbose = qEnvironmentVariableIntValue("PHONGLAB_FUZZ_VERBOSE") != 0;                        \
+        const phonglab::fuzz::Outcome outcome =                                                                        \
+            phonglab::fuzz::run(name, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size))); \
+        if (verbose)                                                                                                   \
+            std::fprintf(stderr, "fuzz_%s: %zu bytes: %s\n", name, size,                                               \
+                         outcome.ok ? "ok" : qPrintable(outcome.error));                                               \
+        return 0;                                                                                                      \
     }

@@ -43,8 +43,10 @@ private slots:
         scene.shading = *shadingFromName(method);
         const CheckReference reference = makeTestCheckReference(scene);
         QString error;
-        const ShaderSource vs = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)), &error);
-        const ShaderSource fs = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.frag").arg(method)), &error);
+        const ShaderSource vs =
+            ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)), &error);
+        const ShaderSource fs =
+            ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.frag").arg(method)), &error);
         QVERIFY2(error.isEmpty(), qPrintable(error));
         const CheckReport report = checkRender(render(vs, fs), reference);
         QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
@@ -58,7 +60,8 @@ private slots:
     void confusionMatrix()
     {
         const QStringList keys = shaderMistakeKeys();
-        QStringList table{QStringLiteral("| made \\ found | ") + keys.join(QStringLiteral(" | ")) + QStringLiteral(" |"),
+        QStringList table{QStringLiteral("| made \\ found | ") + keys.join(QStringLiteral(" | "))
+                              + QStringLiteral(" |"),
                           QStringLiteral("|---") + QStringLiteral("|---").repeated(keys.size()) + QStringLiteral("|")};
         for (const QString &key : keys) {
             const ShaderMistake mistake = *shaderMistakeFromKey(key);
@@ -72,13 +75,14 @@ private slots:
                     row[m] = f.confidence;
             }
             const MistakeFinding &top = report.diagnosis.findings.front();
-            const bool named = top.key == mistake
-                || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+            const bool named =
+                top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
             QVERIFY2(named && top.confidence >= kExplainedConfidence,
                      qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
             if (report.diagnosis.findings.size() > 1)
                 QVERIFY2(report.diagnosis.findings[1].confidence < top.confidence,
-                         qPrintable(key + QStringLiteral(": a tie with ") + shaderMistakeKey(report.diagnosis.findings[1].key)));
+                         qPrintable(key + QStringLiteral(": a tie with ")
+                                    + shaderMistakeKey(report.diagnosis.findings[1].key)));
             QString line = QStringLiteral("| %1 |").arg(key);
             for (const QString &column : keys) {
                 const double c = row.count(*shaderMistakeFromKey(column)) ? row[*shaderMistakeFromKey(column)] : 0.0;
@@ -86,8 +90,8 @@ private slots:
             }
             table << line;
         }
-        qInfo("confusion matrix on %s, %dx%d, %% of the difference explained:\n%s",
-              "assets/scenes/check.json", kCheckWidth, kCheckHeight, qPrintable(table.join(QLatin1Char('\n'))));
+        qInfo("confusion matrix on %s, %dx%d, %% of the difference explained:\n%s", "assets/scenes/check.json",
+              kCheckWidth, kCheckHeight, qPrintable(table.join(QLatin1Char('\n'))));
     }
 
 private:

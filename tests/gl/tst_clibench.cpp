@@ -48,8 +48,8 @@ void TestCliBench::quickRunWritesCsvAndChart()
     const QString out = m_dir.filePath(QStringLiteral("quick"));
     QElapsedTimer clock;
     clock.start();
-    const ProcessRun r = runPhonglab({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--out"), out},
-                                     240000);
+    const ProcessRun r =
+        runPhonglab({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--out"), out}, 240000);
     const double seconds = clock.elapsed() / 1000.0;
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     qInfo("phonglab bench --quick took %.1f s here (the aim is under 60 s on two idle cores)", seconds);
@@ -110,9 +110,9 @@ void TestCliBench::quickRunWritesCsvAndChart()
     // --from fits the same rows again against another budget without
     // measuring: an impossible PSNR leaves nothing chosen, and says so.
     const QString refit = m_dir.filePath(QStringLiteral("refit"));
-    const ProcessRun again = runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"),
-                                          out + QStringLiteral("/results.csv"), QStringLiteral("--budget"),
-                                          QStringLiteral("psnr:99"), QStringLiteral("--out"), refit});
+    const ProcessRun again =
+        runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), out + QStringLiteral("/results.csv"),
+                     QStringLiteral("--budget"), QStringLiteral("psnr:99"), QStringLiteral("--out"), refit});
     QVERIFY2(again.exitCode == 0, qPrintable(again.err));
     QVERIFY(!QFile::exists(refit + QStringLiteral("/results.csv")));
     QVERIFY(QFile::exists(refit + QStringLiteral("/chart.png")));
@@ -155,15 +155,15 @@ void TestCliBench::badSceneFails()
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write("{\"objects\": [ {\"mesh\": 3} ]}");
     file.close();
-    const ProcessRun r = runPhonglab({QStringLiteral("bench"), QStringLiteral("--scene"), scene,
-                                      QStringLiteral("--out"), out});
+    const ProcessRun r =
+        runPhonglab({QStringLiteral("bench"), QStringLiteral("--scene"), scene, QStringLiteral("--out"), out});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("broken.json")), qPrintable(r.err));
     QVERIFY(!QFile::exists(out + QStringLiteral("/results.csv")));
 
     // A results file that is not one: exit 1 naming it.
-    const ProcessRun bad = runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), scene,
-                                        QStringLiteral("--out"), out});
+    const ProcessRun bad =
+        runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), scene, QStringLiteral("--out"), out});
     QCOMPARE(bad.exitCode, 1);
     QVERIFY2(bad.err.contains(QStringLiteral("broken.json")), qPrintable(bad.err));
 }

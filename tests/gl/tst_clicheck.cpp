@@ -57,9 +57,12 @@ private slots:
         QTest::newRow("no scene") << QStringList{};
         QTest::newRow("two scenes") << QStringList{checkScene(), checkScene()};
         QTest::newRow("bad size") << QStringList{checkScene(), QStringLiteral("--size"), QStringLiteral("0x5")};
-        QTest::newRow("bad tolerance") << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("-1")};
-        QTest::newRow("tolerance not a number") << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("two")};
-        QTest::newRow("unknown shading") << QStringList{checkScene(), QStringLiteral("--shading"), QStringLiteral("toon")};
+        QTest::newRow("bad tolerance") << QStringList{checkScene(), QStringLiteral("--tolerance"),
+                                                      QStringLiteral("-1")};
+        QTest::newRow("tolerance not a number")
+            << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("two")};
+        QTest::newRow("unknown shading") << QStringList{checkScene(), QStringLiteral("--shading"),
+                                                        QStringLiteral("toon")};
         QTest::newRow("unknown option") << QStringList{checkScene(), QStringLiteral("--frobnicate")};
     }
 
@@ -73,12 +76,12 @@ private slots:
 
     void shippedShaderPasses()
     {
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
-                                          QStringLiteral("--json")});
+        const ProcessRun r = runPhonglab(
+            {QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize, QStringLiteral("--json")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err + QString::fromUtf8(r.out)));
         const QJsonObject o = parseJson(r);
-        for (const char *key : {"verdict", "psnr_db", "max_error", "bad_fraction", "worst", "diagnosis",
-                                "undetectable", "errors"})
+        for (const char *key :
+             {"verdict", "psnr_db", "max_error", "bad_fraction", "worst", "diagnosis", "undetectable", "errors"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
         QVERIFY(o.value(QStringLiteral("max_error")).toInt() <= 2);
@@ -96,9 +99,9 @@ private slots:
     {
         const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code, QStringLiteral("r.frag"));
         const QString diff = m_dir.filePath(QStringLiteral("diff.png"));
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
-                                          QStringLiteral("--fragment"), frag, QStringLiteral("--json"),
-                                          QStringLiteral("--diff"), diff});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                         QStringLiteral("--fragment"), frag, QStringLiteral("--json"), QStringLiteral("--diff"), diff});
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("fail"));
@@ -114,7 +117,8 @@ private slots:
         QVERIFY(top.value(QStringLiteral("confidence")).toDouble() >= 0.5);
         QVERIFY(top.value(QStringLiteral("message")).toString().contains(QStringLiteral("reflect(-L, N)")));
         // Both candidate lines: the reflect() and the definition of V.
-        const QStringList source = QString::fromUtf8(withMistake(ShaderMistake::ReflectIncident).fragment.code).split(QLatin1Char('\n'));
+        const QStringList source =
+            QString::fromUtf8(withMistake(ShaderMistake::ReflectIncident).fragment.code).split(QLatin1Char('\n'));
         QStringList named;
         for (const QJsonValue &v : top.value(QStringLiteral("lines")).toArray()) {
             const QJsonObject line = v.toObject();
@@ -160,8 +164,9 @@ private slots:
     {
         // The shipped sphere scene scales nothing: N moved by the model-view
         // matrix is still perpendicular, so that mistake cannot show there.
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/sphere.json")),
-                                          QStringLiteral("--size"), kSize, QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/sphere.json")),
+                         QStringLiteral("--size"), kSize, QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 0);
         const QJsonArray hidden = parseJson(r).value(QStringLiteral("undetectable")).toArray();
         QVERIFY2(hidden.contains(QStringLiteral("normal-matrix")), r.out.constData());
@@ -176,14 +181,19 @@ private slots:
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
-        QVERIFY(o.value(QStringLiteral("errors")).toArray().first().toObject().value(QStringLiteral("message"))
-                    .toString().contains(QStringLiteral("nothing to compare")));
+        QVERIFY(o.value(QStringLiteral("errors"))
+                    .toArray()
+                    .first()
+                    .toObject()
+                    .value(QStringLiteral("message"))
+                    .toString()
+                    .contains(QStringLiteral("nothing to compare")));
     }
 
     void badSceneIsAnError()
     {
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")),
-                                          QStringLiteral("--json")});
+        const ProcessRun r = runPhonglab(
+            {QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));

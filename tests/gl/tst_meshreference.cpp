@@ -51,7 +51,7 @@ MeshPtr withFaceNormals(const MeshData &mesh)
 }
 
 struct Variant {
-    std::optional<ShadingMethod> gpuShading;          // scene.shading when unset
+    std::optional<ShadingMethod> gpuShading; // scene.shading when unset
     ReferenceShading reference = ReferenceShading::Phong;
     bool referenceWithFaceNormals = false;
     int side = kTestImageSide;
@@ -116,8 +116,8 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
         reference->color[i] = reference->specular[i] = glm::dvec3(0.0);
         reference->depth[i] = std::numeric_limits<double>::infinity();
     }
-    qInfo("%d subpixel bits: %lld covered pixels within 1/%g px of an occluding edge", subpixelBits,
-          ambiguousCount, 1.0 / step);
+    qInfo("%d subpixel bits: %lld covered pixels within 1/%g px of an occluding edge", subpixelBits, ambiguousCount,
+          1.0 / step);
     check.referenceData = std::move(*reference);
     check.reference = check.referenceData.toImage(scene.background);
     check.comparison = compareWithReference(check.gpu, check.referenceData, kSilhouetteBandPx);
@@ -134,8 +134,8 @@ private slots:
     void initTestCase()
     {
         QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-        qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band",
-              kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx);
+        qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band", kMinPsnrDb,
+              kMaxErrorSteps, kSilhouetteBandPx);
     }
 
     void gpuMatchesMeshReference_data()
@@ -164,12 +164,11 @@ private slots:
         // A render that compared almost nothing proves nothing.
         QVERIFY2(check.comparison.pixelsCompared > side * side / 25, qPrintable(check.comparison.summary()));
         if (!check.matches())
-            QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                                 .arg(check.comparison.summary(),
-                                      saveArtifacts(QStringLiteral("mesh-reference-%1-%2")
-                                                        .arg(shadingName(scene.shading))
-                                                        .arg(side),
-                                                    check, scene))));
+            QFAIL(qPrintable(
+                QStringLiteral("%1 (images in %2)")
+                    .arg(check.comparison.summary(),
+                         saveArtifacts(QStringLiteral("mesh-reference-%1-%2").arg(shadingName(scene.shading)).arg(side),
+                                       check, scene))));
     }
 
     void wrongVariantsFail_data()

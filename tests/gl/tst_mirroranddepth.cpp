@@ -27,7 +27,10 @@ private slots:
     void extremeDepthRangeMatchesReference();
 
 private:
-    enum class Contours { Compared, LeftOut };
+    enum class Contours {
+        Compared,
+        LeftOut
+    };
     static void verifyMatches(const QString &name, const Scene &scene, Contours contours = Contours::Compared);
 };
 
@@ -55,8 +58,8 @@ void TestMirrorAndDepth::verifyMatches(const QString &name, const Scene &scene, 
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                             .arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
+        QFAIL(qPrintable(
+            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
 }
 
 void TestMirrorAndDepth::mirroredObjectMatchesReference_data()

@@ -29,7 +29,7 @@ namespace {
 
 // What a case promises when the equation defines the pixels.
 enum class Expect {
-    Reference,  // within the reference's bounds (exact methods), finite (all)
+    Reference, // within the reference's bounds (exact methods), finite (all)
     // As Reference, away from the steps the equation itself has: with a
     // small n the specular term jumps from ~ks·Is to 0 where N·L or R·V
     // reaches 0, and a pixel on the step may fall either side.
@@ -74,10 +74,20 @@ const std::vector<EdgeCase> &edgeCases()
         {"shininess 1e-3", [](Scene &s) { s.objects[0].material.shininess = 1e-3; }, Expect::ReferenceOffSteps},
         {"shininess 1", [](Scene &s) { s.objects[0].material.shininess = 1.0; }, Expect::ReferenceOffSteps},
         {"shininess 1e4", [](Scene &s) { s.objects[0].material.shininess = 1e4; }},
-        {"light on the surface", [](Scene &s) { s.lights[0].position = {0.0, 0.0, 1.0}; }},
-        {"light inside the object", [](Scene &s) { s.lights[0].position = {0.1, 0.2, 0.0}; }},
-        {"attenuation c1 = c2 = 0", [](Scene &s) { s.lights[0].attenuation = {0.0, 0.0, 0.04}; }},
-        {"attenuation c1 = c2 = 0, light on the surface", [](Scene &s) {
+        {"light on the surface",
+         [](Scene &s) {
+             s.lights[0].position = {0.0, 0.0, 1.0};
+         }},
+        {"light inside the object",
+         [](Scene &s) {
+             s.lights[0].position = {0.1, 0.2, 0.0};
+         }},
+        {"attenuation c1 = c2 = 0",
+         [](Scene &s) {
+             s.lights[0].attenuation = {0.0, 0.0, 0.04};
+         }},
+        {"attenuation c1 = c2 = 0, light on the surface",
+         [](Scene &s) {
              s.lights[0].attenuation = {0.0, 0.0, 1.0};
              s.lights[0].position = {0.0, 0.0, 1.0};
          }},
@@ -85,19 +95,23 @@ const std::vector<EdgeCase> &edgeCases()
         {"object scale 1e6 (world scaled with it)", [](Scene &s) { scaleWorld(s, 1e6); }},
         {"fov 0.01 deg", [](Scene &s) { s.camera.fovDeg = 0.01; }},
         {"fov 179.9 deg", [](Scene &s) { s.camera.fovDeg = 179.9; }, Expect::Finite},
-        {"fov 179 deg, eye 0.02 above the surface", [](Scene &s) {
+        {"fov 179 deg, eye 0.02 above the surface",
+         [](Scene &s) {
              s.camera.fovDeg = 179.0;
              s.camera.eye = {0.0, 0.0, 1.02};
              s.camera.nearPlane = 1e-3;
          }},
-        {"near 1e-6, far 1e9", [](Scene &s) {
+        {"near 1e-6, far 1e9",
+         [](Scene &s) {
              s.camera.nearPlane = 1e-6;
              s.camera.farPlane = 1e9;
          }},
-        {"eye inside the object", [](Scene &s) {
+        {"eye inside the object",
+         [](Scene &s) {
              s.camera.eye = {0.0, 0.0, 0.3};
              s.camera.nearPlane = 1e-3;
-         }, Expect::Background},
+         },
+         Expect::Background},
     };
     return cases;
 }
@@ -175,7 +189,11 @@ void TestNumericEdges::cleanupTestCase()
     QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Text));
     out.write("| case | method | NaN/Inf pixels | result |\n|---|---|---:|---|\n");
     for (const SweepRow &r : m_rows)
-        out.write(QStringLiteral("| %1 | %2 | %3 | %4 |\n").arg(r.edgeCase, r.method).arg(r.nonFinite).arg(r.result).toUtf8());
+        out.write(QStringLiteral("| %1 | %2 | %3 | %4 |\n")
+                      .arg(r.edgeCase, r.method)
+                      .arg(r.nonFinite)
+                      .arg(r.result)
+                      .toUtf8());
 }
 
 void TestNumericEdges::sweep_data()
@@ -218,7 +236,8 @@ void TestNumericEdges::sweep()
         // The back faces of a closed surface are culled, so from inside it
         // nothing of it is drawn: the view shows what lies beyond.
         QImage background(check.gpu.size(), QImage::Format_RGB888);
-        background.fill(QColor::fromRgbF(float(scene.background.r), float(scene.background.g), float(scene.background.b)));
+        background.fill(
+            QColor::fromRgbF(float(scene.background.r), float(scene.background.g), float(scene.background.b)));
         const int differing = compareImages(check.gpu, background).maxError;
         record(name, methodName, check.nonFinitePixels,
                differing <= 1 ? QStringLiteral("background only (closed surface seen from inside is culled)")
@@ -238,8 +257,9 @@ void TestNumericEdges::sweep()
     QCOMPARE(check.nonFinitePixels, 0);
     QVERIFY2(check.comparison.pixelsCompared > 0, "the case drew nothing to compare");
     if (exact && !within)
-        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                             .arg(check.comparison.summary(), saveArtifacts(name + QLatin1Char('-') + methodName, check, scene))));
+        QFAIL(qPrintable(
+            QStringLiteral("%1 (images in %2)")
+                .arg(check.comparison.summary(), saveArtifacts(name + QLatin1Char('-') + methodName, check, scene))));
 }
 
 void TestNumericEdges::brokenNormalsInAFile_data()
@@ -291,21 +311,27 @@ void TestNumericEdges::refusedAtLoad_data()
     QTest::addColumn<QByteArray>("material");
     QTest::addColumn<QByteArray>("attenuation");
     QTest::addColumn<QString>("expected");
-    const QByteArray camera = R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 45, "near": 0.1, "far": 100)";
+    const QByteArray camera =
+        R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 45, "near": 0.1, "far": 100)";
     const QByteArray material = R"("shininess": 32)";
     const QByteArray attenuation = "[1, 0, 0]";
     QTest::newRow("eye on the target") << QByteArray(R"("eye": [1, 2, 3], "target": [1, 2, 3])") << material
                                        << attenuation << "camera.target: must differ from eye";
     QTest::newRow("up parallel to the view") << QByteArray(R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 0, 2])")
                                              << material << attenuation << "camera.up: must not be parallel";
-    QTest::newRow("fov 0") << QByteArray(R"("fov_deg": 0)") << material << attenuation << "camera.fov_deg: must be in (0, 180)";
-    QTest::newRow("fov 180") << QByteArray(R"("fov_deg": 180)") << material << attenuation << "camera.fov_deg: must be in (0, 180)";
+    QTest::newRow("fov 0") << QByteArray(R"("fov_deg": 0)") << material << attenuation
+                           << "camera.fov_deg: must be in (0, 180)";
+    QTest::newRow("fov 180") << QByteArray(R"("fov_deg": 180)") << material << attenuation
+                             << "camera.fov_deg: must be in (0, 180)";
     QTest::newRow("near 0") << QByteArray(R"("near": 0)") << material << attenuation << "camera.near: must be > 0";
-    QTest::newRow("far at near") << QByteArray(R"("near": 1, "far": 1)") << material << attenuation << "camera.far: must be greater";
-    QTest::newRow("shininess 0") << camera << QByteArray(R"("shininess": 0)") << attenuation << "material.shininess: must be > 0";
-    QTest::newRow("attenuation all zero") << camera << material << QByteArray("[0, 0, 0]")
-                                          << "lights[0].attenuation: c1 + c2 + c3 must be positive";
-    QTest::newRow("near 1e400") << QByteArray(R"("near": 1e400)") << material << attenuation << "camera.near: must be a finite number";
+    QTest::newRow("far at near") << QByteArray(R"("near": 1, "far": 1)") << material << attenuation
+                                 << "camera.far: must be greater";
+    QTest::newRow("shininess 0") << camera << QByteArray(R"("shininess": 0)") << attenuation
+                                 << "material.shininess: must be > 0";
+    QTest::newRow("attenuation all zero")
+        << camera << material << QByteArray("[0, 0, 0]") << "lights[0].attenuation: c1 + c2 + c3 must be positive";
+    QTest::newRow("near 1e400") << QByteArray(R"("near": 1e400)") << material << attenuation
+                                << "camera.near: must be a finite number";
 }
 
 void TestNumericEdges::refusedAtLoad()

@@ -29,8 +29,8 @@ private:
 void TestRenderReference::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px",
-          kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
+    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px", kMinPsnrDb,
+          kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
 }
 
 void TestRenderReference::report(const QString &name, const RenderCheck &check)
@@ -59,8 +59,8 @@ void TestRenderReference::matchesReference()
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                             .arg(check.comparison.summary(), saveArtifacts(scene, check, s))));
+        QFAIL(qPrintable(
+            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(scene, check, s))));
 }
 
 void TestRenderReference::wrongVariantsFail_data()
@@ -68,12 +68,18 @@ void TestRenderReference::wrongVariantsFail_data()
     QTest::addColumn<QString>("scene");
     QTest::addColumn<QString>("vertex");   // empty: the shipped one
     QTest::addColumn<QString>("fragment"); // empty: the shipped one
-    QTest::newRow("normals by model-view (non-uniform scale)")
-        << "gl_ellipsoid_nonuniform" << "shaders/wrong_normal_modelview.vert" << "";
-    QTest::newRow("direction with w = 1") << "gl_sphere_one_light" << "" << "shaders/wrong_direction_w1.frag";
-    QTest::newRow("direction with w = 1, ellipsoid")
-        << "gl_ellipsoid_nonuniform" << "" << "shaders/wrong_direction_w1.frag";
-    QTest::newRow("lights left in world space") << "gl_sphere_attenuated" << "" << "shaders/wrong_light_not_viewed.frag";
+    QTest::newRow("normals by model-view (non-uniform scale)") << "gl_ellipsoid_nonuniform"
+                                                               << "shaders/wrong_normal_modelview.vert"
+                                                               << "";
+    QTest::newRow("direction with w = 1") << "gl_sphere_one_light"
+                                          << ""
+                                          << "shaders/wrong_direction_w1.frag";
+    QTest::newRow("direction with w = 1, ellipsoid") << "gl_ellipsoid_nonuniform"
+                                                     << ""
+                                                     << "shaders/wrong_direction_w1.frag";
+    QTest::newRow("lights left in world space") << "gl_sphere_attenuated"
+                                                << ""
+                                                << "shaders/wrong_light_not_viewed.frag";
 }
 
 void TestRenderReference::wrongVariantsFail()
@@ -114,8 +120,8 @@ void TestRenderReference::lightStaysInWorldWhileCameraOrbits()
 
         // The same view with lights kept in world coordinates as if they were
         // camera coordinates (a light that follows the camera) must not match.
-        const RenderCheck wrong = checkAgainstReference(s, std::nullopt,
-                                                        testShader(QStringLiteral("shaders/wrong_light_not_viewed.frag")));
+        const RenderCheck wrong =
+            checkAgainstReference(s, std::nullopt, testShader(QStringLiteral("shaders/wrong_light_not_viewed.frag")));
         QVERIFY2(!wrong.matches(), qPrintable(wrong.comparison.summary()));
     }
 }

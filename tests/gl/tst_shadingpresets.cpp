@@ -138,8 +138,8 @@ void TestShadingPresets::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
     QVERIFY(m_dir.isValid());
-    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px",
-          kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
+    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px", kMinPsnrDb,
+          kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
 }
 
 void TestShadingPresets::report(const QString &name, const RenderCheck &check)
@@ -155,8 +155,8 @@ void TestShadingPresets::verifyMatches(const QString &name, const RenderCheck &c
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                             .arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
+        QFAIL(qPrintable(
+            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
 }
 
 // --- Every preset builds, and reads only what phong.* reads ------------------
@@ -185,8 +185,9 @@ void TestShadingPresets::presetBuilds()
     // zeros, so its active uniforms must be a subset of Phong's.
     ShaderProgram phong, preset;
     QVERIFY(phong.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag"))).ok);
-    QVERIFY(preset.build(shippedShader(method + QStringLiteral(".vert")),
-                         shippedShader(method + QStringLiteral(".frag"))).ok);
+    QVERIFY(
+        preset.build(shippedShader(method + QStringLiteral(".vert")), shippedShader(method + QStringLiteral(".frag")))
+            .ok);
     const QSet<QByteArray> allowedUniforms = activeUniformNames(phong.id());
     const QSet<QByteArray> uniforms = activeUniformNames(preset.id());
     const QSet<QByteArray> attributes = activeAttributes(preset.id());
@@ -197,8 +198,9 @@ void TestShadingPresets::presetBuilds()
     // Blinn-Phong's exponentFactor starts at the matched 4.
     const QHash<QByteArray, float> ownDefaults{{"exponentFactor", float(kBlinnExponentFactor)}};
     for (const QByteArray &extra : uniforms - allowedUniforms) {
-        QVERIFY2(ownDefaults.contains(extra),
-                 qPrintable(QStringLiteral("uniform phong.* does not have and nobody sets: ") + QString::fromLatin1(extra)));
+        QVERIFY2(
+            ownDefaults.contains(extra),
+            qPrintable(QStringLiteral("uniform phong.* does not have and nobody sets: ") + QString::fromLatin1(extra)));
         QOpenGLExtraFunctions *gl = QOpenGLContext::currentContext()->extraFunctions();
         GLfloat value = 0.0f;
         gl->glGetUniformfv(preset.id(), gl->glGetUniformLocation(preset.id(), extra.constData()), &value);
@@ -249,8 +251,8 @@ void TestShadingPresets::blinnPhongMistakesFail()
         wrong->name = QStringLiteral("blinn-phong-with-reflect.frag");
     } else {
         // The half vector right, but max(0, N.H)^n: a highlight twice as wide.
-        wrong = mutatedShader(QStringLiteral("blinn-phong.frag"),
-                              "float exponent = exponentFactor * shininess;", "float exponent = shininess;");
+        wrong = mutatedShader(QStringLiteral("blinn-phong.frag"), "float exponent = exponentFactor * shininess;",
+                              "float exponent = shininess;");
         QVERIFY2(wrong, "the shipped blinn-phong.frag no longer has the line this test changes");
     }
 
@@ -345,7 +347,8 @@ void TestShadingPresets::gouraudWorseThanPhongOnCoarseSphere()
     // factor pins the direction with room to spare, not this machine's number.
     QVERIFY2(gouraudError.rmse > kClearlyWorse * phongError.rmse,
              qPrintable(QStringLiteral("Gouraud RMSE %1 is not clearly above Phong's %2")
-                            .arg(gouraudError.rmse).arg(phongError.rmse)));
+                            .arg(gouraudError.rmse)
+                            .arg(phongError.rmse)));
     std::vector<std::uint8_t> highlight(phong.referenceData.color.size(), 0);
     for (std::size_t i = 0; i < highlight.size(); ++i) {
         const glm::dvec3 &sp = phong.referenceData.specular[i];
@@ -361,7 +364,8 @@ void TestShadingPresets::gouraudWorseThanPhongOnCoarseSphere()
     QVERIFY(phongHighlight.pixelsCompared > 100);
     QVERIFY2(gouraudHighlight.rmse > kClearlyWorse * phongHighlight.rmse,
              qPrintable(QStringLiteral("inside the highlight, Gouraud RMSE %1 is not clearly above Phong's %2")
-                            .arg(gouraudHighlight.rmse).arg(phongHighlight.rmse)));
+                            .arg(gouraudHighlight.rmse)
+                            .arg(phongHighlight.rmse)));
 }
 
 // --- Flat ----------------------------------------------------------------------
@@ -417,7 +421,7 @@ void TestShadingPresets::cliRendersGouraudScene()
 
     const QString png = m_dir.filePath(QStringLiteral("gouraud.png"));
     const ProcessRun r = runPhonglab({QStringLiteral("render"), scenePath, QStringLiteral("-o"), png,
-                               QStringLiteral("--size"), QStringLiteral("96x64")});
+                                      QStringLiteral("--size"), QStringLiteral("96x64")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QCOMPARE(QImage(png).size(), QSize(96, 64));
 }
@@ -429,9 +433,9 @@ void TestShadingPresets::cliShadingOverridesScene()
     // the camera, so it must come out as N = (0, 0, 1) -> (128, 128, 255).
     const QString png = m_dir.filePath(QStringLiteral("normals.png"));
     const ProcessRun r = runPhonglab({QStringLiteral("render"),
-                               QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
-                               QStringLiteral("-o"), png, QStringLiteral("--size"), QStringLiteral("65x65"),
-                               QStringLiteral("--shading"), QStringLiteral("normals")});
+                                      QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
+                                      QStringLiteral("-o"), png, QStringLiteral("--size"), QStringLiteral("65x65"),
+                                      QStringLiteral("--shading"), QStringLiteral("normals")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const QColor centre = QImage(png).pixelColor(32, 32);
     qInfo("--shading normals, centre pixel: (%d, %d, %d)", centre.red(), centre.green(), centre.blue());
@@ -444,9 +448,9 @@ void TestShadingPresets::cliRejectsUnknownShading()
 {
     QVERIFY2(QFileInfo(phonglabExecutable()).isExecutable(), qPrintable(phonglabExecutable()));
     const QString png = m_dir.filePath(QStringLiteral("nosuch.png"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"),
-                               QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
-                               QStringLiteral("-o"), png, QStringLiteral("--shading"), QStringLiteral("nosuch")});
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("render"), QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
+         QStringLiteral("-o"), png, QStringLiteral("--shading"), QStringLiteral("nosuch")});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(QStringLiteral("nosuch")), qPrintable(r.err));
     for (const QString &name : shadingNames())

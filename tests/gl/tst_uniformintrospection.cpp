@@ -94,15 +94,31 @@ void TestUniformIntrospection::phongProgramListsItsActiveUniforms()
     QStringList names;
     for (const ActiveUniformInfo &u : active)
         names.append(QString::fromUtf8(u.name));
-    const QStringList expected = {"Ia", "Id", "Is", "attenuation", "ka", "kd", "ks", "lightCount",
-                                  "lightPosition", "modelViewMatrix", "normalMatrix", "projectionMatrix",
-                                  "shininess", "viewMatrix"};
+    const QStringList expected = {"Ia",
+                                  "Id",
+                                  "Is",
+                                  "attenuation",
+                                  "ka",
+                                  "kd",
+                                  "ks",
+                                  "lightCount",
+                                  "lightPosition",
+                                  "modelViewMatrix",
+                                  "normalMatrix",
+                                  "projectionMatrix",
+                                  "shininess",
+                                  "viewMatrix"};
     QCOMPARE(names, expected); // sorted by name (byte order: capitals first)
 
-    struct Expect { const char *name; GLenum type; int size; bool isArray; };
+    struct Expect {
+        const char *name;
+        GLenum type;
+        int size;
+        bool isArray;
+    };
     const Expect checks[] = {
-        {"kd", GL_FLOAT_VEC3, 1, false},      {"shininess", GL_FLOAT, 1, false},
-        {"lightCount", GL_INT, 1, false},     {"Id", GL_FLOAT_VEC3, 8, true},
+        {"kd", GL_FLOAT_VEC3, 1, false},           {"shininess", GL_FLOAT, 1, false},
+        {"lightCount", GL_INT, 1, false},          {"Id", GL_FLOAT_VEC3, 8, true},
         {"lightPosition", GL_FLOAT_VEC3, 8, true}, {"modelViewMatrix", GL_FLOAT_MAT4, 1, false},
         {"normalMatrix", GL_FLOAT_MAT3, 1, false},
     };
@@ -131,11 +147,10 @@ void TestUniformIntrospection::unusedUniformIsDeclaredButInactive()
 
 void TestUniformIntrospection::parsesAnnotations()
 {
-    const auto declared = parseUniformDeclarations(QStringLiteral(
-        "uniform float gain; // @range 0 2 @step 0.05\n"
-        "uniform vec3 tint;  // the tint @color\n"
-        "uniform float bad;  // @range 2 1 @step -1\n"
-        "uniform float plain;\n"));
+    const auto declared = parseUniformDeclarations(QStringLiteral("uniform float gain; // @range 0 2 @step 0.05\n"
+                                                                  "uniform vec3 tint;  // the tint @color\n"
+                                                                  "uniform float bad;  // @range 2 1 @step -1\n"
+                                                                  "uniform float plain;\n"));
     QCOMPARE(int(declared.size()), 4);
     QVERIFY(declared[0].hasRange());
     QCOMPARE(*declared[0].rangeLow, 0.0);
@@ -151,12 +166,12 @@ void TestUniformIntrospection::parsesAnnotations()
 
 void TestUniformIntrospection::parsesDeclarations()
 {
-    const auto declared = parseUniformDeclarations(QStringLiteral(
-        "const int MAX_LIGHTS = 8;\n"
-        "uniform vec3 Id[MAX_LIGHTS];   // diffuse intensity\n"
-        "uniform float a, b[4], c; // @range -1 1\n"
-        "layout(location = 3) uniform highp mat4 m;\n"
-        "  uniform sampler2D image;\n"));
+    const auto declared =
+        parseUniformDeclarations(QStringLiteral("const int MAX_LIGHTS = 8;\n"
+                                                "uniform vec3 Id[MAX_LIGHTS];   // diffuse intensity\n"
+                                                "uniform float a, b[4], c; // @range -1 1\n"
+                                                "layout(location = 3) uniform highp mat4 m;\n"
+                                                "  uniform sampler2D image;\n"));
     QCOMPARE(int(declared.size()), 6);
     QCOMPARE(declared[0].name, QStringLiteral("Id"));
     QCOMPARE(declared[0].type, QStringLiteral("vec3"));
@@ -178,13 +193,12 @@ void TestUniformIntrospection::parsesDeclarations()
 
 void TestUniformIntrospection::ignoresCommentsAndOtherLines()
 {
-    const auto declared = parseUniformDeclarations(QStringLiteral(
-        "// uniform float commented;\n"
-        "/* uniform float blocked;\n"
-        "   uniform float stillBlocked; */\n"
-        "in vec3 normalCam;\n"
-        "uniform Lights { vec3 p; };\n"
-        "uniform float kept;\n"));
+    const auto declared = parseUniformDeclarations(QStringLiteral("// uniform float commented;\n"
+                                                                  "/* uniform float blocked;\n"
+                                                                  "   uniform float stillBlocked; */\n"
+                                                                  "in vec3 normalCam;\n"
+                                                                  "uniform Lights { vec3 p; };\n"
+                                                                  "uniform float kept;\n"));
     QCOMPARE(int(declared.size()), 1);
     QCOMPARE(declared[0].name, QStringLiteral("kept"));
     // phong.frag declares 11 of the program's 14 uniforms (the matrices are in phong.vert).

@@ -7,7 +7,7 @@ namespace phonglab::test {
 
 // One run of the real `phonglab` executable, as a script sees it.
 struct ProcessRun {
-    int exitCode = -1;   // -1: did not finish in time, -2: crashed
+    int exitCode = -1; // -1: did not finish in time, -2: crashed
     QByteArray out;
     QString err;
 };

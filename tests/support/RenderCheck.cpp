@@ -8,9 +8,9 @@
 
 #include <QDir>
 
+#include <QTest>
 #include <algorithm>
 #include <cmath>
-#include <QTest>
 
 namespace phonglab::test {
 
@@ -41,7 +41,8 @@ QImage quantised(const std::vector<float> &rgba, const QSize &size, qint64 *nonF
             const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
             *nonFinite += !finite;
             for (int c = 0; c < 3; ++c)
-                line[x * 3 + c] = finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
+                line[x * 3 + c] =
+                    finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
         }
     }
     return image;

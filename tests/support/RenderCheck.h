@@ -1,8 +1,8 @@
 #pragma once
 #include "core/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
-#include "core/Scene.h"
 #include "core/MeshData.h"
+#include "core/Scene.h"
 #include "render/CompileResult.h"
 #include "render/ShaderSource.h"
 
@@ -18,17 +18,17 @@ namespace phonglab::test {
 // double-precision ray-cast reference, outside a thin silhouette band (where
 // the tessellated outline and the true outline cover different pixels).
 inline constexpr double kMinPsnrDb = 50.0;
-inline constexpr int kMaxErrorSteps = 3;   // in 8-bit steps, per channel
+inline constexpr int kMaxErrorSteps = 3; // in 8-bit steps, per channel
 inline constexpr int kSilhouetteBandPx = 2;
 inline constexpr int kTestImageSide = 256;
 
 struct RenderCheck {
     QImage gpu;
     QImage reference;
-    ReferenceImage referenceData;  // the unquantised reference behind `reference`
+    ReferenceImage referenceData; // the unquantised reference behind `reference`
     ImageComparison comparison;
     CompileResult compile;
-    QString error;                 // set when something could not run at all
+    QString error; // set when something could not run at all
     // With CheckOptions::floatTarget: pixels whose R, G or B came out NaN or
     // infinite (drawn magenta in `gpu`); -1 when not rendered that way.
     qint64 nonFinitePixels = -1;
@@ -65,8 +65,7 @@ struct CheckOptions {
 // the ray-cast reference. Creates its own context; call from the GUI thread
 // of a QGuiApplication.
 RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &options);
-RenderCheck checkAgainstReference(const Scene &scene,
-                                  const std::optional<ShaderSource> &vertex = std::nullopt,
+RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex = std::nullopt,
                                   const std::optional<ShaderSource> &fragment = std::nullopt,
                                   const QHash<QString, QString> &standIns = {});
 

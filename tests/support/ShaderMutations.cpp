@@ -24,7 +24,8 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
     if (!source.code.contains(from))
         qFatal("%s: the shipped shader no longer contains \"%s\"", qPrintable(source.name), from);
     source.code.replace(from, to);
-    source.name = key + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert") : QStringLiteral(".frag"));
+    source.name =
+        key + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert") : QStringLiteral(".frag"));
 }
 
 constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
@@ -57,9 +58,7 @@ ShaderPair withMistake(ShaderMistake mistake)
         // The lit position only: gl_Position keeps w = 1, or nothing would be drawn.
         replace(s.vertex, "positionCam = p.xyz;", "positionCam = (modelViewMatrix * vec4(position, 0.0)).xyz;", key);
         break;
-    case ShaderMistake::ReflectIncident:
-        replace(s.fragment, "reflect(-L, N)", "reflect(L, N)", key);
-        break;
+    case ShaderMistake::ReflectIncident: replace(s.fragment, "reflect(-L, N)", "reflect(L, N)", key); break;
     case ShaderMistake::ViewVector:
         replace(s.fragment, "vec3 V = normalize(-positionCam);", "vec3 V = normalize(positionCam);", key);
         break;
@@ -82,11 +81,8 @@ ShaderPair withMistake(ShaderMistake mistake)
         replace(s.fragment, kGuard, "", key);
         replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", key);
         break;
-    case ShaderMistake::Ambient:
-        replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
-        break;
-    case ShaderMistake::Gouraud:
-        break;
+    case ShaderMistake::Ambient: replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key); break;
+    case ShaderMistake::Gouraud: break;
     }
     return s;
 }

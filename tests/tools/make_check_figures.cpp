@@ -62,7 +62,8 @@ int main(int argc, char **argv)
     QStringList names{QStringLiteral("shipped")};
     names << shaderMistakeKeys();
     for (const QString &name : names) {
-        const ShaderPair shaders = name == QLatin1String("shipped") ? shippedPhong() : withMistake(*shaderMistakeFromKey(name));
+        const ShaderPair shaders =
+            name == QLatin1String("shipped") ? shippedPhong() : withMistake(*shaderMistakeFromKey(name));
         const QImage yours = render(shaders);
         const CheckReport report = checkRender(yours, reference);
         const QString path = QDir(folder).filePath(name + QStringLiteral(".png"));

@@ -5,10 +5,10 @@
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
-#include "ui/LightsDock.h"
-#include "ui/LiveShaderController.h"
 #include "ui/CheckOverlay.h"
+#include "ui/LightsDock.h"
 #include "ui/LiveCheck.h"
+#include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/PerformanceDock.h"
 #include "ui/SceneEditDocks.h"
@@ -121,7 +121,8 @@ int main(int argc, char **argv)
     // Fit to budget on the sphere scene: the dock measures the view with the
     // phonglab binary beside this tool's build folder.
     if (qEnvironmentVariableIsEmpty("PHONGLAB_EXE"))
-        qputenv("PHONGLAB_EXE", (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab")).toUtf8());
+        qputenv("PHONGLAB_EXE",
+                (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab")).toUtf8());
     if (!window.openScene(assetPath(QStringLiteral("scenes/sphere.json")), &error)) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
         return 1;

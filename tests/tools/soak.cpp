@@ -83,7 +83,8 @@ bool waitFor(const std::function<bool()> &done, int timeoutMs)
 class Session
 {
 public:
-    explicit Session(MainWindow &window) : m_window(window)
+    explicit Session(MainWindow &window)
+        : m_window(window)
     {
         LiveShaderController *live = window.liveShaders();
         QObject::connect(live, &LiveShaderController::programApplied, [this] { ++m_outcomes; });
@@ -149,7 +150,8 @@ int main(int argc, char **argv)
     }
     window.resize(900, 600);
     window.show();
-    if (!QTest::qWaitForWindowExposed(&window) || !waitFor([&] { return window.viewport()->framesRendered() > 0; }, 20000)) {
+    if (!QTest::qWaitForWindowExposed(&window)
+        || !waitFor([&] { return window.viewport()->framesRendered() > 0; }, 20000)) {
         std::fprintf(stderr, "soak: the window never drew a frame\n");
         return 1;
     }

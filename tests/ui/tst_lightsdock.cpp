@@ -22,8 +22,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLineEdit>
 #include <QListWidget>
@@ -35,8 +35,8 @@ using namespace phonglab;
 
 namespace {
 
-constexpr int kGridStep = 6;     // pixels compared with the reference, every kGridStep-th
-constexpr int kInteriorPx = 2;   // skip pixels this near the silhouette
+constexpr int kGridStep = 6;   // pixels compared with the reference, every kGridStep-th
+constexpr int kInteriorPx = 2; // skip pixels this near the silhouette
 
 QString sphereScenePath()
 {
@@ -78,11 +78,13 @@ QString compareWithReference(const QImage &grab, const Scene &scene)
                 continue;
             ++compared;
             const QRgb a = actual.pixel(x, y), e = expected.pixel(x, y);
-            const int err = std::max({std::abs(qRed(a) - qRed(e)), std::abs(qGreen(a) - qGreen(e)),
-                                      std::abs(qBlue(a) - qBlue(e))});
+            const int err =
+                std::max({std::abs(qRed(a) - qRed(e)), std::abs(qGreen(a) - qGreen(e)), std::abs(qBlue(a) - qBlue(e))});
             if (err > test::kMaxErrorSteps)
                 return QStringLiteral("pixel (%1, %2): %3 vs reference %4")
-                    .arg(x).arg(y).arg(QColor(a).name(), QColor(e).name());
+                    .arg(x)
+                    .arg(y)
+                    .arg(QColor(a).name(), QColor(e).name());
         }
     return compared > 50 ? QString() : QStringLiteral("only %1 pixels compared").arg(compared);
 }
@@ -150,8 +152,9 @@ void TestLightsDock::verifyMatchesReference()
     const QString mismatch = compareWithReference(frame(), scene);
     QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
     const test::RenderCheck check = test::checkAgainstReference(scene);
-    QVERIFY2(check.matches(), qPrintable(check.error + QStringLiteral(" psnr %1 max %2")
-                                             .arg(check.comparison.psnr).arg(check.comparison.maxError)));
+    QVERIFY2(check.matches(),
+             qPrintable(check.error
+                        + QStringLiteral(" psnr %1 max %2").arg(check.comparison.psnr).arg(check.comparison.maxError)));
 }
 
 void TestLightsDock::kdEditChangesFrameAndMatchesReference()
@@ -166,8 +169,8 @@ void TestLightsDock::kdEditChangesFrameAndMatchesReference()
     // For a look at the docks: PHONGLAB_TEST_ARTIFACTS=<folder>.
     const QString artifacts = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
     if (!artifacts.isEmpty() && QDir().mkpath(artifacts)) {
-        for (QDockWidget *dock : {static_cast<QDockWidget *>(docks()->lightsDock()),
-                                  static_cast<QDockWidget *>(panel), static_cast<QDockWidget *>(docks()->objectPanel())}) {
+        for (QDockWidget *dock : {static_cast<QDockWidget *>(docks()->lightsDock()), static_cast<QDockWidget *>(panel),
+                                  static_cast<QDockWidget *>(docks()->objectPanel())}) {
             dock->raise();
             m_window->grab().save(QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
         }
@@ -236,7 +239,7 @@ void TestLightsDock::badValuesAreRefused()
         const glm::dvec3 shown = c.field->value();
         type(c.field, c.value);
         QVERIFY2(!c.field->errorText().isEmpty(), "no reason shown");
-        QCOMPARE(c.field->value(), shown); // the last valid value stays...
+        QCOMPARE(c.field->value(), shown);                                            // the last valid value stays...
         QCOMPARE(c.field->component(1)->text(), QLocale().toString(shown.y, 'g', 6)); // ...in the field too
         QCOMPARE(stack->count(), 0);
         QCOMPARE(viewport()->currentScene(), scene);
@@ -313,7 +316,7 @@ void TestLightsDock::switchedOffLightIsNotRendered()
     QVERIFY(!viewport()->currentScene().lights[0].enabled);        // ...switched off
     QCOMPARE(dock->switchedOffCount(), 1);
     QVERIFY(frame() != lit);
-    verifyMatchesReference(); // ambient only: the CPU reference skips it too
+    verifyMatchesReference();                  // ambient only: the CPU reference skips it too
     QVERIFY(!dock->setLightEnabled(0, false)); // already off
     QVERIFY(dock->setLightEnabled(0, true));
     QVERIFY(frame() == lit);

@@ -47,7 +47,8 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
         QVERIFY(waitForVerdict(true));
-        QVERIFY2(check->statusLabel()->text().startsWith(QStringLiteral("✓")), qPrintable(check->statusLabel()->text()));
+        QVERIFY2(check->statusLabel()->text().startsWith(QStringLiteral("✓")),
+                 qPrintable(check->statusLabel()->text()));
 
         replaceInFragment(QStringLiteral("reflect(-L, N)"), QStringLiteral("reflect(L, N)"));
         QVERIFY(waitForVerdict(false));
@@ -70,7 +71,8 @@ private slots:
                 const int error = errors[reference.exact.index(x, y)];
                 if (error < 0)
                     continue;
-                const bool mistakeShows = maxChannelDifference(mistaken.pixel(x, y), result.exact.pixel(x, y)) > kTolerance;
+                const bool mistakeShows =
+                    maxChannelDifference(mistaken.pixel(x, y), result.exact.pixel(x, y)) > kTolerance;
                 const QRgb heat = result.heatmap.pixel(x, y);
                 if (mistakeShows) {
                     ++shows;
@@ -83,7 +85,8 @@ private slots:
         }
         QVERIFY2(shows > 1000 && hidden > 1000, qPrintable(QStringLiteral("%1 %2").arg(shows).arg(hidden)));
         QVERIFY2(showsAndOff >= 0.97 * shows, qPrintable(QStringLiteral("%1 of %2").arg(showsAndOff).arg(shows)));
-        QVERIFY2(hiddenAndExact >= 0.995 * hidden, qPrintable(QStringLiteral("%1 of %2").arg(hiddenAndExact).arg(hidden)));
+        QVERIFY2(hiddenAndExact >= 0.995 * hidden,
+                 qPrintable(QStringLiteral("%1 of %2").arg(hiddenAndExact).arg(hidden)));
 
         // The overlay draws that heatmap over the view.
         check->setOverlayMode(OverlayMode::Heatmap);

@@ -21,8 +21,8 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QProcess>
-#include <QStatusBar>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
@@ -251,7 +251,7 @@ void TestLiveEdit::unchangedTextIsNotRebuilt()
     QVERIFY(waitForApplied());
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
     typeAfter(QStringLiteral("vec4(I * 0.5"), QStringLiteral("1")); // 0.51 ...
-    QTest::keyClick(fragmentEditor(), Qt::Key_Backspace);             // ... and back
+    QTest::keyClick(fragmentEditor(), Qt::Key_Backspace);           // ... and back
     QTest::qWait(live()->debounceMs() + 300);
     QCOMPARE(applied.count(), 0);
     // F5 builds even unchanged text.
@@ -347,7 +347,7 @@ void TestLiveEdit::killedSessionIsRestored()
     QVERIFY(dock()->text(ShaderStage::Fragment).contains(marker.toUtf8()));
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));
     QVERIFY(!live()->isAutoBuildHeld());
-    QVERIFY(waitForApplied()); // a plain edit: built as usual
+    QVERIFY(waitForApplied());                                         // a plain edit: built as usual
     QVERIFY(RecoveryJournal(m_env.recoveryDir()).orphans().isEmpty()); // adopted, not offered again
 }
 
@@ -355,7 +355,8 @@ void TestLiveEdit::suspectShaderWaitsForF5()
 {
     RecoveryRecord record;
     const QByteArray shippedFragment = readShipped(QStringLiteral("phong.frag"));
-    record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")), readShipped(QStringLiteral("phong.vert")), false};
+    record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")), readShipped(QStringLiteral("phong.vert")),
+                     false};
     QByteArray suspect = shippedFragment;
     suspect.replace(kOutputLine.toUtf8(), "fragColor = vec4(I * 0.25, 1.0);");
     QVERIFY(suspect != shippedFragment);

@@ -2,9 +2,9 @@
 // Xvfb): the default scene is drawn and lit, bad files leave the scene alone,
 // the mouse moves the camera, reset restores it, and saving round-trips.
 
+#include "PixelDiff.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "PixelDiff.h"
 #include "core/SceneJson.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
@@ -173,7 +173,8 @@ void TestMainWindow::showsFrameStatsAndRenderer()
         texts.clear();
         for (const QLabel *label : m_window->statusBar()->findChildren<QLabel *>())
             texts << label->text();
-        return texts.join(u'|').contains(QStringLiteral(" ms")) && texts.join(u'|').contains(QStringLiteral("triangles"));
+        return texts.join(u'|').contains(QStringLiteral(" ms"))
+            && texts.join(u'|').contains(QStringLiteral("triangles"));
     }());
     QVERIFY2(texts.join(u'|').contains(QStringLiteral("OpenGL")), qPrintable(texts.join(u'|')));
     QVERIFY(viewport()->glRendererName().startsWith(QStringLiteral("OpenGL")));
@@ -205,10 +206,11 @@ void TestMainWindow::failedOpenKeepsCurrentScene_data()
 {
     QTest::addColumn<QByteArray>("contents");
     QTest::addColumn<QString>("expectedError");
-    QTest::newRow("malformed JSON") << QByteArray("{ \"mesh\": \"builtin:torus\", ") << QStringLiteral("JSON syntax error");
-    QTest::newRow("missing mesh file")
-        << QByteArray(R"({"mesh": "no-such-mesh.obj", "lights": [{"position": [1, 1, 1]}]})")
-        << QStringLiteral("no-such-mesh.obj");
+    QTest::newRow("malformed JSON") << QByteArray("{ \"mesh\": \"builtin:torus\", ")
+                                    << QStringLiteral("JSON syntax error");
+    QTest::newRow("missing mesh file") << QByteArray(
+        R"({"mesh": "no-such-mesh.obj", "lights": [{"position": [1, 1, 1]}]})")
+                                       << QStringLiteral("no-such-mesh.obj");
 }
 
 void TestMainWindow::failedOpenKeepsCurrentScene()

@@ -5,9 +5,9 @@
 // Broken and unsupported files, and cancelling, leave the scene alone.
 
 #include "ImportChildren.h"
+#include "PixelDiff.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "PixelDiff.h"
 #include "core/SceneJson.h"
 #include "mesh/MeshLoader.h"
 #include "ui/LoadProgressWidget.h"
@@ -51,10 +51,16 @@ constexpr int kLoadTimeoutMs = 120000;  // llvmpipe and a debug build can be slo
 constexpr int kBackgroundTolerance = 6; // 8-bit steps, per channel
 constexpr int kLargeGridSide = 710;     // 2 · 709² ≈ 1M triangles: loads for a good fraction of a second
 constexpr int kTickIntervalMs = 10;
-constexpr qint64 kMaxTickGapMs = 250;   // a frame or two of llvmpipe, far below the large mesh's load time
+constexpr qint64 kMaxTickGapMs = 250; // a frame or two of llvmpipe, far below the large mesh's load time
 
-QString treePath() { return sourcePath(QStringLiteral("assets/meshes/tree.obj")); }
-QString cloudPath() { return sourcePath(QStringLiteral("assets/meshes/cloud.obj")); }
+QString treePath()
+{
+    return sourcePath(QStringLiteral("assets/meshes/tree.obj"));
+}
+QString cloudPath()
+{
+    return sourcePath(QStringLiteral("assets/meshes/cloud.obj"));
+}
 
 double foregroundFraction(const QImage &frame, const glm::dvec3 &background)
 {
@@ -374,7 +380,9 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     const qint64 allowedGapMs = std::max(kMaxTickGapMs, loadMs / 4);
     QVERIFY2(longestGapMs < allowedGapMs, qPrintable(QString::number(longestGapMs)));
     QVERIFY(viewport()->framesRendered() > framesBefore);
-    QCOMPARE(viewport()->meshInfo().value(meshKey(viewport()->currentScene(), viewport()->currentScene().objects[0]))
+    QCOMPARE(viewport()
+                 ->meshInfo()
+                 .value(meshKey(viewport()->currentScene(), viewport()->currentScene().objects[0]))
                  .stats.triangles,
              qint64(2) * (kLargeGridSide - 1) * (kLargeGridSide - 1));
 }
@@ -418,7 +426,8 @@ void TestMeshLoading::hangingReaderIsStoppedAndSceneKept()
     QVERIFY(importChildren().isEmpty());
     QMessageBox *box = visibleMessageBox();
     QVERIFY(box);
-    QVERIFY(box->text().contains(QStringLiteral("hangs.obj")) || box->informativeText().contains(QStringLiteral("hangs.obj"))
+    QVERIFY(box->text().contains(QStringLiteral("hangs.obj"))
+            || box->informativeText().contains(QStringLiteral("hangs.obj"))
             || box->detailedText().contains(QStringLiteral("hangs.obj")));
     box->close();
 }
@@ -536,7 +545,8 @@ void TestMeshLoading::droppedFilesOpenSideBySide()
     for (int i = 0; i < 2; ++i) {
         const MeshStats stats = viewport()->meshInfo().value(meshKey(scene, scene.objects[i])).stats;
         const Transform &t = scene.objects[i].transform;
-        const glm::dvec3 centreWorld = t.translate + t.scale * (glm::dvec3(stats.boundsMin) + glm::dvec3(stats.boundsMax)) * 0.5;
+        const glm::dvec3 centreWorld =
+            t.translate + t.scale * (glm::dvec3(stats.boundsMin) + glm::dvec3(stats.boundsMax)) * 0.5;
         QVERIFY(glm::length(centreWorld - glm::dvec3((i - 0.5) * kSideBySideSpacing, 0, 0)) < 1e-6);
     }
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 2);
@@ -548,7 +558,8 @@ void TestMeshLoading::droppedFilesOpenSideBySide()
     writeFile(text, "hello");
     QVERIFY(dropFiles({text}));
     QTRY_VERIFY(visibleMessageBox());
-    QVERIFY2(visibleMessageBox()->text().contains(QStringLiteral("readme.txt")), qPrintable(visibleMessageBox()->text()));
+    QVERIFY2(visibleMessageBox()->text().contains(QStringLiteral("readme.txt")),
+             qPrintable(visibleMessageBox()->text()));
     QVERIFY(!m_window->loadJob()->isRunning());
     QCOMPARE(viewport()->currentScene(), scene);
 
@@ -624,8 +635,9 @@ void TestMeshLoading::warningsAreListed()
     // A tetrahedron with two vertices no face uses and a face pointing past
     // the last vertex: loading repairs both and says so.
     const QString path = m_dir.filePath(QStringLiteral("repaired.obj"));
-    writeFile(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nv 6 6 6\n"
-                    "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 2 99\n");
+    writeFile(path,
+              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nv 6 6 6\n"
+              "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 2 99\n");
     const MeshLoadResult reference = loadMesh(path);
     QVERIFY2(reference.ok(), qPrintable(reference.error));
     QVERIFY(!reference.warnings.isEmpty());

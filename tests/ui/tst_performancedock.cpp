@@ -60,8 +60,9 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
     QCOMPARE(dock()->budget().kind, ErrorBudget::Kind::MaxError);
     QCOMPARE(dock()->budget().maxError, 2);
     qint64 trianglesBefore = 0;
-    connect(viewport(), &Viewport::frameRendered, this,
-            [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; }, Qt::SingleShotConnection);
+    connect(
+        viewport(), &Viewport::frameRendered, this,
+        [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; }, Qt::SingleShotConnection);
     viewport()->update();
     QTRY_VERIFY(trianglesBefore > 0);
 

@@ -68,16 +68,16 @@ QString currentCompletion(ShaderEditor &editor)
     return QString::fromUtf8(buffer.left(size));
 }
 
-const QByteArray kSmallShader = "#version 330 core\n"         // 1
-                                "// lighting\n"               // 2
-                                "uniform vec3 kd;\n"          // 3
-                                "in vec3 normalCam;\n"        // 4
-                                "out vec4 fragColor;\n"       // 5
-                                "void main()\n"               // 6
-                                "{\n"                         // 7
-                                "    vec3 N = normalize(normalCam);\n" // 8
+const QByteArray kSmallShader = "#version 330 core\n"                    // 1
+                                "// lighting\n"                          // 2
+                                "uniform vec3 kd;\n"                     // 3
+                                "in vec3 normalCam;\n"                   // 4
+                                "out vec4 fragColor;\n"                  // 5
+                                "void main()\n"                          // 6
+                                "{\n"                                    // 7
+                                "    vec3 N = normalize(normalCam);\n"   // 8
                                 "    fragColor = vec4(kd * N.z, 1.0);\n" // 9
-                                "}\n";                        // 10
+                                "}\n";                                   // 10
 
 } // namespace
 
@@ -180,14 +180,16 @@ void TestShaderEditor::lexerColoursKeywordsBuiltinsAndComments()
                                    lexer->color(directive), lexer->color(QsciLexerCPP::Identifier)};
     for (qsizetype i = 0; i < colours.size(); ++i)
         for (qsizetype j = i + 1; j < colours.size(); ++j)
-            QVERIFY2(colours[i] != colours[j], qPrintable(QStringLiteral("styles %1 and %2 share a colour").arg(i).arg(j)));
+            QVERIFY2(colours[i] != colours[j],
+                     qPrintable(QStringLiteral("styles %1 and %2 share a colour").arg(i).arg(j)));
 }
 
 void TestShaderEditor::errorMarksOnlyItsLine()
 {
     ShaderEditor editor;
     editor.setCode(kSmallShader);
-    editor.setDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 8, 14, QStringLiteral("no function 'normalize' for ivec3"))});
+    editor.setDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 8, 14,
+                                      QStringLiteral("no function 'normalize' for ivec3"))});
 
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{8});
     QVERIFY(editor.markerLines(Severity::Warning).isEmpty());
@@ -351,22 +353,24 @@ void TestShaderEditor::callTipExplainsIncidentVector()
 
     ShaderEditor editor;
     QList<int> shifts;
-    const QStringList tips = editor.api()->callTips({QStringLiteral("reflect"), QString()}, 0,
-                                                    QsciScintilla::CallTipsNoContext, shifts);
+    const QStringList tips =
+        editor.api()->callTips({QStringLiteral("reflect"), QString()}, 0, QsciScintilla::CallTipsNoContext, shifts);
     QCOMPARE(tips, QStringList{tip});
-    QVERIFY(editor.api()->callTips({QStringLiteral("kd"), QString()}, 0, QsciScintilla::CallTipsNoContext, shifts).isEmpty());
+    QVERIFY(editor.api()
+                ->callTips({QStringLiteral("kd"), QString()}, 0, QsciScintilla::CallTipsNoContext, shifts)
+                .isEmpty());
 }
 
 void TestShaderEditor::declaredNamesCoverDeclarationForms()
 {
-    const QString code = QStringLiteral(
-        "// uniform vec3 commentedOut;\n"
-        "struct Light { vec3 position; float power; };\n"
-        "uniform Light lights[4];\n"
-        "layout(location = 0) in vec3 positionModel;\n"
-        "uniform mat4 modelMatrix, viewMatrix;\n"
-        "const int MAX_LIGHTS = 8;\n"
-        "float shade(vec3 N, in vec3 L) { float a = 1.0, b = max(a, 2.0); return a * b; }\n");
+    const QString code =
+        QStringLiteral("// uniform vec3 commentedOut;\n"
+                       "struct Light { vec3 position; float power; };\n"
+                       "uniform Light lights[4];\n"
+                       "layout(location = 0) in vec3 positionModel;\n"
+                       "uniform mat4 modelMatrix, viewMatrix;\n"
+                       "const int MAX_LIGHTS = 8;\n"
+                       "float shade(vec3 N, in vec3 L) { float a = 1.0, b = max(a, 2.0); return a * b; }\n");
     const QStringList names = GlslApi::parseDeclaredNames(code);
     for (const char *name : {"Light", "position", "power", "lights", "positionModel", "modelMatrix", "viewMatrix",
                              "MAX_LIGHTS", "shade", "N", "L", "a", "b"})
@@ -404,7 +408,8 @@ void TestShaderEditor::editingShippedShaderWritesUserCopy()
     // A clean shipped stage moves to its user copy on the first save.
     QCOMPARE(dock.filePath(ShaderStage::Vertex), shippedPath(QStringLiteral("phong.vert")));
     QVERIFY(dock.save(ShaderStage::Vertex, &error));
-    QCOMPARE(dock.filePath(ShaderStage::Vertex), QDir(ShaderFileSet::userFolder()).filePath(QStringLiteral("phong.vert")));
+    QCOMPARE(dock.filePath(ShaderStage::Vertex),
+             QDir(ShaderFileSet::userFolder()).filePath(QStringLiteral("phong.vert")));
     QCOMPARE(readAll(shippedPath(QStringLiteral("phong.vert"))), readAll(dock.filePath(ShaderStage::Vertex)));
 
     // Embedded resources are shipped too.
@@ -611,9 +616,10 @@ void TestShaderEditor::dockShowsErrorAnnotation()
     dock.resize(720, 640);
     dock.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dock));
-    dock.showDiagnostics(
-        {diagnostic(ShaderStage::Fragment, Severity::Error, 40, 26, QStringLiteral("'viewMatrx' undeclared identifier")),
-         diagnostic(ShaderStage::Fragment, Severity::Warning, 43, 15, QStringLiteral("'d' shadows a previous declaration"))});
+    dock.showDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 40, 26,
+                                     QStringLiteral("'viewMatrx' undeclared identifier")),
+                          diagnostic(ShaderStage::Fragment, Severity::Warning, 43, 15,
+                                     QStringLiteral("'d' shadows a previous declaration"))});
     dock.setCompileStatus(QStringLiteral("1 error — last good program still running"), false);
     dock.goTo(ShaderStage::Fragment, 40, 26);
     QTest::qWait(50);

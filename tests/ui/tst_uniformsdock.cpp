@@ -17,13 +17,13 @@
 #include "ui/UniformsDock.h"
 #include "ui/Viewport.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
-#include <QCheckBox>
 #include <QTemporaryDir>
 
 #include "core/SceneJson.h"
@@ -35,7 +35,6 @@ using namespace phonglab;
 using phonglab::test::sourcePath;
 
 namespace {
-
 
 } // namespace
 
@@ -194,8 +193,7 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error),
-             qPrintable(error));
+    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error), qPrintable(error));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
     typeInto(gainRow()->field(), QStringLiteral("1.5"));
     QCOMPARE(programValue("gain"), 1.5f);
@@ -252,7 +250,8 @@ void TestUniformsDock::colourIntAndBoolRows()
     openWindow();
     ShaderEditor *editor = fragmentEditor();
     editor->insertAt(QStringLiteral("uniform vec3 tint; // @color\nuniform int steps; // @range 0 8\n"
-                                    "uniform bool flip;\n"), 1, 0);
+                                    "uniform bool flip;\n"),
+                     1, 0);
     QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
     editor->replace(QStringLiteral("vec4(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
     m_window->shaderDock()->compileAction()->trigger();
@@ -262,7 +261,7 @@ void TestUniformsDock::colourIntAndBoolRows()
     auto *tint = qobject_cast<UniformVectorRow *>(dock()->row(QStringLiteral("tint")));
     QVERIFY(tint);
     QVERIFY(tint->isEnabled());
-    QVERIFY(tint->colorButton()); // @color on a vec3 that is not named like one
+    QVERIFY(tint->colorButton());             // @color on a vec3 that is not named like one
     QCOMPARE(tint->field(0)->maximum(), 1e6); // no @range: any finite number
     typeInto(tint->field(1), QStringLiteral("0.25"));
     viewport()->makeCurrent();

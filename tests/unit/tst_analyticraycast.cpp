@@ -153,7 +153,8 @@ private slots:
         QVERIFY(image.covered(125, 100));
         QVERIFY(image.covered(75, 100));
         QVERIFY(image.covered(100, 125));
-        QVERIFY2(std::abs(image.depthAt(125, 100) - 4.02) < 1e-9, qPrintable(QString::number(image.depthAt(125, 100), 'g', 17)));
+        QVERIFY2(std::abs(image.depthAt(125, 100) - 4.02) < 1e-9,
+                 qPrintable(QString::number(image.depthAt(125, 100), 'g', 17)));
         const glm::dvec3 expected = phongIntensity({1.0, 0.0, -4.02}, {0.0, 0.0, 1.0}, scene.objects[0].material,
                                                    scene.ambient, cameraLights(scene));
         QVERIFY(near(image.colorAt(125, 100), expected, 1e-9));

@@ -97,8 +97,7 @@ private slots:
         const QString png = dir.filePath("charts.png");
         const QString svg = dir.filePath("charts.svg");
         QString error;
-        QVERIFY2(writeSpeedAccuracyCharts(syntheticRows(), png, svg, &error, QSize(600, 420)),
-                 qPrintable(error));
+        QVERIFY2(writeSpeedAccuracyCharts(syntheticRows(), png, svg, &error, QSize(600, 420)), qPrintable(error));
 
         QImage image(png);
         QVERIFY(!image.isNull());
@@ -231,8 +230,8 @@ private slots:
         QVERIFY(!QFile::exists(dir.filePath("ok.svg")));
 
         error.clear();
-        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"),
-                                          dir.filePath("missing/charts.svg"), &error));
+        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"),
+                                          &error));
         QVERIFY2(error.contains("charts.svg"), qPrintable(error));
         QVERIFY(!QFile::exists(dir.filePath("ok.png")));
     }
@@ -275,10 +274,9 @@ private slots:
             double meanAngleDeg;
         };
         const std::vector<Row> rows = {
-            {"uv sphere", "area", 960, 0.12, 9.5, 2.1},   {"uv sphere", "angle", 960, 0.15, 6.0, 1.2},
-            {"uv sphere", "unweighted", 960, 0.10, 14.0, 3.4},
-            {"icosphere", "area", 1280, 0.14, 4.0, 0.9},  {"icosphere", "angle", 1280, 0.18, 3.1, 0.8},
-            {"icosphere", "unweighted", 1280, 0.11, 4.2, 0.95},
+            {"uv sphere", "area", 960, 0.12, 9.5, 2.1},        {"uv sphere", "angle", 960, 0.15, 6.0, 1.2},
+            {"uv sphere", "unweighted", 960, 0.10, 14.0, 3.4}, {"icosphere", "area", 1280, 0.14, 4.0, 0.9},
+            {"icosphere", "angle", 1280, 0.18, 3.1, 0.8},      {"icosphere", "unweighted", 1280, 0.11, 4.2, 0.95},
         };
         QTemporaryDir dir;
         const QString png = dir.filePath("normals.png");

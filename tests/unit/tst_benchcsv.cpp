@@ -87,11 +87,11 @@ class TestBenchCsv : public QObject
 private slots:
     void columnsAreTheInterface()
     {
-        const QStringList expected = {
-            "scene", "method", "detail", "triangles", "lights", "scene_lights", "frame_ms",
-            "frame_ms_p90", "cpu_submit_ms", "gpu_ms", "frames", "psnr_db", "rmse", "max_error",
-            "spec_psnr_db", "spec_rmse", "spec_max_error", "spec_pixels", "pixels_compared",
-            "coverage_errors"};
+        const QStringList expected = {"scene",          "method",       "detail",          "triangles",
+                                      "lights",         "scene_lights", "frame_ms",        "frame_ms_p90",
+                                      "cpu_submit_ms",  "gpu_ms",       "frames",          "psnr_db",
+                                      "rmse",           "max_error",    "spec_psnr_db",    "spec_rmse",
+                                      "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors"};
         QCOMPARE(benchCsvColumns(), expected);
         const QString csv = benchRowsToCsv({});
         QCOMPARE(csv, expected.join(',') + '\n');
@@ -245,11 +245,21 @@ private slots:
         QTest::addColumn<QString>("column");
         QTest::addColumn<QString>("value");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("triangles not whole") << "triangles" << "12.5" << "triangles is not a whole number: '12.5'";
-        QTest::newRow("scene_lights") << "scene_lights" << "yes" << "scene_lights is not 0 or 1: 'yes'";
-        QTest::newRow("max_error empty") << "max_error" << "" << "max_error is not a whole number: ''";
-        QTest::newRow("rmse trailing junk") << "rmse" << "1.5x" << "rmse is not a number: '1.5x'";
-        QTest::newRow("psnr infinity spelled wrong") << "psnr_db" << "infx" << "psnr_db is not a number: 'infx'";
+        QTest::newRow("triangles not whole") << "triangles"
+                                             << "12.5"
+                                             << "triangles is not a whole number: '12.5'";
+        QTest::newRow("scene_lights") << "scene_lights"
+                                      << "yes"
+                                      << "scene_lights is not 0 or 1: 'yes'";
+        QTest::newRow("max_error empty") << "max_error"
+                                         << ""
+                                         << "max_error is not a whole number: ''";
+        QTest::newRow("rmse trailing junk") << "rmse"
+                                            << "1.5x"
+                                            << "rmse is not a number: '1.5x'";
+        QTest::newRow("psnr infinity spelled wrong") << "psnr_db"
+                                                     << "infx"
+                                                     << "psnr_db is not a number: 'infx'";
     }
 
     void otherBadFieldsAreErrors()

@@ -108,8 +108,7 @@ void TestBinaryCounts::omChunkHeadersAreChecked_data()
         << 16 << (7u << 2) << (3u << 2) << 2 << "chunk 1 (byte 16): a chunk for an unknown kind of element (3)";
     QTest::newRow("positions in long doubles")
         << 16 << (3u << 14) << (2u << 14) << 2 << "a number size the reader does not know";
-    QTest::newRow("a million edges")
-        << 12 << 0xffffffffu << 1000000u << 4 << "halfedge topology) needs";
+    QTest::newRow("a million edges") << 12 << 0xffffffffu << 1000000u << 4 << "halfedge topology) needs";
 }
 
 void TestBinaryCounts::omChunkHeadersAreChecked()
@@ -125,7 +124,8 @@ void TestBinaryCounts::omChunkHeadersAreChecked()
         qToLittleEndian<quint16>(quint16((qFromLittleEndian<quint16>(bytes.constData() + at) & ~clear) | set),
                                  bytes.data() + at);
     else
-        qToLittleEndian<quint32>((qFromLittleEndian<quint32>(bytes.constData() + at) & ~clear) | set, bytes.data() + at);
+        qToLittleEndian<quint32>((qFromLittleEndian<quint32>(bytes.constData() + at) & ~clear) | set,
+                                 bytes.data() + at);
     expectRefused(QStringLiteral("changed.om"), bytes, message);
 }
 

@@ -53,7 +53,10 @@ std::vector<FileCorner> readCorners(const QString &path)
 }
 
 using Key = std::tuple<float, float, float>;
-Key key(const glm::vec3 &p) { return {p.x, p.y, p.z}; }
+Key key(const glm::vec3 &p)
+{
+    return {p.x, p.y, p.z};
+}
 
 double angleDeg(const glm::vec3 &a, const glm::vec3 &b)
 {
@@ -133,8 +136,8 @@ void TestBlenderNormals::flatTreeHasOneNormalPerFace()
 void TestBlenderNormals::computedNormalsApproachTheSphere_data()
 {
     QTest::addColumn<QString>("method");
-    QTest::addColumn<double>("maxDeg");   // stated bound on the worst vertex
-    QTest::addColumn<double>("meanDeg");  // and on the mean
+    QTest::addColumn<double>("maxDeg");  // stated bound on the worst vertex
+    QTest::addColumn<double>("meanDeg"); // and on the mean
     // 32 segments × 16 rings: facets span 11.25°, so a face normal is up to
     // ~8° off the radius at a corner. Measured here: flat 7.93° max / 6.92°
     // mean, average 1.17 / 0.24, area 1.93 / 0.66 (the thin pole triangles

@@ -55,8 +55,7 @@ private slots:
         QVERIFY(!report.passed());
         QVERIFY(!report.diagnosis.findings.empty());
         const MistakeFinding &top = report.diagnosis.findings.front();
-        const bool named = top.key == mistake
-            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        const bool named = top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
         QVERIFY2(named, qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
         QCOMPARE(top.confidence, 1.0);
         // Only the pair that always looks the same shares a finding.
@@ -81,7 +80,8 @@ private slots:
         int checked = 0;
         for (int y = 0; y < kCheckHeight; y += 7) {
             for (int x = 0; x < kCheckWidth; x += 7) {
-                const std::optional<PixelTerms> t = pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, x, y);
+                const std::optional<PixelTerms> t =
+                    pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, x, y);
                 QCOMPARE(t.has_value(), m_reference.exact.covered(x, y));
                 if (!t)
                     continue;

@@ -68,9 +68,9 @@ void TestCliMeshInfo::normalsFromFileOrComputed()
     QCOMPARE(o.value("normals").toString(), QStringLiteral("computed"));
     QCOMPARE(o.value("normal_method").toString(), QStringLiteral("angle"));
 
-    const ProcessRun forced = meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"),
-                                 QStringLiteral("--normals"), QStringLiteral("area"), QStringLiteral("--crease"),
-                                 QStringLiteral("45")});
+    const ProcessRun forced =
+        meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"), QStringLiteral("--normals"),
+                  QStringLiteral("area"), QStringLiteral("--crease"), QStringLiteral("45")});
     QCOMPARE(forced.exitCode, 0);
     o = QJsonDocument::fromJson(forced.out).object();
     QCOMPARE(o.value("normals").toString(), QStringLiteral("computed"));
@@ -103,9 +103,10 @@ void TestCliMeshInfo::usageErrorsExitTwo_data()
 {
     QTest::addColumn<QStringList>("args");
     QTest::newRow("no file") << QStringList();
-    QTest::newRow("two files") << QStringList{blender(QStringLiteral("cube_flat.obj")), blender(QStringLiteral("cube_flat.obj"))};
-    QTest::newRow("unknown method") << QStringList{blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--normals"),
-                                                   QStringLiteral("smooth")};
+    QTest::newRow("two files") << QStringList{blender(QStringLiteral("cube_flat.obj")),
+                                              blender(QStringLiteral("cube_flat.obj"))};
+    QTest::newRow("unknown method") << QStringList{blender(QStringLiteral("cube_flat.obj")),
+                                                   QStringLiteral("--normals"), QStringLiteral("smooth")};
     QTest::newRow("bad crease") << QStringList{blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--crease"),
                                                QStringLiteral("200")};
 }

@@ -28,9 +28,8 @@ namespace {
 
 QString fuzzDataDir(const QString &kind, const QString &target)
 {
-    return kind == QLatin1String("seed")
-        ? QStringLiteral(PHONGLAB_SOURCE_DIR "/tests/fuzz/corpus/") + target
-        : QStringLiteral(PHONGLAB_TEST_DATA_DIR "/fuzz/") + target;
+    return kind == QLatin1String("seed") ? QStringLiteral(PHONGLAB_SOURCE_DIR "/tests/fuzz/corpus/") + target
+                                         : QStringLiteral(PHONGLAB_TEST_DATA_DIR "/fuzz/") + target;
 }
 
 QStringList filesUnder(const QString &dir)

@@ -209,7 +209,7 @@ private slots:
     {
         const ReferenceImage ref = squareReference();
         QImage render = squareRender();
-        render.setPixel(8, 8, qRgb(140, 128, 128));  // 12 off, inside the mask
+        render.setPixel(8, 8, qRgb(140, 128, 128));   // 12 off, inside the mask
         render.setPixel(11, 11, qRgb(160, 128, 128)); // 32 off, outside it
         std::vector<std::uint8_t> mask(ref.color.size(), 0);
         for (int y = 7; y < 10; ++y)
@@ -261,9 +261,9 @@ private slots:
         const QImage map = errorHeatmap(rendered, squareReference(), 1);
         QCOMPARE(map.size(), QSize(20, 20));
         QCOMPARE(map.pixel(9, 10), qRgb(255, 0, 0));
-        QCOMPARE(map.pixel(8, 8), qRgb(0, 64, 0));  // compared, exact
-        QCOMPARE(map.pixel(6, 6), qRgb(0, 0, 96));  // in the band
-        QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));   // uncovered
+        QCOMPARE(map.pixel(8, 8), qRgb(0, 64, 0)); // compared, exact
+        QCOMPARE(map.pixel(6, 6), qRgb(0, 0, 96)); // in the band
+        QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));  // uncovered
     }
 };
 

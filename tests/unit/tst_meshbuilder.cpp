@@ -90,7 +90,8 @@ bool insidePolygon(const std::vector<glm::dvec2> &polygon, const glm::dvec2 &p)
 
 } // namespace
 
-class TestMeshBuilder : public QObject {
+class TestMeshBuilder : public QObject
+{
     Q_OBJECT
 
 private slots:
@@ -330,10 +331,12 @@ void TestMeshBuilder::randomStarPolygons()
             const glm::dvec2 &a = plane[triangulation.corners[t]], &b = plane[triangulation.corners[t + 1]],
                              &c = plane[triangulation.corners[t + 2]];
             const double doubleArea = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-            QVERIFY2(doubleArea > 0.0, qPrintable(QStringLiteral("round %1: triangle %2 flipped").arg(round).arg(t / 3)));
+            QVERIFY2(doubleArea > 0.0,
+                     qPrintable(QStringLiteral("round %1: triangle %2 flipped").arg(round).arg(t / 3)));
             sum += doubleArea / 2;
         }
-        QVERIFY2(std::abs(sum - area) < 1e-5, qPrintable(QStringLiteral("round %1: %2 vs %3").arg(round).arg(sum).arg(area)));
+        QVERIFY2(std::abs(sum - area) < 1e-5,
+                 qPrintable(QStringLiteral("round %1: %2 vs %3").arg(round).arg(sum).arg(area)));
     }
 }
 

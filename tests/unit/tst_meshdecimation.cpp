@@ -36,7 +36,10 @@ MeshData load(const QString &path, NormalOptions options = {})
 }
 
 using Vec = std::tuple<float, float, float>;
-Vec vec(const glm::vec3 &v) { return {v.x, v.y, v.z}; }
+Vec vec(const glm::vec3 &v)
+{
+    return {v.x, v.y, v.z};
+}
 
 // Every (position, normal) pair of a mesh, exactly.
 std::set<std::tuple<Vec, Vec>> vertexPairs(const MeshData &mesh)
@@ -154,7 +157,8 @@ void TestMeshDecimation::closedStaysClosed_data()
     QTest::addColumn<QString>("path");
     QTest::newRow("builtin sphere") << QStringLiteral("builtin:sphere");
     QTest::newRow("builtin torus") << QStringLiteral("builtin:torus");
-    QTest::newRow("blender smooth sphere") << QStringLiteral(PHONGLAB_TEST_DATA_DIR "/meshes/blender/sphere_smooth.obj");
+    QTest::newRow("blender smooth sphere")
+        << QStringLiteral(PHONGLAB_TEST_DATA_DIR "/meshes/blender/sphere_smooth.obj");
     QTest::newRow("cloud") << asset("cloud.obj");
 }
 
@@ -289,8 +293,8 @@ void TestMeshDecimation::deterministic()
 void TestMeshDecimation::badInputDoesNotCrash()
 {
     const MeshData cube = makeCube();
-    for (const double fraction : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(),
-                                  std::numeric_limits<double>::infinity()}) {
+    for (const double fraction :
+         {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         QString note;
         QVERIFY(sameMesh(decimateMesh(cube, fraction, &note), cube));
         QVERIFY2(note.contains(QStringLiteral("(0, 1]")), qPrintable(note));

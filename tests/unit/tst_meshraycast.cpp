@@ -172,8 +172,8 @@ private slots:
             QVERIFY(actual->barycentric == expected->barycentric);
             QVERIFY(std::abs(actual->barycentric.x + actual->barycentric.y + actual->barycentric.z - 1.0) < 1e-12);
         }
-        qInfo("%s: %zu triangles, %zu nodes, depth %d, %d of 3000 rays hit", qPrintable(mesh),
-              data->triangleCount(), bvh.nodeCount(), bvh.depth(), hits);
+        qInfo("%s: %zu triangles, %zu nodes, depth %d, %d of 3000 rays hit", qPrintable(mesh), data->triangleCount(),
+              bvh.nodeCount(), bvh.depth(), hits);
         QVERIFY(hits > 1000);
     }
 
@@ -247,7 +247,8 @@ private slots:
         for (const ReferenceImage *image : {&withoutKs, &analyticWithoutKs})
             for (const glm::dvec3 &s : image->specular)
                 QCOMPARE(s, glm::dvec3(0.0));
-        for (const auto &[lit, unlit] : {std::pair{&withKs, &withoutKs}, std::pair{&analyticWithKs, &analyticWithoutKs}}) {
+        for (const auto &[lit, unlit] :
+             {std::pair{&withKs, &withoutKs}, std::pair{&analyticWithKs, &analyticWithoutKs}}) {
             qint64 highlight = 0;
             double peak = 0.0;
             for (std::size_t i = 0; i < lit->specular.size(); ++i) {
@@ -255,14 +256,13 @@ private slots:
                     QCOMPARE(lit->specular[i], glm::dvec3(0.0));
                     continue;
                 }
-                QVERIFY(glm::all(glm::lessThan(glm::abs(lit->color[i] - lit->specular[i] - unlit->color[i]),
-                                               glm::dvec3(1e-12))));
+                QVERIFY(glm::all(
+                    glm::lessThan(glm::abs(lit->color[i] - lit->specular[i] - unlit->color[i]), glm::dvec3(1e-12))));
                 peak = std::max(peak, lit->specular[i].r);
                 highlight += lit->specular[i].r > 1.0 / 255.0;
             }
             // n = 20: the highlight is a small spot, not the whole lit side.
-            qInfo("specular: peak %.3f, %lld of %lld covered pixels above 1/255", peak, highlight,
-                  lit->coveredCount());
+            qInfo("specular: peak %.3f, %lld of %lld covered pixels above 1/255", peak, highlight, lit->coveredCount());
             QVERIFY(peak > 0.3);
             QVERIFY(highlight > 0 && highlight < lit->coveredCount() / 4);
         }
@@ -299,7 +299,6 @@ private slots:
                                     [&](double) { return ++calls < 3; }));
         QCOMPARE(error, QStringLiteral("cancelled"));
     }
-
 
     void defaultSceneTiming()
     {

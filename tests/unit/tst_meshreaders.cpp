@@ -6,10 +6,10 @@
 #include "MeshFiles.h"
 
 #include <QElapsedTimer>
-#include <QtEndian>
 #include <QFile>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
+#include <QtEndian>
 #include <QtTest>
 
 #include <algorithm>
@@ -92,7 +92,8 @@ QByteArray binaryStl(const std::vector<std::array<glm::vec3, 3>> &triangles)
 
 } // namespace
 
-class TestMeshReaders : public QObject {
+class TestMeshReaders : public QObject
+{
     Q_OBJECT
 
 private:
@@ -317,28 +318,37 @@ void TestMeshReaders::rejected_data()
 {
     QTest::addColumn<QString>("path");
     QTest::addColumn<QString>("errorPart");
-    QTest::newRow("empty obj") << kBad + "empty.obj" << "empty";
+    QTest::newRow("empty obj") << kBad + "empty.obj"
+                               << "empty";
     for (const char *suffix : {"ply", "off", "stl", "om"}) {
         const QString path = m_dir.filePath(QStringLiteral("empty.%1").arg(suffix));
         writeBytes(path, {});
         QTest::newRow(qPrintable(QStringLiteral("empty %1").arg(suffix))) << path << "empty";
     }
-    QTest::newRow("missing file") << kBad + "no_such_file.obj" << "not found";
-    QTest::newRow("directory") << m_dir.path() + "/" << "unsupported";
+    QTest::newRow("missing file") << kBad + "no_such_file.obj"
+                                  << "not found";
+    QTest::newRow("directory") << m_dir.path() + "/"
+                               << "unsupported";
     const QString dirWithSuffix = m_dir.filePath("folder.obj");
     QDir().mkpath(dirWithSuffix);
     QTest::newRow("directory named .obj") << dirWithSuffix << "not a regular file";
-    QTest::newRow("unsupported suffix") << kBad + "mesh.fbx" << ".obj, .ply, .off, .stl, .om";
+    QTest::newRow("unsupported suffix") << kBad + "mesh.fbx"
+                                        << ".obj, .ply, .off, .stl, .om";
     const QString huge = m_dir.filePath("huge_sparse.obj");
     QFile sparse(huge);
     QVERIFY(sparse.open(QIODevice::WriteOnly) && sparse.resize(kMaxMeshFileBytes + 1));
     sparse.close();
     QTest::newRow("over the size limit") << huge << "too large";
-    QTest::newRow("words in ascii ply") << kBad + "words.ply" << "line 11: expected a number for 'y' of vertex 2, found 'hello'";
-    QTest::newRow("words in off") << kBad + "words.off" << "line 5: expected a number, found 'one'";
-    QTest::newRow("words in ascii stl") << kBad + "words.stl" << "line 12: expected 'vertex x y z', found 'zero'";
-    QTest::newRow("truncated off") << kBad + "truncated.off" << "ends after 2 of 4 faces";
-    QTest::newRow("ply renamed to obj") << kBad + "ply_renamed.obj" << "a PLY file";
+    QTest::newRow("words in ascii ply") << kBad + "words.ply"
+                                        << "line 11: expected a number for 'y' of vertex 2, found 'hello'";
+    QTest::newRow("words in off") << kBad + "words.off"
+                                  << "line 5: expected a number, found 'one'";
+    QTest::newRow("words in ascii stl") << kBad + "words.stl"
+                                        << "line 12: expected 'vertex x y z', found 'zero'";
+    QTest::newRow("truncated off") << kBad + "truncated.off"
+                                   << "ends after 2 of 4 faces";
+    QTest::newRow("ply renamed to obj") << kBad + "ply_renamed.obj"
+                                        << "a PLY file";
     const QString png = m_dir.filePath("image.ply");
     writeBytes(png, QByteArray("\x89PNG\r\n\x1a\n", 8) + QByteArray(100, '\0'));
     QTest::newRow("png named .ply") << png << "a PNG image";
@@ -358,8 +368,9 @@ void TestMeshReaders::rejected_data()
     writeBytes(stlNoFacets, "solid empty\nendsolid empty\n");
     QTest::newRow("ascii stl without facets") << stlNoFacets << "no facets";
     const QString pointCloud = m_dir.filePath("cloud.ply");
-    writeBytes(pointCloud, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                           "property float z\nend_header\n0 0 0\n");
+    writeBytes(pointCloud,
+               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+               "property float z\nend_header\n0 0 0\n");
     QTest::newRow("ply point cloud") << pointCloud << "no faces";
 }
 
@@ -456,7 +467,9 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion()
     // and grew by ~80 MB/s): the precheck refuses such a line, located.
     QFETCH(QByteArray, formatLine);
     const QString path = m_dir.filePath("format.ply");
-    writeBytes(path, "ply\n" + formatLine + "\nelement vertex 3\nproperty float x\nproperty float y\n"
+    writeBytes(path,
+               "ply\n" + formatLine
+                   + "\nelement vertex 3\nproperty float x\nproperty float y\n"
                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     QElapsedTimer timer;
@@ -478,9 +491,11 @@ void TestMeshReaders::plyHeaderMustBeText_data()
     static constexpr char kFound[] = "element v\x01\0a`\0\x0c\x88vertex 3";
     QTest::newRow("nul and form feed in a name (fuzz find)")
         << QByteArray(kFound, sizeof kFound - 1) << "PLY header line 3: byte 0x01 at column 10 is not text";
-    QTest::newRow("form feed between words") << QByteArray("element vertex\x0c" "3") << "byte 0x0c at column 15";
-    QTest::newRow("a second format line")
-        << QByteArray("format binary_little_endian 1.0\nelement vertex 3") << "PLY header line 3: a second 'format' line";
+    QTest::newRow("form feed between words") << QByteArray("element vertex\x0c"
+                                                           "3")
+                                             << "byte 0x0c at column 15";
+    QTest::newRow("a second format line") << QByteArray("format binary_little_endian 1.0\nelement vertex 3")
+                                          << "PLY header line 3: a second 'format' line";
     QTest::newRow("words after end_header")
         << QByteArray("element vertex 3\nend_header float nz") << "PLY header line 4: words after 'end_header'";
     QTest::newRow("UTF-8 in a comment reads") << QByteArray("comment made by Jos\xc3\xa9\nelement vertex 3") << "";
@@ -494,7 +509,9 @@ void TestMeshReaders::plyHeaderMustBeText()
     QFETCH(QByteArray, elementLine);
     QFETCH(QString, error);
     const QString path = m_dir.filePath("header.ply");
-    writeBytes(path, "ply\nformat ascii 1.0\n" + elementLine + "\nproperty float x\nproperty float y\n"
+    writeBytes(path,
+               "ply\nformat ascii 1.0\n" + elementLine
+                   + "\nproperty float x\nproperty float y\n"
                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     const MeshReadResult r = readMeshFile(path);
@@ -552,7 +569,8 @@ void TestMeshReaders::objCutMidLineLoadsWithWarning()
     QVERIFY2(l.mesh, qPrintable(l.error));
     QCOMPARE(l.mesh->faceCount(), std::size_t(4));
     QCOMPARE(l.mesh->positions.size(), std::size_t(4));
-    QVERIFY2(anyContains(l.warnings, "skipped 1 unreadable line (first at line 10: \"v 0.25 0.\")"), qPrintable(l.warnings.join("; ")));
+    QVERIFY2(anyContains(l.warnings, "skipped 1 unreadable line (first at line 10: \"v 0.25 0.\")"),
+             qPrintable(l.warnings.join("; ")));
     QVERIFY(anyContains(l.warnings, "the file looks truncated"));
     QVERIFY(anyContains(l.warnings, "removed 1 vertex no face uses"));
 
@@ -575,19 +593,19 @@ void TestMeshReaders::repairedOnLoad_data()
     QTest::newRow("NaN and inf coordinates")
         << kBad + "nan_coords.obj" << 4 << 4
         << QStringList{"dropped 2 faces using NaN or infinite coordinates", "removed 2 vertices no face uses"};
-    QTest::newRow("zero-area faces")
-        << kBad + "zero_area.obj" << 4 << 4
-        << QStringList{"dropped 3 degenerate faces (fewer than 3 distinct corners or zero area)",
-                       "removed 2 vertices no face uses"};
-    QTest::newRow("non-manifold edge")
-        << kBad + "nonmanifold_edge.obj" << 3 << 5
-        << QStringList{"1 non-manifold edge (shared by 3 or more faces), kept as they are"};
+    QTest::newRow("zero-area faces") << kBad + "zero_area.obj" << 4 << 4
+                                     << QStringList{
+                                            "dropped 3 degenerate faces (fewer than 3 distinct corners or zero area)",
+                                            "removed 2 vertices no face uses"};
+    QTest::newRow("non-manifold edge") << kBad + "nonmanifold_edge.obj" << 3 << 5
+                                       << QStringList{
+                                              "1 non-manifold edge (shared by 3 or more faces), kept as they are"};
     QTest::newRow("cube with a flipped face")
         << kBad + "flipped_face_cube.obj" << 6 << 8 << QStringList{"flipped 1 face to make the winding consistent"};
     QTest::newRow("tetrahedron with a flipped face")
         << kBad + "flipped_face_tetra.obj" << 4 << 4 << QStringList{"flipped 1 face to make the winding consistent"};
-    QTest::newRow("isolated vertices")
-        << kBad + "isolated_vertices.obj" << 4 << 4 << QStringList{"removed 3 vertices no face uses"};
+    QTest::newRow("isolated vertices") << kBad + "isolated_vertices.obj" << 4 << 4
+                                       << QStringList{"removed 3 vertices no face uses"};
     QTest::newRow("off face colours without COFF")
         << kFormats + "tetra_commented.off" << 4 << 4
         << QStringList{"ignored the values after the vertex indices on 1 face line (face colours need a COFF header)"};
@@ -611,19 +629,24 @@ void TestMeshReaders::stlDropsAreCounted()
     const glm::vec3 o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const QString path = m_dir.filePath("drops.stl");
-    writeBytes(path, binaryStl({{o, y, x}, {o, x, z}, {o, z, y}, {x, y, z},
-                                {o, o, x},                             // two corners at one position
-                                {glm::vec3(nan, 0, 0), o, x},          // NaN
-                                {o, x, glm::vec3(2, 0, 0)}}));         // zero area
+    writeBytes(path,
+               binaryStl({{o, y, x},
+                          {o, x, z},
+                          {o, z, y},
+                          {x, y, z},
+                          {o, o, x},                     // two corners at one position
+                          {glm::vec3(nan, 0, 0), o, x},  // NaN
+                          {o, x, glm::vec3(2, 0, 0)}})); // zero area
     const Loaded l = load(path);
     QVERIFY2(l.mesh, qPrintable(l.error));
     QCOMPARE(l.mesh->faceCount(), std::size_t(4));
     QCOMPARE(l.mesh->positions.size(), std::size_t(4));
-    QCOMPARE(l.warnings, (QStringList{"dropped 1 triangle with NaN or infinite coordinates",
-                                      "the file's facet normals are all zero or invalid; normals will be computed",
-                                      "dropped 1 triangle with two corners at the same position",
-                                      "dropped 1 degenerate face (fewer than 3 distinct corners or zero area)",
-                                      "removed 1 vertex no face uses"}));
+    QCOMPARE(l.warnings,
+             (QStringList{"dropped 1 triangle with NaN or infinite coordinates",
+                          "the file's facet normals are all zero or invalid; normals will be computed",
+                          "dropped 1 triangle with two corners at the same position",
+                          "dropped 1 degenerate face (fewer than 3 distinct corners or zero area)",
+                          "removed 1 vertex no face uses"}));
 }
 
 void TestMeshReaders::binaryPlyNonFinite()
@@ -642,7 +665,8 @@ void TestMeshReaders::binaryPlyNonFinite()
     const Loaded l = load(path);
     QVERIFY2(l.mesh, qPrintable(l.error));
     QCOMPARE(l.mesh->faceCount(), std::size_t(4));
-    QCOMPARE(l.warnings, (QStringList{"dropped 1 face using NaN or infinite coordinates", "removed 1 vertex no face uses"}));
+    QCOMPARE(l.warnings,
+             (QStringList{"dropped 1 face using NaN or infinite coordinates", "removed 1 vertex no face uses"}));
 }
 
 void TestMeshReaders::openMeshMessagesBecomeTheError()

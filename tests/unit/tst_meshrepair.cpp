@@ -26,7 +26,7 @@ PolygonMesh makeMesh(std::vector<glm::vec3> positions, const Faces &faces)
 const std::vector<glm::vec3> kTetraPositions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 const Faces kTetraFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
-const std::vector<glm::vec3> kCubePositions = {{1, 1, -1}, {1, -1, -1}, {1, 1, 1}, {1, -1, 1},
+const std::vector<glm::vec3> kCubePositions = {{1, 1, -1},  {1, -1, -1},  {1, 1, 1},  {1, -1, 1},
                                                {-1, 1, -1}, {-1, -1, -1}, {-1, 1, 1}, {-1, -1, 1}};
 const Faces kCubeFaces = {{0, 4, 6, 2}, {3, 2, 6, 7}, {7, 6, 4, 5}, {5, 1, 3, 7}, {1, 0, 2, 3}, {5, 4, 0, 1}};
 
@@ -58,8 +58,9 @@ double signedVolume(const PolygonMesh &m)
     for (std::size_t f = 0; f < m.faceCount(); ++f) {
         const glm::dvec3 p0(m.positions[m.cornerPosition[m.faceStart[f]]]);
         for (std::uint32_t c = m.faceStart[f] + 1; c + 1 < m.faceStart[f + 1]; ++c)
-            v += glm::dot(p0, glm::cross(glm::dvec3(m.positions[m.cornerPosition[c]]),
-                                         glm::dvec3(m.positions[m.cornerPosition[c + 1]])));
+            v += glm::dot(p0,
+                          glm::cross(glm::dvec3(m.positions[m.cornerPosition[c]]),
+                                     glm::dvec3(m.positions[m.cornerPosition[c + 1]])));
     }
     return v / 6.0;
 }
@@ -69,7 +70,8 @@ double signedVolume(const PolygonMesh &m)
 Q_DECLARE_METATYPE(std::vector<glm::vec3>)
 Q_DECLARE_METATYPE(Faces)
 
-class TestMeshRepair : public QObject {
+class TestMeshRepair : public QObject
+{
     Q_OBJECT
 
 private slots:
@@ -111,8 +113,8 @@ private slots:
         QCOMPARE(m.faceCount(), std::size_t(4));
         for (const glm::vec3 &v : m.positions)
             QVERIFY(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
-        QCOMPARE(r.warnings(), (QStringList{"dropped 2 faces using NaN or infinite coordinates",
-                                            "removed 2 vertices no face uses"}));
+        QCOMPARE(r.warnings(),
+                 (QStringList{"dropped 2 faces using NaN or infinite coordinates", "removed 2 vertices no face uses"}));
     }
 
     void degenerateFacesDropped()
@@ -134,7 +136,8 @@ private slots:
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.facesDroppedDegenerate, 5);
         QCOMPARE(m.faceCount(), std::size_t(5));
-        QCOMPARE(r.warnings().first(), QStringLiteral("dropped 5 degenerate faces (fewer than 3 distinct corners or zero area)"));
+        QCOMPARE(r.warnings().first(),
+                 QStringLiteral("dropped 5 degenerate faces (fewer than 3 distinct corners or zero area)"));
     }
 
     void tinyButRealFacesKept()
@@ -180,15 +183,18 @@ private slots:
         QCOMPARE(r.facesFlipped, flipped);
         QVERIFY(windingConsistent(m));
         QVERIFY2(signedVolume(m) > 0.0, "closed meshes end up wound outwards");
-        QCOMPARE(r.warnings(), QStringList{QStringLiteral("flipped %1 to make the winding consistent")
-                                               .arg(flipped == 1 ? QStringLiteral("1 face") : QStringLiteral("%1 faces").arg(flipped))});
+        QCOMPARE(
+            r.warnings(),
+            QStringList{QStringLiteral("flipped %1 to make the winding consistent")
+                            .arg(flipped == 1 ? QStringLiteral("1 face") : QStringLiteral("%1 faces").arg(flipped))});
     }
 
     void openSurfaceFollowsTheMajority()
     {
         // A strip of three quads with the middle one reversed.
-        PolygonMesh m = makeMesh({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {3, 0, 0}, {3, 1, 0}},
-                                 {{0, 2, 3, 1}, {2, 3, 5, 4}, {4, 6, 7, 5}});
+        PolygonMesh m =
+            makeMesh({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {3, 0, 0}, {3, 1, 0}},
+                     {{0, 2, 3, 1}, {2, 3, 5, 4}, {4, 6, 7, 5}});
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.facesFlipped, 1);
         QVERIFY(windingConsistent(m));
@@ -205,8 +211,10 @@ private slots:
         QCOMPARE(r.facesFlipped, 1);
         // The first corner stays, the others turn with their normals:
         // (1 2 0) with normals (0 1 2) becomes (1 0 2) with (0 2 1).
-        QCOMPARE(std::vector<std::uint32_t>(m.cornerPosition.begin(), m.cornerPosition.begin() + 3), (std::vector<std::uint32_t>{1, 0, 2}));
-        QCOMPARE(std::vector<std::uint32_t>(m.cornerNormal.begin(), m.cornerNormal.begin() + 3), (std::vector<std::uint32_t>{0, 2, 1}));
+        QCOMPARE(std::vector<std::uint32_t>(m.cornerPosition.begin(), m.cornerPosition.begin() + 3),
+                 (std::vector<std::uint32_t>{1, 0, 2}));
+        QCOMPARE(std::vector<std::uint32_t>(m.cornerNormal.begin(), m.cornerNormal.begin() + 3),
+                 (std::vector<std::uint32_t>{0, 2, 1}));
     }
 
     void nonOrientableSurfaceCounted()
@@ -224,7 +232,8 @@ private slots:
         }
         Faces faces;
         for (int i = 0; i + 1 < n; ++i)
-            faces.push_back({std::uint32_t(2 * i), std::uint32_t(2 * i + 2), std::uint32_t(2 * i + 3), std::uint32_t(2 * i + 1)});
+            faces.push_back(
+                {std::uint32_t(2 * i), std::uint32_t(2 * i + 2), std::uint32_t(2 * i + 3), std::uint32_t(2 * i + 1)});
         faces.push_back({std::uint32_t(2 * n - 2), 1, 0, std::uint32_t(2 * n - 1)}); // the half twist
         PolygonMesh m = makeMesh(p, faces);
         const RepairReport r = repairMesh(m);
@@ -274,7 +283,8 @@ private slots:
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.normalsDiscarded, 7);
         const std::uint32_t none = PolygonMesh::kNoNormal;
-        QCOMPARE(m.cornerNormal, (std::vector<std::uint32_t>{0, 0, 0, none, none, none, none, none, none, none, none, 0}));
+        QCOMPARE(m.cornerNormal,
+                 (std::vector<std::uint32_t>{0, 0, 0, none, none, none, none, none, none, none, none, 0}));
     }
 
     void everythingDroppedLeavesNoFaces()

@@ -85,8 +85,7 @@ private slots:
         QVERIFY(d.differingPixels > 0);
         QVERIFY(!d.findings.empty());
         const MistakeFinding &top = d.findings.front();
-        const bool named = top.key == mistake
-            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        const bool named = top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
         QVERIFY2(named, qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
         QCOMPARE(top.confidence, 1.0);
         QVERIFY(!d.unexplained());
@@ -130,7 +129,8 @@ private slots:
         const MistakeDiagnosis d = diagnose(uniform, uniform.exact.toImage(kBackground));
         QVERIFY(std::find(d.undetectable.begin(), d.undetectable.end(), ShaderMistake::NormalMatrix)
                 != d.undetectable.end());
-        QVERIFY(std::find(d.undetectable.begin(), d.undetectable.end(), ShaderMistake::Ambient) == d.undetectable.end());
+        QVERIFY(std::find(d.undetectable.begin(), d.undetectable.end(), ShaderMistake::Ambient)
+                == d.undetectable.end());
     }
 
 private:

@@ -30,10 +30,10 @@ QByteArray str(const glm::vec3 &v)
         + QByteArray::number(v.z, 'g', 9);
 }
 
-#define COMPARE_VEC(actual, expected)                                                                    \
-    do {                                                                                                 \
-        const glm::vec3 a_ = (actual), e_ = (expected);                                                  \
-        QVERIFY2(near(a_, e_), "got " + str(a_) + ", expected " + str(e_));                              \
+#define COMPARE_VEC(actual, expected)                                                                                  \
+    do {                                                                                                               \
+        const glm::vec3 a_ = (actual), e_ = (expected);                                                                \
+        QVERIFY2(near(a_, e_), "got " + str(a_) + ", expected " + str(e_));                                            \
     } while (false)
 
 double angleDeg(const glm::dvec3 &a, const glm::dvec3 &b)
@@ -107,8 +107,8 @@ Sphere weldedUvSphere(int slices, int stacks)
     for (int r = 0; r <= stacks; ++r) {
         for (int c = 0; c <= slices; ++c) {
             remap[r * (slices + 1) + c] = r == 0 ? 0
-                : r == stacks ? std::uint32_t(sphere.positions.size() - 1)
-                : std::uint32_t(1 + (r - 1) * slices + c % slices);
+                : r == stacks                    ? std::uint32_t(sphere.positions.size() - 1)
+                                                 : std::uint32_t(1 + (r - 1) * slices + c % slices);
         }
     }
     for (std::size_t t = 0; t < raw.indices.size(); t += 3) {
@@ -131,7 +131,8 @@ double maxSphereErrorDeg(const Sphere &sphere, const std::vector<glm::vec3> &nor
 
 } // namespace
 
-class TestNormals : public QObject {
+class TestNormals : public QObject
+{
     Q_OBJECT
 
 private slots:
@@ -158,8 +159,8 @@ void TestNormals::singleTriangle_data()
 {
     QTest::addColumn<NormalMethod>("method");
     QTest::addColumn<bool>("crease");
-    for (NormalMethod m : {NormalMethod::Auto, NormalMethod::Flat, NormalMethod::Average,
-                           NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m : {NormalMethod::Auto, NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted,
+                           NormalMethod::AngleWeighted}) {
         QTest::addRow("%s", qPrintable(normalMethodName(m))) << m << false;
         QTest::addRow("%s+crease", qPrintable(normalMethodName(m))) << m << true;
     }
@@ -367,8 +368,8 @@ void TestNormals::coneApexBigFan()
 void TestNormals::unitLengthEverywhere()
 {
     const Sphere sphere = weldedUvSphere(16, 8);
-    for (NormalMethod m : {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted,
-                           NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         for (std::optional<double> crease : {std::optional<double>(), std::optional(10.0)}) {
             for (const glm::vec3 &n : corners(sphere.positions, sphere.triangles, m, crease))
                 QVERIFY2(std::abs(glm::length(n) - 1.0f) < 1e-6f, str(n));
@@ -383,14 +384,13 @@ void TestNormals::sphereAgainstAnalytic()
     QCOMPARE(sphere.positions.size(), std::size_t(64 * 31 + 2));
     QCOMPARE(sphere.triangles.size() / 3, std::size_t(64 * 32 * 2 - 2 * 64));
 
-    const double angleError = maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles,
-                                                                NormalMethod::AngleWeighted));
-    const double areaError = maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles,
-                                                               NormalMethod::AreaWeighted));
-    const double averageError = maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles,
-                                                                  NormalMethod::Average));
-    qInfo("max error vs analytic normal: angle %.4f°, area %.4f°, average %.4f°", angleError, areaError,
-          averageError);
+    const double angleError =
+        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AngleWeighted));
+    const double areaError =
+        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AreaWeighted));
+    const double averageError =
+        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::Average));
+    qInfo("max error vs analytic normal: angle %.4f°, area %.4f°, average %.4f°", angleError, areaError, averageError);
     // Measured: angle 0.087°, area 0.945°, average 0.569°. All three peak on
     // the rings next to the poles, where the thin pole triangles above and
     // the wider cells below pull unevenly; angle weighting is the least
@@ -407,8 +407,9 @@ void TestNormals::sphereAgainstAnalytic()
     for (std::size_t t = 0; t < sphere.triangles.size(); t += 3) {
         double facet = 0.0;
         for (int k = 0; k < 3; ++k)
-            facet = std::max(facet, angleDeg(sphere.positions[sphere.triangles[t + k]],
-                                             sphere.positions[sphere.triangles[t + (k + 1) % 3]]));
+            facet = std::max(facet,
+                             angleDeg(sphere.positions[sphere.triangles[t + k]],
+                                      sphere.positions[sphere.triangles[t + (k + 1) % 3]]));
         worstFacet = std::max(worstFacet, facet);
         for (int k = 0; k < 3; ++k) {
             const double error = angleDeg(sphere.positions[sphere.triangles[t + k]], flat[t + k]);

@@ -55,13 +55,15 @@ void TestNormalStudy::angleBeatsAverageOnIrregularSpheres()
     for (const QString &irregular : {QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
         const double angle = row(irregular, QStringLiteral("angle")).meanAngleDeg;
         const double average = row(irregular, QStringLiteral("average")).meanAngleDeg;
-        QVERIFY2(angle <= average, qPrintable(QStringLiteral("%1: angle %2 > average %3").arg(irregular).arg(angle).arg(average)));
+        QVERIFY2(angle <= average,
+                 qPrintable(QStringLiteral("%1: angle %2 > average %3").arg(irregular).arg(angle).arg(average)));
     }
 }
 
 void TestNormalStudy::flatIsClearlyWorst()
 {
-    for (const QString &t : {QStringLiteral("UV sphere 64"), QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
+    for (const QString &t :
+         {QStringLiteral("UV sphere 64"), QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
         const double flat = row(t, QStringLiteral("flat")).meanAngleDeg;
         for (const QString &smooth : {QStringLiteral("average"), QStringLiteral("area"), QStringLiteral("angle")})
             QVERIFY2(flat > 2.0 * row(t, smooth).meanAngleDeg, qPrintable(t + u' ' + smooth));

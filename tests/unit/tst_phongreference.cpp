@@ -27,7 +27,7 @@ QByteArray str(const glm::dvec3 &v)
         + QByteArray::number(v.z, 'g', 17);
 }
 
-#define COMPARE_VEC(actual, expected)                                                                    \
+#define COMPARE_VEC(actual, expected)                                                                                  \
     QVERIFY2(near(actual, expected), "got (" + str(actual) + "), expected (" + str(expected) + ")")
 
 Material material(glm::dvec3 ka, glm::dvec3 kd, glm::dvec3 ks, double n)
@@ -93,8 +93,7 @@ private slots:
         // Overhead light, Id = (0, 1, 0.5): kd·1 = (0, 0.5, 0.25).
         // Ambient 0.1·0.2 = 0.02 each channel. Sum (0.42, 0.52, 0.27).
         const Material m = material(glm::dvec3(0.1), glm::dvec3(0.5), glm::dvec3(0.0), 4.0);
-        const std::vector lights{light(kObliqueLight, {1.0, 0.0, 0.0}),
-                                 light(kOverheadLight, {0.0, 1.0, 0.5})};
+        const std::vector lights{light(kObliqueLight, {1.0, 0.0, 0.0}), light(kOverheadLight, {0.0, 1.0, 0.5})};
         COMPARE_VEC(phongIntensity(kP, kN, m, glm::dvec3(0.2), lights), glm::dvec3(0.42, 0.52, 0.27));
     }
 
@@ -153,8 +152,7 @@ private slots:
         // the bare formula would add 0.28; the reference adds nothing.
         const Material m = material({0.5, 0.25, 1.0}, glm::dvec3(1.0), glm::dvec3(1.0), 1.0);
         const std::vector lights{light({-8.0, 0.0, -6.0})};
-        COMPARE_VEC(phongIntensity({-4.0, 0.0, -3.0}, kN, m, {0.2, 0.4, 0.6}, lights),
-                    glm::dvec3(0.1, 0.1, 0.6));
+        COMPARE_VEC(phongIntensity({-4.0, 0.0, -3.0}, kN, m, {0.2, 0.4, 0.6}, lights), glm::dvec3(0.1, 0.1, 0.6));
     }
 
     void ambientOnly()

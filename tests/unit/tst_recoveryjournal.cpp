@@ -20,7 +20,8 @@ RecoveryRecord sampleRecord()
     RecoveryRecord record;
     record.vertex = {QStringLiteral("/shaders/phong.vert"), QByteArray("#version 330 core\nvoid main() {}\n"), false};
     record.fragment = {QStringLiteral("/shaders/phong.frag"),
-                       QByteArray("#version 330 core\n// édité: ü\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n"), true};
+                       QByteArray("#version 330 core\n// édité: ü\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n"),
+                       true};
     record.shading = QStringLiteral("phong");
     return record;
 }
@@ -42,8 +43,7 @@ void leaveOrphan(const QString &dir, const QString &id, const RecoveryRecord &re
         QVERIFY2(other.write(record, &error), qPrintable(error));
         QVERIFY(QFile::rename(other.journalPath(), QDir(dir).filePath(id + ".journal")));
     }
-    writeFile(QDir(dir).filePath(id + ".lock"),
-              "999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
+    writeFile(QDir(dir).filePath(id + ".lock"), "999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
 }
 
 } // namespace

@@ -154,16 +154,23 @@ private slots:
                 // sides, the centre within one step of it.
                 if (std::abs(toB) < step - slack && toA < -2.0) {
                     ++edgePixels;
-                    QVERIFY2(flag, qPrintable(QStringLiteral("edge pixel (%1, %2), %3 px from B's outline, not flagged")
-                                                  .arg(x).arg(y).arg(toB)));
+                    QVERIFY2(flag,
+                             qPrintable(QStringLiteral("edge pixel (%1, %2), %3 px from B's outline, not flagged")
+                                            .arg(x)
+                                            .arg(y)
+                                            .arg(toB)));
                 }
                 // The smooth interior of either sphere (and the background):
                 // more than a pixel from both outlines.
                 if (std::abs(toA) > 1.0 && std::abs(toB) > 1.0) {
                     interior += image.covered(x, y);
-                    QVERIFY2(!flag, qPrintable(QStringLiteral("pixel (%1, %2) flagged, %3 px from A's outline, "
-                                                              "%4 px from B's")
-                                                   .arg(x).arg(y).arg(toA).arg(toB)));
+                    QVERIFY2(!flag,
+                             qPrintable(QStringLiteral("pixel (%1, %2) flagged, %3 px from A's outline, "
+                                                       "%4 px from B's")
+                                            .arg(x)
+                                            .arg(y)
+                                            .arg(toA)
+                                            .arg(toB)));
                 }
                 if (flag)
                     farthestFlag = std::max(farthestFlag, std::min(std::abs(toA), std::abs(toB)));
@@ -298,8 +305,7 @@ private slots:
 
         QElapsedTimer timer;
         timer.start();
-        const std::vector<std::uint8_t> ambiguous =
-            mask(*loaded.scene, perObject, 800, 600, kDefaultSubpixelBits);
+        const std::vector<std::uint8_t> ambiguous = mask(*loaded.scene, perObject, 800, 600, kDefaultSubpixelBits);
         const qint64 maskMs = timer.restart();
         const ReferenceImage image = reference(*loaded.scene, perObject, 800, 600);
         const qint64 referenceMs = timer.elapsed();
@@ -310,8 +316,8 @@ private slots:
         }
         qInfo("default scene 800x600, %d bits: mask %lld ms (reference %lld ms) on %u threads; %lld px flagged, "
               "%lld of them covered, of %lld covered",
-              kDefaultSubpixelBits, maskMs, referenceMs, std::max(1u, std::thread::hardware_concurrency()),
-              flagged, flaggedCovered, image.coveredCount());
+              kDefaultSubpixelBits, maskMs, referenceMs, std::max(1u, std::thread::hardware_concurrency()), flagged,
+              flaggedCovered, image.coveredCount());
         QVERIFY(flagged > 0);
         QVERIFY(flagged < image.coveredCount() / 20);
     }

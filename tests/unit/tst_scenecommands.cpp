@@ -102,7 +102,8 @@ private slots:
 
     void renameLight()
     {
-        roundTrip(new RenameLightCommand(access(), 0, "", "Key light"), [](Scene &s) { s.lights[0].name = "Key light"; });
+        roundTrip(new RenameLightCommand(access(), 0, "", "Key light"),
+                  [](Scene &s) { s.lights[0].name = "Key light"; });
         roundTrip(new RenameLightCommand(access(), 0, "Key light", ""), [](Scene &s) { s.lights[0].name.clear(); });
         QCOMPARE(m_stack.count(), 2); // renames never merge
         m_stack.undo();
@@ -113,8 +114,9 @@ private slots:
 
     void setAmbient()
     {
-        roundTrip(new SetAmbientCommand(access(), m_scene.ambient, {0.05, 0.1, 0.2}),
-                  [](Scene &s) { s.ambient = {0.05, 0.1, 0.2}; });
+        roundTrip(new SetAmbientCommand(access(), m_scene.ambient, {0.05, 0.1, 0.2}), [](Scene &s) {
+            s.ambient = {0.05, 0.1, 0.2};
+        });
     }
 
     void setMaterial()

@@ -210,8 +210,10 @@ void TestSceneJson::rejectsBadInput_data()
     // Transform
     row("transform not object", withSphere(R"("transform": [1, 2, 3])"), "transform:", "expected an object");
     row("translate string", withSphere(R"("transform": {"translate": "1 2 3"})"), "transform.translate:", "got string");
-    row("translate two elements", withSphere(R"("transform": {"translate": [1, 2]})"), "transform.translate:", "got 2 elements");
-    row("rotate non-number", withSphere(R"("transform": {"rotate_deg": [0, "90", 0]})"), "transform.rotate_deg[1]:", "got string");
+    row("translate two elements", withSphere(R"("transform": {"translate": [1, 2]})"),
+        "transform.translate:", "got 2 elements");
+    row("rotate non-number", withSphere(R"("transform": {"rotate_deg": [0, "90", 0]})"),
+        "transform.rotate_deg[1]:", "got string");
     row("scale zero", withSphere(R"("transform": {"scale": [1, 0, 1]})"), "transform.scale[1]:", "0");
 
     // Camera
@@ -224,7 +226,8 @@ void TestSceneJson::rejectsBadInput_data()
     row("near negative", withSphere(R"("camera": {"near": -1})"), "camera.near:");
     row("far equals near", withSphere(R"("camera": {"near": 1, "far": 1})"), "camera.far:", "near");
     row("far below near", withSphere(R"("camera": {"near": 5, "far": 2})"), "camera.far:");
-    row("eye equals target", withSphere(R"("camera": {"eye": [1, 2, 3], "target": [1, 2, 3]})"), "camera.target:", "eye");
+    row("eye equals target", withSphere(R"("camera": {"eye": [1, 2, 3], "target": [1, 2, 3]})"),
+        "camera.target:", "eye");
     row("up parallel", withSphere(R"("camera": {"eye": [0, 5, 0], "target": [0, 0, 0]})"), "camera.up:", "parallel");
     row("up antiparallel", withSphere(R"("camera": {"eye": [0, 0, 4], "up": [0, 0, 2]})"), "camera.up:", "parallel");
     row("up zero", withSphere(R"("camera": {"up": [0, 0, 0]})"), "camera.up:");
@@ -246,12 +249,14 @@ void TestSceneJson::rejectsBadInput_data()
     row("light position missing", withLights(R"([{"position": [1, 1, 1]}, {"diffuse": [1, 1, 1]}])"),
         "lights[1].position:", "required");
     row("light diffuse element string", withLights(R"([{"position": [0, 0, 5]}, {"position": [1, 0, 5]},
-        {"position": [2, 0, 5], "diffuse": [1, "1", 1]}])"), "lights[2].diffuse[1]:", "got string");
+        {"position": [2, 0, 5], "diffuse": [1, "1", 1]}])"),
+        "lights[2].diffuse[1]:", "got string");
     row("light specular negative", withLights(R"([{"position": [1, 1, 1], "specular": [-1, 0, 0]}])"),
         "lights[0].specular[0]:", ">= 0");
     row("attenuation negative", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, -0.1, 0]}])"),
         "lights[0].attenuation[1]:", ">= 0");
-    row("attenuation sum zero", withLights(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "attenuation": [0, 0, 0]}])"),
+    row("attenuation sum zero",
+        withLights(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "attenuation": [0, 0, 0]}])"),
         "lights[1].attenuation:", "c1 + c2 + c3 must be positive (got 0)");
     row("attenuation wrong length", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, 0]}])"),
         "lights[0].attenuation:", "3 numbers");
@@ -263,7 +268,8 @@ void TestSceneJson::rejectsBadInput_data()
     // Non-finite numbers: Qt cannot produce NaN, but these overflow a double.
     row("fov overflow", withSphere(R"("camera": {"fov_deg": 1e999})"), "camera.fov_deg:", "finite");
     row("position overflow", withLights(R"([{"position": [-1e999, 0, 0]}])"), "lights[0].position[0]:", "1e999");
-    row("translate overflow", withSphere(R"("transform": {"translate": [0, 0, 2e400]})"), "transform.translate[2]:", "finite");
+    row("translate overflow", withSphere(R"("transform": {"translate": [0, 0, 2e400]})"),
+        "transform.translate[2]:", "finite");
     row("overflow where object expected", withSphere(R"("camera": 1e999)"), "camera:", "out-of-range number");
     row("overflow where string expected", R"({"mesh": 1e999})", "mesh:", "out-of-range number");
 }

@@ -54,7 +54,8 @@ private slots:
     void roundTripAndWrittenOnlyWhenNotDefault()
     {
         Scene scene = *parseScene(withLights(R"([{"position": [1, 2, 3]}, {"position": [3, 2, 1]},
-                                                  {"position": [0, 4, 0]}])")).scene;
+                                                  {"position": [0, 4, 0]}])"))
+                           .scene;
         scene.lights[0].name = "Rim";
         scene.lights[1].enabled = false;
         scene.lights[2].name = "Fill";
@@ -93,7 +94,8 @@ private slots:
     {
         QTest::addColumn<QByteArray>("lights");
         QTest::addColumn<QString>("error");
-        QTest::newRow("enabled number") << QByteArray(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "enabled": 0}])")
+        QTest::newRow("enabled number") << QByteArray(
+            R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "enabled": 0}])")
                                         << QStringLiteral("lights[1].enabled: expected true or false (got number)");
         QTest::newRow("enabled string") << QByteArray(R"([{"position": [1, 1, 1], "enabled": "false"}])")
                                         << QStringLiteral("lights[0].enabled: expected true or false (got string)");
@@ -101,7 +103,8 @@ private slots:
                                       << QStringLiteral("lights[0].enabled: expected true or false (got null)");
         QTest::newRow("name number") << QByteArray(R"([{"position": [1, 1, 1], "name": 3}])")
                                      << QStringLiteral("lights[0].name: expected a string (got number)");
-        QTest::newRow("name array") << QByteArray(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "name": ["a"]}])")
+        QTest::newRow("name array") << QByteArray(
+            R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "name": ["a"]}])")
                                     << QStringLiteral("lights[1].name: expected a string (got array)");
     }
 

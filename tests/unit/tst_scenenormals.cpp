@@ -47,8 +47,8 @@ void TestSceneNormals::readsForms_data()
     QTest::newRow("object with crease") << QByteArray(R"({"method": "area", "crease_deg": 40})")
                                         << int(NormalMethod::AreaWeighted) << 40.0;
     QTest::newRow("crease only") << QByteArray(R"({"crease_deg": 0})") << int(NormalMethod::Auto) << 0.0;
-    QTest::newRow("null crease") << QByteArray(R"({"method": "flat", "crease_deg": null})")
-                                 << int(NormalMethod::Flat) << -1.0;
+    QTest::newRow("null crease") << QByteArray(R"({"method": "flat", "crease_deg": null})") << int(NormalMethod::Flat)
+                                 << -1.0;
 }
 
 void TestSceneNormals::readsForms()

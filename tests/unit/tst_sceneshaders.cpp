@@ -35,8 +35,8 @@ private slots:
 
     void bothKeysRead()
     {
-        const SceneLoadResult loaded
-            = parseScene(sceneWith(R"({"vertex": "glsl/a.vert", "fragment": "/abs/b.frag"})"), "/scenes");
+        const SceneLoadResult loaded =
+            parseScene(sceneWith(R"({"vertex": "glsl/a.vert", "fragment": "/abs/b.frag"})"), "/scenes");
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
         QCOMPARE(loaded.scene->vertexShader, QStringLiteral("glsl/a.vert"));
         QCOMPARE(loaded.scene->fragmentShader, QStringLiteral("/abs/b.frag"));

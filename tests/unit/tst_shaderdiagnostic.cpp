@@ -53,8 +53,7 @@ void TestShaderDiagnostic::parsesNvidia()
 
 void TestShaderDiagnostic::parsesAmdStyle()
 {
-    const auto d = parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"),
-                                  ShaderStage::Fragment, {});
+    const auto d = parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"), ShaderStage::Fragment, {});
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 8);
     QVERIFY(d[0].isError());
@@ -132,9 +131,12 @@ void TestShaderDiagnostic::columnsMapBackOverCollapsedWhitespace()
     // run: "    x =\t\tfoo" reads " x = foo", where foo is column 6.
     const QByteArray code = "line one\n    x =\t\tfoo;\nshort\n";
     std::vector<ShaderDiagnostic> d(3);
-    d[0].line = 2; d[0].column = 6;
-    d[1].line = 3; d[1].column = 40;   // past the end of the line: unknown
-    d[2].line = 9; d[2].column = 1;    // no such line: unknown
+    d[0].line = 2;
+    d[0].column = 6;
+    d[1].line = 3;
+    d[1].column = 40; // past the end of the line: unknown
+    d[2].line = 9;
+    d[2].column = 1; // no such line: unknown
     mapColumnsToSource(d, code);
     QCOMPARE(d[0].column, 10);
     QCOMPARE(d[0].line, 2);

@@ -61,9 +61,9 @@ class TestShaderMistakes : public QObject
 private slots:
     void keysAreStable()
     {
-        const QStringList keys{"normal-matrix", "unnormalized", "light-space", "homogeneous-w", "reflect-incident",
-                               "view-vector", "attenuation", "negative-light", "backface-specular", "ambient",
-                               "gouraud"};
+        const QStringList keys{"normal-matrix",     "unnormalized", "light-space", "homogeneous-w",
+                               "reflect-incident",  "view-vector",  "attenuation", "negative-light",
+                               "backface-specular", "ambient",      "gouraud"};
         QCOMPARE(shaderMistakeKeys(), keys);
         for (const QString &key : keys) {
             const std::optional<ShaderMistake> mistake = shaderMistakeFromKey(key);
@@ -99,7 +99,8 @@ private slots:
         // f_att = 1 / (1 + 0.1·5) = 2/3.
         const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.0});
         QCOMPARE(exact(kFacing, kUp, light), kAmbientPart + (kDiffusePart + kSpecularPart) * 2.0 / 3.0);
-        QCOMPARE(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation), kAmbientPart + kDiffusePart + kSpecularPart);
+        QCOMPARE(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation),
+                 kAmbientPart + kDiffusePart + kSpecularPart);
     }
 
     void ambientLeftOut()
@@ -164,7 +165,8 @@ private slots:
             if (!isPointwiseMistake(m))
                 continue;
             const bool shows = mistaken(kFacing, kUp, lit, m) != exact(kFacing, kUp, lit)
-                || mistaken(kFacing, glm::dvec3(0.0, 0.0, 0.5), lit, m) != exact(kFacing, glm::dvec3(0.0, 0.0, 0.5), lit)
+                || mistaken(kFacing, glm::dvec3(0.0, 0.0, 0.5), lit, m)
+                    != exact(kFacing, glm::dvec3(0.0, 0.0, 0.5), lit)
                 || mistaken(kFacing, kUp, behind, m) != exact(kFacing, kUp, behind)
                 || mistaken(grazing, kUp, grazingLight, m) != exact(grazing, kUp, grazingLight);
             QVERIFY2(shows, qPrintable(key));
