@@ -4,6 +4,7 @@
 
 #include "core/UniformOwner.h"
 
+#include "CurrentContext.h"
 #include "FileTypes.h"
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
@@ -362,10 +363,10 @@ std::map<QString, std::vector<double>> MainWindow::userUniformValues()
     std::map<QString, std::vector<double>> values;
     if (!m_viewport->isRenderReady())
         return values;
-    m_viewport->endLoan();
-    m_viewport->makeCurrent();
-    const UniformSnapshot snapshot = m_viewport->renderer().program().snapshot();
-    m_viewport->doneCurrent();
+    const UniformSnapshot snapshot = [&] {
+        const CurrentContext current(*m_viewport);
+        return m_viewport->renderer().program().snapshot();
+    }();
     for (const UniformValue &v : snapshot.values) {
         const QString name = QString::fromUtf8(v.name);
         if (!isPlainNumberType(v.type) || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)

@@ -1,5 +1,7 @@
 #include "UniformsDock.h"
 
+#include "CurrentContext.h"
+
 #include "ShaderDock.h"
 #include "UniformBoolRow.h"
 #include "UniformFloatRow.h"
@@ -75,12 +77,10 @@ bool UniformsDock::readProgram(Program &program)
 {
     if (!m_viewport || !m_viewport->isRenderReady())
         return false;
-    m_viewport->endLoan(); // as the viewport does itself before taking its context
-    m_viewport->makeCurrent();
+    const CurrentContext current(*m_viewport);
     ShaderProgram &shader = m_viewport->renderer().program();
     program.active = activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
     program.values = shader.snapshot();
-    m_viewport->doneCurrent();
     return true;
 }
 
@@ -208,11 +208,11 @@ void UniformsDock::write(const UniformValue &value)
 {
     if (!m_viewport || !m_viewport->isRenderReady())
         return;
-    m_viewport->endLoan();
-    m_viewport->makeCurrent();
-    // restore() sets it only where name and type still match the program.
-    m_viewport->renderer().program().restore(UniformSnapshot{{value}});
-    m_viewport->doneCurrent();
+    {
+        const CurrentContext current(*m_viewport);
+        // restore() sets it only where name and type still match the program.
+        m_viewport->renderer().program().restore(UniformSnapshot{{value}});
+    }
     for (UniformValue &kept : m_values.values)
         if (kept.name == value.name)
             kept = value;

@@ -1,7 +1,10 @@
 #include "Viewport.h"
 
+#include "CurrentContext.h"
+
 #include "LightPicking.h"
 
+#include <QAction>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QElapsedTimer>
@@ -88,12 +91,14 @@ bool Viewport::setScene(const Scene &scene, SceneMeshes &&meshes, QString *error
         return false;
     }
     if (m_glInitialized) {
-        endLoan();
-        makeCurrent();
-        const GLuint programBefore = m_renderer.program().id();
-        const bool ok = uploadScene(scene, std::move(meshes), error);
-        const bool programReplaced = m_renderer.program().id() != programBefore;
-        doneCurrent();
+        bool ok = false;
+        bool programReplaced = false;
+        {
+            const CurrentContext current(*this);
+            const GLuint programBefore = m_renderer.program().id();
+            ok = uploadScene(scene, std::move(meshes), error);
+            programReplaced = m_renderer.program().id() != programBefore;
+        }
         if (programReplaced) // the new scene's shading, or the old one restored after a failure
             emit shippedProgramLoaded(ok ? scene.shading : m_scene.shading);
         if (!ok)
@@ -158,10 +163,10 @@ void Viewport::adoptProgram(GLuint program)
 {
     if (!m_glInitialized)
         return; // no context to free it with either; it goes with its share group
-    endLoan();
-    makeCurrent();
-    m_renderer.adoptProgram(program);
-    doneCurrent();
+    {
+        const CurrentContext current(*this);
+        m_renderer.adoptProgram(program);
+    }
     update();
 }
 
@@ -177,11 +182,8 @@ ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
                                             tr("OpenGL is not running in the viewport")});
         return built;
     }
-    endLoan();
-    makeCurrent();
-    built = ProgramBuilder().build(vertex, fragment);
-    doneCurrent();
-    return built;
+    const CurrentContext current(*this);
+    return ProgramBuilder().build(vertex, fragment);
 }
 
 std::optional<LentContext> Viewport::lendContext(QThread *borrower)
@@ -240,8 +242,7 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
 {
     if (!m_renderReady || pixelSize.isEmpty())
         return {};
-    endLoan();
-    makeCurrent();
+    const CurrentContext current(*this);
     if (m_parametersDirty) {
         m_renderer.updateSceneParameters(renderedScene());
         m_parametersDirty = false;
@@ -262,7 +263,6 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
             fbo.release();
         }
     }
-    doneCurrent();
     return image;
 }
 
@@ -516,12 +516,19 @@ void Viewport::wheelEvent(QWheelEvent *event)
     event->accept();
 }
 
+// The key map is the actions added to this view (Reset Camera's R and Home,
+// Inspect's I): their shortcuts. A key that reaches the view unclaimed (the
+// shortcut system only acts for an active window) triggers the action that
+// names it, so no key is handled in two places.
 void Viewport::keyPressEvent(QKeyEvent *event)
 {
-    if ((event->key() == Qt::Key_R || event->key() == Qt::Key_Home) && event->modifiers() == Qt::NoModifier) {
-        resetCamera();
-        event->accept();
-        return;
+    const QKeySequence pressed(event->keyCombination());
+    for (QAction *action : actions()) {
+        if (action->isEnabled() && action->shortcuts().contains(pressed)) {
+            action->trigger();
+            event->accept();
+            return;
+        }
     }
     QOpenGLWidget::keyPressEvent(event);
 }

@@ -15,7 +15,8 @@ namespace phonglab {
 
 // The interactive 3D view: a QOpenGLWidget that drives a Renderer and turns
 // mouse and keyboard input into OrbitCamera moves. Left drag orbits, right
-// or middle drag pans, the wheel zooms, R / Home resets the camera.
+// or middle drag pans, the wheel zooms. Keys are the shortcuts of the actions
+// added to it (the window's Reset Camera: R, Home).
 class Viewport : public QOpenGLWidget
 {
     Q_OBJECT

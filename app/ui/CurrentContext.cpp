@@ -1,0 +1,19 @@
+#include "CurrentContext.h"
+
+#include "Viewport.h"
+
+namespace phonglab {
+
+CurrentContext::CurrentContext(Viewport &viewport)
+    : m_viewport(viewport)
+{
+    m_viewport.endLoan();
+    m_viewport.makeCurrent();
+}
+
+CurrentContext::~CurrentContext()
+{
+    m_viewport.doneCurrent();
+}
+
+} // namespace phonglab
