@@ -33,19 +33,6 @@ double toMs(qint64 ns)
     return double(ns) / 1e6;
 }
 
-std::optional<LiveShaderController::WarmUp> warmUpFromEnvironment()
-{
-    using W = LiveShaderController::WarmUp;
-    const QString value = qEnvironmentVariable("PHONGLAB_WARM_UP").trimmed().toLower();
-    if (value == QLatin1String("off"))
-        return W::Off;
-    if (value == QLatin1String("worker"))
-        return W::WorkerContext;
-    if (value == QLatin1String("viewport"))
-        return W::ViewportContext;
-    return std::nullopt;
-}
-
 } // namespace
 
 LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent)
@@ -59,8 +46,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_hangNote(new QTimer(this))
     , m_debounceMs(QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
 {
-    m_forceGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
-    setWarmUp(warmUpFromEnvironment().value_or(WarmUp::ViewportContext));
+    setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
     connect(m_builder, &BackgroundProgramBuilder::built, this, &LiveShaderController::onBuilt);
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
@@ -173,9 +159,9 @@ void LiveShaderController::buildNow()
     requestBuild(true);
 }
 
-void LiveShaderController::offerRecovery(QWidget *dialogParent)
+void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent)
 {
-    const ShaderRecovery::Outcome outcome = m_recovery->offer(ShaderRecovery::answerFromEnvironment(), dialogParent);
+    const ShaderRecovery::Outcome outcome = m_recovery->offer(answer, dialogParent);
     if (outcome.note.isEmpty())
         return;
     if (outcome.restored) {
@@ -250,7 +236,7 @@ void LiveShaderController::endLoanNow()
 void LiveShaderController::startWorker()
 {
     if (m_forceGuiThread) {
-        emit statusMessage(tr("Shaders compile on the GUI thread (PHONGLAB_COMPILE_ON_GUI_THREAD)"), kStatusTimeoutMs);
+        emit statusMessage(tr("Shaders compile on the GUI thread"), kStatusTimeoutMs);
         return;
     }
     QString error;

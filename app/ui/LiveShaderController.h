@@ -1,4 +1,5 @@
 #pragma once
+#include "ShaderRecovery.h"
 #include "core/ShadingMethod.h"
 #include "render/ProgramBuildWorker.h"
 
@@ -12,7 +13,6 @@ namespace phonglab {
 
 class BackgroundProgramBuilder;
 class ShaderDock;
-class ShaderRecovery;
 class Viewport;
 
 // Live shader editing: connects the Shaders dock to the viewport. After an
@@ -50,11 +50,11 @@ public:
     void buildNow();
 
     // Offers a dead session's journal (see ShaderRecovery). Call once at start.
-    void offerRecovery(QWidget *dialogParent);
+    void offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent);
 
     // Benchmarks and tests: build on the GUI thread instead of the worker
-    // (from the next GL start on; also $PHONGLAB_COMPILE_ON_GUI_THREAD=1), and
-    // choose the warm-up ($PHONGLAB_WARM_UP=off|worker|viewport).
+    // (from the next GL start on), and choose the warm-up (the window sets
+    // both from its StartupOptions).
     void setBuildOnGuiThread(bool onGuiThread) { m_forceGuiThread = onGuiThread; }
     void setWarmUp(WarmUp warmUp);
     WarmUp warmUp() const { return m_warmUp; }

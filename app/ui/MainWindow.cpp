@@ -74,8 +74,9 @@ QString firstLine(const QString &text)
 
 } // namespace
 
-MainWindow::MainWindow(QWidget *parent)
+MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     : QMainWindow(parent)
+    , m_options(options)
     , m_viewport(new Viewport(this))
     , m_loadJob(new SceneLoadJob(m_viewport, this))
     , m_sceneDock(new SceneDock(this))
@@ -127,11 +128,14 @@ void MainWindow::createShaderDock()
             [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
     // Tests answer through the environment at once; a person is asked once
     // the window is up.
-    if (ShaderRecovery::answerFromEnvironment() != ShaderRecovery::Answer::Ask)
-        m_liveShaders->offerRecovery(this);
+    m_liveShaders->setBuildOnGuiThread(m_options.compileOnGuiThread);
+    m_liveShaders->setWarmUp(m_options.warmUp);
+    const ShaderRecovery::Answer answer = m_options.recoveryAnswer;
+    if (answer != ShaderRecovery::Answer::Ask)
+        m_liveShaders->offerRecovery(answer, this);
     else
-        QTimer::singleShot(0, this, [this] { m_liveShaders->offerRecovery(this); });
-    if (qEnvironmentVariableIsSet("PHONGLAB_TEST_TYPE_AFTER_START"))
+        QTimer::singleShot(0, this, [this, answer] { m_liveShaders->offerRecovery(answer, this); });
+    if (!m_options.typeAfterStart.isEmpty())
         connect(m_viewport, &Viewport::glInitialized, this, &MainWindow::typeTestTextAfterStart,
                 Qt::SingleShotConnection);
 }
@@ -141,7 +145,7 @@ void MainWindow::createShaderDock()
 void MainWindow::typeTestTextAfterStart()
 {
     ShaderEditor *editor = m_shaderDock->editor(ShaderStage::Fragment);
-    editor->append(qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START"));
+    editor->append(m_options.typeAfterStart);
     m_liveShaders->recovery()->writeNow();
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "StartupOptions.h"
 #include "core/NormalOptions.h"
 #include "core/ShadingMethod.h"
 
@@ -36,7 +37,8 @@ class MainWindow : public QMainWindow
     Q_OBJECT
 
 public:
-    explicit MainWindow(QWidget *parent = nullptr);
+    // Options default to what the environment says (StartupOptions.h).
+    explicit MainWindow(QWidget *parent = nullptr, const StartupOptions &options = StartupOptions::fromEnvironment());
     ~MainWindow() override;
 
     // Load / save without any dialog, on the calling thread (startup, tests);
@@ -121,6 +123,7 @@ private:
     QString dialogFolder() const;
     void warn(const QString &title, const QString &message);
 
+    StartupOptions m_options; // first: the members below are built from it
     Viewport *m_viewport = nullptr;
     SceneLoadJob *m_loadJob = nullptr;
     SceneDock *m_sceneDock = nullptr;

@@ -49,16 +49,6 @@ ShaderRecovery::ShaderRecovery(ShaderDock *dock, QObject *parent)
 
 ShaderRecovery::~ShaderRecovery() = default;
 
-ShaderRecovery::Answer ShaderRecovery::answerFromEnvironment()
-{
-    const QString answer = qEnvironmentVariable("PHONGLAB_RECOVERY_ANSWER").trimmed().toLower();
-    if (answer == QLatin1String("restore"))
-        return Answer::Restore;
-    if (answer == QLatin1String("discard"))
-        return Answer::Discard;
-    return Answer::Ask;
-}
-
 ShaderRecovery::Outcome ShaderRecovery::offer(Answer answer, QWidget *parent)
 {
     const QList<OrphanedSession> orphans = m_journal.orphans();

@@ -42,8 +42,6 @@ public:
     explicit ShaderRecovery(ShaderDock *dock, QObject *parent = nullptr);
     ~ShaderRecovery() override;
 
-    // $PHONGLAB_RECOVERY_ANSWER (restore|discard) answers without a dialog.
-    static Answer answerFromEnvironment();
     // Offers the newest orphaned journal (if any) and restores it into the
     // dock when the answer is yes. Ask shows a modal question on `parent`.
     Outcome offer(Answer answer, QWidget *parent);

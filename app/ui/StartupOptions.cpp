@@ -1,0 +1,35 @@
+#include "StartupOptions.h"
+
+#include <QtGlobal>
+
+namespace phonglab {
+
+namespace {
+
+QString lowerValue(const char *name)
+{
+    return qEnvironmentVariable(name).trimmed().toLower();
+}
+
+} // namespace
+
+StartupOptions StartupOptions::fromEnvironment()
+{
+    StartupOptions o;
+    const QString answer = lowerValue("PHONGLAB_RECOVERY_ANSWER");
+    if (answer == QLatin1String("restore"))
+        o.recoveryAnswer = ShaderRecovery::Answer::Restore;
+    else if (answer == QLatin1String("discard"))
+        o.recoveryAnswer = ShaderRecovery::Answer::Discard;
+    using W = LiveShaderController::WarmUp;
+    const QString warmUp = lowerValue("PHONGLAB_WARM_UP");
+    if (warmUp == QLatin1String("off"))
+        o.warmUp = W::Off;
+    else if (warmUp == QLatin1String("worker"))
+        o.warmUp = W::WorkerContext;
+    o.compileOnGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
+    o.typeAfterStart = qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START");
+    return o;
+}
+
+} // namespace phonglab

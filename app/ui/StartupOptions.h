@@ -1,0 +1,29 @@
+#pragma once
+#include "LiveShaderController.h"
+#include "ShaderRecovery.h"
+
+#include <QString>
+
+namespace phonglab {
+
+// What the environment says when the window starts, read in one place: the
+// overrides a user or a benchmark may set and the hooks the tests use. The
+// window is built from these; nothing below it reads the environment for
+// them again.
+struct StartupOptions {
+    // $PHONGLAB_RECOVERY_ANSWER=restore|discard: answers the crash-recovery
+    // question without a dialog (tests, scripts).
+    ShaderRecovery::Answer recoveryAnswer = ShaderRecovery::Answer::Ask;
+    // $PHONGLAB_WARM_UP=off|worker|viewport: where a new program is warmed up.
+    LiveShaderController::WarmUp warmUp = LiveShaderController::WarmUp::ViewportContext;
+    // $PHONGLAB_COMPILE_ON_GUI_THREAD=1: no build worker (the fallback path).
+    bool compileOnGuiThread = false;
+    // $PHONGLAB_TEST_TYPE_AFTER_START=TEXT: typed into the fragment editor once
+    // GL is up, and journaled at once (the crash-recovery test kills the
+    // process after it).
+    QString typeAfterStart;
+
+    static StartupOptions fromEnvironment();
+};
+
+} // namespace phonglab
