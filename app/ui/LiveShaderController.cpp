@@ -159,6 +159,11 @@ void LiveShaderController::buildNow()
     requestBuild(true);
 }
 
+bool LiveShaderController::isWaitingToBuild() const
+{
+    return m_debounce->isActive();
+}
+
 void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent)
 {
     const ShaderRecovery::Outcome outcome = m_recovery->offer(answer, dialogParent);

@@ -62,6 +62,9 @@ public:
     bool buildsOnWorker() const;
     bool isBuilding() const { return m_inFlight != 0 || m_loanActive; }
     bool isAutoBuildHeld() const { return m_holdAutoBuild; }
+    // An edit is waiting out the debounce; once it is not, the controller has
+    // decided whether that text builds (isBuilding()) or not.
+    bool isWaitingToBuild() const;
     QByteArray appliedHash() const { return m_appliedHash; }
     // Timings of the program in use (warmNs > 0: warmed before it was shown).
     const ProgramBuildReply &lastApplied() const { return m_lastApplied; }

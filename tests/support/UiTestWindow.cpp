@@ -58,14 +58,7 @@ void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, Q
 
 bool waitForApplied(const LiveShaderController &live, int timeoutMs)
 {
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < timeoutMs) {
-        if (live.appliedHash() == live.currentHash() && !live.isBuilding())
-            return true;
-        QTest::qWait(10);
-    }
-    return false;
+    return QTest::qWaitFor([&] { return live.appliedHash() == live.currentHash() && !live.isBuilding(); }, timeoutMs);
 }
 
 Viewport *UiTestWindow::viewport() const

@@ -252,7 +252,9 @@ void TestLiveEdit::unchangedTextIsNotRebuilt()
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
     typeAfter(QStringLiteral("vec4(I * 0.5"), QStringLiteral("1")); // 0.51 ...
     QTest::keyClick(fragmentEditor(), Qt::Key_Backspace);           // ... and back
-    QTest::qWait(live()->debounceMs() + 300);
+    // Once the debounce has run out the controller has decided: no build.
+    QTRY_VERIFY_WITH_TIMEOUT(!live()->isWaitingToBuild(), kBuildTimeoutMs);
+    QVERIFY(!live()->isBuilding());
     QCOMPARE(applied.count(), 0);
     // F5 builds even unchanged text.
     dock()->compileAction()->trigger();
@@ -370,9 +372,9 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QVERIFY(live()->isAutoBuildHeld());
     QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("F5")));
     const QImage shipped = frame();
-    QTest::qWait(live()->debounceMs() + 500);
-    QVERIFY(!live()->isBuilding());
-    QVERIFY(live()->appliedHash() != live()->currentHash()); // not compiled
+    QTRY_VERIFY_WITH_TIMEOUT(!live()->isWaitingToBuild(), kBuildTimeoutMs); // nothing scheduled ...
+    QVERIFY(!live()->isBuilding());                                         // ... and nothing built
+    QVERIFY(live()->appliedHash() != live()->currentHash());                // not compiled
     QCOMPARE(live()->appliedHash(), recoveryTextHash(record.vertex.text, shippedFragment));
     QCOMPARE(frame(), shipped);
 

@@ -34,6 +34,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThreadPool>
 #include <QTimer>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -190,12 +191,10 @@ bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
     QSignalSpy failed(job, &SceneLoadJob::failed);
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     start();
-    QElapsedTimer timer;
-    timer.start();
-    while (!job->isRunning() && loaded.isEmpty() && failed.isEmpty() && timer.elapsed() < 1000)
-        QTest::qWait(5); // requests from the dock arrive queued
-    while (job->isRunning() && timer.elapsed() < kLoadTimeoutMs)
-        QTest::qWait(10);
+    // Requests from the dock arrive queued: first the load starts (or ends at once) ...
+    QTest::qWaitFor([&] { return job->isRunning() || !loaded.isEmpty() || !failed.isEmpty(); }, 1000);
+    // ... then it ends.
+    QTest::qWaitFor([&] { return !job->isRunning(); }, kLoadTimeoutMs);
     m_lastError = failed.isEmpty() ? QString() : failed.last().at(1).toString();
     return !loaded.isEmpty() && failed.isEmpty() && !job->isRunning();
 }
@@ -401,7 +400,10 @@ void TestMeshLoading::cancelKeepsScene()
     QCOMPARE(cancelled.count(), 1);
     QVERIFY(!job->isRunning());
     QVERIFY(!m_window->loadProgress()->isVisible());
-    QTest::qWait(500); // whatever the abandoned worker does now must not show
+    // Whatever the abandoned worker does when it ends must not show: let it
+    // end, and deliver what it queued.
+    QVERIFY(QThreadPool::globalInstance()->waitForDone(kLoadTimeoutMs));
+    QCoreApplication::processEvents();
     QCOMPARE(loaded.count(), 0);
     QCOMPARE(viewport()->currentScene(), before);
     QVERIFY(!visibleMessageBox()); // cancelling is not an error
@@ -465,7 +467,9 @@ void TestMeshLoading::closingWhileLoading()
     timer.start();
     m_window.reset();
     qInfo("window closed %lld ms into a load", timer.elapsed());
-    QTest::qWait(100);
+    // The abandoned worker ends with nothing left to report to.
+    QVERIFY(QThreadPool::globalInstance()->waitForDone(kLoadTimeoutMs));
+    QCoreApplication::processEvents();
 }
 
 void TestMeshLoading::flatNormalsFromTheDock()

@@ -4,6 +4,7 @@
 
 #include "core/RecoveryJournal.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QLockFile>
@@ -209,7 +210,10 @@ void TestRecoveryJournal::orphansNewestFirstAndDiscard()
     RecoveryRecord older = sampleRecord();
     older.fragment.text = "older";
     leaveOrphan(m_dir->path(), QStringLiteral("1-1"), older);
-    QTest::qWait(20); // savedAt has millisecond resolution
+    // savedAt has millisecond resolution: the next record is saved a
+    // millisecond later at least.
+    const qint64 olderSaved = QDateTime::currentMSecsSinceEpoch();
+    QTRY_VERIFY(QDateTime::currentMSecsSinceEpoch() > olderSaved);
     RecoveryRecord newer = sampleRecord();
     newer.fragment.text = "newer";
     leaveOrphan(m_dir->path(), QStringLiteral("2-2"), newer);
