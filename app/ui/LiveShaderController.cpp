@@ -61,7 +61,7 @@ void LiveShaderController::setUpTimers()
 {
     m_debounce->setSingleShot(true);
     m_debounce->setInterval(std::max(0, m_debounceMs));
-    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(false); });
+    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(BuildRequest::NewText); });
     // Said only when a build is slow: relaying out the dock for a status that
     // lasts 3 ms would cost the GUI thread more than the build itself.
     m_slowBuildNote->setSingleShot(true);
@@ -129,7 +129,7 @@ void LiveShaderController::applyPreset(ShadingMethod method)
     showPreset(method);
     m_viewport->setShading(method); // so Save writes the method in use
     m_holdAutoBuild = false;
-    requestBuild(true);
+    requestBuild(BuildRequest::Always);
 }
 
 void LiveShaderController::followSceneShading(ShadingMethod method)
@@ -149,14 +149,14 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
                            .arg(shadingName(method)),
                        kStatusTimeoutMs);
     if (!m_holdAutoBuild)
-        requestBuild(true);
+        requestBuild(BuildRequest::Always);
 }
 
 void LiveShaderController::buildNow()
 {
     m_debounce->stop();
     m_holdAutoBuild = false;
-    requestBuild(true);
+    requestBuild(BuildRequest::Always);
 }
 
 bool LiveShaderController::isWaitingToBuild() const
@@ -177,7 +177,7 @@ void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget 
         m_holdAutoBuild = outcome.suspect;
         m_debounce->stop(); // restoring typed the text in again; build it once, below
         if (!outcome.suspect)
-            requestBuild(false);
+            requestBuild(BuildRequest::NewText);
     }
     m_dock->setCompileStatus(outcome.note, !outcome.suspect);
     emit statusMessage(outcome.note, 0);
@@ -198,11 +198,11 @@ void LiveShaderController::onGlInitialized()
     const auto [vertex, fragment] = shippedSources(m_viewport->currentScene().shading, &error);
     m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
     startWorker();
-    const bool wanted = std::exchange(m_buildWhenReady, false);
+    const bool wanted = std::exchange(m_queued, std::nullopt).has_value();
     if (m_holdAutoBuild)
         return;
     if (wanted || currentHash() != m_appliedHash)
-        requestBuild(false);
+        requestBuild(BuildRequest::NewText);
 }
 
 // The viewport replaced the program with a shipped one. For another
@@ -215,7 +215,7 @@ void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
     const auto [vertex, fragment] = shippedSources(method, &error);
     m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
     if (method == m_shading && !m_holdAutoBuild && currentHash() != m_appliedHash)
-        requestBuild(false);
+        requestBuild(BuildRequest::NewText);
 }
 
 void LiveShaderController::onGlAboutToBeReleased()
@@ -226,7 +226,7 @@ void LiveShaderController::onGlAboutToBeReleased()
     endLoanNow();
     m_glReady = false;
     m_inFlight = 0;
-    m_pending = false;
+    m_queued.reset();
     m_slowBuildNote->stop();
     m_hangNote->stop();
 }
@@ -256,18 +256,19 @@ void LiveShaderController::startWorker()
           m_builder->hasParallelShaderCompile() ? "available" : "not available");
 }
 
-void LiveShaderController::requestBuild(bool force)
+void LiveShaderController::requestBuild(BuildRequest request)
 {
+    // Asked for while no build can start: remembered, Always outranking NewText.
+    const auto queue = [&] { m_queued = m_queued == BuildRequest::Always ? BuildRequest::Always : request; };
     if (!m_glReady) {
-        m_buildWhenReady = true;
+        queue();
         return;
     }
     const QByteArray hash = currentHash();
-    if (!force && hash == m_lastBuiltHash)
+    if (request == BuildRequest::NewText && hash == m_lastBuiltHash)
         return;
     if (m_inFlight) {
-        m_pending = true;
-        m_pendingForce = m_pendingForce || force;
+        queue();
         return;
     }
     dispatch(hash);
@@ -310,8 +311,8 @@ void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
     // Even when newer text waits, a finished program is shown: steady
     // progress while someone keeps typing in bursts longer than a build.
     finish(m_inFlightHash, reply);
-    if (std::exchange(m_pending, false))
-        requestBuild(std::exchange(m_pendingForce, false));
+    if (const std::optional<BuildRequest> queued = std::exchange(m_queued, std::nullopt))
+        requestBuild(*queued);
 }
 
 void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildReply &reply)

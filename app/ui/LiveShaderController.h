@@ -5,6 +5,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <optional>
 
 class QTimer;
 class QWidget;
@@ -87,7 +88,12 @@ private:
     void onGlAboutToBeReleased();
     void onShippedProgramLoaded(ShadingMethod method);
     void startWorker();
-    void requestBuild(bool force);
+    // An edit builds only text not built yet; F5 and a restore build whatever is there.
+    enum class BuildRequest {
+        NewText,
+        Always
+    };
+    void requestBuild(BuildRequest request);
     void dispatch(const QByteArray &hash);
     void onBuilt(const ProgramBuildReply &reply);
     void finish(const QByteArray &hash, const ProgramBuildReply &reply);
@@ -107,7 +113,6 @@ private:
     ShadingMethod m_shading = ShadingMethod::Phong;
 
     bool m_glReady = false;
-    bool m_buildWhenReady = false;
     bool m_forceGuiThread = false;
     WarmUp m_warmUp = WarmUp::ViewportContext;
     bool m_loanActive = false;    // the viewport's context is on the worker
@@ -117,8 +122,9 @@ private:
     ProgramBuildReply m_lastApplied;
     quint64 m_inFlight = 0; // serial of the build on the worker, 0 if none
     QByteArray m_inFlightHash;
-    bool m_pending = false; // another build was asked for meanwhile
-    bool m_pendingForce = false;
+    // A build asked for while none could start (GL not up, or one in
+    // flight): started when it can.
+    std::optional<BuildRequest> m_queued;
     QElapsedTimer m_buildClock; // from dispatch to reply, for the status
 };
 
