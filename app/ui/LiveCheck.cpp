@@ -59,13 +59,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
     connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
     // A new program is checked at once; view and scene changes come in bursts.
-    // A new program is checked once its first frame is on screen: the check
-    // renders the view again on the GUI thread, which must not delay that
-    // frame (bench_edit_latency measures it).
-    connect(live, &LiveShaderController::programApplied, this, [this] {
-        connect(
-            m_viewport, &Viewport::frameRendered, this, [this] { schedule(0); }, Qt::SingleShotConnection);
-    });
+    connect(live, &LiveShaderController::programApplied, this, [this] { schedule(0); });
     for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged, &Viewport::cameraChanged,
                         &Viewport::glInitialized})
         connect(viewport, signal, this, [this] { schedule(); });
