@@ -96,20 +96,10 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                           : QStringLiteral("exactly one scene file expected"));
     CheckArgs args;
     args.scenePath = positional.first();
-    if (parser.isSet(size)) {
-        const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
-        if (!parsed)
-            return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
-                             .arg(kMaxImageSide)
-                             .arg(parser.value(size)));
-        args.size = *parsed;
-    }
-    if (parser.isSet(shading)) {
-        args.shading = shadingFromName(parser.value(shading));
-        if (!args.shading)
-            return usage(QStringLiteral("--shading: unknown method '%1' (known: %2)")
-                             .arg(parser.value(shading), shadingNames().join(QStringLiteral(", "))));
-    }
+    for (const QString &wrong :
+         {readSizeOption(parser, size, kMaxImageSide, &args.size), readShadingOption(parser, shading, &args.shading)})
+        if (!wrong.isEmpty())
+            return usage(wrong);
     if (parser.isSet(tolerance)) {
         bool ok = false;
         args.toleranceSteps = parser.value(tolerance).toInt(&ok);
@@ -216,8 +206,7 @@ int check(const CheckArgs &args, int argc, char **argv)
                 CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
     }
     if (args.json) {
-        printLine(
-            QString::fromUtf8(QJsonDocument(checkJson(outcome, scene)).toJson(QJsonDocument::Indented)).trimmed());
+        printLine(QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented)).trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)
             if (e.line == 0) // compile errors with a line are printed as the compiler's

@@ -100,9 +100,8 @@ QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
 
 } // namespace
 
-QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene)
+QJsonObject checkJson(const CheckOutcome &outcome)
 {
-    Q_UNUSED(scene);
     const bool judged = outcome.verdict != CheckOutcome::Verdict::Error;
     const ImageComparison &c = outcome.report.comparison;
     QJsonObject o;

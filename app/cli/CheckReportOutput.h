@@ -28,7 +28,7 @@ struct CheckOutcome {
     std::vector<ShaderStageText> stages;  // the user's sources, for the diagnosis' lines
 };
 
-QJsonObject checkJson(const CheckOutcome &outcome, const Scene &scene);
+QJsonObject checkJson(const CheckOutcome &outcome);
 QString checkText(const CheckOutcome &outcome, const Scene &scene);
 
 } // namespace phonglab::cli

@@ -86,20 +86,10 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     RenderArgs args;
     args.scenePath = positional.first();
     args.outputPath = parser.value(output);
-    if (parser.isSet(size)) {
-        const auto parsed = parseSizeArgument(parser.value(size), 1, kMaxImageSide);
-        if (!parsed)
-            return usage(QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
-                             .arg(kMaxImageSide)
-                             .arg(parser.value(size)));
-        args.size = *parsed;
-    }
-    if (parser.isSet(shading)) {
-        args.shading = shadingFromName(parser.value(shading));
-        if (!args.shading)
-            return usage(
-                QStringLiteral("--shading: unknown method '%1' (known: %2)").arg(parser.value(shading), knownMethods));
-    }
+    for (const QString &wrong :
+         {readSizeOption(parser, size, kMaxImageSide, &args.size), readShadingOption(parser, shading, &args.shading)})
+        if (!wrong.isEmpty())
+            return usage(wrong);
     args.vertexPath = parser.value(vertex);
     args.fragmentPath = parser.value(fragment);
     return args;

@@ -1,5 +1,6 @@
 #include "SceneStages.h"
 
+#include "CliCommon.h"
 #include "core/ResourcePaths.h"
 #include "render/ShaderSource.h"
 
@@ -27,6 +28,31 @@ StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const 
     return {
         stagePath(vertexArg, scene.vertexShader, scene, methodChosen, shaderPath(name + QStringLiteral(".vert"))),
         stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen, shaderPath(name + QStringLiteral(".frag")))};
+}
+
+QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option, int maxSide, QSize *size)
+{
+    if (!parser.isSet(option))
+        return {};
+    const auto parsed = parseSizeArgument(parser.value(option), 1, maxSide);
+    if (!parsed)
+        return QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
+            .arg(maxSide)
+            .arg(parser.value(option));
+    *size = *parsed;
+    return {};
+}
+
+QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
+                          std::optional<ShadingMethod> *shading)
+{
+    if (!parser.isSet(option))
+        return {};
+    *shading = shadingFromName(parser.value(option));
+    if (!*shading)
+        return QStringLiteral("--shading: unknown method '%1' (known: %2)")
+            .arg(parser.value(option), shadingNames().join(QStringLiteral(", ")));
+    return {};
 }
 
 CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,

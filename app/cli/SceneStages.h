@@ -5,6 +5,7 @@
 #include "render/CompileResult.h"
 #include "render/Renderer.h"
 
+#include <QCommandLineParser>
 #include <QImage>
 #include <QString>
 #include <optional>
@@ -22,6 +23,13 @@ struct StageFiles {
 };
 StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg,
                             bool methodChosen);
+
+// --size and --shading, read the one way `render` and `check` take them.
+// Each leaves its output alone when the option is not given and returns an
+// empty string, or the message for usage() when the value is wrong.
+QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option, int maxSide, QSize *size);
+QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
+                          std::optional<ShadingMethod> *shading);
 
 // Reads both files and builds the program. *error is set (and nothing built)
 // when a file cannot be read; `texts` receives what was read.

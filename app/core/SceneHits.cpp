@@ -28,14 +28,6 @@ ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHi
 
 } // namespace
 
-std::vector<int> SceneHits::objectIds() const
-{
-    std::vector<int> ids(hits.size());
-    for (std::size_t i = 0; i < hits.size(); ++i)
-        ids[i] = hits[i].object;
-    return ids;
-}
-
 ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const ReferenceShader &shader)
 {
     const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);

@@ -41,8 +41,6 @@ struct SceneHits {
     std::vector<ReferenceHit> hits; // row-major, row 0 at the top
 
     const ReferenceHit &at(int x, int y) const { return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    // The scene object each pixel shows, -1 for the background.
-    std::vector<int> objectIds() const;
 };
 
 // raycastSceneMeshes()'s rays (MeshRaycaster.h: same inputs, conventions,

@@ -11,6 +11,7 @@
 // apart. The peer in the same run is one frame of the same view rendered
 // again at the same size (Viewport::renderImage), so the ratio survives a
 // noisy machine.
+#include "BenchHelpers.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "ui/LiveCheck.h"
@@ -36,25 +37,9 @@
 #include <cstdio>
 
 using namespace phonglab;
+using namespace phonglab::bench;
 
 namespace {
-
-double percentile(std::vector<double> v, double p)
-{
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(std::ceil(p * double(v.size()))) - 1)];
-}
-
-QByteArray editedFragment(double k)
-{
-    QFile file(shaderPath(QStringLiteral("phong.frag")));
-    file.open(QIODevice::ReadOnly);
-    QByteArray text = file.readAll();
-    text.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
-    return text;
-}
 
 // From a new fragment text to the verdict; -1 on a timeout.
 struct Sample {

@@ -11,6 +11,7 @@
 // 1 ms timer on the GUI thread records the longest gap between its ticks:
 // how long typing would have frozen. Mesa's shader cache is disabled so that
 // every build pays the full price, as a new text does.
+#include "BenchHelpers.h"
 #include "EditSample.h"
 #include "RawGlEditPath.h"
 #include "core/ResourcePaths.h"
@@ -44,25 +45,6 @@ using namespace phonglab;
 using namespace phonglab::bench;
 
 namespace {
-
-double percentile(std::vector<double> v, double p)
-{
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t rank = std::min(v.size() - 1, std::size_t(std::ceil(p * double(v.size()))) - (p > 0 ? 1 : 0));
-    return v[rank];
-}
-
-// The shipped Phong fragment shader with its output scaled by `k`.
-QByteArray editedFragment(double k)
-{
-    QFile file(shaderPath(QStringLiteral("phong.frag")));
-    file.open(QIODevice::ReadOnly);
-    QByteArray text = file.readAll();
-    text.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
-    return text;
-}
 
 // ---- PhongLab's path: the real window, dock, controller and viewport ------
 
