@@ -4,7 +4,9 @@
 #   cmake -P cmake/CheckLayers.cmake          (from the source tree's root)
 #
 # Prints each upward edge as FILE:LINE: includes LAYER/... and fails when
-# there is one. Registered with CTest as unit.layers. The libraries enforce
+# there is one. core and mesh use Qt Core alone: any <Q...> header they
+# include must be one of QtCore's (pass -DQT_CORE_INCLUDE_DIR=... where Qt
+# is not under /usr/include/<triplet>/qt6). Registered with CTest as unit.layers. The libraries enforce
 # the same order at link time (app/CMakeLists.txt): a layer links only the
 # ones listed here for it.
 cmake_minimum_required(VERSION 3.16)
@@ -17,6 +19,12 @@ set(allowed_bench  core mesh render bench)
 set(allowed_ui     core mesh render bench ui)
 set(allowed_cli    core mesh render bench cli)
 set(layers core mesh render bench ui cli)
+
+if(NOT QT_CORE_INCLUDE_DIR)
+  file(GLOB QT_CORE_INCLUDE_DIR /usr/include/*/qt6/QtCore /usr/include/qt6/QtCore)
+  list(GET QT_CORE_INCLUDE_DIR 0 QT_CORE_INCLUDE_DIR)
+endif()
+set(qt_core_only core mesh)
 
 set(violations 0)
 foreach(layer IN LISTS layers)
@@ -36,11 +44,20 @@ foreach(layer IN LISTS layers)
           math(EXPR violations "${violations} + 1")
         endif()
       endif()
+      if(layer IN_LIST qt_core_only AND line MATCHES "^#include <(Q[A-Za-z/]+)>")
+        set(included "${CMAKE_MATCH_1}")
+        string(REGEX REPLACE "^QtCore/" "" header "${included}")
+        if(NOT EXISTS "${QT_CORE_INCLUDE_DIR}/${header}")
+          file(RELATIVE_PATH relative "${root}" "${file}")
+          message("${relative}:${number}: includes <${included}>, not Qt Core: the ${layer} layer has no Qt GUI")
+          math(EXPR violations "${violations} + 1")
+        endif()
+      endif()
     endforeach()
   endforeach()
 endforeach()
 
 if(violations GREATER 0)
-  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench, ui, cli)")
+  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench, ui, cli) or reach past Qt Core")
 endif()
-message(STATUS "layers: every include points down (core <- mesh <- render <- bench <- ui; bench <- cli)")
+message(STATUS "layers: every include points down (core <- mesh <- render <- bench <- ui; bench <- cli); core and mesh use Qt Core alone")

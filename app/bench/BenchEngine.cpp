@@ -10,6 +10,7 @@
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -234,9 +235,10 @@ BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std:
     const FrameTiming timing = m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
     const QImage image = m_offscreen->renderImage(options.size);
     const ReferenceImage &reference = state.references[setup];
-    const BandComparison all = compareOutsideBand(image, reference, scene.background, options.bandPx, &state.compared);
+    const RgbImage pixels = toRgbImage(image);
+    const BandComparison all = compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.compared);
     const BandComparison highlight =
-        compareOutsideBand(image, reference, scene.background, options.bandPx, &state.specular[setup]);
+        compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.specular[setup]);
 
     BenchRow row;
     row.scene = state.name;

@@ -1,6 +1,7 @@
 #include "BenchPictures.h"
 
 #include "core/ImageMetrics.h"
+#include "render/QtImages.h"
 
 #include <QPainter>
 
@@ -16,8 +17,9 @@ QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, co
     out.fill(QColor(24, 24, 28));
     QPainter painter(&out);
     painter.drawImage(0, kCaption, rendered);
-    painter.drawImage(w + kGap, kCaption, reference.toImage(background));
-    painter.drawImage(2 * (w + kGap), kCaption, errorHeatmap(rendered, reference, bandPx, compared));
+    painter.drawImage(w + kGap, kCaption, toQImage(reference.toImage(background)));
+    painter.drawImage(2 * (w + kGap), kCaption,
+                      toQImage(errorHeatmap(toRgbImage(rendered), reference, bandPx, compared)));
     painter.setPen(QColor(235, 235, 235));
     QFont font = painter.font();
     font.setPixelSize(14);

@@ -6,6 +6,7 @@
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QCommandLineParser>
 #include <QGuiApplication>
@@ -171,7 +172,7 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     if (!made)
         return fail(args.scenePath, QStringLiteral("no reference: %1").arg(error));
     *reference = std::move(*made);
-    outcome.report = checkRender(*yours, *reference, args.toleranceSteps);
+    outcome.report = checkRender(toRgbImage(*yours), *reference, args.toleranceSteps);
     if (!outcome.report.comparable())
         return fail(args.scenePath,
                     QStringLiteral("nothing to compare: no surface away from silhouettes in this "
@@ -201,7 +202,7 @@ int check(const CheckArgs &args, int argc, char **argv)
 
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
         QString error;
-        if (!writePng(checkHeatmap(yours, reference), args.diffPath, &error))
+        if (!writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath, &error))
             outcome =
                 CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
     }

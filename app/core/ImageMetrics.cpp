@@ -45,15 +45,10 @@ private:
     double m_sumSquares = 0;
 };
 
-QImage toRgb888(const QImage &image)
+bool sameSize(const RgbImage &rendered, const ReferenceImage &reference)
 {
-    return image.format() == QImage::Format_RGB888 ? image : image.convertToFormat(QImage::Format_RGB888);
-}
-
-bool sameSize(const QImage &rendered, const ReferenceImage &reference)
-{
-    return !rendered.isNull() && !reference.isNull() && rendered.width() == reference.width
-        && rendered.height() == reference.height;
+    return !rendered.isNull() && !reference.isNull() && rendered.width == reference.width
+        && rendered.height == reference.height;
 }
 
 // 1 where a pixel's coverage differs from one of its 8 neighbours.
@@ -124,15 +119,23 @@ void encodeReferencePixel(const ReferenceImage &reference, std::size_t i, uchar 
     out[2] = uchar(encodeChannel(I.b));
 }
 
-QRgb heatColor(int error)
+void setColor(uchar *out, int r, int g, int b)
+{
+    out[0] = uchar(r);
+    out[1] = uchar(g);
+    out[2] = uchar(b);
+}
+
+void setHeatColor(uchar *out, int error)
 {
     // Dark green at 0, yellow at 4/255, red at 8/255 and beyond.
     const double t = std::min(error, 8) / 8.0;
     if (error == 0)
-        return qRgb(0, 64, 0);
-    if (t <= 0.5)
-        return qRgb(int(510 * t), 255, 0);
-    return qRgb(255, int(510 * (1.0 - t)), 0);
+        setColor(out, 0, 64, 0);
+    else if (t <= 0.5)
+        setColor(out, int(510 * t), 255, 0);
+    else
+        setColor(out, 255, int(510 * (1.0 - t)), 0);
 }
 
 } // namespace
@@ -151,46 +154,42 @@ QString ImageComparison::summary() const
         .arg(pixelsCompared);
 }
 
-ImageComparison compareWithReference(const QImage &rendered, const ReferenceImage &reference, int bandPx)
+ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference, int bandPx)
 {
     if (!sameSize(rendered, reference))
         return {};
-    const QImage image = toRgb888(rendered);
     const std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
     ErrorAccumulator errors;
     for (int y = 0; y < reference.height; ++y) {
-        const uchar *row = image.constScanLine(y);
         for (int x = 0; x < reference.width; ++x) {
             const std::size_t i = reference.index(x, y);
             if (!compared[i])
                 continue;
             uchar expected[3];
             encodeReferencePixel(reference, i, expected);
-            errors.add(row + 3 * x, expected, x, y);
+            errors.add(rendered.pixel(i), expected, x, y);
         }
     }
     return errors.result();
 }
 
-BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
-                                  int bandPx, const std::vector<std::uint8_t> *mask)
+BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage &reference,
+                                  const glm::dvec3 &background, int bandPx, const std::vector<std::uint8_t> *mask)
 {
     BandComparison out;
     if (!sameSize(rendered, reference) || (mask && mask->size() != reference.color.size()))
         return out;
-    const QImage image = toRgb888(rendered);
     const std::vector<std::uint8_t> band =
         dilateSquare(silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
     const uchar bg[3] = {uchar(encodeChannel(background.r)), uchar(encodeChannel(background.g)),
                          uchar(encodeChannel(background.b))};
     ErrorAccumulator errors;
     for (int y = 0; y < reference.height; ++y) {
-        const uchar *row = image.constScanLine(y);
         for (int x = 0; x < reference.width; ++x) {
             const std::size_t i = reference.index(x, y);
             if (band[i] || (mask && !(*mask)[i]))
                 continue;
-            const uchar *got = row + 3 * x;
+            const uchar *got = rendered.pixel(i);
             const bool renderCovers = got[0] != bg[0] || got[1] != bg[1] || got[2] != bg[2];
             const bool referenceCovers = reference.coverage[i] != 0;
             if (!referenceCovers && !renderCovers)
@@ -239,53 +238,40 @@ std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, in
     return dilateSquare(mask, width, height, std::max(r, 0));
 }
 
-ImageComparison compareImages(const QImage &a, const QImage &b)
+ImageComparison compareImages(const RgbImage &a, const RgbImage &b)
 {
-    if (a.isNull() || b.isNull() || a.size() != b.size())
+    if (a.isNull() || b.isNull() || !a.sameSize(b))
         return {};
-    const QImage rgbA = toRgb888(a);
-    const QImage rgbB = toRgb888(b);
     ErrorAccumulator errors;
-    for (int y = 0; y < rgbA.height(); ++y) {
-        const uchar *rowA = rgbA.constScanLine(y);
-        const uchar *rowB = rgbB.constScanLine(y);
-        for (int x = 0; x < rgbA.width(); ++x)
-            errors.add(rowA + 3 * x, rowB + 3 * x, x, y);
-    }
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            errors.add(a.pixel(x, y), b.pixel(x, y), x, y);
     return errors.result();
 }
 
-QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx,
-                    const std::vector<std::uint8_t> *alsoCompared)
+RgbImage errorHeatmap(const RgbImage &rendered, const ReferenceImage &reference, int bandPx,
+                      const std::vector<std::uint8_t> *alsoCompared)
 {
     if (!sameSize(rendered, reference))
         return {};
-    const QImage image = toRgb888(rendered);
     std::vector<std::uint8_t> compared = comparedPixels(reference, bandPx);
     if (alsoCompared && alsoCompared->size() == compared.size())
         for (std::size_t i = 0; i < compared.size(); ++i)
             compared[i] = compared[i] && (*alsoCompared)[i];
-    QImage heatmap(reference.width, reference.height, QImage::Format_RGB32);
-    for (int y = 0; y < reference.height; ++y) {
-        const uchar *row = image.constScanLine(y);
-        auto *out = reinterpret_cast<QRgb *>(heatmap.scanLine(y));
-        for (int x = 0; x < reference.width; ++x) {
-            const std::size_t i = reference.index(x, y);
-            if (!reference.coverage[i]) {
-                out[x] = qRgb(0, 0, 0);
-                continue;
-            }
-            if (!compared[i]) {
-                out[x] = qRgb(0, 0, 96);
-                continue;
-            }
-            uchar expected[3];
-            encodeReferencePixel(reference, i, expected);
-            int worst = 0;
-            for (int c = 0; c < 3; ++c)
-                worst = std::max(worst, std::abs(int(row[3 * x + c]) - int(expected[c])));
-            out[x] = heatColor(worst);
+    RgbImage heatmap(reference.width, reference.height); // black: uncovered
+    for (std::size_t i = 0; i < compared.size(); ++i) {
+        if (!reference.coverage[i])
+            continue;
+        if (!compared[i]) {
+            setColor(heatmap.pixel(i), 0, 0, 96);
+            continue;
         }
+        uchar expected[3];
+        encodeReferencePixel(reference, i, expected);
+        int worst = 0;
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(int(rendered.pixel(i)[c]) - int(expected[c])));
+        setHeatColor(heatmap.pixel(i), worst);
     }
     return heatmap;
 }

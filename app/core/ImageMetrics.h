@@ -1,7 +1,7 @@
 #pragma once
 #include "ReferenceImage.h"
+#include "RgbImage.h"
 
-#include <QImage>
 #include <QPoint>
 #include <QString>
 
@@ -26,7 +26,7 @@ struct ImageComparison {
 // whose coverage differs from one of its 8 neighbours; both sides of an edge
 // count, so bandPx = 0 already leaves out the edge pixels themselves, which a
 // tessellated mesh covers differently from the analytic surface.
-ImageComparison compareWithReference(const QImage &rendered, const ReferenceImage &reference, int bandPx);
+ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference, int bandPx);
 
 // What the speed-against-accuracy bench measures: every pixel more than
 // bandPx from a silhouette of the reference where either image shows a
@@ -37,8 +37,9 @@ struct BandComparison {
     ImageComparison error;
     qint64 coverageErrors = 0; // compared pixels covered in one image and not in the other
 };
-BandComparison compareOutsideBand(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background,
-                                  int bandPx, const std::vector<std::uint8_t> *mask = nullptr);
+BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage &reference,
+                                  const glm::dvec3 &background, int bandPx,
+                                  const std::vector<std::uint8_t> *mask = nullptr);
 
 // Pixels next to an occluding contour inside the reference: where one
 // surface passes in front of another, so the covered pixels on either side
@@ -54,14 +55,14 @@ std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference
 std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height, int r);
 
 // Every pixel, R, G and B.
-ImageComparison compareImages(const QImage &a, const QImage &b);
+ImageComparison compareImages(const RgbImage &a, const RgbImage &b);
 
 // A picture of where compareWithReference() found errors, for saving next to a
 // failing test: compared pixels ramp from dark green (exact) through yellow to
 // red (8/255 or more off), band pixels are dark blue, uncovered ones black.
 // Null on a size mismatch. With `alsoCompared`, pixels where it is 0 count
 // as band too (the bench's occluding contours).
-QImage errorHeatmap(const QImage &rendered, const ReferenceImage &reference, int bandPx,
-                    const std::vector<std::uint8_t> *alsoCompared = nullptr);
+RgbImage errorHeatmap(const RgbImage &rendered, const ReferenceImage &reference, int bandPx,
+                      const std::vector<std::uint8_t> *alsoCompared = nullptr);
 
 } // namespace phonglab

@@ -7,44 +7,30 @@ namespace phonglab {
 
 namespace {
 
-// Images as rows of 0xffRRGGBB, so pixels are compared without QImage::pixel().
-QImage rgb32(const QImage &image)
+bool within(const std::uint8_t *a, const std::uint8_t *b, int steps)
 {
-    return image.convertToFormat(QImage::Format_RGB32);
+    return std::abs(a[0] - b[0]) <= steps && std::abs(a[1] - b[1]) <= steps && std::abs(a[2] - b[2]) <= steps;
 }
 
-const QRgb *pixels(const QImage &image)
+bool equal(const std::uint8_t *a, const std::uint8_t *b)
 {
-    return reinterpret_cast<const QRgb *>(image.constBits());
-}
-
-bool within(QRgb a, QRgb b, int steps)
-{
-    return std::abs(qRed(a) - qRed(b)) <= steps && std::abs(qGreen(a) - qGreen(b)) <= steps
-        && std::abs(qBlue(a) - qBlue(b)) <= steps;
-}
-
-// Pixel i of a tightly packed RGB32 image (bytesPerLine == 4·width for
-// every width: RGB32 rows need no padding).
-QRgb at(const QImage &image, std::size_t i)
-{
-    return pixels(image)[i];
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
 // The compared pixels where `image` is off `exact` by more than the tolerance.
-std::vector<std::uint8_t> differing(const QImage &image, const QImage &exact, const std::vector<std::uint8_t> &compared,
-                                    int steps)
+std::vector<std::uint8_t> differing(const RgbImage &image, const RgbImage &exact,
+                                    const std::vector<std::uint8_t> &compared, int steps)
 {
     std::vector<std::uint8_t> out(compared.size(), 0);
     for (std::size_t i = 0; i < compared.size(); ++i)
-        out[i] = compared[i] && !within(at(image, i), at(exact, i), steps);
+        out[i] = compared[i] && !within(image.pixel(i), exact.pixel(i), steps);
     return out;
 }
 
-bool sameImage(const QImage &a, const QImage &b, const std::vector<std::uint8_t> &compared)
+bool sameImage(const RgbImage &a, const RgbImage &b, const std::vector<std::uint8_t> &compared)
 {
     for (std::size_t i = 0; i < compared.size(); ++i)
-        if (compared[i] && at(a, i) != at(b, i))
+        if (compared[i] && !equal(a.pixel(i), b.pixel(i)))
             return false;
     return true;
 }
@@ -56,7 +42,7 @@ bool MistakeDiagnosis::unexplained() const
     return differingPixels > 0 && (findings.empty() || findings.front().confidence < kExplainedConfidence);
 }
 
-MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exact,
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const ReferenceImage &exact,
                                   const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps,
                                   const glm::dvec3 &background)
@@ -67,37 +53,33 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exa
     return diagnoseMistakes(yours, exact.toImage(background), images, compared, toleranceSteps);
 }
 
-MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, const MistakeImages &mistaken,
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, const MistakeImages &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps)
 {
     MistakeDiagnosis diagnosis;
-    const std::size_t pixelCount = std::size_t(exact.width()) * std::size_t(exact.height());
-    const bool sizesAgree = yours.size() == exact.size() && compared.size() == pixelCount
-        && std::all_of(mistaken.begin(), mistaken.end(),
-                       [&](const auto &m) { return m.second.size() == exact.size(); });
+    const bool sizesAgree = yours.sameSize(exact) && compared.size() == exact.pixelCount()
+        && std::all_of(mistaken.begin(), mistaken.end(), [&](const auto &m) { return m.second.sameSize(exact); });
     if (!sizesAgree) {
         // Nothing to compare pixel by pixel: every compared pixel differs.
         diagnosis.differingPixels = std::count(compared.begin(), compared.end(), std::uint8_t(1));
         return diagnosis;
     }
-    const QImage exactImage = rgb32(exact);
-    const QImage user = rgb32(yours);
-    const std::vector<std::uint8_t> userDiffers = differing(user, exactImage, compared, toleranceSteps);
+    const std::vector<std::uint8_t> userDiffers = differing(yours, exact, compared, toleranceSteps);
     diagnosis.differingPixels = std::count(userDiffers.begin(), userDiffers.end(), std::uint8_t(1));
 
     // Mistakes in ShaderMistake's order, so the first of a group of equal
     // images is the one named.
-    MistakeImages images;
+    std::vector<std::pair<ShaderMistake, const RgbImage *>> images;
     for (const auto &[mistake, image] : mistaken)
-        images.emplace_back(mistake, rgb32(image));
+        images.emplace_back(mistake, &image);
     std::sort(images.begin(), images.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
 
     std::vector<bool> grouped(images.size(), false);
     for (std::size_t m = 0; m < images.size(); ++m) {
         if (grouped[m])
             continue;
-        const QImage &image = images[m].second;
-        const std::vector<std::uint8_t> mistakeDiffers = differing(image, exactImage, compared, toleranceSteps);
+        const RgbImage &image = *images[m].second;
+        const std::vector<std::uint8_t> mistakeDiffers = differing(image, exact, compared, toleranceSteps);
         if (std::none_of(mistakeDiffers.begin(), mistakeDiffers.end(), [](std::uint8_t d) { return d != 0; })) {
             diagnosis.undetectable.push_back(images[m].first);
             continue;
@@ -105,7 +87,7 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, cons
         MistakeFinding finding;
         finding.key = images[m].first;
         for (std::size_t other = m + 1; other < images.size(); ++other) {
-            if (!grouped[other] && sameImage(image, images[other].second, compared)) {
+            if (!grouped[other] && sameImage(image, *images[other].second, compared)) {
                 grouped[other] = true;
                 finding.also.push_back(images[other].first);
             }
@@ -119,7 +101,7 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, cons
             if (!userDiffers[i] && !mistakeDiffers[i])
                 continue;
             ++either;
-            explained += within(at(user, i), at(image, i), toleranceSteps) ? 1 : 0;
+            explained += within(yours.pixel(i), image.pixel(i), toleranceSteps) ? 1 : 0;
         }
         finding.confidence = double(explained) / double(either);
         if (finding.confidence >= kMinListedConfidence)

@@ -1,8 +1,7 @@
 #pragma once
 #include "ReferenceImage.h"
+#include "RgbImage.h"
 #include "ShaderMistake.h"
-
-#include <QImage>
 
 #include <cstdint>
 #include <utility>
@@ -42,7 +41,7 @@ inline constexpr double kMinListedConfidence = 0.1;
 // Where two mistakes give the same image, the one earlier in
 // ShaderMistake's order is `key`. A render of another size than the
 // reference differs everywhere and has no finding.
-MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exact,
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const ReferenceImage &exact,
                                   const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps,
                                   const glm::dvec3 &background);
@@ -50,8 +49,8 @@ MistakeDiagnosis diagnoseMistakes(const QImage &yours, const ReferenceImage &exa
 // The same on images already encoded as the GPU writes them
 // (ReferenceImage::toImage()), which is all the diagnosis looks at: what a
 // caller judging many renders against one reference keeps.
-using MistakeImages = std::vector<std::pair<ShaderMistake, QImage>>;
-MistakeDiagnosis diagnoseMistakes(const QImage &yours, const QImage &exact, const MistakeImages &mistaken,
+using MistakeImages = std::vector<std::pair<ShaderMistake, RgbImage>>;
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, const MistakeImages &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps);
 
 } // namespace phonglab

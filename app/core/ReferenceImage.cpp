@@ -22,28 +22,21 @@ qint64 ReferenceImage::coveredCount() const
     return std::count_if(coverage.begin(), coverage.end(), [](std::uint8_t c) { return c != 0; });
 }
 
-QImage ReferenceImage::toImage(const glm::dvec3 &background) const
+RgbImage ReferenceImage::toImage(const glm::dvec3 &background) const
 {
     if (isNull())
         return {};
-    QImage image(width, height, QImage::Format_RGB888);
-    const uchar bg[3] = {uchar(encodeChannel(background.r)), uchar(encodeChannel(background.g)),
-                         uchar(encodeChannel(background.b))};
-    for (int y = 0; y < height; ++y) {
-        // Write through scanLine: RGB888 rows are padded to 4 bytes, so rows
-        // are not contiguous in memory.
-        uchar *row = image.scanLine(y);
-        for (int x = 0; x < width; ++x) {
-            uchar *px = row + 3 * x;
-            if (!covered(x, y)) {
-                std::copy(bg, bg + 3, px);
-                continue;
-            }
-            const glm::dvec3 &I = colorAt(x, y);
-            px[0] = uchar(encodeChannel(I.r));
-            px[1] = uchar(encodeChannel(I.g));
-            px[2] = uchar(encodeChannel(I.b));
+    RgbImage image(width, height);
+    const std::uint8_t bg[3] = {std::uint8_t(encodeChannel(background.r)), std::uint8_t(encodeChannel(background.g)),
+                                std::uint8_t(encodeChannel(background.b))};
+    for (std::size_t i = 0; i < color.size(); ++i) {
+        std::uint8_t *px = image.pixel(i);
+        if (!coverage[i]) {
+            std::copy(bg, bg + 3, px);
+            continue;
         }
+        for (int c = 0; c < 3; ++c)
+            px[c] = std::uint8_t(encodeChannel(color[i][c]));
     }
     return image;
 }

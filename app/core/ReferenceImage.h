@@ -1,5 +1,7 @@
 #pragma once
-#include <QImage>
+#include "RgbImage.h"
+
+#include <QtGlobal>
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -34,7 +36,7 @@ struct ReferenceImage {
 
     // 8-bit RGB as the GPU would write it: every channel is encodeChannel(I);
     // uncovered pixels get encodeChannel(background).
-    QImage toImage(const glm::dvec3 &background) const;
+    RgbImage toImage(const glm::dvec3 &background) const;
 };
 
 } // namespace phonglab

@@ -64,7 +64,7 @@ double CheckReport::badFraction() const
     return comparison.pixelsCompared > 0 ? double(badPixels) / double(comparison.pixelsCompared) : 0.0;
 }
 
-CheckReport checkRender(const QImage &yours, const CheckReference &reference, int toleranceSteps)
+CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps)
 {
     CheckReport report;
     report.toleranceSteps = toleranceSteps;
@@ -89,29 +89,24 @@ CheckReport checkRender(const QImage &yours, const CheckReference &reference, in
     return report;
 }
 
-QImage checkHeatmap(const QImage &yours, const CheckReference &reference)
+RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference)
 {
     return errorHeatmap(yours, reference.exact, 0, &reference.compared);
 }
 
-std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &reference)
+std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference)
 {
     const ReferenceImage &exact = reference.exact;
     std::vector<int> out(exact.color.size(), -1);
-    if (yours.size() != QSize(exact.width, exact.height))
+    if (yours.width != exact.width || yours.height != exact.height)
         return out;
-    const QImage image = yours.convertToFormat(QImage::Format_RGB888);
-    for (int y = 0; y < exact.height; ++y) {
-        const uchar *row = image.constScanLine(y);
-        for (int x = 0; x < exact.width; ++x) {
-            const std::size_t i = exact.index(x, y);
-            if (!reference.compared[i])
-                continue;
-            int worst = 0;
-            for (int c = 0; c < 3; ++c)
-                worst = std::max(worst, std::abs(int(row[3 * x + c]) - encodeChannel(exact.color[i][c])));
-            out[i] = worst;
-        }
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (!reference.compared[i])
+            continue;
+        int worst = 0;
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(int(yours.pixel(i)[c]) - encodeChannel(exact.color[i][c])));
+        out[i] = worst;
     }
     return out;
 }

@@ -3,7 +3,6 @@
 #include "MistakeDiagnosis.h"
 #include "SceneHits.h"
 
-#include <QImage>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -25,9 +24,9 @@ struct CheckReference {
     SceneHits hits;
     ReferenceShader shader; // the exact shading of the scene's method
     ReferenceImage exact;
-    QImage exactImage; // exact, 8-bit as the GPU writes it
+    RgbImage exactImage; // exact, 8-bit as the GPU writes it
     // The reference with each classic mistake made, 8-bit (all the diagnosis
-    // looks at, at 4 bytes a pixel), when the exact shading is Phong (the
+    // looks at, at 3 bytes a pixel), when the exact shading is Phong (the
     // mistakes are mistakes of Phong's equation); else empty.
     MistakeImages mistaken;
     std::vector<std::uint8_t> compared; // covered pixels away from every silhouette
@@ -59,17 +58,17 @@ struct CheckReport {
     double badFraction() const;
 };
 
-CheckReport checkRender(const QImage &yours, const CheckReference &reference,
+CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
                         int toleranceSteps = kDefaultCheckToleranceSteps);
 
 // |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
 // from dark green (exact) through yellow to red (8/255 or more), the left-out
 // silhouette band dark blue, uncovered pixels black.
-QImage checkHeatmap(const QImage &yours, const CheckReference &reference);
+RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference);
 
 // The largest channel error of each pixel in 8-bit steps; -1 where the pixel
 // is not compared.
-std::vector<int> checkErrorSteps(const QImage &yours, const CheckReference &reference);
+std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference);
 
 // "✓ matches the exact image (PSNR 58.2 dB, max 1/255)" or
 // "✗ PSNR 21.4 dB, max 87/255, 12.0 % of pixels off — reflect-incident

@@ -1,6 +1,7 @@
 #include "ShaderChecker.h"
 
 #include "mesh/SceneMeshes.h"
+#include "render/QtImages.h"
 
 #include <QScopeGuard>
 #include <QThread>
@@ -131,9 +132,10 @@ void ShaderChecker::start(Request request)
         try {
             result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
             if (result.reference) {
-                result.report = checkRender(request.yours, *result.reference);
-                result.exact = result.reference->exactImage;
-                result.heatmap = checkHeatmap(request.yours, *result.reference);
+                const RgbImage yours = toRgbImage(request.yours);
+                result.report = checkRender(yours, *result.reference);
+                result.exact = toQImage(result.reference->exactImage);
+                result.heatmap = toQImage(checkHeatmap(yours, *result.reference));
             }
         } catch (const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
             result = CheckResult{request.generation,

@@ -6,6 +6,7 @@
 #include "CheckScene.h"
 #include "ShaderMutations.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QTest>
 
@@ -48,7 +49,7 @@ private slots:
         const ShaderSource fs =
             ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.frag").arg(method)), &error);
         QVERIFY2(error.isEmpty(), qPrintable(error));
-        const CheckReport report = checkRender(render(vs, fs), reference);
+        const CheckReport report = checkRender(toRgbImage(render(vs, fs)), reference);
         QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
         QVERIFY(report.comparison.pixelsCompared > 10000);
     }
@@ -66,7 +67,7 @@ private slots:
         for (const QString &key : keys) {
             const ShaderMistake mistake = *shaderMistakeFromKey(key);
             const ShaderPair shaders = withMistake(mistake);
-            const CheckReport report = checkRender(render(shaders.vertex, shaders.fragment), m_reference);
+            const CheckReport report = checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), m_reference);
             QVERIFY2(!report.passed(), qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
             std::map<ShaderMistake, double> row;
             for (const MistakeFinding &f : report.diagnosis.findings) {

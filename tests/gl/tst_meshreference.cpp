@@ -10,6 +10,7 @@
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -85,7 +86,7 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
         check.error = QStringLiteral("shaders did not build:\n") + check.compile.errorSummary();
         return check;
     }
-    check.gpu = offscreen.renderImage(QSize(variant.side, variant.side));
+    check.gpu = toRgbImage(offscreen.renderImage(QSize(variant.side, variant.side)));
     GLint subpixelBits = 0;
     offscreen.makeCurrent();
     QOpenGLContext::currentContext()->functions()->glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);

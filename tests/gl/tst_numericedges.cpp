@@ -11,6 +11,7 @@
 // (docs/reliability.md).
 #include "RenderCheck.h"
 #include "TestPaths.h"
+#include "core/PhongReference.h"
 #include "core/SceneJson.h"
 #include "mesh/MeshLoader.h"
 #include "render/GlFormat.h"
@@ -235,9 +236,9 @@ void TestNumericEdges::sweep()
     if (edge.expect == Expect::Background) {
         // The back faces of a closed surface are culled, so from inside it
         // nothing of it is drawn: the view shows what lies beyond.
-        QImage background(check.gpu.size(), QImage::Format_RGB888);
-        background.fill(
-            QColor::fromRgbF(float(scene.background.r), float(scene.background.g), float(scene.background.b)));
+        RgbImage background(check.gpu.width, check.gpu.height);
+        background.fill(uchar(encodeChannel(scene.background.r)), uchar(encodeChannel(scene.background.g)),
+                        uchar(encodeChannel(scene.background.b)));
         const int differing = compareImages(check.gpu, background).maxError;
         record(name, methodName, check.nonFinitePixels,
                differing <= 1 ? QStringLiteral("background only (closed surface seen from inside is culled)")

@@ -106,7 +106,7 @@ void TestRenderReference::lightStaysInWorldWhileCameraOrbits()
     // Two cameras on a circle around the sphere; the light must stay where
     // the world puts it, so each view matches its own reference.
     const double radius = glm::length(s.camera.eye - s.camera.target);
-    QImage previous;
+    RgbImage previous;
     for (double angleDeg : {0.0, 70.0}) {
         const double a = glm::radians(angleDeg);
         s.camera.eye = s.camera.target + radius * glm::dvec3(std::sin(a), 0.2, std::cos(a));

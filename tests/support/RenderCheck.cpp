@@ -5,6 +5,7 @@
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QDir>
 
@@ -30,20 +31,16 @@ SceneMeshes meshesFor(const Scene &scene, const std::shared_ptr<const MeshData> 
 
 // What an 8-bit target stores for each float pixel; non-finite ones are
 // counted and shown magenta.
-QImage quantised(const std::vector<float> &rgba, const QSize &size, qint64 *nonFinite)
+RgbImage quantised(const std::vector<float> &rgba, const QSize &size, qint64 *nonFinite)
 {
-    QImage image(size, QImage::Format_RGB888);
+    RgbImage image(size.width(), size.height());
     *nonFinite = 0;
-    for (int y = 0; y < size.height(); ++y) {
-        uchar *line = image.scanLine(y);
-        for (int x = 0; x < size.width(); ++x) {
-            const float *p = &rgba[(std::size_t(y) * size.width() + x) * 4];
-            const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-            *nonFinite += !finite;
-            for (int c = 0; c < 3; ++c)
-                line[x * 3 + c] =
-                    finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
-        }
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        const float *p = &rgba[i * 4];
+        const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        *nonFinite += !finite;
+        for (int c = 0; c < 3; ++c)
+            image.pixel(i)[c] = finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
     }
     return image;
 }
@@ -75,7 +72,7 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
     if (options.floatTarget)
         check.gpu = quantised(offscreen.renderFloatPixels(size), size, &check.nonFinitePixels);
     else
-        check.gpu = offscreen.renderImage(size);
+        check.gpu = toRgbImage(offscreen.renderImage(size));
 
     const ReferenceShading shading = options.reference.value_or(idealShadingFor(scene.shading));
     auto reference = raycastScene(scene, size.width(), size.height(), shading, &check.error, options.standIns);
@@ -105,13 +102,13 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
         root = QDir::temp().filePath(QStringLiteral("phonglab-test-artifacts"));
     QDir dir(root);
     dir.mkpath(QStringLiteral("."));
-    check.gpu.save(dir.filePath(name + QStringLiteral("-gpu.png")));
-    check.reference.save(dir.filePath(name + QStringLiteral("-reference.png")));
+    toQImage(check.gpu).save(dir.filePath(name + QStringLiteral("-gpu.png")));
+    toQImage(check.reference).save(dir.filePath(name + QStringLiteral("-reference.png")));
     const QString heatmapPath = dir.filePath(name + QStringLiteral("-error.png"));
     if (!check.referenceData.isNull())
-        errorHeatmap(check.gpu, check.referenceData, kSilhouetteBandPx).save(heatmapPath);
-    else if (const auto reference = raycastScene(scene, check.gpu.width(), check.gpu.height(), nullptr, standIns))
-        errorHeatmap(check.gpu, *reference, kSilhouetteBandPx).save(heatmapPath);
+        toQImage(errorHeatmap(check.gpu, check.referenceData, kSilhouetteBandPx)).save(heatmapPath);
+    else if (const auto reference = raycastScene(scene, check.gpu.width, check.gpu.height, nullptr, standIns))
+        toQImage(errorHeatmap(check.gpu, *reference, kSilhouetteBandPx)).save(heatmapPath);
     return dir.absolutePath();
 }
 

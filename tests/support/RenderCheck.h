@@ -23,8 +23,8 @@ inline constexpr int kSilhouetteBandPx = 2;
 inline constexpr int kTestImageSide = 256;
 
 struct RenderCheck {
-    QImage gpu;
-    QImage reference;
+    RgbImage gpu;
+    RgbImage reference;
     ReferenceImage referenceData; // the unquantised reference behind `reference`
     ImageComparison comparison;
     CompileResult compile;

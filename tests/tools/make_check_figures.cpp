@@ -9,6 +9,7 @@
 #include "CheckScene.h"
 #include "ShaderMutations.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 
 #include <QDir>
 #include <QGuiApplication>
@@ -52,7 +53,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "%s\n", qPrintable(error));
         return 1;
     }
-    const QImage exact = reference.exact.toImage(reference.background);
+    const QImage exact = toQImage(reference.exact.toImage(reference.background));
     const auto render = [&](const ShaderPair &shaders) {
         const CompileResult program = offscreen.renderer().setProgramSources(shaders.vertex, shaders.fragment);
         if (!program.ok)
@@ -65,9 +66,9 @@ int main(int argc, char **argv)
         const ShaderPair shaders =
             name == QLatin1String("shipped") ? shippedPhong() : withMistake(*shaderMistakeFromKey(name));
         const QImage yours = render(shaders);
-        const CheckReport report = checkRender(yours, reference);
+        const CheckReport report = checkRender(toRgbImage(yours), reference);
         const QString path = QDir(folder).filePath(name + QStringLiteral(".png"));
-        if (!strip(exact, yours, checkHeatmap(yours, reference), name).save(path)) {
+        if (!strip(exact, yours, toQImage(checkHeatmap(toRgbImage(yours), reference)), name).save(path)) {
             std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
             return 1;
         }

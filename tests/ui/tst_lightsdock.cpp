@@ -10,6 +10,7 @@
 #include "core/AnalyticRaycaster.h"
 #include "core/MaterialPresets.h"
 #include "core/PhongReference.h"
+#include "render/QtImages.h"
 #include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
 #include "ui/MaterialPanel.h"
@@ -69,7 +70,7 @@ QString compareWithReference(const QImage &grab, const Scene &scene)
     const auto ref = raycastScene(scene, grab.width(), grab.height());
     if (!ref)
         return QStringLiteral("no reference");
-    const QImage expected = ref->toImage(scene.background);
+    const QImage expected = toQImage(ref->toImage(scene.background));
     const QImage actual = grab.convertToFormat(QImage::Format_RGB32);
     int compared = 0;
     for (int y = 0; y < ref->height; y += kGridStep)

@@ -5,6 +5,7 @@
 // brings ✓ back.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "render/QtImages.h"
 #include "ui/CheckOverlay.h"
 #include "ui/LiveCheck.h"
 #include "ui/MainWindow.h"
@@ -61,10 +62,11 @@ private slots:
         // Where the mistake shows (its image off the exact one by more than
         // the tolerance) the heatmap is red-to-yellow, elsewhere dark green.
         const CheckReference &reference = *result.reference;
-        const QImage mistaken = std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
-                                    return p.first == ShaderMistake::ReflectIncident;
-                                })->second;
-        const std::vector<int> errors = checkErrorSteps(result.yours, reference);
+        const QImage mistaken =
+            toQImage(std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
+                         return p.first == ShaderMistake::ReflectIncident;
+                     })->second);
+        const std::vector<int> errors = checkErrorSteps(toRgbImage(result.yours), reference);
         qint64 shows = 0, showsAndOff = 0, hidden = 0, hiddenAndExact = 0;
         for (int y = 0; y < result.exact.height(); ++y) {
             for (int x = 0; x < result.exact.width(); ++x) {

@@ -2,6 +2,7 @@
 // inputs that do not fit together.
 
 #include "core/ImageMetrics.h"
+#include "render/QtImages.h"
 
 #include <QtTest>
 #include <cmath>
@@ -10,11 +11,22 @@ using namespace phonglab;
 
 namespace {
 
-QImage filled(int w, int h, QRgb color)
+struct Rgb {
+    int r = 0, g = 0, b = 0;
+    bool operator==(const Rgb &) const = default;
+};
+
+RgbImage filled(int w, int h, Rgb color)
 {
-    QImage image(w, h, QImage::Format_RGB888);
-    image.fill(color);
+    RgbImage image(w, h);
+    image.fill(uchar(color.r), uchar(color.g), uchar(color.b));
     return image;
+}
+
+Rgb pixelAt(const RgbImage &image, int x, int y)
+{
+    const std::uint8_t *p = image.pixel(x, y);
+    return {p[0], p[1], p[2]};
 }
 
 // A 20×20 reference covering the square [5, 15)² with I = 0.5 everywhere
@@ -32,12 +44,12 @@ ReferenceImage squareReference()
 }
 
 // What a perfect render of squareReference() looks like on a black background.
-QImage squareRender()
+RgbImage squareRender()
 {
-    QImage image = filled(20, 20, qRgb(0, 0, 0));
+    RgbImage image = filled(20, 20, Rgb{0, 0, 0});
     for (int y = 5; y < 15; ++y)
         for (int x = 5; x < 15; ++x)
-            image.setPixel(x, y, qRgb(128, 128, 128));
+            image.setPixel(x, y, 128, 128, 128);
     return image;
 }
 
@@ -50,7 +62,7 @@ class TestImageMetrics : public QObject
 private slots:
     void identicalImages()
     {
-        const QImage a = filled(16, 8, qRgb(10, 200, 30));
+        const RgbImage a = filled(16, 8, Rgb{10, 200, 30});
         const ImageComparison c = compareImages(a, a);
         QVERIFY(std::isinf(c.psnr) && c.psnr > 0);
         QCOMPARE(c.rmse, 0.0);
@@ -64,8 +76,8 @@ private slots:
         // Red +3 on all 100 pixels: 300 channel values, 100 of them off by 3.
         // MSE = 100·9 / 300 = 3, RMSE = √3 = 1.7320508,
         // PSNR = 20·log10(255/√3) = 20·(2.4065402 - 0.2385606) = 43.359591 dB.
-        const QImage a = filled(10, 10, qRgb(100, 50, 25));
-        const QImage b = filled(10, 10, qRgb(103, 50, 25));
+        const RgbImage a = filled(10, 10, Rgb{100, 50, 25});
+        const RgbImage b = filled(10, 10, Rgb{103, 50, 25});
         const ImageComparison c = compareImages(a, b);
         QCOMPARE(c.pixelsCompared, qint64(100));
         QCOMPARE(c.maxError, 3);
@@ -79,9 +91,9 @@ private slots:
     {
         // Green -5 at (7, 2) of 10×4: 120 values, one off by 5.
         // RMSE = √(25/120) = 0.4564355; PSNR = 20·log10(255/0.4564355) = 54.94 dB.
-        const QImage a = filled(10, 4, qRgb(9, 9, 9));
-        QImage b = a;
-        b.setPixel(7, 2, qRgb(9, 4, 9));
+        const RgbImage a = filled(10, 4, Rgb{9, 9, 9});
+        RgbImage b = a;
+        b.setPixel(7, 2, 9, 4, 9);
         const ImageComparison c = compareImages(a, b);
         QCOMPARE(c.maxError, 5);
         QCOMPARE(c.worstPixel, QPoint(7, 2));
@@ -89,12 +101,18 @@ private slots:
         QVERIFY(std::abs(c.psnr - 54.9430) < 1e-3);
     }
 
-    void formatsAreConverted()
+    void qtImagesConvert()
     {
-        // ARGB32 against RGB888 with the same colours: identical.
-        const QImage a = filled(5, 5, qRgb(1, 2, 3));
-        const QImage b = a.convertToFormat(QImage::Format_ARGB32);
-        QVERIFY(std::isinf(compareImages(a, b).psnr));
+        // Any QImage converts: ARGB32 and RGB888 (rows padded to 4 bytes at
+        // width 5) with the same colours are the same RgbImage, and back.
+        QImage a(5, 3, QImage::Format_RGB888);
+        a.fill(qRgb(1, 2, 3));
+        a.setPixel(4, 2, qRgb(7, 8, 9));
+        const RgbImage b = toRgbImage(a.convertToFormat(QImage::Format_ARGB32));
+        QVERIFY(std::isinf(compareImages(toRgbImage(a), b).psnr));
+        QCOMPARE(pixelAt(b, 4, 2), (Rgb{7, 8, 9}));
+        QCOMPARE(toQImage(b), a);
+        QVERIFY(toRgbImage(QImage()).isNull());
     }
 
     void referencePerfectRender()
@@ -122,10 +140,10 @@ private slots:
         QFETCH(int, band);
         QFETCH(qint64, compared);
         // Ruin the square's edge ring in the render: the band must hide it.
-        QImage rendered = squareRender();
+        RgbImage rendered = squareRender();
         for (int i = 5; i < 15; ++i) {
             for (const QPoint &p : {QPoint(i, 5), QPoint(i, 14), QPoint(5, i), QPoint(14, i)})
-                rendered.setPixel(p, qRgb(255, 0, 255));
+                rendered.setPixel(p.x(), p.y(), 255, 0, 255);
         }
         const ImageComparison c = compareWithReference(rendered, squareReference(), band);
         QCOMPARE(c.pixelsCompared, compared);
@@ -140,8 +158,8 @@ private slots:
     {
         // One interior pixel off by 2 in blue, compared over the 6×6 interior
         // (band 1): 108 values, one off by 2 -> RMSE = √(4/108) = 0.19245009.
-        QImage rendered = squareRender();
-        rendered.setPixel(9, 10, qRgb(128, 128, 130));
+        RgbImage rendered = squareRender();
+        rendered.setPixel(9, 10, 128, 128, 130);
         const ImageComparison c = compareWithReference(rendered, squareReference(), 1);
         QCOMPARE(c.pixelsCompared, qint64(36));
         QCOMPARE(c.maxError, 2);
@@ -155,23 +173,23 @@ private slots:
         ReferenceImage ref(3, 3);
         ref.coverage.assign(9, 1);
         ref.color.assign(9, glm::dvec3(1.7, -0.2, 0.5));
-        const ImageComparison c = compareWithReference(filled(3, 3, qRgb(255, 0, 128)), ref, 0);
+        const ImageComparison c = compareWithReference(filled(3, 3, Rgb{255, 0, 128}), ref, 0);
         QCOMPARE(c.pixelsCompared, qint64(9)); // fully covered: no silhouette at all
         QCOMPARE(c.maxError, 0);
     }
 
     void sizeMismatch()
     {
-        const ImageComparison a = compareImages(filled(4, 4, 0), filled(4, 5, 0));
+        const ImageComparison a = compareImages(filled(4, 4, Rgb{}), filled(4, 5, Rgb{}));
         QCOMPARE(a.pixelsCompared, qint64(0));
         QCOMPARE(a.psnr, 0.0);
         QCOMPARE(a.summary(), QStringLiteral("no pixels compared"));
-        const ImageComparison b = compareWithReference(filled(19, 20, 0), squareReference(), 1);
+        const ImageComparison b = compareWithReference(filled(19, 20, Rgb{}), squareReference(), 1);
         QCOMPARE(b.pixelsCompared, qint64(0));
         QCOMPARE(b.psnr, 0.0);
-        QCOMPARE(compareWithReference(QImage(), ReferenceImage(), 0).pixelsCompared, qint64(0));
-        QCOMPARE(compareImages(QImage(), QImage()).psnr, 0.0);
-        QVERIFY(errorHeatmap(filled(19, 20, 0), squareReference(), 1).isNull());
+        QCOMPARE(compareWithReference(RgbImage(), ReferenceImage(), 0).pixelsCompared, qint64(0));
+        QCOMPARE(compareImages(RgbImage(), RgbImage()).psnr, 0.0);
+        QVERIFY(errorHeatmap(filled(19, 20, Rgb{}), squareReference(), 1).isNull());
     }
 
     // The bench's comparison also counts pixels the render covers where the
@@ -180,7 +198,7 @@ private slots:
     {
         const ReferenceImage ref = squareReference();
         const glm::dvec3 black(0.0);
-        QImage render = squareRender();
+        RgbImage render = squareRender();
         BandComparison exact = compareOutsideBand(render, ref, black, 1);
         QCOMPARE(exact.error.maxError, 0);
         QCOMPARE(exact.coverageErrors, qint64(0));
@@ -188,8 +206,8 @@ private slots:
         QCOMPARE(exact.error.pixelsCompared, qint64(36));
 
         // A blob of surface far outside the outline: 2 px, 128 steps off each.
-        render.setPixel(1, 1, qRgb(128, 128, 128));
-        render.setPixel(18, 18, qRgb(128, 128, 128));
+        render.setPixel(1, 1, 128, 128, 128);
+        render.setPixel(18, 18, 128, 128, 128);
         const BandComparison bulge = compareOutsideBand(render, ref, black, 1);
         QCOMPARE(bulge.coverageErrors, qint64(2));
         QCOMPARE(bulge.error.maxError, 128);
@@ -198,8 +216,8 @@ private slots:
         QCOMPARE(compareWithReference(render, ref, 1).maxError, 0);
 
         // A hole in the surface is a coverage error too.
-        QImage hole = squareRender();
-        hole.setPixel(10, 10, qRgb(0, 0, 0));
+        RgbImage hole = squareRender();
+        hole.setPixel(10, 10, 0, 0, 0);
         const BandComparison holed = compareOutsideBand(hole, ref, black, 1);
         QCOMPARE(holed.coverageErrors, qint64(1));
         QCOMPARE(holed.error.maxError, 128);
@@ -208,9 +226,9 @@ private slots:
     void outsideBandMask()
     {
         const ReferenceImage ref = squareReference();
-        QImage render = squareRender();
-        render.setPixel(8, 8, qRgb(140, 128, 128));   // 12 off, inside the mask
-        render.setPixel(11, 11, qRgb(160, 128, 128)); // 32 off, outside it
+        RgbImage render = squareRender();
+        render.setPixel(8, 8, 140, 128, 128);   // 12 off, inside the mask
+        render.setPixel(11, 11, 160, 128, 128); // 32 off, outside it
         std::vector<std::uint8_t> mask(ref.color.size(), 0);
         for (int y = 7; y < 10; ++y)
             for (int x = 7; x < 10; ++x)
@@ -256,14 +274,15 @@ private slots:
 
     void heatmap()
     {
-        QImage rendered = squareRender();
-        rendered.setPixel(9, 10, qRgb(128, 128, 140)); // 12 off: full red
-        const QImage map = errorHeatmap(rendered, squareReference(), 1);
-        QCOMPARE(map.size(), QSize(20, 20));
-        QCOMPARE(map.pixel(9, 10), qRgb(255, 0, 0));
-        QCOMPARE(map.pixel(8, 8), qRgb(0, 64, 0)); // compared, exact
-        QCOMPARE(map.pixel(6, 6), qRgb(0, 0, 96)); // in the band
-        QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));  // uncovered
+        RgbImage rendered = squareRender();
+        rendered.setPixel(9, 10, 128, 128, 140); // 12 off: full red
+        const RgbImage map = errorHeatmap(rendered, squareReference(), 1);
+        QCOMPARE(map.width, 20);
+        QCOMPARE(map.height, 20);
+        QCOMPARE(pixelAt(map, 9, 10), (Rgb{255, 0, 0}));
+        QCOMPARE(pixelAt(map, 8, 8), (Rgb{0, 64, 0})); // compared, exact
+        QCOMPARE(pixelAt(map, 6, 6), (Rgb{0, 0, 96})); // in the band
+        QCOMPARE(pixelAt(map, 0, 0), (Rgb{0, 0, 0}));  // uncovered
     }
 };
 

@@ -43,7 +43,7 @@ Setup setup(const Scene &s)
     return out;
 }
 
-MistakeDiagnosis diagnose(const Setup &s, const QImage &yours)
+MistakeDiagnosis diagnose(const Setup &s, const RgbImage &yours)
 {
     return diagnoseMistakes(yours, s.exact, s.mistaken, s.compared, 2, kBackground);
 }
@@ -105,11 +105,10 @@ private slots:
 
     void noiseIsUnexplained()
     {
-        QImage noise(kSize, kSize, QImage::Format_RGB32);
+        RgbImage noise(kSize, kSize);
         QRandomGenerator rng(7);
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x)
-                noise.setPixel(x, y, qRgb(rng.bounded(256), rng.bounded(256), rng.bounded(256)));
+        for (std::uint8_t &byte : noise.bytes)
+            byte = std::uint8_t(rng.bounded(256));
         const MistakeDiagnosis d = diagnose(m_setup, noise);
         QVERIFY(d.differingPixels > 0);
         QVERIFY(d.unexplained());
@@ -117,7 +116,7 @@ private slots:
 
     void renderOfAnotherSizeDiffersEverywhere()
     {
-        const MistakeDiagnosis d = diagnose(m_setup, QImage(kSize / 2, kSize, QImage::Format_RGB32));
+        const MistakeDiagnosis d = diagnose(m_setup, RgbImage(kSize / 2, kSize));
         QCOMPARE(d.differingPixels, m_setup.exact.coveredCount());
         QVERIFY(d.findings.empty());
         QVERIFY(d.unexplained());
