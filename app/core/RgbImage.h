@@ -23,7 +23,10 @@ struct RgbImage {
     // Pixel i (row-major) or (x, y): its R, G, B.
     const std::uint8_t *pixel(std::size_t i) const { return bytes.data() + 3 * i; }
     std::uint8_t *pixel(std::size_t i) { return bytes.data() + 3 * i; }
-    const std::uint8_t *pixel(int x, int y) const { return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x)); }
+    const std::uint8_t *pixel(int x, int y) const
+    {
+        return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x));
+    }
     std::uint8_t *pixel(int x, int y) { return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x)); }
     void setPixel(int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b);
     void fill(std::uint8_t r, std::uint8_t g, std::uint8_t b);

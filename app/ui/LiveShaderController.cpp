@@ -128,7 +128,7 @@ void LiveShaderController::applyPreset(ShadingMethod method)
 {
     showPreset(method);
     m_viewport->setShading(method); // so Save writes the method in use
-    m_holdAutoBuild = false;
+    m_autoBuild = AutoBuild::AfterPause;
     requestBuild(BuildRequest::Always);
 }
 
@@ -148,14 +148,14 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
                           "in the Shaders dock to switch)")
                            .arg(shadingName(method)),
                        kStatusTimeoutMs);
-    if (!m_holdAutoBuild)
+    if (m_autoBuild == AutoBuild::AfterPause)
         requestBuild(BuildRequest::Always);
 }
 
 void LiveShaderController::buildNow()
 {
     m_debounce->stop();
-    m_holdAutoBuild = false;
+    m_autoBuild = AutoBuild::AfterPause;
     requestBuild(BuildRequest::Always);
 }
 
@@ -174,7 +174,7 @@ void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget 
             m_shading = *method; // the preset the restored buffers came from
             m_dock->setPreset(*method);
         }
-        m_holdAutoBuild = outcome.suspect;
+        m_autoBuild = outcome.suspect ? AutoBuild::OnlyOnF5 : AutoBuild::AfterPause;
         m_debounce->stop(); // restoring typed the text in again; build it once, below
         if (!outcome.suspect)
             requestBuild(BuildRequest::NewText);
@@ -186,20 +186,20 @@ void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget 
 void LiveShaderController::onTextEdited()
 {
     m_recovery->noteEdited();
-    if (!m_holdAutoBuild)
+    if (m_autoBuild == AutoBuild::AfterPause)
         m_debounce->start();
 }
 
 void LiveShaderController::onGlInitialized()
 {
-    m_glReady = true;
+    setState(State::Idle);
     // The viewport has just built its scene's shipped program itself.
     QString error;
     const auto [vertex, fragment] = shippedSources(m_viewport->currentScene().shading, &error);
     m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
     startWorker();
     const bool wanted = std::exchange(m_queued, std::nullopt).has_value();
-    if (m_holdAutoBuild)
+    if (m_autoBuild == AutoBuild::OnlyOnF5)
         return;
     if (wanted || currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
@@ -214,7 +214,7 @@ void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
     QString error;
     const auto [vertex, fragment] = shippedSources(method, &error);
     m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
-    if (method == m_shading && !m_holdAutoBuild && currentHash() != m_appliedHash)
+    if (method == m_shading && m_autoBuild == AutoBuild::AfterPause && currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
 }
 
@@ -224,8 +224,7 @@ void LiveShaderController::onGlAboutToBeReleased()
     // with the next glInitialized().
     m_builder->stop();
     endLoanNow();
-    m_glReady = false;
-    m_inFlight = 0;
+    setState(State::WaitingForGl);
     m_queued.reset();
     m_slowBuildNote->stop();
     m_hangNote->stop();
@@ -234,13 +233,21 @@ void LiveShaderController::onGlAboutToBeReleased()
 // The worker has stopped: a loan it had is over, even if its reply is lost.
 void LiveShaderController::endLoanNow()
 {
-    if (std::exchange(m_loanActive, false))
-        m_viewport->endLoan(0);
+    if (m_state != State::Warming)
+        return;
+    setState(State::Idle);
+    m_viewport->endLoan(0);
+}
+
+void LiveShaderController::setState(State state)
+{
+    if (std::exchange(m_state, state) != state)
+        emit stateChanged(state);
 }
 
 void LiveShaderController::startWorker()
 {
-    if (m_forceGuiThread) {
+    if (m_buildOnGuiThread) {
         emit statusMessage(tr("Shaders compile on the GUI thread"), kStatusTimeoutMs);
         return;
     }
@@ -260,18 +267,24 @@ void LiveShaderController::requestBuild(BuildRequest request)
 {
     // Asked for while no build can start: remembered, Always outranking NewText.
     const auto queue = [&] { m_queued = m_queued == BuildRequest::Always ? BuildRequest::Always : request; };
-    if (!m_glReady) {
+    if (m_state == State::WaitingForGl) {
         queue();
         return;
     }
     const QByteArray hash = currentHash();
     if (request == BuildRequest::NewText && hash == m_lastBuiltHash)
         return;
-    if (m_inFlight) {
+    if (m_state != State::Idle) {
         queue();
         return;
     }
     dispatch(hash);
+}
+
+void LiveShaderController::startQueuedBuild()
+{
+    if (const std::optional<BuildRequest> queued = std::exchange(m_queued, std::nullopt))
+        requestBuild(*queued);
 }
 
 void LiveShaderController::dispatch(const QByteArray &hash)
@@ -284,9 +297,10 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex), m_dock->text(ShaderStage::Vertex)};
     const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment)};
     m_buildClock.start();
+    m_buildHash = hash;
     if (m_builder->isRunning()) {
-        m_inFlightHash = hash;
-        m_inFlight = m_builder->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
+        setState(State::Building);
+        m_buildSerial = m_builder->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
         m_slowBuildNote->start();
         m_hangNote->start();
         return;
@@ -302,17 +316,17 @@ void LiveShaderController::dispatch(const QByteArray &hash)
 
 void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
 {
-    if (reply.serial != m_inFlight) { // from before a restart of the worker
+    if (m_state != State::Building || reply.serial != m_buildSerial) { // from before a restart of the worker
         m_builder->release(reply.program);
         return;
     }
-    m_inFlight = 0;
+    setState(State::Idle);
     m_slowBuildNote->stop();
     // Even when newer text waits, a finished program is shown: steady
     // progress while someone keeps typing in bursts longer than a build.
-    finish(m_inFlightHash, reply);
-    if (const std::optional<BuildRequest> queued = std::exchange(m_queued, std::nullopt))
-        requestBuild(*queued);
+    finish(m_buildHash, reply);
+    if (m_state == State::Idle)
+        startQueuedBuild(); // else once the first draw is done
 }
 
 void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildReply &reply)
@@ -349,10 +363,12 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramB
         viewport->renderer().adoptProgram(program);
         *adopted = true;
     };
-    m_loanActive = true;
+    setState(State::Warming);
     m_builder->warmInLentContext(
         *loan, reply.program, [this, hash, reply, adopted](qint64 warmNs, const QString &error) {
-            m_loanActive = false;
+            if (m_state != State::Warming)
+                return; // the context went away meanwhile, and the loan with it
+            setState(State::Idle);
             m_hangNote->stop();
             m_viewport->endLoan();
             if (!*adopted)
@@ -365,6 +381,7 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramB
                 setWarmUp(WarmUp::Off);
             }
             announce(hash, warmed);
+            startQueuedBuild();
         });
     return true;
 }

@@ -29,6 +29,23 @@ class LiveShaderController : public QObject
     Q_OBJECT
 
 public:
+    // Where the path edit → build → first draw → shown stands. One program
+    // is on that path at a time; a build asked for meanwhile is queued and
+    // starts when the controller is Idle again.
+    enum class State {
+        WaitingForGl, // no GL context yet, or it is being replaced
+        Idle,         // the viewport draws the applied program; a build can start
+        Building,     // the worker compiles and links the program
+        Warming,      // the viewport's context is lent to the worker for the program's first draw
+    };
+    Q_ENUM(State)
+    // Whether an edit builds after the pause, or only F5 does (recovered text
+    // that crashed or hung a build last time).
+    enum class AutoBuild {
+        AfterPause,
+        OnlyOnF5
+    };
+
     // Where a new program draws once before the viewport shows it, so that
     // the driver's draw-time compile does not stall the GUI thread.
     enum class WarmUp {
@@ -56,13 +73,14 @@ public:
     // Benchmarks and tests: build on the GUI thread instead of the worker
     // (from the next GL start on), and choose the warm-up (the window sets
     // both from its StartupOptions).
-    void setBuildOnGuiThread(bool onGuiThread) { m_forceGuiThread = onGuiThread; }
+    void setBuildOnGuiThread(bool onGuiThread) { m_buildOnGuiThread = onGuiThread; }
     void setWarmUp(WarmUp warmUp);
     WarmUp warmUp() const { return m_warmUp; }
     int debounceMs() const { return m_debounceMs; }
     bool buildsOnWorker() const;
-    bool isBuilding() const { return m_inFlight != 0 || m_loanActive; }
-    bool isAutoBuildHeld() const { return m_holdAutoBuild; }
+    State state() const { return m_state; }
+    bool isBuilding() const { return m_state == State::Building || m_state == State::Warming; }
+    bool isAutoBuildHeld() const { return m_autoBuild == AutoBuild::OnlyOnF5; }
     // An edit is waiting out the debounce; once it is not, the controller has
     // decided whether that text builds (isBuilding()) or not.
     bool isWaitingToBuild() const;
@@ -79,6 +97,7 @@ signals:
     // The viewport now draws with the program built from `hash`'s text.
     void programApplied(const QByteArray &hash, const phonglab::ProgramBuildReply &timings);
     void buildFailed(const QByteArray &hash);
+    void stateChanged(phonglab::LiveShaderController::State state);
 
 private:
     void setUpTimers();
@@ -87,6 +106,7 @@ private:
     void onGlInitialized();
     void onGlAboutToBeReleased();
     void onShippedProgramLoaded(ShadingMethod method);
+    void setState(State state);
     void startWorker();
     // An edit builds only text not built yet; F5 and a restore build whatever is there.
     enum class BuildRequest {
@@ -94,6 +114,7 @@ private:
         Always
     };
     void requestBuild(BuildRequest request);
+    void startQueuedBuild();
     void dispatch(const QByteArray &hash);
     void onBuilt(const ProgramBuildReply &reply);
     void finish(const QByteArray &hash, const ProgramBuildReply &reply);
@@ -112,20 +133,17 @@ private:
     int m_debounceMs = 300;
     ShadingMethod m_shading = ShadingMethod::Phong;
 
-    bool m_glReady = false;
-    bool m_forceGuiThread = false;
+    State m_state = State::WaitingForGl;
+    AutoBuild m_autoBuild = AutoBuild::AfterPause;
+    bool m_buildOnGuiThread = false; // set once, before GL starts
     WarmUp m_warmUp = WarmUp::ViewportContext;
-    bool m_loanActive = false;    // the viewport's context is on the worker
-    bool m_holdAutoBuild = false; // recovered suspect text: only F5 builds it
-    QByteArray m_lastBuiltHash;   // last text sent to the compiler
-    QByteArray m_appliedHash;     // text of the program the viewport draws with
+    QByteArray m_lastBuiltHash; // last text sent to the compiler
+    QByteArray m_appliedHash;   // text of the program the viewport draws with
     ProgramBuildReply m_lastApplied;
-    quint64 m_inFlight = 0; // serial of the build on the worker, 0 if none
-    QByteArray m_inFlightHash;
-    // A build asked for while none could start (GL not up, or one in
-    // flight): started when it can.
-    std::optional<BuildRequest> m_queued;
-    QElapsedTimer m_buildClock; // from dispatch to reply, for the status
+    quint64 m_buildSerial = 0;            // while Building: the serial the worker's reply carries
+    QByteArray m_buildHash;               // while Building or Warming: the text on its way
+    std::optional<BuildRequest> m_queued; // asked for while not Idle
+    QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
 };
 
 } // namespace phonglab

@@ -99,6 +99,7 @@ private slots:
     void errorStaysOnItsLineAndFixClearsIt();
     void userUniformSurvivesRebuild();
     void unchangedTextIsNotRebuilt();
+    void oneProgramAtATimeFromBuildToFirstDraw();
     void editingNeverWritesShippedShaders();
     void buildsOnGuiThreadWhenAsked();
     void presetLoadsBuildsAndSetsSceneShading();
@@ -259,6 +260,38 @@ void TestLiveEdit::unchangedTextIsNotRebuilt()
     // F5 builds even unchanged text.
     dock()->compileAction()->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(applied.count(), 1, kBuildTimeoutMs);
+}
+
+// A build asked for while one is on its way (compiling, or drawing its first
+// frame in the lent context) waits until the first is shown: the controller
+// goes Idle between any two builds, and the newest text wins.
+void TestLiveEdit::oneProgramAtATimeFromBuildToFirstDraw()
+{
+    openWindow();
+    QVERIFY(waitForApplied());
+    QCOMPARE(live()->state(), LiveShaderController::State::Idle);
+    QSignalSpy states(live(), &LiveShaderController::stateChanged);
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
+    live()->buildNow();
+    QVERIFY(live()->isBuilding());
+    typeAfter(QStringLiteral("vec4(I * 0.5"), QStringLiteral("0"));
+    live()->buildNow(); // queued behind the first
+    QVERIFY(waitForApplied());
+    QTRY_COMPARE(live()->state(), LiveShaderController::State::Idle);
+
+    QList<LiveShaderController::State> seen;
+    for (const QList<QVariant> &args : states)
+        seen << args.at(0).value<LiveShaderController::State>();
+    using State = LiveShaderController::State;
+    QCOMPARE(seen.count(State::Building), 2);
+    QCOMPARE(seen.front(), State::Building);
+    QCOMPARE(seen.back(), State::Idle);
+    for (qsizetype i = 1; i < seen.size(); ++i)
+        if (seen[i] == State::Building)
+            QCOMPARE(seen[i - 1], State::Idle); // never straight from another build or a first draw
+    QVERIFY2(seen.contains(State::Warming) == (live()->warmUp() == LiveShaderController::WarmUp::ViewportContext),
+             "the first draw happens in the lent viewport context exactly when that warm-up is on");
+    QCOMPARE(live()->appliedHash(), live()->currentHash());
 }
 
 void TestLiveEdit::editingNeverWritesShippedShaders()
