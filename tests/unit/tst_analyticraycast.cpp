@@ -4,7 +4,6 @@
 #include "core/AnalyticRaycaster.h"
 #include "core/PhongReference.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 #include <cmath>
 #include <numbers>
@@ -296,23 +295,6 @@ private slots:
         QCOMPARE(rgb(0, 0), (std::array<int, 3>{encodeChannel(0.1), 128, 255}));
         const glm::dvec3 &I = reference.colorAt(50, 50);
         QCOMPARE(rgb(50, 50), (std::array<int, 3>{encodeChannel(I.r), encodeChannel(I.g), encodeChannel(I.b)}));
-    }
-
-    void fastEnough()
-    {
-        // The brief: a 256² sphere well under a second, a torus in a couple.
-        QElapsedTimer timer;
-        timer.start();
-        render(sphereScene(), 256, 256);
-        const qint64 sphereMs = timer.restart();
-        Scene torus = sphereScene();
-        torus.objects[0].mesh = QStringLiteral("builtin:torus");
-        torus.objects[0].transform.rotateDeg = {60.0, 0.0, 20.0};
-        render(torus, 256, 256);
-        const qint64 torusMs = timer.elapsed();
-        qInfo("256x256: sphere %lld ms, torus %lld ms", sphereMs, torusMs);
-        QVERIFY(sphereMs < 1000);
-        QVERIFY(torusMs < 3000);
     }
 };
 

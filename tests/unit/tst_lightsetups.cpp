@@ -100,7 +100,7 @@ private slots:
         QCOMPARE(percentileOf(ramp, 1.0), 20.0);
     }
 
-    void timerQueryTrust()
+    void timerQueriesAreDistrustedOnSoftwareRenderers()
     {
         QVERIFY(!timerQueryTrusted(QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)")));
         QVERIFY(!timerQueryTrusted(QStringLiteral("softpipe")));

@@ -1,13 +1,11 @@
 // Levels of detail: OpenMesh's quadric decimation through decimateMesh, the
 // builtins tessellated coarser, and a scene object's "detail" through
 // loadSceneMeshes. The mesh's own normals must survive exactly.
-#include "TimeBudget.h"
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/MeshDecimation.h"
 #include "mesh/MeshLoader.h"
 #include "mesh/SceneMeshes.h"
 
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTest>
 
@@ -18,7 +16,6 @@
 #include <tuple>
 
 using namespace phonglab;
-using phonglab::test::timeBudgetMs;
 
 namespace {
 
@@ -130,13 +127,10 @@ void TestMeshDecimation::shrinksToTheFraction()
     const double full_t = double(full.triangleCount());
     std::size_t previous = full.triangleCount();
     for (const double fraction : {1.0, 0.5, 0.25, 1.0 / 16, 1.0 / 64}) {
-        QElapsedTimer timer;
-        timer.start();
         QString note;
         const MeshData lod = decimateMesh(full, fraction, &note);
-        const double ms = timer.nsecsElapsed() / 1e6;
-        qInfo("%s at %.4g: %zu of %zu triangles, %zu vertices, %.1f ms%s", qPrintable(QFileInfo(path).fileName()),
-              fraction, lod.triangleCount(), full.triangleCount(), lod.positions.size(), ms,
+        qInfo("%s at %.4g: %zu of %zu triangles, %zu vertices%s", qPrintable(QFileInfo(path).fileName()), fraction,
+              lod.triangleCount(), full.triangleCount(), lod.positions.size(),
               note.isEmpty() ? "" : qPrintable(QStringLiteral(" (") + note + u')'));
         QVERIFY(lod.isValid());
         QVERIFY2(lod.triangleCount() <= previous, "more triangles at a smaller fraction");
@@ -148,7 +142,6 @@ void TestMeshDecimation::shrinksToTheFraction()
                      qPrintable(QString::number(lod.triangleCount())));
             QVERIFY2(note.isEmpty(), qPrintable(note));
         }
-        QVERIFY(ms < double(timeBudgetMs(5000)));
     }
 }
 

@@ -10,7 +10,6 @@
 #include "mesh/MeshLoader.h"
 #include "mesh/SceneMeshes.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 #include <random>
 
@@ -300,14 +299,12 @@ private slots:
         QCOMPARE(error, QStringLiteral("cancelled"));
     }
 
-    void defaultSceneTiming()
+    void defaultSceneIsTheSameOnAnyThreadCount()
     {
         const auto [scene, meshes] = defaultScene();
         qint64 triangles = 0;
         for (const MeshPtr &mesh : meshes)
             triangles += qint64(mesh->triangleCount());
-        QElapsedTimer timer;
-        timer.start();
         double lastFraction = -1.0;
         bool monotonic = true;
         const std::optional<ReferenceImage> image =
@@ -316,36 +313,15 @@ private slots:
                 lastFraction = f;
                 return true;
             });
-        const qint64 ms = timer.elapsed();
         QVERIFY(image);
         QVERIFY(monotonic);
-        qInfo("default scene (tree + cloud, %lld triangles) at 512x512: %lld ms on %u threads, %lld px covered",
-              triangles, ms, std::max(1u, std::thread::hardware_concurrency()), image->coveredCount());
+        qInfo("default scene (tree + cloud, %lld triangles) at 512x512: %lld px covered", triangles,
+              image->coveredCount());
         QVERIFY(image->coveredCount() > 512 * 512 / 20);
         // Each pixel depends only on its own ray: a second run, scheduled
         // differently across the threads, gives the same image.
         const ReferenceImage again = meshReference(scene, meshes, 512, 512);
         QVERIFY(again.color == image->color && again.depth == image->depth && again.specular == image->specular);
-    }
-
-    // The bench's full-resolution mesh size: the build must take seconds at
-    // most, and a query must stay cheap.
-    void millionTriangleBuild()
-    {
-        const MeshData mesh = makeUvSphere(1024, 640); // 1.31M triangles
-        QElapsedTimer timer;
-        timer.start();
-        const MeshBvh bvh(mesh);
-        const qint64 buildMs = timer.elapsed();
-        timer.restart();
-        int hits = 0;
-        const std::vector<Ray> rays = testRays(mesh, 100000);
-        for (const Ray &ray : rays)
-            hits += bvh.closestHit(ray, 0.0, 1e30).has_value();
-        const qint64 queryMs = timer.elapsed();
-        qInfo("%zu triangles: BVH build %lld ms (%zu nodes, depth %d); 100k rays %lld ms, %d hits",
-              mesh.triangleCount(), buildMs, bvh.nodeCount(), bvh.depth(), queryMs, hits);
-        QVERIFY(hits > 10000);
     }
 };
 

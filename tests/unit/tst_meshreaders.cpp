@@ -5,7 +5,6 @@
 
 #include "MeshFiles.h"
 
-#include <QElapsedTimer>
 #include <QFile>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
@@ -30,15 +29,12 @@ struct Loaded {
     std::optional<PolygonMesh> mesh;
     QString error;
     QStringList warnings;
-    qint64 ms = 0;
 };
 
 Loaded load(const QString &path)
 {
-    QElapsedTimer timer;
-    timer.start();
     MeshReadResult read = readMeshFile(path);
-    Loaded out{std::nullopt, read.error, read.warnings, 0};
+    Loaded out{std::nullopt, read.error, read.warnings};
     if (read.ok()) {
         out.warnings += repairMesh(*read.mesh).warnings();
         if (read.mesh->faceCount() == 0)
@@ -46,7 +42,6 @@ Loaded load(const QString &path)
         else
             out.mesh = std::move(read.mesh);
     }
-    out.ms = timer.elapsed();
     return out;
 }
 
@@ -121,7 +116,7 @@ private slots:
     void unreadableFile();
     void randomBytesRejected_data();
     void randomBytesRejected();
-    void hugeVertexCountReturnsQuickly();
+    void hugeVertexCountIsRefusedBeforeParsing();
     void plyFormatLineMustCarryAVersion_data();
     void plyFormatLineMustCarryAVersion();
     void plyHeaderMustBeText_data();
@@ -381,7 +376,6 @@ void TestMeshReaders::rejected()
     const Loaded l = load(path);
     QVERIFY(!l.mesh);
     QVERIFY2(l.error.contains(errorPart), qPrintable(l.error));
-    QVERIFY2(l.ms < 2000, qPrintable(QString::number(l.ms)));
 }
 
 void TestMeshReaders::unreadableFile()
@@ -418,17 +412,14 @@ void TestMeshReaders::randomBytesRejected()
     const Loaded l = load(path);
     QVERIFY(!l.mesh);
     QVERIFY(!l.error.isEmpty());
-    QVERIFY2(l.ms < 2000, qPrintable(QString::number(l.ms)));
 }
 
-void TestMeshReaders::hugeVertexCountReturnsQuickly()
+void TestMeshReaders::hugeVertexCountIsRefusedBeforeParsing()
 {
-    // 10^9 vertices claimed in a 180-byte file: refused before any parser
-    // (OpenMesh alone would reserve for them and die of std::bad_alloc).
-    QElapsedTimer timer;
-    timer.start();
+    // 10^9 vertices claimed in a 180-byte file: refused by the precheck,
+    // before any parser (OpenMesh alone would reserve for them and die of
+    // std::bad_alloc); the message is the precheck's.
     const MeshReadResult r = readMeshFile(kBad + "huge_vertex_count.ply");
-    QVERIFY(timer.elapsed() < 500);
     QVERIFY(!r.ok());
     QVERIFY2(r.error.contains("declares 1000000000 vertex elements"), qPrintable(r.error));
 
@@ -446,7 +437,6 @@ void TestMeshReaders::hugeVertexCountReturnsQuickly()
     qToLittleEndian<quint32>(1000000000u, omBytes.data() + 4);
     writeBytes(om, omBytes);
     QVERIFY(readMeshFile(om).error.contains("declares 1000000000 vertices"));
-    QVERIFY(timer.elapsed() < 2000);
 }
 
 void TestMeshReaders::plyFormatLineMustCarryAVersion_data()
@@ -472,10 +462,7 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion()
                    + "\nelement vertex 3\nproperty float x\nproperty float y\n"
                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    QElapsedTimer timer;
-    timer.start();
     const MeshReadResult r = readMeshFile(path);
-    QVERIFY(timer.elapsed() < 2000);
     QVERIFY(!r.ok());
     QVERIFY2(r.error.contains(QLatin1String("PLY header line 2: expected 'format")), qPrintable(r.error));
 
