@@ -24,10 +24,10 @@ QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene
 
 StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg, bool methodChosen)
 {
-    const QString name = shadingName(scene.shading);
-    return {
-        stagePath(vertexArg, scene.vertexShader, scene, methodChosen, shaderPath(name + QStringLiteral(".vert"))),
-        stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen, shaderPath(name + QStringLiteral(".frag")))};
+    return {stagePath(vertexArg, scene.vertexShader, scene, methodChosen,
+                      shippedShaderPath(scene.shading, ShaderStage::Vertex)),
+            stagePath(fragmentArg, scene.fragmentShader, scene, methodChosen,
+                      shippedShaderPath(scene.shading, ShaderStage::Fragment))};
 }
 
 QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option, int maxSide, QSize *size)

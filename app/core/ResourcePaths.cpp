@@ -8,7 +8,8 @@ namespace phonglab {
 
 namespace {
 
-QString findFile(const char *envVar, const QString &folder, const char *sourceDir, const QString &name)
+// The search order, first match wins.
+QStringList searchFolders(const char *envVar, const QString &folder, const char *sourceDir)
 {
     QStringList dirs;
     const QString fromEnv = qEnvironmentVariable(envVar);
@@ -20,7 +21,12 @@ QString findFile(const char *envVar, const QString &folder, const char *sourceDi
              << appDir + QStringLiteral("/../share/phonglab/") + folder;
     }
     dirs << QString::fromUtf8(sourceDir);
-    for (const QString &dir : dirs) {
+    return dirs;
+}
+
+QString findFile(const char *envVar, const QString &folder, const char *sourceDir, const QString &name)
+{
+    for (const QString &dir : searchFolders(envVar, folder, sourceDir)) {
         const QString candidate = QDir(dir).filePath(name);
         if (QFileInfo(candidate).isFile())
             return QDir::cleanPath(candidate);
@@ -33,6 +39,16 @@ QString findFile(const char *envVar, const QString &folder, const char *sourceDi
 QString shaderPath(const QString &fileName)
 {
     return findFile("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"), PHONGLAB_SOURCE_SHADER_DIR, fileName);
+}
+
+QStringList shaderSearchFolders()
+{
+    return searchFolders("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"), PHONGLAB_SOURCE_SHADER_DIR);
+}
+
+QString shippedShaderPath(ShadingMethod method, ShaderStage stage)
+{
+    return shaderPath(shadingName(method) + stageSuffix(stage));
 }
 
 QString assetPath(const QString &relativePath)

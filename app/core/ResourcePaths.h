@@ -1,5 +1,9 @@
 #pragma once
+#include "ShaderStage.h"
+#include "ShadingMethod.h"
+
 #include <QString>
+#include <QStringList>
 
 namespace phonglab {
 
@@ -9,6 +13,11 @@ namespace phonglab {
 // Search order: $PHONGLAB_SHADER_DIR / $PHONGLAB_ASSET_DIR, next to the
 // executable, ../share/phonglab beside it, the source tree it was built from.
 QString shaderPath(const QString &fileName);
+// The shader a shading method ships for `stage` ("phong.frag", ...): the one
+// place that names the shipped files.
+QString shippedShaderPath(ShadingMethod method, ShaderStage stage);
+// The folders shaderPath() searches, in its order (the embedded copies aside).
+QStringList shaderSearchFolders();
 QString assetPath(const QString &relativePath);
 QString defaultScenePath();
 

@@ -8,16 +8,16 @@ namespace {
 
 // A failed step must always say why, even when the driver's log is empty
 // or in a form the parser does not know.
-void ensureError(CompileResult &result, ShaderStage stage, const QString &file, const QString &log)
+void ensureError(CompileResult &result, BuildStep step, const QString &file, const QString &log)
 {
     for (const ShaderDiagnostic &d : result.diagnostics)
-        if (d.isError() && d.stage == stage)
+        if (d.isError() && d.step == step)
             return;
     ShaderDiagnostic d;
-    d.stage = stage;
+    d.step = step;
     d.file = file;
     d.message = log.trimmed().isEmpty() ? QStringLiteral("%1 failed without a message from the driver")
-                                              .arg(stage == ShaderStage::Link ? "linking" : "compiling")
+                                              .arg(step == BuildStep::Link ? "linking" : "compiling")
                                         : log.trimmed();
     result.diagnostics.push_back(d);
 }
@@ -44,7 +44,7 @@ QString ProgramBuilder::infoLog(GLuint object, bool isProgram)
 GLuint ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
                                     CompileResult &result)
 {
-    const ShaderStage stage = type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment;
+    const BuildStep step = type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
     const QByteArray code = withPrologue(source.code, defines);
     const char *text = code.constData();
     const GLint length = GLint(code.size());
@@ -56,11 +56,11 @@ GLuint ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, con
     GLint status = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &status);
     const QString log = infoLog(shader, false);
-    auto diagnostics = parseShaderLog(log, stage, source.name);
+    auto diagnostics = parseShaderLog(log, step, source.name);
     mapColumnsToSource(diagnostics, source.code);
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
-        ensureError(result, stage, source.name, log);
+        ensureError(result, step, source.name, log);
         glDeleteShader(shader);
         return 0;
     }
@@ -79,10 +79,10 @@ GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, Compi
     GLint status = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &status);
     const QString log = infoLog(program, true);
-    auto diagnostics = parseShaderLog(log, ShaderStage::Link, linkName);
+    auto diagnostics = parseShaderLog(log, BuildStep::Link, linkName);
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
-        ensureError(result, ShaderStage::Link, linkName, log);
+        ensureError(result, BuildStep::Link, linkName, log);
         glDeleteProgram(program);
         return 0;
     }

@@ -111,13 +111,12 @@ void Renderer::updateSceneParameters(const Scene &scene)
 
 CompileResult Renderer::loadShading(ShadingMethod method)
 {
-    const QString name = shadingName(method);
     QString error;
-    const ShaderSource vs = ShaderSource::fromFile(shaderPath(name + QStringLiteral(".vert")), &error);
-    const ShaderSource fs = ShaderSource::fromFile(shaderPath(name + QStringLiteral(".frag")), &error);
+    const ShaderSource vs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Vertex), &error);
+    const ShaderSource fs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Fragment), &error);
     if (!error.isEmpty()) {
         CompileResult failed;
-        failed.diagnostics.push_back({ShaderStage::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, error});
+        failed.diagnostics.push_back({BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, error});
         return failed;
     }
     return setProgramSources(vs, fs);

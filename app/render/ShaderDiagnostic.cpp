@@ -4,19 +4,24 @@
 
 namespace phonglab {
 
-QString stageName(ShaderStage stage)
+BuildStep compileStep(ShaderStage stage)
 {
-    switch (stage) {
-    case ShaderStage::Vertex: return QStringLiteral("vertex");
-    case ShaderStage::Fragment: return QStringLiteral("fragment");
-    case ShaderStage::Link: return QStringLiteral("link");
-    }
-    return {};
+    return stage == ShaderStage::Vertex ? BuildStep::CompileVertex : BuildStep::CompileFragment;
+}
+
+ShaderStage editorStage(BuildStep step)
+{
+    return step == BuildStep::CompileVertex ? ShaderStage::Vertex : ShaderStage::Fragment;
+}
+
+QString stepName(BuildStep step)
+{
+    return step == BuildStep::Link ? QStringLiteral("link") : stageName(editorStage(step));
 }
 
 QString ShaderDiagnostic::format() const
 {
-    QString where = file.isEmpty() ? stageName(stage) : file;
+    QString where = file.isEmpty() ? stepName(step) : file;
     if (line > 0) {
         where += QLatin1Char(':') + QString::number(line);
         if (column > 0)
@@ -53,11 +58,11 @@ const std::vector<LogPattern> &logPatterns()
     return patterns;
 }
 
-ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m, ShaderStage stage,
-                           const QString &file, int prologueLines)
+ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m, BuildStep step, const QString &file,
+                           int prologueLines)
 {
     ShaderDiagnostic d;
-    d.stage = stage;
+    d.step = step;
     d.file = file;
     d.severity = m.captured(p.severity).compare(QLatin1String("warning"), Qt::CaseInsensitive) == 0
         ? ShaderDiagnostic::Severity::Warning
@@ -74,8 +79,7 @@ ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m
 
 } // namespace
 
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage, const QString &file,
-                                             int prologueLines)
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step, const QString &file, int prologueLines)
 {
     std::vector<ShaderDiagnostic> out;
     const QStringList lines = log.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
@@ -87,7 +91,7 @@ std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage sta
         for (const LogPattern &p : logPatterns()) {
             const QRegularExpressionMatch m = p.regex.match(text);
             if (m.hasMatch()) {
-                out.push_back(fromMatch(p, m, stage, file, prologueLines));
+                out.push_back(fromMatch(p, m, step, file, prologueLines));
                 matched = true;
                 break;
             }
@@ -97,7 +101,7 @@ std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage sta
         if (!matched && !out.empty())
             out.back().message += QLatin1Char(' ') + text;
         else if (!matched) // banner or info text: keep it, but it decides nothing
-            out.push_back({stage, ShaderDiagnostic::Severity::Warning, file, 0, 0, text});
+            out.push_back({step, ShaderDiagnostic::Severity::Warning, file, 0, 0, text});
     }
     return out;
 }

@@ -1,14 +1,24 @@
 #pragma once
+#include "core/ShaderStage.h"
+
 #include <QString>
 #include <vector>
 
 namespace phonglab {
 
-enum class ShaderStage {
-    Vertex,
-    Fragment,
+// The step of a build a message comes from: compiling one stage, or
+// linking the two.
+enum class BuildStep {
+    CompileVertex,
+    CompileFragment,
     Link
 };
+
+BuildStep compileStep(ShaderStage stage);
+// Where the editor shows a message of `step`: its stage's tab; the
+// fragment tab for link messages.
+ShaderStage editorStage(BuildStep step);
+QString stepName(BuildStep step); // "vertex", "fragment", "link"
 
 // One compiler or linker message, located in the user's file: `line` and
 // `column` are 1-based in the text the user wrote (0 = unknown), whatever
@@ -19,7 +29,7 @@ struct ShaderDiagnostic {
         Warning
     };
 
-    ShaderStage stage = ShaderStage::Fragment;
+    BuildStep step = BuildStep::CompileFragment;
     Severity severity = Severity::Error;
     QString file; // path or label of the user's source
     int line = 0;
@@ -36,7 +46,7 @@ struct ShaderDiagnostic {
 // "ERROR: 0:12: ..." form of AMD/ANGLE. `prologueLines` is the number of lines
 // the driver saw before the user's line 1 when no #line directive maps them
 // back; lines that fall inside the prologue are reported as line 0.
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage stage, const QString &file,
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step, const QString &file,
                                              int prologueLines = 0);
 
 // Mesa reports columns in its preprocessor's output, where every run of
@@ -44,7 +54,5 @@ std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, ShaderStage sta
 // user's text (the line of `code` the diagnostic names); columns beyond the
 // line are dropped. Lines are untouched.
 void mapColumnsToSource(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code);
-
-QString stageName(ShaderStage stage);
 
 } // namespace phonglab

@@ -49,7 +49,7 @@ void DiagnosticList::addDiagnostic(const ShaderDiagnostic &diagnostic)
     auto *item = new QListWidgetItem(shortFormat(diagnostic), this);
     item->setIcon(style()->standardIcon(error ? QStyle::SP_MessageBoxCritical : QStyle::SP_MessageBoxWarning));
     item->setToolTip(diagnostic.format());
-    item->setData(kStageRole, static_cast<int>(diagnostic.stage));
+    item->setData(kStageRole, static_cast<int>(editorStage(diagnostic.step)));
     item->setData(kLineRole, diagnostic.line);
     item->setData(kColumnRole, diagnostic.column);
 }

@@ -23,9 +23,8 @@ constexpr int kHangNoteMs = 5000;
 
 std::pair<ShaderSource, ShaderSource> shippedSources(ShadingMethod method, QString *error)
 {
-    const QString name = shadingName(method);
-    return {ShaderSource::fromFile(shaderPath(name + QStringLiteral(".vert")), error),
-            ShaderSource::fromFile(shaderPath(name + QStringLiteral(".frag")), error)};
+    return {ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Vertex), error),
+            ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Fragment), error)};
 }
 
 double toMs(qint64 ns)

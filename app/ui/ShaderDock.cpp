@@ -218,9 +218,9 @@ void ShaderDock::showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostic
     std::vector<ShaderDiagnostic> vertex;
     std::vector<ShaderDiagnostic> fragment;
     for (const ShaderDiagnostic &diagnostic : diagnostics) {
-        if (diagnostic.stage == ShaderStage::Vertex)
+        if (diagnostic.step == BuildStep::CompileVertex)
             vertex.push_back(diagnostic);
-        else if (diagnostic.stage == ShaderStage::Fragment || diagnostic.line > 0)
+        else if (diagnostic.step == BuildStep::CompileFragment || diagnostic.line > 0)
             fragment.push_back(diagnostic);
     }
     m_vertex->setDiagnostics(vertex);
@@ -243,7 +243,7 @@ void ShaderDock::setPreset(ShadingMethod method)
 
 void ShaderDock::goTo(ShaderStage stage, int line, int column)
 {
-    ShaderEditor *target = editor(stage == ShaderStage::Link ? ShaderStage::Fragment : stage);
+    ShaderEditor *target = editor(stage);
     m_tabs->setCurrentWidget(target);
     if (line > 0)
         target->goTo(line, column);

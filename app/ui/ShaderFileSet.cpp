@@ -81,18 +81,10 @@ ShaderFileSet::ShaderFileSet(QObject *parent)
 
 QStringList ShaderFileSet::defaultShippedFolders()
 {
-    QStringList folders;
-    const QString fromEnv = qEnvironmentVariable("PHONGLAB_SHADER_DIR");
-    if (!fromEnv.isEmpty())
-        folders << fromEnv;
-    if (QCoreApplication::instance()) {
-        const QString appDir = QCoreApplication::applicationDirPath();
-        folders << appDir + QStringLiteral("/shaders") << appDir + QStringLiteral("/../shaders")
-                << appDir + QStringLiteral("/../share/phonglab/shaders");
-    }
+    QStringList folders = shaderSearchFolders();
     for (const QString &name : shadingNames()) {
-        for (const char *suffix : {".vert", ".frag"}) {
-            const QString path = shaderPath(name + QLatin1String(suffix));
+        for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+            const QString path = shippedShaderPath(*shadingFromName(name), stage);
             if (!isResource(path))
                 folders << QFileInfo(path).absolutePath();
         }

@@ -174,7 +174,7 @@ ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
 {
     ProgramBuild built;
     if (!m_glInitialized) {
-        built.result.diagnostics.push_back({ShaderStage::Link,
+        built.result.diagnostics.push_back({BuildStep::Link,
                                             ShaderDiagnostic::Severity::Error,
                                             {},
                                             0,

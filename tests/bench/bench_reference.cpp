@@ -59,9 +59,9 @@ std::vector<Ray> raysThrough(const MeshData &mesh, int count)
     std::vector<Ray> rays;
     for (int i = 0; i < count; ++i) {
         const glm::dvec3 target = lo + size * glm::dvec3(unit(random), unit(random), unit(random));
-        const glm::dvec3 origin = centre + 2.0 * glm::length(size) * glm::normalize(glm::dvec3(unit(random) - 0.5,
-                                                                                               unit(random) - 0.5,
-                                                                                               unit(random) - 0.5));
+        const glm::dvec3 origin = centre
+            + 2.0 * glm::length(size)
+                * glm::normalize(glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5));
         rays.push_back(Ray{origin, target - origin});
     }
     return rays;
@@ -74,8 +74,8 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     QCommandLineParser parser;
     parser.addHelpOption();
-    parser.addOption({QStringLiteral("size"), QStringLiteral("Image side in pixels (default 256)."), QStringLiteral("N"),
-                      QStringLiteral("256")});
+    parser.addOption({QStringLiteral("size"), QStringLiteral("Image side in pixels (default 256)."),
+                      QStringLiteral("N"), QStringLiteral("256")});
     parser.process(app);
     const int side = std::max(16, parser.value(QStringLiteral("size")).toInt());
     std::printf("CPU reference on %u threads, %dx%d\n", std::max(1u, std::thread::hardware_concurrency()), side, side);

@@ -159,14 +159,14 @@ inline Outcome runScene(const QByteArray &bytes)
 inline Outcome runShaderLog(const QByteArray &bytes)
 {
     const unsigned char head = bytes.isEmpty() ? 0 : static_cast<unsigned char>(bytes[0]);
-    const ShaderStage stage = ShaderStage(head % 3);
+    const BuildStep step = BuildStep(head % 3);
     const int prologueLines = (head / 3) % 16;
     const QByteArray rest = bytes.mid(1);
     const qsizetype nul = rest.indexOf('\0');
     const QByteArray log = nul < 0 ? rest : rest.left(nul);
     const QByteArray code = nul < 0 ? QByteArray() : rest.mid(nul + 1);
     std::vector<ShaderDiagnostic> diagnostics =
-        parseShaderLog(QString::fromUtf8(log), stage, QStringLiteral("shader.frag"), prologueLines);
+        parseShaderLog(QString::fromUtf8(log), step, QStringLiteral("shader.frag"), prologueLines);
     mapColumnsToSource(diagnostics, code);
     for (const ShaderDiagnostic &d : diagnostics) {
         if (d.line < 0 || d.column < 0)

@@ -80,7 +80,7 @@ void TestShaderCompile::fragmentErrorOnUserLine()
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
     qInfo("%s", qPrintable(e->format()));
-    QCOMPARE(e->stage, ShaderStage::Fragment);
+    QCOMPARE(e->step, BuildStep::CompileFragment);
     QCOMPARE(e->file, fs.name);
     QCOMPARE(e->line, 17);
     QCOMPARE(e->column, 9); // `undeclaredThing` starts at column 9 of the user's line
@@ -95,7 +95,7 @@ void TestShaderCompile::vertexErrorOnUserLine()
     QVERIFY(!r.ok);
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
-    QCOMPARE(e->stage, ShaderStage::Vertex);
+    QCOMPARE(e->step, BuildStep::CompileVertex);
     QCOMPARE(e->line, 9);
 }
 
@@ -106,7 +106,7 @@ void TestShaderCompile::linkErrorIsReported()
     QVERIFY(!r.ok);
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
-    QCOMPARE(e->stage, ShaderStage::Link);
+    QCOMPARE(e->step, BuildStep::Link);
     QVERIFY2(!e->message.isEmpty(), "a failed link must say why");
 }
 

@@ -43,10 +43,10 @@ void writeExternally(const QString &path, const QByteArray &code)
     QVERIFY(file.commit());
 }
 
-ShaderDiagnostic diagnostic(ShaderStage stage, Severity severity, int line, int column, const QString &message)
+ShaderDiagnostic diagnostic(BuildStep step, Severity severity, int line, int column, const QString &message)
 {
     ShaderDiagnostic d;
-    d.stage = stage;
+    d.step = step;
     d.severity = severity;
     d.file = QStringLiteral("/somewhere/phong.frag");
     d.line = line;
@@ -188,7 +188,7 @@ void TestShaderEditor::errorMarksOnlyItsLine()
 {
     ShaderEditor editor;
     editor.setCode(kSmallShader);
-    editor.setDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 8, 14,
+    editor.setDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 8, 14,
                                       QStringLiteral("no function 'normalize' for ivec3"))});
 
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{8});
@@ -214,9 +214,10 @@ void TestShaderEditor::warningUsesItsOwnMarker()
     ShaderEditor editor;
     editor.setCode(kSmallShader);
     QVERIFY(editor.markerNumber(Severity::Error) != editor.markerNumber(Severity::Warning));
-    editor.setDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Warning, 4, 0, QStringLiteral("unused input")),
-                           diagnostic(ShaderStage::Fragment, Severity::Error, 9, 0, QStringLiteral("bad")),
-                           diagnostic(ShaderStage::Fragment, Severity::Warning, 9, 0, QStringLiteral("also odd"))});
+    editor.setDiagnostics(
+        {diagnostic(BuildStep::CompileFragment, Severity::Warning, 4, 0, QStringLiteral("unused input")),
+         diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 0, QStringLiteral("bad")),
+         diagnostic(BuildStep::CompileFragment, Severity::Warning, 9, 0, QStringLiteral("also odd"))});
     QCOMPARE(editor.markerLines(Severity::Warning), (QList<int>{4, 9}));
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{9});
     QCOMPARE(editor.annotationText(4), QStringLiteral("warning: unused input"));
@@ -224,7 +225,7 @@ void TestShaderEditor::warningUsesItsOwnMarker()
     QVERIFY(editor.underlinedText(4).isEmpty()); // no column, no squiggle
 
     // Replacing the diagnostics drops the old ones.
-    editor.setDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 2, 0, QStringLiteral("x"))});
+    editor.setDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 2, 0, QStringLiteral("x"))});
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{2});
     QVERIFY(editor.markerLines(Severity::Warning).isEmpty());
     QVERIFY(editor.annotationText(9).isEmpty());
@@ -234,7 +235,8 @@ void TestShaderEditor::diagnosticsWithoutLineOnlyInList()
 {
     ShaderDock dock;
     dock.setSources({QStringLiteral("a.vert"), "void main() {}\n"}, {QStringLiteral("a.frag"), kSmallShader});
-    dock.showDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 0, 0, QStringLiteral("out of memory"))});
+    dock.showDiagnostics(
+        {diagnostic(BuildStep::CompileFragment, Severity::Error, 0, 0, QStringLiteral("out of memory"))});
     QVERIFY(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error).isEmpty());
     QCOMPARE(dock.diagnosticList()->count(), 1);
     QCOMPARE(dock.diagnosticList()->item(0)->text(), QStringLiteral("phong.frag: error: out of memory"));
@@ -244,9 +246,9 @@ void TestShaderEditor::linkErrorsGoToFragmentEditor()
 {
     ShaderDock dock;
     dock.setSources({QStringLiteral("a.vert"), kSmallShader}, {QStringLiteral("a.frag"), kSmallShader});
-    dock.showDiagnostics({diagnostic(ShaderStage::Link, Severity::Error, 0, 0, QStringLiteral("no main")),
-                          diagnostic(ShaderStage::Link, Severity::Error, 4, 0, QStringLiteral("type mismatch")),
-                          diagnostic(ShaderStage::Vertex, Severity::Warning, 3, 0, QStringLiteral("unused"))});
+    dock.showDiagnostics({diagnostic(BuildStep::Link, Severity::Error, 0, 0, QStringLiteral("no main")),
+                          diagnostic(BuildStep::Link, Severity::Error, 4, 0, QStringLiteral("type mismatch")),
+                          diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 0, QStringLiteral("unused"))});
     QCOMPARE(dock.diagnosticList()->count(), 3);
     QCOMPARE(dock.diagnosticList()->errorCount(), 2);
     QCOMPARE(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error), QList<int>{4});
@@ -262,8 +264,8 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     dock.tabs()->setCurrentIndex(0);
     dock.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dock));
-    dock.showDiagnostics({diagnostic(ShaderStage::Vertex, Severity::Warning, 3, 2, QStringLiteral("w")),
-                          diagnostic(ShaderStage::Fragment, Severity::Error, 9, 17, QStringLiteral("e"))});
+    dock.showDiagnostics({diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 2, QStringLiteral("w")),
+                          diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 17, QStringLiteral("e"))});
     QSignalSpy spy(dock.diagnosticList(), &DiagnosticList::diagnosticActivated);
 
     DiagnosticList *list = dock.diagnosticList();
@@ -616,9 +618,9 @@ void TestShaderEditor::dockShowsErrorAnnotation()
     dock.resize(720, 640);
     dock.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dock));
-    dock.showDiagnostics({diagnostic(ShaderStage::Fragment, Severity::Error, 40, 26,
+    dock.showDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 40, 26,
                                      QStringLiteral("'viewMatrx' undeclared identifier")),
-                          diagnostic(ShaderStage::Fragment, Severity::Warning, 43, 15,
+                          diagnostic(BuildStep::CompileFragment, Severity::Warning, 43, 15,
                                      QStringLiteral("'d' shadows a previous declaration"))});
     dock.setCompileStatus(QStringLiteral("1 error — last good program still running"), false);
     dock.goTo(ShaderStage::Fragment, 40, 26);

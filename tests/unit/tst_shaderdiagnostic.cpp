@@ -29,7 +29,7 @@ void TestShaderDiagnostic::parsesMesa()
 {
     const auto d = parseShaderLog(QStringLiteral("0:12(5): error: `foo' undeclared\n"
                                                  "0:3(10): warning: unused variable\n"),
-                                  ShaderStage::Fragment, QStringLiteral("a.frag"));
+                                  BuildStep::CompileFragment, QStringLiteral("a.frag"));
     QCOMPARE(d.size(), std::size_t(2));
     QCOMPARE(d[0].line, 12);
     QCOMPARE(d[0].column, 5);
@@ -43,17 +43,18 @@ void TestShaderDiagnostic::parsesMesa()
 void TestShaderDiagnostic::parsesNvidia()
 {
     const auto d = parseShaderLog(QStringLiteral("0(27) : error C1008: undefined variable \"foo\""),
-                                  ShaderStage::Vertex, QStringLiteral("a.vert"));
+                                  BuildStep::CompileVertex, QStringLiteral("a.vert"));
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 27);
     QCOMPARE(d[0].column, 0);
-    QCOMPARE(d[0].stage, ShaderStage::Vertex);
+    QCOMPARE(d[0].step, BuildStep::CompileVertex);
     QCOMPARE(d[0].message, QStringLiteral("undefined variable \"foo\""));
 }
 
 void TestShaderDiagnostic::parsesAmdStyle()
 {
-    const auto d = parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"), ShaderStage::Fragment, {});
+    const auto d =
+        parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"), BuildStep::CompileFragment, {});
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 8);
     QVERIFY(d[0].isError());
@@ -62,7 +63,7 @@ void TestShaderDiagnostic::parsesAmdStyle()
 void TestShaderDiagnostic::parsesUnlocatedLinkError()
 {
     const auto d = parseShaderLog(QStringLiteral("error: fragment shader input `v' has no matching output"),
-                                  ShaderStage::Link, QStringLiteral("a.vert+a.frag"));
+                                  BuildStep::Link, QStringLiteral("a.vert+a.frag"));
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 0);
     QVERIFY(d[0].isError());
@@ -72,7 +73,7 @@ void TestShaderDiagnostic::parsesUnlocatedLinkError()
 void TestShaderDiagnostic::keepsContinuationLines()
 {
     const auto d = parseShaderLog(QStringLiteral("0:4(1): error: syntax error, unexpected\n    NEW_IDENTIFIER"),
-                                  ShaderStage::Fragment, {});
+                                  BuildStep::CompileFragment, {});
     QCOMPARE(d.size(), std::size_t(1));
     QVERIFY(d[0].message.endsWith(QStringLiteral("NEW_IDENTIFIER")));
 }
@@ -80,7 +81,7 @@ void TestShaderDiagnostic::keepsContinuationLines()
 void TestShaderDiagnostic::subtractsPrologueLines()
 {
     const auto d = parseShaderLog(QStringLiteral("0:5(2): error: a\n0:2(1): error: in the prologue"),
-                                  ShaderStage::Fragment, {}, 3);
+                                  BuildStep::CompileFragment, {}, 3);
     QCOMPARE(d[0].line, 2);
     QCOMPARE(d[1].line, 0); // inside the injected lines: no user line to blame
     QCOMPARE(d[1].column, 0);
