@@ -204,7 +204,7 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
         return false;
     }
     for (ShadingMethod method : options.methods) {
-        const CompileResult built = renderer.loadShading(method);
+        const BuildReport built = renderer.loadShading(method);
         if (!built.ok) {
             *error = QStringLiteral("%1: the shipped %2 shaders did not build: %3")
                          .arg(state.name, shadingName(method), built.errorSummary());

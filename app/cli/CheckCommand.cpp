@@ -149,7 +149,7 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     if (!renderer.setScene(scene, std::move(meshes), &error))
         return fail(args.scenePath, error);
     const StageFiles files = chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
-    const CompileResult program = buildStages(renderer, files, &error, &outcome.stages);
+    const BuildReport program = buildStages(renderer, files, &error, &outcome.stages);
     if (!error.isEmpty())
         return fail(QString(), error);
     for (const ShaderDiagnostic &d : program.diagnostics)

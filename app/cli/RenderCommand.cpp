@@ -95,7 +95,7 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     return args;
 }
 
-CompileResult buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene, QString *error)
+BuildReport buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene, QString *error)
 {
     Scene chosen = scene;
     chosen.shading = args.shading.value_or(scene.shading);
@@ -126,7 +126,7 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(error);
         return kExitFailure;
     }
-    const CompileResult program = buildProgram(renderer, args, *loaded.scene, &error);
+    const BuildReport program = buildProgram(renderer, args, *loaded.scene, &error);
     if (!error.isEmpty()) {
         printError(error);
         return kExitFailure;

@@ -55,8 +55,8 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
     return {};
 }
 
-CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,
-                          std::vector<ShaderStageText> *texts)
+BuildReport buildStages(Renderer &renderer, const StageFiles &files, QString *error,
+                        std::vector<ShaderStageText> *texts)
 {
     const ShaderSource vs = ShaderSource::fromFile(files.vertex, error);
     const ShaderSource fs = ShaderSource::fromFile(files.fragment, error);

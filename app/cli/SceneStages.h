@@ -2,7 +2,7 @@
 #include "core/MistakeSourceLines.h"
 #include "core/Scene.h"
 #include "core/ShadingMethod.h"
-#include "render/CompileResult.h"
+#include "render/BuildReport.h"
 #include "render/Renderer.h"
 
 #include <QCommandLineParser>
@@ -33,8 +33,8 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
 
 // Reads both files and builds the program. *error is set (and nothing built)
 // when a file cannot be read; `texts` receives what was read.
-CompileResult buildStages(Renderer &renderer, const StageFiles &files, QString *error,
-                          std::vector<ShaderStageText> *texts = nullptr);
+BuildReport buildStages(Renderer &renderer, const StageFiles &files, QString *error,
+                        std::vector<ShaderStageText> *texts = nullptr);
 
 // Writes a PNG that appears only once complete. False with *error.
 bool writePng(const QImage &image, const QString &path, QString *error);

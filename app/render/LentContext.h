@@ -7,7 +7,7 @@ class QOpenGLContext;
 
 namespace phonglab {
 
-class ProgramWarmer;
+class WarmUpDraw;
 
 // A QOpenGLWidget's context lent to another thread, the way QOpenGLWidget
 // documents drawing off the GUI thread: the owner stops painting, releases
@@ -17,8 +17,8 @@ class ProgramWarmer;
 // before it touches GL again.
 struct LentContext {
     QOpenGLContext *context = nullptr;
-    ProgramWarmer *warmer = nullptr; // owned by the lender, lives in `context`
-    int samples = 0;                 // of the lender's framebuffer
+    WarmUpDraw *warmer = nullptr; // owned by the lender, lives in `context`
+    int samples = 0;              // of the lender's framebuffer
     std::shared_ptr<QSemaphore> returned;
     // Runs on the borrower's thread with the context current, before the
     // warm-up draw (e.g. switching the renderer to the new program, whose

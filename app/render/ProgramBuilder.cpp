@@ -8,7 +8,7 @@ namespace {
 
 // A failed step must always say why, even when the driver's log is empty
 // or in a form the parser does not know.
-void ensureError(CompileResult &result, BuildStep step, const QString &file, const QString &log)
+void ensureError(BuildReport &result, BuildStep step, const QString &file, const QString &log)
 {
     for (const ShaderDiagnostic &d : result.diagnostics)
         if (d.isError() && d.step == step)
@@ -42,7 +42,7 @@ QString ProgramBuilder::infoLog(GLuint object, bool isProgram)
 }
 
 GLuint ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                                    CompileResult &result)
+                                    BuildReport &result)
 {
     const BuildStep step = type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
     const QByteArray code = withPrologue(source.code, defines);
@@ -67,7 +67,7 @@ GLuint ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, con
     return shader;
 }
 
-GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, CompileResult &result)
+GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, BuildReport &result)
 {
     const GLuint program = glCreateProgram();
     glAttachShader(program, vs);
@@ -89,13 +89,13 @@ GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, Compi
     return program;
 }
 
-ProgramBuild ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
+BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
         m_initialized = true;
     }
-    ProgramBuild out;
+    BuiltProgram out;
     QElapsedTimer timer;
     timer.start();
     const GLuint vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.result);

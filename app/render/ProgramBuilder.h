@@ -1,5 +1,5 @@
 #pragma once
-#include "CompileResult.h"
+#include "BuildReport.h"
 #include "ShaderSource.h"
 
 #include <QOpenGLExtraFunctions>
@@ -9,9 +9,9 @@ namespace phonglab {
 // What one build produced. `program` is a linked program object the caller
 // now owns (0 when the build failed); the timings split the work so that
 // benchmarks and the status bar can say where the time went.
-struct ProgramBuild {
+struct BuiltProgram {
     GLuint program = 0;
-    CompileResult result;
+    BuildReport result;
     qint64 compileNs = 0; // both stages, glCompileShader + status + log
     qint64 linkNs = 0;    // glLinkProgram + status + log
 
@@ -26,11 +26,11 @@ struct ProgramBuild {
 class ProgramBuilder : protected QOpenGLExtraFunctions
 {
 public:
-    ProgramBuild build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
+    BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
 
 private:
-    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines, CompileResult &result);
-    GLuint link(GLuint vertexShader, GLuint fragmentShader, const QString &linkName, CompileResult &result);
+    GLuint compileStage(GLenum type, const ShaderSource &source, const QStringList &defines, BuildReport &result);
+    GLuint link(GLuint vertexShader, GLuint fragmentShader, const QString &linkName, BuildReport &result);
     QString infoLog(GLuint object, bool isProgram);
 
     bool m_initialized = false;

@@ -21,7 +21,7 @@ bool Renderer::initialize(QString *error)
     initializeOpenGLFunctions();
     const ShaderSource vs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.vert")), error);
     const ShaderSource fs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.frag")), error);
-    const CompileResult marker = m_markerProgram.build(vs, fs);
+    const BuildReport marker = m_markerProgram.build(vs, fs);
     if (!marker.ok) {
         if (error)
             *error = QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary();
@@ -109,20 +109,20 @@ void Renderer::updateSceneParameters(const Scene &scene)
     m_scene = scene;
 }
 
-CompileResult Renderer::loadShading(ShadingMethod method)
+BuildReport Renderer::loadShading(ShadingMethod method)
 {
     QString error;
     const ShaderSource vs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Vertex), &error);
     const ShaderSource fs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Fragment), &error);
     if (!error.isEmpty()) {
-        CompileResult failed;
+        BuildReport failed;
         failed.diagnostics.push_back({BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, error});
         return failed;
     }
     return setProgramSources(vs, fs);
 }
 
-CompileResult Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
+BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
 {
     return m_program.build(vertex, fragment);
 }

@@ -1,5 +1,5 @@
 #pragma once
-#include "CompileResult.h"
+#include "BuildReport.h"
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
 #include "core/DepthRange.h"
@@ -54,8 +54,8 @@ public:
 
     // The lighting program: the shipped one for a shading method, or any
     // user sources. On failure the previous program keeps rendering.
-    CompileResult loadShading(ShadingMethod method);
-    CompileResult setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment);
+    BuildReport loadShading(ShadingMethod method);
+    BuildReport setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment);
     // Switches to a program linked elsewhere (a ProgramBuilder on a context
     // sharing this one's objects) and takes ownership of it. Uniforms the
     // user set on the old program carry over where name and type match; the

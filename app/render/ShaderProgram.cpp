@@ -88,10 +88,10 @@ void ShaderProgram::ensureInitialized()
     }
 }
 
-CompileResult ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
+BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
 {
     ensureInitialized();
-    ProgramBuild built = ProgramBuilder().build(vertex, fragment, defines);
+    BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines);
     if (built.ok())
         adopt(built.program);
     return built.result;

@@ -1,5 +1,5 @@
 #pragma once
-#include "CompileResult.h"
+#include "BuildReport.h"
 #include "ShaderSource.h"
 #include "UniformSnapshot.h"
 
@@ -9,10 +9,11 @@
 
 namespace phonglab {
 
-// A linked GL program built from two user-visible sources. Compiles through
-// glShaderSource directly (not QOpenGLShader) so the driver sees exactly the
-// user's lines, plus an optional prologue that #line maps back. Requires a
-// current context for every call; destroy() before the context goes away.
+// The program the renderer draws with, and its uniforms. build() builds
+// one with ProgramBuilder on the current context; adopt() takes one built
+// elsewhere (the BuildThread's context shares objects with this one).
+// Requires a current context for every call; destroy() before the context
+// goes away.
 class ShaderProgram : protected QOpenGLExtraFunctions
 {
 public:
@@ -23,7 +24,7 @@ public:
 
     // Builds a new program. On failure the previous program (if any) stays
     // in place and usable; the result carries the diagnostics.
-    CompileResult build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
+    BuildReport build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
     // Takes ownership of a program linked elsewhere (ProgramBuilder, possibly
     // on another context of the same share group) and frees the previous one.
     void adopt(GLuint program);

@@ -6,7 +6,7 @@
 #include "Viewport.h"
 #include "core/RecoveryJournal.h"
 #include "core/ResourcePaths.h"
-#include "render/BackgroundProgramBuilder.h"
+#include "render/BuildThread.h"
 
 #include <QSettings>
 #include <QTimer>
@@ -38,7 +38,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     : QObject(parent)
     , m_dock(dock)
     , m_viewport(viewport)
-    , m_builder(new BackgroundProgramBuilder(this))
+    , m_buildThread(new BuildThread(this))
     , m_recovery(new ShaderRecovery(dock, this))
     , m_debounce(new QTimer(this))
     , m_slowBuildNote(new QTimer(this))
@@ -47,7 +47,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
 {
     setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
-    connect(m_builder, &BackgroundProgramBuilder::built, this, &LiveShaderController::onBuilt);
+    connect(m_buildThread, &BuildThread::built, this, &LiveShaderController::onBuilt);
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
     connect(m_viewport, &Viewport::glAboutToBeReleased, this, &LiveShaderController::onGlAboutToBeReleased);
     connect(m_viewport, &Viewport::frameRendered, m_recovery, &ShaderRecovery::frameRendered);
@@ -79,8 +79,8 @@ void LiveShaderController::setUpTimers()
 
 LiveShaderController::~LiveShaderController()
 {
-    m_builder->stop();
-    endLoanNow();
+    m_buildThread->stop();
+    takeBackContextNow();
     m_recovery->clear();
 }
 
@@ -100,13 +100,13 @@ QByteArray LiveShaderController::currentHash() const
 
 bool LiveShaderController::buildsOnWorker() const
 {
-    return m_builder->isRunning();
+    return m_buildThread->isRunning();
 }
 
 void LiveShaderController::setWarmUp(WarmUp warmUp)
 {
     m_warmUp = warmUp;
-    m_builder->setWarmUp(warmUp == WarmUp::WorkerContext);
+    m_buildThread->setWarmUp(warmUp == WarmUp::WorkerContext);
 }
 
 void LiveShaderController::showPreset(ShadingMethod method)
@@ -221,21 +221,21 @@ void LiveShaderController::onGlAboutToBeReleased()
 {
     // The worker's context shares with the one going away; a new one comes
     // with the next glInitialized().
-    m_builder->stop();
-    endLoanNow();
+    m_buildThread->stop();
+    takeBackContextNow();
     setState(State::WaitingForGl);
     m_queued.reset();
     m_slowBuildNote->stop();
     m_hangNote->stop();
 }
 
-// The worker has stopped: a loan it had is over, even if its reply is lost.
-void LiveShaderController::endLoanNow()
+// The worker has stopped: a context lent to it is back, even if its reply is lost.
+void LiveShaderController::takeBackContextNow()
 {
     if (m_state != State::Warming)
         return;
     setState(State::Idle);
-    m_viewport->endLoan(0);
+    m_viewport->takeBackContext(0);
 }
 
 void LiveShaderController::setState(State state)
@@ -251,7 +251,7 @@ void LiveShaderController::startWorker()
         return;
     }
     QString error;
-    if (!m_builder->start(m_viewport->context(), &error)) {
+    if (!m_buildThread->start(m_viewport->context(), &error)) {
         qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(error));
         emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1").arg(error),
                            0);
@@ -259,7 +259,7 @@ void LiveShaderController::startWorker()
     }
     qInfo("phonglab: shaders build on a worker thread with a shared context; "
           "GL_KHR_parallel_shader_compile: %s",
-          m_builder->hasParallelShaderCompile() ? "available" : "not available");
+          m_buildThread->hasParallelShaderCompile() ? "available" : "not available");
 }
 
 void LiveShaderController::requestBuild(BuildRequest request)
@@ -297,15 +297,15 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment)};
     m_buildClock.start();
     m_buildHash = hash;
-    if (m_builder->isRunning()) {
+    if (m_buildThread->isRunning()) {
         setState(State::Building);
-        m_buildSerial = m_builder->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
+        m_buildSerial = m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
         m_slowBuildNote->start();
         m_hangNote->start();
         return;
     }
-    ProgramBuild built = m_viewport->buildProgram(vertex, fragment);
-    ProgramBuildReply reply;
+    BuiltProgram built = m_viewport->buildProgram(vertex, fragment);
+    BuildReply reply;
     reply.program = built.program;
     reply.result = std::move(built.result);
     reply.compileNs = built.compileNs;
@@ -313,10 +313,10 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     finish(hash, reply);
 }
 
-void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
+void LiveShaderController::onBuilt(const BuildReply &reply)
 {
     if (m_state != State::Building || reply.serial != m_buildSerial) { // from before a restart of the worker
-        m_builder->release(reply.program);
+        m_buildThread->release(reply.program);
         return;
     }
     setState(State::Idle);
@@ -328,7 +328,7 @@ void LiveShaderController::onBuilt(const ProgramBuildReply &reply)
         startQueuedBuild(); // else once the first draw is done
 }
 
-void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildReply &reply)
+void LiveShaderController::finish(const QByteArray &hash, const BuildReply &reply)
 {
     if (!reply.program) {
         m_hangNote->stop();
@@ -349,30 +349,30 @@ void LiveShaderController::finish(const QByteArray &hash, const ProgramBuildRepl
 // context lent to the worker: where the driver keeps draw-time variants and
 // per-program state per context (llvmpipe), this is the only way that work
 // stays off the GUI thread.
-bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramBuildReply &reply)
+bool LiveShaderController::warmInViewport(const QByteArray &hash, const BuildReply &reply)
 {
-    if (m_warmUp != WarmUp::ViewportContext || !m_builder->isRunning())
+    if (m_warmUp != WarmUp::ViewportContext || !m_buildThread->isRunning())
         return false;
-    std::optional<LentContext> loan = m_viewport->lendContext(m_builder->workerThread());
-    if (!loan)
+    std::optional<LentContext> lent = m_viewport->lendContext(m_buildThread->workerThread());
+    if (!lent)
         return false;
     // The GUI thread leaves the renderer alone while the context is lent.
     auto adopted = std::make_shared<std::atomic_bool>(false);
-    loan->whileCurrent = [viewport = m_viewport, program = reply.program, adopted] {
+    lent->whileCurrent = [viewport = m_viewport, program = reply.program, adopted] {
         viewport->renderer().adoptProgram(program);
         *adopted = true;
     };
     setState(State::Warming);
-    m_builder->warmInLentContext(
-        *loan, reply.program, [this, hash, reply, adopted](qint64 warmNs, const QString &error) {
+    m_buildThread->warmInLentContext(
+        *lent, reply.program, [this, hash, reply, adopted](qint64 warmNs, const QString &error) {
             if (m_state != State::Warming)
-                return; // the context went away meanwhile, and the loan with it
+                return; // the context went away meanwhile, and came back with it
             setState(State::Idle);
             m_hangNote->stop();
-            m_viewport->endLoan();
+            m_viewport->takeBackContext();
             if (!*adopted)
                 m_viewport->adoptProgram(reply.program);
-            ProgramBuildReply warmed = reply;
+            BuildReply warmed = reply;
             if (warmNs >= 0) {
                 warmed.warmNs = warmNs;
             } else {
@@ -385,7 +385,7 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const ProgramB
     return true;
 }
 
-void LiveShaderController::announce(const QByteArray &hash, const ProgramBuildReply &reply)
+void LiveShaderController::announce(const QByteArray &hash, const BuildReply &reply)
 {
     m_appliedHash = hash;
     m_lastApplied = reply;
@@ -402,7 +402,7 @@ void LiveShaderController::announce(const QByteArray &hash, const ProgramBuildRe
     emit programApplied(hash, reply);
 }
 
-void LiveShaderController::showFailure(const CompileResult &result)
+void LiveShaderController::showFailure(const BuildReport &result)
 {
     m_dock->showDiagnostics(result.diagnostics);
     int errors = 0;

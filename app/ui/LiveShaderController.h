@@ -1,7 +1,7 @@
 #pragma once
 #include "ShaderRecovery.h"
 #include "core/ShadingMethod.h"
-#include "render/ProgramBuildWorker.h"
+#include "render/BuildWorker.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -12,14 +12,14 @@ class QWidget;
 
 namespace phonglab {
 
-class BackgroundProgramBuilder;
+class BuildThread;
 class ShaderDock;
 class Viewport;
 
 // Live shader editing: connects the Shaders dock to the viewport. After an
 // edit and a pause (QSettings "editor/debounceMs", 300 ms by default), and
 // only when the text of the two stages really changed since the last build,
-// it builds the program off the GUI thread (BackgroundProgramBuilder) and
+// it builds the program off the GUI thread (BuildThread) and
 // switches the viewport to it; F5 builds at once. A failed build leaves the
 // last good program running and puts each message on the user's line. The
 // buffers are journaled (ShaderRecovery) before every build, and a sentinel
@@ -86,7 +86,7 @@ public:
     bool isWaitingToBuild() const;
     QByteArray appliedHash() const { return m_appliedHash; }
     // Timings of the program in use (warmNs > 0: warmed before it was shown).
-    const ProgramBuildReply &lastApplied() const { return m_lastApplied; }
+    const BuildReply &lastApplied() const { return m_lastApplied; }
     QByteArray currentHash() const;
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
@@ -95,7 +95,7 @@ signals:
     // For the status bar.
     void statusMessage(const QString &text, int timeoutMs);
     // The viewport now draws with the program built from `hash`'s text.
-    void programApplied(const QByteArray &hash, const phonglab::ProgramBuildReply &timings);
+    void programApplied(const QByteArray &hash, const phonglab::BuildReply &timings);
     void buildFailed(const QByteArray &hash);
     void stateChanged(phonglab::LiveShaderController::State state);
 
@@ -116,16 +116,16 @@ private:
     void requestBuild(BuildRequest request);
     void startQueuedBuild();
     void dispatch(const QByteArray &hash);
-    void onBuilt(const ProgramBuildReply &reply);
-    void finish(const QByteArray &hash, const ProgramBuildReply &reply);
-    bool warmInViewport(const QByteArray &hash, const ProgramBuildReply &reply);
-    void announce(const QByteArray &hash, const ProgramBuildReply &reply);
-    void endLoanNow();
-    void showFailure(const CompileResult &result);
+    void onBuilt(const BuildReply &reply);
+    void finish(const QByteArray &hash, const BuildReply &reply);
+    bool warmInViewport(const QByteArray &hash, const BuildReply &reply);
+    void announce(const QByteArray &hash, const BuildReply &reply);
+    void takeBackContextNow();
+    void showFailure(const BuildReport &result);
 
     ShaderDock *m_dock = nullptr;
     Viewport *m_viewport = nullptr;
-    BackgroundProgramBuilder *m_builder = nullptr;
+    BuildThread *m_buildThread = nullptr;
     ShaderRecovery *m_recovery = nullptr;
     QTimer *m_debounce = nullptr;
     QTimer *m_slowBuildNote = nullptr;
@@ -139,7 +139,7 @@ private:
     WarmUp m_warmUp = WarmUp::ViewportContext;
     QByteArray m_lastBuiltHash; // last text sent to the compiler
     QByteArray m_appliedHash;   // text of the program the viewport draws with
-    ProgramBuildReply m_lastApplied;
+    BuildReply m_lastApplied;
     quint64 m_buildSerial = 0;            // while Building: the serial the worker's reply carries
     QByteArray m_buildHash;               // while Building or Warming: the text on its way
     std::optional<BuildRequest> m_queued; // asked for while not Idle

@@ -28,7 +28,7 @@ constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1; // weight of the newest frame in the running average
-constexpr int kLoanReturnTimeoutMs = 5000;
+constexpr int kGiveBackTimeoutMs = 5000;
 constexpr double kLightPickRadiusPx =
     8.0; // how near a click must be to a marker   // a borrower stuck in the driver (a shader that never ends)
 
@@ -57,7 +57,7 @@ QString contextDescription(QOpenGLContext *context)
 
 Viewport::Viewport(QWidget *parent)
     : QOpenGLWidget(parent)
-    , m_loan(this)
+    , m_lender(this)
 {
     setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
     setAcceptDrops(true);
@@ -170,9 +170,9 @@ void Viewport::adoptProgram(GLuint program)
     update();
 }
 
-ProgramBuild Viewport::buildProgram(const ShaderSource &vertex, const ShaderSource &fragment)
+BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSource &fragment)
 {
-    ProgramBuild built;
+    BuiltProgram built;
     if (!m_glInitialized) {
         built.result.diagnostics.push_back({BuildStep::Link,
                                             ShaderDiagnostic::Severity::Error,
@@ -190,17 +190,17 @@ std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
     if (!m_glInitialized)
         return std::nullopt;
-    return m_loan.lend(borrower, &m_warmer, std::max(0, m_framebufferSamples));
+    return m_lender.lend(borrower, &m_warmer, std::max(0, m_framebufferSamples));
 }
 
-bool Viewport::endLoan(int timeoutMs)
+bool Viewport::takeBackContext(int timeoutMs)
 {
-    return m_loan.end(timeoutMs);
+    return m_lender.end(timeoutMs);
 }
 
 QImage Viewport::grabFramebuffer()
 {
-    endLoan();
+    takeBackContext();
     return QOpenGLWidget::grabFramebuffer();
 }
 
@@ -212,13 +212,13 @@ bool Viewport::event(QEvent *event)
     const QEvent::Type type = event->type();
     if (type == QEvent::Show || type == QEvent::WindowChangeInternal || type == QEvent::WindowAboutToChangeInternal
         || type == QEvent::ScreenChangeInternal)
-        endLoan();
+        takeBackContext();
     return QOpenGLWidget::event(event);
 }
 
 void Viewport::resizeEvent(QResizeEvent *event)
 {
-    endLoan(); // the framebuffer is recreated with the context current
+    takeBackContext(); // the framebuffer is recreated with the context current
     QOpenGLWidget::resizeEvent(event);
 }
 
@@ -376,7 +376,7 @@ bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *er
     const ShadingMethod previousShading = m_renderer.scene().shading;
     const bool reloadShading = !m_renderer.hasProgram() || scene.shading != previousShading;
     if (reloadShading) {
-        const CompileResult built = m_renderer.loadShading(scene.shading);
+        const BuildReport built = m_renderer.loadShading(scene.shading);
         if (!built.ok) {
             if (error)
                 *error = tr("Cannot build the %1 shading program:\n%2")
@@ -396,7 +396,7 @@ void Viewport::cleanup()
 {
     if (m_glInitialized) {
         emit glAboutToBeReleased(); // the borrower stops, and gives the context back
-        if (endLoan(kLoanReturnTimeoutMs)) {
+        if (takeBackContext(kGiveBackTimeoutMs)) {
             makeCurrent();
             m_warmer.destroy();
             m_renderer.cleanup();
@@ -413,7 +413,7 @@ void Viewport::cleanup()
 
 void Viewport::paintGL()
 {
-    m_loan.framePainted();
+    m_lender.framePainted();
     QOpenGLFunctions *f = context()->functions();
     if (!m_renderReady) {
         // Nothing to draw (GL failed and was reported): show the background.

@@ -1,11 +1,11 @@
 #pragma once
-#include "ContextLoan.h"
+#include "ContextLender.h"
 #include "core/OrbitCamera.h"
 #include "core/Scene.h"
 #include "render/LentContext.h"
 #include "render/ProgramBuilder.h"
-#include "render/ProgramWarmer.h"
 #include "render/Renderer.h"
+#include "render/WarmUpDraw.h"
 
 #include <QOpenGLWidget>
 #include <QPointF>
@@ -51,22 +51,22 @@ public:
     // compiles on the GUI thread with this context: the fallback when no
     // shared context can be had. Both need GL to be up (glInitialized()).
     void adoptProgram(GLuint program);
-    ProgramBuild buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
+    BuiltProgram buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
     Renderer &renderer() { return m_renderer; } // call with the context current (makeCurrent())
     // The near/far planes of the last frame (no GL call; any time).
     const DepthRange &depthRange() const { return m_renderer.depthRange(); }
 
     // Lends the GL context to `borrower` (see LentContext), so that a new
     // program's draw-time compile happens in this very context but off the
-    // GUI thread. Until endLoan() the view does not paint, and anything that
+    // GUI thread. Until takeBackContext() the view does not paint, and anything that
     // needs the context on this thread first waits for it to come back.
     // Refused (nullopt) while a painted frame waits to be composed (the
     // window is hidden, or a grab): the caller then does the work itself.
     std::optional<LentContext> lendContext(QThread *borrower);
     // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
     // and paints again. False if it did not come back in time.
-    bool endLoan(int timeoutMs = -1);
-    bool isContextLent() const { return m_loan.isActive(); }
+    bool takeBackContext(int timeoutMs = -1);
+    bool isContextLent() const { return m_lender.isActive(); }
     // Samples of the framebuffer the view draws into (-1 before the first frame).
     int framebufferSamples() const { return m_framebufferSamples; }
     // QOpenGLWidget::grabFramebuffer() once a lent context is back.
@@ -179,8 +179,8 @@ private:
     double m_smoothedFrameMs = 0.0;
     qint64 m_framesRendered = 0;
     QString m_glRendererName;
-    ContextLoan m_loan;
-    ProgramWarmer m_warmer;          // created in this context by a borrower; freed in cleanup()
+    ContextLender m_lender;
+    WarmUpDraw m_warmer;             // created in this context by a borrower; freed in cleanup()
     GLint m_framebufferSamples = -1; // of QOpenGLWidget's framebuffer; -1: not known yet
 };
 

@@ -98,7 +98,7 @@ private slots:
 private:
     QImage render(const ShaderSource &vertex, const ShaderSource &fragment)
     {
-        const CompileResult program = m_offscreen.renderer().setProgramSources(vertex, fragment);
+        const BuildReport program = m_offscreen.renderer().setProgramSources(vertex, fragment);
         if (!program.ok)
             qFatal("%s", qPrintable(program.errorSummary()));
         return m_offscreen.renderImage(QSize(kCheckWidth, kCheckHeight));

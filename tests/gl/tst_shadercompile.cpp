@@ -26,12 +26,12 @@ private slots:
     void failedBuildKeepsPreviousProgram();
 
 private:
-    static const ShaderDiagnostic *firstError(const CompileResult &r);
+    static const ShaderDiagnostic *firstError(const BuildReport &r);
     OffscreenRenderer m_offscreen; // provides the current context
     ShaderProgram m_program;
 };
 
-const ShaderDiagnostic *TestShaderCompile::firstError(const CompileResult &r)
+const ShaderDiagnostic *TestShaderCompile::firstError(const BuildReport &r)
 {
     for (const ShaderDiagnostic &d : r.diagnostics)
         if (d.isError())
@@ -56,7 +56,7 @@ void TestShaderCompile::cleanupTestCase()
 
 void TestShaderCompile::shippedShadersCompileCleanly()
 {
-    const CompileResult r =
+    const BuildReport r =
         m_program.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag")));
     QVERIFY2(r.ok, qPrintable(r.errorSummary()));
     QVERIFY2(r.diagnostics.empty(), qPrintable(r.errorSummary()));
@@ -75,7 +75,7 @@ void TestShaderCompile::fragmentErrorOnUserLine()
 {
     QFETCH(QStringList, defines);
     const ShaderSource fs = testShader(QStringLiteral("shaders/error_line17.frag"));
-    const CompileResult r = m_program.build(shippedShader(QStringLiteral("phong.vert")), fs, defines);
+    const BuildReport r = m_program.build(shippedShader(QStringLiteral("phong.vert")), fs, defines);
     QVERIFY(!r.ok);
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
@@ -91,7 +91,7 @@ void TestShaderCompile::fragmentErrorOnUserLine()
 void TestShaderCompile::vertexErrorOnUserLine()
 {
     const ShaderSource vs = testShader(QStringLiteral("shaders/error_line9.vert"));
-    const CompileResult r = m_program.build(vs, shippedShader(QStringLiteral("phong.frag")));
+    const BuildReport r = m_program.build(vs, shippedShader(QStringLiteral("phong.frag")));
     QVERIFY(!r.ok);
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
@@ -101,8 +101,8 @@ void TestShaderCompile::vertexErrorOnUserLine()
 
 void TestShaderCompile::linkErrorIsReported()
 {
-    const CompileResult r = m_program.build(shippedShader(QStringLiteral("phong.vert")),
-                                            testShader(QStringLiteral("shaders/link_no_main.frag")));
+    const BuildReport r = m_program.build(shippedShader(QStringLiteral("phong.vert")),
+                                          testShader(QStringLiteral("shaders/link_no_main.frag")));
     QVERIFY(!r.ok);
     const ShaderDiagnostic *e = firstError(r);
     QVERIFY(e);
@@ -112,8 +112,8 @@ void TestShaderCompile::linkErrorIsReported()
 
 void TestShaderCompile::warningsAreNotErrors()
 {
-    const CompileResult r = m_program.build(shippedShader(QStringLiteral("phong.vert")),
-                                            testShader(QStringLiteral("shaders/warning_only.frag")));
+    const BuildReport r = m_program.build(shippedShader(QStringLiteral("phong.vert")),
+                                          testShader(QStringLiteral("shaders/warning_only.frag")));
     QVERIFY2(r.ok, qPrintable(r.errorSummary()));
     QVERIFY(!r.hasErrors());
     for (const ShaderDiagnostic &d : r.diagnostics)
@@ -126,8 +126,8 @@ void TestShaderCompile::failedBuildKeepsPreviousProgram()
         m_program.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag"))).ok);
     const GLuint good = m_program.id();
     QVERIFY(good != 0);
-    const CompileResult bad = m_program.build(shippedShader(QStringLiteral("phong.vert")),
-                                              testShader(QStringLiteral("shaders/error_line17.frag")));
+    const BuildReport bad = m_program.build(shippedShader(QStringLiteral("phong.vert")),
+                                            testShader(QStringLiteral("shaders/error_line17.frag")));
     QVERIFY(!bad.ok);
     QCOMPARE(m_program.id(), good);
     QVERIFY(m_program.isValid());

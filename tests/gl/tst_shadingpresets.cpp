@@ -174,7 +174,7 @@ void TestShadingPresets::presetBuilds()
     OffscreenRenderer offscreen;
     QString error;
     QVERIFY2(offscreen.create(&error), qPrintable(error));
-    const CompileResult built = offscreen.renderer().loadShading(*shadingFromName(method));
+    const BuildReport built = offscreen.renderer().loadShading(*shadingFromName(method));
     QVERIFY2(built.ok && !built.hasErrors(), qPrintable(built.errorSummary()));
     if (!built.diagnostics.empty())
         qInfo("%s: %d warning(s):\n%s", qPrintable(method), int(built.diagnostics.size()),

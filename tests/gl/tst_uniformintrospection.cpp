@@ -81,7 +81,7 @@ void TestUniformIntrospection::cleanupTestCase()
 std::vector<ActiveUniformInfo> TestUniformIntrospection::build(const QByteArray &vertex, const QByteArray &fragment)
 {
     m_offscreen.makeCurrent();
-    const CompileResult r = m_program.build({QStringLiteral("v"), vertex}, {QStringLiteral("f"), fragment});
+    const BuildReport r = m_program.build({QStringLiteral("v"), vertex}, {QStringLiteral("f"), fragment});
     if (!r.ok)
         qWarning("%s", qPrintable(r.errorSummary()));
     return activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), m_program.id());

@@ -3,7 +3,7 @@
 #include "core/ImageMetrics.h"
 #include "core/MeshData.h"
 #include "core/Scene.h"
-#include "render/CompileResult.h"
+#include "render/BuildReport.h"
 #include "render/ShaderSource.h"
 
 #include <QHash>
@@ -27,7 +27,7 @@ struct RenderCheck {
     RgbImage reference;
     ReferenceImage referenceData; // the unquantised reference behind `reference`
     ImageComparison comparison;
-    CompileResult compile;
+    BuildReport compile;
     QString error; // set when something could not run at all
     // With CheckOptions::floatTarget: pixels whose R, G or B came out NaN or
     // infinite (drawn magenta in `gpu`); -1 when not rendered that way.

@@ -55,7 +55,7 @@ int main(int argc, char **argv)
     }
     const QImage exact = toQImage(reference.exact.toImage(reference.background));
     const auto render = [&](const ShaderPair &shaders) {
-        const CompileResult program = offscreen.renderer().setProgramSources(shaders.vertex, shaders.fragment);
+        const BuildReport program = offscreen.renderer().setProgramSources(shaders.vertex, shaders.fragment);
         if (!program.ok)
             qFatal("%s", qPrintable(program.errorSummary()));
         return offscreen.renderImage(QSize(kCheckWidth, kCheckHeight));

@@ -1,15 +1,15 @@
-#include "CompileResult.h"
+#include "BuildReport.h"
 
 #include <algorithm>
 
 namespace phonglab {
 
-bool CompileResult::hasErrors() const
+bool BuildReport::hasErrors() const
 {
     return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ShaderDiagnostic &d) { return d.isError(); });
 }
 
-QStringList CompileResult::formatted() const
+QStringList BuildReport::formatted() const
 {
     QStringList lines;
     for (const ShaderDiagnostic &d : diagnostics)
@@ -17,7 +17,7 @@ QStringList CompileResult::formatted() const
     return lines;
 }
 
-QString CompileResult::errorSummary() const
+QString BuildReport::errorSummary() const
 {
     return formatted().join(QLatin1Char('\n'));
 }

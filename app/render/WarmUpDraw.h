@@ -19,13 +19,13 @@ namespace phonglab {
 // context of the share group benefits), llvmpipe keeps it per context, so
 // there the warming must happen in the viewport's own context (LentContext).
 // Needs its context current for every call.
-class ProgramWarmer : protected QOpenGLExtraFunctions
+class WarmUpDraw : protected QOpenGLExtraFunctions
 {
 public:
-    ProgramWarmer();
-    ~ProgramWarmer();
-    ProgramWarmer(const ProgramWarmer &) = delete;
-    ProgramWarmer &operator=(const ProgramWarmer &) = delete;
+    WarmUpDraw();
+    ~WarmUpDraw();
+    WarmUpDraw(const WarmUpDraw &) = delete;
+    WarmUpDraw &operator=(const WarmUpDraw &) = delete;
 
     bool create(int samples, QString *error);
     bool isCreated() const { return m_fbo != nullptr; }

@@ -1,7 +1,7 @@
 #pragma once
 #include "LentContext.h"
 #include "ProgramBuilder.h"
-#include "ProgramWarmer.h"
+#include "WarmUpDraw.h"
 
 #include <QObject>
 
@@ -10,7 +10,7 @@ class QOpenGLContext;
 
 namespace phonglab {
 
-struct ProgramBuildRequest {
+struct BuildJob {
     quint64 serial = 0;
     ShaderSource vertex;
     ShaderSource fragment;
@@ -20,10 +20,10 @@ struct ProgramBuildRequest {
 
 // A finished build. `program` (0 on failure) lives in the share group and is
 // owned by whoever receives the reply: adopt it or release it.
-struct ProgramBuildReply {
+struct BuildReply {
     quint64 serial = 0;
     GLuint program = 0;
-    CompileResult result;
+    BuildReport result;
     qint64 compileNs = 0;
     qint64 linkNs = 0;
     qint64 warmNs = 0;
@@ -31,25 +31,25 @@ struct ProgramBuildReply {
     qint64 finishedAtNs = 0; // program linked, warmed and finished
 };
 
-// The half of BackgroundProgramBuilder that lives on the worker thread:
+// The half of BuildThread that lives on the worker thread:
 // every member runs there, with the worker's context current from
 // initialize() to shutdown() (but for the time a lent context is).
-class ProgramBuildWorker : public QObject
+class BuildWorker : public QObject
 {
     Q_OBJECT
 
 public:
-    ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface);
+    BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface);
 
     bool initialize(QString *error);
-    ProgramBuildReply build(const ProgramBuildRequest &request);
+    BuildReply build(const BuildJob &request);
     void release(GLuint program);
     // Makes a context lent to this thread (see LentContext) current on
-    // `surface`, runs loan.whileCurrent, draws `program` once, then hands the
+    // `surface`, runs lent.whileCurrent, draws `program` once, then hands the
     // context back to `owner` and makes the worker's own context current
     // again. The nanoseconds it took, or -1 with a reason when the lent
     // context could not be used.
-    qint64 warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program, QThread *owner,
+    qint64 warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program, QThread *owner,
                              QString *error);
     // Frees the worker's GL objects, releases the context and hands it back
     // to `owner` (the GUI thread) so that it can be deleted there.
@@ -63,7 +63,7 @@ private:
     QOffscreenSurface *m_surface = nullptr;
     int m_warmSamples = -1; // of m_warmer's framebuffer
     ProgramBuilder m_builder;
-    ProgramWarmer m_warmer;
+    WarmUpDraw m_warmer;
     bool m_parallelShaderCompile = false;
     QString m_rendererName;
 };

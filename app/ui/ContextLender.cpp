@@ -1,17 +1,17 @@
-#include "ContextLoan.h"
+#include "ContextLender.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLWidget>
 
 namespace phonglab {
 
-ContextLoan::ContextLoan(QOpenGLWidget *widget)
+ContextLender::ContextLender(QOpenGLWidget *widget)
     : m_widget(widget)
 {
     QObject::connect(widget, &QOpenGLWidget::aboutToCompose, widget, [this] { m_composePending = false; });
 }
 
-std::optional<LentContext> ContextLoan::lend(QThread *borrower, ProgramWarmer *warmer, int samples)
+std::optional<LentContext> ContextLender::lend(QThread *borrower, WarmUpDraw *warmer, int samples)
 {
     QOpenGLContext *context = m_widget->context();
     if (!context || m_returned || m_composePending)
@@ -23,7 +23,7 @@ std::optional<LentContext> ContextLoan::lend(QThread *borrower, ProgramWarmer *w
     return LentContext{context, warmer, samples, m_returned, {}};
 }
 
-bool ContextLoan::end(int timeoutMs)
+bool ContextLender::end(int timeoutMs)
 {
     if (!m_returned)
         return true;

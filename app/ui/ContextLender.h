@@ -15,13 +15,13 @@ namespace phonglab {
 // its context current to resolve multisampling, whatever paintEvent does),
 // and a frame painted but not yet composed blocks lending (composing flushes
 // it with the context current). The widget calls end() before any GL work.
-class ContextLoan
+class ContextLender
 {
 public:
-    explicit ContextLoan(QOpenGLWidget *widget);
+    explicit ContextLender(QOpenGLWidget *widget);
 
     // nullopt when the context cannot be lent right now.
-    std::optional<LentContext> lend(QThread *borrower, ProgramWarmer *warmer, int samples);
+    std::optional<LentContext> lend(QThread *borrower, WarmUpDraw *warmer, int samples);
     // Waits for the borrower to give the context back (at most timeoutMs;
     // -1: as long as it takes); false if it did not in time.
     bool end(int timeoutMs = -1);

@@ -1,5 +1,5 @@
 #pragma once
-#include "ProgramBuildWorker.h"
+#include "BuildWorker.h"
 
 #include <QMutex>
 #include <QObject>
@@ -15,17 +15,17 @@ namespace phonglab {
 // Builds lighting programs off the GUI thread. A worker QThread owns an
 // OpenGL context created in the same share group as the viewport's, on a
 // QOffscreenSurface (created here, on the GUI thread, as Qt requires). It
-// compiles, links, warms the program with one small draw (ProgramWarmer) and
+// compiles, links, warms the program with one small draw (WarmUpDraw) and
 // glFinish()es; the GUI thread then gets built() with the program id, which
 // names the same object in the viewport's context. Typing never waits on the
 // driver: the GUI thread only adopts a finished program.
-class BackgroundProgramBuilder : public QObject
+class BuildThread : public QObject
 {
     Q_OBJECT
 
 public:
-    explicit BackgroundProgramBuilder(QObject *parent = nullptr);
-    ~BackgroundProgramBuilder() override;
+    explicit BuildThread(QObject *parent = nullptr);
+    ~BuildThread() override;
 
     // Creates the worker context sharing objects with `shareContext` (which
     // must exist) and starts the thread. False with a reason when no shared
@@ -46,10 +46,10 @@ public:
 
     // Draws `program` once in the viewport's own context, which the caller
     // has lent to workerThread(). The worker gives it back (moves it to this
-    // thread, releases loan.returned); then `done` runs here with the time it
+    // thread, releases lent.returned); then `done` runs here with the time it
     // took, or -1 and a reason. Queued behind any build in progress.
-    using LoanDone = std::function<void(qint64 warmNs, const QString &error)>;
-    void warmInLentContext(const LentContext &loan, GLuint program, LoanDone done);
+    using WarmDone = std::function<void(qint64 warmNs, const QString &error)>;
+    void warmInLentContext(const LentContext &lent, GLuint program, WarmDone done);
     QThread *workerThread() const { return m_thread.get(); }
 
     // Whether each build also draws once in the worker's own context before
@@ -60,7 +60,7 @@ public:
 
 signals:
     // On the GUI thread. The receiver owns reply.program.
-    void built(const phonglab::ProgramBuildReply &reply);
+    void built(const phonglab::BuildReply &reply);
 
 private:
     // Where the worker posts replies. Cleared under its mutex when this
@@ -68,18 +68,18 @@ private:
     // abandoned) never posts to a deleted object.
     struct Mailbox {
         QMutex mutex;
-        BackgroundProgramBuilder *receiver = nullptr;
+        BuildThread *receiver = nullptr;
     };
 
-    void deliver(const ProgramBuildReply &reply, quint64 generation);
+    void deliver(const BuildReply &reply, quint64 generation);
 
     std::shared_ptr<Mailbox> m_mailbox = std::make_shared<Mailbox>();
 
     std::unique_ptr<QThread> m_thread;
     std::unique_ptr<QOffscreenSurface> m_surface;
-    std::unique_ptr<QOffscreenSurface> m_loanSurface; // in the viewport context's format
+    std::unique_ptr<QOffscreenSurface> m_lentSurface; // in the viewport context's format
     std::unique_ptr<QOpenGLContext> m_context;
-    ProgramBuildWorker *m_worker = nullptr; // lives on m_thread, deleted with it
+    BuildWorker *m_worker = nullptr; // lives on m_thread, deleted with it
     quint64 m_lastSerial = 0;
     quint64 m_generation = 0; // one per start(): a program belongs to its share group
     bool m_warmUp = true;

@@ -1,4 +1,4 @@
-#include "ProgramBuildWorker.h"
+#include "BuildWorker.h"
 
 #include <QElapsedTimer>
 #include <QOffscreenSurface>
@@ -8,13 +8,13 @@
 
 namespace phonglab {
 
-ProgramBuildWorker::ProgramBuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
+BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
     : m_context(context)
     , m_surface(surface)
 {
 }
 
-bool ProgramBuildWorker::initialize(QString *error)
+bool BuildWorker::initialize(QString *error)
 {
     if (!m_context->makeCurrent(m_surface)) {
         if (error)
@@ -28,11 +28,11 @@ bool ProgramBuildWorker::initialize(QString *error)
     return true;
 }
 
-ProgramBuildReply ProgramBuildWorker::build(const ProgramBuildRequest &request)
+BuildReply BuildWorker::build(const BuildJob &request)
 {
-    ProgramBuildReply reply;
+    BuildReply reply;
     reply.serial = request.serial;
-    ProgramBuild built = m_builder.build(request.vertex, request.fragment);
+    BuiltProgram built = m_builder.build(request.vertex, request.fragment);
     reply.result = std::move(built.result);
     reply.program = built.program;
     reply.compileNs = built.compileNs;
@@ -51,33 +51,33 @@ ProgramBuildReply ProgramBuildWorker::build(const ProgramBuildRequest &request)
     return reply;
 }
 
-void ProgramBuildWorker::release(GLuint program)
+void BuildWorker::release(GLuint program)
 {
     if (program)
         m_context->extraFunctions()->glDeleteProgram(program);
 }
 
-qint64 ProgramBuildWorker::warmInLentContext(const LentContext &loan, QOffscreenSurface *surface, GLuint program,
-                                             QThread *owner, QString *error)
+qint64 BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
+                                      QThread *owner, QString *error)
 {
     QElapsedTimer timer;
     timer.start();
-    bool ok = loan.context->makeCurrent(surface);
+    bool ok = lent.context->makeCurrent(surface);
     if (!ok && error)
         *error = QStringLiteral("the viewport's context cannot be made current on the build thread");
-    if (ok && loan.whileCurrent)
-        loan.whileCurrent();
-    if (ok && !loan.warmer->isCreated())
-        ok = loan.warmer->create(loan.samples, error);
+    if (ok && lent.whileCurrent)
+        lent.whileCurrent();
+    if (ok && !lent.warmer->isCreated())
+        ok = lent.warmer->create(lent.samples, error);
     if (ok)
-        loan.warmer->warm(program); // ends in glFinish
-    loan.context->doneCurrent();
-    loan.context->moveToThread(owner);
+        lent.warmer->warm(program); // ends in glFinish
+    lent.context->doneCurrent();
+    lent.context->moveToThread(owner);
     m_context->makeCurrent(m_surface); // ready for the next build
     return ok ? timer.nsecsElapsed() : -1;
 }
 
-void ProgramBuildWorker::shutdown(QThread *owner)
+void BuildWorker::shutdown(QThread *owner)
 {
     if (m_context->makeCurrent(m_surface)) {
         m_warmer.destroy();

@@ -1,4 +1,4 @@
-#include "BackgroundProgramBuilder.h"
+#include "BuildThread.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
@@ -29,17 +29,17 @@ bool fail(QString *error, const QString &message)
 
 } // namespace
 
-BackgroundProgramBuilder::BackgroundProgramBuilder(QObject *parent)
+BuildThread::BuildThread(QObject *parent)
     : QObject(parent)
 {
 }
 
-BackgroundProgramBuilder::~BackgroundProgramBuilder()
+BuildThread::~BuildThread()
 {
     stop();
 }
 
-bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *error)
+bool BuildThread::start(QOpenGLContext *shareContext, QString *error)
 {
     stop();
     if (!shareContext)
@@ -56,13 +56,13 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *erro
     if (!surface->isValid())
         return fail(error, QStringLiteral("cannot create an offscreen surface for the compile thread"));
     // For the viewport's own context when it is lent: a surface of its format.
-    auto loanSurface = std::make_unique<QOffscreenSurface>();
-    loanSurface->setFormat(shareContext->format());
-    loanSurface->create();
+    auto lentSurface = std::make_unique<QOffscreenSurface>();
+    lentSurface->setFormat(shareContext->format());
+    lentSurface->create();
 
     auto thread = std::make_unique<QThread>();
     thread->setObjectName(QStringLiteral("phonglab-shader-build"));
-    auto *worker = new ProgramBuildWorker(context.get(), surface.get());
+    auto *worker = new BuildWorker(context.get(), surface.get());
     worker->moveToThread(thread.get());
     connect(thread.get(), &QThread::finished, worker, &QObject::deleteLater);
     context->moveToThread(thread.get());
@@ -87,7 +87,7 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *erro
     m_parallelShaderCompile = worker->hasParallelShaderCompile();
     m_thread = std::move(thread);
     m_surface = std::move(surface);
-    m_loanSurface = std::move(loanSurface);
+    m_lentSurface = std::move(lentSurface);
     m_context = std::move(context);
     m_worker = worker;
     ++m_generation;
@@ -96,11 +96,11 @@ bool BackgroundProgramBuilder::start(QOpenGLContext *shareContext, QString *erro
     return true;
 }
 
-void BackgroundProgramBuilder::stop()
+void BuildThread::stop()
 {
     if (!m_worker)
         return;
-    ProgramBuildWorker *worker = m_worker;
+    BuildWorker *worker = m_worker;
     QThread *gui = thread();
     m_worker = nullptr;
     {
@@ -125,30 +125,30 @@ void BackgroundProgramBuilder::stop()
         (void)m_thread.release();
         (void)m_context.release();
         (void)m_surface.release();
-        (void)m_loanSurface.release();
+        (void)m_lentSurface.release();
         return;
     }
     m_thread.reset();
     m_context.reset(); // moved back to this thread by shutdown()
     m_surface.reset();
-    m_loanSurface.reset();
+    m_lentSurface.reset();
 }
 
-quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples)
+quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples)
 {
-    ProgramBuildRequest request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples};
+    BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples};
     if (!m_worker)
         return request.serial;
     const qint64 queuedAt = monotonicNs();
-    ProgramBuildWorker *worker = m_worker;
+    BuildWorker *worker = m_worker;
     QMetaObject::invokeMethod(
         worker,
         [mailbox = m_mailbox, worker, request, queuedAt, generation = m_generation] {
-            ProgramBuildReply reply = worker->build(request);
+            BuildReply reply = worker->build(request);
             reply.queuedAtNs = queuedAt;
             reply.finishedAtNs = monotonicNs();
             QMutexLocker lock(&mailbox->mutex);
-            if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+            if (BuildThread *receiver = mailbox->receiver)
                 QMetaObject::invokeMethod(
                     receiver, [receiver, reply, generation] { receiver->deliver(reply, generation); },
                     Qt::QueuedConnection);
@@ -159,7 +159,7 @@ quint64 BackgroundProgramBuilder::build(const ShaderSource &vertex, const Shader
     return request.serial;
 }
 
-void BackgroundProgramBuilder::deliver(const ProgramBuildReply &reply, quint64 generation)
+void BuildThread::deliver(const BuildReply &reply, quint64 generation)
 {
     // Posted just before a stop(): its program belongs to a share group that
     // may be gone with the viewport's old context. It is freed with that group.
@@ -168,34 +168,34 @@ void BackgroundProgramBuilder::deliver(const ProgramBuildReply &reply, quint64 g
     emit built(reply);
 }
 
-void BackgroundProgramBuilder::warmInLentContext(const LentContext &loan, GLuint program, LoanDone done)
+void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, WarmDone done)
 {
     if (!m_worker) {
         done(-1, QStringLiteral("the build thread is not running"));
         return;
     }
-    ProgramBuildWorker *worker = m_worker;
-    QOffscreenSurface *surface = m_loanSurface.get();
+    BuildWorker *worker = m_worker;
+    QOffscreenSurface *surface = m_lentSurface.get();
     QThread *owner = thread();
     QMetaObject::invokeMethod(
         worker,
-        [mailbox = m_mailbox, worker, loan, surface, program, owner, done] {
+        [mailbox = m_mailbox, worker, lent, surface, program, owner, done] {
             QString error;
-            const qint64 ns = worker->warmInLentContext(loan, surface, program, owner, &error);
-            loan.returned->release(); // the context is back on the owner's thread
+            const qint64 ns = worker->warmInLentContext(lent, surface, program, owner, &error);
+            lent.returned->release(); // the context is back on the owner's thread
             QMutexLocker lock(&mailbox->mutex);
-            if (BackgroundProgramBuilder *receiver = mailbox->receiver)
+            if (BuildThread *receiver = mailbox->receiver)
                 QMetaObject::invokeMethod(
                     receiver, [done, ns, error] { done(ns, error); }, Qt::QueuedConnection);
         },
         Qt::QueuedConnection);
 }
 
-void BackgroundProgramBuilder::release(GLuint program)
+void BuildThread::release(GLuint program)
 {
     if (!m_worker || !program)
         return;
-    ProgramBuildWorker *worker = m_worker;
+    BuildWorker *worker = m_worker;
     QMetaObject::invokeMethod(
         worker, [worker, program] { worker->release(program); }, Qt::QueuedConnection);
 }

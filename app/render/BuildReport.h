@@ -8,7 +8,7 @@ namespace phonglab {
 
 // What building a program produced: success or not, and every diagnostic
 // (errors and warnings) located in the user's files.
-struct CompileResult {
+struct BuildReport {
     bool ok = false;
     std::vector<ShaderDiagnostic> diagnostics;
 

@@ -1,4 +1,4 @@
-#include "ProgramWarmer.h"
+#include "WarmUpDraw.h"
 
 #include "mesh/BuiltinMeshes.h"
 
@@ -10,10 +10,10 @@ namespace {
 constexpr int kTargetSide = 8; // pixels: enough to run every stage, cheap to fill
 } // namespace
 
-ProgramWarmer::ProgramWarmer() = default;
-ProgramWarmer::~ProgramWarmer() = default; // destroy() runs with the context current
+WarmUpDraw::WarmUpDraw() = default;
+WarmUpDraw::~WarmUpDraw() = default; // destroy() runs with the context current
 
-bool ProgramWarmer::create(int samples, QString *error)
+bool WarmUpDraw::create(int samples, QString *error)
 {
     initializeOpenGLFunctions();
     // QOpenGLWidget's own framebuffer: RGBA8 colour, packed depth-stencil.
@@ -34,13 +34,13 @@ bool ProgramWarmer::create(int samples, QString *error)
     return true;
 }
 
-void ProgramWarmer::destroy()
+void WarmUpDraw::destroy()
 {
     m_mesh.destroy();
     m_fbo.reset();
 }
 
-void ProgramWarmer::warm(GLuint program)
+void WarmUpDraw::warm(GLuint program)
 {
     if (!m_fbo)
         return;
