@@ -39,27 +39,39 @@ void SceneCommand::change(const std::function<void(Scene &)> &edit) const
 
 SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after,
                                  LightField field, bool merge)
-    : SceneCommand(std::move(access), tr("Edit light %1").arg(index + 1), merge ? mergeIdFor(1, index, int(field)) : -1)
-    , m_index(index)
-    , m_before(before)
-    , m_after(after)
+    : SetPropertyCommand(std::move(access), tr("Edit light %1").arg(index + 1),
+                         merge ? mergeIdFor(1, index, int(field)) : -1, index, before, after)
 {
 }
 
-void SetLightCommand::redo()
+SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
+    : SetPropertyCommand(std::move(access), (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1),
+                         -1, index, !on, on)
 {
-    change([this](Scene &scene) { scene.lights.at(m_index) = m_after; });
 }
 
-void SetLightCommand::undo()
+RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
+                                       const std::string &after)
+    : SetPropertyCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1, index, before, after)
 {
-    change([this](Scene &scene) { scene.lights.at(m_index) = m_before; });
 }
 
-bool SetLightCommand::mergeWith(const QUndoCommand *other)
+SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after)
+    : SetPropertyCommand(std::move(access), tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0, before, after)
 {
-    m_after = static_cast<const SetLightCommand *>(other)->m_after;
-    return true;
+}
+
+SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
+                                       MaterialField field)
+    : SetPropertyCommand(std::move(access), tr("Edit material"),
+                         field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)), object, before, after)
+{
+}
+
+SetTransformCommand::SetTransformCommand(SceneAccess access, int object, const Transform &before,
+                                         const Transform &after, TransformField field)
+    : SetPropertyCommand(std::move(access), tr("Move object"), mergeIdFor(4, object, int(field)), object, before, after)
+{
 }
 
 AddLightCommand::AddLightCommand(SceneAccess access, const PointLight &light)
@@ -93,116 +105,6 @@ void RemoveLightCommand::redo()
 void RemoveLightCommand::undo()
 {
     change([this](Scene &scene) { scene.lights.insert(scene.lights.begin() + m_index, m_light); });
-}
-
-SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
-    : SceneCommand(std::move(access), (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1), -1)
-    , m_index(index)
-    , m_on(on)
-{
-}
-
-void SetLightEnabledCommand::redo()
-{
-    change([this](Scene &scene) { scene.lights.at(m_index).enabled = m_on; });
-}
-
-void SetLightEnabledCommand::undo()
-{
-    change([this](Scene &scene) { scene.lights.at(m_index).enabled = !m_on; });
-}
-
-RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
-                                       const std::string &after)
-    : SceneCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1)
-    , m_index(index)
-    , m_before(before)
-    , m_after(after)
-{
-}
-
-void RenameLightCommand::redo()
-{
-    change([this](Scene &scene) { scene.lights.at(m_index).name = m_after; });
-}
-
-void RenameLightCommand::undo()
-{
-    change([this](Scene &scene) { scene.lights.at(m_index).name = m_before; });
-}
-
-SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after)
-    : SceneCommand(std::move(access), tr("Edit ambient light"), mergeIdFor(2, 0, 0))
-    , m_before(before)
-    , m_after(after)
-{
-}
-
-void SetAmbientCommand::redo()
-{
-    change([this](Scene &scene) { scene.ambient = m_after; });
-}
-
-void SetAmbientCommand::undo()
-{
-    change([this](Scene &scene) { scene.ambient = m_before; });
-}
-
-bool SetAmbientCommand::mergeWith(const QUndoCommand *other)
-{
-    m_after = static_cast<const SetAmbientCommand *>(other)->m_after;
-    return true;
-}
-
-SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
-                                       MaterialField field)
-    : SceneCommand(std::move(access), tr("Edit material"),
-                   field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)))
-    , m_object(object)
-    , m_before(before)
-    , m_after(after)
-{
-}
-
-void SetMaterialCommand::redo()
-{
-    change([this](Scene &scene) { scene.objects.at(m_object).material = m_after; });
-}
-
-void SetMaterialCommand::undo()
-{
-    change([this](Scene &scene) { scene.objects.at(m_object).material = m_before; });
-}
-
-bool SetMaterialCommand::mergeWith(const QUndoCommand *other)
-{
-    m_after = static_cast<const SetMaterialCommand *>(other)->m_after;
-    return true;
-}
-
-SetTransformCommand::SetTransformCommand(SceneAccess access, int object, const Transform &before,
-                                         const Transform &after, TransformField field)
-    : SceneCommand(std::move(access), tr("Move object"), mergeIdFor(4, object, int(field)))
-    , m_object(object)
-    , m_before(before)
-    , m_after(after)
-{
-}
-
-void SetTransformCommand::redo()
-{
-    change([this](Scene &scene) { scene.objects.at(m_object).transform = m_after; });
-}
-
-void SetTransformCommand::undo()
-{
-    change([this](Scene &scene) { scene.objects.at(m_object).transform = m_before; });
-}
-
-bool SetTransformCommand::mergeWith(const QUndoCommand *other)
-{
-    m_after = static_cast<const SetTransformCommand *>(other)->m_after;
-    return true;
 }
 
 } // namespace phonglab

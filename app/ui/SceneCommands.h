@@ -54,22 +54,114 @@ private:
     int m_mergeId = -1;
 };
 
-class SetLightCommand : public SceneCommand
+// One property of the scene set from `before` to `after`; undo sets
+// `before` again, and a merge keeps the first `before` and the last `after`.
+// `Property` says where the value lives: Property::Value, and
+// Property::at(scene, index) giving a reference to it.
+template <typename Property> class SetPropertyCommand : public SceneCommand
+{
+public:
+    using Value = typename Property::Value;
+
+    SetPropertyCommand(SceneAccess access, const QString &text, int mergeId, int index, Value before, Value after)
+        : SceneCommand(std::move(access), text, mergeId)
+        , m_index(index)
+        , m_before(std::move(before))
+        , m_after(std::move(after))
+    {
+    }
+    void redo() override
+    {
+        change([this](Scene &scene) { Property::at(scene, m_index) = m_after; });
+    }
+    void undo() override
+    {
+        change([this](Scene &scene) { Property::at(scene, m_index) = m_before; });
+    }
+    // Only offered for the same merge id, which names the command's type.
+    bool mergeWith(const QUndoCommand *other) override
+    {
+        m_after = static_cast<const SetPropertyCommand *>(other)->m_after;
+        return true;
+    }
+
+private:
+    int m_index = 0;
+    Value m_before;
+    Value m_after;
+};
+
+// Where each property the docks edit lives.
+struct LightProperty {
+    using Value = PointLight;
+    static Value &at(Scene &scene, int i) { return scene.lights.at(i); }
+};
+struct LightEnabledProperty {
+    using Value = bool;
+    static Value &at(Scene &scene, int i) { return scene.lights.at(i).enabled; }
+};
+struct LightNameProperty {
+    using Value = std::string;
+    static Value &at(Scene &scene, int i) { return scene.lights.at(i).name; }
+};
+struct AmbientProperty {
+    using Value = glm::dvec3;
+    static Value &at(Scene &scene, int) { return scene.ambient; }
+};
+struct MaterialProperty {
+    using Value = Material;
+    static Value &at(Scene &scene, int i) { return scene.objects.at(i).material; }
+};
+struct TransformProperty {
+    using Value = Transform;
+    static Value &at(Scene &scene, int i) { return scene.objects.at(i).transform; }
+};
+
+// The dock edits by name: each only says its undo text and how it merges.
+class SetLightCommand : public SetPropertyCommand<LightProperty>
 {
 public:
     // merge: false for a viewport drag, which is one step on its own.
     SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after, LightField field,
                     bool merge = true);
-    void redo() override;
-    void undo() override;
-    bool mergeWith(const QUndoCommand *other) override;
-
-private:
-    int m_index = 0;
-    PointLight m_before;
-    PointLight m_after;
 };
 
+// Switches a light on or off: an off light stays in the scene (and the file,
+// as "enabled": false) but is not sent to the shader. Never merges.
+class SetLightEnabledCommand : public SetPropertyCommand<LightEnabledProperty>
+{
+public:
+    SetLightEnabledCommand(SceneAccess access, int index, bool on);
+};
+
+// Renames a light; an empty name shows as "Light N". Never merges.
+class RenameLightCommand : public SetPropertyCommand<LightNameProperty>
+{
+public:
+    RenameLightCommand(SceneAccess access, int index, const std::string &before, const std::string &after);
+};
+
+class SetAmbientCommand : public SetPropertyCommand<AmbientProperty>
+{
+public:
+    SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after);
+};
+
+class SetMaterialCommand : public SetPropertyCommand<MaterialProperty>
+{
+public:
+    SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
+                       MaterialField field);
+};
+
+class SetTransformCommand : public SetPropertyCommand<TransformProperty>
+{
+public:
+    SetTransformCommand(SceneAccess access, int object, const Transform &before, const Transform &after,
+                        TransformField field);
+};
+
+// Adding and removing change the list itself.
 class AddLightCommand : public SceneCommand
 {
 public:
@@ -91,77 +183,6 @@ public:
 private:
     int m_index = 0;
     PointLight m_light; // put back at m_index on undo
-};
-
-// Switches a light on or off: an off light stays in the scene (and the file,
-// as "enabled": false) but is not sent to the shader. Never merges.
-class SetLightEnabledCommand : public SceneCommand
-{
-public:
-    SetLightEnabledCommand(SceneAccess access, int index, bool on);
-    void redo() override;
-    void undo() override;
-
-private:
-    int m_index = 0;
-    bool m_on = true;
-};
-
-// Renames a light; an empty name shows as "Light N". Never merges.
-class RenameLightCommand : public SceneCommand
-{
-public:
-    RenameLightCommand(SceneAccess access, int index, const std::string &before, const std::string &after);
-    void redo() override;
-    void undo() override;
-
-private:
-    int m_index = 0;
-    std::string m_before;
-    std::string m_after;
-};
-
-class SetAmbientCommand : public SceneCommand
-{
-public:
-    SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after);
-    void redo() override;
-    void undo() override;
-    bool mergeWith(const QUndoCommand *other) override;
-
-private:
-    glm::dvec3 m_before{0.0};
-    glm::dvec3 m_after{0.0};
-};
-
-class SetMaterialCommand : public SceneCommand
-{
-public:
-    SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
-                       MaterialField field);
-    void redo() override;
-    void undo() override;
-    bool mergeWith(const QUndoCommand *other) override;
-
-private:
-    int m_object = 0;
-    Material m_before;
-    Material m_after;
-};
-
-class SetTransformCommand : public SceneCommand
-{
-public:
-    SetTransformCommand(SceneAccess access, int object, const Transform &before, const Transform &after,
-                        TransformField field);
-    void redo() override;
-    void undo() override;
-    bool mergeWith(const QUndoCommand *other) override;
-
-private:
-    int m_object = 0;
-    Transform m_before;
-    Transform m_after;
 };
 
 } // namespace phonglab
