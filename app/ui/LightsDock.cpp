@@ -33,9 +33,8 @@ QString refuseNoAttenuation(const glm::dvec3 &c)
 } // namespace
 
 LightsDock::LightsDock(QWidget *parent)
-    : QDockWidget(tr("Lights"), parent)
+    : SceneEditDock(tr("Lights"), QStringLiteral("LightsDock"), parent)
 {
-    setObjectName(QStringLiteral("LightsDock"));
     auto *content = new QWidget(this);
     auto *layout = new QVBoxLayout(content);
     layout->addWidget(buildList(content));
@@ -58,8 +57,7 @@ LightsDock::LightsDock(QWidget *parent)
     m_ambient = new Vec3Field(0.0, kMaxIntensity, content);
     m_ambient->enableColourPicker();
     connect(m_ambient, &Vec3Field::edited, this, [this](const glm::dvec3 &before, const glm::dvec3 &after) {
-        if (m_stack)
-            m_stack->push(new SetAmbientCommand(m_access, before, after));
+        pushEdit(new SetAmbientCommand(access(), before, after));
     });
     ambientForm->addRow(tr("Ambient Ia"), m_ambient);
     layout->addLayout(ambientForm);
@@ -77,8 +75,8 @@ QWidget *LightsDock::buildList(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     m_list = new QListWidget(box);
     m_list->setMaximumHeight(120);
-    connect(m_list, &QListWidget::currentRowChanged, this, [this](int row) {
-        showSelected();
+    connect(m_list, &QListWidget::currentRowChanged, this, [this] {
+        showChosen();
         updateButtons();
         emit lightSelected(selectedLight());
     });
@@ -108,29 +106,23 @@ Vec3Field *LightsDock::addField(const QString &label, LightField which, double m
     return field;
 }
 
-void LightsDock::bind(QUndoStack *stack, SceneAccess access)
+void LightsDock::showScene()
 {
-    m_stack = stack;
-    m_access = std::move(access);
-}
-
-void LightsDock::refresh(const Scene &scene)
-{
-    m_scene = scene;
     const int keep = selectedLight();
-    m_showing = true;
     m_list->clear();
     const auto addItem = [this](const QString &text, bool on) {
         auto *item = new QListWidgetItem(text, m_list);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
     };
-    for (int i = 0; i < int(scene.lights.size()); ++i)
-        addItem(displayName(i), scene.lights[i].enabled);
+    for (int i = 0; i < int(scene().lights.size()); ++i)
+        addItem(displayName(i), scene().lights[i].enabled);
     m_list->setCurrentRow(std::min(keep < 0 ? 0 : keep, m_list->count() - 1));
-    m_showing = false;
-    m_ambient->setValue(scene.ambient);
-    showSelected();
+    m_ambient->setValue(scene().ambient);
+}
+
+void LightsDock::refreshed()
+{
     updateButtons();
     emit lightSelected(selectedLight());
 }
@@ -138,7 +130,7 @@ void LightsDock::refresh(const Scene &scene)
 int LightsDock::selectedLight() const
 {
     const int row = m_list->currentRow();
-    return row < int(m_scene.lights.size()) ? row : -1;
+    return row < int(scene().lights.size()) ? row : -1;
 }
 
 QString LightsDock::statusText() const
@@ -148,46 +140,43 @@ QString LightsDock::statusText() const
 
 void LightsDock::itemToggled(QListWidgetItem *item)
 {
-    if (m_showing)
+    if (isShowing())
         return;
     const bool on = item->checkState() == Qt::Checked;
     const int row = m_list->row(item);
-    if (!setLightEnabled(row, on)) {
-        m_showing = true; // put the box back as it was
-        item->setCheckState(on ? Qt::Unchecked : Qt::Checked);
-        m_showing = false;
-    }
+    if (!setLightEnabled(row, on)) // put the box back as it was
+        whileShowing([&] { item->setCheckState(on ? Qt::Unchecked : Qt::Checked); });
 }
 
 bool LightsDock::setLightEnabled(int index, bool on)
 {
-    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()) || m_scene.lights[index].enabled == on)
+    if (!isBound() || index < 0 || index >= int(scene().lights.size()) || scene().lights[index].enabled == on)
         return false;
     m_status->clear();
-    m_stack->push(new SetLightEnabledCommand(m_access, index, on));
+    pushEdit(new SetLightEnabledCommand(access(), index, on));
     return true;
 }
 
 int LightsDock::switchedOffCount() const
 {
     return int(
-        std::count_if(m_scene.lights.begin(), m_scene.lights.end(), [](const PointLight &l) { return !l.enabled; }));
+        std::count_if(scene().lights.begin(), scene().lights.end(), [](const PointLight &l) { return !l.enabled; }));
 }
 
 bool LightsDock::renameLight(int index, const QString &name)
 {
     const std::string after = name.trimmed().toStdString();
-    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()) || m_scene.lights[index].name == after)
+    if (!isBound() || index < 0 || index >= int(scene().lights.size()) || scene().lights[index].name == after)
         return false;
-    m_stack->push(new RenameLightCommand(m_access, index, m_scene.lights[index].name, after));
+    pushEdit(new RenameLightCommand(access(), index, scene().lights[index].name, after));
     return true;
 }
 
 QString LightsDock::displayName(int index) const
 {
-    if (index < 0 || index >= int(m_scene.lights.size()))
+    if (index < 0 || index >= int(scene().lights.size()))
         return {};
-    const std::string &name = m_scene.lights[index].name;
+    const std::string &name = scene().lights[index].name;
     return name.empty() ? tr("Light %1").arg(index + 1) : QString::fromStdString(name);
 }
 
@@ -196,14 +185,9 @@ void LightsDock::selectLight(int index)
     m_list->setCurrentRow(index);
 }
 
-void LightsDock::showSelected()
+void LightsDock::showItem(int index)
 {
-    const int index = selectedLight();
-    const bool valid = index >= 0 && index < int(m_scene.lights.size());
-    m_editor->setEnabled(valid);
-    if (!valid || m_showing)
-        return;
-    const PointLight &light = m_scene.lights[index];
+    const PointLight &light = scene().lights[index];
     m_name->setText(QString::fromStdString(light.name));
     m_name->setPlaceholderText(tr("Light %1").arg(index + 1));
     m_fields[int(LightField::Position)]->setValue(light.position);
@@ -214,16 +198,16 @@ void LightsDock::showSelected()
 
 void LightsDock::updateButtons()
 {
-    m_add->setEnabled(int(m_scene.lights.size()) < kMaxLights);
+    m_add->setEnabled(int(scene().lights.size()) < kMaxLights);
     m_remove->setEnabled(selectedLight() >= 0);
 }
 
 void LightsDock::push(LightField which, const glm::dvec3 &after)
 {
     const int index = selectedLight();
-    if (!m_stack || index < 0)
+    if (!isBound() || index < 0)
         return;
-    const PointLight before = m_scene.lights.at(index);
+    const PointLight before = scene().lights.at(index);
     PointLight changed = before;
     switch (which) {
     case LightField::Position: changed.position = after; break;
@@ -231,26 +215,26 @@ void LightsDock::push(LightField which, const glm::dvec3 &after)
     case LightField::Specular: changed.specular = after; break;
     case LightField::Attenuation: changed.attenuation = after; break;
     }
-    m_stack->push(new SetLightCommand(m_access, index, before, changed, which));
+    pushEdit(new SetLightCommand(access(), index, before, changed, which));
 }
 
 void LightsDock::addLight()
 {
-    if (!m_stack || int(m_scene.lights.size()) >= kMaxLights)
+    if (!isBound() || int(scene().lights.size()) >= kMaxLights)
         return;
     // Above and in front of the target, where a new light is visible at once.
     PointLight light;
-    light.position = m_scene.camera.target + glm::dvec3(2.0, 3.0, 2.0);
-    m_stack->push(new AddLightCommand(m_access, light));
-    selectLight(int(m_scene.lights.size()) - 1);
+    light.position = scene().camera.target + glm::dvec3(2.0, 3.0, 2.0);
+    pushEdit(new AddLightCommand(access(), light));
+    selectLight(int(scene().lights.size()) - 1);
 }
 
 void LightsDock::removeSelectedLight()
 {
     const int index = selectedLight();
-    if (!m_stack || index < 0 || index >= int(m_scene.lights.size()))
+    if (!isBound() || index < 0 || index >= int(scene().lights.size()))
         return;
-    m_stack->push(new RemoveLightCommand(m_access, index, m_scene.lights[index]));
+    pushEdit(new RemoveLightCommand(access(), index, scene().lights[index]));
 }
 
 } // namespace phonglab

@@ -1,7 +1,5 @@
 #pragma once
-#include "SceneCommands.h"
-
-#include <QDockWidget>
+#include "SceneEditDock.h"
 
 class QCheckBox;
 class QLabel;
@@ -9,7 +7,6 @@ class QLineEdit;
 class QListWidget;
 class QListWidgetItem;
 class QPushButton;
-class QUndoStack;
 
 namespace phonglab {
 
@@ -18,15 +15,12 @@ class Vec3Field;
 // The scene's point lights (at most kMaxLights) in world space: add, remove,
 // switch on/off, and for the selected light its name, position, Id, Is and attenuation c1/c2/c3;
 // plus the global ambient Ia. Every change is an undoable command.
-class LightsDock : public QDockWidget
+class LightsDock : public SceneEditDock
 {
     Q_OBJECT
 
 public:
     explicit LightsDock(QWidget *parent = nullptr);
-
-    void bind(QUndoStack *stack, SceneAccess access);
-    void refresh(const Scene &scene);
 
     // The selected light (switched on or off); -1 when none.
     int selectedLight() const;
@@ -54,17 +48,21 @@ signals:
     // The headlight check box: a view setting, so not an undo step.
     void headlightToggled(bool on);
 
+protected:
+    int chosenIndex() const override { return selectedLight(); }
+    int itemCount() const override { return int(scene().lights.size()); }
+    QWidget *itemEditor() const override { return m_editor; }
+    void showScene() override;
+    void showItem(int index) override;
+    void refreshed() override;
+
 private:
     QWidget *buildList(QWidget *parent);
     Vec3Field *addField(const QString &label, LightField which, double minimum, double maximum);
-    void showSelected();
     void push(LightField which, const glm::dvec3 &after);
     void updateButtons();
     void itemToggled(QListWidgetItem *item);
 
-    QUndoStack *m_stack = nullptr;
-    SceneAccess m_access;
-    Scene m_scene;
     QListWidget *m_list = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_headlight = nullptr;
@@ -74,7 +72,6 @@ private:
     QLineEdit *m_name = nullptr;
     Vec3Field *m_fields[4] = {nullptr, nullptr, nullptr, nullptr};
     Vec3Field *m_ambient = nullptr;
-    bool m_showing = false;
 };
 
 } // namespace phonglab

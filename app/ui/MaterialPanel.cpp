@@ -1,7 +1,5 @@
 #include "MaterialPanel.h"
 
-#include "ObjectChoice.h"
-
 #include "Vec3Field.h"
 #include "core/MaterialPresets.h"
 
@@ -13,7 +11,6 @@
 #include <QInputDialog>
 #include <QPushButton>
 #include <QSlider>
-#include <QUndoStack>
 
 namespace phonglab {
 
@@ -27,25 +24,21 @@ constexpr int kSliderMax = 512; // the slider covers the useful part
 } // namespace
 
 MaterialPanel::MaterialPanel(QWidget *parent)
-    : QDockWidget(tr("Material"), parent)
+    : ObjectEditDock(tr("Material"), QStringLiteral("MaterialPanel"), parent)
 {
-    setObjectName(QStringLiteral("MaterialPanel"));
-    setWidget(buildForm());
+    buildForm();
 }
 
-QWidget *MaterialPanel::buildForm()
+void MaterialPanel::buildForm()
 {
-    auto *form = new QWidget(this);
-    auto *layout = new QFormLayout(form);
-    m_objects = new QComboBox(form);
-    connect(m_objects, &QComboBox::currentIndexChanged, this, &MaterialPanel::showSelected);
-    layout->addRow(tr("Object"), m_objects);
+    QWidget *form = widget();
+    QFormLayout *layout = this->form();
 
     const auto addCoefficient = [&](const QString &label, MaterialField which) {
         auto *field = new Vec3Field(0.0, kMaxCoefficient, form);
         field->enableColourPicker();
         connect(field, &Vec3Field::edited, this, [this, which](const glm::dvec3 &, const glm::dvec3 &after) {
-            Material m = m_scene.objects.at(selectedObject()).material;
+            Material m = scene().objects.at(selectedObject()).material;
             (which == MaterialField::Ka ? m.ka : which == MaterialField::Kd ? m.kd : m.ks) = after;
             pushMaterial(m, which);
         });
@@ -63,13 +56,13 @@ QWidget *MaterialPanel::buildForm()
     m_shininessSlider = new QSlider(Qt::Horizontal, form);
     m_shininessSlider->setRange(1, kSliderMax);
     connect(m_shininessSlider, &QSlider::valueChanged, this, [this](int v) {
-        if (!m_showing)
+        if (!isShowing())
             m_shininess->setValue(v);
     });
     connect(m_shininess, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        if (m_showing || selectedObject() < 0)
+        if (isShowing() || selectedObject() < 0)
             return;
-        Material m = m_scene.objects.at(selectedObject()).material;
+        Material m = scene().objects.at(selectedObject()).material;
         m.shininess = v;
         pushMaterial(m, MaterialField::Shininess);
     });
@@ -89,32 +82,6 @@ QWidget *MaterialPanel::buildForm()
     layout->addRow(tr("Preset"), presetRow);
     layout->addRow(QString(), save);
     reloadPresets();
-    return form;
-}
-
-void MaterialPanel::bind(QUndoStack *stack, SceneAccess access)
-{
-    m_stack = stack;
-    m_access = std::move(access);
-}
-
-void MaterialPanel::refresh(const Scene &scene)
-{
-    m_scene = scene;
-    m_showing = true;
-    fillObjectChoice(m_objects, scene);
-    m_showing = false;
-    showSelected();
-}
-
-int MaterialPanel::selectedObject() const
-{
-    return m_objects->currentIndex();
-}
-
-void MaterialPanel::selectObject(int index)
-{
-    m_objects->setCurrentIndex(index);
 }
 
 Vec3Field *MaterialPanel::field(MaterialField which) const
@@ -122,30 +89,22 @@ Vec3Field *MaterialPanel::field(MaterialField which) const
     return which == MaterialField::Ka ? m_ka : which == MaterialField::Kd ? m_kd : m_ks;
 }
 
-void MaterialPanel::showSelected()
+void MaterialPanel::showItem(int index)
 {
-    const int index = selectedObject();
-    const bool valid = index >= 0 && index < int(m_scene.objects.size());
-    widget()->setEnabled(valid);
-    if (!valid || m_showing)
-        return;
-    const Material &m = m_scene.objects[index].material;
-    m_showing = true;
+    const Material &m = scene().objects[index].material;
     m_ka->setValue(m.ka);
     m_kd->setValue(m.kd);
     m_ks->setValue(m.ks);
     m_shininess->setValue(m.shininess);
     m_shininessSlider->setValue(int(std::round(m.shininess)));
-    m_showing = false;
 }
 
 void MaterialPanel::pushMaterial(const Material &after, MaterialField field)
 {
     const int index = selectedObject();
-    const Material before = m_scene.objects.at(index).material;
-    if (!m_stack || before == after)
-        return;
-    m_stack->push(new SetMaterialCommand(m_access, index, before, after, field));
+    const Material before = scene().objects.at(index).material;
+    if (before != after)
+        pushEdit(new SetMaterialCommand(access(), index, before, after, field));
 }
 
 void MaterialPanel::applyPreset(int index)
@@ -160,7 +119,7 @@ void MaterialPanel::saveAsPreset(const QString &name)
 {
     if (name.trimmed().isEmpty() || selectedObject() < 0)
         return;
-    saveUserMaterialPreset({name.trimmed(), m_scene.objects.at(selectedObject()).material});
+    saveUserMaterialPreset({name.trimmed(), scene().objects.at(selectedObject()).material});
     reloadPresets();
     m_presets->setCurrentIndex(m_presets->findText(name.trimmed()));
 }

@@ -1,13 +1,9 @@
 #include "ObjectPanel.h"
 
-#include "ObjectChoice.h"
-
 #include "Vec3Field.h"
 
-#include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QUndoStack>
 
 namespace phonglab {
 
@@ -28,15 +24,8 @@ QString refuseZeroScale(const glm::dvec3 &scale)
 } // namespace
 
 ObjectPanel::ObjectPanel(QWidget *parent)
-    : QDockWidget(tr("Object"), parent)
+    : ObjectEditDock(tr("Object"), QStringLiteral("ObjectPanel"), parent)
 {
-    setObjectName(QStringLiteral("ObjectPanel"));
-    auto *form = new QWidget(this);
-    auto *layout = new QFormLayout(form);
-    m_objects = new QComboBox(form);
-    connect(m_objects, &QComboBox::currentIndexChanged, this, &ObjectPanel::showSelected);
-    layout->addRow(tr("Object"), m_objects);
-    setWidget(form);
     addField(tr("Translate"), TransformField::Translate, kMaxTranslate);
     addField(tr("Rotate (°)"), TransformField::Rotate, kMaxRotateDeg);
     addField(tr("Scale"), TransformField::Scale, kMaxScale)->setCheck(refuseZeroScale);
@@ -47,34 +36,9 @@ Vec3Field *ObjectPanel::addField(const QString &label, TransformField which, dou
     auto *field = new Vec3Field(-limit, limit, widget());
     connect(field, &Vec3Field::edited, this,
             [this, which](const glm::dvec3 &, const glm::dvec3 &after) { push(which, after); });
-    static_cast<QFormLayout *>(widget()->layout())->addRow(label, field);
+    form()->addRow(label, field);
     m_fields[int(which)] = field;
     return field;
-}
-
-void ObjectPanel::bind(QUndoStack *stack, SceneAccess access)
-{
-    m_stack = stack;
-    m_access = std::move(access);
-}
-
-void ObjectPanel::refresh(const Scene &scene)
-{
-    m_scene = scene;
-    m_showing = true;
-    fillObjectChoice(m_objects, scene);
-    m_showing = false;
-    showSelected();
-}
-
-int ObjectPanel::selectedObject() const
-{
-    return m_objects->currentIndex();
-}
-
-void ObjectPanel::selectObject(int index)
-{
-    m_objects->setCurrentIndex(index);
 }
 
 Vec3Field *ObjectPanel::field(TransformField which) const
@@ -82,14 +46,9 @@ Vec3Field *ObjectPanel::field(TransformField which) const
     return m_fields[int(which)];
 }
 
-void ObjectPanel::showSelected()
+void ObjectPanel::showItem(int index)
 {
-    const int index = selectedObject();
-    const bool valid = index >= 0 && index < int(m_scene.objects.size());
-    widget()->setEnabled(valid);
-    if (!valid || m_showing)
-        return;
-    const Transform &t = m_scene.objects[index].transform;
+    const Transform &t = scene().objects[index].transform;
     m_fields[int(TransformField::Translate)]->setValue(t.translate);
     m_fields[int(TransformField::Rotate)]->setValue(t.rotateDeg);
     m_fields[int(TransformField::Scale)]->setValue(t.scale);
@@ -98,14 +57,14 @@ void ObjectPanel::showSelected()
 void ObjectPanel::push(TransformField which, const glm::dvec3 &after)
 {
     const int index = selectedObject();
-    if (!m_stack || index < 0)
+    if (!isBound() || index < 0)
         return;
-    const Transform before = m_scene.objects.at(index).transform;
+    const Transform before = scene().objects.at(index).transform;
     Transform changed = before;
     (which == TransformField::Translate    ? changed.translate
          : which == TransformField::Rotate ? changed.rotateDeg
                                            : changed.scale) = after;
-    m_stack->push(new SetTransformCommand(m_access, index, before, changed, which));
+    pushEdit(new SetTransformCommand(access(), index, before, changed, which));
 }
 
 } // namespace phonglab
