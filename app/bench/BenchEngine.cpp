@@ -154,19 +154,19 @@ bool BenchEngine::runScene(const BenchOptions &options, const QString &path, Sce
     for (int count : state.lightCounts) {
         if (!report(QStringLiteral("%1: reference, %2 light(s)").arg(state.name).arg(count)))
             return *error = QStringLiteral("cancelled"), false;
-        QString why;
         auto reference = raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
-                                            options.size.height(), ReferenceShading::Phong, &why);
+                                            options.size.height(), ReferenceShading::Phong);
         if (!reference) {
-            *error = QStringLiteral("%1: no reference: %2").arg(path, why);
+            *error = QStringLiteral("%1: no reference: %2").arg(path, reference.error());
             return false;
         }
         if (state.compared.empty()) {
-            state.compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx, &why);
-            if (state.compared.empty()) {
-                *error = QStringLiteral("%1: no silhouette mask: %2").arg(path, why);
+            auto compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx);
+            if (!compared) {
+                *error = QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error());
                 return false;
             }
+            state.compared = std::move(*compared);
         }
         state.specular.push_back(highlightMask(*reference, state.compared, options.specularThreshold));
         state.references.push_back(std::move(*reference));

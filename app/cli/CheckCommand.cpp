@@ -167,10 +167,9 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     if (yours->isNull())
         return fail(QString(), QStringLiteral("rendering failed"));
 
-    std::optional<CheckReference> made =
-        makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height(), &error);
+    Result<CheckReference> made = makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height());
     if (!made)
-        return fail(args.scenePath, QStringLiteral("no reference: %1").arg(error));
+        return fail(args.scenePath, QStringLiteral("no reference: %1").arg(made.error()));
     *reference = std::move(*made);
     outcome.report = checkRender(toRgbImage(*yours), *reference, args.toleranceSteps);
     if (!outcome.report.comparable())

@@ -121,8 +121,8 @@ std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten, const QH
     return analyticShapeFor(standIns.value(meshAsWritten, meshAsWritten));
 }
 
-std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect, QString *error,
-                                                          const QHash<QString, QString> &standIns)
+Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect,
+                                                   const QHash<QString, QString> &standIns)
 {
     const glm::dmat4 view = scene.camera.viewMatrix();
     const glm::dmat4 projection = scene.camera.projectionMatrix(aspect);
@@ -130,15 +130,12 @@ std::optional<std::vector<PreparedObject>> prepareObjects(const Scene &scene, do
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject &object = scene.objects[i];
         const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
-        if (!surface) {
-            if (error)
-                *error =
-                    QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
-                                   "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
-                        .arg(i)
-                        .arg(object.mesh);
-            return std::nullopt;
-        }
+        if (!surface)
+            return fail(
+                QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
+                               "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
+                    .arg(i)
+                    .arg(object.mesh));
         const ObjectMatrices matrices = ObjectMatrices::make(object.transform.matrix(), view, projection);
         // A zero scale flattens the object to something with no defined
         // normals; there is no meaningful reference for it, so it is left out.
@@ -338,24 +335,19 @@ ReferenceShading idealShadingFor(ShadingMethod method)
     return ReferenceShading::Phong;
 }
 
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error,
-                                           const QHash<QString, QString> &standIns)
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const QHash<QString, QString> &standIns)
 {
-    return raycastScene(scene, width, height, ReferenceShading::Phong, error, standIns);
+    return raycastScene(scene, width, height, ReferenceShading::Phong, standIns);
 }
 
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
-                                           QString *error, const QHash<QString, QString> &standIns)
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
+                                    const QHash<QString, QString> &standIns)
 {
-    if (width <= 0 || height <= 0) {
-        if (error)
-            *error = QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height);
-        return std::nullopt;
-    }
-    const std::optional<std::vector<PreparedObject>> objects =
-        prepareObjects(scene, double(width) / double(height), error, standIns);
+    if (width <= 0 || height <= 0)
+        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+    const Result<std::vector<PreparedObject>> objects = prepareObjects(scene, double(width) / double(height), standIns);
     if (!objects)
-        return std::nullopt;
+        return fail(objects.error());
 
     const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
 

@@ -1,6 +1,7 @@
 #pragma once
 #include "Camera.h"
 #include "ReferenceImage.h"
+#include "Result.h"
 #include "Scene.h"
 #include "ShaderMistake.h"
 
@@ -18,14 +19,14 @@ namespace phonglab {
 // the normal matrix, no back-face culling), so a correct GPU render differs
 // from this only by tessellation, interpolation and float precision.
 //
-// Objects with any other mesh have no analytic surface: the result is nullopt
-// and *error names the mesh.
+// Objects with any other mesh have no analytic surface: the result is a
+// failure naming the mesh.
 //
 // `standIns` maps a mesh as written in the scene (e.g. a Blender cube's file
 // path) to the builtin whose analytic surface it should be compared with
 // ("builtin:cube" is the box [-1, 1]³ with its face normals).
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, QString *error = nullptr,
-                                           const QHash<QString, QString> &standIns = {});
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const QHash<QString, QString> &standIns = {});
 
 // What the reference computes at each hit point. Gouraud and flat shading
 // have no per-pixel analytic counterpart: their result depends on the mesh's
@@ -59,8 +60,8 @@ struct ReferenceShader {
 };
 
 // As above, shaded with `shader` instead of exact Phong.
-std::optional<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
-                                           QString *error = nullptr, const QHash<QString, QString> &standIns = {});
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
+                                    const QHash<QString, QString> &standIns = {});
 
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
 // change of coordinates, which is what lets camera-space depth be compared

@@ -50,22 +50,15 @@ std::optional<Surface> builtinSurface(const QString &spec)
     return std::nullopt;
 }
 
-bool fail(QString *error, const QString &message)
-{
-    if (error)
-        *error = message;
-    return false;
-}
-
 // Checks the inputs, builds one BVH per distinct mesh (reporting the first
-// tenth of the progress) and prepares the objects. False with *error on bad
-// input or "cancelled".
-bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, double aspect,
-                    std::vector<PreparedObject> &prepared, QString *error, const std::function<bool(double)> &progress)
+// tenth of the progress) and prepares the objects. A failure on bad input,
+// or "cancelled".
+Result<> prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                        double aspect, std::vector<PreparedObject> &prepared,
+                        const std::function<bool(double)> &progress)
 {
     if (objectMeshes.size() != scene.objects.size())
-        return fail(error,
-                    QStringLiteral("The scene has %1 objects but %2 meshes were given")
+        return fail(QStringLiteral("The scene has %1 objects but %2 meshes were given")
                         .arg(scene.objects.size())
                         .arg(objectMeshes.size()));
     std::size_t trianglesToBuild = 0;
@@ -74,14 +67,12 @@ bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const 
         const MeshData *mesh = objectMeshes[i].get();
         if (!mesh) {
             if (!builtinSurface(scene.objects[i].mesh))
-                return fail(error,
-                            QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                return fail(QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
                                            "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
                                 .arg(i)
                                 .arg(scene.objects[i].mesh));
         } else if (!mesh->isValid()) {
-            return fail(error,
-                        QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
+            return fail(QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
                             .arg(i)
                             .arg(scene.objects[i].mesh));
         } else if (bvhs.emplace(mesh, nullptr).second) {
@@ -107,7 +98,7 @@ bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const 
             if (!bvh) {
                 if (progress
                     && !progress(0.1 * double(trianglesBuilt) / double(std::max<std::size_t>(trianglesToBuild, 1))))
-                    return fail(error, QStringLiteral("cancelled"));
+                    return fail(QStringLiteral("cancelled"));
                 bvh = std::make_shared<const MeshBvh>(*mesh);
                 trianglesBuilt += mesh->triangleCount();
             }
@@ -125,7 +116,7 @@ bool prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const 
         p.material = &object.material;
         prepared.push_back(std::move(p));
     }
-    return true;
+    return {};
 }
 
 struct Hit {
@@ -235,17 +226,16 @@ void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, Sce
 
 } // namespace
 
-std::optional<SceneHits> castSceneHits(const Scene &scene,
-                                       const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                       int height, QString *error, const std::function<bool(double)> &progress)
+Result<SceneHits> castSceneHits(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                int width, int height, const std::function<bool(double)> &progress)
 {
-    if (width <= 0 || height <= 0) {
-        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
-        return std::nullopt;
-    }
+    if (width <= 0 || height <= 0)
+        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
     std::vector<PreparedObject> objects;
-    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), objects, error, progress))
-        return std::nullopt;
+    if (const Result<> prepared =
+            prepareObjects(scene, objectMeshes, double(width) / double(height), objects, progress);
+        !prepared)
+        return fail(prepared.error());
 
     SceneHits hits;
     hits.width = width;
@@ -262,21 +252,19 @@ std::optional<SceneHits> castSceneHits(const Scene &scene,
     const bool done = forEachRowInParallel(
         height, [&](int y) { castRow(scene, objects, hits, y); },
         [&](double fraction) { return !progress || progress(0.1 + 0.9 * fraction); });
-    if (!done) {
-        fail(error, QStringLiteral("cancelled"));
-        return std::nullopt;
-    }
+    if (!done)
+        return fail(QStringLiteral("cancelled"));
     return hits;
 }
 
-std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
-                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, const ReferenceShader &shader, QString *error,
-                                                 const std::function<bool(double)> &progress)
+Result<ReferenceImage> raycastSceneMeshes(const Scene &scene,
+                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+                                          int height, const ReferenceShader &shader,
+                                          const std::function<bool(double)> &progress)
 {
-    const std::optional<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, error, progress);
+    const Result<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, progress);
     if (!hits)
-        return std::nullopt;
+        return fail(hits.error());
     return shadeSceneHits(*hits, scene, shader);
 }
 
@@ -287,18 +275,17 @@ struct SceneDepthCaster::Objects {
 SceneDepthCaster::SceneDepthCaster() = default;
 SceneDepthCaster::~SceneDepthCaster() = default;
 
-std::unique_ptr<SceneDepthCaster> SceneDepthCaster::create(
-    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
-    QString *error)
+Result<std::unique_ptr<SceneDepthCaster>> SceneDepthCaster::create(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height)
 {
-    if (width <= 0 || height <= 0) {
-        fail(error, QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
-        return nullptr;
-    }
+    if (width <= 0 || height <= 0)
+        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
     std::unique_ptr<SceneDepthCaster> caster(new SceneDepthCaster);
     caster->m_objects = std::make_unique<Objects>();
-    if (!prepareObjects(scene, objectMeshes, double(width) / double(height), caster->m_objects->prepared, error, {}))
-        return nullptr;
+    if (const Result<> prepared =
+            prepareObjects(scene, objectMeshes, double(width) / double(height), caster->m_objects->prepared, {});
+        !prepared)
+        return fail(prepared.error());
     for (PreparedObject &object : caster->m_objects->prepared) {
         object.mesh = nullptr;     // normals are never looked up here, and
         object.material = nullptr; // nothing may point into the caller's data

@@ -47,12 +47,11 @@ namespace phonglab {
 // own ray, so the image is identical whatever the thread count.
 // progress(fraction done) is called now and then from the calling thread
 // (the first tenth covers building the BVHs); returning false cancels: the
-// result is nullopt and *error is "cancelled".
-std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
-                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, const ReferenceShader &shader,
-                                                 QString *error = nullptr,
-                                                 const std::function<bool(double)> &progress = {});
+// result is the failure "cancelled".
+Result<ReferenceImage> raycastSceneMeshes(const Scene &scene,
+                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+                                          int height, const ReferenceShader &shader,
+                                          const std::function<bool(double)> &progress = {});
 
 // Geometry only: the camera depth of the nearest surface along the ray
 // through any point of the image, with the objects, meshes, conventions and
@@ -67,10 +66,9 @@ std::optional<ReferenceImage> raycastSceneMeshes(const Scene &scene,
 class SceneDepthCaster
 {
 public:
-    // nullptr and *error for the inputs raycastSceneMeshes() rejects.
-    static std::unique_ptr<SceneDepthCaster> create(const Scene &scene,
-                                                    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                    int width, int height, QString *error = nullptr);
+    // A failure for the inputs raycastSceneMeshes() rejects.
+    static Result<std::unique_ptr<SceneDepthCaster>> create(
+        const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height);
     ~SceneDepthCaster();
 
     // The depth (camera-space -z) of the nearest hit along the ray through

@@ -43,14 +43,15 @@ void classifyRow(const SceneDepthCaster &caster, double step, std::uint8_t *row,
 
 } // namespace
 
-std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
-                                                   const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                   int width, int height, int subpixelBits, QString *error)
+Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
+    int subpixelBits)
 {
-    const std::unique_ptr<SceneDepthCaster> caster =
-        SceneDepthCaster::create(scene, objectMeshes, width, height, error);
-    if (!caster)
-        return {};
+    const Result<std::unique_ptr<SceneDepthCaster>> created =
+        SceneDepthCaster::create(scene, objectMeshes, width, height);
+    if (!created)
+        return fail(created.error());
+    const SceneDepthCaster *caster = created->get();
     // OpenGL requires at least 4 sub-pixel bits; more than 30 would only
     // test the rounding of double.
     const double step = std::ldexp(1.0, -std::clamp(subpixelBits, 4, 30));
@@ -61,17 +62,21 @@ std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
     return mask;
 }
 
-std::vector<std::uint8_t> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
-                                              const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                              int bandPx, QString *error)
+Result<std::vector<std::uint8_t>> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
+                                                      const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                      int bandPx)
 {
     std::vector<std::uint8_t> edges = occludingContourPixels(reference);
-    const std::vector<std::uint8_t> ambiguous =
-        ambiguousReferencePixels(scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits, error);
-    if (ambiguous.size() != edges.size())
-        return {};
+    const Result<std::vector<std::uint8_t>> ambiguous =
+        ambiguousReferencePixels(scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits);
+    if (!ambiguous)
+        return fail(ambiguous.error());
+    if (ambiguous->size() != edges.size())
+        return fail(QStringLiteral("The reference is %1x%2 but the edges were cast at another size")
+                        .arg(reference.width)
+                        .arg(reference.height));
     for (std::size_t i = 0; i < edges.size(); ++i)
-        edges[i] = edges[i] || ambiguous[i];
+        edges[i] = edges[i] || (*ambiguous)[i];
     std::vector<std::uint8_t> compared = dilatePixels(edges, reference.width, reference.height, bandPx);
     for (auto &c : compared)
         c = !c;

@@ -1,5 +1,6 @@
 #pragma once
 #include "ReferenceImage.h"
+#include "Result.h"
 #include "Scene.h"
 #include "core/MeshData.h"
 
@@ -53,19 +54,19 @@ inline constexpr int kDefaultSubpixelBits = 8;
 // edges less than two steps apart whose jumps cancel exactly.
 //
 // objectMeshes as in raycastSceneMeshes() (one per object; null = the
-// analytic surface of a builtin). Empty and *error on bad input. Costs five
+// analytic surface of a builtin). A failure on bad input. Costs five
 // shading-free casts per pixel, rows in parallel on all cores.
-std::vector<std::uint8_t> ambiguousReferencePixels(const Scene &scene,
-                                                   const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                   int width, int height, int subpixelBits, QString *error = nullptr);
+Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
+    int subpixelBits);
 
 // The pixels a render is judged on against the reference: every pixel more
 // than bandPx (Chebyshev) from an occluding contour (occludingContourPixels())
 // or an ambiguous pixel (ambiguousReferencePixels()), which together are the
 // silhouettes, the outline included. 1 = compared. What `phonglab bench` and
-// `phonglab check` compare. Empty and *error on bad input.
-std::vector<std::uint8_t> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
-                                              const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                              int bandPx, QString *error = nullptr);
+// `phonglab check` compare. A failure on bad input.
+Result<std::vector<std::uint8_t>> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
+                                                      const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                                      int bandPx);
 
 } // namespace phonglab

@@ -45,10 +45,8 @@ struct SceneHits {
 
 // raycastSceneMeshes()'s rays (MeshRaycaster.h: same inputs, conventions,
 // errors, progress and cancelling), keeping the hits instead of shading them.
-std::optional<SceneHits> castSceneHits(const Scene &scene,
-                                       const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                       int height, QString *error = nullptr,
-                                       const std::function<bool(double)> &progress = {});
+Result<SceneHits> castSceneHits(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                int width, int height, const std::function<bool(double)> &progress = {});
 
 // The reference image of `hits` shaded with `shader` (rows in parallel). The
 // gouraud mistake shades the three vertices of the hit triangle and

@@ -20,33 +20,30 @@ std::vector<ShaderMistake> allMistakes()
 
 } // namespace
 
-std::optional<CheckReference> makeCheckReference(const Scene &scene,
-                                                 const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                 int width, int height, QString *error,
-                                                 const std::function<bool(double)> &progress)
+Result<CheckReference> makeCheckReference(const Scene &scene,
+                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+                                          int height, const std::function<bool(double)> &progress)
 {
     // Casting is most of the work; shading each mistake is a fraction of it.
     const auto castProgress = [&](double f) { return !progress || progress(0.7 * f); };
-    std::optional<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, error, castProgress);
+    Result<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, castProgress);
     if (!hits)
-        return std::nullopt;
+        return fail(hits.error());
     CheckReference out;
     out.shader = idealShadingFor(scene.shading);
     out.background = scene.background;
     out.exact = shadeSceneHits(*hits, scene, out.shader);
-    out.compared = awayFromSilhouettes(out.exact, scene, objectMeshes, kCheckBandPx, error);
-    if (out.compared.empty())
-        return std::nullopt;
+    Result<std::vector<std::uint8_t>> compared = awayFromSilhouettes(out.exact, scene, objectMeshes, kCheckBandPx);
+    if (!compared)
+        return fail(compared.error());
+    out.compared = std::move(*compared);
     for (std::size_t i = 0; i < out.compared.size(); ++i)
         out.compared[i] = out.compared[i] && out.exact.coverage[i];
     if (out.shader.shading == ReferenceShading::Phong) {
         const std::vector<ShaderMistake> mistakes = allMistakes();
         for (std::size_t m = 0; m < mistakes.size(); ++m) {
-            if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size()))) {
-                if (error)
-                    *error = QStringLiteral("cancelled");
-                return std::nullopt;
-            }
+            if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size())))
+                return fail(QStringLiteral("cancelled"));
             const ReferenceShader shader(ReferenceShading::Phong, mistakes[m]);
             out.mistaken.emplace_back(mistakes[m], shadeSceneHits(*hits, scene, shader).toImage(out.background));
         }

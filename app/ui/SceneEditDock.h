@@ -49,7 +49,7 @@ protected:
     // The chosen item's values in the editor (never called while showing).
     virtual void showItem(int index) = 0;
     // After every refresh(), once the chosen item is shown.
-    virtual void refreshed() {}
+    virtual void refreshed() { }
 
 private:
     QUndoStack *m_stack = nullptr;

@@ -64,10 +64,12 @@ struct ShaderChecker::Cache {
         const auto objectMeshes = this->objectMeshes(s, error, cancelled);
         if (!objectMeshes)
             return nullptr;
-        std::optional<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), error,
-                                                                [&](double) { return !cancelled.load(); });
-        if (!made)
+        Result<CheckReference> made =
+            makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), [&](double) { return !cancelled.load(); });
+        if (!made) {
+            *error = made.error();
             return nullptr;
+        }
         reference = std::make_shared<const CheckReference>(std::move(*made));
         scene = s;
         size = sz;

@@ -95,19 +95,24 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
     // whole step is a margin of two.
     const double step = std::ldexp(1.0, -std::max(subpixelBits, 4));
 
-    std::optional<ReferenceImage> reference =
-        raycastSceneMeshes(scene, perObject, variant.side, variant.side, variant.reference, &check.error);
-    if (!reference)
+    Result<ReferenceImage> reference =
+        raycastSceneMeshes(scene, perObject, variant.side, variant.side, variant.reference);
+    if (!reference) {
+        check.error = reference.error();
         return check;
+    }
     // Pixels a rasteriser may legitimately give either surface (a centre
     // within one sub-pixel step of an occluding edge: the outline, or one
     // part of a mesh in front of another, like the tree's tiers) count as
     // uncovered, so the comparison leaves out the same silhouette band
     // around them as around the outer outline.
-    const std::vector<std::uint8_t> ambiguous =
-        ambiguousReferencePixels(scene, perObject, variant.side, variant.side, subpixelBits, &check.error);
-    if (ambiguous.empty())
+    const Result<std::vector<std::uint8_t>> ambiguousMask =
+        ambiguousReferencePixels(scene, perObject, variant.side, variant.side, subpixelBits);
+    if (!ambiguousMask) {
+        check.error = ambiguousMask.error();
         return check;
+    }
+    const std::vector<std::uint8_t> &ambiguous = *ambiguousMask;
     qint64 ambiguousCount = 0;
     for (std::size_t i = 0; i < ambiguous.size(); ++i) {
         if (!ambiguous[i] || !reference->coverage[i])

@@ -36,10 +36,9 @@ inline std::vector<std::shared_ptr<const MeshData>> checkMeshes(const Scene &sce
 
 inline CheckReference makeTestCheckReference(const Scene &scene, int width = kCheckWidth, int height = kCheckHeight)
 {
-    QString error;
-    std::optional<CheckReference> r = makeCheckReference(scene, checkMeshes(scene), width, height, &error);
+    Result<CheckReference> r = makeCheckReference(scene, checkMeshes(scene), width, height);
     if (!r)
-        qFatal("check reference: %s", qPrintable(error));
+        qFatal("check reference: %s", qPrintable(r.error()));
     return std::move(*r);
 }
 

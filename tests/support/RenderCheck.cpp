@@ -75,9 +75,11 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
         check.gpu = toRgbImage(offscreen.renderImage(size));
 
     const ReferenceShading shading = options.reference.value_or(idealShadingFor(scene.shading));
-    auto reference = raycastScene(scene, size.width(), size.height(), shading, &check.error, options.standIns);
-    if (!reference)
+    auto reference = raycastScene(scene, size.width(), size.height(), shading, options.standIns);
+    if (!reference) {
+        check.error = reference.error();
         return check;
+    }
     check.referenceData = std::move(*reference);
     check.reference = check.referenceData.toImage(scene.background);
     check.comparison = compareWithReference(check.gpu, check.referenceData, kSilhouetteBandPx);
@@ -107,7 +109,7 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
     const QString heatmapPath = dir.filePath(name + QStringLiteral("-error.png"));
     if (!check.referenceData.isNull())
         toQImage(errorHeatmap(check.gpu, check.referenceData, kSilhouetteBandPx)).save(heatmapPath);
-    else if (const auto reference = raycastScene(scene, check.gpu.width, check.gpu.height, nullptr, standIns))
+    else if (const auto reference = raycastScene(scene, check.gpu.width, check.gpu.height, standIns))
         toQImage(errorHeatmap(check.gpu, *reference, kSilhouetteBandPx)).save(heatmapPath);
     return dir.absolutePath();
 }

@@ -51,10 +51,9 @@ bool near(const glm::dvec3 &a, const glm::dvec3 &b, double tol)
 
 ReferenceImage render(const Scene &scene, int w, int h)
 {
-    QString error;
-    const std::optional<ReferenceImage> image = raycastScene(scene, w, h, &error);
+    const Result<ReferenceImage> image = raycastScene(scene, w, h);
     if (!image)
-        qFatal("raycastScene failed: %s", qPrintable(error));
+        qFatal("raycastScene failed: %s", qPrintable(image.error()));
     return *image;
 }
 
@@ -273,11 +272,12 @@ private slots:
     {
         Scene scene = sphereScene();
         scene.objects.push_back(object(QStringLiteral("models/bunny.obj")));
-        QString error;
-        QVERIFY(!raycastScene(scene, 32, 32, &error));
-        QVERIFY2(error.contains(QStringLiteral("models/bunny.obj")), qPrintable(error));
-        QVERIFY(!raycastScene(scene, 32, 32)); // no error pointer: no crash
-        QVERIFY(!raycastScene(sphereScene(), 0, 32, &error));
+        const Result<ReferenceImage> unknown = raycastScene(scene, 32, 32);
+        QVERIFY(!unknown);
+        QVERIFY2(unknown.error().contains(QStringLiteral("models/bunny.obj")), qPrintable(unknown.error()));
+        const Result<ReferenceImage> empty = raycastScene(sphereScene(), 0, 32);
+        QVERIFY(!empty);
+        QVERIFY2(empty.error().contains(QStringLiteral("0x32")), qPrintable(empty.error()));
     }
 
     void toImageWritesBackground()

@@ -100,19 +100,17 @@ Scene sphereScene()
 ReferenceImage meshReference(const Scene &scene, const std::vector<MeshPtr> &meshes, int w, int h,
                              ReferenceShading shading = ReferenceShading::Phong)
 {
-    QString error;
-    std::optional<ReferenceImage> image = raycastSceneMeshes(scene, meshes, w, h, shading, &error);
+    Result<ReferenceImage> image = raycastSceneMeshes(scene, meshes, w, h, shading);
     if (!image)
-        qFatal("raycastSceneMeshes failed: %s", qPrintable(error));
+        qFatal("raycastSceneMeshes failed: %s", qPrintable(image.error()));
     return std::move(*image);
 }
 
 ReferenceImage analyticReference(const Scene &scene, int w, int h, ReferenceShading shading = ReferenceShading::Phong)
 {
-    QString error;
-    std::optional<ReferenceImage> image = raycastScene(scene, w, h, shading, &error);
+    Result<ReferenceImage> image = raycastScene(scene, w, h, shading);
     if (!image)
-        qFatal("raycastScene failed: %s", qPrintable(error));
+        qFatal("raycastScene failed: %s", qPrintable(image.error()));
     return std::move(*image);
 }
 
@@ -274,29 +272,32 @@ private slots:
     {
         const Scene scene = sphereScene();
         const MeshPtr sphere = std::make_shared<const MeshData>(makeUvSphere(16, 8));
-        QString error;
-        QVERIFY(!raycastSceneMeshes(scene, {}, 32, 32, ReferenceShading::Phong, &error));
-        QVERIFY2(error.contains(QStringLiteral("1 objects but 0 meshes")), qPrintable(error));
-        QVERIFY(!raycastSceneMeshes(scene, {sphere, sphere}, 32, 32, ReferenceShading::Phong, &error));
-        QVERIFY(!raycastSceneMeshes(scene, {sphere}, 0, 32, ReferenceShading::Phong, &error));
+        const auto expectError = [](const Result<ReferenceImage> &r, const QString &part) {
+            QVERIFY(!r);
+            QVERIFY2(r.error().contains(part), qPrintable(r.error()));
+        };
+        expectError(raycastSceneMeshes(scene, {}, 32, 32, ReferenceShading::Phong),
+                    QStringLiteral("1 objects but 0 meshes"));
+        expectError(raycastSceneMeshes(scene, {sphere, sphere}, 32, 32, ReferenceShading::Phong),
+                    QStringLiteral("1 objects but 2 meshes"));
+        expectError(raycastSceneMeshes(scene, {sphere}, 0, 32, ReferenceShading::Phong), QStringLiteral("0x32"));
 
         Scene fileScene = scene;
         fileScene.objects[0].mesh = QStringLiteral("tree.obj");
-        error.clear();
-        QVERIFY(!raycastSceneMeshes(fileScene, {nullptr}, 32, 32, ReferenceShading::Phong, &error));
-        QVERIFY2(error.contains(QStringLiteral("tree.obj")), qPrintable(error));
+        expectError(raycastSceneMeshes(fileScene, {nullptr}, 32, 32, ReferenceShading::Phong),
+                    QStringLiteral("tree.obj"));
         // A null mesh for a builtin is its analytic surface.
-        QVERIFY(raycastSceneMeshes(scene, {nullptr}, 32, 32, ReferenceShading::Phong, &error));
+        QVERIFY(raycastSceneMeshes(scene, {nullptr}, 32, 32, ReferenceShading::Phong));
 
         auto broken = std::make_shared<MeshData>(makeUvSphere(16, 8));
         broken->indices.push_back(0); // not a multiple of three
-        QVERIFY(!raycastSceneMeshes(scene, {broken}, 32, 32, ReferenceShading::Phong, &error));
-        QVERIFY2(error.contains(QStringLiteral("not valid")), qPrintable(error));
+        expectError(raycastSceneMeshes(scene, {broken}, 32, 32, ReferenceShading::Phong), QStringLiteral("not valid"));
 
         int calls = 0;
-        QVERIFY(!raycastSceneMeshes(scene, {sphere}, 64, 64, ReferenceShading::Phong, &error,
-                                    [&](double) { return ++calls < 3; }));
-        QCOMPARE(error, QStringLiteral("cancelled"));
+        const Result<ReferenceImage> cancelled =
+            raycastSceneMeshes(scene, {sphere}, 64, 64, ReferenceShading::Phong, [&](double) { return ++calls < 3; });
+        QVERIFY(!cancelled);
+        QCOMPARE(cancelled.error(), QStringLiteral("cancelled"));
     }
 
     void defaultSceneIsTheSameOnAnyThreadCount()
@@ -307,8 +308,8 @@ private slots:
             triangles += qint64(mesh->triangleCount());
         double lastFraction = -1.0;
         bool monotonic = true;
-        const std::optional<ReferenceImage> image =
-            raycastSceneMeshes(scene, meshes, 512, 512, ReferenceShading::Phong, nullptr, [&](double f) {
+        const Result<ReferenceImage> image =
+            raycastSceneMeshes(scene, meshes, 512, 512, ReferenceShading::Phong, [&](double f) {
                 monotonic = monotonic && f >= lastFraction && f <= 1.0;
                 lastFraction = f;
                 return true;

@@ -18,8 +18,7 @@ constexpr int kSize = 64;
 
 ReferenceImage render(const Scene &scene, const ReferenceShader &shader)
 {
-    QString error;
-    const std::optional<ReferenceImage> image = raycastScene(scene, kSize, kSize, shader, &error);
+    const Result<ReferenceImage> image = raycastScene(scene, kSize, kSize, shader);
     return image ? *image : ReferenceImage();
 }
 
@@ -95,9 +94,8 @@ private slots:
     void exactShaderIsTheDefault()
     {
         const Scene scene = mistakeScene();
-        QString error;
-        const std::optional<ReferenceImage> byDefault = raycastScene(scene, kSize, kSize, &error);
-        QVERIFY2(byDefault, qPrintable(error));
+        const Result<ReferenceImage> byDefault = raycastScene(scene, kSize, kSize);
+        QVERIFY2(byDefault, qPrintable(byDefault.error()));
         QCOMPARE(differingPixels(*byDefault, render(scene, ReferenceShader{}), 0.0), 0);
     }
 };

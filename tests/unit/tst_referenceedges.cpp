@@ -69,19 +69,17 @@ double outlineDistancePx(const Scene &scene, const SceneObject &sphere, double p
 
 std::vector<std::uint8_t> mask(const Scene &scene, const std::vector<MeshPtr> &meshes, int w, int h, int bits)
 {
-    QString error;
-    std::vector<std::uint8_t> m = ambiguousReferencePixels(scene, meshes, w, h, bits, &error);
-    if (m.empty())
-        qFatal("ambiguousReferencePixels failed: %s", qPrintable(error));
-    return m;
+    Result<std::vector<std::uint8_t>> m = ambiguousReferencePixels(scene, meshes, w, h, bits);
+    if (!m)
+        qFatal("ambiguousReferencePixels failed: %s", qPrintable(m.error()));
+    return std::move(*m);
 }
 
 ReferenceImage reference(const Scene &scene, const std::vector<MeshPtr> &meshes, int w, int h)
 {
-    QString error;
-    std::optional<ReferenceImage> image = raycastSceneMeshes(scene, meshes, w, h, ReferenceShading::Phong, &error);
+    Result<ReferenceImage> image = raycastSceneMeshes(scene, meshes, w, h, ReferenceShading::Phong);
     if (!image)
-        qFatal("raycastSceneMeshes failed: %s", qPrintable(error));
+        qFatal("raycastSceneMeshes failed: %s", qPrintable(image.error()));
     return std::move(*image);
 }
 
@@ -227,8 +225,9 @@ private slots:
         const std::vector<MeshPtr> meshes{mesh ? std::make_shared<const MeshData>(makeCube()) : nullptr};
         const std::vector<std::uint8_t> ambiguous = mask(scene, meshes, w, h, bits);
         const ReferenceImage image = reference(scene, meshes, w, h);
-        const std::unique_ptr<SceneDepthCaster> caster = SceneDepthCaster::create(scene, meshes, w, h);
-        QVERIFY(caster);
+        const auto created = SceneDepthCaster::create(scene, meshes, w, h);
+        QVERIFY2(created, qPrintable(created.error()));
+        const std::unique_ptr<SceneDepthCaster> &caster = *created;
         const double step = std::ldexp(1.0, -bits);
 
         qint64 inside = 0, flaggedInside = 0, steepInside = 0, flagged = 0;
@@ -269,8 +268,9 @@ private slots:
         const std::vector<MeshPtr> meshes{sphere, nullptr, nullptr};
         const int w = 160, h = 100;
         const ReferenceImage image = reference(scene, meshes, w, h);
-        const std::unique_ptr<SceneDepthCaster> caster = SceneDepthCaster::create(scene, meshes, w, h);
-        QVERIFY(caster);
+        const auto created = SceneDepthCaster::create(scene, meshes, w, h);
+        QVERIFY2(created, qPrintable(created.error()));
+        const std::unique_ptr<SceneDepthCaster> &caster = *created;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
                 QCOMPARE(caster->depthAt(x + 0.5, y + 0.5), image.depthAt(x, y));
@@ -279,14 +279,15 @@ private slots:
     void badInputIsAnError()
     {
         const Scene scene = twoSpheres();
-        QString error;
-        QVERIFY(ambiguousReferencePixels(scene, {nullptr}, 32, 32, 8, &error).empty());
-        QVERIFY2(error.contains(QStringLiteral("2 objects but 1 meshes")), qPrintable(error));
-        QVERIFY(ambiguousReferencePixels(scene, {nullptr, nullptr}, 0, 32, 8, &error).empty());
-        QVERIFY(!SceneDepthCaster::create(scene, {nullptr, nullptr}, 32, -1, &error));
+        const auto tooFewMeshes = ambiguousReferencePixels(scene, {nullptr}, 32, 32, 8);
+        QVERIFY(!tooFewMeshes);
+        QVERIFY2(tooFewMeshes.error().contains(QStringLiteral("2 objects but 1 meshes")),
+                 qPrintable(tooFewMeshes.error()));
+        QVERIFY(!ambiguousReferencePixels(scene, {nullptr, nullptr}, 0, 32, 8));
+        QVERIFY(!SceneDepthCaster::create(scene, {nullptr, nullptr}, 32, -1));
         // Fewer bits than OpenGL's minimum count as 4: the same mask.
-        QVERIFY(ambiguousReferencePixels(scene, {nullptr, nullptr}, 64, 48, 0)
-                == ambiguousReferencePixels(scene, {nullptr, nullptr}, 64, 48, 4));
+        QVERIFY(*ambiguousReferencePixels(scene, {nullptr, nullptr}, 64, 48, 0)
+                == *ambiguousReferencePixels(scene, {nullptr, nullptr}, 64, 48, 4));
     }
 
     // What the bench pays per frame size: the default scene (tree + cloud
