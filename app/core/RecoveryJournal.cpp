@@ -64,13 +64,6 @@ QString newSessionId()
         .arg(instances++);
 }
 
-bool fail(QString *error, const QString &message)
-{
-    if (error)
-        *error = message;
-    return false;
-}
-
 } // namespace
 
 bool OrphanedSession::isSuspect() const
@@ -111,24 +104,24 @@ QString RecoveryJournal::filePath(const QString &id, const char *suffix) const
 
 // The lock is what tells a running session from a dead one, so it is taken
 // before the first journal exists.
-bool RecoveryJournal::ensureSession(QString *error)
+Result<> RecoveryJournal::ensureSession()
 {
     if (m_lock)
-        return true;
+        return {};
     if (!QDir().mkpath(m_directory))
-        return fail(error, QStringLiteral("%1: cannot create the recovery folder").arg(m_directory));
+        return fail(QStringLiteral("%1: cannot create the recovery folder").arg(m_directory));
     auto lock = std::make_unique<QLockFile>(filePath(m_sessionId, kLockSuffix));
     lock->setStaleLockTime(0); // only a dead process makes it stale, never age
     if (!lock->tryLock(0))
-        return fail(error, QStringLiteral("%1: cannot lock the recovery journal").arg(lock->fileName()));
+        return fail(QStringLiteral("%1: cannot lock the recovery journal").arg(lock->fileName()));
     m_lock = std::move(lock);
-    return true;
+    return {};
 }
 
-bool RecoveryJournal::write(const RecoveryRecord &record, QString *error)
+Result<> RecoveryJournal::write(const RecoveryRecord &record)
 {
-    if (!ensureSession(error))
-        return false;
+    if (Result<> session = ensureSession(); !session)
+        return session;
     const QJsonObject json{
         {"format", kFormat},
         {"version", kVersion},
@@ -139,34 +132,28 @@ bool RecoveryJournal::write(const RecoveryRecord &record, QString *error)
     };
     QSaveFile file(journalPath());
     if (!file.open(QIODevice::WriteOnly))
-        return fail(error, QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
+        return fail(QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
     file.write(QJsonDocument(json).toJson(QJsonDocument::Indented));
     if (!file.commit()) // renames over the old journal only once all is on disk
-        return fail(error, QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
-    return true;
+        return fail(QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
+    return {};
 }
 
-std::optional<RecoveryRecord> RecoveryJournal::readFile(const QString &path, QString *error)
+Result<RecoveryRecord> RecoveryJournal::readFile(const QString &path)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        fail(error, QStringLiteral("%1: %2").arg(path, file.errorString()));
-        return std::nullopt;
-    }
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("%1: %2").arg(path, file.errorString()));
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
     const QJsonObject json = document.object();
     if (parseError.error != QJsonParseError::NoError || json.value("format").toString() != QLatin1String(kFormat)
-        || json.value("version").toInt() != kVersion) {
-        fail(error, QStringLiteral("%1: not a complete PhongLab recovery journal").arg(path));
-        return std::nullopt;
-    }
+        || json.value("version").toInt() != kVersion)
+        return fail(QStringLiteral("%1: not a complete PhongLab recovery journal").arg(path));
     const auto vertex = bufferFromJson(json.value("vertex"));
     const auto fragment = bufferFromJson(json.value("fragment"));
-    if (!vertex || !fragment) {
-        fail(error, QStringLiteral("%1: a shader buffer is missing from the journal").arg(path));
-        return std::nullopt;
-    }
+    if (!vertex || !fragment)
+        return fail(QStringLiteral("%1: a shader buffer is missing from the journal").arg(path));
     RecoveryRecord record;
     record.vertex = *vertex;
     record.fragment = *fragment;
@@ -175,9 +162,9 @@ std::optional<RecoveryRecord> RecoveryJournal::readFile(const QString &path, QSt
     return record;
 }
 
-std::optional<RecoveryRecord> RecoveryJournal::read(QString *error) const
+Result<RecoveryRecord> RecoveryJournal::read() const
 {
-    return readFile(journalPath(), error);
+    return readFile(journalPath());
 }
 
 bool RecoveryJournal::hasJournal() const
@@ -191,17 +178,17 @@ void RecoveryJournal::clear()
     QFile::remove(sentinelPath());
 }
 
-bool RecoveryJournal::markRunning(const QByteArray &textHash, QString *error)
+Result<> RecoveryJournal::markRunning(const QByteArray &textHash)
 {
-    if (!ensureSession(error))
-        return false;
+    if (Result<> session = ensureSession(); !session)
+        return session;
     QSaveFile file(sentinelPath());
     if (!file.open(QIODevice::WriteOnly))
-        return fail(error, QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
+        return fail(QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
     file.write(textHash + '\n');
     if (!file.commit())
-        return fail(error, QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
-    return true;
+        return fail(QStringLiteral("%1: %2").arg(file.fileName(), file.errorString()));
+    return {};
 }
 
 void RecoveryJournal::clearRunning()

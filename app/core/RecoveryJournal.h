@@ -1,4 +1,5 @@
 #pragma once
+#include "Result.h"
 #include <QByteArray>
 #include <QDateTime>
 #include <QList>
@@ -67,16 +68,16 @@ public:
     QString sentinelPath() const { return filePath(m_sessionId, kSentinelSuffix); }
 
     // This session's journal. Creates the folder and takes the session lock
-    // on first use. False with a reason when it cannot be written.
-    bool write(const RecoveryRecord &record, QString *error = nullptr);
-    std::optional<RecoveryRecord> read(QString *error = nullptr) const;
+    // on first use. A failure with the reason when it cannot be written.
+    Result<> write(const RecoveryRecord &record);
+    Result<RecoveryRecord> read() const;
     bool hasJournal() const;
     // Removes this session's journal and sentinel (clean exit, all saved).
     void clear();
 
     // The sentinel: written before a new program first runs, cleared once it
     // has drawn frames without taking the process down.
-    bool markRunning(const QByteArray &textHash, QString *error = nullptr);
+    Result<> markRunning(const QByteArray &textHash);
     void clearRunning();
     std::optional<QByteArray> runningHash() const;
 
@@ -86,16 +87,16 @@ public:
     // Deletes an orphan's files (after restoring or discarding it).
     void discard(const QString &sessionId);
 
-    // Reads any session's journal file; nullopt (with a reason) when it is
-    // missing, unreadable, or not a complete PhongLab journal.
-    static std::optional<RecoveryRecord> readFile(const QString &path, QString *error = nullptr);
+    // Reads any session's journal file; a failure when it is missing,
+    // unreadable, or not a complete PhongLab journal.
+    static Result<RecoveryRecord> readFile(const QString &path);
 
     static constexpr const char *kJournalSuffix = ".journal";
     static constexpr const char *kSentinelSuffix = ".running";
     static constexpr const char *kLockSuffix = ".lock";
 
 private:
-    bool ensureSession(QString *error);
+    Result<> ensureSession();
     bool isSessionAlive(const QString &id) const;
     QString filePath(const QString &id, const char *suffix) const;
 

@@ -28,8 +28,7 @@ inline Failure fail(QString error)
 // Types that report more than one message (a shader build's diagnostics,
 // a mesh's warnings) have result types of their own that follow the same
 // shape: BuildReport, MeshReadResult, SceneLoadResult.
-template <typename T = void>
-class [[nodiscard]] Result
+template <typename T = void> class [[nodiscard]] Result
 {
 public:
     Result(T value)
@@ -53,6 +52,7 @@ public:
     T &value() & { return *m_value; }
     const T &value() const & { return *m_value; }
     T &&value() && { return std::move(*m_value); }
+    T valueOr(T fallback) const & { return m_value ? *m_value : std::move(fallback); }
     // The value, dropping the error: for callers that only need to know
     // whether there is one.
     std::optional<T> toOptional() && { return std::move(m_value); }
@@ -63,8 +63,7 @@ private:
 };
 
 // For operations that give nothing back but can fail: Result<>{} is success.
-template <>
-class [[nodiscard]] Result<void>
+template <> class [[nodiscard]] Result<void>
 {
 public:
     Result() = default;

@@ -64,6 +64,18 @@ private:
     bool readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out);
     bool readSingleObject(const QJsonObject &root, SceneObject &out);
     bool readNormals(const QJsonValue &value, const QString &path, NormalOptions &out);
+    bool readUniforms(const QJsonValue &value, const QString &path, scenejson::UserUniforms &out);
+    // A field read by a scenejson helper: its value into `out`, or its
+    // (already located) error.
+    template <typename T> bool take(Result<T> read, T &out)
+    {
+        if (!read) {
+            m_error = read.error();
+            return false;
+        }
+        out = std::move(*read);
+        return true;
+    }
     bool readDetail(const QJsonValue &value, const QString &path, double &out);
     bool readObjects(const QJsonObject &root, std::vector<SceneObject> &out);
 
@@ -375,7 +387,12 @@ bool SceneReader::readSingleObject(const QJsonObject &root, SceneObject &out)
 
 bool SceneReader::readNormals(const QJsonValue &value, const QString &path, NormalOptions &out)
 {
-    return scenejson::readNormalOptions(value, path, out, &m_error);
+    return take(scenejson::readNormalOptions(value, path, out), out);
+}
+
+bool SceneReader::readUniforms(const QJsonValue &value, const QString &path, scenejson::UserUniforms &out)
+{
+    return take(scenejson::readUserUniforms(value, path), out);
 }
 
 // A fraction of the full triangle count: 0 would draw nothing, and more
@@ -438,7 +455,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && readShading(root.value("shading"_L1), QStringLiteral("shading"), scene.shading)
         && readColor(root.value("background"_L1), QStringLiteral("background"), scene.background)
         && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene)
-        && scenejson::readUserUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms, &m_error);
+        && readUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms);
     if (ok)
         result.scene = std::move(scene);
     else
@@ -451,11 +468,10 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
 
 SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir)
 {
-    QString syntaxError;
-    const auto doc = scenejson::parseJsonText(json, &syntaxError);
+    const Result<QJsonDocument> doc = scenejson::parseJsonText(json);
     if (!doc) {
         SceneLoadResult result;
-        result.error = syntaxError;
+        result.error = doc.error();
         return result;
     }
     return SceneReader().read(*doc, baseDir);

@@ -1,4 +1,5 @@
 #pragma once
+#include "Result.h"
 #include "Scene.h"
 
 #include <QByteArray>
@@ -39,6 +40,6 @@ QByteArray sceneToJson(const Scene &scene);
 // Writes sceneToJson(scene) to `path` atomically (QSaveFile): on any failure
 // the previous file, if any, is left untouched. A scene that would not load
 // back (e.g. no objects, a zero scale) is refused rather than written.
-bool saveSceneFile(const Scene &scene, const QString &path, QString *error);
+Result<> saveSceneFile(const Scene &scene, const QString &path);
 
 } // namespace phonglab

@@ -91,7 +91,7 @@ QString syntaxError(const QByteArray &json, qsizetype offset, const QString &rea
 
 } // namespace
 
-std::optional<QJsonDocument> parseJsonText(const QByteArray &json, QString *error)
+Result<QJsonDocument> parseJsonText(const QByteArray &json)
 {
     QByteArray text = json;
     std::vector<Rewrite> rewrites;
@@ -103,8 +103,7 @@ std::optional<QJsonDocument> parseJsonText(const QByteArray &json, QString *erro
         if (parseError.error == QJsonParseError::IllegalNumber && int(rewrites.size()) < kMaxRewrites
             && rewriteOutOfRangeLiteral(text, parseError.offset, rewrites))
             continue;
-        *error = syntaxError(json, originalOffset(parseError.offset, rewrites), parseError.errorString());
-        return std::nullopt;
+        return fail(syntaxError(json, originalOffset(parseError.offset, rewrites), parseError.errorString()));
     }
 }
 
@@ -134,49 +133,52 @@ QString describeType(const QJsonValue &value)
     return QStringLiteral("nothing");
 }
 
-bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions &out, QString *error)
+Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions out)
 {
     if (value.isUndefined())
-        return true;
-    auto fail = [&](const QString &where, const QString &reason) {
-        *error = where + QStringLiteral(": ") + reason;
-        return false;
+        return out;
+    const auto located = [](const QString &where, const QString &reason) {
+        return fail(where + QStringLiteral(": ") + reason);
     };
-    auto readMethod = [&](const QJsonValue &v, const QString &where) {
+    const auto readMethod = [&](const QJsonValue &v, const QString &where) -> Result<> {
         if (!v.isString())
-            return fail(where, QStringLiteral("expected a string (got %1)").arg(describeType(v)));
+            return located(where, QStringLiteral("expected a string (got %1)").arg(describeType(v)));
         const auto method = normalMethodFromName(v.toString());
         if (!method)
-            return fail(where,
-                        QStringLiteral("unknown normal method \"%1\" (known: %2)")
-                            .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
+            return located(where,
+                           QStringLiteral("unknown normal method \"%1\" (known: %2)")
+                               .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
         out.method = *method;
-        return true;
+        return {};
     };
-    if (value.isString())
-        return readMethod(value, path);
+    if (value.isString()) {
+        if (const Result<> method = readMethod(value, path); !method)
+            return fail(method.error());
+        return out;
+    }
     if (!value.isObject())
-        return fail(path, QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
+        return located(path, QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it)
         if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
-            return fail(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
-    if (object.contains(QLatin1String("method"))
-        && !readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method")))
-        return false;
+            return located(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
+    if (object.contains(QLatin1String("method")))
+        if (const Result<> method = readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method"));
+            !method)
+            return fail(method.error());
     const QJsonValue crease = object.value(QLatin1String("crease_deg"));
     if (crease.isUndefined() || crease.isNull()) {
         out.creaseAngleDeg.reset();
-        return true;
+        return out;
     }
     const QString creasePath = path + QStringLiteral(".crease_deg");
     if (!crease.isDouble() || overflowLiteral(crease))
-        return fail(creasePath, QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
+        return located(creasePath, QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
     const double degrees = crease.toDouble();
     if (!(degrees >= 0.0 && degrees <= 180.0))
-        return fail(creasePath, QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
+        return located(creasePath, QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
     out.creaseAngleDeg = degrees;
-    return true;
+    return out;
 }
 
 QJsonValue normalOptionsJson(const NormalOptions &options)
@@ -191,58 +193,47 @@ QJsonValue normalOptionsJson(const NormalOptions &options)
 
 namespace {
 
-bool readUniformNumber(const QJsonValue &v, const QString &where, double &out, QString *error)
+Result<double> readUniformNumber(const QJsonValue &v, const QString &where)
 {
-    if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble())) {
-        *error = where + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v));
-        return false;
-    }
-    out = v.toDouble();
-    return true;
+    if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble()))
+        return fail(where + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v)));
+    return v.toDouble();
 }
 
 } // namespace
 
-bool readUserUniforms(const QJsonValue &value, const QString &path, std::map<QString, std::vector<double>> &out,
-                      QString *error)
+Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &path)
 {
     if (value.isUndefined())
-        return true;
-    if (!value.isObject()) {
-        *error = path + QStringLiteral(": expected an object of name: value (got %1)").arg(describeType(value));
-        return false;
-    }
+        return UserUniforms{};
+    if (!value.isObject())
+        return fail(path + QStringLiteral(": expected an object of name: value (got %1)").arg(describeType(value)));
     const QJsonObject object = value.toObject();
-    std::map<QString, std::vector<double>> read;
+    UserUniforms read;
     for (auto it = object.begin(); it != object.end(); ++it) {
         const QString where = path + QLatin1Char('.') + it.key();
-        if (it.key().trimmed().isEmpty()) {
-            *error = path + QStringLiteral(": a uniform name must not be empty");
-            return false;
-        }
+        if (it.key().trimmed().isEmpty())
+            return fail(path + QStringLiteral(": a uniform name must not be empty"));
         std::vector<double> values;
         if (it.value().isArray()) {
             const QJsonArray array = it.value().toArray();
-            if (array.isEmpty() || array.size() > 16) {
-                *error = where + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size());
-                return false;
-            }
+            if (array.isEmpty() || array.size() > 16)
+                return fail(where + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size()));
             for (qsizetype i = 0; i < array.size(); ++i) {
-                double v = 0;
-                if (!readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i), v, error))
-                    return false;
-                values.push_back(v);
+                const Result<double> v = readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i));
+                if (!v)
+                    return fail(v.error());
+                values.push_back(*v);
             }
         } else {
-            double v = 0;
-            if (!readUniformNumber(it.value(), where, v, error))
-                return false;
-            values.push_back(v);
+            const Result<double> v = readUniformNumber(it.value(), where);
+            if (!v)
+                return fail(v.error());
+            values.push_back(*v);
         }
         read[it.key()] = std::move(values);
     }
-    out = std::move(read);
-    return true;
+    return read;
 }
 
 QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms)

@@ -1,4 +1,5 @@
 #pragma once
+#include "Result.h"
 #include <QByteArray>
 #include <QJsonDocument>
 #include <QJsonValue>
@@ -18,10 +19,10 @@ namespace phonglab::scenejson {
 // scene reader can refuse them with the field's path instead; literals that
 // underflow (1e-999) read as 0, the nearest double.
 //
-// On a genuine syntax error returns nullopt and sets *error to
+// On a genuine syntax error fails with
 // "JSON syntax error at line L, column C (byte offset N): <Qt's reason>",
 // positions counted in the caller's original text.
-std::optional<QJsonDocument> parseJsonText(const QByteArray &json, QString *error);
+Result<QJsonDocument> parseJsonText(const QByteArray &json);
 
 // The literal as written ("1e999") if `value` is an overflow marker.
 std::optional<QString> overflowLiteral(const QJsonValue &value);
@@ -30,16 +31,16 @@ std::optional<QString> overflowLiteral(const QJsonValue &value);
 QString describeType(const QJsonValue &value);
 
 // The "normals" field of an object: "auto" | "flat" | "average" | "area" |
-// "angle", or {"method": <one of those>, "crease_deg": <0..180>}. On failure
-// returns false with *error = "<path>: <reason>".
-bool readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions &out, QString *error);
+// "angle", or {"method": <one of those>, "crease_deg": <0..180>}: `defaults`
+// with what the field sets, or the failure "<path>: <reason>".
+Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions defaults);
 QJsonValue normalOptionsJson(const NormalOptions &options);
 
 // The "uniforms" field: {"name": number | [numbers (1..16)], ...}, values of
-// the shader's own uniforms. On failure returns false with *error =
+// the shader's own uniforms (none when the field is absent), or the failure
 // "<path>.<name>: <reason>".
-bool readUserUniforms(const QJsonValue &value, const QString &path, std::map<QString, std::vector<double>> &out,
-                      QString *error);
+using UserUniforms = std::map<QString, std::vector<double>>;
+Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &path);
 QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms);
 
 } // namespace phonglab::scenejson

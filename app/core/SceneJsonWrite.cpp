@@ -114,31 +114,25 @@ QByteArray sceneToJson(const Scene &scene)
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-bool saveSceneFile(const Scene &scene, const QString &path, QString *error)
+Result<> saveSceneFile(const Scene &scene, const QString &path)
 {
-    const auto setError = [&](const QString &message) {
-        if (error)
-            *error = message;
-        return false;
-    };
-
     const QByteArray json = sceneToJson(scene);
     // Saving is the one place an invalid in-memory scene could become a file
     // that no longer opens; check it by reading back what would be written.
     const SceneLoadResult check = parseScene(json);
     if (!check.ok())
-        return setError(QStringLiteral("refusing to save an invalid scene: %1").arg(check.error));
+        return fail(QStringLiteral("refusing to save an invalid scene: %1").arg(check.error));
 
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return setError(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+        return fail(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
     if (file.write(json) != json.size()) {
         file.cancelWriting();
-        return setError(QStringLiteral("%1: write failed (%2)").arg(path, file.errorString()));
+        return fail(QStringLiteral("%1: write failed (%2)").arg(path, file.errorString()));
     }
     if (!file.commit())
-        return setError(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
-    return true;
+        return fail(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+    return {};
 }
 
 } // namespace phonglab

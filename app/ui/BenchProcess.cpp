@@ -73,8 +73,8 @@ bool BenchProcess::start(const Scene &scene, const QSize &size, const ErrorBudge
         return false;
     }
     const QString scenePath = m_dir->filePath(QStringLiteral("scene.json"));
-    if (!saveSceneFile(withAbsoluteMeshes(scene), scenePath, error))
-        return false;
+    if (const Result<> saved = saveSceneFile(withAbsoluteMeshes(scene), scenePath); !saved)
+        return *error = saved.error(), false;
 
     QStringList details;
     for (double d : detailLevels())

@@ -320,8 +320,8 @@ bool MainWindow::saveScene(const QString &path, QString *error)
     Scene scene = rebasedOnto(m_viewport->currentScene(), path);
     addShaderFiles(scene, path);
     scene.uniforms = userUniformValues();
-    if (!saveSceneFile(scene, path, error))
-        return false;
+    if (const Result<> saved = saveSceneFile(scene, path); !saved)
+        return *error = saved.error(), false;
     setScenePath(path);
     m_recentFiles->add(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);

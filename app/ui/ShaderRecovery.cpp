@@ -117,11 +117,10 @@ bool ShaderRecovery::writeNow(QString *error)
     record.fragment = {m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment),
                        m_dock->isDirty(ShaderStage::Fragment)};
     record.shading = m_shading;
-    QString reason;
-    if (!m_journal.write(record, &reason)) {
-        qWarning("phonglab: cannot write the recovery journal: %s", qPrintable(reason));
+    if (const Result<> written = m_journal.write(record); !written) {
+        qWarning("phonglab: cannot write the recovery journal: %s", qPrintable(written.error()));
         if (error)
-            *error = reason;
+            *error = written.error();
         return false;
     }
     m_stale = false;
@@ -233,9 +232,8 @@ void ShaderRecovery::checkProbation()
 
 void ShaderRecovery::markRunning(const QByteArray &hash)
 {
-    QString error;
-    if (!m_journal.markRunning(hash, &error))
-        qWarning("phonglab: cannot write the running-shader sentinel: %s", qPrintable(error));
+    if (const Result<> marked = m_journal.markRunning(hash); !marked)
+        qWarning("phonglab: cannot write the running-shader sentinel: %s", qPrintable(marked.error()));
     m_running = true;
 }
 

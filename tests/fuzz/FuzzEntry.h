@@ -195,11 +195,10 @@ inline Outcome runJournal(const QByteArray &bytes)
     const QString path = scratchPath(QStringLiteral("session.journal"));
     if (!writeScratch(path, bytes))
         brokenPromise("journal", "cannot write the scratch file");
-    QString error;
-    const std::optional<RecoveryRecord> record = RecoveryJournal::readFile(path, &error);
-    if (!record && error.isEmpty())
+    const Result<RecoveryRecord> record = RecoveryJournal::readFile(path);
+    if (!record && record.error().isEmpty())
         brokenPromise("journal", "a refused journal without an error message");
-    return {record.has_value(), error};
+    return {record.ok(), record.error()};
 }
 
 // Dispatch by target name (see targetNames()).

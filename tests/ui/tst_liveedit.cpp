@@ -182,7 +182,7 @@ void TestLiveEdit::typingChangesTheFrame()
     // Journaled before the build; the sentinel goes once the program has
     // drawn its frames, the journal stays while the edit is unsaved.
     RecoveryJournal &journal = live()->recovery()->journal();
-    QVERIFY(journal.read().value_or(RecoveryRecord()).fragment.text.contains("vec4(I * 0.5"));
+    QVERIFY(journal.read().valueOr(RecoveryRecord()).fragment.text.contains("vec4(I * 0.5"));
     QTRY_VERIFY_WITH_TIMEOUT(!QFile::exists(journal.sentinelPath()), 5000);
     QVERIFY(journal.hasJournal());
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));

@@ -38,10 +38,10 @@ void writeFile(const QString &path, const QByteArray &contents)
 // that does not run (the lock file is what a killed process leaves behind).
 void leaveOrphan(const QString &dir, const QString &id, const RecoveryRecord &record)
 {
-    QString error;
     {
         RecoveryJournal other(dir);
-        QVERIFY2(other.write(record, &error), qPrintable(error));
+        const Result<> written = other.write(record);
+        QVERIFY2(written, qPrintable(written.error()));
         QVERIFY(QFile::rename(other.journalPath(), QDir(dir).filePath(id + ".journal")));
     }
     writeFile(QDir(dir).filePath(id + ".lock"), "999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
@@ -82,11 +82,11 @@ void TestRecoveryJournal::roundTrip()
 {
     RecoveryJournal journal(m_dir->path());
     QVERIFY(!journal.hasJournal());
-    QString error;
-    QVERIFY2(journal.write(sampleRecord(), &error), qPrintable(error));
+    const Result<> written = journal.write(sampleRecord());
+    QVERIFY2(written, qPrintable(written.error()));
     QVERIFY(journal.hasJournal());
-    const auto read = journal.read(&error);
-    QVERIFY2(read, qPrintable(error));
+    const auto read = journal.read();
+    QVERIFY2(read, qPrintable(read.error()));
     QCOMPARE(read->vertex, sampleRecord().vertex);
     QCOMPARE(read->fragment, sampleRecord().fragment);
     QCOMPARE(read->shading, QStringLiteral("phong"));
@@ -141,12 +141,13 @@ void TestRecoveryJournal::truncatedJournalIsRefused()
 {
     const QString path = QDir(m_dir->path()).filePath(QStringLiteral("7-7.journal"));
     writeFile(path, "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab");
-    QString error;
-    QVERIFY(!RecoveryJournal::readFile(path, &error));
-    QVERIFY2(error.contains(QStringLiteral("not a complete")), qPrintable(error));
+    const auto truncated = RecoveryJournal::readFile(path);
+    QVERIFY(!truncated);
+    QVERIFY2(truncated.error().contains(QStringLiteral("not a complete")), qPrintable(truncated.error()));
     writeFile(path, "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab\"}}");
-    QVERIFY(!RecoveryJournal::readFile(path, &error));
-    QVERIFY2(error.contains(QStringLiteral("missing")), qPrintable(error));
+    const auto partial = RecoveryJournal::readFile(path);
+    QVERIFY(!partial);
+    QVERIFY2(partial.error().contains(QStringLiteral("missing")), qPrintable(partial.error()));
     RecoveryJournal journal(m_dir->path());
     QVERIFY(journal.orphans().isEmpty());
 }

@@ -381,8 +381,8 @@ void TestSceneJson::saveThenLoadGivesEqualScene()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("saved.json"));
-    QString error;
-    QVERIFY2(saveSceneFile(fullScene(), path, &error), qPrintable(error));
+    const Result<> saved = saveSceneFile(fullScene(), path);
+    QVERIFY2(saved, qPrintable(saved.error()));
 
     const SceneLoadResult result = loadSceneFile(path);
     QVERIFY2(result.ok(), qPrintable(result.error));
@@ -398,9 +398,9 @@ void TestSceneJson::saveIntoMissingDirectoryFails()
     QVERIFY(dir.isValid());
     const QString missingDir = dir.filePath(QStringLiteral("no/such/dir"));
     const QString path = missingDir + QStringLiteral("/scene.json");
-    QString error;
-    QVERIFY(!saveSceneFile(sphereScene(), path, &error));
-    QVERIFY2(error.contains(path), qPrintable(error));
+    const Result<> saved = saveSceneFile(sphereScene(), path);
+    QVERIFY(!saved);
+    QVERIFY2(saved.error().contains(path), qPrintable(saved.error()));
     QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("no"))));
     QVERIFY(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty());
 }
@@ -410,8 +410,8 @@ void TestSceneJson::saveRefusesInvalidSceneAndKeepsOldFile()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("scene.json"));
-    QString error;
-    QVERIFY2(saveSceneFile(sphereScene(), path, &error), qPrintable(error));
+    const Result<> saved = saveSceneFile(sphereScene(), path);
+    QVERIFY2(saved, qPrintable(saved.error()));
     QFile original(path);
     QVERIFY(original.open(QIODevice::ReadOnly));
     const QByteArray before = original.readAll();
@@ -419,12 +419,14 @@ void TestSceneJson::saveRefusesInvalidSceneAndKeepsOldFile()
 
     Scene broken = sphereScene();
     broken.objects.front().transform.scale.y = 0.0;
-    QVERIFY(!saveSceneFile(broken, path, &error));
-    QVERIFY2(error.contains(QStringLiteral("transform.scale[1]")), qPrintable(error));
+    const Result<> refused = saveSceneFile(broken, path);
+    QVERIFY(!refused);
+    QVERIFY2(refused.error().contains(QStringLiteral("transform.scale[1]")), qPrintable(refused.error()));
 
     Scene empty;
-    QVERIFY(!saveSceneFile(empty, path, &error));
-    QVERIFY2(error.contains(QStringLiteral("objects:")), qPrintable(error));
+    const Result<> refusedEmpty = saveSceneFile(empty, path);
+    QVERIFY(!refusedEmpty);
+    QVERIFY2(refusedEmpty.error().contains(QStringLiteral("objects:")), qPrintable(refusedEmpty.error()));
 
     QVERIFY(original.open(QIODevice::ReadOnly));
     QCOMPARE(original.readAll(), before);

@@ -70,8 +70,8 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("s.json"));
-        QString error;
-        QVERIFY2(saveSceneFile(scene, path, &error), qPrintable(error));
+        const Result<> saved = saveSceneFile(scene, path);
+        QVERIFY2(saved, qPrintable(saved.error()));
         const SceneLoadResult file = loadSceneFile(path);
         QVERIFY2(file.ok(), qPrintable(file.error));
         QCOMPARE(file.scene->vertexShader, scene.vertexShader);
