@@ -223,14 +223,14 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
 
 } // namespace
 
-MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats, QStringList *warnings,
-                       QString *error)
+BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
 {
-    const auto fail = [error](const QString &message) {
-        if (error)
-            *error = message;
-        return MeshData();
+    BuiltMesh built;
+    const auto fail = [&built](const QString &message) {
+        built.error = message;
+        return built;
     };
+    QStringList *warnings = &built.warnings;
 
     // Corner and vertex numbers are 32-bit throughout, as the GPU's indices
     // are. Polygon corners fit (faceStart is 32-bit); triangulating an
@@ -246,7 +246,7 @@ MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, Bu
 
     Triangles triangles;
     gatherTriangles(mesh, triangles);
-    if (warnings && triangles.fanFallbacks != 0)
+    if (triangles.fanFallbacks != 0)
         *warnings << QStringLiteral("%1 polygons cross or fold onto themselves; they were split as fans")
                          .arg(qint64(triangles.fanFallbacks));
 
@@ -260,7 +260,7 @@ MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, Bu
     const NormalMethod method = fromFile       ? NormalMethod::Auto
         : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted
                                                : options.method;
-    if (warnings && options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
+    if (options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
         *warnings << QStringLiteral("%1 of %2 corners have no normal in the file; "
                                     "computed angle-weighted normals for the whole mesh")
                          .arg(qint64(missingNormals))
@@ -270,26 +270,24 @@ MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, Bu
         ? fileNormals(mesh, triangles, options, warnings)
         : computeNormals(mesh.positions, triangles.positions, method, options.creaseAngleDeg);
 
-    MeshData data;
+    MeshData &data = built.mesh;
     const std::size_t positionsUsed = weld(mesh.positions, triangles.positions, normals, data);
 
-    if (stats) {
-        *stats = BuildStats();
-        stats->fileVertices = qint64(mesh.positions.size());
-        stats->vertices = qint64(data.positions.size());
-        stats->triangles = qint64(data.triangleCount());
-        stats->normalsFromFile = fromFile;
-        stats->method = method;
-        if (!data.positions.empty()) {
-            stats->boundsMin = stats->boundsMax = data.positions.front();
-            for (const glm::vec3 &p : data.positions) {
-                stats->boundsMin = glm::min(stats->boundsMin, p);
-                stats->boundsMax = glm::max(stats->boundsMax, p);
-            }
+    BuildStats &stats = built.stats;
+    stats.fileVertices = qint64(mesh.positions.size());
+    stats.vertices = qint64(data.positions.size());
+    stats.triangles = qint64(data.triangleCount());
+    stats.normalsFromFile = fromFile;
+    stats.method = method;
+    if (!data.positions.empty()) {
+        stats.boundsMin = stats.boundsMax = data.positions.front();
+        for (const glm::vec3 &p : data.positions) {
+            stats.boundsMin = glm::min(stats.boundsMin, p);
+            stats.boundsMax = glm::max(stats.boundsMax, p);
         }
-        stats->splitVertices = stats->vertices - qint64(positionsUsed);
     }
-    return data;
+    stats.splitVertices = stats.vertices - qint64(positionsUsed);
+    return built;
 }
 
 } // namespace phonglab

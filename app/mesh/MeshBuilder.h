@@ -28,10 +28,15 @@ struct BuildStats {
 // NormalMethod::Auto and only when every corner has one; they are used as
 // written, only normalised where not unit length (zero or non-finite ones
 // are replaced by computed angle-weighted normals). Every compromise is
-// appended to `warnings`.
-// On failure (no faces; more triangle corners than 32-bit indices reach)
-// returns an empty MeshData and sets `error`.
-MeshData buildMeshData(const PolygonMesh &mesh, const NormalOptions &options, BuildStats *stats = nullptr,
-                       QStringList *warnings = nullptr, QString *error = nullptr);
+// listed in `warnings`. On failure (no faces; more triangle corners than
+// 32-bit indices reach) `mesh` is empty and `error` says why.
+struct BuiltMesh {
+    MeshData mesh;
+    BuildStats stats;
+    QStringList warnings;
+    QString error;
+    bool ok() const { return error.isEmpty(); }
+};
+BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options);
 
 } // namespace phonglab

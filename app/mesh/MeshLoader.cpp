@@ -78,14 +78,14 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
         return result;
     }
 
-    BuildStats build;
-    QString buildError;
-    MeshData mesh = buildMeshData(polygons, normals, &build, &result.warnings, &buildError);
-    if (mesh.positions.empty()) {
-        result.error = QStringLiteral("%1: %2").arg(
-            path, buildError.isEmpty() ? QStringLiteral("the mesh could not be built") : buildError);
+    BuiltMesh built = buildMeshData(polygons, normals);
+    result.warnings += built.warnings;
+    if (!built.ok()) {
+        result.error = QStringLiteral("%1: %2").arg(path, built.error);
         return result;
     }
+    const BuildStats &build = built.stats;
+    MeshData &mesh = built.mesh;
     MeshStats &s = result.stats;
     s.fileVertices = build.fileVertices;
     s.fileFaces = qint64(polygons.faceCount());

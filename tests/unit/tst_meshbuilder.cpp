@@ -116,7 +116,10 @@ void TestMeshBuilder::flatCubeSplitsAtEdges()
 {
     BuildStats stats;
     QStringList warnings;
-    const MeshData data = buildMeshData(flatCube(), NormalOptions(), &stats, &warnings);
+    const BuiltMesh built = buildMeshData(flatCube(), NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
+    warnings = built.warnings;
     QVERIFY(data.isValid());
     QVERIFY2(warnings.isEmpty(), qPrintable(warnings.join('\n')));
     QCOMPARE(stats.triangles, 12);
@@ -140,7 +143,9 @@ void TestMeshBuilder::flatCubeSplitsAtEdges()
 void TestMeshBuilder::smoothCubeStaysWelded()
 {
     BuildStats stats;
-    const MeshData data = buildMeshData(smoothCube(), NormalOptions(), &stats);
+    const BuiltMesh built = buildMeshData(smoothCube(), NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
     QCOMPARE(stats.vertices, 8);
     QCOMPARE(stats.splitVertices, 0);
     QVERIFY(stats.normalsFromFile);
@@ -154,20 +159,22 @@ void TestMeshBuilder::explicitMethodIgnoresFileNormals()
 {
     // Angle-weighted over the flat cube's positions: one smooth vertex each.
     BuildStats stats;
-    buildMeshData(flatCube(), {NormalMethod::AngleWeighted, std::nullopt}, &stats);
+    stats = buildMeshData(flatCube(), {NormalMethod::AngleWeighted, std::nullopt}).stats;
     QVERIFY(!stats.normalsFromFile);
     QCOMPARE(stats.method, NormalMethod::AngleWeighted);
     QCOMPARE(stats.vertices, 8);
     QCOMPARE(stats.splitVertices, 0);
     // A 30° crease cuts every edge: the flat cube again, computed.
-    const MeshData creased = buildMeshData(smoothCube(), {NormalMethod::AngleWeighted, 30.0}, &stats);
+    const BuiltMesh built = buildMeshData(smoothCube(), {NormalMethod::AngleWeighted, 30.0});
+    const MeshData &creased = built.mesh;
+    stats = built.stats;
     QCOMPARE(stats.vertices, 24);
     QCOMPARE(stats.splitVertices, 16);
     for (int f = 0; f < 6; ++f)
         for (int c = 0; c < 6; ++c)
             QCOMPARE(creased.normals[creased.indices[6 * f + c]], kCubeFaceNormals[f]);
     // Flat shading splits just as much, whatever the file says.
-    buildMeshData(smoothCube(), {NormalMethod::Flat, std::nullopt}, &stats);
+    stats = buildMeshData(smoothCube(), {NormalMethod::Flat, std::nullopt}).stats;
     QCOMPARE(stats.vertices, 24);
     QCOMPARE(stats.method, NormalMethod::Flat);
 }
@@ -186,7 +193,9 @@ void TestMeshBuilder::flatConeApexSplitsManyWays()
         addFace(mesh, {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
     }
     BuildStats stats;
-    const MeshData data = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt}, &stats);
+    const BuiltMesh built = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt});
+    const MeshData &data = built.mesh;
+    stats = built.stats;
     QCOMPARE(stats.vertices, 3 * segments);
     QCOMPARE(stats.splitVertices, 3 * segments - (segments + 1));
     for (int t = 0; t < segments; ++t) {
@@ -228,7 +237,9 @@ void TestMeshBuilder::quadAndPentagonKeepWinding()
     QVERIFY(glm::dot(pentagonNormal, kTiltedNormal) < 0.0);
 
     BuildStats stats;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
     QCOMPARE(stats.triangles, 2 + 3);
     for (std::size_t t = 0; t < 5; ++t) {
         const glm::dvec3 expected = t < 2 ? quadNormal : pentagonNormal;
@@ -278,7 +289,10 @@ void TestMeshBuilder::concavePolygon()
 
     BuildStats stats;
     QStringList warnings;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
+    warnings = built.warnings;
     QCOMPARE(stats.triangles, n - 2);
     QVERIFY(warnings.isEmpty());
     double sum = 0.0;
@@ -349,7 +363,10 @@ void TestMeshBuilder::bowtieFallsBackToFan()
     QCOMPARE(triangulate(mesh).fanFallbacks, 1u);
     BuildStats stats;
     QStringList warnings;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
+    warnings = built.warnings;
     QCOMPARE(stats.triangles, 2);
     QCOMPARE(warnings.size(), 1);
     QVERIFY2(warnings.first().startsWith("1 polygons"), qPrintable(warnings.first()));
@@ -365,7 +382,10 @@ void TestMeshBuilder::autoWithPartialNormalsComputes()
         mesh.cornerNormal[c] = PolygonMesh::kNoNormal;
     BuildStats stats;
     QStringList warnings;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
+    warnings = built.warnings;
     QVERIFY(!stats.normalsFromFile);
     QCOMPARE(stats.method, NormalMethod::AngleWeighted);
     QCOMPARE(stats.vertices, 8);
@@ -385,7 +405,10 @@ void TestMeshBuilder::unusableFileNormalsAreReplaced()
     mesh.normals[1] = glm::vec3(std::nanf(""), 0, 0);
     BuildStats stats;
     QStringList warnings;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), &stats, &warnings);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    stats = built.stats;
+    warnings = built.warnings;
     QVERIFY(stats.normalsFromFile);
     QCOMPARE(stats.vertices, 24);
     QCOMPARE(warnings.size(), 1);
@@ -411,7 +434,8 @@ void TestMeshBuilder::fileNormalsKeptAsWritten()
     addFace(mesh, {0, 1, 2});
     addFace(mesh, {2, 1, 3});
     mesh.cornerNormal = {0, 1, 2, 2, 1, 3};
-    const MeshData data = buildMeshData(mesh, NormalOptions());
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
     QCOMPARE(data.normals[data.indices[0]], glm::vec3(0.6f, 0.8f, 0.0f));
     QCOMPARE(data.normals[data.indices[1]], glm::vec3(0.267261f, 0.534522f, 0.801784f));
     QCOMPARE(data.normals[data.indices[2]], glm::vec3(0.0f, 0.6f, 0.8f));
@@ -427,7 +451,9 @@ void TestMeshBuilder::boundsAndStats()
         p = glm::vec3(1, 0, 0.25f) + p * glm::vec3(2, 2, 0.25f);
     mesh.positions.emplace_back(100, 100, 100);
     BuildStats stats;
-    const MeshData data = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt}, &stats);
+    const BuiltMesh built = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt});
+    const MeshData &data = built.mesh;
+    stats = built.stats;
     QCOMPARE(stats.fileVertices, 9);
     QCOMPARE(stats.vertices, 24);
     QCOMPARE(stats.splitVertices, 16);
@@ -442,7 +468,9 @@ void TestMeshBuilder::emptyMeshFails()
     PolygonMesh mesh;
     mesh.positions = {{0, 0, 0}};
     QString error;
-    const MeshData data = buildMeshData(mesh, NormalOptions(), nullptr, nullptr, &error);
+    const BuiltMesh built = buildMeshData(mesh, NormalOptions());
+    const MeshData &data = built.mesh;
+    error = built.error;
     QVERIFY(data.positions.empty());
     QVERIFY(data.indices.empty());
     QCOMPARE(error, QStringLiteral("the mesh has no faces"));
