@@ -149,9 +149,10 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     if (!renderer.setScene(scene, std::move(meshes), &error))
         return fail(args.scenePath, error);
     const StageFiles files = chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
-    const BuildReport program = buildStages(renderer, files, &error, &outcome.stages);
-    if (!error.isEmpty())
-        return fail(QString(), error);
+    const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
+    if (!built)
+        return fail(QString(), built.error());
+    const BuildReport &program = *built;
     for (const ShaderDiagnostic &d : program.diagnostics)
         if (d.isError() || !args.json)
             printErrLine(d.format());
@@ -200,10 +201,10 @@ int check(const CheckArgs &args, int argc, char **argv)
         outcome = runCheckOn(args, scene, &reference, &yours);
 
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
-        QString error;
-        if (!writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath, &error))
-            outcome =
-                CheckOutcome{CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, error)}, {}};
+        const Result<> written = writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath);
+        if (!written)
+            outcome = CheckOutcome{
+                CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, written.error())}, {}};
     }
     if (args.json) {
         printLine(QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented)).trimmed());

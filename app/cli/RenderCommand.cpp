@@ -95,12 +95,12 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     return args;
 }
 
-BuildReport buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene, QString *error)
+Result<BuildReport> buildProgram(Renderer &renderer, const RenderArgs &args, const Scene &scene)
 {
     Scene chosen = scene;
     chosen.shading = args.shading.value_or(scene.shading);
-    return buildStages(renderer, chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()),
-                       error);
+    return buildStages(renderer,
+                       chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()));
 }
 
 int render(const RenderArgs &args, int argc, char **argv)
@@ -126,11 +126,12 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(error);
         return kExitFailure;
     }
-    const BuildReport program = buildProgram(renderer, args, *loaded.scene, &error);
-    if (!error.isEmpty()) {
-        printError(error);
+    const Result<BuildReport> built = buildProgram(renderer, args, *loaded.scene);
+    if (!built) {
+        printError(built.error());
         return kExitFailure;
     }
+    const BuildReport &program = *built;
     for (const ShaderDiagnostic &d : program.diagnostics)
         printErrLine(d.format());
     if (!program.ok) {
@@ -144,8 +145,8 @@ int render(const RenderArgs &args, int argc, char **argv)
     }
     if (const std::optional<QString> depth = depthPrecisionWarning(renderer.depthRange()))
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, *depth));
-    if (!writePng(image, args.outputPath, &error)) {
-        printError(error);
+    if (const Result<> written = writePng(image, args.outputPath); !written) {
+        printError(written.error());
         return kExitFailure;
     }
     return kExitOk;

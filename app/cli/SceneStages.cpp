@@ -55,37 +55,31 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
     return {};
 }
 
-BuildReport buildStages(Renderer &renderer, const StageFiles &files, QString *error,
-                        std::vector<ShaderStageText> *texts)
+Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files, std::vector<ShaderStageText> *texts)
 {
-    const ShaderSource vs = ShaderSource::fromFile(files.vertex, error);
-    const ShaderSource fs = ShaderSource::fromFile(files.fragment, error);
-    if (!error->isEmpty())
-        return {};
+    const Result<StageSources> read = readStageFiles(files.vertex, files.fragment);
+    if (!read)
+        return fail(read.error());
+    const StageSources &stages = *read;
     if (texts) {
-        texts->push_back({vs.name, QString::fromUtf8(vs.code), true});
-        texts->push_back({fs.name, QString::fromUtf8(fs.code), false});
+        texts->push_back({stages.vertex.name, QString::fromUtf8(stages.vertex.code), true});
+        texts->push_back({stages.fragment.name, QString::fromUtf8(stages.fragment.code), false});
     }
-    return renderer.setProgramSources(vs, fs);
+    return renderer.setProgramSources(stages.vertex, stages.fragment);
 }
 
-bool writePng(const QImage &image, const QString &path, QString *error)
+Result<> writePng(const QImage &image, const QString &path)
 {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
+    if (!file.open(QIODevice::WriteOnly))
+        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
     if (!image.save(&file, "PNG")) {
         file.cancelWriting();
-        *error = QStringLiteral("%1: PNG encoding failed").arg(path);
-        return false;
+        return fail(QStringLiteral("%1: PNG encoding failed").arg(path));
     }
-    if (!file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    if (!file.commit())
+        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+    return {};
 }
 
 } // namespace phonglab::cli

@@ -31,12 +31,12 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
 QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                           std::optional<ShadingMethod> *shading);
 
-// Reads both files and builds the program. *error is set (and nothing built)
-// when a file cannot be read; `texts` receives what was read.
-BuildReport buildStages(Renderer &renderer, const StageFiles &files, QString *error,
-                        std::vector<ShaderStageText> *texts = nullptr);
+// Reads both files and builds the program: its report, or (nothing built)
+// why a file cannot be read. `texts` receives what was read.
+Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,
+                                std::vector<ShaderStageText> *texts = nullptr);
 
-// Writes a PNG that appears only once complete. False with *error.
-bool writePng(const QImage &image, const QString &path, QString *error);
+// Writes a PNG that appears only once complete.
+Result<> writePng(const QImage &image, const QString &path);
 
 } // namespace phonglab::cli

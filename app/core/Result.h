@@ -1,5 +1,6 @@
 #pragma once
 #include <QString>
+#include <QtGlobal>
 
 #include <optional>
 #include <utility>
@@ -49,15 +50,23 @@ public:
     T &&operator*() && { return std::move(*m_value); }
     T *operator->() { return &*m_value; }
     const T *operator->() const { return &*m_value; }
-    T &value() & { return *m_value; }
-    const T &value() const & { return *m_value; }
-    T &&value() && { return std::move(*m_value); }
+    // Checked: a failed Result stops the program with its error, where *r
+    // (like an optional's) is undefined.
+    T &value() & { return (check(), *m_value); }
+    const T &value() const & { return (check(), *m_value); }
+    T &&value() && { return (check(), std::move(*m_value)); }
     T valueOr(T fallback) const & { return m_value ? *m_value : std::move(fallback); }
     // The value, dropping the error: for callers that only need to know
     // whether there is one.
     std::optional<T> toOptional() && { return std::move(m_value); }
 
 private:
+    void check() const
+    {
+        if (!m_value)
+            qFatal("value() of a failed Result: %s", qPrintable(m_error));
+    }
+
     std::optional<T> m_value;
     QString m_error;
 };

@@ -19,9 +19,14 @@ Renderer::~Renderer() = default;
 bool Renderer::initialize(QString *error)
 {
     initializeOpenGLFunctions();
-    const ShaderSource vs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.vert")), error);
-    const ShaderSource fs = ShaderSource::fromFile(shaderPath(QStringLiteral("marker.frag")), error);
-    const BuildReport marker = m_markerProgram.build(vs, fs);
+    const Result<StageSources> markerFiles =
+        readStageFiles(shaderPath(QStringLiteral("marker.vert")), shaderPath(QStringLiteral("marker.frag")));
+    if (!markerFiles) {
+        if (error)
+            *error = markerFiles.error();
+        return false;
+    }
+    const BuildReport marker = m_markerProgram.build(markerFiles->vertex, markerFiles->fragment);
     if (!marker.ok) {
         if (error)
             *error = QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary();
@@ -111,15 +116,14 @@ void Renderer::updateSceneParameters(const Scene &scene)
 
 BuildReport Renderer::loadShading(ShadingMethod method)
 {
-    QString error;
-    const ShaderSource vs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Vertex), &error);
-    const ShaderSource fs = ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Fragment), &error);
-    if (!error.isEmpty()) {
+    const Result<StageSources> shipped = readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
+                                                        shippedShaderPath(method, ShaderStage::Fragment));
+    if (!shipped) {
         BuildReport failed;
-        failed.diagnostics.push_back({BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, error});
+        failed.diagnostics.push_back({BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, shipped.error()});
         return failed;
     }
-    return setProgramSources(vs, fs);
+    return setProgramSources(shipped->vertex, shipped->fragment);
 }
 
 BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)

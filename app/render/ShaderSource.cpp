@@ -4,15 +4,23 @@
 
 namespace phonglab {
 
-ShaderSource ShaderSource::fromFile(const QString &path, QString *error)
+Result<ShaderSource> ShaderSource::fromFile(const QString &path)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = QStringLiteral("%1: cannot read shader: %2").arg(path, file.errorString());
-        return {path, {}};
-    }
-    return {path, file.readAll()};
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("%1: cannot read shader: %2").arg(path, file.errorString()));
+    return ShaderSource{path, file.readAll()};
+}
+
+Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fragmentPath)
+{
+    Result<ShaderSource> vertex = ShaderSource::fromFile(vertexPath);
+    if (!vertex)
+        return fail(vertex.error());
+    Result<ShaderSource> fragment = ShaderSource::fromFile(fragmentPath);
+    if (!fragment)
+        return fail(fragment.error());
+    return StageSources{std::move(*vertex), std::move(*fragment)};
 }
 
 namespace {

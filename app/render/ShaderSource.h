@@ -1,4 +1,6 @@
 #pragma once
+#include "core/Result.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
@@ -11,8 +13,17 @@ struct ShaderSource {
     QString name;
     QByteArray code;
 
-    static ShaderSource fromFile(const QString &path, QString *error);
+    // The file's text, or why it cannot be read ("PATH: cannot read shader: ...").
+    static Result<ShaderSource> fromFile(const QString &path);
 };
+
+// A program's two stages.
+struct StageSources {
+    ShaderSource vertex;
+    ShaderSource fragment;
+};
+// Both files read, or the first one's failure.
+Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fragmentPath);
 
 // The text handed to the driver: the user's #version line first (GLSL needs
 // it there), then the injected `#define`s, then `#line` so that every line

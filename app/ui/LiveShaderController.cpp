@@ -21,10 +21,17 @@ constexpr int kStatusTimeoutMs = 8000;
 constexpr int kSlowBuildNoteMs = 250;
 constexpr int kHangNoteMs = 5000;
 
-std::pair<ShaderSource, ShaderSource> shippedSources(ShadingMethod method, QString *error)
+Result<StageSources> shippedSources(ShadingMethod method)
 {
-    return {ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Vertex), error),
-            ShaderSource::fromFile(shippedShaderPath(method, ShaderStage::Fragment), error)};
+    return readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
+                          shippedShaderPath(method, ShaderStage::Fragment));
+}
+
+// The text hash of what the viewport builds for `method` by itself.
+QByteArray shippedHash(ShadingMethod method)
+{
+    const StageSources shipped = shippedSources(method).valueOr(StageSources{});
+    return recoveryTextHash(shipped.vertex.code, shipped.fragment.code);
 }
 
 double toMs(qint64 ns)
@@ -111,13 +118,12 @@ void LiveShaderController::setWarmUp(WarmUp warmUp)
 
 void LiveShaderController::showPreset(ShadingMethod method)
 {
-    QString error;
-    const auto [vertex, fragment] = shippedSources(method, &error);
-    if (!error.isEmpty()) {
-        m_dock->setCompileStatus(error, false);
+    const Result<StageSources> shipped = shippedSources(method);
+    if (!shipped) {
+        m_dock->setCompileStatus(shipped.error(), false);
         return;
     }
-    m_dock->setSources(vertex, fragment);
+    m_dock->setSources(shipped->vertex, shipped->fragment);
     m_dock->setPreset(method);
     m_shading = method;
     m_recovery->setShading(shadingName(method));
@@ -193,9 +199,7 @@ void LiveShaderController::onGlInitialized()
 {
     setState(State::Idle);
     // The viewport has just built its scene's shipped program itself.
-    QString error;
-    const auto [vertex, fragment] = shippedSources(m_viewport->currentScene().shading, &error);
-    m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
+    m_appliedHash = m_lastBuiltHash = shippedHash(m_viewport->currentScene().shading);
     startWorker();
     const bool wanted = std::exchange(m_queued, std::nullopt).has_value();
     if (m_autoBuild == AutoBuild::OnlyOnF5)
@@ -210,9 +214,7 @@ void LiveShaderController::onGlInitialized()
 // built again if it differs.
 void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
 {
-    QString error;
-    const auto [vertex, fragment] = shippedSources(method, &error);
-    m_appliedHash = m_lastBuiltHash = recoveryTextHash(vertex.code, fragment.code);
+    m_appliedHash = m_lastBuiltHash = shippedHash(method);
     if (method == m_shading && m_autoBuild == AutoBuild::AfterPause && currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
 }

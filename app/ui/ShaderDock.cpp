@@ -265,11 +265,10 @@ bool ShaderDock::openFiles(const QStringList &paths, QString *error)
         const auto stage = stageFromSuffix(path);
         if (!stage && paths.size() == 2)
             return fail(tr("%1: cannot tell which stage it is (use .vert or .frag)").arg(path));
-        QString readError;
-        ShaderSource source = ShaderSource::fromFile(path, &readError);
-        if (!readError.isEmpty())
-            return fail(readError);
-        opened.append({stage.value_or(currentStage()), source});
+        Result<ShaderSource> source = ShaderSource::fromFile(path);
+        if (!source)
+            return fail(source.error());
+        opened.append({stage.value_or(currentStage()), *source});
     }
     if (opened.size() == 2 && opened[0].first == opened[1].first)
         return fail(tr("Both files are %1 shaders.").arg(stageName(opened[0].first)));

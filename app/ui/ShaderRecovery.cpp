@@ -19,10 +19,8 @@ namespace {
 ShaderSource baseSource(const RecoveryBuffer &buffer)
 {
     if (!buffer.filePath.isEmpty() && QFileInfo::exists(buffer.filePath)) {
-        QString error;
-        ShaderSource source = ShaderSource::fromFile(buffer.filePath, &error);
-        if (error.isEmpty())
-            return source;
+        if (Result<ShaderSource> source = ShaderSource::fromFile(buffer.filePath))
+            return std::move(*source);
     }
     return {buffer.filePath, buffer.text};
 }

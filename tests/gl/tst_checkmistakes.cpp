@@ -43,13 +43,10 @@ private slots:
         Scene scene = m_scene;
         scene.shading = *shadingFromName(method);
         const CheckReference reference = makeTestCheckReference(scene);
-        QString error;
-        const ShaderSource vs =
-            ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)), &error);
-        const ShaderSource fs =
-            ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/%1.frag").arg(method)), &error);
-        QVERIFY2(error.isEmpty(), qPrintable(error));
-        const CheckReport report = checkRender(toRgbImage(render(vs, fs)), reference);
+        const Result<StageSources> shipped = readStageFiles(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)),
+                                                            sourcePath(QStringLiteral("shaders/%1.frag").arg(method)));
+        QVERIFY2(shipped, qPrintable(shipped.error()));
+        const CheckReport report = checkRender(toRgbImage(render(shipped->vertex, shipped->fragment)), reference);
         QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
         QVERIFY(report.comparison.pixelsCompared > 10000);
     }

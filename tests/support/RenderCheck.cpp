@@ -116,20 +116,18 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
 
 ShaderSource testShader(const QString &relative)
 {
-    QString error;
-    ShaderSource source = ShaderSource::fromFile(QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative, &error);
-    if (!error.isEmpty())
-        qFatal("%s", qPrintable(error));
-    return source;
+    Result<ShaderSource> source = ShaderSource::fromFile(QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative);
+    if (!source)
+        qFatal("%s", qPrintable(source.error()));
+    return std::move(*source);
 }
 
 ShaderSource shippedShader(const QString &fileName)
 {
-    QString error;
-    ShaderSource source = ShaderSource::fromFile(shaderPath(fileName), &error);
-    if (!error.isEmpty())
-        qFatal("%s", qPrintable(error));
-    return source;
+    Result<ShaderSource> source = ShaderSource::fromFile(shaderPath(fileName));
+    if (!source)
+        qFatal("%s", qPrintable(source.error()));
+    return std::move(*source);
 }
 
 Scene loadTestScene(const QString &name)

@@ -10,11 +10,10 @@ namespace {
 
 ShaderSource readShipped(const QString &fileName)
 {
-    QString error;
-    ShaderSource source = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/") + fileName), &error);
-    if (!error.isEmpty())
-        qFatal("%s", qPrintable(error));
-    return source;
+    Result<ShaderSource> source = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/") + fileName));
+    if (!source)
+        qFatal("%s", qPrintable(source.error()));
+    return std::move(*source);
 }
 
 // Replaces `from` (which must occur) by `to`, and names the result after

@@ -148,8 +148,8 @@ void TestShaderEditor::configure(ShaderDock &dock) const
 void TestShaderEditor::loadShipped(ShaderDock &dock) const
 {
     configure(dock);
-    dock.setSources(ShaderSource::fromFile(shippedPath(QStringLiteral("phong.vert")), nullptr),
-                    ShaderSource::fromFile(shippedPath(QStringLiteral("phong.frag")), nullptr));
+    dock.setSources(ShaderSource::fromFile(shippedPath(QStringLiteral("phong.vert"))).value(),
+                    ShaderSource::fromFile(shippedPath(QStringLiteral("phong.frag"))).value());
 }
 
 void TestShaderEditor::lexerColoursKeywordsBuiltinsAndComments()
@@ -453,7 +453,7 @@ void TestShaderEditor::dirtyMarkerFollowsEditsAndSaves()
     writeExternally(path, kSmallShader);
     ShaderDock dock;
     configure(dock);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path, nullptr));
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
     QTabWidget *tabs = dock.tabs();
     const int tab = tabs->indexOf(dock.editor(ShaderStage::Fragment));
     QCOMPARE(tabs->tabText(tab), QStringLiteral("dirty.frag"));
@@ -482,7 +482,7 @@ void TestShaderEditor::externalChangeReloadsCleanBuffer()
     writeExternally(path, kSmallShader);
     ShaderDock dock;
     configure(dock);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path, nullptr));
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
     QSignalSpy edited(&dock, &ShaderDock::textEdited);
 
     const QByteArray changed = kSmallShader + "// changed elsewhere\n";
@@ -499,7 +499,7 @@ void TestShaderEditor::externalChangeKeepsDirtyBuffer()
     ShaderDock dock;
     configure(dock);
     dock.files()->setExternalChangePolicy(ShaderFileSet::ExternalChangePolicy::Keep);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path, nullptr));
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// mine\n"), 0, 0);
     const QByteArray mine = dock.text(ShaderStage::Fragment);
     QSignalSpy handled(dock.files(), &ShaderFileSet::externalChangeHandled);
@@ -524,7 +524,7 @@ void TestShaderEditor::externalChangeReloadPolicy()
     ShaderDock dock;
     configure(dock);
     dock.files()->setExternalChangePolicy(ShaderFileSet::ExternalChangePolicy::Reload);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path, nullptr));
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// mine\n"), 0, 0);
     QSignalSpy handled(dock.files(), &ShaderFileSet::externalChangeHandled);
 
@@ -542,7 +542,7 @@ void TestShaderEditor::externalChangeAsksTheUser()
     ShaderDock dock;
     configure(dock);
     QCOMPARE(dock.files()->externalChangePolicy(), ShaderFileSet::ExternalChangePolicy::Ask);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path, nullptr));
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// mine\n"), 0, 0);
     const QByteArray mine = dock.text(ShaderStage::Fragment);
     QSignalSpy handled(dock.files(), &ShaderFileSet::externalChangeHandled);
