@@ -87,9 +87,12 @@ BenchEngine::~BenchEngine() = default;
 bool BenchEngine::initialize(QString *error)
 {
     m_offscreen = std::make_unique<OffscreenRenderer>();
-    if (m_offscreen->create(error))
+    const Result<> created = m_offscreen->create();
+    if (created)
         return true;
     m_offscreen.reset();
+    if (error)
+        *error = created.error();
     return false;
 }
 
@@ -199,8 +202,8 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
     state.previousTriangles = triangles;
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
-    if (!renderer.setScene(scene, std::move(meshes), error)) {
-        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), *error);
+    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set) {
+        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), set.error());
         return false;
     }
     for (ShadingMethod method : options.methods) {

@@ -142,12 +142,11 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
         objectMeshes.push_back(meshes.entries.value(meshKey(scene, object)).mesh);
 
     OffscreenRenderer offscreen;
-    QString error;
-    if (!offscreen.create(&error))
-        return fail(QString(), error);
+    if (const Result<> created = offscreen.create(); !created)
+        return fail(QString(), created.error());
     Renderer &renderer = offscreen.renderer();
-    if (!renderer.setScene(scene, std::move(meshes), &error))
-        return fail(args.scenePath, error);
+    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
+        return fail(args.scenePath, set.error());
     const StageFiles files = chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
     const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
     if (!built)

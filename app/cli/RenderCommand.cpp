@@ -116,14 +116,13 @@ int render(const RenderArgs &args, int argc, char **argv)
     chooseHeadlessPlatformIfNeeded();
     QGuiApplication app(argc, argv);
     OffscreenRenderer offscreen;
-    QString error;
-    if (!offscreen.create(&error)) {
-        printError(error);
+    if (const Result<> created = offscreen.create(); !created) {
+        printError(created.error());
         return kExitFailure;
     }
     Renderer &renderer = offscreen.renderer();
-    if (!renderer.setScene(*loaded.scene, &error)) {
-        printError(error);
+    if (const Result<> set = renderer.setScene(*loaded.scene); !set) {
+        printError(set.error());
         return kExitFailure;
     }
     const Result<BuildReport> built = buildProgram(renderer, args, *loaded.scene);

@@ -20,13 +20,6 @@ qint64 monotonicNs()
         .count();
 }
 
-bool fail(QString *error, const QString &message)
-{
-    if (error)
-        *error = message;
-    return false;
-}
-
 } // namespace
 
 BuildThread::BuildThread(QObject *parent)
@@ -39,22 +32,22 @@ BuildThread::~BuildThread()
     stop();
 }
 
-bool BuildThread::start(QOpenGLContext *shareContext, QString *error)
+Result<> BuildThread::start(QOpenGLContext *shareContext)
 {
     stop();
     if (!shareContext)
-        return fail(error, QStringLiteral("the viewport has no OpenGL context yet"));
+        return fail(QStringLiteral("the viewport has no OpenGL context yet"));
     auto context = std::make_unique<QOpenGLContext>();
     context->setFormat(shareContext->format());
     context->setShareContext(shareContext);
     if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
-        return fail(error, QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
+        return fail(QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
     // QOffscreenSurface must be created (and destroyed) on the GUI thread.
     auto surface = std::make_unique<QOffscreenSurface>();
     surface->setFormat(context->format());
     surface->create();
     if (!surface->isValid())
-        return fail(error, QStringLiteral("cannot create an offscreen surface for the compile thread"));
+        return fail(QStringLiteral("cannot create an offscreen surface for the compile thread"));
     // For the viewport's own context when it is lent: a surface of its format.
     auto lentSurface = std::make_unique<QOffscreenSurface>();
     lentSurface->setFormat(shareContext->format());
@@ -68,21 +61,20 @@ bool BuildThread::start(QOpenGLContext *shareContext, QString *error)
     context->moveToThread(thread.get());
     thread->start();
 
-    bool ok = false;
-    QString reason;
+    Result<> initialized;
     QThread *gui = this->thread();
     QMetaObject::invokeMethod(
         worker,
         [&] {
-            ok = worker->initialize(&reason);
-            if (!ok)
+            initialized = worker->initialize();
+            if (!initialized)
                 worker->shutdown(gui);
         },
         Qt::BlockingQueuedConnection);
-    if (!ok) {
+    if (!initialized) {
         thread->quit();
         thread->wait();
-        return fail(error, reason);
+        return initialized;
     }
     m_parallelShaderCompile = worker->hasParallelShaderCompile();
     m_thread = std::move(thread);
@@ -93,7 +85,7 @@ bool BuildThread::start(QOpenGLContext *shareContext, QString *error)
     ++m_generation;
     QMutexLocker lock(&m_mailbox->mutex);
     m_mailbox->receiver = this;
-    return true;
+    return {};
 }
 
 void BuildThread::stop()
@@ -171,7 +163,7 @@ void BuildThread::deliver(const BuildReply &reply, quint64 generation)
 void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, WarmDone done)
 {
     if (!m_worker) {
-        done(-1, QStringLiteral("the build thread is not running"));
+        done(fail(QStringLiteral("the build thread is not running")));
         return;
     }
     BuildWorker *worker = m_worker;
@@ -180,13 +172,12 @@ void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, War
     QMetaObject::invokeMethod(
         worker,
         [mailbox = m_mailbox, worker, lent, surface, program, owner, done] {
-            QString error;
-            const qint64 ns = worker->warmInLentContext(lent, surface, program, owner, &error);
+            const Result<qint64> warmed = worker->warmInLentContext(lent, surface, program, owner);
             lent.returned->release(); // the context is back on the owner's thread
             QMutexLocker lock(&mailbox->mutex);
             if (BuildThread *receiver = mailbox->receiver)
                 QMetaObject::invokeMethod(
-                    receiver, [done, ns, error] { done(ns, error); }, Qt::QueuedConnection);
+                    receiver, [done, warmed] { done(warmed); }, Qt::QueuedConnection);
         },
         Qt::QueuedConnection);
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include "BuildWorker.h"
+#include "core/Result.h"
 
 #include <QMutex>
 #include <QObject>
@@ -28,9 +29,9 @@ public:
     ~BuildThread() override;
 
     // Creates the worker context sharing objects with `shareContext` (which
-    // must exist) and starts the thread. False with a reason when no shared
-    // context can be had; callers then build on the GUI thread.
-    bool start(QOpenGLContext *shareContext, QString *error);
+    // must exist) and starts the thread. A failure when no shared context
+    // can be had; callers then build on the GUI thread.
+    Result<> start(QOpenGLContext *shareContext);
     // Finishes the build in progress, frees the worker's GL objects and joins
     // the thread. Replies not delivered yet are dropped (their programs are
     // freed with the worker's context, or with the share group).
@@ -46,9 +47,10 @@ public:
 
     // Draws `program` once in the viewport's own context, which the caller
     // has lent to workerThread(). The worker gives it back (moves it to this
-    // thread, releases lent.returned); then `done` runs here with the time it
-    // took, or -1 and a reason. Queued behind any build in progress.
-    using WarmDone = std::function<void(qint64 warmNs, const QString &error)>;
+    // thread, releases lent.returned); then `done` runs here with the
+    // nanoseconds it took, or why it could not. Queued behind any build in
+    // progress.
+    using WarmDone = std::function<void(const Result<qint64> &warmNs)>;
     void warmInLentContext(const LentContext &lent, GLuint program, WarmDone done);
     QThread *workerThread() const { return m_thread.get(); }
 

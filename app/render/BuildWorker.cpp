@@ -14,18 +14,15 @@ BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
 {
 }
 
-bool BuildWorker::initialize(QString *error)
+Result<> BuildWorker::initialize()
 {
-    if (!m_context->makeCurrent(m_surface)) {
-        if (error)
-            *error = QStringLiteral("the shared OpenGL context cannot be made current on the compile thread");
-        return false;
-    }
+    if (!m_context->makeCurrent(m_surface))
+        return fail(QStringLiteral("the shared OpenGL context cannot be made current on the compile thread"));
     m_parallelShaderCompile = m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
     m_rendererName =
         QString::fromLatin1(reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
-    return true;
+    return {};
 }
 
 BuildReply BuildWorker::build(const BuildJob &request)
@@ -41,7 +38,7 @@ BuildReply BuildWorker::build(const BuildJob &request)
     timer.start();
     if (built.ok() && request.warm && m_warmSamples != request.warmSamples) {
         m_warmer.destroy(); // the viewport's framebuffer changed (or this is the first warm-up)
-        m_warmSamples = m_warmer.create(request.warmSamples, nullptr) ? request.warmSamples : -1;
+        m_warmSamples = m_warmer.create(request.warmSamples) ? request.warmSamples : -1;
     }
     if (built.ok() && request.warm && m_warmer.isCreated())
         m_warmer.warm(built.program); // ends in glFinish
@@ -57,24 +54,26 @@ void BuildWorker::release(GLuint program)
         m_context->extraFunctions()->glDeleteProgram(program);
 }
 
-qint64 BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
-                                      QThread *owner, QString *error)
+Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
+                                              QThread *owner)
 {
     QElapsedTimer timer;
     timer.start();
-    bool ok = lent.context->makeCurrent(surface);
-    if (!ok && error)
-        *error = QStringLiteral("the viewport's context cannot be made current on the build thread");
-    if (ok && lent.whileCurrent)
+    Result<> ready = lent.context->makeCurrent(surface)
+        ? Result<>()
+        : fail(QStringLiteral("the viewport's context cannot be made current on the build thread"));
+    if (ready && lent.whileCurrent)
         lent.whileCurrent();
-    if (ok && !lent.warmer->isCreated())
-        ok = lent.warmer->create(lent.samples, error);
-    if (ok)
+    if (ready && !lent.warmer->isCreated())
+        ready = lent.warmer->create(lent.samples);
+    if (ready)
         lent.warmer->warm(program); // ends in glFinish
     lent.context->doneCurrent();
     lent.context->moveToThread(owner);
     m_context->makeCurrent(m_surface); // ready for the next build
-    return ok ? timer.nsecsElapsed() : -1;
+    if (!ready)
+        return fail(ready.error());
+    return timer.nsecsElapsed();
 }
 
 void BuildWorker::shutdown(QThread *owner)

@@ -2,6 +2,7 @@
 #include "LentContext.h"
 #include "ProgramBuilder.h"
 #include "WarmUpDraw.h"
+#include "core/Result.h"
 
 #include <QObject>
 
@@ -41,16 +42,16 @@ class BuildWorker : public QObject
 public:
     BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface);
 
-    bool initialize(QString *error);
+    Result<> initialize();
     BuildReply build(const BuildJob &request);
     void release(GLuint program);
     // Makes a context lent to this thread (see LentContext) current on
     // `surface`, runs lent.whileCurrent, draws `program` once, then hands the
     // context back to `owner` and makes the worker's own context current
-    // again. The nanoseconds it took, or -1 with a reason when the lent
-    // context could not be used.
-    qint64 warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program, QThread *owner,
-                             QString *error);
+    // again. The nanoseconds it took, or why the lent context could not be
+    // used.
+    Result<qint64> warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
+                                     QThread *owner);
     // Frees the worker's GL objects, releases the context and hands it back
     // to `owner` (the GUI thread) so that it can be deleted there.
     void shutdown(QThread *owner);

@@ -15,39 +15,33 @@ OffscreenRenderer::~OffscreenRenderer()
     destroy();
 }
 
-bool OffscreenRenderer::create(QString *error)
+Result<> OffscreenRenderer::create()
 {
     const QSurfaceFormat format = phonglabSurfaceFormat(0);
     m_context = std::make_unique<QOpenGLContext>();
     m_context->setFormat(format);
     if (!m_context->create()) {
-        if (error)
-            *error = QStringLiteral("no OpenGL context could be created (no display or driver; "
-                                    "run under an X server, e.g. `xvfb-run -a phonglab ...`)");
         m_context.reset();
-        return false;
+        return fail(QStringLiteral("no OpenGL context could be created (no display or driver; "
+                                   "run under an X server, e.g. `xvfb-run -a phonglab ...`)"));
     }
     const QSurfaceFormat got = m_context->format();
     if (got.version() < qMakePair(3, 3)) {
-        if (error)
-            *error = QStringLiteral("OpenGL 3.3 is required, the driver offers %1.%2")
-                         .arg(got.majorVersion())
-                         .arg(got.minorVersion());
         m_context.reset();
-        return false;
+        return fail(QStringLiteral("OpenGL 3.3 is required, the driver offers %1.%2")
+                        .arg(got.majorVersion())
+                        .arg(got.minorVersion()));
     }
     m_surface = std::make_unique<QOffscreenSurface>();
     m_surface->setFormat(got);
     m_surface->create();
     if (!m_context->makeCurrent(m_surface.get())) {
-        if (error)
-            *error = QStringLiteral("the OpenGL context could not be made current on an offscreen surface");
         destroy();
-        return false;
+        return fail(QStringLiteral("the OpenGL context could not be made current on an offscreen surface"));
     }
     m_rendererName =
         QString::fromLatin1(reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
-    return m_renderer.initialize(error);
+    return m_renderer.initialize();
 }
 
 void OffscreenRenderer::makeCurrent()

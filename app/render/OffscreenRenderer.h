@@ -1,6 +1,7 @@
 #pragma once
 #include "FrameTiming.h"
 #include "Renderer.h"
+#include "core/Result.h"
 
 #include <QImage>
 #include <QOffscreenSurface>
@@ -20,9 +21,9 @@ public:
     OffscreenRenderer();
     ~OffscreenRenderer();
 
-    // Creates the context. False with a reason when no OpenGL 3.3 context can
-    // be had (no display, no driver).
-    bool create(QString *error);
+    // Creates the context. A failure when no OpenGL 3.3 context can be had
+    // (no display, no driver).
+    Result<> create();
 
     // Must be called with nothing else current on this thread; makes the
     // context current and leaves it so.

@@ -16,25 +16,19 @@ constexpr double kMarkerRadius = 0.06; // world units
 Renderer::Renderer() = default;
 Renderer::~Renderer() = default;
 
-bool Renderer::initialize(QString *error)
+Result<> Renderer::initialize()
 {
     initializeOpenGLFunctions();
     const Result<StageSources> markerFiles =
         readStageFiles(shaderPath(QStringLiteral("marker.vert")), shaderPath(QStringLiteral("marker.frag")));
-    if (!markerFiles) {
-        if (error)
-            *error = markerFiles.error();
-        return false;
-    }
+    if (!markerFiles)
+        return fail(markerFiles.error());
     const BuildReport marker = m_markerProgram.build(markerFiles->vertex, markerFiles->fragment);
-    if (!marker.ok) {
-        if (error)
-            *error = QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary();
-        return false;
-    }
+    if (!marker.ok)
+        return fail(QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary());
     m_markerMesh.upload(makeUvSphere(16, 8));
     m_initialized = true;
-    return true;
+    return {};
 }
 
 void Renderer::cleanup()
@@ -51,10 +45,10 @@ void Renderer::cleanup()
     m_initialized = false;
 }
 
-bool Renderer::setScene(const Scene &scene, QString *error)
+Result<> Renderer::setScene(const Scene &scene)
 {
     SceneMeshes meshes = loadSceneMeshes(scene, loadedKeys());
-    return setScene(scene, std::move(meshes), error);
+    return setScene(scene, std::move(meshes));
 }
 
 QSet<QString> Renderer::loadedKeys() const
@@ -65,13 +59,10 @@ QSet<QString> Renderer::loadedKeys() const
     return keys;
 }
 
-bool Renderer::setScene(const Scene &scene, SceneMeshes &&loaded, QString *error)
+Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
 {
-    if (!loaded.ok()) {
-        if (error)
-            *error = loaded.error;
-        return false;
-    }
+    if (!loaded.ok())
+        return fail(loaded.error);
     QHash<QString, std::shared_ptr<GpuMesh>> meshes;
     QHash<QString, SceneMeshes::Entry> info;
     for (const SceneObject &object : scene.objects) {
@@ -85,12 +76,10 @@ bool Renderer::setScene(const Scene &scene, SceneMeshes &&loaded, QString *error
         }
         auto it = loaded.entries.find(key);
         if (it == loaded.entries.end() || !it->mesh) {
-            if (error)
-                *error = QStringLiteral("%1: mesh was not loaded").arg(key);
             for (auto m = meshes.begin(); m != meshes.end(); ++m)
                 if (!m_meshes.contains(m.key()))
                     m.value()->destroy();
-            return false;
+            return fail(QStringLiteral("%1: mesh was not loaded").arg(key));
         }
         auto gpu = std::make_shared<GpuMesh>();
         gpu->upload(*it->mesh);
@@ -106,7 +95,7 @@ bool Renderer::setScene(const Scene &scene, SceneMeshes &&loaded, QString *error
     m_scene = scene;
     m_pendingUniforms = scene.uniforms;
     m_pendingTriedProgram = 0;
-    return true;
+    return {};
 }
 
 void Renderer::updateSceneParameters(const Scene &scene)

@@ -3,6 +3,7 @@
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
 #include "core/DepthRange.h"
+#include "core/Result.h"
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
 
@@ -32,18 +33,18 @@ public:
     Renderer(const Renderer &) = delete;
     Renderer &operator=(const Renderer &) = delete;
 
-    // Prepares GL state and the light-marker program. False (with a reason)
-    // when the context cannot run PhongLab's shaders.
-    bool initialize(QString *error);
+    // Prepares GL state and the light-marker program. A failure when the
+    // context cannot run PhongLab's shaders.
+    Result<> initialize();
     void cleanup();
 
     // Loads every object's mesh and uploads it. On failure the previous
     // scene stays. Blocks while loading: the GUI loads with
     // loadSceneMeshes() on a worker thread and calls the overload below.
-    bool setScene(const Scene &scene, QString *error);
+    Result<> setScene(const Scene &scene);
     // Uploads meshes loaded elsewhere (loadSceneMeshes(scene, loadedKeys()))
     // and switches to `scene`. Frees each uploaded MeshData's CPU copy.
-    bool setScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    Result<> setScene(const Scene &scene, SceneMeshes &&meshes);
     QSet<QString> loadedKeys() const;
     // Statistics and warnings of the meshes in use, by meshKey().
     const QHash<QString, SceneMeshes::Entry> &meshInfo() const { return m_meshInfo; }

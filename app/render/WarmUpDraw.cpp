@@ -13,7 +13,7 @@ constexpr int kTargetSide = 8; // pixels: enough to run every stage, cheap to fi
 WarmUpDraw::WarmUpDraw() = default;
 WarmUpDraw::~WarmUpDraw() = default; // destroy() runs with the context current
 
-bool WarmUpDraw::create(int samples, QString *error)
+Result<> WarmUpDraw::create(int samples)
 {
     initializeOpenGLFunctions();
     // QOpenGLWidget's own framebuffer: RGBA8 colour, packed depth-stencil.
@@ -23,15 +23,13 @@ bool WarmUpDraw::create(int samples, QString *error)
     format.setSamples(samples);
     m_fbo = std::make_unique<QOpenGLFramebufferObject>(QSize(kTargetSide, kTargetSide), format);
     if (!m_fbo->isValid()) {
-        if (error)
-            *error = QStringLiteral("cannot create the %1-sample framebuffer for warming programs").arg(samples);
         m_fbo.reset();
-        return false;
+        return fail(QStringLiteral("cannot create the %1-sample framebuffer for warming programs").arg(samples));
     }
     // Same interleaved layout as every scene mesh, so the vertex fetch code
     // generated here is the one the viewport needs too.
     m_mesh.upload(makeUvSphere(8, 4));
-    return true;
+    return {};
 }
 
 void WarmUpDraw::destroy()

@@ -1,5 +1,6 @@
 #pragma once
 #include "GpuMesh.h"
+#include "core/Result.h"
 
 #include <QOpenGLExtraFunctions>
 #include <memory>
@@ -27,7 +28,7 @@ public:
     WarmUpDraw(const WarmUpDraw &) = delete;
     WarmUpDraw &operator=(const WarmUpDraw &) = delete;
 
-    bool create(int samples, QString *error);
+    Result<> create(int samples);
     bool isCreated() const { return m_fbo != nullptr; }
     void destroy();
     // One draw, then glFinish: when it returns, the program has run.

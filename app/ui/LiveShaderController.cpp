@@ -252,11 +252,10 @@ void LiveShaderController::startWorker()
         emit statusMessage(tr("Shaders compile on the GUI thread"), kStatusTimeoutMs);
         return;
     }
-    QString error;
-    if (!m_buildThread->start(m_viewport->context(), &error)) {
-        qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(error));
-        emit statusMessage(tr("Shaders compile on the GUI thread (typing may pause while they build): %1").arg(error),
-                           0);
+    if (const Result<> started = m_buildThread->start(m_viewport->context()); !started) {
+        qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(started.error()));
+        emit statusMessage(
+            tr("Shaders compile on the GUI thread (typing may pause while they build): %1").arg(started.error()), 0);
         return;
     }
     qInfo("phonglab: shaders build on a worker thread with a shared context; "
@@ -365,25 +364,24 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const BuildRep
         *adopted = true;
     };
     setState(State::Warming);
-    m_buildThread->warmInLentContext(
-        *lent, reply.program, [this, hash, reply, adopted](qint64 warmNs, const QString &error) {
-            if (m_state != State::Warming)
-                return; // the context went away meanwhile, and came back with it
-            setState(State::Idle);
-            m_hangNote->stop();
-            m_viewport->takeBackContext();
-            if (!*adopted)
-                m_viewport->adoptProgram(reply.program);
-            BuildReply warmed = reply;
-            if (warmNs >= 0) {
-                warmed.warmNs = warmNs;
-            } else {
-                qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(error));
-                setWarmUp(WarmUp::Off);
-            }
-            announce(hash, warmed);
-            startQueuedBuild();
-        });
+    m_buildThread->warmInLentContext(*lent, reply.program, [this, hash, reply, adopted](const Result<qint64> &warmNs) {
+        if (m_state != State::Warming)
+            return; // the context went away meanwhile, and came back with it
+        setState(State::Idle);
+        m_hangNote->stop();
+        m_viewport->takeBackContext();
+        if (!*adopted)
+            m_viewport->adoptProgram(reply.program);
+        BuildReply warmed = reply;
+        if (warmNs) {
+            warmed.warmNs = *warmNs;
+        } else {
+            qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(warmNs.error()));
+            setWarmUp(WarmUp::Off);
+        }
+        announce(hash, warmed);
+        startQueuedBuild();
+    });
     return true;
 }
 

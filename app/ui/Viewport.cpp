@@ -348,9 +348,8 @@ void Viewport::initializeGL()
     m_glRendererName = contextDescription(context());
     emit glRendererChanged(m_glRendererName);
 
-    QString error;
-    if (!m_renderer.initialize(&error)) {
-        emit renderError(tr("Cannot render with %1: %2").arg(m_glRendererName, error));
+    if (const Result<> initialized = m_renderer.initialize(); !initialized) {
+        emit renderError(tr("Cannot render with %1: %2").arg(m_glRendererName, initialized.error()));
         return;
     }
     m_renderer.setOptions(m_options);
@@ -359,7 +358,7 @@ void Viewport::initializeGL()
     // (the widget moved to another window) the scene is loaded again here.
     SceneMeshes meshes = m_pendingMeshes ? std::move(*m_pendingMeshes) : loadSceneMeshes(m_scene);
     m_pendingMeshes.reset();
-    if (!uploadScene(currentScene(), std::move(meshes), &error)) {
+    if (QString error; !uploadScene(currentScene(), std::move(meshes), &error)) {
         emit renderError(error);
         return;
     }
@@ -384,9 +383,11 @@ bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *er
             return false; // the renderer keeps its previous program
         }
     }
-    if (!m_renderer.setScene(scene, std::move(meshes), error)) {
+    if (const Result<> set = m_renderer.setScene(scene, std::move(meshes)); !set) {
         if (reloadShading && scene.shading != previousShading)
             m_renderer.loadShading(previousShading);
+        if (error)
+            *error = set.error();
         return false;
     }
     return true;

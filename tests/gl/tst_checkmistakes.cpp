@@ -24,9 +24,14 @@ private slots:
     {
         m_scene = loadCheckScene();
         m_reference = makeTestCheckReference(m_scene);
-        QString error;
-        QVERIFY2(m_offscreen.create(&error), qPrintable(error));
-        QVERIFY2(m_offscreen.renderer().setScene(m_scene, &error), qPrintable(error));
+        {
+            const Result<> done = m_offscreen.create();
+            QVERIFY2(done, qPrintable(done.error()));
+        }
+        {
+            const Result<> done = m_offscreen.renderer().setScene(m_scene);
+            QVERIFY2(done, qPrintable(done.error()));
+        }
     }
 
     void shippedShadersPass_data()

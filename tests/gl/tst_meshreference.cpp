@@ -76,11 +76,15 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
     }
 
     OffscreenRenderer offscreen;
-    if (!offscreen.create(&check.error))
+    if (const Result<> done = offscreen.create(); !done) {
+        check.error = done.error();
         return check;
+    }
     Renderer &renderer = offscreen.renderer();
-    if (!renderer.setScene(scene, std::move(meshes), &check.error))
+    if (const Result<> done = renderer.setScene(scene, std::move(meshes)); !done) {
+        check.error = done.error();
         return check;
+    }
     check.compile = renderer.loadShading(variant.gpuShading.value_or(scene.shading));
     if (!check.compile.ok) {
         check.error = QStringLiteral("shaders did not build:\n") + check.compile.errorSummary();

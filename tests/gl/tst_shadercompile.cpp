@@ -42,8 +42,10 @@ const ShaderDiagnostic *TestShaderCompile::firstError(const BuildReport &r)
 void TestShaderCompile::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    QString error;
-    QVERIFY2(m_offscreen.create(&error), qPrintable(error));
+    {
+        const Result<> done = m_offscreen.create();
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     m_offscreen.makeCurrent();
     qInfo("GL renderer: %s", qPrintable(m_offscreen.glRendererName()));
 }

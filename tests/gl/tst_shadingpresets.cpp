@@ -172,8 +172,10 @@ void TestShadingPresets::presetBuilds()
 {
     QFETCH(QString, method);
     OffscreenRenderer offscreen;
-    QString error;
-    QVERIFY2(offscreen.create(&error), qPrintable(error));
+    {
+        const Result<> done = offscreen.create();
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     const BuildReport built = offscreen.renderer().loadShading(*shadingFromName(method));
     QVERIFY2(built.ok && !built.hasErrors(), qPrintable(built.errorSummary()));
     if (!built.diagnostics.empty())

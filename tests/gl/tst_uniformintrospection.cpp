@@ -68,8 +68,10 @@ private:
 void TestUniformIntrospection::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    QString error;
-    QVERIFY2(m_offscreen.create(&error), qPrintable(error));
+    {
+        const Result<> done = m_offscreen.create();
+        QVERIFY2(done, qPrintable(done.error()));
+    }
 }
 
 void TestUniformIntrospection::cleanupTestCase()

@@ -79,8 +79,10 @@ private:
 void TestUniformSnapshot::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    QString error;
-    QVERIFY2(m_offscreen.create(&error), qPrintable(error));
+    {
+        const Result<> done = m_offscreen.create();
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     m_offscreen.makeCurrent();
     initializeOpenGLFunctions();
 }

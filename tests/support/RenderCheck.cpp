@@ -51,11 +51,15 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
 {
     RenderCheck check;
     OffscreenRenderer offscreen;
-    if (!offscreen.create(&check.error))
+    if (const Result<> done = offscreen.create(); !done) {
+        check.error = done.error();
         return check;
+    }
     Renderer &renderer = offscreen.renderer();
-    if (!renderer.setScene(scene, meshesFor(scene, options.meshOverride), &check.error))
+    if (const Result<> done = renderer.setScene(scene, meshesFor(scene, options.meshOverride)); !done) {
+        check.error = done.error();
         return check;
+    }
     if (options.vertex || options.fragment) {
         const QString method = shadingName(scene.shading);
         const ShaderSource vs = options.vertex.value_or(shippedShader(method + QStringLiteral(".vert")));

@@ -48,9 +48,11 @@ int main(int argc, char **argv)
     const Scene scene = loadCheckScene();
     const CheckReference reference = makeTestCheckReference(scene);
     OffscreenRenderer offscreen;
-    QString error;
-    if (!offscreen.create(&error) || !offscreen.renderer().setScene(scene, &error)) {
-        std::fprintf(stderr, "%s\n", qPrintable(error));
+    Result<> ready = offscreen.create();
+    if (ready)
+        ready = offscreen.renderer().setScene(scene);
+    if (!ready) {
+        std::fprintf(stderr, "%s\n", qPrintable(ready.error()));
         return 1;
     }
     const QImage exact = toQImage(reference.exact.toImage(reference.background));
