@@ -84,16 +84,13 @@ int benchConfigurationCount(const BenchOptions &options, const std::vector<int> 
 BenchEngine::BenchEngine() = default;
 BenchEngine::~BenchEngine() = default;
 
-bool BenchEngine::initialize(QString *error)
+Result<> BenchEngine::initialize()
 {
     m_offscreen = std::make_unique<OffscreenRenderer>();
-    const Result<> created = m_offscreen->create();
-    if (created)
-        return true;
-    m_offscreen.reset();
-    if (error)
-        *error = created.error();
-    return false;
+    Result<> created = m_offscreen->create();
+    if (!created)
+        m_offscreen.reset();
+    return created;
 }
 
 QString BenchEngine::glRendererName() const
@@ -101,13 +98,10 @@ QString BenchEngine::glRendererName() const
     return m_offscreen ? m_offscreen->glRendererName() : QString();
 }
 
-bool BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, QString *error,
-                      const BenchProgressFn &progress)
+Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, const BenchProgressFn &progress)
 {
-    if (!m_offscreen) {
-        *error = QStringLiteral("the bench has no OpenGL context (initialize() failed or was not called)");
-        return false;
-    }
+    if (!m_offscreen)
+        return fail(QStringLiteral("the bench has no OpenGL context (initialize() failed or was not called)"));
     // Load every scene first: a bad file fails the run before any measuring,
     // and the progress total is known from the start.
     std::vector<SceneRun> runs(std::size_t(options.scenes.size()));
@@ -115,10 +109,8 @@ bool BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, 
     for (qsizetype i = 0; i < options.scenes.size(); ++i) {
         const QString &path = options.scenes[i];
         const SceneLoadResult loaded = loadSceneFile(path);
-        if (!loaded.ok()) {
-            *error = QStringLiteral("%1: %2").arg(path, loaded.error);
-            return false;
-        }
+        if (!loaded.ok())
+            return fail(QStringLiteral("%1: %2").arg(path, loaded.error));
         SceneRun &state = runs[std::size_t(i)];
         state.name = QFileInfo(path).completeBaseName();
         state.scene = *loaded.scene;
@@ -129,13 +121,13 @@ bool BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, 
     m_done = 0;
     m_total = benchConfigurationCount(options, own);
     for (qsizetype i = 0; i < options.scenes.size(); ++i)
-        if (!runScene(options, options.scenes[i], runs[std::size_t(i)], rows, error, progress))
-            return false;
-    return true;
+        if (Result<> done = runScene(options, options.scenes[i], runs[std::size_t(i)], rows, progress); !done)
+            return done;
+    return {};
 }
 
-bool BenchEngine::runScene(const BenchOptions &options, const QString &path, SceneRun &state,
-                           std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress)
+Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path, SceneRun &state,
+                               std::vector<BenchRow> *rows, const BenchProgressFn &progress)
 {
     auto report = [&](const QString &stage) {
         return !progress || progress(BenchProgress{m_done, m_total, stage, nullptr});
@@ -144,44 +136,38 @@ bool BenchEngine::runScene(const BenchOptions &options, const QString &path, Sce
     // answer every detail level is measured against.
     const Scene full = withDetail(state.scene, 1.0);
     if (!report(QStringLiteral("%1: loading meshes").arg(state.name)))
-        return *error = QStringLiteral("cancelled"), false;
+        return fail(QStringLiteral("cancelled"));
     SceneMeshes meshes = loadSceneMeshes(full);
-    if (!meshes.ok()) {
-        *error = QStringLiteral("%1: %2").arg(path, meshes.error);
-        return false;
-    }
+    if (!meshes.ok())
+        return fail(QStringLiteral("%1: %2").arg(path, meshes.error));
     for (const SceneObject &object : full.objects) {
         const bool analytic = isBuiltinMeshSpec(object.mesh);
         state.fullMeshes.push_back(analytic ? nullptr : meshes.entries.value(meshKey(full, object)).mesh);
     }
     for (int count : state.lightCounts) {
         if (!report(QStringLiteral("%1: reference, %2 light(s)").arg(state.name).arg(count)))
-            return *error = QStringLiteral("cancelled"), false;
+            return fail(QStringLiteral("cancelled"));
         auto reference = raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
                                             options.size.height(), ReferenceShading::Phong);
-        if (!reference) {
-            *error = QStringLiteral("%1: no reference: %2").arg(path, reference.error());
-            return false;
-        }
+        if (!reference)
+            return fail(QStringLiteral("%1: no reference: %2").arg(path, reference.error()));
         if (state.compared.empty()) {
             auto compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx);
-            if (!compared) {
-                *error = QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error());
-                return false;
-            }
+            if (!compared)
+                return fail(QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error()));
             state.compared = std::move(*compared);
         }
         state.specular.push_back(highlightMask(*reference, state.compared, options.specularThreshold));
         state.references.push_back(std::move(*reference));
     }
     for (double detail : options.details)
-        if (!measureDetail(options, state, detail, rows, error, progress))
-            return false;
-    return true;
+        if (Result<> done = measureDetail(options, state, detail, rows, progress); !done)
+            return done;
+    return {};
 }
 
-bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, double detail,
-                                std::vector<BenchRow> *rows, QString *error, const BenchProgressFn &progress)
+Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, double detail,
+                                    std::vector<BenchRow> *rows, const BenchProgressFn &progress)
 {
     const Scene scene = withDetail(state.scene, detail);
     SceneMeshes meshes = loadSceneMeshes(scene);
@@ -196,23 +182,19 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
                                   .arg(state.name, detailPercent(detail))
                                   .arg(triangles);
         if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
-            return *error = QStringLiteral("cancelled"), false;
-        return true;
+            return fail(QStringLiteral("cancelled"));
+        return {};
     }
     state.previousTriangles = triangles;
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
-    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set) {
-        *error = QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), set.error());
-        return false;
-    }
+    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
+        return fail(QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), set.error()));
     for (ShadingMethod method : options.methods) {
         const BuildReport built = renderer.loadShading(method);
-        if (!built.ok) {
-            *error = QStringLiteral("%1: the shipped %2 shaders did not build: %3")
-                         .arg(state.name, shadingName(method), built.errorSummary());
-            return false;
-        }
+        if (!built.ok)
+            return fail(QStringLiteral("%1: the shipped %2 shaders did not build: %3")
+                            .arg(state.name, shadingName(method), built.errorSummary()));
         for (std::size_t s = 0; s < state.lightCounts.size(); ++s) {
             rows->push_back(measure(options, state, s, method, detail));
             ++m_done;
@@ -220,10 +202,10 @@ bool BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state, do
                                       .arg(state.name, shadingName(method), detailPercent(detail))
                                       .arg(state.lightCounts[s]);
             if (progress && !progress(BenchProgress{m_done, m_total, stage, &rows->back()}))
-                return *error = QStringLiteral("cancelled"), false;
+                return fail(QStringLiteral("cancelled"));
         }
     }
-    return true;
+    return {};
 }
 
 BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,

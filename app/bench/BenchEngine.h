@@ -2,6 +2,7 @@
 #include "BenchOptions.h"
 #include "BenchResult.h"
 #include "core/ReferenceImage.h"
+#include "core/Result.h"
 #include "core/Scene.h"
 
 #include <QImage>
@@ -39,21 +40,20 @@ public:
     BenchEngine();
     ~BenchEngine();
 
-    // False with a reason when no GL context can be made.
-    bool initialize(QString *error);
+    // A failure when no GL context can be made.
+    Result<> initialize();
     QString glRendererName() const;
 
-    // Appends one row per configuration to *rows. False with a reason when a
+    // Appends one row per configuration to *rows. A failure when a
     // scene cannot be loaded or a shader does not build, or "cancelled".
-    bool run(const BenchOptions &options, std::vector<BenchRow> *rows, QString *error,
-             const BenchProgressFn &progress = {});
+    Result<> run(const BenchOptions &options, std::vector<BenchRow> *rows, const BenchProgressFn &progress = {});
 
 private:
     struct SceneRun;
-    bool runScene(const BenchOptions &options, const QString &path, SceneRun &state, std::vector<BenchRow> *rows,
-                  QString *error, const BenchProgressFn &progress);
-    bool measureDetail(const BenchOptions &options, SceneRun &state, double detail, std::vector<BenchRow> *rows,
-                       QString *error, const BenchProgressFn &progress);
+    Result<> runScene(const BenchOptions &options, const QString &path, SceneRun &state, std::vector<BenchRow> *rows,
+                      const BenchProgressFn &progress);
+    Result<> measureDetail(const BenchOptions &options, SceneRun &state, double detail, std::vector<BenchRow> *rows,
+                           const BenchProgressFn &progress);
     BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
                      double detail);
 

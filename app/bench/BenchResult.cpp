@@ -165,7 +165,7 @@ public:
     {
     }
 
-    bool readDouble(const QString &column, const QString &text, double *out, QString *error) const
+    bool readDouble(const QString &column, const QString &text, double *out) const
     {
         const QString t = text.trimmed();
         if (t.isEmpty()) {
@@ -194,39 +194,39 @@ public:
         const auto result = std::from_chars(begin, end, value);
         if (result.ec != std::errc() || result.ptr != end || lower.contains(QLatin1String("inf"))
             || lower.contains(QLatin1String("nan"))) {
-            fail(column, QStringLiteral("is not a number"), text, error);
+            fail(column, QStringLiteral("is not a number"), text);
             return false;
         }
         *out = value;
         return true;
     }
 
-    bool readInt64(const QString &column, const QString &text, qint64 *out, QString *error) const
+    bool readInt64(const QString &column, const QString &text, qint64 *out) const
     {
         bool ok = false;
         const qint64 value = text.trimmed().toLongLong(&ok);
         if (!ok) {
-            fail(column, QStringLiteral("is not a whole number"), text, error);
+            fail(column, QStringLiteral("is not a whole number"), text);
             return false;
         }
         *out = value;
         return true;
     }
 
-    bool readInt(const QString &column, const QString &text, int *out, QString *error) const
+    bool readInt(const QString &column, const QString &text, int *out) const
     {
         qint64 value = 0;
-        if (!readInt64(column, text, &value, error))
+        if (!readInt64(column, text, &value))
             return false;
         if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
-            fail(column, QStringLiteral("is out of range"), text, error);
+            fail(column, QStringLiteral("is out of range"), text);
             return false;
         }
         *out = int(value);
         return true;
     }
 
-    bool readBool(const QString &column, const QString &text, bool *out, QString *error) const
+    bool readBool(const QString &column, const QString &text, bool *out) const
     {
         const QString t = text.trimmed().toLower();
         if (t == QLatin1String("1") || t == QLatin1String("true")) {
@@ -237,21 +237,23 @@ public:
             *out = false;
             return true;
         }
-        fail(column, QStringLiteral("is not 0 or 1"), text, error);
+        fail(column, QStringLiteral("is not 0 or 1"), text);
         return false;
     }
 
     QString where() const { return QStringLiteral("%1 line %2").arg(m_source).arg(m_line); }
+    // Why the last read failed, located: "<source> line N: <column> ...".
+    const QString &error() const { return m_error; }
 
 private:
-    void fail(const QString &column, const QString &what, const QString &text, QString *error) const
+    void fail(const QString &column, const QString &what, const QString &text) const
     {
-        if (error)
-            *error = QStringLiteral("%1: %2 %3: '%4'").arg(where(), column, what, text);
+        m_error = QStringLiteral("%1: %2 %3: '%4'").arg(where(), column, what, text);
     }
 
     QString m_source;
     int m_line;
+    mutable QString m_error;
 };
 
 } // namespace
@@ -295,12 +297,7 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows)
     return out;
 }
 
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error)
-{
-    return benchRowsFromCsv(text, rows, error, QStringLiteral("results.csv"));
-}
-
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error, const QString &sourceName)
+Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QString &sourceName)
 {
     QString body = text;
     if (body.startsWith(QChar(0xFEFF)))
@@ -308,17 +305,11 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
 
     std::vector<Record> records;
     int badLine = 0;
-    if (!splitRecords(body, &records, &badLine)) {
-        if (error)
-            *error = QStringLiteral("%1 line %2: unbalanced quotes").arg(sourceName).arg(badLine);
-        return false;
-    }
-    if (records.empty()) {
-        if (error)
-            *error = QStringLiteral("%1: empty file, expected a header line starting with '%2'")
-                         .arg(sourceName, QString::fromLatin1(kColumnNames[0]));
-        return false;
-    }
+    if (!splitRecords(body, &records, &badLine))
+        return fail(QStringLiteral("%1 line %2: unbalanced quotes").arg(sourceName).arg(badLine));
+    if (records.empty())
+        return fail(QStringLiteral("%1: empty file, expected a header line starting with '%2'")
+                        .arg(sourceName, QString::fromLatin1(kColumnNames[0])));
 
     // Header: find each known column by name; unknown ones are skipped.
     const Record &header = records.front();
@@ -328,14 +319,11 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
         const QString name = header.fields.at(f).trimmed();
         for (int c = 0; c < ColumnCount; ++c) {
             if (name == QLatin1String(kColumnNames[c])) {
-                if (index[c] != -1) {
-                    if (error)
-                        *error = QStringLiteral("%1 line %2: column '%3' appears twice")
-                                     .arg(sourceName)
-                                     .arg(header.line)
-                                     .arg(name);
-                    return false;
-                }
+                if (index[c] != -1)
+                    return fail(QStringLiteral("%1 line %2: column '%3' appears twice")
+                                    .arg(sourceName)
+                                    .arg(header.line)
+                                    .arg(name));
                 index[c] = f;
             }
         }
@@ -344,64 +332,54 @@ bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString 
     for (int c = 0; c < ColumnCount; ++c)
         if (index[c] == -1)
             missing.append(QString::fromLatin1(kColumnNames[c]));
-    if (!missing.isEmpty()) {
-        if (error)
-            *error = QStringLiteral("%1 line %2: missing column%3 %4")
-                         .arg(sourceName)
-                         .arg(header.line)
-                         .arg(missing.size() == 1 ? QString() : QStringLiteral("s"))
-                         .arg(missing.join(QStringLiteral(", ")));
-        return false;
-    }
+    if (!missing.isEmpty())
+        return fail(QStringLiteral("%1 line %2: missing column%3 %4")
+                        .arg(sourceName)
+                        .arg(header.line)
+                        .arg(missing.size() == 1 ? QString() : QStringLiteral("s"))
+                        .arg(missing.join(QStringLiteral(", "))));
 
     std::vector<BenchRow> parsed;
     parsed.reserve(records.size() - 1);
     for (size_t r = 1; r < records.size(); ++r) {
         const Record &record = records[r];
         const FieldReader reader(sourceName, record.line);
-        if (record.fields.size() != header.fields.size()) {
-            if (error)
-                *error = QStringLiteral("%1: expected %2 fields as in the header, found %3")
-                             .arg(reader.where())
-                             .arg(header.fields.size())
-                             .arg(record.fields.size());
-            return false;
-        }
+        if (record.fields.size() != header.fields.size())
+            return fail(QStringLiteral("%1: expected %2 fields as in the header, found %3")
+                            .arg(reader.where())
+                            .arg(header.fields.size())
+                            .arg(record.fields.size()));
         auto field = [&](Column c) { return record.fields.at(index[c]); };
         auto name = [](Column c) { return QString::fromLatin1(kColumnNames[c]); };
 
         BenchRow row;
         row.scene = field(ColScene);
         row.method = field(ColMethod).trimmed();
-        const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail, error)
-            && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles, error)
-            && reader.readInt(name(ColLights), field(ColLights), &row.lights, error)
-            && reader.readBool(name(ColSceneLights), field(ColSceneLights), &row.sceneLights, error)
-            && reader.readDouble(name(ColFrameMs), field(ColFrameMs), &row.frameMs, error)
-            && reader.readDouble(name(ColFrameMsP90), field(ColFrameMsP90), &row.frameMsP90, error)
-            && reader.readDouble(name(ColCpuSubmitMs), field(ColCpuSubmitMs), &row.cpuSubmitMs, error)
-            && reader.readDouble(name(ColGpuMs), field(ColGpuMs), &row.gpuMs, error)
-            && reader.readInt(name(ColFrames), field(ColFrames), &row.frames, error)
-            && reader.readDouble(name(ColPsnr), field(ColPsnr), &row.psnr, error)
-            && reader.readDouble(name(ColRmse), field(ColRmse), &row.rmse, error)
-            && reader.readInt(name(ColMaxError), field(ColMaxError), &row.maxError, error)
-            && reader.readDouble(name(ColSpecPsnr), field(ColSpecPsnr), &row.specularPsnr, error)
-            && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse, error)
-            && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError, error)
-            && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels, error)
-            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared), &row.pixelsCompared, error)
-            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors), &row.coverageErrors, error);
+        const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail)
+            && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles)
+            && reader.readInt(name(ColLights), field(ColLights), &row.lights)
+            && reader.readBool(name(ColSceneLights), field(ColSceneLights), &row.sceneLights)
+            && reader.readDouble(name(ColFrameMs), field(ColFrameMs), &row.frameMs)
+            && reader.readDouble(name(ColFrameMsP90), field(ColFrameMsP90), &row.frameMsP90)
+            && reader.readDouble(name(ColCpuSubmitMs), field(ColCpuSubmitMs), &row.cpuSubmitMs)
+            && reader.readDouble(name(ColGpuMs), field(ColGpuMs), &row.gpuMs)
+            && reader.readInt(name(ColFrames), field(ColFrames), &row.frames)
+            && reader.readDouble(name(ColPsnr), field(ColPsnr), &row.psnr)
+            && reader.readDouble(name(ColRmse), field(ColRmse), &row.rmse)
+            && reader.readInt(name(ColMaxError), field(ColMaxError), &row.maxError)
+            && reader.readDouble(name(ColSpecPsnr), field(ColSpecPsnr), &row.specularPsnr)
+            && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse)
+            && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError)
+            && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels)
+            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared), &row.pixelsCompared)
+            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors), &row.coverageErrors);
         if (!ok)
-            return false;
-        if (row.method.isEmpty()) {
-            if (error)
-                *error = QStringLiteral("%1: method is empty").arg(reader.where());
-            return false;
-        }
+            return fail(reader.error());
+        if (row.method.isEmpty())
+            return fail(QStringLiteral("%1: method is empty").arg(reader.where()));
         parsed.push_back(std::move(row));
     }
-    *rows = std::move(parsed);
-    return true;
+    return parsed;
 }
 
 } // namespace phonglab

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Result.h"
 #include <QString>
 #include <QStringList>
 
@@ -59,11 +60,10 @@ QStringList benchCsvColumns();
 // with enough digits to read back exactly; NaN as an empty field, +inf as "inf".
 QString benchRowsToCsv(const std::vector<BenchRow> &rows);
 // Parses what benchRowsToCsv() wrote (columns found by name, so files with
-// more columns still read). False with a reason naming the line on bad input.
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error);
-// The same, with errors naming `sourceName` (e.g. the file's path) where the
-// overload above says "results.csv": "<sourceName> line 7: frame_ms is not a
-// number: 'abc'". *rows is only replaced on success.
-bool benchRowsFromCsv(const QString &text, std::vector<BenchRow> *rows, QString *error, const QString &sourceName);
+// more columns still read): the rows, or a failure naming `sourceName`
+// (e.g. the file's path) and the line: "<sourceName> line 7: frame_ms is
+// not a number: 'abc'".
+Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text,
+                                               const QString &sourceName = QStringLiteral("results.csv"));
 
 } // namespace phonglab

@@ -13,13 +13,11 @@
 
 namespace phonglab {
 
-bool haveApplication(QString *error)
+Result<> haveApplication()
 {
     if (qobject_cast<QApplication *>(QCoreApplication::instance()))
-        return true;
-    if (error)
-        *error = QStringLiteral("charts need a QApplication (Qt Charts are widgets)");
-    return false;
+        return {};
+    return fail(QStringLiteral("charts need a QApplication (Qt Charts are widgets)"));
 }
 
 void settleLayouts(const std::vector<QChart *> &charts)
@@ -30,14 +28,9 @@ void settleLayouts(const std::vector<QChart *> &charts)
             chart->layout()->activate();
 }
 
-bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
-                 const QString &title, QString *error)
+Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
+                     const QString &title)
 {
-    auto fail = [&](const QString &message) {
-        if (error)
-            *error = message;
-        return false;
-    };
     if (pngPath.isEmpty() && svgPath.isEmpty())
         return fail(QStringLiteral("no output file given"));
 
@@ -84,25 +77,22 @@ bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPat
         return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
     if (!svgPath.isEmpty() && !svgFile.commit())
         return fail(QStringLiteral("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
-    return true;
+    return {};
 }
 
-bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QString *error, QSize size)
+Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QSize size)
 {
-    if (!haveApplication(error))
-        return false;
-    if (!chart || size.isEmpty()) {
-        if (error)
-            *error = QStringLiteral("nothing to draw");
-        return false;
-    }
+    if (Result<> app = haveApplication(); !app)
+        return app;
+    if (!chart || size.isEmpty())
+        return fail(QStringLiteral("nothing to draw"));
     QGraphicsScene scene(QRectF(QPointF(0, 0), QSizeF(size)));
     scene.addItem(chart);
     chart->setGeometry(QRectF(QPointF(0, 0), QSizeF(size)));
     settleLayouts({chart});
-    const bool ok = renderScene(scene, size, pngPath, svgPath, chart->title(), error);
+    Result<> rendered = renderScene(scene, size, pngPath, svgPath, chart->title());
     scene.removeItem(chart); // the chart stays the caller's
-    return ok;
+    return rendered;
 }
 
 } // namespace phonglab

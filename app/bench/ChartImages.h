@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Result.h"
 
 #include <QSize>
 #include <QString>
@@ -16,10 +17,10 @@ namespace phonglab {
 // image behind. writeChartImages() (declared in SpeedAccuracyChart.h) is
 // defined here on top of these.
 
-// True when a QApplication exists; otherwise false with a reason in `error`.
-// Qt Charts are QGraphicsWidgets and need one, so every public entry point
-// checks this first and reports a missing one as an error.
-bool haveApplication(QString *error);
+// Success when a QApplication exists. Qt Charts are QGraphicsWidgets and
+// need one, so every public entry point checks this first and reports a
+// missing one as an error.
+Result<> haveApplication();
 
 // Lays out every chart in the scene (layouts are otherwise deferred to the
 // event loop) so the point labels sit where they will be drawn.
@@ -29,7 +30,7 @@ void settleLayouts(const std::vector<QChart *> &charts);
 // ratio 1) and SVG (same size, 96 dpi, `title` as its title). An empty path
 // skips that file; both empty is an error. Both files are opened before
 // anything is drawn, so a bad path writes nothing.
-bool renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
-                 const QString &title, QString *error);
+Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
+                     const QString &title);
 
 } // namespace phonglab

@@ -53,18 +53,16 @@ void printStudy(const std::vector<NormalStudyRow> &rows)
 
 } // namespace
 
-bool writeNormalStudy(const QString &outDir, QString *error)
+Result<> writeNormalStudy(const QString &outDir)
 {
     const std::vector<NormalStudyRow> rows = runNormalStudy(31);
     printStudy(rows);
     const QDir dir(outDir);
     QSaveFile csv(dir.filePath(QStringLiteral("normals.csv")));
-    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text) || csv.write(studyCsv(rows).toUtf8()) < 0 || !csv.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(csv.fileName(), csv.errorString());
-        return false;
-    }
+    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text) || csv.write(studyCsv(rows).toUtf8()) < 0 || !csv.commit())
+        return fail(QStringLiteral("%1: cannot write: %2").arg(csv.fileName(), csv.errorString()));
     return writeNormalStudyChart(rows, dir.filePath(QStringLiteral("normals.png")),
-                                 dir.filePath(QStringLiteral("normals.svg")), error);
+                                 dir.filePath(QStringLiteral("normals.svg")));
 }
 
 } // namespace phonglab

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Result.h"
 #include <QString>
 
 namespace phonglab {
@@ -7,6 +8,6 @@ namespace phonglab {
 // runNormalStudy(), prints its table and writes normals.csv, normals.png
 // and normals.svg into `outDir`. False with a reason when a file cannot be
 // written.
-bool writeNormalStudy(const QString &outDir, QString *error);
+Result<> writeNormalStudy(const QString &outDir);
 
 } // namespace phonglab

@@ -98,16 +98,13 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
     return buildChart(spec);
 }
 
-bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
-                                 QString *error, QSize size)
+Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
+                                     QSize size)
 {
-    if (!haveApplication(error))
-        return false;
-    if (series.empty()) {
-        if (error)
-            *error = QStringLiteral("no normal-study rows to chart");
-        return false;
-    }
+    if (Result<> app = haveApplication(); !app)
+        return app;
+    if (series.empty())
+        return fail(QStringLiteral("no normal-study rows to chart"));
     // Tessellations have no fixed colours of their own: a fixed sequence.
     static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22), QColor(0x2c, 0xa0, 0x2c),
                                      QColor(0xc0, 0x39, 0x2b), QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
@@ -121,19 +118,16 @@ bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QStri
     std::unique_ptr<QChart> chart(
         createLabelledChart(series, QStringLiteral("Normal methods: time against angular error"),
                             QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
-    return writeChartImages(chart.get(), pngPath, svgPath, error, size);
+    return writeChartImages(chart.get(), pngPath, svgPath, size);
 }
 
-bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
-                              QString *error, QSize panelSize)
+Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
+                                  QSize panelSize)
 {
-    if (!haveApplication(error))
-        return false;
-    if (panelSize.isEmpty()) {
-        if (error)
-            *error = QStringLiteral("panel size %1×%2 is empty").arg(panelSize.width()).arg(panelSize.height());
-        return false;
-    }
+    if (Result<> app = haveApplication(); !app)
+        return app;
+    if (panelSize.isEmpty())
+        return fail(QStringLiteral("panel size %1×%2 is empty").arg(panelSize.width()).arg(panelSize.height()));
 
     // Grid rows: scenes in order of first appearance; along each row that
     // scene's light setups by count (its own lights among them), packed
@@ -150,11 +144,8 @@ bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &
         if (std::find(own.begin(), own.end(), setup) == own.end())
             own.push_back(setup);
     }
-    if (scenes.isEmpty()) {
-        if (error)
-            *error = QStringLiteral("no benchmark rows to chart");
-        return false;
-    }
+    if (scenes.isEmpty())
+        return fail(QStringLiteral("no benchmark rows to chart"));
     std::size_t columns = 0;
     for (auto &own : setups) {
         std::sort(own.begin(), own.end());
@@ -181,7 +172,7 @@ bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &
         }
     }
     settleLayouts(charts);
-    return renderScene(scene, total, pngPath, svgPath, QStringLiteral("PhongLab: frame time against error"), error);
+    return renderScene(scene, total, pngPath, svgPath, QStringLiteral("PhongLab: frame time against error"));
 }
 
 } // namespace phonglab

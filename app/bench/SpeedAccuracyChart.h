@@ -1,5 +1,6 @@
 #pragma once
 #include "BenchResult.h"
+#include "core/Result.h"
 
 #include <QColor>
 #include <QSize>
@@ -37,10 +38,10 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
 // light setups by count (scene's own lights after a synthetic setup of the
 // same count), packed to the left; as many columns as the scene with the
 // most setups. Written as PNG (device pixel ratio 1, panelSize × grid) and SVG (same size, 96 dpi), each
-// through QSaveFile. An empty path skips that file. False with a reason when
+// through QSaveFile. An empty path skips that file. A failure when
 // there is nothing to draw, no QApplication, or a file cannot be written.
-bool writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
-                              QString *error, QSize panelSize = {640, 440});
+Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
+                                  QSize panelSize = {640, 440});
 
 // The general shape both charts above and the normal-method study use:
 // named series of (x, y, point label) drawn as line + markers, labels placed
@@ -59,8 +60,7 @@ struct LabelledSeries {
 };
 QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title, const QString &xTitle,
                             const QString &yTitle);
-bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QString *error,
-                      QSize size = {640, 440});
+Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QSize size = {640, 440});
 
 // The normal-method study (app/mesh/NormalMethodStudy.h, NormalStudyRow:
 // tessellation, method, triangles, ms, maxAngleDeg, meanAngleDeg): time (x,
@@ -68,11 +68,11 @@ bool writeChartImages(QChart *chart, const QString &pngPath, const QString &svgP
 // with its points labelled by method. A template over the row type so this
 // header does not depend on the mesh study; any range of rows with those
 // fields will do. Written like writeChartImages().
-bool writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
-                                 QString *error, QSize size = {640, 440});
+Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
+                                     QSize size = {640, 440});
 template <typename NormalStudyRows>
-bool writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath, QString *error,
-                           QSize size = {640, 440})
+Result<> writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath,
+                               QSize size = {640, 440})
 {
     std::vector<LabelledSeries> series;
     for (const auto &row : rows) {
@@ -84,7 +84,7 @@ bool writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, 
         }
         it->points.push_back(LabelledPoint{double(row.ms), double(row.meanAngleDeg), row.method});
     }
-    return writeNormalStudySeriesChart(std::move(series), pngPath, svgPath, error, size);
+    return writeNormalStudySeriesChart(std::move(series), pngPath, svgPath, size);
 }
 
 } // namespace phonglab

@@ -84,8 +84,8 @@ int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool 
 
     const QString png = out.filePath(QStringLiteral("chart.png"));
     const QString svg = out.filePath(QStringLiteral("chart.svg"));
-    if (!writeSpeedAccuracyCharts(rows, png, svg, &error)) {
-        printError(error);
+    if (const Result<> charts = writeSpeedAccuracyCharts(rows, png, svg); !charts) {
+        printError(charts.error());
         return kExitFailure;
     }
     QStringList written{out.filePath(QStringLiteral("fit.csv")), png, svg};
@@ -103,12 +103,12 @@ int refit(const BenchArgs &args)
         printError(QStringLiteral("%1: cannot read: %2").arg(args.fromCsv, file.errorString()));
         return kExitFailure;
     }
-    std::vector<BenchRow> rows;
-    QString error;
-    if (!benchRowsFromCsv(QString::fromUtf8(file.readAll()), &rows, &error, args.fromCsv)) {
-        printError(error);
+    const Result<std::vector<BenchRow>> read = benchRowsFromCsv(QString::fromUtf8(file.readAll()), args.fromCsv);
+    if (!read) {
+        printError(read.error());
         return kExitFailure;
     }
+    const std::vector<BenchRow> &rows = *read;
     printLine(benchTableHeader());
     for (const BenchRow &row : rows)
         printLine(benchTableLine(row));
@@ -126,9 +126,8 @@ int bench(const BenchArgs &args, int argc, char **argv)
     if (!args.fromCsv.isEmpty())
         return refit(args);
     BenchEngine engine;
-    QString error;
-    if (!engine.initialize(&error)) {
-        printError(error);
+    if (const Result<> initialized = engine.initialize(); !initialized) {
+        printError(initialized.error());
         return kExitFailure;
     }
     printLine(QStringLiteral("phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
@@ -147,15 +146,17 @@ int bench(const BenchArgs &args, int argc, char **argv)
     clock.start();
     std::vector<BenchRow> rows;
     ProgressPrinter printer;
-    const bool ok = engine.run(args.options, &rows, &error, std::ref(printer));
+    const Result<> ran = engine.run(args.options, &rows, std::ref(printer));
     printer.finish();
-    if (!ok) {
-        printError(error);
+    if (!ran) {
+        printError(ran.error());
         return kExitFailure;
     }
-    if (args.normalStudy && !writeNormalStudy(args.outDir, &error)) {
-        printError(error);
-        return kExitFailure;
+    if (args.normalStudy) {
+        if (const Result<> study = writeNormalStudy(args.outDir); !study) {
+            printError(study.error());
+            return kExitFailure;
+        }
     }
     const int written = writeOutputs(args, rows);
     printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));

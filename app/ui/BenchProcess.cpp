@@ -153,8 +153,10 @@ void BenchProcess::processFinished(int exitCode, QProcess::ExitStatus status)
         QFile file(m_dir->filePath(QStringLiteral("out/results.csv")));
         if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
             error = tr("the measurement wrote no results: %1").arg(file.errorString());
+        else if (Result<std::vector<BenchRow>> read = benchRowsFromCsv(QString::fromUtf8(file.readAll())))
+            rows = std::move(*read);
         else
-            benchRowsFromCsv(QString::fromUtf8(file.readAll()), &rows, &error);
+            error = read.error();
     }
     if (!error.isEmpty())
         rows.clear();

@@ -61,9 +61,9 @@ void TestCliBench::quickRunWritesCsvAndChart()
     const QString csv = readText(out + QStringLiteral("/results.csv"));
     QVERIFY(!csv.isEmpty());
     QCOMPARE(csv.section(QLatin1Char('\n'), 0, 0).split(QLatin1Char(',')), benchCsvColumns());
-    std::vector<BenchRow> rows;
-    QString error;
-    QVERIFY2(benchRowsFromCsv(csv, &rows, &error), qPrintable(error));
+    const Result<std::vector<BenchRow>> read = benchRowsFromCsv(csv);
+    QVERIFY2(read, qPrintable(read.error()));
+    const std::vector<BenchRow> &rows = *read;
     // Two scenes (default: tree and cloud with 2 lights; sphere: 1 light),
     // 3 details, 4 methods; light setups 1, 4, 8 (+ the default's own 2).
     QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 4));

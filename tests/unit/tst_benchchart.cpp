@@ -97,7 +97,8 @@ private slots:
         const QString png = dir.filePath("charts.png");
         const QString svg = dir.filePath("charts.svg");
         QString error;
-        QVERIFY2(writeSpeedAccuracyCharts(syntheticRows(), png, svg, &error, QSize(600, 420)), qPrintable(error));
+        const Result<> written1 = writeSpeedAccuracyCharts(syntheticRows(), png, svg, QSize(600, 420));
+        QVERIFY2(written1, qPrintable(written1.error()));
 
         QImage image(png);
         QVERIFY(!image.isNull());
@@ -126,7 +127,8 @@ private slots:
             if (r.scene == QLatin1String("default") ? r.lights != 2 : r.lights == 2)
                 uneven.push_back(r);
         const QString unevenPng = dir.filePath("uneven.png");
-        QVERIFY2(writeSpeedAccuracyCharts(uneven, unevenPng, QString(), &error, QSize(600, 420)), qPrintable(error));
+        const Result<> written2 = writeSpeedAccuracyCharts(uneven, unevenPng, QString(), QSize(600, 420));
+        QVERIFY2(written2, qPrintable(written2.error()));
         QCOMPARE(QImage(unevenPng).size(), QSize(2 * 600, 2 * 420));
         QFile::remove(unevenPng);
 
@@ -199,7 +201,8 @@ private slots:
         const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
         if (!keep.isEmpty()) {
             QString error;
-            QVERIFY2(writeChartImages(chart.get(), keep + "/log-axis.png", QString(), &error), qPrintable(error));
+            const Result<> written3 = writeChartImages(chart.get(), keep + "/log-axis.png", QString());
+            QVERIFY2(written3, qPrintable(written3.error()));
         }
 
         // A narrow span stays linear and starts at zero.
@@ -224,14 +227,18 @@ private slots:
         QTemporaryDir dir;
         const QString missing = dir.filePath("no/such/folder/charts.png");
         QString error;
-        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"), &error));
+        const Result<> written6 = writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"));
+        QVERIFY(!written6);
+        error = written6.error();
         QVERIFY2(error.contains(missing), qPrintable(error));
         // Nothing half-written beside it.
         QVERIFY(!QFile::exists(dir.filePath("ok.svg")));
 
         error.clear();
-        QVERIFY(!writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"),
-                                          &error));
+        const Result<> written7 =
+            writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"));
+        QVERIFY(!written7);
+        error = written7.error();
         QVERIFY2(error.contains("charts.svg"), qPrintable(error));
         QVERIFY(!QFile::exists(dir.filePath("ok.png")));
     }
@@ -240,7 +247,9 @@ private slots:
     {
         QTemporaryDir dir;
         QString error;
-        QVERIFY(!writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"), &error));
+        const Result<> written8 = writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"));
+        QVERIFY(!written8);
+        error = written8.error();
         QVERIFY(!error.isEmpty());
     }
 
@@ -256,8 +265,8 @@ private slots:
         series[1].points = {{0.5, 4.0, "area"}, {0.8, 3.0, "angle"}};
         std::unique_ptr<QChart> chart(createLabelledChart(series, "normals", "time (ms)", "mean error (°)"));
         QString error;
-        QVERIFY2(writeChartImages(chart.get(), dir.filePath("n.png"), QString(), &error, QSize(500, 350)),
-                 qPrintable(error));
+        const Result<> written4 = writeChartImages(chart.get(), dir.filePath("n.png"), QString(), QSize(500, 350));
+        QVERIFY2(written4, qPrintable(written4.error()));
         QCOMPARE(QImage(dir.filePath("n.png")).size(), QSize(500, 350));
         QVERIFY(!chart->scene()); // handed back, still ours
     }
@@ -282,13 +291,16 @@ private slots:
         const QString png = dir.filePath("normals.png");
         const QString svg = dir.filePath("normals.svg");
         QString error;
-        QVERIFY2(writeNormalStudyChart(rows, png, svg, &error, QSize(560, 400)), qPrintable(error));
+        const Result<> written5 = writeNormalStudyChart(rows, png, svg, QSize(560, 400));
+        QVERIFY2(written5, qPrintable(written5.error()));
         QCOMPARE(QImage(png).size(), QSize(560, 400));
         QString text;
         QVERIFY2(readSvg(svg, &text, &error), qPrintable(error));
         for (const char *name : {"uv sphere", "icosphere", "unweighted", "mean angular error"})
             QVERIFY2(text.contains(name), qPrintable(name));
-        QVERIFY(!writeNormalStudyChart(std::vector<Row>{}, png, svg, &error));
+        const Result<> written9 = writeNormalStudyChart(std::vector<Row>{}, png, svg);
+        QVERIFY(!written9);
+        error = written9.error();
         const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
         if (!keep.isEmpty()) {
             QFile::remove(keep + "/normal-study.png");

@@ -149,7 +149,9 @@ private slots:
         const QString csv = benchRowsToCsv(rows);
         std::vector<BenchRow> back;
         QString error;
-        QVERIFY2(benchRowsFromCsv(csv, &back, &error), qPrintable(error));
+        const Result<std::vector<BenchRow>> read1 = benchRowsFromCsv(csv);
+        QVERIFY2(read1, qPrintable(read1.error()));
+        back = *read1;
         QCOMPARE(back.size(), rows.size());
         for (size_t i = 0; i < rows.size(); ++i)
             compareRows(rows[i], back[i]);
@@ -164,7 +166,9 @@ private slots:
         csv.prepend(QChar(0xFEFF));
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY2(benchRowsFromCsv(csv, &rows, &error), qPrintable(error));
+        const Result<std::vector<BenchRow>> read2 = benchRowsFromCsv(csv);
+        QVERIFY2(read2, qPrintable(read2.error()));
+        rows = *read2;
         QCOMPARE(rows.size(), size_t(2));
         compareRows(sampleRow(), rows[1]);
     }
@@ -186,7 +190,9 @@ private slots:
 
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY2(benchRowsFromCsv(shuffled, &rows, &error), qPrintable(error));
+        const Result<std::vector<BenchRow>> read3 = benchRowsFromCsv(shuffled);
+        QVERIFY2(read3, qPrintable(read3.error()));
+        rows = *read3;
         QCOMPARE(rows.size(), size_t(1));
         compareRows(sampleRow(), rows[0]);
     }
@@ -195,7 +201,9 @@ private slots:
     {
         std::vector<BenchRow> rows(3);
         QString error;
-        QVERIFY(benchRowsFromCsv(benchRowsToCsv({}), &rows, &error));
+        const Result<std::vector<BenchRow>> read4 = benchRowsFromCsv(benchRowsToCsv({}));
+        QVERIFY2(read4, qPrintable(read4.error()));
+        rows = *read4;
         QVERIFY(rows.empty());
     }
 
@@ -204,7 +212,9 @@ private slots:
         for (const QString &text : {QString(), QStringLiteral("\n\n"), QStringLiteral("  \r\n")}) {
             std::vector<BenchRow> rows;
             QString error;
-            QVERIFY(!benchRowsFromCsv(text, &rows, &error));
+            const Result<std::vector<BenchRow>> read5 = benchRowsFromCsv(text);
+            QVERIFY(!read5);
+            error = read5.error();
             QVERIFY2(error.startsWith("results.csv"), qPrintable(error));
             QVERIFY2(error.contains("empty"), qPrintable(error));
         }
@@ -216,7 +226,9 @@ private slots:
         csv.replace("frame_ms_p90", "frame_ms_p99");
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read6 = benchRowsFromCsv(csv);
+        QVERIFY(!read6);
+        error = read6.error();
         QCOMPARE(error, QStringLiteral("results.csv line 1: missing column frame_ms_p90"));
     }
 
@@ -231,12 +243,15 @@ private slots:
 
         std::vector<BenchRow> rows(1);
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read7 = benchRowsFromCsv(csv);
+        QVERIFY(!read7);
+        error = read7.error();
         QCOMPARE(error, QStringLiteral("results.csv line 8: frame_ms is not a number: 'abc'"));
-        QCOMPARE(rows.size(), size_t(1)); // untouched on failure
 
         // The overload names the file it was given.
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error, QStringLiteral("/tmp/out/results.csv")));
+        const Result<std::vector<BenchRow>> read8 = benchRowsFromCsv(csv, QStringLiteral("/tmp/out/results.csv"));
+        QVERIFY(!read8);
+        error = read8.error();
         QVERIFY2(error.startsWith("/tmp/out/results.csv line 8: frame_ms"), qPrintable(error));
     }
 
@@ -273,7 +288,9 @@ private slots:
         csv += fields.join(',') + '\n';
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read9 = benchRowsFromCsv(csv);
+        QVERIFY(!read9);
+        error = read9.error();
         QCOMPARE(error, QStringLiteral("results.csv line 3: ") + expected);
     }
 
@@ -283,7 +300,9 @@ private slots:
         csv += "default,phong,1\n";
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read10 = benchRowsFromCsv(csv);
+        QVERIFY(!read10);
+        error = read10.error();
         QVERIFY2(error.startsWith("results.csv line 4: expected 20 fields"), qPrintable(error));
     }
 
@@ -293,7 +312,9 @@ private slots:
         csv += "\"unterminated,phong\n";
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read11 = benchRowsFromCsv(csv);
+        QVERIFY(!read11);
+        error = read11.error();
         QVERIFY2(error.startsWith("results.csv line 3:"), qPrintable(error));
     }
 
@@ -306,7 +327,9 @@ private slots:
         csv += fields.join(',') + '\n';
         std::vector<BenchRow> rows;
         QString error;
-        QVERIFY(!benchRowsFromCsv(csv, &rows, &error));
+        const Result<std::vector<BenchRow>> read12 = benchRowsFromCsv(csv);
+        QVERIFY(!read12);
+        error = read12.error();
         QCOMPARE(error, QStringLiteral("results.csv line 5: lights is not a whole number: 'two'"));
     }
 };
