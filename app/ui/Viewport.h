@@ -52,7 +52,7 @@ public:
     // shared context can be had. Both need GL to be up (glInitialized()).
     void adoptProgram(GLuint program);
     BuiltProgram buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
-    Renderer &renderer() { return m_renderer; } // call with the context current (makeCurrent())
+    Renderer &renderer() { return m_renderer; } // call with the context current (CurrentContext)
     // The near/far planes of the last frame (no GL call; any time).
     const DepthRange &depthRange() const { return m_renderer.depthRange(); }
 

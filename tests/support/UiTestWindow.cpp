@@ -1,6 +1,7 @@
 #include "UiTestWindow.h"
 
 #include "render/GlFormat.h"
+#include "ui/CurrentContext.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -69,6 +70,12 @@ Viewport *UiTestWindow::viewport() const
 QImage UiTestWindow::frame() const
 {
     return viewport()->grabFramebuffer();
+}
+
+UniformSnapshot UiTestWindow::programSnapshot() const
+{
+    const CurrentContext current(*viewport());
+    return viewport()->renderer().program().snapshot();
 }
 
 LiveShaderController *UiTestWindow::live() const

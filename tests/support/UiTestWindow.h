@@ -1,4 +1,5 @@
 #pragma once
+#include "render/UniformSnapshot.h"
 #include "ui/MainWindow.h"
 
 #include <QByteArray>
@@ -77,6 +78,9 @@ protected:
 
     Viewport *viewport() const;
     QImage frame() const; // the viewport's framebuffer
+    // The values of the program the viewport draws with, read with its
+    // context taken back first (it may be lent to the build thread).
+    UniformSnapshot programSnapshot() const;
     LiveShaderController *live() const;
     ShaderEditor *fragmentEditor() const; // in the Shader dock
     bool waitForApplied(int timeoutMs = kBuildTimeoutMs) const { return test::waitForApplied(*live(), timeoutMs); }

@@ -6,6 +6,7 @@
 //   soak [--edits N] [--reloads N] [--loads N]
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "ui/CurrentContext.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/SceneLoadJob.h"
@@ -50,14 +51,13 @@ Counts count(MainWindow &window)
 {
     Counts c;
     c.rssKiB = residentKiB();
-    window.viewport()->makeCurrent();
+    const CurrentContext current(*window.viewport());
     QOpenGLFunctions *gl = QOpenGLContext::currentContext()->functions();
     for (GLuint name = 1; name < 20000; ++name) {
         c.programs += gl->glIsProgram(name) ? 1 : 0;
         c.buffers += gl->glIsBuffer(name) ? 1 : 0;
         c.textures += gl->glIsTexture(name) ? 1 : 0;
     }
-    window.viewport()->doneCurrent();
     return c;
 }
 

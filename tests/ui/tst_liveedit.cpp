@@ -7,6 +7,7 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/RecoveryJournal.h"
+#include "ui/CurrentContext.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -225,11 +226,12 @@ void TestLiveEdit::userUniformSurvivesRebuild()
     QVERIFY(waitForApplied());
     const QImage black = frame(); // gain starts at 0
 
-    viewport()->makeCurrent();
-    ShaderProgram &program = viewport()->renderer().program();
-    program.bind();
-    program.setUniform("gain", 0.5f);
-    viewport()->doneCurrent();
+    {
+        const CurrentContext current(*viewport()); // the one way to the viewport's context, lent or not
+        ShaderProgram &program = viewport()->renderer().program();
+        program.bind();
+        program.setUniform("gain", 0.5f);
+    }
     viewport()->update();
     QTRY_VERIFY(frame() != black);
     const QImage withGain = frame();
@@ -239,9 +241,7 @@ void TestLiveEdit::userUniformSurvivesRebuild()
     QVERIFY(waitForApplied());
     QVERIFY(live()->appliedHash() != before); // it was rebuilt...
     QCOMPARE(frame(), withGain);              // ...and gain is still 0.5
-    viewport()->makeCurrent();
-    const UniformSnapshot kept = viewport()->renderer().program().snapshot();
-    viewport()->doneCurrent();
+    const UniformSnapshot kept = programSnapshot();
     QVERIFY(kept.find("gain"));
     QCOMPARE(kept.find("gain")->floats[0], 0.5f);
 }

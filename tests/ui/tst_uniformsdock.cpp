@@ -116,9 +116,7 @@ void TestUniformsDock::typeInto(UniformNumberField *field, const QString &text)
 
 float TestUniformsDock::programValue(const QByteArray &name)
 {
-    viewport()->makeCurrent();
-    const UniformSnapshot values = viewport()->renderer().program().snapshot();
-    viewport()->doneCurrent();
+    const UniformSnapshot values = programSnapshot();
     const UniformValue *value = values.find(name);
     return value ? value->floats[0] : -1.0f;
 }
@@ -264,9 +262,7 @@ void TestUniformsDock::colourIntAndBoolRows()
     QVERIFY(tint->colorButton());             // @color on a vec3 that is not named like one
     QCOMPARE(tint->field(0)->maximum(), 1e6); // no @range: any finite number
     typeInto(tint->field(1), QStringLiteral("0.25"));
-    viewport()->makeCurrent();
-    const UniformSnapshot values = viewport()->renderer().program().snapshot();
-    viewport()->doneCurrent();
+    const UniformSnapshot values = programSnapshot();
     QCOMPARE(values.find("tint")->floats[1], 0.25f);
 
     auto *steps = qobject_cast<UniformIntRow *>(dock()->row(QStringLiteral("steps")));
@@ -276,9 +272,7 @@ void TestUniformsDock::colourIntAndBoolRows()
     auto *flip = qobject_cast<UniformBoolRow *>(dock()->row(QStringLiteral("flip")));
     QVERIFY(flip);
     flip->checkBox()->setChecked(true);
-    viewport()->makeCurrent();
-    const UniformSnapshot after = viewport()->renderer().program().snapshot();
-    viewport()->doneCurrent();
+    const UniformSnapshot after = programSnapshot();
     QCOMPARE(after.find("steps")->ints[0], 3);
     QCOMPARE(after.find("flip")->ints[0], 1);
 }
