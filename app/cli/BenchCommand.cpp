@@ -21,14 +21,12 @@ namespace phonglab::cli {
 
 namespace {
 
-bool writeText(const QString &path, const QString &text, QString *error)
+Result<> writeText(const QString &path, const QString &text)
 {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0 || !file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0 || !file.commit())
+        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+    return {};
 }
 
 // Progress on stderr: one line rewritten in place on a terminal, a line per
@@ -65,15 +63,18 @@ private:
 
 int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool writeResults = true)
 {
-    QString error;
     const QDir out(args.outDir);
-    if (writeResults && !writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows), &error)) {
-        printError(error);
-        return kExitFailure;
+    if (writeResults) {
+        if (const Result<> written = writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows));
+            !written) {
+            printError(written.error());
+            return kExitFailure;
+        }
     }
     const std::vector<SceneFit> fits = fitScenes(rows, args.budget);
-    if (!writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget), &error)) {
-        printError(error);
+    if (const Result<> written = writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget));
+        !written) {
+        printError(written.error());
         return kExitFailure;
     }
     printLine(QStringLiteral("\nfit to budget (%1, the scene's own lights, %2 px silhouette band left out):")

@@ -61,20 +61,16 @@ bool BenchProcess::isRunning() const
     return m_process != nullptr;
 }
 
-bool BenchProcess::start(const Scene &scene, const QSize &size, const ErrorBudget &budget, QString *error)
+Result<> BenchProcess::start(const Scene &scene, const QSize &size, const ErrorBudget &budget)
 {
-    if (m_process) {
-        *error = tr("a measurement is already running");
-        return false;
-    }
+    if (m_process)
+        return fail(tr("a measurement is already running"));
     m_dir = std::make_unique<QTemporaryDir>();
-    if (!m_dir->isValid()) {
-        *error = tr("no temporary folder for the measurement: %1").arg(m_dir->errorString());
-        return false;
-    }
+    if (!m_dir->isValid())
+        return fail(tr("no temporary folder for the measurement: %1").arg(m_dir->errorString()));
     const QString scenePath = m_dir->filePath(QStringLiteral("scene.json"));
-    if (const Result<> saved = saveSceneFile(withAbsoluteMeshes(scene), scenePath); !saved)
-        return *error = saved.error(), false;
+    if (Result<> saved = saveSceneFile(withAbsoluteMeshes(scene), scenePath); !saved)
+        return saved;
 
     QStringList details;
     for (double d : detailLevels())
@@ -104,7 +100,7 @@ bool BenchProcess::start(const Scene &scene, const QSize &size, const ErrorBudge
             processFinished(-1, QProcess::CrashExit);
     });
     m_process->start(executable(), arguments);
-    return true;
+    return {};
 }
 
 void BenchProcess::cancel()

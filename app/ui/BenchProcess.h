@@ -1,6 +1,7 @@
 #pragma once
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
+#include "core/Result.h"
 #include "core/Scene.h"
 
 #include <QObject>
@@ -28,9 +29,9 @@ public:
     // The detail levels the dock measures: halving down to 1/64.
     static std::vector<double> detailLevels();
 
-    // Measures `scene` with its own lights at `size`. False with a reason
-    // when the run cannot start (one is running, the scene cannot be written).
-    bool start(const Scene &scene, const QSize &size, const ErrorBudget &budget, QString *error);
+    // Measures `scene` with its own lights at `size`. A failure when the run
+    // cannot start (one is running, the scene cannot be written).
+    Result<> start(const Scene &scene, const QSize &size, const ErrorBudget &budget);
     bool isRunning() const;
     void cancel();
 

@@ -55,11 +55,11 @@ bool armX11Fallback()
 // never an empty window; a broken default is fatal.
 bool openDefaultScene(MainWindow &window)
 {
-    QString error;
     const QString path = defaultScenePath();
-    if (window.openScene(path, &error))
+    const Result<> opened = window.openScene(path);
+    if (opened)
         return true;
-    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(path, error);
+    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(path, opened.error());
     printError(message);
     QMessageBox::critical(nullptr, QObject::tr("PhongLab"), message);
     return false;
@@ -69,11 +69,10 @@ bool openDefaultScene(MainWindow &window)
 // background like any opened file; a load failing reports itself.
 void openRequestedFile(MainWindow &window, const QString &path)
 {
-    QString error;
-    if (!window.openFiles({path}, &error))
-        QMessageBox::warning(
-            &window, QObject::tr("Cannot open"),
-            QObject::tr("%1\n\n%2\n\nShowing the default scene instead.").arg(QDir::toNativeSeparators(path), error));
+    if (const Result<> opened = window.openFiles({path}); !opened)
+        QMessageBox::warning(&window, QObject::tr("Cannot open"),
+                             QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
+                                 .arg(QDir::toNativeSeparators(path), opened.error()));
 }
 
 } // namespace

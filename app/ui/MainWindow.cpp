@@ -294,38 +294,36 @@ void MainWindow::connectLoading()
     connect(m_loadJob, &SceneLoadJob::cancelled, this, &MainWindow::showLoadCancelled);
 }
 
-bool MainWindow::openScene(const QString &path, QString *error)
+Result<> MainWindow::openScene(const QString &path)
 {
     m_loadJob->cancel(); // one load at a time
     const SceneLoadResult loaded = loadSceneFile(path);
-    QString reason = loaded.error;
-    if (!loaded.ok() || !m_viewport->setScene(*loaded.scene, &reason)) {
-        if (error)
-            *error = reason;
-        return false;
-    }
+    if (!loaded.ok())
+        return fail(loaded.error);
+    if (Result<> set = m_viewport->setScene(*loaded.scene); !set)
+        return set;
     setScenePath(path);
     openSceneShaders(*loaded.scene);
     if (!loaded.warnings.isEmpty())
         statusBar()->showMessage(loaded.warnings.join(QStringLiteral("; ")), kWarningTimeoutMs);
     else
         statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
-    return true;
+    return {};
 }
 
-bool MainWindow::saveScene(const QString &path, QString *error)
+Result<> MainWindow::saveScene(const QString &path)
 {
-    if (!saveShaderBuffers(error))
-        return false;
+    if (Result<> saved = saveShaderBuffers(); !saved)
+        return saved;
     Scene scene = rebasedOnto(m_viewport->currentScene(), path);
     addShaderFiles(scene, path);
     scene.uniforms = userUniformValues();
-    if (const Result<> saved = saveSceneFile(scene, path); !saved)
-        return *error = saved.error(), false;
+    if (Result<> saved = saveSceneFile(scene, path); !saved)
+        return saved;
     setScenePath(path);
     m_recentFiles->add(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
-    return true;
+    return {};
 }
 
 namespace {
@@ -387,19 +385,15 @@ std::map<QString, std::vector<double>> MainWindow::userUniformValues()
 
 // A scene names its shader files, so their unsaved edits are saved with it
 // (a shipped shader's go to its user copy).
-bool MainWindow::saveShaderBuffers(QString *error)
+Result<> MainWindow::saveShaderBuffers()
 {
     for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
         if (!m_shaderDock->isDirty(stage))
             continue;
-        QString reason;
-        if (!m_shaderDock->save(stage, &reason)) {
-            if (error)
-                *error = tr("Cannot save the %1 shader: %2").arg(stageName(stage), reason);
-            return false;
-        }
+        if (const Result<> saved = m_shaderDock->save(stage); !saved)
+            return fail(tr("Cannot save the %1 shader: %2").arg(stageName(stage), saved.error()));
     }
-    return true;
+    return {};
 }
 
 // The dock's files, where they are not shipped ones: relative to the scene
@@ -450,13 +444,10 @@ void MainWindow::openSceneShaders(const Scene &scene)
             continue;
         // One at a time, on its stage's tab, so any suffix goes to the right stage.
         m_shaderDock->tabs()->setCurrentWidget(m_shaderDock->editor(stage));
-        QString error;
-        if (m_shaderDock->openFiles({path}, &error))
+        if (const Result<> read = m_shaderDock->openFiles({path}))
             opened = true;
         else
-            missing << tr("shaders.%1: %2")
-                           .arg(stage == ShaderStage::Vertex ? QStringLiteral("vertex") : QStringLiteral("fragment"),
-                                error);
+            missing << tr("shaders.%1: %2").arg(stageName(stage), read.error());
     }
     if (opened)
         m_liveShaders->buildNow(); // a failure shows in the dock; the last good program stays
@@ -469,16 +460,12 @@ void MainWindow::openSceneShaders(const Scene &scene)
     }
 }
 
-bool MainWindow::openFiles(const QStringList &paths, QString *error)
+Result<> MainWindow::openFiles(const QStringList &paths)
 {
-    const QString reason = whyNotOpenable(paths);
-    if (!reason.isEmpty()) {
-        if (error)
-            *error = reason;
-        return false;
-    }
+    if (const QString reason = whyNotOpenable(paths); !reason.isEmpty())
+        return fail(reason);
     if (isSceneFile(paths.front())) // then it is the only one
-        return startSceneLoad(paths.front(), error);
+        return startSceneLoad(paths.front());
     m_lastFolder = QFileInfo(paths.front()).absolutePath();
     SceneLoadRequest request = meshFilesRequest(m_viewport->currentScene(), paths);
     request.shown = [this, paths] {
@@ -488,19 +475,16 @@ bool MainWindow::openFiles(const QStringList &paths, QString *error)
         statusBar()->showMessage(tr("Opened %1").arg(fileNameList(paths)), kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
-    return true;
+    return {};
 }
 
 // The scene file itself is small and parsed here, so a broken one is refused
 // at once; only its meshes load in the background.
-bool MainWindow::startSceneLoad(const QString &path, QString *error)
+Result<> MainWindow::startSceneLoad(const QString &path)
 {
     const SceneLoadResult parsed = loadSceneFile(path);
-    if (!parsed.ok()) {
-        if (error)
-            *error = parsed.error;
-        return false;
-    }
+    if (!parsed.ok())
+        return fail(parsed.error);
     SceneLoadRequest request = sceneFileRequest(path, *parsed.scene);
     request.shown = [this, path, warnings = parsed.warnings, scene = *parsed.scene] {
         setScenePath(path);
@@ -511,7 +495,7 @@ bool MainWindow::startSceneLoad(const QString &path, QString *error)
         statusBar()->showMessage(message, kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
-    return true;
+    return {};
 }
 
 void MainWindow::changeNormals(int objectIndex, const NormalOptions &options)
@@ -547,11 +531,11 @@ void MainWindow::chooseAndOpenMeshes()
 
 void MainWindow::openFilesOrExplain(const QStringList &paths)
 {
-    QString error;
-    if (openFiles(paths, &error))
+    const Result<> opened = openFiles(paths);
+    if (opened)
         return;
-    statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(error)), kWarningTimeoutMs);
-    warn(tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(error));
+    statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())), kWarningTimeoutMs);
+    warn(tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(opened.error()));
 }
 
 void MainWindow::explainMissingRecentFile(const QString &path)
@@ -567,9 +551,8 @@ void MainWindow::saveSceneToCurrentFile()
         chooseAndSaveScene();
         return;
     }
-    QString error;
-    if (!saveScene(m_scenePath, &error))
-        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(m_scenePath), error));
+    if (const Result<> saved = saveScene(m_scenePath); !saved)
+        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(m_scenePath), saved.error()));
 }
 
 void MainWindow::chooseAndSaveScene()
@@ -579,11 +562,10 @@ void MainWindow::chooseAndSaveScene()
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += QStringLiteral(".json");
-    QString error;
     // saveSceneFile writes atomically: on failure the old file and the scene
     // in the window are both untouched, so the user can retry elsewhere.
-    if (!saveScene(path, &error))
-        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), error));
+    if (const Result<> saved = saveScene(path); !saved)
+        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), saved.error()));
 }
 
 void MainWindow::showFrameStats(double milliseconds, qint64 triangles)
@@ -647,20 +629,14 @@ QString MainWindow::dialogFolder() const
 
 // Non-blocking, so neither a load finishing nor a drop ever waits on a
 // dialog, and nothing stalls the event loop.
-bool MainWindow::exportImage(const QString &path, const QSize &size, QString *error)
+Result<> MainWindow::exportImage(const QString &path, const QSize &size)
 {
     const QImage image = m_viewport->renderImage(size);
-    if (image.isNull()) {
-        if (error)
-            *error = tr("Cannot render a %1×%2 image").arg(size.width()).arg(size.height());
-        return false;
-    }
-    if (!image.save(path, "PNG")) {
-        if (error)
-            *error = tr("Cannot write %1").arg(path);
-        return false;
-    }
-    return true;
+    if (image.isNull())
+        return fail(tr("Cannot render a %1×%2 image").arg(size.width()).arg(size.height()));
+    if (!image.save(path, "PNG"))
+        return fail(tr("Cannot write %1").arg(path));
+    return {};
 }
 
 void MainWindow::chooseAndExportImage()
@@ -679,9 +655,8 @@ void MainWindow::chooseAndExportImage()
         QFileDialog::getSaveFileName(this, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!exportImage(path, {width, height}, &error))
-        warn(tr("Export Image"), error);
+    if (const Result<> exported = exportImage(path, {width, height}); !exported)
+        warn(tr("Export Image"), exported.error());
     else
         statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include "StartupOptions.h"
 #include "core/NormalOptions.h"
+#include "core/Result.h"
 #include "core/ShadingMethod.h"
 
 #include <QMainWindow>
@@ -48,15 +49,15 @@ public:
     // files as the scene's "shaders" when they are not the shipped ones;
     // opening a scene with "shaders" loads and builds those files (a missing
     // one: a warning, and the shading method's shipped shaders stay).
-    bool openScene(const QString &path, QString *error);
-    bool saveScene(const QString &path, QString *error);
+    Result<> openScene(const QString &path);
+    Result<> saveScene(const QString &path);
 
     // What File → Open, File → Recent and dropping files do: one scene
     // (.json), or any number of meshes that replace the scene's objects, side
     // by side. Loads in the background and reports through loadJob(). False
     // with a reason, and nothing changes, when the files cannot be opened at
     // all (an unsupported type, a broken scene file).
-    bool openFiles(const QStringList &paths, QString *error);
+    Result<> openFiles(const QStringList &paths);
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
     // Shows every object at `detail` with `method` shading (Fit to budget),
@@ -71,7 +72,7 @@ public:
     bool restoreWindowSettings();
 
     // Renders the current view at `size` pixels and writes it as PNG.
-    bool exportImage(const QString &path, const QSize &size, QString *error);
+    Result<> exportImage(const QString &path, const QSize &size);
 
     QString scenePath() const { return m_scenePath; }
     // Why the last opened scene's "shaders" could not be used; empty if they could.
@@ -114,9 +115,9 @@ private:
     void createViewMenu();
     void createStatusBar();
     void connectLoading();
-    bool startSceneLoad(const QString &path, QString *error);
+    Result<> startSceneLoad(const QString &path);
     std::map<QString, std::vector<double>> userUniformValues();
-    bool saveShaderBuffers(QString *error);
+    Result<> saveShaderBuffers();
     void addShaderFiles(Scene &scene, const QString &sceneFilePath) const;
     void openSceneShaders(const Scene &scene);
     void setScenePath(const QString &path, const QString &title = {});

@@ -153,9 +153,8 @@ void PerformanceDock::startMeasurement(bool thenFit)
     m_fitAfterMeasuring = thenFit;
     // Measured at what the viewport shows, in device pixels.
     const QSize size = m_viewport->size() * m_viewport->devicePixelRatioF();
-    QString error;
-    if (!m_process->start(m_viewport->currentScene(), size, budget(), &error)) {
-        m_report->setText(tr("Cannot measure: %1").arg(error));
+    if (const Result<> started = m_process->start(m_viewport->currentScene(), size, budget()); !started) {
+        m_report->setText(tr("Cannot measure: %1").arg(started.error()));
         emit measured();
         return;
     }

@@ -117,9 +117,8 @@ void SceneLoadJob::workerFinished()
             info.insert(it.key(), it.value());
         scene = request.finish(m_viewport->currentScene(), info);
     }
-    QString error;
-    if (!m_viewport->setScene(scene, std::move(meshes), &error)) {
-        emit failed(request.label, error);
+    if (const Result<> set = m_viewport->setScene(scene, std::move(meshes)); !set) {
+        emit failed(request.label, set.error());
         return;
     }
     if (request.shown)

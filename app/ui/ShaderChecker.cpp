@@ -30,17 +30,15 @@ struct ShaderChecker::Cache {
 
     // The meshes of every object, loading only those not kept already and
     // keeping no others.
-    std::optional<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(const Scene &s, QString *error,
-                                                                             const std::atomic<bool> &cancelled)
+    Result<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(const Scene &s,
+                                                                      const std::atomic<bool> &cancelled)
     {
         QSet<QString> kept;
         for (auto it = meshes.cbegin(); it != meshes.cend(); ++it)
             kept.insert(it.key());
         const SceneMeshes loaded = loadSceneMeshes(s, kept, [&](double) { return !cancelled.load(); });
-        if (!loaded.ok()) {
-            *error = loaded.error;
-            return std::nullopt;
-        }
+        if (!loaded.ok())
+            return fail(loaded.error);
         QHash<QString, std::shared_ptr<const MeshData>> used;
         std::vector<std::shared_ptr<const MeshData>> out;
         for (const SceneObject &object : s.objects) {
@@ -55,21 +53,19 @@ struct ShaderChecker::Cache {
         return out;
     }
 
-    std::shared_ptr<const CheckReference> referenceFor(const Scene &s, QSize sz, QString *error,
-                                                       const std::atomic<bool> &cancelled)
+    Result<std::shared_ptr<const CheckReference>> referenceFor(const Scene &s, QSize sz,
+                                                               const std::atomic<bool> &cancelled)
     {
         if (reference && scene && sameScene(*scene, s) && size == sz)
             return reference;
         reference.reset(); // not kept beside the new one while it is made
-        const auto objectMeshes = this->objectMeshes(s, error, cancelled);
+        const auto objectMeshes = this->objectMeshes(s, cancelled);
         if (!objectMeshes)
-            return nullptr;
+            return fail(objectMeshes.error());
         Result<CheckReference> made =
             makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), [&](double) { return !cancelled.load(); });
-        if (!made) {
-            *error = made.error();
-            return nullptr;
-        }
+        if (!made)
+            return fail(made.error());
         reference = std::make_shared<const CheckReference>(std::move(*made));
         scene = s;
         size = sz;
@@ -132,7 +128,10 @@ void ShaderChecker::start(Request request)
         result.scene = request.scene;
         result.yours = request.yours;
         try {
-            result.reference = cache->referenceFor(request.scene, request.yours.size(), &result.error, *cancelled);
+            Result<std::shared_ptr<const CheckReference>> reference =
+                cache->referenceFor(request.scene, request.yours.size(), *cancelled);
+            result.error = reference.error();
+            result.reference = reference.valueOr(nullptr);
             if (result.reference) {
                 const RgbImage yours = toRgbImage(request.yours);
                 result.report = checkRender(yours, *result.reference);

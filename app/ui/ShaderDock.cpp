@@ -251,13 +251,8 @@ void ShaderDock::goTo(ShaderStage stage, int line, int column)
         target->setFocus(Qt::OtherFocusReason);
 }
 
-bool ShaderDock::openFiles(const QStringList &paths, QString *error)
+Result<> ShaderDock::openFiles(const QStringList &paths)
 {
-    const auto fail = [error](const QString &message) {
-        if (error)
-            *error = message;
-        return false;
-    };
     if (paths.isEmpty() || paths.size() > 2)
         return fail(tr("Open one shader, or a vertex and a fragment shader."));
     QList<std::pair<ShaderStage, ShaderSource>> opened;
@@ -284,23 +279,23 @@ bool ShaderDock::openFiles(const QStringList &paths, QString *error)
     for (const auto &entry : opened)
         emit textEdited(entry.first);
     emit filesChanged();
-    return true;
+    return {};
 }
 
-bool ShaderDock::save(ShaderStage stage, QString *error)
+Result<> ShaderDock::save(ShaderStage stage)
 {
-    if (!m_files->save(stage, text(stage), error))
-        return false;
-    editor(stage)->setModified(false); // the save point: undoing back to here is clean
-    return true;
+    Result<> saved = m_files->save(stage, text(stage));
+    if (saved)
+        editor(stage)->setModified(false); // the save point: undoing back to here is clean
+    return saved;
 }
 
-bool ShaderDock::saveAs(ShaderStage stage, const QString &path, QString *error)
+Result<> ShaderDock::saveAs(ShaderStage stage, const QString &path)
 {
-    if (!m_files->saveAs(stage, path, text(stage), error))
-        return false;
-    editor(stage)->setModified(false);
-    return true;
+    Result<> saved = m_files->saveAs(stage, path, text(stage));
+    if (saved)
+        editor(stage)->setModified(false);
+    return saved;
 }
 
 void ShaderDock::chooseAndOpen()
@@ -316,16 +311,14 @@ void ShaderDock::chooseAndOpen()
         replaced << stageFromSuffix(path).value_or(currentStage());
     if (!confirmDiscard(replaced))
         return;
-    QString error;
-    if (!openFiles(paths, &error))
-        warn(error);
+    if (const Result<> opened = openFiles(paths); !opened)
+        warn(opened.error());
 }
 
 void ShaderDock::saveCurrent()
 {
-    QString error;
-    if (!save(currentStage(), &error))
-        warn(error);
+    if (const Result<> saved = save(currentStage()); !saved)
+        warn(saved.error());
 }
 
 void ShaderDock::chooseAndSaveAsCurrent()
@@ -337,9 +330,8 @@ void ShaderDock::chooseAndSaveAsCurrent()
     const QString path = QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));
     if (path.isEmpty())
         return;
-    QString error;
-    if (!saveAs(stage, path, &error))
-        warn(error);
+    if (const Result<> saved = saveAs(stage, path); !saved)
+        warn(saved.error());
 }
 
 bool ShaderDock::confirmDiscard(const QList<ShaderStage> &stages)

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Result.h"
 #include "core/ShadingMethod.h"
 #include "render/ShaderDiagnostic.h"
 #include "render/ShaderSource.h"
@@ -47,10 +48,10 @@ public:
 
     // Without dialogs (tests, command line). openFiles() takes one file or a
     // .vert/.frag pair; the stage comes from the suffix, else the current tab.
-    bool openFiles(const QStringList &paths, QString *error);
-    bool save(ShaderStage stage, QString *error);
-    bool saveAs(ShaderStage stage, const QString &path, QString *error);
-    // Shows `stage`'s editor (Link: the fragment one) with the cursor at the
+    Result<> openFiles(const QStringList &paths);
+    Result<> save(ShaderStage stage);
+    Result<> saveAs(ShaderStage stage, const QString &path);
+    // Shows `stage`'s editor with the cursor at the
     // 1-based line and column, focused.
     void goTo(ShaderStage stage, int line, int column);
 

@@ -38,14 +38,12 @@ QString canonical(const QString &path)
     return folder.isEmpty() ? QDir::cleanPath(info.absoluteFilePath()) : folder + QLatin1Char('/') + info.fileName();
 }
 
-bool writeAtomically(const QString &path, const QByteArray &code, QString *error)
+Result<> writeAtomically(const QString &path, const QByteArray &code)
 {
     QSaveFile out(path);
     if (out.open(QIODevice::WriteOnly) && out.write(code) == code.size() && out.commit())
-        return true;
-    if (error)
-        *error = QObject::tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), out.errorString());
-    return false;
+        return {};
+    return fail(QObject::tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), out.errorString()));
 }
 
 QString defaultFileName(ShaderStage stage)
@@ -152,67 +150,60 @@ void ShaderFileSet::setDirty(ShaderStage stage, bool dirty)
     if (f.dirty == dirty)
         return;
     if (dirty && needsUserCopy(f.path)) {
-        QString error;
-        if (!moveToUserCopy(stage, f.diskCode, &error))
-            emit problem(error); // still dirty; saving will try again
+        if (const Result<> moved = moveToUserCopy(stage, f.diskCode); !moved)
+            emit problem(moved.error()); // still dirty; saving will try again
     }
     f.dirty = dirty;
     emit dirtyChanged(stage, dirty);
 }
 
-bool ShaderFileSet::moveToUserCopy(ShaderStage stage, const QByteArray &content, QString *error)
+Result<> ShaderFileSet::moveToUserCopy(ShaderStage stage, const QByteArray &content)
 {
     const QString folder = userFolder();
-    if (!QDir().mkpath(folder)) {
-        if (error)
-            *error = tr("%1: cannot create the folder for user shaders").arg(QDir::toNativeSeparators(folder));
-        return false;
-    }
+    if (!QDir().mkpath(folder))
+        return fail(tr("%1: cannot create the folder for user shaders").arg(QDir::toNativeSeparators(folder)));
     File &f = file(stage);
     const QString name = f.path.isEmpty() ? defaultFileName(stage) : QFileInfo(f.path).fileName();
     const QString copy = unusedPath(folder, name);
-    if (!writeAtomically(copy, content, error))
-        return false;
+    if (Result<> done = writeAtomically(copy, content); !done)
+        return done;
     f.path = copy;
     f.diskCode = content;
     watchFolders();
     emit pathChanged(stage, copy);
-    return true;
+    return {};
 }
 
-bool ShaderFileSet::save(ShaderStage stage, const QByteArray &code, QString *error)
+Result<> ShaderFileSet::save(ShaderStage stage, const QByteArray &code)
 {
     File &f = file(stage);
     if (needsUserCopy(f.path)) {
-        if (!moveToUserCopy(stage, code, error))
-            return false;
+        if (Result<> done = moveToUserCopy(stage, code); !done)
+            return done;
     } else {
-        if (!writeAtomically(f.path, code, error))
-            return false;
+        if (Result<> done = writeAtomically(f.path, code); !done)
+            return done;
         f.diskCode = code; // so the watcher does not take our own write for someone else's
     }
     setDirty(stage, false);
-    return true;
+    return {};
 }
 
-bool ShaderFileSet::saveAs(ShaderStage stage, const QString &path, const QByteArray &code, QString *error)
+Result<> ShaderFileSet::saveAs(ShaderStage stage, const QString &path, const QByteArray &code)
 {
-    if (isShipped(path)) {
-        if (error)
-            *error = tr("%1 is a shader shipped with PhongLab and is never overwritten; "
-                        "save under another name or folder.")
-                         .arg(QDir::toNativeSeparators(path));
-        return false;
-    }
-    if (!writeAtomically(path, code, error))
-        return false;
+    if (isShipped(path))
+        return fail(tr("%1 is a shader shipped with PhongLab and is never overwritten; "
+                       "save under another name or folder.")
+                        .arg(QDir::toNativeSeparators(path)));
+    if (Result<> done = writeAtomically(path, code); !done)
+        return done;
     File &f = file(stage);
     f.path = path;
     f.diskCode = code;
     watchFolders();
     emit pathChanged(stage, path);
     setDirty(stage, false);
-    return true;
+    return {};
 }
 
 void ShaderFileSet::watchFolders()

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Result.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QByteArray>
@@ -65,8 +66,8 @@ public:
 
     // Atomic writes (QSaveFile). save() goes to the user copy for shipped
     // shaders; saveAs() refuses shipped targets. Both leave the stage clean.
-    bool save(ShaderStage stage, const QByteArray &code, QString *error);
-    bool saveAs(ShaderStage stage, const QString &path, const QByteArray &code, QString *error);
+    Result<> save(ShaderStage stage, const QByteArray &code);
+    Result<> saveAs(ShaderStage stage, const QString &path, const QByteArray &code);
 
     // Compares the files with what was last read or written and handles any
     // difference. The folder watcher calls it shortly after a change.
@@ -92,7 +93,7 @@ private:
     File &file(ShaderStage stage);
     const File &file(ShaderStage stage) const;
     bool needsUserCopy(const QString &path) const;
-    bool moveToUserCopy(ShaderStage stage, const QByteArray &content, QString *error);
+    Result<> moveToUserCopy(ShaderStage stage, const QByteArray &content);
     void handleExternalChange(ShaderStage stage, const QByteArray &onDisk);
     bool askToReload(ShaderStage stage);
     void applyReload(ShaderStage stage, const QByteArray &onDisk);

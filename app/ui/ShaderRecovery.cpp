@@ -107,7 +107,7 @@ void ShaderRecovery::restore(const OrphanedSession &session)
     m_shading = r.shading;
 }
 
-bool ShaderRecovery::writeNow(QString *error)
+void ShaderRecovery::writeNow()
 {
     RecoveryRecord record;
     record.vertex = {m_dock->filePath(ShaderStage::Vertex), m_dock->text(ShaderStage::Vertex),
@@ -117,12 +117,9 @@ bool ShaderRecovery::writeNow(QString *error)
     record.shading = m_shading;
     if (const Result<> written = m_journal.write(record); !written) {
         qWarning("phonglab: cannot write the recovery journal: %s", qPrintable(written.error()));
-        if (error)
-            *error = written.error();
-        return false;
+        return;
     }
     m_stale = false;
-    return true;
 }
 
 void ShaderRecovery::noteEdited()
@@ -169,9 +166,10 @@ bool ShaderRecovery::confirmUnsaved(QWidget *parent)
     if (answer != QMessageBox::Save)
         return answer == QMessageBox::Discard;
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-        QString error;
-        if (m_dock->isDirty(stage) && !m_dock->save(stage, &error)) {
-            QMessageBox::warning(parent, tr("Cannot save shader"), error);
+        if (!m_dock->isDirty(stage))
+            continue;
+        if (const Result<> saved = m_dock->save(stage); !saved) {
+            QMessageBox::warning(parent, tr("Cannot save shader"), saved.error());
             return false;
         }
     }

@@ -47,8 +47,9 @@ public:
     Outcome offer(Answer answer, QWidget *parent);
 
     void setShading(const QString &shading) { m_shading = shading; }
-    // Writes the journal now (before a compile). False with a reason.
-    bool writeNow(QString *error = nullptr);
+    // Writes the journal now (before a compile). A failure is logged: the
+    // journal is a safety net, editing goes on.
+    void writeNow();
     // The buffers changed: journal them within the timer's period.
     void noteEdited();
     // Files were saved or replaced: forget the journal if nothing is unsaved.

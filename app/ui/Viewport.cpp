@@ -78,46 +78,40 @@ QSize Viewport::sizeHint() const
     return {960, 720};
 }
 
-bool Viewport::setScene(const Scene &scene, QString *error)
+Result<> Viewport::setScene(const Scene &scene)
 {
-    return setScene(scene, loadSceneMeshes(scene, loadedKeys()), error);
+    return setScene(scene, loadSceneMeshes(scene, loadedKeys()));
 }
 
-bool Viewport::setScene(const Scene &scene, SceneMeshes &&meshes, QString *error)
+Result<> Viewport::setScene(const Scene &scene, SceneMeshes &&meshes)
 {
-    if (!meshes.ok()) {
-        if (error)
-            *error = meshes.error;
-        return false;
-    }
+    if (!meshes.ok())
+        return fail(meshes.error);
     if (m_glInitialized) {
-        bool ok = false;
+        Result<> uploaded;
         bool programReplaced = false;
         {
             const CurrentContext current(*this);
             const GLuint programBefore = m_renderer.program().id();
-            ok = uploadScene(scene, std::move(meshes), error);
+            uploaded = uploadScene(scene, std::move(meshes));
             programReplaced = m_renderer.program().id() != programBefore;
         }
         if (programReplaced) // the new scene's shading, or the old one restored after a failure
-            emit shippedProgramLoaded(ok ? scene.shading : m_scene.shading);
-        if (!ok)
-            return false;
+            emit shippedProgramLoaded(uploaded ? scene.shading : m_scene.shading);
+        if (!uploaded)
+            return uploaded;
         m_renderReady = true;
     } else {
         // A scene accepted here must not fail later in initializeGL, so check
         // now that nothing is missing.
         for (const SceneObject &object : scene.objects) {
-            if (!meshes.entries.contains(meshKey(scene, object))) {
-                if (error)
-                    *error = tr("%1: mesh was not loaded").arg(scene.resolveMeshPath(object.mesh));
-                return false;
-            }
+            if (!meshes.entries.contains(meshKey(scene, object)))
+                return fail(tr("%1: mesh was not loaded").arg(scene.resolveMeshPath(object.mesh)));
         }
         m_pendingMeshes = std::move(meshes);
     }
     showUploaded(scene);
-    return true;
+    return {};
 }
 
 QSet<QString> Viewport::loadedKeys() const
@@ -358,8 +352,8 @@ void Viewport::initializeGL()
     // (the widget moved to another window) the scene is loaded again here.
     SceneMeshes meshes = m_pendingMeshes ? std::move(*m_pendingMeshes) : loadSceneMeshes(m_scene);
     m_pendingMeshes.reset();
-    if (QString error; !uploadScene(currentScene(), std::move(meshes), &error)) {
-        emit renderError(error);
+    if (const Result<> uploaded = uploadScene(currentScene(), std::move(meshes)); !uploaded) {
+        emit renderError(uploaded.error());
         return;
     }
     m_parametersDirty = false;
@@ -370,27 +364,20 @@ void Viewport::initializeGL()
 
 // Needs the context current. The shading program goes first because it is the
 // cheap one to restore if the meshes then fail.
-bool Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error)
+Result<> Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes)
 {
     const ShadingMethod previousShading = m_renderer.scene().shading;
     const bool reloadShading = !m_renderer.hasProgram() || scene.shading != previousShading;
     if (reloadShading) {
         const BuildReport built = m_renderer.loadShading(scene.shading);
-        if (!built.ok) {
-            if (error)
-                *error = tr("Cannot build the %1 shading program:\n%2")
-                             .arg(shadingName(scene.shading), built.errorSummary());
-            return false; // the renderer keeps its previous program
-        }
+        if (!built.ok) // the renderer keeps its previous program
+            return fail(
+                tr("Cannot build the %1 shading program:\n%2").arg(shadingName(scene.shading), built.errorSummary()));
     }
-    if (const Result<> set = m_renderer.setScene(scene, std::move(meshes)); !set) {
-        if (reloadShading && scene.shading != previousShading)
-            m_renderer.loadShading(previousShading);
-        if (error)
-            *error = set.error();
-        return false;
-    }
-    return true;
+    Result<> set = m_renderer.setScene(scene, std::move(meshes));
+    if (!set && reloadShading && scene.shading != previousShading)
+        m_renderer.loadShading(previousShading);
+    return set;
 }
 
 void Viewport::cleanup()

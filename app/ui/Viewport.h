@@ -27,12 +27,12 @@ public:
 
     // Shows `scene` with its own camera. On failure (a mesh that cannot be
     // loaded, a shading program that does not build) the current scene stays
-    // and `error` says why. Loads the meshes on the calling thread: the
+    // and the failure says why. Loads the meshes on the calling thread: the
     // window uses SceneLoadJob and the overload below instead.
-    bool setScene(const Scene &scene, QString *error);
+    Result<> setScene(const Scene &scene);
     // Shows `scene` with meshes loaded elsewhere (loadSceneMeshes(scene,
     // loadedKeys())). Before the first initializeGL they wait there.
-    bool setScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    Result<> setScene(const Scene &scene, SceneMeshes &&meshes);
     // Meshes already on the GPU, which a load may skip (by meshKey()).
     QSet<QString> loadedKeys() const;
     // Statistics and warnings of the meshes the scene uses, by meshKey().
@@ -154,7 +154,7 @@ private:
     };
 
     void cleanup();
-    bool uploadScene(const Scene &scene, SceneMeshes &&meshes, QString *error);
+    Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
     void showUploaded(const Scene &scene);
     void cameraMoved();
     void recordFrameTime(double milliseconds);

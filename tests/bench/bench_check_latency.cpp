@@ -86,8 +86,8 @@ int main(int argc, char **argv)
     window.resize(parser.value(QStringLiteral("width")).toInt(), parser.value(QStringLiteral("height")).toInt());
     window.show();
     QString error;
-    if (!window.openScene(defaultScenePath(), &error)) {
-        std::fprintf(stderr, "%s\n", qPrintable(error));
+    if (const Result<> done = window.openScene(defaultScenePath()); !done) {
+        std::fprintf(stderr, "%s\n", qPrintable(done.error()));
         return 1;
     }
     Viewport *viewport = window.viewport();

@@ -73,8 +73,8 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread
     m_window = std::make_unique<MainWindow>();
     m_window->liveShaders()->setWarmUp(warmUp);
     QString error;
-    if (!m_window->viewport()->setScene(scene, &error)) {
-        std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(error));
+    if (const Result<> done = m_window->viewport()->setScene(scene); !done) {
+        std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(done.error()));
         return;
     }
     m_window->viewport()->setShowLightMarkers(false); // the same single draw as the raw path

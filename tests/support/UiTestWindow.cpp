@@ -53,7 +53,10 @@ void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, Q
 {
     window = std::make_unique<MainWindow>();
     QString error;
-    QVERIFY2(window->openScene(scenePath, &error), qPrintable(error));
+    {
+        const Result<> done = window->openScene(scenePath);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     showAndWaitForFrame(*window, size);
 }
 

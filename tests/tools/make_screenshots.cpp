@@ -64,8 +64,8 @@ int main(int argc, char **argv)
     MainWindow window;
     window.resize(1280, 760);
     QString error;
-    if (!window.openScene(defaultScenePath(), &error)) {
-        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
+    if (const Result<> done = window.openScene(defaultScenePath()); !done) {
+        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }
     window.show();
@@ -93,8 +93,8 @@ int main(int argc, char **argv)
     // The check on its own scene with reflect(L, N) typed in: the verdict in
     // the status bar, the heatmap, the split view, the pixel inspector.
     fragment->setCode(code.replace("normalise(", "normalize("));
-    if (!window.openScene(assetPath(QStringLiteral("scenes/check.json")), &error)) {
-        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
+    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/check.json"))); !done) {
+        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }
     settle(1500);
@@ -123,8 +123,8 @@ int main(int argc, char **argv)
     if (qEnvironmentVariableIsEmpty("PHONGLAB_EXE"))
         qputenv("PHONGLAB_EXE",
                 (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab")).toUtf8());
-    if (!window.openScene(assetPath(QStringLiteral("scenes/sphere.json")), &error)) {
-        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(error));
+    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/sphere.json"))); !done) {
+        std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }
     PerformanceDock *performance = window.performanceDock();

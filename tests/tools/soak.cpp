@@ -107,8 +107,7 @@ public:
 
     bool open(const QString &path)
     {
-        QString error;
-        if (!m_window.openFiles({path}, &error))
+        if (!m_window.openFiles({path}))
             return false;
         return waitFor([&] { return !m_window.loadJob()->isRunning(); }, 60000);
     }
@@ -144,8 +143,8 @@ int main(int argc, char **argv)
     const QString scene = test::sourcePath(QStringLiteral("assets/scenes/default.json"));
     MainWindow window;
     QString error;
-    if (!window.openScene(scene, &error)) {
-        std::fprintf(stderr, "soak: %s\n", qPrintable(error));
+    if (const Result<> done = window.openScene(scene); !done) {
+        std::fprintf(stderr, "soak: %s\n", qPrintable(done.error()));
         return 1;
     }
     window.resize(900, 600);

@@ -300,7 +300,10 @@ void TestLightsDock::exportImageAtAnySize()
 {
     const QString path = QDir::temp().filePath(QStringLiteral("phonglab-export-test.png"));
     QString error;
-    QVERIFY2(m_window->exportImage(path, {333, 211}, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->exportImage(path, {333, 211});
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     const QImage image(path);
     QCOMPARE(image.size(), QSize(333, 211));
     QFile::remove(path);

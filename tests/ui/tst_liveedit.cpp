@@ -301,7 +301,10 @@ void TestLiveEdit::editingNeverWritesShippedShaders()
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     QString error;
-    QVERIFY2(dock()->save(ShaderStage::Fragment, &error), qPrintable(error));
+    {
+        const Result<> done = dock()->save(ShaderStage::Fragment);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(dock()->filePath(ShaderStage::Fragment).startsWith(ShaderFileSet::userFolder()));
     // Everything saved: nothing left to recover.
     QTRY_VERIFY_WITH_TIMEOUT(!live()->recovery()->journal().hasJournal(), 5000);

@@ -228,7 +228,9 @@ void TestMainWindow::failedOpenKeepsCurrentScene()
     const QImage imageBefore = frame();
 
     QString error;
-    QVERIFY(!m_window->openScene(path, &error));
+    const Result<> refused1 = m_window->openScene(path);
+    QVERIFY(!refused1);
+    error = refused1.error();
     QVERIFY2(error.contains(expectedError), qPrintable(error));
 
     QCOMPARE(viewport()->currentScene(), before);
@@ -312,7 +314,10 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("saved.json"));
     QString error;
-    QVERIFY2(m_window->saveScene(path, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->saveScene(path);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QCOMPARE(m_window->scenePath(), path);
     QVERIFY(m_window->windowTitle().contains(QStringLiteral("saved.json")));
 
@@ -322,8 +327,11 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
 
     // Reopened in the window it is the same scene, and "reset" now goes back
     // to the saved camera.
-    QVERIFY(m_window->openScene(defaultScenePathInSource(), &error));
-    QVERIFY2(m_window->openScene(path, &error), qPrintable(error));
+    QVERIFY(m_window->openScene(defaultScenePathInSource()));
+    {
+        const Result<> done = m_window->openScene(path);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QCOMPARE(withResolvedMeshes(viewport()->currentScene()), withResolvedMeshes(shown));
     drag(Qt::LeftButton, {-60, 0});
     viewport()->resetCamera();
@@ -331,7 +339,9 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
 
     // A failed save reports why and changes nothing.
     const QString unwritable = dir.filePath(QStringLiteral("no-such-folder/saved.json"));
-    QVERIFY(!m_window->saveScene(unwritable, &error));
+    const Result<> refused2 = m_window->saveScene(unwritable);
+    QVERIFY(!refused2);
+    error = refused2.error();
     QVERIFY(!error.isEmpty());
     QCOMPARE(m_window->scenePath(), path);
 }

@@ -174,7 +174,10 @@ void TestMeshLoading::init()
     m_window = std::make_unique<MainWindow>();
     m_window->recentFiles()->clear();
     QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")));
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     test::showAndWaitForFrame(*m_window, {1000, 640});
 }
 
@@ -191,9 +194,12 @@ bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     start();
     // Requests from the dock arrive queued: first the load starts (or ends at once) ...
-    QTest::qWaitFor([&] { return job->isRunning() || !loaded.isEmpty() || !failed.isEmpty(); }, 1000);
+    const bool started =
+        QTest::qWaitFor([&] { return job->isRunning() || !loaded.isEmpty() || !failed.isEmpty(); }, 1000);
     // ... then it ends.
-    QTest::qWaitFor([&] { return !job->isRunning(); }, kLoadTimeoutMs);
+    const bool ended = QTest::qWaitFor([&] { return !job->isRunning(); }, kLoadTimeoutMs);
+    if (!started || !ended)
+        qWarning("the load %s", !started ? "never started" : "did not end in time");
     m_lastError = failed.isEmpty() ? QString() : failed.last().at(1).toString();
     return !loaded.isEmpty() && failed.isEmpty() && !job->isRunning();
 }
@@ -201,9 +207,8 @@ bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
 bool TestMeshLoading::openAndWait(const QStringList &paths)
 {
     return waitForLoad([&] {
-        QString error;
-        if (!m_window->openFiles(paths, &error))
-            m_lastError = error;
+        if (const Result<> opened = m_window->openFiles(paths); !opened)
+            m_lastError = opened.error();
     });
 }
 
@@ -329,10 +334,15 @@ void TestMeshLoading::unsupportedFileIsRefused()
     QSignalSpy started(m_window->loadJob(), &SceneLoadJob::started);
 
     QString error;
-    QVERIFY(!m_window->openFiles({path}, &error));
+    const Result<> refused1 = m_window->openFiles({path});
+    QVERIFY(!refused1);
+    error = refused1.error();
     QVERIFY2(error.contains(QStringLiteral("notes.txt")) && error.contains(QStringLiteral(".obj")), qPrintable(error));
     // A scene goes on its own, not mixed with meshes.
-    QVERIFY(!m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))}, &error));
+    const Result<> refused2 =
+        m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
+    QVERIFY(!refused2);
+    error = refused2.error();
     QVERIFY2(error.contains(QStringLiteral("scene")), qPrintable(error));
     QCOMPARE(started.count(), 0);
     QCOMPARE(viewport()->currentScene(), before);
@@ -357,7 +367,10 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     QElapsedTimer loadTime;
     const bool ok = waitForLoad([&] {
         QString error;
-        QVERIFY2(m_window->openFiles({m_largeObj}, &error), qPrintable(error));
+        {
+            const Result<> done = m_window->openFiles({m_largeObj});
+            QVERIFY2(done, qPrintable(done.error()));
+        }
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
         viewport()->update(); // a frame of the old scene while loading
@@ -389,7 +402,10 @@ void TestMeshLoading::cancelKeepsScene()
     QSignalSpy loaded(job, &SceneLoadJob::loaded);
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     QString error;
-    QVERIFY2(m_window->openFiles({m_largeObj}, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openFiles({m_largeObj});
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(m_window->loadProgress()->isVisible());
     QTest::mouseClick(m_window->loadProgress()->cancelButton(), Qt::LeftButton);
 
@@ -437,7 +453,10 @@ void TestMeshLoading::cancelEndsTheImportChild()
     const Scene before = viewport()->currentScene();
     qputenv("PHONGLAB_IMPORT_FAULT", "hang");
     QString error;
-    QVERIFY2(m_window->openFiles({path}, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openFiles({path});
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QTRY_VERIFY_WITH_TIMEOUT(!importChildren().isEmpty(), 5000);
     qunsetenv("PHONGLAB_IMPORT_FAULT");
     QElapsedTimer clock;
@@ -457,7 +476,10 @@ void TestMeshLoading::closingWhileLoading()
     // The window goes while its worker runs: the worker is stopped and
     // nothing it finishes reaches the destroyed window.
     QString error;
-    QVERIFY2(m_window->openFiles({m_largeObj}, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openFiles({m_largeObj});
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(m_window->loadJob()->isRunning());
     QElapsedTimer timer;
     timer.start();
@@ -518,13 +540,16 @@ void TestMeshLoading::normalsSurviveSaveAndReopen()
 
     const QString path = m_dir.filePath(QStringLiteral("tree-scene.json"));
     QString error;
-    QVERIFY2(m_window->saveScene(path, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->saveScene(path);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->objects[0].normals, expected);
     QCOMPARE(saved.scene->objects[0].transform, viewport()->currentScene().objects[0].transform);
 
-    QVERIFY(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error));
+    QVERIFY(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
     QVERIFY2(openAndWait({path}), qPrintable(m_lastError));
     QCOMPARE(m_window->scenePath(), path);
     QCOMPARE(viewport()->currentScene().objects[0].normals, expected);
@@ -575,7 +600,10 @@ void TestMeshLoading::meshOpenedBeforeFirstShow()
     // The meshes wait in the viewport until GL is up, then show.
     m_window = std::make_unique<MainWindow>();
     QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")), &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")));
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY2(openAndWait({treePath()}), qPrintable(m_lastError));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QVERIFY(!dockField(dock(), 0, QStringLiteral("Triangles")).isEmpty());
@@ -622,7 +650,10 @@ void TestMeshLoading::recentFilesRememberAndForget()
 void TestMeshLoading::builtinShapesHaveNoNormalsControl()
 {
     QString error;
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QCOMPARE(dock()->objectTree()->topLevelItem(0)->text(0), QStringLiteral("builtin:torus"));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), QStringLiteral("analytic (exact)"));

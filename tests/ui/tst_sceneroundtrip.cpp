@@ -114,7 +114,10 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
 
     const QString scenePath = m_sceneDir.filePath(QStringLiteral("saved.json"));
     QString error;
-    QVERIFY2(m_window->saveScene(scenePath, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->saveScene(scenePath);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(!dock()->hasUnsavedChanges()); // the shader buffer was saved with the scene
     const QString fragmentFile = dock()->filePath(ShaderStage::Fragment);
     QCOMPARE(readFile(fragmentFile), edited.toUtf8());
@@ -125,13 +128,20 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
     QVERIFY(written.scene->vertexShader.isEmpty()); // still the shipped one: not written
 
     // Another scene, and the shipped shaders back in the dock.
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     live()->applyPreset(ShadingMethod::Phong);
     QVERIFY(waitForApplied());
     QVERIFY(!fragmentEditor()->text().contains(QStringLiteral("vec4(I * 0.5")));
     QVERIFY(frame() != before);
 
-    QVERIFY2(m_window->openScene(scenePath, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(scenePath);
+
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(m_window->lastShaderError().isEmpty());
     QCOMPARE(fragmentEditor()->text(), edited);
     QCOMPARE(QFileInfo(dock()->filePath(ShaderStage::Fragment)).absoluteFilePath(),
@@ -155,7 +165,10 @@ void TestSceneRoundTrip::missingShaderFallsBackToShipped()
                       "shaders": {"fragment": "nowhere/gone.frag"}})");
     }
     QString error;
-    QVERIFY2(m_window->openScene(scenePath, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(scenePath);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY2(m_window->lastShaderError().contains(QStringLiteral("shaders.fragment")),
              qPrintable(m_window->lastShaderError()));
     QVERIFY(m_window->lastShaderError().contains(QStringLiteral("gone.frag")));

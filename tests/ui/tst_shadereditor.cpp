@@ -402,14 +402,17 @@ void TestShaderEditor::editingShippedShaderWritesUserCopy()
     QVERIFY(dock.isDirty(ShaderStage::Fragment));
 
     QString error;
-    QVERIFY2(dock.save(ShaderStage::Fragment, &error), qPrintable(error));
+    {
+        const Result<> done = dock.save(ShaderStage::Fragment);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QVERIFY(readAll(copy).contains("// my tweak"));
     QCOMPARE(readAll(copy), dock.text(ShaderStage::Fragment));
     QCOMPARE(readAll(shipped), original);
 
     // A clean shipped stage moves to its user copy on the first save.
     QCOMPARE(dock.filePath(ShaderStage::Vertex), shippedPath(QStringLiteral("phong.vert")));
-    QVERIFY(dock.save(ShaderStage::Vertex, &error));
+    QVERIFY(dock.save(ShaderStage::Vertex));
     QCOMPARE(dock.filePath(ShaderStage::Vertex),
              QDir(ShaderFileSet::userFolder()).filePath(QStringLiteral("phong.vert")));
     QCOMPARE(readAll(shippedPath(QStringLiteral("phong.vert"))), readAll(dock.filePath(ShaderStage::Vertex)));
@@ -436,13 +439,21 @@ void TestShaderEditor::saveAsRefusesShippedFolder()
     const QByteArray original = readAll(shippedPath(QStringLiteral("phong.frag")));
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// x\n"), 0, 0);
     QString error;
-    QVERIFY(!dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")), &error));
+    const Result<> refused1 = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")));
+    QVERIFY(!refused1);
+    error = refused1.error();
     QVERIFY(error.contains(QStringLiteral("never overwritten")));
-    QVERIFY(!dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("other.frag")), &error));
+    const Result<> refused2 = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("other.frag")));
+    QVERIFY(!refused2);
+    error = refused2.error();
     QCOMPARE(readAll(shippedPath(QStringLiteral("phong.frag"))), original);
     QVERIFY(!QFile::exists(shippedPath(QStringLiteral("other.frag"))));
 
-    QVERIFY2(dock.saveAs(ShaderStage::Fragment, ownPath(QStringLiteral("mine.frag")), &error), qPrintable(error));
+    {
+        const Result<> done = dock.saveAs(ShaderStage::Fragment, ownPath(QStringLiteral("mine.frag")));
+
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QCOMPARE(dock.filePath(ShaderStage::Fragment), ownPath(QStringLiteral("mine.frag")));
     QVERIFY(!dock.isDirty(ShaderStage::Fragment));
 }
@@ -470,7 +481,7 @@ void TestShaderEditor::dirtyMarkerFollowsEditsAndSaves()
 
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("y"), 10, 0);
     QString error;
-    QVERIFY(dock.save(ShaderStage::Fragment, &error));
+    QVERIFY(dock.save(ShaderStage::Fragment));
     QCOMPARE(tabs->tabText(tab), QStringLiteral("dirty.frag"));
     QCOMPARE(readAll(path), kSmallShader + "y");
     QCOMPARE(dock.filePath(ShaderStage::Fragment), path); // not shipped: saved in place
@@ -512,7 +523,7 @@ void TestShaderEditor::externalChangeKeepsDirtyBuffer()
     QCOMPARE(readAll(path), QByteArray("// theirs\n"));
 
     QString error;
-    QVERIFY(dock.save(ShaderStage::Fragment, &error));
+    QVERIFY(dock.save(ShaderStage::Fragment));
     QCOMPARE(readAll(path), mine);
     QVERIFY(!handled.wait(500)); // our own save is not an external change
 }
@@ -576,15 +587,24 @@ void TestShaderEditor::openPairAssignsStagesByName()
     configure(dock);
     QSignalSpy filesChanged(&dock, &ShaderDock::filesChanged);
     QString error;
-    QVERIFY2(dock.openFiles({frag, vert}, &error), qPrintable(error));
+    {
+        const Result<> done = dock.openFiles({frag, vert});
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QCOMPARE(dock.text(ShaderStage::Vertex), QByteArray("// vertex\n"));
     QCOMPARE(dock.text(ShaderStage::Fragment), QByteArray("// fragment\n"));
     QCOMPARE(dock.filePath(ShaderStage::Vertex), vert);
     QVERIFY(!dock.isDirty(ShaderStage::Vertex));
     QCOMPARE(filesChanged.count(), 1);
 
-    QVERIFY(!dock.openFiles({frag, frag}, &error));
-    QVERIFY(!dock.openFiles({ownPath(QStringLiteral("missing.frag"))}, &error));
+    const Result<> refused3 = dock.openFiles({frag, frag});
+
+    QVERIFY(!refused3);
+
+    error = refused3.error();
+    const Result<> refused4 = dock.openFiles({ownPath(QStringLiteral("missing.frag"))});
+    QVERIFY(!refused4);
+    error = refused4.error();
     QCOMPARE(dock.filePath(ShaderStage::Fragment), frag); // failures change nothing
 }
 

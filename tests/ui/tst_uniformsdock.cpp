@@ -184,18 +184,27 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("with-gain.json"));
     QString error;
-    QVERIFY2(m_window->saveScene(path, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->saveScene(path);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->uniforms.size(), std::size_t(1)); // only the user's: not kd, not the matrices
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
-    QVERIFY2(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")), &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
     typeInto(gainRow()->field(), QStringLiteral("1.5"));
     QCOMPARE(programValue("gain"), 1.5f);
-    QVERIFY2(m_window->openScene(path, &error), qPrintable(error));
+    {
+        const Result<> done = m_window->openScene(path);
+        QVERIFY2(done, qPrintable(done.error()));
+    }
     QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
 }
 
