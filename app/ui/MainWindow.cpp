@@ -4,7 +4,6 @@
 
 #include "core/UniformOwner.h"
 
-#include "CurrentContext.h"
 #include "FileTypes.h"
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
@@ -363,12 +362,7 @@ bool isPlainNumberType(GLenum type)
 std::map<QString, std::vector<double>> MainWindow::userUniformValues()
 {
     std::map<QString, std::vector<double>> values;
-    if (!m_viewport->isRenderReady())
-        return values;
-    const UniformSnapshot snapshot = [&] {
-        const CurrentContext current(*m_viewport);
-        return m_viewport->renderer().program().snapshot();
-    }();
+    const UniformSnapshot snapshot = m_viewport->programSnapshot();
     for (const UniformValue &v : snapshot.values) {
         const QString name = QString::fromUtf8(v.name);
         if (!isPlainNumberType(v.type) || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)

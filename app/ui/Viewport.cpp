@@ -232,6 +232,14 @@ void Viewport::setSceneParameters(const Scene &scene)
     emit sceneParametersChanged();
 }
 
+UniformSnapshot Viewport::programSnapshot()
+{
+    if (!m_renderReady)
+        return {};
+    const CurrentContext current(*this);
+    return m_renderer.program().snapshot();
+}
+
 QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
 {
     if (!m_renderReady || pixelSize.isEmpty())

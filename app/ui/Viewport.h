@@ -5,6 +5,7 @@
 #include "render/LentContext.h"
 #include "render/ProgramBuilder.h"
 #include "render/Renderer.h"
+#include "render/UniformSnapshot.h"
 #include "render/WarmUpDraw.h"
 
 #include <QOpenGLWidget>
@@ -81,6 +82,9 @@ public:
     // Null when GL is not up or the size cannot be allocated. Without
     // `lightMarkers` the frame is the scene alone (what a check compares).
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
+    // The current values of the program the view draws with (empty before
+    // GL starts), read with the context taken back if it is lent.
+    UniformSnapshot programSnapshot();
     // A white light at the eye that follows the camera: the one light not in
     // world space. A view setting, not part of the scene (currentScene() has
     // no trace of it); added only while fewer than kMaxLights are in use.

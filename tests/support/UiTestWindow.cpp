@@ -1,7 +1,6 @@
 #include "UiTestWindow.h"
 
 #include "render/GlFormat.h"
-#include "ui/CurrentContext.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -77,8 +76,7 @@ QImage UiTestWindow::frame() const
 
 UniformSnapshot UiTestWindow::programSnapshot() const
 {
-    const CurrentContext current(*viewport());
-    return viewport()->renderer().program().snapshot();
+    return viewport()->programSnapshot();
 }
 
 LiveShaderController *UiTestWindow::live() const
