@@ -249,9 +249,17 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
         m_renderer.updateSceneParameters(renderedScene());
         m_parametersDirty = false;
     }
+    // Drawn with the view's own sample count: the driver keeps a shader
+    // variant per framebuffer setup, and the new program's variant for this
+    // one was compiled by the warm-up in the lent context, off the GUI thread
+    // (a single-sample target would compile another here, ~80 ms on
+    // llvmpipe). Resolved into a single-sample target to read back.
     QOpenGLFramebufferObjectFormat format;
     format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
     format.setInternalTextureFormat(GL_RGBA8);
+    format.setSamples(std::max(0, m_framebufferSamples));
+    QOpenGLFramebufferObjectFormat resolvedFormat;
+    resolvedFormat.setInternalTextureFormat(GL_RGBA8);
     QImage image;
     {
         QOpenGLFramebufferObject fbo(pixelSize, format);
@@ -261,8 +269,14 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
             m_renderer.setOptions(options);
             m_renderer.render(pixelSize);
             m_renderer.setOptions(m_options);
-            image = fbo.toImage(true);
             fbo.release();
+            if (format.samples() > 0) {
+                QOpenGLFramebufferObject resolved(pixelSize, resolvedFormat);
+                QOpenGLFramebufferObject::blitFramebuffer(&resolved, &fbo);
+                image = resolved.toImage(true);
+            } else {
+                image = fbo.toImage(true);
+            }
         }
     }
     return image;
