@@ -364,24 +364,26 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const BuildRep
         *adopted = true;
     };
     setState(State::Warming);
-    m_buildThread->warmInLentContext(*lent, reply.program, [this, hash, reply, adopted](const Result<qint64> &warmNs) {
-        if (m_state != State::Warming)
-            return; // the context went away meanwhile, and came back with it
-        setState(State::Idle);
-        m_hangNote->stop();
-        m_viewport->takeBackContext();
-        if (!*adopted)
-            m_viewport->adoptProgram(reply.program);
-        BuildReply warmed = reply;
-        if (warmNs) {
-            warmed.warmNs = *warmNs;
-        } else {
-            qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(warmNs.error()));
-            setWarmUp(WarmUp::Off);
-        }
-        announce(hash, warmed);
-        startQueuedBuild();
-    });
+    const quint64 warm = ++m_warmSerial;
+    m_buildThread->warmInLentContext(
+        *lent, reply.program, [this, warm, hash, reply, adopted](const Result<qint64> &warmNs) {
+            if (m_state != State::Warming || warm != m_warmSerial)
+                return; // the context went away meanwhile (and came back with it), or this is an older warm-up
+            setState(State::Idle);
+            m_hangNote->stop();
+            m_viewport->takeBackContext();
+            if (!*adopted)
+                m_viewport->adoptProgram(reply.program);
+            BuildReply warmed = reply;
+            if (warmNs) {
+                warmed.warmNs = *warmNs;
+            } else {
+                qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(warmNs.error()));
+                setWarmUp(WarmUp::Off);
+            }
+            announce(hash, warmed);
+            startQueuedBuild();
+        });
     return true;
 }
 
