@@ -11,7 +11,7 @@ namespace phonglab {
 
 namespace {
 
-// Column indices, in kCsvColumns order.
+// Column indices, in benchCsvColumns() order.
 enum Column {
     ColScene,
     ColMethod,

@@ -15,7 +15,7 @@ namespace phonglab {
 // reference of the Phong equation (the exact answer every method
 // approximates), away from silhouettes.
 //
-// One row is one line of results.csv; the column names (kCsvColumns) are an
+// One row is one line of results.csv; the column names (benchCsvColumns()) are an
 // interface other tools rely on: add columns at the end, never rename.
 struct BenchRow {
     QString scene;            // scene name (file base name, e.g. "default")
