@@ -4,6 +4,7 @@
 // (reflect-incident and view-vector as one finding naming both); the shipped
 // shaders of the exact methods must pass.
 #include "CheckScene.h"
+#include "ResultChecks.h"
 #include "ShaderMutations.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
@@ -24,14 +25,8 @@ private slots:
     {
         m_scene = loadCheckScene();
         m_reference = makeTestCheckReference(m_scene);
-        {
-            const Result<> done = m_offscreen.create();
-            QVERIFY2(done, qPrintable(done.error()));
-        }
-        {
-            const Result<> done = m_offscreen.renderer().setScene(m_scene);
-            QVERIFY2(done, qPrintable(done.error()));
-        }
+        QVERIFY_OK(m_offscreen.create());
+        QVERIFY_OK(m_offscreen.renderer().setScene(m_scene));
     }
 
     void shippedShadersPass_data()

@@ -1,6 +1,7 @@
 // Compiling through the real driver: every diagnostic lands on the line the
 // user wrote, and a failed build never replaces the program that works.
 #include "RenderCheck.h"
+#include "ResultChecks.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ShaderProgram.h"
@@ -42,10 +43,7 @@ const ShaderDiagnostic *TestShaderCompile::firstError(const BuildReport &r)
 void TestShaderCompile::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    {
-        const Result<> done = m_offscreen.create();
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_offscreen.create());
     m_offscreen.makeCurrent();
     qInfo("GL renderer: %s", qPrintable(m_offscreen.glRendererName()));
 }

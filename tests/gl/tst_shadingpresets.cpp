@@ -4,6 +4,7 @@
 // `--shading` option of `phonglab render`. Prints the figures it measures.
 #include "PhonglabProcess.h"
 #include "RenderCheck.h"
+#include "ResultChecks.h"
 #include "core/PhongReference.h"
 #include "core/ShadingMethod.h"
 #include "mesh/BuiltinMeshes.h"
@@ -172,10 +173,7 @@ void TestShadingPresets::presetBuilds()
 {
     QFETCH(QString, method);
     OffscreenRenderer offscreen;
-    {
-        const Result<> done = offscreen.create();
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(offscreen.create());
     const BuildReport built = offscreen.renderer().loadShading(*shadingFromName(method));
     QVERIFY2(built.ok && !built.hasErrors(), qPrintable(built.errorSummary()));
     if (!built.diagnostics.empty())

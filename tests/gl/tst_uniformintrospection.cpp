@@ -2,6 +2,7 @@
 // which uniforms are active and of what type (glGetActiveUniform), and the
 // shader text, which says what was declared and how to edit it
 // (// @range lo hi, @color, @step s).
+#include "ResultChecks.h"
 #include "core/UniformAnnotations.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
@@ -68,10 +69,7 @@ private:
 void TestUniformIntrospection::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    {
-        const Result<> done = m_offscreen.create();
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_offscreen.create());
 }
 
 void TestUniformIntrospection::cleanupTestCase()

@@ -1,6 +1,7 @@
 // Uniform values survive a rebuild: ShaderProgram::snapshot() reads every
 // active uniform through the driver, restore() sets them on a new program
 // where name and type match, and nothing else.
+#include "ResultChecks.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ProgramBuilder.h"
@@ -79,10 +80,7 @@ private:
 void TestUniformSnapshot::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    {
-        const Result<> done = m_offscreen.create();
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_offscreen.create());
     m_offscreen.makeCurrent();
     initializeOpenGLFunctions();
 }

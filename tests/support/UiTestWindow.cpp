@@ -1,5 +1,6 @@
 #include "UiTestWindow.h"
 
+#include "ResultChecks.h"
 #include "render/GlFormat.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
@@ -52,10 +53,7 @@ void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, Q
 {
     window = std::make_unique<MainWindow>();
     QString error;
-    {
-        const Result<> done = window->openScene(scenePath);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(window->openScene(scenePath));
     showAndWaitForFrame(*window, size);
 }
 

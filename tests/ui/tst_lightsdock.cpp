@@ -5,6 +5,7 @@
 // at the field, and a marker drag is one undo step.
 
 #include "RenderCheck.h"
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/AnalyticRaycaster.h"
@@ -300,10 +301,7 @@ void TestLightsDock::exportImageAtAnySize()
 {
     const QString path = QDir::temp().filePath(QStringLiteral("phonglab-export-test.png"));
     QString error;
-    {
-        const Result<> done = m_window->exportImage(path, {333, 211});
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->exportImage(path, {333, 211}));
     const QImage image(path);
     QCOMPARE(image.size(), QSize(333, 211));
     QFile::remove(path);

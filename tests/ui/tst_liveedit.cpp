@@ -4,6 +4,7 @@
 // user uniforms survive a rebuild; shipped shaders are never written; and
 // edits survive the process being killed, without running a suspect shader.
 
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/RecoveryJournal.h"
@@ -301,10 +302,7 @@ void TestLiveEdit::editingNeverWritesShippedShaders()
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
     QVERIFY(waitForApplied());
     QString error;
-    {
-        const Result<> done = dock()->save(ShaderStage::Fragment);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(dock()->save(ShaderStage::Fragment));
     QVERIFY(dock()->filePath(ShaderStage::Fragment).startsWith(ShaderFileSet::userFolder()));
     // Everything saved: nothing left to recover.
     QTRY_VERIFY_WITH_TIMEOUT(!live()->recovery()->journal().hasJournal(), 5000);

@@ -3,6 +3,7 @@
 // the mouse moves the camera, reset restores it, and saving round-trips.
 
 #include "PixelDiff.h"
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/SceneJson.h"
@@ -227,11 +228,9 @@ void TestMainWindow::failedOpenKeepsCurrentScene()
     const QString title = m_window->windowTitle();
     const QImage imageBefore = frame();
 
-    QString error;
-    const Result<> refused1 = m_window->openScene(path);
-    QVERIFY(!refused1);
-    error = refused1.error();
-    QVERIFY2(error.contains(expectedError), qPrintable(error));
+    const Result<> refusal = m_window->openScene(path);
+    QVERIFY(!refusal);
+    QVERIFY2(refusal.error().contains(expectedError), qPrintable(refusal.error()));
 
     QCOMPARE(viewport()->currentScene(), before);
     QCOMPARE(m_window->scenePath(), defaultScenePathInSource());
@@ -313,11 +312,7 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("saved.json"));
-    QString error;
-    {
-        const Result<> done = m_window->saveScene(path);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->saveScene(path));
     QCOMPARE(m_window->scenePath(), path);
     QVERIFY(m_window->windowTitle().contains(QStringLiteral("saved.json")));
 
@@ -328,10 +323,7 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
     // Reopened in the window it is the same scene, and "reset" now goes back
     // to the saved camera.
     QVERIFY(m_window->openScene(defaultScenePathInSource()));
-    {
-        const Result<> done = m_window->openScene(path);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(path));
     QCOMPARE(withResolvedMeshes(viewport()->currentScene()), withResolvedMeshes(shown));
     drag(Qt::LeftButton, {-60, 0});
     viewport()->resetCamera();
@@ -339,10 +331,9 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
 
     // A failed save reports why and changes nothing.
     const QString unwritable = dir.filePath(QStringLiteral("no-such-folder/saved.json"));
-    const Result<> refused2 = m_window->saveScene(unwritable);
-    QVERIFY(!refused2);
-    error = refused2.error();
-    QVERIFY(!error.isEmpty());
+    const Result<> refusal = m_window->saveScene(unwritable);
+    QVERIFY(!refusal);
+    QVERIFY(!refusal.error().isEmpty());
     QCOMPARE(m_window->scenePath(), path);
 }
 

@@ -6,6 +6,7 @@
 
 #include "ImportChildren.h"
 #include "PixelDiff.h"
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/SceneJson.h"
@@ -174,10 +175,7 @@ void TestMeshLoading::init()
     m_window = std::make_unique<MainWindow>();
     m_window->recentFiles()->clear();
     QString error;
-    {
-        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")));
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
     test::showAndWaitForFrame(*m_window, {1000, 640});
 }
 
@@ -333,17 +331,15 @@ void TestMeshLoading::unsupportedFileIsRefused()
     const Scene before = viewport()->currentScene();
     QSignalSpy started(m_window->loadJob(), &SceneLoadJob::started);
 
-    QString error;
-    const Result<> refused1 = m_window->openFiles({path});
-    QVERIFY(!refused1);
-    error = refused1.error();
-    QVERIFY2(error.contains(QStringLiteral("notes.txt")) && error.contains(QStringLiteral(".obj")), qPrintable(error));
+    const Result<> notAMesh = m_window->openFiles({path});
+    QVERIFY(!notAMesh);
+    QVERIFY2(notAMesh.error().contains(QStringLiteral("notes.txt"))
+                 && notAMesh.error().contains(QStringLiteral(".obj")),
+             qPrintable(notAMesh.error()));
     // A scene goes on its own, not mixed with meshes.
-    const Result<> refused2 =
-        m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
-    QVERIFY(!refused2);
-    error = refused2.error();
-    QVERIFY2(error.contains(QStringLiteral("scene")), qPrintable(error));
+    const Result<> mixed = m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
+    QVERIFY(!mixed);
+    QVERIFY2(mixed.error().contains(QStringLiteral("scene")), qPrintable(mixed.error()));
     QCOMPARE(started.count(), 0);
     QCOMPARE(viewport()->currentScene(), before);
 }
@@ -367,10 +363,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     QElapsedTimer loadTime;
     const bool ok = waitForLoad([&] {
         QString error;
-        {
-            const Result<> done = m_window->openFiles({m_largeObj});
-            QVERIFY2(done, qPrintable(done.error()));
-        }
+        QVERIFY_OK(m_window->openFiles({m_largeObj}));
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
         viewport()->update(); // a frame of the old scene while loading
@@ -402,10 +395,7 @@ void TestMeshLoading::cancelKeepsScene()
     QSignalSpy loaded(job, &SceneLoadJob::loaded);
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     QString error;
-    {
-        const Result<> done = m_window->openFiles({m_largeObj});
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openFiles({m_largeObj}));
     QVERIFY(m_window->loadProgress()->isVisible());
     QTest::mouseClick(m_window->loadProgress()->cancelButton(), Qt::LeftButton);
 
@@ -453,10 +443,7 @@ void TestMeshLoading::cancelEndsTheImportChild()
     const Scene before = viewport()->currentScene();
     qputenv("PHONGLAB_IMPORT_FAULT", "hang");
     QString error;
-    {
-        const Result<> done = m_window->openFiles({path});
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openFiles({path}));
     QTRY_VERIFY_WITH_TIMEOUT(!importChildren().isEmpty(), 5000);
     qunsetenv("PHONGLAB_IMPORT_FAULT");
     QElapsedTimer clock;
@@ -476,10 +463,7 @@ void TestMeshLoading::closingWhileLoading()
     // The window goes while its worker runs: the worker is stopped and
     // nothing it finishes reaches the destroyed window.
     QString error;
-    {
-        const Result<> done = m_window->openFiles({m_largeObj});
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openFiles({m_largeObj}));
     QVERIFY(m_window->loadJob()->isRunning());
     QElapsedTimer timer;
     timer.start();
@@ -540,10 +524,7 @@ void TestMeshLoading::normalsSurviveSaveAndReopen()
 
     const QString path = m_dir.filePath(QStringLiteral("tree-scene.json"));
     QString error;
-    {
-        const Result<> done = m_window->saveScene(path);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->saveScene(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->objects[0].normals, expected);
@@ -600,10 +581,7 @@ void TestMeshLoading::meshOpenedBeforeFirstShow()
     // The meshes wait in the viewport until GL is up, then show.
     m_window = std::make_unique<MainWindow>();
     QString error;
-    {
-        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json")));
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
     QVERIFY2(openAndWait({treePath()}), qPrintable(m_lastError));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QVERIFY(!dockField(dock(), 0, QStringLiteral("Triangles")).isEmpty());
@@ -650,10 +628,7 @@ void TestMeshLoading::recentFilesRememberAndForget()
 void TestMeshLoading::builtinShapesHaveNoNormalsControl()
 {
     QString error;
-    {
-        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QCOMPARE(dock()->objectTree()->topLevelItem(0)->text(0), QStringLiteral("builtin:torus"));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), QStringLiteral("analytic (exact)"));

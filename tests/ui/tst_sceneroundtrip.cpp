@@ -3,6 +3,7 @@
 // shader in the dock; a scene naming a missing shader opens with the shipped
 // ones and an error; the window layout round-trips through QSettings.
 
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/SceneJson.h"
@@ -114,10 +115,7 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
 
     const QString scenePath = m_sceneDir.filePath(QStringLiteral("saved.json"));
     QString error;
-    {
-        const Result<> done = m_window->saveScene(scenePath);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->saveScene(scenePath));
     QVERIFY(!dock()->hasUnsavedChanges()); // the shader buffer was saved with the scene
     const QString fragmentFile = dock()->filePath(ShaderStage::Fragment);
     QCOMPARE(readFile(fragmentFile), edited.toUtf8());
@@ -128,20 +126,13 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
     QVERIFY(written.scene->vertexShader.isEmpty()); // still the shipped one: not written
 
     // Another scene, and the shipped shaders back in the dock.
-    {
-        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     live()->applyPreset(ShadingMethod::Phong);
     QVERIFY(waitForApplied());
     QVERIFY(!fragmentEditor()->text().contains(QStringLiteral("vec4(I * 0.5")));
     QVERIFY(frame() != before);
 
-    {
-        const Result<> done = m_window->openScene(scenePath);
-
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(scenePath));
     QVERIFY(m_window->lastShaderError().isEmpty());
     QCOMPARE(fragmentEditor()->text(), edited);
     QCOMPARE(QFileInfo(dock()->filePath(ShaderStage::Fragment)).absoluteFilePath(),
@@ -165,10 +156,7 @@ void TestSceneRoundTrip::missingShaderFallsBackToShipped()
                       "shaders": {"fragment": "nowhere/gone.frag"}})");
     }
     QString error;
-    {
-        const Result<> done = m_window->openScene(scenePath);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(scenePath));
     QVERIFY2(m_window->lastShaderError().contains(QStringLiteral("shaders.fragment")),
              qPrintable(m_window->lastShaderError()));
     QVERIFY(m_window->lastShaderError().contains(QStringLiteral("gone.frag")));

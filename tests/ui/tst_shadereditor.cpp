@@ -3,6 +3,7 @@
 // call tips, and the file rules: shipped shaders are never written, edits go
 // to user copies, and changes made on disk by others are reloaded or kept.
 
+#include "ResultChecks.h"
 #include "ui/DiagnosticList.h"
 #include "ui/GlslApi.h"
 #include "ui/GlslLexer.h"
@@ -402,10 +403,7 @@ void TestShaderEditor::editingShippedShaderWritesUserCopy()
     QVERIFY(dock.isDirty(ShaderStage::Fragment));
 
     QString error;
-    {
-        const Result<> done = dock.save(ShaderStage::Fragment);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(dock.save(ShaderStage::Fragment));
     QVERIFY(readAll(copy).contains("// my tweak"));
     QCOMPARE(readAll(copy), dock.text(ShaderStage::Fragment));
     QCOMPARE(readAll(shipped), original);
@@ -438,22 +436,14 @@ void TestShaderEditor::saveAsRefusesShippedFolder()
     loadShipped(dock);
     const QByteArray original = readAll(shippedPath(QStringLiteral("phong.frag")));
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// x\n"), 0, 0);
-    QString error;
-    const Result<> refused1 = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")));
-    QVERIFY(!refused1);
-    error = refused1.error();
-    QVERIFY(error.contains(QStringLiteral("never overwritten")));
-    const Result<> refused2 = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("other.frag")));
-    QVERIFY(!refused2);
-    error = refused2.error();
+    const Result<> overShipped = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")));
+    QVERIFY(!overShipped);
+    QVERIFY(overShipped.error().contains(QStringLiteral("never overwritten")));
+    QVERIFY(!dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("other.frag"))));
     QCOMPARE(readAll(shippedPath(QStringLiteral("phong.frag"))), original);
     QVERIFY(!QFile::exists(shippedPath(QStringLiteral("other.frag"))));
 
-    {
-        const Result<> done = dock.saveAs(ShaderStage::Fragment, ownPath(QStringLiteral("mine.frag")));
-
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(dock.saveAs(ShaderStage::Fragment, ownPath(QStringLiteral("mine.frag"))));
     QCOMPARE(dock.filePath(ShaderStage::Fragment), ownPath(QStringLiteral("mine.frag")));
     QVERIFY(!dock.isDirty(ShaderStage::Fragment));
 }
@@ -587,24 +577,15 @@ void TestShaderEditor::openPairAssignsStagesByName()
     configure(dock);
     QSignalSpy filesChanged(&dock, &ShaderDock::filesChanged);
     QString error;
-    {
-        const Result<> done = dock.openFiles({frag, vert});
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(dock.openFiles({frag, vert}));
     QCOMPARE(dock.text(ShaderStage::Vertex), QByteArray("// vertex\n"));
     QCOMPARE(dock.text(ShaderStage::Fragment), QByteArray("// fragment\n"));
     QCOMPARE(dock.filePath(ShaderStage::Vertex), vert);
     QVERIFY(!dock.isDirty(ShaderStage::Vertex));
     QCOMPARE(filesChanged.count(), 1);
 
-    const Result<> refused3 = dock.openFiles({frag, frag});
-
-    QVERIFY(!refused3);
-
-    error = refused3.error();
-    const Result<> refused4 = dock.openFiles({ownPath(QStringLiteral("missing.frag"))});
-    QVERIFY(!refused4);
-    error = refused4.error();
+    QVERIFY(!dock.openFiles({frag, frag}));
+    QVERIFY(!dock.openFiles({ownPath(QStringLiteral("missing.frag"))}));
     QCOMPARE(dock.filePath(ShaderStage::Fragment), frag); // failures change nothing
 }
 

@@ -26,6 +26,7 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 
+#include "ResultChecks.h"
 #include "core/SceneJson.h"
 #include <QTest>
 #include <QToolButton>
@@ -184,27 +185,18 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("with-gain.json"));
     QString error;
-    {
-        const Result<> done = m_window->saveScene(path);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->saveScene(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->uniforms.size(), std::size_t(1)); // only the user's: not kd, not the matrices
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
-    {
-        const Result<> done = m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json")));
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
     typeInto(gainRow()->field(), QStringLiteral("1.5"));
     QCOMPARE(programValue("gain"), 1.5f);
-    {
-        const Result<> done = m_window->openScene(path);
-        QVERIFY2(done, qPrintable(done.error()));
-    }
+    QVERIFY_OK(m_window->openScene(path));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
 }
 

@@ -2,6 +2,7 @@
 // PNG and SVG without showing a window, the SVG naming every method and the
 // Pareto front, and unwritable paths refused with a reason.
 
+#include "ResultChecks.h"
 #include "bench/SpeedAccuracyChart.h"
 
 #include <QApplication>
@@ -97,8 +98,7 @@ private slots:
         const QString png = dir.filePath("charts.png");
         const QString svg = dir.filePath("charts.svg");
         QString error;
-        const Result<> written1 = writeSpeedAccuracyCharts(syntheticRows(), png, svg, QSize(600, 420));
-        QVERIFY2(written1, qPrintable(written1.error()));
+        QVERIFY_OK(writeSpeedAccuracyCharts(syntheticRows(), png, svg, QSize(600, 420)));
 
         QImage image(png);
         QVERIFY(!image.isNull());
@@ -127,8 +127,7 @@ private slots:
             if (r.scene == QLatin1String("default") ? r.lights != 2 : r.lights == 2)
                 uneven.push_back(r);
         const QString unevenPng = dir.filePath("uneven.png");
-        const Result<> written2 = writeSpeedAccuracyCharts(uneven, unevenPng, QString(), QSize(600, 420));
-        QVERIFY2(written2, qPrintable(written2.error()));
+        QVERIFY_OK(writeSpeedAccuracyCharts(uneven, unevenPng, QString(), QSize(600, 420)));
         QCOMPARE(QImage(unevenPng).size(), QSize(2 * 600, 2 * 420));
         QFile::remove(unevenPng);
 
@@ -200,9 +199,7 @@ private slots:
         QVERIFY2(log->titleText().contains("0 drawn at"), qPrintable(log->titleText()));
         const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
         if (!keep.isEmpty()) {
-            QString error;
-            const Result<> written3 = writeChartImages(chart.get(), keep + "/log-axis.png", QString());
-            QVERIFY2(written3, qPrintable(written3.error()));
+            QVERIFY_OK(writeChartImages(chart.get(), keep + "/log-axis.png", QString()));
         }
 
         // A narrow span stays linear and starts at zero.
@@ -226,31 +223,25 @@ private slots:
     {
         QTemporaryDir dir;
         const QString missing = dir.filePath("no/such/folder/charts.png");
-        QString error;
-        const Result<> written6 = writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"));
-        QVERIFY(!written6);
-        error = written6.error();
-        QVERIFY2(error.contains(missing), qPrintable(error));
+        const Result<> noPngFolder = writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"));
+        QVERIFY(!noPngFolder);
+        QVERIFY2(noPngFolder.error().contains(missing), qPrintable(noPngFolder.error()));
         // Nothing half-written beside it.
         QVERIFY(!QFile::exists(dir.filePath("ok.svg")));
 
-        error.clear();
-        const Result<> written7 =
+        const Result<> noSvgFolder =
             writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"));
-        QVERIFY(!written7);
-        error = written7.error();
-        QVERIFY2(error.contains("charts.svg"), qPrintable(error));
+        QVERIFY(!noSvgFolder);
+        QVERIFY2(noSvgFolder.error().contains("charts.svg"), qPrintable(noSvgFolder.error()));
         QVERIFY(!QFile::exists(dir.filePath("ok.png")));
     }
 
     void nothingToDrawIsAnError()
     {
         QTemporaryDir dir;
-        QString error;
-        const Result<> written8 = writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"));
-        QVERIFY(!written8);
-        error = written8.error();
-        QVERIFY(!error.isEmpty());
+        const Result<> refusal = writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"));
+        QVERIFY(!refusal);
+        QVERIFY(!refusal.error().isEmpty());
     }
 
     void singleChartImage()
@@ -264,9 +255,7 @@ private slots:
         series[1].color = Qt::darkRed;
         series[1].points = {{0.5, 4.0, "area"}, {0.8, 3.0, "angle"}};
         std::unique_ptr<QChart> chart(createLabelledChart(series, "normals", "time (ms)", "mean error (°)"));
-        QString error;
-        const Result<> written4 = writeChartImages(chart.get(), dir.filePath("n.png"), QString(), QSize(500, 350));
-        QVERIFY2(written4, qPrintable(written4.error()));
+        QVERIFY_OK(writeChartImages(chart.get(), dir.filePath("n.png"), QString(), QSize(500, 350)));
         QCOMPARE(QImage(dir.filePath("n.png")).size(), QSize(500, 350));
         QVERIFY(!chart->scene()); // handed back, still ours
     }
@@ -291,16 +280,14 @@ private slots:
         const QString png = dir.filePath("normals.png");
         const QString svg = dir.filePath("normals.svg");
         QString error;
-        const Result<> written5 = writeNormalStudyChart(rows, png, svg, QSize(560, 400));
-        QVERIFY2(written5, qPrintable(written5.error()));
+        QVERIFY_OK(writeNormalStudyChart(rows, png, svg, QSize(560, 400)));
         QCOMPARE(QImage(png).size(), QSize(560, 400));
         QString text;
         QVERIFY2(readSvg(svg, &text, &error), qPrintable(error));
         for (const char *name : {"uv sphere", "icosphere", "unweighted", "mean angular error"})
             QVERIFY2(text.contains(name), qPrintable(name));
-        const Result<> written9 = writeNormalStudyChart(std::vector<Row>{}, png, svg);
-        QVERIFY(!written9);
-        error = written9.error();
+        const Result<> refusal = writeNormalStudyChart(std::vector<Row>{}, png, svg);
+        QVERIFY(!refusal);
         const QString keep = qEnvironmentVariable("PHONGLAB_KEEP_CHARTS");
         if (!keep.isEmpty()) {
             QFile::remove(keep + "/normal-study.png");

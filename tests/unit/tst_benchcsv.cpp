@@ -147,11 +147,9 @@ private slots:
         }
 
         const QString csv = benchRowsToCsv(rows);
-        std::vector<BenchRow> back;
-        QString error;
-        const Result<std::vector<BenchRow>> read1 = benchRowsFromCsv(csv);
-        QVERIFY2(read1, qPrintable(read1.error()));
-        back = *read1;
+        const Result<std::vector<BenchRow>> read = benchRowsFromCsv(csv);
+        QVERIFY2(read, qPrintable(read.error()));
+        const std::vector<BenchRow> &back = *read;
         QCOMPARE(back.size(), rows.size());
         for (size_t i = 0; i < rows.size(); ++i)
             compareRows(rows[i], back[i]);
@@ -164,11 +162,9 @@ private slots:
         QString csv = validCsv(2);
         csv.replace("\n", "\r\n");
         csv.prepend(QChar(0xFEFF));
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read2 = benchRowsFromCsv(csv);
-        QVERIFY2(read2, qPrintable(read2.error()));
-        rows = *read2;
+        const Result<std::vector<BenchRow>> read = benchRowsFromCsv(csv);
+        QVERIFY2(read, qPrintable(read.error()));
+        const std::vector<BenchRow> &rows = *read;
         QCOMPARE(rows.size(), size_t(2));
         compareRows(sampleRow(), rows[1]);
     }
@@ -188,35 +184,28 @@ private slots:
         fields.append("anything");
         const QString shuffled = header.join(',') + '\n' + fields.join(',') + '\n';
 
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read3 = benchRowsFromCsv(shuffled);
-        QVERIFY2(read3, qPrintable(read3.error()));
-        rows = *read3;
+        const Result<std::vector<BenchRow>> read = benchRowsFromCsv(shuffled);
+        QVERIFY2(read, qPrintable(read.error()));
+        const std::vector<BenchRow> &rows = *read;
         QCOMPARE(rows.size(), size_t(1));
         compareRows(sampleRow(), rows[0]);
     }
 
     void headerOnlyIsNoRows()
     {
-        std::vector<BenchRow> rows(3);
-        QString error;
-        const Result<std::vector<BenchRow>> read4 = benchRowsFromCsv(benchRowsToCsv({}));
-        QVERIFY2(read4, qPrintable(read4.error()));
-        rows = *read4;
+        const Result<std::vector<BenchRow>> read = benchRowsFromCsv(benchRowsToCsv({}));
+        QVERIFY2(read, qPrintable(read.error()));
+        const std::vector<BenchRow> &rows = *read;
         QVERIFY(rows.empty());
     }
 
     void emptyFileIsAnError()
     {
         for (const QString &text : {QString(), QStringLiteral("\n\n"), QStringLiteral("  \r\n")}) {
-            std::vector<BenchRow> rows;
-            QString error;
-            const Result<std::vector<BenchRow>> read5 = benchRowsFromCsv(text);
-            QVERIFY(!read5);
-            error = read5.error();
-            QVERIFY2(error.startsWith("results.csv"), qPrintable(error));
-            QVERIFY2(error.contains("empty"), qPrintable(error));
+            const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(text);
+            QVERIFY(!refusal);
+            QVERIFY2(refusal.error().startsWith("results.csv"), qPrintable(refusal.error()));
+            QVERIFY2(refusal.error().contains("empty"), qPrintable(refusal.error()));
         }
     }
 
@@ -224,12 +213,9 @@ private slots:
     {
         QString csv = validCsv(1);
         csv.replace("frame_ms_p90", "frame_ms_p99");
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read6 = benchRowsFromCsv(csv);
-        QVERIFY(!read6);
-        error = read6.error();
-        QCOMPARE(error, QStringLiteral("results.csv line 1: missing column frame_ms_p90"));
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 1: missing column frame_ms_p90"));
     }
 
     void badNumberNamesLineAndColumn()
@@ -241,18 +227,14 @@ private slots:
         fields[frameMs] = "abc";
         csv += fields.join(',') + '\n';
 
-        std::vector<BenchRow> rows(1);
-        QString error;
-        const Result<std::vector<BenchRow>> read7 = benchRowsFromCsv(csv);
-        QVERIFY(!read7);
-        error = read7.error();
-        QCOMPARE(error, QStringLiteral("results.csv line 8: frame_ms is not a number: 'abc'"));
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 8: frame_ms is not a number: 'abc'"));
 
         // The overload names the file it was given.
-        const Result<std::vector<BenchRow>> read8 = benchRowsFromCsv(csv, QStringLiteral("/tmp/out/results.csv"));
-        QVERIFY(!read8);
-        error = read8.error();
-        QVERIFY2(error.startsWith("/tmp/out/results.csv line 8: frame_ms"), qPrintable(error));
+        const Result<std::vector<BenchRow>> refusal2 = benchRowsFromCsv(csv, QStringLiteral("/tmp/out/results.csv"));
+        QVERIFY(!refusal2);
+        QVERIFY2(refusal2.error().startsWith("/tmp/out/results.csv line 8: frame_ms"), qPrintable(refusal2.error()));
     }
 
     void otherBadFieldsAreErrors_data()
@@ -286,36 +268,27 @@ private slots:
         QStringList fields = csv.split('\n', Qt::SkipEmptyParts).at(1).split(',');
         fields[benchCsvColumns().indexOf(column)] = value;
         csv += fields.join(',') + '\n';
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read9 = benchRowsFromCsv(csv);
-        QVERIFY(!read9);
-        error = read9.error();
-        QCOMPARE(error, QStringLiteral("results.csv line 3: ") + expected);
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 3: ") + expected);
     }
 
     void wrongFieldCountNamesTheLine()
     {
         QString csv = validCsv(2);
         csv += "default,phong,1\n";
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read10 = benchRowsFromCsv(csv);
-        QVERIFY(!read10);
-        error = read10.error();
-        QVERIFY2(error.startsWith("results.csv line 4: expected 20 fields"), qPrintable(error));
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QVERIFY2(refusal.error().startsWith("results.csv line 4: expected 20 fields"), qPrintable(refusal.error()));
     }
 
     void unbalancedQuoteIsAnError()
     {
         QString csv = validCsv(1);
         csv += "\"unterminated,phong\n";
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read11 = benchRowsFromCsv(csv);
-        QVERIFY(!read11);
-        error = read11.error();
-        QVERIFY2(error.startsWith("results.csv line 3:"), qPrintable(error));
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QVERIFY2(refusal.error().startsWith("results.csv line 3:"), qPrintable(refusal.error()));
     }
 
     void blankLinesAreSkippedAndLinesStillCount()
@@ -325,12 +298,9 @@ private slots:
         QStringList fields = validCsv(1).split('\n', Qt::SkipEmptyParts).at(1).split(',');
         fields[benchCsvColumns().indexOf("lights")] = "two";
         csv += fields.join(',') + '\n';
-        std::vector<BenchRow> rows;
-        QString error;
-        const Result<std::vector<BenchRow>> read12 = benchRowsFromCsv(csv);
-        QVERIFY(!read12);
-        error = read12.error();
-        QCOMPARE(error, QStringLiteral("results.csv line 5: lights is not a whole number: 'two'"));
+        const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
+        QVERIFY(!refusal);
+        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 5: lights is not a whole number: 'two'"));
     }
 };
 
