@@ -137,27 +137,30 @@ quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragm
         worker,
         [mailbox = m_mailbox, worker, request, queuedAt, generation = m_generation] {
             BuildReply reply = worker->build(request);
-            reply.queuedAtNs = queuedAt;
-            reply.finishedAtNs = monotonicNs();
+            reply.timings.queuedAtNs = queuedAt;
+            reply.timings.finishedAtNs = monotonicNs();
             QMutexLocker lock(&mailbox->mutex);
+            // When stopping (no receiver) the reply ends here, with the
+            // worker's context current, and frees its program.
             if (BuildThread *receiver = mailbox->receiver)
                 QMetaObject::invokeMethod(
-                    receiver, [receiver, reply, generation] { receiver->deliver(reply, generation); },
+                    receiver,
+                    [receiver, reply = std::move(reply), generation]() mutable {
+                        receiver->deliver(std::move(reply), generation);
+                    },
                     Qt::QueuedConnection);
-            else
-                worker->release(reply.program); // stopping: nobody will adopt it
         },
         Qt::QueuedConnection);
     return request.serial;
 }
 
-void BuildThread::deliver(const BuildReply &reply, quint64 generation)
+void BuildThread::deliver(BuildReply reply, quint64 generation)
 {
     // Posted just before a stop(): its program belongs to a share group that
-    // may be gone with the viewport's old context. It is freed with that group.
-    if (!m_worker || generation != m_generation)
+    // may be gone with the viewport's old context. It is left to that group.
+    if (!m_worker || generation != m_generation || !m_receiver)
         return;
-    emit built(reply);
+    m_receiver(std::move(reply));
 }
 
 void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, WarmDone done)
@@ -182,13 +185,12 @@ void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, War
         Qt::QueuedConnection);
 }
 
-void BuildThread::release(GLuint program)
+void BuildThread::release(GlProgram program)
 {
     if (!m_worker || !program)
-        return;
-    BuildWorker *worker = m_worker;
+        return; // left to the share group
     QMetaObject::invokeMethod(
-        worker, [worker, program] { worker->release(program); }, Qt::QueuedConnection);
+        m_worker, [program = std::move(program)]() mutable { program.reset(); }, Qt::QueuedConnection);
 }
 
 } // namespace phonglab

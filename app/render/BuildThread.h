@@ -17,8 +17,8 @@ namespace phonglab {
 // OpenGL context created in the same share group as the viewport's, on a
 // QOffscreenSurface (created here, on the GUI thread, as Qt requires). It
 // compiles, links, warms the program with one small draw (WarmUpDraw) and
-// glFinish()es; the GUI thread then gets built() with the program id, which
-// names the same object in the viewport's context. Typing never waits on the
+// glFinish()es; the GUI thread's receiver then gets the program, whose name
+// means the same object in the viewport's context. Typing never waits on the
 // driver: the GUI thread only adopts a finished program.
 class BuildThread : public QObject
 {
@@ -42,8 +42,9 @@ public:
     // `warmSamples`: the sample count of the framebuffer the program will
     // draw into, for the warm-up in the worker's context (setWarmUp).
     quint64 build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples = 0);
-    // Frees a program that was built here but will not be used.
-    void release(GLuint program);
+    // Frees a program that was built here but will not be used, on the
+    // worker thread (where a context of its group is current).
+    void release(GlProgram program);
 
     // Draws `program` once in the viewport's own context, which the caller
     // has lent to workerThread(). The worker gives it back (moves it to this
@@ -60,9 +61,11 @@ public:
     void setWarmUp(bool warm) { m_warmUp = warm; }
     bool hasParallelShaderCompile() const { return m_parallelShaderCompile; }
 
-signals:
-    // On the GUI thread. The receiver owns reply.program.
-    void built(const phonglab::BuildReply &reply);
+    // Who gets each finished build, on the GUI thread, and owns its program
+    // from then on. One receiver: the reply carries the program, which only
+    // one holder can own.
+    using Receiver = std::function<void(BuildReply reply)>;
+    void setReceiver(Receiver receiver) { m_receiver = std::move(receiver); }
 
 private:
     // Where the worker posts replies. Cleared under its mutex when this
@@ -73,9 +76,10 @@ private:
         BuildThread *receiver = nullptr;
     };
 
-    void deliver(const BuildReply &reply, quint64 generation);
+    void deliver(BuildReply reply, quint64 generation);
 
     std::shared_ptr<Mailbox> m_mailbox = std::make_shared<Mailbox>();
+    Receiver m_receiver;
 
     std::unique_ptr<QThread> m_thread;
     std::unique_ptr<QOffscreenSurface> m_surface;

@@ -31,27 +31,22 @@ BuildReply BuildWorker::build(const BuildJob &request)
     reply.serial = request.serial;
     BuiltProgram built = m_builder.build(request.vertex, request.fragment);
     reply.result = std::move(built.result);
-    reply.program = built.program;
-    reply.compileNs = built.compileNs;
-    reply.linkNs = built.linkNs;
+    reply.program = std::move(built.program);
+    reply.timings.compileNs = built.compileNs;
+    reply.timings.linkNs = built.linkNs;
     QElapsedTimer timer;
     timer.start();
-    if (built.ok() && request.warm && m_warmSamples != request.warmSamples) {
+    const bool ok = bool(reply.program);
+    if (ok && request.warm && m_warmSamples != request.warmSamples) {
         m_warmer.destroy(); // the viewport's framebuffer changed (or this is the first warm-up)
         m_warmSamples = m_warmer.create(request.warmSamples) ? request.warmSamples : -1;
     }
-    if (built.ok() && request.warm && m_warmer.isCreated())
-        m_warmer.warm(built.program); // ends in glFinish
+    if (ok && request.warm && m_warmer.isCreated())
+        m_warmer.warm(reply.program.id()); // ends in glFinish
     else
         m_context->functions()->glFinish(); // the program object is complete before it changes hands
-    reply.warmNs = request.warm && built.ok() ? timer.nsecsElapsed() : 0;
+    reply.timings.warmNs = request.warm && ok ? timer.nsecsElapsed() : 0;
     return reply;
-}
-
-void BuildWorker::release(GLuint program)
-{
-    if (program)
-        m_context->extraFunctions()->glDeleteProgram(program);
 }
 
 Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,

@@ -19,17 +19,24 @@ struct BuildJob {
     int warmSamples = 0; // ... into a framebuffer with this many samples
 };
 
-// A finished build. `program` (0 on failure) lives in the share group and is
-// owned by whoever receives the reply: adopt it or release it.
-struct BuildReply {
-    quint64 serial = 0;
-    GLuint program = 0;
-    BuildReport result;
+// Where a build's time went, carried to the status bar and the benchmarks.
+struct BuildTimings {
     qint64 compileNs = 0;
     qint64 linkNs = 0;
     qint64 warmNs = 0;
     qint64 queuedAtNs = 0;   // request posted (monotonic clock, ns)
     qint64 finishedAtNs = 0; // program linked, warmed and finished
+};
+
+// A finished build: move-only, because it carries the program (empty on
+// failure), which lives in the share group and belongs to whoever holds the
+// reply: adopt it, or let the reply go on a thread with a context of the
+// group current (BuildThread::release from the GUI thread).
+struct BuildReply {
+    quint64 serial = 0;
+    GlProgram program;
+    BuildReport result;
+    BuildTimings timings;
 };
 
 // The half of BuildThread that lives on the worker thread:
@@ -44,7 +51,6 @@ public:
 
     Result<> initialize();
     BuildReply build(const BuildJob &request);
-    void release(GLuint program);
     // Makes a context lent to this thread (see LentContext) current on
     // `surface`, runs lent.whileCurrent, draws `program` once, then hands the
     // context back to `owner` and makes the worker's own context current

@@ -20,15 +20,14 @@ void GpuMesh::upload(const MeshData &mesh)
         interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
 
-    glGenVertexArrays(1, &m_vao);
-    glBindVertexArray(m_vao);
-
-    glGenBuffers(1, &m_vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
+    m_vao.create();
+    m_vao.bind();
+    m_vbo.create();
+    m_vbo.bind();
+    // glBufferData rather than allocate(), whose int size stops at 2 GiB.
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
-
-    glGenBuffers(1, &m_ibo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_ibo);
+    m_ibo.create();
+    m_ibo.bind(); // recorded in the VAO
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
                  GL_STATIC_DRAW);
 
@@ -39,31 +38,27 @@ void GpuMesh::upload(const MeshData &mesh)
     glVertexAttribPointer(kNormalLocation, 3, GL_FLOAT, GL_FALSE, stride,
                           reinterpret_cast<const void *>(3 * sizeof(float)));
 
-    glBindVertexArray(0); // the VAO keeps the element buffer binding
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    m_vao.release(); // the VAO keeps the element buffer binding
+    m_vbo.release();
     m_indexCount = GLsizei(mesh.indices.size());
 }
 
 void GpuMesh::draw()
 {
-    if (!m_vao)
+    if (!m_vao.isCreated())
         return;
-    glBindVertexArray(m_vao);
+    m_vao.bind();
     glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
-    glBindVertexArray(0);
+    m_vao.release();
 }
 
 void GpuMesh::destroy()
 {
     if (!m_initialized)
         return;
-    if (m_ibo)
-        glDeleteBuffers(1, &m_ibo);
-    if (m_vbo)
-        glDeleteBuffers(1, &m_vbo);
-    if (m_vao)
-        glDeleteVertexArrays(1, &m_vao);
-    m_vao = m_vbo = m_ibo = 0;
+    m_ibo.destroy();
+    m_vbo.destroy();
+    m_vao.destroy();
     m_indexCount = 0;
 }
 

@@ -1,13 +1,16 @@
 #pragma once
 #include "core/MeshData.h"
 
+#include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLVertexArrayObject>
 
 namespace phonglab {
 
 // A mesh on the GPU: one VAO over an interleaved VBO (position, normal;
-// attribute locations 0 and 1) and a 32-bit index buffer. Needs a current
-// context for upload/draw/destroy.
+// attribute locations 0 and 1) and a 32-bit index buffer, held by Qt's own
+// owners. Needs its context current for upload/draw/destroy (a VAO, unlike
+// the buffers, belongs to the one context that made it).
 class GpuMesh : protected QOpenGLExtraFunctions
 {
 public:
@@ -22,14 +25,14 @@ public:
     void draw();
     void destroy();
 
-    bool isValid() const { return m_vao != 0; }
+    bool isValid() const { return m_vao.isCreated(); }
     GLsizei indexCount() const { return m_indexCount; }
 
 private:
     bool m_initialized = false;
-    GLuint m_vao = 0;
-    GLuint m_vbo = 0;
-    GLuint m_ibo = 0;
+    QOpenGLVertexArrayObject m_vao;
+    QOpenGLBuffer m_vbo{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer m_ibo{QOpenGLBuffer::IndexBuffer};
     GLsizei m_indexCount = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
+#include <QOpenGLTimerQuery>
 
 namespace phonglab {
 
@@ -146,23 +147,16 @@ FrameTiming OffscreenRenderer::timeFrames(const QSize &size, int warmup, int fra
 // disturb the wall-time figures. Empty when the driver lacks the entry points.
 std::vector<double> OffscreenRenderer::timerQueryFrames(const QSize &size, int frames)
 {
-    using GetQueryObjectui64v = void (*)(GLuint, GLenum, GLuint64 *);
-    auto getResult = reinterpret_cast<GetQueryObjectui64v>(m_context->getProcAddress("glGetQueryObjectui64v"));
-    QOpenGLExtraFunctions *gl = m_context->extraFunctions();
     std::vector<double> ms;
-    if (!getResult)
+    QOpenGLTimerQuery query;
+    if (!query.create())
         return ms;
-    GLuint query = 0;
-    gl->glGenQueries(1, &query);
     for (int i = 0; i < frames; ++i) {
-        gl->glBeginQuery(GL_TIME_ELAPSED, query);
+        query.begin();
         m_renderer.render(size);
-        gl->glEndQuery(GL_TIME_ELAPSED);
-        GLuint64 ns = 0;
-        getResult(query, GL_QUERY_RESULT, &ns);
-        ms.push_back(double(ns) / 1e6);
+        query.end();
+        ms.push_back(double(query.waitForResult()) / 1e6);
     }
-    gl->glDeleteQueries(1, &query);
     return ms;
 }
 

@@ -41,50 +41,49 @@ QString ProgramBuilder::infoLog(GLuint object, bool isProgram)
     return QString::fromUtf8(log.constData());
 }
 
-GLuint ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                                    BuildReport &result)
+GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
+                                      BuildReport &result)
 {
     const BuildStep step = type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
     const QByteArray code = withPrologue(source.code, defines);
     const char *text = code.constData();
     const GLint length = GLint(code.size());
 
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &text, &length);
-    glCompileShader(shader);
+    GlShader shader(glCreateShader(type));
+    glShaderSource(shader.id(), 1, &text, &length);
+    glCompileShader(shader.id());
 
     GLint status = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &status);
-    const QString log = infoLog(shader, false);
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
+    const QString log = infoLog(shader.id(), false);
     auto diagnostics = parseShaderLog(log, step, source.name);
     mapColumnsToSource(diagnostics, source.code);
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, step, source.name, log);
-        glDeleteShader(shader);
-        return 0;
+        return {};
     }
     return shader;
 }
 
-GLuint ProgramBuilder::link(GLuint vs, GLuint fs, const QString &linkName, BuildReport &result)
+// The shaders are freed when `vertex` and `fragment` go; attached, they are
+// only flagged then, and live on with the program.
+GlProgram ProgramBuilder::link(const GlShader &vertex, const GlShader &fragment, const QString &linkName,
+                               BuildReport &result)
 {
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs); // flagged; freed with the program
-    glDeleteShader(fs);
+    GlProgram program(glCreateProgram());
+    glAttachShader(program.id(), vertex.id());
+    glAttachShader(program.id(), fragment.id());
+    glLinkProgram(program.id());
 
     GLint status = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &status);
-    const QString log = infoLog(program, true);
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &status);
+    const QString log = infoLog(program.id(), true);
     auto diagnostics = parseShaderLog(log, BuildStep::Link, linkName);
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, BuildStep::Link, linkName, log);
-        glDeleteProgram(program);
-        return 0;
+        return {};
     }
     return program;
 }
@@ -98,20 +97,15 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
     BuiltProgram out;
     QElapsedTimer timer;
     timer.start();
-    const GLuint vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.result);
-    const GLuint fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.result);
+    const GlShader vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.result);
+    const GlShader fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.result);
     out.compileNs = timer.nsecsElapsed();
-    if (!vs || !fs) {
-        if (vs)
-            glDeleteShader(vs);
-        if (fs)
-            glDeleteShader(fs);
+    if (!vs || !fs)
         return out;
-    }
     timer.restart();
     out.program = link(vs, fs, vertex.name + QLatin1Char('+') + fragment.name, out.result);
     out.linkNs = timer.nsecsElapsed();
-    out.result.ok = out.program != 0;
+    out.result.ok = out.ok();
     return out;
 }
 

@@ -120,10 +120,10 @@ BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const Shader
     return m_program.build(vertex, fragment);
 }
 
-void Renderer::adoptProgram(GLuint program)
+void Renderer::adoptProgram(GlProgram program)
 {
     const UniformSnapshot kept = m_program.snapshot();
-    m_program.adopt(program);
+    m_program.adopt(std::move(program));
     m_program.restore(kept);
 }
 

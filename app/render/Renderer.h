@@ -58,10 +58,10 @@ public:
     BuildReport loadShading(ShadingMethod method);
     BuildReport setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment);
     // Switches to a program linked elsewhere (a ProgramBuilder on a context
-    // sharing this one's objects) and takes ownership of it. Uniforms the
+    // sharing this one's objects) and owns it from then on. Uniforms the
     // user set on the old program carry over where name and type match; the
     // ones the renderer drives are set again on every frame anyway.
-    void adoptProgram(GLuint program);
+    void adoptProgram(GlProgram program);
     bool hasProgram() const { return m_program.isValid(); }
     ShaderProgram &program() { return m_program; }
 
@@ -95,7 +95,7 @@ private:
     // The scene's values for the shader's own uniforms, until a program that
     // declares them is in place (a scene may open before its shaders build).
     std::map<QString, std::vector<double>> m_pendingUniforms;
-    GLuint m_pendingTriedProgram = 0;
+    GLuint m_pendingTriedProgram = 0; // compared with the program's name only, never freed
 };
 
 } // namespace phonglab

@@ -93,23 +93,23 @@ BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource 
     ensureInitialized();
     BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines);
     if (built.ok())
-        adopt(built.program);
+        adopt(std::move(built.program));
     return built.result;
 }
 
-void ShaderProgram::adopt(GLuint program)
+void ShaderProgram::adopt(GlProgram program)
 {
     ensureInitialized();
     destroy();
-    m_program = program;
+    m_program = std::move(program);
 }
 
 void ShaderProgram::readValue(GLint location, UniformValue &value)
 {
     switch (value.kind) {
-    case UniformValue::Kind::Float: glGetUniformfv(m_program, location, value.floats.data()); break;
-    case UniformValue::Kind::Int: glGetUniformiv(m_program, location, value.ints.data()); break;
-    case UniformValue::Kind::UInt: glGetUniformuiv(m_program, location, value.uints.data()); break;
+    case UniformValue::Kind::Float: glGetUniformfv(m_program.id(), location, value.floats.data()); break;
+    case UniformValue::Kind::Int: glGetUniformiv(m_program.id(), location, value.ints.data()); break;
+    case UniformValue::Kind::UInt: glGetUniformuiv(m_program.id(), location, value.uints.data()); break;
     }
 }
 
@@ -119,7 +119,7 @@ UniformSnapshot ShaderProgram::snapshot()
     if (!m_program)
         return snapshot;
     ensureInitialized();
-    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program)) {
+    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program.id())) {
         const auto layout = layoutOf(u.type);
         if (!layout)
             continue;
@@ -129,7 +129,7 @@ UniformSnapshot ShaderProgram::snapshot()
             value.type = u.type;
             value.kind = layout->kind;
             value.components = layout->components;
-            const GLint location = glGetUniformLocation(m_program, value.name.constData());
+            const GLint location = glGetUniformLocation(m_program.id(), value.name.constData());
             if (location < 0)
                 continue;
             readValue(location, value);
@@ -185,8 +185,8 @@ void ShaderProgram::restore(const UniformSnapshot &snapshot)
     ensureInitialized();
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
-    glUseProgram(m_program);
-    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program)) {
+    glUseProgram(m_program.id());
+    for (const ActiveUniformInfo &u : activeUniformsOf(this, m_program.id())) {
         for (int element = 0; element < u.size; ++element) {
             const QByteArray name = elementName(u, element);
             const UniformValue *value = snapshot.find(name);
@@ -194,7 +194,7 @@ void ShaderProgram::restore(const UniformSnapshot &snapshot)
             // nothing to the new shader, which keeps its initialiser.
             if (!value || value->type != u.type)
                 continue;
-            const GLint location = glGetUniformLocation(m_program, name.constData());
+            const GLint location = glGetUniformLocation(m_program.id(), name.constData());
             if (location >= 0)
                 writeValue(location, *value);
         }
@@ -204,15 +204,13 @@ void ShaderProgram::restore(const UniformSnapshot &snapshot)
 
 void ShaderProgram::destroy()
 {
-    if (m_program)
-        glDeleteProgram(m_program);
-    m_program = 0;
+    m_program.reset();
     m_locations.clear();
 }
 
 void ShaderProgram::bind()
 {
-    glUseProgram(m_program);
+    glUseProgram(m_program.id());
 }
 
 GLint ShaderProgram::uniformLocation(const char *name)
@@ -221,7 +219,7 @@ GLint ShaderProgram::uniformLocation(const char *name)
     auto it = m_locations.constFind(key);
     if (it != m_locations.constEnd())
         return *it;
-    const GLint location = glGetUniformLocation(m_program, name);
+    const GLint location = glGetUniformLocation(m_program.id(), name);
     m_locations.insert(key, location);
     return location;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include "BuildReport.h"
 #include "ShaderSource.h"
+#include "SharedGlObject.h"
 #include "UniformSnapshot.h"
 
 #include <QHash>
@@ -20,14 +21,14 @@ public:
     ShaderProgram() = default;
     ShaderProgram(const ShaderProgram &) = delete;
     ShaderProgram &operator=(const ShaderProgram &) = delete;
-    ~ShaderProgram() = default; // GL objects are freed by destroy(), with a context
+    ~ShaderProgram() = default; // frees the program if a context of its group is current; see destroy()
 
     // Builds a new program. On failure the previous program (if any) stays
     // in place and usable; the result carries the diagnostics.
     BuildReport build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
-    // Takes ownership of a program linked elsewhere (ProgramBuilder, possibly
-    // on another context of the same share group) and frees the previous one.
-    void adopt(GLuint program);
+    // Takes a program linked elsewhere (ProgramBuilder, possibly on another
+    // context of the same share group) and frees the previous one.
+    void adopt(GlProgram program);
     void destroy();
 
     // Every active default-block uniform's current value (double types are
@@ -38,8 +39,8 @@ public:
     UniformSnapshot snapshot();
     void restore(const UniformSnapshot &snapshot);
 
-    bool isValid() const { return m_program != 0; }
-    GLuint id() const { return m_program; }
+    bool isValid() const { return bool(m_program); }
+    GLuint id() const { return m_program.id(); }
     void bind();
 
     GLint uniformLocation(const char *name);
@@ -56,7 +57,7 @@ private:
     void writeValue(GLint location, const UniformValue &value);
 
     bool m_initialized = false;
-    GLuint m_program = 0;
+    GlProgram m_program;
     QHash<QByteArray, GLint> m_locations;
 };
 

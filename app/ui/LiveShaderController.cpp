@@ -54,7 +54,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
 {
     setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
-    connect(m_buildThread, &BuildThread::built, this, &LiveShaderController::onBuilt);
+    m_buildThread->setReceiver([this](BuildReply reply) { onBuilt(std::move(reply)); });
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
     connect(m_viewport, &Viewport::glAboutToBeReleased, this, &LiveShaderController::onGlAboutToBeReleased);
     connect(m_viewport, &Viewport::frameRendered, m_recovery, &ShaderRecovery::frameRendered);
@@ -307,29 +307,29 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     }
     BuiltProgram built = m_viewport->buildProgram(vertex, fragment);
     BuildReply reply;
-    reply.program = built.program;
+    reply.program = std::move(built.program);
     reply.result = std::move(built.result);
-    reply.compileNs = built.compileNs;
-    reply.linkNs = built.linkNs;
-    finish(hash, reply);
+    reply.timings.compileNs = built.compileNs;
+    reply.timings.linkNs = built.linkNs;
+    finish(hash, std::move(reply));
 }
 
-void LiveShaderController::onBuilt(const BuildReply &reply)
+void LiveShaderController::onBuilt(BuildReply reply)
 {
     if (m_state != State::Building || reply.serial != m_buildSerial) { // from before a restart of the worker
-        m_buildThread->release(reply.program);
+        m_buildThread->release(std::move(reply.program));
         return;
     }
     setState(State::Idle);
     m_slowBuildNote->stop();
     // Even when newer text waits, a finished program is shown: steady
     // progress while someone keeps typing in bursts longer than a build.
-    finish(m_buildHash, reply);
+    finish(m_buildHash, std::move(reply));
     if (m_state == State::Idle)
         startQueuedBuild(); // else once the first draw is done
 }
 
-void LiveShaderController::finish(const QByteArray &hash, const BuildReply &reply)
+void LiveShaderController::finish(const QByteArray &hash, BuildReply reply)
 {
     if (!reply.program) {
         m_hangNote->stop();
@@ -342,15 +342,16 @@ void LiveShaderController::finish(const QByteArray &hash, const BuildReply &repl
     if (warmInViewport(hash, reply))
         return; // the hang note now waits for the draw in the lent context
     m_hangNote->stop();
-    m_viewport->adoptProgram(reply.program);
-    announce(hash, reply);
+    m_viewport->adoptProgram(std::move(reply.program));
+    announce(hash, reply.result, reply.timings);
 }
 
 // The switch to the new program and its first draw, in the viewport's own
 // context lent to the worker: where the driver keeps draw-time variants and
 // per-program state per context (llvmpipe), this is the only way that work
 // stays off the GUI thread.
-bool LiveShaderController::warmInViewport(const QByteArray &hash, const BuildReply &reply)
+// Takes reply.program when it returns true.
+bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &reply)
 {
     if (m_warmUp != WarmUp::ViewportContext || !m_buildThread->isRunning())
         return false;
@@ -358,50 +359,51 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, const BuildRep
     if (!lent)
         return false;
     // The GUI thread leaves the renderer alone while the context is lent.
-    auto adopted = std::make_shared<std::atomic_bool>(false);
-    lent->whileCurrent = [viewport = m_viewport, program = reply.program, adopted] {
-        viewport->renderer().adoptProgram(program);
-        *adopted = true;
-    };
+    // The program goes to the renderer on the worker thread, with the lent
+    // context current; if it never got that far, here, once it is back.
+    const GLuint programId = reply.program.id();
+    auto program = std::make_shared<GlProgram>(std::move(reply.program));
+    lent->whileCurrent = [viewport = m_viewport, program] { viewport->renderer().adoptProgram(std::move(*program)); };
     setState(State::Warming);
     const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
-        *lent, reply.program, [this, warm, hash, reply, adopted](const Result<qint64> &warmNs) {
+        *lent, programId,
+        [this, warm, hash, program, result = reply.result, timings = reply.timings](const Result<qint64> &warmNs) {
             if (m_state != State::Warming || warm != m_warmSerial)
                 return; // the context went away meanwhile (and came back with it), or this is an older warm-up
             setState(State::Idle);
             m_hangNote->stop();
             m_viewport->takeBackContext();
-            if (!*adopted)
-                m_viewport->adoptProgram(reply.program);
-            BuildReply warmed = reply;
+            if (*program)
+                m_viewport->adoptProgram(std::move(*program));
+            BuildTimings warmed = timings;
             if (warmNs) {
                 warmed.warmNs = *warmNs;
             } else {
                 qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(warmNs.error()));
                 setWarmUp(WarmUp::Off);
             }
-            announce(hash, warmed);
+            announce(hash, result, warmed);
             startQueuedBuild();
         });
     return true;
 }
 
-void LiveShaderController::announce(const QByteArray &hash, const BuildReply &reply)
+void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings)
 {
     m_appliedHash = hash;
-    m_lastApplied = reply;
+    m_lastApplied = timings;
     m_recovery->programShown(hash);
-    const int warnings = int(reply.result.diagnostics.size());
+    const int warnings = int(result.diagnostics.size());
     QString status = tr("Compiled in %1 ms (compile %2, link %3, first draw %4)")
                          .arg(double(m_buildClock.nsecsElapsed()) / 1e6, 0, 'f', 0)
-                         .arg(toMs(reply.compileNs), 0, 'f', 0)
-                         .arg(toMs(reply.linkNs), 0, 'f', 0)
-                         .arg(toMs(reply.warmNs), 0, 'f', 0);
+                         .arg(toMs(timings.compileNs), 0, 'f', 0)
+                         .arg(toMs(timings.linkNs), 0, 'f', 0)
+                         .arg(toMs(timings.warmNs), 0, 'f', 0);
     if (warnings > 0)
         status += tr(" — %n warning(s)", nullptr, warnings);
     m_dock->setCompileStatus(status, true);
-    emit programApplied(hash, reply);
+    emit programApplied(hash, timings);
 }
 
 void LiveShaderController::showFailure(const BuildReport &result)

@@ -86,7 +86,7 @@ public:
     bool isWaitingToBuild() const;
     QByteArray appliedHash() const { return m_appliedHash; }
     // Timings of the program in use (warmNs > 0: warmed before it was shown).
-    const BuildReply &lastApplied() const { return m_lastApplied; }
+    const BuildTimings &lastApplied() const { return m_lastApplied; }
     QByteArray currentHash() const;
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
@@ -95,7 +95,7 @@ signals:
     // For the status bar.
     void statusMessage(const QString &text, int timeoutMs);
     // The viewport now draws with the program built from `hash`'s text.
-    void programApplied(const QByteArray &hash, const phonglab::BuildReply &timings);
+    void programApplied(const QByteArray &hash, const phonglab::BuildTimings &timings);
     void buildFailed(const QByteArray &hash);
     void stateChanged(phonglab::LiveShaderController::State state);
 
@@ -116,10 +116,10 @@ private:
     void requestBuild(BuildRequest request);
     void startQueuedBuild();
     void dispatch(const QByteArray &hash);
-    void onBuilt(const BuildReply &reply);
-    void finish(const QByteArray &hash, const BuildReply &reply);
-    bool warmInViewport(const QByteArray &hash, const BuildReply &reply);
-    void announce(const QByteArray &hash, const BuildReply &reply);
+    void onBuilt(BuildReply reply);
+    void finish(const QByteArray &hash, BuildReply reply);
+    bool warmInViewport(const QByteArray &hash, BuildReply &reply);
+    void announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings);
     void takeBackContextNow();
     void showFailure(const BuildReport &result);
 
@@ -139,7 +139,7 @@ private:
     WarmUp m_warmUp = WarmUp::ViewportContext;
     QByteArray m_lastBuiltHash; // last text sent to the compiler
     QByteArray m_appliedHash;   // text of the program the viewport draws with
-    BuildReply m_lastApplied;
+    BuildTimings m_lastApplied;
     quint64 m_warmSerial = 0;             // counts warm-ups, so a late callback is told from the current one
     quint64 m_buildSerial = 0;            // while Building: the serial the worker's reply carries
     QByteArray m_buildHash;               // while Building or Warming: the text on its way

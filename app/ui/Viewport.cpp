@@ -153,13 +153,13 @@ void Viewport::setShading(ShadingMethod method)
     cameraMoved(); // the parameters changed; repaint
 }
 
-void Viewport::adoptProgram(GLuint program)
+void Viewport::adoptProgram(GlProgram program)
 {
     if (!m_glInitialized)
         return; // no context to free it with either; it goes with its share group
     {
         const CurrentContext current(*this);
-        m_renderer.adoptProgram(program);
+        m_renderer.adoptProgram(std::move(program));
     }
     update();
 }

@@ -51,7 +51,7 @@ public:
     // it from then on; uniforms the user set carry over. buildProgram()
     // compiles on the GUI thread with this context: the fallback when no
     // shared context can be had. Both need GL to be up (glInitialized()).
-    void adoptProgram(GLuint program);
+    void adoptProgram(GlProgram program);
     BuiltProgram buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
     Renderer &renderer() { return m_renderer; } // call with the context current (CurrentContext)
     // The near/far planes of the last frame (no GL call; any time).

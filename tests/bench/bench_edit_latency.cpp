@@ -102,7 +102,7 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     QEventLoop loop;
     QElapsedTimer clock;
     qint64 appliedAt = -1, frameAt = -1, lastTick = 0, maxGap = 0;
-    BuildReply timings;
+    BuildTimings timings;
     QTimer ticker;
     ticker.setTimerType(Qt::PreciseTimer);
     ticker.setInterval(1);
@@ -111,11 +111,11 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
         maxGap = std::max(maxGap, now - lastTick);
         lastTick = now;
     });
-    auto applied =
-        QObject::connect(live, &LiveShaderController::programApplied, [&](const QByteArray &, const BuildReply &reply) {
-            appliedAt = clock.nsecsElapsed();
-            timings = reply;
-        });
+    auto applied = QObject::connect(live, &LiveShaderController::programApplied,
+                                    [&](const QByteArray &, const BuildTimings &reply) {
+                                        appliedAt = clock.nsecsElapsed();
+                                        timings = reply;
+                                    });
     auto framed = QObject::connect(viewport, &Viewport::frameRendered, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
             frameAt = clock.nsecsElapsed();

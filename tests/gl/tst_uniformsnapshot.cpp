@@ -169,9 +169,11 @@ void TestUniformSnapshot::adoptKeepsProgramAndFreesOld()
     BuiltProgram built = ProgramBuilder().build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), kSecond});
     QVERIFY2(built.ok(), qPrintable(built.result.errorSummary()));
     QVERIFY(built.compileNs > 0 && built.linkNs > 0);
-    m_first.adopt(built.program);
-    QCOMPARE(m_first.id(), built.program);
-    QVERIFY(glIsProgram(built.program));
+    const GLuint adopted = built.program.id();
+    m_first.adopt(std::move(built.program));
+    QVERIFY(!built.program); // one owner: the shader program
+    QCOMPARE(m_first.id(), adopted);
+    QVERIFY(glIsProgram(adopted));
     QVERIFY(!glIsProgram(old));
 }
 
