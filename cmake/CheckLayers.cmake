@@ -6,7 +6,8 @@
 # Prints each upward edge as FILE:LINE: includes LAYER/... and fails when
 # there is one. core and mesh use Qt Core alone: any <Q...> header they
 # include must be one of QtCore's (pass -DQT_CORE_INCLUDE_DIR=... where Qt
-# is not under /usr/include/<triplet>/qt6). Registered with CTest as unit.layers. The libraries enforce
+# is not under /usr/include/<triplet>/qt6). Below charts no file includes a
+# header of Qt Widgets, Qt Charts or Qt OpenGL Widgets. Registered with CTest as unit.layers. The libraries enforce
 # the same order at link time (app/CMakeLists.txt): a layer links only the
 # ones listed here for it.
 cmake_minimum_required(VERSION 3.16)
@@ -16,15 +17,21 @@ set(allowed_core   core)
 set(allowed_mesh   core mesh)
 set(allowed_render core mesh render)
 set(allowed_bench  core mesh render bench)
-set(allowed_ui     core mesh render bench ui)
+set(allowed_charts core mesh render bench charts)
+set(allowed_ui     core mesh render bench charts ui)
 set(allowed_cli    core mesh render bench cli)
-set(layers core mesh render bench ui cli)
+set(allowed_benchcli core mesh render bench charts cli benchcli)
+set(layers core mesh render bench charts ui cli benchcli)
 
 if(NOT QT_CORE_INCLUDE_DIR)
   file(GLOB QT_CORE_INCLUDE_DIR /usr/include/*/qt6/QtCore /usr/include/qt6/QtCore)
   list(GET QT_CORE_INCLUDE_DIR 0 QT_CORE_INCLUDE_DIR)
 endif()
 set(qt_core_only core mesh)
+# Only charts, ui and benchcli may draw with widgets (Qt Widgets, Qt Charts).
+get_filename_component(qt_include_root "${QT_CORE_INCLUDE_DIR}" DIRECTORY)
+set(widget_modules QtWidgets QtCharts QtOpenGLWidgets)
+set(no_widgets core mesh render bench cli)
 
 set(violations 0)
 foreach(layer IN LISTS layers)
@@ -53,11 +60,22 @@ foreach(layer IN LISTS layers)
           math(EXPR violations "${violations} + 1")
         endif()
       endif()
+      if(layer IN_LIST no_widgets AND line MATCHES "^#include <(Q[A-Za-z/]+)>")
+        set(included "${CMAKE_MATCH_1}")
+        foreach(module IN LISTS widget_modules)
+          string(REGEX REPLACE "^${module}/" "" header "${included}")
+          if(EXISTS "${qt_include_root}/${module}/${header}")
+            file(RELATIVE_PATH relative "${root}" "${file}")
+            message("${relative}:${number}: includes <${included}> (${module}): the ${layer} layer draws no widgets")
+            math(EXPR violations "${violations} + 1")
+          endif()
+        endforeach()
+      endif()
     endforeach()
   endforeach()
 endforeach()
 
 if(violations GREATER 0)
-  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench, ui, cli) or reach past Qt Core")
+  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench <- charts <- ui; bench <- cli <- benchcli; charts <- benchcli), reach past Qt Core, or draw widgets below charts")
 endif()
-message(STATUS "layers: every include points down (core <- mesh <- render <- bench <- ui; bench <- cli); core and mesh use Qt Core alone")
+message(STATUS "layers: every include points down (core <- mesh <- render <- bench <- charts <- ui; bench <- cli <- benchcli; charts <- benchcli); core and mesh use Qt Core alone; only charts, ui and benchcli use widgets")

@@ -1,6 +1,5 @@
 #include "Cli.h"
 
-#include "BenchCommand.h"
 #include "CheckCommand.h"
 #include "CliCommon.h"
 #include "ImportMeshCommand.h"
@@ -13,50 +12,46 @@ namespace phonglab::cli {
 
 namespace {
 
-struct Subcommand {
-    const char *name;
-    const char *summary;
-    int (*run)(int, char **);
-};
-
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a scene offscreen into a PNG", runRender},
     {"check", "judge a shader against the exact image and name the mistake that explains a wrong one", runCheck},
     {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
-    {"bench", "measure speed against accuracy of every shading method and detail", runBench},
 };
 
-void printHelp()
+void printHelp(std::span<const Subcommand> more)
 {
     QString text = QStringLiteral(
         "usage: phonglab [SCENE.json | MESH]   start the editor on a scene or a mesh file\n"
         "                                      (.obj .ply .off .stl .om; the default scene when none given)\n"
         "       phonglab <command> [options]   run a command without a window\n\n"
         "commands:\n");
-    for (const Subcommand &c : kSubcommands)
-        text += QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -11).arg(QString::fromLatin1(c.summary));
+    for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
+        for (const Subcommand &c : commands)
+            text +=
+                QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -11).arg(QString::fromLatin1(c.summary));
     text += QStringLiteral("\n'phonglab <command> --help' describes a command's options.");
     printLine(text);
 }
 
 } // namespace
 
-std::optional<int> dispatch(int argc, char **argv)
+std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> more)
 {
     if (argc < 2)
         return std::nullopt;
     const QString first = QString::fromLocal8Bit(argv[1]);
     if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
-        printHelp();
+        printHelp(more);
         return kExitOk;
     }
     if (first == QLatin1String("--version")) {
         printLine(QStringLiteral("phonglab " PHONGLAB_VERSION));
         return kExitOk;
     }
-    for (const Subcommand &c : kSubcommands)
-        if (first == QLatin1String(c.name))
-            return c.run(argc, argv);
+    for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
+        for (const Subcommand &c : commands)
+            if (first == QLatin1String(c.name))
+                return c.run(argc, argv);
     if (first == QLatin1String("__import-mesh")) // internal, not in --help
         return runImportMesh(argc, argv);
     if (first.startsWith(QLatin1Char('-'))) {

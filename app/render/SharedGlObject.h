@@ -17,8 +17,7 @@ namespace phonglab {
 // left to the group, which frees its objects with its last context. It is
 // never freed through a context of another group, where the same number
 // names something else.
-template <void (QOpenGLFunctions::*Free)(GLuint)>
-class SharedGlObject
+template <void (QOpenGLFunctions::*Free)(GLuint)> class SharedGlObject
 {
 public:
     SharedGlObject() = default;

@@ -2,7 +2,7 @@
 
 #include "BenchProcess.h"
 #include "Viewport.h"
-#include "bench/SpeedAccuracyChart.h"
+#include "charts/SpeedAccuracyChart.h"
 
 #include <QChart>
 #include <QChartView>

@@ -3,7 +3,7 @@
 // Pareto front, and unwritable paths refused with a reason.
 
 #include "ResultChecks.h"
-#include "bench/SpeedAccuracyChart.h"
+#include "charts/SpeedAccuracyChart.h"
 
 #include <QApplication>
 #include <QFile>

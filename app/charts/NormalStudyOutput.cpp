@@ -1,7 +1,7 @@
 #include "NormalStudyOutput.h"
 
-#include "BenchResult.h"
 #include "SpeedAccuracyChart.h"
+#include "bench/BenchResult.h"
 #include "mesh/NormalMethodStudy.h"
 
 #include <QDir>

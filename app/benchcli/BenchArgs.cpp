@@ -1,6 +1,6 @@
 #include "BenchArgs.h"
 
-#include "CliCommon.h"
+#include "cli/CliCommon.h"
 #include "core/PointLight.h"
 #include "core/ResourcePaths.h"
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "cli/Cli.h"
 
 namespace phonglab::cli {
 
@@ -6,5 +7,8 @@ namespace phonglab::cli {
 // The speed-against-accuracy sweep; see `phonglab bench --help` and
 // docs/speed-vs-accuracy.md.
 int runBench(int argc, char **argv);
+
+inline constexpr Subcommand kBenchSubcommand{
+    "bench", "measure speed against accuracy of every shading method and detail", runBench};
 
 } // namespace phonglab::cli

@@ -1,7 +1,7 @@
 #include "SpeedAccuracyChart.h"
 #include "ChartImages.h"
 #include "LabelledChart.h"
-#include "ParetoFront.h"
+#include "bench/ParetoFront.h"
 
 #include <QGraphicsScene>
 #include <QtCharts/QChart>

@@ -1,5 +1,5 @@
 #pragma once
-#include "BenchResult.h"
+#include "bench/BenchResult.h"
 #include "core/Result.h"
 
 #include <QColor>

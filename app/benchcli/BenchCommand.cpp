@@ -1,11 +1,11 @@
 #include "BenchCommand.h"
 
 #include "BenchArgs.h"
-#include "CliCommon.h"
 #include "bench/BenchEngine.h"
 #include "bench/BenchTable.h"
-#include "bench/NormalStudyOutput.h"
-#include "bench/SpeedAccuracyChart.h"
+#include "charts/NormalStudyOutput.h"
+#include "charts/SpeedAccuracyChart.h"
+#include "cli/CliCommon.h"
 #include "core/ResourcePaths.h"
 
 #include <QApplication>
