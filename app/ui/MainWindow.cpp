@@ -1,10 +1,8 @@
 #include "MainWindow.h"
 
-#include "render/UniformSnapshot.h"
-
-#include "core/UniformOwner.h"
-
+#include "FileMenu.h"
 #include "FileTypes.h"
+#include "FrameStatsLabel.h"
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
@@ -15,28 +13,27 @@
 #include "SceneEditDocks.h"
 #include "SceneLoadJob.h"
 #include "SceneLoadRequests.h"
+#include "SceneShaderFiles.h"
 #include "ShaderDock.h"
 #include "ShaderEditor.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
 #include "UniformsDock.h"
 #include "Viewport.h"
+#include "WarningBox.h"
 #include "core/SceneJson.h"
+#include "core/ScenePaths.h"
+#include "render/SceneUniforms.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QLabel>
-#include <QLocale>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTabWidget>
 #include <QTimer>
 
 namespace phonglab {
@@ -45,32 +42,6 @@ namespace {
 
 constexpr int kWarningTimeoutMs = 10000;
 constexpr int kSceneDockWidth = 340; // fits the stats without eliding most of them
-
-// Scenes embedded in the binary (":/...") can be opened but not written.
-bool isWritableLocation(const QString &path)
-{
-    return !path.isEmpty() && !path.startsWith(QLatin1Char(':'));
-}
-
-// Relative mesh paths are relative to the scene file, so saving into another
-// folder must rewrite them to keep pointing at the same meshes.
-Scene rebasedOnto(Scene scene, const QString &sceneFilePath)
-{
-    const QDir folder = QFileInfo(sceneFilePath).absoluteDir();
-    for (SceneObject &object : scene.objects) {
-        const QString resolved = scene.resolveMeshPath(object.mesh);
-        if (resolved != object.mesh && isWritableLocation(resolved))
-            object.mesh = folder.relativeFilePath(resolved);
-    }
-    scene.baseDir = folder.absolutePath();
-    return scene;
-}
-
-QString firstLine(const QString &text)
-{
-    return text.section(QLatin1Char('\n'), 0, 0);
-}
-
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
@@ -104,7 +75,6 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     connectLoading();
     m_liveCheck->pauseWhileLoading(m_loadJob);
     connect(m_uniformsDock, &UniformsDock::valueWritten, m_liveCheck, &LiveCheck::frameChanged);
-    connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::showFrameStats);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     // Queued: the error is raised from inside initializeGL / paintGL, where a
     // dialog must not be opened.
@@ -122,6 +92,7 @@ MainWindow::~MainWindow()
 void MainWindow::createShaderDock()
 {
     m_liveShaders = new LiveShaderController(m_shaderDock, m_viewport, this);
+    m_sceneShaderFiles = std::make_unique<SceneShaderFiles>(m_shaderDock, m_liveShaders);
     connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(), &QStatusBar::showMessage);
     connect(m_viewport, &Viewport::sceneChanged, this,
             [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
@@ -220,24 +191,8 @@ void MainWindow::applyModel(ShadingMethod method, double detail)
 
 void MainWindow::createFileMenu()
 {
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *open = file->addAction(tr("&Open Scene…"), this, &MainWindow::chooseAndOpenScene);
-    open->setShortcut(QKeySequence::Open);
-    QAction *openMesh = file->addAction(tr("Open &Mesh…"), this, &MainWindow::chooseAndOpenMeshes);
-    openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
-    m_recentFiles = new RecentFiles(file->addMenu(tr("&Recent")), this);
-    connect(m_recentFiles, &RecentFiles::fileChosen, this, [this](const QString &path) { openFilesOrExplain({path}); });
-    connect(m_recentFiles, &RecentFiles::missingFileChosen, this, &MainWindow::explainMissingRecentFile);
-    file->addSeparator();
-    QAction *save = file->addAction(tr("&Save Scene"), this, &MainWindow::saveSceneToCurrentFile);
-    save->setShortcut(QKeySequence::Save);
-    QAction *saveAs = file->addAction(tr("Save Scene &As…"), this, &MainWindow::chooseAndSaveScene);
-    saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
-    file->addAction(tr("&Export Image…"), this, &MainWindow::chooseAndExportImage);
-    file->addSeparator();
-    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence(tr("Ctrl+Q")));
-    quit->setMenuRole(QAction::QuitRole);
+    m_fileMenu = new FileMenu(this, menuBar()->addMenu(tr("&File")));
+    m_recentFiles = m_fileMenu->recentFiles();
 }
 
 void MainWindow::createViewMenu()
@@ -275,10 +230,9 @@ void MainWindow::createViewMenu()
 void MainWindow::createStatusBar()
 {
     m_loadProgress = new LoadProgressWidget(m_loadJob, this);
-    m_frameLabel = new QLabel(this);
     m_rendererLabel = new QLabel(tr("OpenGL not started"), this);
     statusBar()->addPermanentWidget(m_loadProgress);
-    statusBar()->addPermanentWidget(m_frameLabel);
+    statusBar()->addPermanentWidget(new FrameStatsLabel(m_viewport, statusBar()));
     statusBar()->addPermanentWidget(m_rendererLabel);
 }
 
@@ -287,7 +241,7 @@ void MainWindow::connectLoading()
     connect(m_viewport, &Viewport::sceneChanged, this, &MainWindow::refreshSceneDock);
     // Queued: the dock is rebuilding itself or its editor is mid-signal when a
     // drop or an edit arrives; both are handled once that is over.
-    connect(m_viewport, &Viewport::filesDropped, this, &MainWindow::openFilesOrExplain, Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::filesDropped, m_fileMenu, &FileMenu::openOrExplain, Qt::QueuedConnection);
     connect(m_sceneDock, &SceneDock::normalsChangeRequested, this, &MainWindow::changeNormals, Qt::QueuedConnection);
     connect(m_loadJob, &SceneLoadJob::failed, this, &MainWindow::showLoadFailure);
     connect(m_loadJob, &SceneLoadJob::cancelled, this, &MainWindow::showLoadCancelled);
@@ -312,11 +266,11 @@ Result<> MainWindow::openScene(const QString &path)
 
 Result<> MainWindow::saveScene(const QString &path)
 {
-    if (Result<> saved = saveShaderBuffers(); !saved)
+    if (Result<> saved = m_sceneShaderFiles->saveEdits(); !saved)
         return saved;
     Scene scene = rebasedOnto(m_viewport->currentScene(), path);
-    addShaderFiles(scene, path);
-    scene.uniforms = userUniformValues();
+    m_sceneShaderFiles->nameIn(scene, path);
+    scene.uniforms = userUniformValues(m_viewport->programSnapshot());
     if (Result<> saved = saveSceneFile(scene, path); !saved)
         return saved;
     setScenePath(path);
@@ -325,133 +279,19 @@ Result<> MainWindow::saveScene(const QString &path)
     return {};
 }
 
-namespace {
-
-// Numbers a scene file can hold: scalars, vectors and matrices of float,
-// int, uint and bool (not samplers, whose values are texture units).
-bool isPlainNumberType(GLenum type)
-{
-    switch (type) {
-    case GL_FLOAT:
-    case GL_FLOAT_VEC2:
-    case GL_FLOAT_VEC3:
-    case GL_FLOAT_VEC4:
-    case GL_INT:
-    case GL_INT_VEC2:
-    case GL_INT_VEC3:
-    case GL_INT_VEC4:
-    case GL_UNSIGNED_INT:
-    case GL_UNSIGNED_INT_VEC2:
-    case GL_UNSIGNED_INT_VEC3:
-    case GL_UNSIGNED_INT_VEC4:
-    case GL_BOOL:
-    case GL_BOOL_VEC2:
-    case GL_BOOL_VEC3:
-    case GL_BOOL_VEC4:
-    case GL_FLOAT_MAT2:
-    case GL_FLOAT_MAT3:
-    case GL_FLOAT_MAT4: return true;
-    default: return false;
-    }
-}
-
-} // namespace
-
-// The running program's values for the uniforms only the user sets (the
-// Uniforms dock's editable rows), so a saved scene reopens with them.
-std::map<QString, std::vector<double>> MainWindow::userUniformValues()
-{
-    std::map<QString, std::vector<double>> values;
-    const UniformSnapshot snapshot = m_viewport->programSnapshot();
-    for (const UniformValue &v : snapshot.values) {
-        const QString name = QString::fromUtf8(v.name);
-        if (!isPlainNumberType(v.type) || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)
-            continue;
-        std::vector<double> numbers;
-        for (int i = 0; i < v.components; ++i)
-            numbers.push_back(v.kind == UniformValue::Kind::Float     ? double(v.floats[i])
-                                  : v.kind == UniformValue::Kind::Int ? double(v.ints[i])
-                                                                      : double(v.uints[i]));
-        values[name] = std::move(numbers);
-    }
-    return values;
-}
-
-// A scene names its shader files, so their unsaved edits are saved with it
-// (a shipped shader's go to its user copy).
-Result<> MainWindow::saveShaderBuffers()
-{
-    for (const ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-        if (!m_shaderDock->isDirty(stage))
-            continue;
-        if (const Result<> saved = m_shaderDock->save(stage); !saved)
-            return fail(tr("Cannot save the %1 shader: %2").arg(stageName(stage), saved.error()));
-    }
-    return {};
-}
-
-// The dock's files, where they are not shipped ones: relative to the scene
-// file when under its folder, else absolute.
-void MainWindow::addShaderFiles(Scene &scene, const QString &sceneFilePath) const
-{
-    const QDir folder = QFileInfo(sceneFilePath).absoluteDir();
-    const auto entry = [&](ShaderStage stage) {
-        const QString file = m_shaderDock->filePath(stage);
-        if (file.isEmpty() || !isWritableLocation(file) || m_shaderDock->files()->isShipped(file))
-            return QString();
-        const QString absolute = QFileInfo(file).absoluteFilePath();
-        const QString relative = folder.relativeFilePath(absolute);
-        return relative.startsWith(QLatin1String("..")) || QDir::isAbsolutePath(relative) ? absolute : relative;
-    };
-    scene.vertexShader = entry(ShaderStage::Vertex);
-    scene.fragmentShader = entry(ShaderStage::Fragment);
-}
-
 void MainWindow::openSceneShaders(const Scene &scene)
 {
-    m_lastShaderError.clear();
-    if (scene.vertexShader.isEmpty() && scene.fragmentShader.isEmpty())
-        return;
-    if (m_shaderDock->hasUnsavedChanges()) {
-        // Unsaved edits are never replaced behind the user's back.
-        statusBar()->showMessage(tr("Kept your unsaved shader edits; the scene's shader files were not loaded"),
-                                 kWarningTimeoutMs);
-        return;
-    }
-    const std::pair<ShaderStage, QString> files[] = {{ShaderStage::Vertex, scene.vertexShader},
-                                                     {ShaderStage::Fragment, scene.fragmentShader}};
-    QStringList missing;
-    for (const auto &[stage, name] : files) {
-        const QString path = scene.resolveShaderPath(name);
-        if (!name.isEmpty() && !QFileInfo(path).isFile())
-            missing << tr("shaders.%1: %2: file not found")
-                           .arg(stage == ShaderStage::Vertex ? QStringLiteral("vertex") : QStringLiteral("fragment"),
-                                QDir::toNativeSeparators(path));
-    }
-    // The shading method's shipped shaders, shown and built, under whatever is missing.
-    if (!missing.isEmpty())
-        m_liveShaders->applyPreset(scene.shading);
-    bool opened = false;
-    for (const auto &[stage, name] : files) {
-        const QString path = scene.resolveShaderPath(name);
-        if (name.isEmpty() || !QFileInfo(path).isFile())
-            continue;
-        // One at a time, on its stage's tab, so any suffix goes to the right stage.
-        m_shaderDock->tabs()->setCurrentWidget(m_shaderDock->editor(stage));
-        if (const Result<> read = m_shaderDock->openFiles({path}))
-            opened = true;
-        else
-            missing << tr("shaders.%1: %2").arg(stageName(stage), read.error());
-    }
+    const Result<QString> opened = m_sceneShaderFiles->open(scene);
+    m_lastShaderError = opened ? QString() : opened.error();
+    if (opened && !opened.value().isEmpty())
+        statusBar()->showMessage(opened.value(), kWarningTimeoutMs);
     if (opened)
-        m_liveShaders->buildNow(); // a failure shows in the dock; the last good program stays
-    if (!missing.isEmpty()) {
-        m_lastShaderError = missing.join(QLatin1Char('\n'));
-        statusBar()->showMessage(tr("Cannot open the scene's shaders: %1").arg(missing.join(QStringLiteral("; "))),
-                                 kWarningTimeoutMs);
-        warn(tr("Cannot open the scene's shaders"),
-             tr("%1\n\nThe scene uses its shading method's shipped shaders instead.").arg(m_lastShaderError));
-    }
+        return;
+    statusBar()->showMessage(
+        tr("Cannot open the scene's shaders: %1").arg(QString(m_lastShaderError).replace('\n', QStringLiteral("; "))),
+        kWarningTimeoutMs);
+    warn(tr("Cannot open the scene's shaders"),
+         tr("%1\n\nThe scene uses its shading method's shipped shaders instead.").arg(m_lastShaderError));
 }
 
 Result<> MainWindow::openFiles(const QStringList &paths)
@@ -460,7 +300,7 @@ Result<> MainWindow::openFiles(const QStringList &paths)
         return fail(reason);
     if (isSceneFile(paths.front())) // then it is the only one
         return startSceneLoad(paths.front());
-    m_lastFolder = QFileInfo(paths.front()).absolutePath();
+    m_fileMenu->rememberFolderOf(paths.front());
     SceneLoadRequest request = meshFilesRequest(m_viewport->currentScene(), paths);
     request.shown = [this, paths] {
         setScenePath({}, fileNameList(paths)); // a new, unsaved scene
@@ -509,79 +349,10 @@ void MainWindow::changeNormals(int objectIndex, const NormalOptions &options)
     m_loadJob->start(std::move(request));
 }
 
-void MainWindow::chooseAndOpenScene()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), dialogFolder(), sceneFileFilter());
-    if (!path.isEmpty())
-        openFilesOrExplain({path});
-}
-
-void MainWindow::chooseAndOpenMeshes()
-{
-    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open Mesh"), dialogFolder(), meshFileFilter());
-    if (!paths.isEmpty())
-        openFilesOrExplain(paths);
-}
-
-void MainWindow::openFilesOrExplain(const QStringList &paths)
-{
-    const Result<> opened = openFiles(paths);
-    if (opened)
-        return;
-    statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())), kWarningTimeoutMs);
-    warn(tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(opened.error()));
-}
-
-void MainWindow::explainMissingRecentFile(const QString &path)
-{
-    warn(tr("File not found"),
-         tr("%1\n\nThe file no longer exists; it was removed from the recent files.")
-             .arg(QDir::toNativeSeparators(path)));
-}
-
-void MainWindow::saveSceneToCurrentFile()
-{
-    if (!isWritableLocation(m_scenePath)) {
-        chooseAndSaveScene();
-        return;
-    }
-    if (const Result<> saved = saveScene(m_scenePath); !saved)
-        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(m_scenePath), saved.error()));
-}
-
-void MainWindow::chooseAndSaveScene()
-{
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), dialogFolder(), sceneFileFilter());
-    if (path.isEmpty())
-        return;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".json");
-    // saveSceneFile writes atomically: on failure the old file and the scene
-    // in the window are both untouched, so the user can retry elsewhere.
-    if (const Result<> saved = saveScene(path); !saved)
-        warn(tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), saved.error()));
-}
-
-void MainWindow::showFrameStats(double milliseconds, qint64 triangles)
-{
-    const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
-    m_frameLabel->setText(tr("%1 ms · %2 triangles%3")
-                              .arg(milliseconds, 0, 'f', 2)
-                              .arg(QLocale().toString(triangles))
-                              .arg(depth ? tr(" · low depth precision") : QString()));
-    m_frameLabel->setToolTip(depth.value_or(QString()));
-    // Said once when it starts, not on every frame of an orbit.
-    if (depth && !m_depthWarningShown)
-        statusBar()->showMessage(*depth, 15000);
-    m_depthWarningShown = depth.has_value();
-}
-
 void MainWindow::showRenderError(const QString &message)
 {
     statusBar()->showMessage(tr("Rendering failed: %1").arg(firstLine(message)));
-    auto *box = new QMessageBox(QMessageBox::Critical, tr("Rendering failed"), message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
+    openWarning(this, tr("Rendering failed"), message, QMessageBox::Critical);
 }
 
 void MainWindow::showLoadFailure(const QString &label, const QString &error)
@@ -608,21 +379,13 @@ void MainWindow::refreshSceneDock()
 void MainWindow::setScenePath(const QString &path, const QString &title)
 {
     m_scenePath = path;
-    if (isWritableLocation(path))
-        m_lastFolder = QFileInfo(path).absolutePath();
+    m_fileMenu->rememberFolderOf(path);
     QString name = title;
     if (name.isEmpty())
         name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
     setWindowTitle(tr("%1 — PhongLab").arg(name));
 }
 
-QString MainWindow::dialogFolder() const
-{
-    return m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
-}
-
-// Non-blocking, so neither a load finishing nor a drop ever waits on a
-// dialog, and nothing stalls the event loop.
 Result<> MainWindow::exportImage(const QString &path, const QSize &size)
 {
     const QImage image = m_viewport->renderImage(size);
@@ -633,33 +396,9 @@ Result<> MainWindow::exportImage(const QString &path, const QSize &size)
     return {};
 }
 
-void MainWindow::chooseAndExportImage()
-{
-    const QSize shown = m_viewport->size() * m_viewport->devicePixelRatioF();
-    bool ok = false;
-    const int width =
-        QInputDialog::getInt(this, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1, 16384, 1, &ok);
-    if (!ok)
-        return;
-    const int height =
-        QInputDialog::getInt(this, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1, 16384, 1, &ok);
-    if (!ok)
-        return;
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
-    if (path.isEmpty())
-        return;
-    if (const Result<> exported = exportImage(path, {width, height}); !exported)
-        warn(tr("Export Image"), exported.error());
-    else
-        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
-}
-
 void MainWindow::warn(const QString &title, const QString &message)
 {
-    auto *box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
+    openWarning(this, title, message);
 }
 
 } // namespace phonglab

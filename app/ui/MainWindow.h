@@ -6,8 +6,7 @@
 
 #include <QMainWindow>
 
-#include <map>
-#include <vector>
+#include <memory>
 
 class QAction;
 class QLabel;
@@ -16,6 +15,7 @@ namespace phonglab {
 
 struct Scene;
 
+class FileMenu;
 class LiveCheck;
 class LiveShaderController;
 class LoadProgressWidget;
@@ -24,15 +24,18 @@ class RecentFiles;
 class SceneDock;
 class SceneEditDocks;
 class SceneLoadJob;
+class SceneShaderFiles;
 class ShaderDock;
 class UniformsDock;
 class Viewport;
 
 // The editor window: the Viewport in the middle, the Shaders dock (live
 // editing: LiveShaderController) tabbed with the Scene dock on the right,
-// File and View menus, and a status bar with load progress, frame time,
-// triangle count and the OpenGL renderer. At start it offers the shader
-// edits a crashed session left behind (ShaderRecovery).
+// the menus (File: FileMenu, with the dialogs) and a status bar with load
+// progress, frame time (FrameStatsLabel) and the OpenGL renderer. It opens,
+// saves and exports without dialogs; the scene's shader files go through
+// SceneShaderFiles. At start it offers the shader edits a crashed session
+// left behind (ShaderRecovery).
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -90,18 +93,10 @@ public:
     LoadProgressWidget *loadProgress() const { return m_loadProgress; }
 
 private slots:
-    void chooseAndOpenScene();
-    void chooseAndOpenMeshes();
-    void openFilesOrExplain(const QStringList &paths);
-    void explainMissingRecentFile(const QString &path);
-    void saveSceneToCurrentFile();
-    void chooseAndSaveScene();
-    void showFrameStats(double milliseconds, qint64 triangles);
     void showRenderError(const QString &message);
     void showLoadFailure(const QString &label, const QString &error);
     void showLoadCancelled(const QString &label);
     void refreshSceneDock();
-    void chooseAndExportImage();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -116,12 +111,8 @@ private:
     void createStatusBar();
     void connectLoading();
     Result<> startSceneLoad(const QString &path);
-    std::map<QString, std::vector<double>> userUniformValues();
-    Result<> saveShaderBuffers();
-    void addShaderFiles(Scene &scene, const QString &sceneFilePath) const;
     void openSceneShaders(const Scene &scene);
     void setScenePath(const QString &path, const QString &title = {});
-    QString dialogFolder() const;
     void warn(const QString &title, const QString &message);
 
     StartupOptions m_options; // first: the members below are built from it
@@ -133,17 +124,16 @@ private:
     UniformsDock *m_uniformsDock = nullptr;
     PerformanceDock *m_performanceDock = nullptr;
     LiveShaderController *m_liveShaders = nullptr;
+    std::unique_ptr<SceneShaderFiles> m_sceneShaderFiles;
     LiveCheck *m_liveCheck = nullptr;
-    RecentFiles *m_recentFiles = nullptr;
+    FileMenu *m_fileMenu = nullptr;
+    RecentFiles *m_recentFiles = nullptr; // in the File menu
     LoadProgressWidget *m_loadProgress = nullptr;
     QAction *m_resetCameraAction = nullptr;
     QAction *m_lightMarkersAction = nullptr;
-    QLabel *m_frameLabel = nullptr;
-    bool m_depthWarningShown = false; // the status bar said the depth range is too wide
     QLabel *m_rendererLabel = nullptr;
     QString m_scenePath;
     QString m_lastShaderError;
-    QString m_lastFolder; // where the last file was opened from, for dialogs
 };
 
 } // namespace phonglab

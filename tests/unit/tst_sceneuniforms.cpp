@@ -1,5 +1,7 @@
-// The scene's "uniforms": values of the shader's own uniforms.
+// The scene's "uniforms": values of the shader's own uniforms, and which of
+// a running program's values a saved scene keeps (render/SceneUniforms).
 #include "core/SceneJson.h"
+#include "render/SceneUniforms.h"
 
 #include <QTest>
 
@@ -22,6 +24,7 @@ private slots:
     void roundTrips();
     void refusesBadValues_data();
     void refusesBadValues();
+    void savesOnlyTheUsersPlainNumbers();
 };
 
 void TestSceneUniforms::absentMeansNone()
@@ -70,6 +73,49 @@ void TestSceneUniforms::refusesBadValues()
     const SceneLoadResult r = parseScene(json);
     QVERIFY(!r.ok());
     QVERIFY2(r.error.startsWith(prefix), qPrintable(r.error));
+}
+
+namespace {
+UniformValue uniform(const char *name, GLenum type, UniformValue::Kind kind, std::initializer_list<double> values)
+{
+    UniformValue v;
+    v.name = name;
+    v.type = type;
+    v.kind = kind;
+    v.components = int(values.size());
+    int i = 0;
+    for (const double x : values) {
+        v.floats[i] = GLfloat(x);
+        v.ints[i] = GLint(x);
+        v.uints[i] = GLuint(x);
+        ++i;
+    }
+    return v;
+}
+} // namespace
+
+// The user's own numbers are kept, with their element index; what the
+// renderer or the scene's docks set, and samplers (texture units), are not.
+void TestSceneUniforms::savesOnlyTheUsersPlainNumbers()
+{
+    using Kind = UniformValue::Kind;
+    UniformSnapshot snapshot;
+    snapshot.values = {
+        uniform("gain", GL_FLOAT, Kind::Float, {0.5}),
+        uniform("tint", GL_FLOAT_VEC3, Kind::Float, {1, 0.25, 0}),
+        uniform("steps[2]", GL_INT, Kind::Int, {-3}),
+        uniform("mask", GL_UNSIGNED_INT, Kind::UInt, {7}),
+        uniform("flag", GL_BOOL, Kind::Int, {1}),
+        uniform("image", GL_SAMPLER_2D, Kind::Int, {0}),
+        uniform("modelViewMatrix", GL_FLOAT_MAT4, Kind::Float, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+        uniform("kd", GL_FLOAT_VEC3, Kind::Float, {0.5, 0.5, 0.5}),
+        uniform("Id[1]", GL_FLOAT_VEC3, Kind::Float, {1, 1, 1}),
+    };
+    const std::map<QString, std::vector<double>> expected = {
+        {QStringLiteral("gain"), {0.5}}, {QStringLiteral("tint"), {1, 0.25, 0}}, {QStringLiteral("steps[2]"), {-3}},
+        {QStringLiteral("mask"), {7}},   {QStringLiteral("flag"), {1}},
+    };
+    QCOMPARE(userUniformValues(snapshot), expected);
 }
 
 QTEST_APPLESS_MAIN(TestSceneUniforms)

@@ -1,0 +1,142 @@
+#include "FileMenu.h"
+
+#include "FileTypes.h"
+#include "MainWindow.h"
+#include "RecentFiles.h"
+#include "Viewport.h"
+#include "WarningBox.h"
+#include "core/ScenePaths.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QStatusBar>
+
+namespace phonglab {
+
+namespace {
+
+constexpr int kMessageTimeoutMs = 10000;
+constexpr int kLargestImageSide = 16384;
+} // namespace
+
+FileMenu::FileMenu(MainWindow *window, QMenu *menu)
+    : QObject(window)
+    , m_window(window)
+{
+    QAction *open = menu->addAction(tr("&Open Scene…"), this, &FileMenu::chooseAndOpenScene);
+    open->setShortcut(QKeySequence::Open);
+    QAction *openMesh = menu->addAction(tr("Open &Mesh…"), this, &FileMenu::chooseAndOpenMeshes);
+    openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    m_recentFiles = new RecentFiles(menu->addMenu(tr("&Recent")), this);
+    connect(m_recentFiles, &RecentFiles::fileChosen, this, [this](const QString &path) { openOrExplain({path}); });
+    connect(m_recentFiles, &RecentFiles::missingFileChosen, this, &FileMenu::explainMissingRecentFile);
+    menu->addSeparator();
+    QAction *save = menu->addAction(tr("&Save Scene"), this, &FileMenu::saveToCurrentFile);
+    save->setShortcut(QKeySequence::Save);
+    QAction *saveAs = menu->addAction(tr("Save Scene &As…"), this, &FileMenu::chooseAndSave);
+    saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
+    menu->addAction(tr("&Export Image…"), this, &FileMenu::chooseAndExportImage);
+    menu->addSeparator();
+    QAction *quit = menu->addAction(tr("&Quit"), window, &QWidget::close);
+    quit->setShortcut(QKeySequence(tr("Ctrl+Q")));
+    quit->setMenuRole(QAction::QuitRole);
+}
+
+void FileMenu::openOrExplain(const QStringList &paths)
+{
+    const Result<> opened = m_window->openFiles(paths);
+    if (opened)
+        return;
+    m_window->statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())), kMessageTimeoutMs);
+    openWarning(m_window, tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(opened.error()));
+}
+
+void FileMenu::rememberFolderOf(const QString &path)
+{
+    if (isWritableLocation(path))
+        m_lastFolder = QFileInfo(path).absolutePath();
+}
+
+void FileMenu::chooseAndOpenScene()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open Scene"), dialogFolder(), sceneFileFilter());
+    if (!path.isEmpty())
+        openOrExplain({path});
+}
+
+void FileMenu::chooseAndOpenMeshes()
+{
+    const QStringList paths =
+        QFileDialog::getOpenFileNames(m_window, tr("Open Mesh"), dialogFolder(), meshFileFilter());
+    if (!paths.isEmpty())
+        openOrExplain(paths);
+}
+
+void FileMenu::explainMissingRecentFile(const QString &path)
+{
+    openWarning(m_window, tr("File not found"),
+                tr("%1\n\nThe file no longer exists; it was removed from the recent files.")
+                    .arg(QDir::toNativeSeparators(path)));
+}
+
+void FileMenu::saveToCurrentFile()
+{
+    const QString path = m_window->scenePath();
+    if (!isWritableLocation(path)) {
+        chooseAndSave();
+        return;
+    }
+    if (const Result<> saved = m_window->saveScene(path); !saved)
+        warnCannotSave(path, saved.error());
+}
+
+void FileMenu::chooseAndSave()
+{
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Scene As"), dialogFolder(), sceneFileFilter());
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    // saveSceneFile writes atomically: on failure the old file and the scene
+    // in the window are both untouched, so the user can retry elsewhere.
+    if (const Result<> saved = m_window->saveScene(path); !saved)
+        warnCannotSave(path, saved.error());
+}
+
+void FileMenu::warnCannotSave(const QString &path, const QString &error)
+{
+    openWarning(m_window, tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), error));
+}
+
+void FileMenu::chooseAndExportImage()
+{
+    const Viewport *viewport = m_window->viewport();
+    const QSize shown = viewport->size() * viewport->devicePixelRatioF();
+    bool ok = false;
+    const int width = QInputDialog::getInt(m_window, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1,
+                                           kLargestImageSide, 1, &ok);
+    if (!ok)
+        return;
+    const int height = QInputDialog::getInt(m_window, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1,
+                                            kLargestImageSide, 1, &ok);
+    if (!ok)
+        return;
+    const QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
+    if (path.isEmpty())
+        return;
+    if (const Result<> exported = m_window->exportImage(path, {width, height}); !exported)
+        openWarning(m_window, tr("Export Image"), exported.error());
+    else
+        m_window->statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kMessageTimeoutMs);
+}
+
+QString FileMenu::dialogFolder() const
+{
+    return m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
+}
+
+} // namespace phonglab

@@ -1,0 +1,44 @@
+#pragma once
+#include <QObject>
+#include <QStringList>
+
+class QMenu;
+
+namespace phonglab {
+
+class MainWindow;
+class RecentFiles;
+
+// The File menu: the dialogs in front of MainWindow's open, save and export
+// (which work without them, for tests and start-up), the recent files, and
+// what each says when it fails.
+class FileMenu : public QObject
+{
+    Q_OBJECT
+
+public:
+    FileMenu(MainWindow *window, QMenu *menu);
+
+    RecentFiles *recentFiles() const { return m_recentFiles; }
+    // File → Open, File → Recent and a drop: opens, or says in a dialog why
+    // not (the current scene stays).
+    void openOrExplain(const QStringList &paths);
+    // The file dialogs start in the folder of the last file opened or saved.
+    void rememberFolderOf(const QString &path);
+
+private:
+    void chooseAndOpenScene();
+    void chooseAndOpenMeshes();
+    void explainMissingRecentFile(const QString &path);
+    void saveToCurrentFile();
+    void chooseAndSave();
+    void chooseAndExportImage();
+    void warnCannotSave(const QString &path, const QString &error);
+    QString dialogFolder() const;
+
+    MainWindow *m_window;
+    RecentFiles *m_recentFiles = nullptr;
+    QString m_lastFolder;
+};
+
+} // namespace phonglab

@@ -1,0 +1,36 @@
+#include "FrameStatsLabel.h"
+
+#include "Viewport.h"
+#include "core/DepthRange.h"
+
+#include <QLocale>
+#include <QStatusBar>
+
+namespace phonglab {
+
+namespace {
+constexpr int kDepthWarningTimeoutMs = 15000;
+} // namespace
+
+FrameStatsLabel::FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar)
+    : QLabel(statusBar)
+    , m_viewport(viewport)
+    , m_statusBar(statusBar)
+{
+    connect(viewport, &Viewport::frameRendered, this, &FrameStatsLabel::showFrame);
+}
+
+void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
+{
+    const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
+    setText(tr("%1 ms · %2 triangles%3")
+                .arg(milliseconds, 0, 'f', 2)
+                .arg(QLocale().toString(triangles))
+                .arg(depth ? tr(" · low depth precision") : QString()));
+    setToolTip(depth.value_or(QString()));
+    if (depth && !m_depthWarningShown)
+        m_statusBar->showMessage(*depth, kDepthWarningTimeoutMs);
+    m_depthWarningShown = depth.has_value();
+}
+
+} // namespace phonglab
