@@ -3,6 +3,7 @@
 #include "CurrentContext.h"
 
 #include "LightPicking.h"
+#include "render/FramebufferImage.h"
 
 #include <QAction>
 #include <QDragEnterEvent>
@@ -13,7 +14,6 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
-#include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
 #include <QResizeEvent>
 #include <QWheelEvent>
@@ -28,9 +28,8 @@ constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1; // weight of the newest frame in the running average
-constexpr int kGiveBackTimeoutMs = 5000;
-constexpr double kLightPickRadiusPx =
-    8.0; // how near a click must be to a marker   // a borrower stuck in the driver (a shader that never ends)
+constexpr int kGiveBackTimeoutMs = 5000;    // a borrower stuck in the driver (a shader that never ends)
+constexpr double kLightPickRadiusPx = 8.0;  // how near a click must be to a marker
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -245,40 +244,14 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
     if (!m_renderReady || pixelSize.isEmpty())
         return {};
     const CurrentContext current(*this);
-    if (m_parametersDirty) {
-        m_renderer.updateSceneParameters(renderedScene());
-        m_parametersDirty = false;
-    }
-    // Drawn with the view's own sample count: the driver keeps a shader
-    // variant per framebuffer setup, and the new program's variant for this
-    // one was compiled by the warm-up in the lent context, off the GUI thread
-    // (a single-sample target would compile another here, ~80 ms on
-    // llvmpipe). Resolved into a single-sample target to read back.
-    QOpenGLFramebufferObjectFormat format;
-    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
-    format.setInternalTextureFormat(GL_RGBA8);
-    format.setSamples(std::max(0, m_framebufferSamples));
-    QOpenGLFramebufferObjectFormat resolvedFormat;
-    resolvedFormat.setInternalTextureFormat(GL_RGBA8);
-    QImage image;
-    {
-        QOpenGLFramebufferObject fbo(pixelSize, format);
-        if (fbo.isValid() && fbo.bind()) {
-            Renderer::Options options = m_options;
-            options.drawLightMarkers = options.drawLightMarkers && lightMarkers;
-            m_renderer.setOptions(options);
-            m_renderer.render(pixelSize);
-            m_renderer.setOptions(m_options);
-            fbo.release();
-            if (format.samples() > 0) {
-                QOpenGLFramebufferObject resolved(pixelSize, resolvedFormat);
-                QOpenGLFramebufferObject::blitFramebuffer(&resolved, &fbo);
-                image = resolved.toImage(true);
-            } else {
-                image = fbo.toImage(true);
-            }
-        }
-    }
+    sendChangedParameters();
+    // The view's own sample count: the new program's variant for it was
+    // compiled by the warm-up in the lent context, off the GUI thread.
+    Renderer::Options options = m_options;
+    options.drawLightMarkers = options.drawLightMarkers && lightMarkers;
+    m_renderer.setOptions(options);
+    QImage image = drawIntoImage(m_renderer, pixelSize, m_framebufferSamples);
+    m_renderer.setOptions(m_options);
     return image;
 }
 
@@ -432,10 +405,7 @@ void Viewport::paintGL()
         f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         return;
     }
-    if (m_parametersDirty) {
-        m_renderer.updateSceneParameters(renderedScene());
-        m_parametersDirty = false;
-    }
+    sendChangedParameters();
 
     if (m_framebufferSamples < 0) {
         // What QOpenGLWidget really allocated (format() reports the
@@ -451,6 +421,16 @@ void Viewport::paintGL()
     recordFrameTime(double(timer.nsecsElapsed()) / 1e6);
     ++m_framesRendered;
     emit frameRendered(m_smoothedFrameMs, m_renderer.trianglesDrawn());
+}
+
+// Needs the context current: camera, lights and materials changed since the
+// last frame go to the renderer once, just before a frame is drawn.
+void Viewport::sendChangedParameters()
+{
+    if (!m_parametersDirty)
+        return;
+    m_renderer.updateSceneParameters(renderedScene());
+    m_parametersDirty = false;
 }
 
 void Viewport::recordFrameTime(double milliseconds)

@@ -161,6 +161,7 @@ private:
     Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
     void showUploaded(const Scene &scene);
     void cameraMoved();
+    void sendChangedParameters();
     void recordFrameTime(double milliseconds);
     bool startLightDrag(const QPointF &position);
     void dragLight(const QPointF &position, bool alongView);
