@@ -94,17 +94,9 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."), QStringLiteral("csv"));
     parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details, images, normals, from});
 
-    auto usage = [](const QString &message) {
-        printError(message);
-        printErrLine(kSynopsis);
-        return kExitUsage;
-    };
-    if (!parser.parse(arguments))
-        return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        printLine(helpText());
-        return kExitOk;
-    }
+    const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
+    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, kSynopsis, helpText()))
+        return *exit;
     if (!parser.positionalArguments().isEmpty())
         return usage(QStringLiteral("unexpected argument '%1' (scenes go after --scene)")
                          .arg(parser.positionalArguments().first()));

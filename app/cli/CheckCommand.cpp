@@ -80,17 +80,9 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff});
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
 
-    const auto usage = [&](const QString &message) {
-        printError(message);
-        printErrLine(synopsis());
-        return kExitUsage;
-    };
-    if (!parser.parse(arguments))
-        return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        printLine(helpText());
-        return kExitOk;
-    }
+    const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
+    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis(), helpText()))
+        return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
         return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")

@@ -1,5 +1,6 @@
 #include "CliCommon.h"
 
+#include <QCommandLineParser>
 #include <QRegularExpression>
 
 #include <cstdio>
@@ -22,6 +23,25 @@ void printErrLine(const QString &text)
 {
     std::fprintf(stderr, "%s\n", text.toLocal8Bit().constData());
     std::fflush(stderr);
+}
+
+int usageError(const QString &message, const QString &synopsis)
+{
+    printError(message);
+    printErrLine(synopsis);
+    return kExitUsage;
+}
+
+std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments, const QCommandLineOption &help,
+                               const QString &synopsis, const QString &helpText)
+{
+    if (!parser.parse(arguments))
+        return usageError(parser.errorText(), synopsis);
+    if (parser.isSet(help)) {
+        printLine(helpText);
+        return kExitOk;
+    }
+    return std::nullopt;
 }
 
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide)

@@ -4,6 +4,9 @@
 #include <QStringList>
 #include <optional>
 
+class QCommandLineOption;
+class QCommandLineParser;
+
 namespace phonglab::cli {
 
 // Exit codes shared by every subcommand (scripts rely on them).
@@ -17,6 +20,14 @@ void printLine(const QString &text);    // stdout
 void printErrLine(const QString &text); // stderr, verbatim
 
 QStringList argumentsFrom(int argc, char **argv);
+
+// A usage error: "phonglab: error: MESSAGE" and the synopsis on stderr;
+// returns kExitUsage.
+int usageError(const QString &message, const QString &synopsis);
+// What every subcommand does with its arguments first: a parse error is a
+// usage error, --help prints `helpText` and exits 0. nullopt: go on.
+std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments, const QCommandLineOption &help,
+                               const QString &synopsis, const QString &helpText);
 
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);

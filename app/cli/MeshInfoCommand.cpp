@@ -32,25 +32,18 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."), QStringLiteral("deg"));
     parser.addOptions({help, json, normals, crease});
 
-    auto usage = [](const QString &message) {
-        printError(message);
-        printErrLine(QString::fromLatin1(kUsage));
-        return kExitUsage;
-    };
-    if (!parser.parse(arguments))
-        return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        printLine(QString::fromLatin1(kUsage)
-                  + QStringLiteral(
-                      "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
-                      "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
-                      "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
-                      "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
-                      "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
-                      "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
-                      "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments."));
-        return kExitOk;
-    }
+    const QString synopsis = QString::fromLatin1(kUsage);
+    const QString helpText = synopsis
+        + QStringLiteral("\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
+                         "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
+                         "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
+                         "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
+                         "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
+                         "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
+                         "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
+    const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
+    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
+        return *exit;
     if (parser.positionalArguments().size() != 1)
         return usage(QStringLiteral("expected exactly one mesh file"));
 

@@ -53,29 +53,21 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis = QStringLiteral(
         "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE]");
-    auto usage = [&](const QString &message) {
-        printError(message);
-        printErrLine(synopsis);
-        return kExitUsage;
-    };
-    if (!parser.parse(arguments))
-        return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        printLine(
-            synopsis
-            + QStringLiteral("\n\n"
-                             "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
-                             "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
-                             "  --size WxH          image size in pixels, default 800x600\n"
-                             "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
-                             "                      %1\n"
-                             "  --vertex FILE       vertex shader instead of the shading method's\n"
-                             "  --fragment FILE     fragment shader instead of the shading method's\n\n"
-                             "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
-                             "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
-                  .arg(knownMethods));
-        return kExitOk;
-    }
+    const QString helpText = synopsis
+        + QStringLiteral("\n\n"
+                         "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
+                         "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
+                         "  --size WxH          image size in pixels, default 800x600\n"
+                         "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
+                         "                      %1\n"
+                         "  --vertex FILE       vertex shader instead of the shading method's\n"
+                         "  --fragment FILE     fragment shader instead of the shading method's\n\n"
+                         "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
+                         "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
+              .arg(knownMethods);
+    const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
+    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
+        return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
         return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")
