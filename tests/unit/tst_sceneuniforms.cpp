@@ -84,10 +84,12 @@ UniformValue uniform(const char *name, GLenum type, UniformValue::Kind kind, std
     v.kind = kind;
     v.components = int(values.size());
     int i = 0;
-    for (const double x : values) {
-        v.floats[i] = GLfloat(x);
-        v.ints[i] = GLint(x);
-        v.uints[i] = GLuint(x);
+    for (const double x : values) { // only the kind's own words, as the driver fills them
+        switch (kind) {
+        case UniformValue::Kind::Float: v.floats[i] = GLfloat(x); break;
+        case UniformValue::Kind::Int: v.ints[i] = GLint(x); break;
+        case UniformValue::Kind::UInt: v.uints[i] = GLuint(x); break;
+        }
         ++i;
     }
     return v;
