@@ -27,16 +27,16 @@ struct BenchEngine::SceneRun {
     std::vector<std::shared_ptr<const MeshData>> fullMeshes; // per object; null = analytic builtin
     std::vector<int> lightCounts;
     int ownLights = 0;
-    std::vector<ReferenceImage> references;          // per light count
-    std::vector<std::uint8_t> compared;              // 1 away from every silhouette (lights do not move them)
+    std::vector<ReferenceImage> references; // per light count
+    std::vector<std::uint8_t> compared; // 1 away from every silhouette (lights do not move them)
     std::vector<std::vector<std::uint8_t>> specular; // compared ∧ highlight, per light count
     qint64 previousTriangles = -1;                   // of the last detail level measured
 };
 
 namespace {
 
-std::vector<std::uint8_t> highlightMask(const ReferenceImage &reference, const std::vector<std::uint8_t> &compared,
-                                        double threshold)
+std::vector<std::uint8_t> highlightMask(const ReferenceImage &reference,
+                                        const std::vector<std::uint8_t> &compared, double threshold)
 {
     std::vector<std::uint8_t> mask(reference.color.size(), 0);
     if (reference.specular.size() != mask.size())
@@ -77,7 +77,8 @@ int benchConfigurationCount(const BenchOptions &options, const std::vector<int> 
 {
     int total = 0;
     for (int own : sceneLightCounts)
-        total += int(options.details.size() * options.methods.size() * benchLightCounts(options, own).size());
+        total += int(options.details.size() * options.methods.size()
+                     * benchLightCounts(options, own).size());
     return total;
 }
 
@@ -98,10 +99,12 @@ QString BenchEngine::glRendererName() const
     return m_offscreen ? m_offscreen->glRendererName() : QString();
 }
 
-Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows, const BenchProgressFn &progress)
+Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *rows,
+                          const BenchProgressFn &progress)
 {
     if (!m_offscreen)
-        return fail(QStringLiteral("the bench has no OpenGL context (initialize() failed or was not called)"));
+        return fail(QStringLiteral(
+            "the bench has no OpenGL context (initialize() failed or was not called)"));
     // Load every scene first: a bad file fails the run before any measuring,
     // and the progress total is known from the start.
     std::vector<SceneRun> runs(std::size_t(options.scenes.size()));
@@ -121,7 +124,9 @@ Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *ro
     m_done = 0;
     m_total = benchConfigurationCount(options, own);
     for (qsizetype i = 0; i < options.scenes.size(); ++i)
-        if (Result<> done = runScene(options, options.scenes[i], runs[std::size_t(i)], rows, progress); !done)
+        if (Result<> done =
+                runScene(options, options.scenes[i], runs[std::size_t(i)], rows, progress);
+            !done)
             return done;
     return {};
 }
@@ -142,22 +147,26 @@ Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path,
         return fail(QStringLiteral("%1: %2").arg(path, meshes.error));
     for (const SceneObject &object : full.objects) {
         const bool analytic = isBuiltinMeshSpec(object.mesh);
-        state.fullMeshes.push_back(analytic ? nullptr : meshes.entries.value(meshKey(full, object)).mesh);
+        state.fullMeshes.push_back(analytic ? nullptr
+                                            : meshes.entries.value(meshKey(full, object)).mesh);
     }
     for (int count : state.lightCounts) {
         if (!report(QStringLiteral("%1: reference, %2 light(s)").arg(state.name).arg(count)))
             return fail(QStringLiteral("cancelled"));
-        auto reference = raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
-                                            options.size.height(), ReferenceShading::Phong);
+        auto reference =
+            raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
+                               options.size.height(), ReferenceShading::Phong);
         if (!reference)
             return fail(QStringLiteral("%1: no reference: %2").arg(path, reference.error()));
         if (state.compared.empty()) {
             auto compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx);
             if (!compared)
-                return fail(QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error()));
+                return fail(
+                    QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error()));
             state.compared = std::move(*compared);
         }
-        state.specular.push_back(highlightMask(*reference, state.compared, options.specularThreshold));
+        state.specular.push_back(
+            highlightMask(*reference, state.compared, options.specularThreshold));
         state.references.push_back(std::move(*reference));
     }
     for (double detail : options.details)
@@ -178,9 +187,10 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
         // Nothing coarser to be had (a box has no levels; a tessellation at
         // its minimum): the same meshes again would only repeat rows.
         m_done += int(options.methods.size() * state.lightCounts.size());
-        const QString stage = QStringLiteral("%1: detail %2 draws the same %3 triangles as the level before; skipped")
-                                  .arg(state.name, detailPercent(detail))
-                                  .arg(triangles);
+        const QString stage =
+            QStringLiteral("%1: detail %2 draws the same %3 triangles as the level before; skipped")
+                .arg(state.name, detailPercent(detail))
+                .arg(triangles);
         if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
             return fail(QStringLiteral("cancelled"));
         return {};
@@ -189,7 +199,8 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
     if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
-        return fail(QStringLiteral("%1 at detail %2: %3").arg(state.name, detailPercent(detail), set.error()));
+        return fail(QStringLiteral("%1 at detail %2: %3")
+                        .arg(state.name, detailPercent(detail), set.error()));
     for (ShadingMethod method : options.methods) {
         const BuildReport built = renderer.loadShading(method);
         if (!built.ok)
@@ -208,8 +219,8 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
     return {};
 }
 
-BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
-                              double detail)
+BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                              ShadingMethod method, double detail)
 {
     Renderer &renderer = m_offscreen->renderer();
     const int count = state.lightCounts[setup];
@@ -217,13 +228,15 @@ BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std:
     scene.shading = method;
     renderer.updateSceneParameters(scene);
 
-    const FrameTiming timing = m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
+    const FrameTiming timing =
+        m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
     const QImage image = m_offscreen->renderImage(options.size);
     const ReferenceImage &reference = state.references[setup];
     const RgbImage pixels = toRgbImage(image);
-    const BandComparison all = compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.compared);
-    const BandComparison highlight =
-        compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.specular[setup]);
+    const BandComparison all =
+        compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.compared);
+    const BandComparison highlight = compareOutsideBand(pixels, reference, scene.background,
+                                                        options.bandPx, &state.specular[setup]);
 
     BenchRow row;
     row.scene = state.name;

@@ -18,9 +18,9 @@ struct MeshData;
 
 // Where a bench run is; the callback returns false to cancel.
 struct BenchProgress {
-    int done = 0;                  // configurations measured so far
-    int total = 0;                 // configurations in the whole run
-    QString stage;                 // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
+    int done = 0;  // configurations measured so far
+    int total = 0; // configurations in the whole run
+    QString stage; // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
     const BenchRow *row = nullptr; // the row just measured, if this step measured one
 };
 using BenchProgressFn = std::function<bool(const BenchProgress &)>;
@@ -46,16 +46,17 @@ public:
 
     // Appends one row per configuration to *rows. A failure when a
     // scene cannot be loaded or a shader does not build, or "cancelled".
-    Result<> run(const BenchOptions &options, std::vector<BenchRow> *rows, const BenchProgressFn &progress = {});
+    Result<> run(const BenchOptions &options, std::vector<BenchRow> *rows,
+                 const BenchProgressFn &progress = {});
 
 private:
     struct SceneRun;
-    Result<> runScene(const BenchOptions &options, const QString &path, SceneRun &state, std::vector<BenchRow> *rows,
-                      const BenchProgressFn &progress);
-    Result<> measureDetail(const BenchOptions &options, SceneRun &state, double detail, std::vector<BenchRow> *rows,
-                           const BenchProgressFn &progress);
-    BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup, ShadingMethod method,
-                     double detail);
+    Result<> runScene(const BenchOptions &options, const QString &path, SceneRun &state,
+                      std::vector<BenchRow> *rows, const BenchProgressFn &progress);
+    Result<> measureDetail(const BenchOptions &options, SceneRun &state, double detail,
+                           std::vector<BenchRow> *rows, const BenchProgressFn &progress);
+    BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                     ShadingMethod method, double detail);
 
     std::unique_ptr<OffscreenRenderer> m_offscreen;
     int m_done = 0;

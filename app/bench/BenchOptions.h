@@ -19,8 +19,8 @@ struct BenchOptions {
     std::vector<double> details{1.0, 1.0 / 4, 1.0 / 16, 1.0 / 64};
     std::vector<int> lightCounts{1, 4, 8};
     bool sceneLights = true; // also the scene's own lights (what fit-to-budget uses)
-    std::vector<ShadingMethod> methods{ShadingMethod::Flat, ShadingMethod::Gouraud, ShadingMethod::BlinnPhong,
-                                       ShadingMethod::Phong};
+    std::vector<ShadingMethod> methods{ShadingMethod::Flat, ShadingMethod::Gouraud,
+                                       ShadingMethod::BlinnPhong, ShadingMethod::Phong};
     int bandPx = 2; // silhouette band left out of the error
     // A pixel belongs to the specular highlight where the reference's
     // specular term reaches this much in some channel (4/255: visible).

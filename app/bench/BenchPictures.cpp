@@ -7,7 +7,8 @@
 
 namespace phonglab {
 
-QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, const glm::dvec3 &background, int bandPx,
+QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference,
+                     const glm::dvec3 &background, int bandPx,
                      const std::vector<std::uint8_t> *compared, const QString &caption)
 {
     const int w = rendered.width(), h = rendered.height();
@@ -24,12 +25,14 @@ QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference, co
     QFont font = painter.font();
     font.setPixelSize(14);
     painter.setFont(font);
-    painter.drawText(QRect(6, 0, out.width() - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft, caption);
-    const QStringList labels{QStringLiteral("GPU"), QStringLiteral("CPU reference (exact)"),
-                             QStringLiteral("error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
+    painter.drawText(QRect(6, 0, out.width() - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
+                     caption);
+    const QStringList labels{
+        QStringLiteral("GPU"), QStringLiteral("CPU reference (exact)"),
+        QStringLiteral("error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
     for (int i = 0; i < 3; ++i)
-        painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
-                         labels[i]);
+        painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption),
+                         Qt::AlignVCenter | Qt::AlignLeft, labels[i]);
     return out;
 }
 

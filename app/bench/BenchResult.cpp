@@ -62,8 +62,8 @@ QString formatDouble(double v)
 QString detailPercent(double detail)
 {
     const double percent = detail * 100.0;
-    const QString number =
-        std::abs(percent) >= 100 ? QString::number(percent, 'f', 0) : QString::number(percent, 'g', 3);
+    const QString number = std::abs(percent) >= 100 ? QString::number(percent, 'f', 0)
+                                                    : QString::number(percent, 'g', 3);
     return number + QStringLiteral(" %");
 }
 
@@ -173,7 +173,8 @@ public:
             return true;
         }
         const QString lower = t.toLower();
-        if (lower == QLatin1String("inf") || lower == QLatin1String("+inf") || lower == QLatin1String("infinity")) {
+        if (lower == QLatin1String("inf") || lower == QLatin1String("+inf")
+            || lower == QLatin1String("infinity")) {
             *out = std::numeric_limits<double>::infinity();
             return true;
         }
@@ -371,8 +372,10 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
             && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse)
             && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError)
             && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels)
-            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared), &row.pixelsCompared)
-            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors), &row.coverageErrors);
+            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared),
+                                &row.pixelsCompared)
+            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors),
+                                &row.coverageErrors);
         if (!ok)
             return fail(reader.error());
         if (row.method.isEmpty())

@@ -25,11 +25,12 @@ struct BenchRow {
     int lights = 0;           // number of point lights
     bool sceneLights = false; // true: exactly the scene's own lights (the fit uses these rows)
 
-    double frameMs = 0;                                      // median wall time of render + glFinish, ms
-    double frameMsP90 = 0;                                   // 90th percentile of the same
-    double cpuSubmitMs = 0;                                  // median time until render() returned (CPU submission), ms
-    double gpuMs = std::numeric_limits<double>::quiet_NaN(); // GL_TIME_ELAPSED median; NaN where not trusted (llvmpipe)
-    int frames = 0;                                          // frames timed after warm-up
+    double frameMs = 0;     // median wall time of render + glFinish, ms
+    double frameMsP90 = 0;  // 90th percentile of the same
+    double cpuSubmitMs = 0; // median time until render() returned (CPU submission), ms
+    double gpuMs = std::numeric_limits<
+        double>::quiet_NaN(); // GL_TIME_ELAPSED median; NaN where not trusted (llvmpipe)
+    int frames = 0;           // frames timed after warm-up
 
     double psnr = 0;         // dB; +inf when identical
     double rmse = 0;         // 8-bit steps
@@ -39,7 +40,8 @@ struct BenchRow {
     int specularMaxError = 0;
     qint64 specularPixels = 0; // pixels in the highlight mask (0: no highlight visible)
     qint64 pixelsCompared = 0;
-    qint64 coverageErrors = 0; // pixels outside the silhouette band covered in one image and not the other
+    qint64 coverageErrors =
+        0; // pixels outside the silhouette band covered in one image and not the other
 
     // The full-detail Phong row of a scene and light setup is the baseline
     // the savings are measured against.
@@ -63,7 +65,7 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows);
 // more columns still read): the rows, or a failure naming `sourceName`
 // (e.g. the file's path) and the line: "<sourceName> line 7: frame_ms is
 // not a number: 'abc'".
-Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text,
-                                               const QString &sourceName = QStringLiteral("results.csv"));
+Result<std::vector<BenchRow>> benchRowsFromCsv(
+    const QString &text, const QString &sourceName = QStringLiteral("results.csv"));
 
 } // namespace phonglab

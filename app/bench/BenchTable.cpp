@@ -43,13 +43,16 @@ QString benchTableLine(const BenchRow &row)
         .arg(row.method, -11)
         .arg(detailPercent(row.detail), 7)
         .arg(row.triangles, 9)
-        .arg(QString::number(row.lights) + (row.sceneLights ? QStringLiteral("*") : QStringLiteral(" ")), 6)
+        .arg(QString::number(row.lights)
+                 + (row.sceneLights ? QStringLiteral("*") : QStringLiteral(" ")),
+             6)
         .arg(number(row.frameMs, 2, 8))
         .arg(number(row.cpuSubmitMs, 2, 7))
         .arg(number(row.psnr, 1, 7))
         .arg(number(row.rmse, 2, 6))
         .arg(row.maxError, 4)
-        .arg(row.specularPixels ? number(row.specularRmse, 2, 7) : QStringLiteral("-").rightJustified(7))
+        .arg(row.specularPixels ? number(row.specularRmse, 2, 7)
+                                : QStringLiteral("-").rightJustified(7))
         .arg(row.specularPixels ? QString::number(row.specularMaxError).rightJustified(6)
                                 : QStringLiteral("-").rightJustified(6))
         .arg(row.coverageErrors, 6);
@@ -61,7 +64,8 @@ std::vector<SceneFit> fitScenes(const std::vector<BenchRow> &rows, const ErrorBu
     for (const BenchRow &row : rows) {
         if (!row.sceneLights)
             continue;
-        auto it = std::find_if(fits.begin(), fits.end(), [&](const SceneFit &f) { return f.scene == row.scene; });
+        auto it = std::find_if(fits.begin(), fits.end(),
+                               [&](const SceneFit &f) { return f.scene == row.scene; });
         if (it == fits.end()) {
             fits.push_back(SceneFit{row.scene, {}, {}});
             it = std::prev(fits.end());
@@ -90,7 +94,8 @@ QString sceneFitsToCsv(const std::vector<SceneFit> &fits, const ErrorBudget &bud
                            chosen ? QString::number(c.triangles) : QString(),
                            chosen ? QString::number(c.frameMs, 'g', 17) : QString(),
                            chosen ? QString::number(c.maxError) : QString(),
-                           chosen ? (std::isinf(c.psnr) ? QStringLiteral("inf") : QString::number(c.psnr, 'g', 17))
+                           chosen ? (std::isinf(c.psnr) ? QStringLiteral("inf")
+                                                        : QString::number(c.psnr, 'g', 17))
                                   : QString(),
                            base ? QString::number(b.triangles) : QString(),
                            base ? QString::number(b.frameMs, 'g', 17) : QString(),

@@ -66,7 +66,8 @@ QString rowLabel(const BenchRow &row)
 // "3 412 triangles, 1.9 ms"
 QString rowCost(const BenchRow &row)
 {
-    return QStringLiteral("%1 triangles, %2 ms").arg(groupedNumber(row.triangles), formatMs(row.frameMs));
+    return QStringLiteral("%1 triangles, %2 ms")
+        .arg(groupedNumber(row.triangles), formatMs(row.frameMs));
 }
 
 // The row's error in the budget's own terms: "max error 2/255" / "PSNR 41.3 dB".
@@ -83,7 +84,8 @@ bool ErrorBudget::accepts(const BenchRow &row) const
 {
     switch (kind) {
     case Kind::MaxError: return row.maxError >= 0 && row.maxError <= maxError;
-    case Kind::Psnr: return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
+    case Kind::Psnr:
+        return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
     }
     return false;
 }
@@ -100,7 +102,8 @@ std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
     const QString t = text.trimmed().toLower();
 
     // "2", "max:2", "max: 2", "2/255", "max:2/255"
-    static const QRegularExpression maxForm(QStringLiteral("^(?:max\\s*:\\s*)?(\\d{1,3})(?:\\s*/\\s*255)?$"));
+    static const QRegularExpression maxForm(
+        QStringLiteral("^(?:max\\s*:\\s*)?(\\d{1,3})(?:\\s*/\\s*255)?$"));
     QRegularExpressionMatch m = maxForm.match(t);
     if (m.hasMatch()) {
         const int value = m.captured(1).toInt();
@@ -113,8 +116,9 @@ std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
     }
 
     // "psnr:40", "psnr: 38.5", "40dB", "40 dB", "psnr:40dB"
-    static const QRegularExpression psnrForm(QStringLiteral("^(?:psnr\\s*:\\s*(\\d+(?:\\.\\d*)?|\\.\\d+)(?:\\s*db)?"
-                                                            "|(\\d+(?:\\.\\d*)?|\\.\\d+)\\s*db)$"));
+    static const QRegularExpression psnrForm(
+        QStringLiteral("^(?:psnr\\s*:\\s*(\\d+(?:\\.\\d*)?|\\.\\d+)(?:\\s*db)?"
+                       "|(\\d+(?:\\.\\d*)?|\\.\\d+)\\s*db)$"));
     m = psnrForm.match(t);
     if (m.hasMatch()) {
         const QString number = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
@@ -194,11 +198,12 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
             }
         }
         if (bestIndex < 0)
-            fit.summary = QStringLiteral("nothing meets %1: no measured rows").arg(budget.describe());
-        else
             fit.summary =
-                QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
-                    .arg(budget.describe(), rowError(rows[bestIndex], budget.kind), rowLabel(rows[bestIndex]));
+                QStringLiteral("nothing meets %1: no measured rows").arg(budget.describe());
+        else
+            fit.summary = QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
+                              .arg(budget.describe(), rowError(rows[bestIndex], budget.kind),
+                                   rowLabel(rows[bestIndex]));
         return fit;
     }
 
@@ -206,18 +211,21 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     const QString error = rowError(chosen, budget.kind);
 
     if (fit.baseline < 0) {
-        fit.summary = QStringLiteral("%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
-                          .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
+        fit.summary =
+            QStringLiteral("%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
+                .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
         return fit;
     }
 
     const BenchRow &base = rows[fit.baseline];
     fit.trianglesSaved = base.triangles - chosen.triangles;
     fit.msSaved = base.frameMs - chosen.frameMs;
-    const QString baseText = QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
+    const QString baseText =
+        QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
 
     if (fit.chosen == fit.baseline) {
-        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3").arg(baseText, budget.describe(), error);
+        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3")
+                          .arg(baseText, budget.describe(), error);
         return fit;
     }
 
@@ -228,7 +236,8 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     if (std::isfinite(fit.msSaved) && fit.msSaved > 0) {
         timePart = QStringLiteral("%1 ms").arg(formatMs(fit.msSaved));
         if (base.frameMs > 0)
-            timePart += QStringLiteral(" (%1 %)").arg(QString::number(fit.msSaved / base.frameMs * 100.0, 'f', 0));
+            timePart += QStringLiteral(" (%1 %)").arg(
+                QString::number(fit.msSaved / base.frameMs * 100.0, 'f', 0));
         parts << timePart;
     }
     QString effect;
@@ -245,8 +254,8 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     if (effect.isEmpty())
         effect = QStringLiteral("saves nothing");
 
-    fit.summary =
-        QStringLiteral("%1 (%2): %3 against %4; %5").arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
+    fit.summary = QStringLiteral("%1 (%2): %3 against %4; %5")
+                      .arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
     return fit;
 }
 

@@ -29,7 +29,8 @@ PointLight generatedLight(const Scene &scene, int slot, int slotCount, const Poi
     const double elevation = glm::radians(slot % 2 ? -20.0 : 35.0);
     const double radius = 0.9 * distance;
     const glm::dvec3 direction =
-        std::cos(elevation) * (std::cos(azimuth) * back + std::sin(azimuth) * right) + std::sin(elevation) * up;
+        std::cos(elevation) * (std::cos(azimuth) * back + std::sin(azimuth) * right)
+        + std::sin(elevation) * up;
 
     PointLight light = like;
     light.position = camera.target + radius * direction;
@@ -42,7 +43,8 @@ PointLight generatedLight(const Scene &scene, int slot, int slotCount, const Poi
 
 int enabledLightCount(const Scene &scene)
 {
-    return int(std::count_if(scene.lights.begin(), scene.lights.end(), [](const PointLight &l) { return l.enabled; }));
+    return int(std::count_if(scene.lights.begin(), scene.lights.end(),
+                             [](const PointLight &l) { return l.enabled; }));
 }
 
 std::vector<PointLight> lightsForCount(const Scene &scene, int count)
@@ -55,12 +57,13 @@ std::vector<PointLight> lightsForCount(const Scene &scene, int count)
     if (count == int(own.size()))
         return own;
 
-    std::vector<PointLight> lights(own.begin(), own.begin() + std::min<std::size_t>(own.size(), std::size_t(count)));
+    std::vector<PointLight> lights(
+        own.begin(), own.begin() + std::min<std::size_t>(own.size(), std::size_t(count)));
     const PointLight fallback; // white, no attenuation
     const int generated = count - int(lights.size());
     for (int i = 0; i < generated; ++i)
-        lights.push_back(
-            generatedLight(scene, i, generated, own.empty() ? fallback : own[std::size_t(i) % own.size()]));
+        lights.push_back(generatedLight(scene, i, generated,
+                                        own.empty() ? fallback : own[std::size_t(i) % own.size()]));
     if (count > int(own.size()) && !own.empty()) {
         const double scale = double(own.size()) / double(count);
         for (PointLight &l : lights) {

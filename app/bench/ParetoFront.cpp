@@ -9,7 +9,9 @@ std::vector<int> paretoFront(const std::vector<BenchRow> &rows)
 {
     // Rows without a measured time or error (NaN) cannot be compared and
     // are never on the front.
-    auto measured = [&](int i) { return !std::isnan(rows[i].frameMs) && !std::isnan(rows[i].rmse); };
+    auto measured = [&](int i) {
+        return !std::isnan(rows[i].frameMs) && !std::isnan(rows[i].rmse);
+    };
 
     std::vector<int> order;
     for (int i = 0; i < int(rows.size()); ++i)

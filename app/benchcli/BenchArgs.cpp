@@ -15,7 +15,8 @@ namespace {
 
 const QString kSynopsis = QStringLiteral(
     "usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]\n"
-    "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] [--images] [--normals]\n"
+    "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] "
+    "[--images] [--normals]\n"
     "       phonglab bench --from results.csv [--out DIR] [--budget SPEC]");
 
 QString helpText()
@@ -23,32 +24,50 @@ QString helpText()
     return kSynopsis
         + QStringLiteral(
                "\n\n"
-               "Measures every shading method at every level of detail under 1, 4 and 8 lights (and the\n"
-               "scene's own lights): frame time against the error from the CPU double-precision reference.\n\n"
-               "  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and\n"
-               "                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)\n"
+               "Measures every shading method at every level of detail under 1, 4 and 8 lights "
+               "(and the\n"
+               "scene's own lights): frame time against the error from the CPU double-precision "
+               "reference.\n\n"
+               "  --scene FILE     a scene to measure (repeatable); default: the shipped default "
+               "(tree and\n"
+               "                   cloud), sphere, torus and grazing scenes (--quick: default and "
+               "sphere)\n"
                "  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores\n"
-               "  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)\n"
-               "  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB\n"
+               "  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default "
+               "./phonglab-bench)\n"
+               "  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or "
+               "psnr:DB\n"
                "  --size WxH       frame size (default 800x600, --quick 400x300)\n"
-               "  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)\n"
-               "  --lights LIST    light counts, comma separated, 1..8, and/or 'scene' (default 1,4,8,scene)\n"
-               "  --methods LIST   shading methods, comma separated (default flat,gouraud,blinn-phong,phong)\n"
-               "  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625\n"
+               "  --frames N       timed frames per configuration after 3 warm-up frames, at least "
+               "20 (default 20)\n"
+               "  --lights LIST    light counts, comma separated, 1..8, and/or 'scene' (default "
+               "1,4,8,scene)\n"
+               "  --methods LIST   shading methods, comma separated (default "
+               "flat,gouraud,blinn-phong,phong)\n"
+               "  --details LIST   detail fractions in (0, 1], comma separated, e.g. "
+               "1,0.25,0.0625\n"
                "  --images         also write render | reference | error pictures into DIR/images\n"
-               "  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.\n"
-               "                   against another --budget); writes fit.csv and the chart into DIR\n"
-               "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run\n"
+               "  --from CSV       measure nothing: fit and chart the rows of an earlier "
+               "results.csv (e.g.\n"
+               "                   against another --budget); writes fit.csv and the chart into "
+               "DIR\n"
+               "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a "
+               "--quick run\n"
                "                   too (a full run always has it)\n\n"
-               "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the\n"
-               "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit\n"
-               "steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong\n"
-               "uses the matched exponent 4n (n = the material's shininess), as shaders/blinn-phong.frag does.\n\n"
+               "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query "
+               "misses the\n"
+               "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors "
+               "are in 8-bit\n"
+               "steps, more than 2 px from a silhouette (the outline and every occluding contour). "
+               "Blinn-Phong\n"
+               "uses the matched exponent 4n (n = the material's shininess), as "
+               "shaders/blinn-phong.frag does.\n\n"
                "Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.");
 }
 
 // Parses each comma-separated item with `item`; nullopt on the first bad one.
-template <typename T, typename F> std::optional<std::vector<T>> parseList(const QString &text, F item)
+template <typename T, typename F>
+std::optional<std::vector<T>> parseList(const QString &text, F item)
 {
     std::vector<T> out;
     for (const QString &part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -78,21 +97,32 @@ QStringList defaultScenes(bool quick)
 std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
-    const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("Scene file."), QStringLiteral("file"));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show help."));
+    const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("Scene file."),
+                                   QStringLiteral("file"));
     const QCommandLineOption quick(QStringLiteral("quick"), QStringLiteral("Short run."));
-    const QCommandLineOption out(QStringLiteral("out"), QStringLiteral("Output folder."), QStringLiteral("dir"));
-    const QCommandLineOption budget(QStringLiteral("budget"), QStringLiteral("Error budget."), QStringLiteral("spec"));
-    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Frame size."), QStringLiteral("WxH"));
-    const QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Timed frames."), QStringLiteral("n"));
-    const QCommandLineOption lights(QStringLiteral("lights"), QStringLiteral("Light counts."), QStringLiteral("list"));
-    const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("Methods."), QStringLiteral("list"));
+    const QCommandLineOption out(QStringLiteral("out"), QStringLiteral("Output folder."),
+                                 QStringLiteral("dir"));
+    const QCommandLineOption budget(QStringLiteral("budget"), QStringLiteral("Error budget."),
+                                    QStringLiteral("spec"));
+    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Frame size."),
+                                  QStringLiteral("WxH"));
+    const QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Timed frames."),
+                                    QStringLiteral("n"));
+    const QCommandLineOption lights(QStringLiteral("lights"), QStringLiteral("Light counts."),
+                                    QStringLiteral("list"));
+    const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("Methods."),
+                                     QStringLiteral("list"));
     const QCommandLineOption details(QStringLiteral("details"), QStringLiteral("Detail fractions."),
                                      QStringLiteral("list"));
     const QCommandLineOption images(QStringLiteral("images"), QStringLiteral("Write pictures."));
-    const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal-method study."));
-    const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."), QStringLiteral("csv"));
-    parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details, images, normals, from});
+    const QCommandLineOption normals(QStringLiteral("normals"),
+                                     QStringLiteral("Normal-method study."));
+    const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."),
+                                  QStringLiteral("csv"));
+    parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details,
+                       images, normals, from});
 
     const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, kSynopsis, helpText()))
@@ -125,40 +155,46 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     if (parser.isSet(budget)) {
         const auto parsed = ErrorBudget::parse(parser.value(budget));
         if (!parsed)
-            return usage(QStringLiteral("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
-                             .arg(parser.value(budget)));
+            return usage(
+                QStringLiteral("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
+                    .arg(parser.value(budget)));
         args.budget = *parsed;
     }
     if (parser.isSet(size)) {
         const auto parsed = parseSizeArgument(parser.value(size), 16, 8192);
         if (!parsed)
             return usage(
-                QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'").arg(parser.value(size)));
+                QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'")
+                    .arg(parser.value(size)));
         args.options.size = *parsed;
     }
     if (parser.isSet(frames)) {
         bool ok = false;
         const int n = parser.value(frames).toInt(&ok);
         if (!ok || n < 20 || n > 10000)
-            return usage(QStringLiteral("--frames: expected a whole number from 20 to 10000, got '%1'")
-                             .arg(parser.value(frames)));
+            return usage(
+                QStringLiteral("--frames: expected a whole number from 20 to 10000, got '%1'")
+                    .arg(parser.value(frames)));
         args.options.frames = n;
     }
     if (parser.isSet(lights)) {
         bool sceneOwn = false;
-        const auto counts = parseList<int>(parser.value(lights), [&](const QString &s) -> std::optional<int> {
-            if (s == QLatin1String("scene")) {
-                sceneOwn = true;
-                return 0; // removed below
-            }
-            bool ok = false;
-            const int n = s.toInt(&ok);
-            return ok && n >= 1 && n <= kMaxLights ? std::optional<int>(n) : std::nullopt;
-        });
+        const auto counts =
+            parseList<int>(parser.value(lights), [&](const QString &s) -> std::optional<int> {
+                if (s == QLatin1String("scene")) {
+                    sceneOwn = true;
+                    return 0; // removed below
+                }
+                bool ok = false;
+                const int n = s.toInt(&ok);
+                return ok && n >= 1 && n <= kMaxLights ? std::optional<int>(n) : std::nullopt;
+            });
         if (!counts)
-            return usage(QStringLiteral("--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
-                             .arg(kMaxLights)
-                             .arg(parser.value(lights)));
+            return usage(
+                QStringLiteral(
+                    "--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
+                    .arg(kMaxLights)
+                    .arg(parser.value(lights)));
         args.options.lightCounts.clear();
         for (int n : *counts)
             if (n > 0)
@@ -171,19 +207,23 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
             return m && *m != ShadingMethod::Normals ? m : std::nullopt;
         });
         if (!parsed)
-            return usage(QStringLiteral("--methods: expected names from flat, gouraud, blinn-phong, phong, got '%1'")
-                             .arg(parser.value(methods)));
+            return usage(
+                QStringLiteral(
+                    "--methods: expected names from flat, gouraud, blinn-phong, phong, got '%1'")
+                    .arg(parser.value(methods)));
         args.options.methods = *parsed;
     }
     if (parser.isSet(details)) {
-        const auto parsed = parseList<double>(parser.value(details), [](const QString &s) -> std::optional<double> {
-            bool ok = false;
-            const double d = s.toDouble(&ok);
-            return ok && d > 0.0 && d <= 1.0 ? std::optional<double>(d) : std::nullopt;
-        });
+        const auto parsed =
+            parseList<double>(parser.value(details), [](const QString &s) -> std::optional<double> {
+                bool ok = false;
+                const double d = s.toDouble(&ok);
+                return ok && d > 0.0 && d <= 1.0 ? std::optional<double>(d) : std::nullopt;
+            });
         if (!parsed)
-            return usage(QStringLiteral("--details: expected fractions in (0, 1], comma separated, got '%1'")
-                             .arg(parser.value(details)));
+            return usage(
+                QStringLiteral("--details: expected fractions in (0, 1], comma separated, got '%1'")
+                    .arg(parser.value(details)));
         args.options.details = *parsed;
     }
     return args;

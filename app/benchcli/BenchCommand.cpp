@@ -24,7 +24,8 @@ namespace {
 Result<> writeText(const QString &path, const QString &text)
 {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0 || !file.commit())
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0
+        || !file.commit())
         return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
     return {};
 }
@@ -65,19 +66,22 @@ int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool 
 {
     const QDir out(args.outDir);
     if (writeResults) {
-        if (const Result<> written = writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows));
+        if (const Result<> written =
+                writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows));
             !written) {
             printError(written.error());
             return kExitFailure;
         }
     }
     const std::vector<SceneFit> fits = fitScenes(rows, args.budget);
-    if (const Result<> written = writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget));
+    if (const Result<> written =
+            writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget));
         !written) {
         printError(written.error());
         return kExitFailure;
     }
-    printLine(QStringLiteral("\nfit to budget (%1, the scene's own lights, %2 px silhouette band left out):")
+    printLine(QStringLiteral(
+                  "\nfit to budget (%1, the scene's own lights, %2 px silhouette band left out):")
                   .arg(args.budget.describe())
                   .arg(args.options.bandPx));
     for (const SceneFit &f : fits)
@@ -104,7 +108,8 @@ int refit(const BenchArgs &args)
         printError(QStringLiteral("%1: cannot read: %2").arg(args.fromCsv, file.errorString()));
         return kExitFailure;
     }
-    const Result<std::vector<BenchRow>> read = benchRowsFromCsv(QString::fromUtf8(file.readAll()), args.fromCsv);
+    const Result<std::vector<BenchRow>> read =
+        benchRowsFromCsv(QString::fromUtf8(file.readAll()), args.fromCsv);
     if (!read) {
         printError(read.error());
         return kExitFailure;
@@ -131,17 +136,20 @@ int bench(const BenchArgs &args, int argc, char **argv)
         printError(initialized.error());
         return kExitFailure;
     }
-    printLine(QStringLiteral("phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
-                  .arg(args.quick ? QStringLiteral(" --quick") : QString())
-                  .arg(args.options.scenes.size())
-                  .arg(args.options.size.width())
-                  .arg(args.options.size.height())
-                  .arg(args.options.frames)
-                  .arg(args.options.warmupFrames)
-                  .arg(engine.glRendererName()));
-    printLine(QStringLiteral("frame ms = median wall time of render + glFinish; cpu ms = submission; "
-                             "errors in 8-bit steps against the CPU reference; hl = inside the specular "
-                             "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
+    printLine(
+        QStringLiteral(
+            "phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
+            .arg(args.quick ? QStringLiteral(" --quick") : QString())
+            .arg(args.options.scenes.size())
+            .arg(args.options.size.width())
+            .arg(args.options.size.height())
+            .arg(args.options.frames)
+            .arg(args.options.warmupFrames)
+            .arg(engine.glRendererName()));
+    printLine(QStringLiteral(
+        "frame ms = median wall time of render + glFinish; cpu ms = submission; "
+        "errors in 8-bit steps against the CPU reference; hl = inside the specular "
+        "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
     printLine(benchTableHeader());
     QElapsedTimer clock;
     clock.start();

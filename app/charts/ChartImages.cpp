@@ -28,8 +28,8 @@ void settleLayouts(const std::vector<QChart *> &charts)
             chart->layout()->activate();
 }
 
-Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
-                     const QString &title)
+Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath,
+                     const QString &svgPath, const QString &title)
 {
     if (pngPath.isEmpty() && svgPath.isEmpty())
         return fail(QStringLiteral("no output file given"));

@@ -30,7 +30,7 @@ void settleLayouts(const std::vector<QChart *> &charts);
 // ratio 1) and SVG (same size, 96 dpi, `title` as its title). An empty path
 // skips that file; both empty is an error. Both files are opened before
 // anything is drawn, so a bad path writes nothing.
-Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath, const QString &svgPath,
-                     const QString &title);
+Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pngPath,
+                     const QString &svgPath, const QString &title);
 
 } // namespace phonglab

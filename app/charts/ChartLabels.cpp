@@ -88,15 +88,18 @@ void LabelPlacer::place() const
     }
 }
 
-void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis, QAbstractAxis *yAxis)
+void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis,
+                      QAbstractAxis *yAxis)
 {
     QChart *chart = placer->chart;
     QObject::connect(chart, &QChart::plotAreaChanged, chart, [placer] { placer->place(); });
     for (QAbstractAxis *axis : {xAxis, yAxis}) {
         if (auto *value = qobject_cast<QValueAxis *>(axis))
-            QObject::connect(value, &QValueAxis::rangeChanged, chart, [placer] { placer->place(); });
+            QObject::connect(value, &QValueAxis::rangeChanged, chart,
+                             [placer] { placer->place(); });
         if (auto *log = qobject_cast<QLogValueAxis *>(axis))
-            QObject::connect(log, &QLogValueAxis::rangeChanged, chart, [placer] { placer->place(); });
+            QObject::connect(log, &QLogValueAxis::rangeChanged, chart,
+                             [placer] { placer->place(); });
     }
     placer->place();
 }

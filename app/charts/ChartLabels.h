@@ -28,9 +28,9 @@ struct PointLabel {
 
 struct LabelPlacer {
     QChart *chart = nullptr;
-    std::vector<PointLabel> labels;                             // placed in this order; earlier ones win
+    std::vector<PointLabel> labels; // placed in this order; earlier ones win
     std::vector<std::pair<QPointF, QAbstractSeries *>> markers; // obstacles
-    std::vector<QXYSeries *> lines;                             // lines are lighter obstacles than markers and labels
+    std::vector<QXYSeries *> lines; // lines are lighter obstacles than markers and labels
 
     // Moves every label to its best spot for the current plot area; labels
     // whose point is outside the plot area are hidden.
@@ -40,6 +40,7 @@ struct LabelPlacer {
 // Places the labels now and again whenever the chart's plot area or either
 // axis range changes (a QValueAxis or QLogValueAxis; others are not
 // followed). The connections hold `placer` and end with the chart.
-void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis, QAbstractAxis *yAxis);
+void keepLabelsPlaced(const std::shared_ptr<LabelPlacer> &placer, QAbstractAxis *xAxis,
+                      QAbstractAxis *yAxis);
 
 } // namespace phonglab

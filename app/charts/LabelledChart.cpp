@@ -131,8 +131,9 @@ QChart *buildChart(const ChartSpec &spec)
         axis->setMinorTickCount(8);
         axis->setMinorGridLineColor(QColor(238, 238, 238));
         axis->setRange(yScale.min, yScale.max);
-        yNotes << (yScale.hasZero ? QStringLiteral("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
-                                  : QStringLiteral("log"));
+        yNotes << (yScale.hasZero
+                       ? QStringLiteral("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
+                       : QStringLiteral("log"));
         yAxis = axis;
     } else {
         auto *axis = new QValueAxis;
@@ -142,8 +143,9 @@ QChart *buildChart(const ChartSpec &spec)
         axis->applyNiceNumbers();
         yAxis = axis;
     }
-    yAxis->setTitleText(
-        yNotes.isEmpty() ? spec.yTitle : QStringLiteral("%1 (%2)").arg(spec.yTitle, yNotes.join(QStringLiteral(", "))));
+    yAxis->setTitleText(yNotes.isEmpty() ? spec.yTitle
+                                         : QStringLiteral("%1 (%2)").arg(
+                                             spec.yTitle, yNotes.join(QStringLiteral(", "))));
     yAxis->setTitleFont(sizedFont(yAxis->titleFont(), 9));
     yAxis->setLabelsFont(sizedFont(yAxis->labelsFont(), 8));
     chart->addAxis(yAxis, Qt::AlignLeft);
@@ -236,8 +238,8 @@ QChart *buildChart(const ChartSpec &spec)
     return chart;
 }
 
-QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title, const QString &xTitle,
-                            const QString &yTitle)
+QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title,
+                            const QString &xTitle, const QString &yTitle)
 {
     ChartSpec spec;
     spec.title = title;

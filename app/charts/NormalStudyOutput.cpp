@@ -32,7 +32,8 @@ QString studyCsv(const std::vector<NormalStudyRow> &rows)
 void printStudy(const std::vector<NormalStudyRow> &rows)
 {
     QTextStream out(stdout);
-    out << "\nnormal methods on sphere tessellations (angle to the exact normal at every corner):\n";
+    out << "\nnormal methods on sphere tessellations (angle to the exact normal at every "
+           "corner):\n";
     out << QStringLiteral("%1 %2 %3 %4 %5 %6\n")
                .arg(QStringLiteral("tessellation"), -34)
                .arg(QStringLiteral("method"), -8)
@@ -59,7 +60,8 @@ Result<> writeNormalStudy(const QString &outDir)
     printStudy(rows);
     const QDir dir(outDir);
     QSaveFile csv(dir.filePath(QStringLiteral("normals.csv")));
-    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text) || csv.write(studyCsv(rows).toUtf8()) < 0 || !csv.commit())
+    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text) || csv.write(studyCsv(rows).toUtf8()) < 0
+        || !csv.commit())
         return fail(QStringLiteral("%1: cannot write: %2").arg(csv.fileName(), csv.errorString()));
     return writeNormalStudyChart(rows, dir.filePath(QStringLiteral("normals.png")),
                                  dir.filePath(QStringLiteral("normals.svg")));

@@ -36,7 +36,8 @@ bool methodLess(const QString &a, const QString &b)
 
 QString lightsText(int lights, bool sceneLights)
 {
-    QString text = lights == 1 ? QStringLiteral("1 light") : QStringLiteral("%1 lights").arg(lights);
+    QString text =
+        lights == 1 ? QStringLiteral("1 light") : QStringLiteral("%1 lights").arg(lights);
     if (sceneLights)
         text += QStringLiteral(" (scene's own)");
     return text;
@@ -82,8 +83,9 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
         byMethod[row.method].push_back(&row);
 
     for (auto &[method, list] : byMethod) {
-        std::stable_sort(list.begin(), list.end(),
-                         [](const BenchRow *a, const BenchRow *b) { return a->detail < b->detail; });
+        std::stable_sort(list.begin(), list.end(), [](const BenchRow *a, const BenchRow *b) {
+            return a->detail < b->detail;
+        });
         LabelledSeries series;
         series.name = method;
         series.color = methodColor(method);
@@ -98,16 +100,17 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
     return buildChart(spec);
 }
 
-Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
-                                     QSize size)
+Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
+                                     const QString &svgPath, QSize size)
 {
     if (Result<> app = haveApplication(); !app)
         return app;
     if (series.empty())
         return fail(QStringLiteral("no normal-study rows to chart"));
     // Tessellations have no fixed colours of their own: a fixed sequence.
-    static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22), QColor(0x2c, 0xa0, 0x2c),
-                                     QColor(0xc0, 0x39, 0x2b), QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
+    static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22),
+                                     QColor(0x2c, 0xa0, 0x2c), QColor(0xc0, 0x39, 0x2b),
+                                     QColor(0x8e, 0x44, 0xad), QColor(0x8c, 0x56, 0x4b),
                                      QColor(0x17, 0xa2, 0xb8), QColor(0x7f, 0x7f, 0x7f)};
     for (size_t i = 0; i < series.size(); ++i) {
         if (!series[i].color.isValid())
@@ -115,19 +118,21 @@ Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const Q
         std::stable_sort(series[i].points.begin(), series[i].points.end(),
                          [](const LabelledPoint &a, const LabelledPoint &b) { return a.x < b.x; });
     }
-    std::unique_ptr<QChart> chart(
-        createLabelledChart(series, QStringLiteral("Normal methods: time against angular error"),
-                            QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
+    std::unique_ptr<QChart> chart(createLabelledChart(
+        series, QStringLiteral("Normal methods: time against angular error"),
+        QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
     return writeChartImages(chart.get(), pngPath, svgPath, size);
 }
 
-Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
-                                  QSize panelSize)
+Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
+                                  const QString &svgPath, QSize panelSize)
 {
     if (Result<> app = haveApplication(); !app)
         return app;
     if (panelSize.isEmpty())
-        return fail(QStringLiteral("panel size %1×%2 is empty").arg(panelSize.width()).arg(panelSize.height()));
+        return fail(QStringLiteral("panel size %1×%2 is empty")
+                        .arg(panelSize.width())
+                        .arg(panelSize.height()));
 
     // Grid rows: scenes in order of first appearance; along each row that
     // scene's light setups by count (its own lights among them), packed
@@ -167,12 +172,14 @@ Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QStri
                 scenes[r], lightsText(own[std::size_t(c)].first, own[std::size_t(c)].second));
             QChart *chart = createSpeedAccuracyChart(panel, title);
             scene.addItem(chart); // the scene owns it from here
-            chart->setGeometry(QRectF(QPointF(c * panelSize.width(), r * panelSize.height()), QSizeF(panelSize)));
+            chart->setGeometry(
+                QRectF(QPointF(c * panelSize.width(), r * panelSize.height()), QSizeF(panelSize)));
             charts.push_back(chart);
         }
     }
     settleLayouts(charts);
-    return renderScene(scene, total, pngPath, svgPath, QStringLiteral("PhongLab: frame time against error"));
+    return renderScene(scene, total, pngPath, svgPath,
+                       QStringLiteral("PhongLab: frame time against error"));
 }
 
 } // namespace phonglab

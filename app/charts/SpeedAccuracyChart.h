@@ -37,11 +37,11 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
 // grid rows (in order of first appearance), along each row that scene's
 // light setups by count (scene's own lights after a synthetic setup of the
 // same count), packed to the left; as many columns as the scene with the
-// most setups. Written as PNG (device pixel ratio 1, panelSize × grid) and SVG (same size, 96 dpi), each
-// through QSaveFile. An empty path skips that file. A failure when
+// most setups. Written as PNG (device pixel ratio 1, panelSize × grid)
+// and SVG (same size, 96 dpi), each through QSaveFile. An empty path skips that file. A failure when
 // there is nothing to draw, no QApplication, or a file cannot be written.
-Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath, const QString &svgPath,
-                                  QSize panelSize = {640, 440});
+Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
+                                  const QString &svgPath, QSize panelSize = {640, 440});
 
 // The general shape both charts above and the normal-method study use:
 // named series of (x, y, point label) drawn as line + markers, labels placed
@@ -58,9 +58,10 @@ struct LabelledSeries {
     QColor color;
     std::vector<LabelledPoint> points; // drawn in this order
 };
-QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title, const QString &xTitle,
-                            const QString &yTitle);
-Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath, QSize size = {640, 440});
+QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title,
+                            const QString &xTitle, const QString &yTitle);
+Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
+                          QSize size = {640, 440});
 
 // The normal-method study (app/mesh/NormalMethodStudy.h, NormalStudyRow:
 // tessellation, method, triangles, ms, maxAngleDeg, meanAngleDeg): time (x,
@@ -68,11 +69,11 @@ Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &
 // with its points labelled by method. A template over the row type so this
 // header does not depend on the mesh study; any range of rows with those
 // fields will do. Written like writeChartImages().
-Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath, const QString &svgPath,
-                                     QSize size = {640, 440});
+Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const QString &pngPath,
+                                     const QString &svgPath, QSize size = {640, 440});
 template <typename NormalStudyRows>
-Result<> writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath, const QString &svgPath,
-                               QSize size = {640, 440})
+Result<> writeNormalStudyChart(const NormalStudyRows &rows, const QString &pngPath,
+                               const QString &svgPath, QSize size = {640, 440})
 {
     std::vector<LabelledSeries> series;
     for (const auto &row : rows) {

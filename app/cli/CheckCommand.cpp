@@ -34,9 +34,10 @@ struct CheckArgs {
 
 const QString &synopsis()
 {
-    static const QString text = QStringLiteral(
-        "usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]\n"
-        "                      [--tolerance STEPS] [--json] [--diff OUT.png]");
+    static const QString text =
+        QStringLiteral("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
+                       "[--shading NAME] [--size WxH]\n"
+                       "                      [--tolerance STEPS] [--json] [--diff OUT.png]");
     return text;
 }
 
@@ -45,20 +46,28 @@ QString helpText()
     return synopsis()
         + QStringLiteral(
               "\n\n"
-              "Renders SCENE.json with the shaders `render` would use, compares the image with the exact\n"
-              "(double-precision) reference of the same scene, leaving out a band around silhouettes,\n"
+              "Renders SCENE.json with the shaders `render` would use, compares the image with the "
+              "exact\n"
+              "(double-precision) reference of the same scene, leaving out a band around "
+              "silhouettes,\n"
               "and when it differs names the classic mistake that explains it.\n\n"
               "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
-              "  --fragment FILE     fragment shader instead of the scene's or the shading method's\n"
+              "  --fragment FILE     fragment shader instead of the scene's or the shading "
+              "method's\n"
               "  --shading NAME      shading method instead of the scene's; one of %1\n"
               "  --size WxH          image size in pixels, default 800x600\n"
-              "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2\n"
-              "  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,\n"
+              "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), "
+              "default %2\n"
+              "  --json              print one JSON object (keys: verdict, psnr_db, max_error, "
+              "bad_fraction,\n"
               "                      worst, diagnosis, undetectable, errors) instead of text\n"
-              "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;\n"
-              "                      dark blue the silhouette band left out, black the background\n\n"
+              "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 "
+              "or more off;\n"
+              "                      dark blue the silhouette band left out, black the "
+              "background\n\n"
               "Mistake keys: %3, unknown.\n\n"
-              "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.\n"
+              "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong "
+              "arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(shadingNames().join(QStringLiteral(", ")))
               .arg(kDefaultCheckToleranceSteps)
@@ -69,19 +78,23 @@ QString helpText()
 std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show help."));
     const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
     const QCommandLineOption vertex(QStringLiteral("vertex"), QString(), QStringLiteral("file"));
-    const QCommandLineOption fragment(QStringLiteral("fragment"), QString(), QStringLiteral("file"));
+    const QCommandLineOption fragment(QStringLiteral("fragment"), QString(),
+                                      QStringLiteral("file"));
     const QCommandLineOption shading(QStringLiteral("shading"), QString(), QStringLiteral("name"));
-    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(), QStringLiteral("steps"));
+    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
+                                       QStringLiteral("steps"));
     const QCommandLineOption json(QStringLiteral("json"), QString());
     const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
     parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff});
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis(), helpText()))
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments, help, synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -89,16 +102,16 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                           : QStringLiteral("exactly one scene file expected"));
     CheckArgs args;
     args.scenePath = positional.first();
-    for (const QString &wrong :
-         {readSizeOption(parser, size, kMaxImageSide, &args.size), readShadingOption(parser, shading, &args.shading)})
+    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
+                                 readShadingOption(parser, shading, &args.shading)})
         if (!wrong.isEmpty())
             return usage(wrong);
     if (parser.isSet(tolerance)) {
         bool ok = false;
         args.toleranceSteps = parser.value(tolerance).toInt(&ok);
         if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
-            return usage(
-                QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'").arg(parser.value(tolerance)));
+            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'")
+                             .arg(parser.value(tolerance)));
     }
     if (parser.isSet(diff) && parser.value(diff).isEmpty())
         return usage(QStringLiteral("--diff: missing the output file"));
@@ -118,7 +131,8 @@ ShaderDiagnostic inputError(const QString &file, const QString &message)
 }
 
 // Everything up to the verdict; `yours` receives the render for --diff.
-CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReference *reference, QImage *yours)
+CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReference *reference,
+                        QImage *yours)
 {
     CheckOutcome outcome;
     const auto fail = [&](const QString &file, const QString &message) {
@@ -139,7 +153,8 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     Renderer &renderer = offscreen.renderer();
     if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
         return fail(args.scenePath, set.error());
-    const StageFiles files = chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
+    const StageFiles files =
+        chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
     const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
     if (!built)
         return fail(QString(), built.error());
@@ -152,14 +167,16 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
             if (d.isError())
                 outcome.errors.push_back(d);
         if (outcome.errors.empty())
-            outcome.errors.push_back(inputError(files.fragment, QStringLiteral("the shaders did not compile")));
+            outcome.errors.push_back(
+                inputError(files.fragment, QStringLiteral("the shaders did not compile")));
         return outcome;
     }
     *yours = offscreen.renderImage(args.size);
     if (yours->isNull())
         return fail(QString(), QStringLiteral("rendering failed"));
 
-    Result<CheckReference> made = makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height());
+    Result<CheckReference> made =
+        makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height());
     if (!made)
         return fail(args.scenePath, QStringLiteral("no reference: %1").arg(made.error()));
     *reference = std::move(*made);
@@ -170,7 +187,8 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
                                    "view at %1x%2")
                         .arg(args.size.width())
                         .arg(args.size.height()));
-    outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    outcome.verdict =
+        outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
     return outcome;
 }
 
@@ -192,17 +210,23 @@ int check(const CheckArgs &args, int argc, char **argv)
         outcome = runCheckOn(args, scene, &reference, &yours);
 
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
-        const Result<> written = writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath);
+        const Result<> written =
+            writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath);
         if (!written)
-            outcome = CheckOutcome{
-                CheckOutcome::Verdict::Error, outcome.report, {inputError(args.diffPath, written.error())}, {}};
+            outcome = CheckOutcome{CheckOutcome::Verdict::Error,
+                                   outcome.report,
+                                   {inputError(args.diffPath, written.error())},
+                                   {}};
     }
     if (args.json) {
-        printLine(QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented)).trimmed());
+        printLine(
+            QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented))
+                .trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)
             if (e.line == 0) // compile errors with a line are printed as the compiler's
-                printError(e.file.isEmpty() ? e.message : QStringLiteral("%1: %2").arg(e.file, e.message));
+                printError(e.file.isEmpty() ? e.message
+                                            : QStringLiteral("%1: %2").arg(e.file, e.message));
         printLine(checkText(outcome, scene));
     }
     return outcome.verdict == CheckOutcome::Verdict::Pass ? kExitOk : kExitFailure;

@@ -19,13 +19,15 @@ QString verdictName(CheckOutcome::Verdict v)
 }
 
 // The finding's own lines, then those of the mistakes it names beside it.
-std::vector<SourceLine> findingLines(const MistakeFinding &f, const std::vector<ShaderStageText> &stages)
+std::vector<SourceLine> findingLines(const MistakeFinding &f,
+                                     const std::vector<ShaderStageText> &stages)
 {
     std::vector<SourceLine> lines = mistakeSourceLines(f.key, stages);
     for (ShaderMistake m : f.also)
         for (const SourceLine &l : mistakeSourceLines(m, stages))
-            if (std::none_of(lines.begin(), lines.end(),
-                             [&](const SourceLine &o) { return o.file == l.file && o.line == l.line; }))
+            if (std::none_of(lines.begin(), lines.end(), [&](const SourceLine &o) {
+                    return o.file == l.file && o.line == l.line;
+                }))
                 lines.push_back(l);
     return lines;
 }
@@ -37,7 +39,8 @@ QString findingMessage(const MistakeFinding &f)
                        .arg(qRound(100.0 * f.confidence))
                        .arg(shaderMistakeRule(f.key));
     for (ShaderMistake m : f.also)
-        text += QStringLiteral("; or, with the same image, %1: %2").arg(shaderMistakeKey(m), shaderMistakeRule(m));
+        text += QStringLiteral("; or, with the same image, %1: %2")
+                    .arg(shaderMistakeKey(m), shaderMistakeRule(m));
     return text;
 }
 
@@ -45,7 +48,9 @@ QString objectLabel(const Scene &scene, int object)
 {
     if (object < 0 || std::size_t(object) >= scene.objects.size())
         return QStringLiteral("the background");
-    return QStringLiteral("object %1 (%2)").arg(object).arg(scene.objects[std::size_t(object)].mesh);
+    return QStringLiteral("object %1 (%2)")
+        .arg(object)
+        .arg(scene.objects[std::size_t(object)].mesh);
 }
 
 QJsonArray keysJson(const std::vector<ShaderMistake> &mistakes)
@@ -76,8 +81,9 @@ QJsonArray diagnosisJson(const CheckOutcome &outcome)
     for (const MistakeFinding &f : d.findings) {
         QJsonArray lines;
         for (const SourceLine &l : findingLines(f, outcome.stages))
-            lines.append(QJsonObject{
-                {QStringLiteral("file"), l.file}, {QStringLiteral("line"), l.line}, {QStringLiteral("text"), l.text}});
+            lines.append(QJsonObject{{QStringLiteral("file"), l.file},
+                                     {QStringLiteral("line"), l.line},
+                                     {QStringLiteral("text"), l.text}});
         out.append(QJsonObject{{QStringLiteral("key"), shaderMistakeKey(f.key)},
                                {QStringLiteral("also"), keysJson(f.also)},
                                {QStringLiteral("confidence"), f.confidence},
@@ -107,9 +113,11 @@ QJsonObject checkJson(const CheckOutcome &outcome)
     QJsonObject o;
     o.insert(QStringLiteral("verdict"), verdictName(outcome.verdict));
     // Identical images have an infinite PSNR, which JSON cannot write: null.
-    o.insert(QStringLiteral("psnr_db"), judged && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
+    o.insert(QStringLiteral("psnr_db"),
+             judged && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
     o.insert(QStringLiteral("max_error"), judged ? QJsonValue(c.maxError) : QJsonValue());
-    o.insert(QStringLiteral("bad_fraction"), judged ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
+    o.insert(QStringLiteral("bad_fraction"),
+             judged ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
     o.insert(QStringLiteral("tolerance"), outcome.report.toleranceSteps);
     QJsonObject worst;
     // No worst pixel when every compared pixel is exact.
@@ -118,7 +126,8 @@ QJsonObject checkJson(const CheckOutcome &outcome)
         worst.insert(QStringLiteral("x"), c.worstPixel.x());
         worst.insert(QStringLiteral("y"), c.worstPixel.y());
         worst.insert(QStringLiteral("object"),
-                     outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject) : QJsonValue());
+                     outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject)
+                                                     : QJsonValue());
     }
     o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
@@ -135,7 +144,8 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     const ImageComparison &c = r.comparison;
     QStringList out;
     out << QStringLiteral("check: %1").arg(verdictName(outcome.verdict));
-    out << QStringLiteral("%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
+    out << QStringLiteral(
+               "%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
                .arg(std::isfinite(c.psnr) ? QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 2)
                                           : QStringLiteral("PSNR inf"))
                .arg(c.maxError)
@@ -151,8 +161,9 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     if (outcome.verdict == CheckOutcome::Verdict::Fail) {
         out << QStringLiteral("diagnosis:");
         if (d.unexplained())
-            out << QStringLiteral("  unknown: no classic mistake explains the difference; the heatmap (--diff) "
-                                  "shows where it is");
+            out << QStringLiteral(
+                "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
+                "shows where it is");
         for (const MistakeFinding &f : d.findings) {
             out << QStringLiteral("  ") + findingMessage(f);
             for (const SourceLine &l : findingLines(f, outcome.stages))

@@ -14,7 +14,9 @@ namespace {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a scene offscreen into a PNG", runRender},
-    {"check", "judge a shader against the exact image and name the mistake that explains a wrong one", runCheck},
+    {"check",
+     "judge a shader against the exact image and name the mistake that explains a wrong one",
+     runCheck},
     {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
 };
 
@@ -22,13 +24,15 @@ void printHelp(std::span<const Subcommand> more)
 {
     QString text = QStringLiteral(
         "usage: phonglab [SCENE.json | MESH]   start the editor on a scene or a mesh file\n"
-        "                                      (.obj .ply .off .stl .om; the default scene when none given)\n"
+        "                                      (.obj .ply .off .stl .om; the default scene when "
+        "none given)\n"
         "       phonglab <command> [options]   run a command without a window\n\n"
         "commands:\n");
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
         for (const Subcommand &c : commands)
-            text +=
-                QStringLiteral("  %1  %2\n").arg(QString::fromLatin1(c.name), -11).arg(QString::fromLatin1(c.summary));
+            text += QStringLiteral("  %1  %2\n")
+                        .arg(QString::fromLatin1(c.name), -11)
+                        .arg(QString::fromLatin1(c.summary));
     text += QStringLiteral("\n'phonglab <command> --help' describes a command's options.");
     printLine(text);
 }
@@ -40,7 +44,8 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
     if (argc < 2)
         return std::nullopt;
     const QString first = QString::fromLocal8Bit(argv[1]);
-    if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+    if (first == QLatin1String("--help") || first == QLatin1String("-h")
+        || first == QLatin1String("help")) {
         printHelp(more);
         return kExitOk;
     }

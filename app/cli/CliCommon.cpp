@@ -32,8 +32,9 @@ int usageError(const QString &message, const QString &synopsis)
     return kExitUsage;
 }
 
-std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments, const QCommandLineOption &help,
-                               const QString &synopsis, const QString &helpText)
+std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments,
+                               const QCommandLineOption &help, const QString &synopsis,
+                               const QString &helpText)
 {
     if (!parser.parse(arguments))
         return usageError(parser.errorText(), synopsis);

@@ -26,8 +26,9 @@ QStringList argumentsFrom(int argc, char **argv);
 int usageError(const QString &message, const QString &synopsis);
 // What every subcommand does with its arguments first: a parse error is a
 // usage error, --help prints `helpText` and exits 0. nullopt: go on.
-std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments, const QCommandLineOption &help,
-                               const QString &synopsis, const QString &helpText);
+std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments,
+                               const QCommandLineOption &help, const QString &synopsis,
+                               const QString &helpText);
 
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);

@@ -39,7 +39,8 @@ int runImportMesh(int argc, char **argv)
         }
     }
     if (!ok || path.isEmpty() || out.isEmpty()) {
-        printError(QStringLiteral("__import-mesh is internal: the app runs it to import a mesh file"));
+        printError(
+            QStringLiteral("__import-mesh is internal: the app runs it to import a mesh file"));
         return kExitUsage;
     }
     return runMeshImportChild(path, normals, out, limits);

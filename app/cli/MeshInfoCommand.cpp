@@ -25,22 +25,31 @@ const char kUsage[] = "usage: phonglab mesh-info FILE [--json] [--normals METHOD
 std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show help."));
     const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
     const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal method."),
                                      QStringLiteral("method"));
-    const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."), QStringLiteral("deg"));
+    const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."),
+                                    QStringLiteral("deg"));
     parser.addOptions({help, json, normals, crease});
 
     const QString synopsis = QString::fromLatin1(kUsage);
-    const QString helpText = synopsis
-        + QStringLiteral("\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,\n"
-                         "faces, where the normals came from, bounds, split vertices, warnings and load time.\n\n"
-                         "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" or\n"
-                         "                    \"computed\"), normal_method, bounds, warnings, load_ms, and more\n"
-                         "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, angle\n"
-                         "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
-                         "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
+    const QString helpText =
+        synopsis
+        + QStringLiteral(
+            "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its "
+            "vertices,\n"
+            "faces, where the normals came from, bounds, split vertices, warnings and load "
+            "time.\n\n"
+            "  --json            machine-readable output; keys: vertices, faces, normals (\"file\" "
+            "or\n"
+            "                    \"computed\"), normal_method, bounds, warnings, load_ms, and "
+            "more\n"
+            "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, "
+            "angle\n"
+            "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
+            "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
         return *exit;
@@ -53,15 +62,17 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     if (parser.isSet(normals)) {
         const auto method = normalMethodFromName(parser.value(normals));
         if (!method)
-            return usage(QStringLiteral("--normals: unknown method '%1' (known: %2)")
-                             .arg(parser.value(normals), normalMethodNames().join(QStringLiteral(", "))));
+            return usage(
+                QStringLiteral("--normals: unknown method '%1' (known: %2)")
+                    .arg(parser.value(normals), normalMethodNames().join(QStringLiteral(", "))));
         args.normals.method = *method;
     }
     if (parser.isSet(crease)) {
         bool ok = false;
         const double degrees = parser.value(crease).toDouble(&ok);
         if (!ok || !(degrees >= 0.0 && degrees <= 180.0))
-            return usage(QStringLiteral("--crease: expected degrees in [0, 180], got '%1'").arg(parser.value(crease)));
+            return usage(QStringLiteral("--crease: expected degrees in [0, 180], got '%1'")
+                             .arg(parser.value(crease)));
         args.normals.creaseAngleDeg = degrees;
     }
     return args;
@@ -99,15 +110,17 @@ void printJson(const QString &path, const MeshLoadResult &r)
     o.insert(QStringLiteral("file"), path);
     o.insert(QStringLiteral("vertices"), s.fileVertices);
     o.insert(QStringLiteral("faces"), s.fileFaces);
-    o.insert(QStringLiteral("normals"), s.normalsFromFile ? QStringLiteral("file") : QStringLiteral("computed"));
+    o.insert(QStringLiteral("normals"),
+             s.normalsFromFile ? QStringLiteral("file") : QStringLiteral("computed"));
     o.insert(QStringLiteral("normal_method"),
              s.normalsFromFile                                ? QStringLiteral("file")
                  : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
                                                               : normalMethodName(s.normalMethod));
-    o.insert(QStringLiteral("crease_deg"), s.creaseAngleDeg ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
-    o.insert(
-        QStringLiteral("bounds"),
-        QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)}, {QStringLiteral("max"), vec3Json(s.boundsMax)}});
+    o.insert(QStringLiteral("crease_deg"),
+             s.creaseAngleDeg ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
+    o.insert(QStringLiteral("bounds"),
+             QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)},
+                         {QStringLiteral("max"), vec3Json(s.boundsMax)}});
     o.insert(QStringLiteral("gpu_vertices"), s.vertices);
     o.insert(QStringLiteral("triangles"), s.triangles);
     o.insert(QStringLiteral("split_vertices"), s.splitVertices);
@@ -121,19 +134,24 @@ void printJson(const QString &path, const MeshLoadResult &r)
 void printText(const QString &path, const MeshLoadResult &r)
 {
     const MeshStats &s = r.stats;
-    const auto v = [](const glm::vec3 &p) { return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z); };
+    const auto v = [](const glm::vec3 &p) {
+        return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
+    };
     printLine(QStringLiteral("file:            %1").arg(path));
     printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
     printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
     printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
-    const QString normals = s.normalsFromFile        ? QStringLiteral("from the file, per face corner")
-        : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
-                                                     : QStringLiteral("computed (%1)").arg(methodDescription(s));
+    const QString normals = s.normalsFromFile ? QStringLiteral("from the file, per face corner")
+        : path.startsWith(QLatin1String("builtin:"))
+        ? QStringLiteral("analytic")
+        : QStringLiteral("computed (%1)").arg(methodDescription(s));
     printLine(QStringLiteral("normals:         %1").arg(normals));
-    printLine(
-        QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)").arg(s.vertices).arg(s.splitVertices));
+    printLine(QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)")
+                  .arg(s.vertices)
+                  .arg(s.splitVertices));
     printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
-    printLine(QStringLiteral("surface:         %1").arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
+    printLine(QStringLiteral("surface:         %1")
+                  .arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
     printLine(QStringLiteral("load time:       %1 ms%2")
                   .arg(s.loadMs, 0, 'f', 1)
                   .arg(s.fromCache ? QStringLiteral(" (from the mesh cache)") : QString()));

@@ -33,37 +33,43 @@ struct RenderArgs {
 std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show help."));
     parser.addOption(help);
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, QStringLiteral("Output PNG file."),
-                                    QStringLiteral("file"));
-    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Image size, default 800x600."),
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    QStringLiteral("Output PNG file."), QStringLiteral("file"));
+    const QCommandLineOption size(QStringLiteral("size"),
+                                  QStringLiteral("Image size, default 800x600."),
                                   QStringLiteral("WxH"));
     const QCommandLineOption vertex(QStringLiteral("vertex"),
                                     QStringLiteral("Vertex shader to use instead of the scene's."),
                                     QStringLiteral("file"));
-    const QCommandLineOption fragment(QStringLiteral("fragment"),
-                                      QStringLiteral("Fragment shader to use instead of the scene's."),
-                                      QStringLiteral("file"));
+    const QCommandLineOption fragment(
+        QStringLiteral("fragment"),
+        QStringLiteral("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
     const QCommandLineOption shading(QStringLiteral("shading"),
-                                     QStringLiteral("Shading method instead of the scene's."), QStringLiteral("name"));
+                                     QStringLiteral("Shading method instead of the scene's."),
+                                     QStringLiteral("name"));
     parser.addOptions({output, size, vertex, fragment, shading});
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
-    const QString synopsis = QStringLiteral(
-        "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE]");
+    const QString synopsis =
+        QStringLiteral("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
+                       "[--vertex FILE] [--fragment FILE]");
     const QString helpText = synopsis
-        + QStringLiteral("\n\n"
-                         "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.\n\n"
-                         "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
-                         "  --size WxH          image size in pixels, default 800x600\n"
-                         "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
-                         "                      %1\n"
-                         "  --vertex FILE       vertex shader instead of the shading method's\n"
-                         "  --fragment FILE     fragment shader instead of the shading method's\n\n"
-                         "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
-                         "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
+        + QStringLiteral(
+              "\n\n"
+              "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB "
+              "PNG.\n\n"
+              "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
+              "  --size WxH          image size in pixels, default 800x600\n"
+              "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
+              "                      %1\n"
+              "  --vertex FILE       vertex shader instead of the shading method's\n"
+              "  --fragment FILE     fragment shader instead of the shading method's\n\n"
+              "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
+              "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(knownMethods);
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
@@ -78,8 +84,8 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     RenderArgs args;
     args.scenePath = positional.first();
     args.outputPath = parser.value(output);
-    for (const QString &wrong :
-         {readSizeOption(parser, size, kMaxImageSide, &args.size), readShadingOption(parser, shading, &args.shading)})
+    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
+                                 readShadingOption(parser, shading, &args.shading)})
         if (!wrong.isEmpty())
             return usage(wrong);
     args.vertexPath = parser.value(vertex);
@@ -91,8 +97,9 @@ Result<BuildReport> buildProgram(Renderer &renderer, const RenderArgs &args, con
 {
     Scene chosen = scene;
     chosen.shading = args.shading.value_or(scene.shading);
-    return buildStages(renderer,
-                       chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()));
+    return buildStages(
+        renderer,
+        chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()));
 }
 
 int render(const RenderArgs &args, int argc, char **argv)

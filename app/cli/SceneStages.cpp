@@ -10,8 +10,8 @@ namespace phonglab::cli {
 
 namespace {
 
-QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene &scene, bool methodChosen,
-                  const QString &shipped)
+QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene &scene,
+                  bool methodChosen, const QString &shipped)
 {
     if (!fromArgs.isEmpty())
         return fromArgs;
@@ -22,7 +22,8 @@ QString stagePath(const QString &fromArgs, const QString &fromScene, const Scene
 
 } // namespace
 
-StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg, bool methodChosen)
+StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg,
+                            const QString &fragmentArg, bool methodChosen)
 {
     return {stagePath(vertexArg, scene.vertexShader, scene, methodChosen,
                       shippedShaderPath(scene.shading, ShaderStage::Vertex)),
@@ -30,7 +31,8 @@ StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const 
                       shippedShaderPath(scene.shading, ShaderStage::Fragment))};
 }
 
-QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option, int maxSide, QSize *size)
+QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option,
+                       int maxSide, QSize *size)
 {
     if (!parser.isSet(option))
         return {};
@@ -55,7 +57,8 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
     return {};
 }
 
-Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files, std::vector<ShaderStageText> *texts)
+Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,
+                                std::vector<ShaderStageText> *texts)
 {
     const Result<StageSources> read = readStageFiles(files.vertex, files.fragment);
     if (!read)

@@ -21,13 +21,14 @@ struct StageFiles {
     QString vertex;
     QString fragment;
 };
-StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg, const QString &fragmentArg,
-                            bool methodChosen);
+StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg,
+                            const QString &fragmentArg, bool methodChosen);
 
 // --size and --shading, read the one way `render` and `check` take them.
 // Each leaves its output alone when the option is not given and returns an
 // empty string, or the message for usage() when the value is wrong.
-QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option, int maxSide, QSize *size);
+QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option,
+                       int maxSide, QSize *size);
 QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                           std::optional<ShadingMethod> *shading);
 

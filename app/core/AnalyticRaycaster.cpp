@@ -116,7 +116,8 @@ struct PreparedObject {
     const Material *material = nullptr;
 };
 
-std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten, const QHash<QString, QString> &standIns)
+std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten,
+                                          const QHash<QString, QString> &standIns)
 {
     return analyticShapeFor(standIns.value(meshAsWritten, meshAsWritten));
 }
@@ -131,12 +132,13 @@ Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double as
         const SceneObject &object = scene.objects[i];
         const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
         if (!surface)
-            return fail(
-                QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
-                               "(the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)")
-                    .arg(i)
-                    .arg(object.mesh));
-        const ObjectMatrices matrices = ObjectMatrices::make(object.transform.matrix(), view, projection);
+            return fail(QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
+                                       "(the reference ray caster knows builtin:sphere, "
+                                       "builtin:torus and builtin:cube)")
+                            .arg(i)
+                            .arg(object.mesh));
+        const ObjectMatrices matrices =
+            ObjectMatrices::make(object.transform.matrix(), view, projection);
         // A zero scale flattens the object to something with no defined
         // normals; there is no meaningful reference for it, so it is left out.
         const double det = glm::determinant(glm::dmat3(matrices.modelView));
@@ -164,8 +166,8 @@ struct Hit {
 // The nearest surface along a camera ray over all objects. Each object is
 // intersected in its own space with the ray mapped through inverse(modelView);
 // a linear map keeps the parameter t, so t stays the camera-space depth.
-Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
-               double farPlane)
+Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
+               double nearPlane, double farPlane)
 {
     Hit best;
     for (const PreparedObject &object : objects) {
@@ -174,7 +176,9 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
         std::optional<double> t;
         switch (object.surface) {
         case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
-        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Torus:
+            t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
+            break;
         case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
         }
         // Strictly nearer only: on an exact tie the GPU's GL_LESS depth test
@@ -197,10 +201,10 @@ ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const Camera
     // normals. No flip towards the viewer: phong.frag does not flip either,
     // so an inside seen through the near plane is lit as the GPU lights it.
     const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
-        : object.surface == Surface::Torus                            ? torusNormal(p, kTorusMajorRadius)
-                                                                      : boxNormal(p);
-    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix}, *object.material, scene.ambient,
-                             lights, shader);
+        : object.surface == Surface::Torus ? torusNormal(p, kTorusMajorRadius)
+                                           : boxNormal(p);
+    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix},
+                             *object.material, scene.ambient, lights, shader);
 }
 
 } // namespace
@@ -238,7 +242,8 @@ std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tM
     return std::nullopt;
 }
 
-std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius, double minorRadius)
+std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius,
+                                     double minorRadius)
 {
     const double length = glm::length(ray.direction);
     if (length == 0.0 || !(tMin <= tMax))
@@ -271,8 +276,8 @@ std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, d
     const double e = d.x * d.x + d.z * d.z;
     const double g = o.x * d.x + o.z * d.z;
     const double h = o.x * o.x + o.z * o.z;
-    const Coefficients c{b * b - 4.0 * R2 * h, 4.0 * a * b - 8.0 * R2 * g, 4.0 * a * a + 2.0 * b - 4.0 * R2 * e,
-                         4.0 * a, 1.0};
+    const Coefficients c{b * b - 4.0 * R2 * h, 4.0 * a * b - 8.0 * R2 * g,
+                         4.0 * a * a + 2.0 * b - 4.0 * R2 * e, 4.0 * a, 1.0};
     std::array<double, kMaxDegree> roots{};
     if (rootsInInterval(c, kMaxDegree, 0.0, uHi - uLo, roots.data()) == 0)
         return std::nullopt;
@@ -335,17 +340,20 @@ ReferenceShading idealShadingFor(ShadingMethod method)
     return ReferenceShading::Phong;
 }
 
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const QHash<QString, QString> &standIns)
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const QHash<QString, QString> &standIns)
 {
     return raycastScene(scene, width, height, ReferenceShading::Phong, standIns);
 }
 
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const ReferenceShader &shader,
                                     const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0)
         return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
-    const Result<std::vector<PreparedObject>> objects = prepareObjects(scene, double(width) / double(height), standIns);
+    const Result<std::vector<PreparedObject>> objects =
+        prepareObjects(scene, double(width) / double(height), standIns);
     if (!objects)
         return fail(objects.error());
 
@@ -355,7 +363,8 @@ Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, c
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const Ray ray = cameraRay(scene.camera, x, y, width, height);
-            const Hit hit = nearestHit(*objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
+            const Hit hit =
+                nearestHit(*objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
             if (!hit.object)
                 continue;
             const std::size_t i = image.index(x, y);

@@ -51,7 +51,8 @@ struct ReferenceShader {
     ReferenceShading shading = ReferenceShading::Phong;
     std::optional<ShaderMistake> mistake; // with Phong only
 
-    ReferenceShader(ReferenceShading s = ReferenceShading::Phong, std::optional<ShaderMistake> m = std::nullopt)
+    ReferenceShader(ReferenceShading s = ReferenceShading::Phong,
+                    std::optional<ShaderMistake> m = std::nullopt)
         : shading(s)
         , mistake(m)
     {
@@ -60,7 +61,8 @@ struct ReferenceShader {
 };
 
 // As above, shaded with `shader` instead of exact Phong.
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height, const ReferenceShader &shader,
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const ReferenceShader &shader,
                                     const QHash<QString, QString> &standIns = {});
 
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
@@ -79,7 +81,8 @@ Ray cameraRay(const Camera &camera, int x, int y, int width, int height);
 
 // Smallest t in [tMin, tMax] where the ray meets the surface, if any.
 std::optional<double> intersectUnitSphere(const Ray &ray, double tMin, double tMax);
-std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius, double minorRadius);
+std::optional<double> intersectTorus(const Ray &ray, double tMin, double tMax, double majorRadius,
+                                     double minorRadius);
 
 std::optional<double> intersectUnitBox(const Ray &ray, double tMin, double tMax);
 glm::dvec3 boxNormal(const glm::dvec3 &p);

@@ -12,7 +12,8 @@ BoundingSphere boundingSphere(const glm::dvec3 &lo, const glm::dvec3 &hi, const 
 {
     // The box's eight corners after the model matrix, then the sphere around
     // their box: exact containment under any affine model (shear, mirror).
-    glm::dvec3 mn(std::numeric_limits<double>::infinity()), mx(-std::numeric_limits<double>::infinity());
+    glm::dvec3 mn(std::numeric_limits<double>::infinity()),
+        mx(-std::numeric_limits<double>::infinity());
     for (int i = 0; i < 8; ++i) {
         const glm::dvec3 corner(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
         const glm::dvec3 p = glm::dvec3(model * glm::dvec4(corner, 1.0));
@@ -47,13 +48,16 @@ std::optional<QString> depthPrecisionWarning(const DepthRange &range)
 {
     if (!(range.ratio() > kDepthRatioWarning))
         return std::nullopt;
-    const double resolved = 100.0 * range.ratio() / double(1 << 24); // percent of the distance, at far
+    const double resolved =
+        100.0 * range.ratio() / double(1 << 24); // percent of the distance, at far
     const QString effect = resolved < 50.0
-        ? QStringLiteral("surfaces closer than about %1 % of their distance may show through each other")
+        ? QStringLiteral(
+              "surfaces closer than about %1 % of their distance may show through each other")
               .arg(resolved, 0, 'g', 2)
         : QStringLiteral("the depth buffer cannot tell surfaces apart");
-    return QStringLiteral("camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
-                          "object's bounds); %4: raise near")
+    return QStringLiteral(
+               "camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
+               "object's bounds); %4: raise near")
         .arg(range.nearPlane, 0, 'g', 3)
         .arg(range.farPlane, 0, 'g', 3)
         .arg(std::log10(range.ratio()), 0, 'f', 0)

@@ -18,7 +18,8 @@ template <typename Table, typename Enum> QString enumName(const Table &table, En
 }
 
 template <typename Table>
-auto enumFromName(const Table &table, const QString &name) -> std::optional<typename Table::value_type::first_type>
+auto enumFromName(const Table &table, const QString &name)
+    -> std::optional<typename Table::value_type::first_type>
 {
     for (const auto &[v, n] : table)
         if (name == QLatin1String(n))

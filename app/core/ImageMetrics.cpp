@@ -36,7 +36,8 @@ public:
         if (r.pixelsCompared == 0)
             return r; // nothing compared: psnr stays 0 so no check passes vacuously
         r.rmse = std::sqrt(m_sumSquares / (3.0 * double(r.pixelsCompared)));
-        r.psnr = r.rmse == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / r.rmse);
+        r.psnr = r.rmse == 0.0 ? std::numeric_limits<double>::infinity()
+                               : 20.0 * std::log10(255.0 / r.rmse);
         return r;
     }
 
@@ -77,7 +78,8 @@ std::vector<std::uint8_t> silhouettePixels(const ReferenceImage &ref)
 // Dilates `mask` (width × height) by a (2r+1)² square, i.e. marks every pixel
 // within Chebyshev distance r of a set pixel. Separable: a row pass then a
 // column pass, each a sliding window count, so the cost does not grow with r.
-std::vector<std::uint8_t> dilateSquare(const std::vector<std::uint8_t> &mask, int width, int height, int r)
+std::vector<std::uint8_t> dilateSquare(const std::vector<std::uint8_t> &mask, int width, int height,
+                                       int r)
 {
     auto pass = [r](const std::vector<std::uint8_t> &in, int count, int length, auto at) {
         std::vector<std::uint8_t> out(in.size(), 0);
@@ -103,8 +105,8 @@ std::vector<std::uint8_t> dilateSquare(const std::vector<std::uint8_t> &mask, in
 // 1 for the pixels compareWithReference() compares.
 std::vector<std::uint8_t> comparedPixels(const ReferenceImage &reference, int bandPx)
 {
-    const std::vector<std::uint8_t> band =
-        dilateSquare(silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
+    const std::vector<std::uint8_t> band = dilateSquare(
+        silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
     std::vector<std::uint8_t> compared(band.size(), 0);
     for (std::size_t i = 0; i < band.size(); ++i)
         compared[i] = reference.coverage[i] != 0 && !band[i];
@@ -144,7 +146,8 @@ QString ImageComparison::summary() const
 {
     if (pixelsCompared == 0)
         return QStringLiteral("no pixels compared");
-    const QString psnrText = std::isinf(psnr) ? QStringLiteral("inf") : QString::number(psnr, 'f', 2);
+    const QString psnrText =
+        std::isinf(psnr) ? QStringLiteral("inf") : QString::number(psnr, 'f', 2);
     return QStringLiteral("PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px")
         .arg(psnrText)
         .arg(rmse, 0, 'f', 2)
@@ -154,7 +157,8 @@ QString ImageComparison::summary() const
         .arg(pixelsCompared);
 }
 
-ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference, int bandPx)
+ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference,
+                                     int bandPx)
 {
     if (!sameSize(rendered, reference))
         return {};
@@ -174,13 +178,14 @@ ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceIm
 }
 
 BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage &reference,
-                                  const glm::dvec3 &background, int bandPx, const std::vector<std::uint8_t> *mask)
+                                  const glm::dvec3 &background, int bandPx,
+                                  const std::vector<std::uint8_t> *mask)
 {
     BandComparison out;
     if (!sameSize(rendered, reference) || (mask && mask->size() != reference.color.size()))
         return out;
-    const std::vector<std::uint8_t> band =
-        dilateSquare(silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
+    const std::vector<std::uint8_t> band = dilateSquare(
+        silhouettePixels(reference), reference.width, reference.height, std::max(bandPx, 0));
     const uchar bg[3] = {uchar(encodeChannel(background.r)), uchar(encodeChannel(background.g)),
                          uchar(encodeChannel(background.b))};
     ErrorAccumulator errors;
@@ -208,21 +213,25 @@ BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage
     return out;
 }
 
-std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference, double relativeJump)
+std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference,
+                                                 double relativeJump)
 {
     const int w = reference.width, h = reference.height;
     std::vector<std::uint8_t> contour(reference.color.size(), 0);
     auto inverseDepth = [&](int x, int y) { return 1.0 / reference.depthAt(x, y); };
-    auto covered = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && reference.covered(x, y); };
+    auto covered = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h && reference.covered(x, y);
+    };
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             if (!covered(x, y))
                 continue;
             const double here = inverseDepth(x, y);
-            for (const auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+            for (const auto &[dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
                 if (!covered(x - dx, y - dy) || !covered(x + dx, y + dy))
                     continue; // the outline: the coverage band handles it
-                const double second = inverseDepth(x + dx, y + dy) + inverseDepth(x - dx, y - dy) - 2.0 * here;
+                const double second =
+                    inverseDepth(x + dx, y + dy) + inverseDepth(x - dx, y - dy) - 2.0 * here;
                 if (std::abs(second) > relativeJump * here)
                     contour[reference.index(x, y)] = 1;
             }
@@ -231,7 +240,8 @@ std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference
     return contour;
 }
 
-std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height, int r)
+std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height,
+                                       int r)
 {
     if (mask.size() != std::size_t(width) * std::size_t(height))
         return {};

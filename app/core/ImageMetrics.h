@@ -10,10 +10,10 @@ namespace phonglab {
 // How far an 8-bit render is from another image or from the CPU reference,
 // in 8-bit steps per channel.
 struct ImageComparison {
-    double psnr = 0;           // 20·log10(255 / rmse) dB; +inf when identical; 0 when nothing was compared
-    double rmse = 0;           // over every compared channel value
-    int maxError = 0;          // largest |difference| of one channel, 0..255
-    QPoint worstPixel;         // first pixel (row-major) with maxError
+    double psnr = 0;   // 20·log10(255 / rmse) dB; +inf when identical; 0 when nothing was compared
+    double rmse = 0;   // over every compared channel value
+    int maxError = 0;  // largest |difference| of one channel, 0..255
+    QPoint worstPixel; // first pixel (row-major) with maxError
     qint64 pixelsCompared = 0; // 0 on a size mismatch
 
     // "PSNR 54.21 dB, RMSE 0.49, max 2/255 at (120,88), 41234 px"
@@ -26,7 +26,8 @@ struct ImageComparison {
 // whose coverage differs from one of its 8 neighbours; both sides of an edge
 // count, so bandPx = 0 already leaves out the edge pixels themselves, which a
 // tessellated mesh covers differently from the analytic surface.
-ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference, int bandPx);
+ImageComparison compareWithReference(const RgbImage &rendered, const ReferenceImage &reference,
+                                     int bandPx);
 
 // What the speed-against-accuracy bench measures: every pixel more than
 // bandPx from a silhouette of the reference where either image shows a
@@ -49,10 +50,12 @@ BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage
 // across an occlusion: flagged where it exceeds `relativeJump` · 1/z.
 // Together with the outline these are the silhouettes the bench's band
 // leaves out.
-std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference, double relativeJump = 0.002);
+std::vector<std::uint8_t> occludingContourPixels(const ReferenceImage &reference,
+                                                 double relativeJump = 0.002);
 
 // Every pixel within Chebyshev distance r of a set pixel of `mask`.
-std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height, int r);
+std::vector<std::uint8_t> dilatePixels(const std::vector<std::uint8_t> &mask, int width, int height,
+                                       int r);
 
 // Every pixel, R, G and B.
 ImageComparison compareImages(const RgbImage &a, const RgbImage &b);

@@ -39,7 +39,8 @@ QList<MaterialPreset> builtinMaterialPresets()
     return {
         {QStringLiteral("Plastic"), {{0.1, 0.02, 0.02}, {0.7, 0.1, 0.1}, {0.7, 0.7, 0.7}, 32.0}},
         {QStringLiteral("Rubber"), {{0.05, 0.05, 0.05}, {0.4, 0.4, 0.4}, {0.05, 0.05, 0.05}, 10.0}},
-        {QStringLiteral("Polished metal"), {{0.25, 0.2, 0.07}, {0.35, 0.3, 0.1}, {0.8, 0.75, 0.55}, 128.0}},
+        {QStringLiteral("Polished metal"),
+         {{0.25, 0.2, 0.07}, {0.35, 0.3, 0.1}, {0.8, 0.75, 0.55}, 128.0}},
         {QStringLiteral("Chalk"), {{0.25, 0.25, 0.25}, {0.9, 0.9, 0.88}, {0.0, 0.0, 0.0}, 1.0}},
     };
 }

@@ -40,8 +40,9 @@ struct ShearedRay {
     }
 };
 
-std::optional<TriangleHit> intersectSheared(const ShearedRay &r, const glm::dvec3 &v0, const glm::dvec3 &v1,
-                                            const glm::dvec3 &v2, double tMin, double tMax)
+std::optional<TriangleHit> intersectSheared(const ShearedRay &r, const glm::dvec3 &v0,
+                                            const glm::dvec3 &v1, const glm::dvec3 &v2, double tMin,
+                                            double tMax)
 {
     if (!r.valid)
         return std::nullopt;
@@ -75,7 +76,8 @@ std::optional<TriangleHit> intersectSheared(const ShearedRay &r, const glm::dvec
 // choice that makes the BVH and the brute force agree exactly.
 bool better(const TriangleHit &candidate, const std::optional<TriangleHit> &best)
 {
-    return !best || candidate.t < best->t || (candidate.t == best->t && candidate.triangle < best->triangle);
+    return !best || candidate.t < best->t
+        || (candidate.t == best->t && candidate.triangle < best->triangle);
 }
 
 // --- Build -------------------------------------------------------------------
@@ -128,8 +130,8 @@ struct Split {
 
 // The cheapest binned-SAH split of triangles [begin, end) over all three axes.
 Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin, std::uint32_t end,
-                   const std::vector<Box> &boxes, const std::vector<glm::vec3> &centroids, const Box &centroidBounds,
-                   double parentArea)
+                   const std::vector<Box> &boxes, const std::vector<glm::vec3> &centroids,
+                   const Box &centroidBounds, double parentArea)
 {
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
@@ -163,8 +165,8 @@ Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin,
             count += binCounts[b];
             if (count == 0 || rightCount[b + 1] == 0)
                 continue;
-            const double cost =
-                kTraversalCost + (left.halfArea() * count + rightArea[b + 1] * rightCount[b + 1]) / parentArea;
+            const double cost = kTraversalCost
+                + (left.halfArea() * count + rightArea[b + 1] * rightCount[b + 1]) / parentArea;
             if (cost < best.cost)
                 best = Split{axis, b, cost};
         }
@@ -174,13 +176,15 @@ Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin,
 
 } // namespace
 
-std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0, const glm::dvec3 &v1,
-                                             const glm::dvec3 &v2, double tMin, double tMax)
+std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0,
+                                             const glm::dvec3 &v1, const glm::dvec3 &v2,
+                                             double tMin, double tMax)
 {
     return intersectSheared(ShearedRay(ray), v0, v1, v2, tMin, tMax);
 }
 
-std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin, double tMax)
+std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin,
+                                                double tMax)
 {
     const ShearedRay sheared(ray);
     std::optional<TriangleHit> best;
@@ -188,7 +192,8 @@ std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray 
         const glm::dvec3 v0(mesh.positions[mesh.indices[3 * tri]]);
         const glm::dvec3 v1(mesh.positions[mesh.indices[3 * tri + 1]]);
         const glm::dvec3 v2(mesh.positions[mesh.indices[3 * tri + 2]]);
-        std::optional<TriangleHit> hit = intersectSheared(sheared, v0, v1, v2, tMin, best ? best->t : tMax);
+        std::optional<TriangleHit> hit =
+            intersectSheared(sheared, v0, v1, v2, tMin, best ? best->t : tMax);
         if (!hit)
             continue;
         hit->triangle = std::uint32_t(tri);
@@ -239,7 +244,8 @@ void MeshBvh::build(const MeshData &mesh)
 
         std::uint32_t middle = task.begin;
         const Split split = task.depth < kSahDepth
-            ? bestSahSplit(order, task.begin, task.end, boxes, centroids, centroidBounds, bounds.halfArea())
+            ? bestSahSplit(order, task.begin, task.end, boxes, centroids, centroidBounds,
+                           bounds.halfArea())
             : Split{};
         if (split.axis >= 0 && (split.cost < double(count) || count > kMaxLeafSize)) {
             const int axis = split.axis;
@@ -248,17 +254,22 @@ void MeshBvh::build(const MeshData &mesh)
             middle = std::uint32_t(
                 std::partition(order.begin() + task.begin, order.begin() + task.end,
                                [&](std::uint32_t tri) {
-                                   return std::min(int((centroids[tri][axis] - lo) * scale), kBins - 1) <= split.bin;
+                                   return std::min(int((centroids[tri][axis] - lo) * scale),
+                                                   kBins - 1)
+                                       <= split.bin;
                                })
                 - order.begin());
         } else if (count > kMaxLeafSize) {
             // No usable SAH split (identical centroids, or too deep): halve
             // the range along the widest centroid axis.
             const glm::vec3 extent = centroidBounds.hi - centroidBounds.lo;
-            const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+            const int axis =
+                extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
             middle = task.begin + count / 2;
-            std::nth_element(order.begin() + task.begin, order.begin() + middle, order.begin() + task.end,
-                             [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+            std::nth_element(order.begin() + task.begin, order.begin() + middle,
+                             order.begin() + task.end, [&](std::uint32_t a, std::uint32_t b) {
+                                 return centroids[a][axis] < centroids[b][axis];
+                             });
         } else {
             continue; // a leaf: no split pays for its extra traversal
         }
@@ -278,7 +289,8 @@ void MeshBvh::build(const MeshData &mesh)
     m_vertices.resize(3 * std::size_t(n));
     for (std::uint32_t i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k)
-            m_vertices[3 * std::size_t(i) + k] = mesh.positions[mesh.indices[3 * std::size_t(order[i]) + k]];
+            m_vertices[3 * std::size_t(i) + k] =
+                mesh.positions[mesh.indices[3 * std::size_t(order[i]) + k]];
     m_triangleIds = std::move(order);
 }
 
@@ -335,8 +347,9 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 const glm::vec3 *v = &m_vertices[3 * std::size_t(i)];
-                std::optional<TriangleHit> hit = intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]),
-                                                                  glm::dvec3(v[2]), tMin, best ? best->t : tMax);
+                std::optional<TriangleHit> hit =
+                    intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]), glm::dvec3(v[2]),
+                                     tMin, best ? best->t : tMax);
                 if (!hit)
                     continue;
                 hit->triangle = m_triangleIds[i];
@@ -346,7 +359,8 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
         } else {
             // Nearer child first: its hits shrink the limit the other is tested with.
             const double l = limit(best);
-            double tLeft = enter(m_nodes[node.first], l), tRight = enter(m_nodes[node.first + 1], l);
+            double tLeft = enter(m_nodes[node.first], l),
+                   tRight = enter(m_nodes[node.first + 1], l);
             std::uint32_t nearChild = node.first, farChild = node.first + 1;
             if (tRight < tLeft) {
                 std::swap(tLeft, tRight);

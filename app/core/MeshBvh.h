@@ -31,13 +31,15 @@ struct TriangleHit {
 // transformed vertices, so they are exact negatives of each other and a ray
 // cannot slip between two triangles of a closed mesh. Degenerate (zero-area
 // as seen along the ray) triangles are never hit. Hits with t in [tMin, tMax].
-std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0, const glm::dvec3 &v1,
-                                             const glm::dvec3 &v2, double tMin, double tMax);
+std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0,
+                                             const glm::dvec3 &v1, const glm::dvec3 &v2,
+                                             double tMin, double tMax);
 
 // The closest hit over all triangles of `mesh` by testing every one: the
 // ground truth MeshBvh is checked against. Ties in t go to the lower
 // triangle index, as in MeshBvh::closestHit().
-std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin, double tMax);
+std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin,
+                                                double tMax);
 
 // A bounding-volume hierarchy over a mesh's triangles in object space, built
 // with binned SAH, for the CPU mesh reference: a 1.3M-triangle mesh builds

@@ -53,7 +53,8 @@ std::optional<Surface> builtinSurface(const QString &spec)
 // Checks the inputs, builds one BVH per distinct mesh (reporting the first
 // tenth of the progress) and prepares the objects. A failure on bad input,
 // or "cancelled".
-Result<> prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+Result<> prepareObjects(const Scene &scene,
+                        const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
                         double aspect, std::vector<PreparedObject> &prepared,
                         const std::function<bool(double)> &progress)
 {
@@ -67,10 +68,11 @@ Result<> prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<co
         const MeshData *mesh = objectMeshes[i].get();
         if (!mesh) {
             if (!builtinSurface(scene.objects[i].mesh))
-                return fail(QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
-                                           "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
-                                .arg(i)
-                                .arg(scene.objects[i].mesh));
+                return fail(
+                    QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                                   "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
+                        .arg(i)
+                        .arg(scene.objects[i].mesh));
         } else if (!mesh->isValid()) {
             return fail(QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
                             .arg(i)
@@ -85,7 +87,8 @@ Result<> prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<co
     std::size_t trianglesBuilt = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject &object = scene.objects[i];
-        const ObjectMatrices matrices = ObjectMatrices::make(object.transform.matrix(), view, projection);
+        const ObjectMatrices matrices =
+            ObjectMatrices::make(object.transform.matrix(), view, projection);
         // A zero scale flattens the object to something with no defined
         // normals; as in raycastScene() there is no reference for it.
         const double det = glm::determinant(glm::dmat3(matrices.modelView));
@@ -97,7 +100,8 @@ Result<> prepareObjects(const Scene &scene, const std::vector<std::shared_ptr<co
             std::shared_ptr<const MeshBvh> &bvh = bvhs[mesh];
             if (!bvh) {
                 if (progress
-                    && !progress(0.1 * double(trianglesBuilt) / double(std::max<std::size_t>(trianglesToBuild, 1))))
+                    && !progress(0.1 * double(trianglesBuilt)
+                                 / double(std::max<std::size_t>(trianglesToBuild, 1))))
                     return fail(QStringLiteral("cancelled"));
                 bvh = std::make_shared<const MeshBvh>(*mesh);
                 trianglesBuilt += mesh->triangleCount();
@@ -139,8 +143,8 @@ glm::dvec3 interpolatedNormal(const MeshData &mesh, const TriangleHit &hit)
 
 // The nearest surface along a camera ray over all objects, each intersected
 // in its own space; a linear map keeps t, so t stays the camera depth.
-Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
-               double farPlane)
+Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
+               double nearPlane, double farPlane)
 {
     Hit best;
     for (const PreparedObject &object : objects) {
@@ -157,7 +161,9 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
             }
             break;
         case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
-        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Torus:
+            t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
+            break;
         case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
         }
         // Strictly nearer only: on an exact tie the GPU's GL_LESS depth test
@@ -172,7 +178,9 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
         switch (object.surface) {
         case Surface::Mesh: best.objectNormal = normal; break;
         case Surface::Sphere: best.objectNormal = best.objectPoint; break;
-        case Surface::Torus: best.objectNormal = torusNormal(best.objectPoint, kTorusMajorRadius); break;
+        case Surface::Torus:
+            best.objectNormal = torusNormal(best.objectPoint, kTorusMajorRadius);
+            break;
         case Surface::Box: best.objectNormal = boxNormal(best.objectPoint); break;
         }
     }
@@ -182,8 +190,8 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
 // The nearest hit's depth alone: nearestHit() without the hit point and the
 // normal, which only shading needs. Same objects, order and tie rule, so the
 // same t as nearestHit().t.
-double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection, double nearPlane,
-                    double farPlane)
+double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
+                    double nearPlane, double farPlane)
 {
     double best = std::numeric_limits<double>::infinity();
     for (const PreparedObject &object : objects) {
@@ -196,7 +204,9 @@ double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3
                 t = hit->t;
             break;
         case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
-        case Surface::Torus: t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius); break;
+        case Surface::Torus:
+            t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
+            break;
         case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
         }
         if (t && *t < best)
@@ -211,7 +221,8 @@ void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, Sce
 {
     for (int x = 0; x < hits.width; ++x) {
         const Ray ray = cameraRay(scene.camera, x, y, hits.width, hits.height);
-        const Hit hit = nearestHit(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
+        const Hit hit =
+            nearestHit(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
         if (!hit.object)
             continue;
         ReferenceHit &out = hits.hits[std::size_t(y) * std::size_t(hits.width) + std::size_t(x)];
@@ -226,7 +237,8 @@ void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, Sce
 
 } // namespace
 
-Result<SceneHits> castSceneHits(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+Result<SceneHits> castSceneHits(const Scene &scene,
+                                const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
                                 int width, int height, const std::function<bool(double)> &progress)
 {
     if (width <= 0 || height <= 0)
@@ -257,10 +269,9 @@ Result<SceneHits> castSceneHits(const Scene &scene, const std::vector<std::share
     return hits;
 }
 
-Result<ReferenceImage> raycastSceneMeshes(const Scene &scene,
-                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                          int height, const ReferenceShader &shader,
-                                          const std::function<bool(double)> &progress)
+Result<ReferenceImage> raycastSceneMeshes(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, const ReferenceShader &shader, const std::function<bool(double)> &progress)
 {
     const Result<SceneHits> hits = castSceneHits(scene, objectMeshes, width, height, progress);
     if (!hits)
@@ -276,14 +287,15 @@ SceneDepthCaster::SceneDepthCaster() = default;
 SceneDepthCaster::~SceneDepthCaster() = default;
 
 Result<std::unique_ptr<SceneDepthCaster>> SceneDepthCaster::create(
-    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height)
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height)
 {
     if (width <= 0 || height <= 0)
         return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
     std::unique_ptr<SceneDepthCaster> caster(new SceneDepthCaster);
     caster->m_objects = std::make_unique<Objects>();
-    if (const Result<> prepared =
-            prepareObjects(scene, objectMeshes, double(width) / double(height), caster->m_objects->prepared, {});
+    if (const Result<> prepared = prepareObjects(
+            scene, objectMeshes, double(width) / double(height), caster->m_objects->prepared, {});
         !prepared)
         return fail(prepared.error());
     for (PreparedObject &object : caster->m_objects->prepared) {

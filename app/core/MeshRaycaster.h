@@ -48,10 +48,9 @@ namespace phonglab {
 // progress(fraction done) is called now and then from the calling thread
 // (the first tenth covers building the BVHs); returning false cancels: the
 // result is the failure "cancelled".
-Result<ReferenceImage> raycastSceneMeshes(const Scene &scene,
-                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                          int height, const ReferenceShader &shader,
-                                          const std::function<bool(double)> &progress = {});
+Result<ReferenceImage> raycastSceneMeshes(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, const ReferenceShader &shader, const std::function<bool(double)> &progress = {});
 
 // Geometry only: the camera depth of the nearest surface along the ray
 // through any point of the image, with the objects, meshes, conventions and
@@ -68,7 +67,8 @@ class SceneDepthCaster
 public:
     // A failure for the inputs raycastSceneMeshes() rejects.
     static Result<std::unique_ptr<SceneDepthCaster>> create(
-        const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height);
+        const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+        int width, int height);
     ~SceneDepthCaster();
 
     // The depth (camera-space -z) of the nearest hit along the ray through

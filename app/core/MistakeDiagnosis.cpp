@@ -9,7 +9,8 @@ namespace {
 
 bool within(const std::uint8_t *a, const std::uint8_t *b, int steps)
 {
-    return std::abs(a[0] - b[0]) <= steps && std::abs(a[1] - b[1]) <= steps && std::abs(a[2] - b[2]) <= steps;
+    return std::abs(a[0] - b[0]) <= steps && std::abs(a[1] - b[1]) <= steps
+        && std::abs(a[2] - b[2]) <= steps;
 }
 
 bool equal(const std::uint8_t *a, const std::uint8_t *b)
@@ -39,13 +40,14 @@ bool sameImage(const RgbImage &a, const RgbImage &b, const std::vector<std::uint
 
 bool MistakeDiagnosis::unexplained() const
 {
-    return differingPixels > 0 && (findings.empty() || findings.front().confidence < kExplainedConfidence);
+    return differingPixels > 0
+        && (findings.empty() || findings.front().confidence < kExplainedConfidence);
 }
 
-MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const ReferenceImage &exact,
-                                  const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
-                                  const std::vector<std::uint8_t> &compared, int toleranceSteps,
-                                  const glm::dvec3 &background)
+MistakeDiagnosis diagnoseMistakes(
+    const RgbImage &yours, const ReferenceImage &exact,
+    const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
+    const std::vector<std::uint8_t> &compared, int toleranceSteps, const glm::dvec3 &background)
 {
     MistakeImages images;
     for (const auto &[mistake, reference] : mistaken)
@@ -53,12 +55,14 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const ReferenceImage &e
     return diagnoseMistakes(yours, exact.toImage(background), images, compared, toleranceSteps);
 }
 
-MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, const MistakeImages &mistaken,
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
+                                  const MistakeImages &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps)
 {
     MistakeDiagnosis diagnosis;
     const bool sizesAgree = yours.sameSize(exact) && compared.size() == exact.pixelCount()
-        && std::all_of(mistaken.begin(), mistaken.end(), [&](const auto &m) { return m.second.sameSize(exact); });
+        && std::all_of(mistaken.begin(), mistaken.end(),
+                       [&](const auto &m) { return m.second.sameSize(exact); });
     if (!sizesAgree) {
         // Nothing to compare pixel by pixel: every compared pixel differs.
         diagnosis.differingPixels = std::count(compared.begin(), compared.end(), std::uint8_t(1));
@@ -72,15 +76,18 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, 
     std::vector<std::pair<ShaderMistake, const RgbImage *>> images;
     for (const auto &[mistake, image] : mistaken)
         images.emplace_back(mistake, &image);
-    std::sort(images.begin(), images.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+    std::sort(images.begin(), images.end(),
+              [](const auto &a, const auto &b) { return a.first < b.first; });
 
     std::vector<bool> grouped(images.size(), false);
     for (std::size_t m = 0; m < images.size(); ++m) {
         if (grouped[m])
             continue;
         const RgbImage &image = *images[m].second;
-        const std::vector<std::uint8_t> mistakeDiffers = differing(image, exact, compared, toleranceSteps);
-        if (std::none_of(mistakeDiffers.begin(), mistakeDiffers.end(), [](std::uint8_t d) { return d != 0; })) {
+        const std::vector<std::uint8_t> mistakeDiffers =
+            differing(image, exact, compared, toleranceSteps);
+        if (std::none_of(mistakeDiffers.begin(), mistakeDiffers.end(),
+                         [](std::uint8_t d) { return d != 0; })) {
             diagnosis.undetectable.push_back(images[m].first);
             continue;
         }
@@ -108,7 +115,9 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, 
             diagnosis.findings.push_back(std::move(finding));
     }
     std::stable_sort(diagnosis.findings.begin(), diagnosis.findings.end(),
-                     [](const MistakeFinding &a, const MistakeFinding &b) { return a.confidence > b.confidence; });
+                     [](const MistakeFinding &a, const MistakeFinding &b) {
+                         return a.confidence > b.confidence;
+                     });
     return diagnosis;
 }
 

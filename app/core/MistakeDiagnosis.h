@@ -23,8 +23,9 @@ struct MistakeFinding {
 };
 
 struct MistakeDiagnosis {
-    qint64 differingPixels = 0;              // compared pixels off the exact image by more than the tolerance
-    std::vector<MistakeFinding> findings;    // best first; those explaining at least kMinListedConfidence
+    qint64 differingPixels = 0; // compared pixels off the exact image by more than the tolerance
+    std::vector<MistakeFinding>
+        findings; // best first; those explaining at least kMinListedConfidence
     std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
     // Differs, and no mistake explains at least kExplainedConfidence of it
     // (`unknown`: the heatmap is the answer).
@@ -41,16 +42,17 @@ inline constexpr double kMinListedConfidence = 0.1;
 // Where two mistakes give the same image, the one earlier in
 // ShaderMistake's order is `key`. A render of another size than the
 // reference differs everywhere and has no finding.
-MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const ReferenceImage &exact,
-                                  const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
-                                  const std::vector<std::uint8_t> &compared, int toleranceSteps,
-                                  const glm::dvec3 &background);
+MistakeDiagnosis diagnoseMistakes(
+    const RgbImage &yours, const ReferenceImage &exact,
+    const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
+    const std::vector<std::uint8_t> &compared, int toleranceSteps, const glm::dvec3 &background);
 
 // The same on images already encoded as the GPU writes them
 // (ReferenceImage::toImage()), which is all the diagnosis looks at: what a
 // caller judging many renders against one reference keeps.
 using MistakeImages = std::vector<std::pair<ShaderMistake, RgbImage>>;
-MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact, const MistakeImages &mistaken,
+MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
+                                  const MistakeImages &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps);
 
 } // namespace phonglab

@@ -26,16 +26,19 @@ std::vector<Pattern> patternsFor(ShaderMistake mistake)
     switch (mistake) {
     case ShaderMistake::NormalMatrix:
         return {{Stage::Vertex, R"(=.*\*.*\bnormal\b)"}, {Stage::Both, R"(\bnormalMatrix\b)"}};
-    case ShaderMistake::Unnormalized: return {{Stage::Fragment, R"(\bN\s*=)"}, {Stage::Fragment, R"(normalize\s*\()"}};
+    case ShaderMistake::Unnormalized:
+        return {{Stage::Fragment, R"(\bN\s*=)"}, {Stage::Fragment, R"(normalize\s*\()"}};
     case ShaderMistake::LightSpace: return {{Stage::Both, R"(\blightPosition\b)"}};
     case ShaderMistake::HomogeneousW: return {{Stage::Both, R"(\*\s*vec4\s*\()"}};
     case ShaderMistake::ReflectIncident: return {{Stage::Both, R"(\breflect\s*\()"}};
     case ShaderMistake::ViewVector: return {{Stage::Both, R"(\bV\s*=[^=])"}};
     case ShaderMistake::Attenuation:
         return {{Stage::Both, R"(\bf_?att\w*\s*=[^=])"}, {Stage::Both, R"(\battenuation\s*\[)"}};
-    case ShaderMistake::NegativeLight: return {{Stage::Both, R"(dot\s*\(\s*N\s*,\s*L\s*\)|dot\s*\(\s*L\s*,\s*N\s*\))"}};
+    case ShaderMistake::NegativeLight:
+        return {{Stage::Both, R"(dot\s*\(\s*N\s*,\s*L\s*\)|dot\s*\(\s*L\s*,\s*N\s*\))"}};
     case ShaderMistake::BackfaceSpecular:
-        return {{Stage::Both, R"(\bif\s*\(.*(NdotL|dot\s*\(\s*N\s*,\s*L))"}, {Stage::Both, R"(\bpow\s*\()"}};
+        return {{Stage::Both, R"(\bif\s*\(.*(NdotL|dot\s*\(\s*N\s*,\s*L))"},
+                {Stage::Both, R"(\bpow\s*\()"}};
     case ShaderMistake::Ambient: return {{Stage::Both, R"(\bIa\b.*\bka\b|\bka\b.*\bIa\b)"}};
     case ShaderMistake::Gouraud: return {{Stage::Vertex, R"(\bdot\s*\(|\bpow\s*\()"}};
     }
@@ -45,7 +48,8 @@ std::vector<Pattern> patternsFor(ShaderMistake mistake)
 // Declarations and comments name the term without computing it.
 bool computes(const QString &trimmed)
 {
-    static const QRegularExpression declaration(QStringLiteral(R"(^(uniform|in|out|layout|const|#|//|\*))"));
+    static const QRegularExpression declaration(
+        QStringLiteral(R"(^(uniform|in|out|layout|const|#|//|\*))"));
     return !trimmed.isEmpty() && !declaration.match(trimmed).hasMatch();
 }
 
@@ -63,7 +67,8 @@ std::vector<SourceLine> matchingLines(const ShaderStageText &stage, const QRegul
 
 } // namespace
 
-std::vector<SourceLine> mistakeSourceLines(ShaderMistake mistake, const std::vector<ShaderStageText> &stages)
+std::vector<SourceLine> mistakeSourceLines(ShaderMistake mistake,
+                                           const std::vector<ShaderStageText> &stages)
 {
     std::vector<SourceLine> out;
     for (const ShaderStageText &stage : stages) {

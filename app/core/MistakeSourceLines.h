@@ -25,6 +25,7 @@ struct SourceLine {
 
 // At most a few lines per stage, in file order; empty when no line looks
 // like the term's.
-std::vector<SourceLine> mistakeSourceLines(ShaderMistake mistake, const std::vector<ShaderStageText> &stages);
+std::vector<SourceLine> mistakeSourceLines(ShaderMistake mistake,
+                                           const std::vector<ShaderStageText> &stages);
 
 } // namespace phonglab

@@ -2,7 +2,8 @@
 
 namespace phonglab {
 
-ObjectMatrices ObjectMatrices::make(const glm::dmat4 &model, const glm::dmat4 &view, const glm::dmat4 &projection)
+ObjectMatrices ObjectMatrices::make(const glm::dmat4 &model, const glm::dmat4 &view,
+                                    const glm::dmat4 &projection)
 {
     ObjectMatrices m;
     m.model = model;

@@ -17,7 +17,8 @@ struct ObjectMatrices {
     // clockwise on screen: the front faces of this object wind the other way.
     bool mirrors() const { return glm::determinant(glm::dmat3(modelView)) < 0.0; }
 
-    static ObjectMatrices make(const glm::dmat4 &model, const glm::dmat4 &view, const glm::dmat4 &projection);
+    static ObjectMatrices make(const glm::dmat4 &model, const glm::dmat4 &view,
+                               const glm::dmat4 &projection);
 };
 
 } // namespace phonglab

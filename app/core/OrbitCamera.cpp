@@ -63,7 +63,8 @@ void OrbitCamera::orbit(double yawDeg, double pitchDeg)
     const double vertical = glm::dot(offset, up);
     const glm::dvec3 horizontal = offset - vertical * up;
     const double horizontalLength = glm::length(horizontal);
-    const glm::dvec3 h = horizontalLength > kTiny * radius ? horizontal / horizontalLength : anyPerpendicular(up);
+    const glm::dvec3 h =
+        horizontalLength > kTiny * radius ? horizontal / horizontalLength : anyPerpendicular(up);
     const double polar = std::acos(std::clamp(vertical / radius, -1.0, 1.0));
 
     // h is perpendicular to up, so rotating it about up is this 2D rotation.
@@ -107,7 +108,8 @@ void OrbitCamera::zoom(double factor)
     // Clamp only in the direction of travel, so a scene whose camera starts
     // outside the limits does not jump on the first wheel step.
     if (factor < 1.0)
-        newRadius = std::max(newRadius, std::min(radius, kMinDistanceOverNear * m_camera.nearPlane));
+        newRadius =
+            std::max(newRadius, std::min(radius, kMinDistanceOverNear * m_camera.nearPlane));
     else
         newRadius = std::min(newRadius, std::max(radius, kMaxDistanceOverFar * m_camera.farPlane));
 

@@ -23,8 +23,9 @@ enum class Specular {
 // The equation, exact, or with one pointwise mistake (ShaderMistake.h) made
 // where a shader would make it: one sequence, so the mistaken images differ
 // from the exact one by that mistake alone.
-IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights, Specular model,
+IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal,
+                               const Material &material, const glm::dvec3 &ambient,
+                               std::span<const CameraSpaceLight> lights, Specular model,
                                std::optional<ShaderMistake> mistake = std::nullopt)
 {
     const auto made = [&](ShaderMistake m) { return mistake == m; };
@@ -47,7 +48,8 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
         if (behind && made(ShaderMistake::NegativeLight)) {
             // max(0, N·L) missing: the diffuse term goes negative; still no highlight.
         } else if (model == Specular::ReflectedRay) {
-            const glm::dvec3 R = made(ShaderMistake::ReflectIncident) ? glm::reflect(L, N) : glm::reflect(-L, N);
+            const glm::dvec3 R =
+                made(ShaderMistake::ReflectIncident) ? glm::reflect(L, N) : glm::reflect(-L, N);
             specularFactor = std::pow(std::max(0.0, glm::dot(R, V)), material.shininess);
         } else {
             // L + V vanishes only for a light exactly behind the point as
@@ -62,7 +64,8 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
         const double diffuseFactor = behind && !made(ShaderMistake::NegativeLight) ? 0.0 : NdotL;
         const glm::dvec3 diffuse = light.diffuse * material.kd * diffuseFactor;
         const glm::dvec3 specular = light.specular * material.ks * specularFactor;
-        const double attenuation = made(ShaderMistake::Attenuation) ? 1.0 : attenuationFactor(light.attenuation, d);
+        const double attenuation =
+            made(ShaderMistake::Attenuation) ? 1.0 : attenuationFactor(light.attenuation, d);
         I += attenuation * (diffuse + specular);
         S += attenuation * specular;
     }
@@ -71,35 +74,43 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
 
 } // namespace
 
-glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                          const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                          const Material &material, const glm::dvec3 &ambient,
+                          std::span<const CameraSpaceLight> lights)
 {
-    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay).intensity;
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay)
+        .intensity;
 }
 
-glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                               const Material &material, const glm::dvec3 &ambient,
+                               std::span<const CameraSpaceLight> lights)
 {
-    return illumination(position, normal, material, ambient, lights, Specular::HalfVector).intensity;
+    return illumination(position, normal, material, ambient, lights, Specular::HalfVector)
+        .intensity;
 }
 
-IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                             const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                             const Material &material, const glm::dvec3 &ambient,
+                             std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay);
 }
 
-IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                  const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                                  const Material &material, const glm::dvec3 &ambient,
+                                  std::span<const CameraSpaceLight> lights)
 {
     return illumination(position, normal, material, ambient, lights, Specular::HalfVector);
 }
 
-IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                                     const Material &material, const glm::dvec3 &ambient,
+                                     std::span<const CameraSpaceLight> lights,
                                      ShaderMistake mistake)
 {
-    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay, mistake);
+    return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay,
+                        mistake);
 }
 
 glm::dvec3 normalViewColor(const glm::dvec3 &normal)

@@ -32,8 +32,9 @@ double attenuationFactor(const glm::dvec3 &c, double d);
 
 // Light arriving at surface point `position` (camera space) with unit or
 // non-unit normal `normal` (camera space; normalised here).
-glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                          const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
+glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                          const Material &material, const glm::dvec3 &ambient,
+                          std::span<const CameraSpaceLight> lights);
 
 // Blinn-Phong: phongIntensity() with the specular term built on the half
 // vector H = normalize(L + V) instead of the reflected ray R:
@@ -45,8 +46,9 @@ glm::dvec3 phongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, 
 // two highlights match near their peak. Same N·L ≤ 0 rule as Phong.
 // shaders/blinn-phong.frag computes the same.
 inline constexpr double kBlinnExponentFactor = 4.0;
-glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                               const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
+glm::dvec3 blinnPhongIntensity(const glm::dvec3 &position, const glm::dvec3 &normal,
+                               const Material &material, const glm::dvec3 &ambient,
+                               std::span<const CameraSpaceLight> lights);
 
 // The same equations with the specular part reported on its own, for
 // measuring the error inside a highlight alone: `specular` is
@@ -57,10 +59,12 @@ struct IlluminationTerms {
     glm::dvec3 intensity{0.0};
     glm::dvec3 specular{0.0};
 };
-IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                             const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
-IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                  const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights);
+IlluminationTerms phongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                             const Material &material, const glm::dvec3 &ambient,
+                             std::span<const CameraSpaceLight> lights);
+IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                                  const Material &material, const glm::dvec3 &ambient,
+                                  std::span<const CameraSpaceLight> lights);
 
 // phongTerms() as a fragment shader with `mistake` computes it, for the
 // pointwise mistakes (isPointwiseMistake()): N left unnormalised,
@@ -68,8 +72,9 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 // term goes negative behind the surface), a highlight where N·L <= 0, no
 // ambient term. For the other mistakes the inputs differ, not the
 // equation: this returns phongTerms() of the inputs it is given.
-IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
+                                     const Material &material, const glm::dvec3 &ambient,
+                                     std::span<const CameraSpaceLight> lights,
                                      ShaderMistake mistake);
 
 // The normals view (shaders/normals.frag): the unit camera-space normal as a

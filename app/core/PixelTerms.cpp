@@ -12,12 +12,16 @@ namespace {
 
 QString vec(const glm::dvec3 &v)
 {
-    return QStringLiteral("(%1, %2, %3)").arg(v.x, 0, 'f', 4).arg(v.y, 0, 'f', 4).arg(v.z, 0, 'f', 4);
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(v.x, 0, 'f', 4)
+        .arg(v.y, 0, 'f', 4)
+        .arg(v.z, 0, 'f', 4);
 }
 
 } // namespace
 
-std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x, int y)
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
+                                     ReferenceShading shading, int x, int y)
 {
     if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
         return std::nullopt;
@@ -32,7 +36,8 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
     out.y = y;
     out.object = hit.object;
     out.positionCamera = at.position;
-    out.positionWorld = glm::dvec3(glm::inverse(scene.camera.viewMatrix()) * glm::dvec4(at.position, 1.0));
+    out.positionWorld =
+        glm::dvec3(glm::inverse(scene.camera.viewMatrix()) * glm::dvec4(at.position, 1.0));
     out.N = at.normal;
     out.V = glm::normalize(-at.position);
     if (shading == ReferenceShading::Normals) {
@@ -56,7 +61,8 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, 
         t.NdotL = glm::dot(out.N, t.L);
         t.RdotV = glm::dot(t.R, out.V);
         const glm::dvec3 sum = t.L + out.V;
-        t.H = glm::length(sum) > 0.0 ? glm::normalize(sum) : glm::dvec3(0.0); // none for a light straight behind
+        t.H = glm::length(sum) > 0.0 ? glm::normalize(sum)
+                                     : glm::dvec3(0.0); // none for a light straight behind
         t.NdotH = glm::dot(out.N, t.H);
         t.attenuation = attenuationFactor(cam.attenuation, t.distance);
         if (t.NdotL > 0.0) {
@@ -76,9 +82,10 @@ QString PixelTerms::toText() const
 {
     QStringList lines;
     const QString equation = shading == ReferenceShading::BlinnPhong ? QStringLiteral("Blinn-Phong")
-        : shading == ReferenceShading::Normals                       ? QStringLiteral("normals view")
-                                                                     : QStringLiteral("Phong");
-    lines << QStringLiteral("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
+        : shading == ReferenceShading::Normals ? QStringLiteral("normals view")
+                                               : QStringLiteral("Phong");
+    lines
+        << QStringLiteral("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
     lines << QStringLiteral("P world  %1").arg(vec(positionWorld));
     lines << QStringLiteral("P camera %1").arg(vec(positionCamera));
     lines << QStringLiteral("N        %1").arg(vec(N));

@@ -37,7 +37,8 @@ struct PixelTerms {
     glm::dvec3 V{0.0};              // unit, towards the eye
     glm::dvec3 ambient{0.0};        // Ia·ka
     std::vector<LightTerms> lights; // the enabled ones; none for the normals view
-    glm::dvec3 intensity{0.0};      // I, unclamped: ambient + Σ (diffuse + specular); the normals view: 0.5·N + 0.5
+    glm::dvec3 intensity{
+        0.0}; // I, unclamped: ambient + Σ (diffuse + specular); the normals view: 0.5·N + 0.5
 
     // Plain text, one value per line, for the clipboard.
     QString toText() const;
@@ -46,6 +47,7 @@ struct PixelTerms {
 // Nullopt where pixel (x, y) shows no object. `shading` is the exact
 // equation of the view (CheckReference::shader): Phong, Blinn-Phong, or the
 // normals view, which lights nothing.
-std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene, ReferenceShading shading, int x, int y);
+std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
+                                     ReferenceShading shading, int x, int y);
 
 } // namespace phonglab

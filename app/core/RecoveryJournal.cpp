@@ -48,8 +48,9 @@ std::optional<RecoveryBuffer> bufferFromJson(const QJsonValue &value)
     RecoveryBuffer buffer;
     buffer.filePath = json.value("file").toString();
     buffer.dirty = json.value("dirty").toBool();
-    buffer.text = json.contains("text") ? json.value("text").toString().toUtf8()
-                                        : QByteArray::fromBase64(json.value("base64").toString().toLatin1());
+    buffer.text = json.contains("text")
+        ? json.value("text").toString().toUtf8()
+        : QByteArray::fromBase64(json.value("base64").toString().toLatin1());
     return buffer;
 }
 
@@ -68,7 +69,8 @@ QString newSessionId()
 
 bool OrphanedSession::isSuspect() const
 {
-    return runningHash && *runningHash == recoveryTextHash(record.vertex.text, record.fragment.text);
+    return runningHash
+        && *runningHash == recoveryTextHash(record.vertex.text, record.fragment.text);
 }
 
 QByteArray recoveryTextHash(const QByteArray &vertex, const QByteArray &fragment)
@@ -94,7 +96,8 @@ QString RecoveryJournal::defaultDirectory()
     const QString fromEnv = qEnvironmentVariable("PHONGLAB_RECOVERY_DIR");
     if (!fromEnv.isEmpty())
         return fromEnv;
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/recovery");
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
+        + QStringLiteral("/recovery");
 }
 
 QString RecoveryJournal::filePath(const QString &id, const char *suffix) const
@@ -147,7 +150,8 @@ Result<RecoveryRecord> RecoveryJournal::readFile(const QString &path)
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
     const QJsonObject json = document.object();
-    if (parseError.error != QJsonParseError::NoError || json.value("format").toString() != QLatin1String(kFormat)
+    if (parseError.error != QJsonParseError::NoError
+        || json.value("format").toString() != QLatin1String(kFormat)
         || json.value("version").toInt() != kVersion)
         return fail(QStringLiteral("%1: not a complete PhongLab recovery journal").arg(path));
     const auto vertex = bufferFromJson(json.value("vertex"));
@@ -212,7 +216,7 @@ bool RecoveryJournal::isSessionAlive(const QString &id) const
     lock.setStaleLockTime(0);
     if (!lock.tryLock(0))
         return lock.error() == QLockFile::LockFailedError; // held by a live process
-    lock.unlock();                                         // it was stale (or missing): the session is gone
+    lock.unlock(); // it was stale (or missing): the session is gone
     return false;
 }
 
@@ -220,7 +224,8 @@ QList<OrphanedSession> RecoveryJournal::orphans() const
 {
     // Only complete journals are listed: QSaveFile's temporary files (a
     // write cut short) have other names and are never read.
-    const QStringList names = QDir(m_directory).entryList({QStringLiteral("*") + kJournalSuffix}, QDir::Files);
+    const QStringList names =
+        QDir(m_directory).entryList({QStringLiteral("*") + kJournalSuffix}, QDir::Files);
     QList<OrphanedSession> sessions;
     for (const QString &name : names) {
         const QString id = name.chopped(int(qstrlen(kJournalSuffix)));
@@ -236,7 +241,9 @@ QList<OrphanedSession> RecoveryJournal::orphans() const
         sessions << session;
     }
     std::sort(sessions.begin(), sessions.end(),
-              [](const OrphanedSession &a, const OrphanedSession &b) { return a.record.savedAt > b.record.savedAt; });
+              [](const OrphanedSession &a, const OrphanedSession &b) {
+                  return a.record.savedAt > b.record.savedAt;
+              });
     return sessions;
 }
 

@@ -44,8 +44,8 @@ void classifyRow(const SceneDepthCaster &caster, double step, std::uint8_t *row,
 } // namespace
 
 Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
-    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
-    int subpixelBits)
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, int subpixelBits)
 {
     const Result<std::unique_ptr<SceneDepthCaster>> created =
         SceneDepthCaster::create(scene, objectMeshes, width, height);
@@ -57,18 +57,19 @@ Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
     const double step = std::ldexp(1.0, -std::clamp(subpixelBits, 4, 30));
     std::vector<std::uint8_t> mask(std::size_t(width) * std::size_t(height), 0);
 
-    forEachRowInParallel(
-        height, [&](int y) { classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y); });
+    forEachRowInParallel(height, [&](int y) {
+        classifyRow(*caster, step, mask.data() + std::size_t(y) * std::size_t(width), y);
+    });
     return mask;
 }
 
-Result<std::vector<std::uint8_t>> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
-                                                      const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                      int bandPx)
+Result<std::vector<std::uint8_t>> awayFromSilhouettes(
+    const ReferenceImage &reference, const Scene &scene,
+    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int bandPx)
 {
     std::vector<std::uint8_t> edges = occludingContourPixels(reference);
-    const Result<std::vector<std::uint8_t>> ambiguous =
-        ambiguousReferencePixels(scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits);
+    const Result<std::vector<std::uint8_t>> ambiguous = ambiguousReferencePixels(
+        scene, objectMeshes, reference.width, reference.height, kDefaultSubpixelBits);
     if (!ambiguous)
         return fail(ambiguous.error());
     if (ambiguous->size() != edges.size())
@@ -77,7 +78,8 @@ Result<std::vector<std::uint8_t>> awayFromSilhouettes(const ReferenceImage &refe
                         .arg(reference.height));
     for (std::size_t i = 0; i < edges.size(); ++i)
         edges[i] = edges[i] || (*ambiguous)[i];
-    std::vector<std::uint8_t> compared = dilatePixels(edges, reference.width, reference.height, bandPx);
+    std::vector<std::uint8_t> compared =
+        dilatePixels(edges, reference.width, reference.height, bandPx);
     for (auto &c : compared)
         c = !c;
     return compared;

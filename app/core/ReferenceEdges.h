@@ -57,16 +57,16 @@ inline constexpr int kDefaultSubpixelBits = 8;
 // analytic surface of a builtin). A failure on bad input. Costs five
 // shading-free casts per pixel, rows in parallel on all cores.
 Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
-    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width, int height,
-    int subpixelBits);
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, int subpixelBits);
 
 // The pixels a render is judged on against the reference: every pixel more
 // than bandPx (Chebyshev) from an occluding contour (occludingContourPixels())
 // or an ambiguous pixel (ambiguousReferencePixels()), which together are the
 // silhouettes, the outline included. 1 = compared. What `phonglab bench` and
 // `phonglab check` compare. A failure on bad input.
-Result<std::vector<std::uint8_t>> awayFromSilhouettes(const ReferenceImage &reference, const Scene &scene,
-                                                      const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                                      int bandPx);
+Result<std::vector<std::uint8_t>> awayFromSilhouettes(
+    const ReferenceImage &reference, const Scene &scene,
+    const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int bandPx);
 
 } // namespace phonglab

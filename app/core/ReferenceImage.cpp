@@ -27,7 +27,8 @@ RgbImage ReferenceImage::toImage(const glm::dvec3 &background) const
     if (isNull())
         return {};
     RgbImage image(width, height);
-    const std::uint8_t bg[3] = {std::uint8_t(encodeChannel(background.r)), std::uint8_t(encodeChannel(background.g)),
+    const std::uint8_t bg[3] = {std::uint8_t(encodeChannel(background.r)),
+                                std::uint8_t(encodeChannel(background.g)),
                                 std::uint8_t(encodeChannel(background.b))};
     for (std::size_t i = 0; i < color.size(); ++i) {
         std::uint8_t *px = image.pixel(i);

@@ -28,7 +28,10 @@ struct ReferenceImage {
     ReferenceImage(int width, int height); // all pixels uncovered
 
     bool isNull() const { return width <= 0 || height <= 0; }
-    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+    std::size_t index(int x, int y) const
+    {
+        return std::size_t(y) * std::size_t(width) + std::size_t(x);
+    }
     bool covered(int x, int y) const { return coverage[index(x, y)] != 0; }
     const glm::dvec3 &colorAt(int x, int y) const { return color[index(x, y)]; }
     double depthAt(int x, int y) const { return depth[index(x, y)]; }

@@ -26,8 +26,9 @@ struct ReferenceSample {
 // object-space normal already mapped by the normal matrix; not necessarily
 // unit length: it is normalised here, per pixel, as the fragment shaders do).
 // No flip towards the viewer: the shipped fragment shaders do not flip either.
-ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal, const Material &material,
-                                     const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights,
+ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec3 &normal,
+                                     const Material &material, const glm::dvec3 &ambient,
+                                     std::span<const CameraSpaceLight> lights,
                                      ReferenceShading shading);
 
 // A ray's hit on an object before the vertex shader's transforms: the point
@@ -44,12 +45,15 @@ struct ObjectSpaceHit {
 // transforms and the equation are the mistaken ones (normal-matrix: N =
 // MV·(n, 0); homogeneous-w: P = MV·(p, 0)). The one function both
 // ray-casters shade with.
-ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &material, const glm::dvec3 &ambient,
-                                  std::span<const CameraSpaceLight> lights, const ReferenceShader &shader);
+ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &material,
+                                  const glm::dvec3 &ambient,
+                                  std::span<const CameraSpaceLight> lights,
+                                  const ReferenceShader &shader);
 
 // The scene's enabled lights in camera space (a disabled light lights
 // nothing, as on the GPU); with the light-space mistake, their world
 // positions taken as camera coordinates.
-std::vector<CameraSpaceLight> enabledCameraSpaceLights(const Scene &scene, const ReferenceShader &shader = {});
+std::vector<CameraSpaceLight> enabledCameraSpaceLights(const Scene &scene,
+                                                       const ReferenceShader &shader = {});
 
 } // namespace phonglab

@@ -24,7 +24,8 @@ QStringList searchFolders(const char *envVar, const QString &folder, const char 
     return dirs;
 }
 
-QString findFile(const char *envVar, const QString &folder, const char *sourceDir, const QString &name)
+QString findFile(const char *envVar, const QString &folder, const char *sourceDir,
+                 const QString &name)
 {
     for (const QString &dir : searchFolders(envVar, folder, sourceDir)) {
         const QString candidate = QDir(dir).filePath(name);
@@ -38,12 +39,14 @@ QString findFile(const char *envVar, const QString &folder, const char *sourceDi
 
 QString shaderPath(const QString &fileName)
 {
-    return findFile("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"), PHONGLAB_SOURCE_SHADER_DIR, fileName);
+    return findFile("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"), PHONGLAB_SOURCE_SHADER_DIR,
+                    fileName);
 }
 
 QStringList shaderSearchFolders()
 {
-    return searchFolders("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"), PHONGLAB_SOURCE_SHADER_DIR);
+    return searchFolders("PHONGLAB_SHADER_DIR", QStringLiteral("shaders"),
+                         PHONGLAB_SOURCE_SHADER_DIR);
 }
 
 QString shippedShaderPath(ShadingMethod method, ShaderStage stage)
@@ -53,7 +56,8 @@ QString shippedShaderPath(ShadingMethod method, ShaderStage stage)
 
 QString assetPath(const QString &relativePath)
 {
-    return findFile("PHONGLAB_ASSET_DIR", QStringLiteral("assets"), PHONGLAB_SOURCE_ASSET_DIR, relativePath);
+    return findFile("PHONGLAB_ASSET_DIR", QStringLiteral("assets"), PHONGLAB_SOURCE_ASSET_DIR,
+                    relativePath);
 }
 
 QString defaultScenePath()

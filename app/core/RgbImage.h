@@ -18,7 +18,10 @@ struct RgbImage {
     RgbImage(int width, int height); // black
 
     bool isNull() const { return width <= 0 || height <= 0; }
-    bool sameSize(const RgbImage &other) const { return width == other.width && height == other.height; }
+    bool sameSize(const RgbImage &other) const
+    {
+        return width == other.width && height == other.height;
+    }
     std::size_t pixelCount() const { return std::size_t(width) * std::size_t(height); }
     // Pixel i (row-major) or (x, y): its R, G, B.
     const std::uint8_t *pixel(std::size_t i) const { return bytes.data() + 3 * i; }
@@ -27,7 +30,10 @@ struct RgbImage {
     {
         return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x));
     }
-    std::uint8_t *pixel(int x, int y) { return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x)); }
+    std::uint8_t *pixel(int x, int y)
+    {
+        return pixel(std::size_t(y) * std::size_t(width) + std::size_t(x));
+    }
     void setPixel(int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b);
     void fill(std::uint8_t r, std::uint8_t g, std::uint8_t b);
 

@@ -6,7 +6,8 @@ namespace phonglab {
 
 QString Scene::resolveMeshPath(const QString &mesh) const
 {
-    if (mesh.startsWith(QLatin1String("builtin:")) || QDir::isAbsolutePath(mesh) || baseDir.isEmpty())
+    if (mesh.startsWith(QLatin1String("builtin:")) || QDir::isAbsolutePath(mesh)
+        || baseDir.isEmpty())
         return mesh;
     // cleanPath folds "scenes/../meshes": Qt resource paths (":/assets/...")
     // do not resolve ".." themselves.
@@ -22,9 +23,10 @@ QString Scene::resolveShaderPath(const QString &shader) const
 
 bool Scene::operator==(const Scene &other) const
 {
-    return objects == other.objects && camera == other.camera && ambient == other.ambient && lights == other.lights
-        && shading == other.shading && background == other.background && vertexShader == other.vertexShader
-        && fragmentShader == other.fragmentShader && uniforms == other.uniforms;
+    return objects == other.objects && camera == other.camera && ambient == other.ambient
+        && lights == other.lights && shading == other.shading && background == other.background
+        && vertexShader == other.vertexShader && fragmentShader == other.fragmentShader
+        && uniforms == other.uniforms;
 }
 
 } // namespace phonglab

@@ -9,17 +9,19 @@ namespace {
 
 // Gouraud: the exact equation at the triangle's three vertices, the colours
 // interpolated like a perspective-correct varying.
-ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHit &hit, const Material &material,
-                              const glm::dvec3 &ambient, std::span<const CameraSpaceLight> lights)
+ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHit &hit,
+                              const Material &material, const glm::dvec3 &ambient,
+                              std::span<const CameraSpaceLight> lights)
 {
     const MeshData &mesh = *object.mesh;
     const std::size_t base = 3 * std::size_t(hit.triangle);
     ReferenceSample out;
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t v = mesh.indices[base + std::size_t(k)];
-        const ReferenceSample vertex = shadeReferenceHit(
-            {glm::dvec3(mesh.positions[v]), glm::dvec3(mesh.normals[v]), object.modelView, object.normalMatrix},
-            material, ambient, lights, ReferenceShading::Phong);
+        const ReferenceSample vertex =
+            shadeReferenceHit({glm::dvec3(mesh.positions[v]), glm::dvec3(mesh.normals[v]),
+                               object.modelView, object.normalMatrix},
+                              material, ambient, lights, ReferenceShading::Phong);
         out.color += hit.barycentric[k] * vertex.color;
         out.specular += hit.barycentric[k] * vertex.specular;
     }
@@ -28,7 +30,8 @@ ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHi
 
 } // namespace
 
-ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const ReferenceShader &shader)
+ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
+                              const ReferenceShader &shader)
 {
     const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
     ReferenceImage image(hits.width, hits.height);
@@ -39,10 +42,11 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const R
                 continue;
             const SceneHits::Object &object = hits.objects[std::size_t(hit.object)];
             const Material &material = scene.objects[std::size_t(hit.object)].material;
-            const ReferenceSample sample = shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0
+            const ReferenceSample sample =
+                shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0
                 ? shadeVertices(object, hit, material, scene.ambient, lights)
-                : shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix}, material,
-                                    scene.ambient, lights, shader);
+                : shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
+                                    material, scene.ambient, lights, shader);
             const std::size_t i = image.index(x, y);
             image.coverage[i] = 1;
             image.depth[i] = hit.depth;

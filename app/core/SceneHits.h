@@ -40,20 +40,26 @@ struct SceneHits {
     std::vector<Object> objects;    // one per scene object
     std::vector<ReferenceHit> hits; // row-major, row 0 at the top
 
-    const ReferenceHit &at(int x, int y) const { return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const ReferenceHit &at(int x, int y) const
+    {
+        return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
 };
 
 // raycastSceneMeshes()'s rays (MeshRaycaster.h: same inputs, conventions,
 // errors, progress and cancelling), keeping the hits instead of shading them.
-Result<SceneHits> castSceneHits(const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                                int width, int height, const std::function<bool(double)> &progress = {});
+Result<SceneHits> castSceneHits(const Scene &scene,
+                                const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                                int width, int height,
+                                const std::function<bool(double)> &progress = {});
 
 // The reference image of `hits` shaded with `shader` (rows in parallel). The
 // gouraud mistake shades the three vertices of the hit triangle and
 // interpolates their colours with the hit's barycentric weights (which is
 // what a perspective-correct varying does); on an analytic surface, which
 // has no vertices, it shades exactly.
-ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene, const ReferenceShader &shader);
+ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
+                              const ReferenceShader &shader);
 
 // The illumination equation's inputs at one hit, as the exact vertex stage
 // computes them: camera-space point and (normalised) normal.

@@ -61,7 +61,8 @@ private:
     bool readLights(const QJsonValue &value, const QString &path, std::vector<PointLight> &out);
     bool readShading(const QJsonValue &value, const QString &path, ShadingMethod &out);
     bool readShaderFiles(const QJsonValue &value, const QString &path, Scene &out);
-    bool readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out);
+    bool readObjectList(const QJsonValue &value, const QString &path,
+                        std::vector<SceneObject> &out);
     bool readSingleObject(const QJsonObject &root, SceneObject &out);
     bool readNormals(const QJsonValue &value, const QString &path, NormalOptions &out);
     bool readUniforms(const QJsonValue &value, const QString &path, scenejson::UserUniforms &out);
@@ -113,7 +114,8 @@ bool SceneReader::readNumber(const QJsonValue &value, const QString &path, doubl
     if (value.isUndefined())
         return true;
     if (const auto literal = overflowLiteral(value))
-        return fail(path, QStringLiteral("must be a finite number (got %1, out of range)").arg(*literal));
+        return fail(path,
+                    QStringLiteral("must be a finite number (got %1, out of range)").arg(*literal));
     if (!value.isDouble())
         return fail(path, QStringLiteral("expected a number (got %1)").arg(describeType(value)));
     // Qt versions differ on whether 1e999 is a syntax error or inf; refuse inf here too.
@@ -150,7 +152,8 @@ bool SceneReader::readColor(const QJsonValue &value, const QString &path, glm::d
         return false;
     for (int i = 0; i < 3; ++i)
         if (color[i] < 0.0)
-            return fail(indexPath(path, i), QStringLiteral("must be >= 0 (got %1)").arg(number(color[i])));
+            return fail(indexPath(path, i),
+                        QStringLiteral("must be >= 0 (got %1)").arg(number(color[i])));
     out = color;
     return true;
 }
@@ -162,7 +165,8 @@ bool SceneReader::readMesh(const QJsonValue &value, const QString &path, QString
     if (!value.isString())
         return fail(path, QStringLiteral("expected a string (got %1)").arg(describeType(value)));
     if (value.toString().isEmpty())
-        return fail(path, QStringLiteral("must not be empty (give a file path or \"builtin:sphere\")"));
+        return fail(path,
+                    QStringLiteral("must not be empty (give a file path or \"builtin:sphere\")"));
     out = value.toString();
     return true;
 }
@@ -176,8 +180,10 @@ bool SceneReader::readTransform(const QJsonValue &value, const QString &path, Tr
         return false;
     warnUnknownKeys(object, path, {"translate"_L1, "rotate_deg"_L1, "scale"_L1});
     Transform transform;
-    if (!readVec3(object.value("translate"_L1), childPath(path, "translate"_L1), transform.translate)
-        || !readVec3(object.value("rotate_deg"_L1), childPath(path, "rotate_deg"_L1), transform.rotateDeg)
+    if (!readVec3(object.value("translate"_L1), childPath(path, "translate"_L1),
+                  transform.translate)
+        || !readVec3(object.value("rotate_deg"_L1), childPath(path, "rotate_deg"_L1),
+                     transform.rotateDeg)
         || !readVec3(object.value("scale"_L1), childPath(path, "scale"_L1), transform.scale))
         return false;
     // A zero scale collapses the mesh and makes the normal matrix singular.
@@ -200,7 +206,8 @@ bool SceneReader::readMaterial(const QJsonValue &value, const QString &path, Mat
     if (!readColor(object.value("ka"_L1), childPath(path, "ka"_L1), material.ka)
         || !readColor(object.value("kd"_L1), childPath(path, "kd"_L1), material.kd)
         || !readColor(object.value("ks"_L1), childPath(path, "ks"_L1), material.ks)
-        || !readNumber(object.value("shininess"_L1), childPath(path, "shininess"_L1), material.shininess))
+        || !readNumber(object.value("shininess"_L1), childPath(path, "shininess"_L1),
+                       material.shininess))
         return false;
     // pow(cos, n) with n <= 0 is 1 (or inf) for surfaces facing away from the highlight.
     if (material.shininess <= 0.0)
@@ -217,7 +224,8 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path, {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1});
+    warnUnknownKeys(object, path,
+                    {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1});
     Camera camera;
     if (!readVec3(object.value("eye"_L1), childPath(path, "eye"_L1), camera.eye)
         || !readVec3(object.value("target"_L1), childPath(path, "target"_L1), camera.target)
@@ -235,10 +243,12 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
 bool SceneReader::validateCamera(const Camera &camera, const QString &path)
 {
     if (!(camera.fovDeg > 0.0 && camera.fovDeg < 180.0))
-        return fail(childPath(path, "fov_deg"_L1),
-                    QStringLiteral("must be in (0, 180) degrees (got %1)").arg(number(camera.fovDeg)));
+        return fail(
+            childPath(path, "fov_deg"_L1),
+            QStringLiteral("must be in (0, 180) degrees (got %1)").arg(number(camera.fovDeg)));
     if (camera.nearPlane <= 0.0)
-        return fail(childPath(path, "near"_L1), QStringLiteral("must be > 0 (got %1)").arg(number(camera.nearPlane)));
+        return fail(childPath(path, "near"_L1),
+                    QStringLiteral("must be > 0 (got %1)").arg(number(camera.nearPlane)));
     if (camera.farPlane <= camera.nearPlane)
         return fail(childPath(path, "far"_L1),
                     QStringLiteral("must be greater than near (%1) (got %2)")
@@ -260,8 +270,9 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path,
-                    {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1, "name"_L1, "enabled"_L1});
+    warnUnknownKeys(
+        object, path,
+        {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1, "name"_L1, "enabled"_L1});
     // A light with no position would silently sit at the origin, inside the object.
     if (!object.contains("position"_L1))
         return fail(childPath(path, "position"_L1), QStringLiteral("required field missing"));
@@ -275,7 +286,8 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     // f_att = 1 / (c1 + c2·d + c3·d²) must not divide by zero at any distance.
     const double sum = light.attenuation.x + light.attenuation.y + light.attenuation.z;
     if (sum <= 0.0)
-        return fail(attenuationPath, QStringLiteral("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
+        return fail(attenuationPath,
+                    QStringLiteral("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
     if (const QJsonValue name = object.value("name"_L1); !name.isUndefined()) {
         if (!name.isString())
             return fail(childPath(path, "name"_L1),
@@ -284,15 +296,17 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     }
     if (const QJsonValue enabled = object.value("enabled"_L1); !enabled.isUndefined()) {
         if (!enabled.isBool())
-            return fail(childPath(path, "enabled"_L1),
-                        QStringLiteral("expected true or false (got %1)").arg(describeType(enabled)));
+            return fail(
+                childPath(path, "enabled"_L1),
+                QStringLiteral("expected true or false (got %1)").arg(describeType(enabled)));
         light.enabled = enabled.toBool();
     }
     out = light;
     return true;
 }
 
-bool SceneReader::readLights(const QJsonValue &value, const QString &path, std::vector<PointLight> &out)
+bool SceneReader::readLights(const QJsonValue &value, const QString &path,
+                             std::vector<PointLight> &out)
 {
     if (value.isUndefined())
         return true;
@@ -301,7 +315,10 @@ bool SceneReader::readLights(const QJsonValue &value, const QString &path, std::
     const QJsonArray array = value.toArray();
     // The shaders have fixed-size light arrays.
     if (array.size() > kMaxLights)
-        return fail(path, QStringLiteral("at most %1 lights are supported (got %2)").arg(kMaxLights).arg(array.size()));
+        return fail(path,
+                    QStringLiteral("at most %1 lights are supported (got %2)")
+                        .arg(kMaxLights)
+                        .arg(array.size()));
     std::vector<PointLight> lights(array.size());
     for (qsizetype i = 0; i < array.size(); ++i)
         if (!readLight(array.at(i), indexPath(path, i), lights[i]))
@@ -341,9 +358,12 @@ bool SceneReader::readShaderFiles(const QJsonValue &value, const QString &path, 
             continue;
         const QString filePath = childPath(path, keys[i]);
         if (!file.isString())
-            return fail(filePath, QStringLiteral("expected a string (got %1)").arg(describeType(file)));
+            return fail(filePath,
+                        QStringLiteral("expected a string (got %1)").arg(describeType(file)));
         if (file.toString().isEmpty())
-            return fail(filePath, QStringLiteral("must not be empty (give a shader file path, or leave the key out)"));
+            return fail(filePath,
+                        QStringLiteral(
+                            "must not be empty (give a shader file path, or leave the key out)"));
         files[i] = file.toString();
     }
     out.vertexShader = files[0];
@@ -351,7 +371,8 @@ bool SceneReader::readShaderFiles(const QJsonValue &value, const QString &path, 
     return true;
 }
 
-bool SceneReader::readObjectList(const QJsonValue &value, const QString &path, std::vector<SceneObject> &out)
+bool SceneReader::readObjectList(const QJsonValue &value, const QString &path,
+                                 std::vector<SceneObject> &out)
 {
     if (!value.isArray())
         return fail(path, QStringLiteral("expected an array (got %1)").arg(describeType(value)));
@@ -364,12 +385,17 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path, s
         QJsonObject object;
         if (!readObject(array.at(i), objectPath, object))
             return false;
-        warnUnknownKeys(object, objectPath, {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1});
+        warnUnknownKeys(object, objectPath,
+                        {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1});
         if (!readMesh(object.value("mesh"_L1), childPath(objectPath, "mesh"_L1), objects[i].mesh)
-            || !readTransform(object.value("transform"_L1), childPath(objectPath, "transform"_L1), objects[i].transform)
-            || !readMaterial(object.value("material"_L1), childPath(objectPath, "material"_L1), objects[i].material)
-            || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1), objects[i].normals)
-            || !readDetail(object.value("detail"_L1), childPath(objectPath, "detail"_L1), objects[i].detail))
+            || !readTransform(object.value("transform"_L1), childPath(objectPath, "transform"_L1),
+                              objects[i].transform)
+            || !readMaterial(object.value("material"_L1), childPath(objectPath, "material"_L1),
+                             objects[i].material)
+            || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1),
+                            objects[i].normals)
+            || !readDetail(object.value("detail"_L1), childPath(objectPath, "detail"_L1),
+                           objects[i].detail))
             return false;
     }
     out = std::move(objects);
@@ -390,7 +416,8 @@ bool SceneReader::readNormals(const QJsonValue &value, const QString &path, Norm
     return take(scenejson::readNormalOptions(value, path, out), out);
 }
 
-bool SceneReader::readUniforms(const QJsonValue &value, const QString &path, scenejson::UserUniforms &out)
+bool SceneReader::readUniforms(const QJsonValue &value, const QString &path,
+                               scenejson::UserUniforms &out)
 {
     return take(scenejson::readUserUniforms(value, path), out);
 }
@@ -418,14 +445,17 @@ bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> 
     const bool hasMesh = root.contains("mesh"_L1);
     const bool hasObjects = root.contains("objects"_L1);
     if (hasMesh && hasObjects)
-        return fail(QStringLiteral("objects"), QStringLiteral("cannot be combined with \"mesh\" (use one form)"));
+        return fail(QStringLiteral("objects"),
+                    QStringLiteral("cannot be combined with \"mesh\" (use one form)"));
     if (!hasMesh && !hasObjects)
-        return fail(QStringLiteral("mesh"), QStringLiteral("required field missing (or give \"objects\")"));
+        return fail(QStringLiteral("mesh"),
+                    QStringLiteral("required field missing (or give \"objects\")"));
     if (hasObjects) {
         // Top-level transform/material belong to the single-object form only.
         for (const auto key : {"transform"_L1, "material"_L1, "normals"_L1, "detail"_L1})
             if (root.contains(key))
-                m_warnings << QString(key) + QStringLiteral(": ignored with \"objects\" (give each object its own)");
+                m_warnings << QString(key)
+                        + QStringLiteral(": ignored with \"objects\" (give each object its own)");
         return readObjectList(root.value("objects"_L1), QStringLiteral("objects"), out);
     }
     SceneObject object;
@@ -444,8 +474,9 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     }
     const QJsonObject root = doc.object();
     warnUnknownKeys(root, {},
-                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1, "camera"_L1,
-                     "ambient"_L1, "lights"_L1, "shading"_L1, "background"_L1, "shaders"_L1, "uniforms"_L1});
+                    {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
+                     "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
+                     "background"_L1, "shaders"_L1, "uniforms"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readObjects(root, scene.objects)
@@ -482,7 +513,8 @@ SceneLoadResult loadSceneFile(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         SceneLoadResult result;
-        result.error = QStringLiteral("%1: cannot read scene file (%2)").arg(path, file.errorString());
+        result.error =
+            QStringLiteral("%1: cannot read scene file (%2)").arg(path, file.errorString());
         return result;
     }
     return parseScene(file.readAll(), QFileInfo(path).absolutePath());

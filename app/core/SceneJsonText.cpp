@@ -47,7 +47,8 @@ std::pair<qsizetype, qsizetype> literalBefore(const QByteArray &text, qsizetype 
 // literal is illegal for another reason (e.g. "01"), which stays an error.
 bool rewriteOutOfRangeLiteral(QByteArray &text, qsizetype offset, std::vector<Rewrite> &rewrites)
 {
-    static const QRegularExpression jsonNumber(QStringLiteral("^-?(0|[1-9][0-9]*)(\\.[0-9]+)?([eE][+-]?[0-9]+)?$"));
+    static const QRegularExpression jsonNumber(
+        QStringLiteral("^-?(0|[1-9][0-9]*)(\\.[0-9]+)?([eE][+-]?[0-9]+)?$"));
     const auto [begin, end] = literalBefore(text, offset);
     const QByteArray literal = text.mid(begin, end - begin);
     if (literal.isEmpty() || !jsonNumber.match(QString::fromLatin1(literal)).hasMatch())
@@ -100,10 +101,12 @@ Result<QJsonDocument> parseJsonText(const QByteArray &json)
         QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
         if (parseError.error == QJsonParseError::NoError)
             return doc;
-        if (parseError.error == QJsonParseError::IllegalNumber && int(rewrites.size()) < kMaxRewrites
+        if (parseError.error == QJsonParseError::IllegalNumber
+            && int(rewrites.size()) < kMaxRewrites
             && rewriteOutOfRangeLiteral(text, parseError.offset, rewrites))
             continue;
-        return fail(syntaxError(json, originalOffset(parseError.offset, rewrites), parseError.errorString()));
+        return fail(syntaxError(json, originalOffset(parseError.offset, rewrites),
+                                parseError.errorString()));
     }
 }
 
@@ -133,7 +136,8 @@ QString describeType(const QJsonValue &value)
     return QStringLiteral("nothing");
 }
 
-Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions out)
+Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path,
+                                        NormalOptions out)
 {
     if (value.isUndefined())
         return out;
@@ -142,7 +146,8 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     };
     const auto readMethod = [&](const QJsonValue &v, const QString &where) -> Result<> {
         if (!v.isString())
-            return located(where, QStringLiteral("expected a string (got %1)").arg(describeType(v)));
+            return located(where,
+                           QStringLiteral("expected a string (got %1)").arg(describeType(v)));
         const auto method = normalMethodFromName(v.toString());
         if (!method)
             return located(where,
@@ -157,13 +162,16 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
         return out;
     }
     if (!value.isObject())
-        return located(path, QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
+        return located(
+            path,
+            QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it)
         if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
             return located(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
     if (object.contains(QLatin1String("method")))
-        if (const Result<> method = readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method"));
+        if (const Result<> method =
+                readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method"));
             !method)
             return fail(method.error());
     const QJsonValue crease = object.value(QLatin1String("crease_deg"));
@@ -173,10 +181,13 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     }
     const QString creasePath = path + QStringLiteral(".crease_deg");
     if (!crease.isDouble() || overflowLiteral(crease))
-        return located(creasePath, QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
+        return located(
+            creasePath,
+            QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
     const double degrees = crease.toDouble();
     if (!(degrees >= 0.0 && degrees <= 180.0))
-        return located(creasePath, QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
+        return located(creasePath,
+                       QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
     out.creaseAngleDeg = degrees;
     return out;
 }
@@ -196,7 +207,8 @@ namespace {
 Result<double> readUniformNumber(const QJsonValue &v, const QString &where)
 {
     if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble()))
-        return fail(where + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v)));
+        return fail(where
+                    + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v)));
     return v.toDouble();
 }
 
@@ -207,7 +219,9 @@ Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &pa
     if (value.isUndefined())
         return UserUniforms{};
     if (!value.isObject())
-        return fail(path + QStringLiteral(": expected an object of name: value (got %1)").arg(describeType(value)));
+        return fail(path
+                    + QStringLiteral(": expected an object of name: value (got %1)")
+                          .arg(describeType(value)));
     const QJsonObject object = value.toObject();
     UserUniforms read;
     for (auto it = object.begin(); it != object.end(); ++it) {
@@ -218,9 +232,12 @@ Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &pa
         if (it.value().isArray()) {
             const QJsonArray array = it.value().toArray();
             if (array.isEmpty() || array.size() > 16)
-                return fail(where + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size()));
+                return fail(
+                    where
+                    + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size()));
             for (qsizetype i = 0; i < array.size(); ++i) {
-                const Result<double> v = readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i));
+                const Result<double> v =
+                    readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i));
                 if (!v)
                     return fail(v.error());
                 values.push_back(*v);

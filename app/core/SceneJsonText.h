@@ -33,7 +33,8 @@ QString describeType(const QJsonValue &value);
 // The "normals" field of an object: "auto" | "flat" | "average" | "area" |
 // "angle", or {"method": <one of those>, "crease_deg": <0..180>}: `defaults`
 // with what the field sets, or the failure "<path>: <reason>".
-Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path, NormalOptions defaults);
+Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &path,
+                                        NormalOptions defaults);
 QJsonValue normalOptionsJson(const NormalOptions &options);
 
 // The "uniforms" field: {"name": number | [numbers (1..16)], ...}, values of

@@ -41,9 +41,12 @@ QJsonObject materialJson(const Material &material)
 QJsonObject cameraJson(const Camera &camera)
 {
     return QJsonObject{
-        {QStringLiteral("eye"), vec3Json(camera.eye)}, {QStringLiteral("target"), vec3Json(camera.target)},
-        {QStringLiteral("up"), vec3Json(camera.up)},   {QStringLiteral("fov_deg"), camera.fovDeg},
-        {QStringLiteral("near"), camera.nearPlane},    {QStringLiteral("far"), camera.farPlane},
+        {QStringLiteral("eye"), vec3Json(camera.eye)},
+        {QStringLiteral("target"), vec3Json(camera.target)},
+        {QStringLiteral("up"), vec3Json(camera.up)},
+        {QStringLiteral("fov_deg"), camera.fovDeg},
+        {QStringLiteral("near"), camera.nearPlane},
+        {QStringLiteral("far"), camera.farPlane},
     };
 }
 
@@ -125,13 +128,15 @@ Result<> saveSceneFile(const Scene &scene, const QString &path)
 
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+        return fail(
+            QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
     if (file.write(json) != json.size()) {
         file.cancelWriting();
         return fail(QStringLiteral("%1: write failed (%2)").arg(path, file.errorString()));
     }
     if (!file.commit())
-        return fail(QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+        return fail(
+            QStringLiteral("%1: cannot write scene file (%2)").arg(path, file.errorString()));
     return {};
 }
 

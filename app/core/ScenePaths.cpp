@@ -26,7 +26,8 @@ QString pathFromScene(const QString &file, const QString &sceneFilePath)
 {
     const QString absolute = QFileInfo(file).absoluteFilePath();
     const QString relative = QFileInfo(sceneFilePath).absoluteDir().relativeFilePath(absolute);
-    return relative.startsWith(QLatin1String("..")) || QDir::isAbsolutePath(relative) ? absolute : relative;
+    return relative.startsWith(QLatin1String("..")) || QDir::isAbsolutePath(relative) ? absolute
+                                                                                      : relative;
 }
 
 } // namespace phonglab

@@ -20,9 +20,9 @@ std::vector<ShaderMistake> allMistakes()
 
 } // namespace
 
-Result<CheckReference> makeCheckReference(const Scene &scene,
-                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                          int height, const std::function<bool(double)> &progress)
+Result<CheckReference> makeCheckReference(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, const std::function<bool(double)> &progress)
 {
     // Casting is most of the work; shading each mistake is a fraction of it.
     const auto castProgress = [&](double f) { return !progress || progress(0.7 * f); };
@@ -33,7 +33,8 @@ Result<CheckReference> makeCheckReference(const Scene &scene,
     out.shader = idealShadingFor(scene.shading);
     out.background = scene.background;
     out.exact = shadeSceneHits(*hits, scene, out.shader);
-    Result<std::vector<std::uint8_t>> compared = awayFromSilhouettes(out.exact, scene, objectMeshes, kCheckBandPx);
+    Result<std::vector<std::uint8_t>> compared =
+        awayFromSilhouettes(out.exact, scene, objectMeshes, kCheckBandPx);
     if (!compared)
         return fail(compared.error());
     out.compared = std::move(*compared);
@@ -45,29 +46,34 @@ Result<CheckReference> makeCheckReference(const Scene &scene,
             if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size())))
                 return fail(QStringLiteral("cancelled"));
             const ReferenceShader shader(ReferenceShading::Phong, mistakes[m]);
-            out.mistaken.emplace_back(mistakes[m], shadeSceneHits(*hits, scene, shader).toImage(out.background));
+            out.mistaken.emplace_back(mistakes[m],
+                                      shadeSceneHits(*hits, scene, shader).toImage(out.background));
         }
     }
     out.exactImage = out.exact.toImage(out.background);
-    out.undetectable =
-        diagnoseMistakes(out.exactImage, out.exactImage, out.mistaken, out.compared, kDefaultCheckToleranceSteps)
-            .undetectable;
+    out.undetectable = diagnoseMistakes(out.exactImage, out.exactImage, out.mistaken, out.compared,
+                                        kDefaultCheckToleranceSteps)
+                           .undetectable;
     out.hits = std::move(*hits);
     return out;
 }
 
 double CheckReport::badFraction() const
 {
-    return comparison.pixelsCompared > 0 ? double(badPixels) / double(comparison.pixelsCompared) : 0.0;
+    return comparison.pixelsCompared > 0 ? double(badPixels) / double(comparison.pixelsCompared)
+                                         : 0.0;
 }
 
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps)
 {
     CheckReport report;
     report.toleranceSteps = toleranceSteps;
-    report.comparison = compareOutsideBand(yours, reference.exact, reference.background, 0, &reference.compared).error;
+    report.comparison =
+        compareOutsideBand(yours, reference.exact, reference.background, 0, &reference.compared)
+            .error;
     const std::vector<int> errors = checkErrorSteps(yours, reference);
-    report.badPixels = std::count_if(errors.begin(), errors.end(), [&](int e) { return e > toleranceSteps; });
+    report.badPixels =
+        std::count_if(errors.begin(), errors.end(), [&](int e) { return e > toleranceSteps; });
     if (report.comparison.pixelsCompared > 0) {
         const QPoint w = report.comparison.worstPixel;
         report.worstObject = reference.hits.at(w.x(), w.y()).object;
@@ -75,12 +81,13 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
     if (!report.comparable())
         return report;
     if (!report.passed())
-        report.diagnosis =
-            diagnoseMistakes(yours, reference.exactImage, reference.mistaken, reference.compared, toleranceSteps);
+        report.diagnosis = diagnoseMistakes(yours, reference.exactImage, reference.mistaken,
+                                            reference.compared, toleranceSteps);
     else if (toleranceSteps != kDefaultCheckToleranceSteps)
-        report.diagnosis.undetectable = diagnoseMistakes(reference.exactImage, reference.exactImage, reference.mistaken,
-                                                         reference.compared, toleranceSteps)
-                                            .undetectable;
+        report.diagnosis.undetectable =
+            diagnoseMistakes(reference.exactImage, reference.exactImage, reference.mistaken,
+                             reference.compared, toleranceSteps)
+                .undetectable;
     else
         report.diagnosis.undetectable = reference.undetectable;
     return report;
@@ -102,7 +109,8 @@ std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &re
             continue;
         int worst = 0;
         for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(int(yours.pixel(i)[c]) - encodeChannel(exact.color[i][c])));
+            worst = std::max(worst,
+                             std::abs(int(yours.pixel(i)[c]) - encodeChannel(exact.color[i][c])));
         out[i] = worst;
     }
     return out;
@@ -112,7 +120,8 @@ namespace {
 
 QString psnrText(const ImageComparison &c)
 {
-    return std::isinf(c.psnr) ? QStringLiteral("PSNR ∞") : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+    return std::isinf(c.psnr) ? QStringLiteral("PSNR ∞")
+                              : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
 }
 
 } // namespace
@@ -126,7 +135,8 @@ QString checkStatusLine(const CheckReport &report)
     if (d.unexplained() || d.findings.empty())
         return QStringLiteral("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
     const MistakeFinding &top = d.findings.front();
-    QString line = QStringLiteral("✗ %1 — %2: %3").arg(psnr, shaderMistakeKey(top.key), shaderMistakeSummary(top.key));
+    QString line = QStringLiteral("✗ %1 — %2: %3")
+                       .arg(psnr, shaderMistakeKey(top.key), shaderMistakeSummary(top.key));
     for (ShaderMistake m : top.also)
         line += QStringLiteral(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
     return line;
@@ -137,7 +147,9 @@ QString checkSummary(const CheckReport &report)
     const ImageComparison &c = report.comparison;
     const QString psnr = psnrText(c);
     if (report.passed())
-        return QStringLiteral("✓ matches the exact image (%1, max %2/255)").arg(psnr).arg(c.maxError);
+        return QStringLiteral("✓ matches the exact image (%1, max %2/255)")
+            .arg(psnr)
+            .arg(c.maxError);
     QString line = QStringLiteral("✗ %1, max %2/255, %3 % of pixels off")
                        .arg(psnr)
                        .arg(c.maxError)

@@ -39,9 +39,9 @@ struct CheckReference {
 // objectMeshes has no null entry here), so a correct shader differs from the
 // reference by float precision and rasterisation only. progress and
 // cancelling as in castSceneHits().
-Result<CheckReference> makeCheckReference(const Scene &scene,
-                                          const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
-                                          int height, const std::function<bool(double)> &progress = {});
+Result<CheckReference> makeCheckReference(
+    const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
+    int height, const std::function<bool(double)> &progress = {});
 
 struct CheckReport {
     int toleranceSteps = kDefaultCheckToleranceSteps;

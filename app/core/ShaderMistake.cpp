@@ -23,40 +23,49 @@ constexpr std::array kKeys = {
 };
 
 constexpr std::array kRules = {
-    std::pair{ShaderMistake::NormalMatrix,
-              "the normal N: it must be transformed by the inverse transpose of the model-view matrix, "
-              "not by the model-view or model matrix (which bends it under non-uniform scale)"},
+    std::pair{
+        ShaderMistake::NormalMatrix,
+        "the normal N: it must be transformed by the inverse transpose of the model-view matrix, "
+        "not by the model-view or model matrix (which bends it under non-uniform scale)"},
     std::pair{ShaderMistake::Unnormalized,
               "the normal N: it must be normalised in the fragment shader, after interpolation has "
               "shortened it (and L and V must be unit length too)"},
     std::pair{ShaderMistake::LightSpace,
               "the light vector L: the light is placed in world coordinates and must be moved into "
               "camera coordinates by the view matrix before L = light - P"},
-    std::pair{ShaderMistake::HomogeneousW,
-              "the position P: a point is transformed with w = 1 (a direction with w = 0); with w = 0 "
-              "the translation is lost"},
-    std::pair{ShaderMistake::ReflectIncident,
-              "the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which "
-              "points from the light to the surface"},
-    std::pair{ShaderMistake::ViewVector,
-              "the specular term: V must point from the surface to the eye, V = normalize(-P) in camera "
-              "coordinates"},
-    std::pair{ShaderMistake::Attenuation,
-              "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's diffuse "
-              "and specular parts, with d the distance from the surface to the light"},
-    std::pair{ShaderMistake::NegativeLight,
-              "the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds "
-              "nothing, it does not darken"},
+    std::pair{
+        ShaderMistake::HomogeneousW,
+        "the position P: a point is transformed with w = 1 (a direction with w = 0); with w = 0 "
+        "the translation is lost"},
+    std::pair{
+        ShaderMistake::ReflectIncident,
+        "the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which "
+        "points from the light to the surface"},
+    std::pair{
+        ShaderMistake::ViewVector,
+        "the specular term: V must point from the surface to the eye, V = normalize(-P) in camera "
+        "coordinates"},
+    std::pair{
+        ShaderMistake::Attenuation,
+        "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's diffuse "
+        "and specular parts, with d the distance from the surface to the light"},
+    std::pair{
+        ShaderMistake::NegativeLight,
+        "the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds "
+        "nothing, it does not darken"},
     std::pair{ShaderMistake::BackfaceSpecular,
               "the specular term: where N·L <= 0 the light is behind the surface and there is no "
               "highlight either"},
-    std::pair{ShaderMistake::Ambient, "the ambient term Ia·ka must be added once, outside the sum over the lights"},
+    std::pair{ShaderMistake::Ambient,
+              "the ambient term Ia·ka must be added once, outside the sum over the lights"},
     std::pair{ShaderMistake::Gouraud,
-              "where the equation is evaluated: per fragment, with the interpolated normal; evaluated per "
+              "where the equation is evaluated: per fragment, with the interpolated normal; "
+              "evaluated per "
               "vertex and interpolated, highlights smear and vanish between vertices"},
 };
 constexpr std::array kSummaries = {
-    std::pair{ShaderMistake::NormalMatrix, "N moved by the model-view matrix, not its inverse transpose"},
+    std::pair{ShaderMistake::NormalMatrix,
+              "N moved by the model-view matrix, not its inverse transpose"},
     std::pair{ShaderMistake::Unnormalized, "N not normalised after interpolation"},
     std::pair{ShaderMistake::LightSpace, "the light's world position used as a camera-space one"},
     std::pair{ShaderMistake::HomogeneousW, "the position moved with w = 0"},

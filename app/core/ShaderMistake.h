@@ -10,14 +10,14 @@ namespace phonglab {
 // illumination equation broken in one way. `phonglab check` names them by
 // their keys, which scripts rely on: stable, never renamed.
 enum class ShaderMistake {
-    NormalMatrix,     // "normal-matrix": N moved by the model-view (or model) matrix, not its inverse transpose
-    Unnormalized,     // "unnormalized": N not normalised in the fragment shader after interpolation
-    LightSpace,       // "light-space": the light's world position used as if in camera coordinates
-    HomogeneousW,     // "homogeneous-w": a point moved with w = 0 (translation lost)
-    ReflectIncident,  // "reflect-incident": reflect(L, N) instead of reflect(-L, N)
-    ViewVector,       // "view-vector": V pointing away from the eye
-    Attenuation,      // "attenuation": f_att left out
-    NegativeLight,    // "negative-light": max(0, N·L) missing, so N·L < 0 darkens
+    NormalMatrix,    // "normal-matrix": N moved by model-view (or model), not its inverse transpose
+    Unnormalized,    // "unnormalized": N not normalised in the fragment shader after interpolation
+    LightSpace,      // "light-space": the light's world position used as if in camera coordinates
+    HomogeneousW,    // "homogeneous-w": a point moved with w = 0 (translation lost)
+    ReflectIncident, // "reflect-incident": reflect(L, N) instead of reflect(-L, N)
+    ViewVector,      // "view-vector": V pointing away from the eye
+    Attenuation,     // "attenuation": f_att left out
+    NegativeLight,   // "negative-light": max(0, N·L) missing, so N·L < 0 darkens
     BackfaceSpecular, // "backface-specular": a highlight where N·L <= 0
     Ambient,          // "ambient": Ia·ka left out
     Gouraud,          // "gouraud": the equation evaluated per vertex and interpolated

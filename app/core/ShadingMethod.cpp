@@ -9,8 +9,10 @@ namespace phonglab {
 
 namespace {
 constexpr std::array kMethods = {
-    std::pair{ShadingMethod::Phong, "phong"},     std::pair{ShadingMethod::BlinnPhong, "blinn-phong"},
-    std::pair{ShadingMethod::Gouraud, "gouraud"}, std::pair{ShadingMethod::Flat, "flat"},
+    std::pair{ShadingMethod::Phong, "phong"},
+    std::pair{ShadingMethod::BlinnPhong, "blinn-phong"},
+    std::pair{ShadingMethod::Gouraud, "gouraud"},
+    std::pair{ShadingMethod::Flat, "flat"},
     std::pair{ShadingMethod::Normals, "normals"},
 };
 } // namespace

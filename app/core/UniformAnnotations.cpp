@@ -65,7 +65,8 @@ std::optional<UniformDeclaration> parseDeclarator(const QString &type, const QSt
 
 void parseUniformAnnotations(const QString &comment, UniformDeclaration &declaration)
 {
-    const QStringList words = comment.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    const QStringList words =
+        comment.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
     for (qsizetype i = 0; i < words.size(); ++i) {
         const QString &word = words[i];
         if (word == QLatin1String("@color") || word == QLatin1String("@colour")) {

@@ -8,8 +8,9 @@ namespace phonglab {
 UniformOwner uniformOwner(const QString &name)
 {
     // Must match what Renderer::drawObjects / uploadLights set.
-    static const QStringList renderer = {QStringLiteral("modelViewMatrix"), QStringLiteral("normalMatrix"),
-                                         QStringLiteral("projectionMatrix"), QStringLiteral("viewMatrix")};
+    static const QStringList renderer = {
+        QStringLiteral("modelViewMatrix"), QStringLiteral("normalMatrix"),
+        QStringLiteral("projectionMatrix"), QStringLiteral("viewMatrix")};
     static const QStringList scene = {QStringLiteral("Ia"),
                                       QStringLiteral("ka"),
                                       QStringLiteral("kd"),
@@ -30,9 +31,11 @@ UniformOwner uniformOwner(const QString &name)
 QString uniformOwnerNote(UniformOwner owner)
 {
     switch (owner) {
-    case UniformOwner::Renderer: return QCoreApplication::translate("UniformOwner", "set by the renderer");
+    case UniformOwner::Renderer:
+        return QCoreApplication::translate("UniformOwner", "set by the renderer");
     case UniformOwner::Scene:
-        return QCoreApplication::translate("UniformOwner", "set by the scene (Material/Lights docks)");
+        return QCoreApplication::translate("UniformOwner",
+                                           "set by the scene (Material/Lights docks)");
     case UniformOwner::User: break;
     }
     return {};

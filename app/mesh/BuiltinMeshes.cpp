@@ -36,7 +36,8 @@ MeshData makeUvSphere(int slices, int stacks)
         const double ringRadius = (r == 0 || r == stacks) ? 0.0 : std::sin(theta);
         for (int c = 0; c <= slices; ++c) {
             const double phi = 2.0 * pi * (c % slices) / slices;
-            const glm::dvec3 p(ringRadius * std::sin(phi), std::cos(theta), ringRadius * std::cos(phi));
+            const glm::dvec3 p(ringRadius * std::sin(phi), std::cos(theta),
+                               ringRadius * std::cos(phi));
             mesh.positions.emplace_back(p);
             mesh.normals.emplace_back(p);
         }
@@ -80,16 +81,19 @@ MeshData makeCube()
         for (float sign : {1.0f, -1.0f}) {
             glm::vec3 n(0.0f);
             n[axis] = sign;
-            // Two in-face directions with u × v = n, so corners run counter-clockwise seen from outside.
+            // Two in-face directions with u × v = n, so corners run
+            // counter-clockwise seen from outside.
             glm::vec3 u(0.0f), v(0.0f);
             u[(axis + 1) % 3] = 1.0f;
             v[(axis + 2) % 3] = sign;
             const auto base = std::uint32_t(mesh.positions.size());
-            for (auto [a, b] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
+            for (auto [a, b] :
+                 {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
                 mesh.positions.push_back(n + a * u + b * v);
                 mesh.normals.push_back(n);
             }
-            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+            mesh.indices.insert(mesh.indices.end(),
+                                {base, base + 1, base + 2, base, base + 2, base + 3});
         }
     }
     return mesh;
@@ -112,7 +116,8 @@ std::optional<BuiltinTessellation> builtinTessellation(const QString &spec, doub
         return std::nullopt;
     // Both counts scale by sqrt(detail), so the triangle count scales by detail.
     const double scale = (detail > 0.0 && detail <= 1.0) ? std::sqrt(detail) : 1.0;
-    const BuiltinTessellation full = sphere ? BuiltinTessellation{256, 128} : BuiltinTessellation{192, 96};
+    const BuiltinTessellation full =
+        sphere ? BuiltinTessellation{256, 128} : BuiltinTessellation{192, 96};
     return BuiltinTessellation{std::max(kMinBuiltinColumns, int(std::lround(full.columns * scale))),
                                std::max(kMinBuiltinRows, int(std::lround(full.rows * scale)))};
 }

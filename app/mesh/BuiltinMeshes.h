@@ -40,7 +40,8 @@ struct BuiltinTessellation {
     int rows = 0;    // sphere: stacks; torus: tube segments
     bool operator==(const BuiltinTessellation &) const = default;
 };
-std::optional<BuiltinTessellation> builtinTessellation(const QString &spec, double detail); // sphere, torus only
+std::optional<BuiltinTessellation> builtinTessellation(const QString &spec,
+                                                       double detail); // sphere, torus only
 std::optional<MeshData> builtinMesh(const QString &spec, double detail);
 // The tessellation for labels: "32×16" (sphere, torus), "6 faces" (cube),
 // empty for an unknown name.

@@ -14,8 +14,8 @@ void CreasedNormals::computeFaces()
     m_faceDoubleArea.resize(count);
     for (std::size_t t = 0; t < count; ++t) {
         const glm::vec3 &a = m_positions[m_triangles[3 * t]];
-        const glm::vec3 n =
-            glm::cross(m_positions[m_triangles[3 * t + 1]] - a, m_positions[m_triangles[3 * t + 2]] - a);
+        const glm::vec3 n = glm::cross(m_positions[m_triangles[3 * t + 1]] - a,
+                                       m_positions[m_triangles[3 * t + 2]] - a);
         m_faceUnit[t] = normalizedOrZero(n);
         m_faceDoubleArea[t] = isZero(m_faceUnit[t]) ? 0.0f : glm::dot(n, m_faceUnit[t]);
     }
@@ -55,7 +55,8 @@ std::uint32_t CreasedNormals::groupSmallFan(std::uint32_t count)
         const Corner &b = m_corners[j];
         for (std::uint32_t i = 0; i < j; ++i) {
             const Corner &a = m_corners[i];
-            if ((a.next == b.prev || a.prev == b.next || a.next == b.next || a.prev == b.prev) && smooth(a, b)) {
+            if ((a.next == b.prev || a.prev == b.next || a.next == b.next || a.prev == b.prev)
+                && smooth(a, b)) {
                 adjacent[i] |= 1u << j;
                 adjacent[j] |= 1u << i;
             }
@@ -121,14 +122,15 @@ std::uint32_t CreasedNormals::groupLargeFan(std::uint32_t count)
     return groups;
 }
 
-void CreasedNormals::solveVertex(const std::uint32_t *corners, std::uint32_t count, CornerNormals &result)
+void CreasedNormals::solveVertex(const std::uint32_t *corners, std::uint32_t count,
+                                 CornerNormals &result)
 {
     m_corners.resize(count);
     for (std::uint32_t j = 0; j < count; ++j) {
         const std::uint32_t c = corners[j], k = c % 3, base = c - k;
         const glm::vec3 &unit = m_faceUnit[c / 3];
-        m_corners[j] = {m_triangles[base + (k == 2 ? 0 : k + 1)], m_triangles[base + (k == 0 ? 2 : k - 1)], 0,
-                        isZero(unit), unit};
+        m_corners[j] = {m_triangles[base + (k == 2 ? 0 : k + 1)],
+                        m_triangles[base + (k == 0 ? 2 : k - 1)], 0, isZero(unit), unit};
     }
     // Two corners meet across an edge when their triangles have the same
     // other endpoint there (matched either way round, so a flipped

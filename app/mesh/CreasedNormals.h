@@ -17,15 +17,17 @@ namespace phonglab::normals {
 class CreasedNormals
 {
 public:
-    CreasedNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles, NormalMethod method,
-                   double creaseAngleDeg)
+    CreasedNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
+                   NormalMethod method, double creaseAngleDeg)
         : m_positions(positions)
         , m_triangles(triangles)
         , m_method(method)
         ,
         // The small slack lets faces at exactly the crease angle (a
         // cube's 90° with a 90° crease) join despite rounding.
-        m_cosCrease(float(std::cos(std::clamp(creaseAngleDeg, 0.0, 180.0) * std::numbers::pi / 180.0)) - 1e-6f)
+        m_cosCrease(
+            float(std::cos(std::clamp(creaseAngleDeg, 0.0, 180.0) * std::numbers::pi / 180.0))
+            - 1e-6f)
     {
     }
 

@@ -19,7 +19,8 @@ namespace phonglab::decimation {
 // the decimation time). The decimater calls them through the mesh type, so
 // these hide the library's.
 struct OmMesh : OpenMesh::TriMesh_ArrayKernelT<> {
-    OpenMesh::HalfedgeHandle find_halfedge(OpenMesh::VertexHandle from, OpenMesh::VertexHandle to) const
+    OpenMesh::HalfedgeHandle find_halfedge(OpenMesh::VertexHandle from,
+                                           OpenMesh::VertexHandle to) const
     {
         for (OpenMesh::HalfedgeHandle h : voh_range(from))
             if (to_vertex_handle(h) == to)
@@ -42,15 +43,19 @@ struct OmMesh : OpenMesh::TriMesh_ArrayKernelT<> {
         // boundary edges (the face would collapse into a dangling edge).
         OpenMesh::VertexHandle vl, vr;
         if (!is_boundary(v0v1)) {
-            const OpenMesh::HalfedgeHandle h1 = next_halfedge_handle(v0v1), h2 = next_halfedge_handle(h1);
+            const OpenMesh::HalfedgeHandle h1 = next_halfedge_handle(v0v1),
+                                           h2 = next_halfedge_handle(h1);
             vl = to_vertex_handle(h1);
-            if (is_boundary(opposite_halfedge_handle(h1)) && is_boundary(opposite_halfedge_handle(h2)))
+            if (is_boundary(opposite_halfedge_handle(h1))
+                && is_boundary(opposite_halfedge_handle(h2)))
                 return false;
         }
         if (!is_boundary(v1v0)) {
-            const OpenMesh::HalfedgeHandle h1 = next_halfedge_handle(v1v0), h2 = next_halfedge_handle(h1);
+            const OpenMesh::HalfedgeHandle h1 = next_halfedge_handle(v1v0),
+                                           h2 = next_halfedge_handle(h1);
             vr = to_vertex_handle(h1);
-            if (is_boundary(opposite_halfedge_handle(h1)) && is_boundary(opposite_halfedge_handle(h2)))
+            if (is_boundary(opposite_halfedge_handle(h1))
+                && is_boundary(opposite_halfedge_handle(h2)))
                 return false;
         }
         if (vl == vr)
@@ -69,21 +74,22 @@ struct OmMesh : OpenMesh::TriMesh_ArrayKernelT<> {
         }
         for (OpenMesh::VertexHandle v : vv_range(v0))
             if (v != vl && v != vr
-                && std::find(ring1.begin(), ring1.begin() + ring1Size, v) != ring1.begin() + ring1Size)
+                && std::find(ring1.begin(), ring1.begin() + ring1Size, v)
+                    != ring1.begin() + ring1Size)
                 return false;
         return !pinches(v0v1, v1v0, v0, v1);
     }
 
 private:
     // An inner edge between two boundary vertices would pinch the surface.
-    bool pinches(OpenMesh::HalfedgeHandle v0v1, OpenMesh::HalfedgeHandle v1v0, OpenMesh::VertexHandle v0,
-                 OpenMesh::VertexHandle v1) const
+    bool pinches(OpenMesh::HalfedgeHandle v0v1, OpenMesh::HalfedgeHandle v1v0,
+                 OpenMesh::VertexHandle v0, OpenMesh::VertexHandle v1) const
     {
         return is_boundary(v0) && is_boundary(v1) && !is_boundary(v0v1) && !is_boundary(v1v0);
     }
 
-    bool oneRingsShareOnly(OpenMesh::VertexHandle v0, OpenMesh::VertexHandle v1, OpenMesh::VertexHandle vl,
-                           OpenMesh::VertexHandle vr)
+    bool oneRingsShareOnly(OpenMesh::VertexHandle v0, OpenMesh::VertexHandle v1,
+                           OpenMesh::VertexHandle vl, OpenMesh::VertexHandle vr)
     {
         for (OpenMesh::VertexHandle v : vv_range(v0))
             status(v).set_tagged(false);

@@ -19,7 +19,8 @@ using NormalBits = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
 
 NormalBits bitsOf(const glm::vec3 &n)
 {
-    return {std::bit_cast<std::uint32_t>(n.x), std::bit_cast<std::uint32_t>(n.y), std::bit_cast<std::uint32_t>(n.z)};
+    return {std::bit_cast<std::uint32_t>(n.x), std::bit_cast<std::uint32_t>(n.y),
+            std::bit_cast<std::uint32_t>(n.z)};
 }
 
 bool sameBits(const glm::vec3 &a, const glm::vec3 &b)
@@ -76,8 +77,8 @@ void gatherTriangles(const PolygonMesh &mesh, Triangles &out)
 
 // Normals from the file, at unit length. Corners whose file normal has no
 // direction get the computed angle-weighted normal instead.
-CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, const NormalOptions &options,
-                          QStringList *warnings)
+CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles,
+                          const NormalOptions &options, QStringList *warnings)
 {
     CornerNormals result;
     result.normals.resize(mesh.normals.size());
@@ -93,7 +94,8 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, c
     // Per-vertex normals (normal index = position index, as PLY has them)
     // need no index array of their own.
     const bool perPosition = mesh.normals.size() == mesh.positions.size()
-        && std::equal(triangles.normals.begin(), triangles.normals.end(), triangles.positions.begin());
+        && std::equal(triangles.normals.begin(), triangles.normals.end(),
+                      triangles.positions.begin());
     if (perPosition && badCorners == 0) {
         result.indexing = CornerNormals::Indexing::PerPosition;
         return result;
@@ -103,8 +105,8 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, c
     if (badCorners == 0)
         return result;
 
-    const CornerNormals computed =
-        computeNormals(mesh.positions, triangles.positions, NormalMethod::AngleWeighted, options.creaseAngleDeg);
+    const CornerNormals computed = computeNormals(
+        mesh.positions, triangles.positions, NormalMethod::AngleWeighted, options.creaseAngleDeg);
     for (std::size_t c = 0; c < result.cornerNormal.size(); ++c) {
         if (unusable[result.cornerNormal[c]]) {
             result.cornerNormal[c] = std::uint32_t(result.normals.size());
@@ -121,7 +123,8 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles, c
 
 // Smooth normals without creases: one vertex per position used, in
 // position order.
-std::size_t weldPerPosition(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triPositions,
+std::size_t weldPerPosition(std::span<const glm::vec3> positions,
+                            std::span<const std::uint32_t> triPositions,
                             const CornerNormals &normals, MeshData &out)
 {
     std::vector<std::uint32_t> vertexOf(positions.size(), 0);
@@ -173,7 +176,7 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     };
 
     std::vector<std::uint32_t> head(positions.size(), kNone); // newest vertex of each position
-    std::vector<std::uint32_t> next;                          // the vertex made before it, per vertex
+    std::vector<std::uint32_t> next; // the vertex made before it, per vertex
     std::vector<char> crowded(positions.size(), 0);
     std::unordered_map<Key, std::uint32_t, KeyHash> crowdedVertex;
     // Room for every vertex up front: growing 100 MB of vertices by doubling
@@ -241,13 +244,16 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
     if (triangleCorners == 0)
         return fail(QStringLiteral("the mesh has no faces"));
     if (triangleCorners > std::numeric_limits<std::uint32_t>::max())
-        return fail(QStringLiteral("the mesh is too large: %1 triangles exceed what 32-bit indices can address")
-                        .arg(qint64(triangleCorners / 3)));
+        return fail(
+            QStringLiteral(
+                "the mesh is too large: %1 triangles exceed what 32-bit indices can address")
+                .arg(qint64(triangleCorners / 3)));
 
     Triangles triangles;
     gatherTriangles(mesh, triangles);
     if (triangles.fanFallbacks != 0)
-        *warnings << QStringLiteral("%1 polygons cross or fold onto themselves; they were split as fans")
+        *warnings << QStringLiteral(
+                         "%1 polygons cross or fold onto themselves; they were split as fans")
                          .arg(qint64(triangles.fanFallbacks));
 
     std::size_t missingNormals = mesh.cornerPosition.size();

@@ -48,15 +48,15 @@ QDataStream &operator>>(QDataStream &in, glm::vec3 &v)
 
 void writeStats(QDataStream &out, const MeshStats &s)
 {
-    out << s.fileVertices << s.fileFaces << s.vertices << s.triangles << s.splitVertices << s.normalsFromFile
-        << qint32(s.normalMethod) << s.boundsMin << s.boundsMax << s.closed;
+    out << s.fileVertices << s.fileFaces << s.vertices << s.triangles << s.splitVertices
+        << s.normalsFromFile << qint32(s.normalMethod) << s.boundsMin << s.boundsMax << s.closed;
 }
 
 bool readStats(QDataStream &in, MeshStats &s)
 {
     qint32 method = 0;
-    in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices >> s.normalsFromFile >> method
-        >> s.boundsMin >> s.boundsMax >> s.closed;
+    in >> s.fileVertices >> s.fileFaces >> s.vertices >> s.triangles >> s.splitVertices
+        >> s.normalsFromFile >> method >> s.boundsMin >> s.boundsMax >> s.closed;
     s.normalMethod = NormalMethod(method);
     return method >= qint32(NormalMethod::Auto) && method <= qint32(NormalMethod::AngleWeighted);
 }
@@ -91,12 +91,14 @@ QString MeshCache::directory()
     const QString fromEnv = qEnvironmentVariable("PHONGLAB_CACHE_DIR");
     if (!fromEnv.isEmpty())
         return fromEnv;
-    return QStandardPaths::writableLocation(QStandardPaths::GenericCacheLocation) + QStringLiteral("/phonglab/meshes");
+    return QStandardPaths::writableLocation(QStandardPaths::GenericCacheLocation)
+        + QStringLiteral("/phonglab/meshes");
 }
 
 QString MeshCache::entryPath(const QString &file, const NormalOptions &normals)
 {
-    const QByteArray hash = QCryptographicHash::hash(sourceKey(file, normals), QCryptographicHash::Sha1).toHex();
+    const QByteArray hash =
+        QCryptographicHash::hash(sourceKey(file, normals), QCryptographicHash::Sha1).toHex();
     return QDir(directory()).filePath(QString::fromLatin1(hash) + QStringLiteral(".phmc"));
 }
 
@@ -113,7 +115,8 @@ QByteArray MeshCache::sourceKey(const QString &file, const NormalOptions &normal
     return key;
 }
 
-std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device, const std::optional<QByteArray> &expectedKey)
+std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device,
+                                                const std::optional<QByteArray> &expectedKey)
 {
     QDataStream in(&device);
     in.setVersion(QDataStream::Qt_6_4);
@@ -127,9 +130,11 @@ std::optional<MeshLoadResult> MeshCache::decode(QIODevice &device, const std::op
         return std::nullopt;
     MeshLoadResult result;
     MeshData mesh;
-    const bool ok = readStats(in, result.stats) && readStrings(in, result.warnings, device.bytesAvailable())
+    const bool ok = readStats(in, result.stats)
+        && readStrings(in, result.warnings, device.bytesAvailable())
         && readArray(in, mesh.positions, device.bytesAvailable())
-        && readArray(in, mesh.normals, device.bytesAvailable()) && readArray(in, mesh.indices, device.bytesAvailable());
+        && readArray(in, mesh.normals, device.bytesAvailable())
+        && readArray(in, mesh.indices, device.bytesAvailable());
     if (!ok || in.status() != QDataStream::Ok || !mesh.isValid())
         return std::nullopt;
     result.mesh = std::move(mesh);
@@ -171,7 +176,8 @@ std::optional<MeshLoadResult> MeshCache::read(const QString &file, const NormalO
     return result;
 }
 
-void MeshCache::write(const QString &file, const NormalOptions &normals, const MeshLoadResult &result)
+void MeshCache::write(const QString &file, const NormalOptions &normals,
+                      const MeshLoadResult &result)
 {
     if (!enabled() || !result.mesh || !QDir().mkpath(directory()))
         return;
@@ -192,7 +198,8 @@ void MeshCache::adopt(const QString &entryFile, const QString &file, const Norma
     }
     const QString target = entryPath(file, normals);
     // rename(2) replaces atomically; QFile::rename would refuse an existing target.
-    if (std::rename(QFile::encodeName(entryFile).constData(), QFile::encodeName(target).constData()) != 0)
+    if (std::rename(QFile::encodeName(entryFile).constData(), QFile::encodeName(target).constData())
+        != 0)
         QFile::remove(entryFile); // another file system: the next open parses again
 }
 

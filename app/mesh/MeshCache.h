@@ -24,7 +24,8 @@ public:
 
     static std::optional<MeshLoadResult> read(const QString &file, const NormalOptions &normals);
     // Writes atomically; failures are silent (the cache is an optimisation).
-    static void write(const QString &file, const NormalOptions &normals, const MeshLoadResult &result);
+    static void write(const QString &file, const NormalOptions &normals,
+                      const MeshLoadResult &result);
 
     static QString entryPath(const QString &file, const NormalOptions &normals);
     // What an entry for `file` as it is now, loaded with `normals`, is keyed by.
@@ -35,7 +36,8 @@ public:
     // (no key given: any), a count that cannot fit in what is left, a
     // truncated array and indices out of range; it never trusts a size
     // before checking it against the bytes that are there.
-    static std::optional<MeshLoadResult> decode(QIODevice &in, const std::optional<QByteArray> &expectedKey);
+    static std::optional<MeshLoadResult> decode(QIODevice &in,
+                                                const std::optional<QByteArray> &expectedKey);
     static bool encode(QIODevice &out, const QByteArray &key, const MeshLoadResult &result);
     // Moves an entry written elsewhere (the import child's answer) into the
     // cache under `file`'s key; removes it when the cache is off.

@@ -88,7 +88,8 @@ Weld weldByPosition(const MeshData &mesh)
     for (std::uint32_t v : mesh.indices) {
         if (w.weldedOf[v] != kNone)
             continue;
-        const auto [it, added] = idOf.try_emplace(key3(mesh.positions[v]), std::uint32_t(w.firstGpu.size()));
+        const auto [it, added] =
+            idOf.try_emplace(key3(mesh.positions[v]), std::uint32_t(w.firstGpu.size()));
         if (added)
             w.firstGpu.push_back(v);
         w.weldedOf[v] = it->second;
@@ -111,12 +112,14 @@ Weld weldByPosition(const MeshData &mesh)
     std::vector<std::uint32_t> start(count + 1, 0);
     for (std::size_t i = 0; i < count; ++i) {
         start[i] = std::uint32_t(kept.size());
-        const auto begin = w.candidates.begin() + w.candStart[i], end = w.candidates.begin() + w.candStart[i + 1];
+        const auto begin = w.candidates.begin() + w.candStart[i],
+                   end = w.candidates.begin() + w.candStart[i + 1];
         const auto normalKey = [&](std::uint32_t v) {
             const Key3 k = key3(mesh.normals[v]);
             return std::tuple(k.x, k.y, k.z, v);
         };
-        std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) { return normalKey(a) < normalKey(b); });
+        std::sort(begin, end,
+                  [&](std::uint32_t a, std::uint32_t b) { return normalKey(a) < normalKey(b); });
         for (auto it = begin; it != end; ++it)
             if (it == begin || !(key3(mesh.normals[*it]) == key3(mesh.normals[*(it - 1)])))
                 kept.push_back(*it);
@@ -132,7 +135,8 @@ bool isFaceted(const MeshData &mesh)
 {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const Key3 n = key3(mesh.normals[mesh.indices[t]]);
-        if (!(key3(mesh.normals[mesh.indices[t + 1]]) == n) || !(key3(mesh.normals[mesh.indices[t + 2]]) == n))
+        if (!(key3(mesh.normals[mesh.indices[t + 1]]) == n)
+            || !(key3(mesh.normals[mesh.indices[t + 2]]) == n))
             return false;
     }
     return true;
@@ -140,13 +144,15 @@ bool isFaceted(const MeshData &mesh)
 
 // What adding the triangles to OpenMesh left out.
 struct AddReport {
-    std::size_t collapsed = 0;   // two corners at one position (a UV sphere's poles): invisible, dropped silently
+    std::size_t collapsed =
+        0; // two corners at one position (a UV sphere's poles): invisible, dropped silently
     std::size_t nonFinite = 0;   // a corner at NaN or infinity
     std::size_t nonManifold = 0; // an edge or vertex OpenMesh cannot take
 };
 
 // Adds every triangle OpenMesh accepts; faceTriangle[f] = the input triangle of face f.
-AddReport buildOpenMesh(const MeshData &mesh, const Weld &w, OmMesh &om, std::vector<std::uint32_t> &faceTriangle)
+AddReport buildOpenMesh(const MeshData &mesh, const Weld &w, OmMesh &om,
+                        std::vector<std::uint32_t> &faceTriangle)
 {
     AddReport report;
     om.reserve(w.firstGpu.size(), mesh.indices.size() / 2 + 3, mesh.triangleCount());
@@ -224,7 +230,8 @@ public:
     std::uint32_t add(std::uint32_t welded, const glm::vec3 &normal)
     {
         const Key3 n = key3(normal);
-        const auto [it, added] = m_index.try_emplace(Key{welded, n.x, n.y, n.z}, std::uint32_t(out.positions.size()));
+        const auto [it, added] =
+            m_index.try_emplace(Key{welded, n.x, n.y, n.z}, std::uint32_t(out.positions.size()));
         if (added) {
             out.positions.push_back(m_input.positions[m_weld.firstGpu[welded]]);
             out.normals.push_back(normal);
@@ -251,7 +258,8 @@ private:
 };
 
 // Among the candidate normals at `welded`, the one closest to `direction`.
-glm::vec3 closestNormal(const MeshData &mesh, const Weld &w, std::uint32_t welded, const glm::dvec3 &direction)
+glm::vec3 closestNormal(const MeshData &mesh, const Weld &w, std::uint32_t welded,
+                        const glm::dvec3 &direction)
 {
     std::uint32_t best = w.candidates[w.candStart[welded]];
     double bestDot = -std::numeric_limits<double>::infinity();
@@ -265,8 +273,8 @@ glm::vec3 closestNormal(const MeshData &mesh, const Weld &w, std::uint32_t welde
     return mesh.normals[best];
 }
 
-MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om, const std::vector<std::uint32_t> &faceTriangle,
-                 bool faceted)
+MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om,
+                 const std::vector<std::uint32_t> &faceTriangle, bool faceted)
 {
     VertexTable table(input, w);
     table.out.indices.reserve(om.n_faces() * 3);
@@ -280,8 +288,8 @@ MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om, const s
         OpenMesh::HalfedgeHandle h = om.halfedge_handle(f);
         for (int c = 0; c < 3; ++c, h = om.next_halfedge_handle(h))
             v[c] = std::uint32_t(om.to_vertex_handle(h).idx());
-        const glm::dvec3 p0(input.positions[w.firstGpu[v[0]]]), p1(input.positions[w.firstGpu[v[1]]]),
-            p2(input.positions[w.firstGpu[v[2]]]);
+        const glm::dvec3 p0(input.positions[w.firstGpu[v[0]]]),
+            p1(input.positions[w.firstGpu[v[1]]]), p2(input.positions[w.firstGpu[v[2]]]);
         const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
         const double length = glm::length(cross);
         const glm::dvec3 faceNormal = length > 0.0 ? cross / length : glm::dvec3(0.0);
@@ -297,8 +305,8 @@ MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om, const s
         };
 
         glm::vec3 normal[3];
-        const bool untouched =
-            originalCorner(v[0]) != kNone && originalCorner(v[1]) != kNone && originalCorner(v[2]) != kNone;
+        const bool untouched = originalCorner(v[0]) != kNone && originalCorner(v[1]) != kNone
+            && originalCorner(v[2]) != kNone;
         if (untouched) {
             for (int c = 0; c < 3; ++c)
                 normal[c] = input.normals[originalCorner(v[c])];
@@ -321,7 +329,8 @@ MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om, const s
         } else {
             for (int c = 0; c < 3; ++c) {
                 const std::uint32_t kept = originalCorner(v[c]);
-                normal[c] = kept != kNone ? input.normals[kept] : closestNormal(input, w, v[c], faceNormal);
+                normal[c] =
+                    kept != kNone ? input.normals[kept] : closestNormal(input, w, v[c], faceNormal);
             }
         }
         for (int c = 0; c < 3; ++c)
@@ -361,8 +370,8 @@ private:
 
 } // namespace
 
-std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions, QString *note,
-                                         const DecimationProgress &progress)
+std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
+                                         QString *note, const DecimationProgress &progress)
 {
     std::vector<MeshData> levels(fractions.size());
     QStringList notes;
@@ -371,7 +380,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     for (std::size_t i = 0; i < fractions.size(); ++i) {
         const double fraction = fractions[i];
         if (!(fraction > 0.0 && fraction <= 1.0)) {
-            notes << QStringLiteral("detail must be in (0, 1] (got %1); mesh left as it is").arg(fraction);
+            notes << QStringLiteral("detail must be in (0, 1] (got %1); mesh left as it is")
+                         .arg(fraction);
             levels[i] = mesh;
         } else if (fraction == 1.0 || mesh.indices.empty()) {
             levels[i] = mesh;
@@ -387,7 +397,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     if (todo.empty())
         return finish();
     if (!mesh.isValid()) {
-        notes << QStringLiteral("invalid mesh (index out of range or normals missing); not decimated");
+        notes << QStringLiteral(
+            "invalid mesh (index out of range or normals missing); not decimated");
         for (std::size_t i : todo)
             levels[i] = mesh;
         return finish();
@@ -398,18 +409,21 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     std::vector<std::uint32_t> faceTriangle;
     const AddReport added = buildOpenMesh(mesh, weld, om, faceTriangle);
     if (faceTriangle.empty()) {
-        notes << QStringLiteral("no triangle could be taken for decimation (all degenerate, non-finite or "
-                                "non-manifold); mesh left as it is");
+        notes << QStringLiteral(
+            "no triangle could be taken for decimation (all degenerate, non-finite or "
+            "non-manifold); mesh left as it is");
         for (std::size_t i : todo)
             levels[i] = mesh;
         return finish();
     }
     if (added.nonManifold > 0)
-        notes << QStringLiteral("%1 non-manifold triangles (an edge with more than two faces, or a vertex joining "
+        notes << QStringLiteral("%1 non-manifold triangles (an edge with more than two faces, or a "
+                                "vertex joining "
                                 "separate fans) could not be decimated and were left out")
                      .arg(count(added.nonManifold));
     if (added.nonFinite > 0)
-        notes << QStringLiteral("%1 triangles with non-finite corners left out").arg(count(added.nonFinite));
+        notes << QStringLiteral("%1 triangles with non-finite corners left out")
+                     .arg(count(added.nonFinite));
 
     prepareForDecimation(om);
     OpenMesh::Decimater::DecimaterT<OmMesh> decimater(om);
@@ -436,8 +450,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
         decimater.set_observer(observer.get());
     }
     for (std::size_t i : todo) {
-        const std::size_t target =
-            std::max<std::size_t>(1, std::size_t(std::llround(fractions[i] * double(mesh.triangleCount()))));
+        const std::size_t target = std::max<std::size_t>(
+            1, std::size_t(std::llround(fractions[i] * double(mesh.triangleCount()))));
         if (ready && target < faces) {
             // The decimater counts the faces deleted so far (no garbage
             // collection here: face handles index faceTriangle) as present.
@@ -453,7 +467,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
         // Some slack: collapses remove two faces at a time, and closed
         // pieces cannot shrink below a tetrahedron.
         if (faces > target + target / 20 + 4)
-            notes << QStringLiteral("decimation stopped at %1 triangles (asked for %2): every further collapse would "
+            notes << QStringLiteral("decimation stopped at %1 triangles (asked for %2): every "
+                                    "further collapse would "
                                     "fold a face or break the surface")
                          .arg(count(faces), count(target));
         levels[i] = rebuild(mesh, weld, om, faceTriangle, faceted);
@@ -463,7 +478,8 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     return finish();
 }
 
-MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note, const DecimationProgress &progress)
+MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note,
+                      const DecimationProgress &progress)
 {
     return std::move(decimateMeshLevels(mesh, {fraction}, note, progress).front());
 }
@@ -477,7 +493,8 @@ bool isClosedMesh(const MeshData &mesh)
     polygons.positions.resize(weld.firstGpu.size());
     polygons.reserve(weld.firstGpu.size(), mesh.triangleCount(), mesh.indices.size());
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const std::uint32_t a = weld.weldedOf[mesh.indices[3 * t]], b = weld.weldedOf[mesh.indices[3 * t + 1]],
+        const std::uint32_t a = weld.weldedOf[mesh.indices[3 * t]],
+                            b = weld.weldedOf[mesh.indices[3 * t + 1]],
                             c = weld.weldedOf[mesh.indices[3 * t + 2]];
         if (a == b || b == c || c == a)
             continue; // no area, no edges of the surface (a UV sphere's pole triangles)

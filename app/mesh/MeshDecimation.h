@@ -45,7 +45,8 @@ MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note = nul
 // same fraction only in the order of equally good collapses). *note
 // gathers what each level would say.
 std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
-                                         QString *note = nullptr, const DecimationProgress &progress = {});
+                                         QString *note = nullptr,
+                                         const DecimationProgress &progress = {});
 
 // True when the mesh, welded by exact position (MeshData splits a point into
 // one vertex per normal), has every edge on exactly two triangles

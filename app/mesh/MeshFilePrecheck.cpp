@@ -97,7 +97,8 @@ QString wrongMagic(std::string_view head, MeshFileFormat format, const QString &
     const Sniffed other = sniffFormat(head);
     if (other.what.isEmpty())
         return expected;
-    const QString error = QStringLiteral("this is %1, not a %2 file").arg(other.what, suffixOf(format));
+    const QString error =
+        QStringLiteral("this is %1, not a %2 file").arg(other.what, suffixOf(format));
     return other.hint.isEmpty() ? error : QStringLiteral("%1 (%2)").arg(error, other.hint);
 }
 
@@ -139,7 +140,9 @@ void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
         for (int i = 0; i < 3; ++i) {
             const std::string_view t = tokens.nextOnLine();
             if (!meshtext::isReal(t)) {
-                check.error = QStringLiteral("line %1: expected %2, found %3").arg(lineNo).arg(what, quoted(t));
+                check.error = QStringLiteral("line %1: expected %2, found %3")
+                                  .arg(lineNo)
+                                  .arg(what, quoted(t));
                 return false;
             }
         }
@@ -150,11 +153,13 @@ void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
         if (line.find("facet normal") != std::string_view::npos
             && !numbersAfter(2, QStringLiteral("three numbers after 'facet normal'")))
             return;
-        if (line.find("outer") == std::string_view::npos && line.find("OUTER") == std::string_view::npos)
+        if (line.find("outer") == std::string_view::npos
+            && line.find("OUTER") == std::string_view::npos)
             continue;
         for (int corner = 0; corner < 3; ++corner) {
             if (!nextLine()) {
-                check.error = QStringLiteral("the file ends inside facet %1 (truncated?)").arg(facets + 1);
+                check.error =
+                    QStringLiteral("the file ends inside facet %1 (truncated?)").arg(facets + 1);
                 return;
             }
             if (!numbersAfter(1, QStringLiteral("'vertex x y z'")))
@@ -179,7 +184,8 @@ void dropNonFiniteTriangles(const QString &path, MeshFilePrecheck &check)
     auto finite = [&](std::size_t t) {
         float corners[9];
         std::memcpy(corners, bytes.data() + 84 + 50 * t + 12, sizeof corners);
-        return std::all_of(std::begin(corners), std::end(corners), [](float f) { return std::isfinite(f); });
+        return std::all_of(std::begin(corners), std::end(corners),
+                           [](float f) { return std::isfinite(f); });
     };
     std::size_t bad = 0;
     for (std::size_t t = 0; t < triangles; ++t)
@@ -220,15 +226,19 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
         if (!check.ok())
             return;
         if (size < 84) {
-            check.error = QStringLiteral("too small for a binary STL file (%1 bytes) and not an ascii one").arg(size);
+            check.error =
+                QStringLiteral("too small for a binary STL file (%1 bytes) and not an ascii one")
+                    .arg(size);
             return;
         }
         if (size < expected) {
-            check.error = QStringLiteral("the binary STL header declares %1 triangles (%2 bytes) but the file has "
-                                         "only %3 bytes (truncated or not an STL file)")
-                              .arg((expected - 84) / 50)
-                              .arg(expected)
-                              .arg(size);
+            check.error =
+                QStringLiteral(
+                    "the binary STL header declares %1 triangles (%2 bytes) but the file has "
+                    "only %3 bytes (truncated or not an STL file)")
+                    .arg((expected - 84) / 50)
+                    .arg(expected)
+                    .arg(size);
             return;
         }
         check.warnings << QStringLiteral("ignored %1 after the last triangle")
@@ -246,7 +256,8 @@ void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check
 {
     if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2]))
         check.error =
-            wrongMagic(head, check.format, QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
+            wrongMagic(head, check.format,
+                       QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
     else
         precheckOm(path, check);
 }
@@ -315,14 +326,16 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     case MeshFileFormat::Obj: checkObj(head, check); break;
     case MeshFileFormat::Ply:
         if (!startsWith(head, "ply\n") && !startsWith(head, "ply\r\n"))
-            check.error = wrongMagic(head, format, QStringLiteral("not a PLY file (it does not start with 'ply')"));
+            check.error = wrongMagic(
+                head, format, QStringLiteral("not a PLY file (it does not start with 'ply')"));
         else
             precheckPly(path, check);
         break;
     case MeshFileFormat::Off:
         if (!offHeaderAt(head))
-            check.error =
-                wrongMagic(head, format, QStringLiteral("not an OFF file (it does not start with an OFF header)"));
+            check.error = wrongMagic(
+                head, format,
+                QStringLiteral("not an OFF file (it does not start with an OFF header)"));
         else
             precheckOff(path, check);
         break;
@@ -332,7 +345,8 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     return check;
 }
 
-bool readWholeFile(const QString &path, std::string &bytes, QString &error, const std::function<bool(double)> &progress)
+bool readWholeFile(const QString &path, std::string &bytes, QString &error,
+                   const std::function<bool(double)> &progress)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {

@@ -29,7 +29,7 @@ struct MeshFilePrecheck {
     qint64 fileSize = 0;
     bool binary = false;          // binary PLY, STL or OFF (OM is always binary)
     quint64 declaredVertices = 0; // from the header (PLY, OFF, OM); 0 where the format has none
-    quint64 declaredFaces = 0;    // from the header (PLY, OFF, OM, binary STL) or counted (ascii STL)
+    quint64 declaredFaces = 0; // from the header (PLY, OFF, OM, binary STL) or counted (ascii STL)
     // A cleaned copy of the file for the reader, which cannot cope with what
     // was cleaned: OFF comments, counts on the header line, stray face
     // values; binary STL triangles with NaN or infinite corners (OpenMesh

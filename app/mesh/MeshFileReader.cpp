@@ -13,7 +13,8 @@ namespace phonglab {
 
 namespace {
 
-MeshReadResult readChecked(const QString &path, MeshFileFormat format, const std::function<bool(double)> &progress)
+MeshReadResult readChecked(const QString &path, MeshFileFormat format,
+                           const std::function<bool(double)> &progress)
 {
     MeshReadResult result;
     if (progress && !progress(0.0)) {
@@ -25,7 +26,8 @@ MeshReadResult readChecked(const QString &path, MeshFileFormat format, const std
         result.error = check.error;
         return result;
     }
-    result = format == MeshFileFormat::Obj ? readObjFile(path, progress) : readWithOpenMesh(path, check, progress);
+    result = format == MeshFileFormat::Obj ? readObjFile(path, progress)
+                                           : readWithOpenMesh(path, check, progress);
     result.warnings = check.warnings + result.warnings;
     if (result.ok() && result.mesh->faceCount() == 0) {
         result.mesh.reset();
@@ -44,9 +46,10 @@ MeshReadResult readMeshFile(const QString &path, const std::function<bool(double
     if (!format) {
         MeshReadResult result;
         const QString suffix = QFileInfo(path).suffix();
-        result.error = QStringLiteral("unsupported file type '%1' (supported: %2)")
-                           .arg(suffix.isEmpty() ? QStringLiteral("no suffix") : QLatin1Char('.') + suffix,
-                                supportedMeshFileSuffixes());
+        result.error =
+            QStringLiteral("unsupported file type '%1' (supported: %2)")
+                .arg(suffix.isEmpty() ? QStringLiteral("no suffix") : QLatin1Char('.') + suffix,
+                     supportedMeshFileSuffixes());
         return result;
     }
     // Nothing a broken file does may escape as an exception: the readers

@@ -33,10 +33,11 @@ QString signalName(int signal)
     return abbrev ? QStringLiteral("SIG") + QString::fromLatin1(abbrev) : QStringLiteral("unknown");
 }
 
-QStringList childArguments(const QString &path, const NormalOptions &normals, const QString &entryFile,
-                           const MeshImportLimits &limits)
+QStringList childArguments(const QString &path, const NormalOptions &normals,
+                           const QString &entryFile, const MeshImportLimits &limits)
 {
-    QStringList args{QStringLiteral("__import-mesh"), QStringLiteral("--normals"), normalMethodName(normals.method)};
+    QStringList args{QStringLiteral("__import-mesh"), QStringLiteral("--normals"),
+                     normalMethodName(normals.method)};
     if (normals.creaseAngleDeg)
         args << QStringLiteral("--crease") << QString::number(*normals.creaseAngleDeg, 'g', 17);
     args << QStringLiteral("--out") << entryFile << QStringLiteral("--address-space-mb")
@@ -65,19 +66,25 @@ struct ChildReport {
     }
 };
 
-QString failureMessage(const QProcess &child, const ChildReport &report, const MeshImportLimits &limits)
+QString failureMessage(const QProcess &child, const ChildReport &report,
+                       const MeshImportLimits &limits)
 {
     if (child.exitStatus() == QProcess::CrashExit) {
         const int signal = child.exitCode(); // Qt reports the terminating signal here
         if (signal == SIGXCPU)
-            return QStringLiteral("the reader used up its %1 s of CPU time and was stopped").arg(limits.cpuSeconds);
-        return QStringLiteral("the reader crashed with signal %1 (%2)").arg(signal).arg(signalName(signal));
+            return QStringLiteral("the reader used up its %1 s of CPU time and was stopped")
+                .arg(limits.cpuSeconds);
+        return QStringLiteral("the reader crashed with signal %1 (%2)")
+            .arg(signal)
+            .arg(signalName(signal));
     }
     if (report.outOfMemory || child.exitCode() == kImportExitOutOfMemory)
-        return QStringLiteral("the reader ran out of memory (limit %1 MB)").arg(limits.addressSpaceBytes / kMiB);
+        return QStringLiteral("the reader ran out of memory (limit %1 MB)")
+            .arg(limits.addressSpaceBytes / kMiB);
     if (!report.error.isEmpty())
         return report.error;
-    return QStringLiteral("the reader exited with status %1 without a result").arg(child.exitCode());
+    return QStringLiteral("the reader exited with status %1 without a result")
+        .arg(child.exitCode());
 }
 
 [[noreturn]] void outOfMemory()
@@ -134,8 +141,9 @@ void injectFault()
 QString temporaryEntryFile()
 {
     // Beside the cache, so adopting the answer is a rename.
-    const QString folder =
-        MeshCache::enabled() && QDir().mkpath(MeshCache::directory()) ? MeshCache::directory() : QDir::tempPath();
+    const QString folder = MeshCache::enabled() && QDir().mkpath(MeshCache::directory())
+        ? MeshCache::directory()
+        : QDir::tempPath();
     QTemporaryFile reserve(folder + QStringLiteral("/import-XXXXXX.phmc"));
     reserve.setAutoRemove(false);
     if (!reserve.open())
@@ -182,7 +190,8 @@ QString importExecutable()
     return {};
 }
 
-MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &normals, const LoadProgress &progress)
+MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &normals,
+                                  const LoadProgress &progress)
 {
     MeshLoadResult result;
     const auto fail = [&](const QString &why) {
@@ -191,7 +200,8 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     };
     const QString executable = importExecutable();
     if (executable.isEmpty())
-        return fail(QStringLiteral("cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
+        return fail(QStringLiteral(
+            "cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
     const QString entryFile = temporaryEntryFile();
     if (entryFile.isEmpty())
         return fail(QStringLiteral("cannot create a temporary file for the import"));
@@ -207,7 +217,8 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     child.start(executable, childArguments(path, normals, entryFile, limits), QIODevice::ReadOnly);
     if (!child.waitForStarted(10'000)) {
         QFile::remove(entryFile);
-        return fail(QStringLiteral("cannot start the import process %1: %2").arg(executable, child.errorString()));
+        return fail(QStringLiteral("cannot start the import process %1: %2")
+                        .arg(executable, child.errorString()));
     }
     ChildReport report;
     QElapsedTimer clock;
@@ -218,8 +229,8 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         if (progress && !progress(report.progress)) {
             stopped = QStringLiteral("cancelled");
         } else if (clock.elapsed() > limits.wallClockMs) {
-            stopped = QStringLiteral(
-                          "%1: the reader stopped answering after %2 s and was stopped; the file is probably malformed")
+            stopped = QStringLiteral("%1: the reader stopped answering after %2 s and was stopped; "
+                                     "the file is probably malformed")
                           .arg(path)
                           .arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
         }
@@ -282,7 +293,9 @@ int runMeshImportChild(const QString &path, const NormalOptions &normals, const 
     QFile out(entryFile);
     if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)
         || !MeshCache::encode(out, MeshCache::sourceKey(path, normals), result) || !out.flush()) {
-        std::printf("error %s\n", QStringLiteral("cannot write the result to %1").arg(entryFile).toUtf8().constData());
+        std::printf(
+            "error %s\n",
+            QStringLiteral("cannot write the result to %1").arg(entryFile).toUtf8().constData());
         return 1;
     }
     return 0;

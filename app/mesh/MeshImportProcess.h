@@ -36,7 +36,8 @@ QString importExecutable();
 // (false cancels: the child is killed at once). Errors name the file and say
 // what happened: a load error as the reader put it, "the reader stopped
 // answering after N s", "ran out of memory", "crashed with signal N".
-MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &normals, const LoadProgress &progress);
+MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &normals,
+                                  const LoadProgress &progress);
 
 // The child's side: applies `limits` to this process, imports `path` in
 // process, writes the result to `entryFile` in MeshCache's format and

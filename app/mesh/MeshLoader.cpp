@@ -31,7 +31,9 @@ MeshLoadResult loadBuiltin(const QString &spec)
     result.mesh = builtinMesh(spec);
     if (!result.mesh) {
         result.error =
-            QStringLiteral("%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)").arg(spec);
+            QStringLiteral(
+                "%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)")
+                .arg(spec);
         return result;
     }
     MeshStats &s = result.stats;
@@ -55,7 +57,8 @@ LoadProgress scaled(const LoadProgress &progress, double from, double to)
 
 } // namespace
 
-MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals, const LoadProgress &progress)
+MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
+                              const LoadProgress &progress)
 {
     QElapsedTimer timer;
     timer.start();
@@ -105,7 +108,8 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
     return result;
 }
 
-MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals, const LoadProgress &progress)
+MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals,
+                        const LoadProgress &progress)
 {
     QElapsedTimer timer;
     timer.start();

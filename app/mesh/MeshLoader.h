@@ -52,7 +52,8 @@ using LoadProgress = std::function<bool(double)>;
 // of memory or crashes costs an error message, never the app. Safe to call
 // from any thread; touches no GL. The app, mesh-info, render and bench all
 // load through here.
-MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals = {}, const LoadProgress &progress = {});
+MeshLoadResult loadMesh(const QString &spec, const NormalOptions &normals = {},
+                        const LoadProgress &progress = {});
 
 // Parses, repairs and builds a mesh file in this process: what the import
 // child runs, and what fuzzers and reader tests call directly. No cache,

@@ -47,7 +47,8 @@ bool isDegenerate(const PolygonMesh &mesh, std::uint32_t begin, std::uint32_t en
     double longestEdge2 = 0.0;
     for (std::uint32_t i = 0; i < count; ++i) {
         const glm::dvec3 a = glm::dvec3(mesh.positions[mesh.cornerPosition[begin + i]]) - p0;
-        const glm::dvec3 b = glm::dvec3(mesh.positions[mesh.cornerPosition[begin + (i + 1) % count]]) - p0;
+        const glm::dvec3 b =
+            glm::dvec3(mesh.positions[mesh.cornerPosition[begin + (i + 1) % count]]) - p0;
         area += glm::cross(a, b);
         longestEdge2 = std::max(longestEdge2, glm::dot(b - a, b - a));
     }
@@ -112,7 +113,8 @@ struct Adjacency {
     std::vector<Side> sides;                // within a bucket sorted by `other`
 };
 
-std::uint32_t nextCorner(const PolygonMesh &mesh, const std::vector<std::uint32_t> &cornerFace, std::uint32_t c)
+std::uint32_t nextCorner(const PolygonMesh &mesh, const std::vector<std::uint32_t> &cornerFace,
+                         std::uint32_t c)
 {
     const std::uint32_t f = cornerFace[c];
     return c + 1 < mesh.faceStart[f + 1] ? c + 1 : mesh.faceStart[f];
@@ -130,7 +132,8 @@ Adjacency buildAdjacency(const PolygonMesh &mesh)
             adj.cornerFace[c] = std::uint32_t(f);
     adj.bucketStart.assign(mesh.positions.size() + 1, 0);
     auto ends = [&](std::uint32_t c) {
-        return std::pair(mesh.cornerPosition[c], mesh.cornerPosition[nextCorner(mesh, adj.cornerFace, c)]);
+        return std::pair(mesh.cornerPosition[c],
+                         mesh.cornerPosition[nextCorner(mesh, adj.cornerFace, c)]);
     };
     for (std::uint32_t c = 0; c < corners; ++c) {
         const auto [a, b] = ends(c);
@@ -146,9 +149,10 @@ Adjacency buildAdjacency(const PolygonMesh &mesh)
             adj.sides[fill[std::min(a, b)]++] = {std::max(a, b), adj.cornerFace[c], c, a < b};
     }
     for (std::size_t v = 0; v + 1 < adj.bucketStart.size(); ++v)
-        std::sort(
-            adj.sides.begin() + adj.bucketStart[v], adj.sides.begin() + adj.bucketStart[v + 1],
-            [](const Side &x, const Side &y) { return x.other < y.other || (x.other == y.other && x.face < y.face); });
+        std::sort(adj.sides.begin() + adj.bucketStart[v],
+                  adj.sides.begin() + adj.bucketStart[v + 1], [](const Side &x, const Side &y) {
+                      return x.other < y.other || (x.other == y.other && x.face < y.face);
+                  });
     return adj;
 }
 
@@ -167,7 +171,8 @@ template <typename Visit> void forEachEdge(const Adjacency &adj, Visit visit)
     }
 }
 
-double signedVolume(const PolygonMesh &mesh, const std::vector<std::uint32_t> &faces, const std::vector<char> &flip)
+double signedVolume(const PolygonMesh &mesh, const std::vector<std::uint32_t> &faces,
+                    const std::vector<char> &flip)
 {
     const glm::dvec3 origin(mesh.positions[mesh.cornerPosition[mesh.faceStart[faces.front()]]]);
     double volume = 0.0;
@@ -286,10 +291,13 @@ void splitBowtieVertices(PolygonMesh &mesh, const Adjacency &adj, RepairReport &
     // More than one group at a vertex: surfaces touching at a point only.
     std::vector<std::uint32_t> parent(mesh.cornerPosition.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    auto unite = [&](std::uint32_t a, std::uint32_t b) { parent[findRoot(parent, a)] = findRoot(parent, b); };
+    auto unite = [&](std::uint32_t a, std::uint32_t b) {
+        parent[findRoot(parent, a)] = findRoot(parent, b);
+    };
     auto endsOf = [&](const Side &s) {
         const std::uint32_t next = nextCorner(mesh, adj.cornerFace, s.corner);
-        return s.forward ? std::pair(s.corner, next) : std::pair(next, s.corner); // (smaller, larger) vertex
+        return s.forward ? std::pair(s.corner, next)
+                         : std::pair(next, s.corner); // (smaller, larger) vertex
     };
     forEachEdge(adj, [&](std::size_t i, std::size_t n) {
         const auto first = endsOf(adj.sides[i]);
@@ -357,7 +365,8 @@ QStringList RepairReport::warnings() const
         w << QStringLiteral("dropped %1 (fewer than 3 distinct corners or zero area)")
                  .arg(counted(facesDroppedDegenerate, "degenerate face", "degenerate faces"));
     if (normalsDiscarded)
-        w << QStringLiteral("ignored the file normal of %1 (missing, zero or not finite); computed instead")
+        w << QStringLiteral(
+                 "ignored the file normal of %1 (missing, zero or not finite); computed instead")
                  .arg(counted(normalsDiscarded, "face corner", "face corners"));
     if (nonManifoldEdges)
         w << QStringLiteral("%1 (shared by 3 or more faces), kept as they are")
@@ -366,12 +375,14 @@ QStringList RepairReport::warnings() const
         w << QStringLiteral("%1 no consistent winding agrees on (a non-orientable surface)")
                  .arg(counted(orientationConflicts, "edge", "edges"));
     if (facesFlipped)
-        w << QStringLiteral("flipped %1 to make the winding consistent").arg(counted(facesFlipped, "face", "faces"));
+        w << QStringLiteral("flipped %1 to make the winding consistent")
+                 .arg(counted(facesFlipped, "face", "faces"));
     if (verticesDuplicated)
         w << QStringLiteral("split %1 where surfaces touch only at that point")
                  .arg(counted(verticesDuplicated, "vertex", "vertices"));
     if (isolatedVerticesRemoved)
-        w << QStringLiteral("removed %1 no face uses").arg(counted(isolatedVerticesRemoved, "vertex", "vertices"));
+        w << QStringLiteral("removed %1 no face uses")
+                 .arg(counted(isolatedVerticesRemoved, "vertex", "vertices"));
     return w;
 }
 
@@ -382,7 +393,8 @@ RepairReport repairMesh(PolygonMesh &mesh)
     dropUnusableFaces(mesh, report);
     {
         const Adjacency adj = buildAdjacency(mesh);
-        forEachEdge(adj, [&](std::size_t, std::size_t n) { report.nonManifoldEdges += n >= 3 ? 1 : 0; });
+        forEachEdge(adj,
+                    [&](std::size_t, std::size_t n) { report.nonManifoldEdges += n >= 3 ? 1 : 0; });
         // Split first: flipping reorders corners, which the adjacency names.
         splitBowtieVertices(mesh, adj, report);
         orientFaces(mesh, adj, report);

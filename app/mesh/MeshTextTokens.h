@@ -110,11 +110,13 @@ inline bool isReal(std::string_view t)
 {
     if (t.size() > 1 && t[0] == '+' && t[1] != '-')
         t.remove_prefix(1);
-    if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '.'))
+    if (t.empty()
+        || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '.'))
         return false;
     double v = 0.0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v) && std::fabs(v) <= FLT_MAX;
+    return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v)
+        && std::fabs(v) <= FLT_MAX;
 }
 
 // A whole token as an integer; `stream >> int` would stop at a '.' and leave
@@ -159,7 +161,9 @@ inline QString binaryDataError(std::string_view text, const QString &format)
     for (std::size_t i = 0; i < text.size(); ++i) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
         if (c == 0)
-            return QStringLiteral("binary data in a text %1 file (a NUL byte at offset %2)").arg(format).arg(i);
+            return QStringLiteral("binary data in a text %1 file (a NUL byte at offset %2)")
+                .arg(format)
+                .arg(i);
         if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v' && c != 0x1a)
             ++controls;
     }

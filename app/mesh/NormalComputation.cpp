@@ -17,7 +17,8 @@ namespace {
 
 using namespace normals;
 
-CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles)
+CornerNormals flatNormals(std::span<const glm::vec3> positions,
+                          std::span<const std::uint32_t> triangles)
 {
     CornerNormals result;
     result.indexing = CornerNormals::Indexing::PerTriangle;
@@ -25,8 +26,8 @@ CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const 
     result.normals.resize(count);
     for (std::size_t t = 0; t < count; ++t) {
         const glm::vec3 &a = positions[triangles[3 * t]];
-        const glm::vec3 n =
-            normalizedOrZero(glm::cross(positions[triangles[3 * t + 1]] - a, positions[triangles[3 * t + 2]] - a));
+        const glm::vec3 n = normalizedOrZero(
+            glm::cross(positions[triangles[3 * t + 1]] - a, positions[triangles[3 * t + 2]] - a));
         // A degenerate triangle is invisible; any normal will do.
         result.normals[t] = isZero(n) ? kLastResort : n;
     }
@@ -37,7 +38,8 @@ CornerNormals flatNormals(std::span<const glm::vec3> positions, std::span<const 
 // vertices, then one normalising each vertex's sum. The method is a
 // template argument so each variant compiles to its own tight loop.
 template <NormalMethod Method>
-void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count, Accumulator *sums)
+void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count,
+                Accumulator *sums)
 {
     for (std::size_t t = 0; t < count; ++t, triangles += 3) {
         const std::uint32_t i0 = triangles[0], i1 = triangles[1], i2 = triangles[2];
@@ -66,8 +68,8 @@ void accumulate(const glm::vec3 *positions, const std::uint32_t *triangles, std:
 // the loop. So triangles go in blocks: gather a block's cross and dot
 // products, turn them into weights in a loop without indirection (which
 // the compiler vectorises), then scatter.
-void accumulateAngleWeighted(const glm::vec3 *positions, const std::uint32_t *triangles, std::size_t count,
-                             Accumulator *sums)
+void accumulateAngleWeighted(const glm::vec3 *positions, const std::uint32_t *triangles,
+                             std::size_t count, Accumulator *sums)
 {
     constexpr std::size_t kBlock = 256;
     glm::vec3 normal[kBlock];
@@ -81,7 +83,8 @@ void accumulateAngleWeighted(const glm::vec3 *positions, const std::uint32_t *tr
         const std::uint32_t *block = triangles + 3 * first;
         for (std::size_t i = 0; i < blockSize; ++i) {
             const glm::vec3 a = positions[block[3 * i]];
-            const glm::vec3 ab = positions[block[3 * i + 1]] - a, ac = positions[block[3 * i + 2]] - a;
+            const glm::vec3 ab = positions[block[3 * i + 1]] - a,
+                            ac = positions[block[3 * i + 2]] - a;
             normal[i] = glm::cross(ab, ac);
             doubleArea[i] = std::sqrt(glm::dot(normal[i], normal[i]));
             dotA[i] = glm::dot(ab, ac);
@@ -122,15 +125,16 @@ void splitCancelled(std::span<const glm::vec3> positions, std::span<const std::u
     }
 }
 
-CornerNormals smoothNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                            NormalMethod method)
+CornerNormals smoothNormals(std::span<const glm::vec3> positions,
+                            std::span<const std::uint32_t> triangles, NormalMethod method)
 {
     std::vector<Accumulator> sums(positions.size(), Accumulator(0.0f));
     const std::size_t count = triangles.size() / 3;
     if (method == NormalMethod::Average)
         accumulate<NormalMethod::Average>(positions.data(), triangles.data(), count, sums.data());
     else if (method == NormalMethod::AreaWeighted)
-        accumulate<NormalMethod::AreaWeighted>(positions.data(), triangles.data(), count, sums.data());
+        accumulate<NormalMethod::AreaWeighted>(positions.data(), triangles.data(), count,
+                                               sums.data());
     else
         accumulateAngleWeighted(positions.data(), triangles.data(), count, sums.data());
 
@@ -149,8 +153,9 @@ CornerNormals smoothNormals(std::span<const glm::vec3> positions, std::span<cons
 
 } // namespace
 
-CornerNormals computeNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                             NormalMethod method, std::optional<double> creaseAngleDeg)
+CornerNormals computeNormals(std::span<const glm::vec3> positions,
+                             std::span<const std::uint32_t> triangles, NormalMethod method,
+                             std::optional<double> creaseAngleDeg)
 {
     if (method == NormalMethod::Flat)
         return flatNormals(positions, triangles);
@@ -161,7 +166,8 @@ CornerNormals computeNormals(std::span<const glm::vec3> positions, std::span<con
     return smoothNormals(positions, triangles, method);
 }
 
-std::vector<glm::vec3> expandCornerNormals(const CornerNormals &normals, std::span<const std::uint32_t> triangles)
+std::vector<glm::vec3> expandCornerNormals(const CornerNormals &normals,
+                                           std::span<const std::uint32_t> triangles)
 {
     std::vector<glm::vec3> expanded(triangles.size());
     for (std::size_t c = 0; c < triangles.size(); ++c)

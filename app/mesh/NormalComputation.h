@@ -58,11 +58,13 @@ struct CornerNormals {
 // nothing else to go on (it sees only degenerate, hence invisible,
 // triangles) gets +Z. Every normal is finite and unit length.
 // Triangles × 3 must fit in 32 bits (MeshBuilder checks).
-CornerNormals computeNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                             NormalMethod method, std::optional<double> creaseAngleDeg = std::nullopt);
+CornerNormals computeNormals(std::span<const glm::vec3> positions,
+                             std::span<const std::uint32_t> triangles, NormalMethod method,
+                             std::optional<double> creaseAngleDeg = std::nullopt);
 
 // One normal per triangle corner, written out (3 per triangle); for tests
 // and callers that want the plain array.
-std::vector<glm::vec3> expandCornerNormals(const CornerNormals &normals, std::span<const std::uint32_t> triangles);
+std::vector<glm::vec3> expandCornerNormals(const CornerNormals &normals,
+                                           std::span<const std::uint32_t> triangles);
 
 } // namespace phonglab

@@ -57,7 +57,8 @@ inline glm::vec3 resolve(const Accumulator &sum)
         return kLastResort;
     const glm::vec3 v(sum);
     const float length = std::sqrt(glm::dot(v, v));
-    return length > kCancelled * sum.w && length > kTiny && length <= kHuge ? v / length : glm::vec3(0.0f);
+    return length > kCancelled * sum.w && length > kTiny && length <= kHuge ? v / length
+                                                                            : glm::vec3(0.0f);
 }
 
 // The angle atan2(y, x) for y ≥ 0, as between two edges with cross
@@ -76,20 +77,21 @@ inline float angleBetween(float y, float x)
     const float z = t * t, z2 = z * z, z4 = z2 * z2;
     const float atanT = t
         * ((0.999999336f - 0.333298608f * z) + z2 * (0.199465661f - 0.139086307f * z)
-           + z4 * ((0.0964219876f - 0.0559123329f * z) + z2 * (0.0218629554f - 0.00405456518f * z)));
+           + z4
+               * ((0.0964219876f - 0.0559123329f * z) + z2 * (0.0218629554f - 0.00405456518f * z)));
     const float steep = y > ax ? 1.0f : 0.0f, obtuse = x < 0.0f ? 1.0f : 0.0f;
     const float acute = steep * (kPi / 2) + (1.0f - 2.0f * steep) * atanT;
     return obtuse * kPi + (1.0f - 2.0f * obtuse) * acute;
 }
 
 // The normal for a corner whose own sum cancelled: its triangle's.
-inline glm::vec3 fallbackNormal(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
-                                std::size_t corner)
+inline glm::vec3 fallbackNormal(std::span<const glm::vec3> positions,
+                                std::span<const std::uint32_t> triangles, std::size_t corner)
 {
     const std::size_t base = corner - corner % 3;
     const glm::vec3 &a = positions[triangles[base]];
-    const glm::vec3 face =
-        normalizedOrZero(glm::cross(positions[triangles[base + 1]] - a, positions[triangles[base + 2]] - a));
+    const glm::vec3 face = normalizedOrZero(
+        glm::cross(positions[triangles[base + 1]] - a, positions[triangles[base + 2]] - a));
     return isZero(face) ? kLastResort : face;
 }
 

@@ -34,13 +34,15 @@ Surface weld(const MeshData &mesh)
     std::vector<std::uint32_t> remap(mesh.positions.size());
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const glm::vec3 p = mesh.positions[i] + glm::vec3(0.0f); // -0 -> +0
-        const auto [it, added] = idOf.try_emplace({p.x, p.y, p.z}, std::uint32_t(s.positions.size()));
+        const auto [it, added] =
+            idOf.try_emplace({p.x, p.y, p.z}, std::uint32_t(s.positions.size()));
         if (added)
             s.positions.push_back(p);
         remap[i] = it->second;
     }
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = remap[mesh.indices[t]], b = remap[mesh.indices[t + 1]], c = remap[mesh.indices[t + 2]];
+        const std::uint32_t a = remap[mesh.indices[t]], b = remap[mesh.indices[t + 1]],
+                            c = remap[mesh.indices[t + 2]];
         if (a != b && b != c && c != a)
             s.triangles.insert(s.triangles.end(), {a, b, c});
     }
@@ -63,18 +65,21 @@ double uniform(std::mt19937 &random)
 Surface jitteredIcosphere(int levels, double jitter, std::uint32_t seed)
 {
     const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<glm::dvec3> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
-                                 {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    std::vector<glm::dvec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                 {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                 {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
     for (glm::dvec3 &v : p)
         v = glm::normalize(v);
-    std::vector<std::uint32_t> t = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
-                                    4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
-                                    6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
+    std::vector<std::uint32_t> t = {0, 11, 5, 0, 5,  1,  0,  1,  7,  0,  7, 10, 0, 10, 11,
+                                    1, 5,  9, 5, 11, 4,  11, 10, 2,  10, 7, 6,  7, 1,  8,
+                                    3, 9,  4, 3, 4,  2,  3,  2,  6,  3,  6, 8,  3, 8,  9,
+                                    4, 9,  5, 2, 4,  11, 6,  2,  10, 8,  6, 7,  9, 8,  1};
     for (int level = 0; level < levels; ++level) {
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
         const auto mid = [&](std::uint32_t a, std::uint32_t b) {
             const auto key = std::minmax(a, b);
-            const auto [it, added] = midpoint.try_emplace({key.first, key.second}, std::uint32_t(p.size()));
+            const auto [it, added] =
+                midpoint.try_emplace({key.first, key.second}, std::uint32_t(p.size()));
             if (added)
                 p.push_back(glm::normalize(p[a] + p[b]));
             return it->second;
@@ -95,8 +100,10 @@ Surface jitteredIcosphere(int levels, double jitter, std::uint32_t seed)
         // A random direction in the tangent plane, a random distance.
         const glm::dvec3 helper = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
         const glm::dvec3 u = glm::normalize(glm::cross(v, helper)), w = glm::cross(v, u);
-        const double angle = 2.0 * M_PI * uniform(random), distance = jitter * edge * uniform(random);
-        s.positions.emplace_back(glm::normalize(v + distance * (std::cos(angle) * u + std::sin(angle) * w)));
+        const double angle = 2.0 * M_PI * uniform(random),
+                     distance = jitter * edge * uniform(random);
+        s.positions.emplace_back(
+            glm::normalize(v + distance * (std::cos(angle) * u + std::sin(angle) * w)));
     }
     s.triangles = std::move(t);
     return s;
@@ -108,7 +115,8 @@ double angleDeg(const glm::vec3 &a, const glm::vec3 &b)
     return glm::degrees(std::acos(std::clamp(c, -1.0, 1.0)));
 }
 
-NormalStudyRow measure(const QString &tessellation, const Surface &s, NormalMethod method, int repeats)
+NormalStudyRow measure(const QString &tessellation, const Surface &s, NormalMethod method,
+                       int repeats)
 {
     NormalStudyRow row;
     row.tessellation = tessellation;
@@ -127,7 +135,8 @@ NormalStudyRow measure(const QString &tessellation, const Surface &s, NormalMeth
     const std::vector<glm::vec3> corner = expandCornerNormals(normals, s.triangles);
     double sum = 0.0;
     for (std::size_t c = 0; c < corner.size(); ++c) {
-        const double a = angleDeg(corner[c], s.positions[s.triangles[c]]); // exact: the point's radius
+        const double a =
+            angleDeg(corner[c], s.positions[s.triangles[c]]); // exact: the point's radius
         row.maxAngleDeg = std::max(row.maxAngleDeg, a);
         sum += a;
     }
@@ -142,12 +151,13 @@ std::vector<NormalStudyRow> runNormalStudy(int repeats)
     const std::vector<std::pair<QString, Surface>> tessellations = {
         {QStringLiteral("UV sphere 64\u00d732"), weld(makeUvSphere(64, 32))},
         {QStringLiteral("icosphere 5, jittered 30 %"), jitteredIcosphere(5, 0.3, 20240601u)},
-        {QStringLiteral("UV sphere 128\u00d764 decimated to 1/4"), weld(decimateMesh(makeUvSphere(128, 64), 0.25))},
+        {QStringLiteral("UV sphere 128\u00d764 decimated to 1/4"),
+         weld(decimateMesh(makeUvSphere(128, 64), 0.25))},
     };
     std::vector<NormalStudyRow> rows;
     for (const auto &[name, surface] : tessellations)
-        for (const NormalMethod method :
-             {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted})
+        for (const NormalMethod method : {NormalMethod::Flat, NormalMethod::Average,
+                                          NormalMethod::AreaWeighted, NormalMethod::AngleWeighted})
             rows.push_back(measure(name, surface, method, repeats));
     return rows;
 }

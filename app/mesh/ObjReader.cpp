@@ -58,8 +58,9 @@ inline const char *parseFloatSlow(const char *p, const char *e, float &out)
 // final float is then within half an ulp, bar double rounding in ties.
 inline const char *parseFloat(const char *p, const char *e, float &out)
 {
-    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const char *start = p;
     const bool negative = p < e && *p == '-';
     if (p < e && (*p == '-' || *p == '+'))
@@ -231,12 +232,13 @@ bool ObjParser::parseLine(const char *p, const char *e)
     if (key == "vn")
         return parseVec3(p, e, m_mesh.normals);
     if (keywordIn(key,
-                  {"vt", "o", "g", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel", "c_interp", "d_interp",
-                   "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech"}))
+                  {"vt", "o", "g", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel",
+                   "c_interp", "d_interp", "usemap", "maplib", "shadow_obj", "trace_obj", "ctech",
+                   "stech"}))
         return true;
     if (keywordIn(key,
-                  {"vp", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
-                   "end", "con"})) {
+                  {"vp", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim",
+                   "hole", "scrv", "sp", "end", "con"})) {
         ++m_freeform;
         return true;
     }
@@ -284,7 +286,8 @@ MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(do
         lastLineBad = !parseLine(lineBegin, lineEnd);
         if (lastLineBad && m_badLines++ == 0) {
             m_firstBadLine = firstLine;
-            m_firstBadText.assign(lineBegin, std::min<std::size_t>(std::size_t(lineEnd - lineBegin), 60));
+            m_firstBadText.assign(lineBegin,
+                                  std::min<std::size_t>(std::size_t(lineEnd - lineBegin), 60));
         }
         p = next;
         if (p >= nextReport && progress) {
@@ -302,8 +305,9 @@ MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(do
 void ObjParser::finish(MeshReadResult &result, bool endsInNewline, bool lastLineBad)
 {
     if (m_mesh.faceCount() == 0) {
-        result.error = m_mesh.positions.empty() ? QStringLiteral("no vertices or faces found (not an OBJ file?)")
-                                                : QStringLiteral("the file has vertices but no faces");
+        result.error = m_mesh.positions.empty()
+            ? QStringLiteral("no vertices or faces found (not an OBJ file?)")
+            : QStringLiteral("the file has vertices but no faces");
         return;
     }
     std::size_t missingNormals = 0;
@@ -320,18 +324,22 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline, bool lastLine
     }
     if (m_badLines)
         result.warnings << QStringLiteral("skipped %1 (first at line %2: \"%3\")")
-                               .arg(meshtext::counted(m_badLines, "unreadable line", "unreadable lines"))
+                               .arg(meshtext::counted(m_badLines, "unreadable line",
+                                                      "unreadable lines"))
                                .arg(m_firstBadLine)
                                .arg(QString::fromUtf8(m_firstBadText));
     if (lastLineBad && !endsInNewline)
         result.warnings << QStringLiteral("the last line is incomplete (the file looks truncated)");
     if (m_freeform)
         result.warnings << QStringLiteral("ignored %1 (only polygons are read)")
-                               .arg(meshtext::counted(m_freeform, "free-form curve or surface statement",
+                               .arg(meshtext::counted(m_freeform,
+                                                      "free-form curve or surface statement",
                                                       "free-form curve and surface statements"));
     if (missingNormals)
-        result.warnings << QStringLiteral("%1 to normals the file does not have; they get computed normals")
-                               .arg(meshtext::counted(missingNormals, "face corner refers", "face corners refer"));
+        result.warnings << QStringLiteral(
+                               "%1 to normals the file does not have; they get computed normals")
+                               .arg(meshtext::counted(missingNormals, "face corner refers",
+                                                      "face corners refer"));
     result.mesh = std::move(m_mesh);
 }
 

@@ -53,12 +53,15 @@ QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
 {
     for (quint64 f = 0; f < faces; ++f) {
         if (text.size() - at < 4)
-            return QStringLiteral("the binary OFF file ends after %1 of %2 faces (truncated?)").arg(f).arg(faces);
+            return QStringLiteral("the binary OFF file ends after %1 of %2 faces (truncated?)")
+                .arg(f)
+                .arg(faces);
         const quint64 corners = littleEndian(text, at);
         at += 4;
         if (corners > (text.size() - at) / 4)
-            return QStringLiteral("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
-                                  "left can hold (corrupt?)")
+            return QStringLiteral(
+                       "binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
+                       "left can hold (corrupt?)")
                 .arg(f + 1)
                 .arg(at - 4)
                 .arg(corners)
@@ -80,9 +83,11 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     // Colour and texture layouts depend on reader options this check cannot
     // see, so the faces could not be walked safely.
     if (k.colors || k.keyword.substr(0, 2) == "ST") {
-        check.error = QStringLiteral("binary %1 files (with colours or texture coordinates) are not supported; "
-                                     "save it as ascii OFF or as PLY")
-                          .arg(QString::fromLatin1(k.keyword.data(), qsizetype(k.keyword.size())));
+        check.error =
+            QStringLiteral(
+                "binary %1 files (with colours or texture coordinates) are not supported; "
+                "save it as ascii OFF or as PLY")
+                .arg(QString::fromLatin1(k.keyword.data(), qsizetype(k.keyword.size())));
         return;
     }
     check.binary = true;
@@ -91,12 +96,14 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     const quint64 vertexBytes = check.declaredVertices * (k.normals ? 24 : 12);
     const quint64 needed = body + 12 + vertexBytes + check.declaredFaces * 16;
     if (needed > text.size())
-        check.error = QStringLiteral("the binary OFF header declares %1 vertices and %2 faces, which need at least "
-                                     "%3 bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(check.declaredVertices)
-                          .arg(check.declaredFaces)
-                          .arg(needed)
-                          .arg(text.size());
+        check.error =
+            QStringLiteral(
+                "the binary OFF header declares %1 vertices and %2 faces, which need at least "
+                "%3 bytes, but the file has %4 (truncated or corrupt)")
+                .arg(check.declaredVertices)
+                .arg(check.declaredFaces)
+                .arg(needed)
+                .arg(text.size());
     else if (check.declaredFaces == 0)
         check.error = QStringLiteral("the OFF file has no faces");
     else
@@ -152,15 +159,17 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     for (int i = 0; i < 3; ++i) {
         const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
         if (!meshtext::parseInteger(t, counts[i]) || counts[i] < 0 || counts[i] > UINT32_MAX) {
-            check.error = QStringLiteral("line %1: expected the vertex, face and edge counts, found %2")
-                              .arg(tokens.line())
-                              .arg(quoted(t));
+            check.error =
+                QStringLiteral("line %1: expected the vertex, face and edge counts, found %2")
+                    .arg(tokens.line())
+                    .arg(quoted(t));
             return;
         }
         rewrite = rewrite || tokens.line() == headerLine;
     }
     if (!tokens.lineIsEmpty()) {
-        check.error = QStringLiteral("line %1: unexpected text after the counts").arg(tokens.line());
+        check.error =
+            QStringLiteral("line %1: unexpected text after the counts").arg(tokens.line());
         return;
     }
     check.declaredVertices = quint64(counts[0]);
@@ -168,12 +177,14 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     // At the least "0 0 0\n" a vertex and "3 0 0 0\n" a face.
     const quint64 needed = 6 * check.declaredVertices + 8 * check.declaredFaces;
     if (needed > text.size()) {
-        check.error = QStringLiteral("the OFF header declares %1 vertices and %2 faces, which need at least %3 "
-                                     "bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(check.declaredVertices)
-                          .arg(check.declaredFaces)
-                          .arg(needed)
-                          .arg(text.size());
+        check.error =
+            QStringLiteral(
+                "the OFF header declares %1 vertices and %2 faces, which need at least %3 "
+                "bytes, but the file has %4 (truncated or corrupt)")
+                .arg(check.declaredVertices)
+                .arg(check.declaredFaces)
+                .arg(needed)
+                .arg(text.size());
         return;
     }
     if (check.declaredFaces == 0) {
@@ -208,12 +219,16 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const std::size_t vertexNumbers = k.normals ? 6 : 3;
     for (quint64 v = 0; v < check.declaredVertices; ++v) {
         if (!readLine()) {
-            check.error = QStringLiteral("the file ends after %1 of %2 vertices (truncated?)").arg(v).arg(counts[0]);
+            check.error = QStringLiteral("the file ends after %1 of %2 vertices (truncated?)")
+                              .arg(v)
+                              .arg(counts[0]);
             return;
         }
         if (line.size() < vertexNumbers)
-            return fail(
-                QStringLiteral("vertex %1 needs %2 numbers, found %3").arg(v + 1).arg(vertexNumbers).arg(line.size()));
+            return fail(QStringLiteral("vertex %1 needs %2 numbers, found %3")
+                            .arg(v + 1)
+                            .arg(vertexNumbers)
+                            .arg(line.size()));
         for (std::string_view t : line)
             if (!meshtext::isReal(t))
                 return fail(QStringLiteral("expected a number, found %1").arg(quoted(t)));
@@ -223,13 +238,16 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     std::size_t strayLines = 0;
     for (quint64 f = 0; f < check.declaredFaces; ++f) {
         if (!readLine()) {
-            check.error = QStringLiteral("the file ends after %1 of %2 faces (truncated?)").arg(f).arg(counts[1]);
+            check.error = QStringLiteral("the file ends after %1 of %2 faces (truncated?)")
+                              .arg(f)
+                              .arg(counts[1]);
             return;
         }
         std::int64_t corners = -1;
         if (!meshtext::parseInteger(line[0], corners) || corners < 0)
-            return fail(
-                QStringLiteral("expected the corner count of face %1, found %2").arg(f + 1).arg(quoted(line[0])));
+            return fail(QStringLiteral("expected the corner count of face %1, found %2")
+                            .arg(f + 1)
+                            .arg(quoted(line[0])));
         if (std::size_t(corners) > line.size() - 1)
             return fail(QStringLiteral("face %1 has %2 corners but only %3 indices")
                             .arg(f + 1)
@@ -241,7 +259,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
                 return fail(
                     QStringLiteral("expected %1, found %2")
-                        .arg(index ? QStringLiteral("a vertex index") : QStringLiteral("a number"), quoted(line[i])));
+                        .arg(index ? QStringLiteral("a vertex index") : QStringLiteral("a number"),
+                             quoted(line[i])));
         }
         // Values after the indices are a colour, which the reader only takes
         // from the rest of the line under a COFF header; otherwise it would
@@ -258,7 +277,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
                               .arg(meshtext::counted(strayLines, "face line", "face lines"));
     tokens.nextLine();
     if (!tokens.next().empty())
-        check.warnings << QStringLiteral("ignored the text after the last face (from line %1)").arg(tokens.line());
+        check.warnings << QStringLiteral("ignored the text after the last face (from line %1)")
+                              .arg(tokens.line());
     if (rewrite || tokens.sawComment())
         check.rewritten = std::move(out);
 }

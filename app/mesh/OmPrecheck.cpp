@@ -119,7 +119,9 @@ ChunkSize vectorSize(const ChunkHeader &c, quint64 count)
     if (c.dims != 3)
         return wrongDims(c, 3);
     if (c.bits > 1)
-        return {0, QStringLiteral("a %1 chunk with a number size the reader does not know").arg(describe(c))};
+        return {0,
+                QStringLiteral("a %1 chunk with a number size the reader does not know")
+                    .arg(describe(c))};
     return sized(count * (c.bits == 0 ? 12 : 24));
 }
 
@@ -155,11 +157,16 @@ ChunkSize faceIndexSize(const OmHeader &h, const ChunkHeader &c, std::string_vie
     quint64 at = 0;
     for (quint64 f = 0; f < h.faces; ++f) {
         if (rest.size() - at < 2)
-            return {0, QStringLiteral("the file ends after %1 of %2 faces (truncated?)").arg(f).arg(h.faces)};
+            return {0,
+                    QStringLiteral("the file ends after %1 of %2 faces (truncated?)")
+                        .arg(f)
+                        .arg(h.faces)};
         at += 2 + index * littleEndian(rest, std::size_t(at), 2);
         if (at > rest.size())
             return {0,
-                    QStringLiteral("face %1 of %2 runs past the end of the file (truncated?)").arg(f + 1).arg(h.faces)};
+                    QStringLiteral("face %1 of %2 runs past the end of the file (truncated?)")
+                        .arg(f + 1)
+                        .arg(h.faces)};
     }
     return sized(at);
 }
@@ -184,7 +191,8 @@ ChunkSize topologySize(const OmHeader &h, const ChunkHeader &c, std::string_view
 // others only has to walk past what a writer puts there.
 ChunkSize dataSize(const OmHeader &h, const ChunkHeader &c, std::string_view rest)
 {
-    if (c.entity != Vertex && c.entity != Mesh && c.entity != Face && c.entity != Edge && c.entity != Halfedge)
+    if (c.entity != Vertex && c.entity != Mesh && c.entity != Face && c.entity != Edge
+        && c.entity != Halfedge)
         return {0, QStringLiteral("a chunk for an unknown kind of element (%1)").arg(c.entity)};
     const quint64 count = elementCount(h, c.entity);
     switch (c.type) {
@@ -224,8 +232,9 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
     for (int chunk = 1;; ++chunk) {
         const std::size_t start = at;
         if (bytes.size() - at < 2)
-            return QStringLiteral("the file ends after %1 chunks, before the end marker OpenMesh writes "
-                                  "(truncated?)")
+            return QStringLiteral(
+                       "the file ends after %1 chunks, before the end marker OpenMesh writes "
+                       "(truncated?)")
                 .arg(chunk - 1);
         const ChunkHeader c = decodeChunkHeader(littleEndian(bytes, at, 2));
         at += 2;
@@ -247,7 +256,8 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
         if (!size.error.isEmpty())
             return QStringLiteral("chunk %1 (byte %2): %3").arg(chunk).arg(start).arg(size.error);
         if (size.bytes > bytes.size() - at)
-            return QStringLiteral("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left (truncated or corrupt)")
+            return QStringLiteral("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left "
+                                  "(truncated or corrupt)")
                 .arg(chunk)
                 .arg(start)
                 .arg(describe(c))
@@ -284,12 +294,14 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     // At the least three floats a vertex and a byte a face.
     const quint64 needed = kHeaderBytes + 12 * h.vertices + h.faces;
     if (needed > bytes.size()) {
-        check.error = QStringLiteral("the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
-                                     "bytes, but the file has %4 (truncated or corrupt)")
-                          .arg(h.vertices)
-                          .arg(h.faces)
-                          .arg(needed)
-                          .arg(bytes.size());
+        check.error =
+            QStringLiteral(
+                "the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
+                "bytes, but the file has %4 (truncated or corrupt)")
+                .arg(h.vertices)
+                .arg(h.faces)
+                .arg(needed)
+                .arg(bytes.size());
         return;
     }
     if (h.faces == 0) {
@@ -299,7 +311,8 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     std::size_t end = 0;
     check.error = walkChunks(bytes, h, end, check.rewritten);
     if (check.ok() && end < bytes.size())
-        check.warnings << QStringLiteral("%1 bytes after the end marker were ignored").arg(bytes.size() - end);
+        check.warnings
+            << QStringLiteral("%1 bytes after the end marker were ignored").arg(bytes.size() - end);
 }
 
 } // namespace phonglab

@@ -75,7 +75,8 @@ std::mutex &openMeshMutex()
 // chunk. Running into the end of the file instead means it was cut short,
 // and the reader would have carried on with whatever a failed read leaves in
 // its variables.
-bool readOm(std::istream &in, PolygonSoupImporter &importer, OpenMesh::IO::Options options, QString &error)
+bool readOm(std::istream &in, PolygonSoupImporter &importer, OpenMesh::IO::Options options,
+            QString &error)
 {
     const bool ok = OpenMesh::IO::IOManager().read(in, "om", importer, options);
     if (in.eof())
@@ -108,12 +109,14 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         // Told binary or ascii explicitly, as the precheck decided it.
         if (check.binary)
             options += OpenMesh::IO::Options::Binary;
-        return readFileOrCopy(path, check, error,
-                              [&](std::istream &in) { return io.read(in, "stl", importer, options); });
+        return readFileOrCopy(path, check, error, [&](std::istream &in) {
+            return io.read(in, "stl", importer, options);
+        });
     }
     if (check.format == MeshFileFormat::Om)
-        return readFileOrCopy(path, check, error,
-                              [&](std::istream &in) { return readOm(in, importer, options, error); });
+        return readFileOrCopy(path, check, error, [&](std::istream &in) {
+            return readOm(in, importer, options, error);
+        });
     if (!check.rewritten.empty()) {
         // A cleaned OFF text. The OFF reader's stream entry point keeps the
         // header flags of the previous file, so it goes through a file too.
@@ -122,7 +125,8 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         if (!dir.isValid() || !cleaned.open(QIODevice::WriteOnly)
             || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size()))
                 != qint64(check.rewritten.size())) {
-            error = QStringLiteral("cannot write a cleaned copy of the OFF file to the temporary folder");
+            error = QStringLiteral(
+                "cannot write a cleaned copy of the OFF file to the temporary folder");
             return false;
         }
         cleaned.close();
@@ -141,8 +145,9 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
     PolygonSoupImporter importer;
     const quint64 expected = check.declaredVertices + check.declaredFaces;
     if (progress && expected) {
-        importer.setProgress([&](std::size_t n) { return progress(std::min(1.0, double(n) / double(expected))); },
-                             64 * 1024);
+        importer.setProgress(
+            [&](std::size_t n) { return progress(std::min(1.0, double(n) / double(expected))); },
+            64 * 1024);
     }
     // Every element takes at least a byte of the file.
     importer.setReserveLimit(std::size_t(check.fileSize));
@@ -164,7 +169,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         } catch (const std::bad_alloc &) {
             result.error = QStringLiteral("out of memory while reading the file");
         } catch (const std::exception &e) {
-            result.error = QStringLiteral("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
+            result.error =
+                QStringLiteral("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
         } catch (...) {
             result.error = QStringLiteral("the reader failed");
         }
@@ -183,7 +189,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         result.warnings << QStringLiteral("OpenMesh: %1").arg(messages[i]);
     if (messages.size() > kMaxMessages)
         result.warnings << QStringLiteral("OpenMesh: %1 more")
-                               .arg(meshtext::counted(messages.size() - kMaxMessages, "message", "messages"));
+                               .arg(meshtext::counted(messages.size() - kMaxMessages, "message",
+                                                      "messages"));
 
     const std::size_t faceCalls = importer.faceCallCount();
     PolygonMesh mesh = importer.takeMesh(result.warnings);
@@ -191,12 +198,14 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         && check.format != MeshFileFormat::Stl)
         result.warnings << QStringLiteral("read %1 of the %2 the header declares")
                                .arg(mesh.positions.size())
-                               .arg(meshtext::counted(check.declaredVertices, "vertex", "vertices"));
+                               .arg(
+                                   meshtext::counted(check.declaredVertices, "vertex", "vertices"));
     if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
         // OpenMesh's STL reader merges corners by position and skips
         // triangles left with a repeated corner.
         result.warnings << QStringLiteral("dropped %1 with two corners at the same position")
-                               .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle", "triangles"));
+                               .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle",
+                                                      "triangles"));
     } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
         result.warnings << QStringLiteral("read %1 of the %2 the header declares")
                                .arg(faceCalls)

@@ -140,7 +140,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         });
         if (odd != line.end())
             return where
-                + QStringLiteral(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                + QStringLiteral(
+                      ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
                       .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
                       .arg(odd - line.begin() + 1);
         if (w[0] == "format") {
@@ -164,7 +165,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
                           .arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
         } else if (w[0] == "element") {
             std::int64_t count = -1;
-            if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0 || count > UINT32_MAX)
+            if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0
+                || count > UINT32_MAX)
                 return where + QStringLiteral(": expected 'element <name> <count>'");
             h.elements.push_back({std::string(w[1]), quint64(count), {}});
         } else if (w[0] == "property") {
@@ -279,8 +281,9 @@ std::int64_t decodeInteger(const unsigned char *b, const PlyType &t, bool bigEnd
     if (!t.isSigned)
         return u;
     const int bits = 8 * t.size;
-    return bits == 32 ? std::int64_t(std::int32_t(u))
-                      : (std::int64_t(u) ^ (std::int64_t(1) << (bits - 1))) - (std::int64_t(1) << (bits - 1));
+    return bits == 32
+        ? std::int64_t(std::int32_t(u))
+        : (std::int64_t(u) ^ (std::int64_t(1) << (bits - 1))) - (std::int64_t(1) << (bits - 1));
 }
 
 QString truncatedAt(const PlyElement &e, quint64 index)
@@ -304,7 +307,8 @@ void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
         }
         if (!hasList) {
             if (!body.skip(e.count * stride)) {
-                check.error = truncatedAt(e, quint64(body.remaining()) / std::max<quint64>(stride, 1));
+                check.error =
+                    truncatedAt(e, quint64(body.remaining()) / std::max<quint64>(stride, 1));
                 return;
             }
             continue;
@@ -368,7 +372,8 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
                 };
                 if (!p.isList) {
                     if (!valueFits(t, p.type))
-                        return bad(p.type.integer ? QStringLiteral("an integer") : QStringLiteral("a number"));
+                        return bad(p.type.integer ? QStringLiteral("an integer")
+                                                  : QStringLiteral("a number"));
                     continue;
                 }
                 std::int64_t n = -1;
@@ -381,13 +386,15 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
                         return;
                     }
                     if (!valueFits(t, p.type))
-                        return bad(p.type.integer ? QStringLiteral("an integer") : QStringLiteral("a number"));
+                        return bad(p.type.integer ? QStringLiteral("an integer")
+                                                  : QStringLiteral("a number"));
                 }
             }
         }
     }
     if (!tokens.next().empty())
-        check.warnings << QStringLiteral("ignored the text after the last element (from line %1)").arg(tokens.line());
+        check.warnings << QStringLiteral("ignored the text after the last element (from line %1)")
+                              .arg(tokens.line());
 }
 
 } // namespace
@@ -406,7 +413,8 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
         return;
 
     const PlyElement *vertex = findElement(h, "vertex");
-    if (!vertex || !hasScalar(*vertex, "x") || !hasScalar(*vertex, "y") || !hasScalar(*vertex, "z")) {
+    if (!vertex || !hasScalar(*vertex, "x") || !hasScalar(*vertex, "y")
+        || !hasScalar(*vertex, "z")) {
         check.error = QStringLiteral("the PLY file has no vertex element with x, y and z");
         return;
     }
@@ -430,12 +438,13 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
             perElement += check.binary ? quint64(p.isList ? p.countType.size : p.type.size) : 2;
         needed += e.count * perElement;
         if (needed > bodyBytes + 1) {
-            check.error = QStringLiteral("the header declares %1 %2 elements, which need at least %3 bytes, "
-                                         "but the file has %4 bytes after the header (truncated or corrupt)")
-                              .arg(e.count)
-                              .arg(QString::fromStdString(e.name))
-                              .arg(needed)
-                              .arg(bodyBytes);
+            check.error =
+                QStringLiteral("the header declares %1 %2 elements, which need at least %3 bytes, "
+                               "but the file has %4 bytes after the header (truncated or corrupt)")
+                    .arg(e.count)
+                    .arg(QString::fromStdString(e.name))
+                    .arg(needed)
+                    .arg(bodyBytes);
             return;
         }
     }

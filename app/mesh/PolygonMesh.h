@@ -21,7 +21,10 @@ struct PolygonMesh {
     std::vector<std::uint32_t> cornerNormal; // parallel to cornerPosition; empty if no normals
 
     std::size_t faceCount() const { return faceStart.size() - 1; }
-    std::size_t cornerCount(std::size_t face) const { return faceStart[face + 1] - faceStart[face]; }
+    std::size_t cornerCount(std::size_t face) const
+    {
+        return faceStart[face + 1] - faceStart[face];
+    }
     bool hasNormals() const { return !cornerNormal.empty(); }
 
     void reserve(std::size_t vertices, std::size_t faces, std::size_t corners);

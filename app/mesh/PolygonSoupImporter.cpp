@@ -34,7 +34,8 @@ void PolygonSoupImporter::setProgress(std::function<bool(std::size_t)> progress,
 void PolygonSoupImporter::countElement()
 {
     ++m_elements;
-    if (m_progress && m_progressEvery && m_elements % m_progressEvery == 0 && !m_progress(m_elements))
+    if (m_progress && m_progressEvery && m_elements % m_progressEvery == 0
+        && !m_progress(m_elements))
         throw Cancelled{};
 }
 
@@ -98,7 +99,8 @@ OpenMesh::FaceHandle PolygonSoupImporter::add_face(const VHandles &indices)
     return OpenMesh::FaceHandle(int(m_faceCount++));
 }
 
-OpenMesh::HalfedgeHandle PolygonSoupImporter::add_edge(OpenMesh::VertexHandle from, OpenMesh::VertexHandle to)
+OpenMesh::HalfedgeHandle PolygonSoupImporter::add_edge(OpenMesh::VertexHandle from,
+                                                       OpenMesh::VertexHandle to)
 {
     m_edges.emplace_back(from.idx(), to.idx());
     m_next.resize(2 * m_edges.size(), -1);
@@ -144,7 +146,8 @@ void PolygonSoupImporter::buildHalfedgeFaces(QStringList &warnings)
         corners.clear();
         bool closed = false;
         int h = start;
-        for (std::size_t steps = 0; h >= 0 && std::size_t(h) < halfedges && steps < halfedges; ++steps) {
+        for (std::size_t steps = 0; h >= 0 && std::size_t(h) < halfedges && steps < halfedges;
+             ++steps) {
             corners.push_back(cornerIndex(toVertex(h)));
             h = m_next[h];
             if (h == start) {
@@ -188,7 +191,8 @@ void PolygonSoupImporter::attachNormals(QStringList &warnings)
     for (const glm::vec3 &n : m_faceNormals)
         unusable += usableNormal(n) ? 0 : 1;
     if (unusable == m_faceNormals.size()) {
-        warnings << QStringLiteral("the file's facet normals are all zero or invalid; normals will be computed");
+        warnings << QStringLiteral(
+            "the file's facet normals are all zero or invalid; normals will be computed");
         return;
     }
     if (unusable)
@@ -197,7 +201,8 @@ void PolygonSoupImporter::attachNormals(QStringList &warnings)
     m_mesh.normals = std::move(m_faceNormals);
     m_mesh.cornerNormal.resize(m_mesh.cornerPosition.size());
     for (std::size_t f = 0; f < m_mesh.faceCount(); ++f) {
-        const std::uint32_t n = usableNormal(m_mesh.normals[f]) ? std::uint32_t(f) : PolygonMesh::kNoNormal;
+        const std::uint32_t n =
+            usableNormal(m_mesh.normals[f]) ? std::uint32_t(f) : PolygonMesh::kNoNormal;
         for (std::uint32_t c = m_mesh.faceStart[f]; c < m_mesh.faceStart[f + 1]; ++c)
             m_mesh.cornerNormal[c] = n;
     }

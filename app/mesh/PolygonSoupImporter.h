@@ -47,7 +47,8 @@ public:
     OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f &point) override;
     OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d &point) override;
     OpenMesh::VertexHandle add_vertex() override;
-    OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle from, OpenMesh::VertexHandle to) override;
+    OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle from,
+                                      OpenMesh::VertexHandle to) override;
     OpenMesh::FaceHandle add_face(const VHandles &indices) override;
     OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle heh) override;
     void set_point(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f &point) override;
@@ -64,10 +65,12 @@ public:
 
     // Attributes we do not use: texture coordinates, colours, status bits,
     // the halfedge-to-face links (a face's own halfedge is enough).
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec2f> &) override
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                            const std::vector<OpenMesh::Vec2f> &) override
     {
     }
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle, const std::vector<OpenMesh::Vec3f> &) override
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                            const std::vector<OpenMesh::Vec3f> &) override
     {
     }
     void set_face_texindex(OpenMesh::FaceHandle, int) override { }

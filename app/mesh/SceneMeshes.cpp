@@ -21,7 +21,8 @@ QString detailSuffix(double detail)
         return {};
     // Shortest round-trip form: "0.25", and two details differ in the key
     // exactly when they differ as numbers.
-    return QStringLiteral("|detail=") + QString::number(detail, 'g', QLocale::FloatingPointShortest);
+    return QStringLiteral("|detail=")
+        + QString::number(detail, 'g', QLocale::FloatingPointShortest);
 }
 
 void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
@@ -30,7 +31,9 @@ void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
     s.triangles = qint64(mesh.triangleCount());
     if (countSplits) {
         // GPU vertices beyond one per position (exact bits, -0 = +0), as MeshBuilder counts them.
-        const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); };
+        const auto bits = [](float f) {
+            return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
+        };
         std::vector<std::array<std::uint32_t, 3>> keys;
         keys.reserve(mesh.positions.size());
         for (const glm::vec3 &p : mesh.positions)
@@ -51,7 +54,8 @@ void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
 // Replaces the full mesh with the one drawn at `detail`: builtins
 // tessellated coarser, files decimated (the mesh cache keeps the full one).
 // False when `progress` cancelled the decimation.
-bool applyDetail(MeshLoadResult &loaded, const QString &spec, double detail, const LoadProgress &progress)
+bool applyDetail(MeshLoadResult &loaded, const QString &spec, double detail,
+                 const LoadProgress &progress)
 {
     if (detail == 1.0 || !loaded.mesh)
         return true;
@@ -73,7 +77,8 @@ bool applyDetail(MeshLoadResult &loaded, const QString &spec, double detail, con
             cancelled = progress && !progress(f);
             return !cancelled;
         };
-        MeshData coarse = decimateMesh(*loaded.mesh, detail, &note, progress ? step : DecimationProgress{});
+        MeshData coarse =
+            decimateMesh(*loaded.mesh, detail, &note, progress ? step : DecimationProgress{});
         if (cancelled)
             return false;
         *loaded.mesh = std::move(coarse);
@@ -101,7 +106,8 @@ QString meshKey(const Scene &scene, const SceneObject &object)
     return key + detailSuffix(object.detail);
 }
 
-SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded, const LoadProgress &progress)
+SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded,
+                            const LoadProgress &progress)
 {
     SceneMeshes result;
     // Distinct keys to load, in object order.

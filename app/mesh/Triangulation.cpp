@@ -48,13 +48,17 @@ class PolygonTriangulator
 public:
     // Appends the triangles of corners [first, first + n) to `out`; false
     // when ear clipping failed and (part of) the polygon was fanned.
-    bool run(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition, std::uint32_t first,
-             std::uint32_t n, std::vector<std::uint32_t> &out);
+    bool run(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition,
+             std::uint32_t first, std::uint32_t n, std::vector<std::uint32_t> &out);
 
 private:
-    bool project(std::span<const glm::vec3> positions, const std::uint32_t *polygon, std::uint32_t n);
+    bool project(std::span<const glm::vec3> positions, const std::uint32_t *polygon,
+                 std::uint32_t n);
     bool isConvex() const;
-    bool isReflex(std::uint32_t i) const { return !turnsLeft(m_points[m_prev[i]], m_points[i], m_points[m_next[i]]); }
+    bool isReflex(std::uint32_t i) const
+    {
+        return !turnsLeft(m_points[m_prev[i]], m_points[i], m_points[m_next[i]]);
+    }
     bool isEar(std::uint32_t i) const;
     void emit(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
@@ -72,7 +76,8 @@ private:
 // Coordinates in the plane perpendicular to the Newell normal, with axes
 // chosen so the polygon winds counter-clockwise there. False when the
 // polygon has no area to speak of (its normal is undefined).
-bool PolygonTriangulator::project(std::span<const glm::vec3> positions, const std::uint32_t *polygon, std::uint32_t n)
+bool PolygonTriangulator::project(std::span<const glm::vec3> positions,
+                                  const std::uint32_t *polygon, std::uint32_t n)
 {
     const glm::dvec3 normal = newellNormal(positions, std::span(polygon, n));
     const double length = glm::length(normal);
@@ -142,8 +147,9 @@ void PolygonTriangulator::fanFrom(std::uint32_t start)
         emit(start, b, m_next[b]);
 }
 
-bool PolygonTriangulator::run(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition,
-                              std::uint32_t first, std::uint32_t n, std::vector<std::uint32_t> &out)
+bool PolygonTriangulator::run(std::span<const glm::vec3> positions,
+                              const std::uint32_t *cornerPosition, std::uint32_t first,
+                              std::uint32_t n, std::vector<std::uint32_t> &out)
 {
     m_out = &out;
     m_first = first;
@@ -211,8 +217,8 @@ bool PolygonTriangulator::run(std::span<const glm::vec3> positions, const std::u
 // Quads, the commonest polygon, need no projection: split along the
 // diagonal a–c when both halves face the way the quad does (neither b nor
 // d is reflex), else along b–d. A quad's Newell normal is (c − a) × (d − b).
-bool splitQuad(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition, std::uint32_t first,
-               std::vector<std::uint32_t> &out)
+bool splitQuad(std::span<const glm::vec3> positions, const std::uint32_t *cornerPosition,
+               std::uint32_t first, std::vector<std::uint32_t> &out)
 {
     const glm::dvec3 a(positions[cornerPosition[first]]), b(positions[cornerPosition[first + 1]]),
         c(positions[cornerPosition[first + 2]]), d(positions[cornerPosition[first + 3]]);
@@ -235,7 +241,8 @@ bool splitQuad(std::span<const glm::vec3> positions, const std::uint32_t *corner
 
 } // namespace
 
-glm::dvec3 newellNormal(std::span<const glm::vec3> positions, std::span<const std::uint32_t> polygon)
+glm::dvec3 newellNormal(std::span<const glm::vec3> positions,
+                        std::span<const std::uint32_t> polygon)
 {
     // Sum of the fan's cross products about the first corner: the same as
     // Newell's formula, with smaller numbers and so less rounding.
@@ -271,8 +278,10 @@ Triangulation triangulate(const PolygonMesh &mesh)
             result.corners.insert(result.corners.end(), {first, first + 1, first + 2});
             continue;
         }
-        const bool ok = n == 4 ? splitQuad(mesh.positions, mesh.cornerPosition.data(), first, result.corners)
-                               : triangulator.run(mesh.positions, mesh.cornerPosition.data(), first, n, result.corners);
+        const bool ok = n == 4
+            ? splitQuad(mesh.positions, mesh.cornerPosition.data(), first, result.corners)
+            : triangulator.run(mesh.positions, mesh.cornerPosition.data(), first, n,
+                               result.corners);
         result.fanFallbacks += !ok;
     }
     return result;

@@ -30,6 +30,7 @@ Triangulation triangulate(const PolygonMesh &mesh);
 
 // The polygon's Newell normal (not normalised): the area-weighted normal of
 // its best-fit plane, robust for non-planar and concave polygons.
-glm::dvec3 newellNormal(std::span<const glm::vec3> positions, std::span<const std::uint32_t> polygon);
+glm::dvec3 newellNormal(std::span<const glm::vec3> positions,
+                        std::span<const std::uint32_t> polygon);
 
 } // namespace phonglab

@@ -6,7 +6,8 @@ namespace phonglab {
 
 bool BuildReport::hasErrors() const
 {
-    return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ShaderDiagnostic &d) { return d.isError(); });
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [](const ShaderDiagnostic &d) { return d.isError(); });
 }
 
 QStringList BuildReport::formatted() const

@@ -16,7 +16,8 @@ constexpr unsigned long kJoinTimeoutMs = 3000;
 
 qint64 monotonicNs()
 {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
         .count();
 }
 
@@ -41,7 +42,8 @@ Result<> BuildThread::start(QOpenGLContext *shareContext)
     context->setFormat(shareContext->format());
     context->setShareContext(shareContext);
     if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
-        return fail(QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
+        return fail(
+            QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
     // QOffscreenSurface must be created (and destroyed) on the GUI thread.
     auto surface = std::make_unique<QOffscreenSurface>();
     surface->setFormat(context->format());
@@ -126,7 +128,8 @@ void BuildThread::stop()
     m_lentSurface.reset();
 }
 
-quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples)
+quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragment,
+                           int warmSamples)
 {
     BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples};
     if (!m_worker)
@@ -190,7 +193,8 @@ void BuildThread::release(GlProgram program)
     if (!m_worker || !program)
         return; // left to the share group
     QMetaObject::invokeMethod(
-        m_worker, [program = std::move(program)]() mutable { program.reset(); }, Qt::QueuedConnection);
+        m_worker, [program = std::move(program)]() mutable { program.reset(); },
+        Qt::QueuedConnection);
 }
 
 } // namespace phonglab

@@ -17,11 +17,13 @@ BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
 Result<> BuildWorker::initialize()
 {
     if (!m_context->makeCurrent(m_surface))
-        return fail(QStringLiteral("the shared OpenGL context cannot be made current on the compile thread"));
-    m_parallelShaderCompile = m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
+        return fail(QStringLiteral(
+            "the shared OpenGL context cannot be made current on the compile thread"));
+    m_parallelShaderCompile =
+        m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
-    m_rendererName =
-        QString::fromLatin1(reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
+    m_rendererName = QString::fromLatin1(
+        reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
     return {};
 }
 
@@ -44,13 +46,14 @@ BuildReply BuildWorker::build(const BuildJob &request)
     if (ok && request.warm && m_warmer.isCreated())
         m_warmer.warm(reply.program.id()); // ends in glFinish
     else
-        m_context->functions()->glFinish(); // the program object is complete before it changes hands
+        m_context->functions()
+            ->glFinish(); // the program object is complete before it changes hands
     reply.timings.warmNs = request.warm && ok ? timer.nsecsElapsed() : 0;
     return reply;
 }
 
-Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
-                                              QThread *owner)
+Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscreenSurface *surface,
+                                              GLuint program, QThread *owner)
 {
     QElapsedTimer timer;
     timer.start();

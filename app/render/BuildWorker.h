@@ -56,8 +56,8 @@ public:
     // context back to `owner` and makes the worker's own context current
     // again. The nanoseconds it took, or why the lent context could not be
     // used.
-    Result<qint64> warmInLentContext(const LentContext &lent, QOffscreenSurface *surface, GLuint program,
-                                     QThread *owner);
+    Result<qint64> warmInLentContext(const LentContext &lent, QOffscreenSurface *surface,
+                                     GLuint program, QThread *owner);
     // Frees the worker's GL objects, releases the context and hands it back
     // to `owner` (the GUI thread) so that it can be deleted there.
     void shutdown(QThread *owner);

@@ -17,8 +17,9 @@ namespace phonglab {
 struct FrameTiming {
     double wallMedianMs = 0; // render() + glFinish()
     double wallP90Ms = 0;
-    double cpuSubmitMedianMs = 0;                                  // until render() returned: CPU-side submission
-    double gpuMedianMs = std::numeric_limits<double>::quiet_NaN(); // GL_TIME_ELAPSED; NaN when not trusted
+    double cpuSubmitMedianMs = 0; // until render() returned: CPU-side submission
+    double gpuMedianMs =
+        std::numeric_limits<double>::quiet_NaN(); // GL_TIME_ELAPSED; NaN when not trusted
     int frames = 0;
 };
 

@@ -25,11 +25,12 @@ void GpuMesh::upload(const MeshData &mesh)
     m_vbo.create();
     m_vbo.bind();
     // glBufferData rather than allocate(), whose int size stops at 2 GiB.
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
+                 interleaved.data(), GL_STATIC_DRAW);
     m_ibo.create();
     m_ibo.bind(); // recorded in the VAO
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
+                 mesh.indices.data(), GL_STATIC_DRAW);
 
     const GLsizei stride = 6 * sizeof(float);
     glEnableVertexAttribArray(kPositionLocation);

@@ -38,10 +38,11 @@ Result<> OffscreenRenderer::create()
     m_surface->create();
     if (!m_context->makeCurrent(m_surface.get())) {
         destroy();
-        return fail(QStringLiteral("the OpenGL context could not be made current on an offscreen surface"));
+        return fail(
+            QStringLiteral("the OpenGL context could not be made current on an offscreen surface"));
     }
-    m_rendererName =
-        QString::fromLatin1(reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
+    m_rendererName = QString::fromLatin1(
+        reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
     return m_renderer.initialize();
 }
 

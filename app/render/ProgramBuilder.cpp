@@ -16,9 +16,10 @@ void ensureError(BuildReport &result, BuildStep step, const QString &file, const
     ShaderDiagnostic d;
     d.step = step;
     d.file = file;
-    d.message = log.trimmed().isEmpty() ? QStringLiteral("%1 failed without a message from the driver")
-                                              .arg(step == BuildStep::Link ? "linking" : "compiling")
-                                        : log.trimmed();
+    d.message = log.trimmed().isEmpty()
+        ? QStringLiteral("%1 failed without a message from the driver")
+              .arg(step == BuildStep::Link ? "linking" : "compiling")
+        : log.trimmed();
     result.diagnostics.push_back(d);
 }
 
@@ -41,10 +42,11 @@ QString ProgramBuilder::infoLog(GLuint object, bool isProgram)
     return QString::fromUtf8(log.constData());
 }
 
-GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                                      BuildReport &result)
+GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
+                                      const QStringList &defines, BuildReport &result)
 {
-    const BuildStep step = type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
+    const BuildStep step =
+        type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
     const QByteArray code = withPrologue(source.code, defines);
     const char *text = code.constData();
     const GLint length = GLint(code.size());
@@ -68,8 +70,8 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source, c
 
 // The shaders are freed when `vertex` and `fragment` go; attached, they are
 // only flagged then, and live on with the program.
-GlProgram ProgramBuilder::link(const GlShader &vertex, const GlShader &fragment, const QString &linkName,
-                               BuildReport &result)
+GlProgram ProgramBuilder::link(const GlShader &vertex, const GlShader &fragment,
+                               const QString &linkName, BuildReport &result)
 {
     GlProgram program(glCreateProgram());
     glAttachShader(program.id(), vertex.id());
@@ -88,7 +90,8 @@ GlProgram ProgramBuilder::link(const GlShader &vertex, const GlShader &fragment,
     return program;
 }
 
-BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
+BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment,
+                                   const QStringList &defines)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();

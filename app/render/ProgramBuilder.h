@@ -27,11 +27,14 @@ struct BuiltProgram {
 class ProgramBuilder : protected QOpenGLExtraFunctions
 {
 public:
-    BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
+    BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment,
+                       const QStringList &defines = {});
 
 private:
-    GlShader compileStage(GLenum type, const ShaderSource &source, const QStringList &defines, BuildReport &result);
-    GlProgram link(const GlShader &vertex, const GlShader &fragment, const QString &linkName, BuildReport &result);
+    GlShader compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
+                          BuildReport &result);
+    GlProgram link(const GlShader &vertex, const GlShader &fragment, const QString &linkName,
+                   BuildReport &result);
     QString infoLog(GLuint object, bool isProgram);
 
     bool m_initialized = false;

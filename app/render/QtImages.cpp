@@ -8,7 +8,9 @@ RgbImage toRgbImage(const QImage &image)
 {
     if (image.isNull())
         return {};
-    const QImage rgb = image.format() == QImage::Format_RGB888 ? image : image.convertToFormat(QImage::Format_RGB888);
+    const QImage rgb = image.format() == QImage::Format_RGB888
+        ? image
+        : image.convertToFormat(QImage::Format_RGB888);
     RgbImage out(rgb.width(), rgb.height());
     const std::size_t rowBytes = 3 * std::size_t(out.width);
     // QImage pads rows to 4 bytes; RgbImage's rows are packed.

@@ -19,13 +19,14 @@ Renderer::~Renderer() = default;
 Result<> Renderer::initialize()
 {
     initializeOpenGLFunctions();
-    const Result<StageSources> markerFiles =
-        readStageFiles(shaderPath(QStringLiteral("marker.vert")), shaderPath(QStringLiteral("marker.frag")));
+    const Result<StageSources> markerFiles = readStageFiles(
+        shaderPath(QStringLiteral("marker.vert")), shaderPath(QStringLiteral("marker.frag")));
     if (!markerFiles)
         return fail(markerFiles.error());
     const BuildReport marker = m_markerProgram.build(markerFiles->vertex, markerFiles->fragment);
     if (!marker.ok)
-        return fail(QStringLiteral("cannot build the light-marker program:\n") + marker.errorSummary());
+        return fail(QStringLiteral("cannot build the light-marker program:\n")
+                    + marker.errorSummary());
     m_markerMesh.upload(makeUvSphere(16, 8));
     m_initialized = true;
     return {};
@@ -105,11 +106,13 @@ void Renderer::updateSceneParameters(const Scene &scene)
 
 BuildReport Renderer::loadShading(ShadingMethod method)
 {
-    const Result<StageSources> shipped = readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
-                                                        shippedShaderPath(method, ShaderStage::Fragment));
+    const Result<StageSources> shipped =
+        readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
+                       shippedShaderPath(method, ShaderStage::Fragment));
     if (!shipped) {
         BuildReport failed;
-        failed.diagnostics.push_back({BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, shipped.error()});
+        failed.diagnostics.push_back(
+            {BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, shipped.error()});
         return failed;
     }
     return setProgramSources(shipped->vertex, shipped->fragment);
@@ -186,7 +189,8 @@ void Renderer::uploadLights(const glm::dmat4 &view)
 {
     // Only the enabled lights are packed; lightCount counts them.
     int count = 0;
-    glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights], attenuation[kMaxLights];
+    glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights],
+        attenuation[kMaxLights];
     for (const PointLight &l : m_scene.lights) {
         if (!l.enabled)
             continue;
@@ -245,8 +249,8 @@ std::vector<BoundingSphere> Renderer::boundingSpheres() const
         if (!m_meshes.contains(key))
             continue;
         const MeshStats &stats = m_meshInfo.value(key).stats;
-        spheres.push_back(
-            boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), object.transform.matrix()));
+        spheres.push_back(boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax),
+                                         object.transform.matrix()));
     }
     if (m_options.drawLightMarkers)
         for (const PointLight &light : m_scene.lights)
@@ -260,8 +264,8 @@ void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projec
     for (int i = 0; i < int(m_scene.lights.size()); ++i) {
         const PointLight &light = m_scene.lights[i];
         const double r = i == m_options.selectedLight ? 2.0 * kMarkerRadius : kMarkerRadius;
-        const glm::dmat4 model =
-            glm::dmat4(r, 0, 0, 0, 0, r, 0, 0, 0, 0, r, 0, light.position.x, light.position.y, light.position.z, 1);
+        const glm::dmat4 model = glm::dmat4(r, 0, 0, 0, 0, r, 0, 0, 0, 0, r, 0, light.position.x,
+                                            light.position.y, light.position.z, 1);
         // Show the light's hue even when its intensity is above 1 or very dim.
         const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});
         m_markerProgram.setUniform("mvpMatrix", glm::mat4(projection * view * model));

@@ -49,7 +49,8 @@ std::map<QString, std::vector<double>> userUniformValues(const UniformSnapshot &
     std::map<QString, std::vector<double>> values;
     for (const UniformValue &v : snapshot.values) {
         const QString name = QString::fromUtf8(v.name);
-        if (!isPlainNumberType(v.type) || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)
+        if (!isPlainNumberType(v.type)
+            || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)
             continue;
         std::vector<double> numbers;
         for (int i = 0; i < v.components; ++i)

@@ -43,23 +43,26 @@ const std::vector<LogPattern> &logPatterns()
     using RE = QRegularExpression;
     static const std::vector<LogPattern> patterns = {
         // Mesa: 0:12(5): error: message
-        {RE(QStringLiteral(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 1,
-         2, 3, 4},
+        {RE(QStringLiteral(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:\s*(.*)$)"),
+            RE::CaseInsensitiveOption),
+         1, 2, 3, 4},
         // NVIDIA: 0(12) : error C0000: message
         {RE(QStringLiteral(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s*(?:[A-Z]\d+)?\s*:\s*(.*)$)"),
             RE::CaseInsensitiveOption),
          1, 0, 2, 3},
         // AMD / ANGLE / glslang: ERROR: 0:12: message
-        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*\d+:(\d+)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 2, 0, 1,
-         3},
+        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*\d+:(\d+)\s*:\s*(.*)$)"),
+            RE::CaseInsensitiveOption),
+         2, 0, 1, 3},
         // Unlocated (linker): error: message
-        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 0, 0, 1, 2},
+        {RE(QStringLiteral(R"(^\s*(error|warning)\s*:\s*(.*)$)"), RE::CaseInsensitiveOption), 0, 0,
+         1, 2},
     };
     return patterns;
 }
 
-ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m, BuildStep step, const QString &file,
-                           int prologueLines)
+ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m, BuildStep step,
+                           const QString &file, int prologueLines)
 {
     ShaderDiagnostic d;
     d.step = step;
@@ -79,7 +82,8 @@ ShaderDiagnostic fromMatch(const LogPattern &p, const QRegularExpressionMatch &m
 
 } // namespace
 
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step, const QString &file, int prologueLines)
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step,
+                                             const QString &file, int prologueLines)
 {
     std::vector<ShaderDiagnostic> out;
     const QStringList lines = log.split(QLatin1Char('\n'), Qt::SkipEmptyParts);

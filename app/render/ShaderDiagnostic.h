@@ -46,8 +46,8 @@ struct ShaderDiagnostic {
 // "ERROR: 0:12: ..." form of AMD/ANGLE. `prologueLines` is the number of lines
 // the driver saw before the user's line 1 when no #line directive maps them
 // back; lines that fall inside the prologue are reported as line 0.
-std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step, const QString &file,
-                                             int prologueLines = 0);
+std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step,
+                                             const QString &file, int prologueLines = 0);
 
 // Mesa reports columns in its preprocessor's output, where every run of
 // whitespace has become a single space. Maps such columns back onto the

@@ -88,7 +88,8 @@ void ShaderProgram::ensureInitialized()
     }
 }
 
-BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines)
+BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource &fragment,
+                                 const QStringList &defines)
 {
     ensureInitialized();
     BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines);
@@ -107,9 +108,15 @@ void ShaderProgram::adopt(GlProgram program)
 void ShaderProgram::readValue(GLint location, UniformValue &value)
 {
     switch (value.kind) {
-    case UniformValue::Kind::Float: glGetUniformfv(m_program.id(), location, value.floats.data()); break;
-    case UniformValue::Kind::Int: glGetUniformiv(m_program.id(), location, value.ints.data()); break;
-    case UniformValue::Kind::UInt: glGetUniformuiv(m_program.id(), location, value.uints.data()); break;
+    case UniformValue::Kind::Float:
+        glGetUniformfv(m_program.id(), location, value.floats.data());
+        break;
+    case UniformValue::Kind::Int:
+        glGetUniformiv(m_program.id(), location, value.ints.data());
+        break;
+    case UniformValue::Kind::UInt:
+        glGetUniformuiv(m_program.id(), location, value.uints.data());
+        break;
     }
 }
 

@@ -21,11 +21,13 @@ public:
     ShaderProgram() = default;
     ShaderProgram(const ShaderProgram &) = delete;
     ShaderProgram &operator=(const ShaderProgram &) = delete;
-    ~ShaderProgram() = default; // frees the program if a context of its group is current; see destroy()
+    ~ShaderProgram() =
+        default; // frees the program if a context of its group is current; see destroy()
 
     // Builds a new program. On failure the previous program (if any) stays
     // in place and usable; the result carries the diagnostics.
-    BuildReport build(const ShaderSource &vertex, const ShaderSource &fragment, const QStringList &defines = {});
+    BuildReport build(const ShaderSource &vertex, const ShaderSource &fragment,
+                      const QStringList &defines = {});
     // Takes a program linked elsewhere (ProgramBuilder, possibly on another
     // context of the same share group) and frees the previous one.
     void adopt(GlProgram program);

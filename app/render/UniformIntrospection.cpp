@@ -18,7 +18,8 @@ std::vector<ActiveUniformInfo> activeUniformsOf(QOpenGLExtraFunctions *gl, GLuin
         gl->glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
         ActiveUniformInfo u;
         GLsizei length = 0;
-        gl->glGetActiveUniform(program, i, GLsizei(buffer.size()), &length, &u.size, &u.type, buffer.data());
+        gl->glGetActiveUniform(program, i, GLsizei(buffer.size()), &length, &u.size, &u.type,
+                               buffer.data());
         u.name = QByteArray(buffer.constData(), length);
         if (block != -1 || u.name.startsWith("gl_"))
             continue; // block members and built-ins have no value of their own to set
@@ -28,8 +29,9 @@ std::vector<ActiveUniformInfo> activeUniformsOf(QOpenGLExtraFunctions *gl, GLuin
             u.name.chop(3);
         list.push_back(u);
     }
-    std::sort(list.begin(), list.end(),
-              [](const ActiveUniformInfo &a, const ActiveUniformInfo &b) { return a.name < b.name; });
+    std::sort(list.begin(), list.end(), [](const ActiveUniformInfo &a, const ActiveUniformInfo &b) {
+        return a.name < b.name;
+    });
     return list;
 }
 

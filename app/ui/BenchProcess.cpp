@@ -133,7 +133,8 @@ void BenchProcess::processFinished(int exitCode, QProcess::ExitStatus status)
         return;
     readProgress();
     const QString program = m_process->program();
-    const QString startError = m_process->error() == QProcess::FailedToStart ? m_process->errorString() : QString();
+    const QString startError =
+        m_process->error() == QProcess::FailedToStart ? m_process->errorString() : QString();
     m_process->deleteLater();
     m_process = nullptr;
 
@@ -144,12 +145,14 @@ void BenchProcess::processFinished(int exitCode, QProcess::ExitStatus status)
     } else if (!startError.isEmpty()) {
         error = tr("could not run %1: %2").arg(program, startError);
     } else if (status != QProcess::NormalExit || exitCode != 0) {
-        error = m_lastErrorLine.isEmpty() ? tr("the measurement stopped (exit %1)").arg(exitCode) : m_lastErrorLine;
+        error = m_lastErrorLine.isEmpty() ? tr("the measurement stopped (exit %1)").arg(exitCode)
+                                          : m_lastErrorLine;
     } else {
         QFile file(m_dir->filePath(QStringLiteral("out/results.csv")));
         if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
             error = tr("the measurement wrote no results: %1").arg(file.errorString());
-        else if (Result<std::vector<BenchRow>> read = benchRowsFromCsv(QString::fromUtf8(file.readAll())))
+        else if (Result<std::vector<BenchRow>> read =
+                     benchRowsFromCsv(QString::fromUtf8(file.readAll())))
             rows = std::move(*read);
         else
             error = read.error();

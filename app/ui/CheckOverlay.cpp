@@ -55,7 +55,8 @@ void CheckOverlay::setDivider(double fraction)
     update();
 }
 
-void CheckOverlay::setArrows(const std::optional<PixelTerms> &terms, const glm::dmat4 &viewAtInspection)
+void CheckOverlay::setArrows(const std::optional<PixelTerms> &terms,
+                             const glm::dmat4 &viewAtInspection)
 {
     m_terms = terms;
     m_cameraToWorld = glm::transpose(glm::dmat3(viewAtInspection)); // a rotation: its inverse
@@ -121,10 +122,13 @@ void CheckOverlay::paintLegend(QPainter &painter) const
     painter.fillRect(QRect(box.left() + 10, box.top() + 8, box.width() - 20, 12), ramp);
     painter.setPen(Qt::white);
     painter.drawText(QRect(box.left() + 10, box.top() + 22, 40, 16), Qt::AlignLeft, tr("exact"));
-    painter.drawText(QRect(box.center().x() - 20, box.top() + 22, 40, 16), Qt::AlignHCenter, tr("4/255"));
-    painter.drawText(QRect(box.right() - 70, box.top() + 22, 60, 16), Qt::AlignRight, tr("≥ 8/255"));
+    painter.drawText(QRect(box.center().x() - 20, box.top() + 22, 40, 16), Qt::AlignHCenter,
+                     tr("4/255"));
+    painter.drawText(QRect(box.right() - 70, box.top() + 22, 60, 16), Qt::AlignRight,
+                     tr("≥ 8/255"));
     painter.fillRect(QRect(box.left() + 10, box.top() + 44, 10, 10), QColor(0, 0, 96));
-    painter.drawText(QRect(box.left() + 24, box.top() + 40, 150, 16), Qt::AlignLeft, tr("silhouette band, not judged"));
+    painter.drawText(QRect(box.left() + 24, box.top() + 40, 150, 16), Qt::AlignLeft,
+                     tr("silhouette band, not judged"));
 }
 
 void CheckOverlay::paintArrows(QPainter &painter) const
@@ -141,11 +145,14 @@ void CheckOverlay::paintArrows(QPainter &painter) const
     std::vector<Arrow> arrows{{m_cameraToWorld * t.N, QColor(80, 160, 255), QStringLiteral("N")},
                               {m_cameraToWorld * t.V, QColor(240, 240, 240), QStringLiteral("V")}};
     for (const LightTerms &l : t.lights) {
-        arrows.push_back({m_cameraToWorld * l.L, QColor(255, 210, 60), QStringLiteral("L%1").arg(l.light)});
+        arrows.push_back(
+            {m_cameraToWorld * l.L, QColor(255, 210, 60), QStringLiteral("L%1").arg(l.light)});
         if (t.shading == ReferenceShading::BlinnPhong)
-            arrows.push_back({m_cameraToWorld * l.H, QColor(255, 110, 200), QStringLiteral("H%1").arg(l.light)});
+            arrows.push_back(
+                {m_cameraToWorld * l.H, QColor(255, 110, 200), QStringLiteral("H%1").arg(l.light)});
         else
-            arrows.push_back({m_cameraToWorld * l.R, QColor(255, 110, 200), QStringLiteral("R%1").arg(l.light)});
+            arrows.push_back(
+                {m_cameraToWorld * l.R, QColor(255, 110, 200), QStringLiteral("R%1").arg(l.light)});
     }
     const double length = kArrowLengthFraction * glm::length(t.positionCamera);
     const std::optional<QPointF> origin = project(t.positionWorld);
@@ -153,7 +160,8 @@ void CheckOverlay::paintArrows(QPainter &painter) const
         return;
     painter.setRenderHint(QPainter::Antialiasing);
     for (const Arrow &a : arrows) {
-        const std::optional<QPointF> tip = project(t.positionWorld + length * glm::normalize(a.direction));
+        const std::optional<QPointF> tip =
+            project(t.positionWorld + length * glm::normalize(a.direction));
         if (!tip)
             continue;
         painter.setPen(QPen(a.color, 2));

@@ -8,7 +8,8 @@ namespace phonglab {
 ContextLender::ContextLender(QOpenGLWidget *widget)
     : m_widget(widget)
 {
-    QObject::connect(widget, &QOpenGLWidget::aboutToCompose, widget, [this] { m_composePending = false; });
+    QObject::connect(widget, &QOpenGLWidget::aboutToCompose, widget,
+                     [this] { m_composePending = false; });
 }
 
 std::optional<LentContext> ContextLender::lend(QThread *borrower, WarmUpDraw *warmer, int samples)

@@ -47,7 +47,8 @@ void DiagnosticList::addDiagnostic(const ShaderDiagnostic &diagnostic)
     const bool error = diagnostic.isError();
     (error ? m_errors : m_warnings)++;
     auto *item = new QListWidgetItem(shortFormat(diagnostic), this);
-    item->setIcon(style()->standardIcon(error ? QStyle::SP_MessageBoxCritical : QStyle::SP_MessageBoxWarning));
+    item->setIcon(style()->standardIcon(error ? QStyle::SP_MessageBoxCritical
+                                              : QStyle::SP_MessageBoxWarning));
     item->setToolTip(diagnostic.format());
     item->setData(kStageRole, static_cast<int>(editorStage(diagnostic.step)));
     item->setData(kLineRole, diagnostic.line);
@@ -58,8 +59,8 @@ void DiagnosticList::emitActivated(QListWidgetItem *item)
 {
     if (!item)
         return;
-    emit diagnosticActivated(static_cast<ShaderStage>(item->data(kStageRole).toInt()), item->data(kLineRole).toInt(),
-                             item->data(kColumnRole).toInt());
+    emit diagnosticActivated(static_cast<ShaderStage>(item->data(kStageRole).toInt()),
+                             item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
 }
 
 } // namespace phonglab

@@ -31,8 +31,10 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
     QAction *openMesh = menu->addAction(tr("Open &Mesh…"), this, &FileMenu::chooseAndOpenMeshes);
     openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
     m_recentFiles = new RecentFiles(menu->addMenu(tr("&Recent")), this);
-    connect(m_recentFiles, &RecentFiles::fileChosen, this, [this](const QString &path) { openOrExplain({path}); });
-    connect(m_recentFiles, &RecentFiles::missingFileChosen, this, &FileMenu::explainMissingRecentFile);
+    connect(m_recentFiles, &RecentFiles::fileChosen, this,
+            [this](const QString &path) { openOrExplain({path}); });
+    connect(m_recentFiles, &RecentFiles::missingFileChosen, this,
+            &FileMenu::explainMissingRecentFile);
     menu->addSeparator();
     QAction *save = menu->addAction(tr("&Save Scene"), this, &FileMenu::saveToCurrentFile);
     save->setShortcut(QKeySequence::Save);
@@ -50,8 +52,10 @@ void FileMenu::openOrExplain(const QStringList &paths)
     const Result<> opened = m_window->openFiles(paths);
     if (opened)
         return;
-    m_window->statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())), kMessageTimeoutMs);
-    openWarning(m_window, tr("Cannot open"), tr("%1\n\nThe current scene is still open.").arg(opened.error()));
+    m_window->statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())),
+                                       kMessageTimeoutMs);
+    openWarning(m_window, tr("Cannot open"),
+                tr("%1\n\nThe current scene is still open.").arg(opened.error()));
 }
 
 void FileMenu::rememberFolderOf(const QString &path)
@@ -62,7 +66,8 @@ void FileMenu::rememberFolderOf(const QString &path)
 
 void FileMenu::chooseAndOpenScene()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open Scene"), dialogFolder(), sceneFileFilter());
+    const QString path =
+        QFileDialog::getOpenFileName(m_window, tr("Open Scene"), dialogFolder(), sceneFileFilter());
     if (!path.isEmpty())
         openOrExplain({path});
 }
@@ -95,7 +100,8 @@ void FileMenu::saveToCurrentFile()
 
 void FileMenu::chooseAndSave()
 {
-    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Scene As"), dialogFolder(), sceneFileFilter());
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Scene As"), dialogFolder(),
+                                                sceneFileFilter());
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
@@ -108,7 +114,8 @@ void FileMenu::chooseAndSave()
 
 void FileMenu::warnCannotSave(const QString &path, const QString &error)
 {
-    openWarning(m_window, tr("Cannot save scene"), tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), error));
+    openWarning(m_window, tr("Cannot save scene"),
+                tr("%1\n\n%2").arg(QDir::toNativeSeparators(path), error));
 }
 
 void FileMenu::chooseAndExportImage()
@@ -116,22 +123,23 @@ void FileMenu::chooseAndExportImage()
     const Viewport *viewport = m_window->viewport();
     const QSize shown = viewport->size() * viewport->devicePixelRatioF();
     bool ok = false;
-    const int width = QInputDialog::getInt(m_window, tr("Export Image"), tr("Width (pixels):"), shown.width(), 1,
-                                           kLargestImageSide, 1, &ok);
+    const int width = QInputDialog::getInt(m_window, tr("Export Image"), tr("Width (pixels):"),
+                                           shown.width(), 1, kLargestImageSide, 1, &ok);
     if (!ok)
         return;
-    const int height = QInputDialog::getInt(m_window, tr("Export Image"), tr("Height (pixels):"), shown.height(), 1,
-                                            kLargestImageSide, 1, &ok);
+    const int height = QInputDialog::getInt(m_window, tr("Export Image"), tr("Height (pixels):"),
+                                            shown.height(), 1, kLargestImageSide, 1, &ok);
     if (!ok)
         return;
-    const QString path =
-        QFileDialog::getSaveFileName(m_window, tr("Export Image"), dialogFolder(), tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(m_window, tr("Export Image"), dialogFolder(),
+                                                      tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     if (const Result<> exported = m_window->exportImage(path, {width, height}); !exported)
         openWarning(m_window, tr("Export Image"), exported.error());
     else
-        m_window->statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kMessageTimeoutMs);
+        m_window->statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()),
+                                           kMessageTimeoutMs);
 }
 
 QString FileMenu::dialogFolder() const

@@ -8,8 +8,8 @@ namespace phonglab {
 
 QStringList meshFileSuffixes()
 {
-    return {QStringLiteral("obj"), QStringLiteral("ply"), QStringLiteral("off"), QStringLiteral("stl"),
-            QStringLiteral("om")};
+    return {QStringLiteral("obj"), QStringLiteral("ply"), QStringLiteral("off"),
+            QStringLiteral("stl"), QStringLiteral("om")};
 }
 
 bool isSceneFile(const QString &path)
@@ -31,10 +31,12 @@ QString whyNotOpenable(const QStringList &paths)
         if (!isSceneFile(path) && !isMeshFile(path))
             unsupported << path;
     if (!unsupported.isEmpty())
-        return QObject::tr("%1: PhongLab cannot open this kind of file. It opens scenes (.json) and meshes (.%2).")
+        return QObject::tr("%1: PhongLab cannot open this kind of file. It opens scenes (.json) "
+                           "and meshes (.%2).")
             .arg(fileNameList(unsupported), meshFileSuffixes().join(QStringLiteral(", .")));
     if (paths.size() > 1 && std::any_of(paths.begin(), paths.end(), isSceneFile))
-        return QObject::tr("%1: a scene file opens on its own. Open one scene, or any number of meshes.")
+        return QObject::tr(
+                   "%1: a scene file opens on its own. Open one scene, or any number of meshes.")
             .arg(fileNameList(paths));
     return {};
 }

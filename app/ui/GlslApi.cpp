@@ -21,7 +21,8 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"asin", "genType x", "Arc sine in [-pi/2, pi/2]; undefined for |x| > 1."},
     {"acos", "genType x", "Arc cosine in [0, pi]; undefined for |x| > 1."},
     {"atan", "genType y, genType x",
-     "Arc tangent of y/x in [-pi, pi], using the signs for the quadrant; atan(y_over_x) also exists."},
+     "Arc tangent of y/x in [-pi, pi], using the signs for the quadrant; atan(y_over_x) also "
+     "exists."},
     {"sinh", "genType x", "Hyperbolic sine."},
     {"cosh", "genType x", "Hyperbolic cosine."},
     {"tanh", "genType x", "Hyperbolic tangent."},
@@ -50,9 +51,11 @@ const std::vector<GlslBuiltin> kBuiltins = {
      "The larger of x and y, per component; max(0.0, dot(N, L)) clamps back-facing light."},
     {"clamp", "genType x, genType minVal, genType maxVal",
      "min(max(x, minVal), maxVal); undefined if minVal > maxVal."},
-    {"mix", "genType x, genType y, genType a", "Linear blend x*(1-a) + y*a; with a bvec it selects y where a is true."},
+    {"mix", "genType x, genType y, genType a",
+     "Linear blend x*(1-a) + y*a; with a bvec it selects y where a is true."},
     {"step", "genType edge, genType x", "0.0 where x < edge, else 1.0."},
-    {"smoothstep", "genType edge0, genType edge1, genType x", "Hermite ramp from 0 at edge0 to 1 at edge1."},
+    {"smoothstep", "genType edge0, genType edge1, genType x",
+     "Hermite ramp from 0 at edge0 to 1 at edge1."},
     {"isnan", "genType x", "True where x is NaN."},
     {"isinf", "genType x", "True where x is +/- infinity."},
     {"fma", "genType a, genType b, genType c", "a * b + c as one operation."},
@@ -61,13 +64,17 @@ const std::vector<GlslBuiltin> kBuiltins = {
     // Geometric
     {"length", "genType x", "Euclidean length of x."},
     {"distance", "genType p0, genType p1", "length(p0 - p1)."},
-    {"dot", "genType x, genType y", "Dot product; for unit vectors the cosine of the angle between them."},
+    {"dot", "genType x, genType y",
+     "Dot product; for unit vectors the cosine of the angle between them."},
     {"cross", "vec3 x, vec3 y", "Cross product, perpendicular to x and y (right-handed)."},
-    {"normalize", "genType x", "x scaled to length 1; undefined for a zero vector. Renormalize interpolated normals."},
+    {"normalize", "genType x",
+     "x scaled to length 1; undefined for a zero vector. Renormalize interpolated normals."},
     {"faceforward", "genType N, genType I, genType Nref", "N if dot(Nref, I) < 0, else -N."},
     {"reflect", "genType I, genType N",
-     "Reflects I about N: I - 2*dot(N, I)*N. I is the incident vector, pointing toward the surface, "
-     "so for a light direction L pointing away from the surface pass -L: reflect(-L, N). N must be normalized."},
+     "Reflects I about N: I - 2*dot(N, I)*N. I is the incident vector, pointing toward the "
+     "surface, "
+     "so for a light direction L pointing away from the surface pass -L: reflect(-L, N). N must be "
+     "normalized."},
     {"refract", "genType I, genType N, float eta",
      "Refraction of the incident vector I (pointing toward the surface) through normalized N with "
      "eta = n1/n2; the zero vector on total internal reflection."},
@@ -76,7 +83,8 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"outerProduct", "vec c, vec r", "The matrix c * transpose(r)."},
     {"transpose", "mat m", "Transpose of m."},
     {"determinant", "mat m", "Determinant of a square matrix."},
-    {"inverse", "mat m", "Inverse of a square matrix; transpose(inverse(mat3(modelView))) transforms normals."},
+    {"inverse", "mat m",
+     "Inverse of a square matrix; transpose(inverse(mat3(modelView))) transforms normals."},
     // Vector relations
     {"lessThan", "vec x, vec y", "Component-wise x < y, as a bvec."},
     {"lessThanEqual", "vec x, vec y", "Component-wise x <= y, as a bvec."},
@@ -88,7 +96,8 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"all", "bvec x", "True if all components of x are true."},
     {"not", "bvec x", "Component-wise logical complement."},
     // Integers
-    {"bitfieldExtract", "genIType value, int offset, int bits", "Extracts bits [offset, offset + bits) of value."},
+    {"bitfieldExtract", "genIType value, int offset, int bits",
+     "Extracts bits [offset, offset + bits) of value."},
     {"bitfieldInsert", "genIType base, genIType insert, int offset, int bits",
      "Inserts the low bits of insert into base."},
     {"bitCount", "genIType value", "Number of one bits."},
@@ -98,37 +107,49 @@ const std::vector<GlslBuiltin> kBuiltins = {
     {"texture", "gsampler sampler, vec P [, float bias]",
      "Samples the texture at coordinates P (the shadow forms compare against P's last component)."},
     {"textureLod", "gsampler sampler, vec P, float lod", "Samples mip level lod explicitly."},
-    {"textureOffset", "gsampler sampler, vec P, ivec offset [, float bias]", "Samples with a constant texel offset."},
-    {"textureProj", "gsampler sampler, vec P [, float bias]", "Samples at P.xy / P.w (projective texturing)."},
-    {"textureGrad", "gsampler sampler, vec P, vec dPdx, vec dPdy", "Samples with explicit derivatives."},
+    {"textureOffset", "gsampler sampler, vec P, ivec offset [, float bias]",
+     "Samples with a constant texel offset."},
+    {"textureProj", "gsampler sampler, vec P [, float bias]",
+     "Samples at P.xy / P.w (projective texturing)."},
+    {"textureGrad", "gsampler sampler, vec P, vec dPdx, vec dPdy",
+     "Samples with explicit derivatives."},
     {"textureSize", "gsampler sampler, int lod", "Size of mip level lod in texels."},
-    {"texelFetch", "gsampler sampler, ivec P, int lod", "Reads one texel by integer coordinates, no filtering."},
+    {"texelFetch", "gsampler sampler, ivec P, int lod",
+     "Reads one texel by integer coordinates, no filtering."},
     {"textureGather", "gsampler2D sampler, vec2 P [, int comp]",
      "The four texels bilinear filtering would use, one component each."},
-    {"textureQueryLod", "gsampler sampler, vec P", "The mip level (x) and lambda (y) the sampler would use."},
+    {"textureQueryLod", "gsampler sampler, vec P",
+     "The mip level (x) and lambda (y) the sampler would use."},
     // Fragment processing
     {"dFdx", "genType p", "Derivative of p along window x (fragment shaders only)."},
     {"dFdy", "genType p", "Derivative of p along window y (fragment shaders only)."},
     {"fwidth", "genType p", "abs(dFdx(p)) + abs(dFdy(p)); handy for anti-aliased edges."},
-    {"interpolateAtCentroid", "genType interpolant", "The input interpolated at the pixel's covered centroid."},
-    {"interpolateAtSample", "genType interpolant, int sample", "The input interpolated at a sample."},
+    {"interpolateAtCentroid", "genType interpolant",
+     "The input interpolated at the pixel's covered centroid."},
+    {"interpolateAtSample", "genType interpolant, int sample",
+     "The input interpolated at a sample."},
     {"interpolateAtOffset", "genType interpolant, vec2 offset",
      "The input interpolated at an offset from the pixel centre."},
     // Geometry shaders
     {"EmitVertex", "", "Emits the current output values as a vertex (geometry shaders)."},
     {"EndPrimitive", "", "Ends the current output primitive (geometry shaders)."},
     // Built-in variables
-    {"gl_Position", "vec4", "Vertex shader output: clip-space position (projection * view * model * vertex).", false},
-    {"gl_PointSize", "float", "Vertex shader output: point size in pixels (needs GL_PROGRAM_POINT_SIZE).", false},
+    {"gl_Position", "vec4",
+     "Vertex shader output: clip-space position (projection * view * model * vertex).", false},
+    {"gl_PointSize", "float",
+     "Vertex shader output: point size in pixels (needs GL_PROGRAM_POINT_SIZE).", false},
     {"gl_ClipDistance", "float[]", "Vertex shader output: distances to user clip planes.", false},
     {"gl_VertexID", "int", "Vertex shader input: index of the vertex being processed.", false},
     {"gl_InstanceID", "int", "Vertex shader input: index of the instance being drawn.", false},
-    {"gl_FragCoord", "vec4", "Fragment shader input: window coordinates (pixel centre x, y; depth z; 1/w).", false},
+    {"gl_FragCoord", "vec4",
+     "Fragment shader input: window coordinates (pixel centre x, y; depth z; 1/w).", false},
     {"gl_FrontFacing", "bool", "Fragment shader input: true for front-facing primitives.", false},
-    {"gl_PointCoord", "vec2", "Fragment shader input: position within a point sprite, [0, 1].", false},
+    {"gl_PointCoord", "vec2", "Fragment shader input: position within a point sprite, [0, 1].",
+     false},
     {"gl_PrimitiveID", "int", "Index of the current primitive.", false},
     {"gl_SampleID", "int", "Fragment shader input: the sample being processed.", false},
-    {"gl_FragDepth", "float", "Fragment shader output: depth to write instead of gl_FragCoord.z.", false},
+    {"gl_FragDepth", "float", "Fragment shader output: depth to write instead of gl_FragCoord.z.",
+     false},
     {"gl_Layer", "int", "Layer of a layered framebuffer to render to.", false},
     {"gl_MaxDrawBuffers", "const int", "Number of fragment outputs available.", false},
 };
@@ -222,7 +243,8 @@ QString GlslApi::callTip(const QString &name)
         // The signature stays on the first line: QScintilla highlights the
         // current argument by counting commas from the first '('.
         return QStringLiteral("%1(%2)\n%3")
-            .arg(name, QString::fromLatin1(builtin.signature), wrapped(QString::fromLatin1(builtin.doc)));
+            .arg(name, QString::fromLatin1(builtin.signature),
+                 wrapped(QString::fromLatin1(builtin.doc)));
     }
     return {};
 }
@@ -236,11 +258,12 @@ QStringList GlslApi::parseDeclaredNames(const QString &code)
     for (const auto &match : structNames.globalMatch(text))
         found.insert(match.captured(1));
     // A declaration is a type followed by a name; the user's structs are types too.
-    QString types =
-        QStringLiteral(R"(void|bool|int|uint|float|double|[bdiu]?vec[234]|d?mat[234](?:x[234])?|[iu]?sampler\w+)");
+    QString types = QStringLiteral(
+        R"(void|bool|int|uint|float|double|[bdiu]?vec[234]|d?mat[234](?:x[234])?|[iu]?sampler\w+)");
     for (const QString &structName : std::as_const(found))
         types += QLatin1Char('|') + QRegularExpression::escape(structName);
-    const QRegularExpression declarations(QStringLiteral(R"(\b(%1)\s*(?:\[[^\]]*\])?\s+([A-Za-z_]\w*))").arg(types));
+    const QRegularExpression declarations(
+        QStringLiteral(R"(\b(%1)\s*(?:\[[^\]]*\])?\s+([A-Za-z_]\w*))").arg(types));
 
     for (const auto &match : declarations.globalMatch(text)) {
         found.insert(match.captured(2));
@@ -258,7 +281,8 @@ QStringList GlslApi::parseDeclaredNames(const QString &code)
 QStringList GlslApi::keywords() const
 {
     const char *words = lexer() ? lexer()->keywords(1) : nullptr;
-    return words ? QString::fromLatin1(words).split(QLatin1Char(' '), Qt::SkipEmptyParts) : QStringList();
+    return words ? QString::fromLatin1(words).split(QLatin1Char(' '), Qt::SkipEmptyParts)
+                 : QStringList();
 }
 
 void GlslApi::updateAutoCompletionList(const QStringList &context, QStringList &list)
@@ -278,8 +302,8 @@ void GlslApi::updateAutoCompletionList(const QStringList &context, QStringList &
     addMatching(keywords());
 }
 
-QStringList GlslApi::callTips(const QStringList &context, int commas, QsciScintilla::CallTipsStyle style,
-                              QList<int> &shifts)
+QStringList GlslApi::callTips(const QStringList &context, int commas,
+                              QsciScintilla::CallTipsStyle style, QList<int> &shifts)
 {
     Q_UNUSED(commas);
     Q_UNUSED(style);

@@ -9,24 +9,25 @@ namespace phonglab {
 namespace {
 
 // GLSL 3.30 - 4.60 keywords, qualifiers and types (set 1).
-const char kKeywords[] = "attribute const uniform varying buffer shared coherent volatile restrict readonly writeonly "
-                         "layout centroid flat smooth noperspective patch sample invariant precise "
-                         "break continue do for while switch case default if else discard return struct subroutine "
-                         "in out inout true false lowp mediump highp precision "
-                         "void bool int uint float double atomic_uint "
-                         "vec2 vec3 vec4 ivec2 ivec3 ivec4 bvec2 bvec3 bvec4 uvec2 uvec3 uvec4 dvec2 dvec3 dvec4 "
-                         "mat2 mat3 mat4 mat2x2 mat2x3 mat2x4 mat3x2 mat3x3 mat3x4 mat4x2 mat4x3 mat4x4 "
-                         "dmat2 dmat3 dmat4 dmat2x2 dmat2x3 dmat2x4 dmat3x2 dmat3x3 dmat3x4 dmat4x2 dmat4x3 dmat4x4 "
-                         "sampler1D sampler2D sampler3D samplerCube sampler2DRect samplerBuffer sampler2DMS "
-                         "sampler1DArray sampler2DArray samplerCubeArray sampler2DMSArray "
-                         "sampler1DShadow sampler2DShadow samplerCubeShadow sampler2DRectShadow "
-                         "sampler1DArrayShadow sampler2DArrayShadow samplerCubeArrayShadow "
-                         "isampler1D isampler2D isampler3D isamplerCube isampler2DRect isamplerBuffer isampler2DMS "
-                         "isampler1DArray isampler2DArray isamplerCubeArray isampler2DMSArray "
-                         "usampler1D usampler2D usampler3D usamplerCube usampler2DRect usamplerBuffer usampler2DMS "
-                         "usampler1DArray usampler2DArray usamplerCubeArray usampler2DMSArray "
-                         "image1D image2D image3D imageCube image2DRect imageBuffer image1DArray image2DArray "
-                         "iimage2D uimage2D";
+const char kKeywords[] =
+    "attribute const uniform varying buffer shared coherent volatile restrict readonly writeonly "
+    "layout centroid flat smooth noperspective patch sample invariant precise "
+    "break continue do for while switch case default if else discard return struct subroutine "
+    "in out inout true false lowp mediump highp precision "
+    "void bool int uint float double atomic_uint "
+    "vec2 vec3 vec4 ivec2 ivec3 ivec4 bvec2 bvec3 bvec4 uvec2 uvec3 uvec4 dvec2 dvec3 dvec4 "
+    "mat2 mat3 mat4 mat2x2 mat2x3 mat2x4 mat3x2 mat3x3 mat3x4 mat4x2 mat4x3 mat4x4 "
+    "dmat2 dmat3 dmat4 dmat2x2 dmat2x3 dmat2x4 dmat3x2 dmat3x3 dmat3x4 dmat4x2 dmat4x3 dmat4x4 "
+    "sampler1D sampler2D sampler3D samplerCube sampler2DRect samplerBuffer sampler2DMS "
+    "sampler1DArray sampler2DArray samplerCubeArray sampler2DMSArray "
+    "sampler1DShadow sampler2DShadow samplerCubeShadow sampler2DRectShadow "
+    "sampler1DArrayShadow sampler2DArrayShadow samplerCubeArrayShadow "
+    "isampler1D isampler2D isampler3D isamplerCube isampler2DRect isamplerBuffer isampler2DMS "
+    "isampler1DArray isampler2DArray isamplerCubeArray isampler2DMSArray "
+    "usampler1D usampler2D usampler3D usamplerCube usampler2DRect usamplerBuffer usampler2DMS "
+    "usampler1DArray usampler2DArray usamplerCubeArray usampler2DMSArray "
+    "image1D image2D image3D imageCube image2DRect imageBuffer image1DArray image2DArray "
+    "iimage2D uimage2D";
 
 QByteArray builtinWords()
 {

@@ -41,7 +41,8 @@ bool displayConfigured()
 bool armX11Fallback()
 {
 #if defined(Q_OS_UNIX) && !defined(Q_OS_DARWIN)
-    if (qEnvironmentVariableIsSet("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
+    if (qEnvironmentVariableIsSet("QT_QPA_PLATFORM")
+        || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
         || qEnvironmentVariable("XDG_SESSION_TYPE") == QLatin1String("wayland"))
         return false;
     qputenv("QT_QPA_PLATFORM", "xcb;offscreen"); // Qt tries each in turn
@@ -59,7 +60,8 @@ bool openDefaultScene(MainWindow &window)
     const Result<> opened = window.openScene(path);
     if (opened)
         return true;
-    const QString message = QObject::tr("cannot open the default scene %1: %2").arg(path, opened.error());
+    const QString message =
+        QObject::tr("cannot open the default scene %1: %2").arg(path, opened.error());
     printError(message);
     QMessageBox::critical(nullptr, QObject::tr("PhongLab"), message);
     return false;
@@ -80,9 +82,10 @@ void openRequestedFile(MainWindow &window, const QString &path)
 int runGui(int argc, char **argv)
 {
     if (!displayConfigured()) {
-        printError(QStringLiteral("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is "
-                                  "set); run it inside a desktop session or under xvfb-run, or use "
-                                  "'phonglab render' to render without a window"));
+        printError(
+            QStringLiteral("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is "
+                           "set); run it inside a desktop session or under xvfb-run, or use "
+                           "'phonglab render' to render without a window"));
         return kExitFailure;
     }
     // Must precede QApplication: the global share context is created with it.
@@ -92,8 +95,8 @@ int runGui(int argc, char **argv)
     if (x11FallbackArmed) {
         qunsetenv("QT_QPA_PLATFORM"); // not for child processes
         if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
-            printError(
-                QStringLiteral("cannot connect to the X display '%1' (DISPLAY)").arg(qEnvironmentVariable("DISPLAY")));
+            printError(QStringLiteral("cannot connect to the X display '%1' (DISPLAY)")
+                           .arg(qEnvironmentVariable("DISPLAY")));
             return kExitFailure;
         }
     }

@@ -30,8 +30,8 @@ QPointF toScreen(const glm::dvec3 &ndc, const QSizeF &view)
 
 } // namespace
 
-int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const QSizeF &view, const QPointF &point,
-              double radiusPx)
+int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const QSizeF &view,
+              const QPointF &point, double radiusPx)
 {
     const glm::dmat4 vp = viewProjection(camera, view);
     int best = -1;
@@ -50,20 +50,23 @@ int pickLight(const std::vector<PointLight> &lights, const Camera &camera, const
     return best;
 }
 
-glm::dvec3 moveInViewPlane(const glm::dvec3 &position, const Camera &camera, const QSizeF &view, const QPointF &point)
+glm::dvec3 moveInViewPlane(const glm::dvec3 &position, const Camera &camera, const QSizeF &view,
+                           const QPointF &point)
 {
     const glm::dmat4 vp = viewProjection(camera, view);
     glm::dvec3 ndc;
     if (!toNdc(vp, position, &ndc))
         return position;
-    const glm::dvec4 target{2.0 * point.x() / view.width() - 1.0, 1.0 - 2.0 * point.y() / view.height(), ndc.z, 1.0};
+    const glm::dvec4 target{2.0 * point.x() / view.width() - 1.0,
+                            1.0 - 2.0 * point.y() / view.height(), ndc.z, 1.0};
     const glm::dvec4 world = glm::inverse(vp) * target;
     const glm::dvec3 moved = glm::dvec3(world) / world.w;
     const bool finite = std::isfinite(moved.x) && std::isfinite(moved.y) && std::isfinite(moved.z);
     return finite ? moved : position;
 }
 
-glm::dvec3 moveAlongView(const glm::dvec3 &position, const Camera &camera, const QSizeF &view, double deltaYPx)
+glm::dvec3 moveAlongView(const glm::dvec3 &position, const Camera &camera, const QSizeF &view,
+                         double deltaYPx)
 {
     const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
     const double distance = glm::length(position - camera.eye);

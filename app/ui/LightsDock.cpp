@@ -46,22 +46,26 @@ LightsDock::LightsDock(QWidget *parent)
     setWidget(content);
     m_name = new QLineEdit(m_editor);
     m_name->setObjectName(QStringLiteral("lightName"));
-    connect(m_name, &QLineEdit::editingFinished, this, [this] { renameLight(selectedLight(), m_name->text()); });
+    connect(m_name, &QLineEdit::editingFinished, this,
+            [this] { renameLight(selectedLight(), m_name->text()); });
     form->addRow(tr("Name"), m_name);
     addField(tr("Position (world)"), LightField::Position, -kMaxPosition, kMaxPosition);
     addField(tr("Id (diffuse)"), LightField::Diffuse, 0.0, kMaxIntensity)->enableColourPicker();
     addField(tr("Is (specular)"), LightField::Specular, 0.0, kMaxIntensity)->enableColourPicker();
-    addField(tr("c1, c2, c3"), LightField::Attenuation, 0.0, kMaxAttenuation)->setCheck(refuseNoAttenuation);
+    addField(tr("c1, c2, c3"), LightField::Attenuation, 0.0, kMaxAttenuation)
+        ->setCheck(refuseNoAttenuation);
 
     auto *ambientForm = new QFormLayout;
     m_ambient = new Vec3Field(0.0, kMaxIntensity, content);
     m_ambient->enableColourPicker();
-    connect(m_ambient, &Vec3Field::edited, this, [this](const glm::dvec3 &before, const glm::dvec3 &after) {
-        pushEdit(new SetAmbientCommand(access(), before, after));
-    });
+    connect(m_ambient, &Vec3Field::edited, this,
+            [this](const glm::dvec3 &before, const glm::dvec3 &after) {
+                pushEdit(new SetAmbientCommand(access(), before, after));
+            });
     ambientForm->addRow(tr("Ambient Ia"), m_ambient);
     layout->addLayout(ambientForm);
-    m_headlight = new QCheckBox(tr("Headlight: follows the camera (not in world space, not saved)"), content);
+    m_headlight =
+        new QCheckBox(tr("Headlight: follows the camera (not in world space, not saved)"), content);
     connect(m_headlight, &QCheckBox::toggled, this, &LightsDock::headlightToggled);
     layout->addWidget(m_headlight);
     layout->addStretch(1);
@@ -96,7 +100,8 @@ QWidget *LightsDock::buildList(QWidget *parent)
     return box;
 }
 
-Vec3Field *LightsDock::addField(const QString &label, LightField which, double minimum, double maximum)
+Vec3Field *LightsDock::addField(const QString &label, LightField which, double minimum,
+                                double maximum)
 {
     auto *field = new Vec3Field(minimum, maximum, m_editor);
     connect(field, &Vec3Field::edited, this,
@@ -150,7 +155,8 @@ void LightsDock::itemToggled(QListWidgetItem *item)
 
 bool LightsDock::setLightEnabled(int index, bool on)
 {
-    if (!isBound() || index < 0 || index >= int(scene().lights.size()) || scene().lights[index].enabled == on)
+    if (!isBound() || index < 0 || index >= int(scene().lights.size())
+        || scene().lights[index].enabled == on)
         return false;
     m_status->clear();
     pushEdit(new SetLightEnabledCommand(access(), index, on));
@@ -159,14 +165,15 @@ bool LightsDock::setLightEnabled(int index, bool on)
 
 int LightsDock::switchedOffCount() const
 {
-    return int(
-        std::count_if(scene().lights.begin(), scene().lights.end(), [](const PointLight &l) { return !l.enabled; }));
+    return int(std::count_if(scene().lights.begin(), scene().lights.end(),
+                             [](const PointLight &l) { return !l.enabled; }));
 }
 
 bool LightsDock::renameLight(int index, const QString &name)
 {
     const std::string after = name.trimmed().toStdString();
-    if (!isBound() || index < 0 || index >= int(scene().lights.size()) || scene().lights[index].name == after)
+    if (!isBound() || index < 0 || index >= int(scene().lights.size())
+        || scene().lights[index].name == after)
         return false;
     pushEdit(new RenameLightCommand(access(), index, scene().lights[index].name, after));
     return true;

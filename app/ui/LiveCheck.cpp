@@ -33,7 +33,8 @@ QString shortSummary(const CheckResult &result)
     // Gouraud and flat are approximations by design: say what they are judged against.
     const ShadingMethod method = result.scene.shading;
     if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat)
-        return QObject::tr("%1 against exact Phong: %2").arg(shadingName(method), checkStatusLine(result.report));
+        return QObject::tr("%1 against exact Phong: %2")
+            .arg(shadingName(method), checkStatusLine(result.report));
     return checkStatusLine(result.report); // the whole rule goes in the tooltip
 }
 
@@ -60,8 +61,8 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
     // A new program is checked at once; view and scene changes come in bursts.
     connect(live, &LiveShaderController::programApplied, this, [this] { schedule(0); });
-    for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged, &Viewport::cameraChanged,
-                        &Viewport::glInitialized})
+    for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged,
+                        &Viewport::cameraChanged, &Viewport::glInitialized})
         connect(viewport, signal, this, [this] { schedule(); });
     connect(viewport, &Viewport::shippedProgramLoaded, this, [this] { schedule(); });
     connect(viewport, &Viewport::headlightChanged, this, [this] { schedule(); });
@@ -70,7 +71,8 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
         m_inspectWhenReady.reset();
         m_overlay->setArrows(std::nullopt, {});
     });
-    connect(viewport, &Viewport::cameraChanged, this, [this] { m_overlay->setCamera(m_viewport->camera()); });
+    connect(viewport, &Viewport::cameraChanged, this,
+            [this] { m_overlay->setCamera(m_viewport->camera()); });
     viewport->installEventFilter(this);
 }
 
@@ -114,7 +116,8 @@ void LiveCheck::createToolBar(QMainWindow *window)
     m_inspectAction->setShortcut(Qt::Key_I);
     m_inspectAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_viewport->addAction(m_inspectAction);
-    m_inspectAction->setToolTip(tr("Click a pixel to see the terms of the equation there (or Ctrl+click) [I]"));
+    m_inspectAction->setToolTip(
+        tr("Click a pixel to see the terms of the equation there (or Ctrl+click) [I]"));
     connect(m_inspectAction, &QAction::toggled, this, [this](bool on) {
         m_viewport->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
         if (on)
@@ -152,7 +155,8 @@ void LiveCheck::run()
     const QImage yours = m_viewport->renderImage(checkSize(), false);
     if (yours.isNull())
         return;
-    m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…") : tr("checking…"));
+    m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…")
+                             : tr("checking…"));
     m_checker->request(m_viewport->renderedScene(), yours.convertToFormat(QImage::Format_RGB888));
 }
 
@@ -168,8 +172,8 @@ QSize LiveCheck::checkSize() const
 
 bool LiveCheck::isCurrent(const CheckResult &result) const
 {
-    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy() && result.reference
-        && result.yours.size() == checkSize();
+    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy()
+        && result.reference && result.yours.size() == checkSize();
 }
 
 void LiveCheck::show(const CheckResult &result)
@@ -198,19 +202,22 @@ void LiveCheck::inspect(QPoint position)
         return;
     }
     m_inspectWhenReady = fraction;
-    m_inspector->showMessage(tr("Checking the current view; the pixel is shown when that is done."));
+    m_inspector->showMessage(
+        tr("Checking the current view; the pixel is shown when that is done."));
 }
 
 void LiveCheck::showInspected(QPointF fraction)
 {
     const CheckResult &r = *m_last;
-    const QPoint pixel(std::clamp(int(std::floor(fraction.x() * r.yours.width())), 0, r.yours.width() - 1),
-                       std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));
+    const QPoint pixel(
+        std::clamp(int(std::floor(fraction.x() * r.yours.width())), 0, r.yours.width() - 1),
+        std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));
     const std::optional<PixelTerms> terms =
         pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y());
     if (!terms) {
-        m_inspector->showMessage(
-            tr("Pixel (%1, %2) shows the background: no surface, no equation.").arg(pixel.x()).arg(pixel.y()));
+        m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
+                                     .arg(pixel.x())
+                                     .arg(pixel.y()));
         m_overlay->setArrows(std::nullopt, {});
         return;
     }
@@ -232,7 +239,8 @@ bool LiveCheck::eventFilter(QObject *watched, QEvent *event)
         return true;
     if (event->type() == QEvent::MouseButtonPress) {
         const auto *mouse = static_cast<QMouseEvent *>(event);
-        const bool inspecting = m_inspectAction->isChecked() || mouse->modifiers().testFlag(Qt::ControlModifier);
+        const bool inspecting =
+            m_inspectAction->isChecked() || mouse->modifiers().testFlag(Qt::ControlModifier);
         if (mouse->button() == Qt::LeftButton && inspecting) {
             inspect(mouse->position().toPoint());
             return true;
@@ -247,7 +255,8 @@ bool LiveCheck::dragDivider(QEvent *event)
     if (m_overlay->mode() != OverlayMode::Split)
         return false;
     const auto type = event->type();
-    if (type != QEvent::MouseButtonPress && type != QEvent::MouseMove && type != QEvent::MouseButtonRelease)
+    if (type != QEvent::MouseButtonPress && type != QEvent::MouseMove
+        && type != QEvent::MouseButtonRelease)
         return false;
     const auto *mouse = static_cast<QMouseEvent *>(event);
     const double x = mouse->position().x();

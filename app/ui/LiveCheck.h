@@ -84,8 +84,9 @@ private:
     QToolBar *m_toolBar = nullptr;
     QTimer *m_debounce = nullptr;
     std::optional<CheckResult> m_last;
-    std::optional<QPointF> m_inspectWhenReady; // where, as a fraction of the view's width and height
-    bool m_pending = false;                    // scheduled, not yet handed to the checker
+    std::optional<QPointF>
+        m_inspectWhenReady; // where, as a fraction of the view's width and height
+    bool m_pending = false; // scheduled, not yet handed to the checker
     bool m_draggingDivider = false;
     const SceneLoadJob *m_loadJob = nullptr;
 };

@@ -50,15 +50,18 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_debounce(new QTimer(this))
     , m_slowBuildNote(new QTimer(this))
     , m_hangNote(new QTimer(this))
-    , m_debounceMs(QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
+    , m_debounceMs(
+          QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
 {
     setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
     m_buildThread->setReceiver([this](BuildReply reply) { onBuilt(std::move(reply)); });
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
-    connect(m_viewport, &Viewport::glAboutToBeReleased, this, &LiveShaderController::onGlAboutToBeReleased);
+    connect(m_viewport, &Viewport::glAboutToBeReleased, this,
+            &LiveShaderController::onGlAboutToBeReleased);
     connect(m_viewport, &Viewport::frameRendered, m_recovery, &ShaderRecovery::frameRendered);
-    connect(m_viewport, &Viewport::shippedProgramLoaded, this, &LiveShaderController::onShippedProgramLoaded);
+    connect(m_viewport, &Viewport::shippedProgramLoaded, this,
+            &LiveShaderController::onShippedProgramLoaded);
     connectDock();
     showPreset(m_viewport->currentScene().shading);
 }
@@ -72,13 +75,15 @@ void LiveShaderController::setUpTimers()
     // lasts 3 ms would cost the GUI thread more than the build itself.
     m_slowBuildNote->setSingleShot(true);
     m_slowBuildNote->setInterval(kSlowBuildNoteMs);
-    connect(m_slowBuildNote, &QTimer::timeout, this, [this] { m_dock->setCompileStatus(tr("Compiling…"), true); });
+    connect(m_slowBuildNote, &QTimer::timeout, this,
+            [this] { m_dock->setCompileStatus(tr("Compiling…"), true); });
     m_hangNote->setSingleShot(true);
     m_hangNote->setInterval(kHangNoteMs);
     connect(m_hangNote, &QTimer::timeout, this, [this] {
-        const QString text = tr("The new shader has not finished its first draw after %1 s (an endless loop?). "
-                                "It is marked: PhongLab will not run it by itself at the next start.")
-                                 .arg(kHangNoteMs / 1000);
+        const QString text =
+            tr("The new shader has not finished its first draw after %1 s (an endless loop?). "
+               "It is marked: PhongLab will not run it by itself at the next start.")
+                .arg(kHangNoteMs / 1000);
         m_dock->setCompileStatus(text, false);
         emit statusMessage(text, 0);
     });
@@ -97,7 +102,8 @@ void LiveShaderController::connectDock()
     connect(m_dock, &ShaderDock::compileRequested, this, &LiveShaderController::buildNow);
     connect(m_dock, &ShaderDock::presetRequested, this, &LiveShaderController::applyPreset);
     connect(m_dock, &ShaderDock::filesChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
-    connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
+    connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery,
+            &ShaderRecovery::noteFilesChanged);
 }
 
 QByteArray LiveShaderController::currentHash() const
@@ -149,10 +155,11 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
     // Unsaved edits are never replaced behind the user's back: they stay,
     // are built again over the scene's program, and the scene follows them.
     m_viewport->setShading(m_shading);
-    emit statusMessage(tr("Kept your unsaved shader edits; the scene's %1 shading was not loaded (choose it "
-                          "in the Shaders dock to switch)")
-                           .arg(shadingName(method)),
-                       kStatusTimeoutMs);
+    emit statusMessage(
+        tr("Kept your unsaved shader edits; the scene's %1 shading was not loaded (choose it "
+           "in the Shaders dock to switch)")
+            .arg(shadingName(method)),
+        kStatusTimeoutMs);
     if (m_autoBuild == AutoBuild::AfterPause)
         requestBuild(BuildRequest::Always);
 }
@@ -215,7 +222,8 @@ void LiveShaderController::onGlInitialized()
 void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
 {
     m_appliedHash = m_lastBuiltHash = shippedHash(method);
-    if (method == m_shading && m_autoBuild == AutoBuild::AfterPause && currentHash() != m_appliedHash)
+    if (method == m_shading && m_autoBuild == AutoBuild::AfterPause
+        && currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
 }
 
@@ -255,7 +263,9 @@ void LiveShaderController::startWorker()
     if (const Result<> started = m_buildThread->start(m_viewport->context()); !started) {
         qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(started.error()));
         emit statusMessage(
-            tr("Shaders compile on the GUI thread (typing may pause while they build): %1").arg(started.error()), 0);
+            tr("Shaders compile on the GUI thread (typing may pause while they build): %1")
+                .arg(started.error()),
+            0);
         return;
     }
     qInfo("phonglab: shaders build on a worker thread with a shared context; "
@@ -266,7 +276,9 @@ void LiveShaderController::startWorker()
 void LiveShaderController::requestBuild(BuildRequest request)
 {
     // Asked for while no build can start: remembered, Always outranking NewText.
-    const auto queue = [&] { m_queued = m_queued == BuildRequest::Always ? BuildRequest::Always : request; };
+    const auto queue = [&] {
+        m_queued = m_queued == BuildRequest::Always ? BuildRequest::Always : request;
+    };
     if (m_state == State::WaitingForGl) {
         queue();
         return;
@@ -294,13 +306,16 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     m_recovery->writeNow();
     m_recovery->buildStarted(hash);
     m_lastBuiltHash = hash;
-    const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex), m_dock->text(ShaderStage::Vertex)};
-    const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment), m_dock->text(ShaderStage::Fragment)};
+    const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex),
+                              m_dock->text(ShaderStage::Vertex)};
+    const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment),
+                                m_dock->text(ShaderStage::Fragment)};
     m_buildClock.start();
     m_buildHash = hash;
     if (m_buildThread->isRunning()) {
         setState(State::Building);
-        m_buildSerial = m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
+        m_buildSerial =
+            m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
         m_slowBuildNote->start();
         m_hangNote->start();
         return;
@@ -316,7 +331,8 @@ void LiveShaderController::dispatch(const QByteArray &hash)
 
 void LiveShaderController::onBuilt(BuildReply reply)
 {
-    if (m_state != State::Building || reply.serial != m_buildSerial) { // from before a restart of the worker
+    if (m_state != State::Building
+        || reply.serial != m_buildSerial) { // from before a restart of the worker
         m_buildThread->release(std::move(reply.program));
         return;
     }
@@ -363,14 +379,19 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     // context current; if it never got that far, here, once it is back.
     const GLuint programId = reply.program.id();
     auto program = std::make_shared<GlProgram>(std::move(reply.program));
-    lent->whileCurrent = [viewport = m_viewport, program] { viewport->renderer().adoptProgram(std::move(*program)); };
+    lent->whileCurrent = [viewport = m_viewport, program] {
+        viewport->renderer().adoptProgram(std::move(*program));
+    };
     setState(State::Warming);
     const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
         *lent, programId,
-        [this, warm, hash, program, result = reply.result, timings = reply.timings](const Result<qint64> &warmNs) {
+        [this, warm, hash, program, result = reply.result,
+         timings = reply.timings](const Result<qint64> &warmNs) {
+            // The context went away meanwhile (and came back with it), or
+            // this is an older warm-up.
             if (m_state != State::Warming || warm != m_warmSerial)
-                return; // the context went away meanwhile (and came back with it), or this is an older warm-up
+                return;
             setState(State::Idle);
             m_hangNote->stop();
             m_viewport->takeBackContext();
@@ -380,7 +401,8 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             if (warmNs) {
                 warmed.warmNs = *warmNs;
             } else {
-                qWarning("phonglab: warming programs in the viewport's context is off: %s", qPrintable(warmNs.error()));
+                qWarning("phonglab: warming programs in the viewport's context is off: %s",
+                         qPrintable(warmNs.error()));
                 setWarmUp(WarmUp::Off);
             }
             announce(hash, result, warmed);
@@ -389,7 +411,8 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     return true;
 }
 
-void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings)
+void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result,
+                                    const BuildTimings &timings)
 {
     m_appliedHash = hash;
     m_lastApplied = timings;

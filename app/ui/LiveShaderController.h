@@ -140,9 +140,9 @@ private:
     QByteArray m_lastBuiltHash; // last text sent to the compiler
     QByteArray m_appliedHash;   // text of the program the viewport draws with
     BuildTimings m_lastApplied;
-    quint64 m_warmSerial = 0;             // counts warm-ups, so a late callback is told from the current one
-    quint64 m_buildSerial = 0;            // while Building: the serial the worker's reply carries
-    QByteArray m_buildHash;               // while Building or Warming: the text on its way
+    quint64 m_warmSerial = 0;  // counts warm-ups, so a late callback is told from the current one
+    quint64 m_buildSerial = 0; // while Building: the serial the worker's reply carries
+    QByteArray m_buildHash;    // while Building or Warming: the text on its way
     std::optional<BuildRequest> m_queued; // asked for while not Idle
     QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
 };

@@ -78,7 +78,8 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     // Queued: the error is raised from inside initializeGL / paintGL, where a
     // dialog must not be opened.
-    connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError, Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError,
+            Qt::QueuedConnection);
     setScenePath({});
 }
 
@@ -93,7 +94,8 @@ void MainWindow::createShaderDock()
 {
     m_liveShaders = new LiveShaderController(m_shaderDock, m_viewport, this);
     m_sceneShaderFiles = std::make_unique<SceneShaderFiles>(m_shaderDock, m_liveShaders);
-    connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(), &QStatusBar::showMessage);
+    connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(),
+            &QStatusBar::showMessage);
     connect(m_viewport, &Viewport::sceneChanged, this,
             [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
     // Tests answer through the environment at once; a person is asked once
@@ -166,11 +168,12 @@ void MainWindow::createUniformsDock()
     // Queued: glInitialized comes from inside initializeGL, where the
     // viewport must not be asked to repaint.
     for (auto signal : {&Viewport::glInitialized, &Viewport::sceneChanged})
-        connect(m_viewport, signal, m_uniformsDock, &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
-    connect(m_viewport, &Viewport::shippedProgramLoaded, m_uniformsDock, &UniformsDock::scheduleRebuild,
-            Qt::QueuedConnection);
-    connect(m_liveShaders, &LiveShaderController::programApplied, m_uniformsDock, &UniformsDock::scheduleRebuild,
-            Qt::QueuedConnection);
+        connect(m_viewport, signal, m_uniformsDock, &UniformsDock::scheduleRebuild,
+                Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::shippedProgramLoaded, m_uniformsDock,
+            &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
+    connect(m_liveShaders, &LiveShaderController::programApplied, m_uniformsDock,
+            &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
 }
 
 // Tabbed with the Scene dock: measuring is occasional, the code is not.
@@ -179,7 +182,8 @@ void MainWindow::createPerformanceDock()
     m_performanceDock = new PerformanceDock(m_viewport, this);
     addDockWidget(Qt::RightDockWidgetArea, m_performanceDock);
     tabifyDockWidget(m_sceneDock, m_performanceDock);
-    connect(m_performanceDock, &PerformanceDock::applyModelRequested, this, &MainWindow::applyModel);
+    connect(m_performanceDock, &PerformanceDock::applyModelRequested, this,
+            &MainWindow::applyModel);
 }
 
 void MainWindow::applyModel(ShadingMethod method, double detail)
@@ -241,8 +245,10 @@ void MainWindow::connectLoading()
     connect(m_viewport, &Viewport::sceneChanged, this, &MainWindow::refreshSceneDock);
     // Queued: the dock is rebuilding itself or its editor is mid-signal when a
     // drop or an edit arrives; both are handled once that is over.
-    connect(m_viewport, &Viewport::filesDropped, m_fileMenu, &FileMenu::openOrExplain, Qt::QueuedConnection);
-    connect(m_sceneDock, &SceneDock::normalsChangeRequested, this, &MainWindow::changeNormals, Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::filesDropped, m_fileMenu, &FileMenu::openOrExplain,
+            Qt::QueuedConnection);
+    connect(m_sceneDock, &SceneDock::normalsChangeRequested, this, &MainWindow::changeNormals,
+            Qt::QueuedConnection);
     connect(m_loadJob, &SceneLoadJob::failed, this, &MainWindow::showLoadFailure);
     connect(m_loadJob, &SceneLoadJob::cancelled, this, &MainWindow::showLoadCancelled);
 }
@@ -260,7 +266,8 @@ Result<> MainWindow::openScene(const QString &path)
     if (!loaded.warnings.isEmpty())
         statusBar()->showMessage(loaded.warnings.join(QStringLiteral("; ")), kWarningTimeoutMs);
     else
-        statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), kWarningTimeoutMs);
+        statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()),
+                                 kWarningTimeoutMs);
     return {};
 }
 
@@ -288,10 +295,12 @@ void MainWindow::openSceneShaders(const Scene &scene)
     if (opened)
         return;
     statusBar()->showMessage(
-        tr("Cannot open the scene's shaders: %1").arg(QString(m_lastShaderError).replace('\n', QStringLiteral("; "))),
+        tr("Cannot open the scene's shaders: %1")
+            .arg(QString(m_lastShaderError).replace('\n', QStringLiteral("; "))),
         kWarningTimeoutMs);
     warn(tr("Cannot open the scene's shaders"),
-         tr("%1\n\nThe scene uses its shading method's shipped shaders instead.").arg(m_lastShaderError));
+         tr("%1\n\nThe scene uses its shading method's shipped shaders instead.")
+             .arg(m_lastShaderError));
 }
 
 Result<> MainWindow::openFiles(const QStringList &paths)
@@ -324,8 +333,8 @@ Result<> MainWindow::startSceneLoad(const QString &path)
         setScenePath(path);
         openSceneShaders(scene);
         m_recentFiles->add(path);
-        const QString message =
-            warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName()) : warnings.join(QStringLiteral("; "));
+        const QString message = warnings.isEmpty() ? tr("Opened %1").arg(QFileInfo(path).fileName())
+                                                   : warnings.join(QStringLiteral("; "));
         statusBar()->showMessage(message, kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
@@ -343,7 +352,8 @@ void MainWindow::changeNormals(int objectIndex, const NormalOptions &options)
         const SceneObject &object = scene.objects[objectIndex];
         const MeshStats stats = m_viewport->meshInfo().value(meshKey(scene, object)).stats;
         statusBar()->showMessage(
-            tr("Normals of %1: %2").arg(QFileInfo(object.mesh).fileName(), normalsDescription(stats, false)),
+            tr("Normals of %1: %2")
+                .arg(QFileInfo(object.mesh).fileName(), normalsDescription(stats, false)),
             kWarningTimeoutMs);
     };
     m_loadJob->start(std::move(request));
@@ -357,7 +367,8 @@ void MainWindow::showRenderError(const QString &message)
 
 void MainWindow::showLoadFailure(const QString &label, const QString &error)
 {
-    statusBar()->showMessage(tr("Cannot load %1: %2").arg(label, firstLine(error)), kWarningTimeoutMs);
+    statusBar()->showMessage(tr("Cannot load %1: %2").arg(label, firstLine(error)),
+                             kWarningTimeoutMs);
     warn(tr("Cannot load %1").arg(label),
          tr("Cannot load %1:\n\n%2\n\nThe current scene is still shown.").arg(label, error));
     refreshSceneDock(); // its normals control goes back to what is shown

@@ -42,7 +42,8 @@ class MainWindow : public QMainWindow
 
 public:
     // Options default to what the environment says (StartupOptions.h).
-    explicit MainWindow(QWidget *parent = nullptr, const StartupOptions &options = StartupOptions::fromEnvironment());
+    explicit MainWindow(QWidget *parent = nullptr,
+                        const StartupOptions &options = StartupOptions::fromEnvironment());
     ~MainWindow() override;
 
     // Load / save without any dialog, on the calling thread (startup, tests);

@@ -37,11 +37,14 @@ void MaterialPanel::buildForm()
     const auto addCoefficient = [&](const QString &label, MaterialField which) {
         auto *field = new Vec3Field(0.0, kMaxCoefficient, form);
         field->enableColourPicker();
-        connect(field, &Vec3Field::edited, this, [this, which](const glm::dvec3 &, const glm::dvec3 &after) {
-            Material m = scene().objects.at(selectedObject()).material;
-            (which == MaterialField::Ka ? m.ka : which == MaterialField::Kd ? m.kd : m.ks) = after;
-            pushMaterial(m, which);
-        });
+        connect(field, &Vec3Field::edited, this,
+                [this, which](const glm::dvec3 &, const glm::dvec3 &after) {
+                    Material m = scene().objects.at(selectedObject()).material;
+                    (which == MaterialField::Ka       ? m.ka
+                         : which == MaterialField::Kd ? m.kd
+                                                      : m.ks) = after;
+                    pushMaterial(m, which);
+                });
         layout->addRow(label, field);
         return field;
     };
@@ -127,8 +130,8 @@ void MaterialPanel::saveAsPreset(const QString &name)
 void MaterialPanel::askPresetName()
 {
     bool ok = false;
-    const QString name =
-        QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"), QLineEdit::Normal, {}, &ok);
+    const QString name = QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"),
+                                               QLineEdit::Normal, {}, &ok);
     if (ok)
         saveAsPreset(name);
 }

@@ -17,11 +17,15 @@ constexpr int kMaxCreaseDeg = 180;
 QString methodToolTip(NormalMethod method)
 {
     switch (method) {
-    case NormalMethod::Auto: return QObject::tr("The file's normals; computed angle-weighted when it has none");
-    case NormalMethod::Flat: return QObject::tr("Each face's own normal at all its corners (faceted)");
-    case NormalMethod::Average: return QObject::tr("Unweighted mean of the normals of the faces around a vertex");
+    case NormalMethod::Auto:
+        return QObject::tr("The file's normals; computed angle-weighted when it has none");
+    case NormalMethod::Flat:
+        return QObject::tr("Each face's own normal at all its corners (faceted)");
+    case NormalMethod::Average:
+        return QObject::tr("Unweighted mean of the normals of the faces around a vertex");
     case NormalMethod::AreaWeighted: return QObject::tr("Face normals weighted by face area");
-    case NormalMethod::AngleWeighted: return QObject::tr("Face normals weighted by the face's angle at the vertex");
+    case NormalMethod::AngleWeighted:
+        return QObject::tr("Face normals weighted by the face's angle at the vertex");
     }
     return {};
 }
@@ -45,7 +49,8 @@ NormalsEditor::NormalsEditor(QWidget *parent)
 
     for (const QString &name : normalMethodNames()) {
         m_method->addItem(name, name);
-        m_method->setItemData(m_method->count() - 1, methodToolTip(*normalMethodFromName(name)), Qt::ToolTipRole);
+        m_method->setItemData(m_method->count() - 1, methodToolTip(*normalMethodFromName(name)),
+                              Qt::ToolTipRole);
     }
     m_creaseEnabled->setToolTip(creaseToolTip());
     m_creaseAngle->setRange(0, kMaxCreaseDeg);
@@ -72,7 +77,8 @@ NormalsEditor::NormalsEditor(QWidget *parent)
 
 void NormalsEditor::setOptions(const NormalOptions &options)
 {
-    const QSignalBlocker blockMethod(m_method), blockCheck(m_creaseEnabled), blockAngle(m_creaseAngle);
+    const QSignalBlocker blockMethod(m_method), blockCheck(m_creaseEnabled),
+        blockAngle(m_creaseAngle);
     m_method->setCurrentIndex(m_method->findData(normalMethodName(options.method)));
     m_creaseEnabled->setChecked(options.creaseAngleDeg.has_value());
     if (options.creaseAngleDeg)
@@ -83,7 +89,8 @@ void NormalsEditor::setOptions(const NormalOptions &options)
 NormalOptions NormalsEditor::options() const
 {
     NormalOptions options;
-    options.method = normalMethodFromName(m_method->currentData().toString()).value_or(NormalMethod::Auto);
+    options.method =
+        normalMethodFromName(m_method->currentData().toString()).value_or(NormalMethod::Auto);
     if (m_creaseEnabled->isChecked())
         options.creaseAngleDeg = double(m_creaseAngle->value());
     return options;

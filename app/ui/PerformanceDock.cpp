@@ -34,14 +34,16 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     auto *layout = new QVBoxLayout(body);
 
     m_frameLabel = new QLabel(tr("Frame: -"), body);
-    m_frameLabel->setToolTip(tr("Time the last frames took to render (smoothed) and the triangles drawn."));
+    m_frameLabel->setToolTip(
+        tr("Time the last frames took to render (smoothed) and the triangles drawn."));
     layout->addWidget(m_frameLabel);
 
     auto *budgetRow = new QHBoxLayout;
     budgetRow->addWidget(new QLabel(tr("Error budget:"), body));
     m_budgetKind = new QComboBox(body);
     m_budgetKind->addItems({tr("max error (8-bit steps)"), tr("PSNR at least (dB)")});
-    m_budgetKind->setToolTip(tr("Measured against the exact CPU reference, more than 2 px from silhouettes."));
+    m_budgetKind->setToolTip(
+        tr("Measured against the exact CPU reference, more than 2 px from silhouettes."));
     m_budgetValue = new QDoubleSpinBox(body);
     budgetRow->addWidget(m_budgetKind, 1);
     budgetRow->addWidget(m_budgetValue);
@@ -51,12 +53,15 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
 
     auto *buttons = new QHBoxLayout;
     m_measureButton = new QPushButton(tr("Measure"), body);
-    m_measureButton->setToolTip(tr("Time every shipped method at every detail level for this view and these "
-                                   "lights and compare each with the exact answer."));
+    m_measureButton->setToolTip(
+        tr("Time every shipped method at every detail level for this view and these "
+           "lights and compare each with the exact answer."));
     m_fitButton = new QPushButton(tr("Fit to budget"), body);
-    m_fitButton->setToolTip(tr("Measure, then show the cheapest method and coarsest detail within the budget."));
+    m_fitButton->setToolTip(
+        tr("Measure, then show the cheapest method and coarsest detail within the budget."));
     m_fullButton = new QPushButton(tr("Full detail"), body);
-    m_fullButton->setToolTip(tr("Back to every object's full mesh and the shading used before the fit."));
+    m_fullButton->setToolTip(
+        tr("Back to every object's full mesh and the shading used before the fit."));
     m_fullButton->setEnabled(false);
     m_cancelButton = new QPushButton(tr("Cancel"), body);
     m_cancelButton->setVisible(false);
@@ -74,7 +79,8 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     m_chartView->setVisible(false);
     layout->addWidget(m_chartView, 1);
 
-    m_report = new QLabel(tr("Measure to see frame time against error for every method and detail level."), body);
+    m_report = new QLabel(
+        tr("Measure to see frame time against error for every method and detail level."), body);
     m_report->setWordWrap(true);
     m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_report);
@@ -153,12 +159,14 @@ void PerformanceDock::startMeasurement(bool thenFit)
     m_fitAfterMeasuring = thenFit;
     // Measured at what the viewport shows, in device pixels.
     const QSize size = m_viewport->size() * m_viewport->devicePixelRatioF();
-    if (const Result<> started = m_process->start(m_viewport->currentScene(), size, budget()); !started) {
+    if (const Result<> started = m_process->start(m_viewport->currentScene(), size, budget());
+        !started) {
         m_report->setText(tr("Cannot measure: %1").arg(started.error()));
         emit measured();
         return;
     }
-    m_report->setText(tr("Measuring %1 × %2 px with the scene's lights…").arg(size.width()).arg(size.height()));
+    m_report->setText(
+        tr("Measuring %1 × %2 px with the scene's lights…").arg(size.width()).arg(size.height()));
     setRunning(true);
 }
 
@@ -176,8 +184,9 @@ void PerformanceDock::measurementFinished(const std::vector<BenchRow> &rows, con
     m_rows = rows;
     m_fit = {};
     if (!error.isEmpty()) {
-        m_report->setText(error == QLatin1String("cancelled") ? tr("Measurement cancelled.")
-                                                              : tr("Measurement failed: %1").arg(error));
+        m_report->setText(error == QLatin1String("cancelled")
+                              ? tr("Measurement cancelled.")
+                              : tr("Measurement failed: %1").arg(error));
         emit measured();
         return;
     }
@@ -201,17 +210,21 @@ void PerformanceDock::applyFit()
     m_fullButton->setEnabled(true);
     emit applyModelRequested(*method, chosen.detail);
     const QLocale locale;
-    QString text = tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured "
-                      "offscreen, without multisampling).")
-                       .arg(budget().describe(), chosen.method, detailPercent(chosen.detail),
-                            locale.toString(chosen.triangles), locale.toString(chosen.frameMs, 'f', 2));
+    QString text =
+        tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured "
+           "offscreen, without multisampling).")
+            .arg(budget().describe(), chosen.method, detailPercent(chosen.detail),
+                 locale.toString(chosen.triangles), locale.toString(chosen.frameMs, 'f', 2));
     if (m_fit.baseline >= 0) {
         const BenchRow &full = m_rows[std::size_t(m_fit.baseline)];
-        const double share = full.triangles > 0 ? 100.0 * double(m_fit.trianglesSaved) / double(full.triangles) : 0.0;
-        text += tr(" Saved against full-detail Phong: %1 triangles (%2 %) and %3 ms (%4 → %5 ms).")
-                    .arg(locale.toString(m_fit.trianglesSaved), locale.toString(share, 'f', 0),
-                         locale.toString(m_fit.msSaved, 'f', 2), locale.toString(full.frameMs, 'f', 2),
-                         locale.toString(chosen.frameMs, 'f', 2));
+        const double share = full.triangles > 0
+            ? 100.0 * double(m_fit.trianglesSaved) / double(full.triangles)
+            : 0.0;
+        text +=
+            tr(" Saved against full-detail Phong: %1 triangles (%2 %) and %3 ms (%4 → %5 ms).")
+                .arg(locale.toString(m_fit.trianglesSaved), locale.toString(share, 'f', 0),
+                     locale.toString(m_fit.msSaved, 'f', 2), locale.toString(full.frameMs, 'f', 2),
+                     locale.toString(chosen.frameMs, 'f', 2));
     }
     m_report->setText(text);
     emit fitApplied();
@@ -221,7 +234,8 @@ void PerformanceDock::restoreFullDetail()
 {
     emit applyModelRequested(m_shadingBeforeFit, 1.0);
     m_fullButton->setEnabled(false);
-    m_report->setText(tr("Back to full detail with %1 shading.").arg(shadingName(m_shadingBeforeFit)));
+    m_report->setText(
+        tr("Back to full detail with %1 shading.").arg(shadingName(m_shadingBeforeFit)));
 }
 
 void PerformanceDock::showChart()
@@ -237,7 +251,8 @@ void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
 {
     const QLocale locale;
     m_frameLabel->setText(
-        tr("Frame: %1 ms · %2 triangles").arg(locale.toString(milliseconds, 'f', 2), locale.toString(triangles)));
+        tr("Frame: %1 ms · %2 triangles")
+            .arg(locale.toString(milliseconds, 'f', 2), locale.toString(triangles)));
 }
 
 void PerformanceDock::setRunning(bool running)

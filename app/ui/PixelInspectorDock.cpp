@@ -15,7 +15,8 @@ namespace {
 
 QString swatch(const QString &name, QColor c)
 {
-    return QStringLiteral("<span style=\"background:%1\">&nbsp;&nbsp;&nbsp;&nbsp;</span> %2 (%3, %4, %5)")
+    return QStringLiteral(
+               "<span style=\"background:%1\">&nbsp;&nbsp;&nbsp;&nbsp;</span> %2 (%3, %4, %5)")
         .arg(c.name(), name)
         .arg(c.red())
         .arg(c.green())
@@ -44,10 +45,12 @@ PixelInspectorDock::PixelInspectorDock(QWidget *parent)
     m_copy = new QPushButton(tr("Copy"), body);
     m_copy->setToolTip(tr("Copy the values as text"));
     layout->addWidget(m_copy, 0, Qt::AlignRight);
-    connect(m_copy, &QPushButton::clicked, this, [this] { QApplication::clipboard()->setText(text()); });
+    connect(m_copy, &QPushButton::clicked, this,
+            [this] { QApplication::clipboard()->setText(text()); });
     setWidget(body);
-    showMessage(tr("Turn on Inspect (I) and click a pixel, or Ctrl+click one, to see the terms of the "
-                   "equation there."));
+    showMessage(
+        tr("Turn on Inspect (I) and click a pixel, or Ctrl+click one, to see the terms of the "
+           "equation there."));
 }
 
 void PixelInspectorDock::showPixel(const PixelTerms &terms, QColor yours, QColor exact)

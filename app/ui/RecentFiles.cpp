@@ -65,7 +65,8 @@ void RecentFiles::fillMenu()
         QAction *action = m_menu->addAction(text);
         // Queued: choosing rebuilds this menu, which deletes the action.
         connect(
-            action, &QAction::triggered, this, [this, path] { choose(path); }, Qt::QueuedConnection);
+            action, &QAction::triggered, this, [this, path] { choose(path); },
+            Qt::QueuedConnection);
         action->setToolTip(QDir::toNativeSeparators(path));
         action->setStatusTip(QDir::toNativeSeparators(path));
     }

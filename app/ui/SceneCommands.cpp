@@ -37,40 +37,46 @@ void SceneCommand::change(const std::function<void(Scene &)> &edit) const
     m_access.write(scene);
 }
 
-SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after,
-                                 LightField field, bool merge)
+SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before,
+                                 const PointLight &after, LightField field, bool merge)
     : SetPropertyCommand(std::move(access), tr("Edit light %1").arg(index + 1),
                          merge ? mergeIdFor(1, index, int(field)) : -1, index, before, after)
 {
 }
 
 SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
-    : SetPropertyCommand(std::move(access), (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1),
+    : SetPropertyCommand(std::move(access),
+                         (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1),
                          -1, index, !on, on)
 {
 }
 
 RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
                                        const std::string &after)
-    : SetPropertyCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1, index, before, after)
+    : SetPropertyCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1, index, before,
+                         after)
 {
 }
 
-SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before, const glm::dvec3 &after)
-    : SetPropertyCommand(std::move(access), tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0, before, after)
+SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before,
+                                     const glm::dvec3 &after)
+    : SetPropertyCommand(std::move(access), tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0,
+                         before, after)
 {
 }
 
-SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
-                                       MaterialField field)
+SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before,
+                                       const Material &after, MaterialField field)
     : SetPropertyCommand(std::move(access), tr("Edit material"),
-                         field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)), object, before, after)
+                         field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)),
+                         object, before, after)
 {
 }
 
 SetTransformCommand::SetTransformCommand(SceneAccess access, int object, const Transform &before,
                                          const Transform &after, TransformField field)
-    : SetPropertyCommand(std::move(access), tr("Move object"), mergeIdFor(4, object, int(field)), object, before, after)
+    : SetPropertyCommand(std::move(access), tr("Move object"), mergeIdFor(4, object, int(field)),
+                         object, before, after)
 {
 }
 

@@ -63,7 +63,8 @@ template <typename Property> class SetPropertyCommand : public SceneCommand
 public:
     using Value = typename Property::Value;
 
-    SetPropertyCommand(SceneAccess access, const QString &text, int mergeId, int index, Value before, Value after)
+    SetPropertyCommand(SceneAccess access, const QString &text, int mergeId, int index,
+                       Value before, Value after)
         : SceneCommand(std::move(access), text, mergeId)
         , m_index(index)
         , m_before(std::move(before))
@@ -122,8 +123,8 @@ class SetLightCommand : public SetPropertyCommand<LightProperty>
 {
 public:
     // merge: false for a viewport drag, which is one step on its own.
-    SetLightCommand(SceneAccess access, int index, const PointLight &before, const PointLight &after, LightField field,
-                    bool merge = true);
+    SetLightCommand(SceneAccess access, int index, const PointLight &before,
+                    const PointLight &after, LightField field, bool merge = true);
 };
 
 // Switches a light on or off: an off light stays in the scene (and the file,
@@ -138,7 +139,8 @@ public:
 class RenameLightCommand : public SetPropertyCommand<LightNameProperty>
 {
 public:
-    RenameLightCommand(SceneAccess access, int index, const std::string &before, const std::string &after);
+    RenameLightCommand(SceneAccess access, int index, const std::string &before,
+                       const std::string &after);
 };
 
 class SetAmbientCommand : public SetPropertyCommand<AmbientProperty>
@@ -150,15 +152,15 @@ public:
 class SetMaterialCommand : public SetPropertyCommand<MaterialProperty>
 {
 public:
-    SetMaterialCommand(SceneAccess access, int object, const Material &before, const Material &after,
-                       MaterialField field);
+    SetMaterialCommand(SceneAccess access, int object, const Material &before,
+                       const Material &after, MaterialField field);
 };
 
 class SetTransformCommand : public SetPropertyCommand<TransformProperty>
 {
 public:
-    SetTransformCommand(SceneAccess access, int object, const Transform &before, const Transform &after,
-                        TransformField field);
+    SetTransformCommand(SceneAccess access, int object, const Transform &before,
+                        const Transform &after, TransformField field);
 };
 
 // Adding and removing change the list itself.

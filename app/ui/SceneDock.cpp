@@ -100,10 +100,12 @@ void SceneDock::addObject(int index, const SceneObject &object, const SceneMeshe
     // Warnings first: they are what must not be cut off in a narrow dock.
     QString summary = tr("%1 triangles").arg(countText(entry->stats.triangles));
     if (entry->stats.detail != 1.0)
-        summary += tr(" (detail %1 %)").arg(QLocale().toString(entry->stats.detail * 100.0, 'g', 4));
+        summary +=
+            tr(" (detail %1 %)").arg(QLocale().toString(entry->stats.detail * 100.0, 'g', 4));
     if (!entry->warnings.isEmpty()) {
         const qsizetype count = entry->warnings.size();
-        summary = (count == 1 ? tr("1 warning") : tr("%1 warnings").arg(count)) + QStringLiteral(" · ") + summary;
+        summary = (count == 1 ? tr("1 warning") : tr("%1 warnings").arg(count))
+            + QStringLiteral(" · ") + summary;
         item->setIcon(1, style()->standardIcon(QStyle::SP_MessageBoxWarning));
     }
     item->setText(1, summary);
@@ -126,12 +128,14 @@ void SceneDock::addStats(QTreeWidgetItem *item, const SceneMeshes::Entry &entry,
         ->setToolTip(0, tr("Vertices duplicated where a position has several normals"));
     if (!builtin)
         addField(item, tr("In the file"),
-                 tr("%1 vertices, %2 faces").arg(countText(stats.fileVertices), countText(stats.fileFaces)));
+                 tr("%1 vertices, %2 faces")
+                     .arg(countText(stats.fileVertices), countText(stats.fileFaces)));
     addField(item, tr("Normals"), normalsDescription(stats, builtin));
     addField(item, tr("Bounds"), boundsDescription(stats));
     addField(item, tr("Surface"), surfaceDescription(stats));
     const QString loadTime = tr("%1 ms").arg(stats.loadMs, 0, 'f', 1);
-    addField(item, tr("Load time"), stats.fromCache ? tr("%1 (from the mesh cache)").arg(loadTime) : loadTime);
+    addField(item, tr("Load time"),
+             stats.fromCache ? tr("%1 (from the mesh cache)").arg(loadTime) : loadTime);
 }
 
 void SceneDock::addWarnings(QTreeWidgetItem *item, const QStringList &warnings)

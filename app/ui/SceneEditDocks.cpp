@@ -21,8 +21,9 @@ SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWid
     , m_object(new ObjectPanel(window))
 {
     QDockWidget *previous = tabWith;
-    for (QDockWidget *dock : {static_cast<QDockWidget *>(m_lights), static_cast<QDockWidget *>(m_material),
-                              static_cast<QDockWidget *>(m_object)}) {
+    for (QDockWidget *dock :
+         {static_cast<QDockWidget *>(m_lights), static_cast<QDockWidget *>(m_material),
+          static_cast<QDockWidget *>(m_object)}) {
         window->addDockWidget(window->dockWidgetArea(tabWith), dock);
         window->tabifyDockWidget(previous, dock);
         previous = dock;

@@ -57,8 +57,8 @@ void SceneLoadJob::start(SceneLoadRequest request)
     connect(m_watcher, &QFutureWatcherBase::progressValueChanged, this,
             [this](int value) { emit progressChanged(double(value) / kProgressSteps); });
     connect(m_watcher, &QFutureWatcherBase::finished, this, &SceneLoadJob::workerFinished);
-    m_watcher->setFuture(
-        QtConcurrent::run(loadInBackground, m_request.scene, m_viewport->loadedKeys(), m_cancelRequested));
+    m_watcher->setFuture(QtConcurrent::run(loadInBackground, m_request.scene,
+                                           m_viewport->loadedKeys(), m_cancelRequested));
     // Reported with the new load already running, so that listeners can tell
     // a superseded load from one the user cancelled.
     if (supersedes)

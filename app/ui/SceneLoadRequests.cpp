@@ -20,8 +20,8 @@ SceneLoadRequest meshFilesRequest(const Scene &current, const QStringList &paths
 {
     SceneLoadRequest request;
     request.scene = sceneWithMeshes(current, paths);
-    request.label =
-        paths.size() == 1 ? QFileInfo(paths.front()).fileName() : QObject::tr("%1 meshes").arg(paths.size());
+    request.label = paths.size() == 1 ? QFileInfo(paths.front()).fileName()
+                                      : QObject::tr("%1 meshes").arg(paths.size());
     // Fitted into the scene shown when loading ends: the camera may have
     // moved meanwhile, and the bounds are only known now.
     request.finish = [paths](const Scene &shown, const SceneLoadRequest::MeshInfo &meshes) {
@@ -36,9 +36,10 @@ SceneLoadRequest normalsRequest(const Scene &current, int objectIndex, const Nor
     SceneLoadRequest request;
     request.scene = current;
     request.scene.objects[objectIndex].normals = options;
-    request.label = QObject::tr("%1 (%2 normals)").arg(QFileInfo(mesh).fileName(), normalMethodName(options.method));
-    request.finish = [objectIndex, options, mesh, requested = request.scene](const Scene &shown,
-                                                                             const SceneLoadRequest::MeshInfo &) {
+    request.label = QObject::tr("%1 (%2 normals)")
+                        .arg(QFileInfo(mesh).fileName(), normalMethodName(options.method));
+    request.finish = [objectIndex, options, mesh, requested = request.scene](
+                         const Scene &shown, const SceneLoadRequest::MeshInfo &) {
         // Objects only change through loads, one at a time, so `shown` still
         // has this object; anything else gets the scene as requested.
         if (objectIndex >= int(shown.objects.size()) || shown.objects[objectIndex].mesh != mesh)
@@ -64,7 +65,8 @@ SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double
     // Applied to the scene on screen when loading ends: the camera and lights
     // may have moved meanwhile. Objects only change through loads, so its
     // objects are still the ones loaded here.
-    request.finish = [apply, requested = request.scene](const Scene &shown, const SceneLoadRequest::MeshInfo &) {
+    request.finish = [apply, requested = request.scene](const Scene &shown,
+                                                        const SceneLoadRequest::MeshInfo &) {
         return shown.objects.size() == requested.objects.size() ? apply(shown) : requested;
     };
     return request;

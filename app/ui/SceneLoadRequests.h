@@ -14,7 +14,8 @@ SceneLoadRequest sceneFileRequest(const QString &path, const Scene &scene);
 // bounds are known (see MeshPlacement.h).
 SceneLoadRequest meshFilesRequest(const Scene &current, const QStringList &paths);
 // Object `objectIndex` of `current` with other normals (a valid index).
-SceneLoadRequest normalsRequest(const Scene &current, int objectIndex, const NormalOptions &options);
+SceneLoadRequest normalsRequest(const Scene &current, int objectIndex,
+                                const NormalOptions &options);
 // `current` with every object at `detail` (fraction of its full triangles)
 // and `method` shading: what Fit to budget applies.
 SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double detail);

@@ -53,7 +53,8 @@ Result<QString> SceneShaderFiles::open(const Scene &scene)
     for (const auto &[stage, name] : files) {
         const QString path = scene.resolveShaderPath(name);
         if (!name.isEmpty() && !QFileInfo(path).isFile())
-            missing << tr("shaders.%1: %2: file not found").arg(stageName(stage), QDir::toNativeSeparators(path));
+            missing << tr("shaders.%1: %2: file not found")
+                           .arg(stageName(stage), QDir::toNativeSeparators(path));
     }
     // The shading method's shipped shaders, shown and built, under whatever is missing.
     if (!missing.isEmpty())

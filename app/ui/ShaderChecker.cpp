@@ -23,20 +23,22 @@ bool sameScene(const Scene &a, const Scene &b)
 } // namespace
 
 struct ShaderChecker::Cache {
-    QHash<QString, std::shared_ptr<const MeshData>> meshes; // by meshKey(), of the scene last checked
+    QHash<QString, std::shared_ptr<const MeshData>>
+        meshes; // by meshKey(), of the scene last checked
     std::optional<Scene> scene;
     QSize size;
     std::shared_ptr<const CheckReference> reference;
 
     // The meshes of every object, loading only those not kept already and
     // keeping no others.
-    Result<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(const Scene &s,
-                                                                      const std::atomic<bool> &cancelled)
+    Result<std::vector<std::shared_ptr<const MeshData>>> objectMeshes(
+        const Scene &s, const std::atomic<bool> &cancelled)
     {
         QSet<QString> kept;
         for (auto it = meshes.cbegin(); it != meshes.cend(); ++it)
             kept.insert(it.key());
-        const SceneMeshes loaded = loadSceneMeshes(s, kept, [&](double) { return !cancelled.load(); });
+        const SceneMeshes loaded =
+            loadSceneMeshes(s, kept, [&](double) { return !cancelled.load(); });
         if (!loaded.ok())
             return fail(loaded.error);
         QHash<QString, std::shared_ptr<const MeshData>> used;
@@ -62,8 +64,8 @@ struct ShaderChecker::Cache {
         const auto objectMeshes = this->objectMeshes(s, cancelled);
         if (!objectMeshes)
             return fail(objectMeshes.error());
-        Result<CheckReference> made =
-            makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), [&](double) { return !cancelled.load(); });
+        Result<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(),
+                                                         [&](double) { return !cancelled.load(); });
         if (!made)
             return fail(made.error());
         reference = std::make_shared<const CheckReference>(std::move(*made));
@@ -116,43 +118,47 @@ void ShaderChecker::start(Request request)
     std::shared_ptr<Cache> cache = m_cache;
     m_cancelled = std::make_shared<std::atomic<bool>>(false);
     m_running = std::make_pair(request.scene, request.yours.size());
-    m_watcher.setFuture(QtConcurrent::run(&m_pool, [cache, cancelled = m_cancelled, request = std::move(request)]() {
-        // Background work must never take a core from the window or a mesh
-        // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
-        // threads started from here inherit. The pool thread is reused, so
-        // its priority is put back afterwards.
-        QThread::currentThread()->setPriority(QThread::IdlePriority);
-        const auto restore = qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
-        CheckResult result;
-        result.generation = request.generation;
-        result.scene = request.scene;
-        result.yours = request.yours;
-        try {
-            Result<std::shared_ptr<const CheckReference>> reference =
-                cache->referenceFor(request.scene, request.yours.size(), *cancelled);
-            result.error = reference.error();
-            result.reference = reference.valueOr(nullptr);
-            if (result.reference) {
-                const RgbImage yours = toRgbImage(request.yours);
-                result.report = checkRender(yours, *result.reference);
-                result.exact = toQImage(result.reference->exactImage);
-                result.heatmap = toQImage(checkHeatmap(yours, *result.reference));
+    m_watcher.setFuture(QtConcurrent::run(
+        &m_pool, [cache, cancelled = m_cancelled, request = std::move(request)]() {
+            // Background work must never take a core from the window or a mesh
+            // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
+            // threads started from here inherit. The pool thread is reused, so
+            // its priority is put back afterwards.
+            QThread::currentThread()->setPriority(QThread::IdlePriority);
+            const auto restore =
+                qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
+            CheckResult result;
+            result.generation = request.generation;
+            result.scene = request.scene;
+            result.yours = request.yours;
+            try {
+                Result<std::shared_ptr<const CheckReference>> reference =
+                    cache->referenceFor(request.scene, request.yours.size(), *cancelled);
+                result.error = reference.error();
+                result.reference = reference.valueOr(nullptr);
+                if (result.reference) {
+                    const RgbImage yours = toRgbImage(request.yours);
+                    result.report = checkRender(yours, *result.reference);
+                    result.exact = toQImage(result.reference->exactImage);
+                    result.heatmap = toQImage(checkHeatmap(yours, *result.reference));
+                }
+            } catch (
+                const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
+                result = CheckResult{
+                    request.generation,
+                    request.scene,
+                    {},
+                    {},
+                    {},
+                    {},
+                    {},
+                    QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
+                    0.0};
+                cache->reference.reset();
             }
-        } catch (const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
-            result = CheckResult{request.generation,
-                                 request.scene,
-                                 {},
-                                 {},
-                                 {},
-                                 {},
-                                 {},
-                                 QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
-                                 0.0};
-            cache->reference.reset();
-        }
-        result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;
-        return result;
-    }));
+            result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;
+            return result;
+        }));
 }
 
 void ShaderChecker::onFinished()

@@ -29,9 +29,11 @@ const char kShaderFilter[] = "GLSL shaders (*.vert *.frag *.glsl *.vs *.fs);;All
 std::optional<ShaderStage> stageFromSuffix(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("vert") || suffix == QLatin1String("vs") || suffix == QLatin1String("vsh"))
+    if (suffix == QLatin1String("vert") || suffix == QLatin1String("vs")
+        || suffix == QLatin1String("vsh"))
         return ShaderStage::Vertex;
-    if (suffix == QLatin1String("frag") || suffix == QLatin1String("fs") || suffix == QLatin1String("fsh"))
+    if (suffix == QLatin1String("frag") || suffix == QLatin1String("fs")
+        || suffix == QLatin1String("fsh"))
         return ShaderStage::Fragment;
     return std::nullopt;
 }
@@ -123,9 +125,11 @@ QWidget *ShaderDock::createToolBar()
 
     // Open and Save have no shortcuts: Ctrl+O / Ctrl+S belong to the window's
     // scene commands, and the same keys in two contexts would be ambiguous.
-    bar->addAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("Open…"), this, &ShaderDock::chooseAndOpen)
+    bar->addAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("Open…"), this,
+                   &ShaderDock::chooseAndOpen)
         ->setToolTip(tr("Open a shader, or a .vert/.frag pair"));
-    bar->addAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("Save"), this, &ShaderDock::saveCurrent)
+    bar->addAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("Save"), this,
+                   &ShaderDock::saveCurrent)
         ->setToolTip(tr("Save the current tab (shipped shaders are saved as a user copy)"));
     bar->addAction(tr("Save As…"), this, &ShaderDock::chooseAndSaveAsCurrent)
         ->setToolTip(tr("Save the current tab under another name"));
@@ -153,11 +157,12 @@ void ShaderDock::connectFiles()
             emit filesChanged();
     });
     connect(m_files, &ShaderFileSet::dirtyChanged, this, &ShaderDock::updateTab);
-    connect(m_files, &ShaderFileSet::reloaded, this, [this](ShaderStage stage, const QByteArray &code) {
-        setEditorCode(stage, code);
-        emit textEdited(stage);
-        emit filesChanged();
-    });
+    connect(m_files, &ShaderFileSet::reloaded, this,
+            [this](ShaderStage stage, const QByteArray &code) {
+                setEditorCode(stage, code);
+                emit textEdited(stage);
+                emit filesChanged();
+            });
     connect(m_files, &ShaderFileSet::problem, this, [this](const QString &message) {
         setCompileStatus(message, false); // not a dialog: this happens while typing
     });
@@ -174,7 +179,8 @@ void ShaderDock::setSources(const ShaderSource &vertex, const ShaderSource &frag
 {
     const bool wasSetting = std::exchange(m_settingText, true);
     using Entry = std::pair<ShaderStage, const ShaderSource *>;
-    for (const auto &[stage, source] : {Entry{ShaderStage::Vertex, &vertex}, Entry{ShaderStage::Fragment, &fragment}}) {
+    for (const auto &[stage, source] :
+         {Entry{ShaderStage::Vertex, &vertex}, Entry{ShaderStage::Fragment, &fragment}}) {
         editor(stage)->clearDiagnostics();
         editor(stage)->setCode(source->code);
         m_files->setFile(stage, source->name, source->code);
@@ -231,7 +237,8 @@ void ShaderDock::showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostic
 void ShaderDock::setCompileStatus(const QString &text, bool ok)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(ok ? QStringLiteral("color: #2e7d32;") : QStringLiteral("color: #c62828;"));
+    m_status->setStyleSheet(ok ? QStringLiteral("color: #2e7d32;")
+                               : QStringLiteral("color: #c62828;"));
 }
 
 void ShaderDock::setPreset(ShadingMethod method)
@@ -301,9 +308,10 @@ Result<> ShaderDock::saveAs(ShaderStage stage, const QString &path)
 void ShaderDock::chooseAndOpen()
 {
     const QString current = filePath(currentStage());
-    const QString folder =
-        QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath() : ShaderFileSet::userFolder();
-    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, tr(kShaderFilter));
+    const QString folder = QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath()
+                                                           : ShaderFileSet::userFolder();
+    const QStringList paths =
+        QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, tr(kShaderFilter));
     if (paths.isEmpty())
         return;
     QList<ShaderStage> replaced;
@@ -327,7 +335,8 @@ void ShaderDock::chooseAndSaveAsCurrent()
     QDir().mkpath(ShaderFileSet::userFolder());
     const QString name = QFileInfo(filePath(stage)).fileName();
     const QString suggested = QDir(ShaderFileSet::userFolder()).filePath(name);
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));
     if (path.isEmpty())
         return;
     if (const Result<> saved = saveAs(stage, path); !saved)
@@ -342,9 +351,10 @@ bool ShaderDock::confirmDiscard(const QList<ShaderStage> &stages)
             dirty << QFileInfo(filePath(stage)).fileName();
     if (dirty.isEmpty())
         return true;
-    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                              tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
-                                              QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved changes"),
+        tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
+        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
     return answer == QMessageBox::Discard;
 }
 

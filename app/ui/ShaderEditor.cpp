@@ -52,7 +52,8 @@ QImage warningTriangle(int size)
 
 QString annotationLine(const ShaderDiagnostic &diagnostic)
 {
-    return (diagnostic.isError() ? QStringLiteral("error: ") : QStringLiteral("warning: ")) + diagnostic.message;
+    return (diagnostic.isError() ? QStringLiteral("error: ") : QStringLiteral("warning: "))
+        + diagnostic.message;
 }
 
 } // namespace
@@ -111,10 +112,11 @@ void ShaderEditor::setUpDiagnosticStyles()
 {
     QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     font.setPointSizeF(font.pointSizeF() * 0.9);
-    QsciStyle(kErrorAnnotationStyle, tr("Error annotation"), QColor(0x8b, 0x0d, 0x0d), QColor(0xfd, 0xe8, 0xe8), font)
+    QsciStyle(kErrorAnnotationStyle, tr("Error annotation"), QColor(0x8b, 0x0d, 0x0d),
+              QColor(0xfd, 0xe8, 0xe8), font)
         .apply(this);
-    QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00), QColor(0xfd, 0xf3, 0xdc),
-              font)
+    QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00),
+              QColor(0xfd, 0xf3, 0xdc), font)
         .apply(this);
 
     m_errorIndicator = indicatorDefine(SquiggleIndicator);
@@ -144,12 +146,14 @@ void ShaderEditor::setUpEditing()
 
 void ShaderEditor::addShortcuts()
 {
-    auto *complete = new QShortcut(QKeySequence(tr("Ctrl+Space")), this, nullptr, nullptr, Qt::WidgetShortcut);
+    auto *complete =
+        new QShortcut(QKeySequence(tr("Ctrl+Space")), this, nullptr, nullptr, Qt::WidgetShortcut);
     connect(complete, &QShortcut::activated, this, [this] {
         refreshDeclaredNames();
         autoCompleteFromAll();
     });
-    auto *tip = new QShortcut(QKeySequence(tr("Ctrl+Shift+Space")), this, nullptr, nullptr, Qt::WidgetShortcut);
+    auto *tip = new QShortcut(QKeySequence(tr("Ctrl+Shift+Space")), this, nullptr, nullptr,
+                              Qt::WidgetShortcut);
     connect(tip, &QShortcut::activated, this, &ShaderEditor::callTip);
 }
 
@@ -286,7 +290,8 @@ void ShaderEditor::goTo(int line, int column)
 {
     const int target = std::clamp(line - 1, 0, std::max(0, lines() - 1));
     // Columns past the end would run on into the next line.
-    const int lineChars = int(text(target).remove(QLatin1Char('\n')).remove(QLatin1Char('\r')).size());
+    const int lineChars =
+        int(text(target).remove(QLatin1Char('\n')).remove(QLatin1Char('\r')).size());
     setCursorPosition(target, std::clamp(column - 1, 0, lineChars));
     ensureLineVisible(target);
     setFocus(Qt::OtherFocusReason);

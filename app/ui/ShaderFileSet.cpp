@@ -35,7 +35,8 @@ QString canonical(const QString &path)
     if (!resolved.isEmpty())
         return resolved;
     const QString folder = QDir(info.absolutePath()).canonicalPath();
-    return folder.isEmpty() ? QDir::cleanPath(info.absoluteFilePath()) : folder + QLatin1Char('/') + info.fileName();
+    return folder.isEmpty() ? QDir::cleanPath(info.absoluteFilePath())
+                            : folder + QLatin1Char('/') + info.fileName();
 }
 
 Result<> writeAtomically(const QString &path, const QByteArray &code)
@@ -43,12 +44,14 @@ Result<> writeAtomically(const QString &path, const QByteArray &code)
     QSaveFile out(path);
     if (out.open(QIODevice::WriteOnly) && out.write(code) == code.size() && out.commit())
         return {};
-    return fail(QObject::tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), out.errorString()));
+    return fail(
+        QObject::tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), out.errorString()));
 }
 
 QString defaultFileName(ShaderStage stage)
 {
-    return stage == ShaderStage::Vertex ? QStringLiteral("shader.vert") : QStringLiteral("shader.frag");
+    return stage == ShaderStage::Vertex ? QStringLiteral("shader.vert")
+                                        : QStringLiteral("shader.frag");
 }
 
 // `name` in `folder`, or name-1, name-2, ... before the suffix if taken.
@@ -74,7 +77,8 @@ ShaderFileSet::ShaderFileSet(QObject *parent)
     m_recheckTimer->setSingleShot(true);
     m_recheckTimer->setInterval(kRecheckDelayMs);
     connect(m_recheckTimer, &QTimer::timeout, this, &ShaderFileSet::checkForExternalChanges);
-    connect(m_watcher, &QFileSystemWatcher::directoryChanged, m_recheckTimer, qOverload<>(&QTimer::start));
+    connect(m_watcher, &QFileSystemWatcher::directoryChanged, m_recheckTimer,
+            qOverload<>(&QTimer::start));
 }
 
 QStringList ShaderFileSet::defaultShippedFolders()
@@ -114,7 +118,8 @@ bool ShaderFileSet::isShipped(const QString &path) const
 
 QString ShaderFileSet::userFolder()
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/shaders");
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
+        + QStringLiteral("/shaders");
 }
 
 ShaderFileSet::File &ShaderFileSet::file(ShaderStage stage)
@@ -161,7 +166,8 @@ Result<> ShaderFileSet::moveToUserCopy(ShaderStage stage, const QByteArray &cont
 {
     const QString folder = userFolder();
     if (!QDir().mkpath(folder))
-        return fail(tr("%1: cannot create the folder for user shaders").arg(QDir::toNativeSeparators(folder)));
+        return fail(tr("%1: cannot create the folder for user shaders")
+                        .arg(QDir::toNativeSeparators(folder)));
     File &f = file(stage);
     const QString name = f.path.isEmpty() ? defaultFileName(stage) : QFileInfo(f.path).fileName();
     const QString copy = unusedPath(folder, name);
@@ -268,10 +274,11 @@ void ShaderFileSet::applyReload(ShaderStage stage, const QByteArray &onDisk)
 
 bool ShaderFileSet::askToReload(ShaderStage stage)
 {
-    QMessageBox box(QMessageBox::Question, tr("Shader changed on disk"),
-                    tr("%1 was changed by another program, and the editor has unsaved changes to it.")
-                        .arg(QDir::toNativeSeparators(file(stage).path)),
-                    QMessageBox::NoButton, m_dialogParent);
+    QMessageBox box(
+        QMessageBox::Question, tr("Shader changed on disk"),
+        tr("%1 was changed by another program, and the editor has unsaved changes to it.")
+            .arg(QDir::toNativeSeparators(file(stage).path)),
+        QMessageBox::NoButton, m_dialogParent);
     box.setInformativeText(tr("Reload it and lose your changes, or keep your version?"));
     QPushButton *reload = box.addButton(tr("Reload"), QMessageBox::DestructiveRole);
     QPushButton *keep = box.addButton(tr("Keep mine"), QMessageBox::RejectRole);

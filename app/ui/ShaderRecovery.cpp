@@ -58,36 +58,45 @@ ShaderRecovery::Outcome ShaderRecovery::offer(Answer answer, QWidget *parent)
     const bool yes = answer == Answer::Ask ? ask(session, parent) : answer == Answer::Restore;
     if (!yes) {
         m_journal.discard(session.id);
-        return {false, false, tr("Discarded the shader edits recovered from %1").arg(when(session.record.savedAt)), {}};
+        return {
+            false,
+            false,
+            tr("Discarded the shader edits recovered from %1").arg(when(session.record.savedAt)),
+            {}};
     }
     restore(session);
     m_journal.discard(session.id); // from now on this session's journal holds them
     writeNow();
     Outcome outcome{true, session.runningHash.has_value(), {}, session.record.shading};
     if (!outcome.suspect)
-        outcome.note = tr("Restored the shader edits recovered from %1").arg(when(session.record.savedAt));
+        outcome.note =
+            tr("Restored the shader edits recovered from %1").arg(when(session.record.savedAt));
     else if (session.isSuspect())
-        outcome.note = tr("Restored shaders were running when PhongLab stopped unexpectedly, so they were not "
-                          "compiled; the shipped program is shown. Press F5 to compile them.");
+        outcome.note =
+            tr("Restored shaders were running when PhongLab stopped unexpectedly, so they were not "
+               "compiled; the shipped program is shown. Press F5 to compile them.");
     else
-        outcome.note = tr("PhongLab stopped unexpectedly while trying a new shader; the restored shaders were "
-                          "not compiled and the shipped program is shown. Press F5 to compile them.");
+        outcome.note =
+            tr("PhongLab stopped unexpectedly while trying a new shader; the restored shaders were "
+               "not compiled and the shipped program is shown. Press F5 to compile them.");
     return outcome;
 }
 
 bool ShaderRecovery::ask(const OrphanedSession &session, QWidget *parent) const
 {
-    QMessageBox box(QMessageBox::Question, tr("Recover shader edits"),
-                    tr("PhongLab did not shut down cleanly. Shader edits from %1 were recovered.\n\n"
-                       "Restore them into the editor?")
-                        .arg(when(session.record.savedAt)),
-                    QMessageBox::NoButton, parent);
+    QMessageBox box(
+        QMessageBox::Question, tr("Recover shader edits"),
+        tr("PhongLab did not shut down cleanly. Shader edits from %1 were recovered.\n\n"
+           "Restore them into the editor?")
+            .arg(when(session.record.savedAt)),
+        QMessageBox::NoButton, parent);
     QPushButton *restore = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
     box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
     box.setDefaultButton(restore);
     if (session.runningHash)
-        box.setInformativeText(tr("A new shader was running when it stopped; it will not be compiled "
-                                  "until you press F5."));
+        box.setInformativeText(
+            tr("A new shader was running when it stopped; it will not be compiled "
+               "until you press F5."));
     box.exec();
     return box.clickedButton() == static_cast<QAbstractButton *>(restore);
 }
@@ -161,7 +170,8 @@ bool ShaderRecovery::confirmUnsaved(QWidget *parent)
     if (!m_dock->hasUnsavedChanges())
         return true;
     const auto answer = QMessageBox::question(
-        parent, tr("Unsaved shader changes"), tr("The shaders have unsaved changes. Save them before quitting?"),
+        parent, tr("Unsaved shader changes"),
+        tr("The shaders have unsaved changes. Save them before quitting?"),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer != QMessageBox::Save)
         return answer == QMessageBox::Discard;
@@ -229,7 +239,8 @@ void ShaderRecovery::checkProbation()
 void ShaderRecovery::markRunning(const QByteArray &hash)
 {
     if (const Result<> marked = m_journal.markRunning(hash); !marked)
-        qWarning("phonglab: cannot write the running-shader sentinel: %s", qPrintable(marked.error()));
+        qWarning("phonglab: cannot write the running-shader sentinel: %s",
+                 qPrintable(marked.error()));
     m_running = true;
 }
 

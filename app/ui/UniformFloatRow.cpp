@@ -11,8 +11,8 @@
 
 namespace phonglab {
 
-UniformFloatRow::UniformFloatRow(double sliderLow, double sliderHigh, double fieldLow, double fieldHigh, double step,
-                                 QWidget *parent)
+UniformFloatRow::UniformFloatRow(double sliderLow, double sliderHigh, double fieldLow,
+                                 double fieldHigh, double step, QWidget *parent)
     : QWidget(parent)
     , m_low(sliderLow)
     , m_high(sliderHigh)

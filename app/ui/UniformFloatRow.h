@@ -18,8 +18,8 @@ class UniformFloatRow : public QWidget
 public:
     // fieldLow/fieldHigh bound what may be typed; sliderLow/sliderHigh what
     // the slider spans (the same for an @range, wider for the field without).
-    UniformFloatRow(double sliderLow, double sliderHigh, double fieldLow, double fieldHigh, double step,
-                    QWidget *parent = nullptr);
+    UniformFloatRow(double sliderLow, double sliderHigh, double fieldLow, double fieldHigh,
+                    double step, QWidget *parent = nullptr);
 
     void setValue(float value); // no edited()
     float value() const;

@@ -19,7 +19,8 @@ namespace {
 constexpr double kOpenLimit = 1e6;
 
 struct FloatRange {
-    double sliderLow = 0.0, sliderHigh = 1.0, fieldLow = -kOpenLimit, fieldHigh = kOpenLimit, step = 0.01;
+    double sliderLow = 0.0, sliderHigh = 1.0, fieldLow = -kOpenLimit, fieldHigh = kOpenLimit,
+           step = 0.01;
 };
 
 FloatRange floatRangeOf(const UniformRowSpec &spec)
@@ -47,7 +48,8 @@ QList<float> floatsOf(const UniformValue &value)
 
 int intOf(const UniformValue &value)
 {
-    return value.kind == UniformValue::Kind::UInt ? int(std::min<GLuint>(value.uints[0], INT_MAX)) : value.ints[0];
+    return value.kind == UniformValue::Kind::UInt ? int(std::min<GLuint>(value.uints[0], INT_MAX))
+                                                  : value.ints[0];
 }
 
 QWidget *createFloatRow(const UniformRowSpec &spec, QWidget *parent)
@@ -59,8 +61,8 @@ QWidget *createFloatRow(const UniformRowSpec &spec, QWidget *parent)
 QWidget *createVectorRow(const UniformRowSpec &spec, int components, QWidget *parent)
 {
     const FloatRange r = floatRangeOf(spec);
-    const bool color =
-        components == 3 && (isColorUniformName(spec.baseName) || (spec.declaration && spec.declaration->color));
+    const bool color = components == 3
+        && (isColorUniformName(spec.baseName) || (spec.declaration && spec.declaration->color));
     return new UniformVectorRow(components, color, r.fieldLow, r.fieldHigh, r.step, parent);
 }
 
@@ -99,7 +101,8 @@ void describeOwner(QWidget *row, const UniformRowSpec &spec)
         return;
     }
     if (qobject_cast<QLabel *>(row)) { // a type the dock has no editor for
-        row->setToolTip(QObject::tr("%1 %2: not editable here").arg(glslTypeName(spec.type), spec.element));
+        row->setToolTip(
+            QObject::tr("%1 %2: not editable here").arg(glslTypeName(spec.type), spec.element));
         return;
     }
     row->setToolTip(QObject::tr("%1 %2: set on the program as you edit; kept across recompiles")
@@ -110,8 +113,9 @@ void describeOwner(QWidget *row, const UniformRowSpec &spec)
 
 bool isColorUniformName(const QString &baseName)
 {
-    static const QStringList names = {QStringLiteral("ka"), QStringLiteral("kd"), QStringLiteral("ks"),
-                                      QStringLiteral("Ia"), QStringLiteral("Id"), QStringLiteral("Is")};
+    static const QStringList names = {QStringLiteral("ka"), QStringLiteral("kd"),
+                                      QStringLiteral("ks"), QStringLiteral("Ia"),
+                                      QStringLiteral("Id"), QStringLiteral("Is")};
     return names.contains(baseName);
 }
 

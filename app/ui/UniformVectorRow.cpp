@@ -12,7 +12,8 @@
 
 namespace phonglab {
 
-UniformVectorRow::UniformVectorRow(int components, bool color, double low, double high, double step, QWidget *parent)
+UniformVectorRow::UniformVectorRow(int components, bool color, double low, double high, double step,
+                                   QWidget *parent)
     : QWidget(parent)
     , m_refusal(new QLabel(this))
 {
@@ -81,8 +82,9 @@ void UniformVectorRow::updateSwatch()
 void UniformVectorRow::chooseColor()
 {
     const QList<float> now = values();
-    const QColor initial = QColor::fromRgbF(std::clamp(now[0], 0.0f, 1.0f), std::clamp(now[1], 0.0f, 1.0f),
-                                            std::clamp(now[2], 0.0f, 1.0f));
+    const QColor initial =
+        QColor::fromRgbF(std::clamp(now[0], 0.0f, 1.0f), std::clamp(now[1], 0.0f, 1.0f),
+                         std::clamp(now[2], 0.0f, 1.0f));
     const QColor chosen = QColorDialog::getColor(initial, this, tr("Choose a colour"));
     if (!chosen.isValid())
         return;

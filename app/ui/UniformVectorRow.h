@@ -17,7 +17,8 @@ class UniformVectorRow : public QWidget
     Q_OBJECT
 
 public:
-    UniformVectorRow(int components, bool color, double low, double high, double step, QWidget *parent = nullptr);
+    UniformVectorRow(int components, bool color, double low, double high, double step,
+                     QWidget *parent = nullptr);
 
     void setValues(const QList<float> &values); // no edited()
     QList<float> values() const;

@@ -23,7 +23,8 @@ namespace {
 
 constexpr qint64 kDrivenRefreshMs = 250;
 
-const UniformDeclaration *findDeclaration(const std::vector<UniformDeclaration> &declared, const QString &name)
+const UniformDeclaration *findDeclaration(const std::vector<UniformDeclaration> &declared,
+                                          const QString &name)
 {
     for (const UniformDeclaration &d : declared)
         if (d.name == name)
@@ -53,7 +54,8 @@ void UniformsDock::attach(Viewport *viewport, ShaderDock *shaders)
     m_shaders = shaders;
     // Queued: frameRendered comes from inside paintGL, where the context
     // must not be released.
-    connect(m_viewport, &Viewport::frameRendered, this, &UniformsDock::onFrameRendered, Qt::QueuedConnection);
+    connect(m_viewport, &Viewport::frameRendered, this, &UniformsDock::onFrameRendered,
+            Qt::QueuedConnection);
 }
 
 void UniformsDock::scheduleRebuild()
@@ -79,7 +81,8 @@ bool UniformsDock::readProgram(Program &program)
         return false;
     const CurrentContext current(*m_viewport);
     ShaderProgram &shader = m_viewport->renderer().program();
-    program.active = activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
+    program.active =
+        activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
     program.values = shader.snapshot();
     return true;
 }
@@ -88,7 +91,8 @@ std::vector<UniformDeclaration> UniformsDock::declarations() const
 {
     std::vector<UniformDeclaration> all =
         parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Vertex)));
-    for (UniformDeclaration &d : parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Fragment))))
+    for (UniformDeclaration &d :
+         parseUniformDeclarations(QString::fromUtf8(m_shaders->text(ShaderStage::Fragment))))
         all.push_back(std::move(d));
     return all;
 }
@@ -105,8 +109,9 @@ bool UniformsDock::rebuild()
     for (const ActiveUniformInfo &uniform : program.active)
         addActive(uniform, declared);
     for (const UniformDeclaration &d : declared) {
-        const bool active = std::any_of(program.active.begin(), program.active.end(),
-                                        [&](const ActiveUniformInfo &u) { return u.name == d.name.toUtf8(); });
+        const bool active =
+            std::any_of(program.active.begin(), program.active.end(),
+                        [&](const ActiveUniformInfo &u) { return u.name == d.name.toUtf8(); });
         if (!active && !m_rows.contains(d.name))
             addInactive(d);
     }
@@ -125,7 +130,8 @@ void UniformsDock::clearRows()
     m_inactive.clear();
 }
 
-void UniformsDock::addActive(const ActiveUniformInfo &uniform, const std::vector<UniformDeclaration> &declared)
+void UniformsDock::addActive(const ActiveUniformInfo &uniform,
+                             const std::vector<UniformDeclaration> &declared)
 {
     UniformRowSpec spec;
     spec.baseName = QString::fromUtf8(uniform.name);
@@ -133,7 +139,8 @@ void UniformsDock::addActive(const ActiveUniformInfo &uniform, const std::vector
     spec.owner = uniformOwner(spec.baseName);
     spec.declaration = findDeclaration(declared, spec.baseName);
     for (int element = 0; element < uniform.size; ++element) {
-        spec.element = uniform.isArray ? QStringLiteral("%1[%2]").arg(spec.baseName).arg(element) : spec.baseName;
+        spec.element = uniform.isArray ? QStringLiteral("%1[%2]").arg(spec.baseName).arg(element)
+                                       : spec.baseName;
         spec.value = m_values.find(spec.element.toUtf8());
         QWidget *row = createUniformRow(spec, m_contents);
         m_owners.insert(spec.element, spec.owner);
@@ -172,14 +179,17 @@ void UniformsDock::addRow(const QString &element, const QString &label, QWidget 
 void UniformsDock::connectRow(QWidget *row, const QString &element)
 {
     if (auto *f = qobject_cast<UniformFloatRow *>(row))
-        connect(f, &UniformFloatRow::edited, this, [this, element](float v) { writeFloats(element, {v}); });
+        connect(f, &UniformFloatRow::edited, this,
+                [this, element](float v) { writeFloats(element, {v}); });
     else if (auto *v = qobject_cast<UniformVectorRow *>(row))
         connect(v, &UniformVectorRow::edited, this,
                 [this, element](const QList<float> &values) { writeFloats(element, values); });
     else if (auto *i = qobject_cast<UniformIntRow *>(row))
-        connect(i, &UniformIntRow::edited, this, [this, element](int value) { writeInt(element, value); });
+        connect(i, &UniformIntRow::edited, this,
+                [this, element](int value) { writeInt(element, value); });
     else if (auto *b = qobject_cast<UniformBoolRow *>(row))
-        connect(b, &UniformBoolRow::edited, this, [this, element](bool value) { writeInt(element, value ? 1 : 0); });
+        connect(b, &UniformBoolRow::edited, this,
+                [this, element](bool value) { writeInt(element, value ? 1 : 0); });
 }
 
 void UniformsDock::writeFloats(const QString &element, const QList<float> &values)

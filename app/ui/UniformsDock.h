@@ -57,7 +57,8 @@ private:
     bool readProgram(Program &program);
     std::vector<UniformDeclaration> declarations() const;
     void clearRows();
-    void addActive(const ActiveUniformInfo &uniform, const std::vector<UniformDeclaration> &declared);
+    void addActive(const ActiveUniformInfo &uniform,
+                   const std::vector<UniformDeclaration> &declared);
     void addInactive(const UniformDeclaration &declaration);
     void addRow(const QString &element, const QString &label, QWidget *row);
     void connectRow(QWidget *row, const QString &element);

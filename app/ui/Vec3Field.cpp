@@ -26,7 +26,8 @@ bool parseNumber(const QString &text, double *value)
     if (!ok) {
         const QString t = text.trimmed().toLower();
         if (t == QLatin1String("nan") || t == QLatin1String("inf") || t == QLatin1String("-inf")) {
-            *value = t == QLatin1String("nan") ? std::nan("") : (t.startsWith('-') ? -INFINITY : INFINITY);
+            *value = t == QLatin1String("nan") ? std::nan("")
+                                               : (t.startsWith('-') ? -INFINITY : INFINITY);
             ok = true;
         }
     }
@@ -76,9 +77,9 @@ void Vec3Field::showValue()
     for (int axis = 0; axis < 3; ++axis)
         m_edits[axis]->setText(QLocale().toString(m_value[axis], 'g', kDecimals + 2));
     if (m_colour) {
-        const QColor c =
-            QColor::fromRgbF(float(std::clamp(m_value.r, 0.0, 1.0)), float(std::clamp(m_value.g, 0.0, 1.0)),
-                             float(std::clamp(m_value.b, 0.0, 1.0)));
+        const QColor c = QColor::fromRgbF(float(std::clamp(m_value.r, 0.0, 1.0)),
+                                          float(std::clamp(m_value.g, 0.0, 1.0)),
+                                          float(std::clamp(m_value.b, 0.0, 1.0)));
         m_colour->setStyleSheet(QStringLiteral("background-color: %1").arg(c.name()));
     }
 }
@@ -100,7 +101,11 @@ QString Vec3Field::parse(glm::dvec3 *parsed) const
         if (!std::isfinite(v))
             return tr("%1: must be finite").arg(names[axis]);
         if (v < m_minimum || v > m_maximum)
-            return tr("%1: must be in [%2, %3] (got %4)").arg(names[axis]).arg(m_minimum).arg(m_maximum).arg(v);
+            return tr("%1: must be in [%2, %3] (got %4)")
+                .arg(names[axis])
+                .arg(m_minimum)
+                .arg(m_maximum)
+                .arg(v);
         (*parsed)[axis] = v;
     }
     return m_check ? m_check(*parsed) : QString();

@@ -28,8 +28,9 @@ constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
 constexpr double kFrameTimeSmoothing = 0.1; // weight of the newest frame in the running average
-constexpr int kGiveBackTimeoutMs = 5000;    // a borrower stuck in the driver (a shader that never ends)
-constexpr double kLightPickRadiusPx = 8.0;  // how near a click must be to a marker
+constexpr int kGiveBackTimeoutMs =
+    5000; // a borrower stuck in the driver (a shader that never ends)
+constexpr double kLightPickRadiusPx = 8.0; // how near a click must be to a marker
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -203,8 +204,8 @@ QImage Viewport::grabFramebuffer()
 bool Viewport::event(QEvent *event)
 {
     const QEvent::Type type = event->type();
-    if (type == QEvent::Show || type == QEvent::WindowChangeInternal || type == QEvent::WindowAboutToChangeInternal
-        || type == QEvent::ScreenChangeInternal)
+    if (type == QEvent::Show || type == QEvent::WindowChangeInternal
+        || type == QEvent::WindowAboutToChangeInternal || type == QEvent::ScreenChangeInternal)
         takeBackContext();
     return QOpenGLWidget::event(event);
 }
@@ -267,8 +268,8 @@ Scene Viewport::renderedScene() const
 {
     Scene scene = currentScene();
     // Disabled lights are not sent to the shader, so they leave room for it.
-    const auto enabledLights =
-        std::count_if(scene.lights.begin(), scene.lights.end(), [](const PointLight &l) { return l.enabled; });
+    const auto enabledLights = std::count_if(scene.lights.begin(), scene.lights.end(),
+                                             [](const PointLight &l) { return l.enabled; });
     if (m_headlight && enabledLights < kMaxLights) {
         PointLight head;
         head.position = scene.camera.eye; // moves with every orbit, pan and zoom
@@ -288,7 +289,8 @@ bool Viewport::startLightDrag(const QPointF &position)
 {
     if (!m_options.drawLightMarkers)
         return false; // nothing visible to grab
-    m_dragLight = pickLight(m_scene.lights, m_orbit.camera(), QSizeF(size()), position, kLightPickRadiusPx);
+    m_dragLight =
+        pickLight(m_scene.lights, m_orbit.camera(), QSizeF(size()), position, kLightPickRadiusPx);
     if (m_dragLight < 0)
         return false;
     m_dragStart = m_scene.lights[m_dragLight];
@@ -300,8 +302,9 @@ bool Viewport::startLightDrag(const QPointF &position)
 void Viewport::dragLight(const QPointF &position, bool alongView)
 {
     glm::dvec3 &p = m_scene.lights[m_dragLight].position;
-    p = alongView ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
-                  : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
+    p = alongView
+        ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
+        : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
     m_parametersDirty = true;
     update();
     emit sceneParametersChanged();
@@ -338,7 +341,8 @@ void Viewport::initializeGL()
     emit glRendererChanged(m_glRendererName);
 
     if (const Result<> initialized = m_renderer.initialize(); !initialized) {
-        emit renderError(tr("Cannot render with %1: %2").arg(m_glRendererName, initialized.error()));
+        emit renderError(
+            tr("Cannot render with %1: %2").arg(m_glRendererName, initialized.error()));
         return;
     }
     m_renderer.setOptions(m_options);
@@ -366,8 +370,8 @@ Result<> Viewport::uploadScene(const Scene &scene, SceneMeshes &&meshes)
     if (reloadShading) {
         const BuildReport built = m_renderer.loadShading(scene.shading);
         if (!built.ok) // the renderer keeps its previous program
-            return fail(
-                tr("Cannot build the %1 shading program:\n%2").arg(shadingName(scene.shading), built.errorSummary()));
+            return fail(tr("Cannot build the %1 shading program:\n%2")
+                            .arg(shadingName(scene.shading), built.errorSummary()));
     }
     Result<> set = m_renderer.setScene(scene, std::move(meshes));
     if (!set && reloadShading && scene.shading != previousShading)
@@ -385,7 +389,8 @@ void Viewport::cleanup()
             m_renderer.cleanup();
             doneCurrent();
         } else {
-            qWarning("phonglab: the viewport's OpenGL context was not given back; its resources are left");
+            qWarning("phonglab: the viewport's OpenGL context was not given back; its resources "
+                     "are left");
         }
     }
     m_glInitialized = false;
@@ -450,7 +455,9 @@ void Viewport::cameraMoved()
 void Viewport::mousePressEvent(QMouseEvent *event)
 {
     switch (event->button()) {
-    case Qt::LeftButton: m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit; break;
+    case Qt::LeftButton:
+        m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
+        break;
     case Qt::RightButton:
     case Qt::MiddleButton: m_drag = Drag::Pan; break;
     default: QOpenGLWidget::mousePressEvent(event); return;

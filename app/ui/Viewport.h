@@ -130,7 +130,8 @@ signals:
     // setSceneParameters() or a marker drag changed lights / materials / transforms.
     void sceneParametersChanged();
     // A marker drag ended: one finished move of light `index` (for undo).
-    void lightDragged(int index, const phonglab::PointLight &before, const phonglab::PointLight &after);
+    void lightDragged(int index, const phonglab::PointLight &before,
+                      const phonglab::PointLight &after);
     // A light marker was clicked.
     void lightPicked(int index);
     // The headlight was switched: the frame changed, the scene did not.

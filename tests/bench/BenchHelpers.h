@@ -28,7 +28,8 @@ inline QByteArray editedFragment(double k)
     QFile file(shaderPath(QStringLiteral("phong.frag")));
     file.open(QIODevice::ReadOnly);
     QByteArray text = file.readAll();
-    text.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
+    text.replace("fragColor = vec4(I, 1.0);",
+                 "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
     return text;
 }
 

@@ -57,7 +57,8 @@ Sample edit(MainWindow &window, const QByteArray &text)
         return {};
     QElapsedTimer clock;
     clock.start();
-    if (!QTest::qWaitFor([&] { return checked.count() > 0 && !window.liveCheck()->isChecking(); }, 60000))
+    if (!QTest::qWaitFor([&] { return checked.count() > 0 && !window.liveCheck()->isChecking(); },
+                         60000))
         return {};
     return {double(clock.nsecsElapsed()) / 1e6, window.liveCheck()->lastResult()->milliseconds};
 }
@@ -73,17 +74,18 @@ int main(int argc, char **argv)
     QStandardPaths::setTestModeEnabled(true);
     QCommandLineParser parser;
     parser.addHelpOption();
-    parser.addOption(
-        {QStringLiteral("edits"), QStringLiteral("Edits (default 30)."), QStringLiteral("N"), QStringLiteral("30")});
-    parser.addOption({QStringLiteral("width"), QStringLiteral("Window width (default 1280)."), QStringLiteral("W"),
-                      QStringLiteral("1280")});
-    parser.addOption({QStringLiteral("height"), QStringLiteral("Window height (default 800)."), QStringLiteral("H"),
-                      QStringLiteral("800")});
+    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits (default 30)."),
+                      QStringLiteral("N"), QStringLiteral("30")});
+    parser.addOption({QStringLiteral("width"), QStringLiteral("Window width (default 1280)."),
+                      QStringLiteral("W"), QStringLiteral("1280")});
+    parser.addOption({QStringLiteral("height"), QStringLiteral("Window height (default 800)."),
+                      QStringLiteral("H"), QStringLiteral("800")});
     parser.process(app);
     const int edits = std::max(1, parser.value(QStringLiteral("edits")).toInt());
 
     MainWindow window;
-    window.resize(parser.value(QStringLiteral("width")).toInt(), parser.value(QStringLiteral("height")).toInt());
+    window.resize(parser.value(QStringLiteral("width")).toInt(),
+                  parser.value(QStringLiteral("height")).toInt());
     window.show();
     QString error;
     if (const Result<> done = window.openScene(defaultScenePath()); !done) {
@@ -91,7 +93,8 @@ int main(int argc, char **argv)
         return 1;
     }
     Viewport *viewport = window.viewport();
-    if (!QTest::qWaitFor([&] { return viewport->isRenderReady() && viewport->framesRendered() > 0; }, 60000)) {
+    if (!QTest::qWaitFor(
+            [&] { return viewport->isRenderReady() && viewport->framesRendered() > 0; }, 60000)) {
         std::fprintf(stderr, "the view did not come up\n");
         return 1;
     }
@@ -111,15 +114,18 @@ int main(int argc, char **argv)
         viewport->renderImage(pixels, false);
         frame.push_back(double(clock.nsecsElapsed()) / 1e6);
     }
-    const double p50 = percentile(verdict, 0.5), p95 = percentile(verdict, 0.95), f50 = percentile(frame, 0.5);
-    std::printf("default scene, viewport %dx%d px, %d edits, %d CPUs\n", pixels.width(), pixels.height(), edits,
-                QThread::idealThreadCount());
+    const double p50 = percentile(verdict, 0.5), p95 = percentile(verdict, 0.95),
+                 f50 = percentile(frame, 0.5);
+    std::printf("default scene, viewport %dx%d px, %d edits, %d CPUs\n", pixels.width(),
+                pixels.height(), edits, QThread::idealThreadCount());
     std::printf("| measure | p50 ms | p95 ms |\n|---|---|---|\n");
     std::printf("| good compile -> verdict (reference kept) | %.0f | %.0f |\n", p50, p95);
     std::printf("| of which the check itself (worker) | %.0f | %.0f |\n", percentile(worker, 0.5),
                 percentile(worker, 0.95));
-    std::printf("| peer: one frame of the same view | %.0f | %.0f |\n", f50, percentile(frame, 0.95));
-    std::printf("| first check of a view (makes the reference) | %.0f | |\n", cold.compileToVerdictMs);
+    std::printf("| peer: one frame of the same view | %.0f | %.0f |\n", f50,
+                percentile(frame, 0.95));
+    std::printf("| first check of a view (makes the reference) | %.0f | |\n",
+                cold.compileToVerdictMs);
     std::printf("verdict / frame at p50: %.1fx\n", p50 / std::max(f50, 1e-9));
     QDir(ShaderFileSet::userFolder()).removeRecursively();
     return 0;

@@ -51,10 +51,14 @@ namespace {
 class PhongLabPath
 {
 public:
-    PhongLabPath(const Scene &scene, const QSize &size, bool guiThread, LiveShaderController::WarmUp warmUp);
+    PhongLabPath(const Scene &scene, const QSize &size, bool guiThread,
+                 LiveShaderController::WarmUp warmUp);
     bool isReady() const { return m_ready; }
     bool buildsOnWorker() const { return m_window->liveShaders()->buildsOnWorker(); }
-    QSize viewportPixels() const { return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF(); }
+    QSize viewportPixels() const
+    {
+        return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
+    }
     EditSample edit(const QByteArray &fragment);
 
 private:
@@ -64,7 +68,8 @@ private:
     bool m_ready = false;
 };
 
-PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread, LiveShaderController::WarmUp warmUp)
+PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread,
+                           LiveShaderController::WarmUp warmUp)
 {
     if (guiThread)
         qputenv("PHONGLAB_COMPILE_ON_GUI_THREAD", "1");
@@ -170,8 +175,9 @@ double PhongLabPath::steadyFrameMs()
 QString loadAverage()
 {
     QFile file(QStringLiteral("/proc/loadavg"));
-    return file.open(QIODevice::ReadOnly) ? QString::fromLatin1(file.readAll()).section(QLatin1Char(' '), 0, 2)
-                                          : QStringLiteral("unknown");
+    return file.open(QIODevice::ReadOnly)
+        ? QString::fromLatin1(file.readAll()).section(QLatin1Char(' '), 0, 2)
+        : QStringLiteral("unknown");
 }
 
 struct Row {
@@ -189,18 +195,21 @@ double column(const std::vector<EditSample> &samples, double EditSample::*field,
 
 void printTable(const std::vector<Row> &rows)
 {
-    std::printf(
-        "\n| path | edit→pixel median | p95 | compile | link | warm-up draw (worker thread) | first frame "
-        "(GUI thread) | rest (queues, hops, adopt) | next frame, same program | longest GUI stall median | p95 |\n");
+    std::printf("\n| path | edit→pixel median | p95 | compile | link | warm-up draw (worker "
+                "thread) | first frame "
+                "(GUI thread) | rest (queues, hops, adopt) | next frame, same program | longest "
+                "GUI stall median | p95 |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Row &row : rows) {
         const auto &v = row.samples;
-        std::printf("| %s | %.1f ms | %.1f ms | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f ms | %.1f ms |\n",
-                    qPrintable(row.name), column(v, &EditSample::totalMs, 0.5), column(v, &EditSample::totalMs, 0.95),
-                    column(v, &EditSample::compileMs, 0.5), column(v, &EditSample::linkMs, 0.5),
-                    column(v, &EditSample::warmMs, 0.5), column(v, &EditSample::frameMs, 0.5),
-                    column(v, &EditSample::otherMs, 0.5), column(v, &EditSample::steadyMs, 0.5),
-                    column(v, &EditSample::stallMs, 0.5), column(v, &EditSample::stallMs, 0.95));
+        std::printf("| %s | %.1f ms | %.1f ms | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f ms "
+                    "| %.1f ms |\n",
+                    qPrintable(row.name), column(v, &EditSample::totalMs, 0.5),
+                    column(v, &EditSample::totalMs, 0.95), column(v, &EditSample::compileMs, 0.5),
+                    column(v, &EditSample::linkMs, 0.5), column(v, &EditSample::warmMs, 0.5),
+                    column(v, &EditSample::frameMs, 0.5), column(v, &EditSample::otherMs, 0.5),
+                    column(v, &EditSample::steadyMs, 0.5), column(v, &EditSample::stallMs, 0.5),
+                    column(v, &EditSample::stallMs, 0.95));
     }
     const double raw = column(rows.front().samples, &EditSample::totalMs, 0.5);
     std::printf("\n");
@@ -221,11 +230,11 @@ int main(int argc, char **argv)
     QStandardPaths::setTestModeEnabled(true); // user copies of the shaders go to a test folder
     QCommandLineParser parser;
     parser.addHelpOption();
-    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits per path (default 50)."), QStringLiteral("N"),
-                      QStringLiteral("50")});
+    parser.addOption({QStringLiteral("edits"), QStringLiteral("Edits per path (default 50)."),
+                      QStringLiteral("N"), QStringLiteral("50")});
     parser.addOption({QStringLiteral("samples"),
-                      QStringLiteral("MSAA samples of the viewport (default 4, as the app)."), QStringLiteral("S"),
-                      QStringLiteral("4")});
+                      QStringLiteral("MSAA samples of the viewport (default 4, as the app)."),
+                      QStringLiteral("S"), QStringLiteral("4")});
     parser.process(app);
     const int edits = std::max(1, parser.value(QStringLiteral("edits")).toInt());
     const int samples = std::max(0, parser.value(QStringLiteral("samples")).toInt());
@@ -257,7 +266,8 @@ int main(int argc, char **argv)
         W warmUp;
     };
     const Mode modes[] = {
-        {QStringLiteral("PhongLab: worker, warm-up in lent viewport context (default)"), false, W::ViewportContext},
+        {QStringLiteral("PhongLab: worker, warm-up in lent viewport context (default)"), false,
+         W::ViewportContext},
         {QStringLiteral("PhongLab: worker, warm-up in worker context"), false, W::WorkerContext},
         {QStringLiteral("PhongLab: worker, no warm-up"), false, W::Off},
         {QStringLiteral("PhongLab: GUI thread (fallback)"), true, W::Off}};
@@ -273,12 +283,15 @@ int main(int argc, char **argv)
     }
     constexpr int kWarmUpRounds = 3;
     const QSize pixels = paths.front()->viewportPixels();
-    std::printf("viewport %dx%d px, %d samples, %d edits per path (+%d warm-up), %d CPUs, load %s\n", pixels.width(),
-                pixels.height(), samples, edits, kWarmUpRounds, QThread::idealThreadCount(), qPrintable(loadAverage()));
+    std::printf(
+        "viewport %dx%d px, %d samples, %d edits per path (+%d warm-up), %d CPUs, load %s\n",
+        pixels.width(), pixels.height(), samples, edits, kWarmUpRounds, QThread::idealThreadCount(),
+        qPrintable(loadAverage()));
     int serial = 0;
     for (int round = 0; round < kWarmUpRounds + edits; ++round) {
         for (std::size_t p = 0; p < rows.size(); ++p) {
-            const QByteArray text = editedFragment(0.5 + 0.0001 * ++serial); // a new text every time
+            const QByteArray text =
+                editedFragment(0.5 + 0.0001 * ++serial); // a new text every time
             const EditSample s = p == 0 ? raw.edit(text) : paths[p - 1]->edit(text);
             if (round >= kWarmUpRounds)
                 rows[p].samples.push_back(s);

@@ -80,7 +80,8 @@ Sample median(const std::function<long long()> &work, int runs)
     std::vector<Sample> samples;
     for (int i = 0; i < runs; ++i)
         samples.push_back(measureInChild(work));
-    std::sort(samples.begin(), samples.end(), [](const Sample &a, const Sample &b) { return a.ms < b.ms; });
+    std::sort(samples.begin(), samples.end(),
+              [](const Sample &a, const Sample &b) { return a.ms < b.ms; });
     return samples[samples.size() / 2];
 }
 
@@ -179,14 +180,15 @@ long long phonglabLoad(const std::string &path)
 
 void printRow(const char *name, const Sample &s, const Sample &peer, const Sample &floor)
 {
-    std::printf("  %-34s %9.1f ms %9.1f MiB %8.2fx %8.2fx\n", name, s.ms, s.peakMiB, s.ms / peer.ms, s.ms / floor.ms);
+    std::printf("  %-34s %9.1f ms %9.1f MiB %8.2fx %8.2fx\n", name, s.ms, s.peakMiB, s.ms / peer.ms,
+                s.ms / floor.ms);
     std::fflush(stdout);
 }
 
 void benchFile(const std::string &path, int runs, const QString &cacheDir)
 {
-    std::printf("\n%s\n  %-34s %12s %13s %9s %9s\n", path.c_str(), "loader", "time", "peak RSS", "vs tinyobj",
-                "vs bare");
+    std::printf("\n%s\n  %-34s %12s %13s %9s %9s\n", path.c_str(), "loader", "time", "peak RSS",
+                "vs tinyobj", "vs bare");
     const Sample bare = median([&] { return bareParse(path); }, runs);
     const Sample tiny = median([&] { return tinyObj(path); }, runs);
     printRow("bare parse (floor)", bare, tiny, bare);
@@ -213,16 +215,20 @@ void benchFile(const std::string &path, int runs, const QString &cacheDir)
         },
         runs);
     printRow("PhongLab loadMesh, first open", first, tiny, bare);
-    std::printf("  isolation (child process, limits, answer through the cache format): %+.1f %% of the parse "
+    std::printf("  isolation (child process, limits, answer through the cache format): %+.1f %% of "
+                "the parse "
                 "in process, %+.1f %% of the unisolated first open\n",
-                100.0 * (first.ms / inProcess.ms - 1.0), 100.0 * (first.ms / inProcessCached.ms - 1.0));
+                100.0 * (first.ms / inProcess.ms - 1.0),
+                100.0 * (first.ms / inProcessCached.ms - 1.0));
     phonglabLoad(path); // leaves the cache entry for the re-open
-    printRow("PhongLab loadMesh, re-open (cache)", median([&] { return phonglabLoad(path); }, runs), tiny, bare);
+    printRow("PhongLab loadMesh, re-open (cache)", median([&] { return phonglabLoad(path); }, runs),
+             tiny, bare);
 }
 
 // Area-weighted normals in the plainest form: one pass over the index
 // buffer accumulating cross products, one pass normalising.
-long long plainNormalLoop(const std::vector<glm::vec3> &positions, const std::vector<std::uint32_t> &triangles)
+long long plainNormalLoop(const std::vector<glm::vec3> &positions,
+                          const std::vector<std::uint32_t> &triangles)
 {
     std::vector<glm::vec3> normals(positions.size(), glm::vec3(0.0f));
     for (std::size_t t = 0; t < triangles.size(); t += 3) {
@@ -239,7 +245,8 @@ long long plainNormalLoop(const std::vector<glm::vec3> &positions, const std::ve
 
 void benchNormals(const std::string &path, int runs)
 {
-    phonglab::MeshLoadResult r = phonglab::loadMesh(QString::fromStdString(path), {phonglab::NormalMethod::Flat, {}});
+    phonglab::MeshLoadResult r =
+        phonglab::loadMesh(QString::fromStdString(path), {phonglab::NormalMethod::Flat, {}});
     if (!r.ok()) {
         std::printf("cannot load %s: %s\n", path.c_str(), qPrintable(r.error));
         return;

@@ -49,9 +49,9 @@ double msOf(const std::function<void()> &work)
 std::vector<Ray> raysThrough(const MeshData &mesh, int count)
 {
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (const glm::dvec3 &p : mesh.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    for (const glm::vec3 &p : mesh.positions) {
+        lo = glm::min(lo, glm::dvec3(p));
+        hi = glm::max(hi, glm::dvec3(p));
     }
     std::mt19937 random(1234);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -61,7 +61,8 @@ std::vector<Ray> raysThrough(const MeshData &mesh, int count)
         const glm::dvec3 target = lo + size * glm::dvec3(unit(random), unit(random), unit(random));
         const glm::dvec3 origin = centre
             + 2.0 * glm::length(size)
-                * glm::normalize(glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5));
+                * glm::normalize(
+                    glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5));
         rays.push_back(Ray{origin, target - origin});
     }
     return rays;
@@ -78,13 +79,17 @@ int main(int argc, char **argv)
                       QStringLiteral("N"), QStringLiteral("256")});
     parser.process(app);
     const int side = std::max(16, parser.value(QStringLiteral("size")).toInt());
-    std::printf("CPU reference on %u threads, %dx%d\n", std::max(1u, std::thread::hardware_concurrency()), side, side);
+    std::printf("CPU reference on %u threads, %dx%d\n",
+                std::max(1u, std::thread::hardware_concurrency()), side, side);
 
     const ReferenceShader phong(ReferenceShading::Phong);
-    const double sphereMs = msOf([&] { raycastScene(builtinScene(QStringLiteral("builtin:sphere")), side, side); });
-    const double torusMs = msOf([&] { raycastScene(builtinScene(QStringLiteral("builtin:torus")), side, side); });
+    const double sphereMs = msOf(
+        [&] { (void)raycastScene(builtinScene(QStringLiteral("builtin:sphere")), side, side); });
+    const double torusMs = msOf(
+        [&] { (void)raycastScene(builtinScene(QStringLiteral("builtin:torus")), side, side); });
     std::printf("analytic sphere      %8.1f ms\n", sphereMs);
-    std::printf("analytic torus       %8.1f ms  (%.2fx the sphere: a quartic per ray)\n", torusMs, torusMs / sphereMs);
+    std::printf("analytic torus       %8.1f ms  (%.2fx the sphere: a quartic per ray)\n", torusMs,
+                torusMs / sphereMs);
 
     const SceneLoadResult loaded = loadSceneFile(assetPath(QStringLiteral("scenes/default.json")));
     if (!loaded.ok()) {
@@ -102,9 +107,10 @@ int main(int argc, char **argv)
         perObject.push_back(meshes.entries.value(meshKey(*loaded.scene, object)).mesh);
         triangles += perObject.back() ? perObject.back()->triangleCount() : 0;
     }
-    const double sceneMs = msOf([&] { raycastSceneMeshes(*loaded.scene, perObject, side, side, phong); });
-    std::printf("default scene meshes %8.1f ms  (%zu triangles; %.2fx the analytic sphere)\n", sceneMs, triangles,
-                sceneMs / sphereMs);
+    const double sceneMs =
+        msOf([&] { (void)raycastSceneMeshes(*loaded.scene, perObject, side, side, phong); });
+    std::printf("default scene meshes %8.1f ms  (%zu triangles; %.2fx the analytic sphere)\n",
+                sceneMs, triangles, sceneMs / sphereMs);
 
     const MeshData big = makeUvSphere(1024, 640);
     std::optional<MeshBvh> bvh;
@@ -115,9 +121,9 @@ int main(int argc, char **argv)
         for (const Ray &ray : rays)
             hits += bvh->closestHit(ray, 0.0, 1e30).has_value();
     });
-    std::printf("BVH build            %8.1f ms  (%zu triangles, %zu nodes, depth %d)\n", buildMs, big.triangleCount(),
-                bvh->nodeCount(), bvh->depth());
-    std::printf("100k rays            %8.1f ms  (%d hits; %.0f ns a ray, one thread)\n", queryMs, hits,
-                queryMs * 1e6 / double(rays.size()));
+    std::printf("BVH build            %8.1f ms  (%zu triangles, %zu nodes, depth %d)\n", buildMs,
+                big.triangleCount(), bvh->nodeCount(), bvh->depth());
+    std::printf("100k rays            %8.1f ms  (%d hits; %.0f ns a ray, one thread)\n", queryMs,
+                hits, queryMs * 1e6 / double(rays.size()));
     return 0;
 }

@@ -82,7 +82,8 @@ inline QString scratchPath(const QString &fileName)
 inline bool writeScratch(const QString &path, const QByteArray &bytes)
 {
     QFile file(path);
-    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(bytes) == bytes.size();
+    return file.open(QIODevice::WriteOnly | QIODevice::Truncate)
+        && file.write(bytes) == bytes.size();
 }
 
 inline void checkMesh(const char *target, const MeshLoadResult &result)
@@ -94,7 +95,9 @@ inline void checkMesh(const char *target, const MeshLoadResult &result)
     }
     const MeshData &mesh = *result.mesh;
     if (!mesh.isValid())
-        brokenPromise(target, "a loaded mesh that is not valid (empty, normals do not match, index out of range)");
+        brokenPromise(
+            target,
+            "a loaded mesh that is not valid (empty, normals do not match, index out of range)");
     if (mesh.indices.empty())
         brokenPromise(target, "a loaded mesh without triangles");
     for (const glm::vec3 &p : mesh.positions)
@@ -143,9 +146,11 @@ inline Outcome runScene(const QByteArray &bytes)
             brokenPromise("scene", "a refused scene without an error message");
         return {false, result.error};
     }
-    const SceneLoadResult again = parseScene(sceneToJson(*result.scene), QStringLiteral("/phonglab-fuzz-base"));
+    const SceneLoadResult again =
+        parseScene(sceneToJson(*result.scene), QStringLiteral("/phonglab-fuzz-base"));
     if (!again.ok()) {
-        std::fprintf(stderr, "fuzz_scene: the written scene does not parse: %s\n", qPrintable(again.error));
+        std::fprintf(stderr, "fuzz_scene: the written scene does not parse: %s\n",
+                     qPrintable(again.error));
         brokenPromise("scene", "sceneToJson wrote a scene that parseScene refuses");
     }
     if (!(*again.scene == *result.scene))
@@ -179,7 +184,8 @@ inline Outcome runShaderLog(const QByteArray &bytes)
 // Shader text with uniform declarations and their // @range ... comments.
 inline Outcome runUniforms(const QByteArray &bytes)
 {
-    const std::vector<UniformDeclaration> uniforms = parseUniformDeclarations(QString::fromUtf8(bytes));
+    const std::vector<UniformDeclaration> uniforms =
+        parseUniformDeclarations(QString::fromUtf8(bytes));
     for (const UniformDeclaration &u : uniforms) {
         if (u.name.isEmpty())
             brokenPromise("uniforms", "a uniform without a name");
@@ -225,14 +231,14 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
 // Defines the libFuzzer entry point of one target (in fuzz_<name>.cpp).
 // PHONGLAB_FUZZ_VERBOSE=1 prints what became of each input (ok or the
 // error), e.g. to see what the seeds exercise: fuzz_ply -runs=0 corpus/ply.
-#define PHONGLAB_FUZZ_TARGET(name)                                                                                     \
-    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)                                  \
-    {                                                                                                                  \
-        static const bool verbose = qEnvironmentVariableIntValue("PHONGLAB_FUZZ_VERBOSE") != 0;                        \
-        const phonglab::fuzz::Outcome outcome =                                                                        \
-            phonglab::fuzz::run(name, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size))); \
-        if (verbose)                                                                                                   \
-            std::fprintf(stderr, "fuzz_%s: %zu bytes: %s\n", name, size,                                               \
-                         outcome.ok ? "ok" : qPrintable(outcome.error));                                               \
-        return 0;                                                                                                      \
+#define PHONGLAB_FUZZ_TARGET(name)                                                                 \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)              \
+    {                                                                                              \
+        static const bool verbose = qEnvironmentVariableIntValue("PHONGLAB_FUZZ_VERBOSE") != 0;    \
+        const phonglab::fuzz::Outcome outcome = phonglab::fuzz::run(                               \
+            name, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size))); \
+        if (verbose)                                                                               \
+            std::fprintf(stderr, "fuzz_%s: %zu bytes: %s\n", name, size,                           \
+                         outcome.ok ? "ok" : qPrintable(outcome.error));                           \
+        return 0;                                                                                  \
     }

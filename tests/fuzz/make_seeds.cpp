@@ -61,7 +61,8 @@ bool writeCacheEntry(const QString &meshFile, const QString &path)
     QFile out(path);
     if (!result.ok() || !out.open(QIODevice::WriteOnly)
         || !phonglab::MeshCache::encode(out, QByteArrayLiteral("fuzz-seed"), result)) {
-        std::fprintf(stderr, "make_seeds: cannot make a cache entry from %s\n", qPrintable(meshFile));
+        std::fprintf(stderr, "make_seeds: cannot make a cache entry from %s\n",
+                     qPrintable(meshFile));
         return false;
     }
     return true;
@@ -84,10 +85,13 @@ int main(int argc, char **argv)
     bool ok = write(tetra, corpus.filePath("om/tetra.om"), O::Default)
         && write(pyramid, corpus.filePath("om/pyramid_normals.om"), O(O::VertexNormal))
         && write(tetra, corpus.filePath("ply/tetra_binary_le.ply"), O(O::Binary | O::LSB))
-        && write(pyramid, corpus.filePath("ply/pyramid_binary_be_normals.ply"), O(O::Binary | O::MSB | O::VertexNormal))
+        && write(pyramid, corpus.filePath("ply/pyramid_binary_be_normals.ply"),
+                 O(O::Binary | O::MSB | O::VertexNormal))
         && write(tetra, corpus.filePath("stl/tetra_binary.stl"), O(O::Binary))
         && write(pyramid, corpus.filePath("off/pyramid_binary.off"), O(O::Binary))
-        && writeCacheEntry(data.filePath("meshes/formats/tetra.obj"), corpus.filePath("meshcache/tetra.phmc"))
-        && writeCacheEntry(data.filePath("meshes/blender/cube_flat.obj"), corpus.filePath("meshcache/cube_flat.phmc"));
+        && writeCacheEntry(data.filePath("meshes/formats/tetra.obj"),
+                           corpus.filePath("meshcache/tetra.phmc"))
+        && writeCacheEntry(data.filePath("meshes/blender/cube_flat.obj"),
+                           corpus.filePath("meshcache/cube_flat.phmc"));
     return ok ? 0 : 1;
 }

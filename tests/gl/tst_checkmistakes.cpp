@@ -43,10 +43,12 @@ private slots:
         Scene scene = m_scene;
         scene.shading = *shadingFromName(method);
         const CheckReference reference = makeTestCheckReference(scene);
-        const Result<StageSources> shipped = readStageFiles(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)),
-                                                            sourcePath(QStringLiteral("shaders/%1.frag").arg(method)));
+        const Result<StageSources> shipped =
+            readStageFiles(sourcePath(QStringLiteral("shaders/%1.vert").arg(method)),
+                           sourcePath(QStringLiteral("shaders/%1.frag").arg(method)));
         QVERIFY2(shipped, qPrintable(shipped.error()));
-        const CheckReport report = checkRender(toRgbImage(render(shipped->vertex, shipped->fragment)), reference);
+        const CheckReport report =
+            checkRender(toRgbImage(render(shipped->vertex, shipped->fragment)), reference);
         QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
         QVERIFY(report.comparison.pixelsCompared > 10000);
     }
@@ -60,12 +62,15 @@ private slots:
         const QStringList keys = shaderMistakeKeys();
         QStringList table{QStringLiteral("| made \\ found | ") + keys.join(QStringLiteral(" | "))
                               + QStringLiteral(" |"),
-                          QStringLiteral("|---") + QStringLiteral("|---").repeated(keys.size()) + QStringLiteral("|")};
+                          QStringLiteral("|---") + QStringLiteral("|---").repeated(keys.size())
+                              + QStringLiteral("|")};
         for (const QString &key : keys) {
             const ShaderMistake mistake = *shaderMistakeFromKey(key);
             const ShaderPair shaders = withMistake(mistake);
-            const CheckReport report = checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), m_reference);
-            QVERIFY2(!report.passed(), qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
+            const CheckReport report =
+                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), m_reference);
+            QVERIFY2(!report.passed(),
+                     qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
             std::map<ShaderMistake, double> row;
             for (const MistakeFinding &f : report.diagnosis.findings) {
                 row[f.key] = f.confidence;
@@ -73,8 +78,8 @@ private slots:
                     row[m] = f.confidence;
             }
             const MistakeFinding &top = report.diagnosis.findings.front();
-            const bool named =
-                top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+            const bool named = top.key == mistake
+                || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
             QVERIFY2(named && top.confidence >= kExplainedConfidence,
                      qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
             if (report.diagnosis.findings.size() > 1)
@@ -83,13 +88,17 @@ private slots:
                                     + shaderMistakeKey(report.diagnosis.findings[1].key)));
             QString line = QStringLiteral("| %1 |").arg(key);
             for (const QString &column : keys) {
-                const double c = row.count(*shaderMistakeFromKey(column)) ? row[*shaderMistakeFromKey(column)] : 0.0;
-                line += c > 0.0 ? QStringLiteral(" %1 |").arg(qRound(100.0 * c)) : QStringLiteral(" · |");
+                const double c = row.count(*shaderMistakeFromKey(column))
+                    ? row[*shaderMistakeFromKey(column)]
+                    : 0.0;
+                line += c > 0.0 ? QStringLiteral(" %1 |").arg(qRound(100.0 * c))
+                                : QStringLiteral(" · |");
             }
             table << line;
         }
-        qInfo("confusion matrix on %s, %dx%d, %% of the difference explained:\n%s", "assets/scenes/check.json",
-              kCheckWidth, kCheckHeight, qPrintable(table.join(QLatin1Char('\n'))));
+        qInfo("confusion matrix on %s, %dx%d, %% of the difference explained:\n%s",
+              "assets/scenes/check.json", kCheckWidth, kCheckHeight,
+              qPrintable(table.join(QLatin1Char('\n'))));
     }
 
 private:

@@ -24,7 +24,8 @@ namespace {
 QString readText(const QString &path)
 {
     QFile file(path);
-    return file.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(file.readAll()) : QString();
+    return file.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(file.readAll())
+                                                            : QString();
 }
 
 } // namespace
@@ -48,14 +49,16 @@ void TestCliBench::quickRunWritesCsvAndChart()
     const QString out = m_dir.filePath(QStringLiteral("quick"));
     QElapsedTimer clock;
     clock.start();
-    const ProcessRun r =
-        runPhonglab({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--out"), out}, 240000);
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--out"), out}, 240000);
     const double seconds = clock.elapsed() / 1000.0;
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    qInfo("phonglab bench --quick took %.1f s here (the aim is under 60 s on two idle cores)", seconds);
+    qInfo("phonglab bench --quick took %.1f s here (the aim is under 60 s on two idle cores)",
+          seconds);
     const QString stdoutText = QString::fromUtf8(r.out);
     QVERIFY2(stdoutText.contains(QStringLiteral("frame ms")), qPrintable(stdoutText.left(400)));
-    QVERIFY2(stdoutText.contains(QStringLiteral("fit to budget")), qPrintable(stdoutText.right(800)));
+    QVERIFY2(stdoutText.contains(QStringLiteral("fit to budget")),
+             qPrintable(stdoutText.right(800)));
 
     // results.csv: the documented header, one well-formed row per configuration.
     const QString csv = readText(out + QStringLiteral("/results.csv"));
@@ -110,14 +113,16 @@ void TestCliBench::quickRunWritesCsvAndChart()
     // --from fits the same rows again against another budget without
     // measuring: an impossible PSNR leaves nothing chosen, and says so.
     const QString refit = m_dir.filePath(QStringLiteral("refit"));
-    const ProcessRun again =
-        runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), out + QStringLiteral("/results.csv"),
-                     QStringLiteral("--budget"), QStringLiteral("psnr:99"), QStringLiteral("--out"), refit});
+    const ProcessRun again = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--from"), out + QStringLiteral("/results.csv"),
+         QStringLiteral("--budget"), QStringLiteral("psnr:99"), QStringLiteral("--out"), refit});
     QVERIFY2(again.exitCode == 0, qPrintable(again.err));
     QVERIFY(!QFile::exists(refit + QStringLiteral("/results.csv")));
     QVERIFY(QFile::exists(refit + QStringLiteral("/chart.png")));
-    QVERIFY2(QString::fromUtf8(again.out).contains(QStringLiteral("nothing meets PSNR")), again.out.constData());
-    const QStringList refitLines = readText(refit + QStringLiteral("/fit.csv")).trimmed().split(QLatin1Char('\n'));
+    QVERIFY2(QString::fromUtf8(again.out).contains(QStringLiteral("nothing meets PSNR")),
+             again.out.constData());
+    const QStringList refitLines =
+        readText(refit + QStringLiteral("/fit.csv")).trimmed().split(QLatin1Char('\n'));
     QCOMPARE(refitLines.size(), 3);
     QCOMPARE(refitLines[1].split(QLatin1Char(',')).value(2), QString()); // no method chosen
 }
@@ -125,17 +130,21 @@ void TestCliBench::quickRunWritesCsvAndChart()
 void TestCliBench::usageErrors_data()
 {
     QTest::addColumn<QStringList>("args");
-    QTest::newRow("frames below 20") << QStringList{QStringLiteral("--frames"), QStringLiteral("5")};
-    QTest::newRow("unknown method") << QStringList{QStringLiteral("--methods"), QStringLiteral("phong,toon")};
-    QTest::newRow("detail above 1") << QStringList{QStringLiteral("--details"), QStringLiteral("1,2")};
+    QTest::newRow("frames below 20")
+        << QStringList{QStringLiteral("--frames"), QStringLiteral("5")};
+    QTest::newRow("unknown method")
+        << QStringList{QStringLiteral("--methods"), QStringLiteral("phong,toon")};
+    QTest::newRow("detail above 1")
+        << QStringList{QStringLiteral("--details"), QStringLiteral("1,2")};
     QTest::newRow("detail zero") << QStringList{QStringLiteral("--details"), QStringLiteral("0")};
     QTest::newRow("lights 9") << QStringList{QStringLiteral("--lights"), QStringLiteral("9")};
     QTest::newRow("bad budget") << QStringList{QStringLiteral("--budget"), QStringLiteral("lots")};
     QTest::newRow("bad size") << QStringList{QStringLiteral("--size"), QStringLiteral("4x4")};
     QTest::newRow("stray argument") << QStringList{QStringLiteral("scene.json")};
     QTest::newRow("unknown option") << QStringList{QStringLiteral("--fast")};
-    QTest::newRow("from with scene") << QStringList{QStringLiteral("--from"), QStringLiteral("r.csv"),
-                                                    QStringLiteral("--scene"), QStringLiteral("s.json")};
+    QTest::newRow("from with scene")
+        << QStringList{QStringLiteral("--from"), QStringLiteral("r.csv"), QStringLiteral("--scene"),
+                       QStringLiteral("s.json")};
 }
 
 void TestCliBench::usageErrors()
@@ -155,15 +164,15 @@ void TestCliBench::badSceneFails()
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write("{\"objects\": [ {\"mesh\": 3} ]}");
     file.close();
-    const ProcessRun r =
-        runPhonglab({QStringLiteral("bench"), QStringLiteral("--scene"), scene, QStringLiteral("--out"), out});
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--scene"), scene, QStringLiteral("--out"), out});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("broken.json")), qPrintable(r.err));
     QVERIFY(!QFile::exists(out + QStringLiteral("/results.csv")));
 
     // A results file that is not one: exit 1 naming it.
-    const ProcessRun bad =
-        runPhonglab({QStringLiteral("bench"), QStringLiteral("--from"), scene, QStringLiteral("--out"), out});
+    const ProcessRun bad = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--from"), scene, QStringLiteral("--out"), out});
     QCOMPARE(bad.exitCode, 1);
     QVERIFY2(bad.err.contains(QStringLiteral("broken.json")), qPrintable(bad.err));
 }

@@ -56,14 +56,16 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::newRow("no scene") << QStringList{};
         QTest::newRow("two scenes") << QStringList{checkScene(), checkScene()};
-        QTest::newRow("bad size") << QStringList{checkScene(), QStringLiteral("--size"), QStringLiteral("0x5")};
-        QTest::newRow("bad tolerance") << QStringList{checkScene(), QStringLiteral("--tolerance"),
-                                                      QStringLiteral("-1")};
+        QTest::newRow("bad size") << QStringList{checkScene(), QStringLiteral("--size"),
+                                                 QStringLiteral("0x5")};
+        QTest::newRow("bad tolerance")
+            << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("-1")};
         QTest::newRow("tolerance not a number")
             << QStringList{checkScene(), QStringLiteral("--tolerance"), QStringLiteral("two")};
-        QTest::newRow("unknown shading") << QStringList{checkScene(), QStringLiteral("--shading"),
-                                                        QStringLiteral("toon")};
-        QTest::newRow("unknown option") << QStringList{checkScene(), QStringLiteral("--frobnicate")};
+        QTest::newRow("unknown shading")
+            << QStringList{checkScene(), QStringLiteral("--shading"), QStringLiteral("toon")};
+        QTest::newRow("unknown option")
+            << QStringList{checkScene(), QStringLiteral("--frobnicate")};
     }
 
     void usageErrors()
@@ -76,12 +78,13 @@ private slots:
 
     void shippedShaderPasses()
     {
-        const ProcessRun r = runPhonglab(
-            {QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize, QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                         QStringLiteral("--json")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err + QString::fromUtf8(r.out)));
         const QJsonObject o = parseJson(r);
-        for (const char *key :
-             {"verdict", "psnr_db", "max_error", "bad_fraction", "worst", "diagnosis", "undetectable", "errors"})
+        for (const char *key : {"verdict", "psnr_db", "max_error", "bad_fraction", "worst",
+                                "diagnosis", "undetectable", "errors"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
         QVERIFY(o.value(QStringLiteral("max_error")).toInt() <= 2);
@@ -90,18 +93,21 @@ private slots:
         QVERIFY(o.value(QStringLiteral("undetectable")).toArray().isEmpty());
         QVERIFY(o.value(QStringLiteral("errors")).toArray().isEmpty());
         // Text: the verdict line first.
-        const ProcessRun text = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize});
+        const ProcessRun text =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize});
         QCOMPARE(text.exitCode, 0);
         QVERIFY(text.out.startsWith("check: pass"));
     }
 
     void wrongShaderIsDiagnosedWithItsLine()
     {
-        const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code, QStringLiteral("r.frag"));
+        const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code,
+                                   QStringLiteral("r.frag"));
         const QString diff = m_dir.filePath(QStringLiteral("diff.png"));
         const ProcessRun r =
             runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
-                         QStringLiteral("--fragment"), frag, QStringLiteral("--json"), QStringLiteral("--diff"), diff});
+                         QStringLiteral("--fragment"), frag, QStringLiteral("--json"),
+                         QStringLiteral("--diff"), diff});
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("fail"));
@@ -109,24 +115,31 @@ private slots:
         QVERIFY(o.value(QStringLiteral("bad_fraction")).toDouble() > 0.0);
         QVERIFY(o.value(QStringLiteral("psnr_db")).toDouble() < 40.0);
         const QJsonObject worst = o.value(QStringLiteral("worst")).toObject();
-        QVERIFY(worst.value(QStringLiteral("x")).toInt() >= 0 && worst.value(QStringLiteral("x")).toInt() < 320);
+        QVERIFY(worst.value(QStringLiteral("x")).toInt() >= 0
+                && worst.value(QStringLiteral("x")).toInt() < 320);
         QVERIFY(worst.value(QStringLiteral("object")).toInt(-1) >= 0);
         const QJsonObject top = o.value(QStringLiteral("diagnosis")).toArray().first().toObject();
         QCOMPARE(top.value(QStringLiteral("key")).toString(), QStringLiteral("reflect-incident"));
-        QCOMPARE(top.value(QStringLiteral("also")).toArray(), QJsonArray{QStringLiteral("view-vector")});
+        QCOMPARE(top.value(QStringLiteral("also")).toArray(),
+                 QJsonArray{QStringLiteral("view-vector")});
         QVERIFY(top.value(QStringLiteral("confidence")).toDouble() >= 0.5);
-        QVERIFY(top.value(QStringLiteral("message")).toString().contains(QStringLiteral("reflect(-L, N)")));
+        QVERIFY(top.value(QStringLiteral("message"))
+                    .toString()
+                    .contains(QStringLiteral("reflect(-L, N)")));
         // Both candidate lines: the reflect() and the definition of V.
         const QStringList source =
-            QString::fromUtf8(withMistake(ShaderMistake::ReflectIncident).fragment.code).split(QLatin1Char('\n'));
+            QString::fromUtf8(withMistake(ShaderMistake::ReflectIncident).fragment.code)
+                .split(QLatin1Char('\n'));
         QStringList named;
         for (const QJsonValue &v : top.value(QStringLiteral("lines")).toArray()) {
             const QJsonObject line = v.toObject();
             QCOMPARE(line.value(QStringLiteral("file")).toString(), frag);
             named << source.value(line.value(QStringLiteral("line")).toInt() - 1).trimmed();
         }
-        QVERIFY2(named.filter(QStringLiteral("reflect(L, N)")).size() == 1, qPrintable(named.join(QLatin1Char('|'))));
-        QVERIFY2(named.filter(QStringLiteral("vec3 V =")).size() == 1, qPrintable(named.join(QLatin1Char('|'))));
+        QVERIFY2(named.filter(QStringLiteral("reflect(L, N)")).size() == 1,
+                 qPrintable(named.join(QLatin1Char('|'))));
+        QVERIFY2(named.filter(QStringLiteral("vec3 V =")).size() == 1,
+                 qPrintable(named.join(QLatin1Char('|'))));
         const QImage heatmap(diff);
         QCOMPARE(heatmap.size(), QSize(320, 240));
     }
@@ -136,19 +149,22 @@ private slots:
         QByteArray code = shippedPhong().fragment.code;
         QVERIFY(code.contains("fragColor = vec4(I, 1.0);"));
         code.replace("fragColor = vec4(I, 1.0);", "fragColor = vec4(I.bgr, 1.0);");
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
-                                          QStringLiteral("--fragment"), write(code, QStringLiteral("bgr.frag")),
-                                          QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                         QStringLiteral("--fragment"), write(code, QStringLiteral("bgr.frag")),
+                         QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
-        const QJsonObject top = parseJson(r).value(QStringLiteral("diagnosis")).toArray().first().toObject();
+        const QJsonObject top =
+            parseJson(r).value(QStringLiteral("diagnosis")).toArray().first().toObject();
         QCOMPARE(top.value(QStringLiteral("key")).toString(), QStringLiteral("unknown"));
     }
 
     void compileErrorIsAnError()
     {
         const QString frag = testDataPath(QStringLiteral("shaders/error_line17.frag"));
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
-                                          QStringLiteral("--fragment"), frag, QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"), kSize,
+                         QStringLiteral("--fragment"), frag, QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
         const QJsonObject o = parseJson(r);
@@ -164,9 +180,9 @@ private slots:
     {
         // The shipped sphere scene scales nothing: N moved by the model-view
         // matrix is still perpendicular, so that mistake cannot show there.
-        const ProcessRun r =
-            runPhonglab({QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/sphere.json")),
-                         QStringLiteral("--size"), kSize, QStringLiteral("--json")});
+        const ProcessRun r = runPhonglab(
+            {QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/sphere.json")),
+             QStringLiteral("--size"), kSize, QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 0);
         const QJsonArray hidden = parseJson(r).value(QStringLiteral("undetectable")).toArray();
         QVERIFY2(hidden.contains(QStringLiteral("normal-matrix")), r.out.constData());
@@ -176,8 +192,9 @@ private slots:
     {
         // At 4x3 every covered pixel lies in the silhouette band: no
         // verdict, so no grader fails (or passes) a shader on it.
-        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"),
-                                          QStringLiteral("4x3"), QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), checkScene(), QStringLiteral("--size"),
+                         QStringLiteral("4x3"), QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
@@ -192,8 +209,9 @@ private slots:
 
     void badSceneIsAnError()
     {
-        const ProcessRun r = runPhonglab(
-            {QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--json")});
+        const ProcessRun r =
+            runPhonglab({QStringLiteral("check"), m_dir.filePath(QStringLiteral("missing.json")),
+                         QStringLiteral("--json")});
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = parseJson(r);
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));

@@ -42,9 +42,9 @@ void TestCliRender::helpListsSubcommands()
 void TestCliRender::rendersPng()
 {
     const QString out = m_dir.filePath(QStringLiteral("sphere.png"));
-    const ProcessRun r =
-        runPhonglab({QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
-                     QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("160x120")});
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
+         QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("160x120")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QImage image(out);
     QCOMPARE(image.size(), QSize(160, 120));
@@ -65,9 +65,9 @@ void TestCliRender::rendersPng()
 void TestCliRender::rendersDefaultScene()
 {
     const QString out = m_dir.filePath(QStringLiteral("default.png"));
-    const ProcessRun r =
-        runPhonglab({QStringLiteral("render"), sourcePath(QStringLiteral("assets/scenes/default.json")),
-                     QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("render"), sourcePath(QStringLiteral("assets/scenes/default.json")),
+         QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY(QFile::exists(out));
 }
@@ -76,21 +76,24 @@ void TestCliRender::usageErrors_data()
 {
     QTest::addColumn<QStringList>("args");
     const QString scene = testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"));
-    QTest::newRow("no scene") << QStringList{QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.png")};
+    QTest::newRow("no scene") << QStringList{QStringLiteral("render"), QStringLiteral("-o"),
+                                             QStringLiteral("x.png")};
     QTest::newRow("no output") << QStringList{QStringLiteral("render"), scene};
-    QTest::newRow("two scenes") << QStringList{QStringLiteral("render"), scene, scene, QStringLiteral("-o"),
-                                               QStringLiteral("x.png")};
+    QTest::newRow("two scenes") << QStringList{QStringLiteral("render"), scene, scene,
+                                               QStringLiteral("-o"), QStringLiteral("x.png")};
     QTest::newRow("bad size") << QStringList{QStringLiteral("render"), scene,
                                              QStringLiteral("-o"),     QStringLiteral("x.png"),
                                              QStringLiteral("--size"), QStringLiteral("12by4")};
     QTest::newRow("zero size") << QStringList{QStringLiteral("render"), scene,
                                               QStringLiteral("-o"),     QStringLiteral("x.png"),
                                               QStringLiteral("--size"), QStringLiteral("0x10")};
-    QTest::newRow("huge size") << QStringList{QStringLiteral("render"), scene,
-                                              QStringLiteral("-o"),     QStringLiteral("x.png"),
-                                              QStringLiteral("--size"), QStringLiteral("100000x10")};
-    QTest::newRow("unknown option") << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"),
-                                                   QStringLiteral("x.png"), QStringLiteral("--frobnicate")};
+    QTest::newRow("huge size") << QStringList{
+        QStringLiteral("render"), scene,
+        QStringLiteral("-o"),     QStringLiteral("x.png"),
+        QStringLiteral("--size"), QStringLiteral("100000x10")};
+    QTest::newRow("unknown option")
+        << QStringList{QStringLiteral("render"), scene, QStringLiteral("-o"),
+                       QStringLiteral("x.png"), QStringLiteral("--frobnicate")};
     QTest::newRow("unknown top-level option") << QStringList{QStringLiteral("--frobnicate")};
 }
 
@@ -108,16 +111,18 @@ void TestCliRender::badInputFails_data()
     QTest::addColumn<QString>("scene");
     QTest::addColumn<QStringList>("extra");
     QTest::addColumn<QString>("expected"); // part of the error message
-    QTest::newRow("missing scene file") << m_dir.filePath(QStringLiteral("nope.json")) << QStringList() << "nope.json";
-    QTest::newRow("unknown builtin mesh")
-        << testDataPath(QStringLiteral("scenes/gl_bad_mesh.json")) << QStringList() << "builtin:cylinder";
-    QTest::newRow("missing shader file") << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
-                                         << QStringList{QStringLiteral("--fragment"),
-                                                        m_dir.filePath(QStringLiteral("missing.frag"))}
-                                         << "missing.frag";
-    QTest::newRow("unwritable output") << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
-                                       << QStringList{QStringLiteral("-o"), QStringLiteral("/nonexistent-dir/out.png")}
-                                       << "/nonexistent-dir/out.png";
+    QTest::newRow("missing scene file")
+        << m_dir.filePath(QStringLiteral("nope.json")) << QStringList() << "nope.json";
+    QTest::newRow("unknown builtin mesh") << testDataPath(QStringLiteral("scenes/gl_bad_mesh.json"))
+                                          << QStringList() << "builtin:cylinder";
+    QTest::newRow("missing shader file")
+        << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
+        << QStringList{QStringLiteral("--fragment"), m_dir.filePath(QStringLiteral("missing.frag"))}
+        << "missing.frag";
+    QTest::newRow("unwritable output")
+        << testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json"))
+        << QStringList{QStringLiteral("-o"), QStringLiteral("/nonexistent-dir/out.png")}
+        << "/nonexistent-dir/out.png";
 }
 
 void TestCliRender::badInputFails()
@@ -141,9 +146,9 @@ void TestCliRender::compileErrorPointsAtUserLine()
 {
     const QString out = m_dir.filePath(QStringLiteral("broken.png"));
     const QString frag = testDataPath(QStringLiteral("shaders/error_line17.frag"));
-    const ProcessRun r =
-        runPhonglab({QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
-                     QStringLiteral("-o"), out, QStringLiteral("--fragment"), frag});
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("render"), testDataPath(QStringLiteral("scenes/gl_sphere_one_light.json")),
+         QStringLiteral("-o"), out, QStringLiteral("--fragment"), frag});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(frag + QStringLiteral(":17:9: error: ")), qPrintable(r.err));
     QVERIFY(!QFile::exists(out));
@@ -173,11 +178,11 @@ void TestCliRender::sceneShadersAreUsed()
                           QStringLiteral("--size"), QStringLiteral("64x64")})
                  .exitCode,
              0);
-    QCOMPARE(
-        runPhonglab({QStringLiteral("render"), scene.fileName(), QStringLiteral("-o"), method, QStringLiteral("--size"),
-                     QStringLiteral("64x64"), QStringLiteral("--shading"), QStringLiteral("phong")})
-            .exitCode,
-        0);
+    QCOMPARE(runPhonglab({QStringLiteral("render"), scene.fileName(), QStringLiteral("-o"), method,
+                          QStringLiteral("--size"), QStringLiteral("64x64"),
+                          QStringLiteral("--shading"), QStringLiteral("phong")})
+                 .exitCode,
+             0);
     const QColor a = QImage(own).pixelColor(32, 32), b = QImage(method).pixelColor(32, 32);
     QVERIFY2(b.red() > b.blue(), "the shipped Phong shader shows the red material");
     QCOMPARE(a.red(), b.blue()); // the scene's shader swapped the channels

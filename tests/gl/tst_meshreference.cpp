@@ -39,7 +39,8 @@ MeshPtr withFaceNormals(const MeshData &mesh)
 {
     auto flat = std::make_shared<MeshData>();
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]],
+        const glm::vec3 a = mesh.positions[mesh.indices[i]],
+                        b = mesh.positions[mesh.indices[i + 1]],
                         c = mesh.positions[mesh.indices[i + 2]];
         const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
         for (const glm::vec3 &p : {a, b, c}) {
@@ -126,8 +127,8 @@ RenderCheck checkMeshScene(const Scene &scene, const Variant &variant)
         reference->color[i] = reference->specular[i] = glm::dvec3(0.0);
         reference->depth[i] = std::numeric_limits<double>::infinity();
     }
-    qInfo("%d subpixel bits: %lld covered pixels within 1/%g px of an occluding edge", subpixelBits, ambiguousCount,
-          1.0 / step);
+    qInfo("%d subpixel bits: %lld covered pixels within 1/%g px of an occluding edge", subpixelBits,
+          ambiguousCount, 1.0 / step);
     check.referenceData = std::move(*reference);
     check.reference = check.referenceData.toImage(scene.background);
     check.comparison = compareWithReference(check.gpu, check.referenceData, kSilhouetteBandPx);
@@ -144,8 +145,8 @@ private slots:
     void initTestCase()
     {
         QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-        qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band", kMinPsnrDb,
-              kMaxErrorSteps, kSilhouetteBandPx);
+        qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band",
+              kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx);
     }
 
     void gpuMatchesMeshReference_data()
@@ -172,13 +173,15 @@ private slots:
         qInfo("tree + cloud, %-12s %dx%d: %s", qPrintable(shadingName(scene.shading)), side, side,
               qPrintable(check.comparison.summary()));
         // A render that compared almost nothing proves nothing.
-        QVERIFY2(check.comparison.pixelsCompared > side * side / 25, qPrintable(check.comparison.summary()));
+        QVERIFY2(check.comparison.pixelsCompared > side * side / 25,
+                 qPrintable(check.comparison.summary()));
         if (!check.matches())
-            QFAIL(qPrintable(
-                QStringLiteral("%1 (images in %2)")
-                    .arg(check.comparison.summary(),
-                         saveArtifacts(QStringLiteral("mesh-reference-%1-%2").arg(shadingName(scene.shading)).arg(side),
-                                       check, scene))));
+            QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
+                                 .arg(check.comparison.summary(),
+                                      saveArtifacts(QStringLiteral("mesh-reference-%1-%2")
+                                                        .arg(shadingName(scene.shading))
+                                                        .arg(side),
+                                                    check, scene))));
     }
 
     void wrongVariantsFail_data()
@@ -205,7 +208,9 @@ private slots:
         QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
         qInfo("WRONG %-28s %s", QTest::currentDataTag(), qPrintable(check.comparison.summary()));
         QVERIFY2(check.comparison.pixelsCompared > 0, "nothing compared");
-        QVERIFY2(!check.matches(), qPrintable(QStringLiteral("a wrong variant passed: ") + check.comparison.summary()));
+        QVERIFY2(
+            !check.matches(),
+            qPrintable(QStringLiteral("a wrong variant passed: ") + check.comparison.summary()));
     }
 };
 

@@ -36,13 +36,16 @@ QHash<QString, QString> TestMeshRender::cubeStandIn(const Scene &scene)
 void TestMeshRender::flatBlenderCubeMatchesAnalyticBox()
 {
     const Scene scene = loadTestScene(QStringLiteral("gl_blender_cube_flat"));
-    const RenderCheck check = checkAgainstReference(scene, std::nullopt, std::nullopt, cubeStandIn(scene));
+    const RenderCheck check =
+        checkAgainstReference(scene, std::nullopt, std::nullopt, cubeStandIn(scene));
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
     qInfo("Blender flat cube vs analytic box: %s", qPrintable(check.comparison.summary()));
     QVERIFY(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10);
     if (!check.matches())
-        QFAIL(qPrintable(check.comparison.summary() + QStringLiteral(" (images in ")
-                         + saveArtifacts(QStringLiteral("blender-cube"), check, scene, cubeStandIn(scene)) + ')'));
+        QFAIL(qPrintable(
+            check.comparison.summary() + QStringLiteral(" (images in ")
+            + saveArtifacts(QStringLiteral("blender-cube"), check, scene, cubeStandIn(scene))
+            + ')'));
 }
 
 void TestMeshRender::smearedNormalsFailTheSameComparison_data()
@@ -59,7 +62,8 @@ void TestMeshRender::smearedNormalsFailTheSameComparison()
     QFETCH(QString, method);
     Scene scene = loadTestScene(QStringLiteral("gl_blender_cube_flat"));
     scene.objects.front().normals.method = *normalMethodFromName(method);
-    const RenderCheck check = checkAgainstReference(scene, std::nullopt, std::nullopt, cubeStandIn(scene));
+    const RenderCheck check =
+        checkAgainstReference(scene, std::nullopt, std::nullopt, cubeStandIn(scene));
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
     qInfo("cube with %s normals: %s", qPrintable(method), qPrintable(check.comparison.summary()));
     QVERIFY2(!check.matches(), qPrintable(check.comparison.summary()));

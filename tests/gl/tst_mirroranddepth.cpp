@@ -31,7 +31,8 @@ private:
         Compared,
         LeftOut
     };
-    static void verifyMatches(const QString &name, const Scene &scene, Contours contours = Contours::Compared);
+    static void verifyMatches(const QString &name, const Scene &scene,
+                              Contours contours = Contours::Compared);
 };
 
 void TestMirrorAndDepth::initTestCase()
@@ -52,14 +53,16 @@ void TestMirrorAndDepth::verifyMatches(const QString &name, const Scene &scene, 
             dilatePixels(occludingContourPixels(ref), ref.width, ref.height, kSilhouetteBandPx);
         for (std::uint8_t &c : compared)
             c = !c;
-        check.comparison = compareOutsideBand(check.gpu, ref, scene.background, kSilhouetteBandPx, &compared).error;
+        check.comparison =
+            compareOutsideBand(check.gpu, ref, scene.background, kSilhouetteBandPx, &compared)
+                .error;
     }
     qInfo("%-34s %s", qPrintable(name), qPrintable(check.comparison.summary()));
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(
-            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
+        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
+                             .arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
 }
 
 void TestMirrorAndDepth::mirroredObjectMatchesReference_data()
@@ -72,7 +75,8 @@ void TestMirrorAndDepth::mirroredObjectMatchesReference_data()
     QTest::newRow("torus, z mirrored") << "gl_torus" << glm::dvec3(1.0, 1.0, -1.0);
     QTest::newRow("torus, x and y mirrored") << "gl_torus" << glm::dvec3(-1.0, -1.3, 1.0);
     QTest::newRow("torus, all three mirrored") << "gl_torus" << glm::dvec3(-1.0, -1.0, -1.0);
-    QTest::newRow("ellipsoid, y mirrored") << "gl_ellipsoid_nonuniform" << glm::dvec3(1.2, -0.7, 0.9);
+    QTest::newRow("ellipsoid, y mirrored")
+        << "gl_ellipsoid_nonuniform" << glm::dvec3(1.2, -0.7, 0.9);
     QTest::newRow("box, x mirrored") << "gl_cube" << glm::dvec3(-1.0, 0.8, 1.2);
 }
 
@@ -84,7 +88,9 @@ void TestMirrorAndDepth::mirroredObjectMatchesReference()
     QVERIFY(!s.objects.empty());
     for (SceneObject &object : s.objects)
         object.transform.scale = scale;
-    verifyMatches(QStringLiteral("%1, scale (%2, %3, %4)").arg(scene).arg(scale.x).arg(scale.y).arg(scale.z), s);
+    verifyMatches(
+        QStringLiteral("%1, scale (%2, %3, %4)").arg(scene).arg(scale.x).arg(scale.y).arg(scale.z),
+        s);
 }
 
 void TestMirrorAndDepth::extremeDepthRangeMatchesReference_data()
@@ -113,7 +119,8 @@ void TestMirrorAndDepth::extremeDepthRangeMatchesReference()
     s.objects.push_back(sphere);
     s.camera.nearPlane = nearPlane;
     s.camera.farPlane = farPlane;
-    verifyMatches(QStringLiteral("near %1, far %2").arg(nearPlane).arg(farPlane), s, Contours::LeftOut);
+    verifyMatches(QStringLiteral("near %1, far %2").arg(nearPlane).arg(farPlane), s,
+                  Contours::LeftOut);
 }
 
 QTEST_MAIN(TestMirrorAndDepth)

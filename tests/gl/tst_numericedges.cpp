@@ -45,12 +45,14 @@ struct EdgeCase {
     Expect expect = Expect::Reference;
 };
 
-constexpr ShadingMethod kMethods[] = {ShadingMethod::Phong, ShadingMethod::BlinnPhong, ShadingMethod::Gouraud,
-                                      ShadingMethod::Flat, ShadingMethod::Normals};
+constexpr ShadingMethod kMethods[] = {ShadingMethod::Phong, ShadingMethod::BlinnPhong,
+                                      ShadingMethod::Gouraud, ShadingMethod::Flat,
+                                      ShadingMethod::Normals};
 
 bool exactMethod(ShadingMethod m)
 {
-    return m == ShadingMethod::Phong || m == ShadingMethod::BlinnPhong || m == ShadingMethod::Normals;
+    return m == ShadingMethod::Phong || m == ShadingMethod::BlinnPhong
+        || m == ShadingMethod::Normals;
 }
 
 // Camera, lights and objects all scaled by s about the origin: the same
@@ -72,8 +74,10 @@ void scaleWorld(Scene &s, double factor)
 const std::vector<EdgeCase> &edgeCases()
 {
     static const std::vector<EdgeCase> cases = {
-        {"shininess 1e-3", [](Scene &s) { s.objects[0].material.shininess = 1e-3; }, Expect::ReferenceOffSteps},
-        {"shininess 1", [](Scene &s) { s.objects[0].material.shininess = 1.0; }, Expect::ReferenceOffSteps},
+        {"shininess 1e-3", [](Scene &s) { s.objects[0].material.shininess = 1e-3; },
+         Expect::ReferenceOffSteps},
+        {"shininess 1", [](Scene &s) { s.objects[0].material.shininess = 1.0; },
+         Expect::ReferenceOffSteps},
         {"shininess 1e4", [](Scene &s) { s.objects[0].material.shininess = 1e4; }},
         {"light on the surface",
          [](Scene &s) {
@@ -164,7 +168,8 @@ private slots:
     void wrongShaderNaNIsSeen();
 
 private:
-    void record(const QString &edgeCase, const QString &method, qint64 nonFinite, const QString &result);
+    void record(const QString &edgeCase, const QString &method, qint64 nonFinite,
+                const QString &result);
     std::vector<SweepRow> m_rows;
     QTemporaryDir m_dir;
 };
@@ -175,9 +180,11 @@ void TestNumericEdges::initTestCase()
     QVERIFY(m_dir.isValid());
 }
 
-void TestNumericEdges::record(const QString &edgeCase, const QString &method, qint64 nonFinite, const QString &result)
+void TestNumericEdges::record(const QString &edgeCase, const QString &method, qint64 nonFinite,
+                              const QString &result)
 {
-    qInfo("%-46s %-12s non-finite %lld  %s", qPrintable(edgeCase), qPrintable(method), nonFinite, qPrintable(result));
+    qInfo("%-46s %-12s non-finite %lld  %s", qPrintable(edgeCase), qPrintable(method), nonFinite,
+          qPrintable(result));
     m_rows.push_back({edgeCase, method, nonFinite, result});
 }
 
@@ -221,8 +228,9 @@ void TestNumericEdges::sweep()
     const QString name = QString::fromLatin1(edge.name);
     if (edge.expect == Expect::ReferenceOffSteps) {
         const std::vector<std::uint8_t> keep = offSteps(check.referenceData);
-        check.comparison =
-            compareOutsideBand(check.gpu, check.referenceData, scene.background, kSilhouetteBandPx, &keep).error;
+        check.comparison = compareOutsideBand(check.gpu, check.referenceData, scene.background,
+                                              kSilhouetteBandPx, &keep)
+                               .error;
     }
     if (edge.expect == Expect::Finite) {
         record(name, shadingName(scene.shading), check.nonFinitePixels,
@@ -237,12 +245,14 @@ void TestNumericEdges::sweep()
         // The back faces of a closed surface are culled, so from inside it
         // nothing of it is drawn: the view shows what lies beyond.
         RgbImage background(check.gpu.width, check.gpu.height);
-        background.fill(uchar(encodeChannel(scene.background.r)), uchar(encodeChannel(scene.background.g)),
+        background.fill(uchar(encodeChannel(scene.background.r)),
+                        uchar(encodeChannel(scene.background.g)),
                         uchar(encodeChannel(scene.background.b)));
         const int differing = compareImages(check.gpu, background).maxError;
         record(name, methodName, check.nonFinitePixels,
-               differing <= 1 ? QStringLiteral("background only (closed surface seen from inside is culled)")
-                              : QStringLiteral("drawn: max %1/255 from the background").arg(differing));
+               differing <= 1
+                   ? QStringLiteral("background only (closed surface seen from inside is culled)")
+                   : QStringLiteral("drawn: max %1/255 from the background").arg(differing));
         QCOMPARE(check.nonFinitePixels, 0);
         QVERIFY(differing <= 1);
         return;
@@ -251,16 +261,20 @@ void TestNumericEdges::sweep()
     const bool within = check.matches();
     record(name, methodName, check.nonFinitePixels,
            QStringLiteral("%1%2: %3")
-               .arg(exact ? (within ? QStringLiteral("within bounds") : QStringLiteral("OUT OF BOUNDS"))
+               .arg(exact ? (within ? QStringLiteral("within bounds")
+                                    : QStringLiteral("OUT OF BOUNDS"))
                           : QStringLiteral("approximation"),
-                    edge.expect == Expect::ReferenceOffSteps ? QStringLiteral(" off the specular steps") : QString(),
+                    edge.expect == Expect::ReferenceOffSteps
+                        ? QStringLiteral(" off the specular steps")
+                        : QString(),
                     check.comparison.summary()));
     QCOMPARE(check.nonFinitePixels, 0);
     QVERIFY2(check.comparison.pixelsCompared > 0, "the case drew nothing to compare");
     if (exact && !within)
         QFAIL(qPrintable(
             QStringLiteral("%1 (images in %2)")
-                .arg(check.comparison.summary(), saveArtifacts(name + QLatin1Char('-') + methodName, check, scene))));
+                .arg(check.comparison.summary(),
+                     saveArtifacts(name + QLatin1Char('-') + methodName, check, scene))));
 }
 
 void TestNumericEdges::brokenNormalsInAFile_data()
@@ -300,9 +314,10 @@ void TestNumericEdges::brokenNormalsInAFile()
     options.standIns.insert(path, QStringLiteral("builtin:sphere"));
     const RenderCheck check = checkAgainstReference(scene, options);
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
-    record(QStringLiteral("zero, NaN and infinite normals and a zero-area face in a file"), shadingName(scene.shading),
-           check.nonFinitePixels,
-           QStringLiteral("loads with %1 warning(s); replaced normals computed").arg(loaded.warnings.size()));
+    record(QStringLiteral("zero, NaN and infinite normals and a zero-area face in a file"),
+           shadingName(scene.shading), check.nonFinitePixels,
+           QStringLiteral("loads with %1 warning(s); replaced normals computed")
+               .arg(loaded.warnings.size()));
     QCOMPARE(check.nonFinitePixels, 0);
 }
 
@@ -316,21 +331,24 @@ void TestNumericEdges::refusedAtLoad_data()
         R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 45, "near": 0.1, "far": 100)";
     const QByteArray material = R"("shininess": 32)";
     const QByteArray attenuation = "[1, 0, 0]";
-    QTest::newRow("eye on the target") << QByteArray(R"("eye": [1, 2, 3], "target": [1, 2, 3])") << material
-                                       << attenuation << "camera.target: must differ from eye";
-    QTest::newRow("up parallel to the view") << QByteArray(R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 0, 2])")
-                                             << material << attenuation << "camera.up: must not be parallel";
+    QTest::newRow("eye on the target")
+        << QByteArray(R"("eye": [1, 2, 3], "target": [1, 2, 3])") << material << attenuation
+        << "camera.target: must differ from eye";
+    QTest::newRow("up parallel to the view")
+        << QByteArray(R"("eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 0, 2])") << material
+        << attenuation << "camera.up: must not be parallel";
     QTest::newRow("fov 0") << QByteArray(R"("fov_deg": 0)") << material << attenuation
                            << "camera.fov_deg: must be in (0, 180)";
     QTest::newRow("fov 180") << QByteArray(R"("fov_deg": 180)") << material << attenuation
                              << "camera.fov_deg: must be in (0, 180)";
-    QTest::newRow("near 0") << QByteArray(R"("near": 0)") << material << attenuation << "camera.near: must be > 0";
+    QTest::newRow("near 0") << QByteArray(R"("near": 0)") << material << attenuation
+                            << "camera.near: must be > 0";
     QTest::newRow("far at near") << QByteArray(R"("near": 1, "far": 1)") << material << attenuation
                                  << "camera.far: must be greater";
     QTest::newRow("shininess 0") << camera << QByteArray(R"("shininess": 0)") << attenuation
                                  << "material.shininess: must be > 0";
-    QTest::newRow("attenuation all zero")
-        << camera << material << QByteArray("[0, 0, 0]") << "lights[0].attenuation: c1 + c2 + c3 must be positive";
+    QTest::newRow("attenuation all zero") << camera << material << QByteArray("[0, 0, 0]")
+                                          << "lights[0].attenuation: c1 + c2 + c3 must be positive";
     QTest::newRow("near 1e400") << QByteArray(R"("near": 1e400)") << material << attenuation
                                 << "camera.near: must be a finite number";
 }
@@ -341,7 +359,8 @@ void TestNumericEdges::refusedAtLoad()
     QFETCH(QByteArray, material);
     QFETCH(QByteArray, attenuation);
     QFETCH(QString, expected);
-    const QByteArray json = R"({"mesh": "builtin:sphere", "camera": {)" + camera + R"(}, "material": {)" + material
+    const QByteArray json = R"({"mesh": "builtin:sphere", "camera": {)" + camera
+        + R"(}, "material": {)" + material
         + R"(}, "lights": [{"position": [3, 3, 4], "attenuation": )" + attenuation + "}]}";
     const SceneLoadResult loaded = parseScene(json);
     QVERIFY(!loaded.ok());

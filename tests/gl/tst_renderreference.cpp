@@ -29,8 +29,8 @@ private:
 void TestRenderReference::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
-    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px", kMinPsnrDb,
-          kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
+    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px",
+          kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
 }
 
 void TestRenderReference::report(const QString &name, const RenderCheck &check)
@@ -59,8 +59,8 @@ void TestRenderReference::matchesReference()
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(
-            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(scene, check, s))));
+        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
+                             .arg(check.comparison.summary(), saveArtifacts(scene, check, s))));
 }
 
 void TestRenderReference::wrongVariantsFail_data()
@@ -68,9 +68,10 @@ void TestRenderReference::wrongVariantsFail_data()
     QTest::addColumn<QString>("scene");
     QTest::addColumn<QString>("vertex");   // empty: the shipped one
     QTest::addColumn<QString>("fragment"); // empty: the shipped one
-    QTest::newRow("normals by model-view (non-uniform scale)") << "gl_ellipsoid_nonuniform"
-                                                               << "shaders/wrong_normal_modelview.vert"
-                                                               << "";
+    QTest::newRow("normals by model-view (non-uniform scale)")
+        << "gl_ellipsoid_nonuniform"
+        << "shaders/wrong_normal_modelview.vert"
+        << "";
     QTest::newRow("direction with w = 1") << "gl_sphere_one_light"
                                           << ""
                                           << "shaders/wrong_direction_w1.frag";
@@ -95,9 +96,11 @@ void TestRenderReference::wrongVariantsFail()
         fs = testShader(fragment);
     const RenderCheck check = checkAgainstReference(s, vs, fs);
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
-    report(QStringLiteral("WRONG ") + (vertex.isEmpty() ? fragment : vertex).section('/', -1), check);
+    report(QStringLiteral("WRONG ") + (vertex.isEmpty() ? fragment : vertex).section('/', -1),
+           check);
     QVERIFY2(check.comparison.pixelsCompared > 0, "nothing compared");
-    QVERIFY2(!check.matches(), qPrintable(QStringLiteral("a wrong shader passed: ") + check.comparison.summary()));
+    QVERIFY2(!check.matches(),
+             qPrintable(QStringLiteral("a wrong shader passed: ") + check.comparison.summary()));
 }
 
 void TestRenderReference::lightStaysInWorldWhileCameraOrbits()
@@ -120,8 +123,8 @@ void TestRenderReference::lightStaysInWorldWhileCameraOrbits()
 
         // The same view with lights kept in world coordinates as if they were
         // camera coordinates (a light that follows the camera) must not match.
-        const RenderCheck wrong =
-            checkAgainstReference(s, std::nullopt, testShader(QStringLiteral("shaders/wrong_light_not_viewed.frag")));
+        const RenderCheck wrong = checkAgainstReference(
+            s, std::nullopt, testShader(QStringLiteral("shaders/wrong_light_not_viewed.frag")));
         QVERIFY2(!wrong.matches(), qPrintable(wrong.comparison.summary()));
     }
 }

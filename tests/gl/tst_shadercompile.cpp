@@ -56,8 +56,8 @@ void TestShaderCompile::cleanupTestCase()
 
 void TestShaderCompile::shippedShadersCompileCleanly()
 {
-    const BuildReport r =
-        m_program.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag")));
+    const BuildReport r = m_program.build(shippedShader(QStringLiteral("phong.vert")),
+                                          shippedShader(QStringLiteral("phong.frag")));
     QVERIFY2(r.ok, qPrintable(r.errorSummary()));
     QVERIFY2(r.diagnostics.empty(), qPrintable(r.errorSummary()));
 }
@@ -67,8 +67,8 @@ void TestShaderCompile::fragmentErrorOnUserLine_data()
     QTest::addColumn<QStringList>("defines");
     QTest::newRow("as written") << QStringList();
     // An injected prologue shifts the driver's numbering; #line maps it back.
-    QTest::newRow("with injected prologue")
-        << QStringList{QStringLiteral("PHONGLAB 1"), QStringLiteral("EXTRA 2"), QStringLiteral("MORE 3")};
+    QTest::newRow("with injected prologue") << QStringList{
+        QStringLiteral("PHONGLAB 1"), QStringLiteral("EXTRA 2"), QStringLiteral("MORE 3")};
 }
 
 void TestShaderCompile::fragmentErrorOnUserLine()
@@ -122,12 +122,15 @@ void TestShaderCompile::warningsAreNotErrors()
 
 void TestShaderCompile::failedBuildKeepsPreviousProgram()
 {
-    QVERIFY(
-        m_program.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag"))).ok);
+    QVERIFY(m_program
+                .build(shippedShader(QStringLiteral("phong.vert")),
+                       shippedShader(QStringLiteral("phong.frag")))
+                .ok);
     const GLuint good = m_program.id();
     QVERIFY(good != 0);
-    const BuildReport bad = m_program.build(shippedShader(QStringLiteral("phong.vert")),
-                                            testShader(QStringLiteral("shaders/error_line17.frag")));
+    const BuildReport bad =
+        m_program.build(shippedShader(QStringLiteral("phong.vert")),
+                        testShader(QStringLiteral("shaders/error_line17.frag")));
     QVERIFY(!bad.ok);
     QCOMPARE(m_program.id(), good);
     QVERIFY(m_program.isValid());

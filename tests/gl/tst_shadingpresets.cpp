@@ -52,7 +52,8 @@ constexpr int kFlatSphereMinMaxSteps = 10;
 QSet<QByteArray> activeUniformNames(GLuint program)
 {
     QSet<QByteArray> names;
-    for (const ActiveUniformInfo &u : activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), program))
+    for (const ActiveUniformInfo &u :
+         activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), program))
         names.insert(u.name);
     return names;
 }
@@ -87,7 +88,8 @@ QString joined(const QSet<QByteArray> &set)
 // A shipped shader with one line changed: the mistake under test, made in
 // the very file that ships. nullopt when `from` is not in it (the shipped
 // file changed and the test must follow).
-std::optional<ShaderSource> mutatedShader(const QString &fileName, const QByteArray &from, const QByteArray &to)
+std::optional<ShaderSource> mutatedShader(const QString &fileName, const QByteArray &from,
+                                          const QByteArray &to)
 {
     ShaderSource source = shippedShader(fileName);
     if (source.code.count(from) != 1)
@@ -139,8 +141,8 @@ void TestShadingPresets::initTestCase()
 {
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
     QVERIFY(m_dir.isValid());
-    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px", kMinPsnrDb,
-          kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
+    qInfo("bounds: PSNR >= %.1f dB, max error <= %d/255, outside a %d px silhouette band, %dx%d px",
+          kMinPsnrDb, kMaxErrorSteps, kSilhouetteBandPx, kTestImageSide, kTestImageSide);
 }
 
 void TestShadingPresets::report(const QString &name, const RenderCheck &check)
@@ -148,7 +150,8 @@ void TestShadingPresets::report(const QString &name, const RenderCheck &check)
     qInfo("%-44s %s", qPrintable(name), qPrintable(check.comparison.summary()));
 }
 
-void TestShadingPresets::verifyMatches(const QString &name, const RenderCheck &check, const Scene &scene)
+void TestShadingPresets::verifyMatches(const QString &name, const RenderCheck &check,
+                                       const Scene &scene)
 {
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
     report(name, check);
@@ -156,8 +159,8 @@ void TestShadingPresets::verifyMatches(const QString &name, const RenderCheck &c
     QVERIFY2(check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 10,
              qPrintable(check.comparison.summary()));
     if (!check.matches())
-        QFAIL(qPrintable(
-            QStringLiteral("%1 (images in %2)").arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
+        QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
+                             .arg(check.comparison.summary(), saveArtifacts(name, check, scene))));
 }
 
 // --- Every preset builds, and reads only what phong.* reads ------------------
@@ -184,10 +187,14 @@ void TestShadingPresets::presetBuilds()
     // attributes. A preset that needed anything else would silently read
     // zeros, so its active uniforms must be a subset of Phong's.
     ShaderProgram phong, preset;
-    QVERIFY(phong.build(shippedShader(QStringLiteral("phong.vert")), shippedShader(QStringLiteral("phong.frag"))).ok);
-    QVERIFY(
-        preset.build(shippedShader(method + QStringLiteral(".vert")), shippedShader(method + QStringLiteral(".frag")))
-            .ok);
+    QVERIFY(phong
+                .build(shippedShader(QStringLiteral("phong.vert")),
+                       shippedShader(QStringLiteral("phong.frag")))
+                .ok);
+    QVERIFY(preset
+                .build(shippedShader(method + QStringLiteral(".vert")),
+                       shippedShader(method + QStringLiteral(".frag")))
+                .ok);
     const QSet<QByteArray> allowedUniforms = activeUniformNames(phong.id());
     const QSet<QByteArray> uniforms = activeUniformNames(preset.id());
     const QSet<QByteArray> attributes = activeAttributes(preset.id());
@@ -198,12 +205,13 @@ void TestShadingPresets::presetBuilds()
     // Blinn-Phong's exponentFactor starts at the matched 4.
     const QHash<QByteArray, float> ownDefaults{{"exponentFactor", float(kBlinnExponentFactor)}};
     for (const QByteArray &extra : uniforms - allowedUniforms) {
-        QVERIFY2(
-            ownDefaults.contains(extra),
-            qPrintable(QStringLiteral("uniform phong.* does not have and nobody sets: ") + QString::fromLatin1(extra)));
+        QVERIFY2(ownDefaults.contains(extra),
+                 qPrintable(QStringLiteral("uniform phong.* does not have and nobody sets: ")
+                            + QString::fromLatin1(extra)));
         QOpenGLExtraFunctions *gl = QOpenGLContext::currentContext()->extraFunctions();
         GLfloat value = 0.0f;
-        gl->glGetUniformfv(preset.id(), gl->glGetUniformLocation(preset.id(), extra.constData()), &value);
+        gl->glGetUniformfv(preset.id(), gl->glGetUniformLocation(preset.id(), extra.constData()),
+                           &value);
         QCOMPARE(value, ownDefaults.value(extra));
     }
     QVERIFY2((attributes - activeAttributes(phong.id())).isEmpty(),
@@ -251,7 +259,8 @@ void TestShadingPresets::blinnPhongMistakesFail()
         wrong->name = QStringLiteral("blinn-phong-with-reflect.frag");
     } else {
         // The half vector right, but max(0, N.H)^n: a highlight twice as wide.
-        wrong = mutatedShader(QStringLiteral("blinn-phong.frag"), "float exponent = exponentFactor * shininess;",
+        wrong = mutatedShader(QStringLiteral("blinn-phong.frag"),
+                              "float exponent = exponentFactor * shininess;",
                               "float exponent = shininess;");
         QVERIFY2(wrong, "the shipped blinn-phong.frag no longer has the line this test changes");
     }
@@ -263,7 +272,8 @@ void TestShadingPresets::blinnPhongMistakesFail()
     QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
     report(QStringLiteral("WRONG blinn-phong (%1) %2").arg(mistake, scene), check);
     QVERIFY2(check.comparison.pixelsCompared > 0, "nothing compared");
-    QVERIFY2(!check.matches(), qPrintable(QStringLiteral("a wrong shader passed: ") + check.comparison.summary()));
+    QVERIFY2(!check.matches(),
+             qPrintable(QStringLiteral("a wrong shader passed: ") + check.comparison.summary()));
 }
 
 // --- Normals view --------------------------------------------------------------
@@ -289,7 +299,8 @@ void TestShadingPresets::normalsViewShowsWrongNormalMatrix()
     // What the normals view is for: normals transformed by the model-view
     // matrix instead of its inverse transpose are visibly wrong under
     // non-uniform scale, with no lighting to muddle the picture.
-    const Scene s = withShading(loadTestScene(QStringLiteral("gl_ellipsoid_nonuniform")), ShadingMethod::Normals);
+    const Scene s = withShading(loadTestScene(QStringLiteral("gl_ellipsoid_nonuniform")),
+                                ShadingMethod::Normals);
     CheckOptions options;
     options.vertex = testShader(QStringLiteral("shaders/wrong_normal_modelview.vert"));
     const RenderCheck check = checkAgainstReference(s, options);
@@ -305,7 +316,8 @@ void TestShadingPresets::gouraudCloseToPhongOnFineSphere()
     // builtin:sphere is 256 slices x 128 stacks: vertices ~1.4 degrees apart,
     // finer than the shininess-32 highlight, so interpolating colours loses
     // little. Measured against the exact per-pixel Phong reference.
-    const Scene s = withShading(loadTestScene(QStringLiteral("gl_sphere_one_light")), ShadingMethod::Gouraud);
+    const Scene s =
+        withShading(loadTestScene(QStringLiteral("gl_sphere_one_light")), ShadingMethod::Gouraud);
     const RenderCheck gouraud = checkAgainstReference(s);
     QVERIFY2(gouraud.error.isEmpty(), qPrintable(gouraud.error));
     report(QStringLiteral("gouraud, fine sphere vs Phong reference"), gouraud);
@@ -325,19 +337,23 @@ void TestShadingPresets::gouraudWorseThanPhongOnCoarseSphere()
     Scene s = loadTestScene(QStringLiteral("gl_sphere_one_light"));
     s.objects.front().material.shininess = kTightShininess;
     CheckOptions options;
-    options.meshOverride = std::make_shared<const MeshData>(makeUvSphere(kCoarseSlices, kCoarseStacks));
+    options.meshOverride =
+        std::make_shared<const MeshData>(makeUvSphere(kCoarseSlices, kCoarseStacks));
     options.reference = ReferenceShading::Phong;
 
     const RenderCheck phong = checkAgainstReference(withShading(s, ShadingMethod::Phong), options);
-    const RenderCheck gouraud = checkAgainstReference(withShading(s, ShadingMethod::Gouraud), options);
+    const RenderCheck gouraud =
+        checkAgainstReference(withShading(s, ShadingMethod::Gouraud), options);
     QVERIFY2(phong.error.isEmpty(), qPrintable(phong.error));
     QVERIFY2(gouraud.error.isEmpty(), qPrintable(gouraud.error));
     // Both against the same exact-sphere Phong reference, outside a band
     // wide enough for the coarse outline.
-    const ImageComparison phongError = compareWithReference(phong.gpu, phong.referenceData, kCoarseBandPx);
-    const ImageComparison gouraudError = compareWithReference(gouraud.gpu, gouraud.referenceData, kCoarseBandPx);
-    qInfo("coarse sphere %dx%d, n = %g, %d px band, vs the Phong reference:", kCoarseSlices, kCoarseStacks,
-          kTightShininess, kCoarseBandPx);
+    const ImageComparison phongError =
+        compareWithReference(phong.gpu, phong.referenceData, kCoarseBandPx);
+    const ImageComparison gouraudError =
+        compareWithReference(gouraud.gpu, gouraud.referenceData, kCoarseBandPx);
+    qInfo("coarse sphere %dx%d, n = %g, %d px band, vs the Phong reference:", kCoarseSlices,
+          kCoarseStacks, kTightShininess, kCoarseBandPx);
     qInfo("  phong   %s", qPrintable(phongError.summary()));
     qInfo("  gouraud %s", qPrintable(gouraudError.summary()));
     QVERIFY(phongError.pixelsCompared > kTestImageSide * kTestImageSide / 10);
@@ -363,7 +379,8 @@ void TestShadingPresets::gouraudWorseThanPhongOnCoarseSphere()
     qInfo("  inside the highlight: gouraud %s", qPrintable(gouraudHighlight.summary()));
     QVERIFY(phongHighlight.pixelsCompared > 100);
     QVERIFY2(gouraudHighlight.rmse > kClearlyWorse * phongHighlight.rmse,
-             qPrintable(QStringLiteral("inside the highlight, Gouraud RMSE %1 is not clearly above Phong's %2")
+             qPrintable(QStringLiteral(
+                            "inside the highlight, Gouraud RMSE %1 is not clearly above Phong's %2")
                             .arg(gouraudHighlight.rmse)
                             .arg(phongHighlight.rmse)));
 }
@@ -408,7 +425,8 @@ void TestShadingPresets::flatShowsFacetsOnSphere()
 void TestShadingPresets::cliRendersGouraudScene()
 {
     QVERIFY2(QFileInfo(phonglabExecutable()).isExecutable(),
-             qPrintable(phonglabExecutable() + QStringLiteral(": not built (build the phonglab target)")));
+             qPrintable(phonglabExecutable()
+                        + QStringLiteral(": not built (build the phonglab target)")));
     QFile in(QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"));
     QVERIFY(in.open(QIODevice::ReadOnly));
     QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
@@ -420,8 +438,8 @@ void TestShadingPresets::cliRendersGouraudScene()
     out.close();
 
     const QString png = m_dir.filePath(QStringLiteral("gouraud.png"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"), scenePath, QStringLiteral("-o"), png,
-                                      QStringLiteral("--size"), QStringLiteral("96x64")});
+    const ProcessRun r = runPhonglab({QStringLiteral("render"), scenePath, QStringLiteral("-o"),
+                                      png, QStringLiteral("--size"), QStringLiteral("96x64")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QCOMPARE(QImage(png).size(), QSize(96, 64));
 }
@@ -432,13 +450,15 @@ void TestShadingPresets::cliShadingOverridesScene()
     // A Phong scene rendered as the normals view: the sphere's centre faces
     // the camera, so it must come out as N = (0, 0, 1) -> (128, 128, 255).
     const QString png = m_dir.filePath(QStringLiteral("normals.png"));
-    const ProcessRun r = runPhonglab({QStringLiteral("render"),
-                                      QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
-                                      QStringLiteral("-o"), png, QStringLiteral("--size"), QStringLiteral("65x65"),
-                                      QStringLiteral("--shading"), QStringLiteral("normals")});
+    const ProcessRun r =
+        runPhonglab({QStringLiteral("render"),
+                     QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
+                     QStringLiteral("-o"), png, QStringLiteral("--size"), QStringLiteral("65x65"),
+                     QStringLiteral("--shading"), QStringLiteral("normals")});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const QColor centre = QImage(png).pixelColor(32, 32);
-    qInfo("--shading normals, centre pixel: (%d, %d, %d)", centre.red(), centre.green(), centre.blue());
+    qInfo("--shading normals, centre pixel: (%d, %d, %d)", centre.red(), centre.green(),
+          centre.blue());
     QVERIFY(qAbs(centre.red() - 128) <= 1);
     QVERIFY(qAbs(centre.green() - 128) <= 1);
     QVERIFY(centre.blue() >= 254);
@@ -449,7 +469,8 @@ void TestShadingPresets::cliRejectsUnknownShading()
     QVERIFY2(QFileInfo(phonglabExecutable()).isExecutable(), qPrintable(phonglabExecutable()));
     const QString png = m_dir.filePath(QStringLiteral("nosuch.png"));
     const ProcessRun r = runPhonglab(
-        {QStringLiteral("render"), QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
+        {QStringLiteral("render"),
+         QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/gl_sphere_one_light.json"),
          QStringLiteral("-o"), png, QStringLiteral("--shading"), QStringLiteral("nosuch")});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(QStringLiteral("nosuch")), qPrintable(r.err));

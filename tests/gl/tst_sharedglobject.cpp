@@ -127,7 +127,8 @@ void TestSharedGlObject::anotherGroupsObjectOfTheSameNameSurvives()
     std::vector<GlProgram> others;
     while (others.size() <= id && (others.empty() || others.back().id() < id))
         others.emplace_back(m_other->functions()->glCreateProgram());
-    QVERIFY2(!others.empty() && others.back().id() == id, "the other group never gave out the same number");
+    QVERIFY2(!others.empty() && others.back().id() == id,
+             "the other group never gave out the same number");
 
     program.reset(); // with the other group's context current: must not touch its program
     QVERIFY(m_other->functions()->glIsProgram(id));

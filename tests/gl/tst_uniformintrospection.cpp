@@ -36,7 +36,8 @@ QByteArray readShader(const QString &name)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-const ActiveUniformInfo *findActive(const std::vector<ActiveUniformInfo> &list, const QByteArray &name)
+const ActiveUniformInfo *findActive(const std::vector<ActiveUniformInfo> &list,
+                                    const QByteArray &name)
 {
     for (const ActiveUniformInfo &u : list)
         if (u.name == name)
@@ -78,10 +79,12 @@ void TestUniformIntrospection::cleanupTestCase()
     m_program.destroy();
 }
 
-std::vector<ActiveUniformInfo> TestUniformIntrospection::build(const QByteArray &vertex, const QByteArray &fragment)
+std::vector<ActiveUniformInfo> TestUniformIntrospection::build(const QByteArray &vertex,
+                                                               const QByteArray &fragment)
 {
     m_offscreen.makeCurrent();
-    const BuildReport r = m_program.build({QStringLiteral("v"), vertex}, {QStringLiteral("f"), fragment});
+    const BuildReport r =
+        m_program.build({QStringLiteral("v"), vertex}, {QStringLiteral("f"), fragment});
     if (!r.ok)
         qWarning("%s", qPrintable(r.errorSummary()));
     return activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), m_program.id());
@@ -89,7 +92,8 @@ std::vector<ActiveUniformInfo> TestUniformIntrospection::build(const QByteArray 
 
 void TestUniformIntrospection::phongProgramListsItsActiveUniforms()
 {
-    const std::vector<ActiveUniformInfo> active = build(readShader("phong.vert"), readShader("phong.frag"));
+    const std::vector<ActiveUniformInfo> active =
+        build(readShader("phong.vert"), readShader("phong.frag"));
     QVERIFY(m_program.isValid());
     QStringList names;
     for (const ActiveUniformInfo &u : active)
@@ -140,17 +144,19 @@ void TestUniformIntrospection::unusedUniformIsDeclaredButInactive()
     QVERIFY(findActive(active, "gain"));
     QVERIFY(!findActive(active, "unused"));
 
-    const std::vector<UniformDeclaration> declared = parseUniformDeclarations(QString::fromUtf8(kWithUnused));
+    const std::vector<UniformDeclaration> declared =
+        parseUniformDeclarations(QString::fromUtf8(kWithUnused));
     QCOMPARE(int(declared.size()), 2);
     QCOMPARE(declared[1].name, QStringLiteral("unused"));
 }
 
 void TestUniformIntrospection::parsesAnnotations()
 {
-    const auto declared = parseUniformDeclarations(QStringLiteral("uniform float gain; // @range 0 2 @step 0.05\n"
-                                                                  "uniform vec3 tint;  // the tint @color\n"
-                                                                  "uniform float bad;  // @range 2 1 @step -1\n"
-                                                                  "uniform float plain;\n"));
+    const auto declared =
+        parseUniformDeclarations(QStringLiteral("uniform float gain; // @range 0 2 @step 0.05\n"
+                                                "uniform vec3 tint;  // the tint @color\n"
+                                                "uniform float bad;  // @range 2 1 @step -1\n"
+                                                "uniform float plain;\n"));
     QCOMPARE(int(declared.size()), 4);
     QVERIFY(declared[0].hasRange());
     QCOMPARE(*declared[0].rangeLow, 0.0);
@@ -166,12 +172,12 @@ void TestUniformIntrospection::parsesAnnotations()
 
 void TestUniformIntrospection::parsesDeclarations()
 {
-    const auto declared =
-        parseUniformDeclarations(QStringLiteral("const int MAX_LIGHTS = 8;\n"
-                                                "uniform vec3 Id[MAX_LIGHTS];   // diffuse intensity\n"
-                                                "uniform float a, b[4], c; // @range -1 1\n"
-                                                "layout(location = 3) uniform highp mat4 m;\n"
-                                                "  uniform sampler2D image;\n"));
+    const auto declared = parseUniformDeclarations(
+        QStringLiteral("const int MAX_LIGHTS = 8;\n"
+                       "uniform vec3 Id[MAX_LIGHTS];   // diffuse intensity\n"
+                       "uniform float a, b[4], c; // @range -1 1\n"
+                       "layout(location = 3) uniform highp mat4 m;\n"
+                       "  uniform sampler2D image;\n"));
     QCOMPARE(int(declared.size()), 6);
     QCOMPARE(declared[0].name, QStringLiteral("Id"));
     QCOMPARE(declared[0].type, QStringLiteral("vec3"));
@@ -193,12 +199,13 @@ void TestUniformIntrospection::parsesDeclarations()
 
 void TestUniformIntrospection::ignoresCommentsAndOtherLines()
 {
-    const auto declared = parseUniformDeclarations(QStringLiteral("// uniform float commented;\n"
-                                                                  "/* uniform float blocked;\n"
-                                                                  "   uniform float stillBlocked; */\n"
-                                                                  "in vec3 normalCam;\n"
-                                                                  "uniform Lights { vec3 p; };\n"
-                                                                  "uniform float kept;\n"));
+    const auto declared =
+        parseUniformDeclarations(QStringLiteral("// uniform float commented;\n"
+                                                "/* uniform float blocked;\n"
+                                                "   uniform float stillBlocked; */\n"
+                                                "in vec3 normalCam;\n"
+                                                "uniform Lights { vec3 p; };\n"
+                                                "uniform float kept;\n"));
     QCOMPARE(int(declared.size()), 1);
     QCOMPARE(declared[0].name, QStringLiteral("kept"));
     // phong.frag declares 11 of the program's 14 uniforms (the matrices are in phong.vert).

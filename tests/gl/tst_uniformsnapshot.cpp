@@ -94,7 +94,8 @@ void TestUniformSnapshot::cleanupTestCase()
 
 void TestUniformSnapshot::build(ShaderProgram &program, const QByteArray &fragment)
 {
-    const BuildReport r = program.build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), fragment});
+    const BuildReport r =
+        program.build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), fragment});
     QVERIFY2(r.ok, qPrintable(r.errorSummary()));
 }
 
@@ -166,7 +167,8 @@ void TestUniformSnapshot::adoptKeepsProgramAndFreesOld()
 {
     build(m_first, kFirst);
     const GLuint old = m_first.id();
-    BuiltProgram built = ProgramBuilder().build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), kSecond});
+    BuiltProgram built =
+        ProgramBuilder().build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), kSecond});
     QVERIFY2(built.ok(), qPrintable(built.result.errorSummary()));
     QVERIFY(built.compileNs > 0 && built.linkNs > 0);
     const GLuint adopted = built.program.id();

@@ -16,7 +16,8 @@ inline constexpr int kCheckHeight = 240;
 
 inline Scene loadCheckScene()
 {
-    const SceneLoadResult loaded = loadSceneFile(sourcePath(QStringLiteral("assets/scenes/check.json")));
+    const SceneLoadResult loaded =
+        loadSceneFile(sourcePath(QStringLiteral("assets/scenes/check.json")));
     if (!loaded.ok())
         qFatal("assets/scenes/check.json: %s", qPrintable(loaded.error));
     return *loaded.scene;
@@ -34,7 +35,8 @@ inline std::vector<std::shared_ptr<const MeshData>> checkMeshes(const Scene &sce
     return out;
 }
 
-inline CheckReference makeTestCheckReference(const Scene &scene, int width = kCheckWidth, int height = kCheckHeight)
+inline CheckReference makeTestCheckReference(const Scene &scene, int width = kCheckWidth,
+                                             int height = kCheckHeight)
 {
     Result<CheckReference> r = makeCheckReference(scene, checkMeshes(scene), width, height);
     if (!r)

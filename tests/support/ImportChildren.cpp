@@ -11,7 +11,8 @@ QList<qint64> importChildren()
 {
     QList<qint64> pids;
     const QByteArray self = QByteArray::number(qint64(::getpid()));
-    const QStringList entries = QDir(QStringLiteral("/proc")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    const QStringList entries =
+        QDir(QStringLiteral("/proc")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
     for (const QString &entry : entries) {
         bool numeric = false;
         const qint64 pid = entry.toLongLong(&numeric);
@@ -24,7 +25,8 @@ QList<qint64> importChildren()
         // "pid (comm) state ppid ...": comm may hold spaces, so split after ')'.
         const QByteArray line = stat.readAll();
         const QList<QByteArray> fields = line.mid(line.lastIndexOf(')') + 2).split(' ');
-        if (fields.size() > 1 && fields[0] != "Z" && fields[1] == self && cmdline.readAll().contains("__import-mesh"))
+        if (fields.size() > 1 && fields[0] != "Z" && fields[1] == self
+            && cmdline.readAll().contains("__import-mesh"))
             pids << pid;
     }
     return pids;

@@ -40,7 +40,8 @@ RgbImage quantised(const std::vector<float> &rgba, const QSize &size, qint64 *no
         const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
         *nonFinite += !finite;
         for (int c = 0; c < 3; ++c)
-            image.pixel(i)[c] = finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)) : (c == 1 ? 0 : 255);
+            image.pixel(i)[c] = finite ? uchar(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f))
+                                       : (c == 1 ? 0 : 255);
     }
     return image;
 }
@@ -56,14 +57,17 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
         return check;
     }
     Renderer &renderer = offscreen.renderer();
-    if (const Result<> done = renderer.setScene(scene, meshesFor(scene, options.meshOverride)); !done) {
+    if (const Result<> done = renderer.setScene(scene, meshesFor(scene, options.meshOverride));
+        !done) {
         check.error = done.error();
         return check;
     }
     if (options.vertex || options.fragment) {
         const QString method = shadingName(scene.shading);
-        const ShaderSource vs = options.vertex.value_or(shippedShader(method + QStringLiteral(".vert")));
-        const ShaderSource fs = options.fragment.value_or(shippedShader(method + QStringLiteral(".frag")));
+        const ShaderSource vs =
+            options.vertex.value_or(shippedShader(method + QStringLiteral(".vert")));
+        const ShaderSource fs =
+            options.fragment.value_or(shippedShader(method + QStringLiteral(".frag")));
         check.compile = renderer.setProgramSources(vs, fs);
     } else {
         check.compile = renderer.loadShading(scene.shading);
@@ -91,7 +95,8 @@ RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &option
 }
 
 RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex,
-                                  const std::optional<ShaderSource> &fragment, const QHash<QString, QString> &standIns)
+                                  const std::optional<ShaderSource> &fragment,
+                                  const QHash<QString, QString> &standIns)
 {
     CheckOptions options;
     options.vertex = vertex;
@@ -113,14 +118,16 @@ QString saveArtifacts(const QString &name, const RenderCheck &check, const Scene
     const QString heatmapPath = dir.filePath(name + QStringLiteral("-error.png"));
     if (!check.referenceData.isNull())
         toQImage(errorHeatmap(check.gpu, check.referenceData, kSilhouetteBandPx)).save(heatmapPath);
-    else if (const auto reference = raycastScene(scene, check.gpu.width, check.gpu.height, standIns))
+    else if (const auto reference =
+                 raycastScene(scene, check.gpu.width, check.gpu.height, standIns))
         toQImage(errorHeatmap(check.gpu, *reference, kSilhouetteBandPx)).save(heatmapPath);
     return dir.absolutePath();
 }
 
 ShaderSource testShader(const QString &relative)
 {
-    Result<ShaderSource> source = ShaderSource::fromFile(QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative);
+    Result<ShaderSource> source =
+        ShaderSource::fromFile(QStringLiteral(PHONGLAB_TEST_DATA_DIR "/") + relative);
     if (!source)
         qFatal("%s", qPrintable(source.error()));
     return std::move(*source);
@@ -136,7 +143,8 @@ ShaderSource shippedShader(const QString &fileName)
 
 Scene loadTestScene(const QString &name)
 {
-    const QString path = QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/") + name + QStringLiteral(".json");
+    const QString path =
+        QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes/") + name + QStringLiteral(".json");
     const SceneLoadResult loaded = loadSceneFile(path);
     if (!loaded.ok())
         qFatal("%s: %s", qPrintable(path), qPrintable(loaded.error));

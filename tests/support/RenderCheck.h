@@ -65,7 +65,8 @@ struct CheckOptions {
 // the ray-cast reference. Creates its own context; call from the GUI thread
 // of a QGuiApplication.
 RenderCheck checkAgainstReference(const Scene &scene, const CheckOptions &options);
-RenderCheck checkAgainstReference(const Scene &scene, const std::optional<ShaderSource> &vertex = std::nullopt,
+RenderCheck checkAgainstReference(const Scene &scene,
+                                  const std::optional<ShaderSource> &vertex = std::nullopt,
                                   const std::optional<ShaderSource> &fragment = std::nullopt,
                                   const QHash<QString, QString> &standIns = {});
 

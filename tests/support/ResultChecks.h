@@ -5,8 +5,8 @@
 
 // QVERIFY for a Result (core/Result.h): passes when it holds a value, else
 // fails the test with the result's own error message.
-#define QVERIFY_OK(expression)                                                                                         \
-    do {                                                                                                               \
-        const auto &result_ = (expression);                                                                            \
-        QVERIFY2(result_.ok(), qPrintable(result_.error()));                                                           \
+#define QVERIFY_OK(expression)                                                                     \
+    do {                                                                                           \
+        const auto &result_ = (expression);                                                        \
+        QVERIFY2(result_.ok(), qPrintable(result_.error()));                                       \
     } while (false)

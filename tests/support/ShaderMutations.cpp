@@ -10,7 +10,8 @@ namespace {
 
 ShaderSource readShipped(const QString &fileName)
 {
-    Result<ShaderSource> source = ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/") + fileName));
+    Result<ShaderSource> source =
+        ShaderSource::fromFile(sourcePath(QStringLiteral("shaders/") + fileName));
     if (!source)
         qFatal("%s", qPrintable(source.error()));
     return std::move(*source);
@@ -23,8 +24,9 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
     if (!source.code.contains(from))
         qFatal("%s: the shipped shader no longer contains \"%s\"", qPrintable(source.name), from);
     source.code.replace(from, to);
-    source.name =
-        key + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert") : QStringLiteral(".frag"));
+    source.name = key
+        + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert")
+                                                        : QStringLiteral(".frag"));
 }
 
 constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
@@ -39,12 +41,14 @@ ShaderPair shippedPhong()
 ShaderPair withMistake(ShaderMistake mistake)
 {
     if (mistake == ShaderMistake::Gouraud)
-        return {readShipped(QStringLiteral("gouraud.vert")), readShipped(QStringLiteral("gouraud.frag"))};
+        return {readShipped(QStringLiteral("gouraud.vert")),
+                readShipped(QStringLiteral("gouraud.frag"))};
     ShaderPair s = shippedPhong();
     const QString key = shaderMistakeKey(mistake);
     switch (mistake) {
     case ShaderMistake::NormalMatrix:
-        replace(s.vertex, "normalCam = normalMatrix * normal;", "normalCam = mat3(modelViewMatrix) * normal;", key);
+        replace(s.vertex, "normalCam = normalMatrix * normal;",
+                "normalCam = mat3(modelViewMatrix) * normal;", key);
         break;
     case ShaderMistake::Unnormalized:
         replace(s.fragment, "vec3 N = normalize(normalCam);", "vec3 N = normalCam;", key);
@@ -55,14 +59,19 @@ ShaderPair withMistake(ShaderMistake mistake)
         break;
     case ShaderMistake::HomogeneousW:
         // The lit position only: gl_Position keeps w = 1, or nothing would be drawn.
-        replace(s.vertex, "positionCam = p.xyz;", "positionCam = (modelViewMatrix * vec4(position, 0.0)).xyz;", key);
+        replace(s.vertex, "positionCam = p.xyz;",
+                "positionCam = (modelViewMatrix * vec4(position, 0.0)).xyz;", key);
         break;
-    case ShaderMistake::ReflectIncident: replace(s.fragment, "reflect(-L, N)", "reflect(L, N)", key); break;
+    case ShaderMistake::ReflectIncident:
+        replace(s.fragment, "reflect(-L, N)", "reflect(L, N)", key);
+        break;
     case ShaderMistake::ViewVector:
-        replace(s.fragment, "vec3 V = normalize(-positionCam);", "vec3 V = normalize(positionCam);", key);
+        replace(s.fragment, "vec3 V = normalize(-positionCam);", "vec3 V = normalize(positionCam);",
+                key);
         break;
     case ShaderMistake::Attenuation:
-        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);", "float fatt = 1.0;", key);
+        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);",
+                "float fatt = 1.0;", key);
         break;
     case ShaderMistake::NegativeLight:
         // No max(0, N·L) on the diffuse term; the highlight keeps its guard.
@@ -80,7 +89,9 @@ ShaderPair withMistake(ShaderMistake mistake)
         replace(s.fragment, kGuard, "", key);
         replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", key);
         break;
-    case ShaderMistake::Ambient: replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key); break;
+    case ShaderMistake::Ambient:
+        replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
+        break;
     case ShaderMistake::Gouraud: break;
     }
     return s;

@@ -59,7 +59,8 @@ void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, Q
 
 bool waitForApplied(const LiveShaderController &live, int timeoutMs)
 {
-    return QTest::qWaitFor([&] { return live.appliedHash() == live.currentHash() && !live.isBuilding(); }, timeoutMs);
+    return QTest::qWaitFor(
+        [&] { return live.appliedHash() == live.currentHash() && !live.isBuilding(); }, timeoutMs);
 }
 
 Viewport *UiTestWindow::viewport() const

@@ -74,7 +74,10 @@ protected:
     static constexpr int kBuildTimeoutMs = 10000; // debounce + compile + link + JIT, generously
 
     // test::openWindow() into m_window; check QTest::currentTestFailed() after it.
-    void openWindow(const QString &scenePath, QSize size) { test::openWindow(m_window, scenePath, size); }
+    void openWindow(const QString &scenePath, QSize size)
+    {
+        test::openWindow(m_window, scenePath, size);
+    }
 
     Viewport *viewport() const;
     QImage frame() const; // the viewport's framebuffer
@@ -83,7 +86,10 @@ protected:
     UniformSnapshot programSnapshot() const;
     LiveShaderController *live() const;
     ShaderEditor *fragmentEditor() const; // in the Shader dock
-    bool waitForApplied(int timeoutMs = kBuildTimeoutMs) const { return test::waitForApplied(*live(), timeoutMs); }
+    bool waitForApplied(int timeoutMs = kBuildTimeoutMs) const
+    {
+        return test::waitForApplied(*live(), timeoutMs);
+    }
 
     UiTestEnvironment m_env; // unused unless the test calls it
     std::unique_ptr<MainWindow> m_window;

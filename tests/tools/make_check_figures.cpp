@@ -29,10 +29,12 @@ QImage strip(const QImage &exact, const QImage &yours, const QImage &heatmap, co
     QPainter p(&out);
     p.setPen(Qt::white);
     const QImage *images[] = {&exact, &yours, &heatmap};
-    const QString labels[] = {QStringLiteral("exact"), title, QStringLiteral("heatmap |yours - exact|")};
+    const QString labels[] = {QStringLiteral("exact"), title,
+                              QStringLiteral("heatmap |yours - exact|")};
     for (int i = 0; i < 3; ++i) {
         const int x = i * (exact.width() + 4);
-        p.drawText(QRect(x + 4, 2, exact.width() - 8, kHeader - 4), Qt::AlignLeft | Qt::AlignVCenter, labels[i]);
+        p.drawText(QRect(x + 4, 2, exact.width() - 8, kHeader - 4),
+                   Qt::AlignLeft | Qt::AlignVCenter, labels[i]);
         p.drawImage(x, kHeader, *images[i]);
     }
     return out;
@@ -43,7 +45,8 @@ QImage strip(const QImage &exact, const QImage &yours, const QImage &heatmap, co
 int main(int argc, char **argv)
 {
     QGuiApplication app(argc, argv);
-    const QString folder = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QStringLiteral("docs/images/check");
+    const QString folder =
+        argc > 1 ? QString::fromLocal8Bit(argv[1]) : QStringLiteral("docs/images/check");
     QDir().mkpath(folder);
     const Scene scene = loadCheckScene();
     const CheckReference reference = makeTestCheckReference(scene);
@@ -57,7 +60,8 @@ int main(int argc, char **argv)
     }
     const QImage exact = toQImage(reference.exact.toImage(reference.background));
     const auto render = [&](const ShaderPair &shaders) {
-        const BuildReport program = offscreen.renderer().setProgramSources(shaders.vertex, shaders.fragment);
+        const BuildReport program =
+            offscreen.renderer().setProgramSources(shaders.vertex, shaders.fragment);
         if (!program.ok)
             qFatal("%s", qPrintable(program.errorSummary()));
         return offscreen.renderImage(QSize(kCheckWidth, kCheckHeight));
@@ -65,12 +69,14 @@ int main(int argc, char **argv)
     QStringList names{QStringLiteral("shipped")};
     names << shaderMistakeKeys();
     for (const QString &name : names) {
-        const ShaderPair shaders =
-            name == QLatin1String("shipped") ? shippedPhong() : withMistake(*shaderMistakeFromKey(name));
+        const ShaderPair shaders = name == QLatin1String("shipped")
+            ? shippedPhong()
+            : withMistake(*shaderMistakeFromKey(name));
         const QImage yours = render(shaders);
         const CheckReport report = checkRender(toRgbImage(yours), reference);
         const QString path = QDir(folder).filePath(name + QStringLiteral(".png"));
-        if (!strip(exact, yours, toQImage(checkHeatmap(toRgbImage(yours), reference)), name).save(path)) {
+        if (!strip(exact, yours, toQImage(checkHeatmap(toRgbImage(yours), reference)), name)
+                 .save(path)) {
             std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
             return 1;
         }

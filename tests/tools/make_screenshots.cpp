@@ -93,7 +93,8 @@ int main(int argc, char **argv)
     // The check on its own scene with reflect(L, N) typed in: the verdict in
     // the status bar, the heatmap, the split view, the pixel inspector.
     fragment->setCode(code.replace("normalise(", "normalize("));
-    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/check.json"))); !done) {
+    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/check.json")));
+        !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }
@@ -122,8 +123,10 @@ int main(int argc, char **argv)
     // phonglab binary beside this tool's build folder.
     if (qEnvironmentVariableIsEmpty("PHONGLAB_EXE"))
         qputenv("PHONGLAB_EXE",
-                (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab")).toUtf8());
-    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/sphere.json"))); !done) {
+                (QCoreApplication::applicationDirPath() + QStringLiteral("/../../app/phonglab"))
+                    .toUtf8());
+    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/sphere.json")));
+        !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }

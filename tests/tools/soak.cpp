@@ -98,11 +98,14 @@ public:
         const int before = m_outcomes;
         QString text = m_fragment;
         if (i % 2 == 0)
-            text.replace(QStringLiteral("vec4(I, 1.0)"), QStringLiteral("vec4(I * %1, 1.0)").arg(0.5 + 0.001 * i));
+            text.replace(QStringLiteral("vec4(I, 1.0)"),
+                         QStringLiteral("vec4(I * %1, 1.0)").arg(0.5 + 0.001 * i));
         else
-            text.replace(QStringLiteral("vec4(I, 1.0);"), QStringLiteral("vec4(I * %1, 1.0)").arg(i));
+            text.replace(QStringLiteral("vec4(I, 1.0);"),
+                         QStringLiteral("vec4(I * %1, 1.0)").arg(i));
         m_window.shaderDock()->editor(ShaderStage::Fragment)->setText(text);
-        return waitFor([&] { return m_outcomes > before && !m_window.liveShaders()->isBuilding(); }, 20000);
+        return waitFor([&] { return m_outcomes > before && !m_window.liveShaders()->isBuilding(); },
+                       20000);
     }
 
     bool open(const QString &path)
@@ -181,16 +184,20 @@ int main(int argc, char **argv)
     for (int i = warmup; i < edits; ++i) {
         step(i);
         if ((i + 1) % 100 == 0)
-            std::printf("  %d edits, %.0f s\n", i + 1, clock.elapsed() / 1000.0), std::fflush(stdout);
+            std::printf("  %d edits, %.0f s\n", i + 1, clock.elapsed() / 1000.0),
+                std::fflush(stdout);
     }
     const Counts end = count(window);
     print("at the end", end);
-    const double growth = 100.0 * double(end.rssKiB - afterWarmup.rssKiB) / double(afterWarmup.rssKiB);
-    std::printf("%d edits (good and broken alternating), %d scene reloads, %d mesh loads in %.0f s; "
-                "%d steps failed\nresident memory growth after warm-up: %+.1f %% (aim: under 10 %%); "
-                "GL objects: programs %+d, buffers %+d, textures %+d (aim: no growth)\n",
-                edits, reloads, loads, clock.elapsed() / 1000.0, failures, growth, end.programs - afterWarmup.programs,
-                end.buffers - afterWarmup.buffers, end.textures - afterWarmup.textures);
+    const double growth =
+        100.0 * double(end.rssKiB - afterWarmup.rssKiB) / double(afterWarmup.rssKiB);
+    std::printf(
+        "%d edits (good and broken alternating), %d scene reloads, %d mesh loads in %.0f s; "
+        "%d steps failed\nresident memory growth after warm-up: %+.1f %% (aim: under 10 %%); "
+        "GL objects: programs %+d, buffers %+d, textures %+d (aim: no growth)\n",
+        edits, reloads, loads, clock.elapsed() / 1000.0, failures, growth,
+        end.programs - afterWarmup.programs, end.buffers - afterWarmup.buffers,
+        end.textures - afterWarmup.textures);
     const bool ok = failures == 0 && growth < 10.0 && end.programs <= afterWarmup.programs
         && end.buffers <= afterWarmup.buffers && end.textures <= afterWarmup.textures;
     std::printf("soak: %s\n", ok ? "PASS" : "FAIL");

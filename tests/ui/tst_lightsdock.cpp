@@ -80,8 +80,8 @@ QString compareWithReference(const QImage &grab, const Scene &scene)
                 continue;
             ++compared;
             const QRgb a = actual.pixel(x, y), e = expected.pixel(x, y);
-            const int err =
-                std::max({std::abs(qRed(a) - qRed(e)), std::abs(qGreen(a) - qGreen(e)), std::abs(qBlue(a) - qBlue(e))});
+            const int err = std::max({std::abs(qRed(a) - qRed(e)), std::abs(qGreen(a) - qGreen(e)),
+                                      std::abs(qBlue(a) - qBlue(e))});
             if (err > test::kMaxErrorSteps)
                 return QStringLiteral("pixel (%1, %2): %3 vs reference %4")
                     .arg(x)
@@ -156,7 +156,9 @@ void TestLightsDock::verifyMatchesReference()
     const test::RenderCheck check = test::checkAgainstReference(scene);
     QVERIFY2(check.matches(),
              qPrintable(check.error
-                        + QStringLiteral(" psnr %1 max %2").arg(check.comparison.psnr).arg(check.comparison.maxError)));
+                        + QStringLiteral(" psnr %1 max %2")
+                              .arg(check.comparison.psnr)
+                              .arg(check.comparison.maxError)));
 }
 
 void TestLightsDock::kdEditChangesFrameAndMatchesReference()
@@ -171,10 +173,12 @@ void TestLightsDock::kdEditChangesFrameAndMatchesReference()
     // For a look at the docks: PHONGLAB_TEST_ARTIFACTS=<folder>.
     const QString artifacts = qEnvironmentVariable("PHONGLAB_TEST_ARTIFACTS");
     if (!artifacts.isEmpty() && QDir().mkpath(artifacts)) {
-        for (QDockWidget *dock : {static_cast<QDockWidget *>(docks()->lightsDock()), static_cast<QDockWidget *>(panel),
-                                  static_cast<QDockWidget *>(docks()->objectPanel())}) {
+        for (QDockWidget *dock :
+             {static_cast<QDockWidget *>(docks()->lightsDock()), static_cast<QDockWidget *>(panel),
+              static_cast<QDockWidget *>(docks()->objectPanel())}) {
             dock->raise();
-            m_window->grab().save(QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
+            m_window->grab().save(
+                QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
         }
     }
 }
@@ -241,8 +245,9 @@ void TestLightsDock::badValuesAreRefused()
         const glm::dvec3 shown = c.field->value();
         type(c.field, c.value);
         QVERIFY2(!c.field->errorText().isEmpty(), "no reason shown");
-        QCOMPARE(c.field->value(), shown);                                            // the last valid value stays...
-        QCOMPARE(c.field->component(1)->text(), QLocale().toString(shown.y, 'g', 6)); // ...in the field too
+        QCOMPARE(c.field->value(), shown); // the last valid value stays...
+        QCOMPARE(c.field->component(1)->text(),
+                 QLocale().toString(shown.y, 'g', 6)); // ...in the field too
         QCOMPARE(stack->count(), 0);
         QCOMPARE(viewport()->currentScene(), scene);
     }
@@ -277,7 +282,8 @@ void TestLightsDock::markerDragIsOneUndoStep()
     const Camera camera = viewport()->camera();
     const glm::dvec3 light = scene.lights[0].position;
     const double aspect = double(viewport()->width()) / viewport()->height();
-    const glm::dvec4 clip = camera.projectionMatrix(aspect) * camera.viewMatrix() * glm::dvec4(light, 1.0);
+    const glm::dvec4 clip =
+        camera.projectionMatrix(aspect) * camera.viewMatrix() * glm::dvec4(light, 1.0);
     const QPoint marker(qRound((clip.x / clip.w + 1) * 0.5 * viewport()->width()),
                         qRound((1 - clip.y / clip.w) * 0.5 * viewport()->height()));
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, marker);

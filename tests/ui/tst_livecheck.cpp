@@ -29,7 +29,8 @@ constexpr int kTolerance = kDefaultCheckToleranceSteps;
 
 int maxChannelDifference(QRgb a, QRgb b)
 {
-    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                     std::abs(qBlue(a) - qBlue(b))});
 }
 
 } // namespace
@@ -55,17 +56,18 @@ private slots:
         QVERIFY(waitForVerdict(false));
         const CheckResult &result = *check->lastResult();
         const QString status = check->statusLabel()->text();
-        QVERIFY2(status.startsWith(QStringLiteral("✗")) && status.contains(QStringLiteral("reflect-incident")),
+        QVERIFY2(status.startsWith(QStringLiteral("✗"))
+                     && status.contains(QStringLiteral("reflect-incident")),
                  qPrintable(status));
         QCOMPARE(result.report.diagnosis.findings.front().key, ShaderMistake::ReflectIncident);
 
         // Where the mistake shows (its image off the exact one by more than
         // the tolerance) the heatmap is red-to-yellow, elsewhere dark green.
         const CheckReference &reference = *result.reference;
-        const QImage mistaken =
-            toQImage(std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
-                         return p.first == ShaderMistake::ReflectIncident;
-                     })->second);
+        const QImage mistaken = toQImage(
+            std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
+                return p.first == ShaderMistake::ReflectIncident;
+            })->second);
         const std::vector<int> errors = checkErrorSteps(toRgbImage(result.yours), reference);
         qint64 shows = 0, showsAndOff = 0, hidden = 0, hiddenAndExact = 0;
         for (int y = 0; y < result.exact.height(); ++y) {
@@ -74,7 +76,8 @@ private slots:
                 if (error < 0)
                     continue;
                 const bool mistakeShows =
-                    maxChannelDifference(mistaken.pixel(x, y), result.exact.pixel(x, y)) > kTolerance;
+                    maxChannelDifference(mistaken.pixel(x, y), result.exact.pixel(x, y))
+                    > kTolerance;
                 const QRgb heat = result.heatmap.pixel(x, y);
                 if (mistakeShows) {
                     ++shows;
@@ -85,8 +88,10 @@ private slots:
                 }
             }
         }
-        QVERIFY2(shows > 1000 && hidden > 1000, qPrintable(QStringLiteral("%1 %2").arg(shows).arg(hidden)));
-        QVERIFY2(showsAndOff >= 0.97 * shows, qPrintable(QStringLiteral("%1 of %2").arg(showsAndOff).arg(shows)));
+        QVERIFY2(shows > 1000 && hidden > 1000,
+                 qPrintable(QStringLiteral("%1 %2").arg(shows).arg(hidden)));
+        QVERIFY2(showsAndOff >= 0.97 * shows,
+                 qPrintable(QStringLiteral("%1 of %2").arg(showsAndOff).arg(shows)));
         QVERIFY2(hiddenAndExact >= 0.995 * hidden,
                  qPrintable(QStringLiteral("%1 of %2").arg(hiddenAndExact).arg(hidden)));
 
@@ -104,7 +109,8 @@ private slots:
         // Ctrl+click on the ellipsoid: the exact terms there, copyable.
         const QPoint centre = m_window->viewport()->rect().center() + QPoint(10, 10);
         QTest::mouseClick(m_window->viewport(), Qt::LeftButton, Qt::ControlModifier, centre);
-        QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")), kCheckTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")),
+                                 kCheckTimeoutMs);
         QVERIFY(check->inspector()->text().contains(QStringLiteral("N·L")));
         QVERIFY(check->overlay()->hasArrows());
         auto *copy = check->inspector()->findChild<QPushButton *>();

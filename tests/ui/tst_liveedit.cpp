@@ -40,11 +40,13 @@ const QString kOutputLine = QStringLiteral("fragColor = vec4(I, 1.0);");
 QHash<QString, QByteArray> hashShippedShaders()
 {
     QHash<QString, QByteArray> hashes;
-    QDirIterator it(sourcePath(QStringLiteral("shaders")), {QStringLiteral("*.vert"), QStringLiteral("*.frag")});
+    QDirIterator it(sourcePath(QStringLiteral("shaders")),
+                    {QStringLiteral("*.vert"), QStringLiteral("*.frag")});
     while (it.hasNext()) {
         QFile file(it.next());
         if (file.open(QIODevice::ReadOnly))
-            hashes.insert(file.fileName(), QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256));
+            hashes.insert(file.fileName(),
+                          QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256));
     }
     return hashes;
 }
@@ -175,8 +177,8 @@ void TestLiveEdit::typingChangesTheFrame()
     QTRY_VERIFY_WITH_TIMEOUT(applied.count() == 1, kBuildTimeoutMs);
     const qint64 applyMs = timer.elapsed();
     QVERIFY(frame() != before);
-    qInfo("edit to new program: %lld ms (debounce %d ms, warm-up draw %.0f ms off the GUI thread)", applyMs,
-          live()->debounceMs(), double(live()->lastApplied().warmNs) / 1e6);
+    qInfo("edit to new program: %lld ms (debounce %d ms, warm-up draw %.0f ms off the GUI thread)",
+          applyMs, live()->debounceMs(), double(live()->lastApplied().warmNs) / 1e6);
     QCOMPARE(live()->warmUp(), LiveShaderController::WarmUp::ViewportContext);
     QVERIFY2(live()->lastApplied().warmNs > 0, "the first draw was not made off the GUI thread");
     QVERIFY(waitForApplied());
@@ -200,10 +202,12 @@ void TestLiveEdit::errorStaysOnItsLineAndFixClearsIt()
 
     // "vec4(I * 0.5, 1.0) +;" : the parser stops at the ';' of the output line.
     typeAfter(QStringLiteral("vec4(I * 0.5, 1.0)"), QStringLiteral(" +"));
-    const int line = lineOf(dock()->text(ShaderStage::Fragment), QStringLiteral("fragColor = vec4("));
+    const int line =
+        lineOf(dock()->text(ShaderStage::Fragment), QStringLiteral("fragColor = vec4("));
     QVERIFY(line > 1);
-    QTRY_VERIFY_WITH_TIMEOUT(!fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty(),
-                             kBuildTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty(),
+        kBuildTimeoutMs);
     QCOMPARE(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error), QList<int>{line});
     QVERIFY2(!fragmentEditor()->annotationText(line).isEmpty(), "no boxed message under the line");
     QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("last good program")));
@@ -221,14 +225,16 @@ void TestLiveEdit::userUniformSurvivesRebuild()
 {
     openWindow();
     ShaderEditor *editor = fragmentEditor();
-    editor->insertAt(QStringLiteral("uniform float gain; // set by the user, not by the renderer\n"), 1, 0);
+    editor->insertAt(
+        QStringLiteral("uniform float gain; // set by the user, not by the renderer\n"), 1, 0);
     QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
     editor->replace(QStringLiteral("vec4(I * gain,"));
     QVERIFY(waitForApplied());
     const QImage black = frame(); // gain starts at 0
 
     {
-        const CurrentContext current(*viewport()); // the one way to the viewport's context, lent or not
+        const CurrentContext current(
+            *viewport()); // the one way to the viewport's context, lent or not
         ShaderProgram &program = viewport()->renderer().program();
         program.bind();
         program.setUniform("gain", 0.5f);
@@ -291,7 +297,8 @@ void TestLiveEdit::oneProgramAtATimeFromBuildToFirstDraw()
     for (qsizetype i = 1; i < seen.size(); ++i)
         if (seen[i] == State::Building)
             QCOMPARE(seen[i - 1], State::Idle); // never straight from another build or a first draw
-    QVERIFY2(seen.contains(State::Warming) == (live()->warmUp() == LiveShaderController::WarmUp::ViewportContext),
+    QVERIFY2(seen.contains(State::Warming)
+                 == (live()->warmUp() == LiveShaderController::WarmUp::ViewportContext),
              "the first draw happens in the lent viewport context exactly when that warm-up is on");
     QCOMPARE(live()->appliedHash(), live()->currentHash());
 }
@@ -340,7 +347,8 @@ void TestLiveEdit::presetLoadsBuildsAndSetsSceneShading()
 // it is killed with SIGKILL. The next start restores the edit and builds it.
 void TestLiveEdit::killedSessionIsRestored()
 {
-    const QString marker = QStringLiteral("// typed just before the crash %1").arg(QDateTime::currentMSecsSinceEpoch());
+    const QString marker = QStringLiteral("// typed just before the crash %1")
+                               .arg(QDateTime::currentMSecsSinceEpoch());
     QTemporaryDir home;
     // The child never builds (a 10-minute debounce), so the kill is certain
     // to land mid-edit, before any new program exists.
@@ -367,7 +375,8 @@ void TestLiveEdit::killedSessionIsRestored()
     QVERIFY2(child.waitForStarted(), qPrintable(child.errorString()));
 
     const auto journaled = [&] {
-        for (const QString &name : QDir(m_env.recoveryDir()).entryList({QStringLiteral("*.journal")})) {
+        for (const QString &name :
+             QDir(m_env.recoveryDir()).entryList({QStringLiteral("*.journal")})) {
             const auto record = RecoveryJournal::readFile(QDir(m_env.recoveryDir()).filePath(name));
             if (record && record->fragment.text.contains(marker.toUtf8()))
                 return true;
@@ -384,7 +393,7 @@ void TestLiveEdit::killedSessionIsRestored()
     QVERIFY(dock()->text(ShaderStage::Fragment).contains(marker.toUtf8()));
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));
     QVERIFY(!live()->isAutoBuildHeld());
-    QVERIFY(waitForApplied());                                         // a plain edit: built as usual
+    QVERIFY(waitForApplied()); // a plain edit: built as usual
     QVERIFY(RecoveryJournal(m_env.recoveryDir()).orphans().isEmpty()); // adopted, not offered again
 }
 
@@ -392,8 +401,8 @@ void TestLiveEdit::suspectShaderWaitsForF5()
 {
     RecoveryRecord record;
     const QByteArray shippedFragment = readShipped(QStringLiteral("phong.frag"));
-    record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")), readShipped(QStringLiteral("phong.vert")),
-                     false};
+    record.vertex = {sourcePath(QStringLiteral("shaders/phong.vert")),
+                     readShipped(QStringLiteral("phong.vert")), false};
     QByteArray suspect = shippedFragment;
     suspect.replace(kOutputLine.toUtf8(), "fragColor = vec4(I * 0.25, 1.0);");
     QVERIFY(suspect != shippedFragment);

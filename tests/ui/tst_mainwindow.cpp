@@ -140,8 +140,8 @@ void TestMainWindow::drag(Qt::MouseButton button, QPoint by)
 void TestMainWindow::zoom(int notches)
 {
     const QPointF centre = QPointF(viewport()->rect().center());
-    QWheelEvent wheel(centre, viewport()->mapToGlobal(centre), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
-                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent wheel(centre, viewport()->mapToGlobal(centre), QPoint(), QPoint(0, 120 * notches),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(viewport(), &wheel);
 }
 
@@ -155,7 +155,8 @@ void TestMainWindow::saveArtifact(const QString &name, const QImage &image) cons
 void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
 {
     QCOMPARE(viewport()->currentScene(), m_loaded);
-    QVERIFY2(m_window->windowTitle().contains(QStringLiteral("default.json")), qPrintable(m_window->windowTitle()));
+    QVERIFY2(m_window->windowTitle().contains(QStringLiteral("default.json")),
+             qPrintable(m_window->windowTitle()));
 
     const QImage image = frame();
     QVERIFY(!image.isNull());
@@ -163,7 +164,8 @@ void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
     saveArtifact(QStringLiteral("mainwindow-window.png"), m_window->grab().toImage());
 
     const FrameStats stats = analyse(image, toRgb(m_loaded.background));
-    QVERIFY2(stats.foregroundFraction > 0.05, qPrintable(QString::number(stats.foregroundFraction)));
+    QVERIFY2(stats.foregroundFraction > 0.05,
+             qPrintable(QString::number(stats.foregroundFraction)));
     QVERIFY(viewport()->showLightMarkers());
 }
 
@@ -189,7 +191,8 @@ void TestMainWindow::lightMarkersCanBeHidden()
     const QImage unmarked = frame();
     saveArtifact(QStringLiteral("mainwindow-no-markers.png"), unmarked);
     const FrameStats stats = analyse(unmarked, toRgb(m_loaded.background));
-    QVERIFY2(stats.foregroundFraction > 0.05, qPrintable(QString::number(stats.foregroundFraction)));
+    QVERIFY2(stats.foregroundFraction > 0.05,
+             qPrintable(QString::number(stats.foregroundFraction)));
     QVERIFY2(stats.warmFraction > 0.005, qPrintable(QString::number(stats.warmFraction)));
     QVERIFY2(stats.coolFraction > 0.005, qPrintable(QString::number(stats.coolFraction)));
 
@@ -207,11 +210,11 @@ void TestMainWindow::failedOpenKeepsCurrentScene_data()
 {
     QTest::addColumn<QByteArray>("contents");
     QTest::addColumn<QString>("expectedError");
-    QTest::newRow("malformed JSON") << QByteArray("{ \"mesh\": \"builtin:torus\", ")
-                                    << QStringLiteral("JSON syntax error");
-    QTest::newRow("missing mesh file") << QByteArray(
-        R"({"mesh": "no-such-mesh.obj", "lights": [{"position": [1, 1, 1]}]})")
-                                       << QStringLiteral("no-such-mesh.obj");
+    QTest::newRow("malformed JSON")
+        << QByteArray("{ \"mesh\": \"builtin:torus\", ") << QStringLiteral("JSON syntax error");
+    QTest::newRow("missing mesh file")
+        << QByteArray(R"({"mesh": "no-such-mesh.obj", "lights": [{"position": [1, 1, 1]}]})")
+        << QStringLiteral("no-such-mesh.obj");
 }
 
 void TestMainWindow::failedOpenKeepsCurrentScene()
@@ -247,7 +250,9 @@ void TestMainWindow::leftDragOrbitsCamera()
 
     QVERIFY(moved.eye != original.eye);
     QCOMPARE(moved.target, original.target); // orbiting turns about the target
-    QVERIFY(qAbs(glm::length(moved.eye - moved.target) - glm::length(original.eye - original.target)) < 1e-9);
+    QVERIFY(
+        qAbs(glm::length(moved.eye - moved.target) - glm::length(original.eye - original.target))
+        < 1e-9);
     QCOMPARE(moved.fovDeg, original.fovDeg);
     QCOMPARE(moved.nearPlane, original.nearPlane);
     QCOMPARE(moved.farPlane, original.farPlane);

@@ -51,7 +51,8 @@ namespace {
 
 constexpr int kLoadTimeoutMs = 120000;  // llvmpipe and a debug build can be slow
 constexpr int kBackgroundTolerance = 6; // 8-bit steps, per channel
-constexpr int kLargeGridSide = 710;     // 2 · 709² ≈ 1M triangles: loads for a good fraction of a second
+constexpr int kLargeGridSide =
+    710; // 2 · 709² ≈ 1M triangles: loads for a good fraction of a second
 constexpr int kTickIntervalMs = 10;
 
 QString treePath()
@@ -65,7 +66,8 @@ QString cloudPath()
 
 double foregroundFraction(const QImage &frame, const glm::dvec3 &background)
 {
-    const QRgb bg = qRgb(qRound(background.r * 255), qRound(background.g * 255), qRound(background.b * 255));
+    const QRgb bg =
+        qRgb(qRound(background.r * 255), qRound(background.g * 255), qRound(background.b * 255));
     const QImage image = frame.convertToFormat(QImage::Format_RGB32);
     qint64 foreground = 0;
     for (int y = 0; y < image.height(); ++y)
@@ -88,13 +90,16 @@ QByteArray largeGridObj(int side)
     obj.reserve(side * side * 60);
     for (int i = 0; i < side; ++i)
         for (int j = 0; j < side; ++j) {
-            const double x = double(i) / (side - 1) * 2.0 - 1.0, z = double(j) / (side - 1) * 2.0 - 1.0;
-            obj += "v " + QByteArray::number(x) + ' ' + QByteArray::number(0.1 * std::sin(6 * x) * std::cos(6 * z))
-                + ' ' + QByteArray::number(z) + '\n';
+            const double x = double(i) / (side - 1) * 2.0 - 1.0,
+                         z = double(j) / (side - 1) * 2.0 - 1.0;
+            obj += "v " + QByteArray::number(x) + ' '
+                + QByteArray::number(0.1 * std::sin(6 * x) * std::cos(6 * z)) + ' '
+                + QByteArray::number(z) + '\n';
         }
     for (int i = 0; i + 1 < side; ++i)
         for (int j = 0; j + 1 < side; ++j) {
-            const QByteArray a = QByteArray::number(i * side + j + 1), b = QByteArray::number(i * side + j + 2);
+            const QByteArray a = QByteArray::number(i * side + j + 1),
+                             b = QByteArray::number(i * side + j + 2);
             const QByteArray c = QByteArray::number((i + 1) * side + j + 1),
                              d = QByteArray::number((i + 1) * side + j + 2);
             obj += "f " + a + ' ' + b + ' ' + d + "\nf " + a + ' ' + d + ' ' + c + '\n';
@@ -165,7 +170,8 @@ void TestMeshLoading::initTestCase()
     qputenv("PHONGLAB_CACHE_DIR", QFile::encodeName(m_dir.filePath(QStringLiteral("cache"))));
     m_largeObj = m_dir.filePath(QStringLiteral("large_grid.obj"));
     writeFile(m_largeObj, largeGridObj(kLargeGridSide));
-    const SceneLoadResult loaded = loadSceneFile(sourcePath(QStringLiteral("assets/scenes/default.json")));
+    const SceneLoadResult loaded =
+        loadSceneFile(sourcePath(QStringLiteral("assets/scenes/default.json")));
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     m_default = *loaded.scene;
 }
@@ -192,8 +198,8 @@ bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     start();
     // Requests from the dock arrive queued: first the load starts (or ends at once) ...
-    const bool started =
-        QTest::qWaitFor([&] { return job->isRunning() || !loaded.isEmpty() || !failed.isEmpty(); }, 1000);
+    const bool started = QTest::qWaitFor(
+        [&] { return job->isRunning() || !loaded.isEmpty() || !failed.isEmpty(); }, 1000);
     // ... then it ends.
     const bool ended = QTest::qWaitFor([&] { return !job->isRunning(); }, kLoadTimeoutMs);
     if (!started || !ended)
@@ -275,10 +281,12 @@ void TestMeshLoading::openedMeshIsDrawnFittedAndListed()
     // The dock lists what loading found, as MeshStats reports it.
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QCOMPARE(dock()->objectTree()->topLevelItem(0)->text(0), QStringLiteral("tree.obj"));
-    QCOMPARE(dock()->objectTree()->topLevelItem(0)->toolTip(0), QDir::toNativeSeparators(scene.objects[0].mesh));
+    QCOMPARE(dock()->objectTree()->topLevelItem(0)->toolTip(0),
+             QDir::toNativeSeparators(scene.objects[0].mesh));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Vertices")), countText(stats.vertices));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Triangles")), countText(stats.triangles));
-    QCOMPARE(dockField(dock(), 0, QStringLiteral("Split vertices")), countText(stats.splitVertices));
+    QCOMPARE(dockField(dock(), 0, QStringLiteral("Split vertices")),
+             countText(stats.splitVertices));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), normalsDescription(stats, false));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Bounds")), boundsDescription(stats));
     QVERIFY(!dockField(dock(), 0, QStringLiteral("Load time")).isEmpty());
@@ -319,7 +327,8 @@ void TestMeshLoading::brokenMeshFileKeepsScene()
              qPrintable(m_window->statusBar()->currentMessage()));
     QMessageBox *box = visibleMessageBox();
     QVERIFY(box);
-    QVERIFY2(box->text().contains(QStringLiteral("x.obj")) && box->text().contains(m_lastError.section(u'\n', 0, 0)),
+    QVERIFY2(box->text().contains(QStringLiteral("x.obj"))
+                 && box->text().contains(m_lastError.section(u'\n', 0, 0)),
              qPrintable(box->text()));
     QVERIFY(!m_window->recentFiles()->files().contains(QFileInfo(path).absoluteFilePath()));
 }
@@ -337,7 +346,8 @@ void TestMeshLoading::unsupportedFileIsRefused()
                  && notAMesh.error().contains(QStringLiteral(".obj")),
              qPrintable(notAMesh.error()));
     // A scene goes on its own, not mixed with meshes.
-    const Result<> mixed = m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
+    const Result<> mixed =
+        m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
     QVERIFY(!mixed);
     QVERIFY2(mixed.error().contains(QStringLiteral("scene")), qPrintable(mixed.error()));
     QCOMPARE(started.count(), 0);
@@ -375,8 +385,8 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     ticker.stop();
     const qint64 loadMs = loadTime.elapsed();
     QVERIFY2(ok, qPrintable(m_lastError));
-    qInfo("large mesh loaded in %lld ms; %lld ticks, longest gap %lld ms, %lld progress reports", loadMs, ticks,
-          longestGapMs, qint64(progress.count()));
+    qInfo("large mesh loaded in %lld ms; %lld ticks, longest gap %lld ms, %lld progress reports",
+          loadMs, ticks, longestGapMs, qint64(progress.count()));
     QVERIFY(progressShown);
     QVERIFY(!m_window->loadProgress()->isVisible());
     QVERIFY(ticks >= 3);
@@ -425,7 +435,8 @@ void TestMeshLoading::hangingReaderIsStoppedAndSceneKept()
     qunsetenv("PHONGLAB_IMPORT_FAULT");
     qunsetenv("PHONGLAB_IMPORT_TIMEOUT_S");
     QVERIFY(!loaded);
-    QVERIFY2(m_lastError.contains(QStringLiteral("stopped answering after 1 s")), qPrintable(m_lastError));
+    QVERIFY2(m_lastError.contains(QStringLiteral("stopped answering after 1 s")),
+             qPrintable(m_lastError));
     QCOMPARE(viewport()->currentScene(), before);
     QVERIFY(importChildren().isEmpty());
     QMessageBox *box = visibleMessageBox();
@@ -453,7 +464,8 @@ void TestMeshLoading::cancelEndsTheImportChild()
     QVERIFY(!m_window->loadJob()->isRunning());
     QTRY_VERIFY_WITH_TIMEOUT(importChildren().isEmpty(), 2000);
     const qint64 childGoneMs = clock.elapsed();
-    qInfo("Cancel: window idle after %lld ms, import child gone after %lld ms", toIdleMs, childGoneMs);
+    qInfo("Cancel: window idle after %lld ms, import child gone after %lld ms", toIdleMs,
+          childGoneMs);
     QCOMPARE(viewport()->currentScene(), before);
     QVERIFY(!visibleMessageBox());
 }
@@ -514,13 +526,16 @@ void TestMeshLoading::normalsSurviveSaveAndReopen()
     auto *crease = dock()->normalsEditor()->findChild<QCheckBox *>(QStringLiteral("creaseEnabled"));
     auto *angle = dock()->normalsEditor()->findChild<QSpinBox *>(QStringLiteral("creaseAngle"));
     QVERIFY(crease && angle);
-    QVERIFY(waitForLoad([&] { m_window->changeNormals(0, {NormalMethod::AreaWeighted, std::nullopt}); }));
+    QVERIFY(waitForLoad([&] {
+        m_window->changeNormals(0, {NormalMethod::AreaWeighted, std::nullopt});
+    }));
     QVERIFY(waitForLoad([&] { crease->click(); }));
     QVERIFY(waitForLoad([&] { angle->setValue(40); }));
 
     const NormalOptions expected{NormalMethod::AreaWeighted, 40.0};
     QCOMPARE(viewport()->currentScene().objects[0].normals, expected);
-    QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), QStringLiteral("computed (area, crease 40°)"));
+    QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")),
+             QStringLiteral("computed (area, crease 40°)"));
 
     const QString path = m_dir.filePath(QStringLiteral("tree-scene.json"));
     QString error;
@@ -549,10 +564,11 @@ void TestMeshLoading::droppedFilesOpenSideBySide()
     QCOMPARE(QFileInfo(scene.objects[1].mesh).fileName(), QStringLiteral("cloud.obj"));
     // Each fitted, centred at x = ∓spacing/2.
     for (int i = 0; i < 2; ++i) {
-        const MeshStats stats = viewport()->meshInfo().value(meshKey(scene, scene.objects[i])).stats;
+        const MeshStats stats =
+            viewport()->meshInfo().value(meshKey(scene, scene.objects[i])).stats;
         const Transform &t = scene.objects[i].transform;
-        const glm::dvec3 centreWorld =
-            t.translate + t.scale * (glm::dvec3(stats.boundsMin) + glm::dvec3(stats.boundsMax)) * 0.5;
+        const glm::dvec3 centreWorld = t.translate
+            + t.scale * (glm::dvec3(stats.boundsMin) + glm::dvec3(stats.boundsMax)) * 0.5;
         QVERIFY(glm::length(centreWorld - glm::dvec3((i - 0.5) * kSideBySideSpacing, 0, 0)) < 1e-6);
     }
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 2);
@@ -594,7 +610,8 @@ void TestMeshLoading::meshOpenedBeforeFirstShow()
 void TestMeshLoading::recentFilesRememberAndForget()
 {
     QVERIFY2(openAndWait({treePath()}), qPrintable(m_lastError));
-    QCOMPARE(m_window->recentFiles()->files(), QStringList{QFileInfo(treePath()).absoluteFilePath()});
+    QCOMPARE(m_window->recentFiles()->files(),
+             QStringList{QFileInfo(treePath()).absoluteFilePath()});
 
     const QString doomed = m_dir.filePath(QStringLiteral("doomed.obj"));
     QVERIFY(QFile::copy(treePath(), doomed));
@@ -618,7 +635,8 @@ void TestMeshLoading::recentFilesRememberAndForget()
     entry->trigger();
     QTRY_VERIFY(visibleMessageBox());
     QVERIFY(visibleMessageBox()->text().contains(QStringLiteral("no longer exists")));
-    QCOMPARE(m_window->recentFiles()->files(), QStringList{QFileInfo(treePath()).absoluteFilePath()});
+    QCOMPARE(m_window->recentFiles()->files(),
+             QStringList{QFileInfo(treePath()).absoluteFilePath()});
     QCOMPARE(viewport()->currentScene(), before);
 
     m_window->recentFiles()->clear();
@@ -633,7 +651,8 @@ void TestMeshLoading::builtinShapesHaveNoNormalsControl()
     QCOMPARE(dock()->objectTree()->topLevelItem(0)->text(0), QStringLiteral("builtin:torus"));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), QStringLiteral("analytic (exact)"));
     QVERIFY(!dock()->normalsEditor()->isEnabled());
-    QCOMPARE(dock()->normalsEditor()->toolTip(), QStringLiteral("builtin shapes have exact analytic normals"));
+    QCOMPARE(dock()->normalsEditor()->toolTip(),
+             QStringLiteral("builtin shapes have exact analytic normals"));
 }
 
 void TestMeshLoading::warningsAreListed()
@@ -651,7 +670,8 @@ void TestMeshLoading::warningsAreListed()
 
     const QTreeWidgetItem *object = dock()->objectTree()->topLevelItem(0);
     QVERIFY(object);
-    QVERIFY2(object->text(1).contains(QString::number(reference.warnings.size())), qPrintable(object->text(1)));
+    QVERIFY2(object->text(1).contains(QString::number(reference.warnings.size())),
+             qPrintable(object->text(1)));
     QVERIFY(!object->icon(1).isNull());
     const QTreeWidgetItem *list = nullptr;
     for (int i = 0; i < object->childCount(); ++i)

@@ -43,7 +43,8 @@ void TestPerformanceDock::initTestCase()
 {
     m_env.isolate();
     m_env.useFreshRecoveryDir("discard"); // one for the whole test case
-    QVERIFY2(!qEnvironmentVariableIsEmpty("PHONGLAB_EXE"), "the dock runs the phonglab binary: set PHONGLAB_EXE");
+    QVERIFY2(!qEnvironmentVariableIsEmpty("PHONGLAB_EXE"),
+             "the dock runs the phonglab binary: set PHONGLAB_EXE");
 }
 
 void TestPerformanceDock::openWindow()
@@ -62,7 +63,8 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
     qint64 trianglesBefore = 0;
     connect(
         viewport(), &Viewport::frameRendered, this,
-        [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; }, Qt::SingleShotConnection);
+        [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; },
+        Qt::SingleShotConnection);
     viewport()->update();
     QTRY_VERIFY(trianglesBefore > 0);
 
@@ -83,7 +85,8 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
         QVERIFY(row.sceneLights && row.scene == dock()->rows().front().scene);
 
     // The window now shows that model.
-    QTRY_VERIFY_WITH_TIMEOUT(viewport()->currentScene().shading == *shadingFromName(chosen.method), 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->currentScene().shading == *shadingFromName(chosen.method),
+                             60000);
     for (const SceneObject &object : viewport()->currentScene().objects)
         QTRY_COMPARE(object.detail, chosen.detail);
     qint64 trianglesAfter = 0;
@@ -93,7 +96,8 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
     QTRY_VERIFY(trianglesAfter > 0);
     QVERIFY(trianglesAfter <= trianglesBefore);
     QCOMPARE(trianglesAfter, chosen.triangles);
-    QVERIFY2(dock()->reportText().contains(QStringLiteral("Saved")), qPrintable(dock()->reportText()));
+    QVERIFY2(dock()->reportText().contains(QStringLiteral("Saved")),
+             qPrintable(dock()->reportText()));
 
     // The chart of this measurement: a series per method plus the front.
     auto *view = dock()->findChild<QChartView *>();

@@ -44,7 +44,8 @@ void writeExternally(const QString &path, const QByteArray &code)
     QVERIFY(file.commit());
 }
 
-ShaderDiagnostic diagnostic(BuildStep step, Severity severity, int line, int column, const QString &message)
+ShaderDiagnostic diagnostic(BuildStep step, Severity severity, int line, int column,
+                            const QString &message)
 {
     ShaderDiagnostic d;
     d.step = step;
@@ -59,13 +60,15 @@ ShaderDiagnostic diagnostic(BuildStep step, Severity severity, int line, int col
 int styleAt(ShaderEditor &editor, int line, int index)
 {
     editor.SendScintilla(QsciScintilla::SCI_COLOURISE, 0, -1);
-    return int(editor.SendScintilla(QsciScintilla::SCI_GETSTYLEAT, editor.positionFromLineIndex(line, index)));
+    return int(editor.SendScintilla(QsciScintilla::SCI_GETSTYLEAT,
+                                    editor.positionFromLineIndex(line, index)));
 }
 
 QString currentCompletion(ShaderEditor &editor)
 {
     QByteArray buffer(256, '\0');
-    const long size = editor.SendScintilla(QsciScintilla::SCI_AUTOCGETCURRENTTEXT, 0UL, buffer.data());
+    const long size =
+        editor.SendScintilla(QsciScintilla::SCI_AUTOCGETCURRENTTEXT, 0UL, buffer.data());
     return QString::fromUtf8(buffer.left(size));
 }
 
@@ -114,8 +117,14 @@ private slots:
     void dockShowsErrorAnnotation();
 
 private:
-    QString shippedPath(const QString &name) const { return m_dir.filePath(QStringLiteral("shipped/") + name); }
-    QString ownPath(const QString &name) const { return m_dir.filePath(QStringLiteral("own/") + name); }
+    QString shippedPath(const QString &name) const
+    {
+        return m_dir.filePath(QStringLiteral("shipped/") + name);
+    }
+    QString ownPath(const QString &name) const
+    {
+        return m_dir.filePath(QStringLiteral("own/") + name);
+    }
     // A dock that treats the temporary "shipped" folder as PhongLab's own.
     void configure(ShaderDock &dock) const;
     void loadShipped(ShaderDock &dock) const;
@@ -130,7 +139,8 @@ void TestShaderEditor::initTestCase()
     QVERIFY(QDir().mkpath(m_dir.filePath(QStringLiteral("shipped"))));
     QVERIFY(QDir().mkpath(m_dir.filePath(QStringLiteral("own"))));
     for (const char *name : {"phong.vert", "phong.frag"}) {
-        const QString source = QStringLiteral(PHONGLAB_SOURCE_DIR "/shaders/") + QLatin1String(name);
+        const QString source =
+            QStringLiteral(PHONGLAB_SOURCE_DIR "/shaders/") + QLatin1String(name);
         QVERIFY(QFile::copy(source, shippedPath(QLatin1String(name))));
     }
 }
@@ -177,8 +187,9 @@ void TestShaderEditor::lexerColoursKeywordsBuiltinsAndComments()
     QCOMPARE(styleAt(editor, 1, 0), int(QsciLexerCPP::Keyword));
 
     const GlslLexer *lexer = editor.glslLexer();
-    const QList<QColor> colours = {lexer->color(keyword), lexer->color(builtin), lexer->color(comment),
-                                   lexer->color(directive), lexer->color(QsciLexerCPP::Identifier)};
+    const QList<QColor> colours = {lexer->color(keyword), lexer->color(builtin),
+                                   lexer->color(comment), lexer->color(directive),
+                                   lexer->color(QsciLexerCPP::Identifier)};
     for (qsizetype i = 0; i < colours.size(); ++i)
         for (qsizetype j = i + 1; j < colours.size(); ++j)
             QVERIFY2(colours[i] != colours[j],
@@ -216,9 +227,11 @@ void TestShaderEditor::warningUsesItsOwnMarker()
     editor.setCode(kSmallShader);
     QVERIFY(editor.markerNumber(Severity::Error) != editor.markerNumber(Severity::Warning));
     editor.setDiagnostics(
-        {diagnostic(BuildStep::CompileFragment, Severity::Warning, 4, 0, QStringLiteral("unused input")),
+        {diagnostic(BuildStep::CompileFragment, Severity::Warning, 4, 0,
+                    QStringLiteral("unused input")),
          diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 0, QStringLiteral("bad")),
-         diagnostic(BuildStep::CompileFragment, Severity::Warning, 9, 0, QStringLiteral("also odd"))});
+         diagnostic(BuildStep::CompileFragment, Severity::Warning, 9, 0,
+                    QStringLiteral("also odd"))});
     QCOMPARE(editor.markerLines(Severity::Warning), (QList<int>{4, 9}));
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{9});
     QCOMPARE(editor.annotationText(4), QStringLiteral("warning: unused input"));
@@ -226,7 +239,8 @@ void TestShaderEditor::warningUsesItsOwnMarker()
     QVERIFY(editor.underlinedText(4).isEmpty()); // no column, no squiggle
 
     // Replacing the diagnostics drops the old ones.
-    editor.setDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 2, 0, QStringLiteral("x"))});
+    editor.setDiagnostics(
+        {diagnostic(BuildStep::CompileFragment, Severity::Error, 2, 0, QStringLiteral("x"))});
     QCOMPARE(editor.markerLines(Severity::Error), QList<int>{2});
     QVERIFY(editor.markerLines(Severity::Warning).isEmpty());
     QVERIFY(editor.annotationText(9).isEmpty());
@@ -235,21 +249,25 @@ void TestShaderEditor::warningUsesItsOwnMarker()
 void TestShaderEditor::diagnosticsWithoutLineOnlyInList()
 {
     ShaderDock dock;
-    dock.setSources({QStringLiteral("a.vert"), "void main() {}\n"}, {QStringLiteral("a.frag"), kSmallShader});
-    dock.showDiagnostics(
-        {diagnostic(BuildStep::CompileFragment, Severity::Error, 0, 0, QStringLiteral("out of memory"))});
+    dock.setSources({QStringLiteral("a.vert"), "void main() {}\n"},
+                    {QStringLiteral("a.frag"), kSmallShader});
+    dock.showDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 0, 0,
+                                     QStringLiteral("out of memory"))});
     QVERIFY(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error).isEmpty());
     QCOMPARE(dock.diagnosticList()->count(), 1);
-    QCOMPARE(dock.diagnosticList()->item(0)->text(), QStringLiteral("phong.frag: error: out of memory"));
+    QCOMPARE(dock.diagnosticList()->item(0)->text(),
+             QStringLiteral("phong.frag: error: out of memory"));
 }
 
 void TestShaderEditor::linkErrorsGoToFragmentEditor()
 {
     ShaderDock dock;
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, {QStringLiteral("a.frag"), kSmallShader});
-    dock.showDiagnostics({diagnostic(BuildStep::Link, Severity::Error, 0, 0, QStringLiteral("no main")),
-                          diagnostic(BuildStep::Link, Severity::Error, 4, 0, QStringLiteral("type mismatch")),
-                          diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 0, QStringLiteral("unused"))});
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader},
+                    {QStringLiteral("a.frag"), kSmallShader});
+    dock.showDiagnostics(
+        {diagnostic(BuildStep::Link, Severity::Error, 0, 0, QStringLiteral("no main")),
+         diagnostic(BuildStep::Link, Severity::Error, 4, 0, QStringLiteral("type mismatch")),
+         diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 0, QStringLiteral("unused"))});
     QCOMPARE(dock.diagnosticList()->count(), 3);
     QCOMPARE(dock.diagnosticList()->errorCount(), 2);
     QCOMPARE(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error), QList<int>{4});
@@ -261,12 +279,14 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
 {
     ShaderDock dock;
     dock.resize(600, 500);
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, {QStringLiteral("a.frag"), kSmallShader});
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader},
+                    {QStringLiteral("a.frag"), kSmallShader});
     dock.tabs()->setCurrentIndex(0);
     dock.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dock));
-    dock.showDiagnostics({diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 2, QStringLiteral("w")),
-                          diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 17, QStringLiteral("e"))});
+    dock.showDiagnostics(
+        {diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 2, QStringLiteral("w")),
+         diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 17, QStringLiteral("e"))});
     QSignalSpy spy(dock.diagnosticList(), &DiagnosticList::diagnosticActivated);
 
     DiagnosticList *list = dock.diagnosticList();
@@ -356,27 +376,28 @@ void TestShaderEditor::callTipExplainsIncidentVector()
 
     ShaderEditor editor;
     QList<int> shifts;
-    const QStringList tips =
-        editor.api()->callTips({QStringLiteral("reflect"), QString()}, 0, QsciScintilla::CallTipsNoContext, shifts);
+    const QStringList tips = editor.api()->callTips({QStringLiteral("reflect"), QString()}, 0,
+                                                    QsciScintilla::CallTipsNoContext, shifts);
     QCOMPARE(tips, QStringList{tip});
     QVERIFY(editor.api()
-                ->callTips({QStringLiteral("kd"), QString()}, 0, QsciScintilla::CallTipsNoContext, shifts)
+                ->callTips({QStringLiteral("kd"), QString()}, 0, QsciScintilla::CallTipsNoContext,
+                           shifts)
                 .isEmpty());
 }
 
 void TestShaderEditor::declaredNamesCoverDeclarationForms()
 {
-    const QString code =
-        QStringLiteral("// uniform vec3 commentedOut;\n"
-                       "struct Light { vec3 position; float power; };\n"
-                       "uniform Light lights[4];\n"
-                       "layout(location = 0) in vec3 positionModel;\n"
-                       "uniform mat4 modelMatrix, viewMatrix;\n"
-                       "const int MAX_LIGHTS = 8;\n"
-                       "float shade(vec3 N, in vec3 L) { float a = 1.0, b = max(a, 2.0); return a * b; }\n");
+    const QString code = QStringLiteral(
+        "// uniform vec3 commentedOut;\n"
+        "struct Light { vec3 position; float power; };\n"
+        "uniform Light lights[4];\n"
+        "layout(location = 0) in vec3 positionModel;\n"
+        "uniform mat4 modelMatrix, viewMatrix;\n"
+        "const int MAX_LIGHTS = 8;\n"
+        "float shade(vec3 N, in vec3 L) { float a = 1.0, b = max(a, 2.0); return a * b; }\n");
     const QStringList names = GlslApi::parseDeclaredNames(code);
-    for (const char *name : {"Light", "position", "power", "lights", "positionModel", "modelMatrix", "viewMatrix",
-                             "MAX_LIGHTS", "shade", "N", "L", "a", "b"})
+    for (const char *name : {"Light", "position", "power", "lights", "positionModel", "modelMatrix",
+                             "viewMatrix", "MAX_LIGHTS", "shade", "N", "L", "a", "b"})
         QVERIFY2(names.contains(QLatin1String(name)), name);
     QVERIFY(!names.contains(QStringLiteral("commentedOut")));
     QVERIFY(!names.contains(QStringLiteral("max")));
@@ -413,7 +434,8 @@ void TestShaderEditor::editingShippedShaderWritesUserCopy()
     QVERIFY(dock.save(ShaderStage::Vertex));
     QCOMPARE(dock.filePath(ShaderStage::Vertex),
              QDir(ShaderFileSet::userFolder()).filePath(QStringLiteral("phong.vert")));
-    QCOMPARE(readAll(shippedPath(QStringLiteral("phong.vert"))), readAll(dock.filePath(ShaderStage::Vertex)));
+    QCOMPARE(readAll(shippedPath(QStringLiteral("phong.vert"))),
+             readAll(dock.filePath(ShaderStage::Vertex)));
 
     // Embedded resources are shipped too.
     QVERIFY(dock.files()->isShipped(QStringLiteral(":/shaders/phong.frag")));
@@ -436,7 +458,8 @@ void TestShaderEditor::saveAsRefusesShippedFolder()
     loadShipped(dock);
     const QByteArray original = readAll(shippedPath(QStringLiteral("phong.frag")));
     dock.editor(ShaderStage::Fragment)->insertAt(QStringLiteral("// x\n"), 0, 0);
-    const Result<> overShipped = dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")));
+    const Result<> overShipped =
+        dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("phong.frag")));
     QVERIFY(!overShipped);
     QVERIFY(overShipped.error().contains(QStringLiteral("never overwritten")));
     QVERIFY(!dock.saveAs(ShaderStage::Fragment, shippedPath(QStringLiteral("other.frag"))));
@@ -592,7 +615,8 @@ void TestShaderEditor::openPairAssignsStagesByName()
 void TestShaderEditor::f5AndPresetBoxEmitRequests()
 {
     ShaderDock dock;
-    dock.setSources({QStringLiteral("a.vert"), kSmallShader}, {QStringLiteral("a.frag"), kSmallShader});
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader},
+                    {QStringLiteral("a.frag"), kSmallShader});
     dock.show();
     dock.activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(&dock));

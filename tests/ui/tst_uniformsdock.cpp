@@ -62,7 +62,10 @@ private:
     void typeInto(UniformNumberField *field, const QString &text);
     float programValue(const QByteArray &name);
     UniformsDock *dock() const { return m_window->uniformsDock(); }
-    UniformFloatRow *gainRow() const { return qobject_cast<UniformFloatRow *>(dock()->row(QStringLiteral("gain"))); }
+    UniformFloatRow *gainRow() const
+    {
+        return qobject_cast<UniformFloatRow *>(dock()->row(QStringLiteral("gain")));
+    }
 };
 
 void TestUniformsDock::initTestCase()
@@ -188,7 +191,8 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QVERIFY_OK(m_window->saveScene(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
-    QCOMPARE(saved.scene->uniforms.size(), std::size_t(1)); // only the user's: not kd, not the matrices
+    QCOMPARE(saved.scene->uniforms.size(),
+             std::size_t(1)); // only the user's: not kd, not the matrices
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
@@ -239,7 +243,8 @@ void TestUniformsDock::optimisedAwayUniformIsFlagged()
     QVERIFY(row);
     bool explained = false;
     for (const QLabel *label : row->findChildren<QLabel *>())
-        explained |= label->text() == QStringLiteral("declared but optimised away: not used by the program");
+        explained |=
+            label->text() == QStringLiteral("declared but optimised away: not used by the program");
     QVERIFY(explained);
     QVERIFY(!qobject_cast<UniformFloatRow *>(row));
 }
@@ -248,9 +253,10 @@ void TestUniformsDock::colourIntAndBoolRows()
 {
     openWindow();
     ShaderEditor *editor = fragmentEditor();
-    editor->insertAt(QStringLiteral("uniform vec3 tint; // @color\nuniform int steps; // @range 0 8\n"
-                                    "uniform bool flip;\n"),
-                     1, 0);
+    editor->insertAt(
+        QStringLiteral("uniform vec3 tint; // @color\nuniform int steps; // @range 0 8\n"
+                       "uniform bool flip;\n"),
+        1, 0);
     QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
     editor->replace(QStringLiteral("vec4(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
     m_window->shaderDock()->compileAction()->trigger();

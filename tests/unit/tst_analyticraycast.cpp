@@ -81,8 +81,9 @@ private slots:
         const ReferenceImage image = render(scene, 101, 101);
         QVERIFY(image.covered(50, 50));
         QVERIFY(std::abs(image.depthAt(50, 50) - 3.0) < 1e-12);
-        const glm::dvec3 expected = phongIntensity({0.0, 0.0, -3.0}, {0.0, 0.0, 1.0}, scene.objects[0].material,
-                                                   scene.ambient, cameraLights(scene));
+        const glm::dvec3 expected =
+            phongIntensity({0.0, 0.0, -3.0}, {0.0, 0.0, 1.0}, scene.objects[0].material,
+                           scene.ambient, cameraLights(scene));
         QVERIFY(near(image.colorAt(50, 50), expected, 1e-12));
         QVERIFY(!image.covered(0, 0));
     }
@@ -146,15 +147,17 @@ private slots:
 
         // The ray down the axis passes through the hole (radius R - r = 0.6).
         QVERIFY(!image.covered(100, 100));
-        QVERIFY(!image.covered(110, 100)); // ndc.x = 20/201: x ≤ 0.48 for |y| ≤ 0.4, inside the hole
+        QVERIFY(
+            !image.covered(110, 100)); // ndc.x = 20/201: x ≤ 0.48 for |y| ≤ 0.4, inside the hole
         // Ring hit, both sides.
         QVERIFY(image.covered(125, 100));
         QVERIFY(image.covered(75, 100));
         QVERIFY(image.covered(100, 125));
         QVERIFY2(std::abs(image.depthAt(125, 100) - 4.02) < 1e-9,
                  qPrintable(QString::number(image.depthAt(125, 100), 'g', 17)));
-        const glm::dvec3 expected = phongIntensity({1.0, 0.0, -4.02}, {0.0, 0.0, 1.0}, scene.objects[0].material,
-                                                   scene.ambient, cameraLights(scene));
+        const glm::dvec3 expected =
+            phongIntensity({1.0, 0.0, -4.02}, {0.0, 0.0, 1.0}, scene.objects[0].material,
+                           scene.ambient, cameraLights(scene));
         QVERIFY(near(image.colorAt(125, 100), expected, 1e-9));
     }
 
@@ -162,14 +165,18 @@ private slots:
     {
         // Down the Y axis at x = 1: first meets the tube top at y = 0.4 (t = 4.6).
         const double R = 1.0, r = 0.4;
-        QCOMPARE_LE(std::abs(*intersectTorus({{1.0, 5.0, 0.0}, {0.0, -1.0, 0.0}}, 0.0, 100.0, R, r) - 4.6), 1e-12);
+        QCOMPARE_LE(
+            std::abs(*intersectTorus({{1.0, 5.0, 0.0}, {0.0, -1.0, 0.0}}, 0.0, 100.0, R, r) - 4.6),
+            1e-12);
         // Along +X through the centre: outer wall at x = -1.4 (t = 3.6); starting
         // past it (tMin = 4) the next wall is the hole's at x = -0.6 (t = 4.4).
         const Ray alongX{{-5.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
         QCOMPARE_LE(std::abs(*intersectTorus(alongX, 0.0, 100.0, R, r) - 3.6), 1e-12);
         QCOMPARE_LE(std::abs(*intersectTorus(alongX, 4.0, 100.0, R, r) - 4.4), 1e-12);
         // A non-unit direction scales t: same ray, twice as fast.
-        QCOMPARE_LE(std::abs(*intersectTorus({{-5.0, 0.0, 0.0}, {2.0, 0.0, 0.0}}, 0.0, 100.0, R, r) - 1.8), 1e-12);
+        QCOMPARE_LE(
+            std::abs(*intersectTorus({{-5.0, 0.0, 0.0}, {2.0, 0.0, 0.0}}, 0.0, 100.0, R, r) - 1.8),
+            1e-12);
         // Down the axis: through the hole.
         QVERIFY(!intersectTorus({{0.0, 5.0, 0.0}, {0.0, -1.0, 0.0}}, 0.0, 100.0, R, r));
         // Normal at the outer equator and at the tube top.
@@ -225,8 +232,10 @@ private slots:
         QVERIFY(std::abs(image.depthAt(148, 99) - (4.0 - s)) < 1e-9);
         const Material &m = scene.objects[0].material;
         const auto lights = cameraLights(scene);
-        const glm::dvec3 right = phongIntensity(position, {std::sqrt(2.0) / 4.0, 0.0, s}, m, scene.ambient, lights);
-        const glm::dvec3 wrong = phongIntensity(position, {std::sqrt(2.0), 0.0, s}, m, scene.ambient, lights);
+        const glm::dvec3 right =
+            phongIntensity(position, {std::sqrt(2.0) / 4.0, 0.0, s}, m, scene.ambient, lights);
+        const glm::dvec3 wrong =
+            phongIntensity(position, {std::sqrt(2.0), 0.0, s}, m, scene.ambient, lights);
         QVERIFY(near(image.colorAt(148, 99), right, 1e-9));
         QVERIFY(!near(right, wrong, 0.05)); // the case would catch a wrong normal transform
     }
@@ -274,7 +283,8 @@ private slots:
         scene.objects.push_back(object(QStringLiteral("models/bunny.obj")));
         const Result<ReferenceImage> unknown = raycastScene(scene, 32, 32);
         QVERIFY(!unknown);
-        QVERIFY2(unknown.error().contains(QStringLiteral("models/bunny.obj")), qPrintable(unknown.error()));
+        QVERIFY2(unknown.error().contains(QStringLiteral("models/bunny.obj")),
+                 qPrintable(unknown.error()));
         const Result<ReferenceImage> empty = raycastScene(sphereScene(), 0, 32);
         QVERIFY(!empty);
         QVERIFY2(empty.error().contains(QStringLiteral("0x32")), qPrintable(empty.error()));
@@ -294,7 +304,8 @@ private slots:
         };
         QCOMPARE(rgb(0, 0), (std::array<int, 3>{encodeChannel(0.1), 128, 255}));
         const glm::dvec3 &I = reference.colorAt(50, 50);
-        QCOMPARE(rgb(50, 50), (std::array<int, 3>{encodeChannel(I.r), encodeChannel(I.g), encodeChannel(I.b)}));
+        QCOMPARE(rgb(50, 50),
+                 (std::array<int, 3>{encodeChannel(I.r), encodeChannel(I.g), encodeChannel(I.b)}));
     }
 };
 

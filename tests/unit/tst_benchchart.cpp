@@ -47,7 +47,8 @@ std::vector<BenchRow> syntheticRows()
                     const double methodError = (3 - m) * 1.5 + (m == 2 ? 0.4 : 0.0);
                     r.rmse = methodError + (1 - detail) * 4;
                     r.maxError = int(r.rmse * 3);
-                    r.psnr = r.rmse > 0 ? 20 * std::log10(255 / r.rmse) : std::numeric_limits<double>::infinity();
+                    r.psnr = r.rmse > 0 ? 20 * std::log10(255 / r.rmse)
+                                        : std::numeric_limits<double>::infinity();
                     rows.push_back(r);
                 }
             }
@@ -223,14 +224,15 @@ private slots:
     {
         QTemporaryDir dir;
         const QString missing = dir.filePath("no/such/folder/charts.png");
-        const Result<> noPngFolder = writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"));
+        const Result<> noPngFolder =
+            writeSpeedAccuracyCharts(syntheticRows(), missing, dir.filePath("ok.svg"));
         QVERIFY(!noPngFolder);
         QVERIFY2(noPngFolder.error().contains(missing), qPrintable(noPngFolder.error()));
         // Nothing half-written beside it.
         QVERIFY(!QFile::exists(dir.filePath("ok.svg")));
 
-        const Result<> noSvgFolder =
-            writeSpeedAccuracyCharts(syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"));
+        const Result<> noSvgFolder = writeSpeedAccuracyCharts(
+            syntheticRows(), dir.filePath("ok.png"), dir.filePath("missing/charts.svg"));
         QVERIFY(!noSvgFolder);
         QVERIFY2(noSvgFolder.error().contains("charts.svg"), qPrintable(noSvgFolder.error()));
         QVERIFY(!QFile::exists(dir.filePath("ok.png")));
@@ -239,7 +241,8 @@ private slots:
     void nothingToDrawIsAnError()
     {
         QTemporaryDir dir;
-        const Result<> refusal = writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"));
+        const Result<> refusal =
+            writeSpeedAccuracyCharts({}, dir.filePath("a.png"), dir.filePath("a.svg"));
         QVERIFY(!refusal);
         QVERIFY(!refusal.error().isEmpty());
     }
@@ -254,8 +257,10 @@ private slots:
         series[1].name = "original";
         series[1].color = Qt::darkRed;
         series[1].points = {{0.5, 4.0, "area"}, {0.8, 3.0, "angle"}};
-        std::unique_ptr<QChart> chart(createLabelledChart(series, "normals", "time (ms)", "mean error (°)"));
-        QVERIFY_OK(writeChartImages(chart.get(), dir.filePath("n.png"), QString(), QSize(500, 350)));
+        std::unique_ptr<QChart> chart(
+            createLabelledChart(series, "normals", "time (ms)", "mean error (°)"));
+        QVERIFY_OK(
+            writeChartImages(chart.get(), dir.filePath("n.png"), QString(), QSize(500, 350)));
         QCOMPARE(QImage(dir.filePath("n.png")).size(), QSize(500, 350));
         QVERIFY(!chart->scene()); // handed back, still ours
     }
@@ -272,9 +277,12 @@ private slots:
             double meanAngleDeg;
         };
         const std::vector<Row> rows = {
-            {"uv sphere", "area", 960, 0.12, 9.5, 2.1},        {"uv sphere", "angle", 960, 0.15, 6.0, 1.2},
-            {"uv sphere", "unweighted", 960, 0.10, 14.0, 3.4}, {"icosphere", "area", 1280, 0.14, 4.0, 0.9},
-            {"icosphere", "angle", 1280, 0.18, 3.1, 0.8},      {"icosphere", "unweighted", 1280, 0.11, 4.2, 0.95},
+            {"uv sphere", "area", 960, 0.12, 9.5, 2.1},
+            {"uv sphere", "angle", 960, 0.15, 6.0, 1.2},
+            {"uv sphere", "unweighted", 960, 0.10, 14.0, 3.4},
+            {"icosphere", "area", 1280, 0.14, 4.0, 0.9},
+            {"icosphere", "angle", 1280, 0.18, 3.1, 0.8},
+            {"icosphere", "unweighted", 1280, 0.11, 4.2, 0.95},
         };
         QTemporaryDir dir;
         const QString png = dir.filePath("normals.png");

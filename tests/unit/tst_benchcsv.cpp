@@ -87,11 +87,11 @@ class TestBenchCsv : public QObject
 private slots:
     void columnsAreTheInterface()
     {
-        const QStringList expected = {"scene",          "method",       "detail",          "triangles",
-                                      "lights",         "scene_lights", "frame_ms",        "frame_ms_p90",
-                                      "cpu_submit_ms",  "gpu_ms",       "frames",          "psnr_db",
-                                      "rmse",           "max_error",    "spec_psnr_db",    "spec_rmse",
-                                      "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors"};
+        const QStringList expected = {
+            "scene",        "method",         "detail",       "triangles",       "lights",
+            "scene_lights", "frame_ms",       "frame_ms_p90", "cpu_submit_ms",   "gpu_ms",
+            "frames",       "psnr_db",        "rmse",         "max_error",       "spec_psnr_db",
+            "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors"};
         QCOMPARE(benchCsvColumns(), expected);
         const QString csv = benchRowsToCsv({});
         QCOMPARE(csv, expected.join(',') + '\n');
@@ -215,7 +215,8 @@ private slots:
         csv.replace("frame_ms_p90", "frame_ms_p99");
         const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
         QVERIFY(!refusal);
-        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 1: missing column frame_ms_p90"));
+        QCOMPARE(refusal.error(),
+                 QStringLiteral("results.csv line 1: missing column frame_ms_p90"));
     }
 
     void badNumberNamesLineAndColumn()
@@ -229,12 +230,15 @@ private slots:
 
         const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
         QVERIFY(!refusal);
-        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 8: frame_ms is not a number: 'abc'"));
+        QCOMPARE(refusal.error(),
+                 QStringLiteral("results.csv line 8: frame_ms is not a number: 'abc'"));
 
         // The overload names the file it was given.
-        const Result<std::vector<BenchRow>> refusal2 = benchRowsFromCsv(csv, QStringLiteral("/tmp/out/results.csv"));
+        const Result<std::vector<BenchRow>> refusal2 =
+            benchRowsFromCsv(csv, QStringLiteral("/tmp/out/results.csv"));
         QVERIFY(!refusal2);
-        QVERIFY2(refusal2.error().startsWith("/tmp/out/results.csv line 8: frame_ms"), qPrintable(refusal2.error()));
+        QVERIFY2(refusal2.error().startsWith("/tmp/out/results.csv line 8: frame_ms"),
+                 qPrintable(refusal2.error()));
     }
 
     void otherBadFieldsAreErrors_data()
@@ -279,7 +283,8 @@ private slots:
         csv += "default,phong,1\n";
         const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
         QVERIFY(!refusal);
-        QVERIFY2(refusal.error().startsWith("results.csv line 4: expected 20 fields"), qPrintable(refusal.error()));
+        QVERIFY2(refusal.error().startsWith("results.csv line 4: expected 20 fields"),
+                 qPrintable(refusal.error()));
     }
 
     void unbalancedQuoteIsAnError()
@@ -300,7 +305,8 @@ private slots:
         csv += fields.join(',') + '\n';
         const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
         QVERIFY(!refusal);
-        QCOMPARE(refusal.error(), QStringLiteral("results.csv line 5: lights is not a whole number: 'two'"));
+        QCOMPARE(refusal.error(),
+                 QStringLiteral("results.csv line 5: lights is not a whole number: 'two'"));
     }
 };
 

@@ -46,7 +46,8 @@ QByteArray TestBinaryCounts::omTetra()
     return readBytes(writeTetra(m_dir, QStringLiteral("tetra.om"), true));
 }
 
-void TestBinaryCounts::expectRefused(const QString &name, const QByteArray &bytes, const QString &message)
+void TestBinaryCounts::expectRefused(const QString &name, const QByteArray &bytes,
+                                     const QString &message)
 {
     const QString path = m_dir.filePath(name);
     writeBytes(path, bytes);
@@ -96,14 +97,18 @@ void TestBinaryCounts::omChunkHeadersAreChecked_data()
     QTest::addColumn<QString>("message");
     QTest::newRow("positions with two components")
         << 16 << (7u << 11) << (1u << 11) << 2
-        << "chunk 1 (byte 16): a vertex positions chunk with 2 components per element, where the reader expects 3";
+        << "chunk 1 (byte 16): a vertex positions chunk with 2 components per element, where the "
+           "reader expects 3";
     QTest::newRow("positions with eight components")
-        << 16 << (7u << 11) << (7u << 11) << 2 << "chunk 1 (byte 16): a vertex positions chunk with 8 components";
+        << 16 << (7u << 11) << (7u << 11) << 2
+        << "chunk 1 (byte 16): a vertex positions chunk with 8 components";
     QTest::newRow("an unknown kind of element")
-        << 16 << (7u << 2) << (3u << 2) << 2 << "chunk 1 (byte 16): a chunk for an unknown kind of element (3)";
+        << 16 << (7u << 2) << (3u << 2) << 2
+        << "chunk 1 (byte 16): a chunk for an unknown kind of element (3)";
     QTest::newRow("positions in long doubles")
         << 16 << (3u << 14) << (2u << 14) << 2 << "a number size the reader does not know";
-    QTest::newRow("a million edges") << 12 << 0xffffffffu << 1000000u << 4 << "halfedge topology) needs";
+    QTest::newRow("a million edges")
+        << 12 << 0xffffffffu << 1000000u << 4 << "halfedge topology) needs";
 }
 
 void TestBinaryCounts::omChunkHeadersAreChecked()
@@ -116,11 +121,12 @@ void TestBinaryCounts::omChunkHeadersAreChecked()
     QByteArray bytes = omTetra();
     QVERIFY(bytes.size() > 32);
     if (width == 2)
-        qToLittleEndian<quint16>(quint16((qFromLittleEndian<quint16>(bytes.constData() + at) & ~clear) | set),
-                                 bytes.data() + at);
+        qToLittleEndian<quint16>(
+            quint16((qFromLittleEndian<quint16>(bytes.constData() + at) & ~clear) | set),
+            bytes.data() + at);
     else
-        qToLittleEndian<quint32>((qFromLittleEndian<quint32>(bytes.constData() + at) & ~clear) | set,
-                                 bytes.data() + at);
+        qToLittleEndian<quint32>(
+            (qFromLittleEndian<quint32>(bytes.constData() + at) & ~clear) | set, bytes.data() + at);
     expectRefused(QStringLiteral("changed.om"), bytes, message);
 }
 
@@ -146,8 +152,9 @@ void TestBinaryCounts::binaryOffFaceCornersAreBounded()
     const qsizetype firstFace = body + 12 + 4 * 12;
     QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + firstFace), 3u);
     qToLittleEndian<quint32>(1000000000u, bytes.data() + firstFace);
-    expectRefused(QStringLiteral("corners.off"), bytes,
-                  QStringLiteral("binary OFF face 1 (byte %1) declares 1000000000 corners").arg(firstFace));
+    expectRefused(
+        QStringLiteral("corners.off"), bytes,
+        QStringLiteral("binary OFF face 1 (byte %1) declares 1000000000 corners").arg(firstFace));
 }
 
 void TestBinaryCounts::binaryOffWithColoursIsRefused()
@@ -163,7 +170,8 @@ void TestBinaryCounts::binaryOffWithColoursIsRefused()
     writeBytes(path, bytes);
     const MeshReadResult r = readMeshFile(path);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains("binary COFF files (with colours or texture coordinates) are not supported"),
+    QVERIFY2(r.error.contains(
+                 "binary COFF files (with colours or texture coordinates) are not supported"),
              qPrintable(r.error));
 }
 
@@ -175,7 +183,8 @@ void TestBinaryCounts::meshCacheCountsAreBounded()
     // --replay of tests/data/fuzz/meshcache) and the import child's
     // address-space limit it is a crash, which that replay shows.
     MeshLoadResult result;
-    result.mesh = MeshData{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, {0, 1, 2}};
+    result.mesh =
+        MeshData{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, {0, 1, 2}};
     result.warnings = QStringList{QStringLiteral("w")};
     QBuffer buffer;
     QVERIFY(buffer.open(QIODevice::ReadWrite));

@@ -36,7 +36,8 @@ std::vector<FileCorner> readCorners(const QString &path)
     while (!file.atEnd()) {
         const QList<QByteArray> words = file.readLine().simplified().split(' ');
         const auto vec = [&](int i) {
-            return glm::vec3(std::strtof(words[i].constData(), nullptr), std::strtof(words[i + 1].constData(), nullptr),
+            return glm::vec3(std::strtof(words[i].constData(), nullptr),
+                             std::strtof(words[i + 1].constData(), nullptr),
                              std::strtof(words[i + 2].constData(), nullptr));
         };
         if (words[0] == "v")
@@ -87,7 +88,8 @@ void TestBlenderNormals::smoothSphereKeepsFileNormals()
     std::map<Key, std::vector<glm::vec3>> normalsAt;
     for (std::size_t i = 0; i < r.mesh->positions.size(); ++i)
         normalsAt[key(r.mesh->positions[i])].push_back(r.mesh->normals[i]);
-    const std::vector<FileCorner> corners = readCorners(blenderMesh(QStringLiteral("sphere_smooth.obj")));
+    const std::vector<FileCorner> corners =
+        readCorners(blenderMesh(QStringLiteral("sphere_smooth.obj")));
     QVERIFY(corners.size() > 1000);
     for (const FileCorner &c : corners) {
         const auto it = normalsAt.find(key(c.position));
@@ -97,7 +99,8 @@ void TestBlenderNormals::smoothSphereKeepsFileNormals()
         // normals already unit to 1e-5 bit for bit and renormalises the rest
         // (Blender writes 4 decimals), so it sits within 2e-5 of either.
         const glm::vec3 gpu = it->second[0];
-        QVERIFY2(glm::length(gpu - c.normal) < 2e-5f || glm::length(gpu - glm::normalize(c.normal)) < 2e-5f,
+        QVERIFY2(glm::length(gpu - c.normal) < 2e-5f
+                     || glm::length(gpu - glm::normalize(c.normal)) < 2e-5f,
                  "normal differs from the file's");
         QVERIFY(std::abs(glm::length(gpu) - 1.0f) < 2e-5f);
     }
@@ -122,7 +125,8 @@ void TestBlenderNormals::flatCubeSplitsEveryCorner()
 
 void TestBlenderNormals::flatTreeHasOneNormalPerFace()
 {
-    const MeshLoadResult r = importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/tree_flat.obj"));
+    const MeshLoadResult r =
+        importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/tree_flat.obj"));
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(r.stats.normalsFromFile);
     QVERIFY(r.stats.splitVertices > 0);
@@ -157,7 +161,8 @@ void TestBlenderNormals::computedNormalsApproachTheSphere()
     QFETCH(double, meanDeg);
     NormalOptions options;
     options.method = *normalMethodFromName(method);
-    const MeshLoadResult r = importMeshFile(blenderMesh(QStringLiteral("sphere_nonormals.obj")), options);
+    const MeshLoadResult r =
+        importMeshFile(blenderMesh(QStringLiteral("sphere_nonormals.obj")), options);
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY(!r.stats.normalsFromFile);
     double worst = 0.0, sum = 0.0;

@@ -26,13 +26,15 @@ private slots:
         QStringList hidden;
         for (ShaderMistake m : m_reference.undetectable)
             hidden << shaderMistakeKey(m);
-        QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(QStringLiteral(", ")) + QStringLiteral(" cannot show")));
+        QVERIFY2(hidden.isEmpty(),
+                 qPrintable(hidden.join(QStringLiteral(", ")) + QStringLiteral(" cannot show")));
         QCOMPARE(int(m_reference.mistaken.size()), int(shaderMistakeKeys().size()));
     }
 
     void exactImagePasses()
     {
-        const CheckReport report = checkRender(m_reference.exact.toImage(m_scene.background), m_reference);
+        const CheckReport report =
+            checkRender(m_reference.exact.toImage(m_scene.background), m_reference);
         QVERIFY(report.passed());
         QCOMPARE(report.comparison.maxError, 0);
         QVERIFY(report.diagnosis.findings.empty());
@@ -55,11 +57,15 @@ private slots:
         QVERIFY(!report.passed());
         QVERIFY(!report.diagnosis.findings.empty());
         const MistakeFinding &top = report.diagnosis.findings.front();
-        const bool named = top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
-        QVERIFY2(named, qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
+        const bool named = top.key == mistake
+            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        QVERIFY2(
+            named,
+            qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
         QCOMPARE(top.confidence, 1.0);
         // Only the pair that always looks the same shares a finding.
-        const bool pair = mistake == ShaderMistake::ReflectIncident || mistake == ShaderMistake::ViewVector;
+        const bool pair =
+            mistake == ShaderMistake::ReflectIncident || mistake == ShaderMistake::ViewVector;
         QCOMPARE(int(top.also.size()), pair ? 1 : 0);
         if (report.diagnosis.findings.size() > 1)
             QVERIFY(report.diagnosis.findings[1].confidence < 1.0);
@@ -96,9 +102,10 @@ private slots:
             }
         }
         QVERIFY(checked > 100);
-        QVERIFY(!pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, 0, 0)); // the corner is background
-        const std::optional<PixelTerms> centre =
-            pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, kCheckWidth / 2, kCheckHeight / 2);
+        QVERIFY(!pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, 0,
+                            0)); // the corner is background
+        const std::optional<PixelTerms> centre = pixelTerms(
+            m_reference.hits, m_scene, ReferenceShading::Phong, kCheckWidth / 2, kCheckHeight / 2);
         QVERIFY(centre && centre->toText().contains(QStringLiteral("f_att")));
     }
 
@@ -120,7 +127,8 @@ private slots:
         int checked = 0;
         for (int y = 0; y < kCheckHeight; y += 9) {
             for (int x = 0; x < kCheckWidth; x += 9) {
-                const std::optional<PixelTerms> t = pixelTerms(reference.hits, scene, reference.shader.shading, x, y);
+                const std::optional<PixelTerms> t =
+                    pixelTerms(reference.hits, scene, reference.shader.shading, x, y);
                 if (!t)
                     continue;
                 ++checked;

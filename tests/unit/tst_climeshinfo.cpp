@@ -39,12 +39,14 @@ private slots:
 
 void TestCliMeshInfo::jsonHasTheDocumentedKeys()
 {
-    const ProcessRun r = meshInfo({blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--json")});
+    const ProcessRun r =
+        meshInfo({blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--json")});
     QCOMPARE(r.exitCode, 0);
     QJsonParseError error;
     const QJsonObject o = QJsonDocument::fromJson(r.out, &error).object();
     QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
-    for (const char *key : {"vertices", "faces", "normals", "normal_method", "bounds", "warnings", "load_ms"})
+    for (const char *key :
+         {"vertices", "faces", "normals", "normal_method", "bounds", "warnings", "load_ms"})
         QVERIFY2(o.contains(QLatin1String(key)), key);
     QCOMPARE(o.value("vertices").toInt(), 8);
     QCOMPARE(o.value("faces").toInt(), 6);
@@ -62,15 +64,17 @@ void TestCliMeshInfo::jsonHasTheDocumentedKeys()
 
 void TestCliMeshInfo::normalsFromFileOrComputed()
 {
-    const ProcessRun none = meshInfo({blender(QStringLiteral("sphere_nonormals.obj")), QStringLiteral("--json")});
+    const ProcessRun none =
+        meshInfo({blender(QStringLiteral("sphere_nonormals.obj")), QStringLiteral("--json")});
     QCOMPARE(none.exitCode, 0);
     QJsonObject o = QJsonDocument::fromJson(none.out).object();
     QCOMPARE(o.value("normals").toString(), QStringLiteral("computed"));
     QCOMPARE(o.value("normal_method").toString(), QStringLiteral("angle"));
 
     const ProcessRun forced =
-        meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"), QStringLiteral("--normals"),
-                  QStringLiteral("area"), QStringLiteral("--crease"), QStringLiteral("45")});
+        meshInfo({blender(QStringLiteral("sphere_smooth.obj")), QStringLiteral("--json"),
+                  QStringLiteral("--normals"), QStringLiteral("area"), QStringLiteral("--crease"),
+                  QStringLiteral("45")});
     QCOMPARE(forced.exitCode, 0);
     o = QJsonDocument::fromJson(forced.out).object();
     QCOMPARE(o.value("normals").toString(), QStringLiteral("computed"));
@@ -82,7 +86,8 @@ void TestCliMeshInfo::textOutputMentionsEverything()
 {
     const ProcessRun r = meshInfo({blender(QStringLiteral("cube_flat.obj"))});
     QCOMPARE(r.exitCode, 0);
-    for (const char *word : {"vertices:", "faces:", "normals:", "bounds:", "warnings:", "load time:", "split"})
+    for (const char *word :
+         {"vertices:", "faces:", "normals:", "bounds:", "warnings:", "load time:", "split"})
         QVERIFY2(r.out.contains(word), word);
 }
 
@@ -105,10 +110,11 @@ void TestCliMeshInfo::usageErrorsExitTwo_data()
     QTest::newRow("no file") << QStringList();
     QTest::newRow("two files") << QStringList{blender(QStringLiteral("cube_flat.obj")),
                                               blender(QStringLiteral("cube_flat.obj"))};
-    QTest::newRow("unknown method") << QStringList{blender(QStringLiteral("cube_flat.obj")),
-                                                   QStringLiteral("--normals"), QStringLiteral("smooth")};
-    QTest::newRow("bad crease") << QStringList{blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--crease"),
-                                               QStringLiteral("200")};
+    QTest::newRow("unknown method")
+        << QStringList{blender(QStringLiteral("cube_flat.obj")), QStringLiteral("--normals"),
+                       QStringLiteral("smooth")};
+    QTest::newRow("bad crease") << QStringList{blender(QStringLiteral("cube_flat.obj")),
+                                               QStringLiteral("--crease"), QStringLiteral("200")};
 }
 
 void TestCliMeshInfo::usageErrorsExitTwo()

@@ -36,7 +36,8 @@ Camera extremeCamera()
 
 void TestDepthRange::sphereAfterModelHoldsTheBox()
 {
-    const glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1.0), {1, 2, 3}), {-2.0, 0.5, 1.0});
+    const glm::dmat4 model =
+        glm::scale(glm::translate(glm::dmat4(1.0), {1, 2, 3}), {-2.0, 0.5, 1.0});
     const BoundingSphere s = boundingSphere({-1, -1, -1}, {1, 1, 1}, model);
     for (int i = 0; i < 8; ++i) {
         const glm::dvec3 corner(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);

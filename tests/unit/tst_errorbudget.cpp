@@ -13,7 +13,8 @@ using namespace phonglab;
 
 namespace {
 
-BenchRow row(const QString &method, double detail, qint64 triangles, double ms, int maxError, double psnr = 40)
+BenchRow row(const QString &method, double detail, qint64 triangles, double ms, int maxError,
+             double psnr = 40)
 {
     BenchRow r;
     r.scene = QStringLiteral("default");
@@ -115,8 +116,10 @@ private slots:
         QVERIFY(maxBudget(0).accepts(row("phong", 1, 100, 1, 0)));
         QVERIFY(psnrBudget(40).accepts(row("phong", 1, 100, 1, 9, 40.0)));
         QVERIFY(!psnrBudget(40).accepts(row("phong", 1, 100, 1, 0, 39.99)));
-        QVERIFY(psnrBudget(40).accepts(row("phong", 1, 100, 1, 0, std::numeric_limits<double>::infinity())));
-        QVERIFY(!psnrBudget(40).accepts(row("phong", 1, 100, 1, 0, std::numeric_limits<double>::quiet_NaN())));
+        QVERIFY(psnrBudget(40).accepts(
+            row("phong", 1, 100, 1, 0, std::numeric_limits<double>::infinity())));
+        QVERIFY(!psnrBudget(40).accepts(
+            row("phong", 1, 100, 1, 0, std::numeric_limits<double>::quiet_NaN())));
     }
 
     void picksTheFastestAndReportsSavings()
@@ -124,7 +127,7 @@ private slots:
         const std::vector<BenchRow> rows = {
             row("phong", 1.0, 13650, 3.1, 0),   row("phong", 0.25, 3412, 2.2, 4),   // too coarse
             row("gouraud", 1.0, 13650, 2.6, 1), row("gouraud", 0.25, 3412, 1.9, 2), // the answer
-            row("flat", 0.25, 3412, 1.5, 9),                                        // fastest, over budget
+            row("flat", 0.25, 3412, 1.5, 9), // fastest, over budget
         };
         const BudgetFit fit = fitToBudget(rows, maxBudget(2));
         QCOMPARE(fit.chosen, 3);
@@ -132,16 +135,18 @@ private slots:
         QCOMPARE(fit.trianglesSaved, qint64(13650 - 3412));
         QVERIFY(std::abs(fit.msSaved - 1.2) < 1e-9);
         QCOMPARE(fit.summary,
-                 QStringLiteral("gouraud at detail 25 % (3 412 triangles, 1.9 ms): saves 10 238 triangles "
-                                "and 1.2 ms (39 %) against full-detail Phong (13 650 triangles, 3.1 ms); "
-                                "max error 2/255"));
+                 QStringLiteral(
+                     "gouraud at detail 25 % (3 412 triangles, 1.9 ms): saves 10 238 triangles "
+                     "and 1.2 ms (39 %) against full-detail Phong (13 650 triangles, 3.1 ms); "
+                     "max error 2/255"));
     }
 
     void prefersFewerTrianglesOnATimeTie()
     {
         // 2.00 and 2.05 ms are within 5 %: the coarser mesh wins although slower.
         const std::vector<BenchRow> rows = {
-            row("phong", 1.0, 10000, 4.0, 0), row("phong", 0.5, 5000, 2.00, 1), row("phong", 0.25, 2500, 2.05, 2),
+            row("phong", 1.0, 10000, 4.0, 0), row("phong", 0.5, 5000, 2.00, 1),
+            row("phong", 0.25, 2500, 2.05, 2),
             row("phong", 0.1, 1000, 2.5, 2), // fewer still, but clearly slower
         };
         const BudgetFit fit = fitToBudget(rows, maxBudget(2));
@@ -153,8 +158,9 @@ private slots:
         // Same time (within 5 %) and triangles: the more accurate wins, since
         // it costs nothing more; at equal error the cheaper method.
         std::vector<BenchRow> rows = {
-            row("phong", 1.0, 10000, 3.0, 0),   row("phong", 0.5, 5000, 2.0, 0), row("blinn-phong", 0.5, 5000, 2.01, 0),
-            row("gouraud", 0.5, 5000, 2.02, 1), row("toon", 0.5, 5000, 1.99, 0), // unknown methods come after phong
+            row("phong", 1.0, 10000, 3.0, 0),       row("phong", 0.5, 5000, 2.0, 0),
+            row("blinn-phong", 0.5, 5000, 2.01, 0), row("gouraud", 0.5, 5000, 2.02, 1),
+            row("toon", 0.5, 5000, 1.99, 0), // unknown methods come after phong
         };
         BudgetFit fit = fitToBudget(rows, maxBudget(2));
         QCOMPARE(rows[fit.chosen].method, QStringLiteral("blinn-phong"));
@@ -202,7 +208,8 @@ private slots:
         QCOMPARE(fit.chosen, -1);
         QCOMPARE(fit.baseline, 0);
         QCOMPARE(fit.trianglesSaved, qint64(0));
-        QVERIFY2(fit.summary.startsWith("nothing meets max error ≤ 2/255"), qPrintable(fit.summary));
+        QVERIFY2(fit.summary.startsWith("nothing meets max error ≤ 2/255"),
+                 qPrintable(fit.summary));
         QVERIFY2(fit.summary.contains("max error 4/255"), qPrintable(fit.summary));
 
         fit = fitToBudget(rows, psnrBudget(40));
@@ -244,18 +251,19 @@ private slots:
             const int n = random.bounded(0, 14);
             std::vector<BenchRow> rows;
             for (int i = 0; i < n; ++i) {
-                const double detail = random.bounded(2) ? 1.0 : 0.05 + random.generateDouble() * 0.9;
-                BenchRow r =
-                    row(kMethods[random.bounded(kMethods.size())], detail, qint64(detail * 10000),
-                        0.5 + random.generateDouble() * 4, random.bounded(0, 12), 20 + random.generateDouble() * 40);
+                const double detail =
+                    random.bounded(2) ? 1.0 : 0.05 + random.generateDouble() * 0.9;
+                BenchRow r = row(kMethods[random.bounded(kMethods.size())], detail,
+                                 qint64(detail * 10000), 0.5 + random.generateDouble() * 4,
+                                 random.bounded(0, 12), 20 + random.generateDouble() * 40);
                 if (random.bounded(20) == 0)
                     r.frameMs = rows.empty() ? r.frameMs : rows.back().frameMs; // exact time ties
                 if (random.bounded(25) == 0)
                     r.psnr = std::numeric_limits<double>::quiet_NaN();
                 rows.push_back(r);
             }
-            const ErrorBudget budget =
-                random.bounded(2) ? maxBudget(random.bounded(0, 10)) : ::psnrBudget(25 + random.bounded(30));
+            const ErrorBudget budget = random.bounded(2) ? maxBudget(random.bounded(0, 10))
+                                                         : ::psnrBudget(25 + random.bounded(30));
             const BudgetFit fit = fitToBudget(rows, budget);
             bool anyAccepted = false;
             double fastestAccepted = std::numeric_limits<double>::infinity();

@@ -27,8 +27,9 @@ namespace {
 
 QString fuzzDataDir(const QString &kind, const QString &target)
 {
-    return kind == QLatin1String("seed") ? QStringLiteral(PHONGLAB_SOURCE_DIR "/tests/fuzz/corpus/") + target
-                                         : QStringLiteral(PHONGLAB_TEST_DATA_DIR "/fuzz/") + target;
+    return kind == QLatin1String("seed")
+        ? QStringLiteral(PHONGLAB_SOURCE_DIR "/tests/fuzz/corpus/") + target
+        : QStringLiteral(PHONGLAB_TEST_DATA_DIR "/fuzz/") + target;
 }
 
 QStringList filesUnder(const QString &dir)
@@ -52,7 +53,8 @@ QByteArray contents(const QString &path)
 void TestFuzzRegressions::everyTargetHasSeeds()
 {
     for (const QString &target : fuzz::targetNames())
-        QVERIFY2(!filesUnder(fuzzDataDir(QStringLiteral("seed"), target)).isEmpty(), qPrintable(target));
+        QVERIFY2(!filesUnder(fuzzDataDir(QStringLiteral("seed"), target)).isEmpty(),
+                 qPrintable(target));
 }
 
 void TestFuzzRegressions::inputReadsOrIsRefused_data()
@@ -62,7 +64,8 @@ void TestFuzzRegressions::inputReadsOrIsRefused_data()
     for (const QString &target : fuzz::targetNames())
         for (const QString &kind : {QStringLiteral("found"), QStringLiteral("seed")})
             for (const QString &path : filesUnder(fuzzDataDir(kind, target)))
-                QTest::newRow(qPrintable(QStringLiteral("%1 %2 %3").arg(target, kind, QFileInfo(path).fileName())))
+                QTest::newRow(qPrintable(
+                    QStringLiteral("%1 %2 %3").arg(target, kind, QFileInfo(path).fileName())))
                     << target << path;
 }
 
@@ -84,13 +87,15 @@ void TestFuzzRegressions::foundPlyHeadersAreRefusedWithALocatedError()
     // Each made OpenMesh's PLY header loop spin forever, logging (one grew
     // past 2 GB): a format line whose version does not read as a number, a
     // header word with control bytes in it.
-    const QStringList found = filesUnder(fuzzDataDir(QStringLiteral("found"), QStringLiteral("ply")));
+    const QStringList found =
+        filesUnder(fuzzDataDir(QStringLiteral("found"), QStringLiteral("ply")));
     QVERIFY(found.size() >= 3);
     for (const QString &path : found) {
         const fuzz::Outcome outcome = fuzz::run("ply", contents(path));
         QVERIFY2(!outcome.ok, qPrintable(path));
         QVERIFY2(outcome.error.contains(QLatin1String("PLY header line 2: expected 'format"))
-                     || outcome.error.contains(QLatin1String("PLY header line 3: byte 0x01 at column 10 is not text")),
+                     || outcome.error.contains(
+                         QLatin1String("PLY header line 3: byte 0x01 at column 10 is not text")),
                  qPrintable(outcome.error));
     }
 }

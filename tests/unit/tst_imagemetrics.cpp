@@ -84,7 +84,8 @@ private slots:
         QCOMPARE(c.worstPixel, QPoint(0, 0)); // the first of the equally bad
         QVERIFY(std::abs(c.rmse - 1.7320508) < 1e-6);
         QVERIFY(std::abs(c.psnr - 43.359591) < 1e-5);
-        QCOMPARE(c.summary(), QStringLiteral("PSNR 43.36 dB, RMSE 1.73, max 3/255 at (0,0), 100 px"));
+        QCOMPARE(c.summary(),
+                 QStringLiteral("PSNR 43.36 dB, RMSE 1.73, max 3/255 at (0,0), 100 px"));
     }
 
     void singleWorstPixel()
@@ -239,7 +240,8 @@ private slots:
         QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1).error.maxError, 32);
         // A mask of the wrong size compares nothing rather than reading past it.
         std::vector<std::uint8_t> wrong(3, 1);
-        QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1, &wrong).error.pixelsCompared, qint64(0));
+        QCOMPARE(compareOutsideBand(render, ref, glm::dvec3(0.0), 1, &wrong).error.pixelsCompared,
+                 qint64(0));
     }
 
     // A plane seen at any angle has 1/z affine in the image: no contour
@@ -263,7 +265,8 @@ private slots:
         for (int y = 0; y < 20; ++y) {
             for (int x = 0; x < 40; ++x) {
                 const bool atStep = x == 19 || x == 20;
-                QVERIFY2(bool(contour[ref.index(x, y)]) == atStep, qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
+                QVERIFY2(bool(contour[ref.index(x, y)]) == atStep,
+                         qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
             }
         }
         const std::vector<std::uint8_t> wide = dilatePixels(contour, 40, 20, 2);

@@ -65,7 +65,9 @@ private slots:
                 QVERIFY(l.enabled);
                 QCOMPARE(l.attenuation, scene.lights[0].attenuation);
                 // On the camera's side of the target, so each one lights what is seen.
-                QVERIFY(glm::dot(l.position - scene.camera.target, scene.camera.eye - scene.camera.target) > 0.0);
+                QVERIFY(glm::dot(l.position - scene.camera.target,
+                                 scene.camera.eye - scene.camera.target)
+                        > 0.0);
             }
             const glm::dvec3 own = scene.lights[0].diffuse + scene.lights[2].diffuse;
             // Every light is scaled by 2/count; the generated ones repeat the

@@ -21,7 +21,8 @@ namespace {
 // ±1 from bits 0, 1, 2) and six quads, counter-clockwise from outside.
 const std::uint32_t kCubeQuads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
                                         {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-const glm::vec3 kCubeFaceNormals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const glm::vec3 kCubeFaceNormals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                       {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 
 void addFace(PolygonMesh &mesh, std::initializer_list<std::uint32_t> positions)
 {
@@ -74,7 +75,8 @@ glm::vec3 tilted(double x, double y)
     const glm::dvec3 v = glm::normalize(glm::dvec3(-1, 1, 2));
     return glm::vec3(glm::dvec3(0.5, -2, 3) + x * u + y * v);
 }
-const glm::dvec3 kTiltedNormal = glm::normalize(glm::cross(glm::dvec3(1, 1, 0), glm::dvec3(-1, 1, 2)));
+const glm::dvec3 kTiltedNormal =
+    glm::normalize(glm::cross(glm::dvec3(1, 1, 0), glm::dvec3(-1, 1, 2)));
 
 // Point in polygon (even-odd), in the plane's own coordinates.
 bool insidePolygon(const std::vector<glm::dvec2> &polygon, const glm::dvec2 &p)
@@ -231,8 +233,10 @@ void TestMeshBuilder::quadAndPentagonKeepWinding()
     }
     addFace(mesh, {0, 1, 2, 3});
     addFace(mesh, {4, 5, 6, 7, 8});
-    const glm::dvec3 quadNormal = newellNormal(mesh.positions, std::span(mesh.cornerPosition).first(4));
-    const glm::dvec3 pentagonNormal = newellNormal(mesh.positions, std::span(mesh.cornerPosition).subspan(4));
+    const glm::dvec3 quadNormal =
+        newellNormal(mesh.positions, std::span(mesh.cornerPosition).first(4));
+    const glm::dvec3 pentagonNormal =
+        newellNormal(mesh.positions, std::span(mesh.cornerPosition).subspan(4));
     QVERIFY(glm::dot(quadNormal, kTiltedNormal) > 0.0);
     QVERIFY(glm::dot(pentagonNormal, kTiltedNormal) < 0.0);
 
@@ -243,7 +247,8 @@ void TestMeshBuilder::quadAndPentagonKeepWinding()
     QCOMPARE(stats.triangles, 2 + 3);
     for (std::size_t t = 0; t < 5; ++t) {
         const glm::dvec3 expected = t < 2 ? quadNormal : pentagonNormal;
-        QVERIFY2(glm::dot(glm::normalize(triangleNormal(data, t)), glm::normalize(expected)) > 0.999,
+        QVERIFY2(glm::dot(glm::normalize(triangleNormal(data, t)), glm::normalize(expected))
+                     > 0.999,
                  qPrintable(QString::number(t)));
     }
 }
@@ -307,7 +312,8 @@ void TestMeshBuilder::concavePolygon()
         const glm::dvec3 d = centroid - glm::dvec3(0.5, -2, 3);
         const glm::dvec2 local(glm::dot(d, glm::normalize(glm::dvec3(1, 1, 0))),
                                glm::dot(d, glm::normalize(glm::dvec3(-1, 1, 2))));
-        QVERIFY2(insidePolygon(plane, local), qPrintable(QStringLiteral("triangle %1 outside").arg(t)));
+        QVERIFY2(insidePolygon(plane, local),
+                 qPrintable(QStringLiteral("triangle %1 outside").arg(t)));
     }
     QVERIFY2(std::abs(sum - area) < 1e-5, qPrintable(QString::number(sum)));
 }
@@ -342,11 +348,13 @@ void TestMeshBuilder::randomStarPolygons()
         QCOMPARE(int(triangulation.triangleCount()), n - 2);
         double sum = 0.0;
         for (std::size_t t = 0; t < triangulation.corners.size(); t += 3) {
-            const glm::dvec2 &a = plane[triangulation.corners[t]], &b = plane[triangulation.corners[t + 1]],
+            const glm::dvec2 &a = plane[triangulation.corners[t]],
+                             &b = plane[triangulation.corners[t + 1]],
                              &c = plane[triangulation.corners[t + 2]];
             const double doubleArea = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-            QVERIFY2(doubleArea > 0.0,
-                     qPrintable(QStringLiteral("round %1: triangle %2 flipped").arg(round).arg(t / 3)));
+            QVERIFY2(
+                doubleArea > 0.0,
+                qPrintable(QStringLiteral("round %1: triangle %2 flipped").arg(round).arg(t / 3)));
             sum += doubleArea / 2;
         }
         QVERIFY2(std::abs(sum - area) < 1e-5,
@@ -390,7 +398,8 @@ void TestMeshBuilder::autoWithPartialNormalsComputes()
     QCOMPARE(stats.method, NormalMethod::AngleWeighted);
     QCOMPARE(stats.vertices, 8);
     QCOMPARE(warnings.size(), 1);
-    QVERIFY2(warnings.first().startsWith("4 of 24 corners have no normal"), qPrintable(warnings.first()));
+    QVERIFY2(warnings.first().startsWith("4 of 24 corners have no normal"),
+             qPrintable(warnings.first()));
     for (std::size_t v = 0; v < data.positions.size(); ++v)
         QVERIFY(glm::length(data.normals[v] - data.positions[v] / std::sqrt(3.0f)) < 1e-6f);
 }
@@ -417,7 +426,8 @@ void TestMeshBuilder::unusableFileNormalsAreReplaced()
     for (int f = 0; f < 6; ++f) {
         for (int c = 0; c < 6; ++c) {
             const std::uint32_t v = data.indices[6 * f + c];
-            const glm::vec3 expected = f < 2 ? data.positions[v] / std::sqrt(3.0f) : kCubeFaceNormals[f];
+            const glm::vec3 expected =
+                f < 2 ? data.positions[v] / std::sqrt(3.0f) : kCubeFaceNormals[f];
             QVERIFY(glm::length(data.normals[v] - expected) < 1e-6f);
         }
     }
@@ -430,7 +440,10 @@ void TestMeshBuilder::fileNormalsKeptAsWritten()
     // dividing by their length would nudge. Others are normalised.
     PolygonMesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-    mesh.normals = {{0.6f, 0.8f, 0.0f}, {0.267261f, 0.534522f, 0.801784f}, {0.0f, 3.0f, 4.0f}, {0.0f, 0.0f, 0.5f}};
+    mesh.normals = {{0.6f, 0.8f, 0.0f},
+                    {0.267261f, 0.534522f, 0.801784f},
+                    {0.0f, 3.0f, 4.0f},
+                    {0.0f, 0.0f, 0.5f}};
     addFace(mesh, {0, 1, 2});
     addFace(mesh, {2, 1, 3});
     mesh.cornerNormal = {0, 1, 2, 2, 1, 3};

@@ -73,12 +73,14 @@ MeshData gridCube(int n)
             const auto base = std::uint32_t(mesh.positions.size());
             for (int j = 0; j <= n; ++j)
                 for (int i = 0; i <= n; ++i) {
-                    mesh.positions.push_back(normal + (-1.0f + 2.0f * i / n) * u + (-1.0f + 2.0f * j / n) * v);
+                    mesh.positions.push_back(normal + (-1.0f + 2.0f * i / n) * u
+                                             + (-1.0f + 2.0f * j / n) * v);
                     mesh.normals.push_back(normal);
                 }
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i) {
-                    const std::uint32_t a = base + j * (n + 1) + i, b = a + 1, c = a + (n + 1), d = c + 1;
+                    const std::uint32_t a = base + j * (n + 1) + i, b = a + 1, c = a + (n + 1),
+                                        d = c + 1;
                     mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});
                 }
         }
@@ -129,8 +131,9 @@ void TestMeshDecimation::shrinksToTheFraction()
     for (const double fraction : {1.0, 0.5, 0.25, 1.0 / 16, 1.0 / 64}) {
         QString note;
         const MeshData lod = decimateMesh(full, fraction, &note);
-        qInfo("%s at %.4g: %zu of %zu triangles, %zu vertices%s", qPrintable(QFileInfo(path).fileName()), fraction,
-              lod.triangleCount(), full.triangleCount(), lod.positions.size(),
+        qInfo("%s at %.4g: %zu of %zu triangles, %zu vertices%s",
+              qPrintable(QFileInfo(path).fileName()), fraction, lod.triangleCount(),
+              full.triangleCount(), lod.positions.size(),
               note.isEmpty() ? "" : qPrintable(QStringLiteral(" (") + note + u')'));
         QVERIFY(lod.isValid());
         QVERIFY2(lod.triangleCount() <= previous, "more triangles at a smaller fraction");
@@ -138,7 +141,8 @@ void TestMeshDecimation::shrinksToTheFraction()
         // Collapses remove two triangles at a time; a closed piece stops at
         // a tetrahedron. Down to 1/16 the target is met within a few percent.
         if (fraction >= 1.0 / 16) {
-            QVERIFY2(std::abs(double(lod.triangleCount()) - fraction * full_t) <= 0.05 * fraction * full_t + 4,
+            QVERIFY2(std::abs(double(lod.triangleCount()) - fraction * full_t)
+                         <= 0.05 * fraction * full_t + 4,
                      qPrintable(QString::number(lod.triangleCount())));
             QVERIFY2(note.isEmpty(), qPrintable(note));
         }
@@ -265,7 +269,8 @@ void TestMeshDecimation::levelsInOneRun()
 {
     const MeshData full = load(asset("cloud.obj"));
     QString note;
-    const std::vector<MeshData> levels = decimateMeshLevels(full, {1.0 / 16, 1.0, 0.25, 2.0}, &note);
+    const std::vector<MeshData> levels =
+        decimateMeshLevels(full, {1.0 / 16, 1.0, 0.25, 2.0}, &note);
     QCOMPARE(levels.size(), std::size_t(4));
     QVERIFY(sameMesh(levels[1], full));
     QVERIFY(sameMesh(levels[3], full)); // out of range: unchanged, and said
@@ -286,8 +291,8 @@ void TestMeshDecimation::deterministic()
 void TestMeshDecimation::badInputDoesNotCrash()
 {
     const MeshData cube = makeCube();
-    for (const double fraction :
-         {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    for (const double fraction : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(),
+                                  std::numeric_limits<double>::infinity()}) {
         QString note;
         QVERIFY(sameMesh(decimateMesh(cube, fraction, &note), cube));
         QVERIFY2(note.contains(QStringLiteral("(0, 1]")), qPrintable(note));
@@ -332,20 +337,25 @@ void TestMeshDecimation::nonManifoldFacesAreLeftOutAndSaid()
 
 void TestMeshDecimation::builtinDetailTessellation()
 {
-    for (const QString &spec : {QStringLiteral("builtin:sphere"), QStringLiteral("builtin:torus")}) {
+    for (const QString &spec :
+         {QStringLiteral("builtin:sphere"), QStringLiteral("builtin:torus")}) {
         const std::size_t full = builtinMesh(spec)->triangleCount();
         QCOMPARE(builtinMesh(spec, 1.0)->triangleCount(), full);
         for (const double detail : {0.5, 0.25, 1.0 / 16, 1.0 / 64}) {
             const std::size_t t = builtinMesh(spec, detail)->triangleCount();
-            QVERIFY2(std::abs(double(t) / full - detail) < 0.02 * detail + 0.001, qPrintable(QString::number(t)));
+            QVERIFY2(std::abs(double(t) / full - detail) < 0.02 * detail + 0.001,
+                     qPrintable(QString::number(t)));
         }
         const MeshData tiny = *builtinMesh(spec, 1e-9);
         QCOMPARE(tiny.triangleCount(), std::size_t(6 * 3 * 2));
         QVERIFY(isClosedMesh(tiny));
     }
-    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:sphere"), 1.0 / 64), QStringLiteral("32\u00d716"));
-    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:torus"), 0.25), QStringLiteral("96\u00d748"));
-    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:sphere"), 1.0), QStringLiteral("256\u00d7128"));
+    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:sphere"), 1.0 / 64),
+             QStringLiteral("32\u00d716"));
+    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:torus"), 0.25),
+             QStringLiteral("96\u00d748"));
+    QCOMPARE(builtinDetailLabel(QStringLiteral("builtin:sphere"), 1.0),
+             QStringLiteral("256\u00d7128"));
     QCOMPARE(builtinMesh(QStringLiteral("builtin:cube"), 0.1)->triangleCount(), std::size_t(12));
     QVERIFY(!builtinMesh(QStringLiteral("builtin:teapot"), 0.5));
     QVERIFY(builtinDetailLabel(QStringLiteral("builtin:teapot"), 0.5).isEmpty());
@@ -407,7 +417,8 @@ void TestMeshDecimation::progressAndCancel()
     QCOMPARE(withProgress.positions, plain.positions);
 
     int calls = 0;
-    const MeshData stopped = decimateMesh(sphere, 0.1, &note, [&calls](double) { return ++calls < 3; });
+    const MeshData stopped =
+        decimateMesh(sphere, 0.1, &note, [&calls](double) { return ++calls < 3; });
     QCOMPARE(note, QStringLiteral("cancelled"));
     QVERIFY(stopped.indices.empty());
     QCOMPARE(calls, 3); // not asked again once it said no

@@ -133,7 +133,8 @@ void TestMeshImportProcess::malformedPlyHeaderNeitherHangsNorGrows()
     // fails its header loop never ends, logging all the while (it hung
     // `phonglab mesh-info` with memory growing by ~80 MB/s).
     qputenv("PHONGLAB_IMPORT_TIMEOUT_S", "3");
-    const QString path = freshCopy(testDataPath(QStringLiteral("meshes/bad/ply_format_without_version.ply")));
+    const QString path =
+        freshCopy(testDataPath(QStringLiteral("meshes/bad/ply_format_without_version.ply")));
     QElapsedTimer clock;
     clock.start();
     const MeshLoadResult r = loadMesh(path);
@@ -148,7 +149,8 @@ void TestMeshImportProcess::crashingReaderIsNamed()
     const QString path = freshCopy(sourcePath(QStringLiteral("assets/meshes/tree.obj")));
     const MeshLoadResult r = loadMesh(path);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains(QLatin1String("crashed with signal 11 (SIGSEGV)")), qPrintable(r.error));
+    QVERIFY2(r.error.contains(QLatin1String("crashed with signal 11 (SIGSEGV)")),
+             qPrintable(r.error));
 }
 
 void TestMeshImportProcess::readerOutOfMemoryIsNamed()
@@ -161,7 +163,8 @@ void TestMeshImportProcess::readerOutOfMemoryIsNamed()
     const QString path = freshCopy(sourcePath(QStringLiteral("assets/meshes/tree.obj")));
     const MeshLoadResult r = loadMesh(path);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains(QLatin1String("ran out of memory (limit 1024 MB)")), qPrintable(r.error));
+    QVERIFY2(r.error.contains(QLatin1String("ran out of memory (limit 1024 MB)")),
+             qPrintable(r.error));
 }
 
 void TestMeshImportProcess::cancelEndsTheChildAtOnce()
@@ -195,7 +198,8 @@ void TestMeshImportProcess::missingExecutableIsAClearError()
     const MeshLoadResult r = loadMesh(path);
     saved.isNull() ? qunsetenv("PHONGLAB_EXE") : qputenv("PHONGLAB_EXE", saved);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains(QLatin1String("cannot find the phonglab executable")), qPrintable(r.error));
+    QVERIFY2(r.error.contains(QLatin1String("cannot find the phonglab executable")),
+             qPrintable(r.error));
 }
 
 void TestMeshImportProcess::limitsGrowWithTheFile()

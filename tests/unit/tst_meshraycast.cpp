@@ -21,7 +21,8 @@ using MeshPtr = std::shared_ptr<const MeshData>;
 
 MeshPtr assetMesh(const QString &name)
 {
-    const MeshLoadResult loaded = importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/") + name);
+    const MeshLoadResult loaded =
+        importMeshFile(QStringLiteral(PHONGLAB_SOURCE_DIR "/assets/meshes/") + name);
     if (!loaded.ok())
         qFatal("%s: %s", qPrintable(name), qPrintable(loaded.error));
     return std::make_shared<const MeshData>(*loaded.mesh);
@@ -53,7 +54,9 @@ std::vector<Ray> testRays(const MeshData &mesh, int count)
     const Bounds b = boundsOf(mesh);
     const glm::dvec3 centre = 0.5 * (b.lo + b.hi), size = b.hi - b.lo;
     const double radius = glm::length(size);
-    const auto inBox = [&] { return b.lo + size * glm::dvec3(unit(random), unit(random), unit(random)); };
+    const auto inBox = [&] {
+        return b.lo + size * glm::dvec3(unit(random), unit(random), unit(random));
+    };
     const auto direction = [&] {
         const double z = 2.0 * unit(random) - 1.0, phi = 6.283185307179586 * unit(random);
         const double r = std::sqrt(1.0 - z * z);
@@ -106,7 +109,8 @@ ReferenceImage meshReference(const Scene &scene, const std::vector<MeshPtr> &mes
     return std::move(*image);
 }
 
-ReferenceImage analyticReference(const Scene &scene, int w, int h, ReferenceShading shading = ReferenceShading::Phong)
+ReferenceImage analyticReference(const Scene &scene, int w, int h,
+                                 ReferenceShading shading = ReferenceShading::Phong)
 {
     Result<ReferenceImage> image = raycastScene(scene, w, h, shading);
     if (!image)
@@ -149,9 +153,10 @@ private slots:
     void bvhMatchesBruteForce()
     {
         QFETCH(QString, mesh);
-        const MeshPtr data = mesh == QLatin1String("sphere") ? std::make_shared<const MeshData>(makeUvSphere(64, 32))
-            : mesh == QLatin1String("torus")                 ? std::make_shared<const MeshData>(makeTorus(48, 24))
-                                                             : assetMesh(mesh);
+        const MeshPtr data = mesh == QLatin1String("sphere")
+            ? std::make_shared<const MeshData>(makeUvSphere(64, 32))
+            : mesh == QLatin1String("torus") ? std::make_shared<const MeshData>(makeTorus(48, 24))
+                                             : assetMesh(mesh);
         const MeshBvh bvh(*data);
         QCOMPARE(bvh.triangleCount(), data->triangleCount());
         int hits = 0;
@@ -167,10 +172,12 @@ private slots:
             QCOMPARE(actual->t, expected->t);
             QCOMPARE(actual->triangle, expected->triangle);
             QVERIFY(actual->barycentric == expected->barycentric);
-            QVERIFY(std::abs(actual->barycentric.x + actual->barycentric.y + actual->barycentric.z - 1.0) < 1e-12);
+            QVERIFY(std::abs(actual->barycentric.x + actual->barycentric.y + actual->barycentric.z
+                             - 1.0)
+                    < 1e-12);
         }
-        qInfo("%s: %zu triangles, %zu nodes, depth %d, %d of 3000 rays hit", qPrintable(mesh), data->triangleCount(),
-              bvh.nodeCount(), bvh.depth(), hits);
+        qInfo("%s: %zu triangles, %zu nodes, depth %d, %d of 3000 rays hit", qPrintable(mesh),
+              data->triangleCount(), bvh.nodeCount(), bvh.depth(), hits);
         QVERIFY(hits > 1000);
     }
 
@@ -188,7 +195,8 @@ private slots:
             const glm::dvec3 origin(small(random), small(random), small(random));
             for (const glm::dvec3 &target : {glm::dvec3(vertex), glm::dvec3(vertex) * 0.999}) {
                 const Ray ray{origin, target - origin};
-                QVERIFY2(bvh.closestHit(ray, 0.0, 1e30).has_value(), "a ray from inside escaped the sphere");
+                QVERIFY2(bvh.closestHit(ray, 0.0, 1e30).has_value(),
+                         "a ray from inside escaped the sphere");
                 ++rays;
             }
         }
@@ -254,16 +262,19 @@ private slots:
                     continue;
                 }
                 QVERIFY(glm::all(
-                    glm::lessThan(glm::abs(lit->color[i] - lit->specular[i] - unlit->color[i]), glm::dvec3(1e-12))));
+                    glm::lessThan(glm::abs(lit->color[i] - lit->specular[i] - unlit->color[i]),
+                                  glm::dvec3(1e-12))));
                 peak = std::max(peak, lit->specular[i].r);
                 highlight += lit->specular[i].r > 1.0 / 255.0;
             }
             // n = 20: the highlight is a small spot, not the whole lit side.
-            qInfo("specular: peak %.3f, %lld of %lld covered pixels above 1/255", peak, highlight, lit->coveredCount());
+            qInfo("specular: peak %.3f, %lld of %lld covered pixels above 1/255", peak, highlight,
+                  lit->coveredCount());
             QVERIFY(peak > 0.3);
             QVERIFY(highlight > 0 && highlight < lit->coveredCount() / 4);
         }
-        const ReferenceImage normals = meshReference(sphereScene(), {sphere}, 64, 64, ReferenceShading::Normals);
+        const ReferenceImage normals =
+            meshReference(sphereScene(), {sphere}, 64, 64, ReferenceShading::Normals);
         for (const glm::dvec3 &s : normals.specular)
             QCOMPARE(s, glm::dvec3(0.0));
     }
@@ -280,7 +291,8 @@ private slots:
                     QStringLiteral("1 objects but 0 meshes"));
         expectError(raycastSceneMeshes(scene, {sphere, sphere}, 32, 32, ReferenceShading::Phong),
                     QStringLiteral("1 objects but 2 meshes"));
-        expectError(raycastSceneMeshes(scene, {sphere}, 0, 32, ReferenceShading::Phong), QStringLiteral("0x32"));
+        expectError(raycastSceneMeshes(scene, {sphere}, 0, 32, ReferenceShading::Phong),
+                    QStringLiteral("0x32"));
 
         Scene fileScene = scene;
         fileScene.objects[0].mesh = QStringLiteral("tree.obj");
@@ -291,11 +303,12 @@ private slots:
 
         auto broken = std::make_shared<MeshData>(makeUvSphere(16, 8));
         broken->indices.push_back(0); // not a multiple of three
-        expectError(raycastSceneMeshes(scene, {broken}, 32, 32, ReferenceShading::Phong), QStringLiteral("not valid"));
+        expectError(raycastSceneMeshes(scene, {broken}, 32, 32, ReferenceShading::Phong),
+                    QStringLiteral("not valid"));
 
         int calls = 0;
-        const Result<ReferenceImage> cancelled =
-            raycastSceneMeshes(scene, {sphere}, 64, 64, ReferenceShading::Phong, [&](double) { return ++calls < 3; });
+        const Result<ReferenceImage> cancelled = raycastSceneMeshes(
+            scene, {sphere}, 64, 64, ReferenceShading::Phong, [&](double) { return ++calls < 3; });
         QVERIFY(!cancelled);
         QCOMPARE(cancelled.error(), QStringLiteral("cancelled"));
     }
@@ -322,7 +335,8 @@ private slots:
         // Each pixel depends only on its own ray: a second run, scheduled
         // differently across the threads, gives the same image.
         const ReferenceImage again = meshReference(scene, meshes, 512, 512);
-        QVERIFY(again.color == image->color && again.depth == image->depth && again.specular == image->specular);
+        QVERIFY(again.color == image->color && again.depth == image->depth
+                && again.specular == image->specular);
     }
 };
 

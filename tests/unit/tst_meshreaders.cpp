@@ -47,7 +47,8 @@ Loaded load(const QString &path)
 
 bool anyContains(const QStringList &lines, const QString &text)
 {
-    return std::any_of(lines.begin(), lines.end(), [&](const QString &l) { return l.contains(text); });
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const QString &l) { return l.contains(text); });
 }
 
 // Faces as position loops, each started at its smallest position, sorted:
@@ -78,7 +79,8 @@ QByteArray binaryStl(const std::vector<std::array<glm::vec3, 3>> &triangles)
     qToLittleEndian<quint32>(quint32(triangles.size()), count.data());
     bytes += count;
     for (const auto &t : triangles) {
-        const float values[12] = {0, 0, 0, t[0].x, t[0].y, t[0].z, t[1].x, t[1].y, t[1].z, t[2].x, t[2].y, t[2].z};
+        const float values[12] = {0,      0,      0,      t[0].x, t[0].y, t[0].z,
+                                  t[1].x, t[1].y, t[1].z, t[2].x, t[2].y, t[2].z};
         bytes.append(reinterpret_cast<const char *>(values), sizeof values);
         bytes.append(2, '\0');
     }
@@ -147,7 +149,8 @@ void TestMeshReaders::formatsReadTheSameTetrahedron_data()
     QTest::newRow("off, written") << writeTetra(m_dir, "w.off", false);
     QTest::newRow("off binary, written") << writeTetra(m_dir, "w_binary.off", true);
     const QString countsOnHeader = m_dir.filePath("counts_on_header.off");
-    writeBytes(countsOnHeader, "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    writeBytes(countsOnHeader,
+               "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
     QTest::newRow("off, counts on the header line") << countsOnHeader;
     QTest::newRow("stl ascii, written") << writeTetra(m_dir, "w_ascii.stl", false);
     QTest::newRow("stl binary, written") << writeTetra(m_dir, "w_binary.stl", true);
@@ -223,7 +226,8 @@ void TestMeshReaders::objRelativeIndices()
     QCOMPARE(m.faceCount(), std::size_t(3));
     QCOMPARE(m.cornerPosition, (std::vector<std::uint32_t>{0, 1, 2, 0, 1, 3, 0, 1, 3}));
     const std::uint32_t none = PolygonMesh::kNoNormal;
-    QCOMPARE(m.cornerNormal, (std::vector<std::uint32_t>{none, none, none, none, none, none, 0, 0, 0}));
+    QCOMPARE(m.cornerNormal,
+             (std::vector<std::uint32_t>{none, none, none, none, none, none, 0, 0, 0}));
 }
 
 void TestMeshReaders::objCornerFormsAndContinuations()
@@ -238,12 +242,14 @@ void TestMeshReaders::objCornerFormsAndContinuations()
     QCOMPARE(m.faceCount(), std::size_t(4));
     const std::uint32_t none = PolygonMesh::kNoNormal;
     QCOMPARE(m.cornerPosition, (std::vector<std::uint32_t>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3}));
-    QCOMPARE(m.cornerNormal, (std::vector<std::uint32_t>{none, none, none, none, none, none, 1, 1, 1, 0, 0, 0}));
+    QCOMPARE(m.cornerNormal,
+             (std::vector<std::uint32_t>{none, none, none, none, none, none, 1, 1, 1, 0, 0, 0}));
 }
 
 void TestMeshReaders::objByteOrderMarkAndTrailingComments()
 {
-    const MeshReadResult r = parseObj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0 # x\nv 0 1 0\nf 1 2 3 # the only face\n");
+    const MeshReadResult r =
+        parseObj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0 # x\nv 0 1 0\nf 1 2 3 # the only face\n");
     QVERIFY2(r.ok(), qPrintable(r.error));
     QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warnings.join("; ")));
     QCOMPARE(r.mesh->positions.size(), std::size_t(3));
@@ -277,7 +283,8 @@ void TestMeshReaders::objNumbersMatchFromChars()
         QCOMPARE(r.mesh->positions[i].z, got);
         if (got != expected[i]) {
             ++inexact;
-            QVERIFY2(std::nextafter(expected[i], got) == got, qPrintable(QString::number(expected[i], 'g', 9)));
+            QVERIFY2(std::nextafter(expected[i], got) == got,
+                     qPrintable(QString::number(expected[i], 'g', 9)));
         }
     }
     QVERIFY(inexact < 10);
@@ -334,8 +341,9 @@ void TestMeshReaders::rejected_data()
     QVERIFY(sparse.open(QIODevice::WriteOnly) && sparse.resize(kMaxMeshFileBytes + 1));
     sparse.close();
     QTest::newRow("over the size limit") << huge << "too large";
-    QTest::newRow("words in ascii ply") << kBad + "words.ply"
-                                        << "line 11: expected a number for 'y' of vertex 2, found 'hello'";
+    QTest::newRow("words in ascii ply")
+        << kBad + "words.ply"
+        << "line 11: expected a number for 'y' of vertex 2, found 'hello'";
     QTest::newRow("words in off") << kBad + "words.off"
                                   << "line 5: expected a number, found 'one'";
     QTest::newRow("words in ascii stl") << kBad + "words.stl"
@@ -399,7 +407,8 @@ void TestMeshReaders::randomBytesRejected_data()
             QByteArray bytes(4096, Qt::Uninitialized);
             for (char &b : bytes)
                 b = char(rng.bounded(256));
-            const QString path = m_dir.filePath(QStringLiteral("random%1.%2").arg(seed).arg(suffix));
+            const QString path =
+                m_dir.filePath(QStringLiteral("random%1.%2").arg(seed).arg(suffix));
             writeBytes(path, bytes);
             QTest::newRow(qPrintable(QStringLiteral("%1 seed %2").arg(suffix).arg(seed))) << path;
         }
@@ -447,7 +456,8 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion_data()
     QTest::newRow("not a number") << QByteArray("format binary_big_endian /.0");
     QTest::newRow("a word too many") << QByteArray("format ascii 1.0 x");
     QTest::newRow("point without digits") << QByteArray("format ascii 1.");
-    QTest::newRow("a version past a float (fuzz find)") << QByteArray("format ascii 6666666666666666666666661.0");
+    QTest::newRow("a version past a float (fuzz find)")
+        << QByteArray("format ascii 6666666666666666666666661.0");
 }
 
 void TestMeshReaders::plyFormatLineMustCarryAVersion()
@@ -464,7 +474,8 @@ void TestMeshReaders::plyFormatLineMustCarryAVersion()
                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     const MeshReadResult r = readMeshFile(path);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains(QLatin1String("PLY header line 2: expected 'format")), qPrintable(r.error));
+    QVERIFY2(r.error.contains(QLatin1String("PLY header line 2: expected 'format")),
+             qPrintable(r.error));
 
     // The same file with a version reads.
     writeBytes(path, readBytes(path).replace(formatLine, "format ascii 1.0"));
@@ -477,15 +488,18 @@ void TestMeshReaders::plyHeaderMustBeText_data()
     QTest::addColumn<QString>("error"); // empty: the file reads
     static constexpr char kFound[] = "element v\x01\0a`\0\x0c\x88vertex 3";
     QTest::newRow("nul and form feed in a name (fuzz find)")
-        << QByteArray(kFound, sizeof kFound - 1) << "PLY header line 3: byte 0x01 at column 10 is not text";
+        << QByteArray(kFound, sizeof kFound - 1)
+        << "PLY header line 3: byte 0x01 at column 10 is not text";
     QTest::newRow("form feed between words") << QByteArray("element vertex\x0c"
                                                            "3")
                                              << "byte 0x0c at column 15";
-    QTest::newRow("a second format line") << QByteArray("format binary_little_endian 1.0\nelement vertex 3")
-                                          << "PLY header line 3: a second 'format' line";
-    QTest::newRow("words after end_header")
-        << QByteArray("element vertex 3\nend_header float nz") << "PLY header line 4: words after 'end_header'";
-    QTest::newRow("UTF-8 in a comment reads") << QByteArray("comment made by Jos\xc3\xa9\nelement vertex 3") << "";
+    QTest::newRow("a second format line")
+        << QByteArray("format binary_little_endian 1.0\nelement vertex 3")
+        << "PLY header line 3: a second 'format' line";
+    QTest::newRow("words after end_header") << QByteArray("element vertex 3\nend_header float nz")
+                                            << "PLY header line 4: words after 'end_header'";
+    QTest::newRow("UTF-8 in a comment reads")
+        << QByteArray("comment made by Jos\xc3\xa9\nelement vertex 3") << "";
 }
 
 void TestMeshReaders::plyHeaderMustBeText()
@@ -566,7 +580,8 @@ void TestMeshReaders::objCutMidLineLoadsWithWarning()
     const Loaded lf = load(cutFace);
     QVERIFY2(lf.mesh, qPrintable(lf.error));
     QCOMPARE(lf.mesh->faceCount(), std::size_t(4));
-    QVERIFY2(anyContains(lf.warnings, "dropped 1 degenerate face"), qPrintable(lf.warnings.join("; ")));
+    QVERIFY2(anyContains(lf.warnings, "dropped 1 degenerate face"),
+             qPrintable(lf.warnings.join("; ")));
 }
 
 void TestMeshReaders::repairedOnLoad_data()
@@ -576,26 +591,31 @@ void TestMeshReaders::repairedOnLoad_data()
     QTest::addColumn<int>("vertices");
     QTest::addColumn<QStringList>("warnings");
     QTest::newRow("out-of-range and negative indices")
-        << kBad + "bad_indices.obj" << 4 << 4 << QStringList{"dropped 3 faces with out-of-range vertex indices"};
+        << kBad + "bad_indices.obj" << 4 << 4
+        << QStringList{"dropped 3 faces with out-of-range vertex indices"};
     QTest::newRow("NaN and inf coordinates")
         << kBad + "nan_coords.obj" << 4 << 4
-        << QStringList{"dropped 2 faces using NaN or infinite coordinates", "removed 2 vertices no face uses"};
-    QTest::newRow("zero-area faces") << kBad + "zero_area.obj" << 4 << 4
-                                     << QStringList{
-                                            "dropped 3 degenerate faces (fewer than 3 distinct corners or zero area)",
-                                            "removed 2 vertices no face uses"};
-    QTest::newRow("non-manifold edge") << kBad + "nonmanifold_edge.obj" << 3 << 5
-                                       << QStringList{
-                                              "1 non-manifold edge (shared by 3 or more faces), kept as they are"};
+        << QStringList{"dropped 2 faces using NaN or infinite coordinates",
+                       "removed 2 vertices no face uses"};
+    QTest::newRow("zero-area faces")
+        << kBad + "zero_area.obj" << 4 << 4
+        << QStringList{"dropped 3 degenerate faces (fewer than 3 distinct corners or zero area)",
+                       "removed 2 vertices no face uses"};
+    QTest::newRow("non-manifold edge")
+        << kBad + "nonmanifold_edge.obj" << 3 << 5
+        << QStringList{"1 non-manifold edge (shared by 3 or more faces), kept as they are"};
     QTest::newRow("cube with a flipped face")
-        << kBad + "flipped_face_cube.obj" << 6 << 8 << QStringList{"flipped 1 face to make the winding consistent"};
+        << kBad + "flipped_face_cube.obj" << 6 << 8
+        << QStringList{"flipped 1 face to make the winding consistent"};
     QTest::newRow("tetrahedron with a flipped face")
-        << kBad + "flipped_face_tetra.obj" << 4 << 4 << QStringList{"flipped 1 face to make the winding consistent"};
+        << kBad + "flipped_face_tetra.obj" << 4 << 4
+        << QStringList{"flipped 1 face to make the winding consistent"};
     QTest::newRow("isolated vertices") << kBad + "isolated_vertices.obj" << 4 << 4
                                        << QStringList{"removed 3 vertices no face uses"};
     QTest::newRow("off face colours without COFF")
         << kFormats + "tetra_commented.off" << 4 << 4
-        << QStringList{"ignored the values after the vertex indices on 1 face line (face colours need a COFF header)"};
+        << QStringList{"ignored the values after the vertex indices on 1 face line (face colours "
+                       "need a COFF header)"};
 }
 
 void TestMeshReaders::repairedOnLoad()
@@ -628,23 +648,27 @@ void TestMeshReaders::stlDropsAreCounted()
     QVERIFY2(l.mesh, qPrintable(l.error));
     QCOMPARE(l.mesh->faceCount(), std::size_t(4));
     QCOMPARE(l.mesh->positions.size(), std::size_t(4));
-    QCOMPARE(l.warnings,
-             (QStringList{"dropped 1 triangle with NaN or infinite coordinates",
-                          "the file's facet normals are all zero or invalid; normals will be computed",
-                          "dropped 1 triangle with two corners at the same position",
-                          "dropped 1 degenerate face (fewer than 3 distinct corners or zero area)",
-                          "removed 1 vertex no face uses"}));
+    QCOMPARE(
+        l.warnings,
+        (QStringList{"dropped 1 triangle with NaN or infinite coordinates",
+                     "the file's facet normals are all zero or invalid; normals will be computed",
+                     "dropped 1 triangle with two corners at the same position",
+                     "dropped 1 degenerate face (fewer than 3 distinct corners or zero area)",
+                     "removed 1 vertex no face uses"}));
 }
 
 void TestMeshReaders::binaryPlyNonFinite()
 {
     const QString path = m_dir.filePath("nan.ply");
-    QByteArray bytes("ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
-                     "property float z\nelement face 5\nproperty list uchar int vertex_indices\nend_header\n");
+    QByteArray bytes(
+        "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float "
+        "y\n"
+        "property float z\nelement face 5\nproperty list uchar int vertex_indices\nend_header\n");
     const float inf = std::numeric_limits<float>::infinity();
     const float coords[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, inf, 0, 0};
     bytes.append(reinterpret_cast<const char *>(coords), sizeof coords);
-    for (const auto &f : {std::array<qint32, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 1, 4}}) {
+    for (const auto &f :
+         {std::array<qint32, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 1, 4}}) {
         bytes.append(char(3));
         bytes.append(reinterpret_cast<const char *>(f.data()), 12);
     }
@@ -653,7 +677,8 @@ void TestMeshReaders::binaryPlyNonFinite()
     QVERIFY2(l.mesh, qPrintable(l.error));
     QCOMPARE(l.mesh->faceCount(), std::size_t(4));
     QCOMPARE(l.warnings,
-             (QStringList{"dropped 1 face using NaN or infinite coordinates", "removed 1 vertex no face uses"}));
+             (QStringList{"dropped 1 face using NaN or infinite coordinates",
+                          "removed 1 vertex no face uses"}));
 }
 
 void TestMeshReaders::openMeshMessagesBecomeTheError()
@@ -661,8 +686,10 @@ void TestMeshReaders::openMeshMessagesBecomeTheError()
     // OpenMesh refuses this list type with a console message; it must reach
     // the user as the error rather than stderr.
     const QString path = m_dir.filePath("ushort.ply");
-    QByteArray bytes("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                     "property float z\nelement face 1\nproperty list ushort ushort vertex_indices\nend_header\n");
+    QByteArray bytes("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float "
+                     "x\nproperty float y\n"
+                     "property float z\nelement face 1\nproperty list ushort ushort "
+                     "vertex_indices\nend_header\n");
     const float coords[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     bytes.append(reinterpret_cast<const char *>(coords), sizeof coords);
     const quint16 face[4] = {3, 0, 1, 2};
@@ -670,7 +697,8 @@ void TestMeshReaders::openMeshMessagesBecomeTheError()
     writeBytes(path, bytes);
     const MeshReadResult r = readMeshFile(path);
     QVERIFY(!r.ok());
-    QVERIFY2(r.error.contains("Unsupported Index type for property list: ushort"), qPrintable(r.error));
+    QVERIFY2(r.error.contains("Unsupported Index type for property list: ushort"),
+             qPrintable(r.error));
 }
 
 void TestMeshReaders::openMeshProgressAndCancel()

@@ -28,7 +28,8 @@ const Faces kTetraFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
 const std::vector<glm::vec3> kCubePositions = {{1, 1, -1},  {1, -1, -1},  {1, 1, 1},  {1, -1, 1},
                                                {-1, 1, -1}, {-1, -1, -1}, {-1, 1, 1}, {-1, -1, 1}};
-const Faces kCubeFaces = {{0, 4, 6, 2}, {3, 2, 6, 7}, {7, 6, 4, 5}, {5, 1, 3, 7}, {1, 0, 2, 3}, {5, 4, 0, 1}};
+const Faces kCubeFaces = {{0, 4, 6, 2}, {3, 2, 6, 7}, {7, 6, 4, 5},
+                          {5, 1, 3, 7}, {1, 0, 2, 3}, {5, 4, 0, 1}};
 
 Faces reversed(Faces faces, std::initializer_list<int> which)
 {
@@ -114,7 +115,8 @@ private slots:
         for (const glm::vec3 &v : m.positions)
             QVERIFY(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
         QCOMPARE(r.warnings(),
-                 (QStringList{"dropped 2 faces using NaN or infinite coordinates", "removed 2 vertices no face uses"}));
+                 (QStringList{"dropped 2 faces using NaN or infinite coordinates",
+                              "removed 2 vertices no face uses"}));
     }
 
     void degenerateFacesDropped()
@@ -137,7 +139,8 @@ private slots:
         QCOMPARE(r.facesDroppedDegenerate, 5);
         QCOMPARE(m.faceCount(), std::size_t(5));
         QCOMPARE(r.warnings().first(),
-                 QStringLiteral("dropped 5 degenerate faces (fewer than 3 distinct corners or zero area)"));
+                 QStringLiteral(
+                     "dropped 5 degenerate faces (fewer than 3 distinct corners or zero area)"));
     }
 
     void tinyButRealFacesKept()
@@ -156,7 +159,8 @@ private slots:
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.nonManifoldEdges, 1);
         QCOMPARE(m.faceCount(), std::size_t(3));
-        QCOMPARE(r.warnings(), QStringList{"1 non-manifold edge (shared by 3 or more faces), kept as they are"});
+        QCOMPARE(r.warnings(),
+                 QStringList{"1 non-manifold edge (shared by 3 or more faces), kept as they are"});
     }
 
     void windingMadeConsistent_data()
@@ -164,13 +168,18 @@ private slots:
         QTest::addColumn<std::vector<glm::vec3>>("positions");
         QTest::addColumn<Faces>("faces");
         QTest::addColumn<int>("flipped");
-        QTest::newRow("tetrahedron, first face flipped") << kTetraPositions << reversed(kTetraFaces, {0}) << 1;
-        QTest::newRow("tetrahedron, last face flipped") << kTetraPositions << reversed(kTetraFaces, {3}) << 1;
-        QTest::newRow("tetrahedron inside out") << kTetraPositions << reversed(kTetraFaces, {0, 1, 2, 3}) << 4;
+        QTest::newRow("tetrahedron, first face flipped")
+            << kTetraPositions << reversed(kTetraFaces, {0}) << 1;
+        QTest::newRow("tetrahedron, last face flipped")
+            << kTetraPositions << reversed(kTetraFaces, {3}) << 1;
+        QTest::newRow("tetrahedron inside out")
+            << kTetraPositions << reversed(kTetraFaces, {0, 1, 2, 3}) << 4;
         QTest::newRow("cube, one face flipped") << kCubePositions << reversed(kCubeFaces, {2}) << 1;
-        QTest::newRow("cube, two faces flipped") << kCubePositions << reversed(kCubeFaces, {0, 5}) << 2;
+        QTest::newRow("cube, two faces flipped")
+            << kCubePositions << reversed(kCubeFaces, {0, 5}) << 2;
         // Closed: the outside decides, not the majority.
-        QTest::newRow("cube, four faces flipped") << kCubePositions << reversed(kCubeFaces, {0, 1, 2, 3}) << 4;
+        QTest::newRow("cube, four faces flipped")
+            << kCubePositions << reversed(kCubeFaces, {0, 1, 2, 3}) << 4;
     }
 
     void windingMadeConsistent()
@@ -183,18 +192,24 @@ private slots:
         QCOMPARE(r.facesFlipped, flipped);
         QVERIFY(windingConsistent(m));
         QVERIFY2(signedVolume(m) > 0.0, "closed meshes end up wound outwards");
-        QCOMPARE(
-            r.warnings(),
-            QStringList{QStringLiteral("flipped %1 to make the winding consistent")
-                            .arg(flipped == 1 ? QStringLiteral("1 face") : QStringLiteral("%1 faces").arg(flipped))});
+        QCOMPARE(r.warnings(),
+                 QStringList{QStringLiteral("flipped %1 to make the winding consistent")
+                                 .arg(flipped == 1 ? QStringLiteral("1 face")
+                                                   : QStringLiteral("%1 faces").arg(flipped))});
     }
 
     void openSurfaceFollowsTheMajority()
     {
         // A strip of three quads with the middle one reversed.
-        PolygonMesh m =
-            makeMesh({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {3, 0, 0}, {3, 1, 0}},
-                     {{0, 2, 3, 1}, {2, 3, 5, 4}, {4, 6, 7, 5}});
+        PolygonMesh m = makeMesh({{0, 0, 0},
+                                  {0, 1, 0},
+                                  {1, 0, 0},
+                                  {1, 1, 0},
+                                  {2, 0, 0},
+                                  {2, 1, 0},
+                                  {3, 0, 0},
+                                  {3, 1, 0}},
+                                 {{0, 2, 3, 1}, {2, 3, 5, 4}, {4, 6, 7, 5}});
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.facesFlipped, 1);
         QVERIFY(windingConsistent(m));
@@ -226,15 +241,17 @@ private slots:
             const float a = float(i) * 2.0f * float(M_PI) / n;
             const float t = a / 2.0f;
             const glm::vec3 centre(std::cos(a), std::sin(a), 0.0f);
-            const glm::vec3 across(std::cos(t) * std::cos(a), std::cos(t) * std::sin(a), std::sin(t));
+            const glm::vec3 across(std::cos(t) * std::cos(a), std::cos(t) * std::sin(a),
+                                   std::sin(t));
             p.push_back(centre - 0.3f * across);
             p.push_back(centre + 0.3f * across);
         }
         Faces faces;
         for (int i = 0; i + 1 < n; ++i)
-            faces.push_back(
-                {std::uint32_t(2 * i), std::uint32_t(2 * i + 2), std::uint32_t(2 * i + 3), std::uint32_t(2 * i + 1)});
-        faces.push_back({std::uint32_t(2 * n - 2), 1, 0, std::uint32_t(2 * n - 1)}); // the half twist
+            faces.push_back({std::uint32_t(2 * i), std::uint32_t(2 * i + 2),
+                             std::uint32_t(2 * i + 3), std::uint32_t(2 * i + 1)});
+        faces.push_back(
+            {std::uint32_t(2 * n - 2), 1, 0, std::uint32_t(2 * n - 1)}); // the half twist
         PolygonMesh m = makeMesh(p, faces);
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.orientationConflicts, 1);
@@ -243,25 +260,29 @@ private slots:
 
     void isolatedVerticesRemoved()
     {
-        std::vector<glm::vec3> p = {{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {6, 6, 6}, {0, 0, 1}, {7, 7, 7}};
+        std::vector<glm::vec3> p = {{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                    {6, 6, 6}, {0, 0, 1}, {7, 7, 7}};
         PolygonMesh m = makeMesh(p, {{1, 3, 2}, {1, 2, 5}, {1, 5, 3}, {2, 3, 5}});
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.isolatedVerticesRemoved, 3);
         QCOMPARE(m.positions, kTetraPositions);
-        QCOMPARE(m.cornerPosition, (std::vector<std::uint32_t>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3}));
+        QCOMPARE(m.cornerPosition,
+                 (std::vector<std::uint32_t>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3}));
         QCOMPARE(r.warnings(), QStringList{"removed 3 vertices no face uses"});
     }
 
     void bowtieVertexSplit()
     {
         // Two triangles meeting at vertex 0 only.
-        PolygonMesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+        PolygonMesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                                 {{0, 1, 2}, {0, 3, 4}});
         const RepairReport r = repairMesh(m);
         QCOMPARE(r.verticesDuplicated, 1);
         QCOMPARE(m.positions.size(), std::size_t(6));
         QVERIFY(m.cornerPosition[0] != m.cornerPosition[3]);
         QCOMPARE(m.positions[m.cornerPosition[0]], m.positions[m.cornerPosition[3]]);
-        QCOMPARE(r.warnings(), QStringList{"split 1 vertex where surfaces touch only at that point"});
+        QCOMPARE(r.warnings(),
+                 QStringList{"split 1 vertex where surfaces touch only at that point"});
     }
 
     void fanAroundVertexNotSplit()
@@ -284,7 +305,8 @@ private slots:
         QCOMPARE(r.normalsDiscarded, 7);
         const std::uint32_t none = PolygonMesh::kNoNormal;
         QCOMPARE(m.cornerNormal,
-                 (std::vector<std::uint32_t>{0, 0, 0, none, none, none, none, none, none, none, none, 0}));
+                 (std::vector<std::uint32_t>{0, 0, 0, none, none, none, none, none, none, none,
+                                             none, 0}));
     }
 
     void everythingDroppedLeavesNoFaces()

@@ -69,7 +69,9 @@ private slots:
     {
         QTest::addColumn<QString>("key");
         for (const QString &key : shaderMistakeKeys())
-            if (key != QLatin1String("gouraud")) // the ray caster cannot make it (tst_mistakenreference)
+            if (key
+                != QLatin1String(
+                    "gouraud")) // the ray caster cannot make it (tst_mistakenreference)
                 QTest::newRow(qPrintable(key)) << key;
     }
 
@@ -85,19 +87,25 @@ private slots:
         QVERIFY(d.differingPixels > 0);
         QVERIFY(!d.findings.empty());
         const MistakeFinding &top = d.findings.front();
-        const bool named = top.key == mistake || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
-        QVERIFY2(named, qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
+        const bool named = top.key == mistake
+            || std::find(top.also.begin(), top.also.end(), mistake) != top.also.end();
+        QVERIFY2(
+            named,
+            qPrintable(QStringLiteral("%1 diagnosed as %2").arg(key, shaderMistakeKey(top.key))));
         QCOMPARE(top.confidence, 1.0);
         QVERIFY(!d.unexplained());
         // Nothing else explains it as well, unless it gives the same image.
         for (std::size_t i = 1; i < d.findings.size(); ++i)
-            QVERIFY2(d.findings[i].confidence < 1.0, qPrintable(shaderMistakeKey(d.findings[i].key)));
+            QVERIFY2(d.findings[i].confidence < 1.0,
+                     qPrintable(shaderMistakeKey(d.findings[i].key)));
     }
 
     void reflectIncidentAndViewVectorAreOneFinding()
     {
-        const auto made = std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(),
-                                       [](const auto &entry) { return entry.first == ShaderMistake::ViewVector; });
+        const auto made =
+            std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(), [](const auto &entry) {
+                return entry.first == ShaderMistake::ViewVector;
+            });
         const MistakeDiagnosis d = diagnose(m_setup, made->second.toImage(kBackground));
         QCOMPARE(d.findings.front().key, ShaderMistake::ReflectIncident);
         QVERIFY(d.findings.front().also == std::vector<ShaderMistake>{ShaderMistake::ViewVector});

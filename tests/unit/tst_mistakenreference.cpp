@@ -56,13 +56,15 @@ private slots:
         QFETCH(QString, key);
         const Scene scene = mistakeScene();
         const ReferenceImage exact = render(scene, ReferenceShading::Phong);
-        const ReferenceImage mistaken = render(scene, {ReferenceShading::Phong, shaderMistakeFromKey(key)});
+        const ReferenceImage mistaken =
+            render(scene, {ReferenceShading::Phong, shaderMistakeFromKey(key)});
         QVERIFY(!exact.isNull() && !mistaken.isNull());
         // A mistake changes the colour, never which pixels the object covers.
         QVERIFY(exact.coverage == mistaken.coverage);
         QVERIFY(exact.depth == mistaken.depth);
         const int differing = differingPixels(exact, mistaken);
-        qInfo("%s: %d of %lld covered pixels differ", qPrintable(key), differing, exact.coveredCount());
+        qInfo("%s: %d of %lld covered pixels differ", qPrintable(key), differing,
+              exact.coveredCount());
         QVERIFY2(differing > 0, qPrintable(key));
     }
 
@@ -72,12 +74,14 @@ private slots:
         // every direction under a uniform scale s: the same unit normal.
         const Scene uniform = mistakeScene(glm::dvec3(0.8));
         const ReferenceImage exact = render(uniform, ReferenceShading::Phong);
-        const ReferenceImage mistaken = render(uniform, {ReferenceShading::Phong, ShaderMistake::NormalMatrix});
+        const ReferenceImage mistaken =
+            render(uniform, {ReferenceShading::Phong, ShaderMistake::NormalMatrix});
         QCOMPARE(differingPixels(exact, mistaken), 0);
         // The same shader mistake is plain under a non-uniform scale.
         const Scene stretched = mistakeScene();
-        QVERIFY(differingPixels(render(stretched, ReferenceShading::Phong),
-                                render(stretched, {ReferenceShading::Phong, ShaderMistake::NormalMatrix}))
+        QVERIFY(differingPixels(
+                    render(stretched, ReferenceShading::Phong),
+                    render(stretched, {ReferenceShading::Phong, ShaderMistake::NormalMatrix}))
                 > kSize);
     }
 

@@ -30,10 +30,10 @@ QByteArray str(const glm::vec3 &v)
         + QByteArray::number(v.z, 'g', 9);
 }
 
-#define COMPARE_VEC(actual, expected)                                                                                  \
-    do {                                                                                                               \
-        const glm::vec3 a_ = (actual), e_ = (expected);                                                                \
-        QVERIFY2(near(a_, e_), "got " + str(a_) + ", expected " + str(e_));                                            \
+#define COMPARE_VEC(actual, expected)                                                              \
+    do {                                                                                           \
+        const glm::vec3 a_ = (actual), e_ = (expected);                                            \
+        QVERIFY2(near(a_, e_), "got " + str(a_) + ", expected " + str(e_));                        \
     } while (false)
 
 double angleDeg(const glm::dvec3 &a, const glm::dvec3 &b)
@@ -42,8 +42,9 @@ double angleDeg(const glm::dvec3 &a, const glm::dvec3 &b)
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / std::numbers::pi;
 }
 
-std::vector<glm::vec3> corners(const std::vector<glm::vec3> &positions, const std::vector<std::uint32_t> &triangles,
-                               NormalMethod method, std::optional<double> crease = std::nullopt)
+std::vector<glm::vec3> corners(const std::vector<glm::vec3> &positions,
+                               const std::vector<std::uint32_t> &triangles, NormalMethod method,
+                               std::optional<double> crease = std::nullopt)
 {
     return expandCornerNormals(computeNormals(positions, triangles, method, crease), triangles);
 }
@@ -74,7 +75,8 @@ Cube parityCube()
     // Counter-clockwise from outside.
     const std::uint32_t quads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
                                        {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const glm::vec3 normals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     for (int f = 0; f < 6; ++f) {
         int s = 0;
         while (std::popcount(quads[f][s]) % 2 != 0)
@@ -112,7 +114,8 @@ Sphere weldedUvSphere(int slices, int stacks)
         }
     }
     for (std::size_t t = 0; t < raw.indices.size(); t += 3) {
-        const std::uint32_t a = remap[raw.indices[t]], b = remap[raw.indices[t + 1]], c = remap[raw.indices[t + 2]];
+        const std::uint32_t a = remap[raw.indices[t]], b = remap[raw.indices[t + 1]],
+                            c = remap[raw.indices[t + 2]];
         if (a != b && b != c && c != a)
             sphere.triangles.insert(sphere.triangles.end(), {a, b, c});
     }
@@ -125,7 +128,9 @@ double maxSphereErrorDeg(const Sphere &sphere, const std::vector<glm::vec3> &nor
 {
     double worst = 0.0;
     for (std::size_t c = 0; c < sphere.triangles.size(); ++c)
-        worst = std::max(worst, angleDeg(glm::dvec3(sphere.positions[sphere.triangles[c]]), glm::dvec3(normals[c])));
+        worst = std::max(
+            worst,
+            angleDeg(glm::dvec3(sphere.positions[sphere.triangles[c]]), glm::dvec3(normals[c])));
     return worst;
 }
 
@@ -159,8 +164,8 @@ void TestNormals::singleTriangle_data()
 {
     QTest::addColumn<NormalMethod>("method");
     QTest::addColumn<bool>("crease");
-    for (NormalMethod m : {NormalMethod::Auto, NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted,
-                           NormalMethod::AngleWeighted}) {
+    for (NormalMethod m : {NormalMethod::Auto, NormalMethod::Flat, NormalMethod::Average,
+                           NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         QTest::addRow("%s", qPrintable(normalMethodName(m))) << m << false;
         QTest::addRow("%s+crease", qPrintable(normalMethodName(m))) << m << true;
     }
@@ -173,7 +178,8 @@ void TestNormals::singleTriangle()
     // Counter-clockwise in the x = 1 plane seen from +X: (0,1,0)×(0,0,1) = +X.
     const std::vector<glm::vec3> positions = {{1, 0, 0}, {1, 1, 0}, {1, 0, 1}};
     const std::vector<std::uint32_t> triangles = {0, 1, 2};
-    const auto normals = corners(positions, triangles, method, crease ? std::optional(30.0) : std::nullopt);
+    const auto normals =
+        corners(positions, triangles, method, crease ? std::optional(30.0) : std::nullopt);
     QCOMPARE(normals.size(), 3u);
     for (const glm::vec3 &n : normals)
         QCOMPARE(n, glm::vec3(1, 0, 0));
@@ -217,7 +223,8 @@ void TestNormals::foldAngleWeighted()
     for (NormalMethod m : {NormalMethod::AngleWeighted, NormalMethod::Auto}) {
         const auto normals = corners(kFoldPositions, kFoldTriangles, m);
         const glm::vec3 atA = glm::vec3(0, -1, 1) / std::sqrt(2.0f);
-        const glm::vec3 atB = glm::normalize(glm::vec3(0, -std::atan(2.0f), std::numbers::pi_v<float> / 4));
+        const glm::vec3 atB =
+            glm::normalize(glm::vec3(0, -std::atan(2.0f), std::numbers::pi_v<float> / 4));
         COMPARE_VEC(normals[0], atA);
         COMPARE_VEC(normals[4], atA);
         COMPARE_VEC(normals[1], atB);
@@ -230,7 +237,8 @@ void TestNormals::foldAngleWeighted()
 void TestNormals::foldCrease()
 {
     // 30° < 90°: the fold is a crease, each triangle keeps its own normal.
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         const auto sharp = corners(kFoldPositions, kFoldTriangles, m, 30.0);
         for (int c = 0; c < 3; ++c) {
             QCOMPARE(sharp[c], kUp);
@@ -286,7 +294,8 @@ void TestNormals::cubeCrease()
     // Crease 30° < 90°: every cube edge is sharp; the face normals come back
     // exactly, and the two triangles of a face share one normal per corner.
     const Cube cube = parityCube();
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         const CornerNormals result = computeNormals(cube.positions, cube.triangles, m, 30.0);
         QCOMPARE(result.indexing, CornerNormals::Indexing::PerCorner);
         QCOMPARE(result.normals.size(), 24u); // 8 corners × 3 faces
@@ -302,7 +311,8 @@ void TestNormals::cancellingFacesFallBackToFaceNormal()
     // face normals cancel, so each corner takes its own triangle's normal.
     const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     const std::vector<std::uint32_t> triangles = {0, 1, 2, 0, 2, 1};
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         for (std::optional<double> crease : {std::optional<double>(), std::optional(180.0)}) {
             const auto normals = corners(positions, triangles, m, crease);
             for (int c = 0; c < 3; ++c) {
@@ -321,7 +331,8 @@ void TestNormals::degenerateTriangleAddsNothing()
     // does every corner of T1 under flat shading.
     const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
     const std::vector<std::uint32_t> triangles = {0, 2, 1, 0, 1, 3};
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         for (std::optional<double> crease : {std::optional<double>(), std::optional(30.0)}) {
             const auto normals = corners(positions, triangles, m, crease);
             for (int c = 0; c < 5; ++c)
@@ -349,9 +360,11 @@ void TestNormals::coneApexBigFan()
     for (int k = 0; k < segments; ++k) {
         const double a = 2.0 * std::numbers::pi * k / segments;
         positions.emplace_back(std::sin(a), 0.0, std::cos(a));
-        triangles.insert(triangles.end(), {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
+        triangles.insert(triangles.end(),
+                         {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
     }
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         const auto smooth = corners(positions, triangles, m);
         const auto creased = corners(positions, triangles, m, 30.0);
         const auto sharp = corners(positions, triangles, m, 1.0);
@@ -368,8 +381,8 @@ void TestNormals::coneApexBigFan()
 void TestNormals::unitLengthEverywhere()
 {
     const Sphere sphere = weldedUvSphere(16, 8);
-    for (NormalMethod m :
-         {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m : {NormalMethod::Flat, NormalMethod::Average, NormalMethod::AreaWeighted,
+                           NormalMethod::AngleWeighted}) {
         for (std::optional<double> crease : {std::optional<double>(), std::optional(10.0)}) {
             for (const glm::vec3 &n : corners(sphere.positions, sphere.triangles, m, crease))
                 QVERIFY2(std::abs(glm::length(n) - 1.0f) < 1e-6f, str(n));
@@ -384,13 +397,14 @@ void TestNormals::sphereAgainstAnalytic()
     QCOMPARE(sphere.positions.size(), std::size_t(64 * 31 + 2));
     QCOMPARE(sphere.triangles.size() / 3, std::size_t(64 * 32 * 2 - 2 * 64));
 
-    const double angleError =
-        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AngleWeighted));
-    const double areaError =
-        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AreaWeighted));
-    const double averageError =
-        maxSphereErrorDeg(sphere, corners(sphere.positions, sphere.triangles, NormalMethod::Average));
-    qInfo("max error vs analytic normal: angle %.4f°, area %.4f°, average %.4f°", angleError, areaError, averageError);
+    const double angleError = maxSphereErrorDeg(
+        sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AngleWeighted));
+    const double areaError = maxSphereErrorDeg(
+        sphere, corners(sphere.positions, sphere.triangles, NormalMethod::AreaWeighted));
+    const double averageError = maxSphereErrorDeg(
+        sphere, corners(sphere.positions, sphere.triangles, NormalMethod::Average));
+    qInfo("max error vs analytic normal: angle %.4f°, area %.4f°, average %.4f°", angleError,
+          areaError, averageError);
     // Measured: angle 0.087°, area 0.945°, average 0.569°. All three peak on
     // the rings next to the poles, where the thin pole triangles above and
     // the wider cells below pull unevenly; angle weighting is the least
@@ -425,7 +439,8 @@ void TestNormals::sphereCreaseBelowFacetAngleChangesNothing()
     // Neighbouring facets meet at about 5.6°; a 30° crease finds no sharp
     // edge and must give the smooth normals, one per position.
     const Sphere sphere = weldedUvSphere(64, 32);
-    for (NormalMethod m : {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
+    for (NormalMethod m :
+         {NormalMethod::Average, NormalMethod::AreaWeighted, NormalMethod::AngleWeighted}) {
         const CornerNormals creased = computeNormals(sphere.positions, sphere.triangles, m, 30.0);
         QCOMPARE(creased.normals.size(), sphere.positions.size());
         const auto smooth = corners(sphere.positions, sphere.triangles, m);

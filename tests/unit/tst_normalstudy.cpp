@@ -27,12 +27,14 @@ void TestNormalStudy::initTestCase()
 {
     m_rows = runNormalStudy(3);
     for (const NormalStudyRow &r : m_rows)
-        qInfo("%-40s %-8s %7lld tris %8.3f ms  max %7.3f deg  mean %7.4f deg", qPrintable(r.tessellation),
-              qPrintable(r.method), r.triangles, r.ms, r.maxAngleDeg, r.meanAngleDeg);
+        qInfo("%-40s %-8s %7lld tris %8.3f ms  max %7.3f deg  mean %7.4f deg",
+              qPrintable(r.tessellation), qPrintable(r.method), r.triangles, r.ms, r.maxAngleDeg,
+              r.meanAngleDeg);
     QCOMPARE(m_rows.size(), std::size_t(12)); // 3 tessellations × 4 methods
 }
 
-const NormalStudyRow &TestNormalStudy::row(const QString &tessellationStart, const QString &method) const
+const NormalStudyRow &TestNormalStudy::row(const QString &tessellationStart,
+                                           const QString &method) const
 {
     for (const NormalStudyRow &r : m_rows)
         if (r.tessellation.startsWith(tessellationStart) && r.method == method)
@@ -52,20 +54,25 @@ void TestNormalStudy::everyRowIsFinite()
 
 void TestNormalStudy::angleBeatsAverageOnIrregularSpheres()
 {
-    for (const QString &irregular : {QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
+    for (const QString &irregular :
+         {QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
         const double angle = row(irregular, QStringLiteral("angle")).meanAngleDeg;
         const double average = row(irregular, QStringLiteral("average")).meanAngleDeg;
         QVERIFY2(angle <= average,
-                 qPrintable(QStringLiteral("%1: angle %2 > average %3").arg(irregular).arg(angle).arg(average)));
+                 qPrintable(QStringLiteral("%1: angle %2 > average %3")
+                                .arg(irregular)
+                                .arg(angle)
+                                .arg(average)));
     }
 }
 
 void TestNormalStudy::flatIsClearlyWorst()
 {
-    for (const QString &t :
-         {QStringLiteral("UV sphere 64"), QStringLiteral("icosphere"), QStringLiteral("UV sphere 128")}) {
+    for (const QString &t : {QStringLiteral("UV sphere 64"), QStringLiteral("icosphere"),
+                             QStringLiteral("UV sphere 128")}) {
         const double flat = row(t, QStringLiteral("flat")).meanAngleDeg;
-        for (const QString &smooth : {QStringLiteral("average"), QStringLiteral("area"), QStringLiteral("angle")})
+        for (const QString &smooth :
+             {QStringLiteral("average"), QStringLiteral("area"), QStringLiteral("angle")})
             QVERIFY2(flat > 2.0 * row(t, smooth).meanAngleDeg, qPrintable(t + u' ' + smooth));
     }
 }

@@ -42,7 +42,8 @@ std::vector<int> bruteForce(const std::vector<BenchRow> &rows)
             const BenchRow &b = rows[j];
             if (j == i || std::isnan(b.frameMs) || std::isnan(b.rmse))
                 continue;
-            dominated = b.frameMs <= a.frameMs && b.rmse <= a.rmse && (b.frameMs < a.frameMs || b.rmse < a.rmse);
+            dominated = b.frameMs <= a.frameMs && b.rmse <= a.rmse
+                && (b.frameMs < a.frameMs || b.rmse < a.rmse);
         }
         if (!dominated)
             front.push_back(i);

@@ -27,7 +27,7 @@ QByteArray str(const glm::dvec3 &v)
         + QByteArray::number(v.z, 'g', 17);
 }
 
-#define COMPARE_VEC(actual, expected)                                                                                  \
+#define COMPARE_VEC(actual, expected)                                                              \
     QVERIFY2(near(actual, expected), "got (" + str(actual) + "), expected (" + str(expected) + ")")
 
 Material material(glm::dvec3 ka, glm::dvec3 kd, glm::dvec3 ks, double n)
@@ -40,8 +40,8 @@ Material material(glm::dvec3 ka, glm::dvec3 kd, glm::dvec3 ks, double n)
     return m;
 }
 
-CameraSpaceLight light(glm::dvec3 position, glm::dvec3 Id = glm::dvec3(1.0), glm::dvec3 Is = glm::dvec3(1.0),
-                       glm::dvec3 c = glm::dvec3(1.0, 0.0, 0.0))
+CameraSpaceLight light(glm::dvec3 position, glm::dvec3 Id = glm::dvec3(1.0),
+                       glm::dvec3 Is = glm::dvec3(1.0), glm::dvec3 c = glm::dvec3(1.0, 0.0, 0.0))
 {
     return CameraSpaceLight{position, Id, Is, c};
 }
@@ -76,7 +76,8 @@ private slots:
         // kd = 0, ks = 1, Is = (1, 0.5, 0.25), n = 2: I = Is·(R·V)² = Is·0.64.
         const Material m = material(glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(1.0), 2.0);
         const std::vector lights{light(kObliqueLight, glm::dvec3(1.0), {1.0, 0.5, 0.25})};
-        COMPARE_VEC(phongIntensity(kP, kN, m, glm::dvec3(0.3), lights), glm::dvec3(0.64, 0.32, 0.16));
+        COMPARE_VEC(phongIntensity(kP, kN, m, glm::dvec3(0.3), lights),
+                    glm::dvec3(0.64, 0.32, 0.16));
     }
 
     void diffusePlusSpecularPlusAmbient()
@@ -93,8 +94,10 @@ private slots:
         // Overhead light, Id = (0, 1, 0.5): kd·1 = (0, 0.5, 0.25).
         // Ambient 0.1·0.2 = 0.02 each channel. Sum (0.42, 0.52, 0.27).
         const Material m = material(glm::dvec3(0.1), glm::dvec3(0.5), glm::dvec3(0.0), 4.0);
-        const std::vector lights{light(kObliqueLight, {1.0, 0.0, 0.0}), light(kOverheadLight, {0.0, 1.0, 0.5})};
-        COMPARE_VEC(phongIntensity(kP, kN, m, glm::dvec3(0.2), lights), glm::dvec3(0.42, 0.52, 0.27));
+        const std::vector lights{light(kObliqueLight, {1.0, 0.0, 0.0}),
+                                 light(kOverheadLight, {0.0, 1.0, 0.5})};
+        COMPARE_VEC(phongIntensity(kP, kN, m, glm::dvec3(0.2), lights),
+                    glm::dvec3(0.42, 0.52, 0.27));
     }
 
     void attenuationClampedAtOne()
@@ -141,7 +144,8 @@ private slots:
         QFETCH(double, expected);
         const Material m = material(glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(1.0), n);
         const std::vector lights{light({std::sqrt(3.0), 0.0, 0.0})};
-        COMPARE_VEC(phongIntensity({0.0, 0.0, -1.0}, kN, m, glm::dvec3(0.0), lights), glm::dvec3(expected));
+        COMPARE_VEC(phongIntensity({0.0, 0.0, -1.0}, kN, m, glm::dvec3(0.0), lights),
+                    glm::dvec3(expected));
     }
 
     void noSpecularFromBehind()
@@ -152,7 +156,8 @@ private slots:
         // the bare formula would add 0.28; the reference adds nothing.
         const Material m = material({0.5, 0.25, 1.0}, glm::dvec3(1.0), glm::dvec3(1.0), 1.0);
         const std::vector lights{light({-8.0, 0.0, -6.0})};
-        COMPARE_VEC(phongIntensity({-4.0, 0.0, -3.0}, kN, m, {0.2, 0.4, 0.6}, lights), glm::dvec3(0.1, 0.1, 0.6));
+        COMPARE_VEC(phongIntensity({-4.0, 0.0, -3.0}, kN, m, {0.2, 0.4, 0.6}, lights),
+                    glm::dvec3(0.1, 0.1, 0.6));
     }
 
     void ambientOnly()
@@ -167,7 +172,8 @@ private slots:
         // Same as diffuseOnly with N given as (0, 0, 7).
         const Material m = material(glm::dvec3(0.0), {0.5, 0.25, 1.0}, glm::dvec3(0.0), 8.0);
         const std::vector lights{light(kObliqueLight)};
-        COMPARE_VEC(phongIntensity(kP, {0.0, 0.0, 7.0}, m, glm::dvec3(0.0), lights), glm::dvec3(0.4, 0.2, 0.8));
+        COMPARE_VEC(phongIntensity(kP, {0.0, 0.0, 7.0}, m, glm::dvec3(0.0), lights),
+                    glm::dvec3(0.4, 0.2, 0.8));
     }
 
     void encodeChannel_data()
@@ -176,7 +182,8 @@ private slots:
         QTest::addColumn<int>("expected");
         QTest::newRow("zero") << 0.0 << 0;
         QTest::newRow("just below 0.5/255") << 0.499 / 255.0 << 0;
-        QTest::newRow("0.5/255 rounds up") << 0.5 / 255.0 << 1; // 0.5 is exact; lround rounds half away
+        QTest::newRow("0.5/255 rounds up")
+            << 0.5 / 255.0 << 1; // 0.5 is exact; lround rounds half away
         QTest::newRow("just above 0.5/255") << 0.501 / 255.0 << 1;
         QTest::newRow("half") << 0.5 << 128; // 127.5 -> 128
         QTest::newRow("254.49/255") << 254.49 / 255.0 << 254;
@@ -237,7 +244,8 @@ private slots:
         Camera camera;
         camera.eye = {3.0, 2.0, 5.0};
         camera.target = {0.5, 0.0, -1.0};
-        const ObjectMatrices m = ObjectMatrices::make(t.matrix(), camera.viewMatrix(), camera.projectionMatrix(1.0));
+        const ObjectMatrices m =
+            ObjectMatrices::make(t.matrix(), camera.viewMatrix(), camera.projectionMatrix(1.0));
         const double s = 1.0 / std::sqrt(2.0);
         const glm::dvec3 n(s, s, 0.0);
         const glm::dmat3 linear(m.modelView);
@@ -248,7 +256,8 @@ private slots:
             QVERIFY(std::abs(glm::dot(normal, mapped)) < kTol);
         }
         // Normalised: -1.5 / (|(√2, 1/√2, 0)|·|(-√2, 1/√2, 0)|) = -1.5 / 2.5 = -0.6.
-        QVERIFY(std::abs(glm::dot(skewed, glm::normalize(linear * glm::dvec3(-s, s, 0.0))) + 0.6) < kTol);
+        QVERIFY(std::abs(glm::dot(skewed, glm::normalize(linear * glm::dvec3(-s, s, 0.0))) + 0.6)
+                < kTol);
     }
 };
 

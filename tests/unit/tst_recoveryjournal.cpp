@@ -19,10 +19,12 @@ namespace {
 RecoveryRecord sampleRecord()
 {
     RecoveryRecord record;
-    record.vertex = {QStringLiteral("/shaders/phong.vert"), QByteArray("#version 330 core\nvoid main() {}\n"), false};
-    record.fragment = {QStringLiteral("/shaders/phong.frag"),
-                       QByteArray("#version 330 core\n// édité: ü\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n"),
-                       true};
+    record.vertex = {QStringLiteral("/shaders/phong.vert"),
+                     QByteArray("#version 330 core\nvoid main() {}\n"), false};
+    record.fragment = {
+        QStringLiteral("/shaders/phong.frag"),
+        QByteArray("#version 330 core\n// édité: ü\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n"),
+        true};
     record.shading = QStringLiteral("phong");
     return record;
 }
@@ -44,7 +46,8 @@ void leaveOrphan(const QString &dir, const QString &id, const RecoveryRecord &re
         QVERIFY2(written, qPrintable(written.error()));
         QVERIFY(QFile::rename(other.journalPath(), QDir(dir).filePath(id + ".journal")));
     }
-    writeFile(QDir(dir).filePath(id + ".lock"), "999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
+    writeFile(QDir(dir).filePath(id + ".lock"),
+              "999999999\nphonglab\n" + QSysInfo::machineHostName().toUtf8() + '\n');
 }
 
 } // namespace
@@ -124,7 +127,8 @@ void TestRecoveryJournal::halfWrittenTempFileIsIgnored()
     RecoveryJournal journal(m_dir->path());
     QVERIFY(journal.write(sampleRecord()));
     const QByteArray complete = sampleRecord().fragment.text;
-    writeFile(journal.journalPath() + QStringLiteral(".Xa12bC"), "{\"format\": \"phonglab-recovery\", \"vers");
+    writeFile(journal.journalPath() + QStringLiteral(".Xa12bC"),
+              "{\"format\": \"phonglab-recovery\", \"vers");
     const auto read = journal.read();
     QVERIFY(read);
     QCOMPARE(read->fragment.text, complete);
@@ -140,11 +144,15 @@ void TestRecoveryJournal::halfWrittenTempFileIsIgnored()
 void TestRecoveryJournal::truncatedJournalIsRefused()
 {
     const QString path = QDir(m_dir->path()).filePath(QStringLiteral("7-7.journal"));
-    writeFile(path, "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab");
+    writeFile(path,
+              "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab");
     const auto truncated = RecoveryJournal::readFile(path);
     QVERIFY(!truncated);
-    QVERIFY2(truncated.error().contains(QStringLiteral("not a complete")), qPrintable(truncated.error()));
-    writeFile(path, "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab\"}}");
+    QVERIFY2(truncated.error().contains(QStringLiteral("not a complete")),
+             qPrintable(truncated.error()));
+    writeFile(
+        path,
+        "{\"format\": \"phonglab-recovery\", \"version\": 1, \"vertex\": {\"text\": \"ab\"}}");
     const auto partial = RecoveryJournal::readFile(path);
     QVERIFY(!partial);
     QVERIFY2(partial.error().contains(QStringLiteral("missing")), qPrintable(partial.error()));

@@ -45,7 +45,8 @@ glm::dvec3 rayDirection(const Camera &camera, double px, double py, int width, i
 {
     const double tanHalfFov = std::tan(glm::radians(camera.fovDeg) * 0.5);
     const double ndcX = 2.0 * px / width - 1.0, ndcY = 1.0 - 2.0 * py / height;
-    return glm::normalize(glm::dvec3(ndcX * tanHalfFov * double(width) / height, ndcY * tanHalfFov, -1.0));
+    return glm::normalize(
+        glm::dvec3(ndcX * tanHalfFov * double(width) / height, ndcY * tanHalfFov, -1.0));
 }
 
 // Signed distance in pixels from image point (px, py) to the outline of an
@@ -53,21 +54,26 @@ glm::dvec3 rayDirection(const Camera &camera, double px, double py, int width, i
 // direction to the centre minus the sphere's angular radius, divided by that
 // angle's gradient in the image (to first order, which is plenty within a
 // few pixels of the outline).
-double outlineDistancePx(const Scene &scene, const SceneObject &sphere, double px, double py, int width, int height)
+double outlineDistancePx(const Scene &scene, const SceneObject &sphere, double px, double py,
+                         int width, int height)
 {
-    const glm::dvec3 centre(scene.camera.viewMatrix() * glm::dvec4(sphere.transform.translate, 1.0));
+    const glm::dvec3 centre(scene.camera.viewMatrix()
+                            * glm::dvec4(sphere.transform.translate, 1.0));
     const double radius = sphere.transform.scale.x;
     const double angularRadius = std::asin(radius / glm::length(centre));
     const auto f = [&](double x, double y) {
-        const double c = glm::dot(rayDirection(scene.camera, x, y, width, height), glm::normalize(centre));
+        const double c =
+            glm::dot(rayDirection(scene.camera, x, y, width, height), glm::normalize(centre));
         return std::acos(std::clamp(c, -1.0, 1.0)) - angularRadius;
     };
     const double h = 1e-3;
-    const glm::dvec2 gradient((f(px + h, py) - f(px - h, py)) / (2 * h), (f(px, py + h) - f(px, py - h)) / (2 * h));
+    const glm::dvec2 gradient((f(px + h, py) - f(px - h, py)) / (2 * h),
+                              (f(px, py + h) - f(px, py - h)) / (2 * h));
     return f(px, py) / glm::length(gradient);
 }
 
-std::vector<std::uint8_t> mask(const Scene &scene, const std::vector<MeshPtr> &meshes, int w, int h, int bits)
+std::vector<std::uint8_t> mask(const Scene &scene, const std::vector<MeshPtr> &meshes, int w, int h,
+                               int bits)
 {
     Result<std::vector<std::uint8_t>> m = ambiguousReferencePixels(scene, meshes, w, h, bits);
     if (!m)
@@ -89,7 +95,8 @@ bool deepInside(const ReferenceImage &image, int x, int y, int radius)
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx) {
             const int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= image.width || ny >= image.height || !image.covered(nx, ny))
+            if (nx < 0 || ny < 0 || nx >= image.width || ny >= image.height
+                || !image.covered(nx, ny))
                 return false;
         }
     return true;
@@ -127,7 +134,8 @@ private slots:
         QFETCH(int, side);
         QFETCH(int, minEdgePixels);
         const Scene scene = twoSpheres();
-        const MeshPtr sphere = mesh ? std::make_shared<const MeshData>(makeUvSphere(512, 256)) : nullptr;
+        const MeshPtr sphere =
+            mesh ? std::make_shared<const MeshData>(makeUvSphere(512, 256)) : nullptr;
         const std::vector<MeshPtr> meshes{sphere, sphere};
         const std::vector<std::uint8_t> ambiguous = mask(scene, meshes, side, side, bits);
         const ReferenceImage image = reference(scene, meshes, side, side);
@@ -151,32 +159,38 @@ private slots:
                 // sides, the centre within one step of it.
                 if (std::abs(toB) < step - slack && toA < -2.0) {
                     ++edgePixels;
-                    QVERIFY2(flag,
-                             qPrintable(QStringLiteral("edge pixel (%1, %2), %3 px from B's outline, not flagged")
-                                            .arg(x)
-                                            .arg(y)
-                                            .arg(toB)));
+                    QVERIFY2(
+                        flag,
+                        qPrintable(QStringLiteral(
+                                       "edge pixel (%1, %2), %3 px from B's outline, not flagged")
+                                       .arg(x)
+                                       .arg(y)
+                                       .arg(toB)));
                 }
                 // The smooth interior of either sphere (and the background):
                 // more than a pixel from both outlines.
                 if (std::abs(toA) > 1.0 && std::abs(toB) > 1.0) {
                     interior += image.covered(x, y);
-                    QVERIFY2(!flag,
-                             qPrintable(QStringLiteral("pixel (%1, %2) flagged, %3 px from A's outline, "
-                                                       "%4 px from B's")
-                                            .arg(x)
-                                            .arg(y)
-                                            .arg(toA)
-                                            .arg(toB)));
+                    QVERIFY2(
+                        !flag,
+                        qPrintable(QStringLiteral("pixel (%1, %2) flagged, %3 px from A's outline, "
+                                                  "%4 px from B's")
+                                       .arg(x)
+                                       .arg(y)
+                                       .arg(toA)
+                                       .arg(toB)));
                 }
                 if (flag)
                     farthestFlag = std::max(farthestFlag, std::min(std::abs(toA), std::abs(toB)));
             }
         }
-        qInfo("%s, %d bits, %dx%d: %lld px flagged, the farthest %.4f px from an outline; %lld on the occlusion "
+        qInfo("%s, %d bits, %dx%d: %lld px flagged, the farthest %.4f px from an outline; %lld on "
+              "the occlusion "
               "edge (all flagged); %lld covered interior px (none flagged)",
-              mesh ? "uv spheres" : "analytic spheres", bits, side, side, flagged, farthestFlag, edgePixels, interior);
-        QVERIFY2(edgePixels >= minEdgePixels, "the test geometry put too few pixel centres on the occlusion edge");
+              mesh ? "uv spheres" : "analytic spheres", bits, side, side, flagged, farthestFlag,
+              edgePixels, interior);
+        QVERIFY2(edgePixels >= minEdgePixels,
+                 "the test geometry put too few pixel centres on the occlusion edge");
         QVERIFY(interior > side * side / 10);
         // Only pixels at an outline are flagged; "at" is a little wider than
         // the step, as near its outline a sphere's depth is not smooth at
@@ -222,7 +236,8 @@ private slots:
         scene.camera.target = {0.0, 0.0, 0.0};
         scene.camera.farPlane = 2000.0;
         const int w = 320, h = 240;
-        const std::vector<MeshPtr> meshes{mesh ? std::make_shared<const MeshData>(makeCube()) : nullptr};
+        const std::vector<MeshPtr> meshes{mesh ? std::make_shared<const MeshData>(makeCube())
+                                               : nullptr};
         const std::vector<std::uint8_t> ambiguous = mask(scene, meshes, w, h, bits);
         const ReferenceImage image = reference(scene, meshes, w, h);
         const auto created = SceneDepthCaster::create(scene, meshes, w, h);
@@ -245,9 +260,10 @@ private slots:
                 steepInside += std::abs(caster->depthAt(x + 0.5, y + 0.5 - step) - d) > 1e-3 * d;
             }
         }
-        qInfo("%s, %dx%d: %lld px flagged; %lld px a pixel or more inside the outline, %lld of them "
-              "with a depth change > 0.1 %% over one step, %lld flagged",
-              QTest::currentDataTag(), w, h, flagged, inside, steepInside, flaggedInside);
+        qInfo(
+            "%s, %dx%d: %lld px flagged; %lld px a pixel or more inside the outline, %lld of them "
+            "with a depth change > 0.1 %% over one step, %lld flagged",
+            QTest::currentDataTag(), w, h, flagged, inside, steepInside, flaggedInside);
         QVERIFY(inside > w * h / 20);
         if (halfSize > 100.0)
             QVERIFY2(steepInside > w, "not grazing enough to test anything");
@@ -303,14 +319,16 @@ private slots:
         for (const SceneObject &object : loaded.scene->objects)
             perObject.push_back(meshes.entries.value(meshKey(*loaded.scene, object)).mesh);
 
-        const std::vector<std::uint8_t> ambiguous = mask(*loaded.scene, perObject, 800, 600, kDefaultSubpixelBits);
+        const std::vector<std::uint8_t> ambiguous =
+            mask(*loaded.scene, perObject, 800, 600, kDefaultSubpixelBits);
         const ReferenceImage image = reference(*loaded.scene, perObject, 800, 600);
         qint64 flagged = 0, flaggedCovered = 0;
         for (std::size_t i = 0; i < ambiguous.size(); ++i) {
             flagged += ambiguous[i];
             flaggedCovered += ambiguous[i] && image.coverage[i];
         }
-        qInfo("default scene 800x600, %d bits: %lld px flagged, %lld of them covered, of %lld covered",
+        qInfo("default scene 800x600, %d bits: %lld px flagged, %lld of them covered, of %lld "
+              "covered",
               kDefaultSubpixelBits, flagged, flaggedCovered, image.coveredCount());
         QVERIFY(flagged > 0);
         QVERIFY(flagged < image.coveredCount() / 20);

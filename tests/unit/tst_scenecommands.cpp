@@ -69,15 +69,17 @@ private slots:
     {
         PointLight after = m_scene.lights[1];
         after.attenuation = {1.0, 0.1, 0.01};
-        roundTrip(new SetLightCommand(access(), 1, m_scene.lights[1], after, LightField::Attenuation),
-                  [&](Scene &s) { s.lights[1] = after; });
+        roundTrip(
+            new SetLightCommand(access(), 1, m_scene.lights[1], after, LightField::Attenuation),
+            [&](Scene &s) { s.lights[1] = after; });
     }
 
     void addAndRemoveLight()
     {
         PointLight added;
         added.position = {0, 5, 0};
-        roundTrip(new AddLightCommand(access(), added), [&](Scene &s) { s.lights.push_back(added); });
+        roundTrip(new AddLightCommand(access(), added),
+                  [&](Scene &s) { s.lights.push_back(added); });
         roundTrip(new RemoveLightCommand(access(), 0, m_scene.lights[0]),
                   [](Scene &s) { s.lights.erase(s.lights.begin()); });
         m_stack.undo();
@@ -88,9 +90,11 @@ private slots:
     // Switching off keeps the light in the scene, flagged; undo switches it back on.
     void switchLightsOffAndOn()
     {
-        roundTrip(new SetLightEnabledCommand(access(), 0, false), [](Scene &s) { s.lights[0].enabled = false; });
+        roundTrip(new SetLightEnabledCommand(access(), 0, false),
+                  [](Scene &s) { s.lights[0].enabled = false; });
         QCOMPARE(m_scene.lights.size(), sampleScene().lights.size());
-        roundTrip(new SetLightEnabledCommand(access(), 0, true), [](Scene &s) { s.lights[0].enabled = true; });
+        roundTrip(new SetLightEnabledCommand(access(), 0, true),
+                  [](Scene &s) { s.lights[0].enabled = true; });
         m_stack.undo();
         m_stack.undo();
         QVERIFY(m_scene == sampleScene());
@@ -104,7 +108,8 @@ private slots:
     {
         roundTrip(new RenameLightCommand(access(), 0, "", "Key light"),
                   [](Scene &s) { s.lights[0].name = "Key light"; });
-        roundTrip(new RenameLightCommand(access(), 0, "Key light", ""), [](Scene &s) { s.lights[0].name.clear(); });
+        roundTrip(new RenameLightCommand(access(), 0, "Key light", ""),
+                  [](Scene &s) { s.lights[0].name.clear(); });
         QCOMPARE(m_stack.count(), 2); // renames never merge
         m_stack.undo();
         QCOMPARE(m_scene.lights[0].name, std::string("Key light"));
@@ -123,7 +128,8 @@ private slots:
     {
         Material after = m_scene.objects[1].material;
         after.kd = {0.9, 0.1, 0.1};
-        roundTrip(new SetMaterialCommand(access(), 1, m_scene.objects[1].material, after, MaterialField::Kd),
+        roundTrip(new SetMaterialCommand(access(), 1, m_scene.objects[1].material, after,
+                                         MaterialField::Kd),
                   [&](Scene &s) { s.objects[1].material = after; });
     }
 
@@ -131,7 +137,8 @@ private slots:
     {
         Transform after = m_scene.objects[0].transform;
         after.scale = {2.0, 0.5, 1.0}; // non-uniform is fine
-        roundTrip(new SetTransformCommand(access(), 0, m_scene.objects[0].transform, after, TransformField::Scale),
+        roundTrip(new SetTransformCommand(access(), 0, m_scene.objects[0].transform, after,
+                                          TransformField::Scale),
                   [&](Scene &s) { s.objects[0].transform = after; });
     }
 
@@ -143,16 +150,19 @@ private slots:
         for (double x : {1.0, 2.0, 3.0}) {
             PointLight after = m_scene.lights[0];
             after.position.x = x;
-            m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], after, LightField::Position));
+            m_stack.push(
+                new SetLightCommand(access(), 0, m_scene.lights[0], after, LightField::Position));
         }
         QCOMPARE(m_stack.count(), 1);
         QCOMPARE(m_scene.lights[0].position.x, 3.0);
         PointLight other = m_scene.lights[1];
         other.position.x = 7.0;
-        m_stack.push(new SetLightCommand(access(), 1, m_scene.lights[1], other, LightField::Position));
+        m_stack.push(
+            new SetLightCommand(access(), 1, m_scene.lights[1], other, LightField::Position));
         PointLight colour = m_scene.lights[0];
         colour.diffuse = {1, 0, 0};
-        m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], colour, LightField::Diffuse));
+        m_stack.push(
+            new SetLightCommand(access(), 0, m_scene.lights[0], colour, LightField::Diffuse));
         QCOMPARE(m_stack.count(), 3);
         m_stack.undo();
         m_stack.undo();
@@ -165,9 +175,11 @@ private slots:
     {
         PointLight moved = m_scene.lights[0];
         moved.position.y = 9.0;
-        m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], moved, LightField::Position, false));
+        m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], moved,
+                                         LightField::Position, false));
         moved.position.y = 10.0;
-        m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], moved, LightField::Position, false));
+        m_stack.push(new SetLightCommand(access(), 0, m_scene.lights[0], moved,
+                                         LightField::Position, false));
         QCOMPARE(m_stack.count(), 2);
     }
 
@@ -175,13 +187,17 @@ private slots:
     {
         Material a = m_scene.objects[0].material;
         a.shininess = 5.0;
-        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a, MaterialField::Preset));
+        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a,
+                                            MaterialField::Preset));
         a.shininess = 50.0;
-        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a, MaterialField::Preset));
+        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a,
+                                            MaterialField::Preset));
         QCOMPARE(m_stack.count(), 2);
-        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a, MaterialField::Shininess));
+        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a,
+                                            MaterialField::Shininess));
         a.shininess = 60.0;
-        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a, MaterialField::Shininess));
+        m_stack.push(new SetMaterialCommand(access(), 0, m_scene.objects[0].material, a,
+                                            MaterialField::Shininess));
         QCOMPARE(m_stack.count(), 3);
         m_stack.undo();
         QCOMPARE(m_scene.objects[0].material.shininess, 50.0);

@@ -48,9 +48,11 @@ Scene fullScene()
     scene.camera.farPlane = 250.0;
     scene.ambient = {0.05, 0.1, 0.15};
     scene.lights = {
-        PointLight{{3.0, 4.0, 5.0}, {1.0, 0.9, 0.8}, {0.5, 0.5, 0.5}, {1.0, 0.1, 0.01}, "key light", true},
+        PointLight{
+            {3.0, 4.0, 5.0}, {1.0, 0.9, 0.8}, {0.5, 0.5, 0.5}, {1.0, 0.1, 0.01}, "key light", true},
         PointLight{{-4.0, 2.0, 1.0}, {0.3, 0.3, 0.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.2}, "", false},
-        PointLight{{0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}, "rim", true},
+        PointLight{
+            {0.0, -3.0, 0.1}, {2.5, 2.5, 2.5}, {1.0, 1.0, 1.0}, {0.5, 0.0, 0.0}, "rim", true},
     };
     scene.shading = ShadingMethod::BlinnPhong; // not the default
     scene.background = {0.3, 0.2, 0.1};
@@ -130,7 +132,8 @@ void TestSceneJson::roundTripSingleObject()
 
 void TestSceneJson::defaultsWhenOptionalFieldsMissing()
 {
-    const SceneLoadResult result = parseScene(R"({"mesh": "builtin:sphere"})", QStringLiteral("/scenes"));
+    const SceneLoadResult result =
+        parseScene(R"({"mesh": "builtin:sphere"})", QStringLiteral("/scenes"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     QVERIFY(result.warnings.isEmpty());
     QVERIFY(*result.scene == sphereScene());
@@ -155,7 +158,8 @@ void TestSceneJson::defaultsWhenOptionalFieldsMissing()
 
 void TestSceneJson::multiObjectFormDefaults()
 {
-    const SceneLoadResult result = loadSceneFile(kSceneDataDir + QStringLiteral("/two_objects.json"));
+    const SceneLoadResult result =
+        loadSceneFile(kSceneDataDir + QStringLiteral("/two_objects.json"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     QVERIFY(result.warnings.isEmpty());
     const Scene &scene = *result.scene;
@@ -175,7 +179,8 @@ void TestSceneJson::rejectsBadInput_data()
     QTest::addColumn<QString>("pathPrefix"); // the error must start with this
     QTest::addColumn<QString>("mentions");   // ... and contain this, when not empty
 
-    auto row = [](const char *name, const QByteArray &json, const char *prefix, const char *mentions = "") {
+    auto row = [](const char *name, const QByteArray &json, const char *prefix,
+                  const char *mentions = "") {
         QTest::newRow(name) << json << QString::fromUtf8(prefix) << QString::fromUtf8(mentions);
     };
 
@@ -186,79 +191,106 @@ void TestSceneJson::rejectsBadInput_data()
 
     // Mesh / objects
     row("no mesh", R"({"camera": {}})", "mesh: required field missing", "objects");
-    row("mesh and objects", R"({"mesh": "a.obj", "objects": [{"mesh": "b.obj"}]})", "objects:", "mesh");
+    row("mesh and objects", R"({"mesh": "a.obj", "objects": [{"mesh": "b.obj"}]})",
+        "objects:", "mesh");
     row("mesh not string", R"({"mesh": ["a.obj"]})", "mesh:", "got array");
     row("mesh empty", R"({"mesh": ""})", "mesh:", "empty");
     row("objects not array", R"({"objects": {"mesh": "a.obj"}})", "objects:", "array");
     row("objects empty", R"({"objects": []})", "objects:", "at least one");
     row("object not object", R"({"objects": ["a.obj"]})", "objects[0]:", "expected an object");
-    row("object mesh missing", R"({"objects": [{"mesh": "a.obj"}, {}]})", "objects[1].mesh:", "required");
+    row("object mesh missing", R"({"objects": [{"mesh": "a.obj"}, {}]})",
+        "objects[1].mesh:", "required");
     row("object mesh empty", R"({"objects": [{"mesh": ""}]})", "objects[0].mesh:", "empty");
-    row("object scale zero", R"({"objects": [{"mesh": "a"}, {"mesh": "b", "transform": {"scale": [1, 1, 0]}}]})",
+    row("object scale zero",
+        R"({"objects": [{"mesh": "a"}, {"mesh": "b", "transform": {"scale": [1, 1, 0]}}]})",
         "objects[1].transform.scale[2]:", "0");
     row("object shininess zero", R"({"objects": [{"mesh": "a", "material": {"shininess": 0}}]})",
         "objects[0].material.shininess:");
     row("detail zero", R"({"objects": [{"mesh": "a"}, {"mesh": "b", "detail": 0}]})",
         "objects[1].detail: expected a number in (0, 1], got 0");
-    row("detail negative", R"({"objects": [{"mesh": "a", "detail": -0.5}]})", "objects[0].detail:", "got -0.5");
-    row("detail above one", R"({"objects": [{"mesh": "a", "detail": 1.5}]})", "objects[0].detail:", "(0, 1]");
-    row("detail string", R"({"objects": [{"mesh": "a", "detail": "0.5"}]})", "objects[0].detail:", "got string");
-    row("detail null", R"({"objects": [{"mesh": "a", "detail": null}]})", "objects[0].detail:", "got null");
-    row("detail overflow", R"({"objects": [{"mesh": "a", "detail": 1e999}]})", "objects[0].detail:", "(0, 1]");
-    row("single-object detail zero", withSphere(R"("detail": 0)"), "detail: expected a number in (0, 1], got 0");
+    row("detail negative", R"({"objects": [{"mesh": "a", "detail": -0.5}]})",
+        "objects[0].detail:", "got -0.5");
+    row("detail above one", R"({"objects": [{"mesh": "a", "detail": 1.5}]})",
+        "objects[0].detail:", "(0, 1]");
+    row("detail string", R"({"objects": [{"mesh": "a", "detail": "0.5"}]})",
+        "objects[0].detail:", "got string");
+    row("detail null", R"({"objects": [{"mesh": "a", "detail": null}]})",
+        "objects[0].detail:", "got null");
+    row("detail overflow", R"({"objects": [{"mesh": "a", "detail": 1e999}]})",
+        "objects[0].detail:", "(0, 1]");
+    row("single-object detail zero", withSphere(R"("detail": 0)"),
+        "detail: expected a number in (0, 1], got 0");
 
     // Transform
-    row("transform not object", withSphere(R"("transform": [1, 2, 3])"), "transform:", "expected an object");
-    row("translate string", withSphere(R"("transform": {"translate": "1 2 3"})"), "transform.translate:", "got string");
+    row("transform not object", withSphere(R"("transform": [1, 2, 3])"),
+        "transform:", "expected an object");
+    row("translate string", withSphere(R"("transform": {"translate": "1 2 3"})"),
+        "transform.translate:", "got string");
     row("translate two elements", withSphere(R"("transform": {"translate": [1, 2]})"),
         "transform.translate:", "got 2 elements");
     row("rotate non-number", withSphere(R"("transform": {"rotate_deg": [0, "90", 0]})"),
         "transform.rotate_deg[1]:", "got string");
-    row("scale zero", withSphere(R"("transform": {"scale": [1, 0, 1]})"), "transform.scale[1]:", "0");
+    row("scale zero", withSphere(R"("transform": {"scale": [1, 0, 1]})"),
+        "transform.scale[1]:", "0");
 
     // Camera
     row("camera not object", withSphere(R"("camera": "front")"), "camera:");
     row("fov zero", withSphere(R"("camera": {"fov_deg": 0})"), "camera.fov_deg:", "(0, 180)");
     row("fov 180", withSphere(R"("camera": {"fov_deg": 180})"), "camera.fov_deg:", "(0, 180)");
     row("fov negative", withSphere(R"("camera": {"fov_deg": -45})"), "camera.fov_deg:");
-    row("fov string", withSphere(R"("camera": {"fov_deg": "45"})"), "camera.fov_deg:", "got string");
+    row("fov string", withSphere(R"("camera": {"fov_deg": "45"})"),
+        "camera.fov_deg:", "got string");
     row("near zero", withSphere(R"("camera": {"near": 0})"), "camera.near:", "> 0");
     row("near negative", withSphere(R"("camera": {"near": -1})"), "camera.near:");
     row("far equals near", withSphere(R"("camera": {"near": 1, "far": 1})"), "camera.far:", "near");
     row("far below near", withSphere(R"("camera": {"near": 5, "far": 2})"), "camera.far:");
     row("eye equals target", withSphere(R"("camera": {"eye": [1, 2, 3], "target": [1, 2, 3]})"),
         "camera.target:", "eye");
-    row("up parallel", withSphere(R"("camera": {"eye": [0, 5, 0], "target": [0, 0, 0]})"), "camera.up:", "parallel");
-    row("up antiparallel", withSphere(R"("camera": {"eye": [0, 0, 4], "up": [0, 0, 2]})"), "camera.up:", "parallel");
+    row("up parallel", withSphere(R"("camera": {"eye": [0, 5, 0], "target": [0, 0, 0]})"),
+        "camera.up:", "parallel");
+    row("up antiparallel", withSphere(R"("camera": {"eye": [0, 0, 4], "up": [0, 0, 2]})"),
+        "camera.up:", "parallel");
     row("up zero", withSphere(R"("camera": {"up": [0, 0, 0]})"), "camera.up:");
 
     // Material, ambient, background, shading
-    row("ka negative", withSphere(R"("material": {"ka": [-0.1, 0, 0]})"), "material.ka[0]:", ">= 0");
-    row("kd wrong length", withSphere(R"("material": {"kd": [0.5, 0.5, 0.5, 1]})"), "material.kd:", "got 4 elements");
-    row("ks null element", withSphere(R"("material": {"ks": [0.5, null, 0.5]})"), "material.ks[1]:", "got null");
-    row("shininess zero", withSphere(R"("material": {"shininess": 0})"), "material.shininess:", "> 0");
-    row("shininess negative", withSphere(R"("material": {"shininess": -8})"), "material.shininess:");
+    row("ka negative", withSphere(R"("material": {"ka": [-0.1, 0, 0]})"),
+        "material.ka[0]:", ">= 0");
+    row("kd wrong length", withSphere(R"("material": {"kd": [0.5, 0.5, 0.5, 1]})"),
+        "material.kd:", "got 4 elements");
+    row("ks null element", withSphere(R"("material": {"ks": [0.5, null, 0.5]})"),
+        "material.ks[1]:", "got null");
+    row("shininess zero", withSphere(R"("material": {"shininess": 0})"),
+        "material.shininess:", "> 0");
+    row("shininess negative", withSphere(R"("material": {"shininess": -8})"),
+        "material.shininess:");
     row("ambient negative", withSphere(R"("ambient": [0.1, 0.1, -0.1])"), "ambient[2]:", ">= 0");
     row("background string", withSphere(R"("background": "#202020")"), "background:", "got string");
     row("shading unknown", withSphere(R"("shading": "toon")"), "shading:", "blinn-phong");
     row("shading not string", withSphere(R"("shading": 1)"), "shading:", "got number");
 
     // Lights
-    row("lights not array", withLights(R"({"position": [1, 1, 1]})"), "lights:", "expected an array");
+    row("lights not array", withLights(R"({"position": [1, 1, 1]})"),
+        "lights:", "expected an array");
     row("light not object", withLights(R"([[1, 1, 1]])"), "lights[0]:", "expected an object");
-    row("light position missing", withLights(R"([{"position": [1, 1, 1]}, {"diffuse": [1, 1, 1]}])"),
+    row("light position missing",
+        withLights(R"([{"position": [1, 1, 1]}, {"diffuse": [1, 1, 1]}])"),
         "lights[1].position:", "required");
-    row("light diffuse element string", withLights(R"([{"position": [0, 0, 5]}, {"position": [1, 0, 5]},
+    row("light diffuse element string",
+        withLights(R"([{"position": [0, 0, 5]}, {"position": [1, 0, 5]},
         {"position": [2, 0, 5], "diffuse": [1, "1", 1]}])"),
         "lights[2].diffuse[1]:", "got string");
-    row("light specular negative", withLights(R"([{"position": [1, 1, 1], "specular": [-1, 0, 0]}])"),
+    row("light specular negative",
+        withLights(R"([{"position": [1, 1, 1], "specular": [-1, 0, 0]}])"),
         "lights[0].specular[0]:", ">= 0");
-    row("attenuation negative", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, -0.1, 0]}])"),
+    row("attenuation negative",
+        withLights(R"([{"position": [1, 1, 1], "attenuation": [1, -0.1, 0]}])"),
         "lights[0].attenuation[1]:", ">= 0");
     row("attenuation sum zero",
-        withLights(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "attenuation": [0, 0, 0]}])"),
+        withLights(
+            R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "attenuation": [0, 0, 0]}])"),
         "lights[1].attenuation:", "c1 + c2 + c3 must be positive (got 0)");
-    row("attenuation wrong length", withLights(R"([{"position": [1, 1, 1], "attenuation": [1, 0]}])"),
+    row("attenuation wrong length",
+        withLights(R"([{"position": [1, 1, 1], "attenuation": [1, 0]}])"),
         "lights[0].attenuation:", "3 numbers");
     QByteArray nineLights = "[";
     for (int i = 0; i < kMaxLights + 1; ++i)
@@ -267,10 +299,12 @@ void TestSceneJson::rejectsBadInput_data()
 
     // Non-finite numbers: Qt cannot produce NaN, but these overflow a double.
     row("fov overflow", withSphere(R"("camera": {"fov_deg": 1e999})"), "camera.fov_deg:", "finite");
-    row("position overflow", withLights(R"([{"position": [-1e999, 0, 0]}])"), "lights[0].position[0]:", "1e999");
+    row("position overflow", withLights(R"([{"position": [-1e999, 0, 0]}])"),
+        "lights[0].position[0]:", "1e999");
     row("translate overflow", withSphere(R"("transform": {"translate": [0, 0, 2e400]})"),
         "transform.translate[2]:", "finite");
-    row("overflow where object expected", withSphere(R"("camera": 1e999)"), "camera:", "out-of-range number");
+    row("overflow where object expected", withSphere(R"("camera": 1e999)"),
+        "camera:", "out-of-range number");
     row("overflow where string expected", R"({"mesh": 1e999})", "mesh:", "out-of-range number");
 }
 
@@ -291,27 +325,32 @@ void TestSceneJson::syntaxErrorGivesLineAndOffset()
     // The missing comma sits on line 3. Positions must count in the original
     // text even after the out-of-range literal before it has been rewritten,
     // so they must match those of the same text with a same-length number.
-    const QByteArray json = "{\n  \"camera\": {\"fov_deg\": 1e999},\n  \"mesh\": \"a.obj\" \"x\": 1\n}";
+    const QByteArray json =
+        "{\n  \"camera\": {\"fov_deg\": 1e999},\n  \"mesh\": \"a.obj\" \"x\": 1\n}";
     QByteArray plain = json;
     plain.replace("1e999", "45.00");
     const SceneLoadResult result = parseScene(json);
     const SceneLoadResult reference = parseScene(plain);
     QVERIFY(!result.ok());
-    QVERIFY2(result.error.startsWith(QStringLiteral("JSON syntax error at line 3, column ")), qPrintable(result.error));
+    QVERIFY2(result.error.startsWith(QStringLiteral("JSON syntax error at line 3, column ")),
+             qPrintable(result.error));
     QVERIFY2(result.error.contains(QStringLiteral("(byte offset ")), qPrintable(result.error));
     QCOMPARE(result.error, reference.error);
 
     // Qt points at the offending token or one byte into it.
     const qsizetype offset = json.indexOf("\"x\"");
     const qsizetype column = offset - json.lastIndexOf('\n', offset);
-    QVERIFY2(result.error.contains(QStringLiteral("column %1 (byte offset %2)").arg(column).arg(offset))
-                 || result.error.contains(QStringLiteral("column %1 (byte offset %2)").arg(column + 1).arg(offset + 1)),
-             qPrintable(result.error));
+    QVERIFY2(
+        result.error.contains(QStringLiteral("column %1 (byte offset %2)").arg(column).arg(offset))
+            || result.error.contains(
+                QStringLiteral("column %1 (byte offset %2)").arg(column + 1).arg(offset + 1)),
+        qPrintable(result.error));
 }
 
 void TestSceneJson::underflowReadsAsZero()
 {
-    const SceneLoadResult result = parseScene(withSphere(R"("transform": {"translate": [1e-999, -1e-400, 1]})"));
+    const SceneLoadResult result =
+        parseScene(withSphere(R"("transform": {"translate": [1e-999, -1e-400, 1]})"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     QCOMPARE(result.scene->objects.front().transform.translate, glm::dvec3(0.0, 0.0, 1.0));
 }
@@ -334,17 +373,21 @@ void TestSceneJson::warnsAboutUnknownKeys()
     // The unknown key changed nothing.
     QCOMPARE(result.scene->camera.fovDeg, Camera{}.fovDeg);
 
-    const SceneLoadResult nested = parseScene(R"({"objects": [{"mesh": "a", "transform": {"rotate": [0, 90, 0]}}]})");
+    const SceneLoadResult nested =
+        parseScene(R"({"objects": [{"mesh": "a", "transform": {"rotate": [0, 90, 0]}}]})");
     QVERIFY2(nested.ok(), qPrintable(nested.error));
-    QCOMPARE(nested.warnings, QStringList{QStringLiteral("objects[0].transform.rotate: unknown key, ignored")});
+    QCOMPARE(nested.warnings,
+             QStringList{QStringLiteral("objects[0].transform.rotate: unknown key, ignored")});
 }
 
 void TestSceneJson::warnsAboutTopLevelTransformWithObjects()
 {
-    const SceneLoadResult result = parseScene(R"({"objects": [{"mesh": "a"}], "transform": {"scale": [2, 2, 2]}})");
+    const SceneLoadResult result =
+        parseScene(R"({"objects": [{"mesh": "a"}], "transform": {"scale": [2, 2, 2]}})");
     QVERIFY2(result.ok(), qPrintable(result.error));
     QCOMPARE(result.warnings.size(), qsizetype(1));
-    QVERIFY2(result.warnings.front().startsWith(QStringLiteral("transform:")), qPrintable(result.warnings.front()));
+    QVERIFY2(result.warnings.front().startsWith(QStringLiteral("transform:")),
+             qPrintable(result.warnings.front()));
     QCOMPARE(result.scene->objects.front().transform, Transform{});
 }
 
@@ -359,18 +402,22 @@ void TestSceneJson::loadMissingFileNamesPath()
 void TestSceneJson::relativeMeshResolvesAgainstSceneFolder()
 {
     const QString dir = QDir(kSceneDataDir).absolutePath();
-    const SceneLoadResult result = loadSceneFile(kSceneDataDir + QStringLiteral("/relative_mesh.json"));
+    const SceneLoadResult result =
+        loadSceneFile(kSceneDataDir + QStringLiteral("/relative_mesh.json"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     const Scene &scene = *result.scene;
     QCOMPARE(scene.baseDir, dir);
     QCOMPARE(scene.objects.front().mesh, QStringLiteral("meshes/teapot.obj")); // kept as written
-    QCOMPARE(scene.resolveMeshPath(scene.objects.front().mesh), dir + QStringLiteral("/meshes/teapot.obj"));
-    QCOMPARE(scene.resolveMeshPath(QStringLiteral("builtin:torus")), QStringLiteral("builtin:torus"));
+    QCOMPARE(scene.resolveMeshPath(scene.objects.front().mesh),
+             dir + QStringLiteral("/meshes/teapot.obj"));
+    QCOMPARE(scene.resolveMeshPath(QStringLiteral("builtin:torus")),
+             QStringLiteral("builtin:torus"));
 
     // A relative path given to loadSceneFile still yields an absolute baseDir.
     const QString previous = QDir::currentPath();
     QVERIFY(QDir::setCurrent(QFileInfo(dir).absolutePath()));
-    const SceneLoadResult relative = loadSceneFile(QFileInfo(dir).fileName() + QStringLiteral("/relative_mesh.json"));
+    const SceneLoadResult relative =
+        loadSceneFile(QFileInfo(dir).fileName() + QStringLiteral("/relative_mesh.json"));
     QDir::setCurrent(previous);
     QVERIFY2(relative.ok(), qPrintable(relative.error));
     QCOMPARE(relative.scene->baseDir, dir);
@@ -389,7 +436,8 @@ void TestSceneJson::saveThenLoadGivesEqualScene()
     QVERIFY(*result.scene == fullScene());
     QCOMPARE(result.scene->baseDir, QFileInfo(path).absolutePath());
     // QSaveFile renames its temporary into place: nothing else is left behind.
-    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("saved.json")});
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+             QStringList{QStringLiteral("saved.json")});
 }
 
 void TestSceneJson::saveIntoMissingDirectoryFails()
@@ -402,7 +450,9 @@ void TestSceneJson::saveIntoMissingDirectoryFails()
     QVERIFY(!saved);
     QVERIFY2(saved.error().contains(path), qPrintable(saved.error()));
     QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("no"))));
-    QVERIFY(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty());
+    QVERIFY(QDir(dir.path())
+                .entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot)
+                .isEmpty());
 }
 
 void TestSceneJson::saveRefusesInvalidSceneAndKeepsOldFile()
@@ -421,12 +471,14 @@ void TestSceneJson::saveRefusesInvalidSceneAndKeepsOldFile()
     broken.objects.front().transform.scale.y = 0.0;
     const Result<> refused = saveSceneFile(broken, path);
     QVERIFY(!refused);
-    QVERIFY2(refused.error().contains(QStringLiteral("transform.scale[1]")), qPrintable(refused.error()));
+    QVERIFY2(refused.error().contains(QStringLiteral("transform.scale[1]")),
+             qPrintable(refused.error()));
 
     Scene empty;
     const Result<> refusedEmpty = saveSceneFile(empty, path);
     QVERIFY(!refusedEmpty);
-    QVERIFY2(refusedEmpty.error().contains(QStringLiteral("objects:")), qPrintable(refusedEmpty.error()));
+    QVERIFY2(refusedEmpty.error().contains(QStringLiteral("objects:")),
+             qPrintable(refusedEmpty.error()));
 
     QVERIFY(original.open(QIODevice::ReadOnly));
     QCOMPARE(original.readAll(), before);
@@ -463,10 +515,12 @@ void TestSceneJson::detailRoundTripsAndDefaultsAreNotWritten()
     QCOMPARE(objects.at(1).toObject().value(QStringLiteral("detail")).toDouble(), 0.0625);
 
     Scene single = sphereScene();
-    QVERIFY(!QJsonDocument::fromJson(sceneToJson(single)).object().contains(QStringLiteral("detail")));
+    QVERIFY(
+        !QJsonDocument::fromJson(sceneToJson(single)).object().contains(QStringLiteral("detail")));
     single.objects.front().detail = 0.1; // not a binary fraction: must still read back exactly
     const QByteArray json = sceneToJson(single);
-    QCOMPARE(QJsonDocument::fromJson(json).object().value(QStringLiteral("detail")).toDouble(), 0.1);
+    QCOMPARE(QJsonDocument::fromJson(json).object().value(QStringLiteral("detail")).toDouble(),
+             0.1);
     const SceneLoadResult back = parseScene(json);
     QVERIFY2(back.ok(), qPrintable(back.error));
     QVERIFY2(back.warnings.isEmpty(), qPrintable(back.warnings.join(u'\n')));

@@ -45,7 +45,8 @@ private slots:
                 {"position": [0, 0, 5], "enabled": true}])"));
         QVERIFY2(result.ok(), qPrintable(result.error));
         QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
-        QCOMPARE(QString::fromStdString(result.scene->lights[0].name), QStringLiteral("Key light ☀"));
+        QCOMPARE(QString::fromStdString(result.scene->lights[0].name),
+                 QStringLiteral("Key light ☀"));
         QVERIFY(!result.scene->lights[0].enabled);
         QVERIFY(result.scene->lights[1].enabled);
         QVERIFY(result.scene->lights[1].name.empty());
@@ -62,7 +63,8 @@ private slots:
         scene.lights[2].enabled = false;
         const QByteArray json = sceneToJson(scene);
         const QJsonArray lights = lightsOf(json);
-        QCOMPARE(lights.at(0).toObject().value(QStringLiteral("name")).toString(), QStringLiteral("Rim"));
+        QCOMPARE(lights.at(0).toObject().value(QStringLiteral("name")).toString(),
+                 QStringLiteral("Rim"));
         QVERIFY(!lights.at(0).toObject().contains(QStringLiteral("enabled")));
         QVERIFY(!lights.at(1).toObject().contains(QStringLiteral("name")));
         QCOMPARE(lights.at(1).toObject().value(QStringLiteral("enabled")), QJsonValue(false));
@@ -94,18 +96,21 @@ private slots:
     {
         QTest::addColumn<QByteArray>("lights");
         QTest::addColumn<QString>("error");
-        QTest::newRow("enabled number") << QByteArray(
-            R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "enabled": 0}])")
-                                        << QStringLiteral("lights[1].enabled: expected true or false (got number)");
-        QTest::newRow("enabled string") << QByteArray(R"([{"position": [1, 1, 1], "enabled": "false"}])")
-                                        << QStringLiteral("lights[0].enabled: expected true or false (got string)");
-        QTest::newRow("enabled null") << QByteArray(R"([{"position": [1, 1, 1], "enabled": null}])")
-                                      << QStringLiteral("lights[0].enabled: expected true or false (got null)");
-        QTest::newRow("name number") << QByteArray(R"([{"position": [1, 1, 1], "name": 3}])")
-                                     << QStringLiteral("lights[0].name: expected a string (got number)");
-        QTest::newRow("name array") << QByteArray(
-            R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "name": ["a"]}])")
-                                    << QStringLiteral("lights[1].name: expected a string (got array)");
+        QTest::newRow("enabled number")
+            << QByteArray(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "enabled": 0}])")
+            << QStringLiteral("lights[1].enabled: expected true or false (got number)");
+        QTest::newRow("enabled string")
+            << QByteArray(R"([{"position": [1, 1, 1], "enabled": "false"}])")
+            << QStringLiteral("lights[0].enabled: expected true or false (got string)");
+        QTest::newRow("enabled null")
+            << QByteArray(R"([{"position": [1, 1, 1], "enabled": null}])")
+            << QStringLiteral("lights[0].enabled: expected true or false (got null)");
+        QTest::newRow("name number")
+            << QByteArray(R"([{"position": [1, 1, 1], "name": 3}])")
+            << QStringLiteral("lights[0].name: expected a string (got number)");
+        QTest::newRow("name array")
+            << QByteArray(R"([{"position": [1, 1, 1]}, {"position": [1, 1, 1], "name": ["a"]}])")
+            << QStringLiteral("lights[1].name: expected a string (got array)");
     }
 
     void rejectsBadTypes()

@@ -41,14 +41,18 @@ void TestSceneNormals::readsForms_data()
     QTest::addColumn<int>("method");
     QTest::addColumn<double>("crease"); // < 0: none
     QTest::newRow("string flat") << QByteArray(R"("flat")") << int(NormalMethod::Flat) << -1.0;
-    QTest::newRow("string average") << QByteArray(R"("average")") << int(NormalMethod::Average) << -1.0;
-    QTest::newRow("string area") << QByteArray(R"("area")") << int(NormalMethod::AreaWeighted) << -1.0;
-    QTest::newRow("string angle") << QByteArray(R"("angle")") << int(NormalMethod::AngleWeighted) << -1.0;
+    QTest::newRow("string average")
+        << QByteArray(R"("average")") << int(NormalMethod::Average) << -1.0;
+    QTest::newRow("string area") << QByteArray(R"("area")") << int(NormalMethod::AreaWeighted)
+                                 << -1.0;
+    QTest::newRow("string angle") << QByteArray(R"("angle")") << int(NormalMethod::AngleWeighted)
+                                  << -1.0;
     QTest::newRow("object with crease") << QByteArray(R"({"method": "area", "crease_deg": 40})")
                                         << int(NormalMethod::AreaWeighted) << 40.0;
-    QTest::newRow("crease only") << QByteArray(R"({"crease_deg": 0})") << int(NormalMethod::Auto) << 0.0;
-    QTest::newRow("null crease") << QByteArray(R"({"method": "flat", "crease_deg": null})") << int(NormalMethod::Flat)
-                                 << -1.0;
+    QTest::newRow("crease only") << QByteArray(R"({"crease_deg": 0})") << int(NormalMethod::Auto)
+                                 << 0.0;
+    QTest::newRow("null crease") << QByteArray(R"({"method": "flat", "crease_deg": null})")
+                                 << int(NormalMethod::Flat) << -1.0;
 }
 
 void TestSceneNormals::readsForms()
@@ -67,7 +71,8 @@ void TestSceneNormals::readsForms()
 
 void TestSceneNormals::roundTrips()
 {
-    for (const QByteArray &json : {QByteArray(R"("flat")"), QByteArray(R"({"method": "angle", "crease_deg": 33.5})")}) {
+    for (const QByteArray &json :
+         {QByteArray(R"("flat")"), QByteArray(R"({"method": "angle", "crease_deg": 33.5})")}) {
         const SceneLoadResult first = parseScene(sceneWith(json));
         QVERIFY2(first.ok(), qPrintable(first.error));
         const SceneLoadResult again = parseScene(sceneToJson(*first.scene));
@@ -95,12 +100,16 @@ void TestSceneNormals::refusesBadValues_data()
     QTest::newRow("number") << sceneWith("3") << "normals:";
     QTest::newRow("method not a string") << sceneWith(R"({"method": 1})") << "normals.method:";
     QTest::newRow("negative crease") << sceneWith(R"({"crease_deg": -1})") << "normals.crease_deg:";
-    QTest::newRow("crease over 180") << sceneWith(R"({"crease_deg": 181})") << "normals.crease_deg:";
-    QTest::newRow("crease not a number") << sceneWith(R"({"crease_deg": "wide"})") << "normals.crease_deg:";
-    QTest::newRow("crease overflow") << sceneWith(R"({"crease_deg": 1e999})") << "normals.crease_deg:";
+    QTest::newRow("crease over 180")
+        << sceneWith(R"({"crease_deg": 181})") << "normals.crease_deg:";
+    QTest::newRow("crease not a number")
+        << sceneWith(R"({"crease_deg": "wide"})") << "normals.crease_deg:";
+    QTest::newRow("crease overflow")
+        << sceneWith(R"({"crease_deg": 1e999})") << "normals.crease_deg:";
     QTest::newRow("unknown key") << sceneWith(R"({"mode": "flat"})") << "normals.mode:";
-    QTest::newRow("in objects list") << QByteArray(R"({"objects": [{"mesh": "builtin:sphere", "normals": "x"}]})")
-                                     << "objects[0].normals:";
+    QTest::newRow("in objects list")
+        << QByteArray(R"({"objects": [{"mesh": "builtin:sphere", "normals": "x"}]})")
+        << "objects[0].normals:";
     QTest::newRow("top level with objects")
         << QByteArray(R"({"objects": [{"mesh": "builtin:sphere"}], "normals": "flat"})") << "";
 }

@@ -28,9 +28,12 @@ void TestScenePaths::embeddedScenesAreNotWritable()
 void TestScenePaths::pathFromSceneIsRelativeOnlyUnderItsFolder()
 {
     const QString scene = QStringLiteral("/work/scenes/lab.json");
-    QCOMPARE(pathFromScene(QStringLiteral("/work/scenes/shaders/my.frag"), scene), QStringLiteral("shaders/my.frag"));
-    QCOMPARE(pathFromScene(QStringLiteral("/work/scenes/my.vert"), scene), QStringLiteral("my.vert"));
-    QCOMPARE(pathFromScene(QStringLiteral("/work/other/my.frag"), scene), QStringLiteral("/work/other/my.frag"));
+    QCOMPARE(pathFromScene(QStringLiteral("/work/scenes/shaders/my.frag"), scene),
+             QStringLiteral("shaders/my.frag"));
+    QCOMPARE(pathFromScene(QStringLiteral("/work/scenes/my.vert"), scene),
+             QStringLiteral("my.vert"));
+    QCOMPARE(pathFromScene(QStringLiteral("/work/other/my.frag"), scene),
+             QStringLiteral("/work/other/my.frag"));
 }
 
 void TestScenePaths::rebasingKeepsMeshesInPlace()

@@ -35,8 +35,8 @@ private slots:
 
     void bothKeysRead()
     {
-        const SceneLoadResult loaded =
-            parseScene(sceneWith(R"({"vertex": "glsl/a.vert", "fragment": "/abs/b.frag"})"), "/scenes");
+        const SceneLoadResult loaded = parseScene(
+            sceneWith(R"({"vertex": "glsl/a.vert", "fragment": "/abs/b.frag"})"), "/scenes");
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
         QCOMPARE(loaded.scene->vertexShader, QStringLiteral("glsl/a.vert"));
         QCOMPARE(loaded.scene->fragmentShader, QStringLiteral("/abs/b.frag"));
@@ -105,7 +105,8 @@ private slots:
         QCOMPARE(loaded.scene->resolveShaderPath(loaded.scene->fragmentShader),
                  QDir::cleanPath(dir.filePath(QStringLiteral("b.frag"))));
         // Absolute paths and empty (= shipped) are used as they are.
-        QCOMPARE(loaded.scene->resolveShaderPath(QStringLiteral("/x/y.frag")), QStringLiteral("/x/y.frag"));
+        QCOMPARE(loaded.scene->resolveShaderPath(QStringLiteral("/x/y.frag")),
+                 QStringLiteral("/x/y.frag"));
         QCOMPARE(loaded.scene->resolveShaderPath(QString()), QString());
     }
 
@@ -113,9 +114,12 @@ private slots:
     {
         QTest::addColumn<QByteArray>("shaders");
         QTest::addColumn<QString>("error");
-        QTest::newRow("string") << QByteArray(R"("a.frag")") << QStringLiteral("shaders: expected an object");
-        QTest::newRow("array") << QByteArray(R"(["a.vert"])") << QStringLiteral("shaders: expected an object");
-        QTest::newRow("null") << QByteArray("null") << QStringLiteral("shaders: expected an object");
+        QTest::newRow("string") << QByteArray(R"("a.frag")")
+                                << QStringLiteral("shaders: expected an object");
+        QTest::newRow("array") << QByteArray(R"(["a.vert"])")
+                               << QStringLiteral("shaders: expected an object");
+        QTest::newRow("null") << QByteArray("null")
+                              << QStringLiteral("shaders: expected an object");
         QTest::newRow("vertex number") << QByteArray(R"({"vertex": 3})")
                                        << QStringLiteral("shaders.vertex: expected a string");
         QTest::newRow("fragment object") << QByteArray(R"({"fragment": {}})")
@@ -141,7 +145,8 @@ private slots:
     {
         const SceneLoadResult loaded = parseScene(sceneWith(R"({"geometry": "g.glsl"})"));
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
-        QCOMPARE(loaded.warnings, QStringList{QStringLiteral("shaders.geometry: unknown key, ignored")});
+        QCOMPARE(loaded.warnings,
+                 QStringList{QStringLiteral("shaders.geometry: unknown key, ignored")});
     }
 };
 

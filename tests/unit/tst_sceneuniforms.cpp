@@ -37,7 +37,8 @@ void TestSceneUniforms::absentMeansNone()
 
 void TestSceneUniforms::readsNumbersAndVectors()
 {
-    const SceneLoadResult r = parseScene(sceneWith(R"({"gain": 0.5, "tint": [1, 0.25, 0], "lights[2]": 3})"));
+    const SceneLoadResult r =
+        parseScene(sceneWith(R"({"gain": 0.5, "tint": [1, 0.25, 0], "lights[2]": 3})"));
     QVERIFY2(r.ok(), qPrintable(r.error));
     QCOMPARE(r.scene->uniforms.size(), std::size_t(3));
     QCOMPARE(r.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
@@ -61,9 +62,12 @@ void TestSceneUniforms::refusesBadValues_data()
     QTest::newRow("not an object") << sceneWith("[1, 2]") << "uniforms:";
     QTest::newRow("string value") << sceneWith(R"({"gain": "high"})") << "uniforms.gain:";
     QTest::newRow("empty array") << sceneWith(R"({"tint": []})") << "uniforms.tint:";
-    QTest::newRow("17 numbers") << sceneWith(R"({"m": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17]})") << "uniforms.m:";
+    QTest::newRow("17 numbers") << sceneWith(
+        R"({"m": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17]})")
+                                << "uniforms.m:";
     QTest::newRow("overflow") << sceneWith(R"({"gain": 1e999})") << "uniforms.gain:";
-    QTest::newRow("element not a number") << sceneWith(R"({"tint": [1, "x", 0]})") << "uniforms.tint[1]:";
+    QTest::newRow("element not a number")
+        << sceneWith(R"({"tint": [1, "x", 0]})") << "uniforms.tint[1]:";
 }
 
 void TestSceneUniforms::refusesBadValues()
@@ -76,7 +80,8 @@ void TestSceneUniforms::refusesBadValues()
 }
 
 namespace {
-UniformValue uniform(const char *name, GLenum type, UniformValue::Kind kind, std::initializer_list<double> values)
+UniformValue uniform(const char *name, GLenum type, UniformValue::Kind kind,
+                     std::initializer_list<double> values)
 {
     UniformValue v;
     v.name = name;
@@ -109,13 +114,15 @@ void TestSceneUniforms::savesOnlyTheUsersPlainNumbers()
         uniform("mask", GL_UNSIGNED_INT, Kind::UInt, {7}),
         uniform("flag", GL_BOOL, Kind::Int, {1}),
         uniform("image", GL_SAMPLER_2D, Kind::Int, {0}),
-        uniform("modelViewMatrix", GL_FLOAT_MAT4, Kind::Float, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+        uniform("modelViewMatrix", GL_FLOAT_MAT4, Kind::Float,
+                {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
         uniform("kd", GL_FLOAT_VEC3, Kind::Float, {0.5, 0.5, 0.5}),
         uniform("Id[1]", GL_FLOAT_VEC3, Kind::Float, {1, 1, 1}),
     };
     const std::map<QString, std::vector<double>> expected = {
-        {QStringLiteral("gain"), {0.5}}, {QStringLiteral("tint"), {1, 0.25, 0}}, {QStringLiteral("steps[2]"), {-3}},
-        {QStringLiteral("mask"), {7}},   {QStringLiteral("flag"), {1}},
+        {QStringLiteral("gain"), {0.5}},    {QStringLiteral("tint"), {1, 0.25, 0}},
+        {QStringLiteral("steps[2]"), {-3}}, {QStringLiteral("mask"), {7}},
+        {QStringLiteral("flag"), {1}},
     };
     QCOMPARE(userUniformValues(snapshot), expected);
 }

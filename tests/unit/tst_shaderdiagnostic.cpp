@@ -53,8 +53,8 @@ void TestShaderDiagnostic::parsesNvidia()
 
 void TestShaderDiagnostic::parsesAmdStyle()
 {
-    const auto d =
-        parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"), BuildStep::CompileFragment, {});
+    const auto d = parseShaderLog(QStringLiteral("ERROR: 0:8: 'x' : undeclared identifier"),
+                                  BuildStep::CompileFragment, {});
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 8);
     QVERIFY(d[0].isError());
@@ -62,26 +62,31 @@ void TestShaderDiagnostic::parsesAmdStyle()
 
 void TestShaderDiagnostic::parsesUnlocatedLinkError()
 {
-    const auto d = parseShaderLog(QStringLiteral("error: fragment shader input `v' has no matching output"),
-                                  BuildStep::Link, QStringLiteral("a.vert+a.frag"));
+    const auto d =
+        parseShaderLog(QStringLiteral("error: fragment shader input `v' has no matching output"),
+                       BuildStep::Link, QStringLiteral("a.vert+a.frag"));
     QCOMPARE(d.size(), std::size_t(1));
     QCOMPARE(d[0].line, 0);
     QVERIFY(d[0].isError());
-    QCOMPARE(d[0].format(), QStringLiteral("a.vert+a.frag: error: fragment shader input `v' has no matching output"));
+    QCOMPARE(
+        d[0].format(),
+        QStringLiteral("a.vert+a.frag: error: fragment shader input `v' has no matching output"));
 }
 
 void TestShaderDiagnostic::keepsContinuationLines()
 {
-    const auto d = parseShaderLog(QStringLiteral("0:4(1): error: syntax error, unexpected\n    NEW_IDENTIFIER"),
-                                  BuildStep::CompileFragment, {});
+    const auto d = parseShaderLog(
+        QStringLiteral("0:4(1): error: syntax error, unexpected\n    NEW_IDENTIFIER"),
+        BuildStep::CompileFragment, {});
     QCOMPARE(d.size(), std::size_t(1));
     QVERIFY(d[0].message.endsWith(QStringLiteral("NEW_IDENTIFIER")));
 }
 
 void TestShaderDiagnostic::subtractsPrologueLines()
 {
-    const auto d = parseShaderLog(QStringLiteral("0:5(2): error: a\n0:2(1): error: in the prologue"),
-                                  BuildStep::CompileFragment, {}, 3);
+    const auto d =
+        parseShaderLog(QStringLiteral("0:5(2): error: a\n0:2(1): error: in the prologue"),
+                       BuildStep::CompileFragment, {}, 3);
     QCOMPARE(d[0].line, 2);
     QCOMPARE(d[1].line, 0); // inside the injected lines: no user line to blame
     QCOMPARE(d[1].column, 0);
@@ -104,7 +109,10 @@ void TestShaderDiagnostic::prologueGoesAfterVersion()
 {
     const QByteArray code = "// header\n#version 330 core\nvoid main() {}\n";
     const QByteArray out = withPrologue(code, {QStringLiteral("A 1"), QStringLiteral("B")});
-    QCOMPARE(out, QByteArray("// header\n#version 330 core\n#define A 1\n#define B\n#line 3\nvoid main() {}\n"));
+    QCOMPARE(
+        out,
+        QByteArray(
+            "// header\n#version 330 core\n#define A 1\n#define B\n#line 3\nvoid main() {}\n"));
 }
 
 void TestShaderDiagnostic::prologueWithoutVersion()

@@ -25,7 +25,8 @@ Material material()
 
 const glm::dvec3 kAmbient(0.5);
 
-CameraSpaceLight lightAt(const glm::dvec3 &position, const glm::dvec3 &attenuation = {1.0, 0.0, 0.0})
+CameraSpaceLight lightAt(const glm::dvec3 &position,
+                         const glm::dvec3 &attenuation = {1.0, 0.0, 0.0})
 {
     CameraSpaceLight light;
     light.position = position;
@@ -38,7 +39,8 @@ double exact(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &l
     return phongTerms(p, n, material(), kAmbient, {&light, 1}).intensity.x;
 }
 
-double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &light, ShaderMistake mistake)
+double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &light,
+                ShaderMistake mistake)
 {
     return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, mistake).intensity.x;
 }
@@ -79,7 +81,8 @@ private slots:
 
     void exactValueByHand()
     {
-        QCOMPARE(exact(kFacing, kUp, lightAt(kLitFrom)), kAmbientPart + kDiffusePart + kSpecularPart);
+        QCOMPARE(exact(kFacing, kUp, lightAt(kLitFrom)),
+                 kAmbientPart + kDiffusePart + kSpecularPart);
     }
 
     void reflectIncidentAndViewVectorLoseTheHighlight()
@@ -98,14 +101,16 @@ private slots:
     {
         // f_att = 1 / (1 + 0.1·5) = 2/3.
         const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.0});
-        QCOMPARE(exact(kFacing, kUp, light), kAmbientPart + (kDiffusePart + kSpecularPart) * 2.0 / 3.0);
+        QCOMPARE(exact(kFacing, kUp, light),
+                 kAmbientPart + (kDiffusePart + kSpecularPart) * 2.0 / 3.0);
         QCOMPARE(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation),
                  kAmbientPart + kDiffusePart + kSpecularPart);
     }
 
     void ambientLeftOut()
     {
-        QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient), kDiffusePart + kSpecularPart);
+        QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient),
+                 kDiffusePart + kSpecularPart);
     }
 
     void unnormalizedNormal()
@@ -113,7 +118,8 @@ private slots:
         // N = (0, 0, 0.5): N·L = 0.4, and R = -L + 2(N·L)N = (-0.6, 0, -0.4)
         // points away from the eye.
         const glm::dvec3 shortNormal(0.0, 0.0, 0.5);
-        QCOMPARE(exact(kFacing, shortNormal, lightAt(kLitFrom)), kAmbientPart + kDiffusePart + kSpecularPart);
+        QCOMPARE(exact(kFacing, shortNormal, lightAt(kLitFrom)),
+                 kAmbientPart + kDiffusePart + kSpecularPart);
         QCOMPARE(mistaken(kFacing, shortNormal, lightAt(kLitFrom), ShaderMistake::Unnormalized),
                  kAmbientPart + 0.5 * 0.4);
     }
@@ -137,7 +143,8 @@ private slots:
         QCOMPARE(exact(grazing, kUp, light), kAmbientPart);
         const double withHighlight = mistaken(grazing, kUp, light, ShaderMistake::BackfaceSpecular);
         QVERIFY(std::abs(withHighlight - (kAmbientPart + 0.4 * 0.28 * 0.28)) < 1e-12);
-        QCOMPARE(mistaken(grazing, kUp, light, ShaderMistake::NegativeLight), kAmbientPart - 0.5 * 0.6);
+        QCOMPARE(mistaken(grazing, kUp, light, ShaderMistake::NegativeLight),
+                 kAmbientPart - 0.5 * 0.6);
     }
 
     void otherMistakesLeaveThePointAlone()
@@ -145,8 +152,8 @@ private slots:
         // These change the inputs (normal, position, lights) or where the
         // equation is evaluated, not the equation at a point.
         const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.02});
-        for (ShaderMistake m : {ShaderMistake::NormalMatrix, ShaderMistake::LightSpace, ShaderMistake::HomogeneousW,
-                                ShaderMistake::Gouraud}) {
+        for (ShaderMistake m : {ShaderMistake::NormalMatrix, ShaderMistake::LightSpace,
+                                ShaderMistake::HomogeneousW, ShaderMistake::Gouraud}) {
             QVERIFY(!isPointwiseMistake(m));
             QCOMPARE(mistaken(kFacing, kUp, light, m), exact(kFacing, kUp, light));
         }
