@@ -78,7 +78,7 @@ void gatherTriangles(const PolygonMesh &mesh, Triangles &out)
 // Normals from the file, at unit length. Corners whose file normal has no
 // direction get the computed angle-weighted normal instead.
 CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles,
-                          const NormalOptions &options, QStringList *warnings)
+                          const NormalOptions &options, QStringList &warnings)
 {
     CornerNormals result;
     result.normals.resize(mesh.normals.size());
@@ -113,11 +113,10 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles,
             result.normals.push_back(computed.at(c, triangles.positions));
         }
     }
-    if (warnings)
-        *warnings << QStringLiteral("%1 of %2 corners have a zero or invalid normal in the file; "
-                                    "computed angle-weighted normals replace them")
-                         .arg(qint64(badCorners))
-                         .arg(qint64(mesh.cornerNormal.size()));
+    warnings << QStringLiteral("%1 of %2 corners have a zero or invalid normal in the file; "
+                               "computed angle-weighted normals replace them")
+                    .arg(qint64(badCorners))
+                    .arg(qint64(mesh.cornerNormal.size()));
     return result;
 }
 
@@ -233,7 +232,7 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
         built.error = message;
         return built;
     };
-    QStringList *warnings = &built.warnings;
+    QStringList &warnings = built.warnings;
 
     // Corner and vertex numbers are 32-bit throughout, as the GPU's indices
     // are. Polygon corners fit (faceStart is 32-bit); triangulating an
@@ -252,9 +251,9 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
     Triangles triangles;
     gatherTriangles(mesh, triangles);
     if (triangles.fanFallbacks != 0)
-        *warnings << QStringLiteral(
-                         "%1 polygons cross or fold onto themselves; they were split as fans")
-                         .arg(qint64(triangles.fanFallbacks));
+        warnings << QStringLiteral(
+                        "%1 polygons cross or fold onto themselves; they were split as fans")
+                        .arg(qint64(triangles.fanFallbacks));
 
     std::size_t missingNormals = mesh.cornerPosition.size();
     if (mesh.hasNormals()) {
@@ -267,10 +266,10 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
         : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted
                                                : options.method;
     if (options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
-        *warnings << QStringLiteral("%1 of %2 corners have no normal in the file; "
-                                    "computed angle-weighted normals for the whole mesh")
-                         .arg(qint64(missingNormals))
-                         .arg(qint64(mesh.cornerPosition.size()));
+        warnings << QStringLiteral("%1 of %2 corners have no normal in the file; "
+                                   "computed angle-weighted normals for the whole mesh")
+                        .arg(qint64(missingNormals))
+                        .arg(qint64(mesh.cornerPosition.size()));
 
     const CornerNormals normals = fromFile
         ? fileNormals(mesh, triangles, options, warnings)

@@ -370,8 +370,8 @@ private:
 
 } // namespace
 
-std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
-                                         QString *note, const DecimationProgress &progress)
+DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
+                                   const DecimationProgress &progress)
 {
     std::vector<MeshData> levels(fractions.size());
     QStringList notes;
@@ -390,9 +390,7 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
         }
     }
     const auto finish = [&] {
-        if (note)
-            *note = notes.join(QStringLiteral("; "));
-        return std::move(levels);
+        return DecimatedLevels{std::move(levels), notes.join(QStringLiteral("; "))};
     };
     if (todo.empty())
         return finish();
@@ -478,10 +476,11 @@ std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector
     return finish();
 }
 
-MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note,
-                      const DecimationProgress &progress)
+DecimatedMesh decimateMesh(const MeshData &mesh, double fraction,
+                           const DecimationProgress &progress)
 {
-    return std::move(decimateMeshLevels(mesh, {fraction}, note, progress).front());
+    DecimatedLevels decimated = decimateMeshLevels(mesh, {fraction}, progress);
+    return {std::move(decimated.levels.front()), std::move(decimated.note)};
 }
 
 bool isClosedMesh(const MeshData &mesh)

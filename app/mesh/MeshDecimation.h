@@ -25,28 +25,35 @@ namespace phonglab {
 // to its own when they agree within 0.05°, else its own geometric normal.
 //
 // fraction in (0, 1]; 1 returns the mesh unchanged, as does a fraction out
-// of range, NaN or an invalid mesh (with *note saying why). Faces OpenMesh
+// of range, NaN or an invalid mesh (with the note saying why). Faces OpenMesh
 // cannot take (non-manifold edges or vertices, non-finite corners) are left
-// out and counted in *note; triangles with two corners at one position (a
+// out and counted in the note; triangles with two corners at one position (a
 // UV sphere's poles) have no area and are dropped without a word. The decimation may stop
-// above the target when every remaining collapse is refused; *note says so.
+// above the target when every remaining collapse is refused; the note says so.
 // Deterministic; no GL; safe on any thread.
 //
 // progress(fraction done) is called now and then on the calling thread;
-// returning false stops the decimation: the result is then empty and *note
+// returning false stops the decimation: the mesh is then empty and the note
 // says "cancelled".
 using DecimationProgress = std::function<bool(double)>;
-MeshData decimateMesh(const MeshData &mesh, double fraction, QString *note = nullptr,
-                      const DecimationProgress &progress = {});
+struct DecimatedMesh {
+    MeshData mesh;
+    QString note; // what the user should know about this level; empty when nothing
+};
+DecimatedMesh decimateMesh(const MeshData &mesh, double fraction,
+                           const DecimationProgress &progress = {});
 
 // Several levels at once, in the order of `fractions`, for the price of one
 // decimation to the coarsest: one run goes from fine to coarse and each
 // level is taken on the way (a level may differ from decimateMesh's at the
-// same fraction only in the order of equally good collapses). *note
+// same fraction only in the order of equally good collapses). The note
 // gathers what each level would say.
-std::vector<MeshData> decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
-                                         QString *note = nullptr,
-                                         const DecimationProgress &progress = {});
+struct DecimatedLevels {
+    std::vector<MeshData> levels;
+    QString note;
+};
+DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
+                                   const DecimationProgress &progress = {});
 
 // True when the mesh, welded by exact position (MeshData splits a point into
 // one vertex per normal), has every edge on exactly two triangles

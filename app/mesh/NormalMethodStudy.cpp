@@ -152,7 +152,7 @@ std::vector<NormalStudyRow> runNormalStudy(int repeats)
         {QStringLiteral("UV sphere 64\u00d732"), weld(makeUvSphere(64, 32))},
         {QStringLiteral("icosphere 5, jittered 30 %"), jitteredIcosphere(5, 0.3, 20240601u)},
         {QStringLiteral("UV sphere 128\u00d764 decimated to 1/4"),
-         weld(decimateMesh(makeUvSphere(128, 64), 0.25))},
+         weld(decimateMesh(makeUvSphere(128, 64), 0.25).mesh)},
     };
     std::vector<NormalStudyRow> rows;
     for (const auto &[name, surface] : tessellations)

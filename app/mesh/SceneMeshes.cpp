@@ -71,19 +71,18 @@ bool applyDetail(MeshLoadResult &loaded, const QString &spec, double detail,
         s.fileVertices = s.vertices; // as loadMesh counts builtins
         s.fileFaces = s.triangles;
     } else {
-        QString note;
         bool cancelled = false;
         const DecimationProgress step = [&](double f) {
             cancelled = progress && !progress(f);
             return !cancelled;
         };
-        MeshData coarse =
-            decimateMesh(*loaded.mesh, detail, &note, progress ? step : DecimationProgress{});
+        DecimatedMesh coarse =
+            decimateMesh(*loaded.mesh, detail, progress ? step : DecimationProgress{});
         if (cancelled)
             return false;
-        *loaded.mesh = std::move(coarse);
-        if (!note.isEmpty())
-            loaded.warnings << QStringLiteral("detail %1: %2").arg(detail).arg(note);
+        *loaded.mesh = std::move(coarse.mesh);
+        if (!coarse.note.isEmpty())
+            loaded.warnings << QStringLiteral("detail %1: %2").arg(detail).arg(coarse.note);
         fillDrawnStats(*loaded.mesh, s, true);
         // Decimation keeps a closed surface closed unless it had to leave
         // faces out; check rather than assume (back faces are culled on it).

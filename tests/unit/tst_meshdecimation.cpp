@@ -129,8 +129,7 @@ void TestMeshDecimation::shrinksToTheFraction()
     const double full_t = double(full.triangleCount());
     std::size_t previous = full.triangleCount();
     for (const double fraction : {1.0, 0.5, 0.25, 1.0 / 16, 1.0 / 64}) {
-        QString note;
-        const MeshData lod = decimateMesh(full, fraction, &note);
+        const auto [lod, note] = decimateMesh(full, fraction);
         qInfo("%s at %.4g: %zu of %zu triangles, %zu vertices%s",
               qPrintable(QFileInfo(path).fileName()), fraction, lod.triangleCount(),
               full.triangleCount(), lod.positions.size(),
@@ -165,8 +164,7 @@ void TestMeshDecimation::closedStaysClosed()
     const MeshData full = load(path);
     QVERIFY(isClosedMesh(full));
     for (const double fraction : {0.5, 0.1, 0.02}) {
-        QString note;
-        const MeshData lod = decimateMesh(full, fraction, &note);
+        const auto [lod, note] = decimateMesh(full, fraction);
         QVERIFY(lod.triangleCount() < full.triangleCount());
         QVERIFY2(isClosedMesh(lod), qPrintable(QString::number(fraction)));
     }
@@ -179,7 +177,7 @@ void TestMeshDecimation::positionsAreTheInputs()
         std::set<Vec> inputs;
         for (const glm::vec3 &p : full.positions)
             inputs.insert(vec(p));
-        const MeshData lod = decimateMesh(full, 0.2);
+        const MeshData lod = decimateMesh(full, 0.2).mesh;
         for (const glm::vec3 &p : lod.positions)
             QVERIFY2(inputs.count(vec(p)), "a position the input does not have");
     }
@@ -190,7 +188,7 @@ void TestMeshDecimation::smoothTreeKeepsFileNormals()
     const MeshData full = load(asset("tree.obj"));
     const auto pairs = vertexPairs(full);
     for (const double fraction : {0.5, 0.25, 1.0 / 16}) {
-        const MeshData lod = decimateMesh(full, fraction);
+        const MeshData lod = decimateMesh(full, fraction).mesh;
         for (std::size_t i = 0; i < lod.positions.size(); ++i)
             QVERIFY2(pairs.count({vec(lod.positions[i]), vec(lod.normals[i])}),
                      "a normal that is not the file's at that position");
@@ -225,7 +223,7 @@ void TestMeshDecimation::flatStaysFlat()
     double inputWorst = 0.0;
     for (std::size_t t = 0; t < full.triangleCount(); ++t)
         inputWorst = std::max(inputWorst, offFace(full, t));
-    const MeshData lod = decimateMesh(full, 0.25);
+    const MeshData lod = decimateMesh(full, 0.25).mesh;
     QVERIFY(lod.triangleCount() < full.triangleCount() / 3);
     for (std::size_t t = 0; t < lod.triangleCount(); ++t) {
         const glm::vec3 n = lod.normals[lod.indices[3 * t]];
@@ -243,7 +241,7 @@ void TestMeshDecimation::hardEdgesStayHard()
     QCOMPARE(full.triangleCount(), std::size_t(6 * 8 * 8 * 2));
     QVERIFY(isClosedMesh(full));
     const auto pairs = vertexPairs(full);
-    const MeshData lod = decimateMesh(full, 0.1);
+    const MeshData lod = decimateMesh(full, 0.1).mesh;
     QVERIFY(lod.triangleCount() <= 80);
     QVERIFY(isClosedMesh(lod));
     for (std::size_t i = 0; i < lod.positions.size(); ++i)
@@ -260,17 +258,15 @@ void TestMeshDecimation::hardEdgesStayHard()
 void TestMeshDecimation::fractionOneIsIdentity()
 {
     const MeshData full = load(asset("cloud.obj"));
-    QString note = QStringLiteral("stale");
-    QVERIFY(sameMesh(decimateMesh(full, 1.0, &note), full));
-    QVERIFY(note.isEmpty());
+    const DecimatedMesh same = decimateMesh(full, 1.0);
+    QVERIFY(sameMesh(same.mesh, full));
+    QVERIFY(same.note.isEmpty());
 }
 
 void TestMeshDecimation::levelsInOneRun()
 {
     const MeshData full = load(asset("cloud.obj"));
-    QString note;
-    const std::vector<MeshData> levels =
-        decimateMeshLevels(full, {1.0 / 16, 1.0, 0.25, 2.0}, &note);
+    const auto [levels, note] = decimateMeshLevels(full, {1.0 / 16, 1.0, 0.25, 2.0});
     QCOMPARE(levels.size(), std::size_t(4));
     QVERIFY(sameMesh(levels[1], full));
     QVERIFY(sameMesh(levels[3], full)); // out of range: unchanged, and said
@@ -279,13 +275,14 @@ void TestMeshDecimation::levelsInOneRun()
     QVERIFY(std::abs(double(levels[0].triangleCount()) - 187.5) <= 14.0);
     QVERIFY(isClosedMesh(levels[0]) && isClosedMesh(levels[2]));
     // The first level of a run is what decimateMesh gives.
-    QVERIFY(sameMesh(decimateMeshLevels(full, {0.25, 1.0 / 16})[0], decimateMesh(full, 0.25)));
+    QVERIFY(sameMesh(decimateMeshLevels(full, {0.25, 1.0 / 16}).levels[0],
+                     decimateMesh(full, 0.25).mesh));
 }
 
 void TestMeshDecimation::deterministic()
 {
     const MeshData full = load(asset("tree.obj"));
-    QVERIFY(sameMesh(decimateMesh(full, 0.3), decimateMesh(full, 0.3)));
+    QVERIFY(sameMesh(decimateMesh(full, 0.3).mesh, decimateMesh(full, 0.3).mesh));
 }
 
 void TestMeshDecimation::badInputDoesNotCrash()
@@ -293,26 +290,26 @@ void TestMeshDecimation::badInputDoesNotCrash()
     const MeshData cube = makeCube();
     for (const double fraction : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(),
                                   std::numeric_limits<double>::infinity()}) {
-        QString note;
-        QVERIFY(sameMesh(decimateMesh(cube, fraction, &note), cube));
-        QVERIFY2(note.contains(QStringLiteral("(0, 1]")), qPrintable(note));
+        const DecimatedMesh refused = decimateMesh(cube, fraction);
+        QVERIFY(sameMesh(refused.mesh, cube));
+        QVERIFY2(refused.note.contains(QStringLiteral("(0, 1]")), qPrintable(refused.note));
     }
-    QString note;
-    QVERIFY(decimateMesh(MeshData{}, 0.5, &note).indices.empty());
+    QVERIFY(decimateMesh(MeshData{}, 0.5).mesh.indices.empty());
 
     MeshData broken = cube;
     broken.indices[4] = 999; // out of range
-    QVERIFY(sameMesh(decimateMesh(broken, 0.5, &note), broken));
-    QVERIFY(!note.isEmpty());
+    const DecimatedMesh fromBroken = decimateMesh(broken, 0.5);
+    QVERIFY(sameMesh(fromBroken.mesh, broken));
+    QVERIFY(!fromBroken.note.isEmpty());
 
     MeshData nan = makeUvSphere(16, 8);
     nan.positions[20] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
-    const MeshData fromNan = decimateMesh(nan, 0.5, &note);
-    QVERIFY(fromNan.isValid());
-    QVERIFY2(note.contains(QStringLiteral("non-finite")), qPrintable(note));
+    const DecimatedMesh fromNan = decimateMesh(nan, 0.5);
+    QVERIFY(fromNan.mesh.isValid());
+    QVERIFY2(fromNan.note.contains(QStringLiteral("non-finite")), qPrintable(fromNan.note));
 
     // The smallest closed meshes cannot shrink further; asking is no error.
-    const MeshData tiny = decimateMesh(cube, 1e-9, &note);
+    const MeshData tiny = decimateMesh(cube, 1e-9).mesh;
     QVERIFY(tiny.isValid());
     QVERIFY(isClosedMesh(tiny));
 }
@@ -328,8 +325,7 @@ void TestMeshDecimation::nonManifoldFacesAreLeftOutAndSaid()
     const std::uint32_t a = mesh.indices[0], b = mesh.indices[1];
     mesh.indices.insert(mesh.indices.end(), {a, b, std::uint32_t(base)});
     mesh.indices.insert(mesh.indices.end(), {mesh.indices[3], mesh.indices[4], mesh.indices[5]});
-    QString note;
-    const MeshData lod = decimateMesh(mesh, 0.5, &note);
+    const auto [lod, note] = decimateMesh(mesh, 0.5);
     QVERIFY(lod.isValid());
     QVERIFY(lod.triangleCount() > 0);
     QVERIFY2(note.contains(QStringLiteral("non-manifold")), qPrintable(note));
@@ -403,8 +399,7 @@ void TestMeshDecimation::progressAndCancel()
 {
     const MeshData sphere = makeUvSphere(128, 64);
     std::vector<double> seen;
-    QString note;
-    const MeshData withProgress = decimateMesh(sphere, 0.1, &note, [&seen](double f) {
+    const auto [withProgress, note] = decimateMesh(sphere, 0.1, [&seen](double f) {
         seen.push_back(f);
         return true;
     });
@@ -412,15 +407,15 @@ void TestMeshDecimation::progressAndCancel()
     QVERIFY(seen.size() >= 10);
     QVERIFY(std::is_sorted(seen.begin(), seen.end()));
     QVERIFY(seen.front() >= 0.0 && seen.back() <= 1.0 && seen.back() > 0.8);
-    const MeshData plain = decimateMesh(sphere, 0.1);
+    const MeshData plain = decimateMesh(sphere, 0.1).mesh;
     QCOMPARE(withProgress.indices, plain.indices);
     QCOMPARE(withProgress.positions, plain.positions);
 
     int calls = 0;
-    const MeshData stopped =
-        decimateMesh(sphere, 0.1, &note, [&calls](double) { return ++calls < 3; });
-    QCOMPARE(note, QStringLiteral("cancelled"));
-    QVERIFY(stopped.indices.empty());
+    const DecimatedMesh stopped =
+        decimateMesh(sphere, 0.1, [&calls](double) { return ++calls < 3; });
+    QCOMPARE(stopped.note, QStringLiteral("cancelled"));
+    QVERIFY(stopped.mesh.indices.empty());
     QCOMPARE(calls, 3); // not asked again once it said no
 
     Scene scene;
