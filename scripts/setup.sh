@@ -10,7 +10,7 @@ PACKAGES=(
   libglm-dev libopenmesh-dev
   libgl-dev libgl1-mesa-dri libegl-mesa0
   xvfb xauth
-  libtinyobjloader-dev libassimp-dev
+  libtinyobjloader-dev libassimp-dev libmeshoptimizer-dev
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
   ccache                                # faster rebuilds (build.sh uses it when found)
 )
