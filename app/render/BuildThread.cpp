@@ -159,8 +159,9 @@ quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragm
 
 void BuildThread::deliver(BuildReply reply, quint64 generation)
 {
-    // Posted just before a stop(): its program belongs to a share group that
-    // may be gone with the viewport's old context. It is left to that group.
+    // Posted just before a stop(): the reply goes here, and its program is
+    // freed if a context of its group is current on this thread, else left
+    // to that group (possibly gone with the viewport's old context).
     if (!m_worker || generation != m_generation || !m_receiver)
         return;
     m_receiver(std::move(reply));

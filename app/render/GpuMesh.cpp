@@ -4,7 +4,7 @@
 
 namespace phonglab {
 
-void GpuMesh::upload(const MeshData &mesh)
+Result<> GpuMesh::upload(const MeshData &mesh)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
@@ -20,14 +20,15 @@ void GpuMesh::upload(const MeshData &mesh)
         interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
 
-    m_vao.create();
+    if (!m_vao.create() || !m_vbo.create() || !m_ibo.create()) {
+        destroy();
+        return fail(QStringLiteral("the driver cannot create a vertex array or buffer"));
+    }
     m_vao.bind();
-    m_vbo.create();
     m_vbo.bind();
     // glBufferData rather than allocate(), whose int size stops at 2 GiB.
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
                  interleaved.data(), GL_STATIC_DRAW);
-    m_ibo.create();
     m_ibo.bind(); // recorded in the VAO
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                  mesh.indices.data(), GL_STATIC_DRAW);
@@ -42,6 +43,7 @@ void GpuMesh::upload(const MeshData &mesh)
     m_vao.release(); // the VAO keeps the element buffer binding
     m_vbo.release();
     m_indexCount = GLsizei(mesh.indices.size());
+    return {};
 }
 
 void GpuMesh::draw()

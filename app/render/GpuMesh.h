@@ -1,5 +1,6 @@
 #pragma once
 #include "core/MeshData.h"
+#include "core/Result.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
@@ -9,8 +10,10 @@ namespace phonglab {
 
 // A mesh on the GPU: one VAO over an interleaved VBO (position, normal;
 // attribute locations 0 and 1) and a 32-bit index buffer, held by Qt's own
-// owners. Needs its context current for upload/draw/destroy (a VAO, unlike
-// the buffers, belongs to the one context that made it).
+// owners. Needs its context current for upload/draw/destroy: a VAO, unlike
+// the buffers, belongs to the one context that made it, and Qt's VAO, when
+// destroyed without that context current, makes it current itself, which
+// aborts while the context is lent to another thread.
 class GpuMesh : protected QOpenGLExtraFunctions
 {
 public:
@@ -21,7 +24,8 @@ public:
     GpuMesh(const GpuMesh &) = delete;
     GpuMesh &operator=(const GpuMesh &) = delete;
 
-    void upload(const MeshData &mesh);
+    // Fails (and holds nothing) when the driver cannot make the objects.
+    Result<> upload(const MeshData &mesh);
     void draw();
     void destroy();
 

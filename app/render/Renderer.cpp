@@ -27,7 +27,8 @@ Result<> Renderer::initialize()
     if (!marker.ok)
         return fail(QStringLiteral("cannot build the light-marker program:\n")
                     + marker.errorSummary());
-    m_markerMesh.upload(makeUvSphere(16, 8));
+    if (Result<> uploaded = m_markerMesh.upload(makeUvSphere(16, 8)); !uploaded)
+        return fail(QStringLiteral("cannot upload the light marker: ") + uploaded.error());
     m_initialized = true;
     return {};
 }
@@ -75,15 +76,19 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
             info.insert(key, m_meshInfo.value(key));
             continue;
         }
-        auto it = loaded.entries.find(key);
-        if (it == loaded.entries.end() || !it->mesh) {
+        // On failure the meshes uploaded here go; the scene shown stays.
+        const auto refuse = [&](const QString &why) {
             for (auto m = meshes.begin(); m != meshes.end(); ++m)
                 if (!m_meshes.contains(m.key()))
                     m.value()->destroy();
-            return fail(QStringLiteral("%1: mesh was not loaded").arg(key));
-        }
+            return fail(QStringLiteral("%1: %2").arg(key, why));
+        };
+        auto it = loaded.entries.find(key);
+        if (it == loaded.entries.end() || !it->mesh)
+            return refuse(QStringLiteral("mesh was not loaded"));
         auto gpu = std::make_shared<GpuMesh>();
-        gpu->upload(*it->mesh);
+        if (Result<> uploaded = gpu->upload(*it->mesh); !uploaded)
+            return refuse(uploaded.error());
         it->mesh.reset(); // the GPU has it now
         meshes.insert(key, gpu);
         info.insert(key, *it);

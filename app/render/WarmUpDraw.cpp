@@ -29,7 +29,10 @@ Result<> WarmUpDraw::create(int samples)
     }
     // Same interleaved layout as every scene mesh, so the vertex fetch code
     // generated here is the one the viewport needs too.
-    m_mesh.upload(makeUvSphere(8, 4));
+    if (Result<> uploaded = m_mesh.upload(makeUvSphere(8, 4)); !uploaded) {
+        m_fbo.reset();
+        return uploaded;
+    }
     return {};
 }
 

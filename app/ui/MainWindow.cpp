@@ -288,15 +288,14 @@ Result<> MainWindow::saveScene(const QString &path)
 
 void MainWindow::openSceneShaders(const Scene &scene)
 {
-    const Result<QString> opened = m_sceneShaderFiles->open(scene);
-    m_lastShaderError = opened ? QString() : opened.error();
-    if (opened && !opened.value().isEmpty())
-        statusBar()->showMessage(opened.value(), kWarningTimeoutMs);
-    if (opened)
+    const SceneShaderFiles::Opened opened = m_sceneShaderFiles->open(scene);
+    m_lastShaderError = opened.unusable.join(QLatin1Char('\n'));
+    if (!opened.note.isEmpty())
+        statusBar()->showMessage(opened.note, kWarningTimeoutMs);
+    if (opened.unusable.isEmpty())
         return;
     statusBar()->showMessage(
-        tr("Cannot open the scene's shaders: %1")
-            .arg(QString(m_lastShaderError).replace('\n', QStringLiteral("; "))),
+        tr("Cannot open the scene's shaders: %1").arg(opened.unusable.join(QStringLiteral("; "))),
         kWarningTimeoutMs);
     warn(tr("Cannot open the scene's shaders"),
          tr("%1\n\nThe scene uses its shading method's shipped shaders instead.")

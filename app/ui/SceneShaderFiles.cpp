@@ -41,12 +41,12 @@ void SceneShaderFiles::nameIn(Scene &scene, const QString &sceneFilePath) const
     scene.fragmentShader = entry(ShaderStage::Fragment);
 }
 
-Result<QString> SceneShaderFiles::open(const Scene &scene)
+SceneShaderFiles::Opened SceneShaderFiles::open(const Scene &scene)
 {
     if (scene.vertexShader.isEmpty() && scene.fragmentShader.isEmpty())
-        return QString();
+        return {};
     if (m_dock->hasUnsavedChanges())
-        return tr("Kept your unsaved shader edits; the scene's shader files were not loaded");
+        return {tr("Kept your unsaved shader edits; the scene's shader files were not loaded"), {}};
     const std::pair<ShaderStage, QString> files[] = {{ShaderStage::Vertex, scene.vertexShader},
                                                      {ShaderStage::Fragment, scene.fragmentShader}};
     QStringList missing;
@@ -73,9 +73,7 @@ Result<QString> SceneShaderFiles::open(const Scene &scene)
     }
     if (opened)
         m_liveShaders->buildNow(); // a failure shows in the dock; the last good program stays
-    if (!missing.isEmpty())
-        return fail(missing.join(QLatin1Char('\n')));
-    return QString();
+    return {QString(), missing};
 }
 
 } // namespace phonglab

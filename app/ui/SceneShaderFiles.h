@@ -3,6 +3,7 @@
 #include "core/Scene.h"
 
 #include <QCoreApplication>
+#include <QStringList>
 
 namespace phonglab {
 
@@ -27,10 +28,12 @@ public:
     void nameIn(Scene &scene, const QString &sceneFilePath) const;
     // Opens and builds `scene`'s files, if it names any. The shading
     // method's shipped shaders stand in for a missing one; unsaved edits in
-    // the dock are never replaced. The value is a note for the status bar
-    // (empty when there is nothing to say), the error every file that could
-    // not be used, one per line.
-    Result<QString> open(const Scene &scene);
+    // the dock are never replaced.
+    struct Opened {
+        QString note;         // for the status bar; empty when there is nothing to say
+        QStringList unusable; // one line per file that could not be used
+    };
+    Opened open(const Scene &scene);
 
 private:
     ShaderDock *m_dock;
