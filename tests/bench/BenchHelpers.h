@@ -1,11 +1,15 @@
 #pragma once
 #include "core/ResourcePaths.h"
+#include "core/SceneJson.h"
+#include "mesh/SceneMeshes.h"
 
 #include <QByteArray>
 #include <QFile>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 #include <vector>
 
 // What the latency benchmarks share.
@@ -31,6 +35,27 @@ inline QByteArray editedFragment(double k)
     text.replace("fragColor = vec4(I, 1.0);",
                  "fragColor = vec4(I * " + QByteArray::number(k, 'f', 6) + ", 1.0);");
     return text;
+}
+
+// The shipped default scene and its meshes, loaded in this process; nullopt
+// after saying why on stderr.
+struct LoadedScene {
+    Scene scene;
+    SceneMeshes meshes;
+};
+inline std::optional<LoadedScene> loadDefaultScene()
+{
+    const SceneLoadResult loaded = loadSceneFile(assetPath(QStringLiteral("scenes/default.json")));
+    if (!loaded.ok()) {
+        std::fprintf(stderr, "%s\n", qPrintable(loaded.error));
+        return std::nullopt;
+    }
+    SceneMeshes meshes = loadSceneMeshes(*loaded.scene);
+    if (!meshes.ok()) {
+        std::fprintf(stderr, "%s\n", qPrintable(meshes.error));
+        return std::nullopt;
+    }
+    return LoadedScene{*loaded.scene, std::move(meshes)};
 }
 
 } // namespace phonglab::bench

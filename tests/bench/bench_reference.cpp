@@ -5,6 +5,7 @@
 //
 //   build/tests/bench/bench_reference [--size N]
 
+#include "BenchHelpers.h"
 #include "core/AnalyticRaycaster.h"
 #include "core/MeshBvh.h"
 #include "core/MeshRaycaster.h"
@@ -91,24 +92,17 @@ int main(int argc, char **argv)
     std::printf("analytic torus       %8.1f ms  (%.2fx the sphere: a quartic per ray)\n", torusMs,
                 torusMs / sphereMs);
 
-    const SceneLoadResult loaded = loadSceneFile(assetPath(QStringLiteral("scenes/default.json")));
-    if (!loaded.ok()) {
-        std::fprintf(stderr, "%s\n", qPrintable(loaded.error));
+    const std::optional<bench::LoadedScene> loaded = bench::loadDefaultScene();
+    if (!loaded)
         return 1;
-    }
-    const SceneMeshes meshes = loadSceneMeshes(*loaded.scene);
-    if (!meshes.ok()) {
-        std::fprintf(stderr, "%s\n", qPrintable(meshes.error));
-        return 1;
-    }
     std::vector<std::shared_ptr<const MeshData>> perObject;
     std::size_t triangles = 0;
-    for (const SceneObject &object : loaded.scene->objects) {
-        perObject.push_back(meshes.entries.value(meshKey(*loaded.scene, object)).mesh);
+    for (const SceneObject &object : loaded->scene.objects) {
+        perObject.push_back(loaded->meshes.entries.value(meshKey(loaded->scene, object)).mesh);
         triangles += perObject.back() ? perObject.back()->triangleCount() : 0;
     }
     const double sceneMs =
-        msOf([&] { (void)raycastSceneMeshes(*loaded.scene, perObject, side, side, phong); });
+        msOf([&] { (void)raycastSceneMeshes(loaded->scene, perObject, side, side, phong); });
     std::printf("default scene meshes %8.1f ms  (%zu triangles; %.2fx the analytic sphere)\n",
                 sceneMs, triangles, sceneMs / sphereMs);
 

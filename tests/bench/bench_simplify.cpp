@@ -12,6 +12,7 @@
 // the distance to the simplified surface (MeshBvh), as max and mean, in
 // per mille of the bounding-box diagonal. Neither moves a vertex, so the
 // simplified surface's own vertices lie on the original exactly.
+#include "BenchHelpers.h"
 #include "core/MeshBvh.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
@@ -141,18 +142,11 @@ void compare(const QString &name, const MeshData &full)
 int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
-    const SceneLoadResult loaded = loadSceneFile(assetPath(QStringLiteral("scenes/default.json")));
-    if (!loaded.ok()) {
-        std::fprintf(stderr, "%s\n", qPrintable(loaded.error));
+    const std::optional<bench::LoadedScene> loaded = bench::loadDefaultScene();
+    if (!loaded)
         return 1;
-    }
-    const SceneMeshes meshes = loadSceneMeshes(*loaded.scene);
-    if (!meshes.ok()) {
-        std::fprintf(stderr, "%s\n", qPrintable(meshes.error));
-        return 1;
-    }
-    for (const SceneObject &object : loaded.scene->objects)
-        if (const auto mesh = meshes.entries.value(meshKey(*loaded.scene, object)).mesh)
+    for (const SceneObject &object : loaded->scene.objects)
+        if (const auto mesh = loaded->meshes.entries.value(meshKey(loaded->scene, object)).mesh)
             compare(QFileInfo(object.mesh).fileName(), *mesh);
     compare(QStringLiteral("builtin sphere"), makeUvSphere(256, 128));
     for (int i = 1; i < argc; ++i) {
