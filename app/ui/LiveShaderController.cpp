@@ -331,8 +331,8 @@ void LiveShaderController::dispatch(const QByteArray &hash)
 
 void LiveShaderController::onBuilt(BuildReply reply)
 {
-    if (m_state != State::Building
-        || reply.serial != m_buildSerial) { // from before a restart of the worker
+    // A reply from before a restart of the worker, or for a build superseded.
+    if (m_state != State::Building || reply.serial != m_buildSerial) {
         m_buildThread->release(std::move(reply.program));
         return;
     }
