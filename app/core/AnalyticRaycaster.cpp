@@ -335,7 +335,8 @@ ReferenceShading idealShadingFor(ShadingMethod method)
     case ShadingMethod::Normals: return ReferenceShading::Normals;
     case ShadingMethod::Phong:
     case ShadingMethod::Gouraud:
-    case ShadingMethod::Flat: break;
+    case ShadingMethod::Flat:
+    case ShadingMethod::Faceted: break;
     }
     return ReferenceShading::Phong;
 }

@@ -1,5 +1,6 @@
 #include "SceneHits.h"
 
+#include "FaceGeometry.h"
 #include "ParallelRows.h"
 #include "ReferenceSample.h"
 
@@ -28,12 +29,10 @@ ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHi
     return out;
 }
 
-} // namespace
-
-ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
-                              const ReferenceShader &shader)
+// One sample per covered pixel, rows in parallel.
+template <typename ShadeHit>
+ReferenceImage shadeEachHit(const SceneHits &hits, const Scene &scene, const ShadeHit &shadeHit)
 {
-    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
     ReferenceImage image(hits.width, hits.height);
     forEachRowInParallel(hits.height, [&](int y) {
         for (int x = 0; x < hits.width; ++x) {
@@ -42,11 +41,7 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
                 continue;
             const SceneHits::Object &object = hits.objects[std::size_t(hit.object)];
             const Material &material = scene.objects[std::size_t(hit.object)].material;
-            const ReferenceSample sample =
-                shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0
-                ? shadeVertices(object, hit, material, scene.ambient, lights)
-                : shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
-                                    material, scene.ambient, lights, shader);
+            const ReferenceSample sample = shadeHit(object, hit, material);
             const std::size_t i = image.index(x, y);
             image.coverage[i] = 1;
             image.depth[i] = hit.depth;
@@ -55,6 +50,35 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
         }
     });
     return image;
+}
+
+} // namespace
+
+ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
+                              const ReferenceShader &shader)
+{
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
+    return shadeEachHit(hits, scene, [&](const SceneHits::Object &object, const ReferenceHit &hit,
+                                         const Material &material) {
+        if (shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0)
+            return shadeVertices(object, hit, material, scene.ambient, lights);
+        return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
+                                 material, scene.ambient, lights, shader);
+    });
+}
+
+ReferenceImage shadeSceneFaces(const SceneHits &hits, const Scene &scene)
+{
+    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
+    return shadeEachHit(hits, scene, [&](const SceneHits::Object &object, const ReferenceHit &hit,
+                                         const Material &material) {
+        if (!object.mesh || hit.triangle < 0)
+            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
+                                     material, scene.ambient, lights, ReferenceShader());
+        const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
+        return shadeReferenceHit({face.centroid, face.normal, object.modelView, object.normalMatrix},
+                                 material, scene.ambient, lights, ReferenceShader());
+    });
 }
 
 CameraSpaceHit cameraSpaceHit(const SceneHits &hits, const ReferenceHit &hit)

@@ -61,6 +61,12 @@ Result<SceneHits> castSceneHits(const Scene &scene,
 ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
                               const ReferenceShader &shader);
 
+// Flat shading as shaders/flat.vert computes it: the exact equation once per
+// triangle, at its centroid with its face normal (FaceGeometry.h), for every
+// pixel the triangle covers. An analytic surface, which has no faces, is
+// shaded exactly.
+ReferenceImage shadeSceneFaces(const SceneHits &hits, const Scene &scene);
+
 // The illumination equation's inputs at one hit, as the exact vertex stage
 // computes them: camera-space point and (normalised) normal.
 struct CameraSpaceHit {

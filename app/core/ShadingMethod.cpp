@@ -13,6 +13,7 @@ constexpr std::array kMethods = {
     std::pair{ShadingMethod::BlinnPhong, "blinn-phong"},
     std::pair{ShadingMethod::Gouraud, "gouraud"},
     std::pair{ShadingMethod::Flat, "flat"},
+    std::pair{ShadingMethod::Faceted, "faceted"},
     std::pair{ShadingMethod::Normals, "normals"},
 };
 } // namespace

@@ -13,7 +13,8 @@ enum class ShadingMethod {
     Phong,      // "phong": the illumination equation per fragment
     BlinnPhong, // "blinn-phong": per fragment, specular from the half vector (exponent 4n)
     Gouraud,    // "gouraud": the equation per vertex, colour interpolated
-    Flat,       // "flat": per fragment with the geometric face normal
+    Flat,       // "flat": the equation once per face, at its centroid with its face normal
+    Faceted,    // "faceted": per fragment with the geometric face normal (dFdx/dFdy)
     Normals,    // "normals": the camera-space normal as a colour, no lighting
 };
 

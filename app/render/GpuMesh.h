@@ -10,7 +10,9 @@ namespace phonglab {
 
 // A mesh on the GPU: one VAO over an interleaved VBO (position, normal;
 // attribute locations 0 and 1) and a 32-bit index buffer, held by Qt's own
-// owners. Needs its context current for upload/draw/destroy: a VAO, unlike
+// owners. On demand also its face layout (FaceLayout.h: position, face
+// normal, face centroid at locations 0, 1, 2), built from the buffers read
+// back, for flat shading. Needs its context current for upload/draw/destroy: a VAO, unlike
 // the buffers, belongs to the one context that made it, and Qt's VAO, when
 // destroyed without that context current, makes it current itself, which
 // aborts while the context is lent to another thread.
@@ -19,6 +21,7 @@ class GpuMesh : protected QOpenGLExtraFunctions
 public:
     static constexpr GLuint kPositionLocation = 0;
     static constexpr GLuint kNormalLocation = 1;
+    static constexpr GLuint kFacePointLocation = 2; // the face layout only
 
     GpuMesh() = default;
     GpuMesh(const GpuMesh &) = delete;
@@ -29,15 +32,34 @@ public:
     void draw();
     void destroy();
 
-    bool isValid() const { return m_vao.isCreated(); }
+    // Builds the face layout from the uploaded buffers if it is not there
+    // yet. Fails (and draws nothing with faces) when the driver cannot read
+    // the buffers back or make the objects.
+    Result<> prepareFaceLayout();
+    bool hasFaceLayout() const { return m_faces.vao.isCreated(); }
+    // Draws the face layout; nothing before prepareFaceLayout() succeeded.
+    void drawFaces();
+
+    bool isValid() const { return m_shared.vao.isCreated(); }
     GLsizei indexCount() const { return m_indexCount; }
 
 private:
     bool m_initialized = false;
-    QOpenGLVertexArrayObject m_vao;
-    QOpenGLBuffer m_vbo{QOpenGLBuffer::VertexBuffer};
-    QOpenGLBuffer m_ibo{QOpenGLBuffer::IndexBuffer};
+    struct Buffers {
+        QOpenGLVertexArrayObject vao;
+        QOpenGLBuffer vbo{QOpenGLBuffer::VertexBuffer};
+        QOpenGLBuffer ibo{QOpenGLBuffer::IndexBuffer};
+    };
+    // `attributes` vec3s per vertex, interleaved, at locations 0, 1, ...
+    Result<> fill(Buffers &buffers, const std::vector<float> &vertices, int attributes,
+                  const std::vector<std::uint32_t> &indices);
+    void draw(Buffers &buffers);
+    static void destroy(Buffers &buffers);
+
+    Buffers m_shared; // position, normal
+    Buffers m_faces;  // FaceLayout: position, face normal, face centroid
     GLsizei m_indexCount = 0;
+    std::size_t m_vertexCount = 0;
 };
 
 } // namespace phonglab

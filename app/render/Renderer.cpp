@@ -221,11 +221,21 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
     m_program.bind();
     uploadLights(view);
     m_program.setUniform("projectionMatrix", glm::mat4(projection));
+    // A program that reads a face centroid (flat.vert) is drawn from the
+    // meshes' face layouts, whoever wrote it.
+    const bool perFace = glGetAttribLocation(m_program.id(), "facePoint") >= 0;
+    m_drawError.clear();
     for (const SceneObject &object : m_scene.objects) {
         const QString key = meshKey(m_scene, object);
         const auto mesh = m_meshes.value(key);
         if (!mesh)
             continue;
+        if (perFace) {
+            if (Result<> prepared = mesh->prepareFaceLayout(); !prepared) {
+                m_drawError = QStringLiteral("%1: not drawn: %2").arg(object.mesh, prepared.error());
+                continue;
+            }
+        }
         // Only a closed surface hides its back faces; an open one (a leaf,
         // a plane) must show them.
         if (m_options.cullBackFaces && m_meshInfo.value(key).stats.closed)
@@ -241,7 +251,10 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
         m_program.setUniform("kd", glm::vec3(object.material.kd));
         m_program.setUniform("ks", glm::vec3(object.material.ks));
         m_program.setUniform("shininess", float(object.material.shininess));
-        mesh->draw();
+        if (perFace)
+            mesh->drawFaces();
+        else
+            mesh->draw();
         m_trianglesDrawn += mesh->indexCount() / 3;
     }
 }

@@ -71,6 +71,9 @@ public:
     // Renders one frame into a pixelSize framebuffer (device pixels).
     void render(const QSize &pixelSize);
     qint64 trianglesDrawn() const { return m_trianglesDrawn; }
+    // Why the last frame left an object out ("<mesh>: not drawn: ..."), or
+    // empty. Only flat shading's face layout can fail at draw time.
+    const QString &drawError() const { return m_drawError; }
     // The near and far planes the last frame was drawn with: the camera's,
     // fitted to what the scene occupies (DepthRange.h).
     const DepthRange &depthRange() const { return m_depthRange; }
@@ -91,6 +94,7 @@ private:
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
     QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
+    QString m_drawError;
     DepthRange m_depthRange;
     // The scene's values for the shader's own uniforms, until a program that
     // declares them is in place (a scene may open before its shaders build).
