@@ -19,7 +19,7 @@ namespace phonglab {
 // interface other tools rely on: add columns at the end, never rename.
 struct BenchRow {
     QString scene;            // scene name (file base name, e.g. "default")
-    QString method;           // shadingName(): "flat", "gouraud", "phong", "blinn-phong"
+    QString method;           // shadingName(): "flat", "gouraud", "faceted", "phong", "blinn-phong"
     double detail = 1.0;      // requested fraction of the full triangle count (1 = full)
     qint64 triangles = 0;     // triangles drawn per frame at this detail
     int lights = 0;           // number of point lights

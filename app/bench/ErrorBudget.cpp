@@ -3,6 +3,7 @@
 #include <QRegularExpression>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace phonglab {
@@ -36,14 +37,16 @@ QString formatDb(double db)
     return QString::number(db, 'f', 1);
 }
 
-// flat < gouraud < blinn-phong < phong < anything else.
+// flat < gouraud < faceted < blinn-phong < phong < anything else: per face,
+// per vertex, then per fragment.
 int methodCost(const QString &method)
 {
-    static const char *const order[] = {"flat", "gouraud", "blinn-phong", "phong"};
-    for (int i = 0; i < 4; ++i)
+    static const char *const order[] = {"flat", "gouraud", "faceted", "blinn-phong", "phong"};
+    const int known = int(std::size(order));
+    for (int i = 0; i < known; ++i)
         if (method == QLatin1String(order[i]))
             return i;
-    return 4;
+    return known;
 }
 
 QString methodTitle(const QString &method)

@@ -43,7 +43,7 @@ QString helpText()
                "  --lights LIST    light counts, comma separated, 1..8, and/or 'scene' (default "
                "1,4,8,scene)\n"
                "  --methods LIST   shading methods, comma separated (default "
-               "flat,gouraud,blinn-phong,phong)\n"
+               "flat,gouraud,faceted,blinn-phong,phong)\n"
                "  --details LIST   detail fractions in (0, 1], comma separated, e.g. "
                "1,0.25,0.0625\n"
                "  --images         also write render | reference | error pictures into DIR/images\n"
@@ -209,7 +209,8 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         if (!parsed)
             return usage(
                 QStringLiteral(
-                    "--methods: expected names from flat, gouraud, blinn-phong, phong, got '%1'")
+                    "--methods: expected names from flat, gouraud, faceted, blinn-phong, phong, "
+                    "got '%1'")
                     .arg(parser.value(methods)));
         args.options.methods = *parsed;
     }

@@ -4,6 +4,7 @@
 #include "bench/ParetoFront.h"
 
 #include <QGraphicsScene>
+#include <iterator>
 #include <QtCharts/QChart>
 
 #include <algorithm>
@@ -18,14 +19,16 @@ namespace phonglab {
 
 namespace {
 
-// flat < gouraud < blinn-phong < phong < normals < anything else (by name).
+// flat < gouraud < faceted < blinn-phong < phong < normals < anything else (by name).
 int methodRank(const QString &method)
 {
-    static const char *const order[] = {"flat", "gouraud", "blinn-phong", "phong", "normals"};
-    for (int i = 0; i < 5; ++i)
+    static const char *const order[] = {"flat",        "gouraud", "faceted",
+                                        "blinn-phong", "phong",   "normals"};
+    const int known = int(std::size(order));
+    for (int i = 0; i < known; ++i)
         if (method == QLatin1String(order[i]))
             return i;
-    return 5;
+    return known;
 }
 
 bool methodLess(const QString &a, const QString &b)
@@ -49,6 +52,8 @@ QColor methodColor(const QString &method)
 {
     if (method == QLatin1String("flat"))
         return QColor(0xe6, 0x7e, 0x22);
+    if (method == QLatin1String("faceted"))
+        return QColor(0xc0, 0x9a, 0x1a);
     if (method == QLatin1String("gouraud"))
         return QColor(0x2c, 0xa0, 0x2c);
     if (method == QLatin1String("blinn-phong"))

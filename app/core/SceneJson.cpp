@@ -59,6 +59,7 @@ private:
     bool validateCamera(const Camera &camera, const QString &path);
     bool readLight(const QJsonValue &value, const QString &path, PointLight &out);
     bool readLights(const QJsonValue &value, const QString &path, std::vector<PointLight> &out);
+    bool readFormat(const QJsonValue &value, const QString &path);
     bool readShading(const QJsonValue &value, const QString &path, ShadingMethod &out);
     bool readShaderFiles(const QJsonValue &value, const QString &path, Scene &out);
     bool readObjectList(const QJsonValue &value, const QString &path,
@@ -82,6 +83,7 @@ private:
 
     QString m_error;
     QStringList m_warnings;
+    int m_format = 1; // "format"; 1 where the file has none
 };
 
 bool SceneReader::fail(const QString &path, const QString &reason)
@@ -327,12 +329,45 @@ bool SceneReader::readLights(const QJsonValue &value, const QString &path,
     return true;
 }
 
+bool SceneReader::readFormat(const QJsonValue &value, const QString &path)
+{
+    if (value.isUndefined())
+        return true; // format 1: written before the field existed
+    const QString expected = QStringLiteral("expected a whole number from 1");
+    if (const auto literal = overflowLiteral(value))
+        return fail(path, expected + QStringLiteral(", got %1").arg(*literal));
+    if (!value.isDouble())
+        return fail(path, expected + QStringLiteral(", got %1").arg(describeType(value)));
+    const double format = value.toDouble();
+    if (!(format >= 1.0) || format != std::floor(format))
+        return fail(path, expected + QStringLiteral(", got %1").arg(number(format)));
+    if (format > kSceneFormat)
+        m_warnings << path
+                + QStringLiteral(": %1 is newer than this PhongLab's %2; read as %2, fields it "
+                                 "does not know are ignored")
+                      .arg(number(format))
+                      .arg(kSceneFormat);
+    m_format = int(std::min(format, double(kSceneFormat)));
+    return true;
+}
+
 bool SceneReader::readShading(const QJsonValue &value, const QString &path, ShadingMethod &out)
 {
     if (value.isUndefined())
         return true;
     if (!value.isString())
         return fail(path, QStringLiteral("expected a string (got %1)").arg(describeType(value)));
+    // Before format 2, "flat" named the per-fragment shader now called
+    // "faceted": an old scene keeps the look it was saved with.
+    if (m_format < 2 && value.toString() == "flat"_L1) {
+        m_warnings << path
+                + QStringLiteral(": \"flat\" in a scene without \"format\": 2 is the "
+                                 "per-fragment shader now called \"faceted\"; loaded as "
+                                 "\"faceted\" (saving writes that; write \"format\": 2 for "
+                                 "flat shading once per face)");
+        out = ShadingMethod::Faceted;
+        return true;
+    }
     const auto method = shadingFromName(value.toString());
     if (!method)
         return fail(path,
@@ -476,10 +511,11 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
                      "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
-                     "background"_L1, "shaders"_L1, "uniforms"_L1});
+                     "background"_L1, "shaders"_L1, "uniforms"_L1, "format"_L1});
     Scene scene;
     scene.baseDir = baseDir;
-    const bool ok = readObjects(root, scene.objects)
+    const bool ok = readFormat(root.value("format"_L1), QStringLiteral("format"))
+        && readObjects(root, scene.objects)
         && readCamera(root.value("camera"_L1), QStringLiteral("camera"), scene.camera)
         && readColor(root.value("ambient"_L1), QStringLiteral("ambient"), scene.ambient)
         && readLights(root.value("lights"_L1), QStringLiteral("lights"), scene.lights)

@@ -26,6 +26,11 @@ struct SceneLoadResult {
     bool ok() const { return scene.has_value(); }
 };
 
+// The scene format this PhongLab writes ("format"). A file without the
+// field is format 1; format 2 made "flat" mean flat shading once per face
+// (format 1's "flat", the per-fragment shader, loads as "faceted").
+inline constexpr int kSceneFormat = 2;
+
 // Parses and validates a scene. `baseDir` becomes Scene::baseDir, the folder
 // relative mesh paths resolve against.
 SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir = {});

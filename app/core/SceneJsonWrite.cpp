@@ -102,6 +102,7 @@ QByteArray sceneToJson(const Scene &scene)
     for (const PointLight &light : scene.lights)
         lights.append(lightJson(light));
     root.insert(QStringLiteral("lights"), lights);
+    root.insert(QStringLiteral("format"), kSceneFormat);
     root.insert(QStringLiteral("shading"), shadingName(scene.shading));
     root.insert(QStringLiteral("background"), vec3Json(scene.background));
     if (!scene.uniforms.empty())

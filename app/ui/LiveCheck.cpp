@@ -30,9 +30,11 @@ QString shortSummary(const CheckResult &result)
         return QObject::tr("check: %1").arg(result.error);
     if (!result.report.comparable())
         return QObject::tr("check: nothing to compare in this view");
-    // Gouraud and flat are approximations by design: say what they are judged against.
+    // Gouraud, flat and faceted are approximations by design: say what they
+    // are judged against.
     const ShadingMethod method = result.scene.shading;
-    if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat)
+    if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat
+        || method == ShadingMethod::Faceted)
         return QObject::tr("%1 against exact Phong: %2")
             .arg(shadingName(method), checkStatusLine(result.report));
     return checkStatusLine(result.report); // the whole rule goes in the tooltip

@@ -68,8 +68,8 @@ void TestCliBench::quickRunWritesCsvAndChart()
     QVERIFY2(read, qPrintable(read.error()));
     const std::vector<BenchRow> &rows = *read;
     // Two scenes (default: tree and cloud with 2 lights; sphere: 1 light),
-    // 3 details, 4 methods; light setups 1, 4, 8 (+ the default's own 2).
-    QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 4));
+    // 3 details, 5 methods; light setups 1, 4, 8 (+ the default's own 2).
+    QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 5));
     QSet<QString> methods, scenes;
     for (const BenchRow &row : rows) {
         methods.insert(row.method);
@@ -82,7 +82,7 @@ void TestCliBench::quickRunWritesCsvAndChart()
         QVERIFY(row.maxError >= 0 && row.maxError <= 255);
         QVERIFY(row.rmse >= 0);
     }
-    QCOMPARE(methods, (QSet<QString>{"flat", "gouraud", "blinn-phong", "phong"}));
+    QCOMPARE(methods, (QSet<QString>{"flat", "gouraud", "faceted", "blinn-phong", "phong"}));
     QCOMPARE(scenes, (QSet<QString>{"default", "sphere"}));
 
     // The fit: one line per scene; its choice meets the default budget.

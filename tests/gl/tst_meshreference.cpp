@@ -187,23 +187,23 @@ private slots:
     void wrongVariantsFail_data()
     {
         QTest::addColumn<bool>("faceNormalReference");
-        QTest::addColumn<bool>("flatGpu");
+        QTest::addColumn<bool>("facetedGpu");
         // The reference ignores the vertex normals (one normal per face),
         // the GPU renders correctly.
         QTest::newRow("reference with face normals") << true << false;
-        // The GPU renders with flat shading, the reference is correct Phong.
-        QTest::newRow("GPU with the flat shader") << false << true;
+        // The GPU renders with faceted shading, the reference is correct Phong.
+        QTest::newRow("GPU with the faceted shader") << false << true;
     }
 
     void wrongVariantsFail()
     {
         QFETCH(bool, faceNormalReference);
-        QFETCH(bool, flatGpu);
+        QFETCH(bool, facetedGpu);
         const Scene scene = defaultScene();
         Variant variant;
         variant.referenceWithFaceNormals = faceNormalReference;
-        if (flatGpu)
-            variant.gpuShading = ShadingMethod::Flat;
+        if (facetedGpu)
+            variant.gpuShading = ShadingMethod::Faceted;
         const RenderCheck check = checkMeshScene(scene, variant);
         QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
         qInfo("WRONG %-28s %s", QTest::currentDataTag(), qPrintable(check.comparison.summary()));

@@ -47,6 +47,7 @@ struct EdgeCase {
 
 constexpr ShadingMethod kMethods[] = {ShadingMethod::Phong, ShadingMethod::BlinnPhong,
                                       ShadingMethod::Gouraud, ShadingMethod::Flat,
+                                      ShadingMethod::Faceted,
                                       ShadingMethod::Normals};
 
 bool exactMethod(ShadingMethod m)

@@ -100,6 +100,7 @@ private slots:
     void saveRefusesInvalidSceneAndKeepsOldFile();
     void docExampleLoadsCleanly();
     void detailRoundTripsAndDefaultsAreNotWritten();
+    void oldFlatLoadsAsFacetedWithANote();
 };
 
 void TestSceneJson::roundTripFullScene()
@@ -267,6 +268,9 @@ void TestSceneJson::rejectsBadInput_data()
     row("background string", withSphere(R"("background": "#202020")"), "background:", "got string");
     row("shading unknown", withSphere(R"("shading": "toon")"), "shading:", "blinn-phong");
     row("shading not string", withSphere(R"("shading": 1)"), "shading:", "got number");
+    row("format zero", withSphere(R"("format": 0)"), "format:", "got 0");
+    row("format fraction", withSphere(R"("format": 1.5)"), "format:", "whole number");
+    row("format string", withSphere(R"("format": "2")"), "format:", "got string");
 
     // Lights
     row("lights not array", withLights(R"({"position": [1, 1, 1]})"),
@@ -534,6 +538,42 @@ void TestSceneJson::detailRoundTripsAndDefaultsAreNotWritten()
     QVERIFY2(ignored.ok(), qPrintable(ignored.error));
     QCOMPARE(ignored.scene->objects.front().detail, 1.0);
     QVERIFY(ignored.warnings.join(u'\n').contains(QStringLiteral("detail: ignored")));
+}
+
+// Before "format": 2, "flat" named the per-fragment shader now called
+// "faceted": such a file keeps its look and says so; a saved scene carries
+// the format, so its "flat" is flat shading once per face.
+void TestSceneJson::oldFlatLoadsAsFacetedWithANote()
+{
+    const SceneLoadResult old = parseScene(R"({"mesh": "builtin:sphere", "shading": "flat"})");
+    QVERIFY2(old.ok(), qPrintable(old.error));
+    QCOMPARE(old.scene->shading, ShadingMethod::Faceted);
+    QCOMPARE(old.warnings.size(), 1);
+    QVERIFY2(old.warnings.front().startsWith(QStringLiteral("shading: ")),
+             qPrintable(old.warnings.front()));
+    QVERIFY(old.warnings.front().contains(QStringLiteral("\"faceted\"")));
+
+    const SceneLoadResult now =
+        parseScene(R"({"format": 2, "mesh": "builtin:sphere", "shading": "flat"})");
+    QVERIFY2(now.ok(), qPrintable(now.error));
+    QVERIFY2(now.warnings.isEmpty(), qPrintable(now.warnings.join(u'\n')));
+    QCOMPARE(now.scene->shading, ShadingMethod::Flat);
+
+    for (const ShadingMethod method : {ShadingMethod::Flat, ShadingMethod::Faceted}) {
+        Scene scene = sphereScene();
+        scene.shading = method;
+        const QByteArray json = sceneToJson(scene);
+        QCOMPARE(QJsonDocument::fromJson(json).object().value(QStringLiteral("format")).toInt(),
+                 kSceneFormat);
+        const SceneLoadResult back = parseScene(json);
+        QVERIFY2(back.ok() && back.warnings.isEmpty(), qPrintable(back.error));
+        QCOMPARE(back.scene->shading, method);
+    }
+
+    const SceneLoadResult newer = parseScene(R"({"format": 3, "mesh": "builtin:sphere"})");
+    QVERIFY2(newer.ok(), qPrintable(newer.error));
+    QVERIFY2(newer.warnings.join(u'\n').contains(QStringLiteral("format: 3 is newer")),
+             qPrintable(newer.warnings.join(u'\n')));
 }
 
 QTEST_GUILESS_MAIN(TestSceneJson)
