@@ -20,8 +20,8 @@ struct BenchOptions {
     std::vector<int> lightCounts{1, 4, 8};
     bool sceneLights = true; // also the scene's own lights (what fit-to-budget uses)
     std::vector<ShadingMethod> methods{ShadingMethod::Flat, ShadingMethod::Gouraud,
-                                       ShadingMethod::Faceted,
-                                       ShadingMethod::BlinnPhong, ShadingMethod::Phong};
+                                       ShadingMethod::Faceted, ShadingMethod::BlinnPhong,
+                                       ShadingMethod::Phong};
     int bandPx = 2; // silhouette band left out of the error
     // A pixel belongs to the specular highlight where the reference's
     // specular term reaches this much in some channel (4/255: visible).

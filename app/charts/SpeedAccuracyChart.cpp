@@ -4,8 +4,8 @@
 #include "bench/ParetoFront.h"
 
 #include <QGraphicsScene>
-#include <iterator>
 #include <QtCharts/QChart>
+#include <iterator>
 
 #include <algorithm>
 #include <cmath>

@@ -58,27 +58,31 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
                               const ReferenceShader &shader)
 {
     const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
-    return shadeEachHit(hits, scene, [&](const SceneHits::Object &object, const ReferenceHit &hit,
-                                         const Material &material) {
-        if (shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0)
-            return shadeVertices(object, hit, material, scene.ambient, lights);
-        return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
-                                 material, scene.ambient, lights, shader);
-    });
+    return shadeEachHit(
+        hits, scene,
+        [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
+            if (shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0)
+                return shadeVertices(object, hit, material, scene.ambient, lights);
+            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
+                                     material, scene.ambient, lights, shader);
+        });
 }
 
 ReferenceImage shadeSceneFaces(const SceneHits &hits, const Scene &scene)
 {
     const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene);
-    return shadeEachHit(hits, scene, [&](const SceneHits::Object &object, const ReferenceHit &hit,
-                                         const Material &material) {
-        if (!object.mesh || hit.triangle < 0)
-            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
-                                     material, scene.ambient, lights, ReferenceShader());
-        const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
-        return shadeReferenceHit({face.centroid, face.normal, object.modelView, object.normalMatrix},
-                                 material, scene.ambient, lights, ReferenceShader());
-    });
+    return shadeEachHit(
+        hits, scene,
+        [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
+            if (!object.mesh || hit.triangle < 0)
+                return shadeReferenceHit(
+                    {hit.point, hit.normal, object.modelView, object.normalMatrix}, material,
+                    scene.ambient, lights, ReferenceShader());
+            const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
+            return shadeReferenceHit(
+                {face.centroid, face.normal, object.modelView, object.normalMatrix}, material,
+                scene.ambient, lights, ReferenceShader());
+        });
 }
 
 CameraSpaceHit cameraSpaceHit(const SceneHits &hits, const ReferenceHit &hit)

@@ -95,8 +95,8 @@ Result<> GpuMesh::prepareFaceLayout()
         mesh.normals[i] = {v[3], v[4], v[5]};
     }
     const FaceLayout layout = buildFaceLayout(mesh);
-    if (Result<> filled = fill(m_faces, layout.vertices, FaceLayout::kFloatsPerVertex / 3,
-                               layout.indices);
+    if (Result<> filled =
+            fill(m_faces, layout.vertices, FaceLayout::kFloatsPerVertex / 3, layout.indices);
         !filled) {
         destroy(m_faces);
         return filled;

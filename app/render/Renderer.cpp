@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "core/LightBound.h"
 #include "core/ObjectMatrices.h"
 #include "core/ResourcePaths.h"
 #include "mesh/BuiltinMeshes.h"
@@ -190,15 +191,14 @@ void Renderer::render(const QSize &pixelSize)
     glUseProgram(0);
 }
 
-void Renderer::uploadLights(const glm::dmat4 &view)
+void Renderer::uploadLights(std::span<const int> lights)
 {
-    // Only the enabled lights are packed; lightCount counts them.
+    // Only the lights given are packed; lightCount counts them.
     int count = 0;
     glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights],
         attenuation[kMaxLights];
-    for (const PointLight &l : m_scene.lights) {
-        if (!l.enabled)
-            continue;
+    for (int i : lights) {
+        const PointLight &l = m_scene.lights[std::size_t(i)];
         if (count == kMaxLights)
             break;
         position[count] = glm::vec3(l.position); // world coordinates: the shader applies the view
@@ -207,8 +207,6 @@ void Renderer::uploadLights(const glm::dmat4 &view)
         attenuation[count] = glm::vec3(l.attenuation);
         ++count;
     }
-    m_program.setUniform("viewMatrix", glm::mat4(view));
-    m_program.setUniform("Ia", glm::vec3(m_scene.ambient));
     m_program.setUniform("lightCount", count);
     m_program.setUniformArray("lightPosition", position, count);
     m_program.setUniformArray("Id", diffuse, count);
@@ -219,8 +217,12 @@ void Renderer::uploadLights(const glm::dmat4 &view)
 void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
 {
     m_program.bind();
-    uploadLights(view);
+    m_program.setUniform("viewMatrix", glm::mat4(view));
+    m_program.setUniform("Ia", glm::vec3(m_scene.ambient));
     m_program.setUniform("projectionMatrix", glm::mat4(projection));
+    uploadLights(enabledLights(m_scene.lights));
+    m_lightsLeftOut = 0;
+    m_leftOutBound = 0.0;
     // A program that reads a face centroid (flat.vert) is drawn from the
     // meshes' face layouts, whoever wrote it.
     const bool perFace = glGetAttribLocation(m_program.id(), "facePoint") >= 0;
@@ -232,7 +234,8 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
             continue;
         if (perFace) {
             if (Result<> prepared = mesh->prepareFaceLayout(); !prepared) {
-                m_drawError = QStringLiteral("%1: not drawn: %2").arg(object.mesh, prepared.error());
+                m_drawError =
+                    QStringLiteral("%1: not drawn: %2").arg(object.mesh, prepared.error());
                 continue;
             }
         }
@@ -242,6 +245,8 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
             glEnable(GL_CULL_FACE);
         else
             glDisable(GL_CULL_FACE);
+        if (m_options.lightAllowance > 0.0)
+            uploadObjectLights(object, m_meshInfo.value(key).stats);
         // Matrices in double on the CPU, once per draw; the shader gets floats.
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
         glFrontFace(m.mirrors() ? GL_CW : GL_CCW);
@@ -257,6 +262,17 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
             mesh->draw();
         m_trianglesDrawn += mesh->indexCount() / 3;
     }
+}
+
+void Renderer::uploadObjectLights(const SceneObject &object, const MeshStats &stats)
+{
+    const BoundingSphere bounds = boundingSphere(
+        glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), object.transform.matrix());
+    const LightSelection selection =
+        selectLights(m_scene.lights, object.material, bounds, m_options.lightAllowance);
+    uploadLights(selection.kept);
+    m_lightsLeftOut += int(selection.leftOut.size());
+    m_leftOutBound = std::max(m_leftOutBound, selection.leftOutBound);
 }
 
 std::vector<BoundingSphere> Renderer::boundingSpheres() const

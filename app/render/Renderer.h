@@ -26,6 +26,9 @@ public:
         bool drawLightMarkers = false;
         bool cullBackFaces = true; // builtin and imported meshes are closed
         int selectedLight = -1;    // its marker is drawn larger (the Lights dock's selection)
+        // Lights whose bounded contribution to an object sums below this
+        // (linear intensity; LightBound.h) are left out of its draw. 0: none.
+        double lightAllowance = 0.0;
     };
 
     Renderer();
@@ -71,6 +74,10 @@ public:
     // Renders one frame into a pixelSize framebuffer (device pixels).
     void render(const QSize &pixelSize);
     qint64 trianglesDrawn() const { return m_trianglesDrawn; }
+    // Light terms the last frame left out (one per light per object), and
+    // the largest sum of bounds left out of any one object.
+    int lightsLeftOut() const { return m_lightsLeftOut; }
+    double leftOutBound() const { return m_leftOutBound; }
     // Why the last frame left an object out ("<mesh>: not drawn: ..."), or
     // empty. Only flat shading's face layout can fail at draw time.
     const QString &drawError() const { return m_drawError; }
@@ -80,7 +87,8 @@ public:
 
 private:
     void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection);
-    void uploadLights(const glm::dmat4 &view);
+    void uploadLights(std::span<const int> lights);
+    void uploadObjectLights(const SceneObject &object, const MeshStats &stats);
     void applySceneUniforms();
     void drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection);
     std::vector<BoundingSphere> boundingSpheres() const;
@@ -94,6 +102,8 @@ private:
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
     QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
+    int m_lightsLeftOut = 0;
+    double m_leftOutBound = 0.0;
     QString m_drawError;
     DepthRange m_depthRange;
     // The scene's values for the shader's own uniforms, until a program that

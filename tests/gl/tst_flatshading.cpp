@@ -80,7 +80,8 @@ bool besideOwnEdge(const SceneHits &hits, const Scene &scene, int x, int y)
     glm::dvec2 corner[3];
     for (std::size_t k = 0; k < 3; ++k) {
         const std::uint32_t v = object.mesh->indices[3 * std::size_t(hit.triangle) + k];
-        const glm::dvec4 p = object.modelView * glm::dvec4(glm::dvec3(object.mesh->positions[v]), 1.0);
+        const glm::dvec4 p =
+            object.modelView * glm::dvec4(glm::dvec3(object.mesh->positions[v]), 1.0);
         corner[k] = toPixels(projection * p, hits.width);
     }
     const glm::dvec2 centre(x + 0.5, y + 0.5);
@@ -161,7 +162,8 @@ FlatCheck checkFlat(const Scene &scene, ShadingMethod gpuShading, Reference refe
 
 Scene defaultScene()
 {
-    const SceneLoadResult loaded = loadSceneFile(sourcePath(QStringLiteral("assets/scenes/default.json")));
+    const SceneLoadResult loaded =
+        loadSceneFile(sourcePath(QStringLiteral("assets/scenes/default.json")));
     if (!loaded.ok())
         qFatal("default.json: %s", qPrintable(loaded.error));
     return *loaded.scene;
@@ -195,7 +197,8 @@ private slots:
             QVERIFY2(provoking.insert(last).second, "a vertex provokes two triangles");
             // The same triangle, rotated: same positions in the same cyclic order.
             auto position = [&](std::uint32_t v) {
-                const float *f = layout.vertices.data() + std::size_t(v) * FaceLayout::kFloatsPerVertex;
+                const float *f =
+                    layout.vertices.data() + std::size_t(v) * FaceLayout::kFloatsPerVertex;
                 return glm::vec3(f[0], f[1], f[2]);
             };
             std::array<glm::vec3, 3> before, after;
@@ -207,7 +210,8 @@ private slots:
                 || after == std::array{before[1], before[2], before[0]}
                 || after == std::array{before[2], before[0], before[1]};
             QVERIFY2(rotated, "a triangle's corners changed or its winding flipped");
-            const float *f = layout.vertices.data() + std::size_t(last) * FaceLayout::kFloatsPerVertex;
+            const float *f =
+                layout.vertices.data() + std::size_t(last) * FaceLayout::kFloatsPerVertex;
             const FaceGeometry face = faceGeometry(mesh, t);
             QCOMPARE(glm::vec3(f[3], f[4], f[5]), glm::vec3(face.normal));
             QCOMPARE(glm::vec3(f[6], f[7], f[8]), glm::vec3(face.centroid));
@@ -238,7 +242,7 @@ private slots:
     void gpuMatchesPerFaceReference()
     {
         QFETCH(QString, scene);
-        const Scene s = scene.isEmpty()          ? defaultScene()
+        const Scene s = scene.isEmpty()        ? defaultScene()
             : scene == QLatin1String("coarse") ? coarseSphere()
                                                : loadTestScene(scene);
         const FlatCheck flat = checkFlat(s, ShadingMethod::Flat, Reference::PerFace);
@@ -248,10 +252,11 @@ private slots:
         QVERIFY2(flat.check.comparison.pixelsCompared > kTestImageSide * kTestImageSide / 25,
                  qPrintable(flat.check.comparison.summary()));
         if (!flat.check.matches())
-            QFAIL(qPrintable(QStringLiteral("%1 (images in %2)")
-                                 .arg(flat.check.comparison.summary(),
-                                      saveArtifacts(QStringLiteral("flat-%1").arg(QTest::currentDataTag()),
-                                                    flat.check, s))));
+            QFAIL(qPrintable(
+                QStringLiteral("%1 (images in %2)")
+                    .arg(flat.check.comparison.summary(),
+                         saveArtifacts(QStringLiteral("flat-%1").arg(QTest::currentDataTag()),
+                                       flat.check, s))));
     }
 
     void wrongVariantsFail_data()

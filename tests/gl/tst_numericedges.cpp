@@ -45,10 +45,9 @@ struct EdgeCase {
     Expect expect = Expect::Reference;
 };
 
-constexpr ShadingMethod kMethods[] = {ShadingMethod::Phong, ShadingMethod::BlinnPhong,
+constexpr ShadingMethod kMethods[] = {ShadingMethod::Phong,   ShadingMethod::BlinnPhong,
                                       ShadingMethod::Gouraud, ShadingMethod::Flat,
-                                      ShadingMethod::Faceted,
-                                      ShadingMethod::Normals};
+                                      ShadingMethod::Faceted, ShadingMethod::Normals};
 
 bool exactMethod(ShadingMethod m)
 {
