@@ -8,8 +8,8 @@ namespace phonglab {
 double projectedErrorPx(double worldError, const BoundingSphere &bounds, const Camera &camera,
                         int viewportHeight)
 {
-    const double distance = std::max(camera.nearPlane,
-                                     glm::length(bounds.center - camera.eye) - bounds.radius);
+    const double distance =
+        std::max(camera.nearPlane, glm::length(bounds.center - camera.eye) - bounds.radius);
     const double halfHeight = distance * std::tan(glm::radians(camera.fovDeg) / 2.0);
     return worldError / (2.0 * halfHeight) * double(viewportHeight);
 }

@@ -8,6 +8,7 @@
 
 #include <QString>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace phonglab {
@@ -25,6 +26,13 @@ struct SceneObject {
     // (builtins). In (0, 1]. Lets the bench store the level of detail a
     // scene needs.
     double detail = 1.0;
+    // "detail": "auto": drawn at the level of detail its size on screen
+    // allows (DetailSelection.h), from levels built for it (DetailLevels.h);
+    // `detail` is then 1.
+    bool autoDetail = false;
+    // Its own shading method ("shading" in an "objects" entry); the scene's
+    // when unset. Per-object fits to an error budget write it.
+    std::optional<ShadingMethod> shading;
 
     bool operator==(const SceneObject &) const = default;
 };
@@ -54,6 +62,12 @@ struct Scene {
     QString resolveMeshPath(const QString &mesh) const;
     QString resolveShaderPath(const QString &shader) const;
     bool operator==(const Scene &other) const;
+
+    // What `object` is drawn with: its own method, else the scene's.
+    ShadingMethod shadingOf(const SceneObject &object) const
+    {
+        return object.shading.value_or(shading);
+    }
 };
 
 } // namespace phonglab

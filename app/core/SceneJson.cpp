@@ -78,7 +78,8 @@ private:
         out = std::move(*read);
         return true;
     }
-    bool readDetail(const QJsonValue &value, const QString &path, double &out);
+    bool readDetail(const QJsonValue &value, const QString &path, SceneObject &out);
+    bool readObjectShading(const QJsonValue &value, const QString &path, SceneObject &out);
     bool readObjects(const QJsonObject &root, std::vector<SceneObject> &out);
 
     QString m_error;
@@ -420,8 +421,9 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path,
         QJsonObject object;
         if (!readObject(array.at(i), objectPath, object))
             return false;
-        warnUnknownKeys(object, objectPath,
-                        {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1});
+        warnUnknownKeys(
+            object, objectPath,
+            {"mesh"_L1, "transform"_L1, "material"_L1, "normals"_L1, "detail"_L1, "shading"_L1});
         if (!readMesh(object.value("mesh"_L1), childPath(objectPath, "mesh"_L1), objects[i].mesh)
             || !readTransform(object.value("transform"_L1), childPath(objectPath, "transform"_L1),
                               objects[i].transform)
@@ -430,7 +432,9 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path,
             || !readNormals(object.value("normals"_L1), childPath(objectPath, "normals"_L1),
                             objects[i].normals)
             || !readDetail(object.value("detail"_L1), childPath(objectPath, "detail"_L1),
-                           objects[i].detail))
+                           objects[i])
+            || !readObjectShading(object.value("shading"_L1), childPath(objectPath, "shading"_L1),
+                                  objects[i]))
             return false;
     }
     out = std::move(objects);
@@ -443,7 +447,7 @@ bool SceneReader::readSingleObject(const QJsonObject &root, SceneObject &out)
         && readTransform(root.value("transform"_L1), QStringLiteral("transform"), out.transform)
         && readMaterial(root.value("material"_L1), QStringLiteral("material"), out.material)
         && readNormals(root.value("normals"_L1), QStringLiteral("normals"), out.normals)
-        && readDetail(root.value("detail"_L1), QStringLiteral("detail"), out.detail);
+        && readDetail(root.value("detail"_L1), QStringLiteral("detail"), out);
 }
 
 bool SceneReader::readNormals(const QJsonValue &value, const QString &path, NormalOptions &out)
@@ -458,20 +462,36 @@ bool SceneReader::readUniforms(const QJsonValue &value, const QString &path,
 }
 
 // A fraction of the full triangle count: 0 would draw nothing, and more
-// than the mesh has cannot be made.
-bool SceneReader::readDetail(const QJsonValue &value, const QString &path, double &out)
+// than the mesh has cannot be made. Or "auto": the view decides.
+bool SceneReader::readDetail(const QJsonValue &value, const QString &path, SceneObject &out)
 {
     if (value.isUndefined())
         return true;
+    if (value.isString() && value.toString() == "auto"_L1) {
+        out.autoDetail = true;
+        return true;
+    }
     const QString expected = QStringLiteral("expected a number in (0, 1]");
     if (const auto literal = overflowLiteral(value))
         return fail(path, expected + QStringLiteral(", got %1").arg(*literal));
     if (!value.isDouble())
-        return fail(path, expected + QStringLiteral(", got %1").arg(describeType(value)));
+        return fail(path,
+                    expected + QStringLiteral(" or \"auto\", got %1").arg(describeType(value)));
     const double detail = value.toDouble();
     if (!(detail > 0.0 && detail <= 1.0))
         return fail(path, expected + QStringLiteral(", got %1").arg(number(detail)));
-    out = detail;
+    out.detail = detail;
+    return true;
+}
+
+bool SceneReader::readObjectShading(const QJsonValue &value, const QString &path, SceneObject &out)
+{
+    if (value.isUndefined())
+        return true;
+    ShadingMethod method = ShadingMethod::Phong;
+    if (!readShading(value, path, method))
+        return false;
+    out.shading = method;
     return true;
 }
 

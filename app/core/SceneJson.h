@@ -39,7 +39,8 @@ SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir = {});
 SceneLoadResult loadSceneFile(const QString &path);
 
 // Indented JSON that parseScene reads back into an equal Scene. Writes the
-// single-object form when the scene has exactly one object, else "objects".
+// single-object form when the scene has exactly one object without its own
+// shading, else "objects".
 QByteArray sceneToJson(const Scene &scene);
 
 // Writes sceneToJson(scene) to `path` atomically (QSaveFile): on any failure

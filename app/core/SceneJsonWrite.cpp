@@ -76,8 +76,12 @@ void insertObject(QJsonObject &into, const SceneObject &object)
     if (object.normals != NormalOptions{})
         into.insert(QStringLiteral("normals"), scenejson::normalOptionsJson(object.normals));
     // Only when reduced, so files from before "detail" keep their shape.
-    if (object.detail != 1.0)
+    if (object.autoDetail)
+        into.insert(QStringLiteral("detail"), QStringLiteral("auto"));
+    else if (object.detail != 1.0)
         into.insert(QStringLiteral("detail"), object.detail);
+    if (object.shading)
+        into.insert(QStringLiteral("shading"), shadingName(*object.shading));
 }
 
 } // namespace
@@ -85,7 +89,9 @@ void insertObject(QJsonObject &into, const SceneObject &object)
 QByteArray sceneToJson(const Scene &scene)
 {
     QJsonObject root;
-    if (scene.objects.size() == 1) {
+    // An object with its own shading needs an "objects" entry: at the top level
+    // "shading" is the scene's.
+    if (scene.objects.size() == 1 && !scene.objects.front().shading) {
         insertObject(root, scene.objects.front());
     } else {
         QJsonArray objects;

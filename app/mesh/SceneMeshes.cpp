@@ -15,8 +15,11 @@ namespace phonglab {
 
 namespace {
 
-QString detailSuffix(double detail)
+QString detailSuffix(const SceneObject &object)
 {
+    if (object.autoDetail)
+        return QStringLiteral("|detail=auto");
+    const double detail = object.detail;
     if (detail == 1.0)
         return {};
     // Shortest round-trip form: "0.25", and two details differ in the key
@@ -98,11 +101,11 @@ QString meshKey(const Scene &scene, const SceneObject &object)
 {
     const QString spec = scene.resolveMeshPath(object.mesh);
     if (spec.startsWith(QLatin1String("builtin:")))
-        return spec + detailSuffix(object.detail); // analytic normals: the options do not apply
+        return spec + detailSuffix(object); // analytic normals: the options do not apply
     QString key = spec + QLatin1Char('|') + normalMethodName(object.normals.method);
     if (object.normals.creaseAngleDeg)
         key += QLatin1Char('|') + QString::number(*object.normals.creaseAngleDeg, 'g', 17);
-    return key + detailSuffix(object.detail);
+    return key + detailSuffix(object);
 }
 
 SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded,
@@ -125,7 +128,8 @@ SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoad
         // detail: half of this object's share of the progress bar each when
         // it is decimated.
         const QString spec = scene.resolveMeshPath(object.mesh);
-        const bool decimated = object.detail != 1.0 && !isBuiltinMeshSpec(spec);
+        const bool decimated =
+            object.autoDetail || (object.detail != 1.0 && !isBuiltinMeshSpec(spec));
         const double from = double(i) / todo.size(), to = double(i + 1) / todo.size();
         const double split = decimated ? 0.5 * (from + to) : to;
         const auto part = [&progress](double a, double b) -> LoadProgress {
@@ -146,6 +150,16 @@ SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoad
         }
         SceneMeshes::Entry entry;
         entry.mesh = std::make_shared<const MeshData>(std::move(*loaded.mesh));
+        if (object.autoDetail) {
+            auto levels =
+                std::make_shared<DetailLevels>(buildDetailLevels(*entry.mesh, part(split, to)));
+            if (levels->empty()) {
+                result.entries.clear();
+                result.error = QStringLiteral("cancelled");
+                return result;
+            }
+            entry.levels = std::move(levels);
+        }
         entry.stats = loaded.stats;
         entry.warnings = loaded.warnings;
         result.entries.insert(meshKey(scene, object), std::move(entry));

@@ -1,4 +1,5 @@
 #pragma once
+#include "DetailLevels.h"
 #include "MeshLoader.h"
 #include "core/Scene.h"
 
@@ -14,6 +15,8 @@ namespace phonglab {
 struct SceneMeshes {
     struct Entry {
         std::shared_ptr<const MeshData> mesh; // null once uploaded
+        // For objects with "detail": "auto": the levels of `mesh`; null otherwise.
+        std::shared_ptr<const DetailLevels> levels;
         MeshStats stats;
         QStringList warnings;
     };
@@ -23,8 +26,9 @@ struct SceneMeshes {
     bool ok() const { return error.isEmpty(); }
 };
 
-// Identifies what an object's mesh is on the GPU: the resolved file and the
-// way its normals were made.
+// Identifies what an object's mesh is on the GPU: the resolved file, the
+// way its normals were made, and its detail (a fraction, or "auto": the full
+// mesh with its levels).
 QString meshKey(const Scene &scene, const SceneObject &object);
 
 // Loads every mesh `scene` needs, skipping keys in `alreadyLoaded`.

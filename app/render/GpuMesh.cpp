@@ -9,9 +9,15 @@ namespace phonglab {
 
 namespace {
 constexpr int kSharedAttributes = 2; // position, normal
-}
 
-Result<> GpuMesh::upload(const MeshData &mesh)
+// QOpenGLBuffer::read() counts bytes in an int.
+bool fitsRead(std::size_t bytes)
+{
+    return bytes <= std::size_t(std::numeric_limits<int>::max());
+}
+} // namespace
+
+Result<> GpuMesh::upload(const MeshData &mesh, const DetailLevels *levels)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
@@ -26,11 +32,24 @@ Result<> GpuMesh::upload(const MeshData &mesh)
         const glm::vec3 &n = mesh.normals[i];
         interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
-    if (Result<> filled = fill(m_shared, interleaved, kSharedAttributes, mesh.indices); !filled) {
+    std::vector<std::uint32_t> indices = mesh.indices;
+    std::vector<Level> ranges(1);
+    ranges.front().count = GLsizei(mesh.indices.size());
+    if (levels)
+        for (std::size_t i = 1; i < levels->levels.size(); ++i) {
+            const DetailLevel &level = levels->levels[i];
+            Level range;
+            range.first = GLsizei(indices.size());
+            range.count = GLsizei(level.indices.size());
+            range.error = level.error;
+            indices.insert(indices.end(), level.indices.begin(), level.indices.end());
+            ranges.push_back(std::move(range));
+        }
+    if (Result<> filled = fill(m_shared, interleaved, kSharedAttributes, indices); !filled) {
         destroy();
         return filled;
     }
-    m_indexCount = GLsizei(mesh.indices.size());
+    m_levels = std::move(ranges);
     m_vertexCount = mesh.positions.size();
     return {};
 }
@@ -60,29 +79,30 @@ Result<> GpuMesh::fill(Buffers &buffers, const std::vector<float> &vertices, int
     return {};
 }
 
-Result<> GpuMesh::prepareFaceLayout()
+Result<> GpuMesh::prepareFaceLayout(int level)
 {
-    if (hasFaceLayout())
-        return {};
     if (!isValid())
         return fail(QStringLiteral("no mesh uploaded"));
-    // QOpenGLBuffer::read() counts bytes in an int.
+    Level &range = m_levels[std::size_t(level)];
+    if (range.faces)
+        return {};
     const std::size_t vertexBytes = m_vertexCount * kSharedAttributes * 3 * sizeof(float);
-    const std::size_t indexBytes = std::size_t(m_indexCount) * sizeof(std::uint32_t);
-    if (vertexBytes > std::size_t(std::numeric_limits<int>::max())
-        || indexBytes > std::size_t(std::numeric_limits<int>::max()))
+    const std::size_t indexBytes = std::size_t(range.count) * sizeof(std::uint32_t);
+    const std::size_t indexOffset = std::size_t(range.first) * sizeof(std::uint32_t);
+    if (!fitsRead(vertexBytes) || !fitsRead(indexBytes) || !fitsRead(indexOffset))
         return fail(QStringLiteral("the mesh is too large to read back for flat shading"));
 
     // The CPU copy is gone once uploaded (Renderer::setScene): read it back.
     std::vector<float> interleaved(m_vertexCount * kSharedAttributes * 3);
     MeshData mesh;
-    mesh.indices.resize(std::size_t(m_indexCount));
+    mesh.indices.resize(std::size_t(range.count));
     m_shared.vbo.bind();
     const bool readVertices = m_shared.vbo.read(0, interleaved.data(), int(vertexBytes));
     m_shared.vbo.release();
     m_shared.vao.bind(); // the element buffer binding is the VAO's
     m_shared.ibo.bind();
-    const bool readIndices = m_shared.ibo.read(0, mesh.indices.data(), int(indexBytes));
+    const bool readIndices =
+        m_shared.ibo.read(int(indexOffset), mesh.indices.data(), int(indexBytes));
     m_shared.vao.release();
     if (!readVertices || !readIndices)
         return fail(QStringLiteral("the driver cannot read the mesh back for flat shading"));
@@ -95,32 +115,37 @@ Result<> GpuMesh::prepareFaceLayout()
         mesh.normals[i] = {v[3], v[4], v[5]};
     }
     const FaceLayout layout = buildFaceLayout(mesh);
+    auto faces = std::make_unique<Buffers>();
     if (Result<> filled =
-            fill(m_faces, layout.vertices, FaceLayout::kFloatsPerVertex / 3, layout.indices);
+            fill(*faces, layout.vertices, FaceLayout::kFloatsPerVertex / 3, layout.indices);
         !filled) {
-        destroy(m_faces);
+        destroy(*faces);
         return filled;
     }
+    range.faces = std::move(faces);
     return {};
 }
 
-void GpuMesh::draw()
+void GpuMesh::draw(int level)
 {
-    draw(m_shared);
-}
-
-void GpuMesh::drawFaces()
-{
-    draw(m_faces);
-}
-
-void GpuMesh::draw(Buffers &buffers)
-{
-    if (!buffers.vao.isCreated())
+    if (!m_shared.vao.isCreated())
         return;
-    buffers.vao.bind();
-    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
-    buffers.vao.release();
+    const Level &range = m_levels[std::size_t(level)];
+    m_shared.vao.bind();
+    glDrawElements(
+        GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
+        reinterpret_cast<const void *>(std::size_t(range.first) * sizeof(std::uint32_t)));
+    m_shared.vao.release();
+}
+
+void GpuMesh::drawFaces(int level)
+{
+    const Level &range = m_levels[std::size_t(level)];
+    if (!range.faces || !range.faces->vao.isCreated())
+        return;
+    range.faces->vao.bind();
+    glDrawElements(GL_TRIANGLES, range.count, GL_UNSIGNED_INT, nullptr);
+    range.faces->vao.release();
 }
 
 void GpuMesh::destroy(Buffers &buffers)
@@ -134,9 +159,12 @@ void GpuMesh::destroy()
 {
     if (!m_initialized)
         return;
-    destroy(m_faces);
+    for (Level &level : m_levels)
+        if (level.faces)
+            destroy(*level.faces);
+    m_levels.clear();
+    m_levels.emplace_back();
     destroy(m_shared);
-    m_indexCount = 0;
     m_vertexCount = 0;
 }
 

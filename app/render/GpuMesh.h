@@ -1,10 +1,13 @@
 #pragma once
 #include "core/MeshData.h"
 #include "core/Result.h"
+#include "mesh/DetailLevels.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLVertexArrayObject>
+#include <memory>
+#include <vector>
 
 namespace phonglab {
 
@@ -12,7 +15,9 @@ namespace phonglab {
 // attribute locations 0 and 1) and a 32-bit index buffer, held by Qt's own
 // owners. On demand also its face layout (FaceLayout.h: position, face
 // normal, face centroid at locations 0, 1, 2), built from the buffers read
-// back, for flat shading. Needs its context current for upload/draw/destroy: a VAO, unlike
+// back, for flat shading. With levels of detail (DetailLevels.h), the index
+// buffer holds every level one after the other, level 0 (the full mesh)
+// first; a level is a range of it, drawn over the same vertices. Needs its context current for upload/draw/destroy: a VAO, unlike
 // the buffers, belongs to the one context that made it, and Qt's VAO, when
 // destroyed without that context current, makes it current itself, which
 // aborts while the context is lent to another thread.
@@ -28,20 +33,24 @@ public:
     GpuMesh &operator=(const GpuMesh &) = delete;
 
     // Fails (and holds nothing) when the driver cannot make the objects.
-    Result<> upload(const MeshData &mesh);
-    void draw();
+    // `levels`, when given, must be levels of `mesh` (levels[0] its indices).
+    Result<> upload(const MeshData &mesh, const DetailLevels *levels = nullptr);
+    void draw(int level = 0);
     void destroy();
 
-    // Builds the face layout from the uploaded buffers if it is not there
-    // yet. Fails (and draws nothing with faces) when the driver cannot read
-    // the buffers back or make the objects.
-    Result<> prepareFaceLayout();
-    bool hasFaceLayout() const { return m_faces.vao.isCreated(); }
+    // Builds the face layout of `level` from the uploaded buffers if it is
+    // not there yet. Fails (and draws nothing with faces) when the driver
+    // cannot read the buffers back or make the objects.
+    Result<> prepareFaceLayout(int level = 0);
     // Draws the face layout; nothing before prepareFaceLayout() succeeded.
-    void drawFaces();
+    void drawFaces(int level = 0);
 
     bool isValid() const { return m_shared.vao.isCreated(); }
-    GLsizei indexCount() const { return m_indexCount; }
+    GLsizei indexCount(int level = 0) const { return m_levels[std::size_t(level)].count; }
+    // 1 without levels of detail.
+    int levelCount() const { return int(m_levels.size()); }
+    // Object units (DetailLevel::error); 0 for level 0.
+    double levelError(int level) const { return m_levels[std::size_t(level)].error; }
 
 private:
     bool m_initialized = false;
@@ -53,12 +62,17 @@ private:
     // `attributes` vec3s per vertex, interleaved, at locations 0, 1, ...
     Result<> fill(Buffers &buffers, const std::vector<float> &vertices, int attributes,
                   const std::vector<std::uint32_t> &indices);
-    void draw(Buffers &buffers);
     static void destroy(Buffers &buffers);
 
-    Buffers m_shared; // position, normal
-    Buffers m_faces;  // FaceLayout: position, face normal, face centroid
-    GLsizei m_indexCount = 0;
+    struct Level {
+        GLsizei first = 0; // into the index buffer, in indices
+        GLsizei count = 0;
+        double error = 0.0;
+        std::unique_ptr<Buffers> faces; // FaceLayout: position, face normal, face centroid
+    };
+
+    Buffers m_shared;                                    // position, normal
+    std::vector<Level> m_levels = std::vector<Level>(1); // level 0: the whole index buffer
     std::size_t m_vertexCount = 0;
 };
 

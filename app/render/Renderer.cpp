@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "core/DetailSelection.h"
 #include "core/LightBound.h"
 #include "core/ObjectMatrices.h"
 #include "core/ResourcePaths.h"
@@ -39,6 +40,9 @@ void Renderer::cleanup()
     if (!m_initialized)
         return;
     m_program.destroy();
+    for (auto &[method, program] : m_objectPrograms)
+        program.destroy();
+    m_objectPrograms.clear();
     m_markerProgram.destroy();
     m_markerMesh.destroy();
     for (auto &mesh : m_meshes)
@@ -88,9 +92,10 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
         if (it == loaded.entries.end() || !it->mesh)
             return refuse(QStringLiteral("mesh was not loaded"));
         auto gpu = std::make_shared<GpuMesh>();
-        if (Result<> uploaded = gpu->upload(*it->mesh); !uploaded)
+        if (Result<> uploaded = gpu->upload(*it->mesh, it->levels.get()); !uploaded)
             return refuse(uploaded.error());
         it->mesh.reset(); // the GPU has it now
+        it->levels.reset();
         meshes.insert(key, gpu);
         info.insert(key, *it);
     }
@@ -102,6 +107,7 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
     m_scene = scene;
     m_pendingUniforms = scene.uniforms;
     m_pendingTriedProgram = 0;
+    m_objectLevels.clear(); // each object starts at the level its first view allows
     return {};
 }
 
@@ -112,6 +118,11 @@ void Renderer::updateSceneParameters(const Scene &scene)
 
 BuildReport Renderer::loadShading(ShadingMethod method)
 {
+    return buildShipped(m_program, method);
+}
+
+BuildReport Renderer::buildShipped(ShaderProgram &program, ShadingMethod method)
+{
     const Result<StageSources> shipped =
         readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
                        shippedShaderPath(method, ShaderStage::Fragment));
@@ -121,7 +132,7 @@ BuildReport Renderer::loadShading(ShadingMethod method)
             {BuildStep::Link, ShaderDiagnostic::Severity::Error, {}, 0, 0, shipped.error()});
         return failed;
     }
-    return setProgramSources(shipped->vertex, shipped->fragment);
+    return program.build(shipped->vertex, shipped->fragment);
 }
 
 BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
@@ -185,13 +196,13 @@ void Renderer::render(const QSize &pixelSize)
     m_depthRange = fitDepthRange(m_scene.camera, boundingSpheres());
     const glm::dmat4 projection =
         m_scene.camera.projectionMatrix(aspect, m_depthRange.nearPlane, m_depthRange.farPlane);
-    drawObjects(view, projection);
+    drawObjects(view, projection, pixelSize);
     if (m_options.drawLightMarkers)
         drawLightMarkers(view, projection);
     glUseProgram(0);
 }
 
-void Renderer::uploadLights(std::span<const int> lights)
+void Renderer::uploadLights(ShaderProgram &program, std::span<const int> lights)
 {
     // Only the lights given are packed; lightCount counts them.
     int count = 0;
@@ -207,33 +218,69 @@ void Renderer::uploadLights(std::span<const int> lights)
         attenuation[count] = glm::vec3(l.attenuation);
         ++count;
     }
-    m_program.setUniform("lightCount", count);
-    m_program.setUniformArray("lightPosition", position, count);
-    m_program.setUniformArray("Id", diffuse, count);
-    m_program.setUniformArray("Is", specular, count);
-    m_program.setUniformArray("attenuation", attenuation, count);
+    program.setUniform("lightCount", count);
+    program.setUniformArray("lightPosition", position, count);
+    program.setUniformArray("Id", diffuse, count);
+    program.setUniformArray("Is", specular, count);
+    program.setUniformArray("attenuation", attenuation, count);
 }
 
-void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
+// What every object drawn with `program` this frame shares.
+void Renderer::bindForFrame(ShaderProgram &program, const glm::dmat4 &view,
+                            const glm::dmat4 &projection)
 {
-    m_program.bind();
-    m_program.setUniform("viewMatrix", glm::mat4(view));
-    m_program.setUniform("Ia", glm::vec3(m_scene.ambient));
-    m_program.setUniform("projectionMatrix", glm::mat4(projection));
-    uploadLights(enabledLights(m_scene.lights));
+    program.bind();
+    program.setUniform("viewMatrix", glm::mat4(view));
+    program.setUniform("Ia", glm::vec3(m_scene.ambient));
+    program.setUniform("projectionMatrix", glm::mat4(projection));
+    uploadLights(program, enabledLights(m_scene.lights));
+}
+
+ShaderProgram *Renderer::programFor(const SceneObject &object)
+{
+    const ShadingMethod method = m_scene.shadingOf(object);
+    if (method == m_scene.shading)
+        return &m_program;
+    ShaderProgram &own = m_objectPrograms[method];
+    if (!own.isValid()) {
+        const BuildReport built = buildShipped(own, method);
+        if (!built.ok) {
+            m_drawError = QStringLiteral("%1: not drawn: the shipped %2 shaders did not build")
+                              .arg(object.mesh, shadingName(method));
+            return nullptr;
+        }
+    }
+    return &own;
+}
+
+void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
+                           const QSize &pixelSize)
+{
     m_lightsLeftOut = 0;
     m_leftOutBound = 0.0;
-    // A program that reads a face centroid (flat.vert) is drawn from the
-    // meshes' face layouts, whoever wrote it.
-    const bool perFace = glGetAttribLocation(m_program.id(), "facePoint") >= 0;
     m_drawError.clear();
-    for (const SceneObject &object : m_scene.objects) {
+    m_objectLevels.resize(m_scene.objects.size(), -1);
+    m_drawn.assign(m_scene.objects.size(), ObjectDraw());
+    ShaderProgram *bound = nullptr;
+    bool perFace = false;
+    for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+        const SceneObject &object = m_scene.objects[i];
         const QString key = meshKey(m_scene, object);
         const auto mesh = m_meshes.value(key);
-        if (!mesh)
+        ShaderProgram *program = mesh ? programFor(object) : nullptr;
+        if (!program)
             continue;
+        if (program != bound) {
+            bindForFrame(*program, view, projection);
+            bound = program;
+            // A program that reads a face centroid (flat.vert) is drawn from
+            // the meshes' face layouts, whoever wrote it.
+            perFace = glGetAttribLocation(program->id(), "facePoint") >= 0;
+        }
+        const MeshStats &stats = m_meshInfo.value(key).stats;
+        const int level = chooseLevel(i, object, *mesh, stats, pixelSize.height());
         if (perFace) {
-            if (Result<> prepared = mesh->prepareFaceLayout(); !prepared) {
+            if (Result<> prepared = mesh->prepareFaceLayout(level); !prepared) {
                 m_drawError =
                     QStringLiteral("%1: not drawn: %2").arg(object.mesh, prepared.error());
                 continue;
@@ -241,38 +288,70 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection)
         }
         // Only a closed surface hides its back faces; an open one (a leaf,
         // a plane) must show them.
-        if (m_options.cullBackFaces && m_meshInfo.value(key).stats.closed)
+        if (m_options.cullBackFaces && stats.closed)
             glEnable(GL_CULL_FACE);
         else
             glDisable(GL_CULL_FACE);
+        ObjectDraw &drawn = m_drawn[i];
         if (m_options.lightAllowance > 0.0)
-            uploadObjectLights(object, m_meshInfo.value(key).stats);
+            drawn.lightsLeftOut = uploadObjectLights(*program, object, stats);
         // Matrices in double on the CPU, once per draw; the shader gets floats.
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
         glFrontFace(m.mirrors() ? GL_CW : GL_CCW);
-        m_program.setUniform("modelViewMatrix", glm::mat4(m.modelView));
-        m_program.setUniform("normalMatrix", glm::mat3(m.normalMatrix));
-        m_program.setUniform("ka", glm::vec3(object.material.ka));
-        m_program.setUniform("kd", glm::vec3(object.material.kd));
-        m_program.setUniform("ks", glm::vec3(object.material.ks));
-        m_program.setUniform("shininess", float(object.material.shininess));
+        program->setUniform("modelViewMatrix", glm::mat4(m.modelView));
+        program->setUniform("normalMatrix", glm::mat3(m.normalMatrix));
+        program->setUniform("ka", glm::vec3(object.material.ka));
+        program->setUniform("kd", glm::vec3(object.material.kd));
+        program->setUniform("ks", glm::vec3(object.material.ks));
+        program->setUniform("shininess", float(object.material.shininess));
         if (perFace)
-            mesh->drawFaces();
+            mesh->drawFaces(level);
         else
-            mesh->draw();
-        m_trianglesDrawn += mesh->indexCount() / 3;
+            mesh->draw(level);
+        drawn.level = level;
+        drawn.levels = mesh->levelCount();
+        drawn.triangles = mesh->indexCount(level) / 3;
+        m_trianglesDrawn += drawn.triangles;
     }
 }
 
-void Renderer::uploadObjectLights(const SceneObject &object, const MeshStats &stats)
+// The level an object is drawn at: 0 unless it has levels of detail and
+// "detail": "auto", else chooseDetailLevel() on this view, with the level it
+// had last frame for the hysteresis.
+int Renderer::chooseLevel(std::size_t index, const SceneObject &object, const GpuMesh &mesh,
+                          const MeshStats &stats, int viewportHeight)
+{
+    int &current = m_objectLevels[index];
+    if (!object.autoDetail || mesh.levelCount() < 2) {
+        current = 0;
+        return 0;
+    }
+    const glm::dmat4 model = object.transform.matrix();
+    const BoundingSphere bounds =
+        boundingSphere(glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), model);
+    // An error in object units grows with the largest scale of the transform.
+    const double scale =
+        std::max({glm::length(glm::dvec3(model[0])), glm::length(glm::dvec3(model[1])),
+                  glm::length(glm::dvec3(model[2]))});
+    std::vector<double> errorsPx;
+    for (int l = 0; l < mesh.levelCount(); ++l)
+        errorsPx.push_back(
+            projectedErrorPx(scale * mesh.levelError(l), bounds, m_scene.camera, viewportHeight));
+    current = chooseDetailLevel(errorsPx, current, m_options.detailPixels);
+    return current;
+}
+
+int Renderer::uploadObjectLights(ShaderProgram &program, const SceneObject &object,
+                                 const MeshStats &stats)
 {
     const BoundingSphere bounds = boundingSphere(
         glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), object.transform.matrix());
     const LightSelection selection =
         selectLights(m_scene.lights, object.material, bounds, m_options.lightAllowance);
-    uploadLights(selection.kept);
+    uploadLights(program, selection.kept);
     m_lightsLeftOut += int(selection.leftOut.size());
     m_leftOutBound = std::max(m_leftOutBound, selection.leftOutBound);
+    return int(selection.leftOut.size());
 }
 
 std::vector<BoundingSphere> Renderer::boundingSpheres() const

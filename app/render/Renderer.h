@@ -3,6 +3,7 @@
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
 #include "core/DepthRange.h"
+#include "core/DetailSelection.h"
 #include "core/Result.h"
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
@@ -29,6 +30,17 @@ public:
         // Lights whose bounded contribution to an object sums below this
         // (linear intensity; LightBound.h) are left out of its draw. 0: none.
         double lightAllowance = 0.0;
+        // "detail": "auto" objects take the coarsest level whose error
+        // spans at most this many pixels (DetailSelection.h).
+        double detailPixels = kDefaultDetailPixels;
+    };
+
+    // How one object was drawn in the last frame.
+    struct ObjectDraw {
+        int level = 0;         // level of detail drawn; 0 = the full mesh
+        int levels = 1;        // levels the object's mesh has (1: none built)
+        qint64 triangles = 0;  // 0 when it was not drawn
+        int lightsLeftOut = 0; // lights its draw did without
     };
 
     Renderer();
@@ -77,6 +89,8 @@ public:
     // Light terms the last frame left out (one per light per object), and
     // the largest sum of bounds left out of any one object.
     int lightsLeftOut() const { return m_lightsLeftOut; }
+    // Per scene object, in order.
+    const std::vector<ObjectDraw> &objectDraws() const { return m_drawn; }
     double leftOutBound() const { return m_leftOutBound; }
     // Why the last frame left an object out ("<mesh>: not drawn: ..."), or
     // empty. Only flat shading's face layout can fail at draw time.
@@ -86,9 +100,15 @@ public:
     const DepthRange &depthRange() const { return m_depthRange; }
 
 private:
-    void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection);
-    void uploadLights(std::span<const int> lights);
-    void uploadObjectLights(const SceneObject &object, const MeshStats &stats);
+    void drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection, const QSize &pixelSize);
+    BuildReport buildShipped(ShaderProgram &program, ShadingMethod method);
+    ShaderProgram *programFor(const SceneObject &object);
+    void bindForFrame(ShaderProgram &program, const glm::dmat4 &view, const glm::dmat4 &projection);
+    void uploadLights(ShaderProgram &program, std::span<const int> lights);
+    int uploadObjectLights(ShaderProgram &program, const SceneObject &object,
+                           const MeshStats &stats);
+    int chooseLevel(std::size_t index, const SceneObject &object, const GpuMesh &mesh,
+                    const MeshStats &stats, int viewportHeight);
     void applySceneUniforms();
     void drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projection);
     std::vector<BoundingSphere> boundingSpheres() const;
@@ -97,11 +117,16 @@ private:
     Options m_options;
     Scene m_scene;
     ShaderProgram m_program;
+    // Shipped programs of the methods objects have of their own ("shading"
+    // in an "objects" entry), built on first use.
+    std::map<ShadingMethod, ShaderProgram> m_objectPrograms;
     ShaderProgram m_markerProgram;
     GpuMesh m_markerMesh;
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()
     QHash<QString, SceneMeshes::Entry> m_meshInfo;     // stats and warnings; no CPU mesh
     qint64 m_trianglesDrawn = 0;
+    std::vector<int> m_objectLevels; // per object: the level drawn last frame, -1 none yet
+    std::vector<ObjectDraw> m_drawn;
     int m_lightsLeftOut = 0;
     double m_leftOutBound = 0.0;
     QString m_drawError;

@@ -29,8 +29,8 @@ Scene litSphere()
     fill.position = {-6, 2, 3};
     fill.attenuation = {1, 0, 0.1};
     scene.lights.push_back(fill);
-    for (const glm::dvec3 &p : {glm::dvec3(50, 0, 0), glm::dvec3(-50, 0, 0),
-                                glm::dvec3(0, 50, 0), glm::dvec3(0, 0, 50)}) {
+    for (const glm::dvec3 &p : {glm::dvec3(50, 0, 0), glm::dvec3(-50, 0, 0), glm::dvec3(0, 50, 0),
+                                glm::dvec3(0, 0, 50)}) {
         PointLight far;
         far.position = p;
         far.attenuation = {1, 0, 0.5};

@@ -129,8 +129,8 @@ private slots:
             current = next;
             naive = naiveNext;
         }
-        qInfo("level switches over 2000 jittering frames: %d with hysteresis, %d without",
-              switches, naiveSwitches);
+        qInfo("level switches over 2000 jittering frames: %d with hysteresis, %d without", switches,
+              naiveSwitches);
         QVERIFY(naiveSwitches > 20);
         QVERIFY(switches * 3 < naiveSwitches);
     }

@@ -26,7 +26,8 @@ glm::dvec3 randomUnit(QRandomGenerator &random)
 
 glm::dvec3 randomColor(QRandomGenerator &random, double scale)
 {
-    return scale * glm::dvec3(random.generateDouble(), random.generateDouble(), random.generateDouble());
+    return scale
+        * glm::dvec3(random.generateDouble(), random.generateDouble(), random.generateDouble());
 }
 
 PointLight randomLight(QRandomGenerator &random)
@@ -81,8 +82,8 @@ private slots:
             const double bound = maxLightContribution(light, material, bounds);
             double worst = 0.0;
             for (int s = 0; s < 50; ++s) {
-                const glm::dvec3 p =
-                    bounds.center + randomUnit(random) * bounds.radius * std::cbrt(random.generateDouble());
+                const glm::dvec3 p = bounds.center
+                    + randomUnit(random) * bounds.radius * std::cbrt(random.generateDouble());
                 // Any normal, and half the time the one facing the light, with
                 // the eye on its mirror ray: the largest the terms can be.
                 glm::dvec3 n = randomUnit(random);
@@ -91,7 +92,10 @@ private slots:
                 worst = std::max(worst, actualContribution(light, material, p, n));
             }
             QVERIFY2(worst <= bound * (1 + 1e-12) + 1e-15,
-                     qPrintable(QStringLiteral("trial %1: %2 above the bound %3").arg(trial).arg(worst).arg(bound)));
+                     qPrintable(QStringLiteral("trial %1: %2 above the bound %3")
+                                    .arg(trial)
+                                    .arg(worst)
+                                    .arg(bound)));
             tight += worst > 0.5 * bound ? 1 : 0;
         }
         // A bound far above anything reached would keep every light.
@@ -149,12 +153,15 @@ private slots:
             if (!chosen.kept.empty()) {
                 double smallestKept = std::numeric_limits<double>::infinity();
                 for (int i : chosen.kept)
-                    smallestKept = std::min(smallestKept, maxLightContribution(lights[std::size_t(i)], material, bounds));
+                    smallestKept =
+                        std::min(smallestKept,
+                                 maxLightContribution(lights[std::size_t(i)], material, bounds));
                 QVERIFY(!(sum + smallestKept < allowance));
             }
             leftOut += int(chosen.leftOut.size());
         }
-        QVERIFY2(leftOut > 100, "the random scenes never left a light out: the test proves nothing");
+        QVERIFY2(leftOut > 100,
+                 "the random scenes never left a light out: the test proves nothing");
     }
 
     void keepsEverythingWithoutAnAllowance()

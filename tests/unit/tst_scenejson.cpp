@@ -101,6 +101,7 @@ private slots:
     void docExampleLoadsCleanly();
     void detailRoundTripsAndDefaultsAreNotWritten();
     void oldFlatLoadsAsFacetedWithANote();
+    void autoDetailAndObjectShadingRoundTrip();
 };
 
 void TestSceneJson::roundTripFullScene()
@@ -574,6 +575,46 @@ void TestSceneJson::oldFlatLoadsAsFacetedWithANote()
     QVERIFY2(newer.ok(), qPrintable(newer.error));
     QVERIFY2(newer.warnings.join(u'\n').contains(QStringLiteral("format: 3 is newer")),
              qPrintable(newer.warnings.join(u'\n')));
+}
+
+// "detail": "auto" in both forms, and an object's own "shading" (which
+// forces the "objects" form: at the top level "shading" is the scene's).
+void TestSceneJson::autoDetailAndObjectShadingRoundTrip()
+{
+    const SceneLoadResult single = parseScene(R"({"mesh": "builtin:sphere", "detail": "auto"})");
+    QVERIFY2(single.ok(), qPrintable(single.error));
+    QVERIFY(single.scene->objects.front().autoDetail);
+    QCOMPARE(single.scene->objects.front().detail, 1.0);
+
+    const SceneLoadResult many = parseScene(R"({"objects": [
+        {"mesh": "builtin:sphere", "detail": "auto", "shading": "gouraud"},
+        {"mesh": "builtin:torus", "detail": 0.25}], "shading": "phong"})");
+    QVERIFY2(many.ok(), qPrintable(many.error));
+    QVERIFY2(many.warnings.isEmpty(), qPrintable(many.warnings.join(u'\n')));
+    const Scene &scene = *many.scene;
+    QVERIFY(scene.objects[0].autoDetail);
+    QCOMPARE(scene.objects[0].shading, std::optional(ShadingMethod::Gouraud));
+    QCOMPARE(scene.shadingOf(scene.objects[0]), ShadingMethod::Gouraud);
+    QVERIFY(!scene.objects[1].autoDetail);
+    QCOMPARE(scene.shadingOf(scene.objects[1]), ShadingMethod::Phong);
+
+    const SceneLoadResult back = parseScene(sceneToJson(scene));
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QVERIFY(*back.scene == scene);
+
+    Scene one = scene;
+    one.objects.resize(1);
+    const QJsonObject root = QJsonDocument::fromJson(sceneToJson(one)).object();
+    QVERIFY(root.contains(QStringLiteral("objects")));
+    QVERIFY(*parseScene(sceneToJson(one)).scene == one);
+
+    const SceneLoadResult bad = parseScene(R"({"mesh": "builtin:sphere", "detail": "half"})");
+    QCOMPARE(bad.error,
+             QStringLiteral("detail: expected a number in (0, 1] or \"auto\", got string"));
+    const SceneLoadResult badShading =
+        parseScene(R"({"objects": [{"mesh": "builtin:sphere", "shading": "toon"}]})");
+    QVERIFY2(badShading.error.startsWith(QStringLiteral("objects[0].shading: unknown shading")),
+             qPrintable(badShading.error));
 }
 
 QTEST_GUILESS_MAIN(TestSceneJson)
