@@ -85,10 +85,14 @@ QString rowError(const BenchRow &row, ErrorBudget::Kind kind)
 
 bool ErrorBudget::accepts(const BenchRow &row) const
 {
+    return accepts(row.maxError, row.psnr);
+}
+
+bool ErrorBudget::accepts(int measuredMax, double psnr) const
+{
     switch (kind) {
-    case Kind::MaxError: return row.maxError >= 0 && row.maxError <= maxError;
-    case Kind::Psnr:
-        return !std::isnan(row.psnr) && row.psnr >= minPsnr; // NaN: not measured, refused
+    case Kind::MaxError: return measuredMax >= 0 && measuredMax <= maxError;
+    case Kind::Psnr: return !std::isnan(psnr) && psnr >= minPsnr; // NaN: not measured, refused
     }
     return false;
 }

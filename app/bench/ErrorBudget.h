@@ -19,6 +19,8 @@ struct ErrorBudget {
     double minPsnr = 40.0; // Kind::Psnr: smallest allowed PSNR, dB
 
     bool accepts(const BenchRow &row) const;
+    // The same for an error measured elsewhere (a frame of a camera path).
+    bool accepts(int maxError, double psnr) const;
     // "max error ≤ 2/255" or "PSNR ≥ 40 dB"
     QString describe() const;
     // "2" / "max:2" → MaxError 2; "psnr:40" / "40dB" → Psnr 40. nullopt on anything else.

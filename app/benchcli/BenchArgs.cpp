@@ -17,7 +17,10 @@ const QString kSynopsis = QStringLiteral(
     "usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]\n"
     "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] "
     "[--images] [--normals]\n"
-    "       phonglab bench --from results.csv [--out DIR] [--budget SPEC]");
+    "       phonglab bench --from results.csv [--out DIR] [--budget SPEC]\n"
+    "       phonglab bench --path orbit|dolly|FILE.json [--path-frames N] [--scene FILE ...] "
+    "[--out DIR]\n"
+    "                      [--budget SPEC] [--size WxH] [--frames N] [--images]");
 
 QString helpText()
 {
@@ -53,7 +56,19 @@ QString helpText()
                "DIR\n"
                "  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a "
                "--quick run\n"
-               "                   too (a full run always has it)\n\n"
+               "                   too (a full run always has it)\n"
+               "  --path SPEC      instead of the sweep: draw each scene along a camera path with "
+               "auto detail and\n"
+               "                   unseen lights left out, every frame against the reference; "
+               "SPEC is orbit (one\n"
+               "                   turn moving out to 2.5x), dolly (from just outside the scene "
+               "to 32x away) or a\n"
+               "                   keyframe file (docs/speed-vs-accuracy.md). Prints 'frames over "
+               "budget: K of N';\n"
+               "                   writes DIR/path.csv and DIR/path.png/svg. Default scenes: "
+               "default and sphere;\n"
+               "                   400x300 px, 10 timed frames per path frame\n"
+               "  --path-frames N  frames of an orbit or dolly, 2..10000 (default 24)\n\n"
                "Frame time is the median wall time of render + glFinish (on llvmpipe a timer query "
                "misses the\n"
                "rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors "
@@ -121,8 +136,12 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                                      QStringLiteral("Normal-method study."));
     const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."),
                                   QStringLiteral("csv"));
+    const QCommandLineOption path(QStringLiteral("path"), QStringLiteral("Camera path."),
+                                  QStringLiteral("spec"));
+    const QCommandLineOption pathFrames(QStringLiteral("path-frames"),
+                                        QStringLiteral("Path frames."), QStringLiteral("n"));
     parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details,
-                       images, normals, from});
+                       images, normals, from, path, pathFrames});
 
     const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, kSynopsis, helpText()))
@@ -142,9 +161,34 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         if (args.fromCsv.isEmpty())
             return usage(QStringLiteral("--from: empty file name"));
     }
+    args.path = parser.value(path);
+    if (parser.isSet(path)) {
+        for (const QCommandLineOption *sweep :
+             {&quick, &lights, &methods, &details, &normals, &from})
+            if (parser.isSet(*sweep))
+                return usage(
+                    QStringLiteral("--path measures a camera path: --%1 does not go with it")
+                        .arg(sweep->names().constLast()));
+        if (args.path.isEmpty())
+            return usage(QStringLiteral("--path: expected orbit, dolly or a keyframe file"));
+    }
+    if (parser.isSet(pathFrames)) {
+        bool ok = false;
+        const int n = parser.value(pathFrames).toInt(&ok);
+        if (!parser.isSet(path))
+            return usage(QStringLiteral("--path-frames goes with --path orbit or --path dolly"));
+        if (!ok || n < 2 || n > 10000)
+            return usage(
+                QStringLiteral("--path-frames: expected a whole number from 2 to 10000, got '%1'")
+                    .arg(parser.value(pathFrames)));
+        args.pathFrames = n;
+    }
+    args.sizeGiven = parser.isSet(size);
+    args.framesGiven = parser.isSet(frames);
     args.quick = parser.isSet(quick);
     args.options = args.quick ? BenchOptions::quick() : BenchOptions::full();
-    args.options.scenes = parser.isSet(scene) ? parser.values(scene) : defaultScenes(args.quick);
+    args.options.scenes = parser.isSet(scene) ? parser.values(scene)
+                                              : defaultScenes(args.quick || parser.isSet(path));
     args.outDir = parser.isSet(out) ? parser.value(out) : QStringLiteral("phonglab-bench");
     if (args.outDir.isEmpty())
         return usage(QStringLiteral("--out: empty folder name"));
@@ -171,9 +215,12 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     if (parser.isSet(frames)) {
         bool ok = false;
         const int n = parser.value(frames).toInt(&ok);
-        if (!ok || n < 20 || n > 10000)
+        // A path times every one of its frames: fewer per frame are enough.
+        const int least = parser.isSet(path) ? 3 : 20;
+        if (!ok || n < least || n > 10000)
             return usage(
-                QStringLiteral("--frames: expected a whole number from 20 to 10000, got '%1'")
+                QStringLiteral("--frames: expected a whole number from %1 to 10000, got '%2'")
+                    .arg(least)
                     .arg(parser.value(frames)));
         args.options.frames = n;
     }

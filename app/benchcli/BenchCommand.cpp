@@ -3,7 +3,9 @@
 #include "BenchArgs.h"
 #include "bench/BenchEngine.h"
 #include "bench/BenchTable.h"
+#include "bench/PathBench.h"
 #include "charts/NormalStudyOutput.h"
+#include "charts/PathChart.h"
 #include "charts/SpeedAccuracyChart.h"
 #include "cli/CliCommon.h"
 #include "core/ResourcePaths.h"
@@ -12,6 +14,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QSaveFile>
 
 #include <cstdio>
@@ -121,6 +124,119 @@ int refit(const BenchArgs &args)
     return writeOutputs(args, rows, false);
 }
 
+QString percentSaved(double part, double whole)
+{
+    if (whole <= 0.0)
+        return QStringLiteral("0 %");
+    return QStringLiteral("%1 %").arg(100.0 * (1.0 - part / whole), 0, 'f', 1);
+}
+
+// --path: every scene along the camera path; the one line scripts read is
+// "frames over budget: K of N" over all of them.
+int benchPath(const BenchArgs &args)
+{
+    PathOptions options;
+    options.budget = args.budget;
+    options.pathFrames = args.pathFrames;
+    options.bandPx = args.options.bandPx;
+    options.imageDir = args.options.imageDir;
+    if (args.sizeGiven)
+        options.size = args.options.size;
+    if (args.framesGiven)
+        options.frames = args.options.frames;
+    PathBench bench;
+    if (const Result<> initialized = bench.initialize(); !initialized) {
+        printError(initialized.error());
+        return kExitFailure;
+    }
+    printLine(QStringLiteral("phonglab bench --path %1: %2 scene(s), %3x%4 px, %5 timed frames per "
+                             "path frame, budget %6, GL: %7")
+                  .arg(args.path)
+                  .arg(args.options.scenes.size())
+                  .arg(options.size.width())
+                  .arg(options.size.height())
+                  .arg(options.frames)
+                  .arg(args.budget.describe(), bench.glRendererName()));
+    printLine(QStringLiteral("every object at \"detail\": \"auto\" (%1 px, shading within %2 "
+                             "steps), lights left out below %2 steps; against the exact Phong "
+                             "image and the same frame at full detail with every light\n")
+                  .arg(options.detailPixels)
+                  .arg(255.0 * reductionAllowance(args.budget), 0, 'g', 3));
+    QElapsedTimer clock;
+    clock.start();
+    std::vector<PathRun> runs;
+    for (const QString &scene : args.options.scenes) {
+        const auto progress = [&](int done, int total, const PathFrame &f) {
+            printLine(QStringLiteral("  %1 frame %2/%3: distance %4, levels %5, %6 triangles "
+                                     "(full %7), %8 lights left out, max error %9/255%10, "
+                                     "%11 ms (full %12 ms)")
+                          .arg(QFileInfo(scene).completeBaseName())
+                          .arg(done)
+                          .arg(total)
+                          .arg(f.distance, 0, 'f', 2)
+                          .arg(f.levels)
+                          .arg(f.triangles)
+                          .arg(f.fullTriangles)
+                          .arg(f.lightsLeftOut)
+                          .arg(f.maxError)
+                          .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
+                          .arg(f.frameMs, 0, 'f', 2)
+                          .arg(f.fullFrameMs, 0, 'f', 2));
+            std::fflush(stdout);
+            return true;
+        };
+        Result<PathRun> run = bench.run(scene, args.path, options, progress);
+        if (!run) {
+            printError(run.error());
+            return kExitFailure;
+        }
+        printLine(QStringLiteral("%1, %2: %3 of %4 frames over budget; triangles %5 saved, "
+                                 "time %6 saved against full detail")
+                      .arg(run->scene, run->path)
+                      .arg(run->overBudget())
+                      .arg(run->frames.size())
+                      .arg(percentSaved(double(run->triangles()), double(run->fullTriangles())),
+                           percentSaved(run->frameMs(), run->fullFrameMs())));
+        runs.push_back(std::move(*run));
+    }
+    int over = 0, frames = 0;
+    qint64 triangles = 0, fullTriangles = 0;
+    double ms = 0, fullMs = 0;
+    for (const PathRun &run : runs) {
+        over += run.overBudget();
+        frames += int(run.frames.size());
+        triangles += run.triangles();
+        fullTriangles += run.fullTriangles();
+        ms += run.frameMs();
+        fullMs += run.fullFrameMs();
+    }
+    printLine(QStringLiteral("\nframes over budget: %1 of %2").arg(over).arg(frames));
+    printLine(
+        QStringLiteral("triangles drawn: %1 against %2 at full detail (%3 saved); frame time: "
+                       "%4 ms against %5 ms (%6 saved), summed over the frames")
+            .arg(triangles)
+            .arg(fullTriangles)
+            .arg(percentSaved(double(triangles), double(fullTriangles)))
+            .arg(ms, 0, 'f', 1)
+            .arg(fullMs, 0, 'f', 1)
+            .arg(percentSaved(ms, fullMs)));
+    const QDir out(args.outDir);
+    const QString csv = out.filePath(QStringLiteral("path.csv"));
+    const QString png = out.filePath(QStringLiteral("path.png"));
+    const QString svg = out.filePath(QStringLiteral("path.svg"));
+    if (const Result<> written = writeText(csv, pathRunsToCsv(runs)); !written) {
+        printError(written.error());
+        return kExitFailure;
+    }
+    if (const Result<> chart = writePathCharts(runs, args.budget, png, svg); !chart) {
+        printError(chart.error());
+        return kExitFailure;
+    }
+    printLine(QStringLiteral("wrote %1, %2, %3").arg(csv, png, svg));
+    printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    return kExitOk;
+}
+
 int bench(const BenchArgs &args, int argc, char **argv)
 {
     chooseHeadlessPlatformIfNeeded();
@@ -131,6 +247,8 @@ int bench(const BenchArgs &args, int argc, char **argv)
     }
     if (!args.fromCsv.isEmpty())
         return refit(args);
+    if (!args.path.isEmpty())
+        return benchPath(args);
     BenchEngine engine;
     if (const Result<> initialized = engine.initialize(); !initialized) {
         printError(initialized.error());

@@ -33,6 +33,10 @@ inline constexpr double kCoarsenFraction = 0.7;
 // calibrated by `phonglab bench --path` to keep shading within the budget.
 inline constexpr double kDefaultDetailPixels = 0.5;
 
+// An object no more than this many pixels across shows no shading detail a
+// finer level could add: it takes its coarsest level.
+inline constexpr double kTinyObjectPx = 4.0;
+
 // `errorsPx`: each level's projected error, level 0 (finest) first, never
 // decreasing. `current`: the level drawn last frame, -1 for none (the first
 // frame takes the coarsest level within the target). Returns the level to

@@ -3,6 +3,7 @@
 #include "PhongReference.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phonglab {
 
@@ -15,6 +16,36 @@ double maxLightContribution(const PointLight &light, const Material &material,
         std::max(0.0, glm::length(light.position - bounds.center) - bounds.radius);
     const glm::dvec3 peak = light.diffuse * material.kd + light.specular * material.ks;
     return attenuationFactor(light.attenuation, nearest) * std::max({peak.r, peak.g, peak.b});
+}
+
+namespace {
+
+// max over φ of n·cos^(n-1)φ·sin φ: the steepest slope of cos^n.
+double steepestSpecularSlope(double n)
+{
+    if (n <= 1.0)
+        return 1.0;
+    const double phi = std::atan(1.0 / std::sqrt(n - 1.0));
+    return n * std::pow(std::cos(phi), n - 1.0) * std::sin(phi);
+}
+
+} // namespace
+
+double normalErrorBound(double angle, const Material &material, std::span<const PointLight> lights,
+                        const BoundingSphere &bounds)
+{
+    const double slope = steepestSpecularSlope(material.shininess);
+    glm::dvec3 sum(0.0);
+    for (const PointLight &light : lights) {
+        if (!light.enabled)
+            continue;
+        const double nearest =
+            std::max(0.0, glm::length(light.position - bounds.center) - bounds.radius);
+        sum += attenuationFactor(light.attenuation, nearest)
+            * (light.diffuse * material.kd * angle
+               + light.specular * material.ks * 2.0 * angle * slope);
+    }
+    return std::max({sum.r, sum.g, sum.b});
 }
 
 std::vector<int> enabledLights(std::span<const PointLight> lights)

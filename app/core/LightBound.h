@@ -20,6 +20,17 @@ namespace phonglab {
 double maxLightContribution(const PointLight &light, const Material &material,
                             const BoundingSphere &bounds);
 
+// How much a normal that is off by `angle` radians can change the shading
+// of any pixel of an object inside `bounds` (linear intensity, largest
+// channel), summed over the enabled lights: N·L moves by at most the angle,
+// R by twice it, and cos^n of the angle between R and V by at most
+// S(n) = max over φ of n·cos^(n-1)φ·sin φ per radian, so
+//   Σ f_att(d_min)·(Id·kd·angle + Is·ks·2·angle·S(n)).
+// Exact to first order; where N·L changes sign the highlight's cut-off can
+// jump further, which the measurement (bench --path) would show.
+double normalErrorBound(double angle, const Material &material, std::span<const PointLight> lights,
+                        const BoundingSphere &bounds);
+
 // The indices of the enabled lights, in order.
 std::vector<int> enabledLights(std::span<const PointLight> lights);
 

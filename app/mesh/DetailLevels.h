@@ -19,6 +19,14 @@ namespace phonglab {
 struct DetailLevel {
     std::vector<std::uint32_t> indices;
     double error = 0.0; // object units: how far this level's surface may stray
+    // Radians: how far the normal a pixel is shaded with may be off: the
+    // largest angle between the normal the full mesh and this level are
+    // shaded with where the same view ray meets them, over rays towards up
+    // to kNormalSamples points of the full mesh (its vertices and triangle
+    // centres) along the normal and kGrazingDeg off it four ways. Never
+    // less than the level before's. A wrong normal changes the shading
+    // however small the object is on screen.
+    double normalDeviation = 0.0;
 };
 
 struct DetailLevels {
@@ -37,6 +45,8 @@ struct DetailLevels {
 // its input). `progress(fraction)` may return false to cancel: the result is
 // then empty. `mesh` must be valid.
 inline constexpr std::size_t kMinLevelTriangles = 64;
+inline constexpr std::size_t kNormalSamples = 20000;
+inline constexpr double kGrazingDeg = 70.0;
 DetailLevels buildDetailLevels(const MeshData &mesh,
                                const std::function<bool(double)> &progress = {});
 

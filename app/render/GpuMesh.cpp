@@ -42,6 +42,7 @@ Result<> GpuMesh::upload(const MeshData &mesh, const DetailLevels *levels)
             range.first = GLsizei(indices.size());
             range.count = GLsizei(level.indices.size());
             range.error = level.error;
+            range.normalDeviation = level.normalDeviation;
             indices.insert(indices.end(), level.indices.begin(), level.indices.end());
             ranges.push_back(std::move(range));
         }

@@ -51,6 +51,11 @@ public:
     int levelCount() const { return int(m_levels.size()); }
     // Object units (DetailLevel::error); 0 for level 0.
     double levelError(int level) const { return m_levels[std::size_t(level)].error; }
+    // Radians (DetailLevel::normalDeviation); 0 for level 0.
+    double levelNormalDeviation(int level) const
+    {
+        return m_levels[std::size_t(level)].normalDeviation;
+    }
 
 private:
     bool m_initialized = false;
@@ -68,6 +73,7 @@ private:
         GLsizei first = 0; // into the index buffer, in indices
         GLsizei count = 0;
         double error = 0.0;
+        double normalDeviation = 0.0;
         std::unique_ptr<Buffers> faces; // FaceLayout: position, face normal, face centroid
     };
 

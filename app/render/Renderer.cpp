@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace phonglab {
 
@@ -333,10 +334,24 @@ int Renderer::chooseLevel(std::size_t index, const SceneObject &object, const Gp
     const double scale =
         std::max({glm::length(glm::dvec3(model[0])), glm::length(glm::dvec3(model[1])),
                   glm::length(glm::dvec3(model[2]))});
+    // A level whose normals could change the shading by more than the
+    // allowance is never within the target, however far away, unless the
+    // whole object is a few pixels.
+    const bool tiny = 2.0 * projectedErrorPx(bounds.radius, bounds, m_scene.camera, viewportHeight)
+        <= kTinyObjectPx;
+    if (tiny) {
+        current = mesh.levelCount() - 1;
+        return current;
+    }
     std::vector<double> errorsPx;
-    for (int l = 0; l < mesh.levelCount(); ++l)
-        errorsPx.push_back(
-            projectedErrorPx(scale * mesh.levelError(l), bounds, m_scene.camera, viewportHeight));
+    for (int l = 0; l < mesh.levelCount(); ++l) {
+        const double shading =
+            normalErrorBound(mesh.levelNormalDeviation(l), object.material, m_scene.lights, bounds);
+        errorsPx.push_back(shading > m_options.detailShadingAllowance
+                               ? std::numeric_limits<double>::infinity()
+                               : projectedErrorPx(scale * mesh.levelError(l), bounds,
+                                                  m_scene.camera, viewportHeight));
+    }
     current = chooseDetailLevel(errorsPx, current, m_options.detailPixels);
     return current;
 }

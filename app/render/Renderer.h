@@ -33,6 +33,9 @@ public:
         // "detail": "auto" objects take the coarsest level whose error
         // spans at most this many pixels (DetailSelection.h).
         double detailPixels = kDefaultDetailPixels;
+        // ... and whose normals are close enough that no pixel's shading
+        // can change by more than this (linear intensity; normalErrorBound()).
+        double detailShadingAllowance = 0.5 / 255.0;
     };
 
     // How one object was drawn in the last frame.

@@ -16,6 +16,14 @@ using namespace phonglab::test;
 
 namespace {
 
+// The geometric rule alone: any normal deviation allowed.
+void allowAnyShading(Renderer &renderer)
+{
+    Renderer::Options options = renderer.options();
+    options.detailShadingAllowance = std::numeric_limits<double>::infinity();
+    renderer.setOptions(options);
+}
+
 Scene autoSphere(double distance)
 {
     Scene scene = loadTestScene(QStringLiteral("gl_sphere_one_light"));
@@ -40,6 +48,7 @@ private slots:
         Renderer &renderer = offscreen.renderer();
         const auto set = renderer.setScene(autoSphere(4.0));
         QVERIFY2(set, qPrintable(set.error()));
+        allowAnyShading(renderer);
         QVERIFY(renderer.loadShading(ShadingMethod::Phong).ok);
         const QSize size(kTestImageSide, kTestImageSide);
 
@@ -78,6 +87,7 @@ private slots:
         QVERIFY(renderer.loadShading(ShadingMethod::Phong).ok);
         const RgbImage fullImage = toRgbImage(offscreen.renderImage(size));
         QVERIFY(renderer.setScene(autoSphere(12.0)));
+        allowAnyShading(renderer);
         const RgbImage autoImage = toRgbImage(offscreen.renderImage(size));
         QVERIFY(renderer.objectDraws().front().level > 0);
         const ImageComparison diff = compareImages(autoImage, fullImage);
@@ -86,22 +96,45 @@ private slots:
         QVERIFY2(diff.psnr > 35.0, qPrintable(diff.summary()));
     }
 
+    void shadingAllowanceKeepsShinyNormals();
     void flatDrawsTheLevelsOwnFaces()
     {
         OffscreenRenderer offscreen;
         QVERIFY(offscreen.create());
         Renderer &renderer = offscreen.renderer();
         QVERIFY(renderer.setScene(autoSphere(40.0)));
+        allowAnyShading(renderer);
         QVERIFY(renderer.loadShading(ShadingMethod::Flat).ok);
         const QImage image = offscreen.renderImage(QSize(kTestImageSide, kTestImageSide));
         QVERIFY2(renderer.drawError().isEmpty(), qPrintable(renderer.drawError()));
         const Renderer::ObjectDraw drawn = renderer.objectDraws().front();
         QVERIFY(drawn.level > 0);
         // Something was drawn in the middle of the frame.
-        QVERIFY(image.pixelColor(kTestImageSide / 2, kTestImageSide / 2)
-                != image.pixelColor(0, 0));
+        QVERIFY(image.pixelColor(kTestImageSide / 2, kTestImageSide / 2) != image.pixelColor(0, 0));
     }
 };
+
+void TestAutoDetail::shadingAllowanceKeepsShinyNormals()
+{
+    // The default allowance (half an 8-bit step): the shiny sphere's
+    // coarser levels bend its normals enough to move the highlight by more
+    // (normalErrorBound), so it keeps the full mesh at any distance...
+    OffscreenRenderer offscreen;
+    QVERIFY(offscreen.create());
+    Renderer &renderer = offscreen.renderer();
+    QVERIFY(renderer.setScene(autoSphere(12.0)));
+    QVERIFY(renderer.loadShading(ShadingMethod::Phong).ok);
+    const QSize size(kTestImageSide, kTestImageSide);
+    for (double distance : {4.0, 12.0, 40.0}) {
+        renderer.updateSceneParameters(autoSphere(distance));
+        offscreen.renderImage(size);
+        QCOMPARE(renderer.objectDraws().front().level, 0);
+    }
+    // ... until it is a few pixels across, where it takes its coarsest.
+    renderer.updateSceneParameters(autoSphere(400.0));
+    offscreen.renderImage(size);
+    QCOMPARE(renderer.objectDraws().front().level, renderer.objectDraws().front().levels - 1);
+}
 
 QTEST_MAIN(TestAutoDetail)
 #include "tst_autodetail.moc"

@@ -41,7 +41,10 @@ private slots:
         QString line;
         for (std::size_t i = 0; i < ladder.levels.size(); ++i) {
             const DetailLevel &level = ladder.levels[i];
-            line += QStringLiteral(" %1△/%2").arg(ladder.triangles(i)).arg(level.error, 0, 'g', 3);
+            line += QStringLiteral(" %1△/%2/%3°")
+                        .arg(ladder.triangles(i))
+                        .arg(level.error, 0, 'g', 3)
+                        .arg(glm::degrees(level.normalDeviation), 0, 'g', 3);
             QCOMPARE(level.indices.size() % 3, std::size_t(0));
             for (std::uint32_t v : level.indices)
                 QVERIFY(v < mesh.positions.size());
