@@ -97,9 +97,8 @@ BoundingSphere sceneBounds(const Scene &scene, const SceneMeshes &meshes)
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const SceneObject &object : scene.objects) {
         const MeshStats &stats = meshes.entries.value(meshKey(scene, object)).stats;
-        const BoundingSphere s = boundingSphere(glm::dvec3(stats.boundsMin),
-                                                glm::dvec3(stats.boundsMax),
-                                                object.transform.matrix());
+        const BoundingSphere s = boundingSphere(
+            glm::dvec3(stats.boundsMin), glm::dvec3(stats.boundsMax), object.transform.matrix());
         lo = glm::min(lo, s.center - glm::dvec3(s.radius));
         hi = glm::max(hi, s.center + glm::dvec3(s.radius));
     }
@@ -215,8 +214,8 @@ Result<PathRun> PathBench::run(const QString &scenePath, const QString &pathSpec
         if (!fast.drawError().isEmpty())
             return fail(fast.drawError());
 
-        const BandComparison error = compareOutsideBand(toRgbImage(image), *reference,
-                                                        full.background, options.bandPx, &*compared);
+        const BandComparison error = compareOutsideBand(
+            toRgbImage(image), *reference, full.background, options.bandPx, &*compared);
         frame.maxError = error.error.maxError;
         frame.psnr = error.error.psnr;
         frame.rmse = error.error.rmse;

@@ -23,11 +23,11 @@ class OffscreenRenderer;
 struct PathOptions {
     QSize size{400, 300};
     int warmupFrames = 2;
-    int frames = 10;                  // timed frames per path frame (median)
-    int bandPx = 2;                   // silhouette band left out of the error
-    ErrorBudget budget;               // what counts as over budget
-    double detailPixels = 0.5;        // Renderer::Options::detailPixels
-    QString imageDir;                 // when set: a render | reference | error picture per frame
+    int frames = 10;                     // timed frames per path frame (median)
+    int bandPx = 2;                      // silhouette band left out of the error
+    ErrorBudget budget;                  // what counts as over budget
+    double detailPixels = 0.5;           // Renderer::Options::detailPixels
+    QString imageDir;                    // when set: a render | reference | error picture per frame
     int pathFrames = kDefaultPathFrames; // frames of an orbit or a dolly (a file gives its own)
 };
 

@@ -99,8 +99,8 @@ Result<> writePathCharts(const std::vector<PathRun> &runs, const ErrorBudget &bu
     for (std::size_t i = 0; i < runs.size(); ++i) {
         QChart *chart = createPathChart(runs[i], budget);
         scene.addItem(chart);
-        chart->setGeometry(QRectF(QPointF(0, double(panelSize.height()) * double(i)),
-                                  QSizeF(panelSize)));
+        chart->setGeometry(
+            QRectF(QPointF(0, double(panelSize.height()) * double(i)), QSizeF(panelSize)));
         charts.push_back(chart);
     }
     settleLayouts(charts);

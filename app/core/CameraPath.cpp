@@ -61,7 +61,8 @@ CameraPath dollyPath(const Camera &start, const BoundingSphere &scene, int frame
         Camera c = start;
         const double d = nearest * std::pow(farthest / nearest, t);
         c.eye = start.target + direction * d;
-        c.farPlane = std::max(start.farPlane, d + 2.0 * (glm::length(scene.center - start.target) + scene.radius));
+        c.farPlane = std::max(start.farPlane,
+                              d + 2.0 * (glm::length(scene.center - start.target) + scene.radius));
         path.cameras.push_back(c);
     }
     return path;
@@ -150,8 +151,7 @@ private:
 
 } // namespace
 
-Result<CameraPath> parseCameraPath(const QByteArray &json, const Camera &start,
-                                   const QString &name)
+Result<CameraPath> parseCameraPath(const QByteArray &json, const Camera &start, const QString &name)
 {
     return PathReader().read(json, start, name);
 }

@@ -3,11 +3,13 @@
 // and finishes in time; bad arguments are usage errors (exit 2), a bad scene
 // a failure (exit 1) with nothing half-written.
 #include "PhonglabProcess.h"
+#include "TestPaths.h"
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QSet>
 #include <QTemporaryDir>
@@ -39,6 +41,8 @@ private slots:
     void usageErrors_data();
     void usageErrors();
     void badSceneFails();
+    void pathRunReportsFramesOverBudget();
+    void badPathFails();
 
 private:
     QTemporaryDir m_dir;
@@ -145,6 +149,14 @@ void TestCliBench::usageErrors_data()
     QTest::newRow("from with scene")
         << QStringList{QStringLiteral("--from"), QStringLiteral("r.csv"), QStringLiteral("--scene"),
                        QStringLiteral("s.json")};
+    QTest::newRow("path with methods")
+        << QStringList{QStringLiteral("--path"), QStringLiteral("orbit"),
+                       QStringLiteral("--methods"), QStringLiteral("phong")};
+    QTest::newRow("path frames without path")
+        << QStringList{QStringLiteral("--path-frames"), QStringLiteral("4")};
+    QTest::newRow("path frames 1")
+        << QStringList{QStringLiteral("--path"), QStringLiteral("dolly"),
+                       QStringLiteral("--path-frames"), QStringLiteral("1")};
 }
 
 void TestCliBench::usageErrors()
@@ -175,6 +187,43 @@ void TestCliBench::badSceneFails()
         {QStringLiteral("bench"), QStringLiteral("--from"), scene, QStringLiteral("--out"), out});
     QCOMPARE(bad.exitCode, 1);
     QVERIFY2(bad.err.contains(QStringLiteral("broken.json")), qPrintable(bad.err));
+}
+
+// --path: the line scripts read, path.csv with a row per frame, the chart.
+void TestCliBench::pathRunReportsFramesOverBudget()
+{
+    const QString out = m_dir.filePath(QStringLiteral("path"));
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--path"), QStringLiteral("dolly"),
+         QStringLiteral("--path-frames"), QStringLiteral("4"), QStringLiteral("--scene"),
+         sourcePath(QStringLiteral("assets/scenes/sphere.json")), QStringLiteral("--size"),
+         QStringLiteral("160x120"), QStringLiteral("--frames"), QStringLiteral("3"),
+         QStringLiteral("--out"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const QString text = QString::fromUtf8(r.out);
+    QVERIFY2(text.contains(QStringLiteral("\nframes over budget: 0 of 4\n")), qPrintable(text));
+    const QStringList csv = readText(out + QStringLiteral("/path.csv")).trimmed().split(u'\n');
+    QCOMPARE(csv.size(), 5);
+    QVERIFY(csv.front().startsWith(QStringLiteral("scene,path,frame,eye_x")));
+    QVERIFY(csv.at(1).startsWith(QStringLiteral("sphere,dolly,0,")));
+    QVERIFY(QFileInfo(out + QStringLiteral("/path.png")).size() > 1000);
+    QVERIFY(QFileInfo(out + QStringLiteral("/path.svg")).size() > 1000);
+}
+
+void TestCliBench::badPathFails()
+{
+    const QString keys = m_dir.filePath(QStringLiteral("keys.json"));
+    QFile file(keys);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"keyframes": [{"eye": [0, 0, 4]}, {"eye": "far"}]})");
+    file.close();
+    const ProcessRun r = runPhonglab(
+        {QStringLiteral("bench"), QStringLiteral("--path"), keys, QStringLiteral("--scene"),
+         sourcePath(QStringLiteral("assets/scenes/sphere.json")), QStringLiteral("--out"),
+         m_dir.filePath(QStringLiteral("bad-path"))});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("keys.json: keyframes[1].eye: expected 3 numbers")),
+             qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliBench)
