@@ -2,10 +2,12 @@
 
 #include "BenchPictures.h"
 #include "LightSetups.h"
+#include "ObjectFit.h"
 #include "core/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
 #include "core/MeshRaycaster.h"
 #include "core/ReferenceEdges.h"
+#include "core/SceneHits.h"
 #include "core/SceneJson.h"
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/SceneMeshes.h"
@@ -31,6 +33,10 @@ struct BenchEngine::SceneRun {
     std::vector<std::uint8_t> compared; // 1 away from every silhouette (lights do not move them)
     std::vector<std::vector<std::uint8_t>> specular; // compared ∧ highlight, per light count
     qint64 previousTriangles = -1;                   // of the last detail level measured
+    // With two objects or more: per pixel the object the reference sees
+    // there (-1 none), for the per-object rows; empty otherwise.
+    std::vector<int> objectIds;
+    RgbImage lastImage; // the frame measure() compared last
 };
 
 namespace {
@@ -121,6 +127,7 @@ Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *ro
         state.lightCounts = benchLightCounts(options, state.ownLights);
         own.push_back(state.ownLights);
     }
+    m_objectFits.clear();
     m_done = 0;
     m_total = benchConfigurationCount(options, own);
     for (qsizetype i = 0; i < options.scenes.size(); ++i)
@@ -169,9 +176,96 @@ Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path,
             highlightMask(*reference, state.compared, options.specularThreshold));
         state.references.push_back(std::move(*reference));
     }
+    if (options.objectFitBudget && full.objects.size() > 1) {
+        const Result<SceneHits> hits =
+            castSceneHits(full, state.fullMeshes, options.size.width(), options.size.height());
+        if (!hits)
+            return fail(QStringLiteral("%1: %2").arg(path, hits.error()));
+        for (const ReferenceHit &hit : hits->hits)
+            state.objectIds.push_back(hit.object);
+    }
+    const std::size_t firstRow = rows->size();
     for (double detail : options.details)
         if (Result<> done = measureDetail(options, state, detail, rows, progress); !done)
             return done;
+    if (options.objectFitBudget && !state.objectIds.empty())
+        return checkObjectFit(options, state, *rows, firstRow);
+    return {};
+}
+
+// One row per object of the frame measure() just compared: the object
+// drawn alone for its time, its own pixels of that frame for its error.
+void BenchEngine::measureObjects(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                                 std::vector<BenchRow> *rows)
+{
+    Renderer &renderer = m_offscreen->renderer();
+    const BenchRow whole = rows->back();
+    const ReferenceImage &reference = state.references[setup];
+    for (std::size_t o = 0; o < state.scene.objects.size(); ++o) {
+        std::vector<std::uint8_t> own = state.compared;
+        for (std::size_t i = 0; i < own.size(); ++i)
+            own[i] = own[i] && state.objectIds[i] == int(o);
+        const BandComparison error = compareOutsideBand(
+            state.lastImage, reference, state.scene.background, options.bandPx, &own);
+        Renderer::Options alone = renderer.options();
+        alone.onlyObject = int(o);
+        renderer.setOptions(alone);
+        const FrameTiming timing =
+            m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
+        BenchRow row = whole;
+        row.object =
+            QStringLiteral("%1: %2").arg(o).arg(QFileInfo(state.scene.objects[o].mesh).fileName());
+        row.triangles = renderer.trianglesDrawn();
+        row.frameMs = timing.wallMedianMs;
+        row.frameMsP90 = timing.wallP90Ms;
+        row.cpuSubmitMs = timing.cpuSubmitMedianMs;
+        row.gpuMs = timing.gpuMedianMs;
+        row.psnr = error.error.psnr;
+        row.rmse = error.error.rmse;
+        row.maxError = error.error.maxError;
+        row.pixelsCompared = error.error.pixelsCompared;
+        row.coverageErrors = error.coverageErrors;
+        row.specularPixels = 0;
+        row.specularPsnr = row.specularRmse = 0;
+        row.specularMaxError = 0;
+        alone.onlyObject = -1;
+        renderer.setOptions(alone);
+        rows->push_back(row);
+    }
+}
+
+// The per-object fit of the rows just measured, drawn whole once: the
+// combination's real time and error.
+Result<> BenchEngine::checkObjectFit(const BenchOptions &options, SceneRun &state,
+                                     const std::vector<BenchRow> &rows, std::size_t firstRow)
+{
+    const auto own = std::find(state.lightCounts.begin(), state.lightCounts.end(), state.ownLights);
+    if (own == state.lightCounts.end())
+        return {};
+    std::vector<BenchRow> sceneRows;
+    for (std::size_t i = firstRow; i < rows.size(); ++i)
+        if (rows[i].sceneLights)
+            sceneRows.push_back(rows[i]);
+    ObjectFitCheck check{state.name, fitObjects(sceneRows, *options.objectFitBudget), std::nullopt};
+    if (check.fit.fits) {
+        Scene combined = withLights(state.scene, state.ownLights);
+        for (std::size_t o = 0; o < combined.objects.size(); ++o) {
+            const BenchRow &row = sceneRows[std::size_t(check.fit.choices[o].row)];
+            combined.objects[o].shading = shadingFromName(row.method);
+            combined.objects[o].detail = row.detail;
+            combined.objects[o].autoDetail = false;
+        }
+        m_offscreen->makeCurrent();
+        Renderer &renderer = m_offscreen->renderer();
+        if (const Result<> set = renderer.setScene(combined); !set)
+            return fail(QStringLiteral("%1, per-object fit: %2").arg(state.name, set.error()));
+        if (const BuildReport built = renderer.loadShading(combined.shading); !built.ok)
+            return fail(
+                QStringLiteral("%1, per-object fit: %2").arg(state.name, built.errorSummary()));
+        check.measured = measureFrame(options, state, std::size_t(own - state.lightCounts.begin()),
+                                      combined, QStringLiteral("per-object"), 1.0);
+    }
+    m_objectFits.push_back(std::move(check));
     return {};
 }
 
@@ -208,6 +302,8 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
                             .arg(state.name, shadingName(method), built.errorSummary()));
         for (std::size_t s = 0; s < state.lightCounts.size(); ++s) {
             rows->push_back(measure(options, state, s, method, detail));
+            if (!state.objectIds.empty() && rows->back().sceneLights)
+                measureObjects(options, state, s, rows);
             ++m_done;
             const QString stage = QStringLiteral("%1: %2, detail %3, %4 light(s)")
                                       .arg(state.name, shadingName(method), detailPercent(detail))
@@ -222,17 +318,24 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
 BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
                               ShadingMethod method, double detail)
 {
+    Scene scene = withLights(withDetail(state.scene, detail), state.lightCounts[setup]);
+    scene.shading = method;
+    m_offscreen->renderer().updateSceneParameters(scene);
+    return measureFrame(options, state, setup, scene, shadingName(method), detail);
+}
+
+BenchRow BenchEngine::measureFrame(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                                   const Scene &scene, const QString &method, double detail)
+{
     Renderer &renderer = m_offscreen->renderer();
     const int count = state.lightCounts[setup];
-    Scene scene = withLights(withDetail(state.scene, detail), count);
-    scene.shading = method;
-    renderer.updateSceneParameters(scene);
 
     const FrameTiming timing =
         m_offscreen->timeFrames(options.size, options.warmupFrames, options.frames);
     const QImage image = m_offscreen->renderImage(options.size);
     const ReferenceImage &reference = state.references[setup];
     const RgbImage pixels = toRgbImage(image);
+    state.lastImage = pixels;
     const BandComparison all =
         compareOutsideBand(pixels, reference, scene.background, options.bandPx, &state.compared);
     const BandComparison highlight = compareOutsideBand(pixels, reference, scene.background,
@@ -240,7 +343,7 @@ BenchRow BenchEngine::measure(const BenchOptions &options, SceneRun &state, std:
 
     BenchRow row;
     row.scene = state.name;
-    row.method = shadingName(method);
+    row.method = method;
     row.detail = detail;
     row.triangles = renderer.trianglesDrawn();
     row.lights = count;

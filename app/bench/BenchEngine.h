@@ -1,6 +1,7 @@
 #pragma once
 #include "BenchOptions.h"
 #include "BenchResult.h"
+#include "ObjectFit.h"
 #include "core/ReferenceImage.h"
 #include "core/Result.h"
 #include "core/Scene.h"
@@ -9,12 +10,21 @@
 #include <QString>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace phonglab {
 
 class OffscreenRenderer;
 struct MeshData;
+
+// The per-object fit of one scene and the combination it chose, drawn
+// whole: its real time and error (nullopt when nothing fitted).
+struct ObjectFitCheck {
+    QString scene;
+    ObjectFit fit;
+    std::optional<BenchRow> measured;
+};
 
 // Where a bench run is; the callback returns false to cancel.
 struct BenchProgress {
@@ -44,6 +54,10 @@ public:
     Result<> initialize();
     QString glRendererName() const;
 
+    // With options.objectFitBudget: per scene of two objects or more, the
+    // per-object fit of the last run and the chosen combination measured.
+    const std::vector<ObjectFitCheck> &objectFits() const { return m_objectFits; }
+
     // Appends one row per configuration to *rows. A failure when a
     // scene cannot be loaded or a shader does not build, or "cancelled".
     Result<> run(const BenchOptions &options, std::vector<BenchRow> *rows,
@@ -57,8 +71,15 @@ private:
                            std::vector<BenchRow> *rows, const BenchProgressFn &progress);
     BenchRow measure(const BenchOptions &options, SceneRun &state, std::size_t setup,
                      ShadingMethod method, double detail);
+    BenchRow measureFrame(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                          const Scene &scene, const QString &method, double detail);
+    void measureObjects(const BenchOptions &options, SceneRun &state, std::size_t setup,
+                        std::vector<BenchRow> *rows);
+    Result<> checkObjectFit(const BenchOptions &options, SceneRun &state,
+                            const std::vector<BenchRow> &rows, std::size_t firstRow);
 
     std::unique_ptr<OffscreenRenderer> m_offscreen;
+    std::vector<ObjectFitCheck> m_objectFits;
     int m_done = 0;
     int m_total = 0;
 };

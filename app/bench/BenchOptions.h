@@ -4,6 +4,7 @@
 
 #include <QSize>
 #include <QStringList>
+#include <optional>
 #include <vector>
 
 namespace phonglab {
@@ -27,6 +28,10 @@ struct BenchOptions {
     // specular term reaches this much in some channel (4/255: visible).
     double specularThreshold = 4.0 / 255.0;
     QString imageDir; // when set: render | reference | error pictures per method
+    // When set: scenes of two objects or more also get one row per object
+    // (BenchRow::object) and the per-object fit under this budget, drawn
+    // whole to check it (BenchEngine::objectFits()).
+    std::optional<ErrorBudget> objectFitBudget;
 
     static BenchOptions quick();
     static BenchOptions full();

@@ -33,6 +33,7 @@ enum Column {
     ColSpecPixels,
     ColPixelsCompared,
     ColCoverageErrors,
+    ColObject, // added later: optional when reading, so older files still read
     ColumnCount
 };
 
@@ -41,6 +42,7 @@ const char *const kColumnNames[ColumnCount] = {
     "scene_lights", "frame_ms",       "frame_ms_p90", "cpu_submit_ms",   "gpu_ms",
     "frames",       "psnr_db",        "rmse",         "max_error",       "spec_psnr_db",
     "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors",
+    "object",
 };
 
 // Shortest text that reads back as exactly the same double.
@@ -292,6 +294,7 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows)
             QString::number(row.specularPixels),
             QString::number(row.pixelsCompared),
             QString::number(row.coverageErrors),
+            csvField(row.object),
         };
         out += fields.join(QLatin1Char(',')) + QLatin1Char('\n');
     }
@@ -331,7 +334,7 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
     }
     QStringList missing;
     for (int c = 0; c < ColumnCount; ++c)
-        if (index[c] == -1)
+        if (index[c] == -1 && c != ColObject)
             missing.append(QString::fromLatin1(kColumnNames[c]));
     if (!missing.isEmpty())
         return fail(QStringLiteral("%1 line %2: missing column%3 %4")
@@ -356,6 +359,8 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         BenchRow row;
         row.scene = field(ColScene);
         row.method = field(ColMethod).trimmed();
+        if (index[ColObject] != -1)
+            row.object = field(ColObject);
         const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail)
             && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles)
             && reader.readInt(name(ColLights), field(ColLights), &row.lights)

@@ -42,10 +42,19 @@ struct BenchRow {
     qint64 pixelsCompared = 0;
     qint64 coverageErrors =
         0; // pixels outside the silhouette band covered in one image and not the other
+    // Empty: the whole scene drawn with this method and detail. Otherwise one
+    // object of it ("0: tree.obj"), drawn alone for the time and measured
+    // over its own pixels for the error: the rows of the per-object fit
+    // (ObjectFit.h), at the scene's own lights.
+    QString object;
 
     // The full-detail Phong row of a scene and light setup is the baseline
     // the savings are measured against.
-    bool isBaseline() const { return method == QLatin1String("phong") && detail >= 1.0; }
+    bool isBaseline() const
+    {
+        return method == QLatin1String("phong") && detail >= 1.0 && object.isEmpty();
+    }
+    bool isWholeScene() const { return object.isEmpty(); }
 };
 
 // A detail fraction for people: "100 %", "25 %", "12.5 %", "1.56 %".

@@ -62,7 +62,7 @@ std::vector<SceneFit> fitScenes(const std::vector<BenchRow> &rows, const ErrorBu
 {
     std::vector<SceneFit> fits;
     for (const BenchRow &row : rows) {
-        if (!row.sceneLights)
+        if (!row.sceneLights || !row.isWholeScene())
             continue;
         auto it = std::find_if(fits.begin(), fits.end(),
                                [&](const SceneFit &f) { return f.scene == row.scene; });

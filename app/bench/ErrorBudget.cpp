@@ -156,15 +156,19 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     // The fastest accepted time; every accepted row within kTimeTieFraction
     // of it counts as equally fast.
     double fastest = std::numeric_limits<double>::infinity();
+    // One object's rows (the per-object fit's) are no choice for the scene.
+    const auto candidate = [&](const BenchRow &row) {
+        return row.isWholeScene() && budget.accepts(row) && std::isfinite(row.frameMs);
+    };
     for (int i = 0; i < n; ++i)
-        if (budget.accepts(rows[i]) && std::isfinite(rows[i].frameMs))
+        if (candidate(rows[i]))
             fastest = std::min(fastest, rows[i].frameMs);
 
     if (std::isfinite(fastest)) {
         const double tieLimit = fastest + std::abs(fastest) * kTimeTieFraction;
         for (int i = 0; i < n; ++i) {
             const BenchRow &row = rows[i];
-            if (!budget.accepts(row) || !std::isfinite(row.frameMs) || row.frameMs > tieLimit)
+            if (!candidate(row) || row.frameMs > tieLimit)
                 continue;
             if (fit.chosen < 0) {
                 fit.chosen = i;

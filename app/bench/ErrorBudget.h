@@ -41,7 +41,8 @@ struct BudgetFit {
 // fastest accepted one count as equal (frame times are noisy); among those
 // the fewest triangles win, then the lower error (equally cheap, so the
 // accuracy is free), then the cheaper method (flat < gouraud < blinn-phong
-// < phong). Never returns a row the budget refuses.
+// < phong). Never returns a row the budget refuses. Rows of single objects
+// (BenchRow::object) are left out: fitObjects() (ObjectFit.h) takes those.
 inline constexpr double kTimeTieFraction = 0.05;
 BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budget);
 

@@ -273,7 +273,9 @@ int bench(const BenchArgs &args, int argc, char **argv)
     clock.start();
     std::vector<BenchRow> rows;
     ProgressPrinter printer;
-    const Result<> ran = engine.run(args.options, &rows, std::ref(printer));
+    BenchOptions options = args.options;
+    options.objectFitBudget = args.budget;
+    const Result<> ran = engine.run(options, &rows, std::ref(printer));
     printer.finish();
     if (!ran) {
         printError(ran.error());
@@ -286,6 +288,22 @@ int bench(const BenchArgs &args, int argc, char **argv)
         }
     }
     const int written = writeOutputs(args, rows);
+    if (!engine.objectFits().empty())
+        printLine(QStringLiteral("\nper-object fit (%1; each object drawn alone for its time, its "
+                                 "own pixels for its error):")
+                      .arg(args.budget.describe()));
+    for (const ObjectFitCheck &check : engine.objectFits()) {
+        printLine(QStringLiteral("  %1: %2").arg(check.scene, check.fit.summary));
+        if (check.measured)
+            printLine(QStringLiteral("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
+                          .arg(check.scene)
+                          .arg(check.measured->frameMs, 0, 'f', 2)
+                          .arg(check.measured->maxError)
+                          .arg(check.measured->psnr, 0, 'f', 1)
+                          .arg(args.budget.accepts(*check.measured)
+                                   ? QStringLiteral("within budget")
+                                   : QStringLiteral("OVER BUDGET")));
+    }
     printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
     return written;
 }

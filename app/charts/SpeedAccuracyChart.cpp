@@ -129,9 +129,13 @@ Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const Q
     return writeChartImages(chart.get(), pngPath, svgPath, size);
 }
 
-Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &rows, const QString &pngPath,
+Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &allRows, const QString &pngPath,
                                   const QString &svgPath, QSize panelSize)
 {
+    // The chart is of whole scenes; one object's rows belong to its fit.
+    std::vector<BenchRow> rows;
+    std::copy_if(allRows.begin(), allRows.end(), std::back_inserter(rows),
+                 [](const BenchRow &row) { return row.isWholeScene(); });
     if (Result<> app = haveApplication(); !app)
         return app;
     if (panelSize.isEmpty())

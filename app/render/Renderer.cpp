@@ -265,6 +265,8 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
     ShaderProgram *bound = nullptr;
     bool perFace = false;
     for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+        if (m_options.onlyObject >= 0 && std::size_t(m_options.onlyObject) != i)
+            continue;
         const SceneObject &object = m_scene.objects[i];
         const QString key = meshKey(m_scene, object);
         const auto mesh = m_meshes.value(key);

@@ -36,6 +36,9 @@ public:
         // ... and whose normals are close enough that no pixel's shading
         // can change by more than this (linear intensity; normalErrorBound()).
         double detailShadingAllowance = 0.5 / 255.0;
+        // When ≥ 0, only this scene object is drawn (the bench times one
+        // object alone for the per-object fit).
+        int onlyObject = -1;
     };
 
     // How one object was drawn in the last frame.

@@ -72,8 +72,20 @@ void TestCliBench::quickRunWritesCsvAndChart()
     QVERIFY2(read, qPrintable(read.error()));
     const std::vector<BenchRow> &rows = *read;
     // Two scenes (default: tree and cloud with 2 lights; sphere: 1 light),
-    // 3 details, 5 methods; light setups 1, 4, 8 (+ the default's own 2).
-    QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 5));
+    // 3 details, 5 methods; light setups 1, 4, 8 (+ the default's own 2);
+    // and at the default's own lights one row per object (tree, cloud).
+    QCOMPARE(rows.size(), std::size_t((4 + 3) * 3 * 5 + 2 * 3 * 5));
+    const auto objectRows = std::count_if(rows.begin(), rows.end(),
+                                          [](const BenchRow &r) { return !r.isWholeScene(); });
+    QCOMPARE(objectRows, 2 * 3 * 5);
+    QVERIFY2(stdoutText.contains(QStringLiteral("per-object fit")),
+             qPrintable(stdoutText.right(800)));
+    QVERIFY2(stdoutText.contains(QStringLiteral("limits the saving"))
+                 || stdoutText.contains(QStringLiteral("every object at its fastest")),
+             qPrintable(stdoutText.right(800)));
+    QVERIFY2(stdoutText.contains(QStringLiteral("drawn whole:"))
+                 && stdoutText.contains(QStringLiteral("(within budget)")),
+             qPrintable(stdoutText.right(800)));
     QSet<QString> methods, scenes;
     for (const BenchRow &row : rows) {
         methods.insert(row.method);

@@ -85,13 +85,36 @@ class TestBenchCsv : public QObject
     Q_OBJECT
 
 private slots:
+    void fileWithoutObjectColumnStillReads()
+    {
+        // A results.csv from before the per-object rows: no "object" column.
+        QStringList header = benchCsvColumns();
+        header.removeLast();
+        BenchRow row;
+        row.scene = QStringLiteral("default");
+        row.method = QStringLiteral("phong");
+        QString line = benchRowsToCsv({row}).section(QLatin1Char('\n'), 1, 1);
+        line.chop(1); // the empty object field and its comma
+        const auto read = benchRowsFromCsv(header.join(',') + '\n' + line + '\n');
+        QVERIFY2(read, qPrintable(read.error()));
+        QCOMPARE(read->size(), std::size_t(1));
+        QVERIFY(read->front().isWholeScene());
+
+        BenchRow one = row;
+        one.object = QStringLiteral("0: tree, big.obj");
+        const auto back = benchRowsFromCsv(benchRowsToCsv({one}));
+        QVERIFY2(back, qPrintable(back.error()));
+        QCOMPARE(back->front().object, one.object);
+    }
+
     void columnsAreTheInterface()
     {
         const QStringList expected = {
             "scene",        "method",         "detail",       "triangles",       "lights",
             "scene_lights", "frame_ms",       "frame_ms_p90", "cpu_submit_ms",   "gpu_ms",
             "frames",       "psnr_db",        "rmse",         "max_error",       "spec_psnr_db",
-            "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors"};
+            "spec_rmse",    "spec_max_error", "spec_pixels",  "pixels_compared", "coverage_errors",
+            "object"}; // added at the end: older files without it still read
         QCOMPARE(benchCsvColumns(), expected);
         const QString csv = benchRowsToCsv({});
         QCOMPARE(csv, expected.join(',') + '\n');
@@ -283,7 +306,7 @@ private slots:
         csv += "default,phong,1\n";
         const Result<std::vector<BenchRow>> refusal = benchRowsFromCsv(csv);
         QVERIFY(!refusal);
-        QVERIFY2(refusal.error().startsWith("results.csv line 4: expected 20 fields"),
+        QVERIFY2(refusal.error().startsWith("results.csv line 4: expected 21 fields"),
                  qPrintable(refusal.error()));
     }
 
