@@ -83,6 +83,15 @@ QString rowError(const BenchRow &row, ErrorBudget::Kind kind)
 
 } // namespace
 
+double ErrorBudget::reductionAllowance() const
+{
+    if (kind == Kind::MaxError)
+        return 0.25 * maxError / 255.0;
+    // PSNR ≥ P dB allows an RMSE of 255·10^(-P/20) steps; a change below a
+    // quarter of it at every pixel keeps the rest for the method.
+    return 0.25 * std::pow(10.0, -minPsnr / 20.0);
+}
+
 bool ErrorBudget::accepts(const BenchRow &row) const
 {
     return accepts(row.maxError, row.psnr);

@@ -21,6 +21,11 @@ struct ErrorBudget {
     bool accepts(const BenchRow &row) const;
     // The same for an error measured elsewhere (a frame of a camera path).
     bool accepts(int maxError, double psnr) const;
+    // What each of the two reductions of the model (lights left out,
+    // LightBound.h; coarser levels of detail, normalErrorBound()) may change
+    // a pixel by: a quarter of the budget each (linear intensity), half of
+    // it left for the method's own error and the rounding to 8 bits.
+    double reductionAllowance() const;
     // "max error ≤ 2/255" or "PSNR ≥ 40 dB"
     QString describe() const;
     // "2" / "max:2" → MaxError 2; "psnr:40" / "40dB" → Psnr 40. nullopt on anything else.

@@ -20,7 +20,8 @@ CombinedError combineObjectErrors(const std::vector<BenchRow> &rows, const std::
     if (pixels == 0)
         return out;
     const double rmse = std::sqrt(squared / double(pixels));
-    out.psnr = rmse > 0.0 ? 20.0 * std::log10(255.0 / rmse) : std::numeric_limits<double>::infinity();
+    out.psnr =
+        rmse > 0.0 ? 20.0 * std::log10(255.0 / rmse) : std::numeric_limits<double>::infinity();
     return out;
 }
 
@@ -150,9 +151,10 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
                 pick.clear();
                 break;
             }
-            pick.push_back(*std::min_element(accepted[o].begin(), accepted[o].end(), [&](int a, int b) {
-                return cheaper(rows[std::size_t(a)], rows[std::size_t(b)]);
-            }));
+            pick.push_back(
+                *std::min_element(accepted[o].begin(), accepted[o].end(), [&](int a, int b) {
+                    return cheaper(rows[std::size_t(a)], rows[std::size_t(b)]);
+                }));
         }
     } else {
         pick = fitShared(rows, all, budget);
@@ -164,7 +166,8 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
                 none << fit.choices[o].object;
         fit.summary = none.isEmpty()
             ? QStringLiteral("no combination of the objects' rows meets %1").arg(budget.describe())
-            : QStringLiteral("nothing meets %1 for %2").arg(budget.describe(), none.join(QStringLiteral(", ")));
+            : QStringLiteral("nothing meets %1 for %2")
+                  .arg(budget.describe(), none.join(QStringLiteral(", ")));
         return fit;
     }
     double worstCost = 0.0;
@@ -191,8 +194,9 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
                                     .arg(fit.baselineMs, 0, 'f', 2)
                               : QString());
     if (!fit.limiting.isEmpty()) {
-        const auto it = std::find_if(fit.choices.begin(), fit.choices.end(),
-                                     [&](const ObjectChoice &c) { return c.object == fit.limiting; });
+        const auto it =
+            std::find_if(fit.choices.begin(), fit.choices.end(),
+                         [&](const ObjectChoice &c) { return c.object == fit.limiting; });
         const BenchRow &fastest = rows[std::size_t(it->fastest)];
         fit.summary += QStringLiteral("; %1 limits the saving (its fastest, %2 at %3, errs %4/255)")
                            .arg(fit.limiting, fastest.method, detailPercent(fastest.detail))

@@ -27,9 +27,9 @@ struct ObjectFit {
     std::vector<ObjectChoice> choices; // per object, in order of first appearance
     bool fits = false;                 // every object has a choice and the whole is within budget
     double frameMs = 0.0;              // sum of the chosen rows' frame times
-    double baselineMs = 0.0;           // sum of the objects' full-detail Phong times (0: not measured)
-    int maxError = 0;                  // of the combination
-    double psnr = 0.0;                 // of the combination, dB
+    double baselineMs = 0.0; // sum of the objects' full-detail Phong times (0: not measured)
+    int maxError = 0;        // of the combination
+    double psnr = 0.0;       // of the combination, dB
     // The object that limits the saving: the one whose choice costs the
     // most time above its own fastest row; empty when every object is at
     // its fastest.
@@ -42,7 +42,8 @@ struct CombinedError {
     int maxError = 0;
     double psnr = 0.0; // +inf when exact; 0 when no pixel was compared
 };
-CombinedError combineObjectErrors(const std::vector<BenchRow> &rows, const std::vector<int> &chosen);
+CombinedError combineObjectErrors(const std::vector<BenchRow> &rows,
+                                  const std::vector<int> &chosen);
 
 // `rows`: one scene's rows at its own lights; the whole-scene rows among them
 // are ignored. Never returns a combination the budget refuses.

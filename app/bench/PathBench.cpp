@@ -19,15 +19,6 @@
 
 namespace phonglab {
 
-double reductionAllowance(const ErrorBudget &budget)
-{
-    if (budget.kind == ErrorBudget::Kind::MaxError)
-        return 0.25 * budget.maxError / 255.0;
-    // PSNR ≥ P dB allows an RMSE of 255·10^(-P/20) steps; a change below a
-    // quarter of it at every pixel keeps the rest for the method.
-    return 0.25 * std::pow(10.0, -budget.minPsnr / 20.0);
-}
-
 int PathRun::overBudget() const
 {
     return int(std::count_if(frames.begin(), frames.end(),
@@ -162,8 +153,8 @@ Result<PathRun> PathBench::run(const QString &scenePath, const QString &pathSpec
     if (const BuildReport built = fast.loadShading(automatic.shading); !built.ok)
         return fail(built.errorSummary());
     Renderer::Options fastOptions = fast.options();
-    fastOptions.lightAllowance = reductionAllowance(options.budget);
-    fastOptions.detailShadingAllowance = reductionAllowance(options.budget);
+    fastOptions.lightAllowance = options.budget.reductionAllowance();
+    fastOptions.detailShadingAllowance = options.budget.reductionAllowance();
     fastOptions.detailPixels = options.detailPixels;
     fast.setOptions(fastOptions);
     m_full->makeCurrent();

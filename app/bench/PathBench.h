@@ -31,12 +31,6 @@ struct PathOptions {
     int pathFrames = kDefaultPathFrames; // frames of an orbit or a dolly (a file gives its own)
 };
 
-// What each of the two reductions (lights left out, LightBound.h; coarser
-// levels, normalErrorBound()) may change a pixel by: a quarter of the
-// budget each (linear intensity), half of it left for the method's own
-// error and the rounding to 8 bits.
-double reductionAllowance(const ErrorBudget &budget);
-
 struct PathFrame {
     int index = 0;
     glm::dvec3 eye{0.0};

@@ -161,7 +161,7 @@ int benchPath(const BenchArgs &args)
                              "steps), lights left out below %2 steps; against the exact Phong "
                              "image and the same frame at full detail with every light\n")
                   .arg(options.detailPixels)
-                  .arg(255.0 * reductionAllowance(args.budget), 0, 'g', 3));
+                  .arg(255.0 * args.budget.reductionAllowance(), 0, 'g', 3));
     QElapsedTimer clock;
     clock.start();
     std::vector<PathRun> runs;

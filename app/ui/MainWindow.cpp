@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "DetailLevelLabel.h"
 #include "FileMenu.h"
 #include "FileTypes.h"
 #include "FrameStatsLabel.h"
@@ -35,6 +36,8 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+
+#include <algorithm>
 
 namespace phonglab {
 
@@ -184,6 +187,12 @@ void MainWindow::createPerformanceDock()
     tabifyDockWidget(m_sceneDock, m_performanceDock);
     connect(m_performanceDock, &PerformanceDock::applyModelRequested, this,
             &MainWindow::applyModel);
+    connect(m_performanceDock, &PerformanceDock::autoDetailRequested, this, [this](bool on) {
+        SceneLoadRequest request = autoDetailRequest(m_viewport->currentScene(), on);
+        request.shown = [this] { refreshSceneDock(); };
+        m_loadJob->start(std::move(request));
+    });
+    new DetailLevelLabel(m_viewport);
 }
 
 void MainWindow::applyModel(ShadingMethod method, double detail)
@@ -383,7 +392,12 @@ void MainWindow::showLoadCancelled(const QString &label)
 
 void MainWindow::refreshSceneDock()
 {
-    m_sceneDock->showScene(m_viewport->currentScene(), m_viewport->meshInfo());
+    const Scene scene = m_viewport->currentScene();
+    m_sceneDock->showScene(scene, m_viewport->meshInfo());
+    m_performanceDock->showAutoDetail(
+        !scene.objects.empty()
+        && std::all_of(scene.objects.begin(), scene.objects.end(),
+                       [](const SceneObject &o) { return o.autoDetail; }));
 }
 
 void MainWindow::setScenePath(const QString &path, const QString &title)

@@ -1,5 +1,8 @@
 #include "PerformanceDock.h"
 
+#include <QCheckBox>
+#include <QSignalBlocker>
+
 #include "BenchProcess.h"
 #include "Viewport.h"
 #include "charts/SpeedAccuracyChart.h"
@@ -51,6 +54,23 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     connect(m_budgetKind, &QComboBox::currentIndexChanged, this, &PerformanceDock::setBudgetKind);
     setBudget(ErrorBudget{});
 
+    m_autoDetail = new QCheckBox(tr("Model only what the view needs"), body);
+    m_autoDetail->setObjectName(QStringLiteral("autoDetail"));
+    m_autoDetail->setToolTip(
+        tr("Every object at \"detail\": \"auto\": drawn at the coarsest level its size on "
+           "screen allows, and without the lights it cannot show, each within a quarter of the "
+           "budget. The levels are built in the background the first time."));
+    layout->addWidget(m_autoDetail);
+    connect(m_autoDetail, &QCheckBox::toggled, this, [this](bool on) {
+        sendModelReduction();
+        emit autoDetailRequested(on);
+    });
+    connect(m_budgetKind, &QComboBox::currentIndexChanged, this,
+            &PerformanceDock::sendModelReduction);
+    connect(m_budgetValue, &QDoubleSpinBox::valueChanged, this,
+            &PerformanceDock::sendModelReduction);
+    sendModelReduction();
+
     auto *buttons = new QHBoxLayout;
     m_measureButton = new QPushButton(tr("Measure"), body);
     m_measureButton->setToolTip(
@@ -97,6 +117,18 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
 }
 
 PerformanceDock::~PerformanceDock() = default;
+
+void PerformanceDock::sendModelReduction()
+{
+    m_viewport->setModelReduction(budget().reductionAllowance(), m_autoDetail->isChecked());
+}
+
+void PerformanceDock::showAutoDetail(bool on)
+{
+    const QSignalBlocker quiet(m_autoDetail);
+    m_autoDetail->setChecked(on);
+    sendModelReduction();
+}
 
 ErrorBudget PerformanceDock::budget() const
 {

@@ -7,6 +7,7 @@
 #include <vector>
 
 class QChartView;
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -43,6 +44,8 @@ public:
     bool isMeasuring() const;
 
 public slots:
+    // The toggle as the scene on screen has it (no request sent).
+    void showAutoDetail(bool on);
     void measure();     // measure only: chart, no change to the scene
     void fitToBudget(); // measure, then apply the cheapest model within budget
     void restoreFullDetail();
@@ -51,11 +54,14 @@ public slots:
 signals:
     // Show the scene with every object at `detail` and `method` shading.
     void applyModelRequested(phonglab::ShadingMethod method, double detail);
+    // The toggle: every object to "detail": "auto" (true) or back to full detail.
+    void autoDetailRequested(bool on);
     void measured();   // rows() are new (or the run failed: rows() empty)
     void fitApplied(); // the model was handed to applyModelRequested
 
 private:
     void setBudgetKind(int index);
+    void sendModelReduction();
     void startMeasurement(bool thenFit);
     void showProgress(int done, int total, const QString &stage);
     void measurementFinished(const std::vector<BenchRow> &rows, const QString &error);
@@ -68,6 +74,7 @@ private:
     BenchProcess *m_process = nullptr;
     QLabel *m_frameLabel = nullptr;
     QComboBox *m_budgetKind = nullptr;
+    QCheckBox *m_autoDetail = nullptr;
     QDoubleSpinBox *m_budgetValue = nullptr;
     QPushButton *m_measureButton = nullptr;
     QPushButton *m_fitButton = nullptr;

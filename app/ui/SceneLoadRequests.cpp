@@ -72,4 +72,23 @@ SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double
     return request;
 }
 
+SceneLoadRequest autoDetailRequest(const Scene &current, bool on)
+{
+    auto apply = [on](Scene scene) {
+        for (SceneObject &object : scene.objects) {
+            object.autoDetail = on;
+            object.detail = 1.0;
+        }
+        return scene;
+    };
+    SceneLoadRequest request;
+    request.scene = apply(current);
+    request.label = on ? QObject::tr("levels of detail") : QObject::tr("full detail");
+    request.finish = [apply, requested = request.scene](const Scene &shown,
+                                                        const SceneLoadRequest::MeshInfo &) {
+        return shown.objects.size() == requested.objects.size() ? apply(shown) : requested;
+    };
+    return request;
+}
+
 } // namespace phonglab

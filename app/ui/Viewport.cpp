@@ -324,6 +324,14 @@ void Viewport::resetCamera()
     cameraMoved();
 }
 
+void Viewport::setModelReduction(double allowance, bool leaveOutLights)
+{
+    m_options.lightAllowance = leaveOutLights ? allowance : 0.0;
+    m_options.detailShadingAllowance = allowance;
+    m_renderer.setOptions(m_options); // plain state, no GL call
+    update();
+}
+
 void Viewport::setShowLightMarkers(bool show)
 {
     m_options.drawLightMarkers = show;

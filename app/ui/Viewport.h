@@ -99,6 +99,14 @@ public:
     void resetCamera();
     void setShowLightMarkers(bool show);
     bool showLightMarkers() const { return m_options.drawLightMarkers; }
+    // How the last frame drew each object (level of detail, lights left out).
+    const std::vector<Renderer::ObjectDraw> &objectDraws() const
+    {
+        return m_renderer.objectDraws();
+    }
+    // What auto detail and, when `leaveOutLights`, leaving out unseen
+    // lights may each change a pixel by (linear intensity; Renderer::Options).
+    void setModelReduction(double allowance, bool leaveOutLights);
 
     bool isRenderReady() const { return m_renderReady; }
     qint64 framesRendered() const { return m_framesRendered; }

@@ -6,12 +6,14 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/Scene.h"
+#include "ui/DetailLevelLabel.h"
 #include "ui/MainWindow.h"
 #include "ui/PerformanceDock.h"
 #include "ui/Viewport.h"
 
 #include <QChart>
 #include <QChartView>
+#include <QCheckBox>
 #include <QSignalSpy>
 #include <QTest>
 #include <memory>
@@ -33,6 +35,7 @@ private slots:
     void initTestCase();
     void fitsDefaultSceneToBudget();
     void nothingFitsLeavesSceneAlone();
+    void autoDetailToggleShowsTheLevels();
 
 private:
     void openWindow();
@@ -126,6 +129,38 @@ void TestPerformanceDock::nothingFitsLeavesSceneAlone()
     QVERIFY2(!dock()->reportText().isEmpty(), "says why nothing was applied");
     QCOMPARE(viewport()->currentScene().shading, before.shading);
     QCOMPARE(viewport()->currentScene().objects.front().detail, 1.0);
+}
+
+// The toggle puts every object at "detail": "auto" (levels built by the
+// load, in the background), the viewport says which level each object
+// draws, and the toggle follows the scene; off goes back to full detail.
+void TestPerformanceDock::autoDetailToggleShowsTheLevels()
+{
+    openWindow();
+    auto *toggle = dock()->findChild<QCheckBox *>(QStringLiteral("autoDetail"));
+    QVERIFY(toggle);
+    QVERIFY(!toggle->isChecked());
+    auto *label = viewport()->findChild<DetailLevelLabel *>(QStringLiteral("detailLevels"));
+    QVERIFY(label);
+    QVERIFY(!label->isVisible());
+
+    toggle->click();
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->currentScene().objects.front().autoDetail, 60000);
+    for (const SceneObject &object : viewport()->currentScene().objects)
+        QVERIFY(object.autoDetail);
+    viewport()->update();
+    QTRY_VERIFY(label->isVisible());
+    QVERIFY2(label->text().contains(QStringLiteral("tree.obj: level ")), qPrintable(label->text()));
+    QVERIFY2(label->text().contains(QStringLiteral("cloud.obj: level ")),
+             qPrintable(label->text()));
+    QVERIFY(viewport()->objectDraws().front().levels > 1);
+    QVERIFY(toggle->isChecked());
+
+    toggle->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!viewport()->currentScene().objects.front().autoDetail, 60000);
+    viewport()->update();
+    QTRY_VERIFY(!label->isVisible());
+    QCOMPARE(viewport()->objectDraws().front().levels, 1);
 }
 
 QTEST_MAIN(TestPerformanceDock)

@@ -102,7 +102,8 @@ private slots:
         QCOMPARE(fit.baselineMs, 3.5);
         QCOMPARE(fit.maxError, 2);
         QCOMPARE(fit.limiting, QStringLiteral("tree"));
-        QVERIFY2(fit.summary.contains(QStringLiteral("tree limits the saving")), qPrintable(fit.summary));
+        QVERIFY2(fit.summary.contains(QStringLiteral("tree limits the saving")),
+                 qPrintable(fit.summary));
     }
 
     void wholeSceneRowsAreIgnoredAndNothingFitsIsSaid()
@@ -146,11 +147,13 @@ private slots:
                     const int maxError = random.bounded(0, 12);
                     const double rmse = maxError == 0 ? 0.0 : random.generateDouble() * maxError;
                     rows.push_back(objectRow(object, kMethods[random.bounded(kMethods.size())],
-                                             random.bounded(2) ? 1.0 : 0.25, 0.2 + random.generateDouble() * 4,
-                                             maxError, rmse, random.bounded(1, 5000)));
+                                             random.bounded(2) ? 1.0 : 0.25,
+                                             0.2 + random.generateDouble() * 4, maxError, rmse,
+                                             random.bounded(1, 5000)));
                 }
-            const ErrorBudget budget =
-                random.bounded(2) ? maxBudget(random.bounded(0, 8)) : psnrBudget(30 + random.generateDouble() * 25);
+            const ErrorBudget budget = random.bounded(2)
+                ? maxBudget(random.bounded(0, 8))
+                : psnrBudget(30 + random.generateDouble() * 25);
             const ObjectFit fit = fitObjects(rows, budget);
             const double best = bruteForceMs(rows, objects, budget);
             if (!fit.fits) {
@@ -164,7 +167,8 @@ private slots:
                 pick.push_back(c.row);
             const CombinedError e = combineObjectErrors(rows, pick);
             QVERIFY2(budget.accepts(e.maxError, e.psnr),
-                     qPrintable(QStringLiteral("trial %1: over budget: %2").arg(trial).arg(fit.summary)));
+                     qPrintable(
+                         QStringLiteral("trial %1: over budget: %2").arg(trial).arg(fit.summary)));
             QCOMPARE(e.maxError, fit.maxError);
             QVERIFY2(std::abs(fit.frameMs - best) < 1e-9,
                      qPrintable(QStringLiteral("trial %1: %2 ms, the cheapest is %3 ms")
