@@ -54,6 +54,24 @@ std::vector<std::uint8_t> highlightMask(const ReferenceImage &reference,
     return mask;
 }
 
+void setTiming(BenchRow &row, const FrameTiming &timing)
+{
+    row.frameMs = timing.wallMedianMs;
+    row.frameMsP90 = timing.wallP90Ms;
+    row.cpuSubmitMs = timing.cpuSubmitMedianMs;
+    row.gpuMs = timing.gpuMedianMs;
+    row.frames = timing.frames;
+}
+
+void setError(BenchRow &row, const BandComparison &comparison)
+{
+    row.psnr = comparison.error.psnr;
+    row.rmse = comparison.error.rmse;
+    row.maxError = comparison.error.maxError;
+    row.pixelsCompared = comparison.error.pixelsCompared;
+    row.coverageErrors = comparison.coverageErrors;
+}
+
 Scene withLights(Scene scene, int count)
 {
     scene.lights = lightsForCount(scene, count);
@@ -216,15 +234,8 @@ void BenchEngine::measureObjects(const BenchOptions &options, SceneRun &state, s
         row.object =
             QStringLiteral("%1: %2").arg(o).arg(QFileInfo(state.scene.objects[o].mesh).fileName());
         row.triangles = renderer.trianglesDrawn();
-        row.frameMs = timing.wallMedianMs;
-        row.frameMsP90 = timing.wallP90Ms;
-        row.cpuSubmitMs = timing.cpuSubmitMedianMs;
-        row.gpuMs = timing.gpuMedianMs;
-        row.psnr = error.error.psnr;
-        row.rmse = error.error.rmse;
-        row.maxError = error.error.maxError;
-        row.pixelsCompared = error.error.pixelsCompared;
-        row.coverageErrors = error.coverageErrors;
+        setTiming(row, timing);
+        setError(row, error);
         row.specularPixels = 0;
         row.specularPsnr = row.specularRmse = 0;
         row.specularMaxError = 0;
@@ -348,16 +359,8 @@ BenchRow BenchEngine::measureFrame(const BenchOptions &options, SceneRun &state,
     row.triangles = renderer.trianglesDrawn();
     row.lights = count;
     row.sceneLights = count == state.ownLights;
-    row.frameMs = timing.wallMedianMs;
-    row.frameMsP90 = timing.wallP90Ms;
-    row.cpuSubmitMs = timing.cpuSubmitMedianMs;
-    row.gpuMs = timing.gpuMedianMs;
-    row.frames = timing.frames;
-    row.psnr = all.error.psnr;
-    row.rmse = all.error.rmse;
-    row.maxError = all.error.maxError;
-    row.pixelsCompared = all.error.pixelsCompared;
-    row.coverageErrors = all.coverageErrors;
+    setTiming(row, timing);
+    setError(row, all);
     row.specularPsnr = highlight.error.psnr;
     row.specularRmse = highlight.error.rmse;
     row.specularMaxError = highlight.error.maxError;

@@ -25,36 +25,36 @@ int PathRun::overBudget() const
                              [](const PathFrame &f) { return f.overBudget; }));
 }
 
+namespace {
+
+template <typename T> T sumOver(const std::vector<PathFrame> &frames, T PathFrame::*field)
+{
+    T sum{};
+    for (const PathFrame &f : frames)
+        sum += f.*field;
+    return sum;
+}
+
+} // namespace
+
 qint64 PathRun::triangles() const
 {
-    qint64 sum = 0;
-    for (const PathFrame &f : frames)
-        sum += f.triangles;
-    return sum;
+    return sumOver(frames, &PathFrame::triangles);
 }
 
 qint64 PathRun::fullTriangles() const
 {
-    qint64 sum = 0;
-    for (const PathFrame &f : frames)
-        sum += f.fullTriangles;
-    return sum;
+    return sumOver(frames, &PathFrame::fullTriangles);
 }
 
 double PathRun::frameMs() const
 {
-    double sum = 0;
-    for (const PathFrame &f : frames)
-        sum += f.frameMs;
-    return sum;
+    return sumOver(frames, &PathFrame::frameMs);
 }
 
 double PathRun::fullFrameMs() const
 {
-    double sum = 0;
-    for (const PathFrame &f : frames)
-        sum += f.fullFrameMs;
-    return sum;
+    return sumOver(frames, &PathFrame::fullFrameMs);
 }
 
 PathBench::PathBench() = default;

@@ -12,6 +12,7 @@
 // Header-only on purpose: the fuzz build links it with libFuzzer, the unit
 // test with QtTest, and neither needs a library of its own.
 
+#include "core/CameraPath.h"
 #include "core/RecoveryJournal.h"
 #include "core/SceneJson.h"
 #include "core/UniformAnnotations.h"
@@ -47,8 +48,9 @@ struct Outcome {
 // and tests/data/fuzz/<name>.
 inline const QStringList &targetNames()
 {
-    static const QStringList names{"obj",       "ply",   "off",       "stl",      "om",
-                                   "meshcache", "scene", "shaderlog", "uniforms", "journal"};
+    static const QStringList names{"obj",      "ply",       "off",       "stl",
+                                   "om",       "meshcache", "scene",     "shaderlog",
+                                   "uniforms", "journal",   "camerapath"};
     return names;
 }
 
@@ -207,6 +209,25 @@ inline Outcome runJournal(const QByteArray &bytes)
     return {record.ok(), record.error()};
 }
 
+// A keyframe file of `phonglab bench --path`. What parses has at least two
+// cameras, every one finite.
+inline Outcome runCameraPath(const QByteArray &bytes)
+{
+    const Result<CameraPath> path = parseCameraPath(bytes, Camera(), QStringLiteral("fuzz"));
+    if (!path) {
+        if (path.error().isEmpty())
+            brokenPromise("camerapath", "a refused path without an error message");
+        return {false, path.error()};
+    }
+    if (path->cameras.size() < 2)
+        brokenPromise("camerapath", "a path of fewer than two frames");
+    for (const Camera &c : path->cameras)
+        if (!std::isfinite(c.eye.x + c.eye.y + c.eye.z + c.target.x + c.target.y + c.target.z
+                           + c.fovDeg))
+            brokenPromise("camerapath", "a camera that is not finite");
+    return {true, {}};
+}
+
 // Dispatch by target name (see targetNames()).
 inline Outcome run(std::string_view target, const QByteArray &bytes)
 {
@@ -222,6 +243,8 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
         return runUniforms(bytes);
     if (target == "journal")
         return runJournal(bytes);
+    if (target == "camerapath")
+        return runCameraPath(bytes);
     std::fprintf(stderr, "phonglab fuzz: unknown target %.*s\n", int(target.size()), target.data());
     std::abort();
 }
