@@ -37,6 +37,12 @@ template <typename T> T sumOver(const std::vector<PathFrame> &frames, T PathFram
 
 } // namespace
 
+int PathRun::fullOverBudget() const
+{
+    return int(std::count_if(frames.begin(), frames.end(),
+                             [](const PathFrame &f) { return f.fullOverBudget; }));
+}
+
 qint64 PathRun::triangles() const
 {
     return sumOver(frames, &PathFrame::triangles);
@@ -193,6 +199,11 @@ Result<PathRun> PathBench::run(const QString &scenePath, const QString &pathSpec
         frame.fullFrameMs =
             m_full->timeFrames(options.size, options.warmupFrames, options.frames).wallMedianMs;
         frame.fullTriangles = exact.trianglesDrawn();
+        const BandComparison fullError =
+            compareOutsideBand(toRgbImage(m_full->renderImage(options.size)), *reference,
+                               full.background, options.bandPx, &*compared);
+        frame.fullMaxError = fullError.error.maxError;
+        frame.fullOverBudget = !options.budget.accepts(frame.fullMaxError, fullError.error.psnr);
 
         m_auto->makeCurrent();
         fast.updateSceneParameters(withCamera(automatic, camera));
@@ -236,7 +247,8 @@ QString pathRunsToCsv(const std::vector<PathRun> &runs)
 {
     QString csv = QStringLiteral(
         "scene,path,frame,eye_x,eye_y,eye_z,distance,max_error,psnr,rmse,pixels_compared,"
-        "over_budget,frame_ms,full_frame_ms,triangles,full_triangles,lights_left_out,levels\n");
+        "over_budget,frame_ms,full_frame_ms,triangles,full_triangles,lights_left_out,levels,"
+        "full_max_error,full_over_budget\n");
     const auto num = [](double v) { return QString::number(v, 'g', 17); };
     for (const PathRun &run : runs)
         for (const PathFrame &f : run.frames)
@@ -257,7 +269,9 @@ QString pathRunsToCsv(const std::vector<PathRun> &runs)
                                QString::number(f.triangles),
                                QString::number(f.fullTriangles),
                                QString::number(f.lightsLeftOut),
-                               csvField(f.levels)}
+                               csvField(f.levels),
+                               QString::number(f.fullMaxError),
+                               f.fullOverBudget ? QStringLiteral("1") : QStringLiteral("0")}
                        .join(QLatin1Char(','))
                 + QLatin1Char('\n');
     return csv;

@@ -40,8 +40,10 @@ struct PathFrame {
     double rmse = 0.0;
     qint64 pixelsCompared = 0;
     bool overBudget = false;
-    double frameMs = 0.0;     // auto detail, lights left out
-    double fullFrameMs = 0.0; // full detail, every light
+    int fullMaxError = 0;        // the full-detail frame with every light, the same way
+    bool fullOverBudget = false; // over budget at full detail too: the method, not the model
+    double frameMs = 0.0;        // auto detail, lights left out
+    double fullFrameMs = 0.0;    // full detail, every light
     qint64 triangles = 0;
     qint64 fullTriangles = 0;
     int lightsLeftOut = 0;
@@ -54,7 +56,8 @@ struct PathRun {
     std::vector<PathFrame> frames;
 
     int overBudget() const;
-    qint64 triangles() const; // summed over the frames
+    int fullOverBudget() const; // frames over budget even at full detail
+    qint64 triangles() const;   // summed over the frames
     qint64 fullTriangles() const;
     double frameMs() const;
     double fullFrameMs() const;

@@ -10,6 +10,7 @@
 #include <QtCharts/QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace phonglab {
 
@@ -56,6 +57,9 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
     auto *x = new QValueAxis;
     x->setTitleText(QStringLiteral("frame along the path"));
     x->setRange(0.0, std::max(1.0, last));
+    x->setTickType(QValueAxis::TicksDynamic);
+    x->setTickAnchor(0.0);
+    x->setTickInterval(std::max(1.0, std::ceil(last / 12.0)));
     x->setLabelFormat(QStringLiteral("%d"));
     auto *errorAxis = new QValueAxis;
     errorAxis->setTitleText(QStringLiteral("max error, 8-bit steps"));
@@ -74,7 +78,12 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
         limit->attachAxis(errorAxis);
         top = std::max(top, double(budget.maxError));
     }
-    errorAxis->setRange(0.0, top + 1.0);
+    // Whole steps at whole ticks: "%d" on ticks between them would lie.
+    const double step = std::max(1.0, std::ceil((top + 1.0) / 8.0));
+    errorAxis->setRange(0.0, step * std::ceil((top + 1.0) / step));
+    errorAxis->setTickType(QValueAxis::TicksDynamic);
+    errorAxis->setTickAnchor(0.0);
+    errorAxis->setTickInterval(step);
     errorAxis->setLabelFormat(QStringLiteral("%d"));
     for (QLineSeries *s : {error, fast, full})
         s->attachAxis(x);

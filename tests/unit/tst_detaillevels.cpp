@@ -26,6 +26,10 @@ private slots:
         QTest::newRow("sphere") << QStringLiteral("builtin:sphere");
         QTest::newRow("tree") << sourcePath(QStringLiteral("assets/meshes/tree.obj"));
         QTest::newRow("cloud") << sourcePath(QStringLiteral("assets/meshes/cloud.obj"));
+        // Any other mesh's ladder, printed (e.g. the 1.3M-triangle icosphere
+        // of scripts/make-bench-mesh.sh): PHONGLAB_LEVELS_MESH=FILE.
+        if (const QString extra = qEnvironmentVariable("PHONGLAB_LEVELS_MESH"); !extra.isEmpty())
+            QTest::newRow("PHONGLAB_LEVELS_MESH") << extra;
     }
 
     void ladderHalvesAndStatesItsError()
