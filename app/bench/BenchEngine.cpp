@@ -78,10 +78,16 @@ Scene withLights(Scene scene, int count)
     return scene;
 }
 
+// Every object at one fixed detail and, with it, the method the row is
+// labelled with: an object's own "shading" or "detail": "auto" would draw
+// something else than the row says.
 Scene withDetail(Scene scene, double detail)
 {
-    for (SceneObject &object : scene.objects)
+    for (SceneObject &object : scene.objects) {
         object.detail = detail;
+        object.autoDetail = false;
+        object.shading.reset();
+    }
     return scene;
 }
 
@@ -258,7 +264,8 @@ Result<> BenchEngine::checkObjectFit(const BenchOptions &options, SceneRun &stat
         if (rows[i].sceneLights)
             sceneRows.push_back(rows[i]);
     ObjectFitCheck check{state.name, fitObjects(sceneRows, *options.objectFitBudget), std::nullopt};
-    if (check.fit.fits) {
+    // One choice per object, in object order (the rows come so), or nothing to draw.
+    if (check.fit.fits && check.fit.choices.size() == state.scene.objects.size()) {
         Scene combined = withLights(state.scene, state.ownLights);
         for (std::size_t o = 0; o < combined.objects.size(); ++o) {
             const BenchRow &row = sceneRows[std::size_t(check.fit.choices[o].row)];

@@ -21,6 +21,13 @@ glm::dvec3 rotate(const glm::dvec3 &v, const glm::dvec3 &axis, double angle)
         + axis * glm::dot(axis, v) * (1.0 - std::cos(angle));
 }
 
+// A camera a view matrix can be made from.
+bool viewable(const Camera &c)
+{
+    const glm::dvec3 view = c.eye - c.target;
+    return glm::length(view) > 0.0 && glm::length(glm::cross(view, c.up)) > 0.0;
+}
+
 Camera lerp(const Camera &a, const Camera &b, double t)
 {
     Camera c = a;
@@ -111,8 +118,7 @@ public:
                     return fail(path + QStringLiteral(".fov_deg: expected degrees in (0, 180)"));
                 c.fovDeg = fov.toDouble();
             }
-            if (glm::length(c.eye - c.target) <= 0.0
-                || glm::length(glm::cross(c.eye - c.target, c.up)) <= 0.0)
+            if (!viewable(c))
                 return fail(path
                             + QStringLiteral(": eye and target coincide, or up is along the view"));
             keys.push_back(c);
@@ -124,6 +130,14 @@ public:
             const double u = segments * double(i) / double(frames - 1);
             const std::size_t k = std::min(std::size_t(u), keys.size() - 2);
             out.cameras.push_back(lerp(keys[k], keys[k + 1], u - double(k)));
+            // Two good keyframes can still pass through a bad camera (eye
+            // and target swapping places, up turning over).
+            if (!viewable(out.cameras.back()))
+                return fail(QStringLiteral("frame %1, between keyframes[%2] and [%3]: eye and "
+                                           "target coincide, or up is along the view")
+                                .arg(i)
+                                .arg(k)
+                                .arg(k + 1));
         }
         return out;
     }
@@ -135,11 +149,15 @@ private:
         if (value.isUndefined())
             return true;
         const QJsonArray a = value.toArray();
+        // Far beyond any scene, and small enough that differences and
+        // squares of them stay finite.
+        constexpr double kLargest = 1e150;
         bool ok = value.isArray() && a.size() == 3;
         for (const QJsonValue &v : a)
-            ok = ok && v.isDouble() && std::isfinite(v.toDouble());
+            ok = ok && v.isDouble() && std::abs(v.toDouble()) <= kLargest;
         if (!ok) {
-            m_error = QStringLiteral("%1.%2: expected 3 numbers").arg(path, field);
+            m_error = QStringLiteral("%1.%2: expected 3 numbers, each at most 1e150 in size")
+                          .arg(path, field);
             return false;
         }
         out = {a.at(0).toDouble(), a.at(1).toDouble(), a.at(2).toDouble()};

@@ -44,6 +44,7 @@ void Renderer::cleanup()
     for (auto &[method, program] : m_objectPrograms)
         program.destroy();
     m_objectPrograms.clear();
+    m_failedMethods.clear();
     m_markerProgram.destroy();
     m_markerMesh.destroy();
     for (auto &mesh : m_meshes)
@@ -184,8 +185,12 @@ void Renderer::render(const QSize &pixelSize)
     glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     m_trianglesDrawn = 0;
-    if (!m_program.isValid() || pixelSize.isEmpty())
+    if (!m_program.isValid() || pixelSize.isEmpty()) {
+        m_drawn.assign(m_scene.objects.size(), ObjectDraw());
+        m_lightsLeftOut = 0;
+        m_leftOutBound = 0.0;
         return;
+    }
     applySceneUniforms();
 
     glEnable(GL_DEPTH_TEST);
@@ -244,8 +249,12 @@ ShaderProgram *Renderer::programFor(const SceneObject &object)
         return &m_program;
     ShaderProgram &own = m_objectPrograms[method];
     if (!own.isValid()) {
-        const BuildReport built = buildShipped(own, method);
+        // A shipped pair that did not build is not read and compiled again
+        // every frame; cleanup() forgets the failure.
+        const BuildReport built =
+            m_failedMethods.contains(method) ? BuildReport() : buildShipped(own, method);
         if (!built.ok) {
+            m_failedMethods.insert(method);
             m_drawError = QStringLiteral("%1: not drawn: the shipped %2 shaders did not build")
                               .arg(object.mesh, shadingName(method));
             return nullptr;

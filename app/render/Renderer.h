@@ -13,6 +13,7 @@
 #include <QSize>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace phonglab {
 
@@ -126,6 +127,7 @@ private:
     // Shipped programs of the methods objects have of their own ("shading"
     // in an "objects" entry), built on first use.
     std::map<ShadingMethod, ShaderProgram> m_objectPrograms;
+    std::set<ShadingMethod> m_failedMethods;
     ShaderProgram m_markerProgram;
     GpuMesh m_markerMesh;
     QHash<QString, std::shared_ptr<GpuMesh>> m_meshes; // by meshKey()

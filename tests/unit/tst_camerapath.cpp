@@ -89,6 +89,13 @@ private slots:
         QTest::newRow("fov") << QByteArray(
             R"({"keyframes": [{"eye": [0, 0, 4], "fov_deg": 180}, {"eye": [0, 1, 4]}]})")
                              << "keyframes[0].fov_deg:";
+        QTest::newRow("too large")
+            << QByteArray(R"({"keyframes": [{"eye": [0, 0, 1e300]}, {"eye": [0, 1, 4]}]})")
+            << "keyframes[0].eye: expected 3 numbers";
+        QTest::newRow("eye meets target between keyframes")
+            << QByteArray(R"({"frames": 3, "keyframes": [{"eye": [0, 0, 4], "target": [0, 0, -4]},
+                                                        {"eye": [0, 0, -4], "target": [0, 0, 4]}]})")
+            << "frame 1, between keyframes[0] and [1]: eye and target coincide";
         QTest::newRow("huge literal")
             << QByteArray(R"({"keyframes": [{"eye": [0, 0, 1e999]}, {"eye": [0, 1, 4]}]})")
             << "keyframes[0].eye: expected 3 numbers";
