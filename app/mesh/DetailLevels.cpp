@@ -82,15 +82,15 @@ std::vector<glm::dvec3> viewDirections(const glm::dvec3 &n)
 // in front of it. A ray that meets the level nowhere near counts as a
 // right angle (a hole); one whose full-mesh hit is elsewhere (another part
 // of the mesh in the way) is skipped.
-double normalDeviation(const MeshData &mesh, const MeshBvh &fullBvh,
+//
+// `scratch` holds the mesh's positions (all a MeshBvh reads besides the
+// indices), so the vertices are copied once for the ladder, not per level.
+double normalDeviation(const MeshData &mesh, const MeshBvh &fullBvh, MeshData &scratch,
                        const std::vector<std::uint32_t> &indices,
                        const std::vector<Sample> &samples, double reach)
 {
-    MeshData level;
-    level.positions = mesh.positions;
-    level.normals = mesh.normals;
-    level.indices = indices;
-    const MeshBvh bvh(level);
+    scratch.indices = indices;
+    const MeshBvh bvh(scratch);
     double worst = 0.0;
     for (const Sample &s : samples)
         for (const glm::dvec3 &towardsEye : viewDirections(s.normal)) {
@@ -121,6 +121,8 @@ DetailLevels buildDetailLevels(const MeshData &mesh, const std::function<bool(do
     out.levels.push_back({mesh.indices, 0.0, 0.0});
     const std::vector<Sample> samples = normalSamples(mesh);
     const MeshBvh fullBvh(mesh);
+    MeshData scratch;
+    scratch.positions = mesh.positions;
 
     // Work done is about proportional to the triangles simplified; the
     // levels halve, so the whole ladder costs about twice the first step.
@@ -146,8 +148,9 @@ DetailLevels buildDetailLevels(const MeshData &mesh, const std::function<bool(do
         // Far enough to find the level from any sample, near enough not to
         // reach across the mesh: a few times the level's own error.
         const double reach = std::max(4.0 * error, 0.01 * scale);
-        const double deviation = std::max(
-            previous.normalDeviation, normalDeviation(mesh, fullBvh, simplified, samples, reach));
+        const double deviation =
+            std::max(previous.normalDeviation,
+                     normalDeviation(mesh, fullBvh, scratch, simplified, samples, reach));
         out.levels.push_back({std::move(simplified), error, deviation});
     }
     return out;

@@ -287,7 +287,7 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
             bound = program;
             // A program that reads a face centroid (flat.vert) is drawn from
             // the meshes' face layouts, whoever wrote it.
-            perFace = glGetAttribLocation(program->id(), "facePoint") >= 0;
+            perFace = program->readsFacePoint();
         }
         const MeshStats &stats = m_meshInfo.value(key).stats;
         const int level = chooseLevel(i, object, *mesh, stats, pixelSize.height());

@@ -103,6 +103,8 @@ void ShaderProgram::adopt(GlProgram program)
     ensureInitialized();
     destroy();
     m_program = std::move(program);
+    // Asked once per program, not every frame (Renderer::drawObjects).
+    m_readsFacePoint = m_program && glGetAttribLocation(m_program.id(), "facePoint") >= 0;
 }
 
 void ShaderProgram::readValue(GLint location, UniformValue &value)
@@ -213,6 +215,7 @@ void ShaderProgram::destroy()
 {
     m_program.reset();
     m_locations.clear();
+    m_readsFacePoint = false;
 }
 
 void ShaderProgram::bind()

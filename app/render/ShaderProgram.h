@@ -43,6 +43,9 @@ public:
 
     bool isValid() const { return bool(m_program); }
     GLuint id() const { return m_program.id(); }
+    // Whether the program reads a `facePoint` attribute (flat.vert): it is
+    // drawn from the meshes' face layouts then.
+    bool readsFacePoint() const { return m_readsFacePoint; }
     void bind();
 
     GLint uniformLocation(const char *name);
@@ -60,6 +63,7 @@ private:
 
     bool m_initialized = false;
     GlProgram m_program;
+    bool m_readsFacePoint = false;
     QHash<QByteArray, GLint> m_locations;
 };
 
