@@ -13,15 +13,16 @@
 cmake_minimum_required(VERSION 3.16)
 get_filename_component(root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
+set(allowed_headless headless)
 set(allowed_core   core)
 set(allowed_mesh   core mesh)
-set(allowed_render core mesh render)
+set(allowed_render headless core mesh render)
 set(allowed_bench  core mesh render bench)
 set(allowed_charts core mesh render bench charts)
 set(allowed_ui     core mesh render bench charts ui)
 set(allowed_cli    core mesh render bench cli)
 set(allowed_benchcli core mesh render bench charts cli benchcli)
-set(layers core mesh render bench charts ui cli benchcli)
+set(layers headless core mesh render bench charts ui cli benchcli)
 
 if(NOT QT_CORE_INCLUDE_DIR)
   file(GLOB QT_CORE_INCLUDE_DIR /usr/include/*/qt6/QtCore /usr/include/qt6/QtCore)
@@ -31,7 +32,7 @@ set(qt_core_only core mesh)
 # Only charts, ui and benchcli may draw with widgets (Qt Widgets, Qt Charts).
 get_filename_component(qt_include_root "${QT_CORE_INCLUDE_DIR}" DIRECTORY)
 set(widget_modules QtWidgets QtCharts QtOpenGLWidgets)
-set(no_widgets core mesh render bench cli)
+set(no_widgets headless core mesh render bench cli)
 if(NOT EXISTS "${qt_include_root}/QtWidgets")
   message(FATAL_ERROR "Qt Widgets' headers are not at ${qt_include_root}/QtWidgets: "
                       "cannot tell a widget header (pass -DQT_CORE_INCLUDE_DIR=...)")

@@ -5,6 +5,7 @@
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
+#include "headless/HeadlessPlatform.h"
 
 #include <QString>
 
@@ -55,8 +56,12 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
     }
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
         for (const Subcommand &c : commands)
-            if (first == QLatin1String(c.name))
+            if (first == QLatin1String(c.name)) {
+                // Commands draw only into framebuffer objects: without a
+                // display server they render through EGL.
+                useHeadlessPlatformWithoutDisplay();
                 return c.run(argc, argv);
+            }
     if (first == QLatin1String("__import-mesh")) // internal, not in --help
         return runImportMesh(argc, argv);
     if (first.startsWith(QLatin1Char('-'))) {

@@ -1,13 +1,34 @@
 #include "OffscreenRenderer.h"
 
 #include "GlFormat.h"
+#include "headless/HeadlessPlatform.h"
 
 #include <QElapsedTimer>
+#include <QGuiApplication>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
 #include <QOpenGLTimerQuery>
 
 namespace phonglab {
+
+namespace {
+
+// Names what is missing: the EGL platform's own reason without a display
+// server, else the display's driver.
+QString noContextMessage()
+{
+    if (runsHeadless())
+        return QStringLiteral("no OpenGL context could be created without a display server: %1. "
+                              "PhongLab renders through EGL there (Mesa: packages libegl1 and "
+                              "libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)")
+            .arg(headlessGlProblem());
+    return QStringLiteral("no OpenGL context could be created on the %1 platform (DISPLAY=%2): "
+                          "no driver for it? Without a display server PhongLab renders through "
+                          "EGL (unset DISPLAY)")
+        .arg(QGuiApplication::platformName(), qEnvironmentVariable("DISPLAY"));
+}
+
+} // namespace
 
 OffscreenRenderer::OffscreenRenderer() = default;
 
@@ -23,8 +44,7 @@ Result<> OffscreenRenderer::create()
     m_context->setFormat(format);
     if (!m_context->create()) {
         m_context.reset();
-        return fail(QStringLiteral("no OpenGL context could be created (no display or driver; "
-                                   "run under an X server, e.g. `xvfb-run -a phonglab ...`)"));
+        return fail(noContextMessage());
     }
     const QSurfaceFormat got = m_context->format();
     if (got.version() < qMakePair(3, 3)) {

@@ -1,0 +1,140 @@
+#include "HeadlessIntegration.h"
+
+#include "HeadlessBackingStore.h"
+#include "HeadlessGlContext.h"
+#include "HeadlessOffscreenSurface.h"
+#include "HeadlessScreen.h"
+
+#include <QFont>
+#include <QOpenGLContext>
+#include <QtGui/private/qgenericunixeventdispatcher_p.h>
+#include <QtGui/private/qgenericunixfontdatabase_p.h>
+#include <qpa/qplatformtheme.h>
+#include <qpa/qplatformwindow.h>
+#include <qpa/qwindowsysteminterface.h>
+
+namespace phonglab::headless {
+
+namespace {
+
+HeadlessIntegration *g_instance = nullptr;
+
+const QString kThemeName = QStringLiteral("phonglab-headless");
+
+// Fusion and the usual fonts: widgets drawn into images (the bench's charts)
+// look as they do on a desktop without its platform theme.
+class HeadlessTheme : public QPlatformTheme
+{
+public:
+    QVariant themeHint(ThemeHint hint) const override
+    {
+        if (hint == StyleNames)
+            return QStringList{QStringLiteral("Fusion")};
+        return QPlatformTheme::themeHint(hint);
+    }
+    const QFont *font(Font type) const override
+    {
+        static const QFont system(QStringLiteral("Sans Serif"), 9);
+        static const QFont fixed(QStringLiteral("monospace"), 9);
+        if (type == SystemFont)
+            return &system;
+        if (type == FixedFont)
+            return &fixed;
+        return nullptr;
+    }
+};
+
+} // namespace
+
+HeadlessIntegration::HeadlessIntegration()
+    : m_egl(openHeadlessEglDisplay()), m_fontDatabase(new QGenericUnixFontDatabase)
+{
+    g_instance = this;
+    m_screen = new HeadlessScreen;
+    QWindowSystemInterface::handleScreenAdded(m_screen); // Qt owns it from here
+}
+
+HeadlessIntegration::~HeadlessIntegration()
+{
+    QWindowSystemInterface::handleScreenRemoved(m_screen);
+    if (m_egl.display != EGL_NO_DISPLAY)
+        eglTerminate(m_egl.display);
+    g_instance = nullptr;
+}
+
+HeadlessIntegration *HeadlessIntegration::instance()
+{
+    return g_instance;
+}
+
+QString HeadlessIntegration::problem() const
+{
+    if (m_egl.display == EGL_NO_DISPLAY)
+        return m_egl.problem;
+    return m_contextProblem;
+}
+
+bool HeadlessIntegration::hasCapability(Capability cap) const
+{
+    switch (cap) {
+    case OpenGL:
+    case ThreadedOpenGL:
+    case ThreadedPixmaps:
+    case MultipleWindows:
+        return true;
+    case RhiBasedRendering:
+        return false;
+    default:
+        return QPlatformIntegration::hasCapability(cap);
+    }
+}
+
+QPlatformWindow *HeadlessIntegration::createPlatformWindow(QWindow *window) const
+{
+    return new QPlatformWindow(window);
+}
+
+QPlatformBackingStore *HeadlessIntegration::createPlatformBackingStore(QWindow *window) const
+{
+    return new HeadlessBackingStore(window);
+}
+
+QPlatformOpenGLContext *HeadlessIntegration::createPlatformOpenGLContext(
+    QOpenGLContext *context) const
+{
+    if (m_egl.display == EGL_NO_DISPLAY)
+        return nullptr;
+    auto *share = context->shareHandle() ? static_cast<HeadlessGlContext *>(context->shareHandle())
+                                         : nullptr;
+    auto *glContext = new HeadlessGlContext(m_egl.display, context->format(), share);
+    m_contextProblem = glContext->problem();
+    return glContext;
+}
+
+QPlatformOffscreenSurface *HeadlessIntegration::createPlatformOffscreenSurface(
+    QOffscreenSurface *surface) const
+{
+    return new HeadlessOffscreenSurface(surface);
+}
+
+QAbstractEventDispatcher *HeadlessIntegration::createEventDispatcher() const
+{
+    return createUnixEventDispatcher();
+}
+
+QPlatformFontDatabase *HeadlessIntegration::fontDatabase() const
+{
+    return m_fontDatabase.data();
+}
+
+QStringList HeadlessIntegration::themeNames() const
+{
+    return {kThemeName};
+}
+
+QPlatformTheme *HeadlessIntegration::createPlatformTheme(const QString &name) const
+{
+    return name == kThemeName ? new HeadlessTheme : nullptr;
+}
+
+} // namespace phonglab::headless

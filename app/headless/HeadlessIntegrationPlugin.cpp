@@ -1,0 +1,14 @@
+#include "HeadlessIntegrationPlugin.h"
+
+#include "HeadlessIntegration.h"
+
+namespace phonglab::headless {
+
+QPlatformIntegration *HeadlessIntegrationPlugin::create(const QString &key, const QStringList &)
+{
+    if (key.compare(QLatin1String("phonglab-headless"), Qt::CaseInsensitive) != 0)
+        return nullptr;
+    return new HeadlessIntegration;
+}
+
+} // namespace phonglab::headless
