@@ -5,10 +5,11 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
-  qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
+  qt6-base-dev qt6-base-dev-tools qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-qpa-plugins libqscintilla2-qt6-dev
   libglm-dev libopenmesh-dev
-  libgl-dev libgl1-mesa-dri libegl-mesa0
+  libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0   # EGL: rendering with no display server
+  desktop-file-utils appstream shared-mime-info libglib2.0-bin # validate the desktop files (tests/install)
   xvfb xauth
   libtinyobjloader-dev libassimp-dev libmeshoptimizer-dev
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)

@@ -8,6 +8,26 @@ namespace phonglab {
 
 namespace {
 
+// The folder of the running executable, with or without a Q*Application.
+QString executableDir()
+{
+    if (QCoreApplication::instance())
+        return QCoreApplication::applicationDirPath();
+    return QFileInfo(QStringLiteral("/proc/self/exe")).canonicalFilePath().section(QLatin1Char('/'),
+                                                                                  0, -2);
+}
+
+// Only an executable of the build tree may read the source tree it was built
+// from: an installed one, wherever its prefix was moved, finds its files
+// beside itself and never a path of the machine that built it.
+bool runsFromBuildTree(const QString &exeDir)
+{
+    const QString buildDir = QFileInfo(QStringLiteral(PHONGLAB_BUILD_DIR)).canonicalFilePath();
+    const QString dir = QFileInfo(exeDir).canonicalFilePath();
+    return !buildDir.isEmpty()
+           && (dir == buildDir || dir.startsWith(buildDir + QLatin1Char('/')));
+}
+
 // The search order, first match wins.
 QStringList searchFolders(const char *envVar, const QString &folder, const char *sourceDir)
 {
@@ -15,12 +35,12 @@ QStringList searchFolders(const char *envVar, const QString &folder, const char 
     const QString fromEnv = qEnvironmentVariable(envVar);
     if (!fromEnv.isEmpty())
         dirs << fromEnv;
-    if (QCoreApplication::instance()) {
-        const QString appDir = QCoreApplication::applicationDirPath();
-        dirs << appDir + QLatin1Char('/') + folder << appDir + QStringLiteral("/../") + folder
-             << appDir + QStringLiteral("/../share/phonglab/") + folder;
-    }
-    dirs << QString::fromUtf8(sourceDir);
+    const QString exeDir = executableDir();
+    if (!exeDir.isEmpty())
+        dirs << exeDir + QLatin1Char('/') + folder << exeDir + QStringLiteral("/../") + folder
+             << exeDir + QStringLiteral("/../share/phonglab/") + folder;
+    if (exeDir.isEmpty() || runsFromBuildTree(exeDir))
+        dirs << QString::fromUtf8(sourceDir);
     return dirs;
 }
 

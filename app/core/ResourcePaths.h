@@ -11,7 +11,9 @@ namespace phonglab {
 // so editing shaders/ takes effect without a rebuild; the copies embedded in
 // the binary (":/shaders/...", ":/assets/...") are the fallback.
 // Search order: $PHONGLAB_SHADER_DIR / $PHONGLAB_ASSET_DIR, next to the
-// executable, ../share/phonglab beside it, the source tree it was built from.
+// executable, ../share/phonglab beside it (an installed prefix, wherever it
+// was moved), and, for executables of the build tree only, the source tree
+// they were built from.
 QString shaderPath(const QString &fileName);
 // The shader a shading method ships for `stage` ("phong.frag", ...): the one
 // place that names the shipped files.

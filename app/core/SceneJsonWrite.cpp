@@ -109,6 +109,9 @@ QByteArray sceneToJson(const Scene &scene)
         lights.append(lightJson(light));
     root.insert(QStringLiteral("lights"), lights);
     root.insert(QStringLiteral("format"), kSceneFormat);
+    // What desktops recognise a PhongLab scene by (the shared-MIME magic of
+    // packaging/org.phonglab.PhongLab.mime.xml), among other JSON files.
+    root.insert(QStringLiteral("generator"), QStringLiteral("PhongLab " PHONGLAB_VERSION));
     root.insert(QStringLiteral("shading"), shadingName(scene.shading));
     root.insert(QStringLiteral("background"), vec3Json(scene.background));
     if (!scene.uniforms.empty())
