@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The package on a fresh Debian 12: debootstrap a minimal bookworm into a
+# folder, `apt-get install ./phonglab_*.deb` there, and show that
+#   - the desktop lists PhongLab (GIO names it for PhongLab scenes and
+#     meshes) and its menu entry launches the editor window (under Xvfb);
+#   - `phonglab check` and `render` work with no X server, as over SSH.
+#
+#   scripts/package-check.sh [DEB]      (default: build/phonglab_*.deb from
+#                                        scripts/package.sh; needs root and
+#                                        Debian's mirror; ~10 minutes)
+# The chroot stays in $PHONGLAB_CHROOT (default /tmp/phonglab-bookworm) for
+# reuse; delete it for a fresh start.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+deb="$(realpath "${1:-$(ls build/phonglab_*.deb | head -n 1)}")"
+root="${PHONGLAB_CHROOT:-/tmp/phonglab-bookworm}"
+[ "$(id -u)" -eq 0 ] || { echo "package-check: needs root (debootstrap, chroot)" >&2; exit 1; }
+command -v debootstrap >/dev/null \
+  || DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap
+
+if [ ! -x "$root/usr/bin/apt-get" ]; then
+  echo "package-check: debootstrap bookworm into $root"
+  debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >/dev/null
+fi
+mounted=()
+cleanup() { for m in "${mounted[@]}"; do umount -l "$m" 2>/dev/null || true; done; }
+trap cleanup EXIT
+for m in proc sys dev; do
+  mountpoint -q "$root/$m" || { mount --rbind "/$m" "$root/$m"; mounted+=("$root/$m"); }
+done
+cp "$deb" "$root/tmp/"
+in_root() { chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
+  DEBIAN_FRONTEND=noninteractive "$@"; }
+
+echo "package-check: apt-get install ./$(basename "$deb")"
+in_root apt-get update -qq
+in_root apt-get install -y -qq "/tmp/$(basename "$deb")" >/dev/null
+# What a desktop brings: its application and MIME databases, an X server.
+in_root apt-get install -y -qq desktop-file-utils shared-mime-info libglib2.0-bin \
+  xvfb xauth x11-utils >/dev/null
+in_root phonglab --version
+
+echo "package-check: the desktop's application list"
+in_root gio mime application/vnd.phonglab.scene+json | tee /tmp/phonglab-gio.txt
+grep -q "org.phonglab.PhongLab.desktop" /tmp/phonglab-gio.txt \
+  || { echo "FAIL: GIO lists no PhongLab for its scenes"; exit 1; }
+in_root gio mime model/obj | grep -q "org.phonglab.PhongLab.desktop" \
+  || { echo "FAIL: GIO lists no PhongLab for OBJ meshes"; exit 1; }
+
+echo "package-check: no X server, as over SSH"
+in_root sh -c 'cd /tmp && phonglab check /usr/share/phonglab/assets/scenes/check.json --size 320x240 \
+  && phonglab render /usr/share/phonglab/assets/scenes/default.json -o /tmp/default.png \
+  && test -s /tmp/default.png && echo "render: /tmp/default.png"'
+
+echo "package-check: launch from the menu entry (gio launch, under Xvfb)"
+in_root xvfb-run -a -s "-screen 0 1600x1000x24" sh -c '
+  gio launch /usr/share/applications/org.phonglab.PhongLab.desktop &
+  for i in $(seq 1 60); do
+    if xwininfo -root -tree | grep -q "PhongLab"; then
+      xwininfo -root -tree | grep "PhongLab" | head -n 1
+      pkill -f /usr/bin/phonglab; exit 0
+    fi
+    sleep 1
+  done
+  echo "FAIL: no PhongLab window within 60 s"; pkill -f /usr/bin/phonglab; exit 1'
+echo "PASS: installed on a fresh Debian 12, listed by the desktop, launched from its menu entry, checked with no X server"
