@@ -55,12 +55,14 @@ in_root sh -c 'cd /tmp && phonglab check /usr/share/phonglab/assets/scenes/check
 echo "package-check: launch from the menu entry (gio launch, under Xvfb)"
 in_root xvfb-run -a -s "-screen 0 1600x1000x24" sh -c '
   gio launch /usr/share/applications/org.phonglab.PhongLab.desktop &
+  # The editor window: titled PhongLab and larger than Qt'"'"'s 1x1 helpers.
+  window() { xwininfo -root -tree | grep "PhongLab" | awk '"'"'match($0, / [0-9]+x[0-9]+\+/) {
+    split(substr($0, RSTART + 1, RLENGTH - 2), size, "x"); if (size[1] >= 400) { print; exit } }'"'"'; }
   for i in $(seq 1 60); do
-    if xwininfo -root -tree | grep -q "PhongLab"; then
-      xwininfo -root -tree | grep "PhongLab" | head -n 1
-      pkill -f /usr/bin/phonglab; exit 0
-    fi
+    found="$(window)"
+    if [ -n "$found" ]; then echo "window: $found"; pkill -x phonglab; exit 0; fi
     sleep 1
   done
-  echo "FAIL: no PhongLab window within 60 s"; pkill -f /usr/bin/phonglab; exit 1'
+  xwininfo -root -tree | grep -i phonglab
+  echo "FAIL: no PhongLab window within 60 s"; pkill -x phonglab; exit 1'
 echo "PASS: installed on a fresh Debian 12, listed by the desktop, launched from its menu entry, checked with no X server"
