@@ -38,7 +38,11 @@ in_root apt-get install -y -qq "/tmp/$(basename "$deb")" >/dev/null
 # What a desktop brings: its application and MIME databases, an X server.
 in_root apt-get install -y -qq desktop-file-utils shared-mime-info libglib2.0-bin \
   xvfb xauth x11-utils >/dev/null
-in_root phonglab --version
+# --version names the package's version.
+got="$(in_root phonglab --version)"
+want="phonglab $(dpkg-deb --field "$deb" Version)"
+[ "$got" = "$want" ] || { echo "FAIL: --version says '$got', the package is '$want'"; exit 1; }
+echo "$got"
 
 echo "package-check: the desktop's application list"
 in_root gio mime application/vnd.phonglab.scene+json | tee /tmp/phonglab-gio.txt
