@@ -17,7 +17,7 @@ public:
         if (m_image.size() != size)
             m_image = QImage(size, QImage::Format_ARGB32_Premultiplied);
     }
-    void flush(QWindow *, const QRegion &, const QPoint &) override {}
+    void flush(QWindow *, const QRegion &, const QPoint &) override { }
     QImage toImage() const override { return m_image; }
 
 private:

@@ -38,8 +38,8 @@ EGLDisplay openDevicePlatform(QString *problem)
         *problem = QStringLiteral("EGL_EXT_platform_device is not offered");
         return EGL_NO_DISPLAY;
     }
-    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(
-        eglGetProcAddress("eglQueryDevicesEXT"));
+    auto queryDevices =
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (!queryDevices) {
         *problem = QStringLiteral("eglQueryDevicesEXT is missing");
         return EGL_NO_DISPLAY;
@@ -77,8 +77,8 @@ EGLDisplay openSurfacelessPlatform(QString *problem)
     EGLDisplay display =
         eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display == EGL_NO_DISPLAY) {
-        *problem = QStringLiteral("eglGetPlatformDisplay failed (%1)")
-                       .arg(eglErrorName(eglGetError()));
+        *problem =
+            QStringLiteral("eglGetPlatformDisplay failed (%1)").arg(eglErrorName(eglGetError()));
         return EGL_NO_DISPLAY;
     }
     return initialize(display, problem) ? display : EGL_NO_DISPLAY;
@@ -90,12 +90,13 @@ EglDisplayChoice openHeadlessEglDisplay()
 {
     // Without client extensions there is no EGL 1.5 loader at all.
     if (!eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS))
-        return {EGL_NO_DISPLAY, {}, {},
+        return {EGL_NO_DISPLAY,
+                {},
+                {},
                 QStringLiteral("no EGL 1.5 client library with platform extensions "
                                "(packages libegl1 and libegl-mesa0)")};
     const QByteArray wanted = qgetenv("PHONGLAB_EGL_PLATFORM");
-    struct Platform
-    {
+    struct Platform {
         const char *name;
         EGLDisplay (*open)(QString *);
     };
@@ -109,8 +110,10 @@ EglDisplayChoice openHeadlessEglDisplay()
         const EGLDisplay display = platform.open(&why);
         if (display != EGL_NO_DISPLAY) {
             const char *vendor = eglQueryString(display, EGL_VENDOR);
-            return {display, QString::fromLatin1(platform.name),
-                    QString::fromLatin1(vendor ? vendor : "unknown vendor"), {}};
+            return {display,
+                    QString::fromLatin1(platform.name),
+                    QString::fromLatin1(vendor ? vendor : "unknown vendor"),
+                    {}};
         }
         failures << QStringLiteral("%1 platform: %2").arg(QLatin1String(platform.name), why);
     }

@@ -9,8 +9,7 @@ namespace phonglab::headless {
 // (a GPU, or Mesa's software device) or Mesa's surfaceless platform. Either
 // draws only into framebuffer objects, which is all the headless commands
 // need.
-struct EglDisplayChoice
-{
+struct EglDisplayChoice {
     EGLDisplay display = EGL_NO_DISPLAY;
     QString platform; // "device", "surfaceless"
     QString renderer; // what the platform named, for messages

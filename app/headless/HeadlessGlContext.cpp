@@ -19,8 +19,7 @@ constexpr int kGlCoreProfileBit = 0x1;
 using GetIntegerv = void (*)(unsigned, int *);
 
 // The context current on this thread, put back after a temporary switch.
-struct CurrentEgl
-{
+struct CurrentEgl {
     EGLDisplay display = eglGetCurrentDisplay();
     EGLContext context = eglGetCurrentContext();
     EGLSurface draw = eglGetCurrentSurface(EGL_DRAW);
@@ -39,7 +38,8 @@ struct CurrentEgl
 
 HeadlessGlContext::HeadlessGlContext(EGLDisplay display, const QSurfaceFormat &requested,
                                      HeadlessGlContext *shareWith)
-    : m_display(display), m_format(requested)
+    : m_display(display)
+    , m_format(requested)
 {
     eglBindAPI(EGL_OPENGL_API);
     m_config = chooseConfig();
@@ -110,8 +110,9 @@ void HeadlessGlContext::readActualFormat()
             m_format.setVersion(major, minor);
         if (m_format.version() >= qMakePair(3, 2)) {
             getIntegerv(kGlContextProfileMask, &profile);
-            m_format.setProfile((profile & kGlCoreProfileBit) ? QSurfaceFormat::CoreProfile
-                                                               : QSurfaceFormat::CompatibilityProfile);
+            m_format.setProfile((profile & kGlCoreProfileBit)
+                                    ? QSurfaceFormat::CoreProfile
+                                    : QSurfaceFormat::CompatibilityProfile);
         }
     }
     m_format.setRenderableType(QSurfaceFormat::OpenGL);

@@ -18,7 +18,7 @@ public:
     ~HeadlessGlContext() override;
 
     QSurfaceFormat format() const override { return m_format; }
-    void swapBuffers(QPlatformSurface *) override {} // nothing is presented
+    void swapBuffers(QPlatformSurface *) override { } // nothing is presented
     bool makeCurrent(QPlatformSurface *surface) override;
     void doneCurrent() override;
     bool isSharing() const override { return m_shared; }

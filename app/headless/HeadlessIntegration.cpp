@@ -47,7 +47,8 @@ public:
 } // namespace
 
 HeadlessIntegration::HeadlessIntegration()
-    : m_egl(openHeadlessEglDisplay()), m_fontDatabase(new QGenericUnixFontDatabase)
+    : m_egl(openHeadlessEglDisplay())
+    , m_fontDatabase(new QGenericUnixFontDatabase)
 {
     g_instance = this;
     m_screen = new HeadlessScreen;
@@ -80,12 +81,9 @@ bool HeadlessIntegration::hasCapability(Capability cap) const
     case OpenGL:
     case ThreadedOpenGL:
     case ThreadedPixmaps:
-    case MultipleWindows:
-        return true;
-    case RhiBasedRendering:
-        return false;
-    default:
-        return QPlatformIntegration::hasCapability(cap);
+    case MultipleWindows: return true;
+    case RhiBasedRendering: return false;
+    default: return QPlatformIntegration::hasCapability(cap);
     }
 }
 
@@ -104,8 +102,8 @@ QPlatformOpenGLContext *HeadlessIntegration::createPlatformOpenGLContext(
 {
     if (m_egl.display == EGL_NO_DISPLAY)
         return nullptr;
-    auto *share = context->shareHandle() ? static_cast<HeadlessGlContext *>(context->shareHandle())
-                                         : nullptr;
+    auto *share =
+        context->shareHandle() ? static_cast<HeadlessGlContext *>(context->shareHandle()) : nullptr;
     auto *glContext = new HeadlessGlContext(m_egl.display, context->format(), share);
     m_contextProblem = glContext->problem();
     return glContext;

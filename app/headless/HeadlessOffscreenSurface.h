@@ -10,7 +10,8 @@ class HeadlessOffscreenSurface : public QPlatformOffscreenSurface
 {
 public:
     explicit HeadlessOffscreenSurface(QOffscreenSurface *surface)
-        : QPlatformOffscreenSurface(surface), m_format(surface->requestedFormat())
+        : QPlatformOffscreenSurface(surface)
+        , m_format(surface->requestedFormat())
     {
     }
     QSurfaceFormat format() const override { return m_format; }

@@ -1,5 +1,6 @@
 #include "FileMenu.h"
 
+#include "ExamplesMenu.h"
 #include "FileTypes.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
@@ -35,6 +36,9 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
             [this](const QString &path) { openOrExplain({path}); });
     connect(m_recentFiles, &RecentFiles::missingFileChosen, this,
             &FileMenu::explainMissingRecentFile);
+    auto *examples = new ExamplesMenu(menu->addMenu(tr("E&xamples")), this);
+    connect(examples, &ExamplesMenu::sceneChosen, this,
+            [this](const QString &path) { openOrExplain({path}); });
     menu->addSeparator();
     QAction *save = menu->addAction(tr("&Save Scene"), this, &FileMenu::saveToCurrentFile);
     save->setShortcut(QKeySequence::Save);

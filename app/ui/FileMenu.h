@@ -10,8 +10,8 @@ class MainWindow;
 class RecentFiles;
 
 // The File menu: the dialogs in front of MainWindow's open, save and export
-// (which work without them, for tests and start-up), the recent files, and
-// what each says when it fails.
+// (which work without them, for tests and start-up), the recent files, the
+// shipped example scenes (ExamplesMenu), and what each says when it fails.
 class FileMenu : public QObject
 {
     Q_OBJECT

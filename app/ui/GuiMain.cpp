@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QIcon>
 #include <QMessageBox>
 #include <QSurfaceFormat>
 #include <cstdio>
@@ -16,6 +17,10 @@ namespace {
 
 constexpr int kExitFailure = 1;
 constexpr int kViewportSamples = 4;
+// Said instead of Qt's abort when there is nowhere to open the window.
+constexpr char kNoDisplayMessage[] =
+    "phonglab: the editor window needs a display (X11 or Wayland), and DISPLAY is not set.\n"
+    "The commands render, check, mesh-info and bench run without one (phonglab --help).\n";
 
 void printError(const QString &message)
 {
@@ -67,14 +72,16 @@ bool openDefaultScene(MainWindow &window)
     return false;
 }
 
-// The file named on the command line (a scene or a mesh) then loads in the
-// background like any opened file; a load failing reports itself.
-void openRequestedFile(MainWindow &window, const QString &path)
+// The files named on the command line (a scene, or meshes: what a desktop
+// passes for its entry's %F) then load in the background like any opened
+// files; a load failing reports itself.
+void openRequestedFiles(MainWindow &window, const QStringList &paths)
 {
-    if (const Result<> opened = window.openFiles({path}); !opened)
-        QMessageBox::warning(&window, QObject::tr("Cannot open"),
-                             QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
-                                 .arg(QDir::toNativeSeparators(path), opened.error()));
+    if (const Result<> opened = window.openFiles(paths); !opened)
+        QMessageBox::warning(
+            &window, QObject::tr("Cannot open"),
+            QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
+                .arg(QDir::toNativeSeparators(paths.join(QLatin1Char('\n'))), opened.error()));
 }
 
 } // namespace
@@ -82,10 +89,7 @@ void openRequestedFile(MainWindow &window, const QString &path)
 int runGui(int argc, char **argv)
 {
     if (!displayConfigured()) {
-        printError(
-            QStringLiteral("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is "
-                           "set); run it inside a desktop session or under xvfb-run, or use "
-                           "'phonglab render' to render without a window"));
+        std::fputs(kNoDisplayMessage, stderr);
         return kExitFailure;
     }
     // Must precede QApplication: the global share context is created with it.
@@ -102,14 +106,23 @@ int runGui(int argc, char **argv)
     }
     QApplication::setApplicationName(QStringLiteral("PhongLab"));
     QApplication::setOrganizationName(QStringLiteral("PhongLab"));
+    // The project's version, as `phonglab --version` prints it (About).
+    QApplication::setApplicationVersion(QStringLiteral(PHONGLAB_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/packaging/org.phonglab.PhongLab.svg")));
+    // Docks and task bars (Wayland's app id, X11's WM_CLASS) match the
+    // window to the installed .desktop file, and so to its icon, by this.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.phonglab.PhongLab"));
 
     MainWindow window;
     window.restoreWindowSettings(); // geometry and docks as the last session left them
     if (!openDefaultScene(window))
         return kExitFailure;
     window.show();
-    if (argc > 1)
-        openRequestedFile(window, QString::fromLocal8Bit(argv[1]));
+    QStringList paths;
+    for (int i = 1; i < argc; ++i)
+        paths << QString::fromLocal8Bit(argv[i]);
+    if (!paths.isEmpty())
+        openRequestedFiles(window, paths);
     return app.exec();
 }
 

@@ -4,6 +4,7 @@
 #include "FileMenu.h"
 #include "FileTypes.h"
 #include "FrameStatsLabel.h"
+#include "HelpMenu.h"
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
@@ -74,6 +75,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     // widgets, where a long diagnosis pushes nothing else out of sight.
     m_liveCheck = new LiveCheck(this, m_viewport, m_liveShaders);
     createViewMenu();
+    new HelpMenu(this, menuBar()->addMenu(tr("&Help"))); // last: after every other menu
     createStatusBar();
     connectLoading();
     m_liveCheck->pauseWhileLoading(m_loadJob);

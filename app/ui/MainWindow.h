@@ -31,11 +31,11 @@ class Viewport;
 
 // The editor window: the Viewport in the middle, the Shaders dock (live
 // editing: LiveShaderController) tabbed with the Scene dock on the right,
-// the menus (File: FileMenu, with the dialogs) and a status bar with load
-// progress, frame time (FrameStatsLabel) and the OpenGL renderer. It opens,
-// saves and exports without dialogs; the scene's shader files go through
-// SceneShaderFiles. At start it offers the shader edits a crashed session
-// left behind (ShaderRecovery).
+// the menus (File: FileMenu, with the dialogs; Help: HelpMenu) and a status
+// bar with load progress, frame time (FrameStatsLabel) and the OpenGL
+// renderer. It opens, saves and exports without dialogs; the scene's shader
+// files go through SceneShaderFiles. At start it offers the shader edits a
+// crashed session left behind (ShaderRecovery).
 class MainWindow : public QMainWindow
 {
     Q_OBJECT

@@ -1,0 +1,78 @@
+#include "DocumentationFiles.h"
+
+#include "core/ResourcePaths.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+namespace phonglab {
+
+namespace {
+
+constexpr int kTitleSearchLines = 20; // a title comes first; no need to read a whole doc
+
+bool holdsDocumentation(const QString &folder)
+{
+    return !folder.isEmpty() && !documentationFiles(folder).isEmpty();
+}
+
+} // namespace
+
+QStringList documentationSearchFolders()
+{
+    QStringList folders;
+    if (const QString fromEnv = qEnvironmentVariable("PHONGLAB_DOC_DIR"); !fromEnv.isEmpty())
+        folders << fromEnv;
+    if (QCoreApplication::instance())
+        folders << QCoreApplication::applicationDirPath()
+                + QStringLiteral("/../share/doc/phonglab");
+    // The assets on disk (not the embedded copy) tell where the rest of the
+    // tree is: assets/ sits in the source tree beside README.md and docs/,
+    // and in an install share/phonglab/assets is a sibling of share/doc.
+    const QString scene = assetPath(QStringLiteral("scenes/default.json"));
+    if (!scene.startsWith(QLatin1Char(':'))) {
+        const QString assetParent = QFileInfo(scene).absolutePath() + QStringLiteral("/../..");
+        folders << assetParent << assetParent + QStringLiteral("/../doc/phonglab");
+    }
+    for (QString &folder : folders)
+        folder = QDir::cleanPath(folder);
+    folders.removeDuplicates();
+    return folders;
+}
+
+QString documentationFolder()
+{
+    for (const QString &folder : documentationSearchFolders())
+        if (holdsDocumentation(folder))
+            return folder;
+    return {};
+}
+
+QStringList documentationFiles(const QString &folder)
+{
+    const QDir dir(folder);
+    QStringList files;
+    if (dir.exists(QStringLiteral("README.md")))
+        files << dir.filePath(QStringLiteral("README.md"));
+    const QDir docs(dir.filePath(QStringLiteral("docs")));
+    for (const QString &name : docs.entryList({QStringLiteral("*.md")}, QDir::Files, QDir::Name))
+        files << docs.filePath(name);
+    return files;
+}
+
+QString documentTitle(const QString &markdownPath)
+{
+    QFile file(markdownPath);
+    if (file.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        for (int line = 0; line < kTitleSearchLines && !file.atEnd(); ++line) {
+            const QString text = QString::fromUtf8(file.readLine()).trimmed();
+            if (text.startsWith(QLatin1String("# ")))
+                return text.mid(2).trimmed();
+        }
+    }
+    return QFileInfo(markdownPath).fileName();
+}
+
+} // namespace phonglab
