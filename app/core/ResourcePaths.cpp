@@ -13,8 +13,9 @@ QString executableDir()
 {
     if (QCoreApplication::instance())
         return QCoreApplication::applicationDirPath();
-    return QFileInfo(QStringLiteral("/proc/self/exe")).canonicalFilePath().section(QLatin1Char('/'),
-                                                                                  0, -2);
+    return QFileInfo(QStringLiteral("/proc/self/exe"))
+        .canonicalFilePath()
+        .section(QLatin1Char('/'), 0, -2);
 }
 
 // Only an executable of the build tree may read the source tree it was built
@@ -24,8 +25,7 @@ bool runsFromBuildTree(const QString &exeDir)
 {
     const QString buildDir = QFileInfo(QStringLiteral(PHONGLAB_BUILD_DIR)).canonicalFilePath();
     const QString dir = QFileInfo(exeDir).canonicalFilePath();
-    return !buildDir.isEmpty()
-           && (dir == buildDir || dir.startsWith(buildDir + QLatin1Char('/')));
+    return !buildDir.isEmpty() && (dir == buildDir || dir.startsWith(buildDir + QLatin1Char('/')));
 }
 
 // The search order, first match wins.
