@@ -83,6 +83,7 @@ class TestSceneJson : public QObject
     Q_OBJECT
 
 private slots:
+    void savedScenesCarryTheGenerator();
     void roundTripFullScene();
     void roundTripSingleObject();
     void defaultsWhenOptionalFieldsMissing();
@@ -575,6 +576,22 @@ void TestSceneJson::oldFlatLoadsAsFacetedWithANote()
     QVERIFY2(newer.ok(), qPrintable(newer.error));
     QVERIFY2(newer.warnings.join(u'\n').contains(QStringLiteral("format: 3 is newer")),
              qPrintable(newer.warnings.join(u'\n')));
+}
+
+// Desktops tell a PhongLab scene from other JSON by this line (the shared-
+// MIME magic of packaging/org.phonglab.PhongLab.mime.xml looks at the first
+// 4096 bytes), and reading it back is silent.
+void TestSceneJson::savedScenesCarryTheGenerator()
+{
+    Scene scene = sphereScene();
+    scene.objects.resize(8, scene.objects.front()); // a long "objects" array
+    const QByteArray json = sceneToJson(scene);
+    const qsizetype at =
+        json.indexOf(QByteArrayLiteral("\"generator\": \"PhongLab " PHONGLAB_VERSION));
+    QVERIFY2(at >= 0, json.left(400).constData());
+    QVERIFY2(at < 4096, qPrintable(QStringLiteral("at byte %1").arg(at)));
+    const SceneLoadResult back = parseScene(json);
+    QVERIFY2(back.ok() && back.warnings.isEmpty(), qPrintable(back.warnings.join(u'\n')));
 }
 
 // "detail": "auto" in both forms, and an object's own "shading" (which
