@@ -24,10 +24,10 @@ constexpr Subcommand kSubcommands[] = {
 void printHelp(std::span<const Subcommand> more)
 {
     QString text = QStringLiteral(
-        "usage: phonglab [SCENE.json | MESH]   start the editor on a scene or a mesh file\n"
-        "                                      (.obj .ply .off .stl .om; the default scene when "
-        "none given)\n"
-        "       phonglab <command> [options]   run a command without a window\n\n"
+        "usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
+        "                                        (.obj .ply .off .stl .om; the default scene "
+        "when none given)\n"
+        "       phonglab <command> [options]     run a command without a window\n\n"
         "commands:\n");
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
         for (const Subcommand &c : commands)
