@@ -13,14 +13,10 @@ if [ ! -x "$exe" ]; then
   echo "make-thumbnails: $exe not found; build first (scripts/build.sh)" >&2
   exit 1
 fi
-# Rendering needs an OpenGL context, so an X server; a virtual one without a display.
-run=()
-if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
-  run=(xvfb-run -a)
-fi
+# render needs no display server (EGL without one).
 mkdir -p assets/scenes/thumbnails
 for scene in assets/scenes/*.json; do
   name=$(basename "$scene" .json)
-  "${run[@]}" "$exe" render "$scene" -o "assets/scenes/thumbnails/$name.png" --size 128x96
+  "$exe" render "$scene" -o "assets/scenes/thumbnails/$name.png" --size 128x96
   echo "assets/scenes/thumbnails/$name.png"
 done

@@ -9,7 +9,10 @@
 #                                        scripts/package.sh; needs root and
 #                                        Debian's mirror; ~10 minutes)
 # The chroot stays in $PHONGLAB_CHROOT (default /tmp/phonglab-bookworm) for
-# reuse; delete it for a fresh start.
+# reuse; delete it for a fresh start. Its /proc, /sys and /dev are mounted
+# only inside a private mount and PID namespace that ends with the script,
+# so nothing is ever mounted over the host's folders or left behind, and no
+# process outside is signalled.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 deb="$(realpath "${1:-$(ls build/phonglab_*.deb | head -n 1)}")"
@@ -22,19 +25,22 @@ if [ ! -x "$root/usr/bin/apt-get" ]; then
   echo "package-check: debootstrap bookworm into $root"
   debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >/dev/null
 fi
-mounted=()
-cleanup() { for m in "${mounted[@]}"; do umount -l "$m" 2>/dev/null || true; done; }
-trap cleanup EXIT
-for m in proc sys dev; do
-  mountpoint -q "$root/$m" || { mount --rbind "/$m" "$root/$m"; mounted+=("$root/$m"); }
-done
+if [ -z "${PHONGLAB_PACKAGE_CHECK_NAMESPACE:-}" ]; then
+  exec env PHONGLAB_PACKAGE_CHECK_NAMESPACE=1 PHONGLAB_CHROOT="$root" \
+    unshare --mount --propagation private --pid --fork bash "$0" "$deb"
+fi
+# In the private namespace: these mounts die with it.
+mount -t proc proc "$root/proc"
+mount -t sysfs sysfs "$root/sys"
+mount --rbind /dev "$root/dev"
 cp "$deb" "$root/tmp/"
 in_root() { chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
   DEBIAN_FRONTEND=noninteractive "$@"; }
 
 echo "package-check: apt-get install ./$(basename "$deb")"
 in_root apt-get update -qq
-in_root apt-get install -y -qq "/tmp/$(basename "$deb")" >/dev/null
+# --reinstall: a rebuilt package of the same version replaces the last one.
+in_root apt-get install -y -qq --reinstall "/tmp/$(basename "$deb")" >/dev/null
 # What a desktop brings: its application and MIME databases, an X server.
 in_root apt-get install -y -qq desktop-file-utils shared-mime-info libglib2.0-bin \
   xvfb xauth x11-utils >/dev/null

@@ -58,8 +58,8 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
         for (const Subcommand &c : commands)
             if (first == QLatin1String(c.name)) {
                 // Commands draw only into framebuffer objects: without a
-                // display server they render through EGL.
-                useHeadlessPlatformWithoutDisplay();
+                // (reachable) display server they render through EGL.
+                chooseCommandPlatform();
                 return c.run(argc, argv);
             }
     if (first == QLatin1String("__import-mesh")) // internal, not in --help

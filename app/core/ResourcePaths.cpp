@@ -85,4 +85,12 @@ QString defaultScenePath()
     return assetPath(QStringLiteral("scenes/default.json"));
 }
 
+bool isShippedScene(const QString &path)
+{
+    const QString scenes =
+        QFileInfo(QFileInfo(defaultScenePath()).absolutePath()).canonicalFilePath();
+    const QString folder = QFileInfo(QFileInfo(path).absolutePath()).canonicalFilePath();
+    return !scenes.isEmpty() && folder == scenes;
+}
+
 } // namespace phonglab

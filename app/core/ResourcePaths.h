@@ -22,5 +22,8 @@ QString shippedShaderPath(ShadingMethod method, ShaderStage stage);
 QStringList shaderSearchFolders();
 QString assetPath(const QString &relativePath);
 QString defaultScenePath();
+// Whether `path` is one of the shipped example scenes (beside the default
+// scene): saving over one would change the examples, so Save asks where.
+bool isShippedScene(const QString &path);
 
 } // namespace phonglab

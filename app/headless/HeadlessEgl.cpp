@@ -91,10 +91,8 @@ EglDisplayChoice openHeadlessEglDisplay()
     // Without client extensions there is no EGL 1.5 loader at all.
     if (!eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS))
         return {EGL_NO_DISPLAY,
-                {},
-                {},
-                QStringLiteral("no EGL 1.5 client library with platform extensions "
-                               "(packages libegl1 and libegl-mesa0)")};
+                QStringLiteral("no EGL 1.5 client library with platform "
+                               "extensions (packages libegl1 and libegl-mesa0)")};
     const QByteArray wanted = qgetenv("PHONGLAB_EGL_PLATFORM");
     struct Platform {
         const char *name;
@@ -102,26 +100,21 @@ EglDisplayChoice openHeadlessEglDisplay()
     };
     const Platform platforms[] = {{"device", openDevicePlatform},
                                   {"surfaceless", openSurfacelessPlatform}};
-    QStringList failures;
+    QStringList failures, names;
     for (const Platform &platform : platforms) {
+        names << QLatin1String(platform.name);
         if (!wanted.isEmpty() && wanted != platform.name)
             continue;
         QString why;
         const EGLDisplay display = platform.open(&why);
-        if (display != EGL_NO_DISPLAY) {
-            const char *vendor = eglQueryString(display, EGL_VENDOR);
-            return {display,
-                    QString::fromLatin1(platform.name),
-                    QString::fromLatin1(vendor ? vendor : "unknown vendor"),
-                    {}};
-        }
+        if (display != EGL_NO_DISPLAY)
+            return {display, {}};
         failures << QStringLiteral("%1 platform: %2").arg(QLatin1String(platform.name), why);
     }
     if (failures.isEmpty())
-        failures << QStringLiteral("PHONGLAB_EGL_PLATFORM=%1 names no platform (device, "
-                                   "surfaceless)")
-                        .arg(QString::fromLocal8Bit(wanted));
-    return {EGL_NO_DISPLAY, {}, {}, failures.join(QStringLiteral("; "))};
+        failures << QStringLiteral("PHONGLAB_EGL_PLATFORM=%1 names no platform (%2)")
+                        .arg(QString::fromLocal8Bit(wanted), names.join(QStringLiteral(", ")));
+    return {EGL_NO_DISPLAY, failures.join(QStringLiteral("; "))};
 }
 
 QString eglErrorName(EGLint error)

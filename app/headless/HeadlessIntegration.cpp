@@ -3,13 +3,14 @@
 #include "HeadlessBackingStore.h"
 #include "HeadlessGlContext.h"
 #include "HeadlessOffscreenSurface.h"
+#include "HeadlessPlatform.h"
 #include "HeadlessScreen.h"
+#include "HeadlessTheme.h"
 
-#include <QFont>
+#include <QMutexLocker>
 #include <QOpenGLContext>
 #include <QtGui/private/qgenericunixeventdispatcher_p.h>
 #include <QtGui/private/qgenericunixfontdatabase_p.h>
-#include <qpa/qplatformtheme.h>
 #include <qpa/qplatformwindow.h>
 #include <qpa/qwindowsysteminterface.h>
 
@@ -18,31 +19,6 @@ namespace phonglab::headless {
 namespace {
 
 HeadlessIntegration *g_instance = nullptr;
-
-const QString kThemeName = QStringLiteral("phonglab-headless");
-
-// Fusion and the usual fonts: widgets drawn into images (the bench's charts)
-// look as they do on a desktop without its platform theme.
-class HeadlessTheme : public QPlatformTheme
-{
-public:
-    QVariant themeHint(ThemeHint hint) const override
-    {
-        if (hint == StyleNames)
-            return QStringList{QStringLiteral("Fusion")};
-        return QPlatformTheme::themeHint(hint);
-    }
-    const QFont *font(Font type) const override
-    {
-        static const QFont system(QStringLiteral("Sans Serif"), 9);
-        static const QFont fixed(QStringLiteral("monospace"), 9);
-        if (type == SystemFont)
-            return &system;
-        if (type == FixedFont)
-            return &fixed;
-        return nullptr;
-    }
-};
 
 } // namespace
 
@@ -72,6 +48,7 @@ QString HeadlessIntegration::problem() const
 {
     if (m_egl.display == EGL_NO_DISPLAY)
         return m_egl.problem;
+    const QMutexLocker lock(&m_contextProblemMutex);
     return m_contextProblem;
 }
 
@@ -105,6 +82,7 @@ QPlatformOpenGLContext *HeadlessIntegration::createPlatformOpenGLContext(
     auto *share =
         context->shareHandle() ? static_cast<HeadlessGlContext *>(context->shareHandle()) : nullptr;
     auto *glContext = new HeadlessGlContext(m_egl.display, context->format(), share);
+    const QMutexLocker lock(&m_contextProblemMutex); // contexts are made on any thread
     m_contextProblem = glContext->problem();
     return glContext;
 }
@@ -127,12 +105,12 @@ QPlatformFontDatabase *HeadlessIntegration::fontDatabase() const
 
 QStringList HeadlessIntegration::themeNames() const
 {
-    return {kThemeName};
+    return {QLatin1String(kHeadlessPlatformName)};
 }
 
 QPlatformTheme *HeadlessIntegration::createPlatformTheme(const QString &name) const
 {
-    return name == kThemeName ? new HeadlessTheme : nullptr;
+    return name == QLatin1String(kHeadlessPlatformName) ? new HeadlessTheme : nullptr;
 }
 
 } // namespace phonglab::headless

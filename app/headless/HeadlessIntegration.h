@@ -1,6 +1,7 @@
 #pragma once
 #include "HeadlessEgl.h"
 
+#include <QMutex>
 #include <QScopedPointer>
 #include <qpa/qplatformintegration.h>
 
@@ -43,6 +44,7 @@ private:
     EglDisplayChoice m_egl;
     HeadlessScreen *m_screen = nullptr;
     QScopedPointer<QPlatformFontDatabase> m_fontDatabase;
+    mutable QMutex m_contextProblemMutex;
     mutable QString m_contextProblem;
 };
 

@@ -1,12 +1,13 @@
 #include "HeadlessIntegrationPlugin.h"
 
 #include "HeadlessIntegration.h"
+#include "HeadlessPlatform.h"
 
 namespace phonglab::headless {
 
 QPlatformIntegration *HeadlessIntegrationPlugin::create(const QString &key, const QStringList &)
 {
-    if (key.compare(QLatin1String("phonglab-headless"), Qt::CaseInsensitive) != 0)
+    if (key.compare(QLatin1String(kHeadlessPlatformName), Qt::CaseInsensitive) != 0)
         return nullptr;
     return new HeadlessIntegration;
 }

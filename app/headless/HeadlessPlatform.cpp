@@ -10,11 +10,17 @@ Q_IMPORT_PLUGIN(HeadlessIntegrationPlugin)
 
 namespace phonglab {
 
-void useHeadlessPlatformWithoutDisplay()
+void chooseCommandPlatform()
 {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY")
-        && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
-        qputenv("QT_QPA_PLATFORM", kHeadlessPlatformName);
+    if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        return;
+    // Qt tries a ';'-separated list in order.
+    QByteArray platforms;
+    if (!qEnvironmentVariableIsEmpty("DISPLAY"))
+        platforms = "xcb;";
+    else if (!qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
+        platforms = "wayland;";
+    qputenv("QT_QPA_PLATFORM", platforms + kHeadlessPlatformName);
 }
 
 bool runsHeadless()

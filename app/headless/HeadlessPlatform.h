@@ -8,10 +8,11 @@ namespace phonglab {
 inline constexpr char kHeadlessPlatformName[] = "phonglab-headless";
 
 // Call before the Q(Gui)Application of a command that only renders
-// offscreen: when the user chose no platform (QT_QPA_PLATFORM) and there is
-// no display server (neither DISPLAY nor WAYLAND_DISPLAY), the headless
-// platform is chosen. With a display the usual platform stays, as before.
-void useHeadlessPlatformWithoutDisplay();
+// offscreen, unless the user chose a platform (QT_QPA_PLATFORM): with no
+// display server (neither DISPLAY nor WAYLAND_DISPLAY) the headless
+// platform; with one, that display's platform and the headless one after
+// it, for a display that cannot be reached (a stale DISPLAY over SSH).
+void chooseCommandPlatform();
 
 // Whether the running application uses the headless platform, and why it
 // cannot make an OpenGL context (empty when it can or is not in use).

@@ -1,4 +1,6 @@
 #pragma once
+#include "HeadlessPlatform.h"
+
 #include <QRect>
 #include <qpa/qplatformscreen.h>
 
@@ -15,7 +17,7 @@ public:
     QImage::Format format() const override { return QImage::Format_ARGB32_Premultiplied; }
     QDpi logicalDpi() const override { return {96, 96}; }
     QDpi logicalBaseDpi() const override { return {96, 96}; }
-    QString name() const override { return QStringLiteral("phonglab-headless"); }
+    QString name() const override { return QLatin1String(kHeadlessPlatformName); }
 };
 
 } // namespace phonglab::headless

@@ -22,10 +22,12 @@ QString noContextMessage()
                               "PhongLab renders through EGL there (Mesa: packages libegl1 and "
                               "libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)")
             .arg(headlessGlProblem());
-    return QStringLiteral("no OpenGL context could be created on the %1 platform (DISPLAY=%2): "
-                          "no driver for it? Without a display server PhongLab renders through "
-                          "EGL (unset DISPLAY)")
-        .arg(QGuiApplication::platformName(), qEnvironmentVariable("DISPLAY"));
+    const QString display = qEnvironmentVariable("DISPLAY");
+    return QStringLiteral("no OpenGL context could be created on Qt's '%1' platform%2; "
+                          "QT_QPA_PLATFORM=phonglab-headless renders through EGL without a "
+                          "display server")
+        .arg(QGuiApplication::platformName(),
+             display.isEmpty() ? QString() : QStringLiteral(" (DISPLAY=%1)").arg(display));
 }
 
 } // namespace

@@ -56,9 +56,6 @@ AboutDialog::AboutDialog(const QString &glRenderer, QWidget *parent)
         tr("<h2>PhongLab</h2><p>A shader editor for the Phong illumination model: edit the "
            "shaders while they run, and check them against the exact answer.</p>"
            "<p>Free software under the GNU General Public License, version 3 or later.</p>");
-#ifdef PHONGLAB_HOMEPAGE // the package's homepage (cmake/Install.cmake)
-    about += QStringLiteral("<p><a href=\"%1\">%1</a></p>").arg(QStringLiteral(PHONGLAB_HOMEPAGE));
-#endif
     auto *heading = new QLabel(about, this);
     heading->setWordWrap(true);
     heading->setOpenExternalLinks(true);

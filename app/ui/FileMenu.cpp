@@ -6,6 +6,7 @@
 #include "RecentFiles.h"
 #include "Viewport.h"
 #include "WarningBox.h"
+#include "core/ResourcePaths.h"
 #include "core/ScenePaths.h"
 
 #include <QDir>
@@ -94,7 +95,7 @@ void FileMenu::explainMissingRecentFile(const QString &path)
 void FileMenu::saveToCurrentFile()
 {
     const QString path = m_window->scenePath();
-    if (!isWritableLocation(path)) {
+    if (!isWritableLocation(path) || isShippedScene(path)) {
         chooseAndSave();
         return;
     }

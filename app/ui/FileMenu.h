@@ -36,7 +36,7 @@ private:
     void warnCannotSave(const QString &path, const QString &error);
     QString dialogFolder() const;
 
-    MainWindow *m_window;
+    MainWindow *m_window = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     QString m_lastFolder;
 };

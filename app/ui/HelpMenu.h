@@ -40,7 +40,7 @@ private:
     void showShortcuts();
     void showAbout();
 
-    MainWindow *m_window;
+    MainWindow *m_window = nullptr;
     QAction *m_documentation = nullptr;
     QAction *m_shortcuts = nullptr;
     QAction *m_about = nullptr;

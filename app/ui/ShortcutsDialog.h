@@ -39,7 +39,7 @@ public:
     QTreeWidget *table() const { return m_table; }
 
 private:
-    QMainWindow *m_window;
+    QMainWindow *m_window = nullptr;
     QList<Entry> m_entries;
     QTreeWidget *m_table = nullptr;
 };

@@ -47,6 +47,12 @@ echo "ok: $got"
 [ -s "$work/default.png" ] || { echo "FAIL: render wrote no image"; exit 1; }
 echo "ok: render of the default scene"
 
+# A display that cannot be reached (a stale DISPLAY over SSH) falls back to EGL.
+DISPLAY=:987 "$exe" render "$scenes/default.json" -o "$work/stale.png" --size 320x240 2>/dev/null \
+  || { echo "FAIL: render with an unreachable DISPLAY"; exit 1; }
+cmp -s "$work/default.png" "$work/stale.png" || { echo "FAIL: the fallback rendered other pixels"; exit 1; }
+echo "ok: render with an unreachable DISPLAY falls back to EGL, same pixels"
+
 # The shipped shaders against the exact reference: must match.
 "$exe" check "$scenes/check.json" --size 320x240 > "$work/check.txt" \
   || { cat "$work/check.txt"; echo "FAIL: the installed shaders do not match the reference"; exit 1; }

@@ -3,18 +3,21 @@
 // opens it the way File → Open does.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "ui/ExamplesMenu.h"
 #include "ui/MainWindow.h"
 #include "ui/SceneLoadJob.h"
 #include "ui/Viewport.h"
 
+#include "core/ResourcePaths.h"
 #include <QAction>
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
+
 #include <QTest>
 
 using namespace phonglab;
@@ -164,6 +167,9 @@ void TestExamplesMenu::choosingAnExampleOpensIt()
     QCOMPARE(shown.objects.size(), expected.scene->objects.size());
     for (size_t i = 0; i < shown.objects.size(); ++i)
         QCOMPARE(shown.objects[i].mesh, expected.scene->objects[i].mesh);
+    // Save does not write over an example (File → Save asks where instead).
+    QVERIFY(isShippedScene(m_window->scenePath()));
+    QVERIFY(!isShippedScene(testDataPath(QStringLiteral("scenes/gl_cube.json"))));
 }
 
 QTEST_MAIN(TestExamplesMenu)
