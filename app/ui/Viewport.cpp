@@ -18,6 +18,7 @@
 #include <QResizeEvent>
 #include <QWheelEvent>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace phonglab {
@@ -27,7 +28,6 @@ namespace {
 constexpr double kOrbitDegPerPixel = 0.4;
 constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
 constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
-constexpr double kFrameTimeSmoothing = 0.1; // weight of the newest frame in the running average
 constexpr int kGiveBackTimeoutMs =
     5000; // a borrower stuck in the driver (a shader that never ends)
 constexpr double kLightPickRadiusPx = 8.0; // how near a click must be to a marker
@@ -431,9 +431,11 @@ void Viewport::paintGL()
     m_renderer.render(size() * devicePixelRatioF());
     // Without glFinish the timer would only measure command submission.
     f->glFinish();
-    recordFrameTime(double(timer.nsecsElapsed()) / 1e6);
+    const auto now = std::chrono::steady_clock::now().time_since_epoch();
+    m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(),
+                     double(timer.nsecsElapsed()) / 1e6);
     ++m_framesRendered;
-    emit frameRendered(m_smoothedFrameMs, m_renderer.trianglesDrawn());
+    emit frameRendered(m_frameTimes.meanMs(), m_renderer.trianglesDrawn());
 }
 
 // Needs the context current: camera, lights and materials changed since the
@@ -444,13 +446,6 @@ void Viewport::sendChangedParameters()
         return;
     m_renderer.updateSceneParameters(renderedScene());
     m_parametersDirty = false;
-}
-
-void Viewport::recordFrameTime(double milliseconds)
-{
-    m_smoothedFrameMs = m_framesRendered == 0
-        ? milliseconds
-        : m_smoothedFrameMs + kFrameTimeSmoothing * (milliseconds - m_smoothedFrameMs);
 }
 
 void Viewport::cameraMoved()

@@ -1,5 +1,6 @@
 #pragma once
 #include "ContextLender.h"
+#include "core/FrameTimeWindow.h"
 #include "core/OrbitCamera.h"
 #include "core/Scene.h"
 #include "render/LentContext.h"
@@ -110,6 +111,8 @@ public:
 
     bool isRenderReady() const { return m_renderReady; }
     qint64 framesRendered() const { return m_framesRendered; }
+    // The draw times behind frameRendered()'s figure.
+    const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
     QString glRendererName() const { return m_glRendererName; }
 
     QSize minimumSizeHint() const override;
@@ -118,7 +121,9 @@ public:
 signals:
     // GL could not be set up or the scene could not be drawn; never fatal.
     void renderError(const QString &message);
-    // After every frame: render time (ms, smoothed) and triangles drawn.
+    // After every frame: the draw time (first GL call to glFinish, the
+    // window's composition not included), the mean of the frames of the last
+    // second (FrameTimeWindow), and the triangles drawn.
     void frameRendered(double milliseconds, qint64 triangles);
     void glRendererChanged(const QString &name);
     void cameraChanged();
@@ -171,7 +176,6 @@ private:
     void showUploaded(const Scene &scene);
     void cameraMoved();
     void sendChangedParameters();
-    void recordFrameTime(double milliseconds);
     bool startLightDrag(const QPointF &position);
     void dragLight(const QPointF &position, bool alongView);
     void finishLightDrag();
@@ -188,9 +192,9 @@ private:
     Drag m_drag = Drag::None;
     QPointF m_lastMousePos;
     bool m_headlight = false;
-    int m_dragLight = -1;   // the light a Drag::Light moves
-    PointLight m_dragStart; // ... as it was when the drag began
-    double m_smoothedFrameMs = 0.0;
+    int m_dragLight = -1;         // the light a Drag::Light moves
+    PointLight m_dragStart;       // ... as it was when the drag began
+    FrameTimeWindow m_frameTimes; // draw times of the last second
     qint64 m_framesRendered = 0;
     QString m_glRendererName;
     ContextLender m_lender;

@@ -7,6 +7,7 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/SceneJson.h"
+#include "ui/FrameStatsLabel.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
 
@@ -90,6 +91,7 @@ private slots:
 
     void opensDefaultSceneAndDrawsLitObject();
     void showsFrameStatsAndRenderer();
+    void frameStatsSayWhatTheyMeasureAndChangeTwiceASecond();
     void lightMarkersCanBeHidden();
     void failedOpenKeepsCurrentScene_data();
     void failedOpenKeepsCurrentScene();
@@ -181,6 +183,28 @@ void TestMainWindow::showsFrameStatsAndRenderer()
     }());
     QVERIFY2(texts.join(u'|').contains(QStringLiteral("OpenGL")), qPrintable(texts.join(u'|')));
     QVERIFY(viewport()->glRendererName().startsWith(QStringLiteral("OpenGL")));
+}
+
+// The readout names its figure and averages it; it changes at most every
+// kUpdateIntervalMs (a label's change recomposes the whole window), and the
+// last frame of a burst is shown once the interval ends.
+void TestMainWindow::frameStatsSayWhatTheyMeasureAndChangeTwiceASecond()
+{
+    auto *label = m_window->statusBar()->findChild<FrameStatsLabel *>();
+    QVERIFY(label);
+    QTRY_VERIFY(label->text().startsWith(QStringLiteral("draw ")));
+    QVERIFY2(label->toolTip().contains(QStringLiteral("glFinish"))
+                 && label->toolTip().contains(QStringLiteral("last second")),
+             qPrintable(label->toolTip()));
+    QTest::qWait(FrameStatsLabel::kUpdateIntervalMs + 100); // no interval running
+    label->showFrame(11.0, 100);
+    const QString first = label->text();
+    QVERIFY2(first.startsWith(QStringLiteral("draw 11.00 ms")), qPrintable(first));
+    for (int i = 1; i <= 50; ++i)
+        label->showFrame(11.0 + i, 100); // a burst within the interval: not shown yet
+    QCOMPARE(label->text(), first);
+    QTRY_VERIFY_WITH_TIMEOUT(label->text().startsWith(QStringLiteral("draw 61.00 ms")),
+                             4 * FrameStatsLabel::kUpdateIntervalMs);
 }
 
 void TestMainWindow::lightMarkersCanBeHidden()

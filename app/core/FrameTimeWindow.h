@@ -1,0 +1,33 @@
+#pragma once
+#include <QtGlobal>
+
+#include <deque>
+
+namespace phonglab {
+
+// The frame times of the last second: what the status bar reports. A mean
+// over a window neither jumps with one slow frame nor, like a running
+// average, still carries the first frames' shader compilation long after.
+class FrameTimeWindow
+{
+public:
+    static constexpr qint64 kSpanNs = 1'000'000'000; // one second
+    static constexpr int kMaxFrames = 240;
+
+    // A frame that ended at `atNs` (any monotonic clock) and took `milliseconds`.
+    void add(qint64 atNs, double milliseconds);
+    // The mean of the frames in the window, 0 with none; the newest frame is
+    // always counted, however old.
+    double meanMs() const;
+    int frames() const { return int(m_frames.size()); }
+
+private:
+    struct Frame {
+        qint64 atNs;
+        double milliseconds;
+    };
+    std::deque<Frame> m_frames;
+    double m_sumMs = 0.0;
+};
+
+} // namespace phonglab
