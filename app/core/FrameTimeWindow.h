@@ -20,6 +20,8 @@ public:
     // always counted, however old.
     double meanMs() const;
     int frames() const { return int(m_frames.size()); }
+    // The newest frame's time, 0 with none.
+    double latestMs() const { return m_frames.empty() ? 0.0 : m_frames.back().milliseconds; }
 
 private:
     struct Frame {

@@ -3,14 +3,14 @@
 
 #include "RawGlEditPath.h"
 
-#include "core/ObjectMatrices.h"
+#include "RawGlUniforms.h"
+
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 
 #include <QElapsedTimer>
 #include <QFile>
 #include <cstdio>
-#include <glm/gtc/type_ptr.hpp>
 
 namespace phonglab::bench {
 
@@ -90,37 +90,6 @@ GLuint RawGlEditPath::compile(GLenum type, const QByteArray &text)
     return ok ? shader : 0;
 }
 
-void RawGlEditPath::setUniforms(GLuint p)
-{
-    const auto at = [p](const char *name) { return glGetUniformLocation(p, name); };
-    const double aspect = double(m_size.width()) / m_size.height();
-    const glm::dmat4 view = m_scene.camera.viewMatrix();
-    const glm::dmat4 projection = m_scene.camera.projectionMatrix(aspect);
-    const SceneObject &object = m_scene.objects.front();
-    const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
-    glUniformMatrix4fv(at("viewMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(view)));
-    glUniformMatrix4fv(at("projectionMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(projection)));
-    glUniformMatrix4fv(at("modelViewMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat4(m.modelView)));
-    glUniformMatrix3fv(at("normalMatrix"), 1, GL_FALSE, glm::value_ptr(glm::mat3(m.normalMatrix)));
-    glUniform3fv(at("Ia"), 1, glm::value_ptr(glm::vec3(m_scene.ambient)));
-    glUniform3fv(at("ka"), 1, glm::value_ptr(glm::vec3(object.material.ka)));
-    glUniform3fv(at("kd"), 1, glm::value_ptr(glm::vec3(object.material.kd)));
-    glUniform3fv(at("ks"), 1, glm::value_ptr(glm::vec3(object.material.ks)));
-    glUniform1f(at("shininess"), float(object.material.shininess));
-    const int count = std::min<int>(int(m_scene.lights.size()), kMaxLights);
-    glUniform1i(at("lightCount"), count);
-    for (int i = 0; i < count; ++i) {
-        const PointLight &l = m_scene.lights[i];
-        const auto element = [&](const char *name) {
-            return at(QByteArray(name).append('[').append(QByteArray::number(i)).append(']'));
-        };
-        glUniform3fv(element("lightPosition"), 1, glm::value_ptr(glm::vec3(l.position)));
-        glUniform3fv(element("Id"), 1, glm::value_ptr(glm::vec3(l.diffuse)));
-        glUniform3fv(element("Is"), 1, glm::value_ptr(glm::vec3(l.specular)));
-        glUniform3fv(element("attenuation"), 1, glm::value_ptr(glm::vec3(l.attenuation)));
-    }
-}
-
 EditSample RawGlEditPath::edit(const QByteArray &fragment)
 {
     m_context.makeCurrent(&m_surface);
@@ -148,7 +117,7 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glUseProgram(program);
-    setUniforms(program);
+    setPhongUniforms(program, m_scene, m_scene.objects.front(), m_size);
     glBindVertexArray(m_vao);
     glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
     glFinish();

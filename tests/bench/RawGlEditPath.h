@@ -29,7 +29,6 @@ public:
 
 private:
     GLuint compile(GLenum type, const QByteArray &text);
-    void setUniforms(GLuint program);
 
     QOpenGLContext m_context;
     QOffscreenSurface m_surface;

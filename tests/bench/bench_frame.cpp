@@ -1,0 +1,177 @@
+// The viewport's frame against a raw-GL floor that presents (prints figures;
+// not a test).
+//
+//   build/tests/bench/bench_frame [--frames N] [--samples S]     (under X: xvfb-run -a)
+//
+// Both draw every object of the default scene with the shipped Phong
+// program and the same MSAA and present the frame: PhongLab's main window
+// (QOpenGLWidget: its framebuffer, the resolve and the window's composition,
+// then swapBuffers) and RawGlFramePath (a bare QWindow drawing into its own
+// default framebuffer, then swapBuffers). A frame is the interval between
+// two frames reaching the window while frames are asked for back to back,
+// event loop included, at 800x600 and at the viewport's size in the window
+// as it first opens. Blocks of frames alternate between the two so that the
+// machine's load touches both alike.
+#include "BenchHelpers.h"
+#include "EditSample.h"
+#include "RawGlFramePath.h"
+#include "render/GlFormat.h"
+#include "ui/MainWindow.h"
+#include "ui/Viewport.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QThread>
+#include <QTimer>
+#include <cstdio>
+#include <memory>
+
+using namespace phonglab;
+using namespace phonglab::bench;
+
+namespace {
+
+constexpr int kBlock = 20;        // frames per block before switching paths
+constexpr int kWarmUpFrames = 30; // first frames: programs compiled, caches warm
+
+// PhongLab's path: the real window, asked for frame after frame.
+class ViewportFrames
+{
+public:
+    ViewportFrames(const Scene &scene, const QSize *fixedSize)
+    {
+        m_window = std::make_unique<MainWindow>();
+        if (fixedSize)
+            m_window->viewport()->setFixedSize(*fixedSize);
+        m_window->viewport()->setShowLightMarkers(false); // the raw path draws none
+        if (const Result<> set = m_window->viewport()->setScene(scene); !set)
+            std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(set.error()));
+        m_window->show();
+        QElapsedTimer wait;
+        wait.start();
+        while (m_window->viewport()->framesRendered() == 0 && wait.elapsed() < 10000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
+    bool isReady() const { return m_window->viewport()->framesRendered() > 0; }
+    QSize pixels() const
+    {
+        return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
+    }
+    // `count` frames back to back: the intervals between frameSwapped, and
+    // the draw times the status bar reports (glFinish-timed, per frame).
+    void run(int count, std::vector<double> &intervals, std::vector<double> &draws)
+    {
+        Viewport *viewport = m_window->viewport();
+        QEventLoop loop;
+        QElapsedTimer clock;
+        int seen = -1; // the first swap starts the clock
+        double lastDraw = 0;
+        auto drawn = QObject::connect(viewport, &Viewport::frameRendered,
+                                      [&] { lastDraw = viewport->frameTimes().latestMs(); });
+        auto swapped = QObject::connect(viewport, &QOpenGLWidget::frameSwapped, [&] {
+            if (seen >= 0) {
+                intervals.push_back(ms(clock.nsecsElapsed()));
+                draws.push_back(lastDraw);
+            }
+            clock.start();
+            if (++seen >= count)
+                loop.quit();
+            else
+                viewport->update();
+        });
+        QTimer::singleShot(60000, &loop, &QEventLoop::quit);
+        viewport->update();
+        loop.exec();
+        QObject::disconnect(drawn);
+        QObject::disconnect(swapped);
+    }
+
+private:
+    std::unique_ptr<MainWindow> m_window;
+};
+
+struct Figures {
+    std::vector<double> raw, viewport, draw;
+};
+
+void measure(const Scene &scene, const SceneMeshes &meshes, const QSize *fixedSize, int samples,
+             int frames, const char *label)
+{
+    ViewportFrames phonglab(scene, fixedSize);
+    if (!phonglab.isReady()) {
+        std::fprintf(stderr, "%s: the viewport drew nothing\n", label);
+        return;
+    }
+    const QSize size = phonglab.pixels();
+    RawGlFramePath raw;
+    if (!raw.create(size, samples, scene, meshes))
+        return;
+    Figures f;
+    std::vector<double> ignored, ignoredDraws;
+    phonglab.run(kWarmUpFrames, ignored, ignoredDraws);
+    for (int i = 0; i < kWarmUpFrames; ++i)
+        raw.drawFrame();
+    QElapsedTimer clock;
+    while (int(f.raw.size()) < frames) {
+        phonglab.run(kBlock, f.viewport, f.draw);
+        clock.start();
+        for (int i = 0; i < kBlock; ++i) {
+            QCoreApplication::processEvents(); // as an application's loop would
+            raw.drawFrame();
+            f.raw.push_back(ms(clock.nsecsElapsed()));
+            clock.start();
+        }
+    }
+    const double raw50 = percentile(f.raw, 0.5), raw95 = percentile(f.raw, 0.95);
+    const double vp50 = percentile(f.viewport, 0.5), vp95 = percentile(f.viewport, 0.95);
+    std::printf("| %s | %dx%d | %.2f | %.2f | %.2f | %.2f | %.2fx | %.2fx | %.2f |\n", label,
+                size.width(), size.height(), raw50, raw95, vp50, vp95, vp50 / raw50, vp95 / raw95,
+                percentile(f.draw, 0.5));
+}
+
+QString loadAverage()
+{
+    QFile file(QStringLiteral("/proc/loadavg"));
+    return file.open(QIODevice::ReadOnly)
+        ? QString::fromLatin1(file.readAll()).section(QLatin1Char(' '), 0, 2)
+        : QStringLiteral("unknown");
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QTemporaryDir recovery;
+    qputenv("PHONGLAB_RECOVERY_DIR", recovery.path().toUtf8());
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true); // no user settings: the window's default size
+    QCommandLineParser parser;
+    parser.addHelpOption();
+    parser.addOption({QStringLiteral("frames"), QStringLiteral("Frames per path (default 200)."),
+                      QStringLiteral("N"), QStringLiteral("200")});
+    parser.addOption({QStringLiteral("samples"),
+                      QStringLiteral("MSAA samples (default 4, as the app)."), QStringLiteral("S"),
+                      QStringLiteral("4")});
+    parser.process(app);
+    const int frames = std::max(kBlock, parser.value(QStringLiteral("frames")).toInt());
+    const int samples = std::max(0, parser.value(QStringLiteral("samples")).toInt());
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(samples));
+    const auto loaded = loadDefaultScene();
+    if (!loaded)
+        return 1;
+    std::printf("default scene (every object), %d samples, %d frames per path, %d CPUs, load %s\n",
+                samples, frames, QThread::idealThreadCount(), qPrintable(loadAverage()));
+    std::printf("\n| size | pixels | raw GL p50 ms | p95 | viewport p50 ms | p95 | p50 ratio | "
+                "p95 ratio | viewport draw p50 ms (status bar) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+    const QSize fixed(800, 600);
+    measure(loaded->scene, loaded->meshes, &fixed, samples, frames, "800x600");
+    measure(loaded->scene, loaded->meshes, nullptr, samples, frames, "window's default");
+    std::printf("\nload at the end: %s\n", qPrintable(loadAverage()));
+    return 0;
+}
