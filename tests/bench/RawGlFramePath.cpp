@@ -9,8 +9,11 @@
 #include "render/GlFormat.h"
 
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QPlainTextEdit>
+#include <QStatusBar>
 #include <cstdio>
 
 namespace phonglab::bench {
@@ -26,21 +29,38 @@ QByteArray readShader(const char *name)
 } // namespace
 
 bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
-                            const SceneMeshes &meshes)
+                            const SceneMeshes &meshes, Placement placement)
 {
     QSurfaceFormat format = phonglabSurfaceFormat(samples);
     format.setSwapInterval(0); // as fast as it can present, like the measured viewport
-    m_window.setSurfaceType(QSurface::OpenGLSurface);
-    m_window.setFormat(format);
-    m_window.resize(size / m_window.devicePixelRatio());
-    m_window.setTitle(QStringLiteral("raw GL floor"));
-    m_window.show();
+    m_ownWindow = std::make_unique<QWindow>();
+    m_window = m_ownWindow.get();
+    m_window->setSurfaceType(QSurface::OpenGLSurface);
+    m_window->setFormat(format);
+    const QSize logical = size / m_window->devicePixelRatio();
+    if (placement == Placement::InsideMainWindow) {
+        m_host = std::make_unique<QMainWindow>();
+        QWidget *container = QWidget::createWindowContainer(m_ownWindow.release(), m_host.get());
+        container->setFixedSize(logical);
+        m_host->setCentralWidget(container);
+        auto *dock = new QDockWidget(QStringLiteral("Shaders"), m_host.get());
+        auto *editor = new QPlainTextEdit(dock);
+        editor->setPlainText(QString::fromUtf8(readShader("phong.frag")));
+        dock->setWidget(editor);
+        m_host->addDockWidget(Qt::RightDockWidgetArea, dock);
+        m_host->statusBar()->showMessage(QStringLiteral("raw GL inside a main window"));
+        m_host->show();
+    } else {
+        m_window->resize(logical);
+        m_window->setTitle(QStringLiteral("raw GL floor"));
+        m_window->show();
+    }
     QElapsedTimer wait;
     wait.start();
-    while (!m_window.isExposed() && wait.elapsed() < 5000)
+    while (!m_window->isExposed() && wait.elapsed() < 5000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
     m_context.setFormat(format);
-    if (!m_window.isExposed() || !m_context.create() || !m_context.makeCurrent(&m_window)) {
+    if (!m_window->isExposed() || !m_context.create() || !m_context.makeCurrent(m_window)) {
         std::fprintf(stderr, "raw GL: no window or context\n");
         return false;
     }
@@ -98,7 +118,7 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
 
 RawGlFramePath::~RawGlFramePath()
 {
-    if (!m_context.isValid() || !m_context.makeCurrent(&m_window))
+    if (!m_window || !m_context.isValid() || !m_context.makeCurrent(m_window))
         return;
     for (const Object &o : m_objects) {
         glDeleteVertexArrays(1, &o.vao);
@@ -123,7 +143,7 @@ double RawGlFramePath::drawFrame()
 {
     QElapsedTimer clock;
     clock.start();
-    m_context.makeCurrent(&m_window);
+    m_context.makeCurrent(m_window);
     glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
     glViewport(0, 0, m_size.width(), m_size.height());
     const glm::dvec3 bg = m_scene.background;
@@ -141,7 +161,7 @@ double RawGlFramePath::drawFrame()
         glBindVertexArray(o.vao);
         glDrawElements(GL_TRIANGLES, o.indexCount, GL_UNSIGNED_INT, nullptr);
     }
-    m_context.swapBuffers(&m_window);
+    m_context.swapBuffers(m_window);
     glFinish();
     return ms(clock.nsecsElapsed());
 }

@@ -2,9 +2,11 @@
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
 
+#include <QMainWindow>
 #include <QOpenGLContext>
 #include <QSize>
 #include <QWindow>
+#include <memory>
 #include <vector>
 
 namespace phonglab::bench {
@@ -22,9 +24,19 @@ public:
     RawGlFramePath(const RawGlFramePath &) = delete;
     RawGlFramePath &operator=(const RawGlFramePath &) = delete;
 
+    // A window of its own, or a native child window (QWidget::
+    // createWindowContainer) inside a main window with a dock and a status
+    // bar, as PhongLab's window has: that window's widgets are composed by
+    // the window system, not redrawn with every GL frame.
+    enum class Placement {
+        OwnWindow,
+        InsideMainWindow
+    };
+
     // Opens the window at `size` (device pixels) and uploads the meshes;
     // false after saying why on stderr.
-    bool create(const QSize &size, int samples, const Scene &scene, const SceneMeshes &meshes);
+    bool create(const QSize &size, int samples, const Scene &scene, const SceneMeshes &meshes,
+                Placement placement = Placement::OwnWindow);
     // Draws and presents one frame; the wall time from its first GL call to
     // swapBuffers returning, with glFinish after, in milliseconds.
     double drawFrame();
@@ -37,7 +49,9 @@ private:
     };
     GLuint compile(GLenum type, const QByteArray &text);
 
-    QWindow m_window;
+    std::unique_ptr<QMainWindow> m_host; // owns m_window when inside it
+    std::unique_ptr<QWindow> m_ownWindow;
+    QWindow *m_window = nullptr;
     QOpenGLContext m_context;
     Scene m_scene;
     QSize m_size;

@@ -95,9 +95,19 @@ private:
     std::unique_ptr<MainWindow> m_window;
 };
 
-struct Figures {
-    std::vector<double> raw, viewport, draw;
-};
+// `frames` presented frames of `raw`, with the application's events
+// handled between them as its loop would.
+void runRaw(RawGlFramePath &raw, int frames, std::vector<double> &intervals)
+{
+    QElapsedTimer clock;
+    clock.start();
+    for (int i = 0; i < frames; ++i) {
+        QCoreApplication::processEvents();
+        raw.drawFrame();
+        intervals.push_back(ms(clock.nsecsElapsed()));
+        clock.start();
+    }
+}
 
 void measure(const Scene &scene, const SceneMeshes &meshes, const QSize *fixedSize, int samples,
              int frames, const char *label)
@@ -108,30 +118,26 @@ void measure(const Scene &scene, const SceneMeshes &meshes, const QSize *fixedSi
         return;
     }
     const QSize size = phonglab.pixels();
-    RawGlFramePath raw;
-    if (!raw.create(size, samples, scene, meshes))
+    RawGlFramePath raw, contained;
+    if (!raw.create(size, samples, scene, meshes)
+        || !contained.create(size, samples, scene, meshes,
+                             RawGlFramePath::Placement::InsideMainWindow))
         return;
-    Figures f;
-    std::vector<double> ignored, ignoredDraws;
+    std::vector<double> rawFrames, containedFrames, viewportFrames, draws, ignored, ignoredDraws;
     phonglab.run(kWarmUpFrames, ignored, ignoredDraws);
-    for (int i = 0; i < kWarmUpFrames; ++i)
-        raw.drawFrame();
-    QElapsedTimer clock;
-    while (int(f.raw.size()) < frames) {
-        phonglab.run(kBlock, f.viewport, f.draw);
-        clock.start();
-        for (int i = 0; i < kBlock; ++i) {
-            QCoreApplication::processEvents(); // as an application's loop would
-            raw.drawFrame();
-            f.raw.push_back(ms(clock.nsecsElapsed()));
-            clock.start();
-        }
+    runRaw(raw, kWarmUpFrames, ignored);
+    runRaw(contained, kWarmUpFrames, ignored);
+    while (int(rawFrames.size()) < frames) {
+        phonglab.run(kBlock, viewportFrames, draws);
+        runRaw(raw, kBlock, rawFrames);
+        runRaw(contained, kBlock, containedFrames);
     }
-    const double raw50 = percentile(f.raw, 0.5), raw95 = percentile(f.raw, 0.95);
-    const double vp50 = percentile(f.viewport, 0.5), vp95 = percentile(f.viewport, 0.95);
-    std::printf("| %s | %dx%d | %.2f | %.2f | %.2f | %.2f | %.2fx | %.2fx | %.2f |\n", label,
-                size.width(), size.height(), raw50, raw95, vp50, vp95, vp50 / raw50, vp95 / raw95,
-                percentile(f.draw, 0.5));
+    const double raw50 = percentile(rawFrames, 0.5), raw95 = percentile(rawFrames, 0.95);
+    const double vp50 = percentile(viewportFrames, 0.5), vp95 = percentile(viewportFrames, 0.95);
+    std::printf("| %s | %dx%d | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2fx / %.2fx | %.2f |\n",
+                label, size.width(), size.height(), raw50, raw95, percentile(containedFrames, 0.5),
+                percentile(containedFrames, 0.95), vp50, vp95, vp50 / raw50, vp95 / raw95,
+                percentile(draws, 0.5));
 }
 
 QString loadAverage()
@@ -166,9 +172,10 @@ int main(int argc, char **argv)
         return 1;
     std::printf("default scene (every object), %d samples, %d frames per path, %d CPUs, load %s\n",
                 samples, frames, QThread::idealThreadCount(), qPrintable(loadAverage()));
-    std::printf("\n| size | pixels | raw GL p50 ms | p95 | viewport p50 ms | p95 | p50 ratio | "
-                "p95 ratio | viewport draw p50 ms (status bar) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("\nframe intervals in ms, p50 / p95:\n");
+    std::printf("\n| size | pixels | raw GL, own window | raw GL, native child of a main window "
+                "| PhongLab viewport | viewport / raw GL | viewport draw p50 (status bar) |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
     const QSize fixed(800, 600);
     measure(loaded->scene, loaded->meshes, &fixed, samples, frames, "800x600");
     measure(loaded->scene, loaded->meshes, nullptr, samples, frames, "window's default");
