@@ -17,33 +17,21 @@ FrameStatsLabel::FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar)
     , m_viewport(viewport)
     , m_statusBar(statusBar)
 {
-    m_throttle.setSingleShot(true);
-    m_throttle.setInterval(kUpdateIntervalMs);
-    connect(&m_throttle, &QTimer::timeout, this, &FrameStatsLabel::showLatest);
     connect(viewport, &Viewport::frameRendered, this, &FrameStatsLabel::showFrame);
 }
 
-// The first frame shows at once; later ones wait for the interval to end,
-// and the last frame of a burst is always shown.
 void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
 {
-    m_latestMs = milliseconds;
-    m_latestTriangles = triangles;
-    if (m_throttle.isActive())
+    if (m_sinceShown.isValid() && m_sinceShown.elapsed() < kUpdateIntervalMs
+        && triangles == m_shownTriangles)
         return;
-    showLatest();
-    m_throttle.start();
-}
-
-void FrameStatsLabel::showLatest()
-{
+    m_sinceShown.start();
+    m_shownTriangles = triangles;
     const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
-    const QString text = tr("draw %1 ms · %2 triangles%3")
-                             .arg(m_latestMs, 0, 'f', 2)
-                             .arg(QLocale().toString(m_latestTriangles))
-                             .arg(depth ? tr(" · low depth precision") : QString());
-    if (text != this->text())
-        setText(text);
+    setText(tr("draw %1 ms · %2 triangles%3")
+                .arg(milliseconds, 0, 'f', 2)
+                .arg(QLocale().toString(triangles))
+                .arg(depth ? tr(" · low depth precision") : QString()));
     const QString explained =
         tr("Draw time per frame: from the frame's first OpenGL call to glFinish, the scene only "
            "(composing the window is not included); the mean of the %n frame(s) of the last "

@@ -1,6 +1,6 @@
 #pragma once
+#include <QElapsedTimer>
 #include <QLabel>
-#include <QTimer>
 
 class QStatusBar;
 
@@ -12,9 +12,12 @@ class Viewport;
 // the last second's frames, see Viewport::frameRendered) and triangles
 // drawn, plus a note while the depth range leaves too little depth
 // precision (said once in the status bar when it starts, not on every frame
-// of an orbit). It changes at most twice a second: any change of a label
-// recomposes the whole window, OpenGL view included, which on a software
-// renderer costs more than a frame.
+// of an orbit). It changes at most twice a second, and only while a frame is
+// being drawn: any change of a label recomposes the whole window, OpenGL
+// view included, which on a software renderer costs more than a frame;
+// changed with a frame, it joins that frame's composition (a timer of its
+// own would add one, in the middle of a shader's build). A new triangle
+// count (another scene, a new level) shows at once.
 class FrameStatsLabel : public QLabel
 {
     Q_OBJECT
@@ -27,13 +30,10 @@ public:
     void showFrame(double milliseconds, qint64 triangles);
 
 private:
-    void showLatest();
-
     Viewport *m_viewport = nullptr;
     QStatusBar *m_statusBar = nullptr;
-    QTimer m_throttle;
-    double m_latestMs = 0.0;
-    qint64 m_latestTriangles = 0;
+    QElapsedTimer m_sinceShown; // invalid until the first frame is shown
+    qint64 m_shownTriangles = -1;
     bool m_depthWarningShown = false;
 };
 
