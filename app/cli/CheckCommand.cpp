@@ -199,7 +199,6 @@ int check(const CheckArgs &args, int argc, char **argv)
     if (args.shading)
         scene.shading = *args.shading;
 
-    chooseHeadlessPlatformIfNeeded();
     QGuiApplication app(argc, argv);
     CheckOutcome outcome;
     CheckReference reference;

@@ -65,12 +65,4 @@ QStringList argumentsFrom(int argc, char **argv)
     return args;
 }
 
-void chooseHeadlessPlatformIfNeeded()
-{
-    if (qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
-        return;
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-}
-
 } // namespace phonglab::cli

@@ -33,9 +33,5 @@ std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &ar
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);
 
-// Makes sure a GUI application can start without a display: when no X server
-// is reachable and no platform was chosen, use Qt's offscreen platform so the
-// failure becomes a clear "no OpenGL context" message rather than an abort.
-void chooseHeadlessPlatformIfNeeded();
 
 } // namespace phonglab::cli

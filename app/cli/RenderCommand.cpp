@@ -112,7 +112,6 @@ int render(const RenderArgs &args, int argc, char **argv)
     for (const QString &w : loaded.warnings)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
-    chooseHeadlessPlatformIfNeeded();
     QGuiApplication app(argc, argv);
     OffscreenRenderer offscreen;
     if (const Result<> created = offscreen.create(); !created) {
