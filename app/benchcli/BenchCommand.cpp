@@ -246,7 +246,6 @@ int benchPath(const BenchArgs &args)
 
 int bench(const BenchArgs &args, int argc, char **argv)
 {
-    chooseHeadlessPlatformIfNeeded();
     QApplication app(argc, argv); // Qt Charts draws with widgets
     if (!QDir().mkpath(args.outDir)) {
         printError(QStringLiteral("%1: cannot create the output folder").arg(args.outDir));
