@@ -33,5 +33,4 @@ std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &ar
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);
 
-
 } // namespace phonglab::cli

@@ -37,6 +37,21 @@ inline QByteArray editedFragment(double k)
     return text;
 }
 
+// One object, turned so that no symmetry axis faces the camera, under one
+// white light: the scene the reference and scaling benches time.
+inline Scene litObjectScene(const QString &mesh)
+{
+    Scene scene;
+    SceneObject object;
+    object.mesh = mesh;
+    object.transform.rotateDeg = {60.0, 0.0, 20.0};
+    scene.objects.push_back(object);
+    PointLight light;
+    light.position = {3.0, 4.0, 5.0};
+    scene.lights.push_back(light);
+    return scene;
+}
+
 // The shipped default scene and its meshes, loaded in this process; nullopt
 // after saying why on stderr.
 struct LoadedScene {

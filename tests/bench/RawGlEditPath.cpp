@@ -3,7 +3,7 @@
 
 #include "RawGlEditPath.h"
 
-#include "RawGlUniforms.h"
+#include "RawGlCalls.h"
 
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
@@ -78,18 +78,6 @@ RawGlEditPath::~RawGlEditPath()
     m_context.doneCurrent();
 }
 
-GLuint RawGlEditPath::compile(GLenum type, const QByteArray &text)
-{
-    const GLuint shader = glCreateShader(type);
-    const char *source = text.constData();
-    const GLint length = GLint(text.size());
-    glShaderSource(shader, 1, &source, &length);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    return ok ? shader : 0;
-}
-
 EditSample RawGlEditPath::edit(const QByteArray &fragment)
 {
     m_context.makeCurrent(&m_surface);
@@ -97,8 +85,8 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     QElapsedTimer total, step;
     total.start();
     step.start();
-    const GLuint vs = compile(GL_VERTEX_SHADER, m_vertex);
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment);
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, m_vertex);
+    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, fragment);
     s.compileMs = ms(step.nsecsElapsed());
     step.restart();
     const GLuint program = glCreateProgram();

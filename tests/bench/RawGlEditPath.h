@@ -28,8 +28,6 @@ public:
     EditSample edit(const QByteArray &fragment);
 
 private:
-    GLuint compile(GLenum type, const QByteArray &text);
-
     QOpenGLContext m_context;
     QOffscreenSurface m_surface;
     QSize m_size;

@@ -4,7 +4,7 @@
 #include "RawGlFramePath.h"
 
 #include "EditSample.h"
-#include "RawGlUniforms.h"
+#include "RawGlCalls.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 
@@ -66,8 +66,8 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
     }
     m_scene = scene;
     m_size = size;
-    const GLuint vs = compile(GL_VERTEX_SHADER, readShader("phong.vert"));
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, readShader("phong.frag"));
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, readShader("phong.vert"));
+    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, readShader("phong.frag"));
     m_program = glCreateProgram();
     glAttachShader(m_program, vs);
     glAttachShader(m_program, fs);
@@ -127,16 +127,6 @@ RawGlFramePath::~RawGlFramePath()
     }
     glDeleteProgram(m_program);
     m_context.doneCurrent();
-}
-
-GLuint RawGlFramePath::compile(GLenum type, const QByteArray &text)
-{
-    const GLuint shader = glCreateShader(type);
-    const char *source = text.constData();
-    const GLint length = GLint(text.size());
-    glShaderSource(shader, 1, &source, &length);
-    glCompileShader(shader);
-    return shader;
 }
 
 double RawGlFramePath::drawFrame()

@@ -47,7 +47,6 @@ private:
         GLsizei indexCount = 0;
         bool cull = false;
     };
-    GLuint compile(GLenum type, const QByteArray &text);
 
     std::unique_ptr<QMainWindow> m_host; // owns m_window when inside it
     std::unique_ptr<QWindow> m_ownWindow;

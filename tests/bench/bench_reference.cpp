@@ -25,19 +25,6 @@ using namespace phonglab;
 
 namespace {
 
-Scene builtinScene(const QString &mesh)
-{
-    Scene scene;
-    SceneObject object;
-    object.mesh = mesh;
-    object.transform.rotateDeg = {60.0, 0.0, 20.0};
-    scene.objects.push_back(object);
-    PointLight light;
-    light.position = {3.0, 4.0, 5.0};
-    scene.lights.push_back(light);
-    return scene;
-}
-
 double msOf(const std::function<void()> &work)
 {
     QElapsedTimer timer;
@@ -84,10 +71,12 @@ int main(int argc, char **argv)
                 std::max(1u, std::thread::hardware_concurrency()), side, side);
 
     const ReferenceShader phong(ReferenceShading::Phong);
-    const double sphereMs = msOf(
-        [&] { (void)raycastScene(builtinScene(QStringLiteral("builtin:sphere")), side, side); });
-    const double torusMs = msOf(
-        [&] { (void)raycastScene(builtinScene(QStringLiteral("builtin:torus")), side, side); });
+    const double sphereMs = msOf([&] {
+        (void)raycastScene(bench::litObjectScene(QStringLiteral("builtin:sphere")), side, side);
+    });
+    const double torusMs = msOf([&] {
+        (void)raycastScene(bench::litObjectScene(QStringLiteral("builtin:torus")), side, side);
+    });
     std::printf("analytic sphere      %8.1f ms\n", sphereMs);
     std::printf("analytic torus       %8.1f ms  (%.2fx the sphere: a quartic per ray)\n", torusMs,
                 torusMs / sphereMs);

@@ -1,6 +1,6 @@
 #define GL_GLEXT_PROTOTYPES 1
 
-#include "RawGlUniforms.h"
+#include "RawGlCalls.h"
 
 #include "core/ObjectMatrices.h"
 
@@ -38,6 +38,22 @@ void setPhongUniforms(GLuint p, const Scene &scene, const SceneObject &object, c
         glUniform3fv(element("Is"), 1, glm::value_ptr(glm::vec3(l.specular)));
         glUniform3fv(element("attenuation"), 1, glm::value_ptr(glm::vec3(l.attenuation)));
     }
+}
+
+GLuint compileShader(GLenum type, const QByteArray &text)
+{
+    const GLuint shader = glCreateShader(type);
+    const char *source = text.constData();
+    const GLint length = GLint(text.size());
+    glShaderSource(shader, 1, &source, &length);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
 }
 
 } // namespace phonglab::bench
