@@ -12,6 +12,8 @@ class FrameTimeWindow
 {
 public:
     static constexpr qint64 kSpanNs = 1'000'000'000; // one second
+    // Bounds the memory and the work per frame; above 240 frames a second
+    // the window is shorter than a second, which a mean does not notice.
     static constexpr int kMaxFrames = 240;
 
     // A frame that ended at `atNs` (any monotonic clock) and took `milliseconds`.

@@ -17,7 +17,8 @@ class Viewport;
 // view included, which on a software renderer costs more than a frame;
 // changed with a frame, it joins that frame's composition (a timer of its
 // own would add one, in the middle of a shader's build). A new triangle
-// count (another scene, a new level) shows at once.
+// count (another scene, a new level) and the depth warning coming or going
+// show at once.
 class FrameStatsLabel : public QLabel
 {
     Q_OBJECT

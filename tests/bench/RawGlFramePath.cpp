@@ -32,7 +32,7 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
                             const SceneMeshes &meshes, Placement placement)
 {
     QSurfaceFormat format = phonglabSurfaceFormat(samples);
-    format.setSwapInterval(0); // as fast as it can present, like the measured viewport
+    format.setSwapInterval(0); // as fast as it can present (bench_frame turns vsync off for both)
     m_ownWindow = std::make_unique<QWindow>();
     m_window = m_ownWindow.get();
     m_window->setSurfaceType(QSurface::OpenGLSurface);
@@ -62,6 +62,13 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
     m_context.setFormat(format);
     if (!m_window->isExposed() || !m_context.create() || !m_context.makeCurrent(m_window)) {
         std::fprintf(stderr, "raw GL: no window or context\n");
+        return false;
+    }
+    // The floor must resolve as many samples as the viewport does.
+    GLint gotSamples = 0;
+    glGetIntegerv(GL_SAMPLES, &gotSamples);
+    if (gotSamples != samples) {
+        std::fprintf(stderr, "raw GL: the window has %d samples, not %d\n", gotSamples, samples);
         return false;
     }
     m_scene = scene;
@@ -151,8 +158,7 @@ double RawGlFramePath::drawFrame()
         glBindVertexArray(o.vao);
         glDrawElements(GL_TRIANGLES, o.indexCount, GL_UNSIGNED_INT, nullptr);
     }
-    m_context.swapBuffers(m_window);
-    glFinish();
+    m_context.swapBuffers(m_window); // as the viewport's frame ends: no glFinish after
     return ms(clock.nsecsElapsed());
 }
 

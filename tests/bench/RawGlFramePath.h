@@ -38,7 +38,7 @@ public:
     bool create(const QSize &size, int samples, const Scene &scene, const SceneMeshes &meshes,
                 Placement placement = Placement::OwnWindow);
     // Draws and presents one frame; the wall time from its first GL call to
-    // swapBuffers returning, with glFinish after, in milliseconds.
+    // swapBuffers returning, in milliseconds.
     double drawFrame();
 
 private:

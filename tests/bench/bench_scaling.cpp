@@ -61,9 +61,10 @@ double referenceMs(const Scene &scene, const std::shared_ptr<const MeshData> &me
     return image ? double(timer.nsecsElapsed()) / 1e6 : std::nan("");
 }
 
-// A frame that draws nothing would time nothing: the sphere must cover
-// about a fifth of the image (its share at this camera), else say so.
-bool showsTheSphere(OffscreenRenderer &gl, const QSize &size)
+// A frame that draws nothing, or another mesh, would time the wrong thing:
+// the sphere must cover about a fifth of the image (its share at this
+// camera) with all of its triangles, else say so.
+bool drawsTheSphere(OffscreenRenderer &gl, const QSize &size, const MeshData &mesh)
 {
     const QImage image = gl.renderImage(size);
     const QRgb background = image.pixel(0, 0);
@@ -72,10 +73,17 @@ bool showsTheSphere(OffscreenRenderer &gl, const QSize &size)
         for (int x = 0; x < image.width(); ++x)
             covered += image.pixel(x, y) != background;
     const double share = double(covered) / (double(size.width()) * size.height());
-    if (share < 0.1)
+    if (share < 0.1) {
         std::fprintf(stderr, "the sphere covers %.1f %% of the image: nothing to time\n",
                      100.0 * share);
-    return share >= 0.1;
+        return false;
+    }
+    if (gl.renderer().trianglesDrawn() != qint64(mesh.triangleCount())) {
+        std::fprintf(stderr, "drew %lld triangles, not the mesh's %zu\n",
+                     (long long)gl.renderer().trianglesDrawn(), mesh.triangleCount());
+        return false;
+    }
+    return true;
 }
 
 // Least-squares slope of log(y) on log(x), over the points from `first` on
@@ -138,13 +146,8 @@ int main(int argc, char **argv)
             return 1;
         }
         gl.renderer().updateSceneParameters(scene);
-        if (!showsTheSphere(gl, fixedSize))
+        if (!drawsTheSphere(gl, fixedSize, *mesh))
             return 1;
-        if (gl.renderer().trianglesDrawn() != qint64(mesh->triangleCount())) {
-            std::fprintf(stderr, "drew %lld triangles, not the mesh's %zu\n",
-                         (long long)gl.renderer().trianglesDrawn(), mesh->triangleCount());
-            return 1;
-        }
         const FrameTiming timing = gl.timeFrames(fixedSize, 2, frames);
         const double triangles = double(mesh->triangleCount());
         const double refMs = referenceMs(scene, mesh, fixedSize);
@@ -175,6 +178,8 @@ int main(int argc, char **argv)
     for (double megapixels : {0.25, 0.5, 1.0, 2.0, 4.0, 8.0}) {
         const int width = int(std::lround(std::sqrt(megapixels * 1e6 * 4.0 / 3.0)));
         const QSize size(width, width * 3 / 4);
+        if (!drawsTheSphere(gl, size, *mesh))
+            return 1;
         const FrameTiming timing = gl.timeFrames(size, 2, frames);
         const double refMs = referenceMs(scene, mesh, size);
         std::printf("| %.2f M | %dx%d | %.2f | %.1f |\n", megapixels, size.width(), size.height(),
