@@ -1,6 +1,7 @@
 #include "GuiMain.h"
 
 #include "MainWindow.h"
+#include "Viewport.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 
@@ -86,6 +87,14 @@ void openRequestedFiles(MainWindow &window, const QStringList &paths)
 
 } // namespace
 
+void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples)
+{
+    window.viewport()->setFormat(phonglabSurfaceFormat(viewportSamples));
+    QSurfaceFormat single = QSurfaceFormat::defaultFormat();
+    single.setSamples(0);
+    QSurfaceFormat::setDefaultFormat(single);
+}
+
 int runGui(int argc, char **argv)
 {
     if (!displayConfigured()) {
@@ -114,6 +123,7 @@ int runGui(int argc, char **argv)
     QGuiApplication::setDesktopFileName(QStringLiteral("org.phonglab.PhongLab"));
 
     MainWindow window;
+    useMultisamplingInViewOnly(window, kViewportSamples);
     window.restoreWindowSettings(); // geometry and docks as the last session left them
     if (!openDefaultScene(window))
         return kExitFailure;

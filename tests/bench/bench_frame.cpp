@@ -16,6 +16,7 @@
 #include "EditSample.h"
 #include "RawGlFramePath.h"
 #include "render/GlFormat.h"
+#include "ui/GuiMain.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
 
@@ -51,9 +52,10 @@ void settle()
 class ViewportFrames
 {
 public:
-    ViewportFrames(const Scene &scene, const QSize *fixedSize)
+    ViewportFrames(const Scene &scene, const QSize *fixedSize, int samples)
     {
         m_window = std::make_unique<MainWindow>();
+        useMultisamplingInViewOnly(*m_window, samples); // as the app (GuiMain)
         if (fixedSize)
             m_window->viewport()->setFixedSize(*fixedSize);
         m_window->viewport()->setShowLightMarkers(false); // the raw path draws none
@@ -66,6 +68,7 @@ public:
             QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
     }
     bool isReady() const { return m_window->viewport()->framesRendered() > 0; }
+    int samples() const { return m_window->viewport()->framebufferSamples(); }
     QSize pixels() const
     {
         return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
@@ -123,12 +126,17 @@ void runRaw(RawGlFramePath &raw, int frames, std::vector<double> &intervals)
 void measure(const Scene &scene, const SceneMeshes &meshes, const QSize *fixedSize, int samples,
              int frames, const char *label)
 {
-    ViewportFrames phonglab(scene, fixedSize);
+    ViewportFrames phonglab(scene, fixedSize, samples);
     if (!phonglab.isReady()) {
         std::fprintf(stderr, "%s: the viewport drew nothing\n", label);
         return;
     }
     const QSize size = phonglab.pixels();
+    if (phonglab.samples() != samples) { // the floor must resolve as many samples
+        std::fprintf(stderr, "%s: the viewport has %d samples, not %d\n", label, phonglab.samples(),
+                     samples);
+        return;
+    }
     RawGlFramePath raw, contained;
     if (!raw.create(size, samples, scene, meshes)
         || !contained.create(size, samples, scene, meshes,
