@@ -18,6 +18,7 @@
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
+#include "ui/GuiMain.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -51,7 +52,7 @@ namespace {
 class PhongLabPath
 {
 public:
-    PhongLabPath(const Scene &scene, const QSize &size, bool guiThread,
+    PhongLabPath(const Scene &scene, const QSize &size, int samples, bool guiThread,
                  LiveShaderController::WarmUp warmUp);
     bool isReady() const { return m_ready; }
     bool buildsOnWorker() const { return m_window->liveShaders()->buildsOnWorker(); }
@@ -68,7 +69,7 @@ private:
     bool m_ready = false;
 };
 
-PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread,
+PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, bool guiThread,
                            LiveShaderController::WarmUp warmUp)
 {
     if (guiThread)
@@ -76,6 +77,7 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, bool guiThread
     else
         qunsetenv("PHONGLAB_COMPILE_ON_GUI_THREAD");
     m_window = std::make_unique<MainWindow>();
+    useMultisamplingInViewOnly(*m_window, samples); // as the app (GuiMain)
     m_window->liveShaders()->setWarmUp(warmUp);
     QString error;
     if (const Result<> done = m_window->viewport()->setScene(scene); !done) {
@@ -274,7 +276,8 @@ int main(int argc, char **argv)
     std::vector<std::unique_ptr<PhongLabPath>> paths;
     std::vector<Row> rows{{QStringLiteral("raw GL (no Qt)"), {}}};
     for (const Mode &mode : modes) {
-        paths.push_back(std::make_unique<PhongLabPath>(scene, size, mode.guiThread, mode.warmUp));
+        paths.push_back(
+            std::make_unique<PhongLabPath>(scene, size, samples, mode.guiThread, mode.warmUp));
         if (!paths.back()->isReady() || paths.back()->buildsOnWorker() == mode.guiThread) {
             std::fprintf(stderr, "%s: could not start\n", qPrintable(mode.name));
             return 1;
