@@ -29,15 +29,20 @@ QByteArray readShader(const char *name)
 } // namespace
 
 bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
-                            const SceneMeshes &meshes, Placement placement)
+                            const SceneMeshes &meshes, Placement placement,
+                            Presentation presentation, QSize windowSize)
 {
-    QSurfaceFormat format = phonglabSurfaceFormat(samples);
+    m_presentation = presentation;
+    const bool direct = presentation == Presentation::Direct;
+    m_windowSize = direct || windowSize.isEmpty() ? size : windowSize.expandedTo(size);
+    // Composing: the window has no samples (as PhongLab's, useMultisamplingInViewOnly).
+    QSurfaceFormat format = phonglabSurfaceFormat(direct ? samples : 0);
     format.setSwapInterval(0); // as fast as it can present (bench_frame turns vsync off for both)
     m_ownWindow = std::make_unique<QWindow>();
     m_window = m_ownWindow.get();
     m_window->setSurfaceType(QSurface::OpenGLSurface);
     m_window->setFormat(format);
-    const QSize logical = size / m_window->devicePixelRatio();
+    const QSize logical = m_windowSize / m_window->devicePixelRatio();
     if (placement == Placement::InsideMainWindow) {
         m_host = std::make_unique<QMainWindow>();
         QWidget *container = QWidget::createWindowContainer(m_ownWindow.release(), m_host.get());
@@ -64,15 +69,18 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
         std::fprintf(stderr, "raw GL: no window or context\n");
         return false;
     }
-    // The floor must resolve as many samples as the viewport does.
-    GLint gotSamples = 0;
-    glGetIntegerv(GL_SAMPLES, &gotSamples);
-    if (gotSamples != samples) {
-        std::fprintf(stderr, "raw GL: the window has %d samples, not %d\n", gotSamples, samples);
-        return false;
-    }
     m_scene = scene;
     m_size = size;
+    if (!direct && !createComposition(samples))
+        return false;
+    // The floor must resolve as many samples as the viewport does.
+    GLint gotSamples = 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, direct ? m_context.defaultFramebufferObject() : m_sampledFbo);
+    glGetIntegerv(GL_SAMPLES, &gotSamples);
+    if (gotSamples != samples) {
+        std::fprintf(stderr, "raw GL: the target has %d samples, not %d\n", gotSamples, samples);
+        return false;
+    }
     const GLuint vs = compileShader(GL_VERTEX_SHADER, readShader("phong.vert"));
     const GLuint fs = compileShader(GL_FRAGMENT_SHADER, readShader("phong.frag"));
     m_program = glCreateProgram();
@@ -133,15 +141,21 @@ RawGlFramePath::~RawGlFramePath()
         glDeleteBuffers(2, buffers);
     }
     glDeleteProgram(m_program);
+    const GLuint framebuffers[] = {m_sampledFbo, m_viewFbo};
+    glDeleteFramebuffers(2, framebuffers);
+    const GLuint renderbuffers[] = {m_sampledColor, m_sampledDepth};
+    glDeleteRenderbuffers(2, renderbuffers);
+    const GLuint textures[] = {m_viewTexture, m_layerTexture};
+    glDeleteTextures(2, textures);
+    glDeleteVertexArrays(1, &m_quadVao);
+    glDeleteProgram(m_quadProgram);
     m_context.doneCurrent();
 }
 
-double RawGlFramePath::drawFrame()
+void RawGlFramePath::drawScene()
 {
-    QElapsedTimer clock;
-    clock.start();
-    m_context.makeCurrent(m_window);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
+    const bool direct = m_presentation == Presentation::Direct;
+    glBindFramebuffer(GL_FRAMEBUFFER, direct ? m_context.defaultFramebufferObject() : m_sampledFbo);
     glViewport(0, 0, m_size.width(), m_size.height());
     const glm::dvec3 bg = m_scene.background;
     glClearColor(float(bg.r), float(bg.g), float(bg.b), 1.0f);
@@ -158,8 +172,147 @@ double RawGlFramePath::drawFrame()
         glBindVertexArray(o.vao);
         glDrawElements(GL_TRIANGLES, o.indexCount, GL_UNSIGNED_INT, nullptr);
     }
+}
+
+double RawGlFramePath::drawFrame()
+{
+    QElapsedTimer clock;
+    clock.start();
+    m_context.makeCurrent(m_window);
+    drawScene();
+    if (m_presentation == Presentation::ThroughTexture) {
+        resolve();
+        uploadLayer();
+        compose();
+    }
     m_context.swapBuffers(m_window); // as the viewport's frame ends: no glFinish after
     return ms(clock.nsecsElapsed());
+}
+
+RawGlFramePath::Steps RawGlFramePath::drawTimedFrame()
+{
+    Steps steps;
+    QElapsedTimer clock;
+    m_context.makeCurrent(m_window);
+    glFinish();
+    const auto step = [&clock](double &into, auto &&work) {
+        clock.start();
+        work();
+        glFinish();
+        into = ms(clock.nsecsElapsed());
+    };
+    step(steps.draw, [this] { drawScene(); });
+    if (m_presentation == Presentation::ThroughTexture) {
+        step(steps.resolve, [this] { resolve(); });
+        step(steps.upload, [this] { uploadLayer(); });
+        step(steps.compose, [this] { compose(); });
+    }
+    step(steps.swap, [this] { m_context.swapBuffers(m_window); });
+    return steps;
+}
+
+// QOpenGLWidget's framebuffer (samples, depth and stencil) and the texture
+// its samples resolve into; the backing store's texture; a program that
+// draws a texture into a rectangle of the window, as Qt's compositor does.
+bool RawGlFramePath::createComposition(int samples)
+{
+    const int w = m_size.width(), h = m_size.height();
+    glGenRenderbuffers(1, &m_sampledColor);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_sampledColor);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+    glGenRenderbuffers(1, &m_sampledDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_sampledDepth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, w, h);
+    glGenFramebuffers(1, &m_sampledFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_sampledFbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              m_sampledColor);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              m_sampledDepth);
+    const bool sampledComplete =
+        glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+
+    const auto texture = [](GLuint &name, const QSize &size) {
+        glGenTextures(1, &name);
+        glBindTexture(GL_TEXTURE_2D, name);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.width(), size.height(), 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, nullptr);
+    };
+    texture(m_viewTexture, m_size);
+    texture(m_layerTexture, m_windowSize);
+    glGenFramebuffers(1, &m_viewFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_viewFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_viewTexture, 0);
+    const bool viewComplete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    m_layerPixels.assign(std::size_t(w) * h * 4, 0xe0); // the window's grey, opaque
+
+    // A rectangle of the window from gl_VertexID, textured; no buffers.
+    static const char *vertex = "#version 330 core\n"
+                                "uniform vec4 rect; out vec2 uv;\n"
+                                "void main() {\n"
+                                "  uv = vec2(gl_VertexID & 1, gl_VertexID >> 1);\n"
+                                "  gl_Position = vec4(rect.xy + uv * rect.zw, 0.0, 1.0);\n"
+                                "}\n";
+    static const char *fragment = "#version 330 core\n"
+                                  "uniform sampler2D image; in vec2 uv; out vec4 color;\n"
+                                  "void main() { color = texture(image, uv); }\n";
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, vertex);
+    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, fragment);
+    m_quadProgram = glCreateProgram();
+    glAttachShader(m_quadProgram, vs);
+    glAttachShader(m_quadProgram, fs);
+    glLinkProgram(m_quadProgram);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(m_quadProgram, GL_LINK_STATUS, &linked);
+    glGenVertexArrays(1, &m_quadVao);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
+    if (!sampledComplete || !viewComplete || !linked) {
+        std::fprintf(stderr, "raw GL: the composition's framebuffers or program failed\n");
+        return false;
+    }
+    return true;
+}
+
+void RawGlFramePath::resolve()
+{
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_sampledFbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_viewFbo);
+    glBlitFramebuffer(0, 0, m_size.width(), m_size.height(), 0, 0, m_size.width(), m_size.height(),
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+// The repaint of the view's region marks it dirty in the backing store,
+// whose texture then takes that region again.
+void RawGlFramePath::uploadLayer()
+{
+    glBindTexture(GL_TEXTURE_2D, m_layerTexture);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m_size.width(), m_size.height(), GL_RGBA,
+                    GL_UNSIGNED_BYTE, m_layerPixels.data());
+}
+
+void RawGlFramePath::compose()
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
+    glViewport(0, 0, m_windowSize.width(), m_windowSize.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(m_quadProgram);
+    glBindVertexArray(m_quadVao);
+    const GLint rect = glGetUniformLocation(m_quadProgram, "rect");
+    // The whole window's widgets, then the view in its top-left corner
+    // (clip space: y up, so its rectangle starts at the top edge).
+    glUniform4f(rect, -1.0f, -1.0f, 2.0f, 2.0f);
+    glBindTexture(GL_TEXTURE_2D, m_layerTexture);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    const float w = 2.0f * float(m_size.width()) / float(m_windowSize.width());
+    const float h = 2.0f * float(m_size.height()) / float(m_windowSize.height());
+    glUniform4f(rect, -1.0f, 1.0f - h, w, h);
+    glBindTexture(GL_TEXTURE_2D, m_viewTexture);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
 
 } // namespace phonglab::bench

@@ -31,6 +31,7 @@
 #include <QTimer>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 using namespace phonglab;
 using namespace phonglab::bench;
@@ -73,21 +74,40 @@ public:
     {
         return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
     }
-    // `count` frames back to back: the intervals between frameSwapped, and
-    // the draw times the status bar reports (glFinish-timed, per frame).
-    void run(int count, std::vector<double> &intervals, std::vector<double> &draws)
+    QSize windowPixels() const { return m_window->size() * m_window->devicePixelRatioF(); }
+
+    // Where each frame's interval went: from the previous frame's swap to
+    // the end of paintGL less its draw (the event loop and the repaint
+    // manager up to paintGL), the draw (first GL call to glFinish, the status
+    // bar's figure), paintGL's end to aboutToCompose (the resolve submitted,
+    // the other dirty widgets painted into the backing store) and
+    // aboutToCompose to frameSwapped (the composition and the swap, with the
+    // resolve executed).
+    struct Phases {
+        std::vector<double> beforeDraw, draw, afterDraw, compose;
+    };
+    // `count` frames back to back: the intervals between frameSwapped.
+    void run(int count, std::vector<double> &intervals, Phases &phases)
     {
         Viewport *viewport = m_window->viewport();
         QEventLoop loop;
         QElapsedTimer clock;
         int seen = -1; // the first swap starts the clock
-        double lastDraw = 0;
-        auto drawn = QObject::connect(viewport, &Viewport::frameRendered,
-                                      [&] { lastDraw = viewport->frameTimes().latestMs(); });
+        double lastDraw = 0, paintEnd = 0, composeStart = 0;
+        auto drawn = QObject::connect(viewport, &Viewport::frameRendered, [&] {
+            lastDraw = viewport->frameTimes().latestMs();
+            paintEnd = ms(clock.nsecsElapsed());
+        });
+        auto composing = QObject::connect(viewport, &QOpenGLWidget::aboutToCompose,
+                                          [&] { composeStart = ms(clock.nsecsElapsed()); });
         auto swapped = QObject::connect(viewport, &QOpenGLWidget::frameSwapped, [&] {
             if (seen >= 0) {
-                intervals.push_back(ms(clock.nsecsElapsed()));
-                draws.push_back(lastDraw);
+                const double now = ms(clock.nsecsElapsed());
+                intervals.push_back(now);
+                phases.beforeDraw.push_back(paintEnd - lastDraw);
+                phases.draw.push_back(lastDraw);
+                phases.afterDraw.push_back(composeStart - paintEnd);
+                phases.compose.push_back(now - composeStart);
             }
             clock.start();
             if (++seen >= count)
@@ -100,6 +120,7 @@ public:
         viewport->update();
         loop.exec();
         QObject::disconnect(drawn);
+        QObject::disconnect(composing);
         QObject::disconnect(swapped);
     }
 
@@ -123,42 +144,97 @@ void runRaw(RawGlFramePath &raw, int frames, std::vector<double> &intervals)
     }
 }
 
-void measure(const Scene &scene, const SceneMeshes &meshes, const QSize *fixedSize, int samples,
-             int frames, const char *label)
+// The steps of `frames` raw frames, each timed on its own (glFinish after
+// each); medians per step.
+RawGlFramePath::Steps medianSteps(RawGlFramePath &raw, int frames)
+{
+    settle();
+    std::vector<double> draw, resolve, upload, compose, swap;
+    for (int i = 0; i < frames; ++i) {
+        QCoreApplication::processEvents();
+        const RawGlFramePath::Steps s = raw.drawTimedFrame();
+        draw.push_back(s.draw);
+        resolve.push_back(s.resolve);
+        upload.push_back(s.upload);
+        compose.push_back(s.compose);
+        swap.push_back(s.swap);
+    }
+    return {percentile(draw, 0.5), percentile(resolve, 0.5), percentile(upload, 0.5),
+            percentile(compose, 0.5), percentile(swap, 0.5)};
+}
+
+struct Measured {
+    QString label;
+    QSize size;
+    std::vector<double> raw, contained, composed, viewport;
+    ViewportFrames::Phases phases;
+    RawGlFramePath::Steps rawSteps, composedSteps;
+};
+
+std::optional<Measured> measure(const Scene &scene, const SceneMeshes &meshes,
+                                const QSize *fixedSize, int samples, int frames, const char *label)
 {
     ViewportFrames phonglab(scene, fixedSize, samples);
     if (!phonglab.isReady()) {
         std::fprintf(stderr, "%s: the viewport drew nothing\n", label);
-        return;
+        return std::nullopt;
     }
-    const QSize size = phonglab.pixels();
+    Measured m{QString::fromLatin1(label), phonglab.pixels(), {}, {}, {}, {}, {}, {}, {}};
     if (phonglab.samples() != samples) { // the floor must resolve as many samples
         std::fprintf(stderr, "%s: the viewport has %d samples, not %d\n", label, phonglab.samples(),
                      samples);
-        return;
+        return std::nullopt;
     }
-    RawGlFramePath raw, contained;
-    if (!raw.create(size, samples, scene, meshes)
-        || !contained.create(size, samples, scene, meshes,
-                             RawGlFramePath::Placement::InsideMainWindow))
-        return;
-    std::vector<double> rawFrames, containedFrames, viewportFrames, draws, ignored, ignoredDraws;
-    phonglab.run(kWarmUpFrames, ignored, ignoredDraws);
-    runRaw(raw, kWarmUpFrames, ignored);
-    runRaw(contained, kWarmUpFrames, ignored);
-    while (int(rawFrames.size()) < frames) {
-        phonglab.run(kBlock, viewportFrames, draws);
-        runRaw(raw, kBlock, rawFrames);
-        runRaw(contained, kBlock, containedFrames);
+    using P = RawGlFramePath;
+    RawGlFramePath raw, contained, composed;
+    if (!raw.create(m.size, samples, scene, meshes)
+        || !contained.create(m.size, samples, scene, meshes, P::Placement::InsideMainWindow)
+        || !composed.create(m.size, samples, scene, meshes, P::Placement::OwnWindow,
+                            P::Presentation::ThroughTexture, phonglab.windowPixels()))
+        return std::nullopt;
+    std::vector<double> ignored;
+    ViewportFrames::Phases ignoredPhases;
+    phonglab.run(kWarmUpFrames, ignored, ignoredPhases);
+    for (RawGlFramePath *path : {&raw, &contained, &composed})
+        runRaw(*path, kWarmUpFrames, ignored);
+    while (int(m.raw.size()) < frames) {
+        phonglab.run(kBlock, m.viewport, m.phases);
+        runRaw(raw, kBlock, m.raw);
+        runRaw(contained, kBlock, m.contained);
+        runRaw(composed, kBlock, m.composed);
     }
-    const double raw50 = percentile(rawFrames, 0.5), raw95 = percentile(rawFrames, 0.95);
-    const double vp50 = percentile(viewportFrames, 0.5), vp95 = percentile(viewportFrames, 0.95);
-    const double child50 = percentile(containedFrames, 0.5);
-    const double child95 = percentile(containedFrames, 0.95);
-    std::printf("| %s | %dx%d | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2fx / %.2fx | "
-                "%.2fx / %.2fx | %.2f |\n",
-                label, size.width(), size.height(), raw50, raw95, child50, child95, vp50, vp95,
-                vp50 / raw50, vp95 / raw95, vp50 / child50, vp95 / child95, percentile(draws, 0.5));
+    m.rawSteps = medianSteps(raw, frames / 2);
+    m.composedSteps = medianSteps(composed, frames / 2);
+    return m;
+}
+
+void printIntervals(const Measured &m)
+{
+    const double raw50 = percentile(m.raw, 0.5), raw95 = percentile(m.raw, 0.95);
+    const double vp50 = percentile(m.viewport, 0.5), vp95 = percentile(m.viewport, 0.95);
+    const double child50 = percentile(m.contained, 0.5), child95 = percentile(m.contained, 0.95);
+    const double comp50 = percentile(m.composed, 0.5), comp95 = percentile(m.composed, 0.95);
+    std::printf("| %s | %dx%d | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | "
+                "%.2fx / %.2fx | %.2fx / %.2fx | %.2fx / %.2fx |\n",
+                qPrintable(m.label), m.size.width(), m.size.height(), raw50, raw95, child50,
+                child95, comp50, comp95, vp50, vp95, vp50 / raw50, vp95 / raw95, vp50 / child50,
+                vp95 / child95, vp50 / comp50, vp95 / comp95);
+}
+
+void printSteps(const Measured &m)
+{
+    const auto &p = m.phases;
+    std::printf("| %s | viewport (frame as presented) | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
+                qPrintable(m.label), percentile(p.beforeDraw, 0.5), percentile(p.draw, 0.5),
+                percentile(p.afterDraw, 0.5), percentile(p.compose, 0.5),
+                percentile(m.viewport, 0.5));
+    const auto row = [&m](const char *path, const RawGlFramePath::Steps &s) {
+        std::printf("| %s | %s (glFinish after each step) | draw %.2f | resolve %.2f | upload "
+                    "%.2f | compose %.2f | swap %.2f |\n",
+                    qPrintable(m.label), path, s.draw, s.resolve, s.upload, s.compose, s.swap);
+    };
+    row("raw GL, own window", m.rawSteps);
+    row("raw GL, the widget's steps", m.composedSteps);
 }
 
 QString loadAverage()
@@ -197,14 +273,27 @@ int main(int argc, char **argv)
         return 1;
     std::printf("default scene (every object), %d samples, %d frames per path, %d CPUs, load %s\n",
                 samples, frames, QThread::idealThreadCount(), qPrintable(loadAverage()));
+    const QSize fixed(800, 600);
+    std::vector<Measured> all;
+    if (auto m = measure(loaded->scene, loaded->meshes, &fixed, samples, frames, "800x600"))
+        all.push_back(std::move(*m));
+    if (auto m =
+            measure(loaded->scene, loaded->meshes, nullptr, samples, frames, "window's default"))
+        all.push_back(std::move(*m));
     std::printf("\nframe intervals in ms, p50 / p95:\n");
     std::printf("\n| size | pixels | raw GL, own window | raw GL, native child of a main window "
-                "| PhongLab viewport | viewport / raw own window | viewport / raw native child "
-                "| viewport draw p50 (per frame) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
-    const QSize fixed(800, 600);
-    measure(loaded->scene, loaded->meshes, &fixed, samples, frames, "800x600");
-    measure(loaded->scene, loaded->meshes, nullptr, samples, frames, "window's default");
+                "| raw GL, the widget's steps | PhongLab viewport | viewport / raw own window "
+                "| viewport / raw native child | viewport / raw widget's steps |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+    for (const Measured &m : all)
+        printIntervals(m);
+    std::printf("\nwhere the frame goes, ms, p50 of each:\n");
+    std::printf("\n| size | path | swap to paintGL (event loop, repaint manager) | draw "
+                "(to glFinish) | paintGL end to aboutToCompose | aboutToCompose to swapped "
+                "(resolve, composition, swap) | frame |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    for (const Measured &m : all)
+        printSteps(m);
     std::printf("\nload at the end: %s\n", qPrintable(loadAverage()));
     return 0;
 }
