@@ -9,8 +9,8 @@ namespace phonglab {
 
 class WarmUpDraw;
 
-// A QOpenGLWidget's context lent to another thread, the way QOpenGLWidget
-// documents drawing off the GUI thread: the owner stops painting, releases
+// A view's context lent to another thread, the way Qt documents drawing off
+// the GUI thread with one context: the owner stops painting, releases
 // the context and moves it to the borrower's thread. The borrower makes it
 // current on a surface of its own, draws, releases it, moves it back to the
 // owner's thread and only then releases `returned`; the owner waits on that

@@ -62,7 +62,7 @@ void UniformsDock::scheduleRebuild()
 {
     m_rebuildPending = true;
     if (m_viewport)
-        m_viewport->update();
+        m_viewport->requestFrame();
 }
 
 void UniformsDock::onFrameRendered()
@@ -226,7 +226,7 @@ void UniformsDock::write(const UniformValue &value)
     for (UniformValue &kept : m_values.values)
         if (kept.name == value.name)
             kept = value;
-    m_viewport->update();
+    m_viewport->requestFrame();
     emit valueWritten();
 }
 

@@ -3,6 +3,7 @@
 #include "CurrentContext.h"
 
 #include "LightPicking.h"
+#include "ViewportWindow.h"
 #include "render/FramebufferImage.h"
 
 #include <QAction>
@@ -15,6 +16,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <QResizeEvent>
 #include <QWheelEvent>
 #include <algorithm>
@@ -56,16 +58,55 @@ QString contextDescription(QOpenGLContext *context)
 } // namespace
 
 Viewport::Viewport(QWidget *parent)
-    : QOpenGLWidget(parent)
-    , m_lender(this)
+    : QWidget(parent)
+    , m_window(new ViewportWindow(this))
 {
     setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
     setAcceptDrops(true);
+    m_container = QWidget::createWindowContainer(m_window, this);
+    // Events made for this widget (tests, drops found by position) reach it,
+    // not the container; the window's own input is passed on by ViewportWindow.
+    m_container->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_container->setFocusPolicy(Qt::NoFocus);
 }
 
 Viewport::~Viewport()
 {
     cleanup();
+    if (m_lender.isActive())
+        (void)m_context.release(); // still with a borrower stuck in the driver: left, as said
+}
+
+void Viewport::makeCurrent()
+{
+    if (m_context && m_context->isValid())
+        m_context->makeCurrent(m_window);
+}
+
+void Viewport::doneCurrent()
+{
+    if (m_context && QOpenGLContext::currentContext() == m_context.get())
+        m_context->doneCurrent();
+}
+
+void Viewport::setFormat(const QSurfaceFormat &format)
+{
+    m_window->setFormat(format);
+}
+
+QSurfaceFormat Viewport::format() const
+{
+    return m_context && m_context->isValid() ? m_context->format() : m_window->requestedFormat();
+}
+
+void Viewport::requestFrame()
+{
+    m_window->requestFrame();
+}
+
+QSize Viewport::pixelSize() const
+{
+    return size() * devicePixelRatioF();
 }
 
 QSize Viewport::minimumSizeHint() const
@@ -161,7 +202,7 @@ void Viewport::adoptProgram(GlProgram program)
         const CurrentContext current(*this);
         m_renderer.adoptProgram(std::move(program));
     }
-    update();
+    requestFrame();
 }
 
 BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSource &fragment)
@@ -184,36 +225,75 @@ std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
     if (!m_glInitialized)
         return std::nullopt;
-    return m_lender.lend(borrower, &m_warmer, std::max(0, m_framebufferSamples));
+    return m_lender.lend(m_context.get(), borrower, &m_warmer, std::max(0, m_framebufferSamples));
 }
 
 bool Viewport::takeBackContext(int timeoutMs)
 {
-    return m_lender.end(timeoutMs);
+    if (!m_lender.end(timeoutMs))
+        return false;
+    if (m_frameMissed) {
+        m_frameMissed = false;
+        requestFrame();
+    }
+    return true;
 }
 
 QImage Viewport::grabFramebuffer()
 {
     takeBackContext();
-    return QOpenGLWidget::grabFramebuffer();
-}
-
-// QOpenGLWidget makes its context current for these on its own; with the
-// context lent they wait for it. Input goes on (the view repaints when the
-// context is back), so the window stays responsive during a loan.
-bool Viewport::event(QEvent *event)
-{
-    const QEvent::Type type = event->type();
-    if (type == QEvent::Show || type == QEvent::WindowChangeInternal
-        || type == QEvent::WindowAboutToChangeInternal || type == QEvent::ScreenChangeInternal)
-        takeBackContext();
-    return QOpenGLWidget::event(event);
+    if (!m_context || !m_context->isValid() || !m_window->handle())
+        return {};
+    makeCurrent();
+    drawScene();
+    drawOverlays();
+    // The back buffer, resolved by the read: the frame as it would be presented.
+    const QSize pixels = pixelSize();
+    QImage image(pixels, QImage::Format_RGBA8888);
+    QOpenGLFunctions *f = m_context->functions();
+    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    m_context->extraFunctions()->glReadBuffer(GL_BACK);
+    f->glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
+    doneCurrent();
+    image = image.mirrored().convertToFormat(QImage::Format_RGB32);
+    image.setDevicePixelRatio(devicePixelRatioF());
+    return image;
 }
 
 void Viewport::resizeEvent(QResizeEvent *event)
 {
-    takeBackContext(); // the framebuffer is recreated with the context current
-    QOpenGLWidget::resizeEvent(event);
+    m_container->setGeometry(rect());
+    QWidget::resizeEvent(event);
+}
+
+// Every child widget but the window's container lies over the frame and is
+// drawn into it: a change to one is a new frame.
+void Viewport::childEvent(QChildEvent *event)
+{
+    if (event->added() && event->child()->isWidgetType())
+        event->child()->installEventFilter(this);
+    QWidget::childEvent(event);
+}
+
+bool Viewport::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_container)
+        return false;
+    switch (event->type()) {
+    case QEvent::Paint:
+        if (m_paintingOverlays)
+            break;
+        [[fallthrough]];
+    case QEvent::Show:
+    case QEvent::Hide:
+    case QEvent::Move:
+    case QEvent::Resize:
+        m_overlayDirty = true;
+        requestFrame();
+        break;
+    default: break;
+    }
+    return false;
 }
 
 void Viewport::setSceneParameters(const Scene &scene)
@@ -228,7 +308,7 @@ void Viewport::setSceneParameters(const Scene &scene)
     if (m_options.selectedLight >= int(m_scene.lights.size()))
         setSelectedLight(int(m_scene.lights.size()) - 1);
     m_parametersDirty = true;
-    update();
+    requestFrame();
     emit sceneParametersChanged();
 }
 
@@ -260,7 +340,7 @@ void Viewport::setHeadlight(bool on)
 {
     m_headlight = on;
     m_parametersDirty = true;
-    update();
+    requestFrame();
     emit headlightChanged(on);
 }
 
@@ -282,7 +362,7 @@ void Viewport::setSelectedLight(int index)
 {
     m_options.selectedLight = index;
     m_renderer.setOptions(m_options); // plain state, no GL call
-    update();
+    requestFrame();
 }
 
 bool Viewport::startLightDrag(const QPointF &position)
@@ -306,7 +386,7 @@ void Viewport::dragLight(const QPointF &position, bool alongView)
         ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
         : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
     m_parametersDirty = true;
-    update();
+    requestFrame();
     emit sceneParametersChanged();
 }
 
@@ -329,22 +409,51 @@ void Viewport::setModelReduction(double allowance, bool leaveOutLights)
     m_options.lightAllowance = leaveOutLights ? allowance : 0.0;
     m_options.detailShadingAllowance = allowance;
     m_renderer.setOptions(m_options); // plain state, no GL call
-    update();
+    requestFrame();
 }
 
 void Viewport::setShowLightMarkers(bool show)
 {
     m_options.drawLightMarkers = show;
     m_renderer.setOptions(m_options); // plain state, no GL call
-    update();
+    requestFrame();
 }
 
-void Viewport::initializeGL()
+void Viewport::drawFrame()
 {
-    // Called again with a fresh context when the widget changes window; the
-    // old context's resources are freed in cleanup() just before it goes.
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
-    m_framebufferSamples = -1; // a new context, a new framebuffer
+    if (m_lender.isActive()) {
+        m_frameMissed = true;
+        return;
+    }
+    if (!m_window->isExposed())
+        return;
+    if (!m_context)
+        startGl();
+    if (!m_context->isValid() || !m_context->makeCurrent(m_window))
+        return;
+    drawScene();
+    drawOverlays();
+    m_context->swapBuffers(m_window);
+    emit frameSwapped();
+}
+
+// Once, on the first exposure: the context for the window's format, sharing
+// objects with the rest of the application (the build thread's context).
+void Viewport::startGl()
+{
+    m_context = std::make_unique<QOpenGLContext>();
+    m_context->setFormat(m_window->requestedFormat());
+    m_context->setShareContext(QOpenGLContext::globalShareContext());
+    if (!m_context->create() || !m_context->makeCurrent(m_window)) {
+        emit renderError(tr("Cannot create an OpenGL context for the viewport"));
+        m_context = std::make_unique<QOpenGLContext>(); // invalid: no second try
+        return;
+    }
+    initializeGl();
+}
+
+void Viewport::initializeGl()
+{
     m_glRendererName = contextDescription(context());
     emit glRendererChanged(m_glRendererName);
 
@@ -394,6 +503,7 @@ void Viewport::cleanup()
         if (takeBackContext(kGiveBackTimeoutMs)) {
             makeCurrent();
             m_warmer.destroy();
+            m_overlayLayer.destroy();
             m_renderer.cleanup();
             doneCurrent();
         } else {
@@ -403,14 +513,13 @@ void Viewport::cleanup()
     }
     m_glInitialized = false;
     m_renderReady = false;
-    if (context())
-        disconnect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
 }
 
-void Viewport::paintGL()
+// Needs the context current: the scene into the window's back buffer.
+void Viewport::drawScene()
 {
-    m_lender.framePainted();
     QOpenGLFunctions *f = context()->functions();
+    f->glBindFramebuffer(GL_FRAMEBUFFER, m_context->defaultFramebufferObject());
     if (!m_renderReady) {
         // Nothing to draw (GL failed and was reported): show the background.
         const glm::dvec3 bg = m_scene.background;
@@ -421,14 +530,13 @@ void Viewport::paintGL()
     sendChangedParameters();
 
     if (m_framebufferSamples < 0) {
-        // What QOpenGLWidget really allocated (format() reports the
-        // context's, which has none): a warm-up must draw with the same.
+        // What the window really got, not what was asked for: a warm-up
+        // must draw with the same.
         f->glGetIntegerv(GL_SAMPLES, &m_framebufferSamples);
     }
     QElapsedTimer timer;
     timer.start();
-    // The same rounding QOpenGLWidget uses to size its framebuffer.
-    m_renderer.render(size() * devicePixelRatioF());
+    m_renderer.render(pixelSize());
     // Without glFinish the timer would only measure command submission.
     f->glFinish();
     const auto now = std::chrono::steady_clock::now().time_since_epoch();
@@ -436,6 +544,34 @@ void Viewport::paintGL()
                      double(timer.nsecsElapsed()) / 1e6);
     ++m_framesRendered;
     emit frameRendered(m_frameTimes.meanMs(), m_renderer.trianglesDrawn());
+}
+
+// Needs the context current: the visible child widgets over the frame, as
+// QPainter draws them (premultiplied), painted again only when one changed.
+void Viewport::drawOverlays()
+{
+    QList<QWidget *> shown;
+    for (QWidget *child : findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
+        if (child != m_container && child->isVisible())
+            shown << child;
+    if (shown.isEmpty())
+        return;
+    const QSize pixels = pixelSize();
+    if (m_overlayDirty || m_overlayImage.size() != pixels) {
+        QImage image(pixels, QImage::Format_RGBA8888_Premultiplied);
+        image.setDevicePixelRatio(devicePixelRatioF());
+        image.fill(Qt::transparent);
+        m_paintingOverlays = true;
+        {
+            QPainter painter(&image);
+            for (QWidget *child : shown)
+                child->render(&painter, child->pos(), QRegion(), QWidget::DrawChildren);
+        }
+        m_paintingOverlays = false;
+        m_overlayImage = image;
+        m_overlayDirty = false;
+    }
+    m_overlayLayer.draw(m_overlayImage, pixels);
 }
 
 // Needs the context current: camera, lights and materials changed since the
@@ -451,7 +587,7 @@ void Viewport::sendChangedParameters()
 void Viewport::cameraMoved()
 {
     m_parametersDirty = true;
-    update();
+    requestFrame();
     emit cameraChanged();
 }
 
@@ -463,7 +599,7 @@ void Viewport::mousePressEvent(QMouseEvent *event)
         break;
     case Qt::RightButton:
     case Qt::MiddleButton: m_drag = Drag::Pan; break;
-    default: QOpenGLWidget::mousePressEvent(event); return;
+    default: QWidget::mousePressEvent(event); return;
     }
     m_lastMousePos = event->position();
     event->accept();
@@ -472,7 +608,7 @@ void Viewport::mousePressEvent(QMouseEvent *event)
 void Viewport::mouseMoveEvent(QMouseEvent *event)
 {
     if (m_drag == Drag::None) {
-        QOpenGLWidget::mouseMoveEvent(event);
+        QWidget::mouseMoveEvent(event);
         return;
     }
     if (m_drag == Drag::Light) {
@@ -530,7 +666,7 @@ void Viewport::keyPressEvent(QKeyEvent *event)
             return;
         }
     }
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
 }
 
 void Viewport::dragEnterEvent(QDragEnterEvent *event)

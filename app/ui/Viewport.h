@@ -3,23 +3,36 @@
 #include "core/FrameTimeWindow.h"
 #include "core/OrbitCamera.h"
 #include "core/Scene.h"
+#include "render/ImageLayer.h"
 #include "render/LentContext.h"
 #include "render/ProgramBuilder.h"
 #include "render/Renderer.h"
 #include "render/UniformSnapshot.h"
 #include "render/WarmUpDraw.h"
 
-#include <QOpenGLWidget>
+#include <QImage>
+#include <QOpenGLContext>
 #include <QPointF>
+#include <QWidget>
+#include <memory>
 #include <optional>
 
 namespace phonglab {
 
-// The interactive 3D view: a QOpenGLWidget that drives a Renderer and turns
-// mouse and keyboard input into OrbitCamera moves. Left drag orbits, right
-// or middle drag pans, the wheel zooms. Keys are the shortcuts of the actions
-// added to it (the window's Reset Camera: R, Home).
-class Viewport : public QOpenGLWidget
+class ViewportWindow;
+
+// The interactive 3D view: drives a Renderer and turns mouse and keyboard
+// input into OrbitCamera moves. Left drag orbits, right or middle drag pans,
+// the wheel zooms. Keys are the shortcuts of the actions added to it (the
+// window's Reset Camera: R, Home).
+//
+// Its frames go to a native window of their own (ViewportWindow, in a window
+// container filling this widget) and are presented with swapBuffers, as a
+// plain GL program's are; a QOpenGLWidget's frame costs a resolve and a
+// composition of the whole main window on top (docs/performance.md). Child
+// widgets of the view (the check's pictures, the detail label) are drawn
+// over each frame in GL.
+class Viewport : public QWidget
 {
     Q_OBJECT
 
@@ -62,8 +75,8 @@ public:
     // program's draw-time compile happens in this very context but off the
     // GUI thread. Until takeBackContext() the view does not paint, and anything that
     // needs the context on this thread first waits for it to come back.
-    // Refused (nullopt) while a painted frame waits to be composed (the
-    // window is hidden, or a grab): the caller then does the work itself.
+    // Refused (nullopt) before GL is up or while lent already: the caller
+    // then does the work itself.
     std::optional<LentContext> lendContext(QThread *borrower);
     // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
     // and paints again. False if it did not come back in time.
@@ -71,8 +84,22 @@ public:
     bool isContextLent() const { return m_lender.isActive(); }
     // Samples of the framebuffer the view draws into (-1 before the first frame).
     int framebufferSamples() const { return m_framebufferSamples; }
-    // QOpenGLWidget::grabFramebuffer() once a lent context is back.
+    // A frame drawn now (overlays included) and read back, once a lent
+    // context is back; null before the window was first shown.
     QImage grabFramebuffer();
+
+    // The view's GL context (null before the window was first shown);
+    // makeCurrent() and doneCurrent() as QOpenGLWidget's.
+    QOpenGLContext *context() const { return m_context.get(); }
+    void makeCurrent();
+    void doneCurrent();
+    // The format the view's window asks for (samples, depth); set before the
+    // window is first shown.
+    void setFormat(const QSurfaceFormat &format);
+    QSurfaceFormat format() const;
+    // A new frame at the next turn of the event loop (QWidget::update()
+    // repaints only the widget around the view's window).
+    void requestFrame();
 
     // The cheap path for dock edits: takes lights, ambient, materials and
     // transforms from `scene` (same objects and meshes as shown) without
@@ -121,6 +148,8 @@ public:
 signals:
     // GL could not be set up or the scene could not be drawn; never fatal.
     void renderError(const QString &message);
+    // A frame reached the window (after swapBuffers).
+    void frameSwapped();
     // After every frame: the draw time (first GL call to glFinish, the
     // window's composition not included), the mean of the frames of the last
     // second (FrameTimeWindow), and the triangles drawn.
@@ -151,10 +180,9 @@ signals:
     void headlightChanged(bool on);
 
 protected:
-    bool event(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
-    void initializeGL() override;
-    void paintGL() override;
+    void childEvent(QChildEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -171,6 +199,15 @@ private:
         Light
     };
 
+    friend class ViewportWindow;
+    // From ViewportWindow: draw and present a frame, unless the context is
+    // lent (then once it is back).
+    void drawFrame();
+    void startGl();
+    void initializeGl();
+    void drawScene();
+    void drawOverlays();
+    QSize pixelSize() const;
     void cleanup();
     Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
     void showUploaded(const Scene &scene);
@@ -197,9 +234,19 @@ private:
     FrameTimeWindow m_frameTimes; // draw times of the last second
     qint64 m_framesRendered = 0;
     QString m_glRendererName;
+    ViewportWindow *m_window = nullptr; // owned by m_container
+    QWidget *m_container = nullptr;
+    // Made on the first exposure; stays (invalid) when it could not be made.
+    std::unique_ptr<QOpenGLContext> m_context;
     ContextLender m_lender;
+    bool m_frameMissed = false;      // asked for while the context was lent
     WarmUpDraw m_warmer;             // created in this context by a borrower; freed in cleanup()
-    GLint m_framebufferSamples = -1; // of QOpenGLWidget's framebuffer; -1: not known yet
+    GLint m_framebufferSamples = -1; // of the window's framebuffer; -1: not known yet
+    // The child widgets drawn over the frame, as last painted.
+    ImageLayer m_overlayLayer;
+    QImage m_overlayImage;
+    bool m_overlayDirty = true;
+    bool m_paintingOverlays = false; // their paint events are ours, not changes
 };
 
 } // namespace phonglab

@@ -77,14 +77,11 @@ public:
     QSize windowPixels() const { return m_window->size() * m_window->devicePixelRatioF(); }
 
     // Where each frame's interval went: from the previous frame's swap to
-    // the end of paintGL less its draw (the event loop and the repaint
-    // manager up to paintGL), the draw (first GL call to glFinish, the status
-    // bar's figure), paintGL's end to aboutToCompose (the resolve submitted,
-    // the other dirty widgets painted into the backing store) and
-    // aboutToCompose to frameSwapped (the composition and the swap, with the
-    // resolve executed).
+    // the end of drawing less the draw (the event loop up to the frame), the
+    // draw (first GL call to glFinish, the status bar's figure), and the
+    // draw's end to frameSwapped (widgets over the view, if any, and the swap).
     struct Phases {
-        std::vector<double> beforeDraw, draw, afterDraw, compose;
+        std::vector<double> beforeDraw, draw, afterDraw;
     };
     // `count` frames back to back: the intervals between frameSwapped.
     void run(int count, std::vector<double> &intervals, Phases &phases)
@@ -93,34 +90,30 @@ public:
         QEventLoop loop;
         QElapsedTimer clock;
         int seen = -1; // the first swap starts the clock
-        double lastDraw = 0, paintEnd = 0, composeStart = 0;
+        double lastDraw = 0, paintEnd = 0;
         auto drawn = QObject::connect(viewport, &Viewport::frameRendered, [&] {
             lastDraw = viewport->frameTimes().latestMs();
             paintEnd = ms(clock.nsecsElapsed());
         });
-        auto composing = QObject::connect(viewport, &QOpenGLWidget::aboutToCompose,
-                                          [&] { composeStart = ms(clock.nsecsElapsed()); });
-        auto swapped = QObject::connect(viewport, &QOpenGLWidget::frameSwapped, [&] {
+        auto swapped = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
             if (seen >= 0) {
                 const double now = ms(clock.nsecsElapsed());
                 intervals.push_back(now);
                 phases.beforeDraw.push_back(paintEnd - lastDraw);
                 phases.draw.push_back(lastDraw);
-                phases.afterDraw.push_back(composeStart - paintEnd);
-                phases.compose.push_back(now - composeStart);
+                phases.afterDraw.push_back(now - paintEnd);
             }
             clock.start();
             if (++seen >= count)
                 loop.quit();
             else
-                viewport->update();
+                viewport->requestFrame();
         });
         QTimer::singleShot(60000, &loop, &QEventLoop::quit);
         settle();
-        viewport->update();
+        viewport->requestFrame();
         loop.exec();
         QObject::disconnect(drawn);
-        QObject::disconnect(composing);
         QObject::disconnect(swapped);
     }
 
@@ -224,10 +217,9 @@ void printIntervals(const Measured &m)
 void printSteps(const Measured &m)
 {
     const auto &p = m.phases;
-    std::printf("| %s | viewport (frame as presented) | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
+    std::printf("| %s | viewport (frame as presented) | %.2f | draw %.2f | %.2f | %.2f |\n",
                 qPrintable(m.label), percentile(p.beforeDraw, 0.5), percentile(p.draw, 0.5),
-                percentile(p.afterDraw, 0.5), percentile(p.compose, 0.5),
-                percentile(m.viewport, 0.5));
+                percentile(p.afterDraw, 0.5), percentile(m.viewport, 0.5));
     const auto row = [&m](const char *path, const RawGlFramePath::Steps &s) {
         std::printf("| %s | %s (glFinish after each step) | draw %.2f | resolve %.2f | upload "
                     "%.2f | compose %.2f | swap %.2f |\n",
@@ -288,9 +280,9 @@ int main(int argc, char **argv)
     for (const Measured &m : all)
         printIntervals(m);
     std::printf("\nwhere the frame goes, ms, p50 of each:\n");
-    std::printf("\n| size | path | swap to paintGL (event loop, repaint manager) | draw "
-                "(to glFinish) | paintGL end to aboutToCompose | aboutToCompose to swapped "
-                "(resolve, composition, swap) | frame |\n");
+    std::printf("\nviewport: | size | path | swap to the frame's start (event loop) | draw (to "
+                "glFinish) | draw's end to swapped (overlays, swap) | frame |\n");
+    std::printf("raw paths: | size | path | steps, each timed alone with glFinish after it |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     for (const Measured &m : all)
         printSteps(m);

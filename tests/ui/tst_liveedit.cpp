@@ -239,7 +239,7 @@ void TestLiveEdit::userUniformSurvivesRebuild()
         program.bind();
         program.setUniform("gain", 0.5f);
     }
-    viewport()->update();
+    viewport()->requestFrame();
     QTRY_VERIFY(frame() != black);
     const QImage withGain = frame();
 

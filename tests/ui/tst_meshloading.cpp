@@ -376,7 +376,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
         QVERIFY_OK(m_window->openFiles({m_largeObj}));
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
-        viewport()->update(); // a frame of the old scene while loading
+        viewport()->requestFrame(); // a frame of the old scene while loading
         saveArtifact(QStringLiteral("meshloading-loading.png"), m_window->grab().toImage());
         loadTime.start();
         sinceTick.start();

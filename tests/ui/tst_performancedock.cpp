@@ -68,7 +68,7 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
         viewport(), &Viewport::frameRendered, this,
         [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; },
         Qt::SingleShotConnection);
-    viewport()->update();
+    viewport()->requestFrame();
     QTRY_VERIFY(trianglesBefore > 0);
 
     QSignalSpy applied(dock(), &PerformanceDock::fitApplied);
@@ -95,7 +95,7 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
     qint64 trianglesAfter = 0;
     connect(viewport(), &Viewport::frameRendered, this,
             [&trianglesAfter](double, qint64 triangles) { trianglesAfter = triangles; });
-    viewport()->update();
+    viewport()->requestFrame();
     QTRY_VERIFY(trianglesAfter > 0);
     QVERIFY(trianglesAfter <= trianglesBefore);
     QCOMPARE(trianglesAfter, chosen.triangles);
@@ -148,7 +148,7 @@ void TestPerformanceDock::autoDetailToggleShowsTheLevels()
     QTRY_VERIFY_WITH_TIMEOUT(viewport()->currentScene().objects.front().autoDetail, 60000);
     for (const SceneObject &object : viewport()->currentScene().objects)
         QVERIFY(object.autoDetail);
-    viewport()->update();
+    viewport()->requestFrame();
     QTRY_VERIFY(label->isVisible());
     QVERIFY2(label->text().contains(QStringLiteral("tree.obj: level ")), qPrintable(label->text()));
     QVERIFY2(label->text().contains(QStringLiteral("cloud.obj: level ")),
@@ -158,7 +158,7 @@ void TestPerformanceDock::autoDetailToggleShowsTheLevels()
 
     toggle->click();
     QTRY_VERIFY_WITH_TIMEOUT(!viewport()->currentScene().objects.front().autoDetail, 60000);
-    viewport()->update();
+    viewport()->requestFrame();
     QTRY_VERIFY(!label->isVisible());
     QCOMPARE(viewport()->objectDraws().front().levels, 1);
 }
