@@ -104,6 +104,11 @@ void Viewport::requestFrame()
     m_window->requestFrame();
 }
 
+QWindow *Viewport::frameWindow() const
+{
+    return m_window;
+}
+
 QSize Viewport::pixelSize() const
 {
     return size() * devicePixelRatioF();

@@ -100,6 +100,8 @@ public:
     // A new frame at the next turn of the event loop (QWidget::update()
     // repaints only the widget around the view's window).
     void requestFrame();
+    // The native window the frames go to; its input reaches this widget.
+    QWindow *frameWindow() const;
 
     // The cheap path for dock edits: takes lights, ambient, materials and
     // transforms from `scene` (same objects and meshes as shown) without

@@ -15,6 +15,7 @@
 #include "ui/ShaderDock.h"
 #include "ui/ShaderEditor.h"
 #include "ui/Viewport.h"
+#include "ui/WindowImage.h"
 
 #include <QApplication>
 #include <QDir>
@@ -43,7 +44,7 @@ void settle(int ms)
 bool save(QWidget &window, const QDir &out, const char *name)
 {
     const QString path = out.filePath(QString::fromLatin1(name));
-    const bool ok = window.grab().save(path);
+    const bool ok = windowImage(window).save(path);
     std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
     return ok;
 }

@@ -19,6 +19,7 @@
 #include "ui/SceneEditDocks.h"
 #include "ui/Vec3Field.h"
 #include "ui/Viewport.h"
+#include "ui/WindowImage.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -177,7 +178,7 @@ void TestLightsDock::kdEditChangesFrameAndMatchesReference()
              {static_cast<QDockWidget *>(docks()->lightsDock()), static_cast<QDockWidget *>(panel),
               static_cast<QDockWidget *>(docks()->objectPanel())}) {
             dock->raise();
-            m_window->grab().save(
+            windowImage(*m_window).save(
                 QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
         }
     }

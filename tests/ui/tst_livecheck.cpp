@@ -102,9 +102,14 @@ private slots:
         const QPoint worst = result.report.comparison.worstPixel;
         if (overlay.size() == result.heatmap.size())
             QCOMPARE(overlay.pixel(worst), result.heatmap.pixel(worst));
+        // ... into the frame the view presents (drawn over it in GL), and
+        // only while it is on.
+        QCOMPARE(frame().size(), result.heatmap.size());
+        QCOMPARE(frame().pixel(worst), result.heatmap.pixel(worst));
         check->setOverlayMode(OverlayMode::Split);
         check->setOverlayMode(OverlayMode::Off);
         QVERIFY(!check->overlay()->isVisible());
+        QVERIFY(frame().pixel(worst) != result.heatmap.pixel(worst));
 
         // Ctrl+click on the ellipsoid: the exact terms there, copyable.
         const QPoint centre = m_window->viewport()->rect().center() + QPoint(10, 10);

@@ -10,6 +10,7 @@
 #include "ui/FrameStatsLabel.h"
 #include "ui/MainWindow.h"
 #include "ui/Viewport.h"
+#include "ui/WindowImage.h"
 
 #include <QDir>
 #include <QLabel>
@@ -99,6 +100,7 @@ private slots:
     void rightDragPansAndWheelZooms();
     void resetRestoresOriginalCamera_data();
     void resetRestoresOriginalCamera();
+    void inputOnTheViewsOwnWindowReachesTheView();
     void saveThenReopenGivesEqualScene();
 
 private:
@@ -163,7 +165,7 @@ void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
     const QImage image = frame();
     QVERIFY(!image.isNull());
     saveArtifact(QStringLiteral("mainwindow-viewport.png"), image);
-    saveArtifact(QStringLiteral("mainwindow-window.png"), m_window->grab().toImage());
+    saveArtifact(QStringLiteral("mainwindow-window.png"), windowImage(*m_window));
 
     const FrameStats stats = analyse(image, toRgb(m_loaded.background));
     QVERIFY2(stats.foregroundFraction > 0.05,
@@ -332,6 +334,28 @@ void TestMainWindow::resetRestoresOriginalCamera()
     QTest::keyClick(viewport(), Qt::Key(key));
     QCOMPARE(viewport()->camera(), m_loaded.camera); // exactly, not approximately
     QCOMPARE(viewport()->currentScene(), m_loaded);
+    QCOMPARE(differingPixels(frame(), originalFrame), 0);
+}
+
+// The frames go to a native window of the view's own: what the window
+// system delivers there (a real mouse, a key while it has focus) must move
+// the camera as the widget's own events do.
+void TestMainWindow::inputOnTheViewsOwnWindowReachesTheView()
+{
+    QWindow *window = viewport()->frameWindow();
+    QVERIFY(window && window->isExposed());
+    QCOMPARE(window->size(), viewport()->size());
+    const QImage originalFrame = frame();
+    const QPoint start = viewport()->rect().center();
+    QTest::mousePress(window, Qt::LeftButton, Qt::NoModifier, start);
+    for (int step = 1; step <= 4; ++step)
+        QTest::mouseMove(window, start + QPoint(-30, 20) * step);
+    QTest::mouseRelease(window, Qt::LeftButton, Qt::NoModifier, start + QPoint(-120, 80));
+    QVERIFY(!(viewport()->camera() == m_loaded.camera));
+    QVERIFY(differingPixels(frame(), originalFrame) > 1000);
+
+    QTest::keyClick(window, Qt::Key_R);
+    QCOMPARE(viewport()->camera(), m_loaded.camera);
     QCOMPARE(differingPixels(frame(), originalFrame), 0);
 }
 

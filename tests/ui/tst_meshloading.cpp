@@ -20,6 +20,7 @@
 #include "ui/SceneDock.h"
 #include "ui/SceneLoadJob.h"
 #include "ui/Viewport.h"
+#include "ui/WindowImage.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -274,7 +275,7 @@ void TestMeshLoading::openedMeshIsDrawnFittedAndListed()
 
     const QImage image = frame();
     saveArtifact(QStringLiteral("meshloading-tree.png"), image);
-    saveArtifact(QStringLiteral("meshloading-window.png"), m_window->grab().toImage());
+    saveArtifact(QStringLiteral("meshloading-window.png"), windowImage(*m_window));
     QVERIFY2(foregroundFraction(image, scene.background) > 0.05,
              qPrintable(QString::number(foregroundFraction(image, scene.background))));
 
@@ -377,7 +378,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
         viewport()->requestFrame(); // a frame of the old scene while loading
-        saveArtifact(QStringLiteral("meshloading-loading.png"), m_window->grab().toImage());
+        saveArtifact(QStringLiteral("meshloading-loading.png"), windowImage(*m_window));
         loadTime.start();
         sinceTick.start();
         ticker.start();
@@ -515,7 +516,7 @@ void TestMeshLoading::flatNormalsFromTheDock()
 
     const QImage faceted = frame();
     saveArtifact(QStringLiteral("meshloading-tree-flat.png"), faceted);
-    saveArtifact(QStringLiteral("meshloading-window-flat.png"), m_window->grab().toImage());
+    saveArtifact(QStringLiteral("meshloading-window-flat.png"), windowImage(*m_window));
     QVERIFY2(differingPixels(smooth, faceted) > smooth.width() * smooth.height() / 200,
              qPrintable(QString::number(differingPixels(smooth, faceted))));
 }
@@ -572,7 +573,7 @@ void TestMeshLoading::droppedFilesOpenSideBySide()
         QVERIFY(glm::length(centreWorld - glm::dvec3((i - 0.5) * kSideBySideSpacing, 0, 0)) < 1e-6);
     }
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 2);
-    saveArtifact(QStringLiteral("meshloading-dropped.png"), m_window->grab().toImage());
+    saveArtifact(QStringLiteral("meshloading-dropped.png"), windowImage(*m_window));
     QVERIFY(foregroundFraction(frame(), scene.background) > 0.05);
 
     // An unsupported file dropped: explained, nothing changes.
@@ -685,7 +686,7 @@ void TestMeshLoading::warningsAreListed()
         QVERIFY(!list->child(i)->icon(0).isNull());
     }
     QCOMPARE(shown, reference.warnings);
-    saveArtifact(QStringLiteral("meshloading-warnings.png"), m_window->grab().toImage());
+    saveArtifact(QStringLiteral("meshloading-warnings.png"), windowImage(*m_window));
 }
 
 QTEST_MAIN(TestMeshLoading)
