@@ -10,6 +10,8 @@
 
 #include <QElapsedTimer>
 
+#include <future>
+
 namespace phonglab {
 
 namespace {
@@ -81,7 +83,12 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
         return result;
     }
 
+    // Whether the surface is closed only reads the repaired polygons: it is
+    // found on a second thread while the GPU arrays are built.
+    std::future<bool> closed =
+        std::async(std::launch::async, [&polygons] { return isClosedSurface(polygons); });
     BuiltMesh built = buildMeshData(polygons, normals);
+    const bool isClosed = closed.get();
     result.warnings += built.warnings;
     if (!built.ok()) {
         result.error = QStringLiteral("%1: %2").arg(path, built.error);
@@ -100,7 +107,7 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
     s.creaseAngleDeg = normals.creaseAngleDeg;
     s.boundsMin = build.boundsMin;
     s.boundsMax = build.boundsMax;
-    s.closed = isClosedSurface(polygons);
+    s.closed = isClosed;
     result.mesh = std::move(mesh);
     if (progress)
         progress(1.0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <numeric>
 
 namespace phonglab {
@@ -190,7 +191,9 @@ double signedVolume(const PolygonMesh &mesh, const std::vector<std::uint32_t> &f
     return volume / 6.0;
 }
 
-void orientFaces(PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
+// Which faces to turn so the winding agrees across manifold edges. Reads
+// the mesh, changes nothing: it runs beside bowtieGroups().
+std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
 {
     const std::size_t faces = mesh.faceCount();
     // Neighbours across manifold edges, and whether the two faces run the
@@ -261,8 +264,12 @@ void orientFaces(PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
             for (std::uint32_t f : component)
                 flip[f] = char(!flip[f]);
     }
+    return flip;
+}
 
-    for (std::size_t f = 0; f < faces; ++f) {
+void flipFaces(PolygonMesh &mesh, const std::vector<char> &flip, RepairReport &report)
+{
+    for (std::size_t f = 0; f < flip.size(); ++f) {
         if (!flip[f])
             continue;
         ++report.facesFlipped;
@@ -284,11 +291,12 @@ std::uint32_t findRoot(std::vector<std::uint32_t> &parent, std::uint32_t x)
     return x;
 }
 
-void splitBowtieVertices(PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
+// Corners of one vertex belong together when their faces share an edge at
+// that vertex (any edge of 2+ faces, non-manifold ones included). Returns a
+// union-find forest over the corners. Reads the mesh, changes nothing: it
+// runs beside windingFlips().
+std::vector<std::uint32_t> bowtieGroups(const PolygonMesh &mesh, const Adjacency &adj)
 {
-    // Corners of one vertex belong together when their faces share an edge
-    // at that vertex (any edge of 2+ faces, non-manifold ones included).
-    // More than one group at a vertex: surfaces touching at a point only.
     std::vector<std::uint32_t> parent(mesh.cornerPosition.size());
     std::iota(parent.begin(), parent.end(), 0u);
     auto unite = [&](std::uint32_t a, std::uint32_t b) {
@@ -307,6 +315,14 @@ void splitBowtieVertices(PolygonMesh &mesh, const Adjacency &adj, RepairReport &
             unite(first.second, other.second);
         }
     });
+    return parent;
+}
+
+// More than one group of corners at a vertex: surfaces touching at a point
+// only. Every group after the first gets its own copy of the vertex.
+void splitBowtieVertices(PolygonMesh &mesh, std::vector<std::uint32_t> &parent,
+                         RepairReport &report)
+{
     std::vector<std::uint32_t> groupVertex(parent.size(), kUnset);
     std::vector<std::uint32_t> vertexGroup(mesh.positions.size(), kUnset);
     for (std::uint32_t c = 0; c < parent.size(); ++c) {
@@ -395,9 +411,18 @@ RepairReport repairMesh(PolygonMesh &mesh)
         const Adjacency adj = buildAdjacency(mesh);
         forEachEdge(adj,
                     [&](std::size_t, std::size_t n) { report.nonManifoldEdges += n >= 3 ? 1 : 0; });
+
+        // Grouping corners and choosing flips only read the mesh and the
+        // adjacency: the grouping runs on a second thread. Splitting does
+        // not change the signed volume the flips are chosen by (a copy has
+        // its original's position), so the answers are those of one thread.
+        std::future<std::vector<std::uint32_t>> groups =
+            std::async(std::launch::async, [&mesh, &adj] { return bowtieGroups(mesh, adj); });
+        const std::vector<char> flip = windingFlips(mesh, adj, report);
+        std::vector<std::uint32_t> parent = groups.get();
         // Split first: flipping reorders corners, which the adjacency names.
-        splitBowtieVertices(mesh, adj, report);
-        orientFaces(mesh, adj, report);
+        splitBowtieVertices(mesh, parent, report);
+        flipFaces(mesh, flip, report);
     }
     removeUnusedVertices(mesh, report);
     return report;
