@@ -3,8 +3,10 @@
 #include "MeshFilePrecheck.h"
 #include "MeshTextTokens.h"
 
+#include <atomic>
 #include <charconv>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <string>
 
@@ -17,6 +19,8 @@ constexpr std::uint32_t kBadIndex = 0xffffffffu;
 // the end, where it is counted and becomes kNoNormal.
 constexpr std::uint32_t kBadNormal = 0xfffffffeu;
 constexpr std::size_t kProgressBytes = 4 << 20;
+// Below this a second parsing thread costs more than it saves.
+constexpr std::size_t kParallelBytes = 8 << 20;
 
 inline bool isBlank(char c)
 {
@@ -148,19 +152,32 @@ bool keywordIn(std::string_view k, std::initializer_list<std::string_view> list)
     return false;
 }
 
+// Parses a run of whole lines; one parser can go on where another left off
+// (append()), so the two halves of a large file are parsed side by side.
 class ObjParser
 {
 public:
-    MeshReadResult run(std::string_view text, const std::function<bool(double)> &progress);
+    // The lines of [p, end), numbered on from those parsed before. False
+    // when progress() said stop or `stop` was set.
+    bool parseLines(const char *p, const char *end, const char *textBegin, std::size_t textSize,
+                    const std::function<bool(double)> &progress, const std::atomic<bool> *stop);
+    // Lines that come after this parser's, parsed on their own: correct
+    // only when they hold no relative index (those count back from the
+    // vertices before them, which that parser did not see).
+    void append(ObjParser &&later);
+    bool sawRelativeIndex() const { return m_relativeIndex; }
+    void finish(MeshReadResult &result, bool endsInNewline);
 
 private:
     bool parseLine(const char *p, const char *e);
     bool parseVec3(const char *p, const char *e, std::vector<glm::vec3> &out);
     bool parseFace(const char *p, const char *e);
-    void finish(MeshReadResult &result, bool endsInNewline, bool lastLineBad);
 
     PolygonMesh m_mesh;
     bool m_anyCornerNormal = false;
+    bool m_relativeIndex = false;
+    std::size_t m_lineNo = 0;
+    bool m_lastLineBad = false;
     std::size_t m_badLines = 0;
     std::size_t m_firstBadLine = 0;
     std::string m_firstBadText;
@@ -200,6 +217,7 @@ bool ObjParser::parseFace(const char *p, const char *e)
                 std::int64_t n = 0;
                 q = parseInt(q + 1, e, n);
                 normal = resolve(n, normals, kBadNormal);
+                m_relativeIndex = m_relativeIndex || n < 0;
                 m_anyCornerNormal = true;
             }
         }
@@ -208,6 +226,7 @@ bool ObjParser::parseFace(const char *p, const char *e)
             m_mesh.cornerNormal.resize(first);
             return false;
         }
+        m_relativeIndex = m_relativeIndex || v < 0;
         m_mesh.cornerPosition.push_back(resolve(v, positions, kBadIndex));
         m_mesh.cornerNormal.push_back(normal);
         p = q;
@@ -245,16 +264,11 @@ bool ObjParser::parseLine(const char *p, const char *e)
     return false;
 }
 
-MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(double)> &progress)
+bool ObjParser::parseLines(const char *p, const char *end, const char *textBegin,
+                           std::size_t textSize, const std::function<bool(double)> &progress,
+                           const std::atomic<bool> *stop)
 {
-    MeshReadResult result;
-    const char *const begin = text.data();
-    const char *const end = begin + text.size();
-    // Some Windows tools start text files with a UTF-8 byte order mark.
-    const char *p = text.substr(0, 3) == "\xEF\xBB\xBF" ? begin + 3 : begin;
-    const char *nextReport = begin + kProgressBytes;
-    std::size_t lineNo = 0;
-    bool lastLineBad = false;
+    const char *nextReport = p + kProgressBytes;
     std::string joined;
     while (p < end) {
         const char *nl = static_cast<const char *>(std::memchr(p, '\n', std::size_t(end - p)));
@@ -262,7 +276,7 @@ MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(do
         const char *e = nl ? nl : end;
         if (e > p && e[-1] == '\r')
             --e;
-        const std::size_t firstLine = ++lineNo;
+        const std::size_t firstLine = ++m_lineNo;
         const char *lineBegin = p;
         const char *lineEnd = e;
         if (e > p && e[-1] == '\\') {
@@ -274,7 +288,7 @@ MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(do
                 lineEnd = nl ? nl : end;
                 if (lineEnd > lineBegin && lineEnd[-1] == '\r')
                     --lineEnd;
-                ++lineNo;
+                ++m_lineNo;
                 joined += ' ';
                 const bool continues = lineEnd > lineBegin && lineEnd[-1] == '\\';
                 joined.append(lineBegin, continues ? lineEnd - 1 : lineEnd);
@@ -283,26 +297,54 @@ MeshReadResult ObjParser::run(std::string_view text, const std::function<bool(do
             lineBegin = joined.data();
             lineEnd = joined.data() + joined.size();
         }
-        lastLineBad = !parseLine(lineBegin, lineEnd);
-        if (lastLineBad && m_badLines++ == 0) {
+        m_lastLineBad = !parseLine(lineBegin, lineEnd);
+        if (m_lastLineBad && m_badLines++ == 0) {
             m_firstBadLine = firstLine;
             m_firstBadText.assign(lineBegin,
                                   std::min<std::size_t>(std::size_t(lineEnd - lineBegin), 60));
         }
         p = next;
-        if (p >= nextReport && progress) {
+        if (p >= nextReport) {
             nextReport = p + kProgressBytes;
-            if (!progress(double(p - begin) / double(text.size()))) {
-                result.error = QStringLiteral("cancelled");
-                return result;
-            }
+            if (progress && !progress(double(p - textBegin) / double(textSize)))
+                return false;
+            if (stop && stop->load(std::memory_order_relaxed))
+                return false;
         }
     }
-    finish(result, !text.empty() && text.back() == '\n', lastLineBad);
-    return result;
+    return true;
 }
 
-void ObjParser::finish(MeshReadResult &result, bool endsInNewline, bool lastLineBad)
+template <typename T> void appendAll(std::vector<T> &to, const std::vector<T> &from)
+{
+    to.reserve(to.size() + from.size());
+    to.insert(to.end(), from.begin(), from.end());
+}
+
+void ObjParser::append(ObjParser &&later)
+{
+    const std::uint32_t corners = std::uint32_t(m_mesh.cornerPosition.size());
+    appendAll(m_mesh.positions, later.m_mesh.positions);
+    appendAll(m_mesh.normals, later.m_mesh.normals);
+    appendAll(m_mesh.cornerPosition, later.m_mesh.cornerPosition);
+    appendAll(m_mesh.cornerNormal, later.m_mesh.cornerNormal);
+    m_mesh.faceStart.reserve(m_mesh.faceStart.size() + later.m_mesh.faceCount());
+    for (std::size_t f = 1; f < later.m_mesh.faceStart.size(); ++f)
+        m_mesh.faceStart.push_back(corners + later.m_mesh.faceStart[f]);
+    m_anyCornerNormal = m_anyCornerNormal || later.m_anyCornerNormal;
+    m_relativeIndex = m_relativeIndex || later.m_relativeIndex;
+    if (m_badLines == 0 && later.m_badLines != 0) {
+        m_firstBadLine = m_lineNo + later.m_firstBadLine;
+        m_firstBadText = std::move(later.m_firstBadText);
+    }
+    m_badLines += later.m_badLines;
+    m_freeform += later.m_freeform;
+    if (later.m_lineNo != 0)
+        m_lastLineBad = later.m_lastLineBad;
+    m_lineNo += later.m_lineNo;
+}
+
+void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
 {
     if (m_mesh.faceCount() == 0) {
         result.error = m_mesh.positions.empty()
@@ -328,7 +370,7 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline, bool lastLine
                                                       "unreadable lines"))
                                .arg(m_firstBadLine)
                                .arg(QString::fromUtf8(m_firstBadText));
-    if (lastLineBad && !endsInNewline)
+    if (m_lastLineBad && !endsInNewline)
         result.warnings << QStringLiteral("the last line is incomplete (the file looks truncated)");
     if (m_freeform)
         result.warnings << QStringLiteral("ignored %1 (only polygons are read)")
@@ -345,10 +387,67 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline, bool lastLine
 
 } // namespace
 
+namespace {
+
+// Where a large text can be cut in two: the start of a line near the middle
+// that does not continue the line before (a trailing `\`). Null for a text
+// too small to be worth a second thread.
+const char *splitPoint(const char *begin, const char *end)
+{
+    if (std::size_t(end - begin) < kParallelBytes)
+        return nullptr;
+    for (const char *p = begin + (end - begin) / 2; p < end;) {
+        const char *nl = static_cast<const char *>(std::memchr(p, '\n', std::size_t(end - p)));
+        if (!nl || nl + 1 >= end)
+            return nullptr;
+        const char *e = nl > begin && nl[-1] == '\r' ? nl - 1 : nl;
+        if (e == begin || e[-1] != '\\')
+            return nl + 1;
+        p = nl + 1;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+// A large file's second half is parsed on a second thread while this one
+// parses the first, then appended. Relative indices in the second half need
+// the vertex count before them: then it is parsed again after the first,
+// as one thread would have.
 MeshReadResult parseObj(std::string_view text, const std::function<bool(double)> &progress)
 {
+    MeshReadResult result;
+    const char *const begin = text.data();
+    const char *const end = begin + text.size();
+    // Some Windows tools start text files with a UTF-8 byte order mark.
+    const char *const start = text.substr(0, 3) == "\xEF\xBB\xBF" ? begin + 3 : begin;
+    const char *const split = splitPoint(start, end);
     ObjParser parser;
-    return parser.run(text, progress);
+    bool done = false;
+    if (!split) {
+        done = parser.parseLines(start, end, begin, text.size(), progress, nullptr);
+    } else {
+        std::atomic<bool> stop = false;
+        ObjParser later;
+        std::future<bool> laterDone = std::async(std::launch::async, [&] {
+            return later.parseLines(split, end, begin, text.size(), {}, &stop);
+        });
+        done = parser.parseLines(start, split, begin, text.size(), progress, nullptr);
+        stop = !done;
+        laterDone.get();
+        if (done && later.sawRelativeIndex())
+            done = parser.parseLines(split, end, begin, text.size(), progress, nullptr);
+        else if (done)
+            parser.append(std::move(later));
+        // The second half reported nothing: its end is a chance to cancel.
+        done = done && (!progress || progress(1.0));
+    }
+    if (!done) {
+        result.error = QStringLiteral("cancelled");
+        return result;
+    }
+    parser.finish(result, !text.empty() && text.back() == '\n');
+    return result;
 }
 
 MeshReadResult readObjFile(const QString &path, const std::function<bool(double)> &progress)

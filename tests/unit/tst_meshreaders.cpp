@@ -111,6 +111,8 @@ private slots:
     void objByteOrderMarkAndTrailingComments();
     void objNumbersMatchFromChars();
     void objProgressAndCancel();
+    void objLargeFileParsedInHalves_data();
+    void objLargeFileParsedInHalves();
 
     // --- bad input
     void rejected_data();
@@ -314,6 +316,70 @@ void TestMeshReaders::objProgressAndCancel()
     writeBytes(path, QByteArray::fromStdString(text));
     const MeshReadResult fileCancelled = readMeshFile(path, [](double f) { return f < 0.5; });
     QCOMPARE(fileCancelled.error, QStringLiteral("cancelled"));
+}
+
+void TestMeshReaders::objLargeFileParsedInHalves_data()
+{
+    QTest::addColumn<bool>("relative");
+    QTest::addColumn<bool>("continued");
+    QTest::newRow("absolute indices") << false << false;
+    QTest::newRow("relative indices") << true << false;
+    QTest::newRow("every vertex line continued") << false << true;
+}
+
+void TestMeshReaders::objLargeFileParsedInHalves()
+{
+    // Over 8 MB, so the second half is parsed on a second thread: whatever
+    // is cut at the middle (faces, normals, line numbers, relative indices,
+    // continued lines) must read as one pass reads it.
+    QFETCH(bool, relative);
+    QFETCH(bool, continued);
+    const int triangles = 140000;
+    const int badAt = triangles * 3 / 4;
+    std::string text = "# made by the test\n";
+    std::size_t line = 1, badLine = 0;
+    for (int t = 0; t < triangles; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const int v = 3 * t + k;
+            text += "v " + std::to_string(v) + " 0.5 ";
+            text += continued ? "\\\n" + std::to_string(-v) + "\n" : std::to_string(-v) + "\n";
+            line += continued ? 2 : 1;
+        }
+        text += "vn 0 0 1\n";
+        ++line;
+        if (relative) {
+            text += "f -3//-1 -2//-1 -1//-1\n";
+        } else {
+            const std::string n = "//" + std::to_string(t + 1);
+            text += "f " + std::to_string(3 * t + 1) + n + " " + std::to_string(3 * t + 2) + n + " "
+                + std::to_string(3 * t + 3) + n + "\n";
+        }
+        ++line;
+        if (t == badAt) {
+            text += "nonsense here\n";
+            badLine = ++line;
+        }
+    }
+    QVERIFY(text.size() > (8u << 20));
+    const MeshReadResult r = parseObj(text);
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    QCOMPARE(r.warnings,
+             QStringList{QStringLiteral("skipped 1 unreadable line (first at line %1: "
+                                        "\"nonsense here\")")
+                             .arg(badLine)});
+    const PolygonMesh &m = *r.mesh;
+    QCOMPARE(m.positions.size(), std::size_t(3 * triangles));
+    QCOMPARE(m.normals.size(), std::size_t(triangles));
+    QCOMPARE(m.faceCount(), std::size_t(triangles));
+    for (int v = 0; v < 3 * triangles; ++v)
+        QCOMPARE(m.positions[v], glm::vec3(float(v), 0.5f, float(-v)));
+    for (int t = 0; t < triangles; ++t) {
+        QCOMPARE(m.faceStart[t + 1], std::uint32_t(3 * t + 3));
+        for (int k = 0; k < 3; ++k) {
+            QCOMPARE(m.cornerPosition[3 * t + k], std::uint32_t(3 * t + k));
+            QCOMPARE(m.cornerNormal[3 * t + k], std::uint32_t(t));
+        }
+    }
 }
 
 void TestMeshReaders::rejected_data()
