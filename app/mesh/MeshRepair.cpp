@@ -199,11 +199,7 @@ std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, Re
     // Neighbours across manifold edges, and whether the two faces run the
     // edge the same way (then one of them must turn).
     std::vector<std::uint32_t> start(faces + 1, 0);
-    std::vector<std::uint32_t> sides(faces, 0);  // sides with an edge per face
-    std::vector<std::uint32_t> paired(faces, 0); // of those, on manifold edges
     forEachEdge(adj, [&](std::size_t i, std::size_t n) {
-        for (std::size_t k = i; k < i + n; ++k)
-            ++sides[adj.sides[k].face];
         if (n == 2 && adj.sides[i].face != adj.sides[i + 1].face) {
             ++start[adj.sides[i].face + 1];
             ++start[adj.sides[i + 1].face + 1];
@@ -220,9 +216,17 @@ std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, Re
         const bool same = a.forward == b.forward;
         links[fill[a.face]++] = {b.face, same};
         links[fill[b.face]++] = {a.face, same};
-        ++paired[a.face];
-        ++paired[b.face];
     });
+    // A face on the boundary has a side (two distinct ends) with no link.
+    // Counted face by face, not side by side: one pass in memory order.
+    std::vector<char> allSidesPaired(faces);
+    for (std::size_t f = 0; f < faces; ++f) {
+        std::uint32_t sides = 0;
+        const std::uint32_t begin = mesh.faceStart[f], end = mesh.faceStart[f + 1];
+        for (std::uint32_t c = begin; c < end; ++c)
+            sides += mesh.cornerPosition[c] != mesh.cornerPosition[c + 1 < end ? c + 1 : begin];
+        allSidesPaired[f] = sides == start[f + 1] - start[f];
+    }
 
     std::vector<char> flip(faces, 0);
     std::vector<char> seen(faces, 0);
@@ -237,7 +241,7 @@ std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, Re
         int conflicts = 0;
         for (std::size_t q = 0; q < component.size(); ++q) {
             const std::uint32_t f = component[q];
-            closed = closed && paired[f] == sides[f];
+            closed = closed && allSidesPaired[f];
             for (std::uint32_t l = start[f]; l < start[f + 1]; ++l) {
                 const auto [g, same] = links[l];
                 const char want = char(flip[f] ^ char(same));
