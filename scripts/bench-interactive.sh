@@ -4,17 +4,22 @@
 # window (bench_frame), edit to pixel and the longest GUI stall against raw
 # GL (bench_edit_latency), and mesh import against tinyobjloader
 # (scripts/bench-import.sh; needs Blender once to make its 1.3M-triangle
-# mesh). Under Xvfb when there is no display. About 10 minutes.
-#   scripts/bench-interactive.sh [--quick]     (--quick: fewer frames and edits, no import)
+# mesh); then how each cost grows, with its charts (scripts/bench-scaling.sh:
+# frame beside raw GL, reference, memory and import against size). Under
+# Xvfb when there is no display. About 20 minutes.
+#   scripts/bench-interactive.sh [--quick]     (--quick: fewer frames and edits, no import,
+#                                               the scaling sweep small, its charts in build/)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames=200
 edits=20
 import=1
+scaling=()
 if [ "${1:-}" = "--quick" ]; then
   frames=60
   edits=5
   import=0
+  scaling=(--quick)
 fi
 bash scripts/build.sh
 run=()
@@ -31,3 +36,6 @@ if [ "$import" = 1 ]; then
   echo "== mesh import against tinyobjloader (scripts/bench-import.sh)"
   bash scripts/bench-import.sh
 fi
+echo
+echo "== how each cost grows, with charts (scripts/bench-scaling.sh)"
+bash scripts/bench-scaling.sh "${scaling[@]}"
