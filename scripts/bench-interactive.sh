@@ -6,7 +6,7 @@
 # (scripts/bench-import.sh; needs Blender once to make its 1.3M-triangle
 # mesh); then how each cost grows, with its charts (scripts/bench-scaling.sh:
 # frame beside raw GL, reference, memory and import against size). Under
-# Xvfb when there is no display. About 20 minutes.
+# Xvfb when there is no display. About 15 minutes.
 #   scripts/bench-interactive.sh [--quick]     (--quick: fewer frames and edits, no import,
 #                                               the scaling sweep small, its charts in build/)
 set -euo pipefail

@@ -5,7 +5,7 @@
 # and where it stops fitting (bench_memory), import time against file size
 # beside tinyobjloader (bench_import_scaling); each prints its table,
 # ratios and slopes, writes a CSV, and bench_charts draws the PNG charts.
-# No display server needed. About 10 minutes on 2 cores with llvmpipe.
+# No display server needed. About 5 minutes on 2 cores with llvmpipe.
 #   scripts/bench-scaling.sh [--quick] [--out DIR]
 #     default: up to 10^7 triangles, charts and CSVs into docs/images/scaling
 #     --quick: up to 10^5 triangles (memory 10^6), 3 frames, 1 import run,
