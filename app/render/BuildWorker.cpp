@@ -41,7 +41,9 @@ BuildReply BuildWorker::build(const BuildJob &request)
     const bool ok = bool(reply.program);
     if (ok && request.warm && m_warmSamples != request.warmSamples) {
         m_warmer.destroy(); // the viewport's framebuffer changed (or this is the first warm-up)
-        m_warmSamples = m_warmer.create(request.warmSamples) ? request.warmSamples : -1;
+        m_warmSamples = m_warmer.create(WarmUpDraw::Target::OwnFramebuffer, request.warmSamples)
+            ? request.warmSamples
+            : -1;
     }
     if (ok && request.warm && m_warmer.isCreated())
         m_warmer.warm(reply.program.id()); // ends in glFinish
@@ -57,13 +59,17 @@ Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscree
 {
     QElapsedTimer timer;
     timer.start();
-    Result<> ready = lent.context->makeCurrent(surface)
+    // On the lender's window, when it has one: its framebuffer is the one
+    // whose shader variant the viewport's next frame needs.
+    Result<> ready = lent.context->makeCurrent(lent.surface ? lent.surface : surface)
         ? Result<>()
         : fail(QStringLiteral("the viewport's context cannot be made current on the build thread"));
     if (ready && lent.whileCurrent)
         lent.whileCurrent();
     if (ready && !lent.warmer->isCreated())
-        ready = lent.warmer->create(lent.samples);
+        ready = lent.warmer->create(lent.surface ? WarmUpDraw::Target::Surface
+                                                 : WarmUpDraw::Target::OwnFramebuffer,
+                                    lent.samples);
     if (ready)
         lent.warmer->warm(program); // ends in glFinish
     lent.context->doneCurrent();

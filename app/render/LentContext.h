@@ -4,6 +4,7 @@
 #include <memory>
 
 class QOpenGLContext;
+class QSurface;
 
 namespace phonglab {
 
@@ -17,6 +18,10 @@ class WarmUpDraw;
 // before it touches GL again.
 struct LentContext {
     QOpenGLContext *context = nullptr;
+    // The lender's window: the borrower draws into its framebuffer, which
+    // nobody else touches while the context is out (null: no window; the
+    // borrower's own surface then, and a framebuffer object).
+    QSurface *surface = nullptr;
     WarmUpDraw *warmer = nullptr; // owned by the lender, lives in `context`
     int samples = 0;              // of the lender's framebuffer
     std::shared_ptr<QSemaphore> returned;

@@ -2,6 +2,7 @@
 
 #include "mesh/BuiltinMeshes.h"
 
+#include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 
 namespace phonglab {
@@ -13,10 +14,13 @@ constexpr int kTargetSide = 8; // pixels: enough to run every stage, cheap to fi
 WarmUpDraw::WarmUpDraw() = default;
 WarmUpDraw::~WarmUpDraw() = default; // destroy() runs with the context current
 
-Result<> WarmUpDraw::create(int samples)
+Result<> WarmUpDraw::create(Target target, int samples)
 {
     initializeOpenGLFunctions();
-    // QOpenGLWidget's own framebuffer: RGBA8 colour, packed depth-stencil.
+    if (target == Target::Surface)
+        return m_mesh.upload(makeUvSphere(8, 4));
+    // What Renderer draws into offscreen (drawIntoImage): RGBA8 colour,
+    // packed depth-stencil.
     QOpenGLFramebufferObjectFormat format;
     format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
     format.setInternalTextureFormat(GL_RGBA8);
@@ -44,9 +48,13 @@ void WarmUpDraw::destroy()
 
 void WarmUpDraw::warm(GLuint program)
 {
-    if (!m_fbo)
+    if (!isCreated())
         return;
-    m_fbo->bind();
+    if (m_fbo)
+        m_fbo->bind();
+    else
+        glBindFramebuffer(GL_FRAMEBUFFER,
+                          QOpenGLContext::currentContext()->defaultFramebufferObject());
     glViewport(0, 0, kTargetSide, kTargetSide);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -59,7 +67,8 @@ void WarmUpDraw::warm(GLuint program)
     glUseProgram(program);
     m_mesh.draw();
     glUseProgram(0);
-    m_fbo->release();
+    if (m_fbo)
+        m_fbo->release();
     // The hand-over contract: the program has linked and run before another
     // context touches it.
     glFinish();

@@ -4,8 +4,8 @@
 
 namespace phonglab {
 
-std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QThread *borrower,
-                                               WarmUpDraw *warmer, int samples)
+std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QSurface *surface,
+                                               QThread *borrower, WarmUpDraw *warmer, int samples)
 {
     if (!context || m_returned)
         return std::nullopt;
@@ -13,7 +13,7 @@ std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QThread 
         context->doneCurrent(); // a context changes threads only when current nowhere
     context->moveToThread(borrower);
     m_returned = std::make_shared<QSemaphore>(0);
-    return LentContext{context, warmer, samples, m_returned, {}};
+    return LentContext{context, surface, warmer, samples, m_returned, {}};
 }
 
 bool ContextLender::end(int timeoutMs)

@@ -4,6 +4,7 @@
 #include <optional>
 
 class QOpenGLContext;
+class QSurface;
 class QThread;
 
 namespace phonglab {
@@ -16,8 +17,8 @@ class ContextLender
 {
 public:
     // nullopt when the context is lent already.
-    std::optional<LentContext> lend(QOpenGLContext *context, QThread *borrower, WarmUpDraw *warmer,
-                                    int samples);
+    std::optional<LentContext> lend(QOpenGLContext *context, QSurface *surface, QThread *borrower,
+                                    WarmUpDraw *warmer, int samples);
     // Waits for the borrower to give the context back (at most timeoutMs;
     // -1: as long as it takes); false if it did not in time.
     bool end(int timeoutMs = -1);

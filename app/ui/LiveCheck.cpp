@@ -14,6 +14,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <utility>
 
 #include <algorithm>
 #include <cmath>
@@ -61,8 +62,18 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     m_debounce->setSingleShot(true);
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
     connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
-    // A new program is checked at once; view and scene changes come in bursts.
-    connect(live, &LiveShaderController::programApplied, this, [this] { schedule(0); });
+    // A new program is checked at once, but after its first frame is on
+    // screen: the check draws the scene again on this thread, which would
+    // otherwise delay that frame. View and scene changes come in bursts.
+    connect(live, &LiveShaderController::programApplied, this, [this] {
+        m_checkAfterFrame = true;
+        m_pending = true;
+        m_overlay->setFresh(false);
+    });
+    connect(viewport, &Viewport::frameSwapped, this, [this] {
+        if (std::exchange(m_checkAfterFrame, false))
+            schedule(0);
+    });
     for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged,
                         &Viewport::cameraChanged, &Viewport::glInitialized})
         connect(viewport, signal, this, [this] { schedule(); });

@@ -85,8 +85,9 @@ private:
     QTimer *m_debounce = nullptr;
     std::optional<CheckResult> m_last;
     std::optional<QPointF>
-        m_inspectWhenReady; // where, as a fraction of the view's width and height
-    bool m_pending = false; // scheduled, not yet handed to the checker
+        m_inspectWhenReady;         // where, as a fraction of the view's width and height
+    bool m_pending = false;         // scheduled, not yet handed to the checker
+    bool m_checkAfterFrame = false; // a new program: checked once its first frame is shown
     bool m_draggingDivider = false;
     const SceneLoadJob *m_loadJob = nullptr;
 };

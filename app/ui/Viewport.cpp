@@ -230,7 +230,8 @@ std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
     if (!m_glInitialized)
         return std::nullopt;
-    return m_lender.lend(m_context.get(), borrower, &m_warmer, std::max(0, m_framebufferSamples));
+    return m_lender.lend(m_context.get(), m_window, borrower, &m_warmer,
+                         std::max(0, m_framebufferSamples));
 }
 
 bool Viewport::takeBackContext(int timeoutMs)
@@ -252,17 +253,32 @@ QImage Viewport::grabFramebuffer()
     makeCurrent();
     drawScene();
     drawOverlays();
-    // The back buffer, resolved by the read: the frame as it would be presented.
-    const QSize pixels = pixelSize();
-    QImage image(pixels, QImage::Format_RGBA8888);
-    QOpenGLFunctions *f = m_context->functions();
-    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    m_context->extraFunctions()->glReadBuffer(GL_BACK);
-    f->glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
+    QImage image = readBackBuffer(pixelSize()).convertToFormat(QImage::Format_RGB32);
     doneCurrent();
-    image = image.mirrored().convertToFormat(QImage::Format_RGB32);
     image.setDevicePixelRatio(devicePixelRatioF());
     return image;
+}
+
+// Needs the context current: the bottom-left `pixels` of the window's back
+// buffer, resolved by the read, top row first.
+QImage Viewport::readBackBuffer(const QSize &pixels)
+{
+    QImage image(pixels, QImage::Format_RGBA8888);
+    QOpenGLExtraFunctions *f = m_context->extraFunctions();
+    f->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_context->defaultFramebufferObject());
+    f->glReadBuffer(GL_BACK);
+    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    f->glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
+    return image.mirrored();
+}
+
+// The frame window covers this widget, so the cursor shown over the view
+// is that window's.
+bool Viewport::event(QEvent *event)
+{
+    if (event->type() == QEvent::CursorChange)
+        m_window->setCursor(cursor());
+    return QWidget::event(event);
 }
 
 void Viewport::resizeEvent(QResizeEvent *event)
@@ -331,12 +347,28 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
         return {};
     const CurrentContext current(*this);
     sendChangedParameters();
-    // The view's own sample count: the new program's variant for it was
-    // compiled by the warm-up in the lent context, off the GUI thread.
     Renderer::Options options = m_options;
     options.drawLightMarkers = options.drawLightMarkers && lightMarkers;
     m_renderer.setOptions(options);
-    QImage image = drawIntoImage(m_renderer, pixelSize, m_framebufferSamples);
+    // Up to the window's size (the live check): drawn into a corner of the
+    // window's back buffer, the framebuffer whose shader variant the lent
+    // warm-up compiled off the GUI thread; any other framebuffer would cost
+    // llvmpipe another compile here, ~80 ms after every edit. Larger (an
+    // export): a framebuffer object with the view's samples.
+    const QSize window = this->pixelSize();
+    const bool inWindow =
+        pixelSize.width() <= window.width() && pixelSize.height() <= window.height();
+    QImage image;
+    if (inWindow) {
+        m_context->functions()->glBindFramebuffer(GL_FRAMEBUFFER,
+                                                  m_context->defaultFramebufferObject());
+        m_renderer.render(pixelSize);
+        // What is on screen stays: every frame redraws the whole back buffer
+        // before it swaps.
+        image = readBackBuffer(pixelSize).convertToFormat(QImage::Format_RGB32);
+    } else {
+        image = drawIntoImage(m_renderer, pixelSize, m_framebufferSamples);
+    }
     m_renderer.setOptions(m_options);
     return image;
 }

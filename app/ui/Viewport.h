@@ -107,8 +107,8 @@ public:
     // transforms from `scene` (same objects and meshes as shown) without
     // reloading anything; the camera as orbited stays.
     void setSceneParameters(const Scene &scene);
-    // The current frame rendered again at `pixelSize` into a framebuffer
-    // object with this view's renderer and program (File → Export Image).
+    // The current frame rendered again at `pixelSize` with this view's
+    // renderer, program and samples (the live check, File → Export Image).
     // Null when GL is not up or the size cannot be allocated. Without
     // `lightMarkers` the frame is the scene alone (what a check compares).
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
@@ -182,6 +182,7 @@ signals:
     void headlightChanged(bool on);
 
 protected:
+    bool event(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
     void childEvent(QChildEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -209,6 +210,7 @@ private:
     void initializeGl();
     void drawScene();
     void drawOverlays();
+    QImage readBackBuffer(const QSize &pixels);
     QSize pixelSize() const;
     void cleanup();
     Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);

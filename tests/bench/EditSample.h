@@ -8,10 +8,13 @@ struct EditSample {
     double totalMs = 0;   // edit (after the debounce) to the first finished frame
     double compileMs = 0; // both stages
     double linkMs = 0;
-    double warmMs = 0;   // the warm-up draw, off the GUI thread
-    double frameMs = 0;  // the first frame drawn on the GUI thread
-    double otherMs = 0;  // the rest: queues, thread hops, adopting the program
-    double stallMs = 0;  // the longest the GUI thread did not get to its event loop
+    double warmMs = 0;  // the warm-up draw, off the GUI thread
+    double frameMs = 0; // the first frame drawn on the GUI thread
+    double otherMs = 0; // the rest: queues, thread hops, adopting the program
+    double stallMs = 0; // the longest the GUI thread did not get to its event loop
+    // ... from the edit until the live check of the new program has its
+    // verdict (it draws the scene again on the GUI thread after the frame)
+    double stallUntilCheckedMs = 0;
     double steadyMs = 0; // a further frame with the same program, for comparison
 };
 

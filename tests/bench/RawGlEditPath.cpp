@@ -111,7 +111,8 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     glFinish();
     s.frameMs = ms(step.nsecsElapsed());
     s.totalMs = ms(total.nsecsElapsed());
-    s.stallMs = s.totalMs; // it all happens on the calling thread
+    s.stallMs = s.totalMs;             // it all happens on the calling thread
+    s.stallUntilCheckedMs = s.stallMs; // and there is no check
     step.restart();
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
