@@ -36,7 +36,7 @@ void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
                 .arg(depth ? tr(" · low depth precision") : QString()));
     const QString explained =
         tr("Draw time per frame: from the frame's first OpenGL call to glFinish, the scene only "
-           "(composing the window is not included); the mean of the %n frame(s) of the last "
+           "(presenting the frame is not included); the mean of the %n frame(s) of the last "
            "second.",
            nullptr, m_viewport->frameTimes().frames());
     setToolTip(depth ? explained + QStringLiteral("\n\n") + *depth : explained);

@@ -12,13 +12,12 @@ class Viewport;
 // the last second's frames, see Viewport::frameRendered) and triangles
 // drawn, plus a note while the depth range leaves too little depth
 // precision (said once in the status bar when it starts, not on every frame
-// of an orbit). It changes at most twice a second, and only while a frame is
-// being drawn: any change of a label recomposes the whole window, OpenGL
-// view included, which on a software renderer costs more than a frame;
-// changed with a frame, it joins that frame's composition (a timer of its
-// own would add one, in the middle of a shader's build). A new triangle
-// count (another scene, a new level) and the depth warning coming or going
-// show at once.
+// of an orbit). It changes at most twice a second, so that it can be read,
+// and only while a frame is being drawn, so that it adds no repaint of its
+// own in the middle of a shader's build (when the view was a QOpenGLWidget,
+// every label change recomposed the whole window through OpenGL). A new
+// triangle count (another scene, a new level) and the depth warning coming
+// or going show at once.
 class FrameStatsLabel : public QLabel
 {
     Q_OBJECT

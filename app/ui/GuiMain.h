@@ -9,11 +9,12 @@ int runGui(int argc, char **argv);
 
 class MainWindow;
 
-// Only the view multisamples, with `viewportSamples`; the window it is
-// composed into gets the default format without. With samples in the
-// default format Qt composes the whole window multisampled, which on
-// llvmpipe doubled the presented frame (bench_frame: 38 ms against 19 ms at
-// 800x600). Call after the window is made and before it is shown.
+// Only the view multisamples, with `viewportSamples`; the default format
+// (the shared and build contexts, any other GL surface) gets none, so that
+// nothing else pays for samples (when the view was a QOpenGLWidget, samples
+// in the default format made Qt compose the whole window multisampled:
+// bench_frame 38 ms against 19 ms at 800x600). Call after the window is made
+// and before it is shown.
 void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples);
 
 } // namespace phonglab
