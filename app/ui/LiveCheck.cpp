@@ -24,6 +24,10 @@ namespace phonglab {
 namespace {
 
 constexpr int kDividerGrabPx = 6;
+// A new program's check waits this long after its first frame, so that the
+// event loop handles what queued up meanwhile (keys typed, the window's
+// repaint) before the check draws the scene again on this thread.
+constexpr int kAfterFrameMs = 20;
 
 QString shortSummary(const CheckResult &result)
 {
@@ -72,7 +76,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     });
     connect(viewport, &Viewport::frameSwapped, this, [this] {
         if (std::exchange(m_checkAfterFrame, false))
-            schedule(0);
+            schedule(kAfterFrameMs);
     });
     for (auto signal : {&Viewport::sceneChanged, &Viewport::sceneParametersChanged,
                         &Viewport::cameraChanged, &Viewport::glInitialized})

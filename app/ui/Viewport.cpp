@@ -2,6 +2,7 @@
 
 #include "CurrentContext.h"
 
+#include "FramePresenter.h"
 #include "LightPicking.h"
 #include "ViewportWindow.h"
 #include "render/FramebufferImage.h"
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace phonglab {
 
@@ -33,6 +35,12 @@ constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units p
 constexpr int kGiveBackTimeoutMs =
     5000; // a borrower stuck in the driver (a shader that never ends)
 constexpr double kLightPickRadiusPx = 8.0; // how near a click must be to a marker
+
+double msSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
 
 // The local files among dropped URLs; anything else (web links) is not ours.
 QStringList localFiles(const QMimeData *data)
@@ -207,6 +215,7 @@ void Viewport::adoptProgram(GlProgram program)
         const CurrentContext current(*this);
         m_renderer.adoptProgram(std::move(program));
     }
+    m_presentOffThread = true; // the frame after an edit: typing goes on meanwhile
     requestFrame();
 }
 
@@ -228,8 +237,11 @@ BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
 
 std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
-    if (!m_glInitialized)
+    if (!m_glInitialized || !takeBackContext()) // a frame being presented first
         return std::nullopt;
+    // A loan is for a new program's warm-up (the borrower may switch the
+    // renderer to it): the frame after it is an edit's.
+    m_presentOffThread = true;
     return m_lender.lend(m_context.get(), m_window, borrower, &m_warmer,
                          std::max(0, m_framebufferSamples));
 }
@@ -251,7 +263,11 @@ QImage Viewport::grabFramebuffer()
     if (!m_context || !m_context->isValid() || !m_window->handle())
         return {};
     makeCurrent();
-    drawScene();
+    const auto started = std::chrono::steady_clock::now();
+    if (drawScene()) {
+        m_context->functions()->glFinish(); // without it the time would be the submission's
+        frameDrawn(msSince(started));
+    }
     drawOverlays();
     QImage image = readBackBuffer(pixelSize()).convertToFormat(QImage::Format_RGB32);
     doneCurrent();
@@ -468,9 +484,42 @@ void Viewport::drawFrame()
         startGl();
     if (!m_context->isValid() || !m_context->makeCurrent(m_window))
         return;
-    drawScene();
+    const auto started = std::chrono::steady_clock::now();
+    const bool scene = drawScene();
     drawOverlays();
+    if (scene && m_presenter && std::exchange(m_presentOffThread, false)) {
+        // The wait for the rasteriser and the swap go to the presenter's
+        // thread; this one goes back to its events (typing) meanwhile.
+        std::optional<LentContext> lent =
+            m_lender.lend(m_context.get(), m_window, m_presenter->presenterThread(), nullptr,
+                          std::max(0, m_framebufferSamples));
+        m_presenter->present(std::move(*lent), thread(), started);
+        return;
+    }
+    if (scene) {
+        m_context->functions()->glFinish(); // without it the time would be the submission's
+        frameDrawn(msSince(started));
+    }
     m_context->swapBuffers(m_window);
+    m_lastPresentedAt = std::chrono::steady_clock::now();
+    emit frameSwapped();
+}
+
+void Viewport::framePresented(double drawMs, qint64 swappedNs, bool ok)
+{
+    takeBackContext(); // given back already: the presenter releases it first
+    if (!ok) {
+        // The context cannot be made current off this thread here: present
+        // on this thread from now on.
+        qWarning("phonglab: frames cannot be presented from a thread of their own; the GUI "
+                 "thread presents them");
+        m_presenter.reset();
+        requestFrame();
+        return;
+    }
+    m_lastPresentedAt =
+        std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs));
+    frameDrawn(drawMs);
     emit frameSwapped();
 }
 
@@ -485,6 +534,11 @@ void Viewport::startGl()
         emit renderError(tr("Cannot create an OpenGL context for the viewport"));
         m_context = std::make_unique<QOpenGLContext>(); // invalid: no second try
         return;
+    }
+    if (!qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD")) {
+        m_presenter = std::make_unique<FramePresenter>();
+        connect(m_presenter.get(), &FramePresenter::presented, this, &Viewport::framePresented,
+                Qt::QueuedConnection);
     }
     initializeGl();
 }
@@ -553,7 +607,7 @@ void Viewport::cleanup()
 }
 
 // Needs the context current: the scene into the window's back buffer.
-void Viewport::drawScene()
+bool Viewport::drawScene()
 {
     QOpenGLFunctions *f = context()->functions();
     f->glBindFramebuffer(GL_FRAMEBUFFER, m_context->defaultFramebufferObject());
@@ -562,23 +616,22 @@ void Viewport::drawScene()
         const glm::dvec3 bg = m_scene.background;
         f->glClearColor(float(bg.r), float(bg.g), float(bg.b), 1.0f);
         f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        return;
+        return false;
     }
     sendChangedParameters();
-
     if (m_framebufferSamples < 0) {
         // What the window really got, not what was asked for: a warm-up
         // must draw with the same.
         f->glGetIntegerv(GL_SAMPLES, &m_framebufferSamples);
     }
-    QElapsedTimer timer;
-    timer.start();
     m_renderer.render(pixelSize());
-    // Without glFinish the timer would only measure command submission.
-    f->glFinish();
+    return true;
+}
+
+void Viewport::frameDrawn(double drawMs)
+{
     const auto now = std::chrono::steady_clock::now().time_since_epoch();
-    m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(),
-                     double(timer.nsecsElapsed()) / 1e6);
+    m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), drawMs);
     ++m_framesRendered;
     emit frameRendered(m_frameTimes.meanMs(), m_renderer.trianglesDrawn());
 }

@@ -14,11 +14,13 @@
 #include <QOpenGLContext>
 #include <QPointF>
 #include <QWidget>
+#include <chrono>
 #include <memory>
 #include <optional>
 
 namespace phonglab {
 
+class FramePresenter;
 class ViewportWindow;
 
 // The interactive 3D view: drives a Renderer and turns mouse and keyboard
@@ -102,6 +104,9 @@ public:
     void requestFrame();
     // The native window the frames go to; its input reaches this widget.
     QWindow *frameWindow() const;
+    // When the last frame was handed to the window system (swapBuffers
+    // returned), on whichever thread presented it.
+    std::chrono::steady_clock::time_point lastPresentedAt() const { return m_lastPresentedAt; }
 
     // The cheap path for dock edits: takes lights, ambient, materials and
     // transforms from `scene` (same objects and meshes as shown) without
@@ -208,7 +213,12 @@ private:
     void drawFrame();
     void startGl();
     void initializeGl();
-    void drawScene();
+    // Needs the context current: the scene into the window's back buffer
+    // (false: GL is not ready, only the background).
+    bool drawScene();
+    // Books a frame's draw time (first GL call to glFinish) and says so.
+    void frameDrawn(double drawMs);
+    void framePresented(double drawMs, qint64 swappedNs, bool ok);
     void drawOverlays();
     QImage readBackBuffer(const QSize &pixels);
     QSize pixelSize() const;
@@ -243,6 +253,14 @@ private:
     // Made on the first exposure; stays (invalid) when it could not be made.
     std::unique_ptr<QOpenGLContext> m_context;
     ContextLender m_lender;
+    // Presents the first frame of a newly adopted program off the GUI
+    // thread, so that the keys typed meanwhile are handled at once; null:
+    // this thread presents (PHONGLAB_PRESENT_ON_GUI_THREAD=1, or the
+    // platform cannot). Other frames (an orbit's stream) are presented here:
+    // handing the context over costs ~3 ms a frame (docs/performance.md).
+    std::unique_ptr<FramePresenter> m_presenter;
+    bool m_presentOffThread = false;
+    std::chrono::steady_clock::time_point m_lastPresentedAt;
     bool m_frameMissed = false;      // asked for while the context was lent
     WarmUpDraw m_warmer;             // created in this context by a borrower; freed in cleanup()
     GLint m_framebufferSamples = -1; // of the window's framebuffer; -1: not known yet

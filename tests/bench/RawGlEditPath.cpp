@@ -8,6 +8,7 @@
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
 #include <cstdio>
@@ -20,27 +21,28 @@ bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, c
     if (!vertex.open(QIODevice::ReadOnly))
         return false;
     m_vertex = vertex.readAll();
-    m_context.setFormat(phonglabSurfaceFormat(0));
-    m_surface.setFormat(m_context.format());
-    m_surface.create();
-    if (!m_context.create() || !m_context.makeCurrent(&m_surface))
+    QSurfaceFormat format = phonglabSurfaceFormat(samples);
+    format.setSwapInterval(0);
+    m_window.setSurfaceType(QSurface::OpenGLSurface);
+    m_window.setFormat(format);
+    m_window.setTitle(QStringLiteral("raw GL edits"));
+    m_window.resize(size / m_window.devicePixelRatio());
+    m_window.show();
+    QElapsedTimer wait;
+    wait.start();
+    while (!m_window.isExposed() && wait.elapsed() < 5000)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    m_context.setFormat(format);
+    if (!m_window.isExposed() || !m_context.create() || !m_context.makeCurrent(&m_window))
         return false;
+    GLint gotSamples = 0;
+    glGetIntegerv(GL_SAMPLES, &gotSamples);
+    if (gotSamples != samples) {
+        std::fprintf(stderr, "raw GL: the window has %d samples, not %d\n", gotSamples, samples);
+        return false;
+    }
     m_size = size;
     m_scene = scene;
-    // The viewport's target: RGBA8 + depth-stencil, same size and samples.
-    glGenRenderbuffers(1, &m_color);
-    glBindRenderbuffer(GL_RENDERBUFFER, m_color);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, size.width(),
-                                     size.height());
-    glGenRenderbuffers(1, &m_depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, m_depth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, size.width(),
-                                     size.height());
-    glGenFramebuffers(1, &m_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              m_depth);
 
     std::vector<float> interleaved;
     for (std::size_t i = 0; i < mesh.positions.size(); ++i)
@@ -62,25 +64,22 @@ bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, c
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
     m_indexCount = GLsizei(mesh.indices.size());
-    return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    return true;
 }
 
 RawGlEditPath::~RawGlEditPath()
 {
-    if (!m_context.makeCurrent(&m_surface))
+    if (!m_context.isValid() || !m_context.makeCurrent(&m_window))
         return;
     glDeleteVertexArrays(1, &m_vao);
     GLuint buffers[] = {m_vbo, m_ibo};
     glDeleteBuffers(2, buffers);
-    glDeleteFramebuffers(1, &m_fbo);
-    GLuint renderbuffers[] = {m_color, m_depth};
-    glDeleteRenderbuffers(2, renderbuffers);
     m_context.doneCurrent();
 }
 
 EditSample RawGlEditPath::edit(const QByteArray &fragment)
 {
-    m_context.makeCurrent(&m_surface);
+    m_context.makeCurrent(&m_window);
     EditSample s;
     QElapsedTimer total, step;
     total.start();
@@ -99,7 +98,7 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     glDeleteShader(fs);
     s.linkMs = ms(step.nsecsElapsed());
     step.restart();
-    glBindFramebuffer(GL_FRAMEBUFFER, m_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
     glViewport(0, 0, m_size.width(), m_size.height());
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
@@ -108,7 +107,8 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     setPhongUniforms(program, m_scene, m_scene.objects.front(), m_size);
     glBindVertexArray(m_vao);
     glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
-    glFinish();
+    glFinish(); // as the viewport: the frame done, then shown
+    m_context.swapBuffers(&m_window);
     s.frameMs = ms(step.nsecsElapsed());
     s.totalMs = ms(total.nsecsElapsed());
     s.stallMs = s.totalMs;             // it all happens on the calling thread
@@ -116,7 +116,7 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     step.restart();
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
-    glFinish();
+    m_context.swapBuffers(&m_window);
     s.steadyMs = ms(step.nsecsElapsed());
     glUseProgram(0);
     glDeleteProgram(program);

@@ -3,17 +3,18 @@
 #include "core/MeshData.h"
 #include "core/Scene.h"
 
-#include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QSize>
+#include <QWindow>
 
 namespace phonglab::bench {
 
 // The baseline an edit is measured against: the same steps with plain GL
 // calls (glCreateShader, glCompileShader, glLinkProgram, one draw of the
-// mesh with the scene's uniforms, glFinish), no Qt wrappers, on a context of
-// its own drawing into a framebuffer like the viewport's (RGBA8 +
-// depth-stencil, same size and samples).
+// mesh with the scene's uniforms, swapBuffers), no Qt wrappers, on a context
+// of its own drawing into a window of its own like the viewport's (same
+// size and samples) and presenting: an edit ends when its pixel reaches the
+// window, on both paths.
 class RawGlEditPath
 {
 public:
@@ -29,11 +30,11 @@ public:
 
 private:
     QOpenGLContext m_context;
-    QOffscreenSurface m_surface;
+    QWindow m_window;
     QSize m_size;
     Scene m_scene;
     QByteArray m_vertex;
-    GLuint m_fbo = 0, m_color = 0, m_depth = 0, m_vao = 0, m_vbo = 0, m_ibo = 0;
+    GLuint m_vao = 0, m_vbo = 0, m_ibo = 0;
     GLsizei m_indexCount = 0;
 };
 

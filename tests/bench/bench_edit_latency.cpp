@@ -124,13 +124,19 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
                                         appliedAt = clock.nsecsElapsed();
                                         timings = reply;
                                     });
-    auto framed = QObject::connect(viewport, &Viewport::frameRendered, [&] {
+    // The pixel: when the frame was handed to the window system (the
+    // presenting thread's swapBuffers returned), as the raw path's.
+    std::chrono::steady_clock::time_point start;
+    auto framed = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
-            frameAt = clock.nsecsElapsed();
+            frameAt = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                          viewport->lastPresentedAt() - start)
+                          .count();
             loop.quit();
         }
     });
     QTimer::singleShot(20000, &loop, &QEventLoop::quit); // a build that never comes back
+    start = std::chrono::steady_clock::now();
     clock.start();
     ticker.start();
     live->buildNow(); // where the debounce would fire
@@ -143,7 +149,8 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
         std::fprintf(stderr, "an edit never reached the screen\n");
         return s;
     }
-    maxGap = std::max(maxGap, frameAt - lastTick); // the stretch ending in the frame itself
+    // The stretch ending in the frame itself (when it was presented on this thread).
+    maxGap = std::max(maxGap, std::min(frameAt, clock.nsecsElapsed()) - lastTick);
     const qint64 maxGapToPixel = maxGap;
     // Typing goes on while the check of the new program runs: its stalls count too.
     QElapsedTimer checking;
