@@ -32,8 +32,8 @@ void FramePresenter::present(LentContext lent, QThread *owner,
             std::chrono::steady_clock::time_point swapped;
             if (ok) {
                 context->functions()->glFinish(); // the frame's draw ends here
-                drawMs = std::chrono::duration<double, std::milli>(
-                             std::chrono::steady_clock::now() - started)
+                drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now()
+                                                                   - started)
                              .count();
                 context->swapBuffers(lent.surface);
                 swapped = std::chrono::steady_clock::now();

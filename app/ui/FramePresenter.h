@@ -25,8 +25,7 @@ public:
     // On the owner's thread, with `lent` lent to presenterThread(): waits
     // for the frame (glFinish), swaps and gives the context back to `owner`.
     // `started` is when the frame's first GL call was made.
-    void present(LentContext lent, QThread *owner,
-                 std::chrono::steady_clock::time_point started);
+    void present(LentContext lent, QThread *owner, std::chrono::steady_clock::time_point started);
 
 signals:
     // `drawMs`: from the frame's first GL call to glFinish; `swappedNs`:

@@ -4,6 +4,7 @@
 // user uniforms survive a rebuild; shipped shaders are never written; and
 // edits survive the process being killed, without running a suspect shader.
 
+#include "PixelDiff.h"
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
@@ -23,11 +24,13 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QProcess>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
+#include <chrono>
 #include <memory>
 
 using namespace phonglab;
@@ -166,6 +169,9 @@ void TestLiveEdit::typingChangesTheFrame()
     QTRY_VERIFY(live()->buildsOnWorker());
     const QImage before = frame();
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
+    std::chrono::steady_clock::time_point appliedAt;
+    connect(live(), &LiveShaderController::programApplied, this,
+            [&appliedAt] { appliedAt = std::chrono::steady_clock::now(); });
     QElapsedTimer timer;
     timer.start();
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
@@ -176,6 +182,14 @@ void TestLiveEdit::typingChangesTheFrame()
     // keep the viewport from lending its context for the warm-up.
     QTRY_VERIFY_WITH_TIMEOUT(applied.count() == 1, kBuildTimeoutMs);
     const qint64 applyMs = timer.elapsed();
+    // The new program's first frame is presented from a thread of its own;
+    // what the window system shows must be that frame.
+    QTRY_VERIFY(viewport()->lastPresentedAt() > appliedAt);
+    const QImage shown = QGuiApplication::primaryScreen()
+                             ->grabWindow(viewport()->frameWindow()->winId())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(test::differingPixels(shown, frame()), 0);
     QVERIFY(frame() != before);
     qInfo("edit to new program: %lld ms (debounce %d ms, warm-up draw %.0f ms off the GUI thread)",
           applyMs, live()->debounceMs(), double(live()->lastApplied().warmNs) / 1e6);
