@@ -4,9 +4,13 @@
 
 #include "core/ObjectMatrices.h"
 
+#include "core/ResourcePaths.h"
+
 #include <QByteArray>
+#include <QFile>
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
+#include <vector>
 
 namespace phonglab::bench {
 
@@ -54,6 +58,70 @@ GLuint compileShader(GLenum type, const QByteArray &text)
         return 0;
     }
     return shader;
+}
+
+GLuint linkProgram(const QByteArray &vertex, const QByteArray &fragment)
+{
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, vertex);
+    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, fragment);
+    GLuint program = glCreateProgram();
+    glAttachShader(program, vs);
+    glAttachShader(program, fs);
+    glLinkProgram(program);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        glDeleteProgram(program);
+        program = 0;
+    }
+    return program;
+}
+
+QByteArray readShippedShader(const char *name)
+{
+    QFile file(shaderPath(QString::fromLatin1(name)));
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+RawMesh uploadMesh(const MeshData &mesh)
+{
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh.positions.size() * 6);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        interleaved.insert(interleaved.end(),
+                           {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
+                            mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
+    RawMesh raw;
+    glGenVertexArrays(1, &raw.vao);
+    glBindVertexArray(raw.vao);
+    glGenBuffers(1, &raw.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, raw.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
+                 interleaved.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &raw.ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, raw.ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    raw.indexCount = GLsizei(mesh.indices.size());
+    return raw;
+}
+
+void deleteMesh(RawMesh &mesh)
+{
+    if (mesh.vao)
+        glDeleteVertexArrays(1, &mesh.vao);
+    const GLuint buffers[] = {mesh.vbo, mesh.ibo};
+    if (mesh.vbo || mesh.ibo)
+        glDeleteBuffers(2, buffers);
+    mesh = RawMesh();
 }
 
 } // namespace phonglab::bench

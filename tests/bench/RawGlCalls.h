@@ -1,4 +1,5 @@
 #pragma once
+#include "core/MeshData.h"
 #include "core/Scene.h"
 
 #include <QByteArray>
@@ -18,5 +19,21 @@ void setPhongUniforms(GLuint program, const Scene &scene, const SceneObject &obj
 // glCreateShader + glShaderSource + glCompileShader; 0 when it does not
 // compile.
 GLuint compileShader(GLenum type, const QByteArray &text);
+
+// Both stages compiled and linked (glCreateProgram, glAttachShader,
+// glLinkProgram); 0 when they do not link.
+GLuint linkProgram(const QByteArray &vertex, const QByteArray &fragment);
+
+// A shipped shader's text (empty when it cannot be read).
+QByteArray readShippedShader(const char *name);
+
+// A mesh in the layout of every scene mesh: position and normal interleaved
+// (24 bytes a vertex, attributes 0 and 1), 32-bit indices, in a VAO.
+struct RawMesh {
+    GLuint vao = 0, vbo = 0, ibo = 0;
+    GLsizei indexCount = 0;
+};
+RawMesh uploadMesh(const MeshData &mesh);
+void deleteMesh(RawMesh &mesh); // and leaves it empty
 
 } // namespace phonglab::bench

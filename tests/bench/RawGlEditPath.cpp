@@ -17,10 +17,9 @@ namespace phonglab::bench {
 
 bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, const MeshData &mesh)
 {
-    QFile vertex(shaderPath(QStringLiteral("phong.vert")));
-    if (!vertex.open(QIODevice::ReadOnly))
+    m_vertex = readShippedShader("phong.vert");
+    if (m_vertex.isEmpty())
         return false;
-    m_vertex = vertex.readAll();
     QSurfaceFormat format = phonglabSurfaceFormat(samples);
     format.setSwapInterval(0);
     m_window.setSurfaceType(QSurface::OpenGLSurface);
@@ -44,26 +43,7 @@ bool RawGlEditPath::create(const QSize &size, int samples, const Scene &scene, c
     m_size = size;
     m_scene = scene;
 
-    std::vector<float> interleaved;
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-        interleaved.insert(interleaved.end(),
-                           {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
-                            mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
-    glGenVertexArrays(1, &m_vao);
-    glBindVertexArray(m_vao);
-    glGenBuffers(1, &m_vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
-                 interleaved.data(), GL_STATIC_DRAW);
-    glGenBuffers(1, &m_ibo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(),
-                 GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
-    m_indexCount = GLsizei(mesh.indices.size());
+    m_mesh = uploadMesh(mesh);
     return true;
 }
 
@@ -71,9 +51,7 @@ RawGlEditPath::~RawGlEditPath()
 {
     if (!m_context.isValid() || !m_context.makeCurrent(&m_window))
         return;
-    glDeleteVertexArrays(1, &m_vao);
-    GLuint buffers[] = {m_vbo, m_ibo};
-    glDeleteBuffers(2, buffers);
+    deleteMesh(m_mesh);
     m_context.doneCurrent();
 }
 
@@ -105,8 +83,8 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     glEnable(GL_CULL_FACE);
     glUseProgram(program);
     setPhongUniforms(program, m_scene, m_scene.objects.front(), m_size);
-    glBindVertexArray(m_vao);
-    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(m_mesh.vao);
+    glDrawElements(GL_TRIANGLES, m_mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     glFinish(); // as the viewport: the frame done, then shown
     m_context.swapBuffers(&m_window);
     s.frameMs = ms(step.nsecsElapsed());
@@ -115,7 +93,7 @@ EditSample RawGlEditPath::edit(const QByteArray &fragment)
     s.stallUntilCheckedMs = s.stallMs; // and there is no check
     step.restart();
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, m_mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     m_context.swapBuffers(&m_window);
     s.steadyMs = ms(step.nsecsElapsed());
     glUseProgram(0);

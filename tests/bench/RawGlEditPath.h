@@ -1,5 +1,6 @@
 #pragma once
 #include "EditSample.h"
+#include "RawGlCalls.h"
 #include "core/MeshData.h"
 #include "core/Scene.h"
 
@@ -34,8 +35,7 @@ private:
     QSize m_size;
     Scene m_scene;
     QByteArray m_vertex;
-    GLuint m_vao = 0, m_vbo = 0, m_ibo = 0;
-    GLsizei m_indexCount = 0;
+    RawMesh m_mesh;
 };
 
 } // namespace phonglab::bench

@@ -18,16 +18,6 @@
 
 namespace phonglab::bench {
 
-namespace {
-
-QByteArray readShader(const char *name)
-{
-    QFile file(shaderPath(QString::fromLatin1(name)));
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-} // namespace
-
 bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
                             const SceneMeshes &meshes, Placement placement,
                             Presentation presentation, QSize windowSize)
@@ -50,7 +40,7 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
         m_host->setCentralWidget(container);
         auto *dock = new QDockWidget(QStringLiteral("Shaders"), m_host.get());
         auto *editor = new QPlainTextEdit(dock);
-        editor->setPlainText(QString::fromUtf8(readShader("phong.frag")));
+        editor->setPlainText(QString::fromUtf8(readShippedShader("phong.frag")));
         dock->setWidget(editor);
         m_host->addDockWidget(Qt::RightDockWidgetArea, dock);
         m_host->statusBar()->showMessage(QStringLiteral("raw GL inside a main window"));
@@ -81,17 +71,8 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
         std::fprintf(stderr, "raw GL: the target has %d samples, not %d\n", gotSamples, samples);
         return false;
     }
-    const GLuint vs = compileShader(GL_VERTEX_SHADER, readShader("phong.vert"));
-    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, readShader("phong.frag"));
-    m_program = glCreateProgram();
-    glAttachShader(m_program, vs);
-    glAttachShader(m_program, fs);
-    glLinkProgram(m_program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(m_program, GL_LINK_STATUS, &linked);
-    if (!linked) {
+    m_program = linkProgram(readShippedShader("phong.vert"), readShippedShader("phong.frag"));
+    if (!m_program) {
         std::fprintf(stderr, "raw GL: the shipped Phong program does not link\n");
         return false;
     }
@@ -102,28 +83,8 @@ bool RawGlFramePath::create(const QSize &size, int samples, const Scene &scene,
             return false;
         }
         const MeshData &mesh = *entry.mesh;
-        std::vector<float> interleaved;
-        interleaved.reserve(mesh.positions.size() * 6);
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-            interleaved.insert(interleaved.end(),
-                               {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
-                                mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
         Object o;
-        glGenVertexArrays(1, &o.vao);
-        glBindVertexArray(o.vao);
-        glGenBuffers(1, &o.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, o.vbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
-                     interleaved.data(), GL_STATIC_DRAW);
-        glGenBuffers(1, &o.ibo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, o.ibo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4),
-                     mesh.indices.data(), GL_STATIC_DRAW);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
-        o.indexCount = GLsizei(mesh.indices.size());
+        o.mesh = uploadMesh(mesh);
         o.cull = entry.stats.closed; // as the renderer: only closed surfaces hide back faces
         m_objects.push_back(o);
     }
@@ -135,11 +96,8 @@ RawGlFramePath::~RawGlFramePath()
 {
     if (!m_window || !m_context.isValid() || !m_context.makeCurrent(m_window))
         return;
-    for (const Object &o : m_objects) {
-        glDeleteVertexArrays(1, &o.vao);
-        const GLuint buffers[] = {o.vbo, o.ibo};
-        glDeleteBuffers(2, buffers);
-    }
+    for (Object &o : m_objects)
+        deleteMesh(o.mesh);
     glDeleteProgram(m_program);
     const GLuint framebuffers[] = {m_sampledFbo, m_viewFbo};
     glDeleteFramebuffers(2, framebuffers);
@@ -169,8 +127,8 @@ void RawGlFramePath::drawScene()
         else
             glDisable(GL_CULL_FACE);
         setPhongUniforms(m_program, m_scene, m_scene.objects[i], m_size);
-        glBindVertexArray(o.vao);
-        glDrawElements(GL_TRIANGLES, o.indexCount, GL_UNSIGNED_INT, nullptr);
+        glBindVertexArray(o.mesh.vao);
+        glDrawElements(GL_TRIANGLES, o.mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
 }
 
@@ -258,19 +216,10 @@ bool RawGlFramePath::createComposition(int samples)
     static const char *fragment = "#version 330 core\n"
                                   "uniform sampler2D image; in vec2 uv; out vec4 color;\n"
                                   "void main() { color = texture(image, uv); }\n";
-    const GLuint vs = compileShader(GL_VERTEX_SHADER, vertex);
-    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, fragment);
-    m_quadProgram = glCreateProgram();
-    glAttachShader(m_quadProgram, vs);
-    glAttachShader(m_quadProgram, fs);
-    glLinkProgram(m_quadProgram);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(m_quadProgram, GL_LINK_STATUS, &linked);
+    m_quadProgram = linkProgram(vertex, fragment);
     glGenVertexArrays(1, &m_quadVao);
     glBindFramebuffer(GL_FRAMEBUFFER, m_context.defaultFramebufferObject());
-    if (!sampledComplete || !viewComplete || !linked) {
+    if (!sampledComplete || !viewComplete || !m_quadProgram) {
         std::fprintf(stderr, "raw GL: the composition's framebuffers or program failed\n");
         return false;
     }

@@ -1,4 +1,5 @@
 #pragma once
+#include "RawGlCalls.h"
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
 
@@ -76,8 +77,7 @@ private:
     void compose();
 
     struct Object {
-        GLuint vao = 0, vbo = 0, ibo = 0;
-        GLsizei indexCount = 0;
+        RawMesh mesh;
         bool cull = false;
     };
 

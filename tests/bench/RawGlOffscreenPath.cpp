@@ -4,29 +4,16 @@
 #include "RawGlOffscreenPath.h"
 
 #include "RawGlCalls.h"
-#include "core/ResourcePaths.h"
 
 #include <QElapsedTimer>
-#include <QFile>
 #include <algorithm>
 #include <cstdio>
-#include <vector>
 
 namespace phonglab::bench {
 
-namespace {
-
-QByteArray readShader(const char *name)
-{
-    QFile file(shaderPath(QString::fromLatin1(name)));
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-} // namespace
-
 RawGlOffscreenPath::~RawGlOffscreenPath()
 {
-    deleteMesh();
+    deleteMesh(m_mesh);
     deleteTarget();
     if (m_program)
         glDeleteProgram(m_program);
@@ -34,48 +21,17 @@ RawGlOffscreenPath::~RawGlOffscreenPath()
 
 bool RawGlOffscreenPath::create()
 {
-    const GLuint vs = compileShader(GL_VERTEX_SHADER, readShader("phong.vert"));
-    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, readShader("phong.frag"));
-    m_program = glCreateProgram();
-    glAttachShader(m_program, vs);
-    glAttachShader(m_program, fs);
-    glLinkProgram(m_program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(m_program, GL_LINK_STATUS, &linked);
-    if (!linked)
+    m_program = linkProgram(readShippedShader("phong.vert"), readShippedShader("phong.frag"));
+    if (!m_program)
         std::fprintf(stderr, "raw GL: the shipped Phong program does not link\n");
-    return linked == GL_TRUE;
+    return m_program != 0;
 }
 
 void RawGlOffscreenPath::setMesh(const MeshData &mesh, const Scene &scene)
 {
-    deleteMesh();
+    deleteMesh(m_mesh);
     m_scene = scene;
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.positions.size() * 6);
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-        interleaved.insert(interleaved.end(),
-                           {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z,
-                            mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
-    glGenVertexArrays(1, &m_vao);
-    glBindVertexArray(m_vao);
-    glGenBuffers(1, &m_vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
-                 interleaved.data(), GL_STATIC_DRAW);
-    glGenBuffers(1, &m_ibo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(),
-                 GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 24, reinterpret_cast<void *>(12));
-    glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    m_indexCount = GLsizei(mesh.indices.size());
+    m_mesh = uploadMesh(mesh);
 }
 
 // The target QOpenGLFramebufferObject makes for OffscreenRenderer (an RGBA8
@@ -118,8 +74,8 @@ void RawGlOffscreenPath::drawFrame()
     glCullFace(GL_BACK);
     glUseProgram(m_program);
     setPhongUniforms(m_program, m_scene, m_scene.objects.front(), m_size);
-    glBindVertexArray(m_vao);
-    glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(m_mesh.vao);
+    glDrawElements(GL_TRIANGLES, m_mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }
 
@@ -156,16 +112,6 @@ double RawGlOffscreenPath::coveredShare(const QSize &size)
     const auto covered = std::count_if(pixels.begin(), pixels.end(),
                                        [background](std::uint32_t p) { return p != background; });
     return double(covered) / double(pixels.size());
-}
-
-void RawGlOffscreenPath::deleteMesh()
-{
-    if (m_vao)
-        glDeleteVertexArrays(1, &m_vao);
-    const GLuint buffers[] = {m_vbo, m_ibo};
-    if (m_vbo || m_ibo)
-        glDeleteBuffers(2, buffers);
-    m_vao = m_vbo = m_ibo = 0;
 }
 
 void RawGlOffscreenPath::deleteTarget()

@@ -1,4 +1,5 @@
 #pragma once
+#include "RawGlCalls.h"
 #include "core/MeshData.h"
 #include "core/Scene.h"
 
@@ -38,14 +39,12 @@ public:
 private:
     void bindTarget(const QSize &size);
     void drawFrame();
-    void deleteMesh();
     void deleteTarget();
 
     Scene m_scene;
     QSize m_size;
     GLuint m_program = 0;
-    GLuint m_vao = 0, m_vbo = 0, m_ibo = 0;
-    GLsizei m_indexCount = 0;
+    RawMesh m_mesh;
     GLuint m_fbo = 0, m_color = 0, m_depth = 0;
 };
 
