@@ -9,6 +9,8 @@
 #include "mesh/MeshLoader.h"
 #include "mesh/NormalComputation.h"
 
+#include "ChildMeasure.h"
+
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <assimp/Importer.hpp>
@@ -40,40 +42,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Sample {
-    double ms = 0;
-    double peakMiB = 0;
-    long long check = 0; // something the loader produced, so work is not optimised away
-};
-
-// Runs `work` in a child process; returns its wall time and peak RSS.
-Sample measureInChild(const std::function<long long()> &work)
-{
-    int fds[2];
-    if (pipe(fds) != 0)
-        return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fds[0]);
-        const auto start = Clock::now();
-        const long long check = work();
-        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        rusage usage{};
-        getrusage(RUSAGE_SELF, &usage);
-        Sample s{ms, usage.ru_maxrss / 1024.0, check};
-        (void)!write(fds[1], &s, sizeof s);
-        _exit(0);
-    }
-    close(fds[1]);
-    Sample s;
-    const bool got = read(fds[0], &s, sizeof s) == ssize_t(sizeof s);
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!got)
-        s.ms = -1;
-    return s;
-}
+using Sample = phonglab::bench::ChildSample;
+using phonglab::bench::measureInChild;
 
 Sample median(const std::function<long long()> &work, int runs)
 {

@@ -13,6 +13,8 @@
 #include "ScalingMeshes.h"
 #include "mesh/MeshLoader.h"
 
+#include "ChildMeasure.h"
+
 #include <tiny_obj_loader.h>
 
 #include <QDir>
@@ -36,42 +38,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Sample {
-    double ms = -1;
-    double peakMiB = 0;      // this process
-    double childPeakMiB = 0; // the largest child it waited for (PhongLab's import child)
-    long long triangles = 0;
-};
-
-// Runs `work` in a fresh child process: its wall time, its peak resident
-// memory and its children's.
-Sample measureInChild(const std::function<long long()> &work)
-{
-    int fds[2];
-    if (pipe(fds) != 0)
-        return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fds[0]);
-        const auto start = Clock::now();
-        const long long triangles = work();
-        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        rusage self{}, children{};
-        getrusage(RUSAGE_SELF, &self);
-        getrusage(RUSAGE_CHILDREN, &children);
-        const Sample s{ms, self.ru_maxrss / 1024.0, children.ru_maxrss / 1024.0, triangles};
-        (void)!write(fds[1], &s, sizeof s);
-        _exit(0);
-    }
-    close(fds[1]);
-    Sample s;
-    if (read(fds[0], &s, sizeof s) != ssize_t(sizeof s))
-        s.ms = -1;
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return s;
-}
+using Sample = ChildSample;
 
 long long tinyObj(const std::string &path)
 {
@@ -178,18 +145,18 @@ int main(int argc, char **argv)
             ours.push_back(measureInChild([&] { return phonglabFirstOpen(file, cache.path()); }));
         }
         const Sample a = medianOf(tiny), b = medianOf(ours);
-        if (a.triangles != triangles || b.triangles != triangles) {
+        if (a.result != triangles || b.result != triangles) {
             std::fprintf(stderr,
                          "%s: tinyobjloader read %lld triangles, PhongLab %lld, the file "
                          "has %lld\n",
-                         file.c_str(), a.triangles, b.triangles, triangles);
+                         file.c_str(), a.result, b.result, triangles);
             return 1;
         }
         const double megabytes = double(QFileInfo(path).size()) / 1e6;
         QFile::remove(path);              // disk: only one file at a time
         constexpr double kMiB = 1.048576; // MB per MiB
         std::printf("| %lld | %.1f | %.1f | %.1f | %.2fx | %.0f | %.0f | %.0f | %.0f, %.0f |\n",
-                    a.triangles, megabytes, a.ms, b.ms, b.ms / a.ms, megabytes / (a.ms / 1e3),
+                    a.result, megabytes, a.ms, b.ms, b.ms / a.ms, megabytes / (a.ms / 1e3),
                     megabytes / (b.ms / 1e3), a.peakMiB * kMiB, b.childPeakMiB * kMiB,
                     b.peakMiB * kMiB);
         std::fflush(stdout);
