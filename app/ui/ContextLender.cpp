@@ -13,6 +13,7 @@ std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QSurface
         context->doneCurrent(); // a context changes threads only when current nowhere
     context->moveToThread(borrower);
     m_returned = std::make_shared<QSemaphore>(0);
+    m_borrower = borrower;
     return LentContext{context, surface, warmer, samples, m_returned, {}};
 }
 
@@ -23,6 +24,7 @@ bool ContextLender::end(int timeoutMs)
     if (!m_returned->tryAcquire(1, timeoutMs))
         return false;
     m_returned.reset();
+    m_borrower = nullptr;
     return true;
 }
 

@@ -23,9 +23,12 @@ public:
     // -1: as long as it takes); false if it did not in time.
     bool end(int timeoutMs = -1);
     bool isActive() const { return m_returned != nullptr; }
+    // The thread the context is lent to (null when it is not lent).
+    QThread *borrower() const { return m_borrower; }
 
 private:
     std::shared_ptr<QSemaphore> m_returned; // set while lent
+    QThread *m_borrower = nullptr;
 };
 
 } // namespace phonglab

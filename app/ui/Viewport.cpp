@@ -1,58 +1,22 @@
+// Viewport: the scene shown, its GL context's life and loans (its input is
+// in ViewportInput.cpp, its frames in ViewportFrames.cpp).
 #include "Viewport.h"
 
 #include "CurrentContext.h"
-
 #include "FramePresenter.h"
-#include "LightPicking.h"
 #include "ViewportWindow.h"
-#include "render/FramebufferImage.h"
 
-#include <QAction>
-#include <QDragEnterEvent>
-#include <QDropEvent>
-#include <QElapsedTimer>
-#include <QKeyEvent>
-#include <QMimeData>
-#include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
-#include <QPainter>
 #include <QResizeEvent>
-#include <QWheelEvent>
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <utility>
 
 namespace phonglab {
 
 namespace {
 
-constexpr double kOrbitDegPerPixel = 0.4;
-constexpr double kZoomPerWheelNotch = 0.85; // distance factor for one notch towards the scene
-constexpr double kWheelNotch = 120.0;       // QWheelEvent::angleDelta() units per notch
 constexpr int kGiveBackTimeoutMs =
     5000; // a borrower stuck in the driver (a shader that never ends)
-constexpr double kLightPickRadiusPx = 8.0; // how near a click must be to a marker
-
-double msSince(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-// The local files among dropped URLs; anything else (web links) is not ours.
-QStringList localFiles(const QMimeData *data)
-{
-    QStringList paths;
-    if (!data || !data->hasUrls())
-        return paths;
-    for (const QUrl &url : data->urls())
-        if (url.isLocalFile())
-            paths << url.toLocalFile();
-    return paths;
-}
 
 QString contextDescription(QOpenGLContext *context)
 {
@@ -257,37 +221,6 @@ bool Viewport::takeBackContext(int timeoutMs)
     return true;
 }
 
-QImage Viewport::grabFramebuffer()
-{
-    takeBackContext();
-    if (!m_context || !m_context->isValid() || !m_window->handle())
-        return {};
-    makeCurrent();
-    const auto started = std::chrono::steady_clock::now();
-    if (drawScene()) {
-        m_context->functions()->glFinish(); // without it the time would be the submission's
-        frameDrawn(msSince(started));
-    }
-    drawOverlays();
-    QImage image = readBackBuffer(pixelSize()).convertToFormat(QImage::Format_RGB32);
-    doneCurrent();
-    image.setDevicePixelRatio(devicePixelRatioF());
-    return image;
-}
-
-// Needs the context current: the bottom-left `pixels` of the window's back
-// buffer, resolved by the read, top row first.
-QImage Viewport::readBackBuffer(const QSize &pixels)
-{
-    QImage image(pixels, QImage::Format_RGBA8888);
-    QOpenGLExtraFunctions *f = m_context->extraFunctions();
-    f->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_context->defaultFramebufferObject());
-    f->glReadBuffer(GL_BACK);
-    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    f->glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
-    return image.mirrored();
-}
-
 // The frame window covers this widget, so the cursor shown over the view
 // is that window's.
 bool Viewport::event(QEvent *event)
@@ -301,36 +234,6 @@ void Viewport::resizeEvent(QResizeEvent *event)
 {
     m_container->setGeometry(rect());
     QWidget::resizeEvent(event);
-}
-
-// Every child widget but the window's container lies over the frame and is
-// drawn into it: a change to one is a new frame.
-void Viewport::childEvent(QChildEvent *event)
-{
-    if (event->added() && event->child()->isWidgetType())
-        event->child()->installEventFilter(this);
-    QWidget::childEvent(event);
-}
-
-bool Viewport::eventFilter(QObject *watched, QEvent *event)
-{
-    if (watched == m_container)
-        return false;
-    switch (event->type()) {
-    case QEvent::Paint:
-        if (m_paintingOverlays)
-            break;
-        [[fallthrough]];
-    case QEvent::Show:
-    case QEvent::Hide:
-    case QEvent::Move:
-    case QEvent::Resize:
-        m_overlayDirty = true;
-        requestFrame();
-        break;
-    default: break;
-    }
-    return false;
 }
 
 void Viewport::setSceneParameters(const Scene &scene)
@@ -355,38 +258,6 @@ UniformSnapshot Viewport::programSnapshot()
         return {};
     const CurrentContext current(*this);
     return m_renderer.program().snapshot();
-}
-
-QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
-{
-    if (!m_renderReady || pixelSize.isEmpty())
-        return {};
-    const CurrentContext current(*this);
-    sendChangedParameters();
-    Renderer::Options options = m_options;
-    options.drawLightMarkers = options.drawLightMarkers && lightMarkers;
-    m_renderer.setOptions(options);
-    // Up to the window's size (the live check): drawn into a corner of the
-    // window's back buffer, the framebuffer whose shader variant the lent
-    // warm-up compiled off the GUI thread; any other framebuffer would cost
-    // llvmpipe another compile here, ~80 ms after every edit. Larger (an
-    // export): a framebuffer object with the view's samples.
-    const QSize window = this->pixelSize();
-    const bool inWindow =
-        pixelSize.width() <= window.width() && pixelSize.height() <= window.height();
-    QImage image;
-    if (inWindow) {
-        m_context->functions()->glBindFramebuffer(GL_FRAMEBUFFER,
-                                                  m_context->defaultFramebufferObject());
-        m_renderer.render(pixelSize);
-        // What is on screen stays: every frame redraws the whole back buffer
-        // before it swaps.
-        image = readBackBuffer(pixelSize).convertToFormat(QImage::Format_RGB32);
-    } else {
-        image = drawIntoImage(m_renderer, pixelSize, m_framebufferSamples);
-    }
-    m_renderer.setOptions(m_options);
-    return image;
 }
 
 void Viewport::setHeadlight(bool on)
@@ -418,39 +289,6 @@ void Viewport::setSelectedLight(int index)
     requestFrame();
 }
 
-bool Viewport::startLightDrag(const QPointF &position)
-{
-    if (!m_options.drawLightMarkers)
-        return false; // nothing visible to grab
-    m_dragLight =
-        pickLight(m_scene.lights, m_orbit.camera(), QSizeF(size()), position, kLightPickRadiusPx);
-    if (m_dragLight < 0)
-        return false;
-    m_dragStart = m_scene.lights[m_dragLight];
-    setSelectedLight(m_dragLight);
-    emit lightPicked(m_dragLight);
-    return true;
-}
-
-void Viewport::dragLight(const QPointF &position, bool alongView)
-{
-    glm::dvec3 &p = m_scene.lights[m_dragLight].position;
-    p = alongView
-        ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
-        : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
-    m_parametersDirty = true;
-    requestFrame();
-    emit sceneParametersChanged();
-}
-
-void Viewport::finishLightDrag()
-{
-    const int index = m_dragLight;
-    m_dragLight = -1;
-    if (index >= 0 && index < int(m_scene.lights.size()) && !(m_scene.lights[index] == m_dragStart))
-        emit lightDragged(index, m_dragStart, m_scene.lights[index]);
-}
-
 void Viewport::resetCamera()
 {
     m_orbit.reset();
@@ -470,77 +308,6 @@ void Viewport::setShowLightMarkers(bool show)
     m_options.drawLightMarkers = show;
     m_renderer.setOptions(m_options); // plain state, no GL call
     requestFrame();
-}
-
-void Viewport::drawFrame()
-{
-    if (m_lender.isActive()) {
-        m_frameMissed = true;
-        return;
-    }
-    if (!m_window->isExposed())
-        return;
-    if (!m_context)
-        startGl();
-    if (!m_context->isValid() || !m_context->makeCurrent(m_window))
-        return;
-    const auto started = std::chrono::steady_clock::now();
-    const bool scene = drawScene();
-    drawOverlays();
-    if (scene && m_presenter && std::exchange(m_presentOffThread, false)) {
-        // The wait for the rasteriser and the swap go to the presenter's
-        // thread; this one goes back to its events (typing) meanwhile.
-        std::optional<LentContext> lent =
-            m_lender.lend(m_context.get(), m_window, m_presenter->presenterThread(), nullptr,
-                          std::max(0, m_framebufferSamples));
-        m_presenter->present(std::move(*lent), thread(), started);
-        return;
-    }
-    if (scene) {
-        m_context->functions()->glFinish(); // without it the time would be the submission's
-        frameDrawn(msSince(started));
-    }
-    m_context->swapBuffers(m_window);
-    m_lastPresentedAt = std::chrono::steady_clock::now();
-    emit frameSwapped();
-}
-
-void Viewport::framePresented(double drawMs, qint64 swappedNs, bool ok)
-{
-    takeBackContext(); // given back already: the presenter releases it first
-    if (!ok) {
-        // The context cannot be made current off this thread here: present
-        // on this thread from now on.
-        qWarning("phonglab: frames cannot be presented from a thread of their own; the GUI "
-                 "thread presents them");
-        m_presenter.reset();
-        requestFrame();
-        return;
-    }
-    m_lastPresentedAt =
-        std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs));
-    frameDrawn(drawMs);
-    emit frameSwapped();
-}
-
-// Once, on the first exposure: the context for the window's format, sharing
-// objects with the rest of the application (the build thread's context).
-void Viewport::startGl()
-{
-    m_context = std::make_unique<QOpenGLContext>();
-    m_context->setFormat(m_window->requestedFormat());
-    m_context->setShareContext(QOpenGLContext::globalShareContext());
-    if (!m_context->create() || !m_context->makeCurrent(m_window)) {
-        emit renderError(tr("Cannot create an OpenGL context for the viewport"));
-        m_context = std::make_unique<QOpenGLContext>(); // invalid: no second try
-        return;
-    }
-    if (!qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD")) {
-        m_presenter = std::make_unique<FramePresenter>();
-        connect(m_presenter.get(), &FramePresenter::presented, this, &Viewport::framePresented,
-                Qt::QueuedConnection);
-    }
-    initializeGl();
 }
 
 void Viewport::initializeGl()
@@ -606,64 +373,6 @@ void Viewport::cleanup()
     m_renderReady = false;
 }
 
-// Needs the context current: the scene into the window's back buffer.
-bool Viewport::drawScene()
-{
-    QOpenGLFunctions *f = context()->functions();
-    f->glBindFramebuffer(GL_FRAMEBUFFER, m_context->defaultFramebufferObject());
-    if (!m_renderReady) {
-        // Nothing to draw (GL failed and was reported): show the background.
-        const glm::dvec3 bg = m_scene.background;
-        f->glClearColor(float(bg.r), float(bg.g), float(bg.b), 1.0f);
-        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        return false;
-    }
-    sendChangedParameters();
-    if (m_framebufferSamples < 0) {
-        // What the window really got, not what was asked for: a warm-up
-        // must draw with the same.
-        f->glGetIntegerv(GL_SAMPLES, &m_framebufferSamples);
-    }
-    m_renderer.render(pixelSize());
-    return true;
-}
-
-void Viewport::frameDrawn(double drawMs)
-{
-    const auto now = std::chrono::steady_clock::now().time_since_epoch();
-    m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), drawMs);
-    ++m_framesRendered;
-    emit frameRendered(m_frameTimes.meanMs(), m_renderer.trianglesDrawn());
-}
-
-// Needs the context current: the visible child widgets over the frame, as
-// QPainter draws them (premultiplied), painted again only when one changed.
-void Viewport::drawOverlays()
-{
-    QList<QWidget *> shown;
-    for (QWidget *child : findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
-        if (child != m_container && child->isVisible())
-            shown << child;
-    if (shown.isEmpty())
-        return;
-    const QSize pixels = pixelSize();
-    if (m_overlayDirty || m_overlayImage.size() != pixels) {
-        QImage image(pixels, QImage::Format_RGBA8888_Premultiplied);
-        image.setDevicePixelRatio(devicePixelRatioF());
-        image.fill(Qt::transparent);
-        m_paintingOverlays = true;
-        {
-            QPainter painter(&image);
-            for (QWidget *child : shown)
-                child->render(&painter, child->pos(), QRegion(), QWidget::DrawChildren);
-        }
-        m_paintingOverlays = false;
-        m_overlayImage = image;
-        m_overlayDirty = false;
-    }
-    m_overlayLayer.draw(m_overlayImage, pixels);
-}
-
 // Needs the context current: camera, lights and materials changed since the
 // last frame go to the renderer once, just before a frame is drawn.
 void Viewport::sendChangedParameters()
@@ -679,101 +388,6 @@ void Viewport::cameraMoved()
     m_parametersDirty = true;
     requestFrame();
     emit cameraChanged();
-}
-
-void Viewport::mousePressEvent(QMouseEvent *event)
-{
-    switch (event->button()) {
-    case Qt::LeftButton:
-        m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
-        break;
-    case Qt::RightButton:
-    case Qt::MiddleButton: m_drag = Drag::Pan; break;
-    default: QWidget::mousePressEvent(event); return;
-    }
-    m_lastMousePos = event->position();
-    event->accept();
-}
-
-void Viewport::mouseMoveEvent(QMouseEvent *event)
-{
-    if (m_drag == Drag::None) {
-        QWidget::mouseMoveEvent(event);
-        return;
-    }
-    if (m_drag == Drag::Light) {
-        dragLight(event->position(), event->modifiers() & Qt::ShiftModifier);
-        m_lastMousePos = event->position();
-        event->accept();
-        return;
-    }
-    const QPointF delta = event->position() - m_lastMousePos;
-    m_lastMousePos = event->position();
-    if (m_drag == Drag::Orbit) {
-        // "Grab the object" feel: dragging right turns its front to the right.
-        m_orbit.orbit(-delta.x() * kOrbitDegPerPixel, delta.y() * kOrbitDegPerPixel);
-    } else {
-        const double viewHeight = std::max(1, height());
-        m_orbit.pan(delta.x() / viewHeight, delta.y() / viewHeight);
-    }
-    cameraMoved();
-    event->accept();
-}
-
-void Viewport::mouseReleaseEvent(QMouseEvent *event)
-{
-    if (event->buttons() == Qt::NoButton) {
-        if (m_drag == Drag::Light)
-            finishLightDrag(); // the whole drag is one undo step
-        m_drag = Drag::None;
-    }
-    event->accept();
-}
-
-void Viewport::wheelEvent(QWheelEvent *event)
-{
-    const double notches = event->angleDelta().y() / kWheelNotch;
-    if (notches == 0.0) {
-        event->ignore();
-        return;
-    }
-    m_orbit.zoom(std::pow(kZoomPerWheelNotch, notches));
-    cameraMoved();
-    event->accept();
-}
-
-// The key map is the actions added to this view (Reset Camera's R and Home,
-// Inspect's I): their shortcuts. A key that reaches the view unclaimed (the
-// shortcut system only acts for an active window) triggers the action that
-// names it, so no key is handled in two places.
-void Viewport::keyPressEvent(QKeyEvent *event)
-{
-    const QKeySequence pressed(event->keyCombination());
-    for (QAction *action : actions()) {
-        if (action->isEnabled() && action->shortcuts().contains(pressed)) {
-            action->trigger();
-            event->accept();
-            return;
-        }
-    }
-    QWidget::keyPressEvent(event);
-}
-
-void Viewport::dragEnterEvent(QDragEnterEvent *event)
-{
-    // Any local file is welcome: an unsupported one is then explained by the
-    // window rather than refused without a word.
-    if (!localFiles(event->mimeData()).isEmpty())
-        event->acceptProposedAction();
-}
-
-void Viewport::dropEvent(QDropEvent *event)
-{
-    const QStringList paths = localFiles(event->mimeData());
-    if (paths.isEmpty())
-        return;
-    event->acceptProposedAction();
-    emit filesDropped(paths);
 }
 
 } // namespace phonglab
