@@ -6,7 +6,7 @@ class Viewport;
 
 // The viewport's GL context current on this thread for one scope: taken back
 // first if it is lent (Viewport::lendContext), released at the end. The one
-// way code outside paintGL() uses that context, so no caller can forget the
+// way code outside a frame uses that context, so no caller can forget the
 // loan or leave the context current.
 class CurrentContext
 {

@@ -20,12 +20,12 @@ FramePresenter::~FramePresenter()
     m_thread.wait();
 }
 
-void FramePresenter::present(LentContext lent, QThread *owner,
+void FramePresenter::present(quint64 loan, LentContext lent, QThread *owner,
                              std::chrono::steady_clock::time_point started)
 {
     QMetaObject::invokeMethod(
         &m_worker,
-        [this, lent = std::move(lent), owner, started] {
+        [this, loan, lent = std::move(lent), owner, started] {
             QOpenGLContext *context = lent.context;
             const bool ok = context->makeCurrent(lent.surface);
             double drawMs = 0;
@@ -41,7 +41,7 @@ void FramePresenter::present(LentContext lent, QThread *owner,
             }
             context->moveToThread(owner);
             lent.returned->release();
-            emit presented(drawMs, swapped.time_since_epoch().count(), ok);
+            emit presented(loan, drawMs, swapped.time_since_epoch().count(), ok);
         },
         Qt::QueuedConnection);
 }

@@ -25,13 +25,15 @@ public:
     // On the owner's thread, with `lent` lent to presenterThread(): waits
     // for the frame (glFinish), swaps and gives the context back to `owner`.
     // `started` is when the frame's first GL call was made.
-    void present(LentContext lent, QThread *owner, std::chrono::steady_clock::time_point started);
+    // `loan` comes back with presented(), so that a late signal ends no newer loan.
+    void present(quint64 loan, LentContext lent, QThread *owner,
+                 std::chrono::steady_clock::time_point started);
 
 signals:
     // `drawMs`: from the frame's first GL call to glFinish; `swappedNs`:
     // when swapBuffers returned (steady_clock). `ok` false when the context
     // could not be made current here (then nothing was shown).
-    void presented(double drawMs, qint64 swappedNs, bool ok);
+    void presented(quint64 loan, double drawMs, qint64 swappedNs, bool ok);
 
 private:
     QThread m_thread;

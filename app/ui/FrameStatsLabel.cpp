@@ -35,8 +35,9 @@ void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
                 .arg(QLocale().toString(triangles))
                 .arg(depth ? tr(" · low depth precision") : QString()));
     const QString explained =
-        tr("Draw time per frame: from the frame's first OpenGL call to glFinish, the scene only "
-           "(presenting the frame is not included); the mean of the %n frame(s) of the last "
+        tr("Draw time per frame: from the frame's first OpenGL call to glFinish, the scene and "
+           "anything drawn over it (presenting the frame is not included); the mean of the %n "
+           "frame(s) of the last "
            "second.",
            nullptr, m_viewport->frameTimes().frames());
     setToolTip(depth ? explained + QStringLiteral("\n\n") + *depth : explained);

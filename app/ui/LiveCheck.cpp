@@ -70,6 +70,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     // screen: the check draws the scene again on this thread, which would
     // otherwise delay that frame. View and scene changes come in bursts.
     connect(live, &LiveShaderController::programApplied, this, [this] {
+        m_debounce->stop(); // a check due now would draw the old frame's moment
         m_checkAfterFrame = true;
         m_pending = true;
         m_overlay->setFresh(false);

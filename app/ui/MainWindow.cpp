@@ -81,7 +81,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     m_liveCheck->pauseWhileLoading(m_loadJob);
     connect(m_uniformsDock, &UniformsDock::valueWritten, m_liveCheck, &LiveCheck::frameChanged);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
-    // Queued: the error is raised from inside initializeGL / paintGL, where a
+    // Queued: the error is raised from inside the view's GL start or a frame, where a
     // dialog must not be opened.
     connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError,
             Qt::QueuedConnection);
@@ -170,7 +170,7 @@ void MainWindow::createUniformsDock()
     tabifyDockWidget(m_shaderDock, m_uniformsDock);
     m_shaderDock->raise();
     m_uniformsDock->attach(m_viewport, m_shaderDock);
-    // Queued: glInitialized comes from inside initializeGL, where the
+    // Queued: glInitialized comes from inside the view's GL start, where the
     // viewport must not be asked to repaint.
     for (auto signal : {&Viewport::glInitialized, &Viewport::sceneChanged})
         connect(m_viewport, signal, m_uniformsDock, &UniformsDock::scheduleRebuild,

@@ -52,7 +52,7 @@ void UniformsDock::attach(Viewport *viewport, ShaderDock *shaders)
 {
     m_viewport = viewport;
     m_shaders = shaders;
-    // Queued: frameRendered comes from inside paintGL, where the context
+    // Queued: frameRendered comes from inside a frame, where the context
     // must not be released.
     connect(m_viewport, &Viewport::frameRendered, this, &UniformsDock::onFrameRendered,
             Qt::QueuedConnection);

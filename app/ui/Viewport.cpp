@@ -45,8 +45,13 @@ Viewport::Viewport(QWidget *parent)
 Viewport::~Viewport()
 {
     cleanup();
-    if (m_lender.isActive())
-        (void)m_context.release(); // still with a borrower stuck in the driver: left, as said
+    if (m_lender.isActive()) {
+        // A borrower stuck in the driver: its context is left, as said, and
+        // a stuck presenter's thread too (waiting for it would never end).
+        if (m_presenter && m_lender.borrower() == m_presenter->presenterThread())
+            (void)m_presenter.release();
+        (void)m_context.release();
+    }
 }
 
 void Viewport::makeCurrent()
@@ -120,7 +125,7 @@ Result<> Viewport::setScene(const Scene &scene, SceneMeshes &&meshes)
             return uploaded;
         m_renderReady = true;
     } else {
-        // A scene accepted here must not fail later in initializeGL, so check
+        // A scene accepted here must not fail later in the GL start (initializeGl), so check
         // now that nothing is missing.
         for (const SceneObject &object : scene.objects) {
             if (!meshes.entries.contains(meshKey(scene, object)))
@@ -201,20 +206,29 @@ BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
 
 std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
-    if (!m_glInitialized || !takeBackContext()) // a frame being presented first
+    // A frame being presented is waited for first (a frame's time).
+    if (!m_glInitialized || !takeBackContext())
         return std::nullopt;
     // A loan is for a new program's warm-up (the borrower may switch the
     // renderer to it): the frame after it is an edit's.
     m_presentOffThread = true;
-    return m_lender.lend(m_context.get(), m_window, borrower, &m_warmer,
+    // The warm-up draws into the window's own framebuffer only where a
+    // context may be current on a window off the GUI thread.
+    QSurface *surface = QOpenGLContext::supportsThreadedOpenGL() ? m_window : nullptr;
+    return m_lender.lend(m_context.get(), surface, borrower, &m_warmer,
                          std::max(0, m_framebufferSamples));
 }
 
 bool Viewport::takeBackContext(int timeoutMs)
 {
+    QThread *borrower = m_lender.borrower();
     if (!m_lender.end(timeoutMs))
         return false;
-    if (m_frameMissed) {
+    // Back from a warm-up, whose borrower may have switched the renderer to
+    // the new program: its frame is due, as is any asked for meanwhile.
+    const bool fromWarmUp =
+        borrower && (!m_presenter || borrower != m_presenter->presenterThread());
+    if (m_frameMissed || fromWarmUp) {
         m_frameMissed = false;
         requestFrame();
     }
@@ -233,6 +247,7 @@ bool Viewport::event(QEvent *event)
 void Viewport::resizeEvent(QResizeEvent *event)
 {
     m_container->setGeometry(rect());
+    requestFrame(); // not every platform exposes a resized window again
     QWidget::resizeEvent(event);
 }
 

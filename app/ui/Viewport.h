@@ -48,7 +48,7 @@ public:
     // window uses SceneLoadJob and the overload below instead.
     Result<> setScene(const Scene &scene);
     // Shows `scene` with meshes loaded elsewhere (loadSceneMeshes(scene,
-    // loadedKeys())). Before the first initializeGL they wait there.
+    // loadedKeys())). Before GL starts (the first exposure) they wait there.
     Result<> setScene(const Scene &scene, SceneMeshes &&meshes);
     // Meshes already on the GPU, which a load may skip (by meshKey()).
     QSet<QString> loadedKeys() const;
@@ -77,8 +77,8 @@ public:
     // program's draw-time compile happens in this very context but off the
     // GUI thread. Until takeBackContext() the view does not paint, and anything that
     // needs the context on this thread first waits for it to come back.
-    // Refused (nullopt) before GL is up or while lent already: the caller
-    // then does the work itself.
+    // Waits for a frame being presented first. Refused (nullopt) before GL
+    // is up: the caller then does the work itself.
     std::optional<LentContext> lendContext(QThread *borrower);
     // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
     // and paints again. False if it did not come back in time.
@@ -167,8 +167,8 @@ signals:
     void sceneChanged();
     // Local files were dropped onto the view.
     void filesDropped(const QStringList &paths);
-    // GL is up with a fresh context (first show, or after moving to another
-    // window) and the scene's shipped shading program is in use.
+    // GL is up (once, at the first show) and the scene's shipped shading
+    // program is in use.
     void glInitialized();
     // The context is about to go: objects shared with it must be let go.
     void glAboutToBeReleased();
@@ -218,7 +218,7 @@ private:
     bool drawScene();
     // Books a frame's draw time (first GL call to glFinish) and says so.
     void frameDrawn(double drawMs);
-    void framePresented(double drawMs, qint64 swappedNs, bool ok);
+    void framePresented(quint64 loan, double drawMs, qint64 swappedNs, bool ok);
     void drawOverlays();
     QImage readBackBuffer(const QSize &pixels);
     QSize pixelSize() const;
@@ -234,7 +234,7 @@ private:
     Renderer m_renderer;
     Renderer::Options m_options{.drawLightMarkers = true};
     Scene m_scene; // as loaded; its camera is the orbit's original
-    // Meshes of m_scene loaded before GL was up; initializeGL uploads them.
+    // Meshes of m_scene loaded before GL was up; initializeGl uploads them.
     std::optional<SceneMeshes> m_pendingMeshes;
     OrbitCamera m_orbit;
     bool m_glInitialized = false;  // the renderer holds GL resources
@@ -260,6 +260,7 @@ private:
     // handing the context over costs ~3 ms a frame (docs/performance.md).
     std::unique_ptr<FramePresenter> m_presenter;
     bool m_presentOffThread = false;
+    quint64 m_presentLoans = 0; // the newest loan to the presenter: only it ends one
     std::chrono::steady_clock::time_point m_lastPresentedAt;
     bool m_frameMissed = false;      // asked for while the context was lent
     WarmUpDraw m_warmer;             // created in this context by a borrower; freed in cleanup()

@@ -102,9 +102,9 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
     // warm-up compiled off the GUI thread; any other framebuffer would cost
     // llvmpipe another compile here, ~80 ms after every edit. Larger (an
     // export): a framebuffer object with the view's samples.
-    const QSize window = this->pixelSize();
-    const bool inWindow =
-        pixelSize.width() <= window.width() && pixelSize.height() <= window.height();
+    const QSize window = m_window->size() * m_window->devicePixelRatio();
+    const bool inWindow = m_window->isExposed() && pixelSize.width() <= window.width()
+        && pixelSize.height() <= window.height();
     QImage image;
     if (inWindow) {
         m_context->functions()->glBindFramebuffer(GL_FRAMEBUFFER,
@@ -141,7 +141,7 @@ void Viewport::drawFrame()
         std::optional<LentContext> lent =
             m_lender.lend(m_context.get(), m_window, m_presenter->presenterThread(), nullptr,
                           std::max(0, m_framebufferSamples));
-        m_presenter->present(std::move(*lent), thread(), started);
+        m_presenter->present(++m_presentLoans, std::move(*lent), thread(), started);
         return;
     }
     if (scene) {
@@ -153,12 +153,13 @@ void Viewport::drawFrame()
     emit frameSwapped();
 }
 
-void Viewport::framePresented(double drawMs, qint64 swappedNs, bool ok)
+void Viewport::framePresented(quint64 loan, double drawMs, qint64 swappedNs, bool ok)
 {
     // The presenter gave the context back before it said so. Only its loan
     // ends here: if this thread took the context back meanwhile and lent it
     // on (a warm-up), that loan is not this frame's to end.
-    if (m_lender.borrower() == m_presenter->presenterThread())
+    if (m_presenter && m_lender.borrower() == m_presenter->presenterThread()
+        && loan == m_presentLoans)
         takeBackContext();
     if (!ok) {
         // The context cannot be made current off this thread here: present
@@ -187,7 +188,8 @@ void Viewport::startGl()
         m_context = std::make_unique<QOpenGLContext>(); // invalid: no second try
         return;
     }
-    if (!qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD")) {
+    if (!qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD")
+        && QOpenGLContext::supportsThreadedOpenGL()) {
         m_presenter = std::make_unique<FramePresenter>();
         connect(m_presenter.get(), &FramePresenter::presented, this, &Viewport::framePresented,
                 Qt::QueuedConnection);

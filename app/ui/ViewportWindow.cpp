@@ -13,7 +13,6 @@ bool isInput(QEvent::Type type)
     switch (type) {
     case QEvent::MouseButtonPress:
     case QEvent::MouseButtonRelease:
-    case QEvent::MouseButtonDblClick:
     case QEvent::MouseMove:
     case QEvent::Wheel:
     case QEvent::KeyPress:
@@ -32,6 +31,9 @@ ViewportWindow::ViewportWindow(Viewport *viewport)
     : m_viewport(viewport)
 {
     setSurfaceType(QSurface::OpenGLSurface);
+    // Keyboard focus stays with the widgets: the Viewport takes it on a
+    // click (below), and keys and shortcuts go the way of any widget's.
+    setFlag(Qt::WindowDoesNotAcceptFocus);
 }
 
 void ViewportWindow::requestFrame()
@@ -51,7 +53,15 @@ bool ViewportWindow::event(QEvent *event)
         m_viewport->drawFrame();
         return true;
     }
+    // A QWindow gets a press before each double click as well: the double
+    // click itself would be a second press.
+    if (event->type() == QEvent::MouseButtonDblClick)
+        return true;
     if (isInput(event->type())) {
+        // Sent events are not spontaneous, so Qt gives no click focus for them.
+        if (event->type() == QEvent::MouseButtonPress
+            && (m_viewport->focusPolicy() & Qt::ClickFocus))
+            m_viewport->setFocus(Qt::MouseFocusReason);
         // The window lies exactly over the widget: positions carry over as they are.
         QCoreApplication::sendEvent(m_viewport, event);
         return true;

@@ -78,8 +78,8 @@ public:
 
     // Where each frame's interval went: from the previous frame's swap to
     // the end of drawing less the draw (the event loop up to the frame), the
-    // draw (first GL call to glFinish, the status bar's figure), and the
-    // draw's end to frameSwapped (widgets over the view, if any, and the swap).
+    // draw (first GL call to glFinish, widgets over the view included: the
+    // status bar's figure), and the draw's end to frameSwapped (the swap).
     struct Phases {
         std::vector<double> beforeDraw, draw, afterDraw;
     };
@@ -281,7 +281,7 @@ int main(int argc, char **argv)
         printIntervals(m);
     std::printf("\nwhere the frame goes, ms, p50 of each:\n");
     std::printf("\nviewport: | size | path | swap to the frame's start (event loop) | draw (to "
-                "glFinish) | draw's end to swapped (overlays, swap) | frame |\n");
+                "glFinish, overlays included) | draw's end to swapped (the swap) | frame |\n");
     std::printf("raw paths: | size | path | steps, each timed alone with glFinish after it |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     for (const Measured &m : all)

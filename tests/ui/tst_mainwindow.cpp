@@ -14,6 +14,7 @@
 
 #include <QDir>
 #include <QLabel>
+#include <QMenuBar>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -347,7 +348,9 @@ void TestMainWindow::inputOnTheViewsOwnWindowReachesTheView()
     QCOMPARE(window->size(), viewport()->size());
     const QImage originalFrame = frame();
     const QPoint start = viewport()->rect().center();
+    m_window->menuBar()->setFocus(); // somewhere else first
     QTest::mousePress(window, Qt::LeftButton, Qt::NoModifier, start);
+    QCOMPARE(m_window->focusWidget(), viewport()); // a click gives the view the keys
     for (int step = 1; step <= 4; ++step)
         QTest::mouseMove(window, start + QPoint(-30, 20) * step);
     QTest::mouseRelease(window, Qt::LeftButton, Qt::NoModifier, start + QPoint(-120, 80));
