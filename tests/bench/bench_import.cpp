@@ -10,6 +10,7 @@
 #include "mesh/NormalComputation.h"
 
 #include "ChildMeasure.h"
+#include "TinyObjLoad.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -92,19 +93,6 @@ long long bareParse(const std::string &path)
     return static_cast<long long>(v.size() + vn.size() + f.size());
 }
 
-long long tinyObj(const std::string &path)
-{
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
-    tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, path.c_str(), nullptr, true);
-    long long n = 0;
-    for (const auto &s : shapes)
-        n += s.mesh.indices.size();
-    return n;
-}
-
 long long assimpRead(const std::string &path)
 {
     Assimp::Importer importer;
@@ -160,7 +148,7 @@ void benchFile(const std::string &path, int runs, const QString &cacheDir)
     std::printf("\n%s\n  %-34s %12s %13s %9s %9s\n", path.c_str(), "loader", "time", "peak RSS",
                 "vs tinyobj", "vs bare");
     const Sample bare = median([&] { return bareParse(path); }, runs);
-    const Sample tiny = median([&] { return tinyObj(path); }, runs);
+    const Sample tiny = median([&] { return phonglab::bench::tinyObjCorners(path); }, runs);
     printRow("bare parse (floor)", bare, tiny, bare);
     printRow("tinyobjloader", tiny, tiny, bare);
     printRow("assimp (Triangulate)", median([&] { return assimpRead(path); }, runs), tiny, bare);

@@ -14,6 +14,7 @@
 #include "mesh/MeshLoader.h"
 
 #include "ChildMeasure.h"
+#include "TinyObjLoad.h"
 
 #include <tiny_obj_loader.h>
 
@@ -39,19 +40,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 using Sample = ChildSample;
-
-long long tinyObj(const std::string &path)
-{
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
-    tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, path.c_str(), nullptr, true);
-    long long n = 0;
-    for (const auto &s : shapes)
-        n += s.mesh.indices.size() / 3;
-    return n;
-}
 
 long long phonglabFirstOpen(const std::string &path, const QString &cacheDir)
 {
@@ -141,7 +129,7 @@ int main(int argc, char **argv)
         const std::string file = path.toStdString();
         std::vector<Sample> tiny, ours;
         for (int r = 0; r < runs; ++r) { // interleaved: drift falls on both alike
-            tiny.push_back(measureInChild([&] { return tinyObj(file); }));
+            tiny.push_back(measureInChild([&] { return tinyObjCorners(file) / 3; }));
             ours.push_back(measureInChild([&] { return phonglabFirstOpen(file, cache.path()); }));
         }
         const Sample a = medianOf(tiny), b = medianOf(ours);
