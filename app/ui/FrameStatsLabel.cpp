@@ -25,11 +25,9 @@ void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
     // A new triangle count or a depth warning that comes or goes shows at
     // once: only the milliseconds may lag.
     const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
-    if (m_sinceShown.isValid() && m_sinceShown.elapsed() < kUpdateIntervalMs
-        && triangles == m_shownTriangles && depth.has_value() == m_depthWarningShown)
+    if (!m_pace.isDue(triangles, depth.has_value() != m_depthWarningShown))
         return;
-    m_sinceShown.start();
-    m_shownTriangles = triangles;
+    m_pace.shown(triangles);
     setText(tr("draw %1 ms · %2 triangles%3")
                 .arg(milliseconds, 0, 'f', 2)
                 .arg(QLocale().toString(triangles))

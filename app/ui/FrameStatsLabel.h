@@ -1,5 +1,6 @@
 #pragma once
-#include <QElapsedTimer>
+#include "ReadoutPace.h"
+
 #include <QLabel>
 
 class QStatusBar;
@@ -12,19 +13,14 @@ class Viewport;
 // the last second's frames, see Viewport::frameRendered) and triangles
 // drawn, plus a note while the depth range leaves too little depth
 // precision (said once in the status bar when it starts, not on every frame
-// of an orbit). It changes at most twice a second, so that it can be read,
-// and only while a frame is being drawn, so that it adds no repaint of its
-// own in the middle of a shader's build (when the view was a QOpenGLWidget,
-// every label change recomposed the whole window through OpenGL). A new
-// triangle count (another scene, a new level) and the depth warning coming
-// or going show at once.
+// of an orbit). It changes at the pace of ReadoutPace, and only while a frame
+// is being drawn, so that it adds no repaint of its own in the middle of a
+// shader's build; the depth warning coming or going shows at once.
 class FrameStatsLabel : public QLabel
 {
     Q_OBJECT
 
 public:
-    static constexpr int kUpdateIntervalMs = 500;
-
     FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar);
 
     void showFrame(double milliseconds, qint64 triangles);
@@ -32,8 +28,7 @@ public:
 private:
     Viewport *m_viewport = nullptr;
     QStatusBar *m_statusBar = nullptr;
-    QElapsedTimer m_sinceShown; // invalid until the first frame is shown
-    qint64 m_shownTriangles = -1;
+    ReadoutPace m_pace;
     bool m_depthWarningShown = false;
 };
 

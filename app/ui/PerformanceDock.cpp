@@ -38,7 +38,8 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
 
     m_frameLabel = new QLabel(tr("Frame: -"), body);
     m_frameLabel->setToolTip(
-        tr("Time the last frames took to render (smoothed) and the triangles drawn."));
+        tr("Draw time per frame (first OpenGL call to glFinish), the mean of the last "
+           "second's frames, and the triangles drawn."));
     layout->addWidget(m_frameLabel);
 
     auto *budgetRow = new QHBoxLayout;
@@ -279,8 +280,17 @@ void PerformanceDock::showChart()
     m_chartView->setVisible(true);
 }
 
+// Only while the label can be seen, at the status bar's pace; coming into
+// sight it shows the figures of the last second at once.
 void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
 {
+    if (!m_frameLabel->isVisible()) {
+        m_framePace.forget();
+        return;
+    }
+    if (!m_framePace.isDue(triangles))
+        return;
+    m_framePace.shown(triangles);
     const QLocale locale;
     m_frameLabel->setText(
         tr("Frame: %1 ms · %2 triangles")

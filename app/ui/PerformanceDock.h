@@ -1,4 +1,5 @@
 #pragma once
+#include "ReadoutPace.h"
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
 #include "core/ShadingMethod.h"
@@ -73,6 +74,7 @@ private:
     Viewport *m_viewport = nullptr;
     BenchProcess *m_process = nullptr;
     QLabel *m_frameLabel = nullptr;
+    ReadoutPace m_framePace;
     QComboBox *m_budgetKind = nullptr;
     QCheckBox *m_autoDetail = nullptr;
     QDoubleSpinBox *m_budgetValue = nullptr;

@@ -189,7 +189,7 @@ void TestMainWindow::showsFrameStatsAndRenderer()
 }
 
 // The readout names its figure and averages it; it changes at most every
-// kUpdateIntervalMs (a label's change recomposes the whole window), except
+// ReadoutPace::kIntervalMs (a label's change costs a relayout and a repaint), except
 // for a new triangle count, which shows at once.
 void TestMainWindow::frameStatsSayWhatTheyMeasureAndChangeTwiceASecond()
 {
@@ -208,7 +208,7 @@ void TestMainWindow::frameStatsSayWhatTheyMeasureAndChangeTwiceASecond()
     label->showFrame(5.0, 200); // another scene: at once
     QVERIFY2(label->text().startsWith(QStringLiteral("draw 5.00 ms · 200 triangles")),
              qPrintable(label->text()));
-    QTest::qWait(FrameStatsLabel::kUpdateIntervalMs + 50);
+    QTest::qWait(ReadoutPace::kIntervalMs + 50);
     label->showFrame(7.0, 200); // the interval is over
     QVERIFY2(label->text().startsWith(QStringLiteral("draw 7.00 ms")), qPrintable(label->text()));
 }

@@ -14,6 +14,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 #include <memory>
@@ -36,6 +37,7 @@ private slots:
     void fitsDefaultSceneToBudget();
     void nothingFitsLeavesSceneAlone();
     void autoDetailToggleShowsTheLevels();
+    void frameReadoutOnlyWhileSeen();
 
 private:
     void openWindow();
@@ -161,6 +163,38 @@ void TestPerformanceDock::autoDetailToggleShowsTheLevels()
     viewport()->requestFrame();
     QTRY_VERIFY(!label->isVisible());
     QCOMPARE(viewport()->objectDraws().front().levels, 1);
+}
+
+// The dock's frame readout is written only while it can be seen (a label
+// written on every frame costs a relayout and a repaint of the window), and
+// shows the figures at once when the dock comes into sight.
+void TestPerformanceDock::frameReadoutOnlyWhileSeen()
+{
+    openWindow();
+    QLabel *readout = nullptr;
+    for (QLabel *label : dock()->findChildren<QLabel *>())
+        if (label->text().startsWith(QStringLiteral("Frame:")))
+            readout = label;
+    QVERIFY(readout);
+    QTRY_VERIFY(readout->text().contains(QStringLiteral("triangles")));
+
+    dock()->hide();
+    QTRY_VERIFY(!readout->isVisible());
+    readout->setText(QStringLiteral("Frame: stale"));
+    QTest::qWait(ReadoutPace::kIntervalMs + 50); // a readout in sight would be due now
+    for (int i = 0; i < 5; ++i) {
+        const int frames = viewport()->framesRendered();
+        viewport()->requestFrame();
+        QTRY_VERIFY(viewport()->framesRendered() > frames);
+    }
+    QCOMPARE(readout->text(), QStringLiteral("Frame: stale"));
+
+    dock()->show();
+    dock()->raise();
+    QTRY_VERIFY(readout->isVisible());
+    viewport()->requestFrame();
+    QTRY_VERIFY2(readout->text().contains(QStringLiteral("triangles")),
+                 qPrintable(readout->text()));
 }
 
 QTEST_MAIN(TestPerformanceDock)
