@@ -12,6 +12,10 @@ struct Camera {
     double fovDeg = 45.0;
     double nearPlane = 0.1;
     double farPlane = 100.0;
+    // A view too narrow to show every object moves the eye back until it
+    // does (framedCamera), while the user has not moved the camera. False:
+    // the camera is a composed shot, shown exactly as saved.
+    bool frameObjects = true;
 
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix(double aspect) const;

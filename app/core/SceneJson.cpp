@@ -227,8 +227,9 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
     QJsonObject object;
     if (!readObject(value, path, object))
         return false;
-    warnUnknownKeys(object, path,
-                    {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1});
+    warnUnknownKeys(
+        object, path,
+        {"eye"_L1, "target"_L1, "up"_L1, "fov_deg"_L1, "near"_L1, "far"_L1, "frame_objects"_L1});
     Camera camera;
     if (!readVec3(object.value("eye"_L1), childPath(path, "eye"_L1), camera.eye)
         || !readVec3(object.value("target"_L1), childPath(path, "target"_L1), camera.target)
@@ -238,6 +239,12 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
         || !readNumber(object.value("far"_L1), childPath(path, "far"_L1), camera.farPlane)
         || !validateCamera(camera, path))
         return false;
+    if (const QJsonValue frame = object.value("frame_objects"_L1); !frame.isUndefined()) {
+        if (!frame.isBool())
+            return fail(childPath(path, "frame_objects"_L1),
+                        QStringLiteral("expected true or false (got %1)").arg(describeType(frame)));
+        camera.frameObjects = frame.toBool();
+    }
     out = camera;
     return true;
 }

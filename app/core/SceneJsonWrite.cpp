@@ -40,7 +40,7 @@ QJsonObject materialJson(const Material &material)
 
 QJsonObject cameraJson(const Camera &camera)
 {
-    return QJsonObject{
+    QJsonObject json{
         {QStringLiteral("eye"), vec3Json(camera.eye)},
         {QStringLiteral("target"), vec3Json(camera.target)},
         {QStringLiteral("up"), vec3Json(camera.up)},
@@ -48,6 +48,9 @@ QJsonObject cameraJson(const Camera &camera)
         {QStringLiteral("near"), camera.nearPlane},
         {QStringLiteral("far"), camera.farPlane},
     };
+    if (!camera.frameObjects)
+        json.insert(QStringLiteral("frame_objects"), false);
+    return json;
 }
 
 QJsonObject lightJson(const PointLight &light)

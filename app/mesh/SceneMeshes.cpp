@@ -108,6 +108,25 @@ QString meshKey(const Scene &scene, const SceneObject &object)
     return key + detailSuffix(object);
 }
 
+std::vector<glm::dvec3> objectBoundsCorners(const Scene &scene,
+                                            const QHash<QString, SceneMeshes::Entry> &entries)
+{
+    std::vector<glm::dvec3> corners;
+    for (const SceneObject &object : scene.objects) {
+        const auto entry = entries.constFind(meshKey(scene, object));
+        if (entry == entries.constEnd())
+            continue;
+        const glm::dvec3 lo(entry->stats.boundsMin), hi(entry->stats.boundsMax);
+        const glm::dmat4 model = object.transform.matrix();
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                               corner & 4 ? hi.z : lo.z};
+            corners.push_back(glm::dvec3(model * glm::dvec4(p, 1.0)));
+        }
+    }
+    return corners;
+}
+
 SceneMeshes loadSceneMeshes(const Scene &scene, const QSet<QString> &alreadyLoaded,
                             const LoadProgress &progress)
 {

@@ -5,7 +5,9 @@
 
 #include <QHash>
 #include <QSet>
+#include <glm/glm.hpp>
 #include <memory>
+#include <vector>
 
 namespace phonglab {
 
@@ -30,6 +32,12 @@ struct SceneMeshes {
 // way its normals were made, and its detail (a fraction, or "auto": the full
 // mesh with its levels).
 QString meshKey(const Scene &scene, const SceneObject &object);
+
+// The corners of every object's mesh bounds, placed in the world: what a
+// camera has to see to show every object (objects whose mesh is not in
+// `entries` are left out).
+std::vector<glm::dvec3> objectBoundsCorners(const Scene &scene,
+                                            const QHash<QString, SceneMeshes::Entry> &entries);
 
 // Loads every mesh `scene` needs, skipping keys in `alreadyLoaded`.
 // progress(fraction over all meshes); false cancels.

@@ -286,7 +286,9 @@ Result<> MainWindow::saveScene(const QString &path)
 {
     if (Result<> saved = m_sceneShaderFiles->saveEdits(); !saved)
         return saved;
-    Scene scene = rebasedOnto(m_viewport->currentScene(), path);
+    Scene current = m_viewport->currentScene();
+    current.camera = m_viewport->cameraToSave();
+    Scene scene = rebasedOnto(current, path);
     m_sceneShaderFiles->nameIn(scene, path);
     scene.uniforms = userUniformValues(m_viewport->programSnapshot());
     if (Result<> saved = saveSceneFile(scene, path); !saved)

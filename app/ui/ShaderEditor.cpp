@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QTimer>
 #include <algorithm>
@@ -87,6 +88,36 @@ void ShaderEditor::setUpAppearance()
     setMatchedBraceBackgroundColor(QColor(0xd8, 0xe8, 0xd0));
     setUnmatchedBraceForegroundColor(kErrorColor);
     setAnnotationDisplay(AnnotationBoxed);
+}
+
+int ShaderEditor::characterWidth() const
+{
+    return std::max<int>(1, int(SendScintilla(SCI_TEXTWIDTH, STYLE_DEFAULT, "0")));
+}
+
+int ShaderEditor::textAreaOffset() const
+{
+    int width = int(SendScintilla(SCI_GETMARGINLEFT) + SendScintilla(SCI_GETMARGINRIGHT));
+    for (int margin = 0; margin < margins(); ++margin)
+        width += marginWidth(margin);
+    return width;
+}
+
+int ShaderEditor::widthForColumns(int columns) const
+{
+    return textAreaOffset() + columns * characterWidth() + verticalScrollBar()->sizeHint().width()
+        + 2 * frameWidth();
+}
+
+int ShaderEditor::visibleColumns() const
+{
+    return std::max(0, viewport()->width() - textAreaOffset()) / characterWidth();
+}
+
+QSize ShaderEditor::sizeHint() const
+{
+    const int lineHeight = int(SendScintilla(SCI_TEXTHEIGHT, 0));
+    return {widthForColumns(kPreferredColumns), kPreferredLines * std::max(1, lineHeight)};
 }
 
 void ShaderEditor::setUpMargins()

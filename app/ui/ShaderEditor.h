@@ -48,6 +48,16 @@ public:
     // there and takes the focus.
     void goTo(int line, int column);
 
+    // Room for `columns` characters of code: the text, the margins, the
+    // vertical scroll bar and the frame (pixels).
+    int widthForColumns(int columns) const;
+    // Whole characters of code the editor shows across at its present width.
+    int visibleColumns() const;
+    // Room for kPreferredColumns: what the dock holding the editor asks for.
+    QSize sizeHint() const override;
+    static constexpr int kPreferredColumns = 80;
+    static constexpr int kPreferredLines = 30;
+
     GlslLexer *glslLexer() const { return m_lexer; }
     GlslApi *api() const { return m_api; }
     // Re-reads the names the program declares for completion. Runs by itself
@@ -55,6 +65,8 @@ public:
     void refreshDeclaredNames();
 
 private:
+    int characterWidth() const;
+    int textAreaOffset() const; // margins and padding left and right of the text
     void setUpAppearance();
     void setUpMargins();
     void setUpDiagnosticStyles();

@@ -5,6 +5,7 @@
 #include "CurrentContext.h"
 #include "FramePresenter.h"
 #include "ViewportWindow.h"
+#include "core/CameraFraming.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -154,15 +155,38 @@ const QHash<QString, SceneMeshes::Entry> &Viewport::meshInfo() const
 void Viewport::showUploaded(const Scene &scene)
 {
     m_scene = scene;
-    m_orbit.setOriginal(scene.camera);
+    frameScene();
     cameraMoved();
     emit sceneChanged();
+}
+
+// The scene's camera, moved back as far as this view's shape needs to show
+// every object (framedCamera); the orbit starts there and Reset returns there.
+void Viewport::frameScene()
+{
+    const QSize pixels = pixelSize();
+    const double aspect = pixels.isEmpty() ? 0.0 : double(pixels.width()) / pixels.height();
+    const Camera framed = m_scene.camera.frameObjects
+        ? framedCamera(m_scene.camera, objectBoundsCorners(m_scene, meshInfo()), aspect)
+        : m_scene.camera;
+    m_cameraFramed = true;
+    if (framed == m_orbit.original() && framed == m_orbit.camera())
+        return;
+    m_orbit.setOriginal(framed);
+    cameraMoved();
+}
+
+Camera Viewport::cameraToSave() const
+{
+    return m_cameraFramed ? m_scene.camera : currentScene().camera;
 }
 
 Scene Viewport::currentScene() const
 {
     Scene scene = m_scene;
     scene.camera = m_orbit.camera();
+    // Moved by the user: a composed shot, to be shown as it is.
+    scene.camera.frameObjects = m_scene.camera.frameObjects && m_cameraFramed;
     return scene;
 }
 
@@ -247,7 +271,9 @@ bool Viewport::event(QEvent *event)
 void Viewport::resizeEvent(QResizeEvent *event)
 {
     m_container->setGeometry(rect());
-    requestFrame(); // not every platform exposes a resized window again
+    if (m_cameraFramed)
+        frameScene(); // until the user moves the camera, it keeps every object in view
+    requestFrame();   // not every platform exposes a resized window again
     QWidget::resizeEvent(event);
 }
 
@@ -307,6 +333,7 @@ void Viewport::setSelectedLight(int index)
 void Viewport::resetCamera()
 {
     m_orbit.reset();
+    frameScene();
     cameraMoved();
 }
 

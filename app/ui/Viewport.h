@@ -57,6 +57,10 @@ public:
     // The scene as shown, with the orbited camera in place of the original.
     Scene currentScene() const;
     const Camera &camera() const { return m_orbit.camera(); }
+    // What Save writes: the scene's own camera until the user moves it (a
+    // camera moved back only to fit this view's shape is not the scene's),
+    // the moved one after, marked as a shot to keep (frameObjects false).
+    Camera cameraToSave() const;
 
     // The scene's shading method changes without touching the program: the
     // live shader controller builds it (so Save writes the preset in use).
@@ -225,6 +229,7 @@ private:
     void cleanup();
     Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
     void showUploaded(const Scene &scene);
+    void frameScene();
     void cameraMoved();
     void sendChangedParameters();
     bool startLightDrag(const QPointF &position);
@@ -237,6 +242,9 @@ private:
     // Meshes of m_scene loaded before GL was up; initializeGl uploads them.
     std::optional<SceneMeshes> m_pendingMeshes;
     OrbitCamera m_orbit;
+    // The camera is the scene's fitted to the view (frameScene), not moved by
+    // the user since: a resize fits it again.
+    bool m_cameraFramed = true;
     bool m_glInitialized = false;  // the renderer holds GL resources
     bool m_renderReady = false;    // ... and a scene and program to draw
     bool m_parametersDirty = true; // camera moved since the renderer last saw it

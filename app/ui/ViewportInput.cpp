@@ -97,6 +97,7 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
     }
     const QPointF delta = event->position() - m_lastMousePos;
     m_lastMousePos = event->position();
+    m_cameraFramed = false; // the camera is the user's now: a resize leaves it
     if (m_drag == Drag::Orbit) {
         // "Grab the object" feel: dragging right turns its front to the right.
         m_orbit.orbit(-delta.x() * kOrbitDegPerPixel, delta.y() * kOrbitDegPerPixel);
@@ -125,6 +126,7 @@ void Viewport::wheelEvent(QWheelEvent *event)
         event->ignore();
         return;
     }
+    m_cameraFramed = false;
     m_orbit.zoom(std::pow(kZoomPerWheelNotch, notches));
     cameraMoved();
     event->accept();

@@ -46,6 +46,7 @@ Scene fullScene()
     scene.camera.fovDeg = 60.0;
     scene.camera.nearPlane = 0.25;
     scene.camera.farPlane = 250.0;
+    scene.camera.frameObjects = false; // a shot the user composed: not the default
     scene.ambient = {0.05, 0.1, 0.15};
     scene.lights = {
         PointLight{
@@ -241,6 +242,8 @@ void TestSceneJson::rejectsBadInput_data()
     row("fov zero", withSphere(R"("camera": {"fov_deg": 0})"), "camera.fov_deg:", "(0, 180)");
     row("fov 180", withSphere(R"("camera": {"fov_deg": 180})"), "camera.fov_deg:", "(0, 180)");
     row("fov negative", withSphere(R"("camera": {"fov_deg": -45})"), "camera.fov_deg:");
+    row("frame_objects not bool", withSphere(R"("camera": {"frame_objects": "no"})"),
+        "camera.frame_objects:", "true or false");
     row("fov string", withSphere(R"("camera": {"fov_deg": "45"})"),
         "camera.fov_deg:", "got string");
     row("near zero", withSphere(R"("camera": {"near": 0})"), "camera.near:", "> 0");
