@@ -4,4 +4,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-QT_QPA_PLATFORM=xcb xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
+QT_QPA_PLATFORM=xcb xvfb-run -a -s "-screen 0 1920x1080x24" build/tests/tools/make_screenshots docs/images

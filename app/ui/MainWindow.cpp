@@ -1,15 +1,20 @@
 #include "MainWindow.h"
 
+#include "DefaultLayout.h"
 #include "DetailLevelLabel.h"
 #include "FileMenu.h"
 #include "FileTypes.h"
 #include "FrameStatsLabel.h"
 #include "HelpMenu.h"
+#include "LightsDock.h"
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
+#include "MaterialPanel.h"
 #include "MeshStatsText.h"
+#include "ObjectPanel.h"
 #include "PerformanceDock.h"
+#include "PixelInspectorDock.h"
 #include "RecentFiles.h"
 #include "SceneDock.h"
 #include "SceneEditDocks.h"
@@ -34,18 +39,19 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
 
 #include <algorithm>
+#include <utility>
 
 namespace phonglab {
 
 namespace {
 
 constexpr int kWarningTimeoutMs = 10000;
-constexpr int kSceneDockWidth = 340; // fits the stats without eliding most of them
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
@@ -57,18 +63,12 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     , m_shaderDock(new ShaderDock(this))
 {
     setCentralWidget(m_viewport);
-    addDockWidget(Qt::RightDockWidgetArea, m_sceneDock);
-    // Tabbed with the Scene dock so the viewport keeps its width; the code is
-    // what a shader playground opens on.
+    addDockWidget(Qt::LeftDockWidgetArea, m_sceneDock);
     addDockWidget(Qt::RightDockWidgetArea, m_shaderDock);
-    tabifyDockWidget(m_sceneDock, m_shaderDock);
-    m_shaderDock->raise();
-    resizeDocks({m_sceneDock}, {kSceneDockWidth}, Qt::Horizontal);
     createShaderDock();
     createUniformsDock();
     createPerformanceDock();
     m_editDocks = new SceneEditDocks(this, m_viewport, m_sceneDock);
-    m_shaderDock->raise(); // still the tab shown first
     createFileMenu();
     m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
     // Before the status bar: the verdict comes first among its permanent
@@ -86,6 +86,35 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError,
             Qt::QueuedConnection);
     setScenePath({});
+    setGeometry(defaultWindowGeometry(screen()->availableGeometry()));
+    resetLayout();
+}
+
+WindowDocks MainWindow::docks() const
+{
+    return {m_sceneDock,
+            m_editDocks->objectPanel(),
+            m_editDocks->lightsDock(),
+            m_shaderDock,
+            m_editDocks->materialPanel(),
+            m_uniformsDock,
+            m_liveCheck->inspector(),
+            m_performanceDock};
+}
+
+void MainWindow::resetLayout()
+{
+    m_shaderDock->ensurePolished();
+    applyDefaultLayout(*this, docks(), m_shaderDock->sizeHint().width());
+}
+
+// The default layout is laid out again for the size the window is shown
+// at (a test's, or the one restored without its docks' state).
+void MainWindow::showEvent(QShowEvent *event)
+{
+    if (std::exchange(m_defaultLayoutDue, false))
+        resetLayout();
+    QMainWindow::showEvent(event);
 }
 
 // Out of line: LiveShaderController's destructor (a clean exit: the journal
@@ -141,7 +170,9 @@ void MainWindow::closeEvent(QCloseEvent *event)
 namespace {
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
-constexpr int kWindowStateVersion = 1; // bump when the docks change incompatibly
+// Bump when the default layout changes: a layout saved under another
+// version gives way to the new default once (2: issue 18's layout).
+constexpr int kWindowStateVersion = 2;
 } // namespace
 
 void MainWindow::saveWindowSettings() const
@@ -158,6 +189,9 @@ bool MainWindow::restoreWindowSettings()
     const QByteArray state = settings.value(kStateKey).toByteArray();
     const bool geometryOk = !geometry.isEmpty() && restoreGeometry(geometry);
     const bool stateOk = !state.isEmpty() && restoreState(state, kWindowStateVersion);
+    m_defaultLayoutDue = !stateOk;
+    if (!stateOk)
+        resetLayout(); // for the restored size
     return geometryOk && stateOk;
 }
 
@@ -167,8 +201,6 @@ void MainWindow::createUniformsDock()
 {
     m_uniformsDock = new UniformsDock(this);
     addDockWidget(Qt::RightDockWidgetArea, m_uniformsDock);
-    tabifyDockWidget(m_shaderDock, m_uniformsDock);
-    m_shaderDock->raise();
     m_uniformsDock->attach(m_viewport, m_shaderDock);
     // Queued: glInitialized comes from inside the view's GL start, where the
     // viewport must not be asked to repaint.
@@ -181,12 +213,11 @@ void MainWindow::createUniformsDock()
             &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
 }
 
-// Tabbed with the Scene dock: measuring is occasional, the code is not.
+// Hidden until asked for (DefaultLayout): measuring is occasional.
 void MainWindow::createPerformanceDock()
 {
     m_performanceDock = new PerformanceDock(m_viewport, this);
-    addDockWidget(Qt::RightDockWidgetArea, m_performanceDock);
-    tabifyDockWidget(m_sceneDock, m_performanceDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_performanceDock);
     connect(m_performanceDock, &PerformanceDock::applyModelRequested, this,
             &MainWindow::applyModel);
     connect(m_performanceDock, &PerformanceDock::autoDetailRequested, this, [this](bool on) {
@@ -219,6 +250,10 @@ void MainWindow::createViewMenu()
     // any other widget (an editor dock) does not move the camera.
     m_resetCameraAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_viewport->addAction(m_resetCameraAction);
+
+    QAction *resetLayout = view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
+    resetLayout->setObjectName(QStringLiteral("resetLayout"));
+    resetLayout->setToolTip(tr("Put every dock back where a new window has it"));
 
     m_lightMarkersAction = view->addAction(tr("Show &Light Markers"));
     m_lightMarkersAction->setCheckable(true);

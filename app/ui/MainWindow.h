@@ -1,4 +1,5 @@
 #pragma once
+#include "DefaultLayout.h"
 #include "StartupOptions.h"
 #include "core/NormalOptions.h"
 #include "core/Result.h"
@@ -30,7 +31,8 @@ class UniformsDock;
 class Viewport;
 
 // The editor window: the Viewport in the middle, the Shaders dock (live
-// editing: LiveShaderController) tabbed with the Scene dock on the right,
+// editing: LiveShaderController) right of it and the other docks as
+// DefaultLayout puts them (View > Reset Layout puts them back),
 // the menus (File: FileMenu, with the dialogs; Help: HelpMenu) and a status
 // bar with load progress, frame time (FrameStatsLabel) and the OpenGL
 // renderer. It opens, saves and exports without dialogs; the scene's shader
@@ -74,6 +76,10 @@ public:
     // layout). False when nothing usable was stored.
     void saveWindowSettings() const;
     bool restoreWindowSettings();
+    // Every dock back where a new window has it, for the present size (View
+    // > Reset Layout).
+    void resetLayout();
+    WindowDocks docks() const;
 
     // Renders the current view at `size` pixels and writes it as PNG.
     Result<> exportImage(const QString &path, const QSize &size);
@@ -101,6 +107,7 @@ private slots:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     void createShaderDock();
@@ -135,6 +142,7 @@ private:
     QLabel *m_rendererLabel = nullptr;
     QString m_scenePath;
     QString m_lastShaderError;
+    bool m_defaultLayoutDue = true; // no saved layout: lay out the default when shown
 };
 
 } // namespace phonglab

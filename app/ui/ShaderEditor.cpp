@@ -14,6 +14,7 @@
 #include <QShortcut>
 #include <QTimer>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace phonglab {
@@ -90,9 +91,15 @@ void ShaderEditor::setUpAppearance()
     setAnnotationDisplay(AnnotationBoxed);
 }
 
-int ShaderEditor::characterWidth() const
+// Measured over a hundred characters: a character's advance is fractional,
+// and 80 of them rounded one by one can be off by two columns.
+double ShaderEditor::characterWidth() const
 {
-    return std::max<int>(1, int(SendScintilla(SCI_TEXTWIDTH, STYLE_DEFAULT, "0")));
+    const QByteArray hundred(100, '0');
+    // Style 0 is the lexer's plain text, in the font the code is drawn with.
+    const long width =
+        SendScintilla(SCI_TEXTWIDTH, static_cast<unsigned long>(0), hundred.constData());
+    return std::max(1.0, double(width) / double(hundred.size()));
 }
 
 int ShaderEditor::textAreaOffset() const
@@ -105,13 +112,13 @@ int ShaderEditor::textAreaOffset() const
 
 int ShaderEditor::widthForColumns(int columns) const
 {
-    return textAreaOffset() + columns * characterWidth() + verticalScrollBar()->sizeHint().width()
-        + 2 * frameWidth();
+    return textAreaOffset() + int(std::ceil(columns * characterWidth()))
+        + verticalScrollBar()->sizeHint().width() + 2 * frameWidth();
 }
 
 int ShaderEditor::visibleColumns() const
 {
-    return std::max(0, viewport()->width() - textAreaOffset()) / characterWidth();
+    return int(std::max(0, viewport()->width() - textAreaOffset()) / characterWidth());
 }
 
 QSize ShaderEditor::sizeHint() const

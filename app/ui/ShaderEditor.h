@@ -65,7 +65,7 @@ public:
     void refreshDeclaredNames();
 
 private:
-    int characterWidth() const;
+    double characterWidth() const;
     int textAreaOffset() const; // margins and padding left and right of the text
     void setUpAppearance();
     void setUpMargins();

@@ -245,6 +245,9 @@ private:
     // The camera is the scene's fitted to the view (frameScene), not moved by
     // the user since: a resize fits it again.
     bool m_cameraFramed = true;
+    // The window's size (pixels) when a frame was last swapped on this
+    // thread: the back buffer's size, which lags a resize until that swap.
+    QSize m_presentedSize;
     bool m_glInitialized = false;  // the renderer holds GL resources
     bool m_renderReady = false;    // ... and a scene and program to draw
     bool m_parametersDirty = true; // camera moved since the renderer last saw it

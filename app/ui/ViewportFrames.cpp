@@ -33,6 +33,13 @@ QImage Viewport::grabFramebuffer()
     if (!m_context || !m_context->isValid() || !m_window->handle())
         return {};
     makeCurrent();
+    if (m_presentedSize != m_window->size() * m_window->devicePixelRatio()) {
+        // The back buffer may still have the size before a resize: present
+        // a frame first, which gives it the window's.
+        drawScene();
+        m_context->swapBuffers(m_window);
+        m_presentedSize = m_window->size() * m_window->devicePixelRatio();
+    }
     const auto started = std::chrono::steady_clock::now();
     if (drawScene()) {
         m_context->functions()->glFinish(); // without it the time would be the submission's
@@ -103,8 +110,10 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
     // llvmpipe another compile here, ~80 ms after every edit. Larger (an
     // export): a framebuffer object with the view's samples.
     const QSize window = m_window->size() * m_window->devicePixelRatio();
-    const bool inWindow = m_window->isExposed() && pixelSize.width() <= window.width()
-        && pixelSize.height() <= window.height();
+    // A window resized since its last frame may still have a back buffer
+    // of the old size (Mesa takes the new one at the next swap).
+    const bool inWindow = m_window->isExposed() && m_presentedSize == window
+        && pixelSize.width() <= window.width() && pixelSize.height() <= window.height();
     QImage image;
     if (inWindow) {
         m_context->functions()->glBindFramebuffer(GL_FRAMEBUFFER,
@@ -149,6 +158,7 @@ void Viewport::drawFrame()
         frameDrawn(msSince(started));
     }
     m_context->swapBuffers(m_window);
+    m_presentedSize = m_window->size() * m_window->devicePixelRatio();
     m_lastPresentedAt = std::chrono::steady_clock::now();
     emit frameSwapped();
 }
@@ -172,6 +182,7 @@ void Viewport::framePresented(quint64 loan, double drawMs, qint64 swappedNs, boo
     }
     m_lastPresentedAt =
         std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs));
+    m_presentedSize = m_window->size() * m_window->devicePixelRatio();
     frameDrawn(drawMs);
     emit frameSwapped();
 }

@@ -68,6 +68,13 @@ Viewport *UiTestWindow::viewport() const
     return m_window->viewport();
 }
 
+Scene UiTestWindow::savedScene() const
+{
+    Scene scene = viewport()->currentScene();
+    scene.camera = viewport()->cameraToSave();
+    return scene;
+}
+
 QImage UiTestWindow::frame() const
 {
     return viewport()->grabFramebuffer();

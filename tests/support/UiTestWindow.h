@@ -1,4 +1,5 @@
 #pragma once
+#include "core/Scene.h"
 #include "render/UniformSnapshot.h"
 #include "ui/MainWindow.h"
 
@@ -80,6 +81,10 @@ protected:
     }
 
     Viewport *viewport() const;
+    // The scene as Save would write it: with the scene's own camera until
+    // the user moves it, not the one moved back to fit the view's present
+    // shape (which a dock growing by a line of text changes).
+    Scene savedScene() const;
     QImage frame() const; // the viewport's framebuffer
     // The values of the program the viewport draws with, read with its
     // context taken back first (it may be lent to the build thread).

@@ -62,8 +62,7 @@ int main(int argc, char **argv)
     const QDir out(argc > 1 ? QString::fromLocal8Bit(argv[1]) : QStringLiteral("docs/images"));
     QDir().mkpath(out.path());
 
-    MainWindow window;
-    window.resize(1280, 760);
+    MainWindow window; // at its default size: a share of the screen (DefaultLayout)
     QString error;
     if (const Result<> done = window.openScene(defaultScenePath()); !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
@@ -132,6 +131,7 @@ int main(int argc, char **argv)
         return 1;
     }
     PerformanceDock *performance = window.performanceDock();
+    performance->show(); // as View > Performance Dock does
     performance->raise();
     window.resizeDocks({performance}, {560}, Qt::Horizontal);
     settle(1500);

@@ -65,7 +65,7 @@ void TestCameraFraming::everythingInViewKeepsTheCamera()
 {
     const Camera camera = frontCamera();
     const std::vector<glm::dvec3> points = sideBySide();
-    QVERIFY(largestNdc(camera, 2.0, points) < 0.9); // a wide view shows both boxes
+    QVERIFY(largestNdc(camera, 2.0, points) < 0.9);      // a wide view shows both boxes
     QCOMPARE(framedCamera(camera, points, 2.0), camera); // exactly, not approximately
 }
 
