@@ -35,9 +35,8 @@ QRect defaultWindowGeometry(const QRect &available)
 
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWidth)
 {
-    const std::initializer_list<QDockWidget *> all = {d.scene,    d.object,   d.lights,
-                                                      d.shaders,  d.material, d.uniforms,
-                                                      d.inspector, d.performance};
+    const std::initializer_list<QDockWidget *> all = {
+        d.scene, d.object, d.lights, d.shaders, d.material, d.uniforms, d.inspector, d.performance};
     for (QDockWidget *dock : all) {
         dock->setFloating(false); // before leaving the layout: a floating one would stay afloat
         window.removeDockWidget(dock);
@@ -59,8 +58,8 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
         tabify(window, {d.scene, d.object, d.lights, d.performance});
         tabify(window, {d.material, d.uniforms, d.inspector});
     } else {
-        tabify(window, {d.material, d.uniforms, d.lights, d.object, d.scene, d.inspector,
-                        d.performance});
+        tabify(window,
+               {d.material, d.uniforms, d.lights, d.object, d.scene, d.inspector, d.performance});
     }
     for (QDockWidget *dock : all)
         dock->setVisible(dock != d.performance && dock != d.inspector);
@@ -71,10 +70,10 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
     if (sceneColumn)
         window.resizeDocks({d.scene}, {kSceneColumnWidth}, Qt::Horizontal);
     const int height = window.centralWidget() ? window.centralWidget()->height() : window.height();
-    window.resizeDocks({d.shaders, d.material},
-                       {int(height * kShadersShareOfHeight),
-                        int(height * (1.0 - kShadersShareOfHeight))},
-                       Qt::Vertical);
+    window.resizeDocks(
+        {d.shaders, d.material},
+        {int(height * kShadersShareOfHeight), int(height * (1.0 - kShadersShareOfHeight))},
+        Qt::Vertical);
 }
 
 } // namespace phonglab

@@ -4,17 +4,17 @@
 // every object at that size and after a resize; View > Reset Layout brings
 // the default back, and a layout saved under an older version gives way to
 // the new default once.
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "ResultChecks.h"
 #include "core/CameraFraming.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "ui/DefaultLayout.h"
 #include "ui/DiagnosticList.h"
 #include "ui/LiveCheck.h"
-#include "ui/ShaderChecker.h"
 #include "ui/MainWindow.h"
+#include "ui/ShaderChecker.h"
 #include "ui/ShaderDock.h"
 #include "ui/ShaderEditor.h"
 #include "ui/Viewport.h"
@@ -55,7 +55,8 @@ QStringList describeDocks(const QMainWindow &window)
                      .arg(dock->objectName())
                      .arg(int(window.dockWidgetArea(dock)))
                      .arg(dock->isVisible() ? QStringLiteral("shown") : QStringLiteral("hidden"))
-                     .arg(dock->isFloating() ? QStringLiteral("floating") : QStringLiteral("docked"))
+                     .arg(dock->isFloating() ? QStringLiteral("floating")
+                                             : QStringLiteral("docked"))
                      .arg(tabbed.join(u','));
     }
     lines.sort();
@@ -81,11 +82,12 @@ double largestNdc(const Viewport &viewport)
 // Whether the outermost rows and columns of `image` are all `background`.
 bool edgesAreBackground(const QImage &image, const glm::dvec3 &background)
 {
-    const QColor expected = QColor::fromRgbF(float(background.r), float(background.g),
-                                             float(background.b));
+    const QColor expected =
+        QColor::fromRgbF(float(background.r), float(background.g), float(background.b));
     const auto near = [&](int x, int y) {
         const QColor c = image.pixelColor(x, y);
-        return std::abs(c.red() - expected.red()) <= 2 && std::abs(c.green() - expected.green()) <= 2
+        return std::abs(c.red() - expected.red()) <= 2
+            && std::abs(c.green() - expected.green()) <= 2
             && std::abs(c.blue() - expected.blue()) <= 2;
     };
     for (int x = 0; x < image.width(); ++x)
@@ -121,6 +123,7 @@ private:
     // A window as a user gets it: not resized, shown at its default size.
     void openAtDefaultSize();
     QMenu *viewMenu() const;
+    QAction *resetLayoutAction() const; // View > Reset Layout
     ShaderEditor *editor() const { return m_window->shaderDock()->editor(ShaderStage::Fragment); }
 };
 
@@ -153,6 +156,15 @@ QMenu *TestWindowLayout::viewMenu() const
     for (QAction *action : m_window->menuBar()->actions())
         if (action->menu() && action->text().remove(u'&') == QStringLiteral("View"))
             return action->menu();
+    return nullptr;
+}
+
+QAction *TestWindowLayout::resetLayoutAction() const
+{
+    QMenu *view = viewMenu();
+    for (QAction *action : view ? view->actions() : QList<QAction *>())
+        if (action->objectName() == QStringLiteral("resetLayout"))
+            return action;
     return nullptr;
 }
 
@@ -220,14 +232,12 @@ void TestWindowLayout::everyDockIsInTheViewMenu()
     const QList<QDockWidget *> docks = m_window->findChildren<QDockWidget *>();
     QCOMPARE(docks.size(), 8);
     for (QDockWidget *dock : docks)
-        QVERIFY2(view->actions().contains(dock->toggleViewAction()), qPrintable(dock->objectName()));
+        QVERIFY2(view->actions().contains(dock->toggleViewAction()),
+                 qPrintable(dock->objectName()));
     // Measuring and the inspector come on demand.
     QVERIFY(!m_window->docks().performance->isVisible());
     QVERIFY(!m_window->docks().inspector->isVisible());
-    QAction *reset = nullptr;
-    for (QAction *action : view->actions())
-        if (action->objectName() == QStringLiteral("resetLayout"))
-            reset = action;
+    QAction *reset = resetLayoutAction();
     QVERIFY(reset);
 }
 
@@ -278,10 +288,7 @@ void TestWindowLayout::resetLayoutBringsTheDefaultBack()
     docks.performance->show();
     QTRY_VERIFY(describeDocks(*m_window) != defaults);
 
-    QAction *reset = nullptr;
-    for (QAction *action : viewMenu()->actions())
-            if (action->objectName() == QStringLiteral("resetLayout"))
-            reset = action;
+    QAction *reset = resetLayoutAction();
     QVERIFY(reset);
     reset->trigger();
     QTRY_COMPARE(describeDocks(*m_window), defaults);
