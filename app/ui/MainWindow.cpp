@@ -68,7 +68,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     createShaderDock();
     createUniformsDock();
     createPerformanceDock();
-    m_editDocks = new SceneEditDocks(this, m_viewport, m_sceneDock);
+    m_editDocks = new SceneEditDocks(this, m_viewport);
     createFileMenu();
     m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
     // Before the status bar: the verdict comes first among its permanent

@@ -115,6 +115,12 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     connect(m_process, &BenchProcess::progress, this, &PerformanceDock::showProgress);
     connect(m_process, &BenchProcess::finished, this, &PerformanceDock::measurementFinished);
     connect(m_viewport, &Viewport::frameRendered, this, &PerformanceDock::showFrame);
+    // Hidden, the readout was not written: coming into sight it asks the
+    // view for a frame, whose figures it shows (the view may be still).
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            m_viewport->requestFrame();
+    });
 }
 
 PerformanceDock::~PerformanceDock() = default;
@@ -280,8 +286,7 @@ void PerformanceDock::showChart()
     m_chartView->setVisible(true);
 }
 
-// Only while the label can be seen, at the status bar's pace; coming into
-// sight it shows the figures of the last second at once.
+// Only while the label can be seen, at the status bar's pace.
 void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
 {
     if (!m_frameLabel->isVisible()) {

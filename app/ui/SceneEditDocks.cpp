@@ -12,7 +12,7 @@
 
 namespace phonglab {
 
-SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWidget *tabWith)
+SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport)
     : QObject(window)
     , m_viewport(viewport)
     , m_stack(new QUndoStack(this))
@@ -20,14 +20,10 @@ SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWid
     , m_material(new MaterialPanel(window))
     , m_object(new ObjectPanel(window))
 {
-    QDockWidget *previous = tabWith;
     for (QDockWidget *dock :
          {static_cast<QDockWidget *>(m_lights), static_cast<QDockWidget *>(m_material),
-          static_cast<QDockWidget *>(m_object)}) {
-        window->addDockWidget(window->dockWidgetArea(tabWith), dock);
-        window->tabifyDockWidget(previous, dock);
-        previous = dock;
-    }
+          static_cast<QDockWidget *>(m_object)})
+        window->addDockWidget(Qt::RightDockWidgetArea, dock); // DefaultLayout places them
 
     m_lights->bind(m_stack, access());
     m_material->bind(m_stack, access());

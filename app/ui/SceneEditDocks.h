@@ -3,7 +3,6 @@
 
 #include <QObject>
 
-class QDockWidget;
 class QMainWindow;
 class QMenu;
 class QUndoStack;
@@ -25,8 +24,8 @@ class SceneEditDocks : public QObject
     Q_OBJECT
 
 public:
-    // The docks go into `window` tabbed with `tabWith`, so the viewport keeps its size.
-    SceneEditDocks(QMainWindow *window, Viewport *viewport, QDockWidget *tabWith);
+    // The docks go into `window`; MainWindow lays them out (DefaultLayout).
+    SceneEditDocks(QMainWindow *window, Viewport *viewport);
 
     // Undo / Redo (Ctrl+Z, Ctrl+Shift+Z) into `edit`; the docks' toggles into `view`.
     void addEditActions(QMenu *edit);

@@ -161,8 +161,9 @@ void Viewport::showUploaded(const Scene &scene)
 }
 
 // The scene's camera, moved back as far as this view's shape needs to show
-// every object (framedCamera); the orbit starts there and Reset returns there.
-void Viewport::frameScene()
+// every object (framedCamera); the orbit starts there and Reset returns
+// there. True when that moved the camera.
+bool Viewport::frameScene()
 {
     const QSize pixels = pixelSize();
     const double aspect = pixels.isEmpty() ? 0.0 : double(pixels.width()) / pixels.height();
@@ -171,9 +172,9 @@ void Viewport::frameScene()
         : m_scene.camera;
     m_cameraFramed = true;
     if (framed == m_orbit.original() && framed == m_orbit.camera())
-        return;
+        return false;
     m_orbit.setOriginal(framed);
-    cameraMoved();
+    return true;
 }
 
 Camera Viewport::cameraToSave() const
@@ -271,9 +272,10 @@ bool Viewport::event(QEvent *event)
 void Viewport::resizeEvent(QResizeEvent *event)
 {
     m_container->setGeometry(rect());
-    if (m_cameraFramed)
-        frameScene(); // until the user moves the camera, it keeps every object in view
-    requestFrame();   // not every platform exposes a resized window again
+    // Until the user moves the camera, it keeps every object in view.
+    if (m_cameraFramed && frameScene())
+        cameraMoved();
+    requestFrame(); // not every platform exposes a resized window again
     QWidget::resizeEvent(event);
 }
 

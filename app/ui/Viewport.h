@@ -229,7 +229,8 @@ private:
     void cleanup();
     Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
     void showUploaded(const Scene &scene);
-    void frameScene();
+    bool frameScene();
+    QSize windowPixels() const; // the view's native window, in device pixels
     void cameraMoved();
     void sendChangedParameters();
     bool startLightDrag(const QPointF &position);

@@ -27,18 +27,23 @@ double msSince(std::chrono::steady_clock::time_point start)
 
 } // namespace
 
+QSize Viewport::windowPixels() const
+{
+    return m_window->size() * m_window->devicePixelRatio();
+}
+
 QImage Viewport::grabFramebuffer()
 {
     takeBackContext();
     if (!m_context || !m_context->isValid() || !m_window->handle())
         return {};
     makeCurrent();
-    if (m_presentedSize != m_window->size() * m_window->devicePixelRatio()) {
+    if (m_presentedSize != windowPixels()) {
         // The back buffer may still have the size before a resize: present
         // a frame first, which gives it the window's.
         drawScene();
         m_context->swapBuffers(m_window);
-        m_presentedSize = m_window->size() * m_window->devicePixelRatio();
+        m_presentedSize = windowPixels();
     }
     const auto started = std::chrono::steady_clock::now();
     if (drawScene()) {
@@ -109,7 +114,7 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
     // warm-up compiled off the GUI thread; any other framebuffer would cost
     // llvmpipe another compile here, ~80 ms after every edit. Larger (an
     // export): a framebuffer object with the view's samples.
-    const QSize window = m_window->size() * m_window->devicePixelRatio();
+    const QSize window = windowPixels();
     // A window resized since its last frame may still have a back buffer
     // of the old size (Mesa takes the new one at the next swap).
     const bool inWindow = m_window->isExposed() && m_presentedSize == window
@@ -158,7 +163,7 @@ void Viewport::drawFrame()
         frameDrawn(msSince(started));
     }
     m_context->swapBuffers(m_window);
-    m_presentedSize = m_window->size() * m_window->devicePixelRatio();
+    m_presentedSize = windowPixels();
     m_lastPresentedAt = std::chrono::steady_clock::now();
     emit frameSwapped();
 }
@@ -182,7 +187,7 @@ void Viewport::framePresented(quint64 loan, double drawMs, qint64 swappedNs, boo
     }
     m_lastPresentedAt =
         std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs));
-    m_presentedSize = m_window->size() * m_window->devicePixelRatio();
+    m_presentedSize = windowPixels();
     frameDrawn(drawMs);
     emit frameSwapped();
 }
