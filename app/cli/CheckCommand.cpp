@@ -30,6 +30,8 @@ struct CheckArgs {
     int toleranceSteps = kDefaultCheckToleranceSteps;
     bool json = false;
     QString diffPath;
+    ExplicitBindings bindings; // --bind, over the scene's
+    std::optional<PhongEquation> equation;
 };
 
 const QString &synopsis()
@@ -37,7 +39,9 @@ const QString &synopsis()
     static const QString text =
         QStringLiteral("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
                        "[--shading NAME] [--size WxH]\n"
-                       "                      [--tolerance STEPS] [--json] [--diff OUT.png]");
+                       "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
+                       "[--equation slide|guarded]\n"
+                       "                      [--json] [--diff OUT.png]");
     return text;
 }
 
@@ -58,9 +62,20 @@ QString helpText()
               "  --size WxH          image size in pixels, default 800x600\n"
               "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), "
               "default %2\n"
+              "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable. "
+              "Names are\n"
+              "                      bound by themselves where they say it (uModelMatrix, "
+              "aPosition, u_kd);\n"
+              "                      this wins over that. Meanings: %4, or none\n"
+              "  --equation E        demand the slide's equation (slide: a highlight even where "
+              "N·L <= 0)\n"
+              "                      or the guarded one (guarded: none there); by default "
+              "either passes\n"
               "  --json              print one JSON object (keys: verdict, psnr_db, max_error, "
               "bad_fraction,\n"
-              "                      worst, diagnosis, undetectable, errors) instead of text\n"
+              "                      tolerance, worst, diagnosis, undetectable, errors, "
+              "bindings, equation,\n"
+              "                      notes) instead of text\n"
               "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 "
               "or more off;\n"
               "                      dark blue the silhouette band left out, black the "
@@ -71,7 +86,8 @@ QString helpText()
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(shadingNames().join(QStringLiteral(", ")))
               .arg(kDefaultCheckToleranceSteps)
-              .arg(shaderMistakeKeys().join(QStringLiteral(", ")));
+              .arg(shaderMistakeKeys().join(QStringLiteral(", ")))
+              .arg(bindingMeaningKeys().join(QStringLiteral(", ")));
 }
 
 // The arguments, or an exit code for usage errors and --help.
@@ -89,7 +105,10 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                        QStringLiteral("steps"));
     const QCommandLineOption json(QStringLiteral("json"), QString());
     const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
-    parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff});
+    const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
+    const QCommandLineOption equation(QStringLiteral("equation"), QString(),
+                                      QStringLiteral("equation"));
+    parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation});
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
@@ -103,9 +122,16 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     CheckArgs args;
     args.scenePath = positional.first();
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
-                                 readShadingOption(parser, shading, &args.shading)})
+                                 readShadingOption(parser, shading, &args.shading),
+                                 readBindOptions(parser, bind, &args.bindings)})
         if (!wrong.isEmpty())
             return usage(wrong);
+    if (parser.isSet(equation)) {
+        args.equation = phongEquationFromKey(parser.value(equation));
+        if (!args.equation)
+            return usage(QStringLiteral("--equation: expected slide or guarded, got '%1'")
+                             .arg(parser.value(equation)));
+    }
     if (parser.isSet(tolerance)) {
         bool ok = false;
         args.toleranceSteps = parser.value(tolerance).toInt(&ok);
@@ -171,16 +197,34 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
                 inputError(files.fragment, QStringLiteral("the shaders did not compile")));
         return outcome;
     }
+    // Nothing PhongLab could not bind may decide the verdict: the student's
+    // names are PhongLab's gap, never the student's mistake.
+    ShaderProgram &linked = renderer.program();
+    outcome.bindings = linked.bindings();
+    outcome.notes << outcome.bindings.notes;
+    for (const QString &problem : outcome.bindings.problems)
+        outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
+    for (const QString &unbound : unboundUniformMessages(linked, scene))
+        outcome.errors.push_back(inputError(files.fragment, unbound));
+    if (!outcome.errors.empty())
+        return outcome;
+    QString lightsNote;
+    const Scene judged = sceneForCapacity(scene, outcome.bindings, &lightsNote);
+    if (!lightsNote.isEmpty()) {
+        outcome.notes << lightsNote;
+        renderer.updateSceneParameters(judged);
+    }
     *yours = offscreen.renderImage(args.size);
     if (yours->isNull())
         return fail(QString(), QStringLiteral("rendering failed"));
 
     Result<CheckReference> made =
-        makeCheckReference(scene, objectMeshes, args.size.width(), args.size.height());
+        makeCheckReference(judged, objectMeshes, args.size.width(), args.size.height());
     if (!made)
         return fail(args.scenePath, QStringLiteral("no reference: %1").arg(made.error()));
     *reference = std::move(*made);
-    outcome.report = checkRender(toRgbImage(*yours), *reference, args.toleranceSteps);
+    outcome.report =
+        checkRender(toRgbImage(*yours), *reference, args.toleranceSteps, args.equation);
     if (!outcome.report.comparable())
         return fail(args.scenePath,
                     QStringLiteral("nothing to compare: no surface away from silhouettes in this "
@@ -198,6 +242,8 @@ int check(const CheckArgs &args, int argc, char **argv)
     Scene scene = loaded.ok() ? *loaded.scene : Scene{};
     if (args.shading)
         scene.shading = *args.shading;
+    for (const auto &[name, meaning] : args.bindings)
+        scene.bindings[name] = meaning;
 
     QGuiApplication app(argc, argv);
     CheckOutcome outcome;

@@ -1,5 +1,7 @@
 #include "CheckReportOutput.h"
 
+#include "SceneStages.h"
+
 #include <QJsonArray>
 
 #include <cmath>
@@ -133,16 +135,31 @@ QJsonObject checkJson(const CheckOutcome &outcome)
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
     o.insert(QStringLiteral("undetectable"), keysJson(outcome.report.diagnosis.undetectable));
     o.insert(QStringLiteral("errors"), errorsJson(outcome.errors));
+    QJsonObject bindings;
+    for (const VariableBinding &b : outcome.bindings.variables)
+        if (b.meaning || b.isExplicit)
+            bindings.insert(b.variable.name,
+                            b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
+    o.insert(QStringLiteral("bindings"), bindings);
+    o.insert(QStringLiteral("equation"),
+             judged ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
+    o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(outcome.notes));
     return o;
 }
 
 QString checkText(const CheckOutcome &outcome, const Scene &scene)
 {
-    if (outcome.verdict == CheckOutcome::Verdict::Error)
-        return QStringLiteral("check: error");
+    QStringList out;
+    if (const QString bound = bindingsText(outcome.bindings); !bound.isEmpty())
+        out << QStringLiteral("bindings: %1").arg(bound);
+    for (const QString &note : outcome.notes)
+        out << QStringLiteral("note: %1").arg(note);
+    if (outcome.verdict == CheckOutcome::Verdict::Error) {
+        out << QStringLiteral("check: error");
+        return out.join(QLatin1Char('\n'));
+    }
     const CheckReport &r = outcome.report;
     const ImageComparison &c = r.comparison;
-    QStringList out;
     out << QStringLiteral("check: %1").arg(verdictName(outcome.verdict));
     out << QStringLiteral(
                "%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
@@ -152,6 +169,9 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
                .arg(r.toleranceSteps)
                .arg(100.0 * r.badFraction(), 0, 'f', 2)
                .arg(c.pixelsCompared);
+    if (outcome.verdict == CheckOutcome::Verdict::Pass && r.equation == PhongEquation::Slide)
+        out << QStringLiteral("equation: the slide's, taken literally (a highlight even where "
+                              "N·L <= 0), which is right too");
     if (c.pixelsCompared > 0 && c.maxError > 0)
         out << QStringLiteral("worst pixel (%1, %2) on %3")
                    .arg(c.worstPixel.x())

@@ -14,7 +14,8 @@ namespace phonglab::cli {
 // The JSON keys are an interface: verdict, psnr_db, max_error, bad_fraction,
 // worst {x, y, object}, diagnosis [{key, also, confidence, message, lines
 // [{file, line, text}]}], undetectable, errors [{file, line, column,
-// message}]. Never renamed; new keys may be added.
+// message}], bindings {name: meaning or "none"}, equation ("guarded",
+// "slide", null on error), notes [text]. Never renamed; new keys may be added.
 
 struct CheckOutcome {
     enum class Verdict {
@@ -26,6 +27,8 @@ struct CheckOutcome {
     CheckReport report;                   // Pass and Fail
     std::vector<ShaderDiagnostic> errors; // Error: compile errors, or one for bad input
     std::vector<ShaderStageText> stages;  // the user's sources, for the diagnosis' lines
+    ProgramBindings bindings;             // what each of the program's names was bound to
+    QStringList notes;                    // what the verdict rests on that the user should know
 };
 
 QJsonObject checkJson(const CheckOutcome &outcome);

@@ -27,6 +27,7 @@ struct RenderArgs {
     QString vertexPath;
     QString fragmentPath;
     std::optional<ShadingMethod> shading; // overrides the scene's
+    ExplicitBindings bindings;            // --bind, over the scene's
 };
 
 // Returns the arguments, or an exit code for usage errors / --help.
@@ -51,12 +52,15 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption shading(QStringLiteral("shading"),
                                      QStringLiteral("Shading method instead of the scene's."),
                                      QStringLiteral("name"));
-    parser.addOptions({output, size, vertex, fragment, shading});
+    const QCommandLineOption bind(QStringLiteral("bind"),
+                                  QStringLiteral("What a uniform or input of the shader holds."),
+                                  QStringLiteral("NAME=MEANING"));
+    parser.addOptions({output, size, vertex, fragment, shading, bind});
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis =
         QStringLiteral("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
-                       "[--vertex FILE] [--fragment FILE]");
+                       "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]");
     const QString helpText = synopsis
         + QStringLiteral(
               "\n\n"
@@ -67,7 +71,10 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
               "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
               "                      %1\n"
               "  --vertex FILE       vertex shader instead of the shading method's\n"
-              "  --fragment FILE     fragment shader instead of the shading method's\n\n"
+              "  --fragment FILE     fragment shader instead of the shading method's\n"
+              "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable "
+              "(see\n"
+              "                      phonglab check --help for the meanings)\n\n"
               "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(knownMethods);
@@ -85,7 +92,8 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     args.scenePath = positional.first();
     args.outputPath = parser.value(output);
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
-                                 readShadingOption(parser, shading, &args.shading)})
+                                 readShadingOption(parser, shading, &args.shading),
+                                 readBindOptions(parser, bind, &args.bindings)})
         if (!wrong.isEmpty())
             return usage(wrong);
     args.vertexPath = parser.value(vertex);
@@ -112,6 +120,10 @@ int render(const RenderArgs &args, int argc, char **argv)
     for (const QString &w : loaded.warnings)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
+    Scene scene = *loaded.scene;
+    for (const auto &[name, meaning] : args.bindings)
+        scene.bindings[name] = meaning;
+
     QGuiApplication app(argc, argv);
     OffscreenRenderer offscreen;
     if (const Result<> created = offscreen.create(); !created) {
@@ -119,11 +131,11 @@ int render(const RenderArgs &args, int argc, char **argv)
         return kExitFailure;
     }
     Renderer &renderer = offscreen.renderer();
-    if (const Result<> set = renderer.setScene(*loaded.scene); !set) {
+    if (const Result<> set = renderer.setScene(scene); !set) {
         printError(set.error());
         return kExitFailure;
     }
-    const Result<BuildReport> built = buildProgram(renderer, args, *loaded.scene);
+    const Result<BuildReport> built = buildProgram(renderer, args, scene);
     if (!built) {
         printError(built.error());
         return kExitFailure;
@@ -135,6 +147,12 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(QStringLiteral("the shaders did not compile; no image written"));
         return kExitFailure;
     }
+    for (const QString &problem : renderer.program().bindings().problems) {
+        printError(QStringLiteral("--bind %1").arg(problem));
+        return kExitFailure;
+    }
+    for (const QString &unbound : unboundUniformMessages(renderer.program(), scene))
+        printErrLine(QStringLiteral("phonglab: warning: %1").arg(unbound));
     const QImage image = offscreen.renderImage(args.size);
     if (image.isNull()) {
         printError(QStringLiteral("rendering failed"));

@@ -6,6 +6,8 @@
 
 #include <QSaveFile>
 
+#include <algorithm>
+
 namespace phonglab::cli {
 
 namespace {
@@ -69,6 +71,128 @@ Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,
         texts->push_back({stages.fragment.name, QString::fromUtf8(stages.fragment.code), false});
     }
     return renderer.setProgramSources(stages.vertex, stages.fragment);
+}
+
+QString readBindOptions(const QCommandLineParser &parser, const QCommandLineOption &option,
+                        ExplicitBindings *bindings)
+{
+    for (const QString &text : parser.values(option)) {
+        QString error;
+        const std::optional<ParsedBinding> parsed = parseBindingArgument(text, &error);
+        if (!parsed)
+            return QStringLiteral("--bind: %1").arg(error);
+        (*bindings)[parsed->name] = parsed->meaning;
+    }
+    return {};
+}
+
+namespace {
+
+bool allZero(const UniformSnapshot &snapshot, const VariableBinding &b)
+{
+    for (const UniformValue &v : snapshot.values) {
+        const QString name = QString::fromUtf8(v.name);
+        if (name != b.variable.name && !name.startsWith(b.variable.name + QLatin1Char('[')))
+            continue;
+        for (int i = 0; i < v.components; ++i) {
+            const bool zero = v.kind == UniformValue::Kind::Float ? v.floats[i] == 0.0f
+                : v.kind == UniformValue::Kind::Int               ? v.ints[i] == 0
+                                                                  : v.uints[i] == 0u;
+            if (!zero)
+                return false;
+        }
+    }
+    return true;
+}
+
+bool sceneGivesValue(const Scene &scene, const QString &name)
+{
+    for (const auto &[key, values] : scene.uniforms)
+        if (key == name || key.startsWith(name + QLatin1Char('[')))
+            return true;
+    return false;
+}
+
+// PhongLab's own name for each meaning: a binding under it says nothing new.
+QString ownName(BindingMeaning meaning)
+{
+    switch (meaning) {
+    case BindingMeaning::Model: return QStringLiteral("modelMatrix");
+    case BindingMeaning::View: return QStringLiteral("viewMatrix");
+    case BindingMeaning::Projection: return QStringLiteral("projectionMatrix");
+    case BindingMeaning::ModelView: return QStringLiteral("modelViewMatrix");
+    case BindingMeaning::NormalMatrix: return QStringLiteral("normalMatrix");
+    case BindingMeaning::LightPosition: return QStringLiteral("lightPosition");
+    case BindingMeaning::LightCount: return QStringLiteral("lightCount");
+    case BindingMeaning::LightDiffuse: return QStringLiteral("Id");
+    case BindingMeaning::LightSpecular: return QStringLiteral("Is");
+    case BindingMeaning::Ambient: return QStringLiteral("Ia");
+    default: return bindingMeaningKey(meaning);
+    }
+}
+
+} // namespace
+
+QStringList unboundUniformMessages(ShaderProgram &program, const Scene &scene)
+{
+    QStringList out;
+    const UniformSnapshot snapshot = program.snapshot();
+    for (const VariableBinding *b : program.bindings().unboundUniforms()) {
+        if (b->isExplicit || b->variable.type == GlslType::Other
+            || sceneGivesValue(scene, b->variable.name) || !allZero(snapshot, *b))
+            continue;
+        QString message = QStringLiteral("uniform %1 (%2) is bound to nothing, so the shader "
+                                         "reads zero")
+                              .arg(b->variable.name, glslTypeSpelling(b->variable.type));
+        if (const auto likely = likelyMeaning(b->variable))
+            message += QStringLiteral("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
+                                      "scene)")
+                           .arg(bindingMeaningDescription(*likely), b->variable.name,
+                                bindingMeaningKey(*likely));
+        else
+            message += QStringLiteral("; bind it with --bind %1=MEANING (meanings: %2), or give "
+                                      "it a value in the scene's \"uniforms\"")
+                           .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
+        out << message;
+    }
+    return out;
+}
+
+QString bindingsText(const ProgramBindings &bindings)
+{
+    QStringList parts;
+    bool worthSaying = false;
+    for (const VariableBinding &b : bindings.variables) {
+        if (b.meaning)
+            worthSaying = worthSaying || b.isExplicit || b.variable.name != ownName(*b.meaning);
+        else if (b.isExplicit)
+            worthSaying = true;
+        else
+            continue; // the user's own uniforms: the Uniforms dock's, not a binding
+        parts << QStringLiteral("%1=%2").arg(
+            b.variable.name, b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
+    }
+    return worthSaying ? parts.join(QStringLiteral(", ")) : QString();
+}
+
+Scene sceneForCapacity(const Scene &scene, const ProgramBindings &bindings, QString *note)
+{
+    const std::optional<int> capacity = bindings.lightCapacity();
+    const auto enabled = std::count_if(scene.lights.begin(), scene.lights.end(),
+                                       [](const PointLight &l) { return l.enabled; });
+    if (!capacity || enabled <= *capacity)
+        return scene;
+    Scene out = scene;
+    int kept = 0;
+    for (PointLight &l : out.lights)
+        if (l.enabled && kept++ >= *capacity)
+            l.enabled = false;
+    *note = QStringLiteral("the shader takes %1 light%2 (its light uniforms have room for no "
+                           "more) and the scene has %3 enabled: judged with the first %1 alone")
+                .arg(*capacity)
+                .arg(*capacity == 1 ? QString() : QStringLiteral("s"))
+                .arg(enabled);
+    return out;
 }
 
 Result<> writePng(const QImage &image, const QString &path)

@@ -32,6 +32,24 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
 QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                           std::optional<ShadingMethod> *shading);
 
+// --bind NAME=MEANING, each given, over the scene's "bindings" (the command
+// line wins name by name). Empty, or the message for usage().
+QString readBindOptions(const QCommandLineParser &parser, const QCommandLineOption &option,
+                        ExplicitBindings *bindings);
+
+// The uniforms of the built program that PhongLab binds to nothing and that
+// nobody gives a value (no "uniforms" entry, no initialiser): a shader that
+// reads them reads zero. One sentence each, naming the likely meaning.
+QStringList unboundUniformMessages(ShaderProgram &program, const Scene &scene);
+// "aPosition=position, uModel=model, uGain=none" for a person; empty where
+// every variable has PhongLab's own name (nothing worth saying).
+QString bindingsText(const ProgramBindings &bindings);
+
+// The scene as far as the program can light it: where it takes fewer lights
+// than the scene has enabled (a single light uniform, a short array), the
+// first ones it takes. `note` says what was left out, or stays empty.
+Scene sceneForCapacity(const Scene &scene, const ProgramBindings &bindings, QString *note);
+
 // Reads both files and builds the program: its report, or (nothing built)
 // why a file cannot be read. `texts` receives what was read.
 Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,

@@ -1,4 +1,5 @@
 #pragma once
+#include "ShaderBindings.h"
 #include "Camera.h"
 #include "Material.h"
 #include "PointLight.h"
@@ -54,6 +55,9 @@ struct Scene {
     // the scene's material/lights set), by name as the program knows them
     // ("gain", "tint[1]"); applied to the program once it declares them.
     std::map<QString, std::vector<double>> uniforms;
+    // "bindings": what the shader's own names mean, where the user said so
+    // (core/ShaderBindings.h); every other name is bound automatically.
+    ExplicitBindings bindings;
 
     // Folder the scene was loaded from; relative mesh paths resolve against it.
     // Not part of the scene's content, so not compared.

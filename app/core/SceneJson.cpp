@@ -538,7 +538,8 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
                      "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
-                     "background"_L1, "shaders"_L1, "uniforms"_L1, "format"_L1, "generator"_L1});
+                     "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "format"_L1,
+                     "generator"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readFormat(root.value("format"_L1), QStringLiteral("format"))
@@ -549,7 +550,9 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && readShading(root.value("shading"_L1), QStringLiteral("shading"), scene.shading)
         && readColor(root.value("background"_L1), QStringLiteral("background"), scene.background)
         && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene)
-        && readUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms);
+        && readUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms)
+        && take(scenejson::readBindings(root.value("bindings"_L1), QStringLiteral("bindings")),
+                scene.bindings);
     if (ok)
         result.scene = std::move(scene);
     else

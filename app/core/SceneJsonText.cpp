@@ -253,6 +253,48 @@ Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &pa
     return read;
 }
 
+Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &path)
+{
+    if (value.isUndefined())
+        return ExplicitBindings{};
+    if (!value.isObject())
+        return fail(path
+                    + QStringLiteral(": expected an object of name: meaning (got %1)")
+                          .arg(describeType(value)));
+    const QJsonObject object = value.toObject();
+    ExplicitBindings read;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const QString where = path + QLatin1Char('.') + it.key();
+        if (it.key().trimmed().isEmpty())
+            return fail(path + QStringLiteral(": a variable name must not be empty"));
+        if (!it.value().isString())
+            return fail(where
+                        + QStringLiteral(": expected a meaning's name (got %1)")
+                              .arg(describeType(it.value())));
+        const QString key = it.value().toString();
+        if (key == kUnboundWord) {
+            read[it.key()] = std::nullopt;
+            continue;
+        }
+        const std::optional<BindingMeaning> meaning = bindingMeaningFromKey(key);
+        if (!meaning)
+            return fail(where
+                        + QStringLiteral(": unknown meaning \"%1\" (known: %2, %3)")
+                              .arg(key, bindingMeaningKeys().join(QStringLiteral(", ")),
+                                   kUnboundWord));
+        read[it.key()] = *meaning;
+    }
+    return read;
+}
+
+QJsonValue bindingsJson(const ExplicitBindings &bindings)
+{
+    QJsonObject object;
+    for (const auto &[name, meaning] : bindings)
+        object.insert(name, meaning ? bindingMeaningKey(*meaning) : kUnboundWord);
+    return object;
+}
+
 QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms)
 {
     QJsonObject object;

@@ -1,4 +1,5 @@
 #pragma once
+#include "ShaderBindings.h"
 #include "Result.h"
 #include <QByteArray>
 #include <QJsonDocument>
@@ -43,5 +44,8 @@ QJsonValue normalOptionsJson(const NormalOptions &options);
 using UserUniforms = std::map<QString, std::vector<double>>;
 Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &path);
 QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &uniforms);
+// "bindings": {"uKd": "kd", "uGain": "none"} (core/ShaderBindings.h).
+Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &path);
+QJsonValue bindingsJson(const ExplicitBindings &bindings);
 
 } // namespace phonglab::scenejson

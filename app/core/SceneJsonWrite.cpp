@@ -119,6 +119,8 @@ QByteArray sceneToJson(const Scene &scene)
     root.insert(QStringLiteral("background"), vec3Json(scene.background));
     if (!scene.uniforms.empty())
         root.insert(QStringLiteral("uniforms"), scenejson::userUniformsJson(scene.uniforms));
+    if (!scene.bindings.empty())
+        root.insert(QStringLiteral("bindings"), scenejson::bindingsJson(scene.bindings));
     if (!scene.vertexShader.isEmpty() || !scene.fragmentShader.isEmpty()) {
         QJsonObject shaders;
         if (!scene.vertexShader.isEmpty())

@@ -46,8 +46,10 @@ Result<CheckReference> makeCheckReference(
             if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size())))
                 return fail(QStringLiteral("cancelled"));
             const ReferenceShader shader(ReferenceShading::Phong, mistakes[m]);
-            out.mistaken.emplace_back(mistakes[m],
-                                      shadeSceneHits(*hits, scene, shader).toImage(out.background));
+            ReferenceImage image = shadeSceneHits(*hits, scene, shader);
+            out.mistaken.emplace_back(mistakes[m], image.toImage(out.background));
+            if (mistakes[m] == ShaderMistake::BackfaceSpecular)
+                out.slide = std::move(image);
         }
     }
     out.exactImage = out.exact.toImage(out.background);
@@ -64,14 +66,57 @@ double CheckReport::badFraction() const
                                          : 0.0;
 }
 
-CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps)
+namespace {
+
+// The reference judged against: the guarded one as made, or the slide's
+// with the guarded image taking backface-specular's place among the mistakes.
+struct JudgedAgainst {
+    const ReferenceImage *exact;
+    RgbImage exactImage;
+    MistakeImages mistaken;
+};
+
+JudgedAgainst judgedAgainst(const CheckReference &reference, PhongEquation equation)
 {
+    if (equation == PhongEquation::Guarded || reference.slide.color.empty())
+        return {&reference.exact, reference.exactImage, reference.mistaken};
+    JudgedAgainst out{&reference.slide, reference.slide.toImage(reference.background),
+                      reference.mistaken};
+    for (auto &[mistake, image] : out.mistaken)
+        if (mistake == ShaderMistake::BackfaceSpecular)
+            image = reference.exactImage;
+    return out;
+}
+
+std::vector<int> errorSteps(const RgbImage &yours, const ReferenceImage &exact,
+                            const std::vector<std::uint8_t> &compared)
+{
+    std::vector<int> out(exact.color.size(), -1);
+    if (yours.width != exact.width || yours.height != exact.height)
+        return out;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (!compared[i])
+            continue;
+        int worst = 0;
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst,
+                             std::abs(int(yours.pixel(i)[c]) - encodeChannel(exact.color[i][c])));
+        out[i] = worst;
+    }
+    return out;
+}
+
+CheckReport judge(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
+                  PhongEquation equation)
+{
+    const JudgedAgainst against = judgedAgainst(reference, equation);
     CheckReport report;
     report.toleranceSteps = toleranceSteps;
+    report.equation = equation;
     report.comparison =
-        compareOutsideBand(yours, reference.exact, reference.background, 0, &reference.compared)
+        compareOutsideBand(yours, *against.exact, reference.background, 0, &reference.compared)
             .error;
-    const std::vector<int> errors = checkErrorSteps(yours, reference);
+    const std::vector<int> errors = errorSteps(yours, *against.exact, reference.compared);
     report.badPixels =
         std::count_if(errors.begin(), errors.end(), [&](int e) { return e > toleranceSteps; });
     if (report.comparison.pixelsCompared > 0) {
@@ -81,15 +126,49 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
     if (!report.comparable())
         return report;
     if (!report.passed())
-        report.diagnosis = diagnoseMistakes(yours, reference.exactImage, reference.mistaken,
+        report.diagnosis = diagnoseMistakes(yours, against.exactImage, against.mistaken,
                                             reference.compared, toleranceSteps);
-    else if (toleranceSteps != kDefaultCheckToleranceSteps)
+    else if (toleranceSteps != kDefaultCheckToleranceSteps || equation != PhongEquation::Guarded)
         report.diagnosis.undetectable =
-            diagnoseMistakes(reference.exactImage, reference.exactImage, reference.mistaken,
+            diagnoseMistakes(against.exactImage, against.exactImage, against.mistaken,
                              reference.compared, toleranceSteps)
                 .undetectable;
     else
         report.diagnosis.undetectable = reference.undetectable;
+    return report;
+}
+
+} // namespace
+
+QString phongEquationKey(PhongEquation equation)
+{
+    return equation == PhongEquation::Slide ? QStringLiteral("slide") : QStringLiteral("guarded");
+}
+
+std::optional<PhongEquation> phongEquationFromKey(const QString &key)
+{
+    if (key == QLatin1StringView("slide"))
+        return PhongEquation::Slide;
+    if (key == QLatin1StringView("guarded"))
+        return PhongEquation::Guarded;
+    return std::nullopt;
+}
+
+CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
+                        std::optional<PhongEquation> demanded)
+{
+    CheckReport report =
+        judge(yours, reference, toleranceSteps, demanded.value_or(PhongEquation::Guarded));
+    if (demanded || !report.comparable() || reference.slide.color.empty())
+        return report;
+    // Either equation is right: backface-specular is no mistake here. A
+    // render that matches neither is judged by the one it is closer to.
+    if (!report.passed()) {
+        CheckReport slide = judge(yours, reference, toleranceSteps, PhongEquation::Slide);
+        if (slide.passed() || slide.badPixels < report.badPixels)
+            report = std::move(slide);
+    }
+    std::erase(report.diagnosis.undetectable, ShaderMistake::BackfaceSpecular);
     return report;
 }
 
@@ -100,20 +179,7 @@ RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference)
 
 std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference)
 {
-    const ReferenceImage &exact = reference.exact;
-    std::vector<int> out(exact.color.size(), -1);
-    if (yours.width != exact.width || yours.height != exact.height)
-        return out;
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        if (!reference.compared[i])
-            continue;
-        int worst = 0;
-        for (int c = 0; c < 3; ++c)
-            worst = std::max(worst,
-                             std::abs(int(yours.pixel(i)[c]) - encodeChannel(exact.color[i][c])));
-        out[i] = worst;
-    }
-    return out;
+    return errorSteps(yours, reference.exact, reference.compared);
 }
 
 namespace {

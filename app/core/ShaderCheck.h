@@ -15,6 +15,17 @@ namespace phonglab {
 // which classic mistake explains it.
 
 inline constexpr int kDefaultCheckToleranceSteps = 2; // max error 2/255
+
+// The exercise's slide writes the specular term as max(0, R·V)^n with no
+// guard, so a light behind the surface can still paint a highlight; the
+// shipped shaders leave the highlight out where N·L <= 0. Both are right:
+// the check passes either unless one is demanded, and says which matched.
+enum class PhongEquation {
+    Guarded, // no highlight where N·L <= 0 (shaders/phong.frag)
+    Slide,   // the slide's equation taken literally
+};
+QString phongEquationKey(PhongEquation equation); // "guarded", "slide"
+std::optional<PhongEquation> phongEquationFromKey(const QString &key);
 inline constexpr int kCheckBandPx = 2;                // the render tests' silhouette band
 
 // Everything a check needs that depends on the scene and the size alone, not
@@ -25,6 +36,10 @@ struct CheckReference {
     ReferenceShader shader; // the exact shading of the scene's method
     ReferenceImage exact;
     RgbImage exactImage; // exact, 8-bit as the GPU writes it
+    // The slide's literal equation (PhongEquation::Slide) where it differs
+    // from the guarded one: the backface-specular image. Empty for methods
+    // other than Phong.
+    ReferenceImage slide;
     // The reference with each classic mistake made, 8-bit (all the diagnosis
     // looks at, at 3 bytes a pixel), when the exact shading is Phong (the
     // mistakes are mistakes of Phong's equation); else empty.
@@ -49,6 +64,9 @@ struct CheckReport {
     qint64 badPixels = 0;       // compared pixels off by more than the tolerance
     int worstObject = -1;       // the scene object under comparison.worstPixel
     MistakeDiagnosis diagnosis;
+    // The equation the render was judged by: the one it matched, else the
+    // one demanded (guarded where none was).
+    PhongEquation equation = PhongEquation::Guarded;
 
     // False when no pixel could be compared (nothing in view, or a tiny
     // image all silhouette): no verdict then, neither pass nor fail.
@@ -57,8 +75,12 @@ struct CheckReport {
     double badFraction() const;
 };
 
+// Judged against the guarded equation, and where that fails against the
+// slide's, unless `demanded` names one: the other is then a mistake
+// (backface-specular).
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
-                        int toleranceSteps = kDefaultCheckToleranceSteps);
+                        int toleranceSteps = kDefaultCheckToleranceSteps,
+                        std::optional<PhongEquation> demanded = std::nullopt);
 
 // |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
 // from dark green (exact) through yellow to red (8/255 or more), the left-out

@@ -1,31 +1,25 @@
 #include "UniformOwner.h"
 
 #include <QCoreApplication>
-#include <QStringList>
 
 namespace phonglab {
 
-UniformOwner uniformOwner(const QString &name)
+UniformOwner uniformOwner(std::optional<BindingMeaning> meaning)
 {
-    // Must match what Renderer::drawObjects / uploadLights set.
-    static const QStringList renderer = {
-        QStringLiteral("modelViewMatrix"), QStringLiteral("normalMatrix"),
-        QStringLiteral("projectionMatrix"), QStringLiteral("viewMatrix")};
-    static const QStringList scene = {QStringLiteral("Ia"),
-                                      QStringLiteral("ka"),
-                                      QStringLiteral("kd"),
-                                      QStringLiteral("ks"),
-                                      QStringLiteral("shininess"),
-                                      QStringLiteral("lightCount"),
-                                      QStringLiteral("lightPosition"),
-                                      QStringLiteral("Id"),
-                                      QStringLiteral("Is"),
-                                      QStringLiteral("attenuation")};
-    if (renderer.contains(name))
-        return UniformOwner::Renderer;
-    if (scene.contains(name))
-        return UniformOwner::Scene;
-    return UniformOwner::User;
+    if (!meaning)
+        return UniformOwner::User;
+    switch (*meaning) {
+    case BindingMeaning::Model:
+    case BindingMeaning::View:
+    case BindingMeaning::Projection:
+    case BindingMeaning::ModelView:
+    case BindingMeaning::ModelViewProjection:
+    case BindingMeaning::ViewProjection:
+    case BindingMeaning::NormalMatrix:
+    case BindingMeaning::ModelNormalMatrix:
+    case BindingMeaning::Eye: return UniformOwner::Renderer;
+    default: return UniformOwner::Scene;
+    }
 }
 
 QString uniformOwnerNote(UniformOwner owner)

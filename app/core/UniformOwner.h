@@ -1,5 +1,8 @@
 #pragma once
+#include "ShaderBindings.h"
+
 #include <QString>
+#include <optional>
 
 namespace phonglab {
 
@@ -12,8 +15,10 @@ enum class UniformOwner {
     Scene,    // material, ambient and lights: the Material/Lights docks
 };
 
-// `name` without an element index ("Id", not "Id[2]").
-UniformOwner uniformOwner(const QString &name);
+// A uniform bound to a meaning (core/ShaderBindings.h) is set by the renderer
+// (matrices, the eye) or the scene (material, ambient, lights); one bound to
+// nothing is the user's.
+UniformOwner uniformOwner(std::optional<BindingMeaning> meaning);
 QString uniformOwnerNote(UniformOwner owner);
 
 } // namespace phonglab

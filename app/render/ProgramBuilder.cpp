@@ -1,5 +1,8 @@
 #include "ProgramBuilder.h"
 
+#include "UniformIntrospection.h"
+#include "core/ShaderDialect.h"
+
 #include <QElapsedTimer>
 
 namespace phonglab {
@@ -21,6 +24,38 @@ void ensureError(BuildReport &result, BuildStep step, const QString &file, const
               .arg(step == BuildStep::Link ? "linking" : "compiling")
         : log.trimmed();
     result.diagnostics.push_back(d);
+}
+
+// Where the meshes feed each vertex input (GpuMesh's attribute arrays).
+std::optional<GLuint> meshLocation(BindingMeaning meaning)
+{
+    switch (meaning) {
+    case BindingMeaning::Position: return 0;
+    case BindingMeaning::Normal: return 1;
+    default: return std::nullopt;
+    }
+}
+
+// What the driver's words mean for a student's dialect, said plainly.
+void explainDialect(std::vector<ShaderDiagnostic> &diagnostics, ShaderDialect dialect)
+{
+    for (ShaderDiagnostic &d : diagnostics) {
+        if (!d.isError())
+            continue;
+        const QString m = d.message;
+        if (dialect == ShaderDialect::Es100
+            && (m.contains(QLatin1StringView("inverse")) || m.contains(QLatin1StringView("transpose"))))
+            d.message += QStringLiteral(
+                " (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, "
+                "or pass the normal matrix in as a uniform)");
+        else if (dialect != ShaderDialect::Desktop && m.contains(QLatin1StringView("not supported"))
+                 && m.contains(QLatin1StringView("version")))
+            d.message += QStringLiteral(" (this OpenGL driver does not run %1 shaders in a desktop "
+                                        "context: it lacks ARB_ES%2_compatibility)")
+                             .arg(shaderDialectName(dialect),
+                                  dialect == ShaderDialect::Es300 ? QStringLiteral("3")
+                                                                  : QStringLiteral("2"));
+    }
 }
 
 } // namespace
@@ -60,6 +95,7 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     const QString log = infoLog(shader.id(), false);
     auto diagnostics = parseShaderLog(log, step, source.name);
     mapColumnsToSource(diagnostics, source.code);
+    explainDialect(diagnostics, shaderDialectOf(source.code));
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, step, source.name, log);
@@ -90,8 +126,37 @@ GlProgram ProgramBuilder::link(const GlShader &vertex, const GlShader &fragment,
     return program;
 }
 
+// Binds each input that means the position or the normal to the mesh's
+// location and links again when one was elsewhere. False when that link
+// failed (it cannot, but a driver's word is final).
+bool ProgramBuilder::placeInputs(GLuint program, const ExplicitBindings &bindings,
+                                 const QString &linkName, BuildReport &result)
+{
+    bool moved = false;
+    for (const ActiveInputInfo &input : activeInputsOf(this, program)) {
+        const ShaderVariable variable{QString::fromUtf8(input.name), glslTypeOf(input.type), 1,
+                                      false, true};
+        const auto it = bindings.find(variable.name);
+        const std::optional<BindingMeaning> meaning =
+            it != bindings.end() ? it->second : automaticMeaning(variable);
+        const std::optional<GLuint> location = meaning ? meshLocation(*meaning) : std::nullopt;
+        if (location && GLint(*location) != input.location) {
+            glBindAttribLocation(program, *location, input.name.constData());
+            moved = true;
+        }
+    }
+    if (!moved)
+        return true;
+    glLinkProgram(program);
+    GLint status = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &status);
+    if (status != GL_TRUE)
+        ensureError(result, BuildStep::Link, linkName, infoLog(program, true));
+    return status == GL_TRUE;
+}
+
 BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                                   const QStringList &defines)
+                                   const QStringList &defines, const ExplicitBindings &bindings)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
@@ -106,7 +171,20 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
     if (!vs || !fs)
         return out;
     timer.restart();
-    out.program = link(vs, fs, vertex.name + QLatin1Char('+') + fragment.name, out.result);
+    const QString linkName = vertex.name + QLatin1Char('+') + fragment.name;
+    out.program = link(vs, fs, linkName, out.result);
+    if (out.program && !placeInputs(out.program.id(), bindings, linkName, out.result))
+        out.program = {};
+    if (!out.program) {
+        const ShaderDialect v = shaderDialectOf(vertex.code), f = shaderDialectOf(fragment.code);
+        if (v != f)
+            out.result.diagnostics.insert(
+                out.result.diagnostics.begin(),
+                {BuildStep::Link, ShaderDiagnostic::Severity::Error, linkName, 0, 0,
+                 QStringLiteral("the vertex shader is %1 and the fragment shader %2: both stages "
+                                "must be written in the same GLSL (give both files)")
+                     .arg(shaderDialectName(v), shaderDialectName(f))});
+    }
     out.linkNs = timer.nsecsElapsed();
     out.result.ok = out.ok();
     return out;

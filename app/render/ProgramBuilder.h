@@ -2,6 +2,7 @@
 #include "BuildReport.h"
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
+#include "core/ShaderBindings.h"
 
 #include <QOpenGLExtraFunctions>
 
@@ -27,10 +28,16 @@ struct BuiltProgram {
 class ProgramBuilder : protected QOpenGLExtraFunctions
 {
 public:
+    // The vertex inputs that mean the position and the normal are placed
+    // where the meshes feed them (locations 0 and 1; a shader's own layout
+    // qualifiers win): by name as core/ShaderBindings reads them, or by
+    // `bindings`.
     BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment,
-                       const QStringList &defines = {});
+                       const QStringList &defines = {}, const ExplicitBindings &bindings = {});
 
 private:
+    bool placeInputs(GLuint program, const ExplicitBindings &bindings, const QString &linkName,
+                     BuildReport &result);
     GlShader compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
                           BuildReport &result);
     GlProgram link(const GlShader &vertex, const GlShader &fragment, const QString &linkName,

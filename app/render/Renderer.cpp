@@ -7,6 +7,7 @@
 #include "mesh/BuiltinMeshes.h"
 
 #include <algorithm>
+#include <glm/gtc/matrix_inverse.hpp>
 #include <cmath>
 #include <limits>
 
@@ -139,6 +140,8 @@ BuildReport Renderer::buildShipped(ShaderProgram &program, ShadingMethod method)
 
 BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
 {
+    // The scene's word on the inputs' names counts at link time.
+    m_program.setExplicitBindings(m_scene.bindings);
     return m_program.build(vertex, fragment);
 }
 
@@ -210,35 +213,44 @@ void Renderer::render(const QSize &pixelSize)
 
 void Renderer::uploadLights(ShaderProgram &program, std::span<const int> lights)
 {
-    // Only the lights given are packed; lightCount counts them.
-    int count = 0;
-    glm::vec3 position[kMaxLights], diffuse[kMaxLights], specular[kMaxLights],
-        attenuation[kMaxLights];
+    // Only the lights given are packed; the light count counts them.
+    std::vector<glm::dvec3> position, diffuse, specular, attenuation;
+    std::vector<double> c1, c2, c3;
     for (int i : lights) {
         const PointLight &l = m_scene.lights[std::size_t(i)];
-        if (count == kMaxLights)
+        if (int(position.size()) == kMaxLights)
             break;
-        position[count] = glm::vec3(l.position); // world coordinates: the shader applies the view
-        diffuse[count] = glm::vec3(l.diffuse);
-        specular[count] = glm::vec3(l.specular);
-        attenuation[count] = glm::vec3(l.attenuation);
-        ++count;
+        position.push_back(l.position); // world coordinates: the shader applies the view
+        diffuse.push_back(l.diffuse);
+        specular.push_back(l.specular);
+        attenuation.push_back(l.attenuation);
+        c1.push_back(l.attenuation.x);
+        c2.push_back(l.attenuation.y);
+        c3.push_back(l.attenuation.z);
     }
-    program.setUniform("lightCount", count);
-    program.setUniformArray("lightPosition", position, count);
-    program.setUniformArray("Id", diffuse, count);
-    program.setUniformArray("Is", specular, count);
-    program.setUniformArray("attenuation", attenuation, count);
+    using M = BindingMeaning;
+    program.setScalar(M::LightCount, double(position.size()));
+    program.setPerLight(M::LightPosition, position, 1.0); // a point: w = 1
+    program.setPerLight(M::LightDiffuse, diffuse);
+    program.setPerLight(M::LightSpecular, specular);
+    program.setPerLight(M::Attenuation, attenuation);
+    program.setPerLight(M::C1, c1);
+    program.setPerLight(M::C2, c2);
+    program.setPerLight(M::C3, c3);
 }
 
 // What every object drawn with `program` this frame shares.
 void Renderer::bindForFrame(ShaderProgram &program, const glm::dmat4 &view,
                             const glm::dmat4 &projection)
 {
+    using M = BindingMeaning;
     program.bind();
-    program.setUniform("viewMatrix", glm::mat4(view));
-    program.setUniform("Ia", glm::vec3(m_scene.ambient));
-    program.setUniform("projectionMatrix", glm::mat4(projection));
+    program.setExplicitBindings(m_scene.bindings);
+    program.setMatrix(M::View, view);
+    program.setMatrix(M::Projection, projection);
+    program.setMatrix(M::ViewProjection, projection * view);
+    program.setVector(M::Eye, glm::dvec3(glm::inverse(view)[3]));
+    program.setVector(M::Ambient, m_scene.ambient);
     uploadLights(program, enabledLights(m_scene.lights));
 }
 
@@ -310,12 +322,7 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
         // Matrices in double on the CPU, once per draw; the shader gets floats.
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
         glFrontFace(m.mirrors() ? GL_CW : GL_CCW);
-        program->setUniform("modelViewMatrix", glm::mat4(m.modelView));
-        program->setUniform("normalMatrix", glm::mat3(m.normalMatrix));
-        program->setUniform("ka", glm::vec3(object.material.ka));
-        program->setUniform("kd", glm::vec3(object.material.kd));
-        program->setUniform("ks", glm::vec3(object.material.ks));
-        program->setUniform("shininess", float(object.material.shininess));
+        setObjectUniforms(*program, m, object.material);
         if (perFace)
             mesh->drawFaces(level);
         else
@@ -325,6 +332,21 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
         drawn.triangles = mesh->indexCount(level) / 3;
         m_trianglesDrawn += drawn.triangles;
     }
+}
+
+void Renderer::setObjectUniforms(ShaderProgram &program, const ObjectMatrices &m,
+                                 const Material &material)
+{
+    using M = BindingMeaning;
+    program.setMatrix(M::Model, m.model);
+    program.setMatrix(M::ModelView, m.modelView);
+    program.setMatrix(M::ModelViewProjection, m.projection * m.modelView);
+    program.setMatrix(M::NormalMatrix, m.normalMatrix);
+    program.setMatrix(M::ModelNormalMatrix, glm::inverseTranspose(glm::dmat3(m.model)));
+    program.setVector(M::Ka, material.ka);
+    program.setVector(M::Kd, material.kd);
+    program.setVector(M::Ks, material.ks);
+    program.setScalar(M::Shininess, material.shininess);
 }
 
 // The level an object is drawn at: 0 unless it has levels of detail and

@@ -4,6 +4,7 @@
 #include "ShaderProgram.h"
 #include "core/DepthRange.h"
 #include "core/DetailSelection.h"
+#include "core/ObjectMatrices.h"
 #include "core/Result.h"
 #include "core/Scene.h"
 #include "mesh/SceneMeshes.h"
@@ -112,6 +113,8 @@ private:
     ShaderProgram *programFor(const SceneObject &object);
     void bindForFrame(ShaderProgram &program, const glm::dmat4 &view, const glm::dmat4 &projection);
     void uploadLights(ShaderProgram &program, std::span<const int> lights);
+    void setObjectUniforms(ShaderProgram &program, const ObjectMatrices &matrices,
+                           const Material &material);
     int uploadObjectLights(ShaderProgram &program, const SceneObject &object,
                            const MeshStats &stats);
     int chooseLevel(std::size_t index, const SceneObject &object, const GpuMesh &mesh,

@@ -44,13 +44,14 @@ double component(const UniformValue &v, int i)
 
 } // namespace
 
-std::map<QString, std::vector<double>> userUniformValues(const UniformSnapshot &snapshot)
+std::map<QString, std::vector<double>> userUniformValues(const UniformSnapshot &snapshot,
+                                                         const ProgramBindings &bindings)
 {
     std::map<QString, std::vector<double>> values;
     for (const UniformValue &v : snapshot.values) {
         const QString name = QString::fromUtf8(v.name);
         if (!isPlainNumberType(v.type)
-            || uniformOwner(name.section(QLatin1Char('['), 0, 0)) != UniformOwner::User)
+            || uniformOwner(bindings.meaningOf(name)) != UniformOwner::User)
             continue;
         std::vector<double> numbers;
         for (int i = 0; i < v.components; ++i)

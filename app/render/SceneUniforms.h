@@ -1,5 +1,6 @@
 #pragma once
 #include "UniformSnapshot.h"
+#include "core/ShaderBindings.h"
 
 #include <QString>
 #include <map>
@@ -12,6 +13,8 @@ namespace phonglab {
 // scalars, vectors and matrices of float, int, uint and bool, not samplers
 // (whose values are texture units). A scene saved with them reopens with
 // them (Scene::uniforms).
-std::map<QString, std::vector<double>> userUniformValues(const UniformSnapshot &snapshot);
+// `bindings` tells which uniforms PhongLab sets (core/ShaderBindings.h).
+std::map<QString, std::vector<double>> userUniformValues(const UniformSnapshot &snapshot,
+                                                         const ProgramBindings &bindings);
 
 } // namespace phonglab

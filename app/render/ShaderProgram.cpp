@@ -4,6 +4,7 @@
 #include "UniformIntrospection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <optional>
 
@@ -92,7 +93,7 @@ BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource 
                                  const QStringList &defines)
 {
     ensureInitialized();
-    BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines);
+    BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines, m_explicit);
     if (built.ok())
         adopt(std::move(built.program));
     return built.result;
@@ -105,6 +106,111 @@ void ShaderProgram::adopt(GlProgram program)
     m_program = std::move(program);
     // Asked once per program, not every frame (Renderer::drawObjects).
     m_readsFacePoint = m_program && glGetAttribLocation(m_program.id(), "facePoint") >= 0;
+    resolveBindings();
+}
+
+void ShaderProgram::setExplicitBindings(const ExplicitBindings &bindings)
+{
+    if (bindings == m_explicit)
+        return;
+    m_explicit = bindings;
+    if (m_program)
+        resolveBindings();
+}
+
+void ShaderProgram::resolveBindings()
+{
+    for (auto &list : m_targets)
+        list.clear();
+    m_bindings = {};
+    if (!m_program)
+        return;
+    m_bindings = bindVariables(shaderVariablesOf(this, m_program.id()), m_explicit);
+    for (const VariableBinding &b : m_bindings.variables) {
+        if (!b.meaning || b.variable.isInput)
+            continue;
+        const QByteArray name =
+            b.variable.name.toUtf8() + (b.variable.isArray ? QByteArray("[0]") : QByteArray());
+        const GLint location = glGetUniformLocation(m_program.id(), name.constData());
+        if (location >= 0)
+            m_targets[std::size_t(*b.meaning)].push_back({location, b.variable.type,
+                                                          b.variable.arraySize, b.variable.isArray,
+                                                          b.lightIndex});
+    }
+}
+
+void ShaderProgram::setMatrix(BindingMeaning meaning, const glm::dmat4 &m)
+{
+    for (const BoundUniform &u : targets(meaning)) {
+        if (u.type == GlslType::Mat4)
+            glUniformMatrix4fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat4(m)));
+        else if (u.type == GlslType::Mat3)
+            glUniformMatrix3fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat3(m)));
+    }
+}
+
+void ShaderProgram::setMatrix(BindingMeaning meaning, const glm::dmat3 &m)
+{
+    for (const BoundUniform &u : targets(meaning)) {
+        if (u.type == GlslType::Mat3)
+            glUniformMatrix3fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat3(m)));
+        else if (u.type == GlslType::Mat4) // the 3x3 in the upper left, no translation
+            glUniformMatrix4fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat4(glm::mat3(m))));
+    }
+}
+
+void ShaderProgram::setVector(BindingMeaning meaning, const glm::dvec3 &v, double w)
+{
+    setPerLight(meaning, std::span<const glm::dvec3>(&v, 1), w);
+}
+
+void ShaderProgram::setScalar(BindingMeaning meaning, double value)
+{
+    setPerLight(meaning, std::span<const double>(&value, 1));
+}
+
+void ShaderProgram::setPerLight(BindingMeaning meaning, std::span<const glm::dvec3> values,
+                                double w)
+{
+    for (const BoundUniform &u : targets(meaning)) {
+        const std::size_t first = u.isArray ? 0 : std::size_t(u.lightIndex);
+        if (first >= values.size())
+            continue;
+        const int count = u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
+        if (u.type == GlslType::Vec3) {
+            std::vector<glm::vec3> packed(values.begin() + first, values.begin() + first + count);
+            glUniform3fv(u.location, count, glm::value_ptr(packed[0]));
+        } else if (u.type == GlslType::Vec4) {
+            std::vector<glm::vec4> packed;
+            for (int i = 0; i < count; ++i)
+                packed.emplace_back(glm::vec3(values[first + std::size_t(i)]), float(w));
+            glUniform4fv(u.location, count, glm::value_ptr(packed[0]));
+        }
+    }
+}
+
+void ShaderProgram::setPerLight(BindingMeaning meaning, std::span<const double> values)
+{
+    for (const BoundUniform &u : targets(meaning)) {
+        const std::size_t first = u.isArray ? 0 : std::size_t(u.lightIndex);
+        if (first >= values.size())
+            continue;
+        const int count = u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
+        if (u.type == GlslType::Float) {
+            std::vector<float> packed(values.begin() + first, values.begin() + first + count);
+            glUniform1fv(u.location, count, packed.data());
+        } else if (u.type == GlslType::Int || u.type == GlslType::Bool) {
+            std::vector<GLint> packed;
+            for (int i = 0; i < count; ++i)
+                packed.push_back(GLint(std::lround(values[first + std::size_t(i)])));
+            glUniform1iv(u.location, count, packed.data());
+        } else if (u.type == GlslType::UInt) {
+            std::vector<GLuint> packed;
+            for (int i = 0; i < count; ++i)
+                packed.push_back(GLuint(std::lround(values[first + std::size_t(i)])));
+            glUniform1uiv(u.location, count, packed.data());
+        }
+    }
 }
 
 void ShaderProgram::readValue(GLint location, UniformValue &value)
@@ -216,6 +322,9 @@ void ShaderProgram::destroy()
     m_program.reset();
     m_locations.clear();
     m_readsFacePoint = false;
+    for (auto &list : m_targets)
+        list.clear();
+    m_bindings = {};
 }
 
 void ShaderProgram::bind()

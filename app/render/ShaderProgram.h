@@ -3,10 +3,13 @@
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
 #include "UniformSnapshot.h"
+#include "core/ShaderBindings.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>
+#include <array>
 #include <glm/glm.hpp>
+#include <span>
 
 namespace phonglab {
 
@@ -48,6 +51,24 @@ public:
     bool readsFacePoint() const { return m_readsFacePoint; }
     void bind();
 
+    // PhongLab's values reach the program under whatever names it gives
+    // them (core/ShaderBindings): each setter below sets every uniform bound
+    // to `meaning`, converted to the uniform's type (a mat3 takes a mat4's
+    // upper 3x3, a vec4 takes a point with w = 1 and a direction with
+    // w = 0, an int takes a count). Meanings nothing is bound to cost a
+    // lookup and nothing else.
+    void setExplicitBindings(const ExplicitBindings &bindings);
+    const ExplicitBindings &explicitBindings() const { return m_explicit; }
+    const ProgramBindings &bindings() const { return m_bindings; }
+    void setMatrix(BindingMeaning meaning, const glm::dmat4 &m);
+    void setMatrix(BindingMeaning meaning, const glm::dmat3 &m);
+    void setVector(BindingMeaning meaning, const glm::dvec3 &v, double w = 1.0);
+    void setScalar(BindingMeaning meaning, double value);
+    // One value per light: an array takes the first of them, a single
+    // uniform (or a member of "uLights[k]") the one of its light index.
+    void setPerLight(BindingMeaning meaning, std::span<const glm::dvec3> values, double w = 1.0);
+    void setPerLight(BindingMeaning meaning, std::span<const double> values);
+
     GLint uniformLocation(const char *name);
     void setUniform(const char *name, const glm::mat4 &m);
     void setUniform(const char *name, const glm::mat3 &m);
@@ -60,11 +81,29 @@ private:
     void ensureInitialized();
     void readValue(GLint location, UniformValue &value);
     void writeValue(GLint location, const UniformValue &value);
+    void resolveBindings();
+
+    // A uniform bound to a meaning, where to write it.
+    struct BoundUniform {
+        GLint location = -1;
+        GlslType type = GlslType::Other;
+        int arraySize = 1;
+        bool isArray = false;
+        int lightIndex = 0;
+    };
+    static constexpr std::size_t kMeanings = std::size_t(BindingMeaning::Shininess) + 1;
+    const std::vector<BoundUniform> &targets(BindingMeaning meaning) const
+    {
+        return m_targets[std::size_t(meaning)];
+    }
 
     bool m_initialized = false;
     GlProgram m_program;
     bool m_readsFacePoint = false;
     QHash<QByteArray, GLint> m_locations;
+    ExplicitBindings m_explicit;
+    ProgramBindings m_bindings;
+    std::array<std::vector<BoundUniform>, kMeanings> m_targets;
 };
 
 } // namespace phonglab

@@ -1,5 +1,7 @@
 #include "ShaderSource.h"
 
+#include "core/ShaderDialect.h"
+
 #include <QFile>
 
 namespace phonglab {
@@ -64,11 +66,14 @@ int lineDirectiveFor(int nextLine, const QByteArray &versionHead)
 
 QByteArray withPrologue(const QByteArray &code, const QStringList &defines)
 {
-    if (defines.isEmpty())
-        return code;
     int versionLine = 0;
     const qsizetype split = endOfVersionLine(code, &versionLine);
-    QByteArray head = code.left(split);
+    // No #version line: a WebGL 1 shader (core/ShaderDialect.h). GLSL ES
+    // 1.00 must say so on its first line in a desktop context.
+    const bool addVersion = !hasVersionLine(code);
+    if (defines.isEmpty() && !addVersion)
+        return code;
+    QByteArray head = addVersion ? QByteArray("#version 100\n") : code.left(split);
     if (split > 0 && !head.endsWith('\n'))
         head += '\n';
     QByteArray prologue;

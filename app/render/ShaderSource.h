@@ -28,7 +28,8 @@ Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fr
 // The text handed to the driver: the user's #version line first (GLSL needs
 // it there), then the injected `#define`s, then `#line` so that every line
 // after it is numbered exactly as in the user's file. Without a #version line
-// the prologue goes first and `#line 1` follows it.
+// the prologue goes first and `#line 1` follows it. A shader with no #version
+// line at all is GLSL ES 1.00 (WebGL 1): `#version 100` is put before it.
 QByteArray withPrologue(const QByteArray &code, const QStringList &defines);
 
 } // namespace phonglab

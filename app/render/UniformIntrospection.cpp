@@ -35,6 +35,57 @@ std::vector<ActiveUniformInfo> activeUniformsOf(QOpenGLExtraFunctions *gl, GLuin
     return list;
 }
 
+std::vector<ActiveInputInfo> activeInputsOf(QOpenGLExtraFunctions *gl, GLuint program)
+{
+    std::vector<ActiveInputInfo> list;
+    if (program == 0)
+        return list;
+    GLint count = 0, maxLength = 0;
+    gl->glGetProgramiv(program, GL_ACTIVE_ATTRIBUTES, &count);
+    gl->glGetProgramiv(program, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, &maxLength);
+    QByteArray buffer(std::max(maxLength, 1), '\0');
+    for (GLuint i = 0; i < GLuint(count); ++i) {
+        ActiveInputInfo a;
+        GLsizei length = 0;
+        GLint size = 0;
+        gl->glGetActiveAttrib(program, i, GLsizei(buffer.size()), &length, &size, &a.type,
+                              buffer.data());
+        a.name = QByteArray(buffer.constData(), length);
+        if (a.name.startsWith("gl_"))
+            continue;
+        a.location = gl->glGetAttribLocation(program, a.name.constData());
+        list.push_back(a);
+    }
+    return list;
+}
+
+GlslType glslTypeOf(GLenum type)
+{
+    switch (type) {
+    case GL_FLOAT: return GlslType::Float;
+    case GL_INT: return GlslType::Int;
+    case GL_UNSIGNED_INT: return GlslType::UInt;
+    case GL_BOOL: return GlslType::Bool;
+    case GL_FLOAT_VEC2: return GlslType::Vec2;
+    case GL_FLOAT_VEC3: return GlslType::Vec3;
+    case GL_FLOAT_VEC4: return GlslType::Vec4;
+    case GL_FLOAT_MAT3: return GlslType::Mat3;
+    case GL_FLOAT_MAT4: return GlslType::Mat4;
+    default: return GlslType::Other;
+    }
+}
+
+std::vector<ShaderVariable> shaderVariablesOf(QOpenGLExtraFunctions *gl, GLuint program)
+{
+    std::vector<ShaderVariable> out;
+    for (const ActiveInputInfo &a : activeInputsOf(gl, program))
+        out.push_back({QString::fromUtf8(a.name), glslTypeOf(a.type), 1, false, true});
+    for (const ActiveUniformInfo &u : activeUniformsOf(gl, program))
+        out.push_back({QString::fromUtf8(u.name), glslTypeOf(u.type), int(u.size), u.isArray,
+                       false});
+    return out;
+}
+
 QString glslTypeName(GLenum type)
 {
     switch (type) {

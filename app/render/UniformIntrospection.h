@@ -1,4 +1,6 @@
 #pragma once
+#include "core/ShaderBindings.h"
+
 #include <QByteArray>
 #include <QOpenGLExtraFunctions>
 #include <QString>
@@ -20,6 +22,19 @@ struct ActiveUniformInfo {
 // The program's active uniforms outside uniform blocks, built-ins (gl_*)
 // left out, sorted by name. Needs `program`'s context current.
 std::vector<ActiveUniformInfo> activeUniformsOf(QOpenGLExtraFunctions *gl, GLuint program);
+
+// The program's active vertex inputs (glGetActiveAttrib), built-ins left out.
+struct ActiveInputInfo {
+    QByteArray name;
+    GLenum type = 0;
+    GLint location = -1;
+};
+std::vector<ActiveInputInfo> activeInputsOf(QOpenGLExtraFunctions *gl, GLuint program);
+
+// The type as bindings see it (GlslType::Other for samplers, ints vectors, ...).
+GlslType glslTypeOf(GLenum type);
+// Every active uniform and vertex input, as core/ShaderBindings takes them.
+std::vector<ShaderVariable> shaderVariablesOf(QOpenGLExtraFunctions *gl, GLuint program);
 
 // GLSL spelling of a uniform type ("vec3", "sampler2D"); empty if unknown.
 QString glslTypeName(GLenum type);

@@ -325,7 +325,8 @@ Result<> MainWindow::saveScene(const QString &path)
     current.camera = m_viewport->cameraToSave();
     Scene scene = rebasedOnto(current, path);
     m_sceneShaderFiles->nameIn(scene, path);
-    scene.uniforms = userUniformValues(m_viewport->programSnapshot());
+    scene.uniforms =
+        userUniformValues(m_viewport->programSnapshot(), m_viewport->programBindings());
     if (Result<> saved = saveSceneFile(scene, path); !saved)
         return saved;
     setScenePath(path);

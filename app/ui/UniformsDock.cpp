@@ -84,6 +84,7 @@ bool UniformsDock::readProgram(Program &program)
     program.active =
         activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
     program.values = shader.snapshot();
+    program.bindings = shader.bindings();
     return true;
 }
 
@@ -107,7 +108,7 @@ bool UniformsDock::rebuild()
     clearRows();
     m_values = program.values;
     for (const ActiveUniformInfo &uniform : program.active)
-        addActive(uniform, declared);
+        addActive(uniform, program.bindings, declared);
     for (const UniformDeclaration &d : declared) {
         const bool active =
             std::any_of(program.active.begin(), program.active.end(),
@@ -130,13 +131,13 @@ void UniformsDock::clearRows()
     m_inactive.clear();
 }
 
-void UniformsDock::addActive(const ActiveUniformInfo &uniform,
+void UniformsDock::addActive(const ActiveUniformInfo &uniform, const ProgramBindings &bindings,
                              const std::vector<UniformDeclaration> &declared)
 {
     UniformRowSpec spec;
     spec.baseName = QString::fromUtf8(uniform.name);
     spec.type = uniform.type;
-    spec.owner = uniformOwner(spec.baseName);
+    spec.owner = uniformOwner(bindings.meaningOf(spec.baseName));
     spec.declaration = findDeclaration(declared, spec.baseName);
     for (int element = 0; element < uniform.size; ++element) {
         spec.element = uniform.isArray ? QStringLiteral("%1[%2]").arg(spec.baseName).arg(element)

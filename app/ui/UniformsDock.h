@@ -52,12 +52,13 @@ private:
     struct Program {
         std::vector<ActiveUniformInfo> active;
         UniformSnapshot values;
+        ProgramBindings bindings;
     };
 
     bool readProgram(Program &program);
     std::vector<UniformDeclaration> declarations() const;
     void clearRows();
-    void addActive(const ActiveUniformInfo &uniform,
+    void addActive(const ActiveUniformInfo &uniform, const ProgramBindings &bindings,
                    const std::vector<UniformDeclaration> &declared);
     void addInactive(const UniformDeclaration &declaration);
     void addRow(const QString &element, const QString &label, QWidget *row);

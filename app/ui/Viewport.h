@@ -124,6 +124,8 @@ public:
     // The current values of the program the view draws with (empty before
     // GL starts), read with the context taken back if it is lent.
     UniformSnapshot programSnapshot();
+    // What each of that program's variables is bound to (core/ShaderBindings.h).
+    const ProgramBindings &programBindings() { return m_renderer.program().bindings(); }
     // A white light at the eye that follows the camera: the one light not in
     // world space. A view setting, not part of the scene (currentScene() has
     // no trace of it); added only while fewer than kMaxLights are in use.

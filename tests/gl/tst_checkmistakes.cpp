@@ -67,8 +67,11 @@ private slots:
         for (const QString &key : keys) {
             const ShaderMistake mistake = *shaderMistakeFromKey(key);
             const ShaderPair shaders = withMistake(mistake);
+            // The guarded equation demanded: by default the slide's literal
+            // one (backface-specular's image) passes too.
             const CheckReport report =
-                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), m_reference);
+                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), m_reference,
+                            kDefaultCheckToleranceSteps, PhongEquation::Guarded);
             QVERIFY2(!report.passed(),
                      qPrintable(key + QStringLiteral(": ") + checkSummary(report)));
             std::map<ShaderMistake, double> row;
@@ -99,6 +102,27 @@ private slots:
         qInfo("confusion matrix on %s, %dx%d, %% of the difference explained:\n%s",
               "assets/scenes/check.json", kCheckWidth, kCheckHeight,
               qPrintable(table.join(QLatin1Char('\n'))));
+    }
+
+    // The slide's equation taken literally (no N·L guard on the highlight)
+    // passes by default and is named; demanding the guarded one fails it.
+    void slideEquationPassesByDefault()
+    {
+        const ShaderPair slide = withMistake(ShaderMistake::BackfaceSpecular);
+        const RgbImage image = toRgbImage(render(slide.vertex, slide.fragment));
+        const CheckReport byDefault = checkRender(image, m_reference);
+        QVERIFY2(byDefault.passed(), qPrintable(checkSummary(byDefault)));
+        QCOMPARE(byDefault.equation, PhongEquation::Slide);
+        const CheckReport guarded =
+            checkRender(image, m_reference, kDefaultCheckToleranceSteps, PhongEquation::Guarded);
+        QVERIFY(!guarded.passed());
+        QCOMPARE(guarded.diagnosis.findings.front().key, ShaderMistake::BackfaceSpecular);
+        const ShaderPair shipped = shippedPhong();
+        const CheckReport asSlide =
+            checkRender(toRgbImage(render(shipped.vertex, shipped.fragment)), m_reference,
+                        kDefaultCheckToleranceSteps, PhongEquation::Slide);
+        QVERIFY(!asSlide.passed());
+        QCOMPARE(asSlide.diagnosis.findings.front().key, ShaderMistake::BackfaceSpecular);
     }
 
 private:

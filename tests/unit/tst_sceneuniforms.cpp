@@ -124,7 +124,24 @@ void TestSceneUniforms::savesOnlyTheUsersPlainNumbers()
         {QStringLiteral("steps[2]"), {-3}}, {QStringLiteral("mask"), {7}},
         {QStringLiteral("flag"), {1}},
     };
-    QCOMPARE(userUniformValues(snapshot), expected);
+    const std::vector<ShaderVariable> variables = {
+        {QStringLiteral("gain"), GlslType::Float},
+        {QStringLiteral("tint"), GlslType::Vec3},
+        {QStringLiteral("steps"), GlslType::Int, 3, true},
+        {QStringLiteral("mask"), GlslType::UInt},
+        {QStringLiteral("flag"), GlslType::Bool},
+        {QStringLiteral("image"), GlslType::Other},
+        {QStringLiteral("modelViewMatrix"), GlslType::Mat4},
+        {QStringLiteral("kd"), GlslType::Vec3},
+        {QStringLiteral("Id"), GlslType::Vec3, 2, true},
+    };
+    QCOMPARE(userUniformValues(snapshot, bindVariables(variables, {})), expected);
+    // A uniform the user bound to a meaning is PhongLab's to set, not saved.
+    std::map<QString, std::vector<double>> withoutGain = expected;
+    withoutGain.erase(QStringLiteral("gain"));
+    QCOMPARE(userUniformValues(snapshot, bindVariables(variables, {{QStringLiteral("gain"),
+                                                                     BindingMeaning::Shininess}})),
+             withoutGain);
 }
 
 QTEST_APPLESS_MAIN(TestSceneUniforms)
