@@ -11,6 +11,7 @@
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QJsonDocument>
+#include <QRegularExpression>
 
 #include <optional>
 #include <variant>
@@ -204,8 +205,15 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     outcome.notes << outcome.bindings.notes;
     for (const QString &problem : outcome.bindings.problems)
         outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
-    for (const QString &unbound : unboundUniformMessages(linked, scene))
-        outcome.errors.push_back(inputError(files.fragment, unbound));
+    for (const UnboundUniform &unbound : unboundUniforms(linked, scene)) {
+        // The file that declares it: the vertex stage's, else the fragment's.
+        const QRegularExpression declared(QStringLiteral(R"(\buniform\b[^;]*\b%1\b)")
+                                              .arg(QRegularExpression::escape(unbound.name)));
+        const bool inVertex =
+            !outcome.stages.empty() && declared.match(outcome.stages.front().text).hasMatch();
+        outcome.errors.push_back(
+            inputError(inVertex ? files.vertex : files.fragment, unbound.message));
+    }
     if (!outcome.errors.empty())
         return outcome;
     QString lightsNote;

@@ -151,8 +151,8 @@ int render(const RenderArgs &args, int argc, char **argv)
         printError(QStringLiteral("--bind %1").arg(problem));
         return kExitFailure;
     }
-    for (const QString &unbound : unboundUniformMessages(renderer.program(), scene))
-        printErrLine(QStringLiteral("phonglab: warning: %1").arg(unbound));
+    for (const UnboundUniform &unbound : unboundUniforms(renderer.program(), scene))
+        printErrLine(QStringLiteral("phonglab: warning: %1").arg(unbound.message));
     const QImage image = offscreen.renderImage(args.size);
     if (image.isNull()) {
         printError(QStringLiteral("rendering failed"));

@@ -133,9 +133,9 @@ QString ownName(BindingMeaning meaning)
 
 } // namespace
 
-QStringList unboundUniformMessages(ShaderProgram &program, const Scene &scene)
+std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene &scene)
 {
-    QStringList out;
+    std::vector<UnboundUniform> out;
     const UniformSnapshot snapshot = program.snapshot();
     for (const VariableBinding *b : program.bindings().unboundUniforms()) {
         if (b->isExplicit || b->variable.type == GlslType::Other
@@ -153,7 +153,7 @@ QStringList unboundUniformMessages(ShaderProgram &program, const Scene &scene)
             message += QStringLiteral("; bind it with --bind %1=MEANING (meanings: %2), or give "
                                       "it a value in the scene's \"uniforms\"")
                            .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
-        out << message;
+        out.push_back({b->variable.name, message});
     }
     return out;
 }

@@ -40,7 +40,11 @@ QString readBindOptions(const QCommandLineParser &parser, const QCommandLineOpti
 // The uniforms of the built program that PhongLab binds to nothing and that
 // nobody gives a value (no "uniforms" entry, no initialiser): a shader that
 // reads them reads zero. One sentence each, naming the likely meaning.
-QStringList unboundUniformMessages(ShaderProgram &program, const Scene &scene);
+struct UnboundUniform {
+    QString name;
+    QString message;
+};
+std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene &scene);
 // "aPosition=position, uModel=model, uGain=none" for a person; empty where
 // every variable has PhongLab's own name (nothing worth saying).
 QString bindingsText(const ProgramBindings &bindings);

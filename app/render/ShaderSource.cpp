@@ -50,15 +50,17 @@ qsizetype endOfVersionLine(const QByteArray &code, int *versionLine)
 }
 
 // GLSL 3.30 and ES 3.00 on: after "#line N" the next line is N. Before
-// that (1.10-1.50, ES 1.00) it was N + 1.
+// that (1.10-1.50) it was N + 1; Mesa numbers GLSL ES 1.00 the new way
+// (tst_bringyourownshader sees errors land on the user's lines).
 int lineDirectiveFor(int nextLine, const QByteArray &versionHead)
 {
     const qsizetype at = versionHead.indexOf("#version");
     if (at < 0)
         return nextLine;
     const int version = versionHead.mid(at + 8).trimmed().split(' ').value(0).toInt();
-    const bool es = versionHead.contains(" es");
-    const bool newSemantics = es ? version >= 300 : version >= 330;
+    // GLSL ES 1.00 ("#version 100", no "es") numbers as 3.30 does in Mesa.
+    const bool es = versionHead.contains(" es") || version == 100;
+    const bool newSemantics = es || version >= 330;
     return newSemantics ? nextLine : nextLine - 1;
 }
 
