@@ -73,8 +73,8 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
               "  --vertex FILE       vertex shader instead of the shading method's\n"
               "  --fragment FILE     fragment shader instead of the shading method's\n"
               "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable "
-              "(see\n"
-              "                      phonglab check --help for the meanings)\n\n"
+              "(the\n"
+              "                      meanings are those of `phonglab check`)\n\n"
               "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(knownMethods);
