@@ -265,11 +265,11 @@ int check(const CheckArgs &args, int argc, char **argv)
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
         const Result<> written =
             writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath);
-        if (!written)
-            outcome = CheckOutcome{CheckOutcome::Verdict::Error,
-                                   outcome.report,
-                                   {inputError(args.diffPath, written.error())},
-                                   {}};
+        if (!written) {
+            outcome.verdict = CheckOutcome::Verdict::Error;
+            outcome.errors = {inputError(args.diffPath, written.error())};
+            outcome.stages.clear();
+        }
     }
     if (args.json) {
         printLine(
