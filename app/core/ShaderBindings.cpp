@@ -510,12 +510,15 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         }
         out.variables.push_back(std::move(b));
     }
-    for (const auto &[name, meaning] : explicitBindings)
+    for (const auto &entry : explicitBindings) {
+        const QString &name = entry.first;
         if (std::none_of(variables.begin(), variables.end(),
                          [&](const ShaderVariable &v) { return v.name == name; }))
             out.notes << QStringLiteral("%1=%2: the program has no active uniform or input %1 "
                                         "(not declared, or unused and optimised away)")
-                             .arg(name, meaning ? bindingMeaningKey(*meaning) : kUnboundWord);
+                             .arg(name, entry.second ? bindingMeaningKey(*entry.second)
+                                                     : kUnboundWord);
+    }
     return out;
 }
 
