@@ -117,8 +117,10 @@ void TestShaderDiagnostic::prologueGoesAfterVersion()
 
 void TestShaderDiagnostic::prologueWithoutVersion()
 {
+    // No #version line is a WebGL 1 shader: GLSL ES 1.00, which must say so to a
+    // desktop driver. Mesa numbers ES 1.00 lines as 3.30 does: "#line 1" is line 1.
     const QByteArray out = withPrologue("void main() {}\n", {QStringLiteral("A")});
-    QCOMPARE(out, QByteArray("#define A\n#line 1\nvoid main() {}\n"));
+    QCOMPARE(out, QByteArray("#version 100\n#define A\n#line 1\nvoid main() {}\n"));
 }
 
 void TestShaderDiagnostic::prologueForOldGlsl()
