@@ -39,7 +39,7 @@ OffscreenRenderer::~OffscreenRenderer()
     destroy();
 }
 
-Result<> OffscreenRenderer::create()
+Result<> OffscreenRenderer::create(QOffscreenSurface *surface)
 {
     const QSurfaceFormat format = phonglabSurfaceFormat(0);
     m_context = std::make_unique<QOpenGLContext>();
@@ -55,10 +55,15 @@ Result<> OffscreenRenderer::create()
                         .arg(got.majorVersion())
                         .arg(got.minorVersion()));
     }
-    m_surface = std::make_unique<QOffscreenSurface>();
-    m_surface->setFormat(got);
-    m_surface->create();
-    if (!m_context->makeCurrent(m_surface.get())) {
+    if (surface) {
+        m_surface = surface;
+    } else {
+        m_ownSurface = std::make_unique<QOffscreenSurface>();
+        m_ownSurface->setFormat(got);
+        m_ownSurface->create();
+        m_surface = m_ownSurface.get();
+    }
+    if (!m_context->makeCurrent(m_surface)) {
         destroy();
         return fail(
             QStringLiteral("the OpenGL context could not be made current on an offscreen surface"));
@@ -71,7 +76,7 @@ Result<> OffscreenRenderer::create()
 void OffscreenRenderer::makeCurrent()
 {
     if (m_context)
-        m_context->makeCurrent(m_surface.get());
+        m_context->makeCurrent(m_surface);
 }
 
 QImage OffscreenRenderer::renderImage(const QSize &size)
@@ -188,13 +193,14 @@ void OffscreenRenderer::destroy()
     if (!m_context)
         return;
     if (m_surface)
-        m_context->makeCurrent(m_surface.get());
+        m_context->makeCurrent(m_surface);
     m_renderer.cleanup();
     m_fbo.reset();
     m_floatFbo.reset();
     m_context->doneCurrent();
     m_context.reset();
-    m_surface.reset();
+    m_surface = nullptr;
+    m_ownSurface.reset();
 }
 
 } // namespace phonglab

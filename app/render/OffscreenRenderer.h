@@ -22,8 +22,11 @@ public:
     ~OffscreenRenderer();
 
     // Creates the context. A failure when no OpenGL 3.3 context can be had
-    // (no display, no driver).
-    Result<> create();
+    // (no display, no driver). With `surface` (not owned; it must outlive
+    // this and be of phonglabSurfaceFormat(0)) the context is made for it:
+    // off the GUI thread, where Qt cannot create a surface, a caller makes
+    // one on the GUI thread and hands it over.
+    Result<> create(QOffscreenSurface *surface = nullptr);
 
     // Must be called with nothing else current on this thread; makes the
     // context current and leaves it so.
@@ -50,7 +53,8 @@ private:
     std::vector<double> timerQueryFrames(const QSize &size, int frames);
 
     std::unique_ptr<QOpenGLContext> m_context;
-    std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOffscreenSurface> m_ownSurface;
+    QOffscreenSurface *m_surface = nullptr; // m_ownSurface, or the caller's
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
     std::unique_ptr<QOpenGLFramebufferObject> m_floatFbo;
     Renderer m_renderer;

@@ -152,6 +152,12 @@ void Renderer::adoptProgram(GlProgram program)
     m_program.restore(kept);
 }
 
+void Renderer::restoreUniforms(const UniformSnapshot &values)
+{
+    m_pendingUniforms.clear();
+    m_program.restore(values);
+}
+
 // Each pending value is written once, into the first program that declares
 // it with as many components; from then on the program keeps it and
 // rebuilds carry it (ShaderProgram::snapshot/restore).

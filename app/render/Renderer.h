@@ -86,6 +86,9 @@ public:
     // ones the renderer drives are set again on every frame anyway.
     void adoptProgram(GlProgram program);
     bool hasProgram() const { return m_program.isValid(); }
+    // Sets the program's uniforms to `values` (another program's snapshot
+    // of the same sources): they win over the scene's values still pending.
+    void restoreUniforms(const UniformSnapshot &values);
     ShaderProgram &program() { return m_program; }
 
     void setOptions(const Options &options) { m_options = options; }

@@ -13,6 +13,7 @@ struct ShaderSource {
     QString name;
     QByteArray code;
 
+    bool operator==(const ShaderSource &) const = default;
     // The file's text, or why it cannot be read ("PATH: cannot read shader: ...").
     static Result<ShaderSource> fromFile(const QString &path);
 };
@@ -21,6 +22,8 @@ struct ShaderSource {
 struct StageSources {
     ShaderSource vertex;
     ShaderSource fragment;
+
+    bool operator==(const StageSources &) const = default;
 };
 // Both files read, or the first one's failure.
 Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fragmentPath);

@@ -17,7 +17,6 @@ namespace phonglab {
 namespace {
 
 constexpr int kExitFailure = 1;
-constexpr int kViewportSamples = 4;
 // Said instead of Qt's abort when there is nowhere to open the window.
 constexpr char kNoDisplayMessage[] =
     "phonglab: the editor window needs a display (X11 or Wayland), and DISPLAY is not set.\n"

@@ -9,6 +9,10 @@ int runGui(int argc, char **argv);
 
 class MainWindow;
 
+// The samples the view draws with (the live check draws its own copy of the
+// frame single-sampled, as the exact image is).
+inline constexpr int kViewportSamples = 4;
+
 // Only the view multisamples, with `viewportSamples`; the default format
 // (the shared and build contexts, any other GL surface) gets none, so that
 // nothing else pays for samples (when the view was a QOpenGLWidget, samples

@@ -26,7 +26,7 @@ namespace {
 constexpr int kDividerGrabPx = 6;
 // A new program's check waits this long after its first frame, so that the
 // event loop handles what queued up meanwhile (keys typed, the window's
-// repaint) before the check draws the scene again on this thread.
+// repaint) before the check's thread builds and draws the program again.
 constexpr int kAfterFrameMs = 20;
 
 QString shortSummary(const CheckResult &result)
@@ -50,6 +50,7 @@ QString shortSummary(const CheckResult &result)
 LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderController *live)
     : QObject(window)
     , m_viewport(viewport)
+    , m_live(live)
     , m_checker(new ShaderChecker(this))
     , m_overlay(new CheckOverlay(viewport))
     , m_inspector(new PixelInspectorDock(window))
@@ -67,8 +68,8 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
     connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
     // A new program is checked at once, but after its first frame is on
-    // screen: the check draws the scene again on this thread, which would
-    // otherwise delay that frame. View and scene changes come in bursts.
+    // screen: the check's own build and draw of it would otherwise take
+    // cores from that frame. View and scene changes come in bursts.
     connect(live, &LiveShaderController::programApplied, this, [this] {
         m_debounce->stop(); // a check due now would draw the old frame's moment
         m_checkAfterFrame = true;
@@ -170,12 +171,14 @@ void LiveCheck::run()
         return;
     }
     m_pending = false;
-    const QImage yours = m_viewport->renderImage(checkSize(), false);
-    if (yours.isNull())
+    // No drawing here: the checker's thread draws this frame again itself.
+    FrameRecipe frame{m_viewport->renderedScene(), m_live->appliedSources(),
+                      m_viewport->programSnapshot(), m_viewport->renderOptions(), checkSize()};
+    if (frame.size.isEmpty())
         return;
     m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…")
                              : tr("checking…"));
-    m_checker->request(m_viewport->renderedScene(), yours.convertToFormat(QImage::Format_RGB888));
+    m_checker->request(frame);
 }
 
 QSize LiveCheck::checkSize() const

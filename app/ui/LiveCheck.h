@@ -22,9 +22,9 @@ class SceneLoadJob;
 class Viewport;
 
 // The editor's check (issue 12, C and D): after every applied program, and
-// whenever the view or the scene changes, the frame is checked against the
-// exact image in the background (ShaderChecker; typing is never blocked and
-// the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
+// whenever the view or the scene changes, the frame is drawn again
+// single-sampled and checked against the exact image in the background
+// (ShaderChecker; typing is never blocked and the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
 // the status bar, the overlays over the viewport, and the pixel inspector.
 inline constexpr int kCheckDebounceMs = 150; // lets an orbit drag or a burst of edits settle
 // A larger view is checked at a smaller size of the same shape: the reference
@@ -75,6 +75,7 @@ private:
     bool dragDivider(QEvent *event);
 
     Viewport *m_viewport = nullptr;
+    LiveShaderController *m_live = nullptr;
     ShaderChecker *m_checker = nullptr;
     CheckOverlay *m_overlay = nullptr;
     PixelInspectorDock *m_inspector = nullptr;

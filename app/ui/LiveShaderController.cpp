@@ -150,6 +150,7 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
     if (!m_dock->hasUnsavedChanges()) {
         showPreset(method); // what the viewport has just loaded
         m_appliedHash = m_lastBuiltHash = currentHash();
+        m_appliedSources.reset();
         return;
     }
     // Unsaved edits are never replaced behind the user's back: they stay,
@@ -207,6 +208,7 @@ void LiveShaderController::onGlInitialized()
     setState(State::Idle);
     // The viewport has just built its scene's shipped program itself.
     m_appliedHash = m_lastBuiltHash = shippedHash(m_viewport->currentScene().shading);
+    m_appliedSources.reset();
     startWorker();
     const bool wanted = std::exchange(m_queued, std::nullopt).has_value();
     if (m_autoBuild == AutoBuild::OnlyOnF5)
@@ -222,6 +224,7 @@ void LiveShaderController::onGlInitialized()
 void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
 {
     m_appliedHash = m_lastBuiltHash = shippedHash(method);
+    m_appliedSources.reset();
     if (method == m_shading && m_autoBuild == AutoBuild::AfterPause
         && currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
@@ -312,6 +315,7 @@ void LiveShaderController::dispatch(const QByteArray &hash)
                                 m_dock->text(ShaderStage::Fragment)};
     m_buildClock.start();
     m_buildHash = hash;
+    m_buildSources = {vertex, fragment};
     if (m_buildThread->isRunning()) {
         setState(State::Building);
         m_buildSerial =
@@ -415,6 +419,7 @@ void LiveShaderController::announce(const QByteArray &hash, const BuildReport &r
                                     const BuildTimings &timings)
 {
     m_appliedHash = hash;
+    m_appliedSources = m_buildSources;
     m_lastApplied = timings;
     m_recovery->programShown(hash);
     const int warnings = int(result.diagnostics.size());

@@ -2,6 +2,7 @@
 #include "ShaderRecovery.h"
 #include "core/ShadingMethod.h"
 #include "render/BuildWorker.h"
+#include "render/ShaderSource.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -85,6 +86,10 @@ public:
     // decided whether that text builds (isBuilding()) or not.
     bool isWaitingToBuild() const;
     QByteArray appliedHash() const { return m_appliedHash; }
+    // The sources of the program the viewport draws with; none while it
+    // draws the shipped program of its scene's shading (the live check draws
+    // the frame again from these).
+    const std::optional<StageSources> &appliedSources() const { return m_appliedSources; }
     // Timings of the program in use (warmNs > 0: warmed before it was shown).
     const BuildTimings &lastApplied() const { return m_lastApplied; }
     QByteArray currentHash() const;
@@ -143,6 +148,8 @@ private:
     quint64 m_warmSerial = 0;  // counts warm-ups, so a late callback is told from the current one
     quint64 m_buildSerial = 0; // while Building: the serial the worker's reply carries
     QByteArray m_buildHash;    // while Building or Warming: the text on its way
+    StageSources m_buildSources; // ... and the sources it was built from
+    std::optional<StageSources> m_appliedSources;
     std::optional<BuildRequest> m_queued; // asked for while not Idle
     QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
 };

@@ -1,8 +1,10 @@
 #include "ShaderChecker.h"
 
 #include "mesh/SceneMeshes.h"
+#include "render/GlFormat.h"
 #include "render/QtImages.h"
 
+#include <QOffscreenSurface>
 #include <QScopeGuard>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
@@ -28,6 +30,16 @@ struct ShaderChecker::Cache {
     std::optional<Scene> scene;
     QSize size;
     std::shared_ptr<const CheckReference> reference;
+    FrameRedraw redraw;
+
+    // The meshes the redraw loaded, before it uploads them (and frees its
+    // CPU copies), go to the exact image as well: loaded once, not twice.
+    void keep(const SceneMeshes &loaded)
+    {
+        for (auto it = loaded.entries.cbegin(); it != loaded.entries.cend(); ++it)
+            if (it->mesh)
+                meshes.insert(it.key(), it->mesh);
+    }
 
     // The meshes of every object, loading only those not kept already and
     // keeping no others.
@@ -80,6 +92,9 @@ ShaderChecker::ShaderChecker(QObject *parent)
     , m_cache(std::make_shared<Cache>())
 {
     m_pool.setMaxThreadCount(1); // one check at a time; its ray casting has threads of its own
+    // The check's GL context lives on the pool's one thread: it must never
+    // be replaced by another.
+    m_pool.setExpiryTimeout(-1);
     connect(&m_watcher, &QFutureWatcher<CheckResult>::finished, this, &ShaderChecker::onFinished);
 }
 
@@ -88,12 +103,23 @@ ShaderChecker::~ShaderChecker()
     // The job uses the cache, which goes with this: stop it early and wait.
     m_waiting.reset();
     m_cancelled->store(true);
-    m_watcher.waitForFinished();
+    // The context goes on its own thread (the pool's one: queued behind the
+    // running check), before its surface goes here. Never
+    // QFuture::waitForFinished(), which runs a job not yet started on this
+    // thread, and nothing between here and the last job that ends the
+    // pool's thread (waitForDone() does).
+    m_pool.start([cache = m_cache] { cache->redraw.destroy(); });
+    m_pool.waitForDone();
 }
 
-void ShaderChecker::request(const Scene &scene, const QImage &yours)
+void ShaderChecker::request(const FrameRecipe &frame)
 {
-    Request r{++m_generation, scene, yours, {}};
+    if (!m_surface) {
+        m_surface = std::make_unique<QOffscreenSurface>();
+        m_surface->setFormat(phonglabSurfaceFormat(0));
+        m_surface->create();
+    }
+    Request r{++m_generation, frame, {}};
     r.clock.start();
     if (!m_watcher.isRunning()) {
         start(std::move(r));
@@ -101,7 +127,8 @@ void ShaderChecker::request(const Scene &scene, const QImage &yours)
     }
     // Newest wins. A running job making the reference of another view is
     // wasted work; one judging the same view is nearly done.
-    if (m_running && !(sameScene(m_running->first, scene) && m_running->second == yours.size()))
+    if (m_running
+        && !(sameScene(m_running->first, frame.scene) && m_running->second == frame.size))
         m_cancelled->store(true);
     m_waiting = std::move(r);
 }
@@ -117,9 +144,11 @@ void ShaderChecker::start(Request request)
 {
     std::shared_ptr<Cache> cache = m_cache;
     m_cancelled = std::make_shared<std::atomic<bool>>(false);
-    m_running = std::make_pair(request.scene, request.yours.size());
+    m_running = std::make_pair(request.frame.scene, request.frame.size);
     m_watcher.setFuture(QtConcurrent::run(
-        &m_pool, [cache, cancelled = m_cancelled, request = std::move(request)]() {
+        &m_pool,
+        [cache, cancelled = m_cancelled, surface = m_surface.get(),
+         request = std::move(request)]() {
             // Background work must never take a core from the window or a mesh
             // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
             // threads started from here inherit. The pool thread is reused, so
@@ -127,17 +156,26 @@ void ShaderChecker::start(Request request)
             QThread::currentThread()->setPriority(QThread::IdlePriority);
             const auto restore =
                 qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
+            const Scene &scene = request.frame.scene;
             CheckResult result;
             result.generation = request.generation;
-            result.scene = request.scene;
-            result.yours = request.yours;
+            result.scene = scene;
+            if (cancelled->load())
+                return result; // dropped by onFinished()
             try {
-                Result<std::shared_ptr<const CheckReference>> reference =
-                    cache->referenceFor(request.scene, request.yours.size(), *cancelled);
-                result.error = reference.error();
-                result.reference = reference.valueOr(nullptr);
+                Result<QImage> drawn = cache->redraw.draw(
+                    request.frame, surface, [&] { return !cancelled->load(); },
+                    [&](const SceneMeshes &loaded) { cache->keep(loaded); });
+                result.error = drawn.error();
+                result.yours = drawn.valueOr(QImage());
+                if (drawn) {
+                    Result<std::shared_ptr<const CheckReference>> reference =
+                        cache->referenceFor(scene, request.frame.size, *cancelled);
+                    result.error = reference.error();
+                    result.reference = reference.valueOr(nullptr);
+                }
                 if (result.reference) {
-                    const RgbImage yours = toRgbImage(request.yours);
+                    const RgbImage yours = toRgbImage(result.yours);
                     result.report = checkRender(yours, *result.reference);
                     result.exact = toQImage(result.reference->exactImage);
                     result.heatmap = toQImage(checkHeatmap(yours, *result.reference));
@@ -146,7 +184,7 @@ void ShaderChecker::start(Request request)
                 const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
                 result = CheckResult{
                     request.generation,
-                    request.scene,
+                    scene,
                     {},
                     {},
                     {},

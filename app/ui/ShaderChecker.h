@@ -1,6 +1,7 @@
 #pragma once
 #include "core/Scene.h"
 #include "core/ShaderCheck.h"
+#include "render/FrameRedraw.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -18,7 +19,7 @@ struct CheckResult {
     quint64 generation = 0; // of the request it answers
     Scene scene;            // as checked (headlight included)
     std::shared_ptr<const CheckReference> reference;
-    QImage yours;   // the frame, without light markers
+    QImage yours;   // the frame, without light markers, single-sampled
     QImage exact;   // the reference, 8-bit
     QImage heatmap; // checkHeatmap()
     CheckReport report;
@@ -28,10 +29,12 @@ struct CheckResult {
 
 // Runs checks off the GUI thread, one at a time; while one runs only the
 // newest request waits (an older waiting one is dropped), and a running one
-// that is still making the reference of another view is cancelled. The
-// reference is kept between checks of the same scene at the same size, so
-// after a shader edit only the comparison runs; the meshes of the scene last
-// checked are kept for its next view.
+// that is still making the reference of another view is cancelled. Each
+// check draws the frame again itself (FrameRedraw: single-sampled, in a
+// context of its own on the check's thread), then compares. The reference
+// is kept between checks of the same scene at the same size, so after a
+// shader edit only the program's build, one draw and the comparison run; the
+// meshes of the scene last checked are kept for its next view.
 class ShaderChecker : public QObject
 {
     Q_OBJECT
@@ -40,7 +43,8 @@ public:
     explicit ShaderChecker(QObject *parent = nullptr);
     ~ShaderChecker() override;
 
-    void request(const Scene &scene, const QImage &yours);
+    // On the GUI thread.
+    void request(const FrameRecipe &frame);
     // Stops the running check as soon as it can (its result is dropped) and
     // forgets the waiting one: a scene load wants every core.
     void cancel();
@@ -55,8 +59,7 @@ signals:
 private:
     struct Request {
         quint64 generation = 0;
-        Scene scene;
-        QImage yours;
+        FrameRecipe frame;
         QElapsedTimer clock;
     };
     struct Cache; // touched only by the one running job
@@ -73,6 +76,9 @@ private:
     std::optional<Request> m_waiting;
     std::optional<std::pair<Scene, QSize>> m_running; // what the running job checks
     std::shared_ptr<Cache> m_cache;
+    // Where the check's context draws: made on this (the GUI) thread, as Qt
+    // requires, and freed after the pool's thread let go of the context.
+    std::unique_ptr<QOffscreenSurface> m_surface;
     quint64 m_generation = 0;
     std::shared_ptr<std::atomic<bool>> m_cancelled = std::make_shared<std::atomic<bool>>(false);
 };

@@ -117,10 +117,13 @@ public:
     // reloading anything; the camera as orbited stays.
     void setSceneParameters(const Scene &scene);
     // The current frame rendered again at `pixelSize` with this view's
-    // renderer, program and samples (the live check, File → Export Image).
+    // renderer, program and samples (File → Export Image; the live check
+    // draws its own, single-sampled: FrameRedraw).
     // Null when GL is not up or the size cannot be allocated. Without
     // `lightMarkers` the frame is the scene alone (what a check compares).
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
+    // How the view draws (light markers, detail, lights left out).
+    const Renderer::Options &renderOptions() const { return m_options; }
     // The current values of the program the view draws with (empty before
     // GL starts), read with the context taken back if it is lent.
     UniformSnapshot programSnapshot();

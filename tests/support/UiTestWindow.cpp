@@ -2,6 +2,7 @@
 
 #include "ResultChecks.h"
 #include "render/GlFormat.h"
+#include "ui/GuiMain.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -49,9 +50,12 @@ void showAndWaitForFrame(MainWindow &window, QSize size)
     QVERIFY(window.viewport()->isRenderReady());
 }
 
-void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, QSize size)
+void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, QSize size,
+                int viewportSamples)
 {
     window = std::make_unique<MainWindow>();
+    if (viewportSamples > 0)
+        useMultisamplingInViewOnly(*window, viewportSamples);
     QString error;
     QVERIFY_OK(window->openScene(scenePath));
     showAndWaitForFrame(*window, size);

@@ -57,10 +57,13 @@ private:
 void showAndWaitForFrame(MainWindow &window, QSize size);
 
 // A new MainWindow into `window` (the one there before is destroyed once the
-// new one exists), with `scenePath` opened, then showAndWaitForFrame().
+// new one exists), with `scenePath` opened, then showAndWaitForFrame(). With
+// `viewportSamples` the view multisamples as the app's does
+// (useMultisamplingInViewOnly; kViewportSamples), else its frames are exact.
 // Fails the current test with QTest's macros: check QTest::currentTestFailed()
 // after it.
-void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, QSize size);
+void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, QSize size,
+                int viewportSamples = 0);
 
 // Waits until the live shader controller has built and applied the text now
 // in the editors; false when that takes longer than `timeoutMs`.
@@ -75,9 +78,9 @@ protected:
     static constexpr int kBuildTimeoutMs = 10000; // debounce + compile + link + JIT, generously
 
     // test::openWindow() into m_window; check QTest::currentTestFailed() after it.
-    void openWindow(const QString &scenePath, QSize size)
+    void openWindow(const QString &scenePath, QSize size, int viewportSamples = 0)
     {
-        test::openWindow(m_window, scenePath, size);
+        test::openWindow(m_window, scenePath, size, viewportSamples);
     }
 
     Viewport *viewport() const;
