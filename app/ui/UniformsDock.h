@@ -56,6 +56,8 @@ private:
     };
 
     bool readProgram(Program &program);
+    static QStringList layoutKey(const Program &program,
+                                 const std::vector<UniformDeclaration> &declared);
     std::vector<UniformDeclaration> declarations() const;
     void clearRows();
     void addActive(const ActiveUniformInfo &uniform, const ProgramBindings &bindings,
@@ -77,6 +79,7 @@ private:
     QHash<QString, UniformOwner> m_owners;
     QStringList m_order;
     QStringList m_inactive;
+    QStringList m_layoutKey; // of the rows shown (layoutKey())
     UniformSnapshot m_values; // as last read: the type and layout each write needs
     bool m_rebuildPending = false;
     QElapsedTimer m_sinceRefresh; // read-only values follow the scene a few times a second
