@@ -21,6 +21,7 @@
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPointer>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
@@ -168,6 +169,7 @@ void TestUniformsDock::userUniformIsEditedAndKept()
     const QImage withGain = frame();
 
     QSignalSpy rebuilt(dock(), &UniformsDock::rebuilt);
+    const QPointer<UniformFloatRow> before = gainRow();
     fragmentEditor()->append(QStringLiteral("// an unrelated edit\n"));
     m_window->shaderDock()->compileAction()->trigger();
     QVERIFY(waitForApplied());
@@ -176,6 +178,19 @@ void TestUniformsDock::userUniformIsEditedAndKept()
     QCOMPARE(gainRow()->value(), 0.5f); // the dock shows the carried value
     QCOMPARE(programValue("gain"), 0.5f);
     QCOMPARE(frame(), withGain);
+    // The same uniforms keep the same rows (making them again stalled the
+    // GUI thread after every edit); a changed annotation makes them anew.
+    QCOMPARE(gainRow(), before.data());
+    QVERIFY(fragmentEditor()->findFirst(QStringLiteral("@range 0 2"), false, true, false, false,
+                                        true, 0, 0));
+    fragmentEditor()->replace(QStringLiteral("@range 0 4"));
+    rebuilt.clear();
+    m_window->shaderDock()->compileAction()->trigger();
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(rebuilt.count() > 0);
+    QVERIFY(gainRow() && gainRow() != before.data());
+    QCOMPARE(gainRow()->field()->maximum(), 4.0);
+    QCOMPARE(gainRow()->value(), 0.5f);
 }
 
 void TestUniformsDock::userUniformIsSavedWithTheScene()
