@@ -36,10 +36,10 @@ std::vector<SourceLine> findingLines(const MistakeFinding &f,
 
 QString findingMessage(const MistakeFinding &f)
 {
-    QString text = QStringLiteral("%1 explains %2 % of the difference: %3")
+    QString text = QStringLiteral("%1 explains %2 % of the difference (%3): %4")
                        .arg(shaderMistakeKey(f.key))
                        .arg(qRound(100.0 * f.confidence))
-                       .arg(shaderMistakeRule(f.key));
+                       .arg(mistakeFormSummary({f.key, f.form}), shaderMistakeRule(f.key));
     for (ShaderMistake m : f.also)
         text += QStringLiteral("; or, with the same image, %1: %2")
                     .arg(shaderMistakeKey(m), shaderMistakeRule(m));
@@ -87,6 +87,7 @@ QJsonArray diagnosisJson(const CheckOutcome &outcome)
                                      {QStringLiteral("line"), l.line},
                                      {QStringLiteral("text"), l.text}});
         out.append(QJsonObject{{QStringLiteral("key"), shaderMistakeKey(f.key)},
+                               {QStringLiteral("form"), mistakeFormSummary({f.key, f.form})},
                                {QStringLiteral("also"), keysJson(f.also)},
                                {QStringLiteral("confidence"), f.confidence},
                                {QStringLiteral("message"), findingMessage(f)},

@@ -111,6 +111,7 @@ struct PreparedObject {
     Surface surface = Surface::Sphere;
     glm::dmat4 modelView{1.0};
     glm::dmat3 normalMatrix{1.0};
+    glm::dmat4 model{1.0};
     glm::dmat3 inverseLinear{1.0}; // camera-space directions -> object space
     glm::dvec3 eyeInObject{0.0};   // the camera-space origin in object space
     const Material *material = nullptr;
@@ -149,6 +150,7 @@ Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double as
         p.surface = *surface;
         p.modelView = matrices.modelView;
         p.normalMatrix = matrices.normalMatrix;
+        p.model = matrices.model;
         p.inverseLinear = glm::dmat3(inverse);
         p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
         p.material = &object.material;
@@ -203,7 +205,7 @@ ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const Camera
     const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
         : object.surface == Surface::Torus ? torusNormal(p, kTorusMajorRadius)
                                            : boxNormal(p);
-    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix},
+    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix, object.model},
                              *object.material, scene.ambient, lights, shader);
 }
 

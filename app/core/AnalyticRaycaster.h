@@ -50,14 +50,24 @@ ReferenceShading idealShadingFor(ShadingMethod method);
 struct ReferenceShader {
     ReferenceShading shading = ReferenceShading::Phong;
     std::optional<ShaderMistake> mistake; // with Phong only
+    int form = 0;                         // which of the mistake's forms (MistakeVariant)
 
     ReferenceShader(ReferenceShading s = ReferenceShading::Phong,
-                    std::optional<ShaderMistake> m = std::nullopt)
+                    std::optional<ShaderMistake> m = std::nullopt, int f = 0)
         : shading(s)
         , mistake(m)
+        , form(f)
     {
     }
-    bool makes(ShaderMistake m) const { return mistake == m; }
+    ReferenceShader(ReferenceShading s, MistakeVariant v)
+        : ReferenceShader(s, v.key, v.form)
+    {
+    }
+    bool makes(ShaderMistake m, int f = 0) const { return mistake == m && form == f; }
+    std::optional<MistakeVariant> variant() const
+    {
+        return mistake ? std::optional(MistakeVariant{*mistake, form}) : std::nullopt;
+    }
 };
 
 // As above, shaded with `shader` instead of exact Phong.

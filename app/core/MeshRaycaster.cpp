@@ -31,6 +31,7 @@ struct PreparedObject {
     std::shared_ptr<const MeshBvh> bvh; // Surface::Mesh: its triangles
     glm::dmat4 modelView{1.0};
     glm::dmat3 normalMatrix{1.0};
+    glm::dmat4 model{1.0};
     glm::dmat3 inverseLinear{1.0}; // camera-space directions -> object space
     glm::dvec3 eyeInObject{0.0};   // the camera-space origin in object space
     const Material *material = nullptr;
@@ -115,6 +116,7 @@ Result<> prepareObjects(const Scene &scene,
         const glm::dmat4 inverse = glm::inverse(matrices.modelView);
         p.modelView = matrices.modelView;
         p.normalMatrix = matrices.normalMatrix;
+        p.model = matrices.model;
         p.inverseLinear = glm::dmat3(inverse);
         p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
         p.material = &object.material;
@@ -257,6 +259,7 @@ Result<SceneHits> castSceneHits(const Scene &scene,
         SceneHits::Object &o = hits.objects[std::size_t(object.index)];
         o.modelView = object.modelView;
         o.normalMatrix = object.normalMatrix;
+        o.model = object.model;
         if (object.surface == Surface::Mesh)
             o.mesh = objectMeshes[std::size_t(object.index)];
     }

@@ -36,6 +36,30 @@ bool sameImage(const RgbImage &a, const RgbImage &b, const std::vector<std::uint
     return true;
 }
 
+// Best first, and one finding per key: its best form's. A key already named
+// (as a finding's key or beside it) is not named again.
+std::vector<MistakeFinding> bestFormOfEachKey(std::vector<MistakeFinding> findings)
+{
+    std::stable_sort(findings.begin(), findings.end(),
+                     [](const MistakeFinding &a, const MistakeFinding &b) {
+                         return a.confidence > b.confidence;
+                     });
+    std::vector<ShaderMistake> named;
+    const auto isNamed = [&](ShaderMistake key) {
+        return std::find(named.begin(), named.end(), key) != named.end();
+    };
+    std::vector<MistakeFinding> out;
+    for (MistakeFinding &finding : findings) {
+        if (isNamed(finding.key))
+            continue;
+        std::erase_if(finding.also, isNamed);
+        named.push_back(finding.key);
+        named.insert(named.end(), finding.also.begin(), finding.also.end());
+        out.push_back(std::move(finding));
+    }
+    return out;
+}
+
 } // namespace
 
 bool MistakeDiagnosis::unexplained() const
@@ -46,7 +70,7 @@ bool MistakeDiagnosis::unexplained() const
 
 MistakeDiagnosis diagnoseMistakes(
     const RgbImage &yours, const ReferenceImage &exact,
-    const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
+    const std::vector<std::pair<MistakeVariant, ReferenceImage>> &mistaken,
     const std::vector<std::uint8_t> &compared, int toleranceSteps, const glm::dvec3 &background)
 {
     MistakeImages images;
@@ -73,13 +97,15 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
 
     // Mistakes in ShaderMistake's order, so the first of a group of equal
     // images is the one named.
-    std::vector<std::pair<ShaderMistake, const RgbImage *>> images;
+    std::vector<std::pair<MistakeVariant, const RgbImage *>> images;
     for (const auto &[mistake, image] : mistaken)
         images.emplace_back(mistake, &image);
     std::sort(images.begin(), images.end(),
               [](const auto &a, const auto &b) { return a.first < b.first; });
 
     std::vector<bool> grouped(images.size(), false);
+    std::vector<ShaderMistake> detectable; // keys with a form that shows here
+    std::vector<MistakeFinding> findings;
     for (std::size_t m = 0; m < images.size(); ++m) {
         if (grouped[m])
             continue;
@@ -87,16 +113,21 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
         const std::vector<std::uint8_t> mistakeDiffers =
             differing(image, exact, compared, toleranceSteps);
         if (std::none_of(mistakeDiffers.begin(), mistakeDiffers.end(),
-                         [](std::uint8_t d) { return d != 0; })) {
-            diagnosis.undetectable.push_back(images[m].first);
+                         [](std::uint8_t d) { return d != 0; }))
             continue;
-        }
         MistakeFinding finding;
-        finding.key = images[m].first;
+        finding.key = images[m].first.key;
+        finding.form = images[m].first.form;
+        detectable.push_back(finding.key);
         for (std::size_t other = m + 1; other < images.size(); ++other) {
             if (!grouped[other] && sameImage(image, *images[other].second, compared)) {
                 grouped[other] = true;
-                finding.also.push_back(images[other].first);
+                const ShaderMistake key = images[other].first.key;
+                detectable.push_back(key);
+                if (key != finding.key
+                    && std::find(finding.also.begin(), finding.also.end(), key)
+                        == finding.also.end())
+                    finding.also.push_back(key);
             }
         }
         if (diagnosis.differingPixels == 0)
@@ -112,12 +143,15 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
         }
         finding.confidence = double(explained) / double(either);
         if (finding.confidence >= kMinListedConfidence)
-            diagnosis.findings.push_back(std::move(finding));
+            findings.push_back(std::move(finding));
     }
-    std::stable_sort(diagnosis.findings.begin(), diagnosis.findings.end(),
-                     [](const MistakeFinding &a, const MistakeFinding &b) {
-                         return a.confidence > b.confidence;
-                     });
+    for (const auto &[variant, image] : images)
+        if (std::find(detectable.begin(), detectable.end(), variant.key) == detectable.end()
+            && std::find(diagnosis.undetectable.begin(), diagnosis.undetectable.end(),
+                         variant.key)
+                == diagnosis.undetectable.end())
+            diagnosis.undetectable.push_back(variant.key);
+    diagnosis.findings = bestFormOfEachKey(std::move(findings));
     return diagnosis;
 }
 

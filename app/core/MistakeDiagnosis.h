@@ -16,6 +16,7 @@ namespace phonglab {
 
 struct MistakeFinding {
     ShaderMistake key = ShaderMistake::NormalMatrix;
+    int form = 0; // which of the key's forms explains it best (MistakeVariant)
     // Mistakes that give the same image in this scene (reflect-incident and
     // view-vector always do): named beside `key` rather than guessed between.
     std::vector<ShaderMistake> also;
@@ -26,7 +27,8 @@ struct MistakeDiagnosis {
     qint64 differingPixels = 0; // compared pixels off the exact image by more than the tolerance
     std::vector<MistakeFinding>
         findings; // best first; those explaining at least kMinListedConfidence
-    std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
+    // Mistakes every form of which gives the exact image here.
+    std::vector<ShaderMistake> undetectable;
     // Differs, and no mistake explains at least kExplainedConfidence of it
     // (`unknown`: the heatmap is the answer).
     bool unexplained() const;
@@ -40,17 +42,17 @@ inline constexpr double kMinListedConfidence = 0.1;
 // judge (1: compared; the silhouette band left out), one per pixel. A pixel
 // matches another within `toleranceSteps` 8-bit steps in every channel.
 // Where two mistakes give the same image, the one earlier in
-// ShaderMistake's order is `key`. A render of another size than the
+// ShaderMistake's order is `key`. A key has one finding, its best form's. A render of another size than the
 // reference differs everywhere and has no finding.
 MistakeDiagnosis diagnoseMistakes(
     const RgbImage &yours, const ReferenceImage &exact,
-    const std::vector<std::pair<ShaderMistake, ReferenceImage>> &mistaken,
+    const std::vector<std::pair<MistakeVariant, ReferenceImage>> &mistaken,
     const std::vector<std::uint8_t> &compared, int toleranceSteps, const glm::dvec3 &background);
 
 // The same on images already encoded as the GPU writes them
 // (ReferenceImage::toImage()), which is all the diagnosis looks at: what a
 // caller judging many renders against one reference keeps.
-using MistakeImages = std::vector<std::pair<ShaderMistake, RgbImage>>;
+using MistakeImages = std::vector<std::pair<MistakeVariant, RgbImage>>;
 MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
                                   const MistakeImages &mistaken,
                                   const std::vector<std::uint8_t> &compared, int toleranceSteps);

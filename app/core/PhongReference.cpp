@@ -26,19 +26,27 @@ enum class Specular {
 IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal,
                                const Material &material, const glm::dvec3 &ambient,
                                std::span<const CameraSpaceLight> lights, Specular model,
-                               std::optional<ShaderMistake> mistake = std::nullopt)
+                               std::optional<MistakeVariant> mistake = std::nullopt)
 {
-    const auto made = [&](ShaderMistake m) { return mistake == m; };
+    const auto made = [&](ShaderMistake m, int form = 0) {
+        return mistake == MistakeVariant{m, form};
+    };
     const glm::dvec3 N = made(ShaderMistake::Unnormalized) ? normal : glm::normalize(normal);
     // The eye is at the origin: V = normalize(-P).
     const glm::dvec3 V = glm::normalize(made(ShaderMistake::ViewVector) ? position : -position);
 
-    glm::dvec3 I = made(ShaderMistake::Ambient) ? glm::dvec3(0.0) : ambient * material.ka;
+    const bool ambientPerLight = made(ShaderMistake::Ambient, MistakeForm::AmbientPerLight);
+    glm::dvec3 I = made(ShaderMistake::Ambient) || ambientPerLight ? glm::dvec3(0.0)
+                                                                   : ambient * material.ka;
     glm::dvec3 S(0.0); // the specular part alone, summed beside I (I itself is unchanged)
     for (const CameraSpaceLight &light : lights) {
+        if (ambientPerLight)
+            I += ambient * material.ka;
         const glm::dvec3 toLight = light.position - position;
         const double d = glm::length(toLight);
-        const glm::dvec3 L = toLight / d;
+        const glm::dvec3 L =
+            made(ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized) ? toLight
+                                                                              : toLight / d;
         const double NdotL = glm::dot(N, L);
         // A light behind the surface gives no diffuse and no specular light.
         const bool behind = NdotL <= 0.0;
@@ -64,8 +72,11 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
         const double diffuseFactor = behind && !made(ShaderMistake::NegativeLight) ? 0.0 : NdotL;
         const glm::dvec3 diffuse = light.diffuse * material.kd * diffuseFactor;
         const glm::dvec3 specular = light.specular * material.ks * specularFactor;
-        const double attenuation =
-            made(ShaderMistake::Attenuation) ? 1.0 : attenuationFactor(light.attenuation, d);
+        const glm::dvec3 &c = light.attenuation;
+        const double attenuation = made(ShaderMistake::Attenuation) ? 1.0
+            : made(ShaderMistake::Attenuation, MistakeForm::Unclamped)
+            ? 1.0 / (c.x + c.y * d + c.z * d * d)
+            : attenuationFactor(light.attenuation, d);
         I += attenuation * (diffuse + specular);
         S += attenuation * specular;
     }
@@ -107,7 +118,7 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
                                      const Material &material, const glm::dvec3 &ambient,
                                      std::span<const CameraSpaceLight> lights,
-                                     ShaderMistake mistake)
+                                     MistakeVariant mistake)
 {
     return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay,
                         mistake);

@@ -70,12 +70,14 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 // pointwise mistakes (isPointwiseMistake()): N left unnormalised,
 // reflect(L, N), V = normalize(P), no f_att, no max(0, N·L) (the diffuse
 // term goes negative behind the surface), a highlight where N·L <= 0, no
-// ambient term. For the other mistakes the inputs differ, not the
-// equation: this returns phongTerms() of the inputs it is given.
+// ambient term; and their other forms (MistakeForm): L left unnormalised,
+// f_att unclamped, Ia·ka added once per light. For the other mistakes the
+// inputs differ, not the equation: this returns phongTerms() of the inputs
+// it is given.
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
                                      const Material &material, const glm::dvec3 &ambient,
                                      std::span<const CameraSpaceLight> lights,
-                                     ShaderMistake mistake);
+                                     MistakeVariant mistake);
 
 // The normals view (shaders/normals.frag): the unit camera-space normal as a
 // colour, 0.5·N + 0.5 per channel. No lighting.

@@ -20,6 +20,25 @@ ReferenceSample shadeReferenceSample(const glm::dvec3 &position, const glm::dvec
     return {terms.intensity, terms.specular};
 }
 
+namespace {
+
+// N as the vertex shader moves it, rightly or in one of the mistakes' forms.
+glm::dvec3 movedNormal(const ObjectSpaceHit &hit, const ReferenceShader &shader)
+{
+    const glm::dmat3 modelView(hit.modelView);
+    if (shader.makes(ShaderMistake::NormalMatrix))
+        return modelView * hit.normal;
+    if (shader.makes(ShaderMistake::NormalMatrix, MistakeForm::NormalByModel))
+        return glm::dmat3(hit.model) * hit.normal;
+    if (shader.makes(ShaderMistake::NormalMatrix, MistakeForm::NormalByTranspose))
+        return glm::transpose(modelView) * hit.normal;
+    if (shader.makes(ShaderMistake::HomogeneousW, MistakeForm::NormalWithW1))
+        return glm::dvec3(hit.modelView * glm::dvec4(hit.normal, 1.0));
+    return hit.normalMatrix * hit.normal;
+}
+
+} // namespace
+
 ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &material,
                                   const glm::dvec3 &ambient,
                                   std::span<const CameraSpaceLight> lights,
@@ -27,13 +46,20 @@ ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &mat
 {
     const double w = shader.makes(ShaderMistake::HomogeneousW) ? 0.0 : 1.0;
     const glm::dvec3 position = glm::dvec3(hit.modelView * glm::dvec4(hit.point, w));
-    const glm::dvec3 normal = shader.makes(ShaderMistake::NormalMatrix)
-        ? glm::dmat3(hit.modelView) * hit.normal
-        : hit.normalMatrix * hit.normal;
+    const glm::dvec3 normal = movedNormal(hit, shader);
+    // Lights moved by the model-view matrix: enabledCameraSpaceLights() left
+    // them in world coordinates, and each object moves them by its own.
+    std::vector<CameraSpaceLight> moved;
+    if (shader.makes(ShaderMistake::LightSpace, MistakeForm::LightByModelView)) {
+        moved.assign(lights.begin(), lights.end());
+        for (CameraSpaceLight &light : moved)
+            light.position = glm::dvec3(hit.modelView * glm::dvec4(light.position, 1.0));
+        lights = moved;
+    }
     if (shader.shading == ReferenceShading::Phong && shader.mistake
         && isPointwiseMistake(*shader.mistake)) {
         const IlluminationTerms terms =
-            mistakenPhongTerms(position, normal, material, ambient, lights, *shader.mistake);
+            mistakenPhongTerms(position, normal, material, ambient, lights, *shader.variant());
         return {terms.intensity, terms.specular};
     }
     return shadeReferenceSample(position, normal, material, ambient, lights, shader.shading);
@@ -42,13 +68,20 @@ ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &mat
 std::vector<CameraSpaceLight> enabledCameraSpaceLights(const Scene &scene,
                                                        const ReferenceShader &shader)
 {
-    const glm::dmat4 view =
-        shader.makes(ShaderMistake::LightSpace) ? glm::dmat4(1.0) : scene.camera.viewMatrix();
+    const bool inWorld = shader.makes(ShaderMistake::LightSpace)
+        || shader.makes(ShaderMistake::LightSpace, MistakeForm::LightByModelView);
+    const glm::dmat4 view = inWorld ? glm::dmat4(1.0) : scene.camera.viewMatrix();
+    const bool asDirection = shader.makes(ShaderMistake::HomogeneousW, MistakeForm::LightWithW0);
     std::vector<CameraSpaceLight> lights;
     lights.reserve(scene.lights.size());
-    for (const PointLight &light : scene.lights)
-        if (light.enabled)
-            lights.push_back(toCameraSpace(light, view));
+    for (const PointLight &light : scene.lights) {
+        if (!light.enabled)
+            continue;
+        CameraSpaceLight moved = toCameraSpace(light, view);
+        if (asDirection)
+            moved.position = glm::dvec3(view * glm::dvec4(light.position, 0.0));
+        lights.push_back(moved);
+    }
     return lights;
 }
 

@@ -38,12 +38,15 @@ struct ObjectSpaceHit {
     glm::dvec3 normal{0.0, 0.0, 1.0};
     const glm::dmat4 &modelView;
     const glm::dmat3 &normalMatrix; // inverse transpose of modelView's upper 3×3
+    const glm::dmat4 &model;        // for the mistake of moving N by the model matrix alone
 };
 
 // Moves a hit into camera space as the vertex shader does (P = MV·(p, 1),
 // N = normal matrix · n) and shades it there; with `shader.mistake` the
-// transforms and the equation are the mistaken ones (normal-matrix: N =
-// MV·(n, 0); homogeneous-w: P = MV·(p, 0)). The one function both
+// transforms and the equation are the mistaken ones, in the form
+// `shader.form` says (normal-matrix: N = MV·(n, 0), M·(n, 0) or MVᵀ·n;
+// homogeneous-w: P = MV·(p, 0), or N = MV·(n, 1); light-space by the
+// model-view matrix: each light moved by the hit's MV). The one function both
 // ray-casters shade with.
 ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &material,
                                   const glm::dvec3 &ambient,

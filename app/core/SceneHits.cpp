@@ -21,7 +21,7 @@ ReferenceSample shadeVertices(const SceneHits::Object &object, const ReferenceHi
         const std::uint32_t v = mesh.indices[base + std::size_t(k)];
         const ReferenceSample vertex =
             shadeReferenceHit({glm::dvec3(mesh.positions[v]), glm::dvec3(mesh.normals[v]),
-                               object.modelView, object.normalMatrix},
+                               object.modelView, object.normalMatrix, object.model},
                               material, ambient, lights, ReferenceShading::Phong);
         out.color += hit.barycentric[k] * vertex.color;
         out.specular += hit.barycentric[k] * vertex.specular;
@@ -63,7 +63,7 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
         [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
             if (shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0)
                 return shadeVertices(object, hit, material, scene.ambient, lights);
-            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix},
+            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix, object.model},
                                      material, scene.ambient, lights, shader);
         });
 }
@@ -76,11 +76,11 @@ ReferenceImage shadeSceneFaces(const SceneHits &hits, const Scene &scene)
         [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
             if (!object.mesh || hit.triangle < 0)
                 return shadeReferenceHit(
-                    {hit.point, hit.normal, object.modelView, object.normalMatrix}, material,
+                    {hit.point, hit.normal, object.modelView, object.normalMatrix, object.model}, material,
                     scene.ambient, lights, ReferenceShader());
             const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
             return shadeReferenceHit(
-                {face.centroid, face.normal, object.modelView, object.normalMatrix}, material,
+                {face.centroid, face.normal, object.modelView, object.normalMatrix, object.model}, material,
                 scene.ambient, lights, ReferenceShader());
         });
 }

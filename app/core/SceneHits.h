@@ -33,6 +33,7 @@ struct SceneHits {
     struct Object {
         glm::dmat4 modelView{1.0};
         glm::dmat3 normalMatrix{1.0};
+        glm::dmat4 model{1.0};
         std::shared_ptr<const MeshData> mesh; // null for an analytic surface
     };
     int width = 0;

@@ -8,18 +8,6 @@
 
 namespace phonglab {
 
-namespace {
-
-std::vector<ShaderMistake> allMistakes()
-{
-    std::vector<ShaderMistake> out;
-    for (const QString &key : shaderMistakeKeys())
-        out.push_back(*shaderMistakeFromKey(key));
-    return out;
-}
-
-} // namespace
-
 Result<CheckReference> makeCheckReference(
     const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
     int height, const std::function<bool(double)> &progress)
@@ -41,14 +29,15 @@ Result<CheckReference> makeCheckReference(
     for (std::size_t i = 0; i < out.compared.size(); ++i)
         out.compared[i] = out.compared[i] && out.exact.coverage[i];
     if (out.shader.shading == ReferenceShading::Phong) {
-        const std::vector<ShaderMistake> mistakes = allMistakes();
-        for (std::size_t m = 0; m < mistakes.size(); ++m) {
-            if (progress && !progress(0.7 + 0.3 * double(m) / double(mistakes.size())))
+        // Every form of every mistake, each its own image (issue 30, E).
+        const std::vector<MistakeVariant> variants = allMistakeVariants();
+        for (std::size_t m = 0; m < variants.size(); ++m) {
+            if (progress && !progress(0.7 + 0.3 * double(m) / double(variants.size())))
                 return fail(QStringLiteral("cancelled"));
-            const ReferenceShader shader(ReferenceShading::Phong, mistakes[m]);
+            const ReferenceShader shader(ReferenceShading::Phong, variants[m]);
             ReferenceImage image = shadeSceneHits(*hits, scene, shader);
-            out.mistaken.emplace_back(mistakes[m], image.toImage(out.background));
-            if (mistakes[m] == ShaderMistake::BackfaceSpecular)
+            out.mistaken.emplace_back(variants[m], image.toImage(out.background));
+            if (variants[m].key == ShaderMistake::BackfaceSpecular)
                 out.slide = std::move(image);
         }
     }
@@ -80,11 +69,15 @@ JudgedAgainst judgedAgainst(const CheckReference &reference, PhongEquation equat
 {
     if (equation == PhongEquation::Guarded || reference.slide.color.empty())
         return {&reference.exact, reference.exactImage, reference.mistaken};
-    JudgedAgainst out{&reference.slide, reference.slide.toImage(reference.background),
-                      reference.mistaken};
-    for (auto &[mistake, image] : out.mistaken)
-        if (mistake == ShaderMistake::BackfaceSpecular)
-            image = reference.exactImage;
+    JudgedAgainst out{&reference.slide, reference.slide.toImage(reference.background), {}};
+    for (const auto &[mistake, image] : reference.mistaken) {
+        if (mistake.key == ShaderMistake::BackfaceSpecular)
+            out.mistaken.emplace_back(mistake, reference.exactImage);
+        // A form that gives the guarded image here (f_att unclamped where it
+        // never exceeds 1) would pass for the guarded equation as well.
+        else if (!(image == reference.exactImage))
+            out.mistaken.emplace_back(mistake, image);
+    }
     return out;
 }
 
@@ -202,7 +195,7 @@ QString checkStatusLine(const CheckReport &report)
         return QStringLiteral("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
     const MistakeFinding &top = d.findings.front();
     QString line = QStringLiteral("✗ %1 — %2: %3")
-                       .arg(psnr, shaderMistakeKey(top.key), shaderMistakeSummary(top.key));
+                       .arg(psnr, shaderMistakeKey(top.key), mistakeFormSummary({top.key, top.form}));
     for (ShaderMistake m : top.also)
         line += QStringLiteral(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
     return line;
@@ -228,10 +221,10 @@ QString checkSummary(const CheckReport &report)
         QStringList keys{shaderMistakeKey(top.key)};
         for (ShaderMistake m : top.also)
             keys << shaderMistakeKey(m);
-        line += QStringLiteral(" — %1 (%2 %): %3")
+        line += QStringLiteral(" — %1 (%2 %, %3): %4")
                     .arg(keys.join(QStringLiteral(" or ")))
                     .arg(qRound(100.0 * top.confidence))
-                    .arg(shaderMistakeRule(top.key));
+                    .arg(mistakeFormSummary({top.key, top.form}), shaderMistakeRule(top.key));
     }
     return line;
 }

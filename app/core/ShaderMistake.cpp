@@ -26,17 +26,20 @@ constexpr std::array kRules = {
     std::pair{
         ShaderMistake::NormalMatrix,
         "the normal N: it must be transformed by the inverse transpose of the model-view matrix, "
-        "not by the model-view or model matrix (which bends it under non-uniform scale)"},
+        "not by the model-view or model matrix, nor by a transpose without the inverse (which "
+        "bends it under non-uniform scale)"},
     std::pair{ShaderMistake::Unnormalized,
               "the normal N: it must be normalised in the fragment shader, after interpolation has "
               "shortened it (and L and V must be unit length too)"},
     std::pair{ShaderMistake::LightSpace,
               "the light vector L: the light is placed in world coordinates and must be moved into "
-              "camera coordinates by the view matrix before L = light - P"},
+              "camera coordinates by the view matrix (not left as it is, nor moved by the "
+              "model-view matrix) before L = light - P"},
     std::pair{
         ShaderMistake::HomogeneousW,
-        "the position P: a point is transformed with w = 1 (a direction with w = 0); with w = 0 "
-        "the translation is lost"},
+        "points and directions: a point (the position P, the light's position) is transformed "
+        "with w = 1, a direction (the normal) with w = 0; a point with w = 0 loses the "
+        "translation, a direction with w = 1 gains it"},
     std::pair{
         ShaderMistake::ReflectIncident,
         "the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which "
@@ -48,7 +51,8 @@ constexpr std::array kRules = {
     std::pair{
         ShaderMistake::Attenuation,
         "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's diffuse "
-        "and specular parts, with d the distance from the surface to the light"},
+        "and specular parts, with d the distance from the surface to the light, and never "
+        "exceed 1"},
     std::pair{
         ShaderMistake::NegativeLight,
         "the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds "
@@ -76,6 +80,28 @@ constexpr std::array kSummaries = {
     std::pair{ShaderMistake::BackfaceSpecular, "a highlight where N·L <= 0"},
     std::pair{ShaderMistake::Ambient, "Ia·ka missing or wrong"},
     std::pair{ShaderMistake::Gouraud, "lit per vertex, not per fragment"},
+};
+
+struct Form {
+    MistakeVariant variant;
+    const char *summary;
+};
+// Every form, form 0 of each key included (its summary is kSummaries').
+constexpr std::array kForms = {
+    Form{{ShaderMistake::NormalMatrix, MistakeForm::NormalByModel},
+         "N moved by the model matrix alone"},
+    Form{{ShaderMistake::NormalMatrix, MistakeForm::NormalByTranspose},
+         "N moved by the transpose of the model-view matrix, without the inverse"},
+    Form{{ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized}, "L not normalised"},
+    Form{{ShaderMistake::LightSpace, MistakeForm::LightByModelView},
+         "the light moved by the model-view matrix, not the view matrix"},
+    Form{{ShaderMistake::HomogeneousW, MistakeForm::LightWithW0},
+         "the light's position moved with w = 0"},
+    Form{{ShaderMistake::HomogeneousW, MistakeForm::NormalWithW1},
+         "the normal, a direction, moved with w = 1"},
+    Form{{ShaderMistake::Attenuation, MistakeForm::Unclamped},
+         "f_att not clamped with min(..., 1)"},
+    Form{{ShaderMistake::Ambient, MistakeForm::AmbientPerLight}, "Ia·ka added once per light"},
 };
 
 QString textOf(const auto &table, ShaderMistake mistake)
@@ -110,6 +136,37 @@ QString shaderMistakeRule(ShaderMistake mistake)
 QString shaderMistakeSummary(ShaderMistake mistake)
 {
     return textOf(kSummaries, mistake);
+}
+
+int mistakeFormCount(ShaderMistake key)
+{
+    int forms = 1;
+    for (const Form &f : kForms)
+        forms += f.variant.key == key ? 1 : 0;
+    return forms;
+}
+
+std::vector<MistakeVariant> allMistakeVariants()
+{
+    std::vector<MistakeVariant> out;
+    for (const auto &[key, name] : kKeys)
+        for (int form = 0; form < mistakeFormCount(key); ++form)
+            out.push_back({key, form});
+    return out;
+}
+
+QString mistakeFormSummary(MistakeVariant variant)
+{
+    for (const Form &f : kForms)
+        if (f.variant == variant)
+            return QString::fromUtf8(f.summary);
+    return shaderMistakeSummary(variant.key);
+}
+
+QString mistakeVariantName(MistakeVariant variant)
+{
+    const QString key = shaderMistakeKey(variant.key);
+    return variant.form == 0 ? key : QStringLiteral("%1/%2").arg(key).arg(variant.form);
 }
 
 bool isPointwiseMistake(ShaderMistake mistake)

@@ -3,6 +3,7 @@
 #include <QStringList>
 
 #include <optional>
+#include <vector>
 
 namespace phonglab {
 
@@ -22,6 +23,37 @@ enum class ShaderMistake {
     Ambient,          // "ambient": Ia·ka left out
     Gouraud,          // "gouraud": the equation evaluated per vertex and interpolated
 };
+
+// One way of breaking a mistake's rule (issue 30, E): students break a rule
+// in more than one place, and each place gives an image of its own, named
+// under the same key. Form 0 is the classic one (what the key alone meant
+// before); the others are in MistakeForm.
+struct MistakeVariant {
+    ShaderMistake key = ShaderMistake::NormalMatrix;
+    int form = 0;
+
+    auto operator<=>(const MistakeVariant &) const = default;
+};
+
+// The forms beyond 0, by key.
+namespace MistakeForm {
+inline constexpr int NormalByModel = 1;     // normal-matrix: the model matrix alone
+inline constexpr int NormalByTranspose = 2; // normal-matrix: transpose(MV), no inverse
+inline constexpr int LightUnnormalized = 1; // unnormalized: L = light - P, not normalised
+inline constexpr int LightByModelView = 1;  // light-space: moved by the model-view matrix
+inline constexpr int LightWithW0 = 1;       // homogeneous-w: the light's position with w = 0
+inline constexpr int NormalWithW1 = 2;      // homogeneous-w: N = (MV·(n, 1)).xyz
+inline constexpr int Unclamped = 1;         // attenuation: min(..., 1) left out
+inline constexpr int AmbientPerLight = 1;   // ambient: Ia·ka added once per light
+} // namespace MistakeForm
+
+int mistakeFormCount(ShaderMistake key);
+// Every key's forms, keys in the enum's order, forms in order.
+std::vector<MistakeVariant> allMistakeVariants();
+// The form in a few words ("the model matrix alone"), for a report.
+QString mistakeFormSummary(MistakeVariant variant);
+// "normal-matrix" for form 0, else "normal-matrix/2": a name for tables and logs.
+QString mistakeVariantName(MistakeVariant variant);
 
 QString shaderMistakeKey(ShaderMistake mistake);
 std::optional<ShaderMistake> shaderMistakeFromKey(const QString &key);

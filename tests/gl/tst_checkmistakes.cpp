@@ -104,6 +104,51 @@ private slots:
               qPrintable(table.join(QLatin1Char('\n'))));
     }
 
+    // Every form of every mistake (issue 30, E), on the check scene seen
+    // from a camera that turns (so that M and MV, MV and its transpose, a
+    // light moved with w = 0 and one left in world coordinates all differ)
+    // and with a second light whose c1 < 1 (so that f_att needs its
+    // min(..., 1)):
+    // each variant, made in GLSL as a student writes it, is named by its key
+    // first, and its form is one whose image it is.
+    void variantConfusionMatrix()
+    {
+        Scene scene = m_scene;
+        scene.camera.eye = glm::dvec3(2.2, 1.4, 3.4);
+        scene.lights[1].attenuation = glm::dvec3(0.6, 0.0, 0.0); // light 0 keeps c2 > 0
+        const CheckReference reference = makeTestCheckReference(scene);
+        QVERIFY_OK(m_offscreen.renderer().setScene(scene));
+        QStringList table{QStringLiteral("| made | found first | % | form found |"),
+                          QStringLiteral("|---|---|---|---|")};
+        QStringList failures;
+        for (const MistakeVariant &made : allMistakeVariants()) {
+            const QString name = mistakeVariantName(made);
+            const ShaderPair shaders = withMistake(made);
+            const CheckReport report =
+                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), reference,
+                            kDefaultCheckToleranceSteps, PhongEquation::Guarded);
+            if (report.passed() || report.diagnosis.findings.empty()) {
+                failures << name + QStringLiteral(": ") + checkSummary(report);
+                continue;
+            }
+            const MistakeFinding &top = report.diagnosis.findings.front();
+            const bool named = top.key == made.key
+                || std::find(top.also.begin(), top.also.end(), made.key) != top.also.end();
+            const bool alone = report.diagnosis.findings.size() < 2
+                || report.diagnosis.findings[1].confidence < top.confidence;
+            if (!named || top.confidence < kExplainedConfidence || !alone)
+                failures << name + QStringLiteral(": ") + checkSummary(report);
+            table << QStringLiteral("| %1 | %2 | %3 | %4 |")
+                         .arg(name, shaderMistakeKey(top.key))
+                         .arg(qRound(100.0 * top.confidence))
+                         .arg(mistakeFormSummary({top.key, top.form}));
+        }
+        QVERIFY_OK(m_offscreen.renderer().setScene(m_scene));
+        qInfo("every form of every mistake, check scene turned, %dx%d:\n%s", kCheckWidth,
+              kCheckHeight, qPrintable(table.join(QLatin1Char('\n'))));
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
+    }
+
     // The slide's equation taken literally (no N·L guard on the highlight)
     // passes by default and is named; demanding the guarded one fails it.
     void slideEquationPassesByDefault()

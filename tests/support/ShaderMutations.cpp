@@ -19,6 +19,49 @@ ShaderSource readShipped(const QString &fileName)
 
 // Replaces `from` (which must occur) by `to`, and names the result after
 // the mistake so diagnostics read "reflect-incident.frag:52: ...".
+void replace(ShaderSource &source, const char *from, const char *to, const QString &key);
+
+constexpr const char *kLightCam =
+    "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;";
+
+// The mistake's other forms (form 0 is withMistake(key)).
+void makeForm(ShaderPair &s, MistakeVariant v, const QString &name)
+{
+    using K = ShaderMistake;
+    namespace F = MistakeForm;
+    if (v == MistakeVariant{K::NormalMatrix, F::NormalByModel}) {
+        replace(s.vertex, "uniform mat3 normalMatrix;",
+                "uniform mat4 modelMatrix;\nuniform mat3 normalMatrix;", name);
+        replace(s.vertex, "normalCam = normalMatrix * normal;",
+                "normalCam = mat3(modelMatrix) * normal;", name);
+    } else if (v == MistakeVariant{K::NormalMatrix, F::NormalByTranspose}) {
+        replace(s.vertex, "normalCam = normalMatrix * normal;",
+                "normalCam = transpose(mat3(modelViewMatrix)) * normal;", name);
+    } else if (v == MistakeVariant{K::Unnormalized, F::LightUnnormalized}) {
+        replace(s.fragment, "vec3 L = toLight / d;", "vec3 L = toLight;", name);
+    } else if (v == MistakeVariant{K::LightSpace, F::LightByModelView}) {
+        replace(s.fragment, "uniform mat4 viewMatrix;",
+                "uniform mat4 viewMatrix;\nuniform mat4 modelViewMatrix;", name);
+        replace(s.fragment, kLightCam,
+                "vec3 lightCam = (modelViewMatrix * vec4(lightPosition[i], 1.0)).xyz;", name);
+    } else if (v == MistakeVariant{K::HomogeneousW, F::LightWithW0}) {
+        replace(s.fragment, kLightCam,
+                "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 0.0)).xyz;", name);
+    } else if (v == MistakeVariant{K::HomogeneousW, F::NormalWithW1}) {
+        replace(s.vertex, "normalCam = normalMatrix * normal;",
+                "normalCam = (modelViewMatrix * vec4(normal, 1.0)).xyz;", name);
+    } else if (v == MistakeVariant{K::Attenuation, F::Unclamped}) {
+        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);",
+                "float fatt = 1.0 / (c.x + c.y * d + c.z * d * d);", name);
+    } else if (v == MistakeVariant{K::Ambient, F::AmbientPerLight}) {
+        replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", name);
+        replace(s.fragment, "    for (int i = 0; i < lightCount; ++i) {\n",
+                "    for (int i = 0; i < lightCount; ++i) {\n        I += Ia * ka;\n", name);
+    } else {
+        qFatal("no mutation for %s", qPrintable(name));
+    }
+}
+
 void replace(ShaderSource &source, const char *from, const char *to, const QString &key)
 {
     if (!source.code.contains(from))
@@ -32,6 +75,15 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
 constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
 
 } // namespace
+
+ShaderPair withMistake(MistakeVariant variant)
+{
+    if (variant.form == 0)
+        return withMistake(variant.key);
+    ShaderPair s = shippedPhong();
+    makeForm(s, variant, mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-')));
+    return s;
+}
 
 ShaderPair shippedPhong()
 {

@@ -17,5 +17,8 @@ struct ShaderPair {
 
 ShaderPair shippedPhong();
 ShaderPair withMistake(ShaderMistake mistake);
+// The mistake in one of its forms (MistakeForm), as a student writes it;
+// form 0 is withMistake(key).
+ShaderPair withMistake(MistakeVariant variant);
 
 } // namespace phonglab::test

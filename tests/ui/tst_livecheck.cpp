@@ -69,7 +69,7 @@ private slots:
         const CheckReference &reference = *result.reference;
         const QImage mistaken = toQImage(
             std::find_if(reference.mistaken.begin(), reference.mistaken.end(), [](const auto &p) {
-                return p.first == ShaderMistake::ReflectIncident;
+                return p.first == MistakeVariant{ShaderMistake::ReflectIncident};
             })->second);
         const std::vector<int> errors = checkErrorSteps(toRgbImage(result.yours), reference);
         qint64 shows = 0, showsAndOff = 0, hidden = 0, hiddenAndExact = 0;

@@ -27,7 +27,7 @@ ReferenceImage render(const Scene &s, const ReferenceShader &shader)
 
 struct Setup {
     ReferenceImage exact;
-    std::vector<std::pair<ShaderMistake, ReferenceImage>> mistaken;
+    std::vector<std::pair<MistakeVariant, ReferenceImage>> mistaken;
     std::vector<std::uint8_t> compared; // covered pixels
 };
 
@@ -37,7 +37,7 @@ Setup setup(const Scene &s)
     out.exact = render(s, ReferenceShading::Phong);
     for (const QString &key : shaderMistakeKeys()) {
         const ShaderMistake m = *shaderMistakeFromKey(key);
-        out.mistaken.emplace_back(m, render(s, {ReferenceShading::Phong, m}));
+        out.mistaken.emplace_back(MistakeVariant{m}, render(s, {ReferenceShading::Phong, m}));
     }
     out.compared = out.exact.coverage;
     return out;
@@ -82,7 +82,7 @@ private slots:
         QFETCH(QString, key);
         const ShaderMistake mistake = *shaderMistakeFromKey(key);
         const auto made = std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(),
-                                       [&](const auto &entry) { return entry.first == mistake; });
+                                       [&](const auto &entry) { return entry.first.key == mistake; });
         const MistakeDiagnosis d = diagnose(m_setup, made->second.toImage(kBackground));
         QVERIFY(d.differingPixels > 0);
         QVERIFY(!d.findings.empty());
@@ -104,7 +104,7 @@ private slots:
     {
         const auto made =
             std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(), [](const auto &entry) {
-                return entry.first == ShaderMistake::ViewVector;
+                return entry.first.key == ShaderMistake::ViewVector;
             });
         const MistakeDiagnosis d = diagnose(m_setup, made->second.toImage(kBackground));
         QCOMPARE(d.findings.front().key, ShaderMistake::ReflectIncident);

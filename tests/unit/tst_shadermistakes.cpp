@@ -6,6 +6,7 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
 
 using namespace phonglab;
@@ -40,9 +41,10 @@ double exact(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &l
 }
 
 double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &light,
-                ShaderMistake mistake)
+                ShaderMistake mistake, int form = 0)
 {
-    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, mistake).intensity.x;
+    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, {mistake, form})
+        .intensity.x;
 }
 
 // A surface facing the eye 5 units away, lit at 53° from its normal:
@@ -105,6 +107,55 @@ private slots:
                  kAmbientPart + (kDiffusePart + kSpecularPart) * 2.0 / 3.0);
         QCOMPARE(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation),
                  kAmbientPart + kDiffusePart + kSpecularPart);
+    }
+
+    // The other forms of the pointwise mistakes (issue 30, E).
+    void lightVectorUnnormalized()
+    {
+        // L = light - P = (3, 0, 4): N·L = 4, R = (-3, 0, 4), R·V = 4.
+        QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Unnormalized,
+                          MistakeForm::LightUnnormalized),
+                 kAmbientPart + 0.5 * 4.0 + 0.4 * 16.0);
+    }
+
+    void attenuationUnclamped()
+    {
+        // c1 = 0.5: 1 / c1 = 2, which min(..., 1) brings back to 1.
+        const CameraSpaceLight light = lightAt(kLitFrom, {0.5, 0.0, 0.0});
+        QCOMPARE(exact(kFacing, kUp, light), kAmbientPart + kDiffusePart + kSpecularPart);
+        QCOMPARE(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation, MistakeForm::Unclamped),
+                 kAmbientPart + 2.0 * (kDiffusePart + kSpecularPart));
+    }
+
+    void ambientOncePerLight()
+    {
+        const std::array lights{lightAt(kLitFrom), lightAt(kLitFrom)};
+        const double twice =
+            mistakenPhongTerms(kFacing, kUp, material(), kAmbient, lights,
+                               {ShaderMistake::Ambient, MistakeForm::AmbientPerLight})
+                .intensity.x;
+        QCOMPARE(twice, 2.0 * kAmbientPart + 2.0 * (kDiffusePart + kSpecularPart));
+        QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient,
+                          MistakeForm::AmbientPerLight),
+                 exact(kFacing, kUp, lightAt(kLitFrom))); // one light: the same image
+    }
+
+    void variantsHaveNames()
+    {
+        QStringList names;
+        for (const MistakeVariant &v : allMistakeVariants()) {
+            QVERIFY(!mistakeFormSummary(v).isEmpty());
+            names << mistakeVariantName(v);
+        }
+        names.removeDuplicates();
+        QCOMPARE(qsizetype(names.size()), qsizetype(allMistakeVariants().size()));
+        QCOMPARE(mistakeFormCount(ShaderMistake::NormalMatrix), 3);
+        QCOMPARE(mistakeFormCount(ShaderMistake::HomogeneousW), 3);
+        QCOMPARE(mistakeFormCount(ShaderMistake::LightSpace), 2);
+        QCOMPARE(mistakeVariantName({ShaderMistake::NormalMatrix, 0}),
+                 QStringLiteral("normal-matrix"));
+        QCOMPARE(mistakeVariantName({ShaderMistake::NormalMatrix, 2}),
+                 QStringLiteral("normal-matrix/2"));
     }
 
     void ambientLeftOut()
