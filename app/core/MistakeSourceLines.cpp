@@ -27,7 +27,9 @@ std::vector<Pattern> patternsFor(ShaderMistake mistake)
     case ShaderMistake::NormalMatrix:
         return {{Stage::Vertex, R"(=.*\*.*\bnormal\b)"}, {Stage::Both, R"(\bnormalMatrix\b)"}};
     case ShaderMistake::Unnormalized:
-        return {{Stage::Fragment, R"(\bN\s*=)"}, {Stage::Fragment, R"(normalize\s*\()"}};
+        return {{Stage::Fragment, R"(\bN\s*=)"},
+                {Stage::Fragment, R"(\bL\s*=[^=])"},
+                {Stage::Fragment, R"(normalize\s*\()"}};
     case ShaderMistake::LightSpace: return {{Stage::Both, R"(\blightPosition\b)"}};
     case ShaderMistake::HomogeneousW: return {{Stage::Both, R"(\*\s*vec4\s*\()"}};
     case ShaderMistake::ReflectIncident: return {{Stage::Both, R"(\breflect\s*\()"}};

@@ -108,6 +108,7 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
     m_meshes = std::move(meshes);
     m_meshInfo = std::move(info);
     m_scene = scene;
+    m_program.setExplicitBindings(m_scene.bindings);
     m_pendingUniforms = scene.uniforms;
     m_pendingTriedProgram = 0;
     m_objectLevels.clear(); // each object starts at the level its first view allows
@@ -117,6 +118,7 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
 void Renderer::updateSceneParameters(const Scene &scene)
 {
     m_scene = scene;
+    m_program.setExplicitBindings(m_scene.bindings); // a "bound to" choice: uniforms only
 }
 
 BuildReport Renderer::loadShading(ShadingMethod method)
@@ -148,6 +150,7 @@ BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const Shader
 void Renderer::adoptProgram(GlProgram program)
 {
     const UniformSnapshot kept = m_program.snapshot();
+    m_program.setExplicitBindings(m_scene.bindings);
     m_program.adopt(std::move(program));
     m_program.restore(kept);
 }

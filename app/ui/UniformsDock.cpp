@@ -1,5 +1,7 @@
 #include "UniformsDock.h"
 
+#include "BindingChoice.h"
+
 #include "CurrentContext.h"
 
 #include "ShaderDock.h"
@@ -85,6 +87,7 @@ bool UniformsDock::readProgram(Program &program)
         activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
     program.values = shader.snapshot();
     program.bindings = shader.bindings();
+    program.explicitBindings = m_viewport->currentScene().bindings;
     return true;
 }
 
@@ -104,13 +107,19 @@ QStringList UniformsDock::layoutKey(const Program &program,
                                     const std::vector<UniformDeclaration> &declared)
 {
     QStringList key;
-    for (const ActiveUniformInfo &u : program.active)
-        key << QStringLiteral("%1 %2 %3 %4 %5")
-                   .arg(QString::fromUtf8(u.name))
+    for (const ActiveUniformInfo &u : program.active) {
+        const QString name = QString::fromUtf8(u.name);
+        const auto word = program.explicitBindings.find(name);
+        key << QStringLiteral("%1 %2 %3 %4 %5 %6")
+                   .arg(name)
                    .arg(u.type)
                    .arg(u.size)
                    .arg(u.isArray)
-                   .arg(int(uniformOwner(program.bindings.meaningOf(QString::fromUtf8(u.name)))));
+                   .arg(int(uniformOwner(program.bindings.meaningOf(name))))
+                   .arg(word == program.explicitBindings.end() ? QStringLiteral("-")
+                        : word->second                         ? bindingMeaningKey(*word->second)
+                                                               : kUnboundWord);
+    }
     for (const UniformDeclaration &d : declared)
         key << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8")
                    .arg(d.type, d.name)
@@ -146,7 +155,7 @@ bool UniformsDock::rebuild()
     clearRows();
     m_values = program.values;
     for (const ActiveUniformInfo &uniform : program.active)
-        addActive(uniform, program.bindings, declared);
+        addActive(uniform, program, declared);
     for (const UniformDeclaration &d : declared) {
         const bool active =
             std::any_of(program.active.begin(), program.active.end(),
@@ -169,13 +178,13 @@ void UniformsDock::clearRows()
     m_inactive.clear();
 }
 
-void UniformsDock::addActive(const ActiveUniformInfo &uniform, const ProgramBindings &bindings,
+void UniformsDock::addActive(const ActiveUniformInfo &uniform, const Program &program,
                              const std::vector<UniformDeclaration> &declared)
 {
     UniformRowSpec spec;
     spec.baseName = QString::fromUtf8(uniform.name);
     spec.type = uniform.type;
-    spec.owner = uniformOwner(bindings.meaningOf(spec.baseName));
+    spec.owner = uniformOwner(program.bindings.meaningOf(spec.baseName));
     spec.declaration = findDeclaration(declared, spec.baseName);
     for (int element = 0; element < uniform.size; ++element) {
         spec.element = uniform.isArray ? QStringLiteral("%1[%2]").arg(spec.baseName).arg(element)
@@ -183,12 +192,39 @@ void UniformsDock::addActive(const ActiveUniformInfo &uniform, const ProgramBind
         spec.value = m_values.find(spec.element.toUtf8());
         QWidget *row = createUniformRow(spec, m_contents);
         m_owners.insert(spec.element, spec.owner);
-        addRow(spec.element, spec.element, row);
+        QWidget *label = element == 0 ? labelWithChoice(spec.baseName, program) : nullptr;
+        addRow(spec.element, spec.element, row, label);
         if (spec.owner == UniformOwner::User)
             connectRow(row, spec.element);
     }
 }
 
+// The uniform's name over its "bound to" choice (BindingChoice).
+QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &program)
+{
+    const auto variable =
+        std::find_if(program.bindings.variables.begin(), program.bindings.variables.end(),
+                     [&](const VariableBinding &v) { return v.variable.name == name; });
+    if (variable == program.bindings.variables.end())
+        return nullptr;
+    auto *label = new QWidget(m_contents);
+    auto *layout = new QVBoxLayout(label);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(1);
+    layout->addWidget(new QLabel(name, label));
+    std::optional<std::optional<BindingMeaning>> word; // none: automatic
+    if (const auto it = program.explicitBindings.find(name); it != program.explicitBindings.end())
+        word = it->second;
+    auto *choice =
+        new BindingChoice(variable->variable, automaticMeaning(variable->variable), word, label);
+    layout->addWidget(choice);
+    connect(choice, &BindingChoice::chosen, this, [this, choice](const QString &variableName) {
+        m_viewport->setBindings(withBinding(m_viewport->currentScene().bindings, variableName,
+                                            choice->explicitBinding()));
+        scheduleRebuild(); // the rows follow once the next frame is drawn with it
+    });
+    return label;
+}
 void UniformsDock::addInactive(const UniformDeclaration &declaration)
 {
     auto *row = new QWidget(m_contents);
@@ -208,9 +244,13 @@ void UniformsDock::addInactive(const UniformDeclaration &declaration)
     addRow(declaration.name, declaration.name, row);
 }
 
-void UniformsDock::addRow(const QString &element, const QString &label, QWidget *row)
+void UniformsDock::addRow(const QString &element, const QString &label, QWidget *row,
+                          QWidget *labelWidget)
 {
-    m_form->addRow(label, row);
+    if (labelWidget)
+        m_form->addRow(labelWidget, row);
+    else
+        m_form->addRow(label, row);
     m_rows.insert(element, row);
     m_order.append(element);
 }

@@ -53,6 +53,7 @@ private:
         std::vector<ActiveUniformInfo> active;
         UniformSnapshot values;
         ProgramBindings bindings;
+        ExplicitBindings explicitBindings; // the scene's word
     };
 
     bool readProgram(Program &program);
@@ -60,10 +61,12 @@ private:
                                  const std::vector<UniformDeclaration> &declared);
     std::vector<UniformDeclaration> declarations() const;
     void clearRows();
-    void addActive(const ActiveUniformInfo &uniform, const ProgramBindings &bindings,
+    void addActive(const ActiveUniformInfo &uniform, const Program &program,
                    const std::vector<UniformDeclaration> &declared);
     void addInactive(const UniformDeclaration &declaration);
-    void addRow(const QString &element, const QString &label, QWidget *row);
+    void addRow(const QString &element, const QString &label, QWidget *row,
+                QWidget *labelWidget = nullptr);
+    QWidget *labelWithChoice(const QString &name, const Program &program);
     void connectRow(QWidget *row, const QString &element);
     void writeFloats(const QString &element, const QList<float> &values);
     void writeInt(const QString &element, int value);

@@ -295,6 +295,14 @@ void Viewport::setSceneParameters(const Scene &scene)
     emit sceneParametersChanged();
 }
 
+void Viewport::setBindings(const ExplicitBindings &bindings)
+{
+    m_scene.bindings = bindings;
+    m_parametersDirty = true;
+    requestFrame();
+    emit sceneParametersChanged();
+}
+
 UniformSnapshot Viewport::programSnapshot()
 {
     if (!m_renderReady)

@@ -127,6 +127,10 @@ public:
     // The current values of the program the view draws with (empty before
     // GL starts), read with the context taken back if it is lent.
     UniformSnapshot programSnapshot();
+    // The scene's explicit bindings (its "bindings"): the uniforms' new
+    // meanings apply from the next frame; vertex inputs keep theirs until
+    // the program is linked again.
+    void setBindings(const ExplicitBindings &bindings);
     // What each of that program's variables is bound to (core/ShaderBindings.h).
     const ProgramBindings &programBindings() { return m_renderer.program().bindings(); }
     // A white light at the eye that follows the camera: the one light not in

@@ -4,6 +4,7 @@
 // dock, changes the frame, survives a recompile; bad input is refused.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "ui/BindingChoice.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/ShaderDock.h"
@@ -53,6 +54,7 @@ private slots:
     void drivenUniformsAreReadOnly();
     void userUniformIsEditedAndKept();
     void userUniformIsSavedWithTheScene();
+    void boundToChoiceIsSavedWithTheScene();
     void badInputIsRefused();
     void optimisedAwayUniformIsFlagged();
     void colourIntAndBoolRows();
@@ -217,6 +219,56 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QCOMPARE(programValue("gain"), 1.5f);
     QVERIFY_OK(m_window->openScene(path));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
+}
+
+// Issue 30, B: the dock's "bound to" choice binds a uniform to a meaning
+// whatever its name, goes into the scene's "bindings", and comes back with it.
+void TestUniformsDock::boundToChoiceIsSavedWithTheScene()
+{
+    openWindow();
+    addGain();
+    auto *choice = dock()->findChild<BindingChoice *>(QStringLiteral("boundTo:gain"));
+    QVERIFY(choice);
+    QCOMPARE(choice->currentText(), QStringLiteral("automatic: your own"));
+    QVERIFY(choice->findData(QStringLiteral("kd")) < 0); // a float cannot hold kd
+    const int shininess = choice->findData(QStringLiteral("shininess"));
+    QVERIFY(shininess > 0);
+    choice->setCurrentIndex(shininess);
+    emit choice->activated(shininess);
+    const double n = viewport()->currentScene().objects.back().material.shininess;
+    QTRY_VERIFY(gainRow() && !gainRow()->isEnabled()); // set by the scene now
+    QTRY_COMPARE(programValue("gain"), float(n));
+    QCOMPARE(viewport()->currentScene().bindings.at(QStringLiteral("gain")),
+             std::optional(BindingMeaning::Shininess));
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bound.json"));
+    QVERIFY_OK(m_window->saveScene(path));
+    const SceneLoadResult saved = loadSceneFile(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error));
+    QCOMPARE(saved.scene->bindings.size(), std::size_t(1));
+    QCOMPARE(saved.scene->bindings.at(QStringLiteral("gain")),
+             std::optional(BindingMeaning::Shininess));
+    QVERIFY(!saved.scene->uniforms.contains(QStringLiteral("gain"))); // not the user's now
+
+    // A new window on the saved scene: the same choice, the same binding.
+    UiTestWindow::openWindow(path, {1000, 700});
+    QVERIFY(!QTest::currentTestFailed());
+    dock()->raise();
+    QTRY_VERIFY_WITH_TIMEOUT(
+        dock()->findChild<BindingChoice *>(QStringLiteral("boundTo:gain")) && gainRow(), 10000);
+    choice = dock()->findChild<BindingChoice *>(QStringLiteral("boundTo:gain"));
+    QCOMPARE(choice->currentData().toString(), QStringLiteral("shininess"));
+    QVERIFY(!gainRow()->isEnabled());
+    QTRY_COMPARE(programValue("gain"), float(n));
+
+    // Back to "your own": the dock edits it again, and the scene says so.
+    const int own = choice->findData(QStringLiteral("none"));
+    choice->setCurrentIndex(own);
+    emit choice->activated(own);
+    QTRY_VERIFY(gainRow() && gainRow()->isEnabled());
+    QCOMPARE(viewport()->currentScene().bindings.at(QStringLiteral("gain")),
+             std::optional<BindingMeaning>());
 }
 
 void TestUniformsDock::badInputIsRefused()
