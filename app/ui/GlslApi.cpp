@@ -152,7 +152,57 @@ const std::vector<GlslBuiltin> kBuiltins = {
      false},
     {"gl_Layer", "int", "Layer of a layered framebuffer to render to.", false},
     {"gl_MaxDrawBuffers", "const int", "Number of fragment outputs available.", false},
+    // GLSL ES 1.00 (WebGL 1) only: what texture() and out variables replaced
+    {"texture2D", "sampler2D sampler, vec2 P [, float bias]",
+     "GLSL ES 1.00: samples a 2D texture (texture() in later GLSL)."},
+    {"texture2DProj", "sampler2D sampler, vec3 P [, float bias]",
+     "GLSL ES 1.00: samples at P.xy / P.z."},
+    {"textureCube", "samplerCube sampler, vec3 P [, float bias]",
+     "GLSL ES 1.00: samples a cube map (texture() in later GLSL)."},
+    {"gl_FragColor", "vec4",
+     "GLSL ES 1.00 fragment shader output: the colour (an `out vec4` in later GLSL).", false},
+    {"gl_FragData", "vec4[]", "GLSL ES 1.00 fragment shader outputs, one per draw buffer.", false},
 };
+
+// What GLSL ES 1.00 has of the list above (its whole library is small).
+const QSet<QString> &es100Names()
+{
+    static const QSet<QString> names = [] {
+        QSet<QString> set;
+        for (const char *name :
+             {"radians", "degrees", "sin", "cos", "tan", "asin", "acos", "atan", "pow", "exp",
+              "log", "exp2", "log2", "sqrt", "inversesqrt", "abs", "sign", "floor", "ceil", "fract",
+              "mod", "min", "max", "clamp", "mix", "step", "smoothstep", "length", "distance",
+              "dot", "cross", "normalize", "faceforward", "reflect", "refract", "matrixCompMult",
+              "lessThan", "lessThanEqual", "greaterThan", "greaterThanEqual", "equal", "notEqual",
+              "any", "all", "not", "texture2D", "texture2DProj", "textureCube", "gl_Position",
+              "gl_PointSize", "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord", "gl_FragColor",
+              "gl_FragData", "gl_MaxDrawBuffers"})
+            set.insert(QString::fromLatin1(name));
+        return set;
+    }();
+    return names;
+}
+
+bool availableIn(const GlslBuiltin &builtin, ShaderDialect dialect)
+{
+    const QString name = QString::fromLatin1(builtin.name);
+    static const QSet<QString> es100Only{QStringLiteral("texture2D"),
+                                         QStringLiteral("texture2DProj"),
+                                         QStringLiteral("textureCube"),
+                                         QStringLiteral("gl_FragColor"),
+                                         QStringLiteral("gl_FragData")};
+    static const QSet<QString> desktopOnly{QStringLiteral("gl_ClipDistance"),
+                                           QStringLiteral("gl_PrimitiveID"),
+                                           QStringLiteral("gl_SampleID"),
+                                           QStringLiteral("gl_Layer")};
+    switch (dialect) {
+    case ShaderDialect::Es100: return es100Names().contains(name);
+    case ShaderDialect::Es300: return !es100Only.contains(name) && !desktopOnly.contains(name);
+    case ShaderDialect::Desktop: return !es100Only.contains(name);
+    }
+    return true;
+}
 
 const QSet<QString> &builtinNameSet()
 {
@@ -235,6 +285,16 @@ QStringList GlslApi::builtinNames()
     return names;
 }
 
+QStringList GlslApi::builtinNames(ShaderDialect dialect)
+{
+    QStringList names;
+    for (const GlslBuiltin &builtin : kBuiltins)
+        if (availableIn(builtin, dialect))
+            names << QString::fromLatin1(builtin.name);
+    names.sort();
+    return names;
+}
+
 QString GlslApi::callTip(const QString &name)
 {
     for (const GlslBuiltin &builtin : kBuiltins) {
@@ -298,7 +358,7 @@ void GlslApi::updateAutoCompletionList(const QStringList &context, QStringList &
                 list << word;
     };
     addMatching(m_declared);
-    addMatching(builtinNames());
+    addMatching(builtinNames(m_dialect));
     addMatching(keywords());
 }
 

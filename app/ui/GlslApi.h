@@ -1,4 +1,6 @@
 #pragma once
+#include "core/ShaderDialect.h"
+
 #include <Qsci/qsciabstractapis.h>
 
 #include <QStringList>
@@ -31,7 +33,14 @@ public:
     explicit GlslApi(QsciLexer *lexer);
 
     static const std::vector<GlslBuiltin> &builtins();
-    static QStringList builtinNames();
+    static QStringList builtinNames(); // of every dialect
+    // What the dialect has: GLSL ES 1.00 has texture2D and gl_FragColor, and
+    // no inverse(), transpose() or texture().
+    static QStringList builtinNames(ShaderDialect dialect);
+    // Completion offers the dialect's built-ins (ShaderEditor follows the
+    // text's #version line).
+    void setDialect(ShaderDialect dialect) { m_dialect = dialect; }
+    ShaderDialect dialect() const { return m_dialect; }
     // "reflect(genType I, genType N)" and its doc wrapped below it; empty for
     // names that are not built-in functions.
     static QString callTip(const QString &name);
@@ -52,6 +61,7 @@ private:
     QStringList keywords() const;
 
     QStringList m_declared;
+    ShaderDialect m_dialect = ShaderDialect::Desktop;
 };
 
 } // namespace phonglab

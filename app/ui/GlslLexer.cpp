@@ -3,6 +3,7 @@
 #include "GlslApi.h"
 
 #include <QFontDatabase>
+#include <array>
 
 namespace phonglab {
 
@@ -29,9 +30,27 @@ const char kKeywords[] =
     "image1D image2D image3D imageCube image2DRect imageBuffer image1DArray image2DArray "
     "iimage2D uimage2D";
 
-QByteArray builtinWords()
+// GLSL ES 1.00 (WebGL 1): attribute and varying, no uint, few samplers.
+const char kEs100Keywords[] =
+    "attribute const uniform varying break continue do for while if else discard return struct "
+    "in out inout true false lowp mediump highp precision invariant "
+    "void bool int float vec2 vec3 vec4 bvec2 bvec3 bvec4 ivec2 ivec3 ivec4 mat2 mat3 mat4 "
+    "sampler2D samplerCube";
+
+// GLSL ES 3.00 (WebGL 2): in/out and layout, no attribute/varying, no doubles.
+const char kEs300Keywords[] =
+    "const uniform layout centroid flat smooth invariant "
+    "break continue do for while switch case default if else discard return struct "
+    "in out inout true false lowp mediump highp precision "
+    "void bool int uint float vec2 vec3 vec4 ivec2 ivec3 ivec4 bvec2 bvec3 bvec4 uvec2 uvec3 "
+    "uvec4 mat2 mat3 mat4 mat2x2 mat2x3 mat2x4 mat3x2 mat3x3 mat3x4 mat4x2 mat4x3 mat4x4 "
+    "sampler2D sampler3D samplerCube sampler2DShadow samplerCubeShadow sampler2DArray "
+    "sampler2DArrayShadow isampler2D isampler3D isamplerCube isampler2DArray usampler2D "
+    "usampler3D usamplerCube usampler2DArray";
+
+QByteArray builtinWords(ShaderDialect dialect)
 {
-    return GlslApi::builtinNames().join(QLatin1Char(' ')).toLatin1();
+    return GlslApi::builtinNames(dialect).join(QLatin1Char(' ')).toLatin1();
 }
 
 bool isComment(int style)
@@ -56,10 +75,16 @@ GlslLexer::GlslLexer(QObject *parent)
 
 const char *GlslLexer::keywords(int set) const
 {
-    static const QByteArray builtins = builtinWords(); // must outlive the returned pointer
+    // Must outlive the returned pointers.
+    static const std::array<QByteArray, 3> builtins = {builtinWords(ShaderDialect::Desktop),
+                                                       builtinWords(ShaderDialect::Es300),
+                                                       builtinWords(ShaderDialect::Es100)};
     switch (set) {
-    case 1: return kKeywords;
-    case 2: return builtins.constData();
+    case 1:
+        return m_dialect == ShaderDialect::Es100 ? kEs100Keywords
+            : m_dialect == ShaderDialect::Es300  ? kEs300Keywords
+                                                 : kKeywords;
+    case 2: return builtins[std::size_t(m_dialect)].constData();
     default: return nullptr; // no doc-comment keywords, no global classes
     }
 }

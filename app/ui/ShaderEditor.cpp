@@ -216,7 +216,22 @@ void ShaderEditor::setCode(const QByteArray &code)
 void ShaderEditor::refreshDeclaredNames()
 {
     m_declarationTimer->stop();
-    m_api->setDeclaredNames(GlslApi::parseDeclaredNames(text()));
+    const QString code = text();
+    m_api->setDeclaredNames(GlslApi::parseDeclaredNames(code));
+    followDialect(shaderDialectOf(code.toUtf8()));
+}
+
+// Highlighting and completion follow the #version line: a WebGL 1 shader
+// sees attribute, varying, texture2D and gl_FragColor as GLSL's own words.
+void ShaderEditor::followDialect(ShaderDialect dialect)
+{
+    if (dialect == m_lexer->dialect())
+        return;
+    m_lexer->setDialect(dialect);
+    m_api->setDialect(dialect);
+    for (int set = 1; set <= 2; ++set) // Scintilla counts keyword sets from 0
+        SendScintilla(SCI_SETKEYWORDS, set - 1, m_lexer->keywords(set));
+    SendScintilla(SCI_COLOURISE, 0, -1);
 }
 
 void ShaderEditor::clearDiagnostics()

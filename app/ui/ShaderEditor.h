@@ -1,4 +1,5 @@
 #pragma once
+#include "core/ShaderDialect.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <Qsci/qsciscintilla.h>
@@ -65,6 +66,7 @@ public:
     void refreshDeclaredNames();
 
 private:
+    void followDialect(ShaderDialect dialect);
     double characterWidth() const;
     int textAreaOffset() const; // margins and padding left and right of the text
     void setUpAppearance();

@@ -100,6 +100,7 @@ private slots:
     void linkErrorsGoToFragmentEditor();
     void clickingADiagnosticMovesTheCursor();
     void completionOffersBuiltinsAndDeclaredNames();
+    void highlightingAndCompletionFollowTheDialect();
     void typingOpensCompletionList();
     void callTipExplainsIncidentVector();
     void declaredNamesCoverDeclarationForms();
@@ -309,6 +310,46 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     dock.editor(ShaderStage::Vertex)->getCursorPosition(&line, &index);
     QCOMPARE(line, 2);
     QCOMPARE(index, int(qstrlen("uniform vec3 kd;")));
+}
+
+// Issue 30, A: a WebGL 1 shader (no #version line) is GLSL ES 1.00, whose
+// own words are attribute, varying, texture2D and gl_FragColor; a WebGL 2
+// one (#version 300 es) has texture() and inverse(), and no attribute.
+void TestShaderEditor::highlightingAndCompletionFollowTheDialect()
+{
+    const auto completions = [](ShaderEditor &editor, const QString &prefix) {
+        QStringList list;
+        editor.api()->updateAutoCompletionList({prefix}, list);
+        return list;
+    };
+    ShaderEditor editor;
+    editor.setCode("precision mediump float;\n"
+                   "varying vec3 vNormal;\n"
+                   "void main() { gl_FragColor = vec4(normalize(vNormal), 1.0); }\n");
+    QCOMPARE(editor.glslLexer()->dialect(), ShaderDialect::Es100);
+    QCOMPARE(styleAt(editor, 1, 0), int(QsciLexerCPP::Keyword)); // "varying"
+    QCOMPARE(styleAt(editor, 2, 14), int(QsciLexerCPP::KeywordSet2)); // "gl_FragColor"
+    QVERIFY(completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture2D")));
+    QVERIFY(!completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture")));
+    QVERIFY(!completions(editor, QStringLiteral("inv")).contains(QStringLiteral("inverse")));
+    QVERIFY(completions(editor, QStringLiteral("attr")).contains(QStringLiteral("attribute")));
+
+    editor.setCode("#version 300 es\n"
+                   "precision mediump float;\n"
+                   "in vec3 vNormal;\n"
+                   "out vec4 color;\n"
+                   "void main() { color = texture(tex, vec2(0.0)); }\n");
+    QCOMPARE(editor.glslLexer()->dialect(), ShaderDialect::Es300);
+    QVERIFY(completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture")));
+    QVERIFY(!completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture2D")));
+    QVERIFY(completions(editor, QStringLiteral("inv")).contains(QStringLiteral("inverse")));
+    QVERIFY(!completions(editor, QStringLiteral("attr")).contains(QStringLiteral("attribute")));
+    QVERIFY(completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragCoord")));
+    QVERIFY(!completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragColor")));
+
+    editor.setCode(kSmallShader); // #version 330 core
+    QCOMPARE(editor.glslLexer()->dialect(), ShaderDialect::Desktop);
+    QVERIFY(!completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture2D")));
 }
 
 void TestShaderEditor::completionOffersBuiltinsAndDeclaredNames()
