@@ -264,7 +264,8 @@ int check(const CheckArgs &args, int argc, char **argv)
 
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
         const Result<> written =
-            writePng(toQImage(checkHeatmap(toRgbImage(yours), reference)), args.diffPath);
+            writePng(toQImage(checkHeatmap(toRgbImage(yours), reference, outcome.report.equation)),
+                     args.diffPath);
         if (!written) {
             outcome.verdict = CheckOutcome::Verdict::Error;
             outcome.errors = {inputError(args.diffPath, written.error())};

@@ -21,7 +21,8 @@ QString vec(const glm::dvec3 &v)
 } // namespace
 
 std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
-                                     ReferenceShading shading, int x, int y)
+                                     ReferenceShading shading, int x, int y,
+                                     PhongEquation equation)
 {
     if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
         return std::nullopt;
@@ -32,6 +33,7 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
     const Material &material = scene.objects[std::size_t(hit.object)].material;
     PixelTerms out;
     out.shading = shading;
+    out.equation = equation;
     out.x = x;
     out.y = y;
     out.object = hit.object;
@@ -65,11 +67,13 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
                                      : glm::dvec3(0.0); // none for a light straight behind
         t.NdotH = glm::dot(out.N, t.H);
         t.attenuation = attenuationFactor(cam.attenuation, t.distance);
-        if (t.NdotL > 0.0) {
+        const bool slide =
+            shading == ReferenceShading::Phong && equation == PhongEquation::Slide;
+        if (t.NdotL > 0.0 || slide) {
             const double factor = shading == ReferenceShading::BlinnPhong
                 ? std::pow(std::max(0.0, t.NdotH), kBlinnExponentFactor * material.shininess)
                 : std::pow(std::max(0.0, t.RdotV), material.shininess);
-            t.diffuse = t.attenuation * cam.diffuse * material.kd * t.NdotL;
+            t.diffuse = t.attenuation * cam.diffuse * material.kd * std::max(0.0, t.NdotL);
             t.specular = t.attenuation * cam.specular * material.ks * factor;
         }
         out.intensity += t.diffuse + t.specular;
@@ -82,8 +86,10 @@ QString PixelTerms::toText() const
 {
     QStringList lines;
     const QString equation = shading == ReferenceShading::BlinnPhong ? QStringLiteral("Blinn-Phong")
-        : shading == ReferenceShading::Normals ? QStringLiteral("normals view")
-                                               : QStringLiteral("Phong");
+        : shading == ReferenceShading::Normals                       ? QStringLiteral("normals view")
+        : this->equation == PhongEquation::Slide
+        ? QStringLiteral("Phong, the slide's equation (a highlight even where N·L <= 0)")
+        : QStringLiteral("Phong");
     lines
         << QStringLiteral("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
     lines << QStringLiteral("P world  %1").arg(vec(positionWorld));

@@ -1,4 +1,5 @@
 #pragma once
+#include "PhongEquation.h"
 #include "SceneHits.h"
 
 #include <QString>
@@ -29,6 +30,7 @@ struct LightTerms {
 
 struct PixelTerms {
     ReferenceShading shading = ReferenceShading::Phong; // the equation the terms are of
+    PhongEquation equation = PhongEquation::Guarded;    // ... and with Phong, which form
     int x = 0, y = 0;
     int object = -1;
     glm::dvec3 positionWorld{0.0};
@@ -46,8 +48,11 @@ struct PixelTerms {
 
 // Nullopt where pixel (x, y) shows no object. `shading` is the exact
 // equation of the view (CheckReference::shader): Phong, Blinn-Phong, or the
-// normals view, which lights nothing.
+// normals view, which lights nothing. With Phong, `equation` says which
+// form: the slide's keeps a light's highlight where N·L <= 0 (and no
+// diffuse light there).
 std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
-                                     ReferenceShading shading, int x, int y);
+                                     ReferenceShading shading, int x, int y,
+                                     PhongEquation equation = PhongEquation::Guarded);
 
 } // namespace phonglab

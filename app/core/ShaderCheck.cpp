@@ -133,20 +133,6 @@ CheckReport judge(const RgbImage &yours, const CheckReference &reference, int to
 
 } // namespace
 
-QString phongEquationKey(PhongEquation equation)
-{
-    return equation == PhongEquation::Slide ? QStringLiteral("slide") : QStringLiteral("guarded");
-}
-
-std::optional<PhongEquation> phongEquationFromKey(const QString &key)
-{
-    if (key == QLatin1StringView("slide"))
-        return PhongEquation::Slide;
-    if (key == QLatin1StringView("guarded"))
-        return PhongEquation::Guarded;
-    return std::nullopt;
-}
-
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
                         std::optional<PhongEquation> demanded)
 {
@@ -165,14 +151,16 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
     return report;
 }
 
-RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference)
+RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference,
+                      PhongEquation equation)
 {
-    return errorHeatmap(yours, reference.exact, 0, &reference.compared);
+    return errorHeatmap(yours, reference.exactOf(equation), 0, &reference.compared);
 }
 
-std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference)
+std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference,
+                                 PhongEquation equation)
 {
-    return errorSteps(yours, reference.exact, reference.compared);
+    return errorSteps(yours, reference.exactOf(equation), reference.compared);
 }
 
 namespace {
@@ -189,7 +177,10 @@ QString checkStatusLine(const CheckReport &report)
 {
     const QString psnr = psnrText(report.comparison);
     if (report.passed())
-        return QStringLiteral("✓ %1").arg(psnr);
+        return report.equation == PhongEquation::Slide
+            ? QStringLiteral("✓ %1 — the slide's equation (a highlight even where N·L <= 0)")
+                  .arg(psnr)
+            : QStringLiteral("✓ %1").arg(psnr);
     const MistakeDiagnosis &d = report.diagnosis;
     if (d.unexplained() || d.findings.empty())
         return QStringLiteral("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);

@@ -1,6 +1,7 @@
 #pragma once
 #include "ImageMetrics.h"
 #include "MistakeDiagnosis.h"
+#include "PhongEquation.h"
 #include "SceneHits.h"
 
 #include <functional>
@@ -16,16 +17,6 @@ namespace phonglab {
 
 inline constexpr int kDefaultCheckToleranceSteps = 2; // max error 2/255
 
-// The exercise's slide writes the specular term as max(0, R·V)^n with no
-// guard, so a light behind the surface can still paint a highlight; the
-// shipped shaders leave the highlight out where N·L <= 0. Both are right:
-// the check passes either unless one is demanded, and says which matched.
-enum class PhongEquation {
-    Guarded, // no highlight where N·L <= 0 (shaders/phong.frag)
-    Slide,   // the slide's equation taken literally
-};
-QString phongEquationKey(PhongEquation equation); // "guarded", "slide"
-std::optional<PhongEquation> phongEquationFromKey(const QString &key);
 inline constexpr int kCheckBandPx = 2;                // the render tests' silhouette band
 
 // Everything a check needs that depends on the scene and the size alone, not
@@ -47,6 +38,12 @@ struct CheckReference {
     std::vector<std::uint8_t> compared; // covered pixels away from every silhouette
     glm::dvec3 background{0.0};
     std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
+
+    // The exact image of `equation`: the slide's where there is one.
+    const ReferenceImage &exactOf(PhongEquation equation) const
+    {
+        return equation == PhongEquation::Slide && !slide.color.empty() ? slide : exact;
+    }
 };
 
 // Casts the scene once and shades it exactly and with every mistake. Every
@@ -85,11 +82,15 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
 // |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
 // from dark green (exact) through yellow to red (8/255 or more), the left-out
 // silhouette band dark blue, uncovered pixels black.
-RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference);
+// Against the exact image of `equation` (CheckReport::equation: the one the
+// render was judged by).
+RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference,
+                      PhongEquation equation = PhongEquation::Guarded);
 
 // The largest channel error of each pixel in 8-bit steps; -1 where the pixel
 // is not compared.
-std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference);
+std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &reference,
+                                 PhongEquation equation = PhongEquation::Guarded);
 
 // "✓ matches the exact image (PSNR 58.2 dB, max 1/255)" or
 // "✗ PSNR 21.4 dB, max 87/255, 12.0 % of pixels off — reflect-incident

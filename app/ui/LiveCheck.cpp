@@ -234,7 +234,8 @@ void LiveCheck::showInspected(QPointF fraction)
         std::clamp(int(std::floor(fraction.x() * r.yours.width())), 0, r.yours.width() - 1),
         std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));
     const std::optional<PixelTerms> terms =
-        pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y());
+        pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y(),
+                   r.report.equation);
     if (!terms) {
         m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
                                      .arg(pixel.x())

@@ -177,8 +177,15 @@ void ShaderChecker::start(Request request)
                 if (result.reference) {
                     const RgbImage yours = toRgbImage(result.yours);
                     result.report = checkRender(yours, *result.reference);
-                    result.exact = toQImage(result.reference->exactImage);
-                    result.heatmap = toQImage(checkHeatmap(yours, *result.reference));
+                    // The exact image of the equation the frame was judged by:
+                    // the slide's, for a shader that matched it.
+                    const PhongEquation equation = result.report.equation;
+                    result.exact =
+                        equation == PhongEquation::Guarded
+                        ? toQImage(result.reference->exactImage)
+                        : toQImage(result.reference->exactOf(equation).toImage(scene.background));
+                    result.heatmap =
+                        toQImage(checkHeatmap(yours, *result.reference, equation));
                 }
             } catch (
                 const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash

@@ -144,6 +144,41 @@ private slots:
         QVERIFY(check->lastResult()->report.passed());
     }
 
+    // Issue 30, C: the slide's equation taken literally (no N·L guard on
+    // the highlight) is right too; the window says which it matched, and its
+    // pictures are of that equation: the heatmap shows no error.
+    void slidesEquationGetsCheck()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        QVERIFY(waitForVerdict(true));
+        replaceInFragment(QStringLiteral("if (NdotL <= 0.0)"), QStringLiteral("if (false)"));
+        replaceInFragment(QStringLiteral("Id[i] * kd * NdotL"),
+                          QStringLiteral("Id[i] * kd * max(0.0, NdotL)"));
+        LiveCheck *check = m_window->liveCheck();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return !check->isChecking() && check->lastResult()
+                    && check->lastResult()->report.equation == PhongEquation::Slide;
+            },
+            kCheckTimeoutMs));
+        const CheckResult &result = *check->lastResult();
+        QVERIFY2(result.report.passed(), qPrintable(check->statusLabel()->text()));
+        QVERIFY2(check->statusLabel()->text().contains(QStringLiteral("slide")),
+                 qPrintable(check->statusLabel()->text()));
+        const std::vector<int> errors = checkErrorSteps(toRgbImage(result.yours),
+                                                        *result.reference, PhongEquation::Slide);
+        for (std::size_t i = 0; i < errors.size(); ++i) {
+            if (errors[i] < 0)
+                continue;
+            const int x = int(i) % result.heatmap.width(), y = int(i) / result.heatmap.width();
+            QVERIFY(errors[i] <= kTolerance);
+            QVERIFY(qRed(result.heatmap.pixel(x, y)) < 128); // no yellow or red anywhere
+        }
+        // The exact picture shown is the slide's: the frame matches it.
+        QCOMPARE(result.exact, toQImage(result.reference->slide.toImage(result.scene.background)));
+    }
+
     // Issue 30, D: the view's 4 samples blend each silhouette with the
     // background; a check of that frame said ✗ (57 dB) at first launch.
     void shippedScenesPassAsTheAppDraws_data()

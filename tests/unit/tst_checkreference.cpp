@@ -133,6 +133,31 @@ private slots:
         QVERIFY(centre && centre->toText().contains(QStringLiteral("f_att")));
     }
 
+    // The slide's equation (issue 30, C): its terms add up to its own image,
+    // which differs from the guarded one where a light behind leaves a
+    // highlight, and the text says which equation they are of.
+    void pixelTermsOfTheSlidesEquation()
+    {
+        int checked = 0, differing = 0;
+        for (int y = 0; y < kCheckHeight; y += 3) {
+            for (int x = 0; x < kCheckWidth; x += 3) {
+                const std::optional<PixelTerms> t = pixelTerms(
+                    m_reference.hits, m_scene, ReferenceShading::Phong, x, y, PhongEquation::Slide);
+                if (!t)
+                    continue;
+                ++checked;
+                QVERIFY(glm::length(t->intensity - m_reference.slide.colorAt(x, y)) < 1e-12);
+                differing += glm::length(t->intensity - m_reference.exact.colorAt(x, y)) > 1e-6;
+            }
+        }
+        QVERIFY(checked > 1000);
+        QVERIFY2(differing > 20, qPrintable(QString::number(differing)));
+        const std::optional<PixelTerms> centre =
+            pixelTerms(m_reference.hits, m_scene, ReferenceShading::Phong, kCheckWidth / 2,
+                       kCheckHeight / 2, PhongEquation::Slide);
+        QVERIFY(centre && centre->toText().contains(QStringLiteral("slide")));
+    }
+
     // For the other exact methods the terms are theirs: Blinn-Phong's with
     // the half vector, the normals view's colour.
     void pixelTermsFollowTheMethod_data()
