@@ -1,5 +1,6 @@
 #pragma once
 #include "Camera.h"
+#include "PhongEquation.h"
 #include "ReferenceImage.h"
 #include "Result.h"
 #include "Scene.h"
@@ -51,6 +52,10 @@ struct ReferenceShader {
     ReferenceShading shading = ReferenceShading::Phong;
     std::optional<ShaderMistake> mistake; // with Phong only
     int form = 0;                         // which of the mistake's forms (MistakeVariant)
+    // Phong's form: the slide's keeps a highlight where N·L <= 0 (what the
+    // backface-specular mistake makes of the guarded one); the mistake is
+    // then made in that equation.
+    PhongEquation equation = PhongEquation::Guarded;
 
     ReferenceShader(ReferenceShading s = ReferenceShading::Phong,
                     std::optional<ShaderMistake> m = std::nullopt, int f = 0)

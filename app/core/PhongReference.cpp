@@ -26,9 +26,14 @@ enum class Specular {
 IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &normal,
                                const Material &material, const glm::dvec3 &ambient,
                                std::span<const CameraSpaceLight> lights, Specular model,
-                               std::optional<MistakeVariant> mistake = std::nullopt)
+                               std::optional<MistakeVariant> mistake = std::nullopt,
+                               PhongEquation equation = PhongEquation::Guarded)
 {
     const auto made = [&](ShaderMistake m, int form = 0) {
+        // The slide's equation is the guarded one with backface-specular made.
+        if (m == ShaderMistake::BackfaceSpecular && form == 0
+            && equation == PhongEquation::Slide)
+            return true;
         return mistake == MistakeVariant{m, form};
     };
     const glm::dvec3 N = made(ShaderMistake::Unnormalized) ? normal : glm::normalize(normal);
@@ -118,10 +123,10 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
                                      const Material &material, const glm::dvec3 &ambient,
                                      std::span<const CameraSpaceLight> lights,
-                                     MistakeVariant mistake)
+                                     std::optional<MistakeVariant> mistake, PhongEquation equation)
 {
     return illumination(position, normal, material, ambient, lights, Specular::ReflectedRay,
-                        mistake);
+                        mistake, equation);
 }
 
 glm::dvec3 normalViewColor(const glm::dvec3 &normal)

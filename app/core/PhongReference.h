@@ -1,5 +1,6 @@
 #pragma once
 #include "Material.h"
+#include "PhongEquation.h"
 #include "PointLight.h"
 #include "ShaderMistake.h"
 
@@ -73,11 +74,13 @@ IlluminationTerms blinnPhongTerms(const glm::dvec3 &position, const glm::dvec3 &
 // ambient term; and their other forms (MistakeForm): L left unnormalised,
 // f_att unclamped, Ia·ka added once per light. For the other mistakes the
 // inputs differ, not the equation: this returns phongTerms() of the inputs
-// it is given.
+// it is given. With the slide's `equation` the highlight stays where
+// N·L <= 0, and the mistake (if any) is made in that equation.
 IlluminationTerms mistakenPhongTerms(const glm::dvec3 &position, const glm::dvec3 &normal,
                                      const Material &material, const glm::dvec3 &ambient,
                                      std::span<const CameraSpaceLight> lights,
-                                     MistakeVariant mistake);
+                                     std::optional<MistakeVariant> mistake,
+                                     PhongEquation equation = PhongEquation::Guarded);
 
 // The normals view (shaders/normals.frag): the unit camera-space normal as a
 // colour, 0.5·N + 0.5 per channel. No lighting.

@@ -56,10 +56,12 @@ ReferenceSample shadeReferenceHit(const ObjectSpaceHit &hit, const Material &mat
             light.position = glm::dvec3(hit.modelView * glm::dvec4(light.position, 1.0));
         lights = moved;
     }
-    if (shader.shading == ReferenceShading::Phong && shader.mistake
-        && isPointwiseMistake(*shader.mistake)) {
+    const bool pointwise = shader.mistake && isPointwiseMistake(*shader.mistake);
+    if (shader.shading == ReferenceShading::Phong
+        && (pointwise || shader.equation == PhongEquation::Slide)) {
         const IlluminationTerms terms =
-            mistakenPhongTerms(position, normal, material, ambient, lights, *shader.variant());
+            mistakenPhongTerms(position, normal, material, ambient, lights,
+                               pointwise ? shader.variant() : std::nullopt, shader.equation);
         return {terms.intensity, terms.specular};
     }
     return shadeReferenceSample(position, normal, material, ambient, lights, shader.shading);

@@ -18,6 +18,7 @@ Result<CheckReference> makeCheckReference(
     if (!hits)
         return fail(hits.error());
     CheckReference out;
+    out.scene = scene;
     out.shader = idealShadingFor(scene.shading);
     out.background = scene.background;
     out.exact = shadeSceneHits(*hits, scene, out.shader);
@@ -69,14 +70,26 @@ JudgedAgainst judgedAgainst(const CheckReference &reference, PhongEquation equat
 {
     if (equation == PhongEquation::Guarded || reference.slide.color.empty())
         return {&reference.exact, reference.exactImage, reference.mistaken};
-    JudgedAgainst out{&reference.slide, reference.slide.toImage(reference.background), {}};
-    for (const auto &[mistake, image] : reference.mistaken) {
-        if (mistake.key == ShaderMistake::BackfaceSpecular)
-            out.mistaken.emplace_back(mistake, reference.exactImage);
-        // A form that gives the guarded image here (f_att unclamped where it
-        // never exceeds 1) would pass for the guarded equation as well.
-        else if (!(image == reference.exactImage))
-            out.mistaken.emplace_back(mistake, image);
+    return {&reference.slide, reference.slide.toImage(reference.background), {}};
+}
+
+// Every mistake made in the slide's equation, as a student who writes the
+// slide's form makes it (the reference holds them in the guarded one only):
+// shaded from the kept hits when a render judged by the slide's equation
+// fails, which is rare enough not to keep them. Backface-specular's place
+// goes to the guarded equation: against the slide's, that is its mistake.
+MistakeImages slideMistakes(const CheckReference &reference)
+{
+    MistakeImages out;
+    for (const auto &[variant, image] : reference.mistaken) {
+        if (variant.key == ShaderMistake::BackfaceSpecular) {
+            out.emplace_back(variant, reference.exactImage);
+            continue;
+        }
+        ReferenceShader shader(ReferenceShading::Phong, variant);
+        shader.equation = PhongEquation::Slide;
+        out.emplace_back(variant, shadeSceneHits(reference.hits, reference.scene, shader)
+                                      .toImage(reference.background));
     }
     return out;
 }
@@ -102,7 +115,7 @@ std::vector<int> errorSteps(const RgbImage &yours, const ReferenceImage &exact,
 CheckReport judge(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
                   PhongEquation equation)
 {
-    const JudgedAgainst against = judgedAgainst(reference, equation);
+    JudgedAgainst against = judgedAgainst(reference, equation);
     CheckReport report;
     report.toleranceSteps = toleranceSteps;
     report.equation = equation;
@@ -118,16 +131,22 @@ CheckReport judge(const RgbImage &yours, const CheckReference &reference, int to
     }
     if (!report.comparable())
         return report;
+    // A pass at the default tolerance lists the reference's own undetectable
+    // mistakes: in the slide's equation they are the same ones.
+    if (report.passed() && toleranceSteps == kDefaultCheckToleranceSteps) {
+        report.diagnosis.undetectable = reference.undetectable;
+        return report;
+    }
+    if (against.exact == &reference.slide)
+        against.mistaken = slideMistakes(reference);
     if (!report.passed())
         report.diagnosis = diagnoseMistakes(yours, against.exactImage, against.mistaken,
                                             reference.compared, toleranceSteps);
-    else if (toleranceSteps != kDefaultCheckToleranceSteps || equation != PhongEquation::Guarded)
+    else
         report.diagnosis.undetectable =
             diagnoseMistakes(against.exactImage, against.exactImage, against.mistaken,
                              reference.compared, toleranceSteps)
                 .undetectable;
-    else
-        report.diagnosis.undetectable = reference.undetectable;
     return report;
 }
 
@@ -141,10 +160,17 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
     if (demanded || !report.comparable() || reference.slide.color.empty())
         return report;
     // Either equation is right: backface-specular is no mistake here. A
-    // render that matches neither is judged by the one it is closer to.
+    // render that matches neither is judged by the one in which a mistake
+    // explains it best (a student writing the slide's form makes the same
+    // mistakes in it), and where neither explains it better, by the one it
+    // is closer to.
     if (!report.passed()) {
         CheckReport slide = judge(yours, reference, toleranceSteps, PhongEquation::Slide);
-        if (slide.passed() || slide.badPixels < report.badPixels)
+        const auto explained = [](const CheckReport &r) {
+            return r.diagnosis.findings.empty() ? 0.0 : r.diagnosis.findings.front().confidence;
+        };
+        if (slide.passed() || explained(slide) > explained(report)
+            || (explained(slide) == explained(report) && slide.badPixels < report.badPixels))
             report = std::move(slide);
     }
     std::erase(report.diagnosis.undetectable, ShaderMistake::BackfaceSpecular);

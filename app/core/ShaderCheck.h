@@ -23,6 +23,7 @@ inline constexpr int kCheckBandPx = 2;                // the render tests' silho
 // on the shader: computed once, then any number of renders are judged
 // against it.
 struct CheckReference {
+    Scene scene; // as cast and shaded
     SceneHits hits;
     ReferenceShader shader; // the exact shading of the scene's method
     ReferenceImage exact;

@@ -149,6 +149,50 @@ private slots:
         QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
     }
 
+    // A student who writes the slide's equation makes the same mistakes:
+    // each is named by its key first, as in the guarded one (issue 30, C
+    // and E); the table says which equation judged it.
+    void mistakesInTheSlidesEquation()
+    {
+        Scene scene = m_scene;
+        scene.camera.eye = glm::dvec3(2.2, 1.4, 3.4);
+        scene.lights[1].attenuation = glm::dvec3(0.6, 0.0, 0.0);
+        const CheckReference reference = makeTestCheckReference(scene);
+        QVERIFY_OK(m_offscreen.renderer().setScene(scene));
+        QStringList table{QStringLiteral("| made, slide's equation | found first | % | judged by |"),
+                          QStringLiteral("|---|---|---|---|")};
+        QStringList failures;
+        for (const MistakeVariant &made : allMistakeVariants()) {
+            if (made.key == ShaderMistake::NegativeLight
+                || made.key == ShaderMistake::BackfaceSpecular
+                || made.key == ShaderMistake::Gouraud)
+                continue;
+            const QString name = mistakeVariantName(made);
+            const ShaderPair shaders = withMistake(made, PhongEquation::Slide);
+            const CheckReport report =
+                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), reference);
+            if (report.passed() || report.diagnosis.findings.empty()) {
+                failures << name + QStringLiteral(": ") + checkSummary(report);
+                continue;
+            }
+            const MistakeFinding &top = report.diagnosis.findings.front();
+            const bool named = top.key == made.key
+                || std::find(top.also.begin(), top.also.end(), made.key) != top.also.end();
+            // Judged by the slide's equation, unless the mistake leaves no
+            // highlight behind a surface to tell the two apart.
+            if (!named || top.confidence < kExplainedConfidence)
+                failures << name + QStringLiteral(": ") + checkSummary(report);
+            table << QStringLiteral("| %1 | %2 | %3 | %4 |")
+                         .arg(name, shaderMistakeKey(top.key))
+                         .arg(qRound(100.0 * top.confidence))
+                         .arg(phongEquationKey(report.equation));
+        }
+        QVERIFY_OK(m_offscreen.renderer().setScene(m_scene));
+        qInfo("mistakes made in the slide's equation, check scene turned:\n%s",
+              qPrintable(table.join(QLatin1Char('\n'))));
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
+    }
+
     // The slide's equation taken literally (no N·L guard on the highlight)
     // passes by default and is named; demanding the guarded one fails it.
     void slideEquationPassesByDefault()

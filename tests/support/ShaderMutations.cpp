@@ -85,6 +85,18 @@ ShaderPair withMistake(MistakeVariant variant)
     return s;
 }
 
+ShaderPair withMistake(MistakeVariant variant, PhongEquation equation)
+{
+    ShaderPair s = withMistake(variant);
+    if (equation == PhongEquation::Slide) {
+        const QString name = QStringLiteral("slide-")
+            + mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-'));
+        replace(s.fragment, kGuard, "", name);
+        replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", name);
+    }
+    return s;
+}
+
 ShaderPair shippedPhong()
 {
     return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};

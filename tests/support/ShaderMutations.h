@@ -1,4 +1,5 @@
 #pragma once
+#include "core/PhongEquation.h"
 #include "core/ShaderMistake.h"
 #include "render/ShaderSource.h"
 
@@ -20,5 +21,10 @@ ShaderPair withMistake(ShaderMistake mistake);
 // The mistake in one of its forms (MistakeForm), as a student writes it;
 // form 0 is withMistake(key).
 ShaderPair withMistake(MistakeVariant variant);
+// The same, written in the slide's equation (no N·L guard on the highlight,
+// the diffuse term clamped) where `equation` says so; not for the mistakes
+// that are about that guard (negative-light, backface-specular) or that
+// replace the whole shader (gouraud).
+ShaderPair withMistake(MistakeVariant variant, PhongEquation equation);
 
 } // namespace phonglab::test

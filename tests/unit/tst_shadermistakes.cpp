@@ -43,7 +43,7 @@ double exact(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &l
 double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &light,
                 ShaderMistake mistake, int form = 0)
 {
-    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, {mistake, form})
+    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, MistakeVariant{mistake, form})
         .intensity.x;
 }
 
@@ -132,7 +132,7 @@ private slots:
         const std::array lights{lightAt(kLitFrom), lightAt(kLitFrom)};
         const double twice =
             mistakenPhongTerms(kFacing, kUp, material(), kAmbient, lights,
-                               {ShaderMistake::Ambient, MistakeForm::AmbientPerLight})
+                               MistakeVariant{ShaderMistake::Ambient, MistakeForm::AmbientPerLight})
                 .intensity.x;
         QCOMPARE(twice, 2.0 * kAmbientPart + 2.0 * (kDiffusePart + kSpecularPart));
         QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient,
