@@ -129,9 +129,9 @@ void BuildThread::stop()
 }
 
 quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                           int warmSamples)
+                           int warmSamples, const ExplicitBindings &bindings)
 {
-    BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples};
+    BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples, bindings};
     if (!m_worker)
         return request.serial;
     const qint64 queuedAt = monotonicNs();

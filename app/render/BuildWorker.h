@@ -17,6 +17,7 @@ struct BuildJob {
     ShaderSource fragment;
     bool warm = true;    // run one draw before handing the program over
     int warmSamples = 0; // ... into a framebuffer with this many samples
+    ExplicitBindings bindings; // the scene's: they place the vertex inputs at link time
 };
 
 // Where a build's time went, carried to the status bar and the benchmarks.

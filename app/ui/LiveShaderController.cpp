@@ -319,7 +319,8 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     if (m_buildThread->isRunning()) {
         setState(State::Building);
         m_buildSerial =
-            m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()));
+            m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()),
+                                 m_viewport->currentScene().bindings);
         m_slowBuildNote->start();
         m_hangNote->start();
         return;

@@ -226,7 +226,7 @@ BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
         return built;
     }
     const CurrentContext current(*this);
-    return ProgramBuilder().build(vertex, fragment);
+    return ProgramBuilder().build(vertex, fragment, {}, m_scene.bindings);
 }
 
 std::optional<LentContext> Viewport::lendContext(QThread *borrower)

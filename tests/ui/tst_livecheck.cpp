@@ -18,6 +18,10 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
 #include <QLabel>
 #include <QPushButton>
 #include <QTest>
@@ -177,6 +181,58 @@ private slots:
         }
         // The exact picture shown is the slide's: the frame matches it.
         QCOMPARE(result.exact, toQImage(result.reference->slide.toImage(result.scene.background)));
+    }
+
+    // Issue 30, B: the scene's "bindings" name vertex inputs no name gives
+    // away, also where the window builds (on its worker thread): the frame
+    // the window shows is the one the check drew from the same recipe.
+    // Without them Mesa puts the normal, declared first, at location 0 (on a
+    // sphere that would not show: there the normal is the position).
+    void sceneBindingsPlaceTheInputs()
+    {
+        QTemporaryDir dir;
+        QFile vertexIn(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
+        QVERIFY(vertexIn.open(QIODevice::ReadOnly));
+        QByteArray vertex = vertexIn.readAll();
+        QVERIFY(vertex.indexOf("in vec3 aPosition;") < vertex.indexOf("in vec3 aNormal;"));
+        vertex.replace("in vec3 aPosition;", "in vec3 NORMAL;")
+            .replace("in vec3 aNormal;", "in vec3 zz;")
+            .replace("NORMAL", "aa");
+        vertex.replace("aPosition", "zz").replace("aNormal", "aa");
+        QVERIFY(QFile::copy(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")),
+                            dir.filePath(QStringLiteral("f.frag"))));
+        QFile vertexOut(dir.filePath(QStringLiteral("v.vert")));
+        QVERIFY(vertexOut.open(QIODevice::WriteOnly));
+        vertexOut.write(vertex);
+        vertexOut.close();
+        QFile sceneIn(sourcePath(QStringLiteral("assets/scenes/torus.json")));
+        QVERIFY(sceneIn.open(QIODevice::ReadOnly));
+        QJsonObject scene = QJsonDocument::fromJson(sceneIn.readAll()).object();
+        scene[QStringLiteral("shaders")] = QJsonObject{{QStringLiteral("vertex"), "v.vert"},
+                                                       {QStringLiteral("fragment"), "f.frag"}};
+        scene[QStringLiteral("bindings")] =
+            QJsonObject{{QStringLiteral("zz"), "position"}, {QStringLiteral("aa"), "normal"}};
+        QFile sceneOut(dir.filePath(QStringLiteral("bound.json")));
+        QVERIFY(sceneOut.open(QIODevice::WriteOnly));
+        sceneOut.write(QJsonDocument(scene).toJson());
+        sceneOut.close();
+
+        openWindow(sceneOut.fileName(), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        viewport()->setShowLightMarkers(false); // the check's frame has none
+        QVERIFY(waitForApplied());
+        QVERIFY(fragmentEditor()->text().contains(QStringLiteral("uLightPosition")));
+        QVERIFY(waitForVerdict(true));
+        const QImage yours = m_window->liveCheck()->lastResult()->yours;
+        const QImage shown = frame().convertToFormat(yours.format());
+        QCOMPARE(shown.size(), yours.size());
+        int worst = 0;
+        for (int y = 0; y < yours.height(); ++y)
+            for (int x = 0; x < yours.width(); ++x)
+                worst = std::max(worst, maxChannelDifference(shown.pixel(x, y), yours.pixel(x, y)));
+        QVERIFY2(worst <= 1, qPrintable(QStringLiteral("the window's frame is off the check's by "
+                                                       "%1/255")
+                                            .arg(worst)));
     }
 
     // Issue 30, D: the view's 4 samples blend each silhouette with the
