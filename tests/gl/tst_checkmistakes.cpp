@@ -104,42 +104,28 @@ private slots:
               qPrintable(table.join(QLatin1Char('\n'))));
     }
 
-    // Every form of every mistake (issue 30, E), on the check scene seen
-    // from a camera that turns (so that M and MV, MV and its transpose, a
-    // light moved with w = 0 and one left in world coordinates all differ)
-    // and with a second light whose c1 < 1 (so that f_att needs its
-    // min(..., 1)):
-    // each variant, made in GLSL as a student writes it, is named by its key
-    // first, and its form is one whose image it is.
+    // Every form of every mistake (issue 30, E), on turnedScene(): each
+    // variant, made in GLSL as a student writes it, is named by its key
+    // first and alone; the table says which form was found.
     void variantConfusionMatrix()
     {
-        Scene scene = m_scene;
-        scene.camera.eye = glm::dvec3(2.2, 1.4, 3.4);
-        scene.lights[1].attenuation = glm::dvec3(0.6, 0.0, 0.0); // light 0 keeps c2 > 0
+        const Scene scene = turnedScene();
         const CheckReference reference = makeTestCheckReference(scene);
         QVERIFY_OK(m_offscreen.renderer().setScene(scene));
         QStringList table{QStringLiteral("| made | found first | % | form found |"),
                           QStringLiteral("|---|---|---|---|")};
         QStringList failures;
         for (const MistakeVariant &made : allMistakeVariants()) {
-            const QString name = mistakeVariantName(made);
-            const ShaderPair shaders = withMistake(made);
-            const CheckReport report =
-                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), reference,
-                            kDefaultCheckToleranceSteps, PhongEquation::Guarded);
-            if (report.passed() || report.diagnosis.findings.empty()) {
-                failures << name + QStringLiteral(": ") + checkSummary(report);
+            CheckReport report;
+            const QString failure = judgeMistake(withMistake(made), reference, made,
+                                                 PhongEquation::Guarded, true, report);
+            if (!failure.isEmpty())
+                failures << failure;
+            if (report.diagnosis.findings.empty())
                 continue;
-            }
             const MistakeFinding &top = report.diagnosis.findings.front();
-            const bool named = top.key == made.key
-                || std::find(top.also.begin(), top.also.end(), made.key) != top.also.end();
-            const bool alone = report.diagnosis.findings.size() < 2
-                || report.diagnosis.findings[1].confidence < top.confidence;
-            if (!named || top.confidence < kExplainedConfidence || !alone)
-                failures << name + QStringLiteral(": ") + checkSummary(report);
             table << QStringLiteral("| %1 | %2 | %3 | %4 |")
-                         .arg(name, shaderMistakeKey(top.key))
+                         .arg(mistakeVariantName(made), shaderMistakeKey(top.key))
                          .arg(qRound(100.0 * top.confidence))
                          .arg(mistakeFormSummary({top.key, top.form}));
         }
@@ -151,12 +137,11 @@ private slots:
 
     // A student who writes the slide's equation makes the same mistakes:
     // each is named by its key first, as in the guarded one (issue 30, C
-    // and E); the table says which equation judged it.
+    // and E); the table says which equation judged it (the guarded one where
+    // a mistake leaves no highlight behind a surface to tell the two apart).
     void mistakesInTheSlidesEquation()
     {
-        Scene scene = m_scene;
-        scene.camera.eye = glm::dvec3(2.2, 1.4, 3.4);
-        scene.lights[1].attenuation = glm::dvec3(0.6, 0.0, 0.0);
+        const Scene scene = turnedScene();
         const CheckReference reference = makeTestCheckReference(scene);
         QVERIFY_OK(m_offscreen.renderer().setScene(scene));
         QStringList table{QStringLiteral("| made, slide's equation | found first | % | judged by |"),
@@ -166,24 +151,17 @@ private slots:
             if (made.key == ShaderMistake::NegativeLight
                 || made.key == ShaderMistake::BackfaceSpecular
                 || made.key == ShaderMistake::Gouraud)
+                continue; // about the guard itself, or a shader of its own
+            CheckReport report;
+            const QString failure = judgeMistake(withMistake(made, PhongEquation::Slide),
+                                                 reference, made, std::nullopt, false, report);
+            if (!failure.isEmpty())
+                failures << failure;
+            if (report.diagnosis.findings.empty())
                 continue;
-            const QString name = mistakeVariantName(made);
-            const ShaderPair shaders = withMistake(made, PhongEquation::Slide);
-            const CheckReport report =
-                checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), reference);
-            if (report.passed() || report.diagnosis.findings.empty()) {
-                failures << name + QStringLiteral(": ") + checkSummary(report);
-                continue;
-            }
             const MistakeFinding &top = report.diagnosis.findings.front();
-            const bool named = top.key == made.key
-                || std::find(top.also.begin(), top.also.end(), made.key) != top.also.end();
-            // Judged by the slide's equation, unless the mistake leaves no
-            // highlight behind a surface to tell the two apart.
-            if (!named || top.confidence < kExplainedConfidence)
-                failures << name + QStringLiteral(": ") + checkSummary(report);
             table << QStringLiteral("| %1 | %2 | %3 | %4 |")
-                         .arg(name, shaderMistakeKey(top.key))
+                         .arg(mistakeVariantName(made), shaderMistakeKey(top.key))
                          .arg(qRound(100.0 * top.confidence))
                          .arg(phongEquationKey(report.equation));
         }
@@ -215,6 +193,41 @@ private slots:
     }
 
 private:
+    // The check scene seen from a camera that turns (so that M and MV, MV
+    // and its transpose, a light moved with w = 0 and one left in world
+    // coordinates all differ), with a second light whose c1 < 1 (so that
+    // f_att needs its min(..., 1)).
+    Scene turnedScene() const
+    {
+        Scene scene = m_scene;
+        scene.camera.eye = glm::dvec3(2.2, 1.4, 3.4);
+        scene.lights[1].attenuation = glm::dvec3(0.6, 0.0, 0.0); // light 0 keeps c2 > 0
+        return scene;
+    }
+
+    // Renders `shaders`, checks them, and says what went wrong, if anything:
+    // `made` must be found, named first (its key, or beside the key) and
+    // explaining at least half the difference, and alone in first place
+    // where `alone` asks. Empty when all holds; `report` gets the report.
+    QString judgeMistake(const ShaderPair &shaders, const CheckReference &reference,
+                         MistakeVariant made, std::optional<PhongEquation> demanded, bool alone,
+                         CheckReport &report)
+    {
+        const QString name = mistakeVariantName(made);
+        report = checkRender(toRgbImage(render(shaders.vertex, shaders.fragment)), reference,
+                             kDefaultCheckToleranceSteps, demanded);
+        if (report.passed() || report.diagnosis.findings.empty())
+            return name + QStringLiteral(": ") + checkSummary(report);
+        const MistakeFinding &top = report.diagnosis.findings.front();
+        const bool named = top.key == made.key
+            || std::find(top.also.begin(), top.also.end(), made.key) != top.also.end();
+        const bool first = report.diagnosis.findings.size() < 2
+            || report.diagnosis.findings[1].confidence < top.confidence;
+        if (!named || top.confidence < kExplainedConfidence || (alone && !first))
+            return name + QStringLiteral(": ") + checkSummary(report);
+        return {};
+    }
+
     QImage render(const ShaderSource &vertex, const ShaderSource &fragment)
     {
         const BuildReport program = m_offscreen.renderer().setProgramSources(vertex, fragment);
