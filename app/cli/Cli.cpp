@@ -27,6 +27,10 @@ void printHelp(std::span<const Subcommand> more)
         "usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
         "                                        (.obj .ply .off .stl .om; the default scene "
         "when none given)\n"
+        "       phonglab SCENE.json --vertex FILE --fragment FILE\n"
+        "                                        the editor on a scene with these shaders (either "
+        "one alone\n"
+        "                                        keeps the scene's other stage)\n"
         "       phonglab <command> [options]     run a command without a window\n\n"
         "commands:\n");
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
@@ -64,6 +68,10 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
             }
     if (first == QLatin1String("__import-mesh")) // internal, not in --help
         return runImportMesh(argc, argv);
+    // The window's own options (GuiArguments) may come before the scene.
+    for (const QLatin1String option : {QLatin1String("--vertex"), QLatin1String("--fragment")})
+        if (first == option || first.startsWith(option + QLatin1Char('=')))
+            return std::nullopt;
     if (first.startsWith(QLatin1Char('-'))) {
         printError(QStringLiteral("unknown option '%1' (see phonglab --help)").arg(first));
         return kExitUsage;

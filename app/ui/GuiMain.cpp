@@ -1,5 +1,6 @@
 #include "GuiMain.h"
 
+#include "GuiArguments.h"
 #include "MainWindow.h"
 #include "Viewport.h"
 #include "core/ResourcePaths.h"
@@ -17,6 +18,7 @@ namespace phonglab {
 namespace {
 
 constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
 // Said instead of Qt's abort when there is nowhere to open the window.
 constexpr char kNoDisplayMessage[] =
     "phonglab: the editor window needs a display (X11 or Wayland), and DISPLAY is not set.\n"
@@ -84,6 +86,18 @@ void openRequestedFiles(MainWindow &window, const QStringList &paths)
                 .arg(QDir::toNativeSeparators(paths.join(QLatin1Char('\n'))), opened.error()));
 }
 
+// A scene with a student's shaders (a grading report's command): a failure
+// says why and leaves the default scene.
+void openSubmission(MainWindow &window, const GuiArguments &requested)
+{
+    const Result<> opened = window.openSubmission(
+        requested.files.front(), requested.vertexShader, requested.fragmentShader);
+    if (!opened)
+        QMessageBox::warning(&window, QObject::tr("Cannot open"),
+                             QObject::tr("%1\n\nShowing the default scene instead.")
+                                 .arg(opened.error()));
+}
+
 } // namespace
 
 void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples)
@@ -121,17 +135,24 @@ int runGui(int argc, char **argv)
     // window to the installed .desktop file, and so to its icon, by this.
     QGuiApplication::setDesktopFileName(QStringLiteral("org.phonglab.PhongLab"));
 
+    QStringList arguments = QApplication::arguments();
+    arguments.removeFirst(); // the program
+    const GuiArguments requested = parseGuiArguments(arguments);
+    if (!requested.error.isEmpty()) {
+        printError(requested.error);
+        return kExitUsage;
+    }
+
     MainWindow window;
     useMultisamplingInViewOnly(window, kViewportSamples);
     window.restoreWindowSettings(); // geometry and docks as the last session left them
     if (!openDefaultScene(window))
         return kExitFailure;
     window.show();
-    QStringList paths;
-    for (int i = 1; i < argc; ++i)
-        paths << QString::fromLocal8Bit(argv[i]);
-    if (!paths.isEmpty())
-        openRequestedFiles(window, paths);
+    if (requested.hasShaders())
+        openSubmission(window, requested);
+    else if (!requested.files.isEmpty())
+        openRequestedFiles(window, requested.files);
     return app.exec();
 }
 

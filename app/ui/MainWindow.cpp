@@ -369,13 +369,30 @@ Result<> MainWindow::openFiles(const QStringList &paths)
     return {};
 }
 
-// The scene file itself is small and parsed here, so a broken one is refused
-// at once; only its meshes load in the background.
-Result<> MainWindow::startSceneLoad(const QString &path)
+Result<> MainWindow::openSubmission(const QString &scenePath, const QString &vertexPath,
+                                     const QString &fragmentPath)
 {
-    const SceneLoadResult parsed = loadSceneFile(path);
+    if (!isSceneFile(scenePath))
+        return fail(tr("%1: not a scene file (.json)").arg(scenePath));
+    for (const QString &file : {vertexPath, fragmentPath})
+        if (!file.isEmpty() && !QFileInfo(file).isFile())
+            return fail(tr("%1: no such shader file").arg(file));
+    return startSceneLoad(scenePath, vertexPath, fragmentPath);
+}
+
+// The scene file itself is small and parsed here, so a broken one is refused
+// at once; only its meshes load in the background. Shader files given here
+// take the place of the scene's own.
+Result<> MainWindow::startSceneLoad(const QString &path, const QString &vertexPath,
+                                    const QString &fragmentPath)
+{
+    SceneLoadResult parsed = loadSceneFile(path);
     if (!parsed.ok())
         return fail(parsed.error);
+    if (!vertexPath.isEmpty())
+        parsed.scene->vertexShader = QFileInfo(vertexPath).absoluteFilePath();
+    if (!fragmentPath.isEmpty())
+        parsed.scene->fragmentShader = QFileInfo(fragmentPath).absoluteFilePath();
     SceneLoadRequest request = sceneFileRequest(path, *parsed.scene);
     request.shown = [this, path, warnings = parsed.warnings, scene = *parsed.scene] {
         setScenePath(path);

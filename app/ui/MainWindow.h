@@ -64,6 +64,12 @@ public:
     // with a reason, and nothing changes, when the files cannot be opened at
     // all (an unsupported type, a broken scene file).
     Result<> openFiles(const QStringList &paths);
+    // A scene with a student's shaders in place of its own (issue 31, B):
+    // `phonglab SCENE.json --vertex FILE --fragment FILE`, and the command
+    // each row of a grading report carries. An empty path keeps the scene's
+    // stage (or the shipped one). Loads in the background as openFiles().
+    Result<> openSubmission(const QString &scenePath, const QString &vertexPath,
+                            const QString &fragmentPath);
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
     // Shows every object at `detail` with `method` shading (Fit to budget),
@@ -118,7 +124,8 @@ private:
     void createViewMenu();
     void createStatusBar();
     void connectLoading();
-    Result<> startSceneLoad(const QString &path);
+    Result<> startSceneLoad(const QString &path, const QString &vertexPath = {},
+                            const QString &fragmentPath = {});
     void openSceneShaders(const Scene &scene);
     void setScenePath(const QString &path, const QString &title = {});
     void warn(const QString &title, const QString &message);

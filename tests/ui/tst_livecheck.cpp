@@ -4,10 +4,12 @@
 // the overlay draws it; Ctrl+click inspects a pixel; undoing the mistake
 // brings ✓ back. Every shipped scene gets ✓ with the shipped shaders, at two
 // window sizes, with the view multisampled as the app's is.
+#include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "render/QtImages.h"
 #include "ui/CheckOverlay.h"
+#include "ui/GuiArguments.h"
 #include "ui/GuiMain.h"
 #include "ui/LiveCheck.h"
 #include "ui/MainWindow.h"
@@ -19,6 +21,7 @@
 #include <QClipboard>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -233,6 +236,41 @@ private slots:
         QVERIFY2(worst <= 1, qPrintable(QStringLiteral("the window's frame is off the check's by "
                                                        "%1/255")
                                             .arg(worst)));
+    }
+
+    // Issue 31, B: `phonglab SCENE.json --vertex FILE --fragment FILE` opens
+    // the scene with a student's shaders in the editor, checked live.
+    void opensASubmission()
+    {
+        const GuiArguments both = parseGuiArguments(
+            {QStringLiteral("s.json"), QStringLiteral("--vertex"), QStringLiteral("a.vert"),
+             QStringLiteral("--fragment=b.frag")});
+        QVERIFY2(both.error.isEmpty(), qPrintable(both.error));
+        QCOMPARE(both.files, QStringList{QStringLiteral("s.json")});
+        QCOMPARE(both.vertexShader, QStringLiteral("a.vert"));
+        QCOMPARE(both.fragmentShader, QStringLiteral("b.frag"));
+        for (const QStringList &wrong :
+             {QStringList{QStringLiteral("a.obj"), QStringLiteral("--vertex"), QStringLiteral("x")},
+              QStringList{QStringLiteral("s.json"), QStringLiteral("--vertex")},
+              QStringList{QStringLiteral("s.json"), QStringLiteral("--frag"), QStringLiteral("x")},
+              QStringList{QStringLiteral("--fragment"), QStringLiteral("x.frag")}})
+            QVERIFY2(!parseGuiArguments(wrong).error.isEmpty(), qPrintable(wrong.join(u' ')));
+        QCOMPARE(parseGuiArguments({QStringLiteral("--"), QStringLiteral("-odd.json")}).files,
+                 QStringList{QStringLiteral("-odd.json")});
+
+        openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        const QString scene = sourcePath(QStringLiteral("assets/scenes/check.json"));
+        const QString vertex = sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert"));
+        const QString fragment = sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag"));
+        QVERIFY(!m_window->openSubmission(scene, QStringLiteral("/no/such/file.vert"), fragment));
+        QVERIFY_OK(m_window->openSubmission(scene, vertex, fragment));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            fragmentEditor()->text().contains(QStringLiteral("uLightPosition")), 20000);
+        QVERIFY(waitForApplied());
+        QVERIFY(waitForVerdict(true));
+        QCOMPARE(m_window->liveCheck()->lastResult()->scene.vertexShader,
+                 QFileInfo(vertex).absoluteFilePath());
     }
 
     // Issue 30, D: the view's 4 samples blend each silhouette with the

@@ -1,0 +1,23 @@
+#pragma once
+#include <QString>
+#include <QStringList>
+
+namespace phonglab {
+
+// What the window's command line asks for: `phonglab [FILE...]` opens a
+// scene or meshes; `phonglab SCENE.json --vertex FILE --fragment FILE` opens
+// a scene with a student's shaders (issue 31, B). Qt's own options are gone
+// by now (QApplication takes them).
+struct GuiArguments {
+    QStringList files;
+    QString vertexShader;   // --vertex FILE
+    QString fragmentShader; // --fragment FILE
+    QString error;          // a usage error, in a sentence; empty when none
+
+    bool hasShaders() const { return !vertexShader.isEmpty() || !fragmentShader.isEmpty(); }
+};
+
+// `arguments` without the program's name.
+GuiArguments parseGuiArguments(const QStringList &arguments);
+
+} // namespace phonglab
