@@ -29,6 +29,9 @@ struct LentContext {
     // warm-up draw (e.g. switching the renderer to the new program, whose
     // first use in a context has a cost of its own on llvmpipe).
     std::function<void()> whileCurrent;
+    // Runs after the warm-up draw, the context still current (a trial of
+    // the new program's frame time, with its shader variant compiled).
+    std::function<void()> afterWarm;
 };
 
 } // namespace phonglab

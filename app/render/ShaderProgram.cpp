@@ -109,6 +109,14 @@ void ShaderProgram::adopt(GlProgram program)
     resolveBindings();
 }
 
+void ShaderProgram::exchange(GlProgram &program)
+{
+    ensureInitialized();
+    std::swap(m_program, program);
+    m_readsFacePoint = m_program && glGetAttribLocation(m_program.id(), "facePoint") >= 0;
+    resolveBindings();
+}
+
 void ShaderProgram::setExplicitBindings(const ExplicitBindings &bindings)
 {
     if (bindings == m_explicit)

@@ -34,6 +34,9 @@ public:
     // Takes a program linked elsewhere (ProgramBuilder, possibly on another
     // context of the same share group) and frees the previous one.
     void adopt(GlProgram program);
+    // Puts `program` in place and hands the one in use back through it,
+    // freeing neither: a trial of a new program that may be undone.
+    void exchange(GlProgram &program);
     void destroy();
 
     // Every active default-block uniform's current value (double types are

@@ -101,6 +101,7 @@ void LiveShaderController::connectDock()
     connect(m_dock, &ShaderDock::textEdited, this, &LiveShaderController::onTextEdited);
     connect(m_dock, &ShaderDock::compileRequested, this, &LiveShaderController::buildNow);
     connect(m_dock, &ShaderDock::presetRequested, this, &LiveShaderController::applyPreset);
+    connect(m_dock, &ShaderDock::applyAnywayRequested, this, &LiveShaderController::applyKeptOut);
     connect(m_dock, &ShaderDock::filesChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
     connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery,
             &ShaderRecovery::noteFilesChanged);
@@ -308,6 +309,10 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     // warm-up draw, then leaves the text in the journal and marked suspect.
     m_recovery->writeNow();
     m_recovery->buildStarted(hash);
+    if (m_keptOut) { // newer text supersedes it
+        m_buildThread->release(std::move(m_keptOut->program));
+        m_keptOut.reset();
+    }
     m_lastBuiltHash = hash;
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex),
                               m_dock->text(ShaderStage::Vertex)};
@@ -384,14 +389,29 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     // context current; if it never got that far, here, once it is back.
     const GLuint programId = reply.program.id();
     auto program = std::make_shared<GlProgram>(std::move(reply.program));
+    // A trial first (issue 31, C): the new program goes in, is warmed, and
+    // one frame's time is estimated; over the budget it comes out again and
+    // the last good program keeps drawing. `program` holds whichever one is
+    // not in the renderer.
+    auto trial = std::make_shared<FrameTrial>(
+        FrameTrial{frameBudgetMs(), m_viewport->size() * m_viewport->devicePixelRatioF()});
     lent->whileCurrent = [viewport = m_viewport, program] {
-        viewport->renderer().adoptProgram(std::move(*program));
+        viewport->renderer().exchangeProgram(*program);
+    };
+    lent->afterWarm = [viewport = m_viewport, program, trial] {
+        Renderer &renderer = viewport->renderer();
+        trial->frameMs = renderer.estimateFrameMs(trial->pixels, trial->budgetMs);
+        trial->ran = true;
+        if (trial->frameMs > trial->budgetMs)
+            renderer.exchangeProgram(*program); // the new one comes back out
+        else
+            *program = GlProgram(); // the previous one, freed in its context
     };
     setState(State::Warming);
     const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
         *lent, programId,
-        [this, warm, hash, program, result = reply.result,
+        [this, warm, hash, program, trial, result = reply.result,
          timings = reply.timings](const Result<qint64> &warmNs) {
             // The context went away meanwhile (and came back with it), or
             // this is an older warm-up.
@@ -400,7 +420,13 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             setState(State::Idle);
             m_hangNote->stop();
             m_viewport->takeBackContext();
-            if (*program)
+            if (trial->ran && trial->frameMs > trial->budgetMs) {
+                keepOut(hash, std::move(*program), result, timings, trial->frameMs,
+                        trial->budgetMs);
+                startQueuedBuild();
+                return;
+            }
+            if (*program) // the trial never ran: the context could not be had there
                 m_viewport->adoptProgram(std::move(*program));
             BuildTimings warmed = timings;
             if (warmNs) {
@@ -414,6 +440,42 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             startQueuedBuild();
         });
     return true;
+}
+
+double LiveShaderController::frameBudgetMs() const
+{
+    // A few frames of what the view draws now, and never less than this:
+    // a program that is merely slower than the last is no reason to refuse.
+    return std::max(kMinFrameBudgetMs, 4.0 * m_viewport->frameTimes().meanMs());
+}
+
+// A program whose frame would take longer than the budget: the last good
+// program keeps drawing, and the user may apply it anyway.
+void LiveShaderController::keepOut(const QByteArray &hash, GlProgram program,
+                                   const BuildReport &result, const BuildTimings &timings,
+                                   double frameMs, double budgetMs)
+{
+    m_recovery->buildFailed();
+    m_keptOut = {hash, std::move(program), result, timings, m_buildSources};
+    const QString text =
+        tr("Kept out: one frame would take %1 ms (the budget is %2 ms, a few frames' worth); "
+           "the last good program keeps drawing")
+            .arg(frameMs, 0, 'f', 0)
+            .arg(budgetMs, 0, 'f', 0);
+    m_dock->offerToApplyAnyway(text);
+    emit programKeptOut(frameMs);
+    emit statusMessage(text, kStatusTimeoutMs);
+}
+
+void LiveShaderController::applyKeptOut()
+{
+    if (!m_keptOut || m_state != State::Idle)
+        return;
+    KeptOut kept = std::move(*m_keptOut);
+    m_keptOut.reset();
+    m_viewport->adoptProgram(std::move(kept.program));
+    m_buildSources = kept.sources;
+    announce(kept.hash, kept.result, kept.timings);
 }
 
 void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result,

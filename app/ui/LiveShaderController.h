@@ -6,12 +6,17 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QSize>
 #include <optional>
 
 class QTimer;
 class QWidget;
 
 namespace phonglab {
+
+// A new program whose frame would take longer than a few frames of the
+// view, and at least this, is kept out (issue 31, C; docs/shader-editing).
+inline constexpr double kMinFrameBudgetMs = 250.0;
 
 class BuildThread;
 class ShaderDock;
@@ -95,6 +100,10 @@ public:
     QByteArray currentHash() const;
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
+    // A program kept out for its frame time, waiting for "Apply anyway".
+    bool hasKeptOutProgram() const { return m_keptOut.has_value(); }
+    // Applies the program kept out (the dock's "Apply anyway").
+    void applyKeptOut();
 
 signals:
     // For the status bar.
@@ -102,6 +111,9 @@ signals:
     // The viewport now draws with the program built from `hash`'s text.
     void programApplied(const QByteArray &hash, const phonglab::BuildTimings &timings);
     void buildFailed(const QByteArray &hash);
+    // A new program built, but one frame of it would take `frameMs`, more
+    // than the budget: it was not applied.
+    void programKeptOut(double frameMs);
     void stateChanged(phonglab::LiveShaderController::State state);
 
 private:
@@ -125,6 +137,24 @@ private:
     void finish(const QByteArray &hash, BuildReply reply);
     bool warmInViewport(const QByteArray &hash, BuildReply &reply);
     void announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings);
+    double frameBudgetMs() const;
+    void keepOut(const QByteArray &hash, GlProgram program, const BuildReport &result,
+                 const BuildTimings &timings, double frameMs, double budgetMs);
+
+    // One new program's trial in the lent context (warmInViewport).
+    struct FrameTrial {
+        double budgetMs = 0.0;
+        QSize pixels;
+        double frameMs = 0.0;
+        bool ran = false;
+    };
+    struct KeptOut {
+        QByteArray hash;
+        GlProgram program;
+        BuildReport result;
+        BuildTimings timings;
+        StageSources sources;
+    };
     void takeBackContextNow();
     void showFailure(const BuildReport &result);
 
@@ -150,6 +180,7 @@ private:
     QByteArray m_buildHash;    // while Building or Warming: the text on its way
     StageSources m_buildSources; // ... and the sources it was built from
     std::optional<StageSources> m_appliedSources;
+    std::optional<KeptOut> m_keptOut; // freed by the next build, or applied anyway
     std::optional<BuildRequest> m_queued; // asked for while not Idle
     QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
 };

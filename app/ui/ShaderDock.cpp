@@ -9,8 +9,10 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSplitter>
 #include <QStyle>
 #include <QTabWidget>
@@ -86,7 +88,17 @@ ShaderDock::ShaderDock(QWidget *parent)
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(createToolBar());
     layout->addWidget(splitter, 1);
-    layout->addWidget(m_status);
+    auto *statusRow = new QHBoxLayout;
+    statusRow->addWidget(m_status, 1);
+    m_applyAnyway = new QPushButton(tr("Apply anyway"), contents);
+    m_applyAnyway->setObjectName(QStringLiteral("applyAnyway"));
+    m_applyAnyway->setToolTip(
+        tr("Draw with this program although its frames are slow; the view then draws only "
+           "when you ask it to"));
+    m_applyAnyway->hide();
+    connect(m_applyAnyway, &QPushButton::clicked, this, &ShaderDock::applyAnywayRequested);
+    statusRow->addWidget(m_applyAnyway, 0, Qt::AlignTop);
+    layout->addLayout(statusRow);
     setWidget(contents);
 
     connectEditor(ShaderStage::Vertex);
@@ -236,9 +248,16 @@ void ShaderDock::showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostic
 
 void ShaderDock::setCompileStatus(const QString &text, bool ok)
 {
+    m_applyAnyway->hide();
     m_status->setText(text);
     m_status->setStyleSheet(ok ? QStringLiteral("color: #2e7d32;")
                                : QStringLiteral("color: #c62828;"));
+}
+
+void ShaderDock::offerToApplyAnyway(const QString &text)
+{
+    setCompileStatus(text, false);
+    m_applyAnyway->show();
 }
 
 void ShaderDock::setPreset(ShadingMethod method)

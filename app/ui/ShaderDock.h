@@ -10,6 +10,7 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QTabWidget;
 
 namespace phonglab {
@@ -43,6 +44,10 @@ public:
     void showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
     // "compiled in 12 ms" (ok) or "2 errors — last good program still running".
     void setCompileStatus(const QString &text, bool ok);
+    // A program kept out for its frame time: `text` as a failed status,
+    // with an "Apply anyway" button beside it (until the next status).
+    void offerToApplyAnyway(const QString &text);
+    QPushButton *applyAnywayButton() const { return m_applyAnyway; }
     // Selects `method` in the preset box without emitting presetRequested().
     void setPreset(ShadingMethod method);
 
@@ -78,6 +83,8 @@ signals:
     // A stage now shows another file (Open, Save As, a user copy of a
     // shipped shader) or its file was reloaded from disk.
     void filesChanged();
+    // "Apply anyway" on a program kept out for its frame time.
+    void applyAnywayRequested();
 
 private:
     QWidget *createToolBar();
@@ -93,6 +100,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     QComboBox *m_presets = nullptr;
     QLabel *m_status = nullptr;
+    QPushButton *m_applyAnyway = nullptr;
     DiagnosticList *m_diagnostics = nullptr;
     ShaderFileSet *m_files = nullptr;
     QAction *m_compileAction = nullptr;
