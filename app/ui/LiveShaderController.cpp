@@ -458,8 +458,8 @@ void LiveShaderController::keepOut(const QByteArray &hash, GlProgram program,
     m_recovery->buildFailed();
     m_keptOut = {hash, std::move(program), result, timings, m_buildSources};
     const QString text =
-        tr("Kept out: one frame would take %1 ms (the budget is %2 ms, a few frames' worth); "
-           "the last good program keeps drawing")
+        tr("Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames' "
+           "worth); the last good program keeps drawing")
             .arg(frameMs, 0, 'f', 0)
             .arg(budgetMs, 0, 'f', 0);
     m_dock->offerToApplyAnyway(text);

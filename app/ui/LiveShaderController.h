@@ -111,8 +111,8 @@ signals:
     // The viewport now draws with the program built from `hash`'s text.
     void programApplied(const QByteArray &hash, const phonglab::BuildTimings &timings);
     void buildFailed(const QByteArray &hash);
-    // A new program built, but one frame of it would take `frameMs`, more
-    // than the budget: it was not applied.
+    // A new program built, but one frame of it would take `frameMs` or more,
+    // more than the budget: it was not applied.
     void programKeptOut(double frameMs);
     void stateChanged(phonglab::LiveShaderController::State state);
 

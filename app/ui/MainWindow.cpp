@@ -81,6 +81,12 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     m_liveCheck->pauseWhileLoading(m_loadJob);
     connect(m_uniformsDock, &UniformsDock::valueWritten, m_liveCheck, &LiveCheck::frameChanged);
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
+    connect(m_viewport, &Viewport::framesHeldAfter, this, [this](double ms) {
+        statusBar()->showMessage(
+            tr("One frame took %1 ms: the view draws again when you click, scroll or press a key "
+               "in it")
+                .arg(ms, 0, 'f', 0));
+    });
     // Queued: the error is raised from inside the view's GL start or a frame, where a
     // dialog must not be opened.
     connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError,

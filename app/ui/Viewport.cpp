@@ -155,6 +155,7 @@ const QHash<QString, SceneMeshes::Entry> &Viewport::meshInfo() const
 void Viewport::showUploaded(const Scene &scene)
 {
     m_scene = scene;
+    m_framesHeld = false; // a new scene is drawn once at least
     frameScene();
     cameraMoved();
     emit sceneChanged();
@@ -210,6 +211,7 @@ void Viewport::adoptProgram(GlProgram program)
         m_renderer.adoptProgram(std::move(program));
     }
     m_presentOffThread = true; // the frame after an edit: typing goes on meanwhile
+    m_framesHeld = false;      // a new program is drawn once at least
     requestFrame();
 }
 

@@ -23,6 +23,10 @@ namespace phonglab {
 class FramePresenter;
 class ViewportWindow;
 
+// A frame that took longer than this is not drawn again by itself: the view
+// waits until the user acts on it (issue 31, C).
+inline constexpr double kHoldFramesAfterMs = 250.0;
+
 // The interactive 3D view: drives a Renderer and turns mouse and keyboard
 // input into OrbitCamera moves. Left drag orbits, right or middle drag pans,
 // the wheel zooms. Keys are the shortcuts of the actions added to it (the
@@ -157,6 +161,11 @@ public:
     void setModelReduction(double allowance, bool leaveOutLights);
 
     bool isRenderReady() const { return m_renderReady; }
+    // After a frame longer than kHoldFramesAfterMs the view draws nothing
+    // until a click, a wheel turn or a key in it, a new program or a new
+    // scene (resumeFrames()): such a frame is never repeated by itself.
+    bool framesHeld() const { return m_framesHeld; }
+    void resumeFrames();
     qint64 framesRendered() const { return m_framesRendered; }
     // The draw times behind frameRendered()'s figure.
     const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
@@ -198,6 +207,9 @@ signals:
     void lightPicked(int index);
     // The headlight was switched: the frame changed, the scene did not.
     void headlightChanged(bool on);
+    // A frame took `milliseconds` (> kHoldFramesAfterMs): the view now
+    // waits for the user before it draws again.
+    void framesHeldAfter(double milliseconds);
 
 protected:
     bool event(QEvent *event) override;
@@ -291,6 +303,7 @@ private:
     QImage m_overlayImage;
     bool m_overlayDirty = true;
     bool m_paintingOverlays = false; // their paint events are ours, not changes
+    bool m_framesHeld = false;       // a frame ran long: none until the user acts
 };
 
 } // namespace phonglab

@@ -136,6 +136,9 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
 
 void Viewport::drawFrame()
 {
+    if (m_framesHeld)
+        return; // resumeFrames() asks for the frame
+
     if (m_lender.isActive()) {
         m_frameMissed = true;
         return;
@@ -240,7 +243,19 @@ void Viewport::frameDrawn(double drawMs)
     const auto now = std::chrono::steady_clock::now().time_since_epoch();
     m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), drawMs);
     ++m_framesRendered;
+    if (drawMs > kHoldFramesAfterMs && !m_framesHeld) {
+        m_framesHeld = true;
+        emit framesHeldAfter(drawMs);
+    }
     emit frameRendered(m_frameTimes.meanMs(), m_renderer.trianglesDrawn());
+}
+
+void Viewport::resumeFrames()
+{
+    if (!m_framesHeld)
+        return;
+    m_framesHeld = false;
+    requestFrame();
 }
 
 // Needs the context current: the visible child widgets over the frame, as

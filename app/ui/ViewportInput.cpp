@@ -71,6 +71,7 @@ void Viewport::finishLightDrag()
 
 void Viewport::mousePressEvent(QMouseEvent *event)
 {
+    resumeFrames();
     switch (event->button()) {
     case Qt::LeftButton:
         m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
@@ -121,6 +122,7 @@ void Viewport::mouseReleaseEvent(QMouseEvent *event)
 
 void Viewport::wheelEvent(QWheelEvent *event)
 {
+    resumeFrames();
     const double notches = event->angleDelta().y() / kWheelNotch;
     if (notches == 0.0) {
         event->ignore();
@@ -138,6 +140,7 @@ void Viewport::wheelEvent(QWheelEvent *event)
 // names it, so no key is handled in two places.
 void Viewport::keyPressEvent(QKeyEvent *event)
 {
+    resumeFrames();
     const QKeySequence pressed(event->keyCombination());
     for (QAction *action : actions()) {
         if (action->isEnabled() && action->shortcuts().contains(pressed)) {

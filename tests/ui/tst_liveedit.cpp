@@ -452,7 +452,8 @@ void TestLiveEdit::suspectShaderWaitsForF5()
 // Issue 31, C: a loop typed into phong.frag that makes one frame take far
 // longer than a few frames' worth (~1 s here) is not applied: the last good
 // program keeps drawing, the GUI thread never waits for a frame of it, and
-// "Apply anyway" is offered, which applies it. The longest GUI stall is
+// "Apply anyway" is offered, which applies it; after its first, long frame
+// the view draws only when the user acts. The longest GUI stall is
 // printed; the bound asserted is the budget itself (the new program's frame
 // would be four times that). The issue's aim of 100 ms is not held yet on 2
 // cores: the trial's frames, rasterised on both cores, starve the GUI
@@ -464,7 +465,7 @@ void TestLiveEdit::slowProgramIsKeptOut()
     QVERIFY(waitForApplied());
     const GLuint lastGood = viewport()->renderer().program().id();
     typeAfter(QStringLiteral("vec3 I = Ia * ka;"),
-              QStringLiteral(" for (int k = 0; k < 30000; ++k) I += 1e-7 * sin(I * float(k));"));
+              QStringLiteral(" for (int k = 0; k < 10000; ++k) I += 1e-7 * sin(I * float(k));"));
     QSignalSpy keptOut(live(), &LiveShaderController::programKeptOut);
     QElapsedTimer clock;
     qint64 lastTick = 0, longest = 0;
@@ -497,6 +498,18 @@ void TestLiveEdit::slowProgramIsKeptOut()
     QVERIFY(viewport()->renderer().program().id() != lastGood);
     QVERIFY(!live()->hasKeptOutProgram());
     QVERIFY(!dock()->applyAnywayButton()->isVisible());
+
+    // Its first frame runs long (off the GUI thread): the view then draws
+    // nothing by itself, until the user acts on it.
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->framesHeld(), 30000);
+    QTest::qWait(500); // a frame already on its way when the long one ended
+    const qint64 drawn = viewport()->framesRendered();
+    viewport()->requestFrame();
+    QTest::qWait(500);
+    QCOMPARE(viewport()->framesRendered(), drawn);
+    QVERIFY(viewport()->framesHeld());
+    QTest::mouseClick(viewport(), Qt::LeftButton, {}, viewport()->rect().center());
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->framesRendered() > drawn, 30000);
 }
 
 QTEST_MAIN(TestLiveEdit)
