@@ -7,7 +7,6 @@
 #include "core/ResourcePaths.h"
 #include "mesh/BuiltinMeshes.h"
 
-#include <QElapsedTimer>
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <cmath>
@@ -162,36 +161,6 @@ void Renderer::exchangeProgram(GlProgram &program)
     const UniformSnapshot kept = m_program.snapshot();
     m_program.exchange(program);
     m_program.restore(kept);
-}
-
-double Renderer::estimateFrameMs(const QSize &pixelSize, double limitMs)
-{
-    const auto timed = [this](const QSize &size) {
-        QElapsedTimer clock;
-        clock.start();
-        render(size);
-        glFinish();
-        return double(clock.nsecsElapsed()) / 1e6;
-    };
-    const QSize small = (pixelSize / 4).expandedTo(QSize(8, 8));
-    const QSize medium = (pixelSize / 2).expandedTo(QSize(16, 16));
-    const double fullPixels = double(pixelSize.width()) * pixelSize.height();
-    const double smallPixels = double(small.width()) * small.height();
-    const double mediumPixels = double(medium.width()) * medium.height();
-    // A whole frame costs at least as much as a part of it, and at most the
-    // part's time scaled by the area (the per-draw part does not grow): one
-    // part settles most programs either way, at a sixteenth of a frame.
-    const double a = timed(small);
-    if (a > limitMs)
-        return a;
-    if (a * fullPixels / smallPixels <= limitMs)
-        return a * fullPixels / smallPixels;
-    const double b = timed(medium);
-    if (b > limitMs)
-        return b;
-    const double perPixel = std::max(0.0, (b - a) / (mediumPixels - smallPixels));
-    const double perDraw = std::max(0.0, a - perPixel * smallPixels);
-    return perDraw + perPixel * fullPixels;
 }
 
 void Renderer::restoreUniforms(const UniformSnapshot &values)

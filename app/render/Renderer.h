@@ -90,15 +90,6 @@ public:
     // place with the current one's uniform values, handing the current one
     // back through `program`; a second call undoes the first.
     void exchangeProgram(GlProgram &program);
-    // How long one frame of `pixelSize` would take with the program in use,
-    // as far as telling it from `limitMs` needs: a frame of a 16th of its
-    // area is drawn into the bound framebuffer and timed to glFinish. Over
-    // the limit already, or under it even scaled by the area, that settles
-    // it (its time, or the scaled time, is returned). Else a frame of a
-    // quarter of the area is drawn too, and t = a + b·pixels is fitted
-    // through both, so that neither the per-draw cost (vertices) nor the
-    // per-pixel cost (a fragment shader's loop) is scaled wrongly.
-    double estimateFrameMs(const QSize &pixelSize, double limitMs);
     // Sets the program's uniforms to `values` (another program's snapshot
     // of the same sources): they win over the scene's values still pending.
     void restoreUniforms(const UniformSnapshot &values);

@@ -1,5 +1,7 @@
 #include "LiveShaderController.h"
 
+#include "ProgramTrial.h"
+
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
@@ -389,24 +391,9 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     // context current; if it never got that far, here, once it is back.
     const GLuint programId = reply.program.id();
     auto program = std::make_shared<GlProgram>(std::move(reply.program));
-    // A trial first (issue 31, C): the new program goes in, is warmed, and
-    // one frame's time is estimated; over the budget it comes out again and
-    // the last good program keeps drawing. `program` holds whichever one is
-    // not in the renderer.
-    auto trial = std::make_shared<FrameTrial>(
-        FrameTrial{frameBudgetMs(), m_viewport->size() * m_viewport->devicePixelRatioF()});
-    lent->whileCurrent = [viewport = m_viewport, program] {
-        viewport->renderer().exchangeProgram(*program);
-    };
-    lent->afterWarm = [viewport = m_viewport, program, trial] {
-        Renderer &renderer = viewport->renderer();
-        trial->frameMs = renderer.estimateFrameMs(trial->pixels, trial->budgetMs);
-        trial->ran = true;
-        if (trial->frameMs > trial->budgetMs)
-            renderer.exchangeProgram(*program); // the new one comes back out
-        else
-            *program = GlProgram(); // the previous one, freed in its context
-    };
+    // A trial first (issue 31, C): over the budget the new program comes
+    // out again and the last good one keeps drawing.
+    const std::shared_ptr<ProgramTrial> trial = ProgramTrial::arm(*lent, m_viewport, program);
     setState(State::Warming);
     const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
@@ -420,7 +407,7 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             setState(State::Idle);
             m_hangNote->stop();
             m_viewport->takeBackContext();
-            if (trial->ran && trial->frameMs > trial->budgetMs) {
+            if (trial->keptOut()) {
                 keepOut(hash, std::move(*program), result, timings, trial->frameMs,
                         trial->budgetMs);
                 startQueuedBuild();
@@ -440,13 +427,6 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             startQueuedBuild();
         });
     return true;
-}
-
-double LiveShaderController::frameBudgetMs() const
-{
-    // A few frames of what the view draws now, and never less than this:
-    // a program that is merely slower than the last is no reason to refuse.
-    return std::max(kMinFrameBudgetMs, 4.0 * m_viewport->frameTimes().meanMs());
 }
 
 // A program whose frame would take longer than the budget: the last good

@@ -6,17 +6,12 @@
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QSize>
 #include <optional>
 
 class QTimer;
 class QWidget;
 
 namespace phonglab {
-
-// A new program whose frame would take longer than a few frames of the
-// view, and at least this, is kept out (issue 31, C; docs/shader-editing).
-inline constexpr double kMinFrameBudgetMs = 250.0;
 
 class BuildThread;
 class ShaderDock;
@@ -137,17 +132,9 @@ private:
     void finish(const QByteArray &hash, BuildReply reply);
     bool warmInViewport(const QByteArray &hash, BuildReply &reply);
     void announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings);
-    double frameBudgetMs() const;
     void keepOut(const QByteArray &hash, GlProgram program, const BuildReport &result,
                  const BuildTimings &timings, double frameMs, double budgetMs);
 
-    // One new program's trial in the lent context (warmInViewport).
-    struct FrameTrial {
-        double budgetMs = 0.0;
-        QSize pixels;
-        double frameMs = 0.0;
-        bool ran = false;
-    };
     struct KeptOut {
         QByteArray hash;
         GlProgram program;

@@ -12,6 +12,7 @@
 #include "ui/CurrentContext.h"
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
+#include "ui/ProgramTrial.h"
 #include "ui/ShaderDock.h"
 #include "ui/ShaderEditor.h"
 #include "ui/ShaderFileSet.h"
