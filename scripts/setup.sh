@@ -14,6 +14,7 @@ PACKAGES=(
   libtinyobjloader-dev libassimp-dev libmeshoptimizer-dev
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
   ccache                                # faster rebuilds (build.sh uses it when found)
+  chromium                              # opens the pages PhongLab writes (grade's report test)
 )
 
 missing=()

@@ -1,17 +1,16 @@
 #include "CheckCommand.h"
 
 #include "CheckReportOutput.h"
+#include "CheckSteps.h"
 #include "CliCommon.h"
+#include "GradedChild.h"
 #include "SceneStages.h"
 #include "core/SceneJson.h"
-#include "mesh/SceneMeshes.h"
-#include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QJsonDocument>
-#include <QRegularExpression>
 
 #include <optional>
 #include <variant>
@@ -33,6 +32,7 @@ struct CheckArgs {
     QString diffPath;
     ExplicitBindings bindings; // --bind, over the scene's
     std::optional<PhongEquation> equation;
+    QString drawOnlyPath; // the hidden --draw-only OUT.png of grade's child
 };
 
 const QString &synopsis()
@@ -109,7 +109,10 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
-    parser.addOptions({help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation});
+    QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
+    drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
+    parser.addOptions(
+        {help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly});
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
@@ -146,102 +149,54 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     args.fragmentPath = parser.value(fragment);
     args.json = parser.isSet(json);
     args.diffPath = parser.value(diff);
+    args.drawOnlyPath = parser.value(drawOnly);
     return args;
 }
 
-ShaderDiagnostic inputError(const QString &file, const QString &message)
+CheckInput inputOf(const CheckArgs &args)
 {
-    ShaderDiagnostic d;
-    d.file = file;
-    d.message = message;
-    return d;
+    return {args.scenePath, args.vertexPath, args.fragmentPath, args.shading.has_value(),
+            args.size};
 }
 
 // Everything up to the verdict; `yours` receives the render for --diff.
 CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReference *reference,
                         QImage *yours)
 {
-    CheckOutcome outcome;
-    const auto fail = [&](const QString &file, const QString &message) {
-        outcome.errors.push_back(inputError(file, message));
-        return outcome;
-    };
-    SceneMeshes meshes = loadSceneMeshes(scene);
-    if (!meshes.ok())
-        return fail(args.scenePath, meshes.error);
-    // Builtins too: the reference casts the triangles the GPU draws.
-    std::vector<std::shared_ptr<const MeshData>> objectMeshes;
-    for (const SceneObject &object : scene.objects)
-        objectMeshes.push_back(meshes.entries.value(meshKey(scene, object)).mesh);
-
-    OffscreenRenderer offscreen;
-    if (const Result<> created = offscreen.create(); !created)
-        return fail(QString(), created.error());
-    Renderer &renderer = offscreen.renderer();
-    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
-        return fail(args.scenePath, set.error());
-    const StageFiles files =
-        chooseStageFiles(scene, args.vertexPath, args.fragmentPath, args.shading.has_value());
-    const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
-    if (!built)
-        return fail(QString(), built.error());
-    const BuildReport &program = *built;
-    for (const ShaderDiagnostic &d : program.diagnostics)
+    CheckDrawing drawing = drawForCheck(inputOf(args), scene);
+    for (const ShaderDiagnostic &d : drawing.compilerMessages)
         if (d.isError() || !args.json)
             printErrLine(d.format());
-    if (!program.ok) {
-        for (const ShaderDiagnostic &d : program.diagnostics)
-            if (d.isError())
-                outcome.errors.push_back(d);
-        if (outcome.errors.empty())
-            outcome.errors.push_back(
-                inputError(files.fragment, QStringLiteral("the shaders did not compile")));
+    CheckOutcome &outcome = drawing.outcome;
+    if (!drawing.drawn())
         return outcome;
-    }
-    // Nothing PhongLab could not bind may decide the verdict: the student's
-    // names are PhongLab's gap, never the student's mistake.
-    ShaderProgram &linked = renderer.program();
-    outcome.bindings = linked.bindings();
-    outcome.notes << outcome.bindings.notes;
-    for (const QString &problem : outcome.bindings.problems)
-        outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
-    for (const UnboundUniform &unbound : unboundUniforms(linked, scene)) {
-        // The file that declares it: the vertex stage's, else the fragment's.
-        const QRegularExpression declared(QStringLiteral(R"(\buniform\b[^;]*\b%1\b)")
-                                              .arg(QRegularExpression::escape(unbound.name)));
-        const bool inVertex =
-            !outcome.stages.empty() && declared.match(outcome.stages.front().text).hasMatch();
-        outcome.errors.push_back(
-            inputError(inVertex ? files.vertex : files.fragment, unbound.message));
-    }
-    if (!outcome.errors.empty())
-        return outcome;
-    QString lightsNote;
-    const Scene judged = sceneForCapacity(scene, outcome.bindings, &lightsNote);
-    if (!lightsNote.isEmpty()) {
-        outcome.notes << lightsNote;
-        renderer.updateSceneParameters(judged);
-    }
-    *yours = offscreen.renderImage(args.size);
-    if (yours->isNull())
-        return fail(QString(), QStringLiteral("rendering failed"));
-
     Result<CheckReference> made =
-        makeCheckReference(judged, objectMeshes, args.size.width(), args.size.height());
-    if (!made)
-        return fail(args.scenePath, QStringLiteral("no reference: %1").arg(made.error()));
+        makeCheckReference(judgedScene(scene, drawing.lightCapacity), drawing.objectMeshes,
+                           args.size.width(), args.size.height());
+    if (!made) {
+        outcome.errors.push_back(
+            inputError(args.scenePath, QStringLiteral("no reference: %1").arg(made.error())));
+        return outcome;
+    }
     *reference = std::move(*made);
-    outcome.report =
-        checkRender(toRgbImage(*yours), *reference, args.toleranceSteps, args.equation);
-    if (!outcome.report.comparable())
-        return fail(args.scenePath,
-                    QStringLiteral("nothing to compare: no surface away from silhouettes in this "
-                                   "view at %1x%2")
-                        .arg(args.size.width())
-                        .arg(args.size.height()));
-    outcome.verdict =
-        outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    *yours = drawing.image;
+    judgeDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation, args.scenePath);
     return outcome;
+}
+
+// `grade`'s child: draws and hands the drawing back (stdout and a PNG); the
+// parent judges it. Exit 0 whenever it could say what happened.
+int drawOnly(const CheckArgs &args, const Scene &scene, int argc, char **argv)
+{
+    beAGradedChild();
+    QGuiApplication app(argc, argv);
+    CheckDrawing drawing = drawForCheck(inputOf(args), scene);
+    if (drawing.drawn()) {
+        if (const Result<> written = writePng(drawing.image, args.drawOnlyPath); !written)
+            drawing.outcome.errors.push_back(inputError(args.drawOnlyPath, written.error()));
+    }
+    printLine(QString::fromUtf8(QJsonDocument(drawingJson(drawing)).toJson(QJsonDocument::Compact)));
+    return kExitOk;
 }
 
 int check(const CheckArgs &args, int argc, char **argv)
@@ -253,6 +208,16 @@ int check(const CheckArgs &args, int argc, char **argv)
     for (const auto &[name, meaning] : args.bindings)
         scene.bindings[name] = meaning;
 
+    if (!args.drawOnlyPath.isEmpty()) {
+        if (!loaded.ok()) {
+            CheckDrawing failed;
+            failed.outcome.errors.push_back(inputError(args.scenePath, loaded.error));
+            printLine(QString::fromUtf8(
+                QJsonDocument(drawingJson(failed)).toJson(QJsonDocument::Compact)));
+            return kExitOk;
+        }
+        return drawOnly(args, scene, argc, argv);
+    }
     QGuiApplication app(argc, argv);
     CheckOutcome outcome;
     CheckReference reference;

@@ -2,6 +2,7 @@
 
 #include "CheckCommand.h"
 #include "CliCommon.h"
+#include "GradeCommand.h"
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
@@ -18,6 +19,8 @@ constexpr Subcommand kSubcommands[] = {
     {"check",
      "judge a shader against the exact image and name the mistake that explains a wrong one",
      runCheck},
+    {"grade", "check a class folder of submissions, each in a process of its own; a report",
+     runGrade},
     {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
 };
 

@@ -175,9 +175,8 @@ QString bindingsText(const ProgramBindings &bindings)
     return worthSaying ? parts.join(QStringLiteral(", ")) : QString();
 }
 
-Scene sceneForCapacity(const Scene &scene, const ProgramBindings &bindings, QString *note)
+Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString *note)
 {
-    const std::optional<int> capacity = bindings.lightCapacity();
     const auto enabled = std::count_if(scene.lights.begin(), scene.lights.end(),
                                        [](const PointLight &l) { return l.enabled; });
     if (!capacity || enabled <= *capacity)

@@ -50,9 +50,10 @@ std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene 
 QString bindingsText(const ProgramBindings &bindings);
 
 // The scene as far as the program can light it: where it takes fewer lights
-// than the scene has enabled (a single light uniform, a short array), the
-// first ones it takes. `note` says what was left out, or stays empty.
-Scene sceneForCapacity(const Scene &scene, const ProgramBindings &bindings, QString *note);
+// (ProgramBindings::lightCapacity(): a single light uniform, a short array)
+// than the scene has enabled, the first ones it takes. `note` says what was
+// left out, or stays empty.
+Scene sceneForCapacity(const Scene &scene, std::optional<int> lightCapacity, QString *note);
 
 // Reads both files and builds the program: its report, or (nothing built)
 // why a file cannot be read. `texts` receives what was read.

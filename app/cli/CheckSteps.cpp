@@ -1,0 +1,222 @@
+#include "CheckSteps.h"
+
+#include "SceneStages.h"
+#include "mesh/SceneMeshes.h"
+#include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
+
+#include <QJsonArray>
+#include <QRegularExpression>
+
+namespace phonglab::cli {
+
+ShaderDiagnostic inputError(const QString &file, const QString &message)
+{
+    ShaderDiagnostic d;
+    d.file = file;
+    d.message = message;
+    return d;
+}
+
+namespace {
+
+// The file that declares uniform `name`: the vertex stage's, else the
+// fragment's.
+QString declaringFile(const QString &name, const CheckOutcome &outcome, const StageFiles &files)
+{
+    const QRegularExpression declared(
+        QStringLiteral(R"(\buniform\b[^;]*\b%1\b)").arg(QRegularExpression::escape(name)));
+    const bool inVertex =
+        !outcome.stages.empty() && declared.match(outcome.stages.front().text).hasMatch();
+    return inVertex ? files.vertex : files.fragment;
+}
+
+} // namespace
+
+CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
+{
+    CheckDrawing drawing;
+    CheckOutcome &outcome = drawing.outcome;
+    const auto fail = [&](const QString &file, const QString &message) {
+        outcome.errors.push_back(inputError(file, message));
+        return std::move(drawing);
+    };
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    if (!meshes.ok())
+        return fail(input.scenePath, meshes.error);
+    // Builtins too: the reference casts the triangles the GPU draws.
+    for (const SceneObject &object : scene.objects)
+        drawing.objectMeshes.push_back(meshes.entries.value(meshKey(scene, object)).mesh);
+
+    OffscreenRenderer offscreen;
+    if (const Result<> created = offscreen.create(); !created)
+        return fail(QString(), created.error());
+    Renderer &renderer = offscreen.renderer();
+    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
+        return fail(input.scenePath, set.error());
+    const StageFiles files =
+        chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
+    const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
+    if (!built)
+        return fail(QString(), built.error());
+    const BuildReport &program = *built;
+    drawing.compilerMessages = program.diagnostics;
+    if (!program.ok) {
+        for (const ShaderDiagnostic &d : program.diagnostics)
+            if (d.isError())
+                outcome.errors.push_back(d);
+        if (outcome.errors.empty())
+            outcome.errors.push_back(
+                inputError(files.fragment, QStringLiteral("the shaders did not compile")));
+        return drawing;
+    }
+    // Nothing PhongLab could not bind may decide the verdict: the student's
+    // names are PhongLab's gap, never the student's mistake.
+    ShaderProgram &linked = renderer.program();
+    outcome.bindings = linked.bindings();
+    drawing.lightCapacity = outcome.bindings.lightCapacity();
+    outcome.notes << outcome.bindings.notes;
+    for (const QString &problem : outcome.bindings.problems)
+        outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
+    for (const UnboundUniform &unbound : unboundUniforms(linked, scene))
+        outcome.errors.push_back(
+            inputError(declaringFile(unbound.name, outcome, files), unbound.message));
+    if (!outcome.errors.empty())
+        return drawing;
+    QString lightsNote;
+    const Scene judged = sceneForCapacity(scene, drawing.lightCapacity, &lightsNote);
+    if (!lightsNote.isEmpty()) {
+        outcome.notes << lightsNote;
+        renderer.updateSceneParameters(judged);
+    }
+    drawing.image = offscreen.renderImage(input.size);
+    if (drawing.image.isNull())
+        return fail(QString(), QStringLiteral("rendering failed"));
+    return drawing;
+}
+
+Scene judgedScene(const Scene &scene, std::optional<int> lightCapacity)
+{
+    QString unused;
+    return sceneForCapacity(scene, lightCapacity, &unused);
+}
+
+void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
+                  int toleranceSteps, std::optional<PhongEquation> equation,
+                  const QString &scenePath)
+{
+    outcome->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
+    if (!outcome->report.comparable()) {
+        outcome->errors.push_back(inputError(
+            scenePath, QStringLiteral("nothing to compare: no surface away from silhouettes in "
+                                      "this view at %1x%2")
+                           .arg(image.width())
+                           .arg(image.height())));
+        outcome->verdict = CheckOutcome::Verdict::Error;
+        return;
+    }
+    outcome->verdict =
+        outcome->report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+}
+
+// --- the child's answer ----------------------------------------------------
+
+namespace {
+
+QJsonObject diagnosticJson(const ShaderDiagnostic &d)
+{
+    return {{QStringLiteral("step"), int(d.step)},
+            {QStringLiteral("error"), d.isError()},
+            {QStringLiteral("file"), d.file},
+            {QStringLiteral("line"), d.line},
+            {QStringLiteral("column"), d.column},
+            {QStringLiteral("message"), d.message}};
+}
+
+ShaderDiagnostic diagnosticFromJson(const QJsonObject &o)
+{
+    ShaderDiagnostic d;
+    d.step = BuildStep(std::clamp(o.value(QStringLiteral("step")).toInt(), 0, int(BuildStep::Link)));
+    d.severity = o.value(QStringLiteral("error")).toBool(true) ? ShaderDiagnostic::Severity::Error
+                                                                : ShaderDiagnostic::Severity::Warning;
+    d.file = o.value(QStringLiteral("file")).toString();
+    d.line = o.value(QStringLiteral("line")).toInt();
+    d.column = o.value(QStringLiteral("column")).toInt();
+    d.message = o.value(QStringLiteral("message")).toString();
+    return d;
+}
+
+QJsonArray diagnosticsJson(const std::vector<ShaderDiagnostic> &list)
+{
+    QJsonArray out;
+    for (const ShaderDiagnostic &d : list)
+        out.append(diagnosticJson(d));
+    return out;
+}
+
+std::vector<ShaderDiagnostic> diagnosticsFromJson(const QJsonValue &value)
+{
+    std::vector<ShaderDiagnostic> out;
+    for (const QJsonValue &d : value.toArray())
+        out.push_back(diagnosticFromJson(d.toObject()));
+    return out;
+}
+
+} // namespace
+
+QJsonObject drawingJson(const CheckDrawing &drawing)
+{
+    const CheckOutcome &o = drawing.outcome;
+    QJsonArray stages;
+    for (const ShaderStageText &s : o.stages)
+        stages.append(QJsonObject{{QStringLiteral("path"), s.path},
+                                  {QStringLiteral("text"), s.text},
+                                  {QStringLiteral("vertex"), s.vertex}});
+    // Only what the verdict and its report read: the bound and the
+    // explicitly unbound variables (the type decides nothing after binding).
+    QJsonArray variables;
+    for (const VariableBinding &b : o.bindings.variables)
+        if (b.meaning || b.isExplicit)
+            variables.append(QJsonObject{
+                {QStringLiteral("name"), b.variable.name},
+                {QStringLiteral("meaning"),
+                 b.meaning ? QJsonValue(bindingMeaningKey(*b.meaning)) : QJsonValue()},
+                {QStringLiteral("explicit"), b.isExplicit}});
+    return {{QStringLiteral("errors"), diagnosticsJson(o.errors)},
+            {QStringLiteral("compiler"), diagnosticsJson(drawing.compilerMessages)},
+            {QStringLiteral("stages"), stages},
+            {QStringLiteral("variables"), variables},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(o.notes)},
+            {QStringLiteral("light_capacity"),
+             drawing.lightCapacity ? QJsonValue(*drawing.lightCapacity) : QJsonValue()},
+            {QStringLiteral("drawn"), drawing.drawn()}};
+}
+
+CheckDrawing drawingFromJson(const QJsonObject &json)
+{
+    CheckDrawing drawing;
+    CheckOutcome &o = drawing.outcome;
+    o.errors = diagnosticsFromJson(json.value(QStringLiteral("errors")));
+    drawing.compilerMessages = diagnosticsFromJson(json.value(QStringLiteral("compiler")));
+    for (const QJsonValue &v : json.value(QStringLiteral("stages")).toArray()) {
+        const QJsonObject s = v.toObject();
+        o.stages.push_back({s.value(QStringLiteral("path")).toString(),
+                            s.value(QStringLiteral("text")).toString(),
+                            s.value(QStringLiteral("vertex")).toBool()});
+    }
+    for (const QJsonValue &v : json.value(QStringLiteral("variables")).toArray()) {
+        const QJsonObject b = v.toObject();
+        VariableBinding binding;
+        binding.variable.name = b.value(QStringLiteral("name")).toString();
+        binding.meaning = bindingMeaningFromKey(b.value(QStringLiteral("meaning")).toString());
+        binding.isExplicit = b.value(QStringLiteral("explicit")).toBool();
+        o.bindings.variables.push_back(binding);
+    }
+    for (const QJsonValue &v : json.value(QStringLiteral("notes")).toArray())
+        o.notes << v.toString();
+    if (const QJsonValue c = json.value(QStringLiteral("light_capacity")); c.isDouble())
+        drawing.lightCapacity = c.toInt();
+    return drawing;
+}
+
+} // namespace phonglab::cli

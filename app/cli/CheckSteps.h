@@ -1,0 +1,70 @@
+#pragma once
+#include "CheckReportOutput.h"
+#include "core/MeshData.h"
+#include "core/PhongEquation.h"
+#include "core/Scene.h"
+#include "core/ShaderCheck.h"
+#include "render/ShaderDiagnostic.h"
+
+#include <QImage>
+#include <QJsonObject>
+#include <QSize>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phonglab::cli {
+
+// A check in its two steps. Drawing needs the GPU and runs the student's
+// code; judging needs only the exact reference and the drawn pixels.
+// `check` takes both in one process. `grade` draws in a child process per
+// submission (a shader may hang the driver or eat memory) and judges in its
+// own, against one reference per scene: the same functions, so the same
+// verdict.
+
+// What a check draws: the scene and the shader files it is drawn with.
+struct CheckInput {
+    QString scenePath;
+    QString vertexPath;   // empty: the scene's, else the method's shipped one
+    QString fragmentPath; // likewise
+    bool methodChosen = false; // --shading named the method: its shipped files win over the scene's
+    QSize size{800, 600};
+};
+
+struct CheckDrawing {
+    // errors, stages, bindings and notes; the verdict stays Error (nothing
+    // judged yet). Errors, when there are any, end the check.
+    CheckOutcome outcome;
+    std::optional<int> lightCapacity; // ProgramBindings::lightCapacity()
+    QImage image;                     // the render; null where there are errors
+    std::vector<ShaderDiagnostic> compilerMessages; // errors and warnings, for stderr
+    std::vector<std::shared_ptr<const MeshData>> objectMeshes; // per scene object, for the reference
+
+    bool drawn() const { return outcome.errors.empty() && !image.isNull(); }
+};
+
+// Loads the meshes, builds the program, binds it and draws `scene` (already
+// loaded from input.scenePath, with any --shading and --bind applied).
+CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene);
+
+// The scene as far as a program with `lightCapacity` lights can light it
+// (sceneForCapacity()): what the reference is made of.
+Scene judgedScene(const Scene &scene, std::optional<int> lightCapacity);
+
+// Judges a drawn image: sets outcome's report and verdict, or an error when
+// no pixel could be compared.
+void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
+                  int toleranceSteps, std::optional<PhongEquation> equation,
+                  const QString &scenePath);
+
+// An error not from the compiler: bad input, no GL, a file not read.
+ShaderDiagnostic inputError(const QString &file, const QString &message);
+
+// The drawing as `grade`'s child hands it to its parent (stdout, one JSON
+// object), and read back. The image travels as a PNG file beside it.
+QJsonObject drawingJson(const CheckDrawing &drawing);
+CheckDrawing drawingFromJson(const QJsonObject &json);
+
+} // namespace phonglab::cli

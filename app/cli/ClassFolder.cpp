@@ -1,0 +1,115 @@
+#include "ClassFolder.h"
+
+#include <QDir>
+#include <QDirIterator>
+#include <QFile>
+#include <QFileInfo>
+
+#include <algorithm>
+
+namespace phonglab::cli {
+
+namespace {
+
+constexpr int kMaxFilesLookedAt = 2000; // a node_modules folder is not a submission
+constexpr qint64 kSniffBytes = 256 * 1024;
+
+enum class StageGuess {
+    None,
+    Vertex,
+    Fragment
+};
+
+StageGuess stageOf(const QFileInfo &file)
+{
+    const QString suffix = file.suffix().toLower();
+    for (const char *s : {"vert", "vs", "vsh"})
+        if (suffix == QLatin1String(s))
+            return StageGuess::Vertex;
+    for (const char *s : {"frag", "fs", "fsh"})
+        if (suffix == QLatin1String(s))
+            return StageGuess::Fragment;
+    if (suffix != QLatin1String("glsl"))
+        return StageGuess::None;
+    QFile f(file.filePath());
+    if (!f.open(QIODevice::ReadOnly))
+        return StageGuess::Fragment; // read again (and refused, with the reason) by the check
+    return f.read(kSniffBytes).contains("gl_Position") ? StageGuess::Vertex : StageGuess::Fragment;
+}
+
+QString relativeTo(const QDir &dir, const QString &path)
+{
+    return dir.relativeFilePath(path);
+}
+
+Submission readSubmission(const QFileInfo &folder)
+{
+    Submission s;
+    s.name = folder.fileName();
+    s.folder = folder.absoluteFilePath();
+    const QDir dir(s.folder);
+    QStringList vertex, fragment;
+    QDirIterator it(s.folder, QDir::Files | QDir::NoDotAndDotDot, QDirIterator::Subdirectories);
+    for (int seen = 0; it.hasNext() && seen < kMaxFilesLookedAt; ++seen) {
+        const QFileInfo file(it.next());
+        if (file.fileName().startsWith(QLatin1Char('.')))
+            continue;
+        switch (stageOf(file)) {
+        case StageGuess::Vertex: vertex << file.absoluteFilePath(); break;
+        case StageGuess::Fragment: fragment << file.absoluteFilePath(); break;
+        case StageGuess::None: break;
+        }
+    }
+    vertex.sort();
+    fragment.sort();
+    QStringList problems;
+    for (const auto &[files, stage] : {std::pair{vertex, "vertex"}, std::pair{fragment, "fragment"}})
+        if (files.size() > 1) {
+            QStringList names;
+            for (const QString &f : files)
+                names << relativeTo(dir, f);
+            problems << QStringLiteral("%1 files for the %2 stage: %3 (keep one)")
+                            .arg(files.size())
+                            .arg(QLatin1String(stage), names.join(QStringLiteral(", ")));
+        }
+    if (vertex.isEmpty() && fragment.isEmpty())
+        problems << QStringLiteral("no shader file (.vert, .frag, .vs, .fs, .glsl) in %1")
+                        .arg(s.name);
+    s.error = problems.join(QStringLiteral("; "));
+    if (s.error.isEmpty()) {
+        s.vertex = vertex.value(0);
+        s.fragment = fragment.value(0);
+    }
+    return s;
+}
+
+} // namespace
+
+ClassFolder readClassFolder(const QString &path)
+{
+    ClassFolder out;
+    const QFileInfo info(path);
+    if (!info.exists()) {
+        out.error = QStringLiteral("%1: no such folder").arg(path);
+        return out;
+    }
+    if (!info.isDir()) {
+        out.error = QStringLiteral("%1: not a folder (one subfolder per submission expected)")
+                        .arg(path);
+        return out;
+    }
+    const QFileInfoList folders =
+        QDir(path).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::NoSort);
+    for (const QFileInfo &folder : folders)
+        if (!folder.fileName().startsWith(QLatin1Char('.')))
+            out.submissions.push_back(readSubmission(folder));
+    std::sort(out.submissions.begin(), out.submissions.end(),
+              [](const Submission &a, const Submission &b) { return a.name < b.name; });
+    if (out.submissions.empty())
+        out.error =
+            QStringLiteral("%1: no submission folders in it (one subfolder per student expected)")
+                .arg(path);
+    return out;
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,279 @@
+#include "GradeCommand.h"
+
+#include "CliCommon.h"
+#include "GradeReport.h"
+#include "GradeRun.h"
+#include "GradeTables.h"
+#include "SceneStages.h"
+#include "core/SceneJson.h"
+#include "mesh/MeshImportProcess.h"
+#include "mesh/SceneMeshes.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QSaveFile>
+#include <QTemporaryFile>
+#include <QThread>
+
+#include <cmath>
+#include <map>
+#include <variant>
+
+namespace phonglab::cli {
+
+namespace {
+
+constexpr int kMaxImageSide = 4096;
+constexpr double kDefaultTimeoutS = 20.0;
+constexpr int kDefaultMemoryMiB = 2048;
+
+struct GradeArgs {
+    GradeSettings settings;
+    QStringList scenePaths;
+    int jobs = 1;
+    GradedChildLimits limits;
+};
+
+const QString &synopsis()
+{
+    static const QString text = QStringLiteral(
+        "usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
+        "                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]\n"
+        "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
+        "[--equation slide|guarded]");
+    return text;
+}
+
+QString helpText()
+{
+    return synopsis()
+        + QStringLiteral(
+              "\n\n"
+              "Checks every submission in SUBMISSIONS against every scene, as `phonglab check` "
+              "does,\n"
+              "and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one\n"
+              "submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,\n"
+              ".frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` "
+              "takes.\n"
+              "A stage left out is the scene's shading method's shipped one. Each check runs in a\n"
+              "child process of its own: a shader that runs too long or crashes costs that one "
+              "verdict.\n\n"
+              "  --scene FILE        a scene to check with; repeatable, at least one\n"
+              "  --out DIR           where the results go, default ./grades\n"
+              "  --jobs N            checks at once, default the number of cores (%1)\n"
+              "  --timeout SECONDS   wall-clock limit of one check, default %2\n"
+              "  --memory MIB        memory limit of one check, default %3\n"
+              "  --size WxH          image size in pixels, default 800x600\n"
+              "  --tolerance STEPS   largest error allowed per channel (0..255), default %4\n"
+              "  --bind NAME=MEANING what every student's NAME holds, as in check; repeatable\n"
+              "  --equation E        demand the slide's (slide) or the guarded (guarded) "
+              "equation\n\n"
+              "Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,\n"
+              "bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json\n"
+              "(the check's JSON per row), DIR/report.html and its DIR/images/, and a table on "
+              "stdout.\n"
+              "Verdicts: pass, fail, error, timeout, crash.\n\n"
+              "Exit status: 0 every submission got a verdict, 1 the run could not complete (a "
+              "scene\n"
+              "that does not load, no submissions, DIR not writable), 2 wrong arguments.")
+              .arg(QThread::idealThreadCount())
+              .arg(kDefaultTimeoutS)
+              .arg(kDefaultMemoryMiB)
+              .arg(kDefaultCheckToleranceSteps);
+}
+
+std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show help."));
+    const QCommandLineOption scene(QStringLiteral("scene"), QString(), QStringLiteral("file"));
+    const QCommandLineOption out(QStringLiteral("out"), QString(), QStringLiteral("dir"));
+    const QCommandLineOption jobs(QStringLiteral("jobs"), QString(), QStringLiteral("n"));
+    const QCommandLineOption timeout(QStringLiteral("timeout"), QString(), QStringLiteral("s"));
+    const QCommandLineOption memory(QStringLiteral("memory"), QString(), QStringLiteral("mib"));
+    const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
+    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
+                                       QStringLiteral("steps"));
+    const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
+    const QCommandLineOption equation(QStringLiteral("equation"), QString(),
+                                      QStringLiteral("equation"));
+    parser.addOptions({help, scene, out, jobs, timeout, memory, size, tolerance, bind, equation});
+    parser.addPositionalArgument(QStringLiteral("submissions"), QString());
+
+    const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments, help, synopsis(), helpText()))
+        return *exit;
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1)
+        return usage(positional.isEmpty() ? QStringLiteral("missing the submissions folder")
+                                          : QStringLiteral("exactly one submissions folder "
+                                                           "expected"));
+    GradeArgs args;
+    GradeSettings &settings = args.settings;
+    settings.classFolder = positional.first();
+    args.scenePaths = parser.values(scene);
+    if (args.scenePaths.isEmpty())
+        return usage(QStringLiteral("--scene: at least one scene expected"));
+    settings.outFolder = parser.isSet(out) ? parser.value(out) : QStringLiteral("grades");
+    if (settings.outFolder.isEmpty())
+        return usage(QStringLiteral("--out: missing the folder"));
+    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &settings.size),
+                                 readBindOptions(parser, bind, &settings.bindings)})
+        if (!wrong.isEmpty())
+            return usage(wrong);
+    if (parser.isSet(equation)) {
+        settings.equation = phongEquationFromKey(parser.value(equation));
+        if (!settings.equation)
+            return usage(QStringLiteral("--equation: expected slide or guarded, got '%1'")
+                             .arg(parser.value(equation)));
+    }
+    bool ok = true;
+    if (parser.isSet(tolerance)) {
+        settings.toleranceSteps = parser.value(tolerance).toInt(&ok);
+        if (!ok || settings.toleranceSteps < 0 || settings.toleranceSteps > 255)
+            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'")
+                             .arg(parser.value(tolerance)));
+    }
+    args.jobs = QThread::idealThreadCount();
+    if (parser.isSet(jobs)) {
+        args.jobs = parser.value(jobs).toInt(&ok);
+        if (!ok || args.jobs < 1 || args.jobs > 256)
+            return usage(
+                QStringLiteral("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
+    }
+    const double seconds =
+        parser.isSet(timeout) ? parser.value(timeout).toDouble(&ok) : kDefaultTimeoutS;
+    if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400)
+        return usage(QStringLiteral("--timeout: expected seconds in (0, 86400], got '%1'")
+                         .arg(parser.value(timeout)));
+    args.limits.wallClockMs = int(std::lround(seconds * 1000));
+    const qint64 mib = parser.isSet(memory) ? parser.value(memory).toLongLong(&ok)
+                                            : qint64(kDefaultMemoryMiB);
+    if (!ok || mib < 64 || mib > 1024 * 1024)
+        return usage(QStringLiteral("--memory: expected 64..1048576 MiB, got '%1'")
+                         .arg(parser.value(memory)));
+    args.limits.memoryBytes = mib * 1024 * 1024;
+    return args;
+}
+
+// Each scene loaded, with --bind applied, and its meshes for the exact image.
+Result<std::vector<GradeScene>> loadScenes(const GradeArgs &args)
+{
+    std::vector<GradeScene> scenes;
+    std::map<QString, int> names;
+    for (const QString &path : args.scenePaths)
+        ++names[QFileInfo(path).fileName()];
+    for (const QString &path : args.scenePaths) {
+        const SceneLoadResult loaded = loadSceneFile(path);
+        if (!loaded.ok())
+            return fail(loaded.error);
+        GradeScene s;
+        s.path = path;
+        s.label = names[QFileInfo(path).fileName()] > 1 ? path : QFileInfo(path).fileName();
+        s.slug = QStringLiteral("%1-%2")
+                     .arg(scenes.size() + 1)
+                     .arg(fileSlug(QFileInfo(path).completeBaseName()));
+        s.scene = *loaded.scene;
+        for (const auto &[name, meaning] : args.settings.bindings)
+            s.scene.bindings[name] = meaning;
+        SceneMeshes meshes = loadSceneMeshes(s.scene);
+        if (!meshes.ok())
+            return fail(QStringLiteral("%1: %2").arg(path, meshes.error));
+        for (const SceneObject &object : s.scene.objects)
+            s.objectMeshes.push_back(meshes.entries.value(meshKey(s.scene, object)).mesh);
+        scenes.push_back(std::move(s));
+    }
+    return scenes;
+}
+
+Result<> writeFile(const QString &path, const QByteArray &bytes)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+    return {};
+}
+
+Result<> prepareOutFolder(const QString &folder)
+{
+    if (!QDir().mkpath(folder + QStringLiteral("/images")))
+        return fail(QStringLiteral("%1: cannot make the folder").arg(folder));
+    QTemporaryFile probe(folder + QStringLiteral("/.write-test-XXXXXX"));
+    if (!probe.open())
+        return fail(QStringLiteral("%1: cannot write into it: %2").arg(folder, probe.errorString()));
+    return {};
+}
+
+Result<> writeOutputs(const GradeResults &results)
+{
+    const QString dir = results.settings.outFolder + QLatin1Char('/');
+    for (const Result<> &written :
+         {writeFile(dir + QStringLiteral("grades.csv"), gradesCsv(results)),
+          writeFile(dir + QStringLiteral("grades.json"),
+                    QJsonDocument(gradesJson(results)).toJson(QJsonDocument::Indented)),
+          writeFile(dir + QStringLiteral("report.html"), gradeReportHtml(results).toUtf8())})
+        if (!written)
+            return written;
+    return {};
+}
+
+int grade(const GradeArgs &args, int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    GradeResults results;
+    results.settings = args.settings;
+    const ClassFolder folder = readClassFolder(args.settings.classFolder);
+    if (!folder.error.isEmpty()) {
+        printError(folder.error);
+        return kExitFailure;
+    }
+    results.submissions = folder.submissions;
+    Result<std::vector<GradeScene>> scenes = loadScenes(args);
+    if (!scenes) {
+        printError(scenes.error());
+        return kExitFailure;
+    }
+    results.scenes = std::move(*scenes);
+    if (const Result<> ready = prepareOutFolder(args.settings.outFolder); !ready) {
+        printError(ready.error());
+        return kExitFailure;
+    }
+    const QString executable = importExecutable();
+    if (executable.isEmpty()) {
+        printError(QStringLiteral("cannot find the phonglab program to run the checks with "
+                                  "(set PHONGLAB_EXE)"));
+        return kExitFailure;
+    }
+    GradeRun run(results, executable, args.jobs, args.limits);
+    if (const Result<> prepared = run.prepareReferences(); !prepared) {
+        printError(prepared.error());
+        return kExitFailure;
+    }
+    run.run();
+    if (const Result<> written = writeOutputs(results); !written) {
+        printError(written.error());
+        return kExitFailure;
+    }
+    printLine(gradesTable(results));
+    printErrLine(QStringLiteral("grade: %1 checks; %2")
+                     .arg(results.rows.size())
+                     .arg(QDir(args.settings.outFolder).filePath(QStringLiteral("report.html"))));
+    return kExitOk;
+}
+
+} // namespace
+
+int runGrade(int argc, char **argv)
+{
+    const auto parsed = parseArgs(argumentsFrom(argc, argv).mid(1));
+    if (const int *code = std::get_if<int>(&parsed))
+        return *code;
+    return grade(std::get<GradeArgs>(parsed), argc, argv);
+}
+
+} // namespace phonglab::cli

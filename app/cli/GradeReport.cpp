@@ -1,0 +1,310 @@
+#include "GradeReport.h"
+
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include <cmath>
+#include <map>
+
+namespace phonglab::cli {
+
+namespace {
+
+QString esc(const QString &text)
+{
+    return text.toHtmlEscaped();
+}
+
+// Worst first: what a teacher looks at before the passes.
+int verdictRank(GradeVerdict v)
+{
+    switch (v) {
+    case GradeVerdict::Crash: return 0;
+    case GradeVerdict::Timeout: return 1;
+    case GradeVerdict::Error: return 2;
+    case GradeVerdict::Fail: return 3;
+    case GradeVerdict::Pass: return 4;
+    }
+    return 2;
+}
+
+constexpr GradeVerdict kVerdicts[] = {GradeVerdict::Pass, GradeVerdict::Fail, GradeVerdict::Error,
+                                      GradeVerdict::Timeout, GradeVerdict::Crash};
+
+QString verdictColour(GradeVerdict v)
+{
+    switch (v) {
+    case GradeVerdict::Pass: return QStringLiteral("#2e7d32");
+    case GradeVerdict::Fail: return QStringLiteral("#c62828");
+    case GradeVerdict::Error: return QStringLiteral("#ef6c00");
+    case GradeVerdict::Timeout: return QStringLiteral("#6a1b9a");
+    case GradeVerdict::Crash: return QStringLiteral("#37474f");
+    }
+    return QStringLiteral("#000");
+}
+
+const char *kStyle = R"(
+body{font:14px/1.4 system-ui,sans-serif;margin:24px;color:#212121}
+h1{font-size:20px}h2{font-size:16px;margin-top:28px}
+table.rows{border-collapse:collapse;width:100%}
+table.rows th,table.rows td{border-top:1px solid #ddd;padding:6px;vertical-align:top;text-align:left}
+table.rows th.sortable{cursor:pointer;text-decoration:underline dotted}
+.verdict{font-weight:bold;color:#fff;padding:1px 6px;border-radius:3px}
+.images img{width:200px;image-rendering:pixelated;margin-right:4px;border:1px solid #ccc}
+.images figure{display:inline-block;margin:0 4px 0 0}.images figcaption{font-size:12px;color:#555}
+pre.lines{background:#f6f6f6;padding:4px 6px;margin:4px 0;overflow-x:auto}
+pre.lines .hit{background:#ffe0b2;display:block}
+code.command{display:block;user-select:all;background:#eef;padding:3px 6px;word-break:break-all}
+#missing{display:none;background:#ffebee;padding:8px;border:1px solid #c62828}
+.legend span{display:inline-block;width:10px;height:10px;margin:0 4px 0 12px}
+)";
+
+const char *kScript = R"(
+(function(){
+  var rank={student:function(r){return r.dataset.student;},
+            verdict:function(r){return r.dataset.rank+'\u0000'+r.dataset.student;},
+            psnr:function(r){return parseFloat(r.dataset.psnr);}};
+  function sortBy(key){
+    var body=document.querySelector('table.rows tbody');
+    var rows=Array.prototype.slice.call(body.rows);
+    rows.sort(function(a,b){var x=rank[key](a),y=rank[key](b);
+      if(x<y)return -1;if(x>y)return 1;return a.dataset.order-b.dataset.order;});
+    rows.forEach(function(r){body.appendChild(r);});
+    document.body.dataset.sortedBy=key;
+  }
+  document.querySelectorAll('th[data-sort]').forEach(function(th){
+    th.addEventListener('click',function(){sortBy(th.dataset.sort);});});
+  var m=/sort=(\w+)/.exec(location.hash);if(m&&rank[m[1]])sortBy(m[1]);
+  window.addEventListener('load',function(){
+    var broken=Array.prototype.filter.call(document.images,function(i){return !i.naturalWidth;});
+    document.body.dataset.brokenImages=broken.length;
+    if(broken.length){var w=document.getElementById('missing');w.style.display='block';
+      w.textContent=broken.length+' image(s) cannot be shown: keep the images folder beside report.html.';}
+  });
+})();
+)";
+
+QString bar(double fraction, const QString &colour, int width = 300)
+{
+    const int px = int(std::lround(std::clamp(fraction, 0.0, 1.0) * width));
+    return QStringLiteral("<rect x=\"%1\" width=\"%2\" height=\"14\" fill=\"%3\"/>")
+        .arg(0)
+        .arg(px)
+        .arg(colour);
+}
+
+QString verdictBadge(GradeVerdict v)
+{
+    return QStringLiteral("<span class=\"verdict\" style=\"background:%1\">%2</span>")
+        .arg(verdictColour(v), gradeVerdictName(v));
+}
+
+QString summary(const GradeResults &results)
+{
+    QString html = QStringLiteral("<h2>Passes per scene</h2><table>");
+    const int students = int(results.submissions.size());
+    for (std::size_t s = 0; s < results.scenes.size(); ++s) {
+        std::map<GradeVerdict, int> counts;
+        for (const GradeRow &row : results.rows)
+            if (row.scene == int(s))
+                ++counts[row.verdict];
+        QString rects;
+        double x = 0;
+        QStringList parts;
+        for (GradeVerdict v : kVerdicts) {
+            const int n = counts[v];
+            if (n == 0)
+                continue;
+            const double w = 400.0 * n / std::max(1, students);
+            rects += QStringLiteral("<rect x=\"%1\" width=\"%2\" height=\"16\" fill=\"%3\"><title>%4 "
+                                    "%5</title></rect>")
+                         .arg(x, 0, 'f', 1)
+                         .arg(w, 0, 'f', 1)
+                         .arg(verdictColour(v))
+                         .arg(n)
+                         .arg(gradeVerdictName(v));
+            x += w;
+            parts << QStringLiteral("%1 %2").arg(n).arg(gradeVerdictName(v));
+        }
+        html += QStringLiteral("<tr><td>%1</td><td><svg width=\"400\" height=\"16\" role=\"img\" "
+                               "aria-label=\"%2\">%3</svg></td><td>%4 of %5 pass · %2</td></tr>")
+                    .arg(esc(results.scenes[s].label), esc(parts.join(QStringLiteral(", "))), rects,
+                         QString::number(counts[GradeVerdict::Pass]), QString::number(students));
+    }
+    html += QStringLiteral("</table><p class=\"legend\">");
+    for (GradeVerdict v : kVerdicts)
+        html += QStringLiteral("<span style=\"background:%1\"></span>%2")
+                    .arg(verdictColour(v), gradeVerdictName(v));
+    html += QStringLiteral("</p>");
+
+    std::map<QString, int> mistakes;
+    for (const GradeRow &row : results.rows)
+        if (const QString key = rowMistakeKey(row); !key.isEmpty())
+            ++mistakes[key];
+    std::vector<std::pair<QString, int>> sorted(mistakes.begin(), mistakes.end());
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const auto &a, const auto &b) { return a.second > b.second; });
+    html += QStringLiteral("<h2>Most common mistakes</h2>");
+    if (sorted.empty())
+        return html + QStringLiteral("<p>None: no check failed.</p>");
+    const int most = sorted.front().second;
+    html += QStringLiteral("<table>");
+    for (const auto &[key, n] : sorted)
+        html += QStringLiteral("<tr><td>%1</td><td><svg width=\"300\" height=\"14\" "
+                               "role=\"img\" aria-label=\"%2\">%3</svg></td><td>%2</td></tr>")
+                    .arg(esc(key), QString::number(n),
+                         bar(double(n) / most, QStringLiteral("#c62828")));
+    return html + QStringLiteral("</table>");
+}
+
+// The stage text a line or error points into: by the path the row reports.
+const ShaderStageText *stageText(const GradeRow &row, const QString &file)
+{
+    for (const ShaderStageText &s : row.outcome.stages)
+        if (s.path == file)
+            return &s;
+    return nullptr;
+}
+
+QString linesInContext(const GradeRow &row, const QString &file, int line)
+{
+    const ShaderStageText *stage = stageText(row, file);
+    if (!stage || line <= 0)
+        return {};
+    const QStringList lines = stage->text.split(QLatin1Char('\n'));
+    QString html = QStringLiteral("<pre class=\"lines\">");
+    for (int l = std::max(1, line - 2); l <= std::min(int(lines.size()), line + 2); ++l) {
+        const QString text = QStringLiteral("%1:%2  %3")
+                                 .arg(esc(file), QStringLiteral("%1").arg(l, 4),
+                                      esc(lines[l - 1]));
+        html += l == line ? QStringLiteral("<span class=\"hit\">%1</span>").arg(text)
+                          : text + QLatin1Char('\n');
+    }
+    return html + QStringLiteral("</pre>");
+}
+
+QString details(const GradeRow &row)
+{
+    QString html;
+    const CheckOutcome &o = row.outcome;
+    if (row.verdict == GradeVerdict::Pass)
+        html += QStringLiteral("<p>Matches the exact image.</p>");
+    if (row.verdict == GradeVerdict::Fail) {
+        const MistakeDiagnosis &d = o.report.diagnosis;
+        if (d.unexplained())
+            html += QStringLiteral("<p><b>unknown</b>: no classic mistake explains the "
+                                   "difference; the heatmap shows where it is.</p>");
+        for (const MistakeFinding &f : d.findings) {
+            html += QStringLiteral("<p><b>%1</b> explains %2 % of the difference: %3</p>")
+                        .arg(esc(shaderMistakeKey(f.key)), QString::number(qRound(100.0 * f.confidence)),
+                             esc(shaderMistakeRule(f.key)));
+            for (const SourceLine &l : mistakeSourceLines(f.key, o.stages))
+                html += linesInContext(row, l.file, l.line);
+        }
+    }
+    for (const ShaderDiagnostic &e : o.errors) {
+        html += QStringLiteral("<p>%1%2</p>")
+                    .arg(e.file.isEmpty()
+                             ? QString()
+                             : QStringLiteral("<code>%1%2</code>: ")
+                                   .arg(esc(e.file),
+                                        e.line > 0 ? QStringLiteral(":%1").arg(e.line) : QString()),
+                         esc(e.message));
+        html += linesInContext(row, e.file, e.line);
+    }
+    for (const QString &note : o.notes)
+        html += QStringLiteral("<p><i>note:</i> %1</p>").arg(esc(note));
+    return html;
+}
+
+QString figure(const QString &image, const QString &caption)
+{
+    if (image.isEmpty())
+        return {};
+    return QStringLiteral("<figure><a href=\"%1\"><img src=\"%1\" alt=\"%2\" loading=\"lazy\"></a>"
+                          "<figcaption>%2</figcaption></figure>")
+        .arg(esc(image), esc(caption));
+}
+
+QString openCommand(const GradeResults &results, const GradeRow &row)
+{
+    const Submission &s = results.submissions[std::size_t(row.submission)];
+    if (s.vertex.isEmpty() && s.fragment.isEmpty())
+        return {};
+    QStringList words{QStringLiteral("phonglab"),
+                      shellQuoted(QFileInfo(results.scenes[std::size_t(row.scene)].path)
+                                      .absoluteFilePath())};
+    if (!s.vertex.isEmpty())
+        words << QStringLiteral("--vertex") << shellQuoted(s.vertex);
+    if (!s.fragment.isEmpty())
+        words << QStringLiteral("--fragment") << shellQuoted(s.fragment);
+    return words.join(QLatin1Char(' '));
+}
+
+QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
+{
+    const CheckReport &r = row.outcome.report;
+    const bool judged = row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+    const double psnr = judged ? r.comparison.psnr : -1.0;
+    const QString student = results.submissions[std::size_t(row.submission)].name;
+    const QString command = openCommand(results, row);
+    // One pass of arg(): text a student wrote may hold "%1" itself.
+    return QStringLiteral("<tr data-order=\"%1\" data-student=\"%2\" data-rank=\"%3\" "
+                          "data-psnr=\"%4\"><td>%2</td><td>%5</td><td>%6</td><td>%7</td>"
+                          "<td class=\"images\">%8</td><td>%9%10</td></tr>\n")
+        .arg(QString::number(order), esc(student), QString::number(verdictRank(row.verdict)),
+             std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("1e9"),
+             esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
+             judged ? (std::isfinite(psnr) ? QString::number(psnr, 'f', 1) : QStringLiteral("∞"))
+                    : QString(),
+             figure(row.yoursImage, QStringLiteral("theirs"))
+                 + figure(row.exactImage, QStringLiteral("exact"))
+                 + figure(row.heatmapImage, QStringLiteral("heatmap")),
+             details(row),
+             command.isEmpty() ? QString()
+                               : QStringLiteral("<code class=\"command\" title=\"opens it in the "
+                                                "window\">%1</code>")
+                                     .arg(esc(command)));
+}
+
+} // namespace
+
+QString shellQuoted(const QString &text)
+{
+    static const QRegularExpression safe(QStringLiteral(R"(^[A-Za-z0-9_@%+=:,./-]+$)"));
+    if (safe.match(text).hasMatch())
+        return text;
+    return QLatin1Char('\'') + QString(text).replace(QLatin1Char('\''), QLatin1String("'\\''"))
+        + QLatin1Char('\'');
+}
+
+QString gradeReportHtml(const GradeResults &results)
+{
+    QString html = QStringLiteral("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+                                  "<title>PhongLab grades: %1</title><style>%2</style></head>\n"
+                                  "<body>\n<h1>PhongLab grades: %1</h1>\n")
+                       .arg(esc(results.settings.classFolder), QString::fromLatin1(kStyle));
+    html += QStringLiteral("<p>%1 submissions, %2 scenes, %3×%4 pixels, tolerance %5/255. "
+                           "Sort the rows by a column's title.</p>\n"
+                           "<div id=\"missing\"></div>\n")
+                .arg(results.submissions.size())
+                .arg(results.scenes.size())
+                .arg(results.settings.size.width())
+                .arg(results.settings.size.height())
+                .arg(results.settings.toleranceSteps);
+    html += summary(results);
+    html += QStringLiteral(
+        "<h2>Every student and scene</h2>\n<table class=\"rows\"><thead><tr>"
+        "<th class=\"sortable\" data-sort=\"student\">student</th><th>scene</th>"
+        "<th class=\"sortable\" data-sort=\"verdict\">verdict</th>"
+        "<th class=\"sortable\" data-sort=\"psnr\">PSNR dB</th><th>images</th>"
+        "<th>why, and the command that opens it</th></tr></thead>\n<tbody>\n");
+    int order = 0;
+    for (const GradeRow &row : results.rows)
+        html += rowHtml(results, row, order++);
+    html += QStringLiteral("</tbody></table>\n<script>%1</script>\n</body></html>\n")
+                .arg(QString::fromLatin1(kScript));
+    return html;
+}
+
+} // namespace phonglab::cli

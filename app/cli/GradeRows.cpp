@@ -1,0 +1,56 @@
+#include "GradeRows.h"
+
+namespace phonglab::cli {
+
+QString gradeVerdictName(GradeVerdict verdict)
+{
+    switch (verdict) {
+    case GradeVerdict::Pass: return QStringLiteral("pass");
+    case GradeVerdict::Fail: return QStringLiteral("fail");
+    case GradeVerdict::Error: return QStringLiteral("error");
+    case GradeVerdict::Timeout: return QStringLiteral("timeout");
+    case GradeVerdict::Crash: return QStringLiteral("crash");
+    }
+    return QStringLiteral("error");
+}
+
+const MistakeFinding *topFinding(const GradeRow &row)
+{
+    if (row.verdict != GradeVerdict::Fail)
+        return nullptr;
+    const auto &findings = row.outcome.report.diagnosis.findings;
+    return findings.empty() ? nullptr : &findings.front();
+}
+
+QString rowMistakeKey(const GradeRow &row)
+{
+    if (const MistakeFinding *f = topFinding(row))
+        return shaderMistakeKey(f->key);
+    return row.verdict == GradeVerdict::Fail ? QStringLiteral("unknown") : QString();
+}
+
+RowPlace rowPlace(const GradeRow &row)
+{
+    if (const MistakeFinding *f = topFinding(row)) {
+        const std::vector<SourceLine> lines = mistakeSourceLines(f->key, row.outcome.stages);
+        if (!lines.empty())
+            return {lines.front().file, lines.front().line};
+        return {};
+    }
+    if (!row.outcome.errors.empty())
+        return {row.outcome.errors.front().file, row.outcome.errors.front().line};
+    return {};
+}
+
+QString fileSlug(const QString &text)
+{
+    QString out;
+    for (const QChar c : text.left(40))
+        out += (c.isLetterOrNumber() && c.unicode() < 128) || c == QLatin1Char('-')
+                || c == QLatin1Char('_')
+            ? c
+            : QLatin1Char('_');
+    return out.isEmpty() ? QStringLiteral("_") : out;
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,81 @@
+#pragma once
+#include "CheckReportOutput.h"
+#include "ClassFolder.h"
+#include "core/MeshData.h"
+#include "core/PhongEquation.h"
+#include "core/Scene.h"
+
+#include <QSize>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phonglab::cli {
+
+// What `phonglab grade` works through and what it found: the scenes, the
+// submissions, and one row per submission × scene.
+
+struct GradeSettings {
+    QString classFolder; // SUBMISSIONS, as given
+    QString outFolder;   // --out
+    QSize size{800, 600};
+    int toleranceSteps = 2;
+    std::optional<PhongEquation> equation;
+    ExplicitBindings bindings; // --bind, over each scene's
+};
+
+struct GradeScene {
+    QString path;  // as given
+    QString label; // its file name; the path as given where two scenes share a name
+    QString slug;  // for image file names
+    Scene scene;   // with --bind applied
+    std::vector<std::shared_ptr<const MeshData>> objectMeshes;
+};
+
+enum class GradeVerdict {
+    Pass,
+    Fail,
+    Error,   // the check's own error: compile error, unbound name, two files for a stage
+    Timeout, // the child ran past --timeout
+    Crash    // the child died, or used more memory than allowed
+};
+QString gradeVerdictName(GradeVerdict verdict); // pass, fail, error, timeout, crash
+
+struct GradeRow {
+    int submission = 0; // index into the submissions
+    int scene = 0;      // index into the scenes
+    GradeVerdict verdict = GradeVerdict::Error;
+    CheckOutcome outcome; // as `check` reports it; paths in the class folder relative to it
+    double seconds = 0.0; // the child's wall time
+    // Relative to the out folder; empty where there is none.
+    QString yoursImage;
+    QString exactImage;
+    QString heatmapImage;
+};
+
+struct GradeResults {
+    GradeSettings settings;
+    std::vector<Submission> submissions;
+    std::vector<GradeScene> scenes;
+    std::vector<GradeRow> rows; // by submission, then scene: the same order on every run
+};
+
+// The row's first finding, or nullptr (pass, error, unexplained fail).
+const MistakeFinding *topFinding(const GradeRow &row);
+// The mistake key a row is filed under: the top finding's, "unknown" for a
+// fail nothing explains, empty otherwise.
+QString rowMistakeKey(const GradeRow &row);
+// Where to look: the top finding's first line, else the first error's
+// place. Empty file where there is none.
+struct RowPlace {
+    QString file;
+    int line = 0;
+};
+RowPlace rowPlace(const GradeRow &row);
+
+// Characters safe in a file name on every system: the rest become '_'.
+QString fileSlug(const QString &text);
+
+} // namespace phonglab::cli

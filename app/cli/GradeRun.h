@@ -1,0 +1,60 @@
+#pragma once
+#include "GradeRows.h"
+#include "GradedChild.h"
+#include "core/ShaderCheck.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+#include <deque>
+#include <map>
+
+namespace phonglab::cli {
+
+// The checks of `grade`: one child per submission × scene, `jobs` at once,
+// each judged here as it ends against the exact image of its scene, made
+// once (once per number of lights a shader can take, where one takes fewer
+// than the scene has). Fills results.rows; writes each student's image and
+// heatmap under the out folder's images/. A progress line on a terminal.
+class GradeRun : public QObject
+{
+    Q_OBJECT
+
+public:
+    GradeRun(GradeResults &results, QString executable, int jobs, GradedChildLimits limits);
+
+    // The exact images of every scene, before any child starts (they use
+    // every core). Errors name the scene.
+    Result<> prepareReferences();
+    // Runs every check; returns when the last has ended.
+    void run();
+
+private:
+    struct Job {
+        int row;
+    };
+    void startNext();
+    void onEnded(int row, const GradedChildEnd &end);
+    void judge(GradeRow &row, const GradedChildEnd &end);
+    const CheckReference *referenceFor(int scene, const Scene &judged, QString *error);
+    QString exactImageFor(int scene, int lights, PhongEquation equation,
+                          const CheckReference &reference);
+    QStringList childArguments(const GradeRow &row) const;
+    void showProgress();
+
+    GradeResults &m_results;
+    QString m_executable;
+    int m_jobs = 1;
+    GradedChildLimits m_limits;
+    std::deque<Job> m_waiting;
+    int m_running = 0;
+    int m_done = 0;
+    double m_childSeconds = 0.0;
+    QElapsedTimer m_clock;
+    bool m_tty = false;
+    // By scene, then the number of lights it is judged with.
+    std::map<std::pair<int, int>, CheckReference> m_references;
+    std::map<QString, QString> m_exactImages; // written once each
+};
+
+} // namespace phonglab::cli

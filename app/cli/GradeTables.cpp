@@ -1,0 +1,158 @@
+#include "GradeTables.h"
+
+#include "SceneStages.h"
+#include "bench/BenchResult.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace phonglab::cli {
+
+namespace {
+
+const QStringList &csvColumns()
+{
+    static const QStringList columns{
+        QStringLiteral("submission"), QStringLiteral("scene"),    QStringLiteral("verdict"),
+        QStringLiteral("psnr_db"),    QStringLiteral("max_error"), QStringLiteral("bad_fraction"),
+        QStringLiteral("key"),        QStringLiteral("also"),      QStringLiteral("file"),
+        QStringLiteral("line"),       QStringLiteral("equation"),  QStringLiteral("bindings"),
+        QStringLiteral("seconds")};
+    return columns;
+}
+
+// Quoted for CSV, and never a formula: a spreadsheet runs a cell that starts
+// with = + - @ (or a tab or carriage return before one).
+QString textCell(const QString &text)
+{
+    static const QString formulaStarts = QStringLiteral("=+-@\t\r");
+    if (!text.isEmpty() && formulaStarts.contains(text.front()))
+        return csvField(QLatin1Char('\'') + text);
+    return csvField(text);
+}
+
+bool judged(const GradeRow &row)
+{
+    return row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+}
+
+QString psnrText(const GradeRow &row)
+{
+    if (!judged(row))
+        return {};
+    const double psnr = row.outcome.report.comparison.psnr;
+    return std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("inf");
+}
+
+QString alsoText(const GradeRow &row)
+{
+    QStringList keys;
+    if (const MistakeFinding *f = topFinding(row))
+        for (ShaderMistake m : f->also)
+            keys << shaderMistakeKey(m);
+    return keys.join(QLatin1Char(' '));
+}
+
+// As `check` prints them: empty where every name is PhongLab's own, else
+// every binding, so a teacher sees how a student's names were read.
+QString bindingsCell(const GradeRow &row)
+{
+    return bindingsText(row.outcome.bindings).replace(QStringLiteral(", "), QStringLiteral(" "));
+}
+
+QStringList csvRecord(const GradeResults &results, const GradeRow &row)
+{
+    const CheckReport &r = row.outcome.report;
+    const RowPlace place = rowPlace(row);
+    return {textCell(results.submissions[std::size_t(row.submission)].name),
+            textCell(results.scenes[std::size_t(row.scene)].label),
+            gradeVerdictName(row.verdict),
+            psnrText(row),
+            judged(row) ? QString::number(r.comparison.maxError) : QString(),
+            judged(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
+            rowMistakeKey(row),
+            alsoText(row),
+            textCell(place.file),
+            place.file.isEmpty() || place.line <= 0 ? QString() : QString::number(place.line),
+            judged(row) ? phongEquationKey(r.equation) : QString(),
+            textCell(bindingsCell(row)),
+            QString::number(row.seconds, 'f', 2)};
+}
+
+} // namespace
+
+QByteArray gradesCsv(const GradeResults &results)
+{
+    QString out = csvColumns().join(QLatin1Char(',')) + QLatin1Char('\n');
+    for (const GradeRow &row : results.rows)
+        out += csvRecord(results, row).join(QLatin1Char(',')) + QLatin1Char('\n');
+    return out.toUtf8();
+}
+
+QJsonObject gradesJson(const GradeResults &results)
+{
+    QJsonArray scenes;
+    for (const GradeScene &s : results.scenes)
+        scenes.append(QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
+    QJsonArray rows;
+    for (const GradeRow &row : results.rows) {
+        QJsonObject o = checkJson(row.outcome);
+        o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
+        o.insert(QStringLiteral("submission"), results.submissions[std::size_t(row.submission)].name);
+        o.insert(QStringLiteral("scene"), results.scenes[std::size_t(row.scene)].label);
+        o.insert(QStringLiteral("seconds"), row.seconds);
+        rows.append(o);
+    }
+    return {{QStringLiteral("scenes"), scenes}, {QStringLiteral("rows"), rows}};
+}
+
+QString gradesTable(const GradeResults &results)
+{
+    // Names as typed, cut to keep the columns: a terminal is no place for a
+    // 200-character folder name.
+    const auto cut = [](const QString &text, int width) {
+        QString clean = text;
+        for (QChar &c : clean)
+            if (c.category() == QChar::Other_Control)
+                c = QLatin1Char('?');
+        return clean.size() <= width ? clean : clean.left(width - 1) + QChar(0x2026);
+    };
+    int nameWidth = 7, sceneWidth = 5;
+    for (const Submission &s : results.submissions)
+        nameWidth = std::clamp(int(s.name.size()), nameWidth, 24);
+    for (const GradeScene &s : results.scenes)
+        sceneWidth = std::clamp(int(s.label.size()), sceneWidth, 20);
+    // Padded by hand: arg() again after a student's name would fill a "%2" in it.
+    const auto line = [&](const QString &name, const QString &scene, const QString &verdict,
+                          const QString &psnr, const QString &what) {
+        QString text = name.leftJustified(nameWidth) + QStringLiteral("  ")
+            + scene.leftJustified(sceneWidth) + QStringLiteral("  ") + verdict.leftJustified(7)
+            + QStringLiteral("  ") + psnr.rightJustified(7) + QStringLiteral("  ") + what;
+        while (text.endsWith(QLatin1Char(' ')))
+            text.chop(1);
+        return text;
+    };
+    QStringList lines{line(QStringLiteral("student"), QStringLiteral("scene"),
+                           QStringLiteral("verdict"), QStringLiteral("PSNR dB"),
+                           QStringLiteral("mistake, where"))};
+    int previous = -1;
+    for (const GradeRow &row : results.rows) {
+        const QString name = row.submission == previous
+            ? QString()
+            : cut(results.submissions[std::size_t(row.submission)].name, nameWidth);
+        previous = row.submission;
+        QString what = rowMistakeKey(row);
+        if (!judged(row) && !row.outcome.errors.empty())
+            what = cut(row.outcome.errors.front().message, 60);
+        const RowPlace place = rowPlace(row);
+        if (!place.file.isEmpty())
+            what += (what.isEmpty() ? QString() : QStringLiteral("  ")) + cut(place.file, 40)
+                + (place.line > 0 ? QStringLiteral(":") + QString::number(place.line) : QString());
+        lines << line(name, cut(results.scenes[std::size_t(row.scene)].label, sceneWidth),
+                      gradeVerdictName(row.verdict), psnrText(row), what);
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace phonglab::cli
