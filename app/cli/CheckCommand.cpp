@@ -189,6 +189,7 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
 int drawOnly(const CheckArgs &args, const Scene &scene, int argc, char **argv)
 {
     beAGradedChild();
+    injectGradedChildFault(args.fragmentPath);
     QGuiApplication app(argc, argv);
     CheckDrawing drawing = drawForCheck(inputOf(args), scene);
     if (drawing.drawn()) {

@@ -4,6 +4,7 @@
 #include <QJsonDocument>
 
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <sys/prctl.h>
@@ -143,6 +144,32 @@ void GradedChild::finish(GradedChildEnd end)
         m_process.waitForFinished(1000);
     }
     emit ended(end);
+}
+
+void injectGradedChildFault(const QString &fragmentPath)
+{
+    if (qgetenv("PHONGLAB_GRADE_FAULTS") != "1" || fragmentPath.isEmpty())
+        return;
+    QFile file(fragmentPath);
+    if (!file.open(QIODevice::ReadOnly))
+        return;
+    const QByteArray text = file.read(1 << 20);
+    if (text.contains("PHONGLAB_FAULT: crash")) {
+        std::signal(SIGSEGV, SIG_DFL); // not a sanitizer's report and exit status 1
+        std::raise(SIGSEGV);
+    } else if (text.contains("PHONGLAB_FAULT: oom")) {
+        constexpr std::size_t kBlock = 64u << 20;
+        for (;;) {
+            char *block = static_cast<char *>(std::malloc(kBlock)); // never freed: on purpose
+            if (!block)
+                ::_exit(kGradedChildOutOfMemory);
+            std::memset(block, 1, kBlock); // touched: resident
+            ::usleep(10'000);
+        }
+    } else if (text.contains("PHONGLAB_FAULT: hang")) {
+        for (;;)
+            ::pause();
+    }
 }
 
 void beAGradedChild()

@@ -64,6 +64,12 @@ private:
 // parent, and running out of memory is an exit status, not a crash dump.
 void beAGradedChild();
 
+// With PHONGLAB_GRADE_FAULTS=1 set, a fragment shader whose text holds
+// "PHONGLAB_FAULT: crash" (or "oom", "hang") makes the child crash (eat
+// memory, hang) on purpose: how tests show that each way a check can die
+// costs one verdict. Without the variable, nothing a student writes does.
+void injectGradedChildFault(const QString &fragmentPath);
+
 // Exit status of a child that ran out of memory.
 inline constexpr int kGradedChildOutOfMemory = 3;
 
