@@ -50,9 +50,10 @@ table.rows{border-collapse:collapse;width:100%}
 table.rows th,table.rows td{border-top:1px solid #ddd;padding:6px;vertical-align:top;text-align:left}
 table.rows th.sortable{cursor:pointer;text-decoration:underline dotted}
 .verdict{font-weight:bold;color:#fff;padding:1px 6px;border-radius:3px}
-.images img{width:200px;image-rendering:pixelated;margin-right:4px;border:1px solid #ccc}
+td.images{white-space:nowrap}td.why{min-width:320px;max-width:640px}
+.images img{width:160px;image-rendering:pixelated;border:1px solid #ccc}
 .images figure{display:inline-block;margin:0 4px 0 0}.images figcaption{font-size:12px;color:#555}
-pre.lines{background:#f6f6f6;padding:4px 6px;margin:4px 0;overflow-x:auto}
+pre.lines{background:#f6f6f6;padding:4px 6px;margin:4px 0;white-space:pre-wrap;word-break:break-all}
 pre.lines .hit{background:#ffe0b2;display:block}
 code.command{display:block;user-select:all;background:#eef;padding:3px 6px;word-break:break-all}
 #missing{display:none;background:#ffebee;padding:8px;border:1px solid #c62828}
@@ -251,7 +252,7 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
     // One pass of arg(): text a student wrote may hold "%1" itself.
     return QStringLiteral("<tr data-order=\"%1\" data-student=\"%2\" data-rank=\"%3\" "
                           "data-psnr=\"%4\"><td>%2</td><td>%5</td><td>%6</td><td>%7</td>"
-                          "<td class=\"images\">%8</td><td>%9%10</td></tr>\n")
+                          "<td class=\"images\">%8</td><td class=\"why\">%9%10</td></tr>\n")
         .arg(QString::number(order), esc(student), QString::number(verdictRank(row.verdict)),
              std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("1e9"),
              esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
