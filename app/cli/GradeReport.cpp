@@ -53,7 +53,7 @@ table.rows th.sortable{cursor:pointer;text-decoration:underline dotted}
 td.images{white-space:nowrap}td.why{min-width:320px;max-width:640px}
 .images img{width:160px;image-rendering:pixelated;border:1px solid #ccc}
 .images figure{display:inline-block;margin:0 4px 0 0}.images figcaption{font-size:12px;color:#555}
-pre.lines{background:#f6f6f6;padding:4px 6px;margin:4px 0;white-space:pre-wrap;word-break:break-all}
+pre.lines{background:#f6f6f6;padding:4px 6px;margin:4px 0;white-space:pre-wrap;overflow-wrap:anywhere}
 pre.lines .hit{background:#ffe0b2;display:block}
 code.command{display:block;user-select:all;background:#eef;padding:3px 6px;word-break:break-all}
 #missing{display:none;background:#ffebee;padding:8px;border:1px solid #c62828}
@@ -285,11 +285,14 @@ QString gradeReportHtml(const GradeResults &results)
                                   "<title>PhongLab grades: %1</title><style>%2</style></head>\n"
                                   "<body>\n<h1>PhongLab grades: %1</h1>\n")
                        .arg(esc(results.settings.classFolder), QString::fromLatin1(kStyle));
-    html += QStringLiteral("<p>%1 submissions, %2 scenes, %3×%4 pixels, tolerance %5/255. "
+    const auto count = [](std::size_t n, const char *what) {
+        return QStringLiteral("%1 %2%3").arg(n).arg(QLatin1String(what), n == 1 ? "" : "s");
+    };
+    html += QStringLiteral("<p>%1, %2, %3×%4 pixels, tolerance %5/255. "
                            "Sort the rows by a column's title.</p>\n"
                            "<div id=\"missing\"></div>\n")
-                .arg(results.submissions.size())
-                .arg(results.scenes.size())
+                .arg(count(results.submissions.size(), "submission"),
+                     count(results.scenes.size(), "scene"))
                 .arg(results.settings.size.width())
                 .arg(results.settings.size.height())
                 .arg(results.settings.toleranceSteps);
