@@ -98,6 +98,9 @@ ShaderDock::ShaderDock(QWidget *parent)
     m_applyAnyway->hide();
     connect(m_applyAnyway, &QPushButton::clicked, this, &ShaderDock::applyAnywayRequested);
     statusRow->addWidget(m_applyAnyway, 0, Qt::AlignTop);
+    // The row is as tall with the button as without: its showing must not
+    // change the dock's height, which would resize and re-frame the view.
+    m_status->setMinimumHeight(m_applyAnyway->sizeHint().height());
     layout->addLayout(statusRow);
     setWidget(contents);
 
