@@ -1,5 +1,7 @@
 #include "GradeReport.h"
 
+#include "core/ResourcePaths.h"
+
 #include <QFileInfo>
 #include <QRegularExpression>
 
@@ -232,14 +234,19 @@ QString openCommand(const GradeResults &results, const GradeRow &row)
     const Submission &s = results.submissions[std::size_t(row.submission)];
     if (s.vertex.isEmpty() && s.fragment.isEmpty())
         return {};
-    QStringList words{QStringLiteral("phonglab"),
-                      shellQuoted(QFileInfo(results.scenes[std::size_t(row.scene)].path)
-                                      .absoluteFilePath())};
-    if (!s.vertex.isEmpty())
-        words << QStringLiteral("--vertex") << shellQuoted(s.vertex);
-    if (!s.fragment.isEmpty())
-        words << QStringLiteral("--fragment") << shellQuoted(s.fragment);
-    return words.join(QLatin1Char(' '));
+    const GradeScene &scene = results.scenes[std::size_t(row.scene)];
+    // Both stages always: a stage the student left out was checked as the
+    // method's shipped one, which the window would not take by itself.
+    const auto stage = [&](const QString &file, ShaderStage which) {
+        return shellQuoted(file.isEmpty() ? shippedShaderPath(scene.scene.shading, which) : file);
+    };
+    return QStringList{QStringLiteral("phonglab"),
+                       shellQuoted(QFileInfo(scene.path).absoluteFilePath()),
+                       QStringLiteral("--vertex"),
+                       stage(s.vertex, ShaderStage::Vertex),
+                       QStringLiteral("--fragment"),
+                       stage(s.fragment, ShaderStage::Fragment)}
+        .join(QLatin1Char(' '));
 }
 
 QString rowHtml(const GradeResults &results, const GradeRow &row, int order)

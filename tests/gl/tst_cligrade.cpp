@@ -291,6 +291,10 @@ private slots:
         QCOMPARE(images, 3 * 4); // alice, bob, heidi and the hostile one: theirs, exact, heatmap
         // The command that opens a submission, quoted for a shell.
         QVERIFY(html.contains(QStringLiteral("--fragment '")));
+        // bob wrote the fragment stage alone: the command names the shipped
+        // vertex shader he was checked with, as the window would not by itself.
+        QVERIFY(html.contains(QRegularExpression(
+            QStringLiteral(R"(--vertex \S*shaders/phong\.vert --fragment \S*/bob/src/phong\.fs)"))));
         QVERIFY(html.contains(QStringLiteral("'\\''")));
     }
 
