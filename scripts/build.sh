@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, then configures and builds PhongLab.
 #   scripts/build.sh                        ./build (the compiler cmake finds, g++ on Debian)
+#   scripts/build.sh --app                  ./build, the phonglab program alone (scripts/run.sh)
 #   scripts/build.sh --sanitize [TARGET...] ./build-sanitize: clang 14, ASan + UBSan
 #       everywhere, libFuzzer targets added (PHONGLAB_FUZZ=ON, see
 #       cmake/Sanitizers.cmake); only TARGETs (and what they need) when given.
@@ -29,5 +30,9 @@ if [ "${1:-}" = "--sanitize" ]; then
   exit 0
 fi
 
+targets=()
+if [ "${1:-}" = "--app" ]; then
+  targets=(--target phonglab)
+fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}"
-cmake --build build --parallel "$(nproc)"
+cmake --build build --parallel "$(nproc)" "${targets[@]}"

@@ -40,6 +40,12 @@ struct ShearedRay {
     }
 };
 
+// Ray against one triangle, both faces (no culling), in double precision
+// with the watertight test of Woop, Benthin and Wald (JCGT 2013): the edge
+// functions of an edge two triangles share are computed from the same
+// transformed vertices, so they are exact negatives of each other and a ray
+// cannot slip between two triangles of a closed mesh. Degenerate (zero-area
+// as seen along the ray) triangles are never hit. Hits with t in [tMin, tMax].
 std::optional<TriangleHit> intersectSheared(const ShearedRay &r, const glm::dvec3 &v0,
                                             const glm::dvec3 &v1, const glm::dvec3 &v2, double tMin,
                                             double tMax)
@@ -175,13 +181,6 @@ Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin,
 }
 
 } // namespace
-
-std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0,
-                                             const glm::dvec3 &v1, const glm::dvec3 &v2,
-                                             double tMin, double tMax)
-{
-    return intersectSheared(ShearedRay(ray), v0, v1, v2, tMin, tMax);
-}
 
 std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin,
                                                 double tMax)

@@ -25,16 +25,6 @@ struct TriangleHit {
     }
 };
 
-// Ray against one triangle, both faces (no culling), in double precision
-// with the watertight test of Woop, Benthin and Wald (JCGT 2013): the edge
-// functions of an edge two triangles share are computed from the same
-// transformed vertices, so they are exact negatives of each other and a ray
-// cannot slip between two triangles of a closed mesh. Degenerate (zero-area
-// as seen along the ray) triangles are never hit. Hits with t in [tMin, tMax].
-std::optional<TriangleHit> intersectTriangle(const Ray &ray, const glm::dvec3 &v0,
-                                             const glm::dvec3 &v1, const glm::dvec3 &v2,
-                                             double tMin, double tMax);
-
 // The closest hit over all triangles of `mesh` by testing every one: the
 // ground truth MeshBvh is checked against. Ties in t go to the lower
 // triangle index, as in MeshBvh::closestHit().

@@ -58,7 +58,6 @@ public:
     T valueOr(T fallback) const & { return m_value ? *m_value : std::move(fallback); }
     // The value, dropping the error: for callers that only need to know
     // whether there is one.
-    std::optional<T> toOptional() && { return std::move(m_value); }
 
 private:
     void check() const

@@ -22,8 +22,6 @@ Result<> BuildWorker::initialize()
     m_parallelShaderCompile =
         m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
-    m_rendererName = QString::fromLatin1(
-        reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));
     return {};
 }
 

@@ -64,7 +64,6 @@ public:
     void shutdown(QThread *owner);
 
     bool hasParallelShaderCompile() const { return m_parallelShaderCompile; }
-    QString rendererName() const { return m_rendererName; }
 
 private:
     QOpenGLContext *m_context = nullptr;
@@ -73,7 +72,6 @@ private:
     ProgramBuilder m_builder;
     WarmUpDraw m_warmer;
     bool m_parallelShaderCompile = false;
-    QString m_rendererName;
 };
 
 } // namespace phonglab

@@ -4,11 +4,6 @@
 
 namespace phonglab {
 
-BuildStep compileStep(ShaderStage stage)
-{
-    return stage == ShaderStage::Vertex ? BuildStep::CompileVertex : BuildStep::CompileFragment;
-}
-
 ShaderStage editorStage(BuildStep step)
 {
     return step == BuildStep::CompileVertex ? ShaderStage::Vertex : ShaderStage::Fragment;

@@ -14,7 +14,6 @@ enum class BuildStep {
     Link
 };
 
-BuildStep compileStep(ShaderStage stage);
 // Where the editor shows a message of `step`: its stage's tab; the
 // fragment tab for link messages.
 ShaderStage editorStage(BuildStep step);

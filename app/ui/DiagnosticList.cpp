@@ -37,7 +37,6 @@ void DiagnosticList::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnos
 {
     clear();
     m_errors = 0;
-    m_warnings = 0;
     for (const ShaderDiagnostic &diagnostic : diagnostics)
         addDiagnostic(diagnostic);
 }
@@ -45,7 +44,8 @@ void DiagnosticList::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnos
 void DiagnosticList::addDiagnostic(const ShaderDiagnostic &diagnostic)
 {
     const bool error = diagnostic.isError();
-    (error ? m_errors : m_warnings)++;
+    if (error)
+        ++m_errors;
     auto *item = new QListWidgetItem(shortFormat(diagnostic), this);
     item->setIcon(style()->standardIcon(error ? QStyle::SP_MessageBoxCritical
                                               : QStyle::SP_MessageBoxWarning));

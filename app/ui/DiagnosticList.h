@@ -18,7 +18,6 @@ public:
 
     void setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
     int errorCount() const { return m_errors; }
-    int warningCount() const { return m_warnings; }
 
 signals:
     // Not named activated(): that would hide QAbstractItemView::activated
@@ -30,7 +29,6 @@ private:
     void emitActivated(QListWidgetItem *item);
 
     int m_errors = 0;
-    int m_warnings = 0;
 };
 
 } // namespace phonglab

@@ -138,11 +138,6 @@ int LightsDock::selectedLight() const
     return row < int(scene().lights.size()) ? row : -1;
 }
 
-QString LightsDock::statusText() const
-{
-    return m_status->text();
-}
-
 void LightsDock::itemToggled(QListWidgetItem *item)
 {
     if (isShowing())

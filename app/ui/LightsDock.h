@@ -34,7 +34,6 @@ public:
     // What the list shows for light `index`: its name, or "Light N".
     QString displayName(int index) const;
     QLineEdit *nameField() const { return m_name; }
-    QString statusText() const;
     void selectLight(int index);
     Vec3Field *field(LightField which) const { return m_fields[int(which)]; }
     Vec3Field *ambientField() const { return m_ambient; }

@@ -46,7 +46,6 @@ public:
     void frameChanged() { schedule(); }
 
     void setOverlayMode(OverlayMode mode);
-    OverlayMode overlayMode() const { return m_overlay->mode(); }
     // Inspects the pixel under `position` (viewport coordinates): at once
     // when the newest check shows the current view, else when it arrives.
     void inspect(QPoint position);
@@ -56,7 +55,6 @@ public:
     QLabel *statusLabel() const { return m_status; }
     CheckOverlay *overlay() const { return m_overlay; }
     PixelInspectorDock *inspector() const { return m_inspector; }
-    QAction *inspectAction() const { return m_inspectAction; }
 
 signals:
     void checked(const phonglab::CheckResult &result);

@@ -57,7 +57,7 @@ constexpr int kWarningTimeoutMs = 10000;
 MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     : QMainWindow(parent)
     , m_options(options)
-    , m_viewport(new Viewport(this))
+    , m_viewport(new Viewport(this, !options.presentOnGuiThread))
     , m_loadJob(new SceneLoadJob(m_viewport, this))
     , m_sceneDock(new SceneDock(this))
     , m_shaderDock(new ShaderDock(this))

@@ -46,7 +46,6 @@ public:
     // shading method's shaders resolve to.
     static QStringList defaultShippedFolders();
     void setShippedFolders(const QStringList &folders);
-    QStringList shippedFolders() const { return m_shippedFolders; }
     bool isShipped(const QString &path) const;
     // <AppDataLocation>/shaders, where user copies go.
     static QString userFolder();

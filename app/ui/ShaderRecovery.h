@@ -66,7 +66,6 @@ public:
     void buildFailed();
     void programShown(const QByteArray &hash);
     void frameRendered();
-    bool isOnProbation() const { return !m_probation.isEmpty(); }
 
     RecoveryJournal &journal() { return m_journal; }
     static constexpr int kJournalPeriodMs = 2000;

@@ -28,6 +28,7 @@ StartupOptions StartupOptions::fromEnvironment()
     else if (warmUp == QLatin1String("worker"))
         o.warmUp = W::WorkerContext;
     o.compileOnGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
+    o.presentOnGuiThread = qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD");
     o.typeAfterStart = qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START");
     return o;
 }

@@ -18,6 +18,10 @@ struct StartupOptions {
     LiveShaderController::WarmUp warmUp = LiveShaderController::WarmUp::ViewportContext;
     // $PHONGLAB_COMPILE_ON_GUI_THREAD=1: no build worker (the fallback path).
     bool compileOnGuiThread = false;
+    // $PHONGLAB_PRESENT_ON_GUI_THREAD set: frames are presented on the GUI
+    // thread (the benchmark's comparison; drivers without threaded GL do so
+    // anyway).
+    bool presentOnGuiThread = false;
     // $PHONGLAB_TEST_TYPE_AFTER_START=TEXT: typed into the fragment editor once
     // GL is up, and journaled at once (the crash-recovery test kills the
     // process after it).

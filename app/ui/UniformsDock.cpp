@@ -174,7 +174,6 @@ void UniformsDock::clearRows()
         m_form->removeRow(0); // deletes the label and the row widget
     m_rows.clear();
     m_owners.clear();
-    m_order.clear();
     m_inactive.clear();
 }
 
@@ -252,7 +251,6 @@ void UniformsDock::addRow(const QString &element, const QString &label, QWidget 
     else
         m_form->addRow(label, row);
     m_rows.insert(element, row);
-    m_order.append(element);
 }
 
 void UniformsDock::connectRow(QWidget *row, const QString &element)

@@ -40,7 +40,6 @@ public:
 
     // The row of one element ("gain", "Id[1]") or declared-but-inactive name.
     QWidget *row(const QString &element) const { return m_rows.value(element); }
-    QStringList rowNames() const { return m_order; }
     QStringList inactiveNames() const { return m_inactive; }
 
 signals:
@@ -80,7 +79,6 @@ private:
     QFormLayout *m_form = nullptr;
     QHash<QString, QWidget *> m_rows;
     QHash<QString, UniformOwner> m_owners;
-    QStringList m_order;
     QStringList m_inactive;
     QStringList m_layoutKey; // of the rows shown (layoutKey())
     UniformSnapshot m_values; // as last read: the type and layout each write needs

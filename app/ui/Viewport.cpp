@@ -30,9 +30,10 @@ QString contextDescription(QOpenGLContext *context)
 
 } // namespace
 
-Viewport::Viewport(QWidget *parent)
+Viewport::Viewport(QWidget *parent, bool presentOffThread)
     : QWidget(parent)
     , m_window(new ViewportWindow(this))
+    , m_mayPresentOffThread(presentOffThread)
 {
     setFocusPolicy(Qt::StrongFocus); // so R / Home reach keyPressEvent after a click
     setAcceptDrops(true);

@@ -43,7 +43,9 @@ class Viewport : public QWidget
     Q_OBJECT
 
 public:
-    explicit Viewport(QWidget *parent = nullptr);
+    // presentOffThread: the wait for the rasteriser and the swap on a thread
+    // of their own where the platform allows it (StartupOptions can say no).
+    explicit Viewport(QWidget *parent = nullptr, bool presentOffThread = true);
     ~Viewport() override;
 
     // Shows `scene` with its own camera. On failure (a mesh that cannot be
@@ -292,6 +294,7 @@ private:
     // platform cannot). Other frames (an orbit's stream) are presented here:
     // handing the context over costs ~3 ms a frame (docs/performance.md).
     std::unique_ptr<FramePresenter> m_presenter;
+    bool m_mayPresentOffThread = true;
     bool m_presentOffThread = false;
     quint64 m_presentLoans = 0; // the newest loan to the presenter: only it ends one
     std::chrono::steady_clock::time_point m_lastPresentedAt;

@@ -207,8 +207,7 @@ void Viewport::startGl()
         m_context = std::make_unique<QOpenGLContext>(); // invalid: no second try
         return;
     }
-    if (!qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD")
-        && QOpenGLContext::supportsThreadedOpenGL()) {
+    if (m_mayPresentOffThread && QOpenGLContext::supportsThreadedOpenGL()) {
         m_presenter = std::make_unique<FramePresenter>();
         connect(m_presenter.get(), &FramePresenter::presented, this, &Viewport::framePresented,
                 Qt::QueuedConnection);
