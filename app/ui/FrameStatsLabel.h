@@ -24,6 +24,7 @@ public:
     FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar);
 
     void showFrame(double milliseconds, qint64 triangles);
+    void setReadoutClock(ReadoutPace::Clock clock) { m_pace.setClock(std::move(clock)); }
 
 private:
     Viewport *m_viewport = nullptr;

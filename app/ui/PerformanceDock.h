@@ -36,6 +36,8 @@ public:
 
     ErrorBudget budget() const;
     void setBudget(const ErrorBudget &budget);
+    // The clock the frame readout's pace reads (tests move their own on).
+    void setReadoutClock(ReadoutPace::Clock clock) { m_framePace.setClock(std::move(clock)); }
 
     // The rows of the last measurement (empty before the first).
     const std::vector<BenchRow> &rows() const { return m_rows; }

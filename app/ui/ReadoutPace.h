@@ -1,6 +1,8 @@
 #pragma once
-#include <QElapsedTimer>
 #include <QtGlobal>
+
+#include <chrono>
+#include <functional>
 
 namespace phonglab {
 
@@ -14,24 +16,36 @@ class ReadoutPace
 {
 public:
     static constexpr int kIntervalMs = 500;
+    // Milliseconds on a monotonic clock; a test passes its own and moves it
+    // on instead of waiting.
+    using Clock = std::function<qint64()>;
 
     // Whether a readout showing `triangles` is to be written now; `changed`
     // is any other change the caller shows at once.
     bool isDue(qint64 triangles, bool changed = false) const
     {
-        return !m_sinceShown.isValid() || m_sinceShown.elapsed() >= kIntervalMs
+        return m_shownAtMs < 0 || m_clock() - m_shownAtMs >= kIntervalMs
             || triangles != m_shownTriangles || changed;
     }
     void shown(qint64 triangles)
     {
-        m_sinceShown.start();
+        m_shownAtMs = m_clock();
         m_shownTriangles = triangles;
     }
     // The next isDue() is true (the readout was out of sight and may be stale).
-    void forget() { m_sinceShown.invalidate(); }
+    void forget() { m_shownAtMs = -1; }
+    void setClock(Clock clock) { m_clock = std::move(clock); }
 
 private:
-    QElapsedTimer m_sinceShown; // invalid until a readout is written
+    static qint64 steadyMs()
+    {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(
+                   std::chrono::steady_clock::now().time_since_epoch())
+            .count();
+    }
+
+    Clock m_clock = &ReadoutPace::steadyMs;
+    qint64 m_shownAtMs = -1; // none written yet
     qint64 m_shownTriangles = -1;
 };
 

@@ -35,6 +35,7 @@ public:
     // Rebuilds the rows once the next frame has drawn, so the values the
     // renderer sets are in place. Call after every successful build.
     void scheduleRebuild();
+    bool rebuildPending() const { return m_rebuildPending; } // rows due after the next frame
     // Rebuilds now (GL must be up); false if there is no program yet.
     bool rebuild();
 

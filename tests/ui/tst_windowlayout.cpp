@@ -270,9 +270,11 @@ void TestWindowLayout::theViewFramesEveryObjectAtItsSizeAndAfterAResize()
     QTest::mouseMove(viewport(), centre + QPoint(30, 10));
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, centre + QPoint(30, 10));
     const Camera moved = viewport()->camera();
+    const int framesBefore = viewport()->framesRendered();
     m_window->resize(m_window->width() * 2 / 3, m_window->height());
-    QTRY_VERIFY(viewport()->width() < m_window->width());
-    QTest::qWait(50);
+    // A frame at the new size: the resize has been dealt with in full.
+    QTRY_VERIFY(viewport()->width() < m_window->width()
+                && viewport()->framesRendered() > framesBefore);
     QCOMPARE(viewport()->camera(), moved);
 }
 
