@@ -60,7 +60,7 @@ private:
         return !turnsLeft(m_points[m_prev[i]], m_points[i], m_points[m_next[i]]);
     }
     bool isEar(std::uint32_t i) const;
-    void emit(std::uint32_t a, std::uint32_t b, std::uint32_t c)
+    void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
         m_out->insert(m_out->end(), {m_first + a, m_first + b, m_first + c});
     }
@@ -144,7 +144,7 @@ bool PolygonTriangulator::isEar(std::uint32_t i) const
 void PolygonTriangulator::fanFrom(std::uint32_t start)
 {
     for (std::uint32_t b = m_next[start]; m_next[b] != start; b = m_next[b])
-        emit(start, b, m_next[b]);
+        addTriangle(start, b, m_next[b]);
 }
 
 bool PolygonTriangulator::run(std::span<const glm::vec3> positions,
@@ -195,7 +195,7 @@ bool PolygonTriangulator::run(std::span<const glm::vec3> positions,
             continue;
         }
         const std::uint32_t prev = m_prev[i], next = m_next[i];
-        emit(prev, i, next);
+        addTriangle(prev, i, next);
         m_next[prev] = next;
         m_prev[next] = prev;
         --remaining;
@@ -210,7 +210,7 @@ bool PolygonTriangulator::run(std::span<const glm::vec3> positions,
         // is the likeliest new ear.
         i = prev;
     }
-    emit(m_prev[i], i, m_next[i]);
+    addTriangle(m_prev[i], i, m_next[i]);
     return true;
 }
 
