@@ -278,12 +278,12 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
     MeshData &data = built.mesh;
     const std::size_t positionsUsed = weld(mesh.positions, triangles.positions, normals, data);
 
-    BuildStats &stats = built.stats;
+    MeshStats &stats = built.stats;
     stats.fileVertices = qint64(mesh.positions.size());
     stats.vertices = qint64(data.positions.size());
     stats.triangles = qint64(data.triangleCount());
     stats.normalsFromFile = fromFile;
-    stats.method = method;
+    stats.normalMethod = method;
     if (!data.positions.empty()) {
         stats.boundsMin = stats.boundsMax = data.positions.front();
         for (const glm::vec3 &p : data.positions) {

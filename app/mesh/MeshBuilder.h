@@ -1,4 +1,5 @@
 #pragma once
+#include "MeshStats.h"
 #include "PolygonMesh.h"
 #include "core/MeshData.h"
 #include "core/NormalOptions.h"
@@ -8,19 +9,6 @@
 #include <glm/glm.hpp>
 
 namespace phonglab {
-
-// What buildMeshData made of a mesh, for the status bar and the CLI.
-struct BuildStats {
-    qint64 fileVertices = 0; // positions in the file
-    qint64 vertices = 0;     // GPU vertices
-    qint64 triangles = 0;
-    qint64 splitVertices = 0; // GPU vertices − distinct positions used: the cost of hard edges
-    bool normalsFromFile = false;
-    // The method that produced the normals: Auto only when they came from
-    // the file, AngleWeighted when Auto had to compute them.
-    NormalMethod method = NormalMethod::Auto;
-    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f}; // over the positions the GPU mesh uses
-};
 
 // Turns a repaired PolygonMesh into GPU-ready MeshData: triangulates,
 // chooses normals as `options` says, and welds, giving one GPU vertex per
@@ -32,7 +20,7 @@ struct BuildStats {
 // 32-bit indices reach) `mesh` is empty and `error` says why.
 struct BuiltMesh {
     MeshData mesh;
-    BuildStats stats;
+    MeshStats stats; // what the builder knows of it
     QStringList warnings;
     QString error;
     bool ok() const { return error.isEmpty(); }

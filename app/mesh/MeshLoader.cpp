@@ -94,19 +94,11 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
         result.error = QStringLiteral("%1: %2").arg(path, built.error);
         return result;
     }
-    const BuildStats &build = built.stats;
     MeshData &mesh = built.mesh;
     MeshStats &s = result.stats;
-    s.fileVertices = build.fileVertices;
+    s = built.stats;
     s.fileFaces = qint64(polygons.faceCount());
-    s.vertices = build.vertices;
-    s.triangles = build.triangles;
-    s.splitVertices = build.splitVertices;
-    s.normalsFromFile = build.normalsFromFile;
-    s.normalMethod = build.method;
     s.creaseAngleDeg = normals.creaseAngleDeg;
-    s.boundsMin = build.boundsMin;
-    s.boundsMax = build.boundsMax;
     s.closed = isClosed;
     result.mesh = std::move(mesh);
     if (progress)

@@ -30,7 +30,7 @@ BuildReply BuildWorker::build(const BuildJob &request)
     BuildReply reply;
     reply.serial = request.serial;
     BuiltProgram built = m_builder.build(request.vertex, request.fragment, {}, request.bindings);
-    reply.result = std::move(built.result);
+    reply.report = std::move(built.report);
     reply.program = std::move(built.program);
     reply.timings.compileNs = built.compileNs;
     reply.timings.linkNs = built.linkNs;

@@ -36,7 +36,7 @@ struct BuildTimings {
 struct BuildReply {
     quint64 serial = 0;
     GlProgram program;
-    BuildReport result;
+    BuildReport report;
     BuildTimings timings;
 };
 

@@ -165,28 +165,28 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
     BuiltProgram out;
     QElapsedTimer timer;
     timer.start();
-    const GlShader vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.result);
-    const GlShader fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.result);
+    const GlShader vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.report);
+    const GlShader fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.report);
     out.compileNs = timer.nsecsElapsed();
     if (!vs || !fs)
         return out;
     timer.restart();
     const QString linkName = vertex.name + QLatin1Char('+') + fragment.name;
-    out.program = link(vs, fs, linkName, out.result);
-    if (out.program && !placeInputs(out.program.id(), bindings, linkName, out.result))
+    out.program = link(vs, fs, linkName, out.report);
+    if (out.program && !placeInputs(out.program.id(), bindings, linkName, out.report))
         out.program = {};
     if (!out.program) {
         const ShaderDialect v = shaderDialectOf(vertex.code), f = shaderDialectOf(fragment.code);
         if (v != f)
-            out.result.diagnostics.insert(
-                out.result.diagnostics.begin(),
+            out.report.diagnostics.insert(
+                out.report.diagnostics.begin(),
                 {BuildStep::Link, ShaderDiagnostic::Severity::Error, linkName, 0, 0,
                  QStringLiteral("the vertex shader is %1 and the fragment shader %2: both stages "
                                 "must be written in the same GLSL (give both files)")
                      .arg(shaderDialectName(v), shaderDialectName(f))});
     }
     out.linkNs = timer.nsecsElapsed();
-    out.result.ok = out.ok();
+    out.report.ok = out.ok();
     return out;
 }
 

@@ -13,7 +13,7 @@ namespace phonglab {
 // benchmarks and the status bar can say where the time went.
 struct BuiltProgram {
     GlProgram program;
-    BuildReport result;
+    BuildReport report;
     qint64 compileNs = 0; // both stages, glCompileShader + status + log
     qint64 linkNs = 0;    // glLinkProgram + status + log
 

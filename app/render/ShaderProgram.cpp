@@ -96,7 +96,7 @@ BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource 
     BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines, m_explicit);
     if (built.ok())
         adopt(std::move(built.program));
-    return built.result;
+    return built.report;
 }
 
 void ShaderProgram::adopt(GlProgram program)

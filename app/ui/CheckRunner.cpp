@@ -1,4 +1,4 @@
-#include "ShaderChecker.h"
+#include "CheckRunner.h"
 
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
@@ -24,7 +24,7 @@ bool sameScene(const Scene &a, const Scene &b)
 
 } // namespace
 
-struct ShaderChecker::Cache {
+struct CheckRunner::Cache {
     QHash<QString, std::shared_ptr<const MeshData>>
         meshes; // by meshKey(), of the scene last checked
     std::optional<Scene> scene;
@@ -87,7 +87,7 @@ struct ShaderChecker::Cache {
     }
 };
 
-ShaderChecker::ShaderChecker(QObject *parent)
+CheckRunner::CheckRunner(QObject *parent)
     : QObject(parent)
     , m_cache(std::make_shared<Cache>())
 {
@@ -95,10 +95,10 @@ ShaderChecker::ShaderChecker(QObject *parent)
     // The check's GL context lives on the pool's one thread: it must never
     // be replaced by another.
     m_pool.setExpiryTimeout(-1);
-    connect(&m_watcher, &QFutureWatcher<CheckResult>::finished, this, &ShaderChecker::onFinished);
+    connect(&m_watcher, &QFutureWatcher<CheckedFrame>::finished, this, &CheckRunner::onFinished);
 }
 
-ShaderChecker::~ShaderChecker()
+CheckRunner::~CheckRunner()
 {
     // The job uses the cache, which goes with this: stop it early and wait.
     m_waiting.reset();
@@ -112,7 +112,7 @@ ShaderChecker::~ShaderChecker()
     m_pool.waitForDone();
 }
 
-void ShaderChecker::request(const FrameRecipe &frame)
+void CheckRunner::request(const FrameRecipe &frame)
 {
     if (!m_surface) {
         m_surface = std::make_unique<QOffscreenSurface>();
@@ -133,14 +133,14 @@ void ShaderChecker::request(const FrameRecipe &frame)
     m_waiting = std::move(r);
 }
 
-void ShaderChecker::cancel()
+void CheckRunner::cancel()
 {
     m_waiting.reset();
     if (m_watcher.isRunning())
         m_cancelled->store(true);
 }
 
-void ShaderChecker::start(Request request)
+void CheckRunner::start(Request request)
 {
     std::shared_ptr<Cache> cache = m_cache;
     m_cancelled = std::make_shared<std::atomic<bool>>(false);
@@ -157,7 +157,7 @@ void ShaderChecker::start(Request request)
             const auto restore =
                 qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
             const Scene &scene = request.frame.scene;
-            CheckResult result;
+            CheckedFrame result;
             result.generation = request.generation;
             result.scene = scene;
             if (cancelled->load())
@@ -189,7 +189,7 @@ void ShaderChecker::start(Request request)
                 }
             } catch (
                 const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
-                result = CheckResult{
+                result = CheckedFrame{
                     request.generation,
                     scene,
                     {},
@@ -206,9 +206,9 @@ void ShaderChecker::start(Request request)
         }));
 }
 
-void ShaderChecker::onFinished()
+void CheckRunner::onFinished()
 {
-    const CheckResult result = m_watcher.result();
+    const CheckedFrame result = m_watcher.result();
     const bool cancelled = m_cancelled->load();
     m_running.reset();
     if (m_waiting) {

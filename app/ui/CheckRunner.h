@@ -15,7 +15,7 @@
 namespace phonglab {
 
 // One finished check of the window's frame against the exact image.
-struct CheckResult {
+struct CheckedFrame {
     quint64 generation = 0; // of the request it answers
     Scene scene;            // as checked (headlight included)
     std::shared_ptr<const CheckReference> reference;
@@ -35,13 +35,13 @@ struct CheckResult {
 // is kept between checks of the same scene at the same size, so after a
 // shader edit only the program's build, one draw and the comparison run; the
 // meshes of the scene last checked are kept for its next view.
-class ShaderChecker : public QObject
+class CheckRunner : public QObject
 {
     Q_OBJECT
 
 public:
-    explicit ShaderChecker(QObject *parent = nullptr);
-    ~ShaderChecker() override;
+    explicit CheckRunner(QObject *parent = nullptr);
+    ~CheckRunner() override;
 
     // On the GUI thread.
     void request(const FrameRecipe &frame);
@@ -54,7 +54,7 @@ public:
     quint64 newestGeneration() const { return m_generation; }
 
 signals:
-    void finished(const phonglab::CheckResult &result);
+    void finished(const phonglab::CheckedFrame &result);
 
 private:
     struct Request {
@@ -72,7 +72,7 @@ private:
     // check occupying one there froze the window (a progress bar's paint
     // waited ~400 ms for a pool thread during a mesh load).
     QThreadPool m_pool;
-    QFutureWatcher<CheckResult> m_watcher;
+    QFutureWatcher<CheckedFrame> m_watcher;
     std::optional<Request> m_waiting;
     std::optional<std::pair<Scene, QSize>> m_running; // what the running job checks
     std::shared_ptr<Cache> m_cache;

@@ -29,7 +29,7 @@ constexpr int kDividerGrabPx = 6;
 // repaint) before the check's thread builds and draws the program again.
 constexpr int kAfterFrameMs = 20;
 
-QString shortSummary(const CheckResult &result)
+QString shortSummary(const CheckedFrame &result)
 {
     if (!result.error.isEmpty())
         return QObject::tr("check: %1").arg(result.error);
@@ -51,7 +51,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     : QObject(window)
     , m_viewport(viewport)
     , m_live(live)
-    , m_checker(new ShaderChecker(this))
+    , m_runner(new CheckRunner(this))
     , m_overlay(new CheckOverlay(viewport))
     , m_inspector(new PixelInspectorDock(window))
     , m_status(new QLabel(window))
@@ -66,7 +66,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
 
     m_debounce->setSingleShot(true);
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
-    connect(m_checker, &ShaderChecker::finished, this, &LiveCheck::show);
+    connect(m_runner, &CheckRunner::finished, this, &LiveCheck::show);
     // A new program is checked at once, but after its first frame is on
     // screen: the check's own build and draw of it would otherwise take
     // cores from that frame. View and scene changes come in bursts.
@@ -98,7 +98,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
 void LiveCheck::pauseWhileLoading(const SceneLoadJob *job)
 {
     m_loadJob = job;
-    connect(job, &SceneLoadJob::started, m_checker, &ShaderChecker::cancel);
+    connect(job, &SceneLoadJob::started, m_runner, &CheckRunner::cancel);
     // A load that does not end in a new scene leaves the old one to check again.
     connect(job, &SceneLoadJob::failed, this, [this] { schedule(); });
     connect(job, &SceneLoadJob::cancelled, this, [this] { schedule(); });
@@ -178,7 +178,7 @@ void LiveCheck::run()
         return;
     m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…")
                              : tr("checking…"));
-    m_checker->request(frame);
+    m_runner->request(frame);
 }
 
 QSize LiveCheck::checkSize() const
@@ -191,13 +191,13 @@ QSize LiveCheck::checkSize() const
     return QSize(std::max(1, int(full.width() * scale)), std::max(1, int(full.height() * scale)));
 }
 
-bool LiveCheck::isCurrent(const CheckResult &result) const
+bool LiveCheck::isCurrent(const CheckedFrame &result) const
 {
-    return result.generation == m_checker->newestGeneration() && !m_pending && !m_checker->isBusy()
+    return result.generation == m_runner->newestGeneration() && !m_pending && !m_runner->isBusy()
         && result.reference && result.yours.size() == checkSize();
 }
 
-void LiveCheck::show(const CheckResult &result)
+void LiveCheck::show(const CheckedFrame &result)
 {
     m_last = result;
     m_status->setText(shortSummary(result));
@@ -229,7 +229,7 @@ void LiveCheck::inspect(QPoint position)
 
 void LiveCheck::showInspected(QPointF fraction)
 {
-    const CheckResult &r = *m_last;
+    const CheckedFrame &r = *m_last;
     const QPoint pixel(
         std::clamp(int(std::floor(fraction.x() * r.yours.width())), 0, r.yours.width() - 1),
         std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));

@@ -1,6 +1,6 @@
 #pragma once
 #include "CheckOverlay.h"
-#include "ShaderChecker.h"
+#include "CheckRunner.h"
 
 #include <QObject>
 #include <QPoint>
@@ -24,7 +24,7 @@ class Viewport;
 // The editor's check (issue 12, C and D): after every applied program, and
 // whenever the view or the scene changes, the frame is drawn again
 // single-sampled and checked against the exact image in the background
-// (ShaderChecker; typing is never blocked and the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
+// (CheckRunner; typing is never blocked and the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in
 // the status bar, the overlays over the viewport, and the pixel inspector.
 inline constexpr int kCheckDebounceMs = 150; // lets an orbit drag or a burst of edits settle
 // A larger view is checked at a smaller size of the same shape: the reference
@@ -50,14 +50,14 @@ public:
     // when the newest check shows the current view, else when it arrives.
     void inspect(QPoint position);
 
-    const std::optional<CheckResult> &lastResult() const { return m_last; }
-    bool isChecking() const { return m_pending || m_checker->isBusy(); }
+    const std::optional<CheckedFrame> &lastResult() const { return m_last; }
+    bool isChecking() const { return m_pending || m_runner->isBusy(); }
     QLabel *statusLabel() const { return m_status; }
     CheckOverlay *overlay() const { return m_overlay; }
     PixelInspectorDock *inspector() const { return m_inspector; }
 
 signals:
-    void checked(const phonglab::CheckResult &result);
+    void checked(const phonglab::CheckedFrame &result);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -66,15 +66,15 @@ private:
     void createToolBar(QMainWindow *window);
     void schedule(int delayMs = kCheckDebounceMs);
     void run();
-    void show(const CheckResult &result);
+    void show(const CheckedFrame &result);
     void showInspected(QPointF position);
     QSize checkSize() const;
-    bool isCurrent(const CheckResult &result) const;
+    bool isCurrent(const CheckedFrame &result) const;
     bool dragDivider(QEvent *event);
 
     Viewport *m_viewport = nullptr;
     LiveShaderController *m_live = nullptr;
-    ShaderChecker *m_checker = nullptr;
+    CheckRunner *m_runner = nullptr;
     CheckOverlay *m_overlay = nullptr;
     PixelInspectorDock *m_inspector = nullptr;
     QLabel *m_status = nullptr;
@@ -82,7 +82,7 @@ private:
     QAction *m_inspectAction = nullptr;
     QToolBar *m_toolBar = nullptr;
     QTimer *m_debounce = nullptr;
-    std::optional<CheckResult> m_last;
+    std::optional<CheckedFrame> m_last;
     std::optional<QPointF>
         m_inspectWhenReady;         // where, as a fraction of the view's width and height
     bool m_pending = false;         // scheduled, not yet handed to the checker

@@ -335,7 +335,7 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     BuiltProgram built = m_viewport->buildProgram(vertex, fragment);
     BuildReply reply;
     reply.program = std::move(built.program);
-    reply.result = std::move(built.result);
+    reply.report = std::move(built.report);
     reply.timings.compileNs = built.compileNs;
     reply.timings.linkNs = built.linkNs;
     finish(hash, std::move(reply));
@@ -361,17 +361,17 @@ void LiveShaderController::finish(const QByteArray &hash, BuildReply reply)
 {
     if (!reply.program) {
         m_hangNote->stop();
-        showFailure(reply.result);
+        showFailure(reply.report);
         m_recovery->buildFailed();
         emit buildFailed(hash);
         return;
     }
-    m_dock->showDiagnostics(reply.result.diagnostics); // warnings only; clears old errors
+    m_dock->showDiagnostics(reply.report.diagnostics); // warnings only; clears old errors
     if (warmInViewport(hash, reply))
         return; // the hang note now waits for the draw in the lent context
     m_hangNote->stop();
     m_viewport->adoptProgram(std::move(reply.program));
-    announce(hash, reply.result, reply.timings);
+    announce(hash, reply.report, reply.timings);
 }
 
 // The switch to the new program and its first draw, in the viewport's own
@@ -398,7 +398,7 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
         *lent, programId,
-        [this, warm, hash, program, trial, result = reply.result,
+        [this, warm, hash, program, trial, result = reply.report,
          timings = reply.timings](const Result<qint64> &warmNs) {
             // The context went away meanwhile (and came back with it), or
             // this is an older warm-up.
@@ -455,7 +455,7 @@ void LiveShaderController::applyKeptOut()
     m_keptOut.reset();
     m_viewport->adoptProgram(std::move(kept.program));
     m_buildSources = kept.sources;
-    announce(kept.hash, kept.result, kept.timings);
+    announce(kept.hash, kept.report, kept.timings);
 }
 
 void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result,

@@ -138,7 +138,7 @@ private:
     struct KeptOut {
         QByteArray hash;
         GlProgram program;
-        BuildReport result;
+        BuildReport report;
         BuildTimings timings;
         StageSources sources;
     };

@@ -10,14 +10,14 @@
 #include "LiveCheck.h"
 #include "LiveShaderController.h"
 #include "LoadProgressWidget.h"
-#include "MaterialPanel.h"
+#include "MaterialDock.h"
 #include "MeshStatsText.h"
-#include "ObjectPanel.h"
+#include "ObjectDock.h"
 #include "PerformanceDock.h"
 #include "PixelInspectorDock.h"
 #include "RecentFiles.h"
 #include "SceneDock.h"
-#include "SceneEditDocks.h"
+#include "SceneEditDockSet.h"
 #include "SceneLoadJob.h"
 #include "SceneLoadRequests.h"
 #include "SceneShaderFiles.h"
@@ -68,7 +68,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     createShaderDock();
     createUniformsDock();
     createPerformanceDock();
-    m_editDocks = new SceneEditDocks(this, m_viewport);
+    m_editDocks = new SceneEditDockSet(this, m_viewport);
     createFileMenu();
     m_editDocks->addEditActions(menuBar()->addMenu(tr("&Edit")));
     // Before the status bar: the verdict comes first among its permanent
@@ -99,10 +99,10 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
 WindowDocks MainWindow::docks() const
 {
     return {m_sceneDock,
-            m_editDocks->objectPanel(),
+            m_editDocks->objectDock(),
             m_editDocks->lightsDock(),
             m_shaderDock,
-            m_editDocks->materialPanel(),
+            m_editDocks->materialDock(),
             m_uniformsDock,
             m_liveCheck->inspector(),
             m_performanceDock};

@@ -23,7 +23,7 @@ class LoadProgressWidget;
 class PerformanceDock;
 class RecentFiles;
 class SceneDock;
-class SceneEditDocks;
+class SceneEditDockSet;
 class SceneLoadJob;
 class SceneShaderFiles;
 class ShaderDock;
@@ -99,7 +99,7 @@ public:
     ShaderDock *shaderDock() const { return m_shaderDock; }
     UniformsDock *uniformsDock() const { return m_uniformsDock; }
     PerformanceDock *performanceDock() const { return m_performanceDock; }
-    SceneEditDocks *editDocks() const { return m_editDocks; }
+    SceneEditDockSet *editDocks() const { return m_editDocks; }
     LiveShaderController *liveShaders() const { return m_liveShaders; }
     LiveCheck *liveCheck() const { return m_liveCheck; }
     RecentFiles *recentFiles() const { return m_recentFiles; }
@@ -134,7 +134,7 @@ private:
     Viewport *m_viewport = nullptr;
     SceneLoadJob *m_loadJob = nullptr;
     SceneDock *m_sceneDock = nullptr;
-    SceneEditDocks *m_editDocks = nullptr; // lights, material, object docks + undo stack
+    SceneEditDockSet *m_editDocks = nullptr; // lights, material, object docks + undo stack
     ShaderDock *m_shaderDock = nullptr;
     UniformsDock *m_uniformsDock = nullptr;
     PerformanceDock *m_performanceDock = nullptr;

@@ -1,4 +1,4 @@
-#include "MaterialPanel.h"
+#include "MaterialDock.h"
 
 #include "Vec3Field.h"
 #include "core/MaterialPresets.h"
@@ -23,13 +23,13 @@ constexpr int kSliderMax = 512; // the slider covers the useful part
 
 } // namespace
 
-MaterialPanel::MaterialPanel(QWidget *parent)
-    : ObjectEditDock(tr("Material"), QStringLiteral("MaterialPanel"), parent)
+MaterialDock::MaterialDock(QWidget *parent)
+    : ObjectEditDock(tr("Material"), QStringLiteral("MaterialPanel"), parent) // the name saved layouts know it by
 {
     buildForm();
 }
 
-void MaterialPanel::buildForm()
+void MaterialDock::buildForm()
 {
     QWidget *form = widget();
     QFormLayout *layout = this->form();
@@ -78,7 +78,7 @@ void MaterialPanel::buildForm()
     auto *apply = new QPushButton(tr("Apply"), form);
     auto *save = new QPushButton(tr("Save as Preset…"), form);
     connect(apply, &QPushButton::clicked, this, [this] { applyPreset(m_presets->currentIndex()); });
-    connect(save, &QPushButton::clicked, this, &MaterialPanel::askPresetName);
+    connect(save, &QPushButton::clicked, this, &MaterialDock::askPresetName);
     auto *presetRow = new QHBoxLayout;
     presetRow->addWidget(m_presets, 1);
     presetRow->addWidget(apply);
@@ -87,12 +87,12 @@ void MaterialPanel::buildForm()
     reloadPresets();
 }
 
-Vec3Field *MaterialPanel::field(MaterialField which) const
+Vec3Field *MaterialDock::field(MaterialField which) const
 {
     return which == MaterialField::Ka ? m_ka : which == MaterialField::Kd ? m_kd : m_ks;
 }
 
-void MaterialPanel::showItem(int index)
+void MaterialDock::showItem(int index)
 {
     const Material &m = scene().objects[index].material;
     m_ka->setValue(m.ka);
@@ -102,7 +102,7 @@ void MaterialPanel::showItem(int index)
     m_shininessSlider->setValue(int(std::round(m.shininess)));
 }
 
-void MaterialPanel::pushMaterial(const Material &after, MaterialField field)
+void MaterialDock::pushMaterial(const Material &after, MaterialField field)
 {
     const int index = selectedObject();
     const Material before = scene().objects.at(index).material;
@@ -110,7 +110,7 @@ void MaterialPanel::pushMaterial(const Material &after, MaterialField field)
         pushEdit(new SetMaterialCommand(access(), index, before, after, field));
 }
 
-void MaterialPanel::applyPreset(int index)
+void MaterialDock::applyPreset(int index)
 {
     const QList<MaterialPreset> presets = allMaterialPresets();
     if (index < 0 || index >= presets.size() || selectedObject() < 0)
@@ -118,7 +118,7 @@ void MaterialPanel::applyPreset(int index)
     pushMaterial(presets[index].material, MaterialField::Preset);
 }
 
-void MaterialPanel::saveAsPreset(const QString &name)
+void MaterialDock::saveAsPreset(const QString &name)
 {
     if (name.trimmed().isEmpty() || selectedObject() < 0)
         return;
@@ -127,7 +127,7 @@ void MaterialPanel::saveAsPreset(const QString &name)
     m_presets->setCurrentIndex(m_presets->findText(name.trimmed()));
 }
 
-void MaterialPanel::askPresetName()
+void MaterialDock::askPresetName()
 {
     bool ok = false;
     const QString name = QInputDialog::getText(this, tr("Save Material Preset"), tr("Name:"),
@@ -136,7 +136,7 @@ void MaterialPanel::askPresetName()
         saveAsPreset(name);
 }
 
-void MaterialPanel::reloadPresets()
+void MaterialDock::reloadPresets()
 {
     m_presets->clear();
     for (const MaterialPreset &preset : allMaterialPresets())

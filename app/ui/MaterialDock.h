@@ -12,12 +12,12 @@ class Vec3Field;
 // The selected object's Phong material: ka, kd, ks (a colour button and three
 // numbers each) and the shininess (slider + spin box), plus presets and
 // "Save as Preset…". Every change is a SetMaterialCommand on the stack.
-class MaterialPanel : public ObjectEditDock
+class MaterialDock : public ObjectEditDock
 {
     Q_OBJECT
 
 public:
-    explicit MaterialPanel(QWidget *parent = nullptr);
+    explicit MaterialDock(QWidget *parent = nullptr);
 
     Vec3Field *field(MaterialField which) const;
     QDoubleSpinBox *shininessBox() const { return m_shininess; }

@@ -1,4 +1,4 @@
-#include "ObjectPanel.h"
+#include "ObjectDock.h"
 
 #include "Vec3Field.h"
 
@@ -17,21 +17,21 @@ QString refuseZeroScale(const glm::dvec3 &scale)
 {
     for (int axis = 0; axis < 3; ++axis)
         if (scale[axis] == 0.0)
-            return ObjectPanel::tr("scale must not be zero: the object would collapse to a plane");
+            return ObjectDock::tr("scale must not be zero: the object would collapse to a plane");
     return {};
 }
 
 } // namespace
 
-ObjectPanel::ObjectPanel(QWidget *parent)
-    : ObjectEditDock(tr("Object"), QStringLiteral("ObjectPanel"), parent)
+ObjectDock::ObjectDock(QWidget *parent)
+    : ObjectEditDock(tr("Object"), QStringLiteral("ObjectPanel"), parent) // the name saved layouts know it by
 {
     addField(tr("Translate"), TransformField::Translate, kMaxTranslate);
     addField(tr("Rotate (°)"), TransformField::Rotate, kMaxRotateDeg);
     addField(tr("Scale"), TransformField::Scale, kMaxScale)->setCheck(refuseZeroScale);
 }
 
-Vec3Field *ObjectPanel::addField(const QString &label, TransformField which, double limit)
+Vec3Field *ObjectDock::addField(const QString &label, TransformField which, double limit)
 {
     auto *field = new Vec3Field(-limit, limit, widget());
     connect(field, &Vec3Field::edited, this,
@@ -41,12 +41,12 @@ Vec3Field *ObjectPanel::addField(const QString &label, TransformField which, dou
     return field;
 }
 
-Vec3Field *ObjectPanel::field(TransformField which) const
+Vec3Field *ObjectDock::field(TransformField which) const
 {
     return m_fields[int(which)];
 }
 
-void ObjectPanel::showItem(int index)
+void ObjectDock::showItem(int index)
 {
     const Transform &t = scene().objects[index].transform;
     m_fields[int(TransformField::Translate)]->setValue(t.translate);
@@ -54,7 +54,7 @@ void ObjectPanel::showItem(int index)
     m_fields[int(TransformField::Scale)]->setValue(t.scale);
 }
 
-void ObjectPanel::push(TransformField which, const glm::dvec3 &after)
+void ObjectDock::push(TransformField which, const glm::dvec3 &after)
 {
     const int index = selectedObject();
     if (!isBound() || index < 0)

@@ -8,12 +8,12 @@ class Vec3Field;
 // Places the selected object: translate, rotate (degrees, about X then Y then
 // Z) and scale per axis. Non-uniform scale is fine; a zero scale (the object
 // would collapse and its normals with it) is refused at the field.
-class ObjectPanel : public ObjectEditDock
+class ObjectDock : public ObjectEditDock
 {
     Q_OBJECT
 
 public:
-    explicit ObjectPanel(QWidget *parent = nullptr);
+    explicit ObjectDock(QWidget *parent = nullptr);
 
     Vec3Field *field(TransformField which) const;
 

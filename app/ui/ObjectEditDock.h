@@ -6,8 +6,8 @@ class QFormLayout;
 
 namespace phonglab {
 
-// A SceneEditDock for one scene object at a time (MaterialPanel,
-// ObjectPanel): an "Object" chooser ("1: tree.obj", ...) heads a form the
+// A SceneEditDock for one scene object at a time (MaterialDock,
+// ObjectDock): an "Object" chooser ("1: tree.obj", ...) heads a form the
 // subclass fills with the object's fields.
 class ObjectEditDock : public SceneEditDock
 {

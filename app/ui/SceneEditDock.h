@@ -10,7 +10,7 @@ class QUndoStack;
 namespace phonglab {
 
 // The skeleton of every dock that edits the shown scene one item at a time
-// (LightsDock: a light; MaterialPanel and ObjectPanel: an object). It keeps
+// (LightsDock: a light; MaterialDock and ObjectDock: an object). It keeps
 // the scene it was last shown, a chooser for the item and an editor for the
 // chosen one, and turns the editor's changes into commands on the undo
 // stack. Subclasses say how many items there are, fill their chooser and

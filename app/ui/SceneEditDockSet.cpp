@@ -1,8 +1,8 @@
-#include "SceneEditDocks.h"
+#include "SceneEditDockSet.h"
 
 #include "LightsDock.h"
-#include "MaterialPanel.h"
-#include "ObjectPanel.h"
+#include "MaterialDock.h"
+#include "ObjectDock.h"
 #include "Viewport.h"
 
 #include <QAction>
@@ -12,13 +12,13 @@
 
 namespace phonglab {
 
-SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport)
+SceneEditDockSet::SceneEditDockSet(QMainWindow *window, Viewport *viewport)
     : QObject(window)
     , m_viewport(viewport)
     , m_stack(new QUndoStack(this))
     , m_lights(new LightsDock(window))
-    , m_material(new MaterialPanel(window))
-    , m_object(new ObjectPanel(window))
+    , m_material(new MaterialDock(window))
+    , m_object(new ObjectDock(window))
 {
     for (QDockWidget *dock :
          {static_cast<QDockWidget *>(m_lights), static_cast<QDockWidget *>(m_material),
@@ -28,23 +28,23 @@ SceneEditDocks::SceneEditDocks(QMainWindow *window, Viewport *viewport)
     m_lights->bind(m_stack, access());
     m_material->bind(m_stack, access());
     m_object->bind(m_stack, access());
-    connect(m_viewport, &Viewport::sceneChanged, this, &SceneEditDocks::sceneReplaced);
-    connect(m_viewport, &Viewport::sceneParametersChanged, this, &SceneEditDocks::refresh);
-    connect(m_viewport, &Viewport::lightDragged, this, &SceneEditDocks::pushDrag);
+    connect(m_viewport, &Viewport::sceneChanged, this, &SceneEditDockSet::sceneReplaced);
+    connect(m_viewport, &Viewport::sceneParametersChanged, this, &SceneEditDockSet::refresh);
+    connect(m_viewport, &Viewport::lightDragged, this, &SceneEditDockSet::pushDrag);
     connect(m_viewport, &Viewport::lightPicked, m_lights, &LightsDock::selectLight);
     connect(m_lights, &LightsDock::lightSelected, m_viewport, &Viewport::setSelectedLight);
     connect(m_lights, &LightsDock::headlightToggled, m_viewport, &Viewport::setHeadlight);
     refresh();
 }
 
-SceneAccess SceneEditDocks::access() const
+SceneAccess SceneEditDockSet::access() const
 {
     Viewport *viewport = m_viewport;
     return {[viewport] { return viewport->currentScene(); },
             [viewport](const Scene &scene) { viewport->setSceneParameters(scene); }};
 }
 
-void SceneEditDocks::addEditActions(QMenu *edit)
+void SceneEditDockSet::addEditActions(QMenu *edit)
 {
     QAction *undo = m_stack->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence(tr("Ctrl+Z")));
@@ -54,14 +54,14 @@ void SceneEditDocks::addEditActions(QMenu *edit)
     edit->addAction(redo);
 }
 
-void SceneEditDocks::addDockToggles(QMenu *view)
+void SceneEditDockSet::addDockToggles(QMenu *view)
 {
     view->addAction(m_lights->toggleViewAction());
     view->addAction(m_material->toggleViewAction());
     view->addAction(m_object->toggleViewAction());
 }
 
-void SceneEditDocks::refresh()
+void SceneEditDockSet::refresh()
 {
     const Scene scene = m_viewport->currentScene();
     m_lights->refresh(scene);
@@ -69,7 +69,7 @@ void SceneEditDocks::refresh()
     m_object->refresh(scene);
 }
 
-void SceneEditDocks::sceneReplaced()
+void SceneEditDockSet::sceneReplaced()
 {
     // Also when only a mesh's normals were reloaded: commands hold light and
     // object indices, and a reloaded scene may no longer have them.
@@ -77,7 +77,7 @@ void SceneEditDocks::sceneReplaced()
     refresh();
 }
 
-void SceneEditDocks::pushDrag(int index, const PointLight &before, const PointLight &after)
+void SceneEditDockSet::pushDrag(int index, const PointLight &before, const PointLight &after)
 {
     // The viewport has already moved the light; redo() on push writes the same.
     m_stack->push(new SetLightCommand(access(), index, before, after, LightField::Position, false));

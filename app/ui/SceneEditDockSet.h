@@ -10,8 +10,8 @@ class QUndoStack;
 namespace phonglab {
 
 class LightsDock;
-class MaterialPanel;
-class ObjectPanel;
+class MaterialDock;
+class ObjectDock;
 class Viewport;
 
 // The docks that edit the shown scene in place (lights, material, object
@@ -19,13 +19,13 @@ class Viewport;
 // through its cheap parameter path (Viewport::setSceneParameters), so no
 // mesh is reloaded; a new scene clears the stack, since its commands name
 // lights and objects of the old one.
-class SceneEditDocks : public QObject
+class SceneEditDockSet : public QObject
 {
     Q_OBJECT
 
 public:
     // The docks go into `window`; MainWindow lays them out (DefaultLayout).
-    SceneEditDocks(QMainWindow *window, Viewport *viewport);
+    SceneEditDockSet(QMainWindow *window, Viewport *viewport);
 
     // Undo / Redo (Ctrl+Z, Ctrl+Shift+Z) into `edit`; the docks' toggles into `view`.
     void addEditActions(QMenu *edit);
@@ -33,8 +33,8 @@ public:
 
     QUndoStack *undoStack() const { return m_stack; }
     LightsDock *lightsDock() const { return m_lights; }
-    MaterialPanel *materialPanel() const { return m_material; }
-    ObjectPanel *objectPanel() const { return m_object; }
+    MaterialDock *materialDock() const { return m_material; }
+    ObjectDock *objectDock() const { return m_object; }
     SceneAccess access() const;
 
 private:
@@ -45,8 +45,8 @@ private:
     Viewport *m_viewport = nullptr;
     QUndoStack *m_stack = nullptr;
     LightsDock *m_lights = nullptr;
-    MaterialPanel *m_material = nullptr;
-    ObjectPanel *m_object = nullptr;
+    MaterialDock *m_material = nullptr;
+    ObjectDock *m_object = nullptr;
 };
 
 } // namespace phonglab

@@ -220,7 +220,7 @@ BuiltProgram Viewport::buildProgram(const ShaderSource &vertex, const ShaderSour
 {
     BuiltProgram built;
     if (!m_glInitialized) {
-        built.result.diagnostics.push_back({BuildStep::Link,
+        built.report.diagnostics.push_back({BuildStep::Link,
                                             ShaderDiagnostic::Severity::Error,
                                             {},
                                             0,

@@ -169,7 +169,7 @@ void TestUniformSnapshot::adoptKeepsProgramAndFreesOld()
     const GLuint old = m_first.id();
     BuiltProgram built =
         ProgramBuilder().build({QStringLiteral("v"), kVertex}, {QStringLiteral("f"), kSecond});
-    QVERIFY2(built.ok(), qPrintable(built.result.errorSummary()));
+    QVERIFY2(built.ok(), qPrintable(built.report.errorSummary()));
     QVERIFY(built.compileNs > 0 && built.linkNs > 0);
     const GLuint adopted = built.program.id();
     m_first.adopt(std::move(built.program));

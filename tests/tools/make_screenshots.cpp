@@ -11,7 +11,7 @@
 #include "ui/LiveShaderController.h"
 #include "ui/MainWindow.h"
 #include "ui/PerformanceDock.h"
-#include "ui/SceneEditDocks.h"
+#include "ui/SceneEditDockSet.h"
 #include "ui/ShaderDock.h"
 #include "ui/ShaderEditor.h"
 #include "ui/Viewport.h"

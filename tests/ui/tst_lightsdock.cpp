@@ -14,9 +14,9 @@
 #include "render/QtImages.h"
 #include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
-#include "ui/MaterialPanel.h"
-#include "ui/ObjectPanel.h"
-#include "ui/SceneEditDocks.h"
+#include "ui/MaterialDock.h"
+#include "ui/ObjectDock.h"
+#include "ui/SceneEditDockSet.h"
 #include "ui/Vec3Field.h"
 #include "ui/Viewport.h"
 #include "ui/WindowImage.h"
@@ -117,7 +117,7 @@ private slots:
     void exportImageAtAnySize();
 
 private:
-    SceneEditDocks *docks() const { return m_window->editDocks(); }
+    SceneEditDockSet *docks() const { return m_window->editDocks(); }
     void orbit(QPoint by);
     void verifyMatchesReference();
 };
@@ -165,7 +165,7 @@ void TestLightsDock::verifyMatchesReference()
 void TestLightsDock::kdEditChangesFrameAndMatchesReference()
 {
     const QImage before = frame();
-    MaterialPanel *panel = docks()->materialPanel();
+    MaterialDock *panel = docks()->materialDock();
     type(panel->field(MaterialField::Kd), {0.1, 0.8, 0.3});
     QCOMPARE(viewport()->currentScene().objects[0].material.kd, glm::dvec3(0.1, 0.8, 0.3));
     const QImage after = frame();
@@ -176,7 +176,7 @@ void TestLightsDock::kdEditChangesFrameAndMatchesReference()
     if (!artifacts.isEmpty() && QDir().mkpath(artifacts)) {
         for (QDockWidget *dock :
              {static_cast<QDockWidget *>(docks()->lightsDock()), static_cast<QDockWidget *>(panel),
-              static_cast<QDockWidget *>(docks()->objectPanel())}) {
+              static_cast<QDockWidget *>(docks()->objectDock())}) {
             dock->raise();
             windowImage(*m_window).save(
                 QDir(artifacts).filePath(dock->objectName() + QStringLiteral(".png")));
@@ -208,9 +208,9 @@ void TestLightsDock::undoRestoresTheExactFrame()
     const QImage original = frame();
     const Scene scene = viewport()->currentScene();
     QUndoStack *stack = docks()->undoStack();
-    type(docks()->materialPanel()->field(MaterialField::Kd), {0.9, 0.9, 0.1});
+    type(docks()->materialDock()->field(MaterialField::Kd), {0.9, 0.9, 0.1});
     type(docks()->lightsDock()->field(LightField::Diffuse), {0.3, 0.3, 1.0});
-    type(docks()->objectPanel()->field(TransformField::Scale), {1.5, 0.5, 1.0});
+    type(docks()->objectDock()->field(TransformField::Scale), {1.5, 0.5, 1.0});
     QCOMPARE(stack->count(), 3);
     const QImage edited = frame();
     QVERIFY(edited != original);
@@ -236,9 +236,9 @@ void TestLightsDock::badValuesAreRefused()
     const double nan = std::nan(""), inf = INFINITY;
     const QList<Case> cases = {
         {docks()->lightsDock()->field(LightField::Position), {nan, 0, 0}},
-        {docks()->materialPanel()->field(MaterialField::Kd), {0.5, inf, 0.5}},
-        {docks()->materialPanel()->field(MaterialField::Ks), {-0.1, 0.5, 0.5}}, // out of range
-        {docks()->objectPanel()->field(TransformField::Scale), {1.0, 0.0, 1.0}},
+        {docks()->materialDock()->field(MaterialField::Kd), {0.5, inf, 0.5}},
+        {docks()->materialDock()->field(MaterialField::Ks), {-0.1, 0.5, 0.5}}, // out of range
+        {docks()->objectDock()->field(TransformField::Scale), {1.0, 0.0, 1.0}},
         {docks()->lightsDock()->field(LightField::Attenuation), {0.0, 0.0, 0.0}},
         {docks()->lightsDock()->ambientField(), {0.2, -inf, 0.2}},
     };
@@ -384,7 +384,7 @@ void TestLightsDock::renameLightThroughNameField()
 void TestLightsDock::shortcutsUndoAndRedo()
 {
     const QImage original = frame();
-    type(docks()->materialPanel()->field(MaterialField::Ks), {0.1, 0.1, 0.1});
+    type(docks()->materialDock()->field(MaterialField::Ks), {0.1, 0.1, 0.1});
     const QImage edited = frame();
     QVERIFY(edited != original);
     // Xvfb has no window manager to activate the window, so key presses do
@@ -428,7 +428,7 @@ void TestLightsDock::headlightFollowsTheCamera()
 // (QSettings in test mode) and applies the material it was saved from.
 void TestLightsDock::presetsAndShininess()
 {
-    MaterialPanel *panel = docks()->materialPanel();
+    MaterialDock *panel = docks()->materialDock();
     QUndoStack *stack = docks()->undoStack();
     const Material original = viewport()->currentScene().objects[0].material;
     const QList<MaterialPreset> builtins = builtinMaterialPresets();

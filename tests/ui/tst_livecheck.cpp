@@ -64,7 +64,7 @@ private slots:
 
         replaceInFragment(QStringLiteral("reflect(-L, N)"), QStringLiteral("reflect(L, N)"));
         QVERIFY(waitForVerdict(false));
-        const CheckResult &result = *check->lastResult();
+        const CheckedFrame &result = *check->lastResult();
         const QString status = check->statusLabel()->text();
         QVERIFY2(status.startsWith(QStringLiteral("✗"))
                      && status.contains(QStringLiteral("reflect-incident")),
@@ -169,7 +169,7 @@ private slots:
                     && check->lastResult()->report.equation == PhongEquation::Slide;
             },
             kCheckTimeoutMs));
-        const CheckResult &result = *check->lastResult();
+        const CheckedFrame &result = *check->lastResult();
         QVERIFY2(result.report.passed(), qPrintable(check->statusLabel()->text()));
         QVERIFY2(check->statusLabel()->text().contains(QStringLiteral("slide")),
                  qPrintable(check->statusLabel()->text()));

@@ -14,7 +14,7 @@
 #include "ui/DiagnosticList.h"
 #include "ui/LiveCheck.h"
 #include "ui/MainWindow.h"
-#include "ui/ShaderChecker.h"
+#include "ui/CheckRunner.h"
 #include "ui/ShaderDock.h"
 #include "ui/ShaderEditor.h"
 #include "ui/Viewport.h"

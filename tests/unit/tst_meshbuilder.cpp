@@ -116,7 +116,7 @@ private slots:
 
 void TestMeshBuilder::flatCubeSplitsAtEdges()
 {
-    BuildStats stats;
+    MeshStats stats;
     QStringList warnings;
     const BuiltMesh built = buildMeshData(flatCube(), NormalOptions());
     const MeshData &data = built.mesh;
@@ -128,7 +128,7 @@ void TestMeshBuilder::flatCubeSplitsAtEdges()
     QCOMPARE(stats.vertices, 24); // 8 corners × 3 faces
     QCOMPARE(stats.splitVertices, 16);
     QVERIFY(stats.normalsFromFile);
-    QCOMPARE(stats.method, NormalMethod::Auto);
+    QCOMPARE(stats.normalMethod, NormalMethod::Auto);
     // Quads stay in order, two triangles each: a face's triangles use the
     // same four vertices, all with the face's normal.
     for (int f = 0; f < 6; ++f) {
@@ -144,7 +144,7 @@ void TestMeshBuilder::flatCubeSplitsAtEdges()
 
 void TestMeshBuilder::smoothCubeStaysWelded()
 {
-    BuildStats stats;
+    MeshStats stats;
     const BuiltMesh built = buildMeshData(smoothCube(), NormalOptions());
     const MeshData &data = built.mesh;
     stats = built.stats;
@@ -160,10 +160,10 @@ void TestMeshBuilder::smoothCubeStaysWelded()
 void TestMeshBuilder::explicitMethodIgnoresFileNormals()
 {
     // Angle-weighted over the flat cube's positions: one smooth vertex each.
-    BuildStats stats;
+    MeshStats stats;
     stats = buildMeshData(flatCube(), {NormalMethod::AngleWeighted, std::nullopt}).stats;
     QVERIFY(!stats.normalsFromFile);
-    QCOMPARE(stats.method, NormalMethod::AngleWeighted);
+    QCOMPARE(stats.normalMethod, NormalMethod::AngleWeighted);
     QCOMPARE(stats.vertices, 8);
     QCOMPARE(stats.splitVertices, 0);
     // A 30° crease cuts every edge: the flat cube again, computed.
@@ -178,7 +178,7 @@ void TestMeshBuilder::explicitMethodIgnoresFileNormals()
     // Flat shading splits just as much, whatever the file says.
     stats = buildMeshData(smoothCube(), {NormalMethod::Flat, std::nullopt}).stats;
     QCOMPARE(stats.vertices, 24);
-    QCOMPARE(stats.method, NormalMethod::Flat);
+    QCOMPARE(stats.normalMethod, NormalMethod::Flat);
 }
 
 void TestMeshBuilder::flatConeApexSplitsManyWays()
@@ -194,7 +194,7 @@ void TestMeshBuilder::flatConeApexSplitsManyWays()
         mesh.positions.emplace_back(std::sin(a), 0.0, std::cos(a));
         addFace(mesh, {0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % segments)});
     }
-    BuildStats stats;
+    MeshStats stats;
     const BuiltMesh built = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt});
     const MeshData &data = built.mesh;
     stats = built.stats;
@@ -240,7 +240,7 @@ void TestMeshBuilder::quadAndPentagonKeepWinding()
     QVERIFY(glm::dot(quadNormal, kTiltedNormal) > 0.0);
     QVERIFY(glm::dot(pentagonNormal, kTiltedNormal) < 0.0);
 
-    BuildStats stats;
+    MeshStats stats;
     const BuiltMesh built = buildMeshData(mesh, NormalOptions());
     const MeshData &data = built.mesh;
     stats = built.stats;
@@ -292,7 +292,7 @@ void TestMeshBuilder::concavePolygon()
     }
     mesh.faceStart.push_back(std::uint32_t(n));
 
-    BuildStats stats;
+    MeshStats stats;
     QStringList warnings;
     const BuiltMesh built = buildMeshData(mesh, NormalOptions());
     const MeshData &data = built.mesh;
@@ -369,7 +369,7 @@ void TestMeshBuilder::bowtieFallsBackToFan()
     mesh.positions = {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}};
     addFace(mesh, {0, 1, 2, 3});
     QCOMPARE(triangulate(mesh).fanFallbacks, 1u);
-    BuildStats stats;
+    MeshStats stats;
     QStringList warnings;
     const BuiltMesh built = buildMeshData(mesh, NormalOptions());
     const MeshData &data = built.mesh;
@@ -388,14 +388,14 @@ void TestMeshBuilder::autoWithPartialNormalsComputes()
     PolygonMesh mesh = flatCube();
     for (int c = 0; c < 4; ++c)
         mesh.cornerNormal[c] = PolygonMesh::kNoNormal;
-    BuildStats stats;
+    MeshStats stats;
     QStringList warnings;
     const BuiltMesh built = buildMeshData(mesh, NormalOptions());
     const MeshData &data = built.mesh;
     stats = built.stats;
     warnings = built.warnings;
     QVERIFY(!stats.normalsFromFile);
-    QCOMPARE(stats.method, NormalMethod::AngleWeighted);
+    QCOMPARE(stats.normalMethod, NormalMethod::AngleWeighted);
     QCOMPARE(stats.vertices, 8);
     QCOMPARE(warnings.size(), 1);
     QVERIFY2(warnings.first().startsWith("4 of 24 corners have no normal"),
@@ -412,7 +412,7 @@ void TestMeshBuilder::unusableFileNormalsAreReplaced()
     PolygonMesh mesh = flatCube();
     mesh.normals[0] = glm::vec3(0.0f);
     mesh.normals[1] = glm::vec3(std::nanf(""), 0, 0);
-    BuildStats stats;
+    MeshStats stats;
     QStringList warnings;
     const BuiltMesh built = buildMeshData(mesh, NormalOptions());
     const MeshData &data = built.mesh;
@@ -463,7 +463,7 @@ void TestMeshBuilder::boundsAndStats()
     for (glm::vec3 &p : mesh.positions)
         p = glm::vec3(1, 0, 0.25f) + p * glm::vec3(2, 2, 0.25f);
     mesh.positions.emplace_back(100, 100, 100);
-    BuildStats stats;
+    MeshStats stats;
     const BuiltMesh built = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt});
     const MeshData &data = built.mesh;
     stats = built.stats;
