@@ -1,6 +1,6 @@
 #include "benchcli/BenchCommand.h"
 #include "cli/Cli.h"
-#include "ui/GuiMain.h"
+#include "ui/window/GuiMain.h"
 
 int main(int argc, char **argv)
 {

@@ -40,7 +40,7 @@ endif()
 
 set(violations 0)
 foreach(layer IN LISTS layers)
-  file(GLOB files "${root}/app/${layer}/*.h" "${root}/app/${layer}/*.cpp")
+  file(GLOB_RECURSE files "${root}/app/${layer}/*.h" "${root}/app/${layer}/*.cpp")
   foreach(file IN LISTS files)
     file(STRINGS "${file}" lines)
     set(number 0)

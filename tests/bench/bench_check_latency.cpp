@@ -14,13 +14,13 @@
 #include "BenchHelpers.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
-#include "ui/LiveCheck.h"
-#include "ui/LiveShaderController.h"
-#include "ui/MainWindow.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/ShaderFileSet.h"
-#include "ui/Viewport.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/window/MainWindow.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/shaders/ShaderFileSet.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

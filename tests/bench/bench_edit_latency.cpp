@@ -18,14 +18,14 @@
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
-#include "ui/GuiMain.h"
-#include "ui/LiveCheck.h"
-#include "ui/LiveShaderController.h"
-#include "ui/MainWindow.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/ShaderFileSet.h"
-#include "ui/Viewport.h"
+#include "ui/window/GuiMain.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/window/MainWindow.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/shaders/ShaderFileSet.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

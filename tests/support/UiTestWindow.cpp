@@ -2,12 +2,12 @@
 
 #include "ResultChecks.h"
 #include "render/GlFormat.h"
-#include "ui/GuiMain.h"
-#include "ui/LiveShaderController.h"
-#include "ui/MainWindow.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/Viewport.h"
+#include "ui/window/GuiMain.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/window/MainWindow.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QElapsedTimer>
 #include <QStandardPaths>

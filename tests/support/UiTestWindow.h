@@ -1,7 +1,7 @@
 #pragma once
 #include "core/Scene.h"
 #include "render/UniformSnapshot.h"
-#include "ui/MainWindow.h"
+#include "ui/window/MainWindow.h"
 
 #include <QByteArray>
 #include <QImage>

@@ -5,17 +5,17 @@
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
-#include "ui/CheckOverlay.h"
-#include "ui/LightsDock.h"
-#include "ui/LiveCheck.h"
-#include "ui/LiveShaderController.h"
-#include "ui/MainWindow.h"
-#include "ui/PerformanceDock.h"
-#include "ui/SceneEditDockSet.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/Viewport.h"
-#include "ui/WindowImage.h"
+#include "ui/check/CheckOverlay.h"
+#include "ui/scene/LightsDock.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/window/MainWindow.h"
+#include "ui/performance/PerformanceDock.h"
+#include "ui/scene/SceneEditDockSet.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/Viewport.h"
+#include "ui/window/WindowImage.h"
 
 #include <QApplication>
 #include <QDir>

@@ -5,10 +5,10 @@
 #include "UiTestWindow.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
-#include "ui/ExamplesMenu.h"
-#include "ui/MainWindow.h"
-#include "ui/SceneLoadJob.h"
-#include "ui/Viewport.h"
+#include "ui/window/ExamplesMenu.h"
+#include "ui/window/MainWindow.h"
+#include "ui/scene/SceneLoadJob.h"
+#include "ui/viewport/Viewport.h"
 
 #include "core/ResourcePaths.h"
 #include <QAction>

@@ -5,14 +5,14 @@
 // really got.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "ui/AboutDialog.h"
-#include "ui/DocumentView.h"
-#include "ui/DocumentationBrowser.h"
-#include "ui/DocumentationFiles.h"
-#include "ui/HelpMenu.h"
-#include "ui/MainWindow.h"
-#include "ui/ShortcutsDialog.h"
-#include "ui/Viewport.h"
+#include "ui/help/AboutDialog.h"
+#include "ui/help/DocumentView.h"
+#include "ui/help/DocumentationBrowser.h"
+#include "ui/help/DocumentationFiles.h"
+#include "ui/help/HelpMenu.h"
+#include "ui/window/MainWindow.h"
+#include "ui/help/ShortcutsDialog.h"
+#include "ui/viewport/Viewport.h"
 
 #include <OpenMesh/Core/System/config.h>
 

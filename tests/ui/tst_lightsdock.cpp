@@ -12,14 +12,14 @@
 #include "core/MaterialPresets.h"
 #include "core/PhongReference.h"
 #include "render/QtImages.h"
-#include "ui/LightsDock.h"
-#include "ui/MainWindow.h"
-#include "ui/MaterialDock.h"
-#include "ui/ObjectDock.h"
-#include "ui/SceneEditDockSet.h"
-#include "ui/Vec3Field.h"
-#include "ui/Viewport.h"
-#include "ui/WindowImage.h"
+#include "ui/scene/LightsDock.h"
+#include "ui/window/MainWindow.h"
+#include "ui/scene/MaterialDock.h"
+#include "ui/scene/ObjectDock.h"
+#include "ui/scene/SceneEditDockSet.h"
+#include "ui/scene/Vec3Field.h"
+#include "ui/viewport/Viewport.h"
+#include "ui/window/WindowImage.h"
 
 #include <QAction>
 #include <QCheckBox>

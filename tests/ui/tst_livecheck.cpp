@@ -8,14 +8,14 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "render/QtImages.h"
-#include "ui/CheckOverlay.h"
-#include "ui/GuiArguments.h"
-#include "ui/GuiMain.h"
-#include "ui/LiveCheck.h"
-#include "ui/MainWindow.h"
-#include "ui/PixelInspectorDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/Viewport.h"
+#include "ui/check/CheckOverlay.h"
+#include "ui/window/GuiArguments.h"
+#include "ui/window/GuiMain.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/window/MainWindow.h"
+#include "ui/check/PixelInspectorDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QApplication>
 #include <QClipboard>

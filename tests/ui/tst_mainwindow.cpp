@@ -8,10 +8,10 @@
 #include "UiTestWindow.h"
 #include "core/CameraFraming.h"
 #include "core/SceneJson.h"
-#include "ui/FrameStatsLabel.h"
-#include "ui/MainWindow.h"
-#include "ui/Viewport.h"
-#include "ui/WindowImage.h"
+#include "ui/viewport/FrameStatsLabel.h"
+#include "ui/window/MainWindow.h"
+#include "ui/viewport/Viewport.h"
+#include "ui/window/WindowImage.h"
 
 #include <QDir>
 #include <QLabel>

@@ -6,10 +6,10 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/Scene.h"
-#include "ui/DetailLevelLabel.h"
-#include "ui/MainWindow.h"
-#include "ui/PerformanceDock.h"
-#include "ui/Viewport.h"
+#include "ui/viewport/DetailLevelLabel.h"
+#include "ui/window/MainWindow.h"
+#include "ui/performance/PerformanceDock.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QApplication>
 #include <QChart>

@@ -7,14 +7,14 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/SceneJson.h"
-#include "ui/LiveShaderController.h"
-#include "ui/MainWindow.h"
-#include "ui/SceneDock.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/ShaderFileSet.h"
-#include "ui/UniformsDock.h"
-#include "ui/Viewport.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/window/MainWindow.h"
+#include "ui/scene/SceneDock.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/shaders/ShaderFileSet.h"
+#include "ui/uniforms/UniformsDock.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QAction>
 #include <QDir>

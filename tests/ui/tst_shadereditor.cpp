@@ -4,12 +4,12 @@
 // to user copies, and changes made on disk by others are reloaded or kept.
 
 #include "ResultChecks.h"
-#include "ui/DiagnosticList.h"
-#include "ui/GlslApi.h"
-#include "ui/GlslLexer.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/ShaderFileSet.h"
+#include "ui/shaders/DiagnosticList.h"
+#include "ui/shaders/GlslApi.h"
+#include "ui/shaders/GlslLexer.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/shaders/ShaderFileSet.h"
 
 #include <QApplication>
 #include <QComboBox>

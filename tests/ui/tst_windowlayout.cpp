@@ -10,14 +10,14 @@
 #include "core/CameraFraming.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
-#include "ui/DefaultLayout.h"
-#include "ui/DiagnosticList.h"
-#include "ui/LiveCheck.h"
-#include "ui/MainWindow.h"
-#include "ui/CheckRunner.h"
-#include "ui/ShaderDock.h"
-#include "ui/ShaderEditor.h"
-#include "ui/Viewport.h"
+#include "ui/window/DefaultLayout.h"
+#include "ui/shaders/DiagnosticList.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/window/MainWindow.h"
+#include "ui/check/CheckRunner.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QAction>
 #include <QDockWidget>

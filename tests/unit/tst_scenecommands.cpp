@@ -2,7 +2,7 @@
 // redo applies exactly its change, each undo restores the exact Scene, and
 // consecutive edits of the same field merge into one step.
 
-#include "ui/SceneCommands.h"
+#include "ui/scene/SceneCommands.h"
 
 #include <QTest>
 #include <QUndoStack>

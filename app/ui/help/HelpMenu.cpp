@@ -3,10 +3,10 @@
 #include "AboutDialog.h"
 #include "DocumentationBrowser.h"
 #include "DocumentationFiles.h"
-#include "MainWindow.h"
+#include "ui/window/MainWindow.h"
 #include "ShortcutsDialog.h"
-#include "Viewport.h"
-#include "WarningBox.h"
+#include "ui/viewport/Viewport.h"
+#include "ui/window/WarningBox.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,7 +4,7 @@
 #include "FileTypes.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 #include "WarningBox.h"
 #include "core/ResourcePaths.h"
 #include "core/ScenePaths.h"

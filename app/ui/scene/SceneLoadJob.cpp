@@ -1,6 +1,6 @@
 #include "SceneLoadJob.h"
 
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QPromise>
 #include <QtConcurrent/QtConcurrentRun>

@@ -1,6 +1,6 @@
 #pragma once
-#include "LiveShaderController.h"
-#include "ShaderRecovery.h"
+#include "ui/shaders/LiveShaderController.h"
+#include "ui/shaders/ShaderRecovery.h"
 
 #include <QString>
 

@@ -2,7 +2,7 @@
 
 #include "GuiArguments.h"
 #include "MainWindow.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "ReadoutPace.h"
+#include "ui/viewport/ReadoutPace.h"
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
 #include "core/ShadingMethod.h"

@@ -1,6 +1,6 @@
 #include "WindowImage.h"
 
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QPainter>
 #include <QPixmap>

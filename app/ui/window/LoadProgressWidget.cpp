@@ -1,6 +1,6 @@
 #include "LoadProgressWidget.h"
 
-#include "SceneLoadJob.h"
+#include "ui/scene/SceneLoadJob.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

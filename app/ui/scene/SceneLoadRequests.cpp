@@ -1,6 +1,6 @@
 #include "SceneLoadRequests.h"
 
-#include "FileTypes.h"
+#include "ui/window/FileTypes.h"
 #include "MeshPlacement.h"
 #include "bench/BenchResult.h"
 

@@ -1,6 +1,6 @@
 #include "ProgramTrial.h"
 
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 #include "render/FrameEstimate.h"
 
 #include <algorithm>

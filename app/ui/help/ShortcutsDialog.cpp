@@ -1,6 +1,6 @@
 #include "ShortcutsDialog.h"
 
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QAction>
 #include <QDialogButtonBox>

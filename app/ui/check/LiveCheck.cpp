@@ -1,9 +1,9 @@
 #include "LiveCheck.h"
 
-#include "LiveShaderController.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "PixelInspectorDock.h"
-#include "SceneLoadJob.h"
-#include "Viewport.h"
+#include "ui/scene/SceneLoadJob.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -3,7 +3,7 @@
 #include "LightsDock.h"
 #include "MaterialDock.h"
 #include "ObjectDock.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QAction>
 #include <QMainWindow>

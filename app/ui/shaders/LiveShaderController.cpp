@@ -5,7 +5,7 @@
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 #include "core/RecoveryJournal.h"
 #include "core/ResourcePaths.h"
 #include "render/BuildThread.h"

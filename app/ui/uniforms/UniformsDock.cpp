@@ -2,15 +2,15 @@
 
 #include "BindingChoice.h"
 
-#include "CurrentContext.h"
+#include "ui/viewport/CurrentContext.h"
 
-#include "ShaderDock.h"
+#include "ui/shaders/ShaderDock.h"
 #include "UniformBoolRow.h"
 #include "UniformFloatRow.h"
 #include "UniformIntRow.h"
 #include "UniformRowFactory.h"
 #include "UniformVectorRow.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QBoxLayout>
 #include <QFormLayout>

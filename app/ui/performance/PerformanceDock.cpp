@@ -4,7 +4,7 @@
 #include <QSignalBlocker>
 
 #include "BenchProcess.h"
-#include "Viewport.h"
+#include "ui/viewport/Viewport.h"
 #include "charts/SpeedAccuracyChart.h"
 
 #include <QChart>
