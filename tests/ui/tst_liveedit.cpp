@@ -525,10 +525,13 @@ void TestLiveEdit::slowProgramIsKeptOut()
     // Its first frame runs long (off the GUI thread): the view then draws
     // nothing by itself, until the user acts on it.
     QTRY_VERIFY_WITH_TIMEOUT(viewport()->framesHeld(), 30000);
-    QTest::qWait(500); // a frame already on its way when the long one ended
+    // A frame on its way when the long one ended is booked once the
+    // presenting thread gives the context back.
+    QTRY_VERIFY(!viewport()->isContextLent());
     const qint64 drawn = viewport()->framesRendered();
+    const qint64 refused = viewport()->framesRefused();
     viewport()->requestFrame();
-    QTest::qWait(500);
+    QTRY_VERIFY(viewport()->framesRefused() > refused); // asked for, and not drawn
     QCOMPARE(viewport()->framesRendered(), drawn);
     QVERIFY(viewport()->framesHeld());
     QTest::mouseClick(viewport(), Qt::LeftButton, {}, viewport()->rect().center());

@@ -167,6 +167,8 @@ public:
     // until a click, a wheel turn or a key in it, a new program or a new
     // scene (resumeFrames()): such a frame is never repeated by itself.
     bool framesHeld() const { return m_framesHeld; }
+    // Frames asked for while held, and not drawn.
+    qint64 framesRefused() const { return m_framesRefused; }
     void resumeFrames();
     qint64 framesRendered() const { return m_framesRendered; }
     // The draw times behind frameRendered()'s figure.
@@ -307,6 +309,7 @@ private:
     bool m_overlayDirty = true;
     bool m_paintingOverlays = false; // their paint events are ours, not changes
     bool m_framesHeld = false;       // a frame ran long: none until the user acts
+    qint64 m_framesRefused = 0;
 };
 
 } // namespace phonglab

@@ -136,8 +136,10 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
 
 void Viewport::drawFrame()
 {
-    if (m_framesHeld)
+    if (m_framesHeld) {
+        ++m_framesRefused;
         return; // resumeFrames() asks for the frame
+    }
 
     if (m_lender.isActive()) {
         m_frameMissed = true;

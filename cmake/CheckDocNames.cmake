@@ -1,0 +1,78 @@
+# Checks that every PhongLab name docs/architecture.md cites exists: each
+# `folder/File` path (app/<layer>/..., shaders/, scripts/, tests/, cmake/,
+# packaging/) is a file or folder, and each identifier written in
+# backticks (CamelCase, camelCase, Class::member, PHONGLAB_* variables) is
+# an identifier of the sources. A page a newcomer follows must not send
+# them to something that was renamed or removed.
+#
+#   cmake -DROOT=. -P cmake/CheckDocNames.cmake   [-DDOC=docs/architecture.md]
+#
+# Registered with CTest as unit.architecturenames.
+cmake_minimum_required(VERSION 3.16)
+if(NOT ROOT)
+  set(ROOT "${CMAKE_CURRENT_LIST_DIR}/..")
+endif()
+get_filename_component(ROOT "${ROOT}" ABSOLUTE)
+if(NOT DOC)
+  set(DOC "${ROOT}/docs/architecture.md")
+endif()
+
+# Every identifier of the sources, once.
+file(GLOB_RECURSE sources
+  "${ROOT}/app/*.h" "${ROOT}/app/*.cpp" "${ROOT}/tests/*.h" "${ROOT}/tests/*.cpp"
+  "${ROOT}/tests/*.txt" "${ROOT}/cmake/*.cmake" "${ROOT}/scripts/*.sh"
+  "${ROOT}/shaders/*.vert" "${ROOT}/shaders/*.frag" "${ROOT}/CMakeLists.txt")
+set(identifiers "")
+foreach(source IN LISTS sources)
+  file(READ "${source}" text)
+  string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" words "${text}")
+  list(APPEND identifiers ${words})
+  list(REMOVE_DUPLICATES identifiers)
+  get_filename_component(base "${source}" NAME_WE) # "SceneJsonWrite.cpp" names a file
+  list(APPEND identifiers "${base}")
+endforeach()
+
+file(READ "${DOC}" doc)
+string(REGEX MATCHALL "`[^`\n]+`" spans "${doc}")
+set(missing "")
+set(checked 0)
+foreach(span IN LISTS spans)
+  string(REGEX REPLACE "^`|`$" "" span "${span}")
+  # Paths.
+  string(REGEX MATCHALL
+    "(app/)?(core|mesh|render|bench|charts|ui|cli|benchcli|headless|shaders|scripts|tests|cmake|packaging)/[A-Za-z0-9_./-]*[A-Za-z0-9_]"
+    paths "${span}")
+  foreach(path IN LISTS paths)
+    if(path MATCHES "^(core|mesh|render|bench|charts|ui|cli|benchcli|headless)/")
+      set(path "app/${path}")
+    endif()
+    math(EXPR checked "${checked} + 1")
+    file(GLOB stems "${ROOT}/${path}.*") # shaders/marker.* names both stages
+    if(NOT EXISTS "${ROOT}/${path}" AND NOT stems)
+      list(APPEND missing "${path} (no such file)")
+    endif()
+  endforeach()
+  string(REGEX REPLACE "(app/)?[a-z]+/[A-Za-z0-9_./-]*" "" span "${span}")
+  string(REGEX REPLACE "Q[A-Za-z0-9]+::[A-Za-z_]+" "" span "${span}") # Qt's members
+  # Identifiers: CamelCase or camelCase words and PHONGLAB_ variables.
+  string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" words "${span}")
+  foreach(word IN LISTS words)
+    if(word MATCHES "^Q[A-Z]" OR word MATCHES "^gl[A-Z]" OR word MATCHES "^GL_")
+      continue() # Qt's and OpenGL's own
+    endif()
+    if(word MATCHES "^[A-Z][a-z0-9]+[A-Z]" OR word MATCHES "^[a-z]+[A-Z]"
+       OR word MATCHES "^PHONGLAB_")
+      math(EXPR checked "${checked} + 1")
+      list(FIND identifiers "${word}" found)
+      if(found EQUAL -1)
+        list(APPEND missing "${word}")
+      endif()
+    endif()
+  endforeach()
+endforeach()
+list(REMOVE_DUPLICATES missing)
+if(missing)
+  string(REPLACE ";" "\n  " shown "${missing}")
+  message(FATAL_ERROR "${DOC} cites names the sources do not have:\n  ${shown}")
+endif()
+message(STATUS "${DOC}: all ${checked} names it cites exist")
