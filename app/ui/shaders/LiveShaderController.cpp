@@ -49,11 +49,11 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_viewport(viewport)
     , m_buildThread(new BuildThread(this))
     , m_recovery(new ShaderRecovery(dock, this))
-    , m_debounce(new QTimer(this))
+    , m_queue(new BuildQueue(
+          QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt(),
+          this))
     , m_slowBuildNote(new QTimer(this))
     , m_hangNote(new QTimer(this))
-    , m_debounceMs(
-          QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt())
 {
     setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
@@ -70,9 +70,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
 
 void LiveShaderController::setUpTimers()
 {
-    m_debounce->setSingleShot(true);
-    m_debounce->setInterval(std::max(0, m_debounceMs));
-    connect(m_debounce, &QTimer::timeout, this, [this] { requestBuild(BuildRequest::NewText); });
+    connect(m_queue, &BuildQueue::pauseOver, this, [this] { requestBuild(BuildRequest::NewText); });
     // Said only when a build is slow: relaying out the dock for a status that
     // lasts 3 ms would cost the GUI thread more than the build itself.
     m_slowBuildNote->setSingleShot(true);
@@ -152,7 +150,8 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
         return;
     if (!m_dock->hasUnsavedChanges()) {
         showPreset(method); // what the viewport has just loaded
-        m_appliedHash = m_lastBuiltHash = currentHash();
+        m_appliedHash = currentHash();
+        m_queue->setLastBuilt(m_appliedHash);
         m_appliedSources.reset();
         return;
     }
@@ -170,14 +169,14 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
 
 void LiveShaderController::buildNow()
 {
-    m_debounce->stop();
+    m_queue->stopPause();
     m_autoBuild = AutoBuild::AfterPause;
     requestBuild(BuildRequest::Always);
 }
 
 bool LiveShaderController::isWaitingToBuild() const
 {
-    return m_debounce->isActive();
+    return m_queue->isPausing();
 }
 
 void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent)
@@ -191,7 +190,7 @@ void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget 
             m_dock->setPreset(*method);
         }
         m_autoBuild = outcome.suspect ? AutoBuild::OnlyOnF5 : AutoBuild::AfterPause;
-        m_debounce->stop(); // restoring typed the text in again; build it once, below
+        m_queue->stopPause(); // restoring typed the text in again; build it once, below
         if (!outcome.suspect)
             requestBuild(BuildRequest::NewText);
     }
@@ -203,17 +202,18 @@ void LiveShaderController::onTextEdited()
 {
     m_recovery->noteEdited();
     if (m_autoBuild == AutoBuild::AfterPause)
-        m_debounce->start();
+        m_queue->edited();
 }
 
 void LiveShaderController::onGlInitialized()
 {
     setState(State::Idle);
     // The viewport has just built its scene's shipped program itself.
-    m_appliedHash = m_lastBuiltHash = shippedHash(m_viewport->currentScene().shading);
+    m_appliedHash = shippedHash(m_viewport->currentScene().shading);
+    m_queue->setLastBuilt(m_appliedHash);
     m_appliedSources.reset();
     startWorker();
-    const bool wanted = std::exchange(m_queued, std::nullopt).has_value();
+    const bool wanted = m_queue->takeWaiting().has_value();
     if (m_autoBuild == AutoBuild::OnlyOnF5)
         return;
     if (wanted || currentHash() != m_appliedHash)
@@ -226,7 +226,8 @@ void LiveShaderController::onGlInitialized()
 // built again if it differs.
 void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
 {
-    m_appliedHash = m_lastBuiltHash = shippedHash(method);
+    m_appliedHash = shippedHash(method);
+    m_queue->setLastBuilt(m_appliedHash);
     m_appliedSources.reset();
     if (method == m_shading && m_autoBuild == AutoBuild::AfterPause
         && currentHash() != m_appliedHash)
@@ -240,7 +241,7 @@ void LiveShaderController::onGlAboutToBeReleased()
     m_buildThread->stop();
     takeBackContextNow();
     setState(State::WaitingForGl);
-    m_queued.reset();
+    m_queue->forgetWaiting();
     m_slowBuildNote->stop();
     m_hangNote->stop();
 }
@@ -281,28 +282,18 @@ void LiveShaderController::startWorker()
 
 void LiveShaderController::requestBuild(BuildRequest request)
 {
-    // Asked for while no build can start: remembered, Always outranking NewText.
-    const auto queue = [&] {
-        m_queued = m_queued == BuildRequest::Always ? BuildRequest::Always : request;
-    };
-    if (m_state == State::WaitingForGl) {
-        queue();
-        return;
-    }
+    const BuildQueue::Builder builder = m_state == State::WaitingForGl ? BuildQueue::Builder::NoGl
+        : m_state == State::Idle                                      ? BuildQueue::Builder::Ready
+                                                                      : BuildQueue::Builder::Busy;
     const QByteArray hash = currentHash();
-    if (request == BuildRequest::NewText && hash == m_lastBuiltHash)
-        return;
-    if (m_state != State::Idle) {
-        queue();
-        return;
-    }
-    dispatch(hash);
+    if (m_queue->decide(request, hash, builder) == BuildQueue::Decision::Build)
+        dispatch(hash);
 }
 
 void LiveShaderController::startQueuedBuild()
 {
-    if (const std::optional<BuildRequest> queued = std::exchange(m_queued, std::nullopt))
-        requestBuild(*queued);
+    if (const std::optional<BuildRequest> waiting = m_queue->takeWaiting())
+        requestBuild(*waiting);
 }
 
 void LiveShaderController::dispatch(const QByteArray &hash)
@@ -315,7 +306,7 @@ void LiveShaderController::dispatch(const QByteArray &hash)
         m_buildThread->release(std::move(m_keptOut->program));
         m_keptOut.reset();
     }
-    m_lastBuiltHash = hash;
+    m_queue->setLastBuilt(hash);
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex),
                               m_dock->text(ShaderStage::Vertex)};
     const ShaderSource fragment{m_dock->filePath(ShaderStage::Fragment),

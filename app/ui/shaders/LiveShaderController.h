@@ -1,4 +1,5 @@
 #pragma once
+#include "BuildQueue.h"
 #include "ShaderRecovery.h"
 #include "core/ShadingMethod.h"
 #include "render/BuildWorker.h"
@@ -77,7 +78,7 @@ public:
     void setBuildOnGuiThread(bool onGuiThread) { m_buildOnGuiThread = onGuiThread; }
     void setWarmUp(WarmUp warmUp);
     WarmUp warmUp() const { return m_warmUp; }
-    int debounceMs() const { return m_debounceMs; }
+    int debounceMs() const { return m_queue->debounceMs(); }
     bool buildsOnWorker() const;
     State state() const { return m_state; }
     bool isBuilding() const { return m_state == State::Building || m_state == State::Warming; }
@@ -120,11 +121,7 @@ private:
     void onShippedProgramLoaded(ShadingMethod method);
     void setState(State state);
     void startWorker();
-    // An edit builds only text not built yet; F5 and a restore build whatever is there.
-    enum class BuildRequest {
-        NewText,
-        Always
-    };
+    using BuildRequest = BuildQueue::Request;
     void requestBuild(BuildRequest request);
     void startQueuedBuild();
     void dispatch(const QByteArray &hash);
@@ -149,17 +146,15 @@ private:
     Viewport *m_viewport = nullptr;
     BuildThread *m_buildThread = nullptr;
     ShaderRecovery *m_recovery = nullptr;
-    QTimer *m_debounce = nullptr;
+    BuildQueue *m_queue = nullptr; // the debounce, the text last built, the request waiting
     QTimer *m_slowBuildNote = nullptr;
     QTimer *m_hangNote = nullptr; // a build or first draw that does not come back
-    int m_debounceMs = 300;
     ShadingMethod m_shading = ShadingMethod::Phong;
 
     State m_state = State::WaitingForGl;
     AutoBuild m_autoBuild = AutoBuild::AfterPause;
     bool m_buildOnGuiThread = false; // set once, before GL starts
     WarmUp m_warmUp = WarmUp::ViewportContext;
-    QByteArray m_lastBuiltHash; // last text sent to the compiler
     QByteArray m_appliedHash;   // text of the program the viewport draws with
     BuildTimings m_lastApplied;
     quint64 m_warmSerial = 0;  // counts warm-ups, so a late callback is told from the current one
@@ -168,7 +163,6 @@ private:
     StageSources m_buildSources; // ... and the sources it was built from
     std::optional<StageSources> m_appliedSources;
     std::optional<KeptOut> m_keptOut; // freed by the next build, or applied anyway
-    std::optional<BuildRequest> m_queued; // asked for while not Idle
     QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
 };
 
