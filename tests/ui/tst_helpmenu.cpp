@@ -12,6 +12,7 @@
 #include "ui/help/HelpMenu.h"
 #include "ui/window/MainWindow.h"
 #include "ui/help/ShortcutsDialog.h"
+#include "ui/window/StartupOptions.h"
 #include "ui/viewport/Viewport.h"
 
 #include <OpenMesh/Core/System/config.h>
@@ -278,7 +279,8 @@ void TestHelpMenu::documentationOpensReadmeAndFollowsALink()
 {
     helpMenu()->documentationAction()->trigger();
     DocumentationBrowser *docs = helpMenu()->documentationBrowser();
-    QVERIFY2(docs, qPrintable(HelpMenu::missingDocumentationMessage(documentationSearchFolders())));
+    QVERIFY2(docs, qPrintable(HelpMenu::missingDocumentationMessage(
+                       documentationSearchFolders(StartupOptions::fromEnvironment().documentationFolder))));
     QVERIFY(QTest::qWaitForWindowExposed(docs));
     const QString readme = QDir::cleanPath(sourcePath(QStringLiteral("README.md")));
     QCOMPARE(docs->currentSource().toLocalFile(), readme);
@@ -328,17 +330,18 @@ void TestHelpMenu::documentationFolderComesFromTheEnvironment()
 {
     QTemporaryDir empty;
     qputenv("PHONGLAB_DOC_DIR", empty.path().toUtf8());
-    const QStringList searched = documentationSearchFolders();
+    const QString first = StartupOptions::fromEnvironment().documentationFolder;
+    const QStringList searched = documentationSearchFolders(first);
     QCOMPARE(searched.front(), QDir::cleanPath(empty.path()));
     // An empty folder is passed over: the source tree's docs are next.
-    QCOMPARE(documentationFolder(), QDir::cleanPath(sourcePath({})));
+    QCOMPARE(documentationFolder(first), QDir::cleanPath(sourcePath({})));
     const QString message = HelpMenu::missingDocumentationMessage(searched);
     for (const QString &folder : searched)
         QVERIFY2(message.contains(QDir::toNativeSeparators(folder)), qPrintable(message));
 
     writeFile(empty.filePath(QStringLiteral("docs/only.md")), "# Only\n");
-    QCOMPARE(documentationFolder(), QDir::cleanPath(empty.path()));
-    QCOMPARE(documentationFiles(documentationFolder()),
+    QCOMPARE(documentationFolder(first), QDir::cleanPath(empty.path()));
+    QCOMPARE(documentationFiles(documentationFolder(first)),
              QStringList{QDir::cleanPath(empty.filePath(QStringLiteral("docs/only.md")))});
     qunsetenv("PHONGLAB_DOC_DIR");
 }

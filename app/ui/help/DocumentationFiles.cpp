@@ -20,11 +20,11 @@ bool holdsDocumentation(const QString &folder)
 
 } // namespace
 
-QStringList documentationSearchFolders()
+QStringList documentationSearchFolders(const QString &first)
 {
     QStringList folders;
-    if (const QString fromEnv = qEnvironmentVariable("PHONGLAB_DOC_DIR"); !fromEnv.isEmpty())
-        folders << fromEnv;
+    if (!first.isEmpty())
+        folders << first;
     if (QCoreApplication::instance())
         folders << QCoreApplication::applicationDirPath()
                 + QStringLiteral("/../share/doc/phonglab");
@@ -42,9 +42,9 @@ QStringList documentationSearchFolders()
     return folders;
 }
 
-QString documentationFolder()
+QString documentationFolder(const QString &first)
 {
-    for (const QString &folder : documentationSearchFolders())
+    for (const QString &folder : documentationSearchFolders(first))
         if (holdsDocumentation(folder))
             return folder;
     return {};

@@ -73,10 +73,11 @@ QString HelpMenu::missingDocumentationMessage(const QStringList &searched)
 
 void HelpMenu::showDocumentation()
 {
-    const QString folder = documentationFolder();
+    const QString first = m_window->startupOptions().documentationFolder;
+    const QString folder = documentationFolder(first);
     if (folder.isEmpty()) {
         openWarning(m_window, tr("Documentation not found"),
-                    missingDocumentationMessage(documentationSearchFolders()));
+                    missingDocumentationMessage(documentationSearchFolders(first)));
         return;
     }
     showOrRaise(m_browser, [&] { return new DocumentationBrowser(folder, m_window); });

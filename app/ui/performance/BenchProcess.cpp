@@ -50,10 +50,9 @@ std::vector<double> BenchProcess::detailLevels()
     return {1.0, 1.0 / 2, 1.0 / 4, 1.0 / 8, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 }
 
-QString BenchProcess::executable()
+QString BenchProcess::executable() const
 {
-    const QString fromEnv = qEnvironmentVariable("PHONGLAB_EXE");
-    return fromEnv.isEmpty() ? QCoreApplication::applicationFilePath() : fromEnv;
+    return m_program.isEmpty() ? QCoreApplication::applicationFilePath() : m_program;
 }
 
 bool BenchProcess::isRunning() const

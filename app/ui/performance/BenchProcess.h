@@ -35,8 +35,10 @@ public:
     bool isRunning() const;
     void cancel();
 
-    // The `phonglab` executable: $PHONGLAB_EXE, else this program itself.
-    static QString executable();
+    // The `phonglab` program that measures: `program` (StartupOptions::
+    // benchExecutable), else this program itself.
+    void setProgram(const QString &program) { m_program = program; }
+    QString executable() const;
 
 signals:
     void progress(int done, int total, const QString &stage);
@@ -44,6 +46,7 @@ signals:
     void finished(const std::vector<phonglab::BenchRow> &rows, const QString &error);
 
 private:
+    QString m_program;
     void readProgress();
     void processFinished(int exitCode, QProcess::ExitStatus status);
 

@@ -31,7 +31,9 @@ class PerformanceDock : public QDockWidget
     Q_OBJECT
 
 public:
-    explicit PerformanceDock(Viewport *viewport, QWidget *parent = nullptr);
+    // `program`: the phonglab that measures (StartupOptions::benchExecutable;
+    // empty: this program).
+    PerformanceDock(Viewport *viewport, const QString &program, QWidget *parent = nullptr);
     ~PerformanceDock() override;
 
     ErrorBudget budget() const;

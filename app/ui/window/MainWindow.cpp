@@ -222,7 +222,7 @@ void MainWindow::createUniformsDock()
 // Hidden until asked for (DefaultLayout): measuring is occasional.
 void MainWindow::createPerformanceDock()
 {
-    m_performanceDock = new PerformanceDock(m_viewport, this);
+    m_performanceDock = new PerformanceDock(m_viewport, m_options.benchExecutable, this);
     addDockWidget(Qt::LeftDockWidgetArea, m_performanceDock);
     connect(m_performanceDock, &PerformanceDock::applyModelRequested, this,
             &MainWindow::applyModel);

@@ -43,6 +43,7 @@ class MainWindow : public QMainWindow
     Q_OBJECT
 
 public:
+    const StartupOptions &startupOptions() const { return m_options; }
     // Options default to what the environment says (StartupOptions.h).
     explicit MainWindow(QWidget *parent = nullptr,
                         const StartupOptions &options = StartupOptions::fromEnvironment());

@@ -29,6 +29,8 @@ StartupOptions StartupOptions::fromEnvironment()
         o.warmUp = W::WorkerContext;
     o.compileOnGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
     o.presentOnGuiThread = qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD");
+    o.benchExecutable = qEnvironmentVariable("PHONGLAB_EXE");
+    o.documentationFolder = qEnvironmentVariable("PHONGLAB_DOC_DIR");
     o.typeAfterStart = qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START");
     return o;
 }
