@@ -16,7 +16,8 @@
 #   libraries they link (a header precompiled with QT_WIDGETS_LIB defined
 #   is refused where it is not, and QTEST_MAIN differs with it). OpenMesh's
 #   headers are left out: no more than two files of mesh include any one of
-#   them.
+#   them. ccache caches such files only with its PCH sloppiness, which
+#   scripts/build.sh sets in the compiler launcher.
 
 set(PHONGLAB_DEBUG_INFO "lines" CACHE STRING
     "Debug info in plain builds: lines (-g1 in libraries, none in tests), full (-g everywhere)")

@@ -13,7 +13,10 @@ bash scripts/setup.sh
 
 launcher=()
 if command -v ccache >/dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # The sloppiness ccache needs to cache files compiled with a precompiled
+  # header (cmake/BuildSpeed.cmake); without it every such call is
+  # "uncacheable".
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime;ccache")
 fi
 
 if [ "${1:-}" = "--sanitize" ]; then
