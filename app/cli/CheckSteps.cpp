@@ -188,8 +188,7 @@ QJsonObject drawingJson(const CheckDrawing &drawing)
             {QStringLiteral("variables"), variables},
             {QStringLiteral("notes"), QJsonArray::fromStringList(o.notes)},
             {QStringLiteral("light_capacity"),
-             drawing.lightCapacity ? QJsonValue(*drawing.lightCapacity) : QJsonValue()},
-            {QStringLiteral("drawn"), drawing.drawn()}};
+             drawing.lightCapacity ? QJsonValue(*drawing.lightCapacity) : QJsonValue()}};
 }
 
 CheckDrawing drawingFromJson(const QJsonObject &json)

@@ -174,7 +174,6 @@ void GradeRun::run()
             rows.push_back(std::move(row));
         }
     QEventLoop loop;
-    connect(this, &QObject::destroyed, &loop, &QEventLoop::quit); // never, but keeps moc honest
     while (m_running < m_jobs && !m_waiting.empty())
         startNext();
     while (m_running > 0)
