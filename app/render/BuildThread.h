@@ -30,7 +30,7 @@ public:
 
     // Creates the worker context sharing objects with `shareContext` (which
     // must exist) and starts the thread. A failure when no shared context
-    // can be had; callers then build on the GUI thread.
+    // can be had.
     Result<> start(QOpenGLContext *shareContext);
     // Finishes the build in progress, frees the worker's GL objects and joins
     // the thread. Replies not delivered yet are dropped (their programs are
@@ -59,7 +59,9 @@ public:
 
     // Whether each build also draws once in the worker's own context before
     // handing the program over (helps drivers whose shader variants are
-    // shared by the share group; not llvmpipe).
+    // shared by the share group; not llvmpipe). Off by default: the app
+    // warms in the viewport's lent context instead; bench_edit_latency
+    // compares the two.
     void setWarmUp(bool warm) { m_warmUp = warm; }
     bool hasParallelShaderCompile() const { return m_parallelShaderCompile; }
 
@@ -90,7 +92,7 @@ private:
     BuildWorker *m_worker = nullptr; // lives on m_thread, deleted with it
     quint64 m_lastSerial = 0;
     quint64 m_generation = 0; // one per start(): a program belongs to its share group
-    bool m_warmUp = true;
+    bool m_warmUp = false;
     bool m_parallelShaderCompile = false;
 };
 

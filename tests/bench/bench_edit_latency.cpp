@@ -3,11 +3,16 @@
 //   xvfb-run -a build/tests/bench/bench_edit_latency [--edits N] [--samples S]
 //
 // Each edit changes a constant in the Phong fragment shader (so every text is
-// new), starts the build as the debounce would (LiveShaderController::
-// buildNow) and stops the clock when the viewport has finished (glFinish) its
-// first frame with the new program. Compared with a raw-GL path in the same
-// process: glCreateShader/glCompileShader/glLinkProgram and one draw of the
-// same mesh with the same uniforms, no Qt wrappers. While each edit runs, a
+// new), starts the build and stops the clock when the viewport has finished
+// (glFinish) its first frame with the new program. The app's path starts it
+// as the debounce would (LiveShaderController::buildNow). The other PhongLab
+// paths are the ways the app could build that it does not, kept here for the
+// comparison: the worker warming the program in its own context, the worker
+// without a warm-up, and compiling on the GUI thread; each adopts its program
+// into the same window's viewport (no live check runs after those).
+// Compared with a raw-GL path in the same process: glCreateShader/
+// glCompileShader/glLinkProgram and one draw of the same mesh with the same
+// uniforms, no Qt wrappers. While each edit runs, a
 // 1 ms timer on the GUI thread records the longest gap between its ticks:
 // how long typing would have frozen. Mesa's shader cache is disabled so that
 // every build pays the full price, as a new text does.
@@ -17,15 +22,18 @@
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
+#include "render/BuildThread.h"
 #include "render/GlFormat.h"
-#include "ui/window/GuiMain.h"
+#include "render/ProgramBuilder.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
+#include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/GuiMain.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -48,15 +56,21 @@ using namespace phonglab::bench;
 
 namespace {
 
-// ---- PhongLab's path: the real window, dock, controller and viewport ------
+// ---- PhongLab's paths: the real window, dock, controller and viewport -----
+
+// How an edit's program is built and reaches the viewport.
+enum class Builder {
+    App,               // LiveShaderController: worker, first draw in the lent viewport context
+    WorkerWarmsItself, // a BuildThread drawing once in its own context
+    WorkerOnly,        // a BuildThread, no warm-up
+    GuiThread,         // ProgramBuilder in the viewport's context
+};
 
 class PhongLabPath
 {
 public:
-    PhongLabPath(const Scene &scene, const QSize &size, int samples, bool guiThread,
-                 LiveShaderController::WarmUp warmUp);
+    PhongLabPath(const Scene &scene, const QSize &size, int samples, Builder builder);
     bool isReady() const { return m_ready; }
-    bool buildsOnWorker() const { return m_window->liveShaders()->buildsOnWorker(); }
     QSize viewportPixels() const
     {
         return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
@@ -64,23 +78,23 @@ public:
     EditSample edit(const QByteArray &fragment);
 
 private:
+    using Applied = std::function<void(const BuildTimings &)>;
+    // Starts building `fragment`; `applied` runs once the viewport has the program.
+    void startBuild(const QByteArray &fragment, Applied applied);
     double steadyFrameMs();
 
+    Builder m_builder;
     std::unique_ptr<MainWindow> m_window;
+    std::unique_ptr<BuildThread> m_buildThread; // the worker paths'
+    Applied m_applied;                          // ... and whom its reply goes to
     bool m_ready = false;
 };
 
-PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, bool guiThread,
-                           LiveShaderController::WarmUp warmUp)
+PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, Builder builder)
+    : m_builder(builder)
 {
-    if (guiThread)
-        qputenv("PHONGLAB_COMPILE_ON_GUI_THREAD", "1");
-    else
-        qunsetenv("PHONGLAB_COMPILE_ON_GUI_THREAD");
     m_window = std::make_unique<MainWindow>();
     useMultisamplingInViewOnly(*m_window, samples); // as the app (GuiMain)
-    m_window->liveShaders()->setWarmUp(warmUp);
-    QString error;
     if (const Result<> done = m_window->viewport()->setScene(scene); !done) {
         std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(done.error()));
         return;
@@ -93,13 +107,65 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, b
     while (m_window->viewport()->framesRendered() == 0 && wait.elapsed() < 10000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
     m_ready = m_window->viewport()->framesRendered() > 0;
+    if (!m_ready || builder == Builder::App || builder == Builder::GuiThread)
+        return;
+    m_buildThread = std::make_unique<BuildThread>();
+    m_buildThread->setWarmUp(builder == Builder::WorkerWarmsItself);
+    m_buildThread->setReceiver([this](BuildReply reply) {
+        m_window->viewport()->adoptProgram(std::move(reply.program));
+        m_applied(reply.timings);
+    });
+    m_ready = bool(m_buildThread->start(m_window->viewport()->context()));
+}
+
+void PhongLabPath::startBuild(const QByteArray &fragment, Applied applied)
+{
+    Viewport *viewport = m_window->viewport();
+    ShaderDock *dock = m_window->shaderDock();
+    const ShaderSource vertexSource{dock->filePath(ShaderStage::Vertex),
+                                    dock->text(ShaderStage::Vertex)};
+    const ShaderSource fragmentSource{dock->filePath(ShaderStage::Fragment), fragment};
+    switch (m_builder) {
+    case Builder::App: {
+        LiveShaderController *live = m_window->liveShaders();
+        auto once = std::make_shared<QMetaObject::Connection>();
+        *once = QObject::connect(live, &LiveShaderController::programApplied,
+                                 [once, applied](const QByteArray &, const BuildTimings &t) {
+                                     QObject::disconnect(*once);
+                                     applied(t);
+                                 });
+        live->buildNow(); // where the debounce would fire
+        return;
+    }
+    case Builder::WorkerWarmsItself:
+    case Builder::WorkerOnly:
+        m_applied = std::move(applied);
+        m_buildThread->build(vertexSource, fragmentSource,
+                             std::max(0, viewport->framebufferSamples()),
+                             viewport->currentScene().bindings);
+        return;
+    case Builder::GuiThread: {
+        BuiltProgram built;
+        {
+            const CurrentContext current(*viewport);
+            built = ProgramBuilder().build(vertexSource, fragmentSource, {},
+                                           viewport->currentScene().bindings);
+        }
+        viewport->adoptProgram(std::move(built.program));
+        BuildTimings timings;
+        timings.compileNs = built.compileNs;
+        timings.linkNs = built.linkNs;
+        applied(timings);
+        return;
+    }
+    }
 }
 
 EditSample PhongLabPath::edit(const QByteArray &fragment)
 {
-    LiveShaderController *live = m_window->liveShaders();
     Viewport *viewport = m_window->viewport();
-    m_window->shaderDock()->editor(ShaderStage::Fragment)->setText(QString::fromUtf8(fragment));
+    if (m_builder == Builder::App)
+        m_window->shaderDock()->editor(ShaderStage::Fragment)->setText(QString::fromUtf8(fragment));
     // The editor repaints the replaced text long before a real debounce
     // fires; let it, so that the clock measures the build alone.
     QElapsedTimer settle;
@@ -119,11 +185,6 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
         maxGap = std::max(maxGap, now - lastTick);
         lastTick = now;
     });
-    auto applied = QObject::connect(live, &LiveShaderController::programApplied,
-                                    [&](const QByteArray &, const BuildTimings &reply) {
-                                        appliedAt = clock.nsecsElapsed();
-                                        timings = reply;
-                                    });
     // The pixel: when the frame was handed to the window system (the
     // presenting thread's swapBuffers returned), as the raw path's.
     std::chrono::steady_clock::time_point start;
@@ -139,10 +200,13 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     start = std::chrono::steady_clock::now();
     clock.start();
     ticker.start();
-    live->buildNow(); // where the debounce would fire
+    startBuild(fragment, [&](const BuildTimings &reply) {
+        appliedAt = clock.nsecsElapsed();
+        timings = reply;
+    });
     if (frameAt < 0)
         loop.exec();
-    QObject::disconnect(applied);
+    m_applied = nullptr;
     QObject::disconnect(framed);
     EditSample s;
     if (frameAt < 0) {
@@ -282,24 +346,21 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "cannot set up the raw GL path\n");
         return 1;
     }
-    using W = LiveShaderController::WarmUp;
     struct Mode {
         QString name;
-        bool guiThread;
-        W warmUp;
+        Builder builder;
     };
     const Mode modes[] = {
-        {QStringLiteral("PhongLab: worker, warm-up in lent viewport context (default)"), false,
-         W::ViewportContext},
-        {QStringLiteral("PhongLab: worker, warm-up in worker context"), false, W::WorkerContext},
-        {QStringLiteral("PhongLab: worker, no warm-up"), false, W::Off},
-        {QStringLiteral("PhongLab: GUI thread (fallback)"), true, W::Off}};
+        {QStringLiteral("PhongLab: worker, warm-up in lent viewport context (the app)"),
+         Builder::App},
+        {QStringLiteral("PhongLab: worker, warm-up in worker context"), Builder::WorkerWarmsItself},
+        {QStringLiteral("PhongLab: worker, no warm-up"), Builder::WorkerOnly},
+        {QStringLiteral("PhongLab: GUI thread"), Builder::GuiThread}};
     std::vector<std::unique_ptr<PhongLabPath>> paths;
     std::vector<Row> rows{{QStringLiteral("raw GL (no Qt)"), {}}};
     for (const Mode &mode : modes) {
-        paths.push_back(
-            std::make_unique<PhongLabPath>(scene, size, samples, mode.guiThread, mode.warmUp));
-        if (!paths.back()->isReady() || paths.back()->buildsOnWorker() == mode.guiThread) {
+        paths.push_back(std::make_unique<PhongLabPath>(scene, size, samples, mode.builder));
+        if (!paths.back()->isReady()) {
             std::fprintf(stderr, "%s: could not start\n", qPrintable(mode.name));
             return 1;
         }

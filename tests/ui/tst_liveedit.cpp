@@ -9,16 +9,16 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/RecoveryJournal.h"
-#include "ui/viewport/CurrentContext.h"
 #include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/shaders/ProgramTrial.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/shaders/ShaderRecovery.h"
 #include "ui/uniforms/UniformsDock.h"
+#include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -112,7 +112,6 @@ private slots:
     void unchangedTextIsNotRebuilt();
     void oneProgramAtATimeFromBuildToFirstDraw();
     void editingNeverWritesShippedShaders();
-    void buildsOnGuiThreadWhenAsked();
     void presetLoadsBuildsAndSetsSceneShading();
     void killedSessionIsRestored();
     void suspectShaderWaitsForF5();
@@ -137,7 +136,6 @@ void TestLiveEdit::initTestCase()
 void TestLiveEdit::init()
 {
     m_env.useFreshRecoveryDir(nullptr);
-    qunsetenv("PHONGLAB_COMPILE_ON_GUI_THREAD");
 }
 
 void TestLiveEdit::cleanup()
@@ -198,7 +196,6 @@ void TestLiveEdit::typingChangesTheFrame()
     QVERIFY(frame() != before);
     qInfo("edit to new program: %lld ms (debounce %d ms, warm-up draw %.0f ms off the GUI thread)",
           applyMs, live()->debounceMs(), double(live()->lastApplied().warmNs) / 1e6);
-    QCOMPARE(live()->warmUp(), LiveShaderController::WarmUp::ViewportContext);
     QVERIFY2(live()->lastApplied().warmNs > 0, "the first draw was not made off the GUI thread");
     QVERIFY(waitForApplied());
 
@@ -316,9 +313,7 @@ void TestLiveEdit::oneProgramAtATimeFromBuildToFirstDraw()
     for (qsizetype i = 1; i < seen.size(); ++i)
         if (seen[i] == State::Building)
             QCOMPARE(seen[i - 1], State::Idle); // never straight from another build or a first draw
-    QVERIFY2(seen.contains(State::Warming)
-                 == (live()->warmUp() == LiveShaderController::WarmUp::ViewportContext),
-             "the first draw happens in the lent viewport context exactly when that warm-up is on");
+    QVERIFY2(seen.contains(State::Warming), "the first draw happens in the lent viewport context");
     QCOMPARE(live()->appliedHash(), live()->currentHash());
 }
 
@@ -334,19 +329,6 @@ void TestLiveEdit::editingNeverWritesShippedShaders()
     QTRY_VERIFY_WITH_TIMEOUT(!live()->recovery()->journal().hasJournal(), 5000);
     QCOMPARE(hashShippedShaders(), m_shippedHashes);
     QCOMPARE(readShipped(QStringLiteral("phong.frag")).contains("vec4(I * 0.5"), false);
-}
-
-void TestLiveEdit::buildsOnGuiThreadWhenAsked()
-{
-    qputenv("PHONGLAB_COMPILE_ON_GUI_THREAD", "1");
-    openWindow();
-    QVERIFY(!live()->buildsOnWorker());
-    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("GUI thread")),
-             qPrintable(m_window->statusBar()->currentMessage()));
-    const QImage before = frame();
-    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
-    QVERIFY(waitForApplied());
-    QTRY_VERIFY(frame() != before);
 }
 
 void TestLiveEdit::presetLoadsBuildsAndSetsSceneShading()

@@ -5,10 +5,10 @@
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
-#include "ui/viewport/Viewport.h"
 #include "core/RecoveryJournal.h"
 #include "core/ResourcePaths.h"
 #include "render/BuildThread.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QSettings>
 #include <QTimer>
@@ -50,12 +50,10 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_buildThread(new BuildThread(this))
     , m_recovery(new ShaderRecovery(dock, this))
     , m_queue(new BuildQueue(
-          QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt(),
-          this))
+          QSettings().value(QStringLiteral("editor/debounceMs"), kDefaultDebounceMs).toInt(), this))
     , m_slowBuildNote(new QTimer(this))
     , m_hangNote(new QTimer(this))
 {
-    setWarmUp(WarmUp::ViewportContext);
     setUpTimers();
     m_buildThread->setReceiver([this](BuildReply reply) { onBuilt(std::move(reply)); });
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
@@ -115,12 +113,6 @@ QByteArray LiveShaderController::currentHash() const
 bool LiveShaderController::buildsOnWorker() const
 {
     return m_buildThread->isRunning();
-}
-
-void LiveShaderController::setWarmUp(WarmUp warmUp)
-{
-    m_warmUp = warmUp;
-    m_buildThread->setWarmUp(warmUp == WarmUp::WorkerContext);
 }
 
 void LiveShaderController::showPreset(ShadingMethod method)
@@ -207,12 +199,13 @@ void LiveShaderController::onTextEdited()
 
 void LiveShaderController::onGlInitialized()
 {
-    setState(State::Idle);
     // The viewport has just built its scene's shipped program itself.
     m_appliedHash = shippedHash(m_viewport->currentScene().shading);
     m_queue->setLastBuilt(m_appliedHash);
     m_appliedSources.reset();
-    startWorker();
+    if (!startWorker())
+        return; // WaitingForGl: edits wait, as before GL was up
+    setState(State::Idle);
     const bool wanted = m_queue->takeWaiting().has_value();
     if (m_autoBuild == AutoBuild::OnlyOnF5)
         return;
@@ -261,30 +254,32 @@ void LiveShaderController::setState(State state)
         emit stateChanged(state);
 }
 
-void LiveShaderController::startWorker()
+// Without a worker no edit is built: the dock says why, and the viewport
+// keeps drawing the scene's shipped program.
+bool LiveShaderController::startWorker()
 {
-    if (m_buildOnGuiThread) {
-        emit statusMessage(tr("Shaders compile on the GUI thread"), kStatusTimeoutMs);
-        return;
-    }
     if (const Result<> started = m_buildThread->start(m_viewport->context()); !started) {
-        qWarning("phonglab: compiling shaders on the GUI thread: %s", qPrintable(started.error()));
-        emit statusMessage(
-            tr("Shaders compile on the GUI thread (typing may pause while they build): %1")
-                .arg(started.error()),
-            0);
-        return;
+        qWarning("phonglab: shaders cannot be built off the GUI thread: %s",
+                 qPrintable(started.error()));
+        const QString text =
+            tr("Live editing is off: no OpenGL context could be shared with the build thread "
+               "(%1)")
+                .arg(started.error());
+        m_dock->setCompileStatus(text, false);
+        emit statusMessage(text, 0);
+        return false;
     }
     qInfo("phonglab: shaders build on a worker thread with a shared context; "
           "GL_KHR_parallel_shader_compile: %s",
           m_buildThread->hasParallelShaderCompile() ? "available" : "not available");
+    return true;
 }
 
 void LiveShaderController::requestBuild(BuildRequest request)
 {
     const BuildQueue::Builder builder = m_state == State::WaitingForGl ? BuildQueue::Builder::NoGl
-        : m_state == State::Idle                                      ? BuildQueue::Builder::Ready
-                                                                      : BuildQueue::Builder::Busy;
+        : m_state == State::Idle                                       ? BuildQueue::Builder::Ready
+                                                                       : BuildQueue::Builder::Busy;
     const QByteArray hash = currentHash();
     if (m_queue->decide(request, hash, builder) == BuildQueue::Decision::Build)
         dispatch(hash);
@@ -314,22 +309,10 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     m_buildClock.start();
     m_buildHash = hash;
     m_buildSources = {vertex, fragment};
-    if (m_buildThread->isRunning()) {
-        setState(State::Building);
-        m_buildSerial =
-            m_buildThread->build(vertex, fragment, std::max(0, m_viewport->framebufferSamples()),
-                                 m_viewport->currentScene().bindings);
-        m_slowBuildNote->start();
-        m_hangNote->start();
-        return;
-    }
-    BuiltProgram built = m_viewport->buildProgram(vertex, fragment);
-    BuildReply reply;
-    reply.program = std::move(built.program);
-    reply.report = std::move(built.report);
-    reply.timings.compileNs = built.compileNs;
-    reply.timings.linkNs = built.linkNs;
-    finish(hash, std::move(reply));
+    setState(State::Building);
+    m_buildSerial = m_buildThread->build(vertex, fragment, 0, m_viewport->currentScene().bindings);
+    m_slowBuildNote->start();
+    m_hangNote->start();
 }
 
 void LiveShaderController::onBuilt(BuildReply reply)
@@ -372,7 +355,7 @@ void LiveShaderController::finish(const QByteArray &hash, BuildReply reply)
 // Takes reply.program when it returns true.
 bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &reply)
 {
-    if (m_warmUp != WarmUp::ViewportContext || !m_buildThread->isRunning())
+    if (!m_warmInViewport)
         return false;
     std::optional<LentContext> lent = m_viewport->lendContext(m_buildThread->workerThread());
     if (!lent)
@@ -412,7 +395,7 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
             } else {
                 qWarning("phonglab: warming programs in the viewport's context is off: %s",
                          qPrintable(warmNs.error()));
-                setWarmUp(WarmUp::Off);
+                m_warmInViewport = false;
             }
             announce(hash, result, warmed);
             startQueuedBuild();

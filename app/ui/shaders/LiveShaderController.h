@@ -21,8 +21,11 @@ class Viewport;
 // Live shader editing: connects the Shaders dock to the viewport. After an
 // edit and a pause (QSettings "editor/debounceMs", 300 ms by default), and
 // only when the text of the two stages really changed since the last build,
-// it builds the program off the GUI thread (BuildThread) and
-// switches the viewport to it; F5 builds at once. A failed build leaves the
+// it builds the program off the GUI thread (BuildThread), draws it once in
+// the viewport's own context lent to that thread (the driver's draw-time
+// compile happens there, not on the GUI thread) and then shows it; F5
+// builds at once. That is the one build path: the others a benchmark
+// compares it with live in the benchmark (bench_edit_latency). A failed build leaves the
 // last good program running and puts each message on the user's line. The
 // buffers are journaled (ShaderRecovery) before every build, and a sentinel
 // marks a program that has not yet drawn a few frames.
@@ -48,14 +51,6 @@ public:
         OnlyOnF5
     };
 
-    // Where a new program draws once before the viewport shows it, so that
-    // the driver's draw-time compile does not stall the GUI thread.
-    enum class WarmUp {
-        Off,
-        WorkerContext,   // the worker's own context: enough where drivers share variants
-        ViewportContext, // the viewport's context, lent to the worker: works on llvmpipe too
-    };
-
     LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent = nullptr);
     ~LiveShaderController() override; // a clean exit: stops the worker, clears the journal
 
@@ -72,13 +67,9 @@ public:
     // Offers a dead session's journal (see ShaderRecovery). Call once at start.
     void offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent);
 
-    // Benchmarks and tests: build on the GUI thread instead of the worker
-    // (from the next GL start on), and choose the warm-up (the window sets
-    // both from its StartupOptions).
-    void setBuildOnGuiThread(bool onGuiThread) { m_buildOnGuiThread = onGuiThread; }
-    void setWarmUp(WarmUp warmUp);
-    WarmUp warmUp() const { return m_warmUp; }
     int debounceMs() const { return m_queue->debounceMs(); }
+    // The build thread runs (false before GL is up, or when no context
+    // could be shared with it: then edits are not built, and the dock says why).
     bool buildsOnWorker() const;
     State state() const { return m_state; }
     bool isBuilding() const { return m_state == State::Building || m_state == State::Warming; }
@@ -120,7 +111,7 @@ private:
     void onGlAboutToBeReleased();
     void onShippedProgramLoaded(ShadingMethod method);
     void setState(State state);
-    void startWorker();
+    bool startWorker();
     using BuildRequest = BuildQueue::Request;
     void requestBuild(BuildRequest request);
     void startQueuedBuild();
@@ -153,17 +144,18 @@ private:
 
     State m_state = State::WaitingForGl;
     AutoBuild m_autoBuild = AutoBuild::AfterPause;
-    bool m_buildOnGuiThread = false; // set once, before GL starts
-    WarmUp m_warmUp = WarmUp::ViewportContext;
-    QByteArray m_appliedHash;   // text of the program the viewport draws with
+    // A first draw in the lent viewport context failed once: later programs
+    // are shown without it (their first frame compiles on the GUI thread).
+    bool m_warmInViewport = true;
+    QByteArray m_appliedHash; // text of the program the viewport draws with
     BuildTimings m_lastApplied;
-    quint64 m_warmSerial = 0;  // counts warm-ups, so a late callback is told from the current one
-    quint64 m_buildSerial = 0; // while Building: the serial the worker's reply carries
-    QByteArray m_buildHash;    // while Building or Warming: the text on its way
+    quint64 m_warmSerial = 0;    // counts warm-ups, so a late callback is told from the current one
+    quint64 m_buildSerial = 0;   // while Building: the serial the worker's reply carries
+    QByteArray m_buildHash;      // while Building or Warming: the text on its way
     StageSources m_buildSources; // ... and the sources it was built from
     std::optional<StageSources> m_appliedSources;
     std::optional<KeptOut> m_keptOut; // freed by the next build, or applied anyway
-    QElapsedTimer m_buildClock;           // from dispatch to reply, for the status
+    QElapsedTimer m_buildClock;       // from dispatch to reply, for the status
 };
 
 } // namespace phonglab

@@ -1,31 +1,19 @@
 #pragma once
-#include "ContextLender.h"
-#include "core/FrameTimeWindow.h"
-#include "core/OrbitCamera.h"
-#include "core/Scene.h"
-#include "render/ImageLayer.h"
+#include "GpuScene.h"
+#include "ViewportSurface.h"
 #include "render/LentContext.h"
-#include "render/ProgramBuilder.h"
-#include "render/Renderer.h"
-#include "render/UniformSnapshot.h"
-#include "render/WarmUpDraw.h"
+#include "render/SharedGlObject.h"
 
 #include <QImage>
 #include <QOpenGLContext>
-#include <QPointF>
 #include <QWidget>
 #include <chrono>
-#include <memory>
 #include <optional>
 
 namespace phonglab {
 
-class FramePresenter;
-class ViewportWindow;
-
-// A frame that took longer than this is not drawn again by itself: the view
-// waits until the user acts on it (issue 31, C).
-inline constexpr double kHoldFramesAfterMs = 250.0;
+class ViewportInput;
+class WidgetOverlay;
 
 // The interactive 3D view: drives a Renderer and turns mouse and keyboard
 // input into OrbitCamera moves. Left drag orbits, right or middle drag pans,
@@ -38,7 +26,13 @@ inline constexpr double kHoldFramesAfterMs = 250.0;
 // composition of the whole main window on top (docs/performance.md). Child
 // widgets of the view (the check's pictures, the detail label) are drawn
 // over each frame in GL.
-class Viewport : public QWidget
+//
+// The view is three rooms behind this one face: ViewportSurface (the window,
+// the context, its loans, presenting and timing frames), ViewportInput
+// (mouse, keys, drops) and GpuScene (the scene, camera and renderer), with
+// WidgetOverlay drawing the children. This class ties them together and is
+// what the rest of the window talks to.
+class Viewport : public QWidget, private ViewportSurface::Content
 {
     Q_OBJECT
 
@@ -62,7 +56,7 @@ public:
     const QHash<QString, SceneMeshes::Entry> &meshInfo() const;
     // The scene as shown, with the orbited camera in place of the original.
     Scene currentScene() const;
-    const Camera &camera() const { return m_orbit.camera(); }
+    const Camera &camera() const { return m_gpu.camera(); }
     // What Save writes: the scene's own camera until the user moves it (a
     // camera moved back only to fit this view's shape is not the scene's),
     // the moved one after, marked as a shot to keep (frameObjects false).
@@ -72,16 +66,16 @@ public:
     // live shader controller builds it (so Save writes the preset in use).
     void setShading(ShadingMethod method);
 
-    // Programs built elsewhere. adoptProgram() switches to a program linked
-    // on a context sharing this one's objects (or by buildProgram()) and owns
-    // it from then on; uniforms the user set carry over. buildProgram()
-    // compiles on the GUI thread with this context: the fallback when no
-    // shared context can be had. Both need GL to be up (glInitialized()).
+    // Switches to a program linked on a context sharing this one's objects
+    // (the build thread's) and owns it from then on; uniforms the user set
+    // carry over. Needs GL to be up (glInitialized()).
     void adoptProgram(GlProgram program);
-    BuiltProgram buildProgram(const ShaderSource &vertex, const ShaderSource &fragment);
-    Renderer &renderer() { return m_renderer; } // call with the context current (CurrentContext)
+    Renderer &renderer()
+    {
+        return m_gpu.renderer();
+    } // call with the context current (CurrentContext)
     // The near/far planes of the last frame (no GL call; any time).
-    const DepthRange &depthRange() const { return m_renderer.depthRange(); }
+    const DepthRange &depthRange() const { return m_gpu.renderer().depthRange(); }
 
     // Lends the GL context to `borrower` (see LentContext), so that a new
     // program's draw-time compile happens in this very context but off the
@@ -93,16 +87,16 @@ public:
     // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
     // and paints again. False if it did not come back in time.
     bool takeBackContext(int timeoutMs = -1);
-    bool isContextLent() const { return m_lender.isActive(); }
+    bool isContextLent() const { return m_surface->isContextLent(); }
     // Samples of the framebuffer the view draws into (-1 before the first frame).
-    int framebufferSamples() const { return m_framebufferSamples; }
+    int framebufferSamples() const { return m_surface->framebufferSamples(); }
     // A frame drawn now (overlays included) and read back, once a lent
     // context is back; null before the window was first shown.
     QImage grabFramebuffer();
 
     // The view's GL context (null before the window was first shown);
     // makeCurrent() and doneCurrent() as QOpenGLWidget's.
-    QOpenGLContext *context() const { return m_context.get(); }
+    QOpenGLContext *context() const { return m_surface->context(); }
     void makeCurrent();
     void doneCurrent();
     // The format the view's window asks for (samples, depth); set before the
@@ -116,7 +110,10 @@ public:
     QWindow *frameWindow() const;
     // When the last frame was handed to the window system (swapBuffers
     // returned), on whichever thread presented it.
-    std::chrono::steady_clock::time_point lastPresentedAt() const { return m_lastPresentedAt; }
+    std::chrono::steady_clock::time_point lastPresentedAt() const
+    {
+        return m_surface->lastPresentedAt();
+    }
 
     // The cheap path for dock edits: takes lights, ambient, materials and
     // transforms from `scene` (same objects and meshes as shown) without
@@ -129,7 +126,7 @@ public:
     // `lightMarkers` the frame is the scene alone (what a check compares).
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
     // How the view draws (light markers, detail, lights left out).
-    const Renderer::Options &renderOptions() const { return m_options; }
+    const Renderer::Options &renderOptions() const { return m_gpu.options(); }
     // The current values of the program the view draws with (empty before
     // GL starts), read with the context taken back if it is lent.
     UniformSnapshot programSnapshot();
@@ -138,41 +135,41 @@ public:
     // the program is linked again.
     void setBindings(const ExplicitBindings &bindings);
     // What each of that program's variables is bound to (core/ShaderBindings.h).
-    const ProgramBindings &programBindings() { return m_renderer.program().bindings(); }
+    const ProgramBindings &programBindings() { return m_gpu.renderer().program().bindings(); }
     // A white light at the eye that follows the camera: the one light not in
     // world space. A view setting, not part of the scene (currentScene() has
     // no trace of it); added only while fewer than kMaxLights are in use.
     void setHeadlight(bool on);
-    bool headlight() const { return m_headlight; }
+    bool headlight() const { return m_gpu.headlight(); }
     // currentScene() plus the headlight: what the renderer draws.
     Scene renderedScene() const;
     // The light whose marker is drawn highlighted (-1: none).
     void setSelectedLight(int index);
-    int selectedLight() const { return m_options.selectedLight; }
+    int selectedLight() const { return m_gpu.options().selectedLight; }
 
     void resetCamera();
     void setShowLightMarkers(bool show);
-    bool showLightMarkers() const { return m_options.drawLightMarkers; }
+    bool showLightMarkers() const { return m_gpu.options().drawLightMarkers; }
     // How the last frame drew each object (level of detail, lights left out).
     const std::vector<Renderer::ObjectDraw> &objectDraws() const
     {
-        return m_renderer.objectDraws();
+        return m_gpu.renderer().objectDraws();
     }
     // What auto detail and, when `leaveOutLights`, leaving out unseen
     // lights may each change a pixel by (linear intensity; Renderer::Options).
     void setModelReduction(double allowance, bool leaveOutLights);
 
-    bool isRenderReady() const { return m_renderReady; }
+    bool isRenderReady() const { return m_gpu.isReady(); }
     // After a frame longer than kHoldFramesAfterMs the view draws nothing
     // until a click, a wheel turn or a key in it, a new program or a new
     // scene (resumeFrames()): such a frame is never repeated by itself.
-    bool framesHeld() const { return m_framesHeld; }
+    bool framesHeld() const { return m_surface->framesHeld(); }
     // Frames asked for while held, and not drawn.
-    qint64 framesRefused() const { return m_framesRefused; }
+    qint64 framesRefused() const { return m_surface->framesRefused(); }
     void resumeFrames();
-    qint64 framesRendered() const { return m_framesRendered; }
+    qint64 framesRendered() const { return m_surface->framesRendered(); }
     // The draw times behind frameRendered()'s figure.
-    const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
+    const FrameTimeWindow &frameTimes() const { return m_surface->frameTimes(); }
     QString glRendererName() const { return m_glRendererName; }
 
     QSize minimumSizeHint() const override;
@@ -218,98 +215,25 @@ signals:
 protected:
     bool event(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
-    void childEvent(QChildEvent *event) override;
-    bool eventFilter(QObject *watched, QEvent *event) override;
-    void mousePressEvent(QMouseEvent *event) override;
-    void mouseMoveEvent(QMouseEvent *event) override;
-    void mouseReleaseEvent(QMouseEvent *event) override;
-    void wheelEvent(QWheelEvent *event) override;
-    void keyPressEvent(QKeyEvent *event) override;
-    void dragEnterEvent(QDragEnterEvent *event) override;
-    void dropEvent(QDropEvent *event) override;
 
 private:
-    enum class Drag {
-        None,
-        Orbit,
-        Pan,
-        Light
-    };
+    // ViewportSurface::Content
+    bool drawScene(const QSize &pixels) override;
+    void drawOverlays(const QSize &pixels) override;
 
-    friend class ViewportWindow;
-    // From ViewportWindow: draw and present a frame, unless the context is
-    // lent (then once it is back).
-    void drawFrame();
-    void startGl();
     void initializeGl();
-    // Needs the context current: the scene into the window's back buffer
-    // (false: GL is not ready, only the background).
-    bool drawScene();
-    // Books a frame's draw time (first GL call to glFinish) and says so.
-    void frameDrawn(double drawMs);
-    void framePresented(quint64 loan, double drawMs, qint64 swappedNs, bool ok);
-    void drawOverlays();
-    QImage readBackBuffer(const QSize &pixels);
-    QSize pixelSize() const;
     void cleanup();
-    Result<> uploadScene(const Scene &scene, SceneMeshes &&meshes);
+    QSize pixelSize() const;
     void showUploaded(const Scene &scene);
-    bool frameScene();
-    QSize windowPixels() const; // the view's native window, in device pixels
+    // The camera or another parameter changed: a new frame.
+    void parametersChanged();
     void cameraMoved();
-    void sendChangedParameters();
-    bool startLightDrag(const QPointF &position);
-    void dragLight(const QPointF &position, bool alongView);
-    void finishLightDrag();
 
-    Renderer m_renderer;
-    Renderer::Options m_options{.drawLightMarkers = true};
-    Scene m_scene; // as loaded; its camera is the orbit's original
-    // Meshes of m_scene loaded before GL was up; initializeGl uploads them.
-    std::optional<SceneMeshes> m_pendingMeshes;
-    OrbitCamera m_orbit;
-    // The camera is the scene's fitted to the view (frameScene), not moved by
-    // the user since: a resize fits it again.
-    bool m_cameraFramed = true;
-    // The window's size (pixels) when a frame was last swapped on this
-    // thread: the back buffer's size, which lags a resize until that swap.
-    QSize m_presentedSize;
-    bool m_glInitialized = false;  // the renderer holds GL resources
-    bool m_renderReady = false;    // ... and a scene and program to draw
-    bool m_parametersDirty = true; // camera moved since the renderer last saw it
-    Drag m_drag = Drag::None;
-    QPointF m_lastMousePos;
-    bool m_headlight = false;
-    int m_dragLight = -1;         // the light a Drag::Light moves
-    PointLight m_dragStart;       // ... as it was when the drag began
-    FrameTimeWindow m_frameTimes; // draw times of the last second
-    qint64 m_framesRendered = 0;
+    GpuScene m_gpu;
+    ViewportSurface *m_surface = nullptr; // children of this widget
+    ViewportInput *m_input = nullptr;
+    WidgetOverlay *m_overlay = nullptr;
     QString m_glRendererName;
-    ViewportWindow *m_window = nullptr; // owned by m_container
-    QWidget *m_container = nullptr;
-    // Made on the first exposure; stays (invalid) when it could not be made.
-    std::unique_ptr<QOpenGLContext> m_context;
-    ContextLender m_lender;
-    // Presents the first frame of a newly adopted program off the GUI
-    // thread, so that the keys typed meanwhile are handled at once; null:
-    // this thread presents (PHONGLAB_PRESENT_ON_GUI_THREAD=1, or the
-    // platform cannot). Other frames (an orbit's stream) are presented here:
-    // handing the context over costs ~3 ms a frame (docs/performance.md).
-    std::unique_ptr<FramePresenter> m_presenter;
-    bool m_mayPresentOffThread = true;
-    bool m_presentOffThread = false;
-    quint64 m_presentLoans = 0; // the newest loan to the presenter: only it ends one
-    std::chrono::steady_clock::time_point m_lastPresentedAt;
-    bool m_frameMissed = false;      // asked for while the context was lent
-    WarmUpDraw m_warmer;             // created in this context by a borrower; freed in cleanup()
-    GLint m_framebufferSamples = -1; // of the window's framebuffer; -1: not known yet
-    // The child widgets drawn over the frame, as last painted.
-    ImageLayer m_overlayLayer;
-    QImage m_overlayImage;
-    bool m_overlayDirty = true;
-    bool m_paintingOverlays = false; // their paint events are ours, not changes
-    bool m_framesHeld = false;       // a frame ran long: none until the user acts
-    qint64 m_framesRefused = 0;
 };
 
 } // namespace phonglab

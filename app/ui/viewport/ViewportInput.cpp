@@ -1,7 +1,6 @@
-// Viewport's input: orbit, pan and zoom, dragging light markers, keys and
-// dropped files (the rest of the class is in Viewport.cpp).
-#include "Viewport.h"
+#include "ViewportInput.h"
 
+#include "GpuScene.h"
 #include "LightPicking.h"
 
 #include <QAction>
@@ -11,6 +10,7 @@
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QWheelEvent>
+#include <QWidget>
 #include <cmath>
 
 namespace phonglab {
@@ -36,81 +36,89 @@ QStringList localFiles(const QMimeData *data)
 
 } // namespace
 
-bool Viewport::startLightDrag(const QPointF &position)
+ViewportInput::ViewportInput(QWidget *view, GpuScene &scene)
+    : QObject(view)
+    , m_view(view)
+    , m_scene(scene)
 {
-    if (!m_options.drawLightMarkers)
-        return false; // nothing visible to grab
-    m_dragLight =
-        pickLight(m_scene.lights, m_orbit.camera(), QSizeF(size()), position, kLightPickRadiusPx);
-    if (m_dragLight < 0)
+    view->setFocusPolicy(Qt::StrongFocus); // so R / Home reach the view after a click
+    view->setAcceptDrops(true);
+    view->installEventFilter(this);
+}
+
+bool ViewportInput::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched != m_view)
         return false;
-    m_dragStart = m_scene.lights[m_dragLight];
-    setSelectedLight(m_dragLight);
-    emit lightPicked(m_dragLight);
-    return true;
+    switch (event->type()) {
+    case QEvent::MouseButtonPress: return mousePress(static_cast<QMouseEvent *>(event));
+    case QEvent::MouseMove:
+        if (m_drag == Drag::None)
+            return false;
+        mouseMove(static_cast<QMouseEvent *>(event));
+        return true;
+    case QEvent::MouseButtonRelease: mouseRelease(static_cast<QMouseEvent *>(event)); return true;
+    case QEvent::Wheel: return wheel(static_cast<QWheelEvent *>(event));
+    case QEvent::KeyPress: return keyPress(static_cast<QKeyEvent *>(event));
+    case QEvent::DragEnter: {
+        // Any local file is welcome: an unsupported one is then explained by
+        // the window rather than refused without a word.
+        auto *enter = static_cast<QDragEnterEvent *>(event);
+        if (!localFiles(enter->mimeData()).isEmpty())
+            enter->acceptProposedAction();
+        return true;
+    }
+    case QEvent::Drop: {
+        auto *drop = static_cast<QDropEvent *>(event);
+        const QStringList paths = localFiles(drop->mimeData());
+        if (!paths.isEmpty()) {
+            drop->acceptProposedAction();
+            emit filesDropped(paths);
+        }
+        return true;
+    }
+    default: return false;
+    }
 }
 
-void Viewport::dragLight(const QPointF &position, bool alongView)
+bool ViewportInput::mousePress(QMouseEvent *event)
 {
-    glm::dvec3 &p = m_scene.lights[m_dragLight].position;
-    p = alongView
-        ? moveAlongView(p, m_orbit.camera(), QSizeF(size()), position.y() - m_lastMousePos.y())
-        : moveInViewPlane(p, m_orbit.camera(), QSizeF(size()), position);
-    m_parametersDirty = true;
-    requestFrame();
-    emit sceneParametersChanged();
-}
-
-void Viewport::finishLightDrag()
-{
-    const int index = m_dragLight;
-    m_dragLight = -1;
-    if (index >= 0 && index < int(m_scene.lights.size()) && !(m_scene.lights[index] == m_dragStart))
-        emit lightDragged(index, m_dragStart, m_scene.lights[index]);
-}
-
-void Viewport::mousePressEvent(QMouseEvent *event)
-{
-    resumeFrames();
+    emit userActed();
     switch (event->button()) {
     case Qt::LeftButton:
         m_drag = startLightDrag(event->position()) ? Drag::Light : Drag::Orbit;
         break;
     case Qt::RightButton:
     case Qt::MiddleButton: m_drag = Drag::Pan; break;
-    default: QWidget::mousePressEvent(event); return;
+    default: return false;
     }
     m_lastMousePos = event->position();
     event->accept();
+    return true;
 }
 
-void Viewport::mouseMoveEvent(QMouseEvent *event)
+void ViewportInput::mouseMove(QMouseEvent *event)
 {
-    if (m_drag == Drag::None) {
-        QWidget::mouseMoveEvent(event);
-        return;
-    }
+    event->accept();
     if (m_drag == Drag::Light) {
         dragLight(event->position(), event->modifiers() & Qt::ShiftModifier);
         m_lastMousePos = event->position();
-        event->accept();
         return;
     }
     const QPointF delta = event->position() - m_lastMousePos;
     m_lastMousePos = event->position();
-    m_cameraFramed = false; // the camera is the user's now: a resize leaves it
+    OrbitCamera &orbit = m_scene.orbitByUser();
     if (m_drag == Drag::Orbit) {
         // "Grab the object" feel: dragging right turns its front to the right.
-        m_orbit.orbit(-delta.x() * kOrbitDegPerPixel, delta.y() * kOrbitDegPerPixel);
+        orbit.orbit(-delta.x() * kOrbitDegPerPixel, delta.y() * kOrbitDegPerPixel);
     } else {
-        const double viewHeight = std::max(1, height());
-        m_orbit.pan(delta.x() / viewHeight, delta.y() / viewHeight);
+        const double viewHeight = std::max(1, m_view->height());
+        orbit.pan(delta.x() / viewHeight, delta.y() / viewHeight);
     }
-    cameraMoved();
-    event->accept();
+    emit cameraMoved();
 }
 
-void Viewport::mouseReleaseEvent(QMouseEvent *event)
+void ViewportInput::mouseRelease(QMouseEvent *event)
 {
     if (event->buttons() == Qt::NoButton) {
         if (m_drag == Drag::Light)
@@ -120,53 +128,71 @@ void Viewport::mouseReleaseEvent(QMouseEvent *event)
     event->accept();
 }
 
-void Viewport::wheelEvent(QWheelEvent *event)
+bool ViewportInput::wheel(QWheelEvent *event)
 {
-    resumeFrames();
+    emit userActed();
     const double notches = event->angleDelta().y() / kWheelNotch;
     if (notches == 0.0) {
         event->ignore();
-        return;
+        return true;
     }
-    m_cameraFramed = false;
-    m_orbit.zoom(std::pow(kZoomPerWheelNotch, notches));
-    cameraMoved();
+    m_scene.orbitByUser().zoom(std::pow(kZoomPerWheelNotch, notches));
+    emit cameraMoved();
     event->accept();
+    return true;
 }
 
-// The key map is the actions added to this view (Reset Camera's R and Home,
+// The key map is the actions added to the view (Reset Camera's R and Home,
 // Inspect's I): their shortcuts. A key that reaches the view unclaimed (the
 // shortcut system only acts for an active window) triggers the action that
 // names it, so no key is handled in two places.
-void Viewport::keyPressEvent(QKeyEvent *event)
+bool ViewportInput::keyPress(QKeyEvent *event)
 {
-    resumeFrames();
+    emit userActed();
     const QKeySequence pressed(event->keyCombination());
-    for (QAction *action : actions()) {
+    for (QAction *action : m_view->actions()) {
         if (action->isEnabled() && action->shortcuts().contains(pressed)) {
             action->trigger();
             event->accept();
-            return;
+            return true;
         }
     }
-    QWidget::keyPressEvent(event);
+    return false;
 }
 
-void Viewport::dragEnterEvent(QDragEnterEvent *event)
+bool ViewportInput::startLightDrag(const QPointF &position)
 {
-    // Any local file is welcome: an unsupported one is then explained by the
-    // window rather than refused without a word.
-    if (!localFiles(event->mimeData()).isEmpty())
-        event->acceptProposedAction();
+    if (!m_scene.options().drawLightMarkers)
+        return false; // nothing visible to grab
+    m_dragLight = pickLight(m_scene.scene().lights, m_scene.camera(), QSizeF(m_view->size()),
+                            position, kLightPickRadiusPx);
+    if (m_dragLight < 0)
+        return false;
+    m_dragStart = m_scene.scene().lights[m_dragLight];
+    emit lightPicked(m_dragLight);
+    return true;
 }
 
-void Viewport::dropEvent(QDropEvent *event)
+void ViewportInput::dragLight(const QPointF &position, bool alongView)
 {
-    const QStringList paths = localFiles(event->mimeData());
-    if (paths.isEmpty())
-        return;
-    event->acceptProposedAction();
-    emit filesDropped(paths);
+    if (m_dragLight >= int(m_scene.scene().lights.size()))
+        return; // the light went (an undo) while it was dragged
+    const glm::dvec3 &p = m_scene.scene().lights[m_dragLight].position;
+    const Camera &camera = m_scene.camera();
+    const QSizeF view(m_view->size());
+    m_scene.moveLight(m_dragLight,
+                      alongView ? moveAlongView(p, camera, view, position.y() - m_lastMousePos.y())
+                                : moveInViewPlane(p, camera, view, position));
+    emit lightMoved();
+}
+
+void ViewportInput::finishLightDrag()
+{
+    const int index = m_dragLight;
+    m_dragLight = -1;
+    const std::vector<PointLight> &lights = m_scene.scene().lights;
+    if (index >= 0 && index < int(lights.size()) && !(lights[index] == m_dragStart))
+        emit lightDragged(index, m_dragStart, lights[index]);
 }
 
 } // namespace phonglab

@@ -1,8 +1,9 @@
 #include "ViewportWindow.h"
 
-#include "Viewport.h"
+#include "ViewportSurface.h"
 
 #include <QCoreApplication>
+#include <QWidget>
 
 namespace phonglab {
 
@@ -27,11 +28,12 @@ bool isInput(QEvent::Type type)
 
 } // namespace
 
-ViewportWindow::ViewportWindow(Viewport *viewport)
-    : m_viewport(viewport)
+ViewportWindow::ViewportWindow(ViewportSurface *surface, QWidget *view)
+    : m_surface(surface)
+    , m_view(view)
 {
     setSurfaceType(QSurface::OpenGLSurface);
-    // Keyboard focus stays with the widgets: the Viewport takes it on a
+    // Keyboard focus stays with the widgets: the view takes it on a
     // click (below), and keys and shortcuts go the way of any widget's.
     setFlag(Qt::WindowDoesNotAcceptFocus);
 }
@@ -50,7 +52,7 @@ bool ViewportWindow::event(QEvent *event)
 {
     if (event->type() == QEvent::UpdateRequest) {
         m_framePending = false;
-        m_viewport->drawFrame();
+        m_surface->drawFrame();
         return true;
     }
     // A QWindow gets a press before each double click as well: the double
@@ -59,11 +61,10 @@ bool ViewportWindow::event(QEvent *event)
         return true;
     if (isInput(event->type())) {
         // Sent events are not spontaneous, so Qt gives no click focus for them.
-        if (event->type() == QEvent::MouseButtonPress
-            && (m_viewport->focusPolicy() & Qt::ClickFocus))
-            m_viewport->setFocus(Qt::MouseFocusReason);
+        if (event->type() == QEvent::MouseButtonPress && (m_view->focusPolicy() & Qt::ClickFocus))
+            m_view->setFocus(Qt::MouseFocusReason);
         // The window lies exactly over the widget: positions carry over as they are.
-        QCoreApplication::sendEvent(m_viewport, event);
+        QCoreApplication::sendEvent(m_view, event);
         return true;
     }
     return QWindow::event(event);
@@ -72,7 +73,7 @@ bool ViewportWindow::event(QEvent *event)
 void ViewportWindow::exposeEvent(QExposeEvent *)
 {
     if (isExposed())
-        m_viewport->drawFrame();
+        m_surface->drawFrame();
 }
 
 } // namespace phonglab

@@ -1,23 +1,25 @@
 #pragma once
 #include <QWindow>
 
+class QWidget;
+
 namespace phonglab {
 
-class Viewport;
+class ViewportSurface;
 
-// The native window the viewport's frames go to (inside the Viewport widget,
-// through QWidget::createWindowContainer). Presenting here with swapBuffers
-// skips what a QOpenGLWidget pays per frame: the resolve into a texture and
-// Qt's recomposition of the whole main window through OpenGL
-// (docs/performance.md). It only draws when asked and passes every input
-// event on to the Viewport, so the widget keeps handling the mouse, keys and
+// The native window the viewport's frames go to (made by ViewportSurface,
+// inside the Viewport widget through QWidget::createWindowContainer).
+// Presenting here with swapBuffers skips what a QOpenGLWidget pays per
+// frame: the resolve into a texture and Qt's recomposition of the whole main
+// window through OpenGL (docs/performance.md). It only draws when asked and passes every input
+// event on to the view widget, so that keeps handling the mouse, keys and
 // drops as any widget does.
 class ViewportWindow : public QWindow
 {
     Q_OBJECT
 
 public:
-    explicit ViewportWindow(Viewport *viewport);
+    ViewportWindow(ViewportSurface *surface, QWidget *view);
 
     // A frame at the next turn of the event loop; several requests before
     // it make one frame (as QWidget::update).
@@ -28,7 +30,8 @@ protected:
     void exposeEvent(QExposeEvent *event) override;
 
 private:
-    Viewport *m_viewport = nullptr;
+    ViewportSurface *m_surface = nullptr; // draws the frames
+    QWidget *m_view = nullptr;            // gets the input
     bool m_framePending = false;
 };
 

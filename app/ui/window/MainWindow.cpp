@@ -140,8 +140,6 @@ void MainWindow::createShaderDock()
             [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
     // Tests answer through the environment at once; a person is asked once
     // the window is up.
-    m_liveShaders->setBuildOnGuiThread(m_options.compileOnGuiThread);
-    m_liveShaders->setWarmUp(m_options.warmUp);
     const ShaderRecovery::Answer answer = m_options.recoveryAnswer;
     if (answer != ShaderRecovery::Answer::Ask)
         m_liveShaders->offerRecovery(answer, this);

@@ -21,13 +21,6 @@ StartupOptions StartupOptions::fromEnvironment()
         o.recoveryAnswer = ShaderRecovery::Answer::Restore;
     else if (answer == QLatin1String("discard"))
         o.recoveryAnswer = ShaderRecovery::Answer::Discard;
-    using W = LiveShaderController::WarmUp;
-    const QString warmUp = lowerValue("PHONGLAB_WARM_UP");
-    if (warmUp == QLatin1String("off"))
-        o.warmUp = W::Off;
-    else if (warmUp == QLatin1String("worker"))
-        o.warmUp = W::WorkerContext;
-    o.compileOnGuiThread = qEnvironmentVariableIntValue("PHONGLAB_COMPILE_ON_GUI_THREAD") != 0;
     o.presentOnGuiThread = qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD");
     o.benchExecutable = qEnvironmentVariable("PHONGLAB_EXE");
     o.documentationFolder = qEnvironmentVariable("PHONGLAB_DOC_DIR");

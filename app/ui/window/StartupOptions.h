@@ -1,5 +1,4 @@
 #pragma once
-#include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderRecovery.h"
 
 #include <QString>
@@ -14,10 +13,6 @@ struct StartupOptions {
     // $PHONGLAB_RECOVERY_ANSWER=restore|discard: answers the crash-recovery
     // question without a dialog (tests, scripts).
     ShaderRecovery::Answer recoveryAnswer = ShaderRecovery::Answer::Ask;
-    // $PHONGLAB_WARM_UP=off|worker|viewport: where a new program is warmed up.
-    LiveShaderController::WarmUp warmUp = LiveShaderController::WarmUp::ViewportContext;
-    // $PHONGLAB_COMPILE_ON_GUI_THREAD=1: no build worker (the fallback path).
-    bool compileOnGuiThread = false;
     // $PHONGLAB_PRESENT_ON_GUI_THREAD set: frames are presented on the GUI
     // thread (the benchmark's comparison; drivers without threaded GL do so
     // anyway).
