@@ -13,8 +13,9 @@
 #   GLM and standard headers of its layer (Qt's headers make `emit`,
 #   `signals` and `slots` macros: no identifier may be one of those words
 #   anywhere now); the tests share one per set of
-#   libraries they link (a header precompiled with QT_WIDGETS_LIB defined
-#   is refused where it is not, and QTEST_MAIN differs with it). OpenMesh's
+#   Qt modules their libraries bring (a header precompiled with
+#   QT_WIDGETS_LIB defined is refused where it is not, and QTEST_MAIN
+#   differs with it). OpenMesh's
 #   headers are left out: no more than two files of mesh include any one of
 #   them. ccache caches such files only with its PCH sloppiness, which
 #   scripts/build.sh sets in the compiler launcher.
@@ -49,27 +50,36 @@ function(phonglab_precompile target layer)
   target_precompile_headers(${target} PRIVATE ${PHONGLAB_PCH_${upper}})
 endfunction()
 
-# A test program: the precompiled headers of the first test of `kind` that
-# links exactly `libs` (made once, reused by the rest).
+# A test program: the precompiled headers of the first test whose libraries
+# give it the same Qt modules (so the same QT_*_LIB definitions, which a
+# precompiled header must match), made once and reused by the rest: five
+# sets at most (core, render, bench, charts, ui) rather than one per set of
+# libraries, which made ~30 headers of ~10 s each.
 function(phonglab_test_program target kind libs)
   if(NOT PHONGLAB_PCH)
     return()
   endif()
-  list(SORT libs)
-  string(REPLACE ";" "+" key "${kind}:${libs}")
-  string(MD5 key "${key}")
-  get_property(anchor GLOBAL PROPERTY PHONGLAB_PCH_ANCHOR_${key})
+  set(modules core)
+  set(headers ${PHONGLAB_PCH_CORE})
+  if(libs MATCHES "phonglab_(render|bench|cli|charts|benchcli|ui|test_support_gl|test_support_ui)")
+    set(modules render)
+    set(headers ${PHONGLAB_PCH_RENDER})
+  endif()
+  if(libs MATCHES "phonglab_(bench|cli|charts|benchcli|ui|test_support_ui)")
+    set(modules bench)
+  endif()
+  if(libs MATCHES "phonglab_(charts|benchcli|ui|test_support_ui)")
+    set(modules charts)
+    set(headers ${PHONGLAB_PCH_UI})
+  endif()
+  if(libs MATCHES "phonglab_(ui|test_support_ui)")
+    set(modules ui)
+  endif()
+  get_property(anchor GLOBAL PROPERTY PHONGLAB_PCH_ANCHOR_${modules})
   if(anchor)
     target_precompile_headers(${target} REUSE_FROM ${anchor})
     return()
   endif()
-  set_property(GLOBAL PROPERTY PHONGLAB_PCH_ANCHOR_${key} ${target})
-  set(headers ${PHONGLAB_PCH_CORE})
-  if(libs MATCHES "phonglab_(render|bench|cli|charts|ui|test_support_gl|test_support_ui)")
-    set(headers ${PHONGLAB_PCH_RENDER})
-  endif()
-  if(libs MATCHES "phonglab_(ui|charts|test_support_ui)")
-    set(headers ${PHONGLAB_PCH_UI})
-  endif()
+  set_property(GLOBAL PROPERTY PHONGLAB_PCH_ANCHOR_${modules} ${target})
   target_precompile_headers(${target} PRIVATE ${headers} <QTest>)
 endfunction()
