@@ -1,9 +1,17 @@
 #include "benchcli/BenchCommand.h"
 #include "cli/Cli.h"
+#include "cli/CliCommon.h"
+#include "core/Language.h"
 #include "ui/window/GuiMain.h"
 
 int main(int argc, char **argv)
 {
+    // Any command and the window: `--lang en|de` anywhere on the line.
+    if (const phonglab::LanguageOption language = phonglab::takeLanguageOption(argc, argv);
+        !language.ok) {
+        phonglab::cli::printError(language.error);
+        return phonglab::cli::kExitUsage;
+    }
     const phonglab::cli::Subcommand more[] = {phonglab::cli::kBenchSubcommand};
     if (const auto exitCode = phonglab::cli::dispatch(argc, argv, more))
         return *exitCode;

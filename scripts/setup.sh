@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   qt6-base-dev qt6-base-dev-tools qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-qpa-plugins libqscintilla2-qt6-dev
+  qt6-tools-dev qt6-l10n-tools qt6-translations-l10n   # lupdate/lrelease (translations/), Qt's own German
   libglm-dev libopenmesh-dev
   libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0   # EGL: rendering with no display server
   desktop-file-utils appstream shared-mime-info libglib2.0-bin # validate the desktop files (tests/install)

@@ -8,6 +8,7 @@
 #include "core/SceneJson.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QJsonDocument>
@@ -16,6 +17,11 @@
 #include <variant>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct CheckCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckCommand)
+};
 
 namespace {
 
@@ -38,7 +44,7 @@ struct CheckArgs {
 const QString &synopsis()
 {
     static const QString text =
-        QStringLiteral("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
+        CheckCommandWords::tr("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
                        "[--shading NAME] [--size WxH]\n"
                        "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
                        "[--equation slide|guarded]\n"
@@ -49,8 +55,7 @@ const QString &synopsis()
 QString helpText()
 {
     return synopsis()
-        + QStringLiteral(
-              "\n\n"
+        + CheckCommandWords::tr("\n\n"
               "Renders SCENE.json with the shaders `render` would use, compares the image with the "
               "exact\n"
               "(double-precision) reference of the same scene, leaving out a band around "
@@ -96,7 +101,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show help."));
+                                  CheckCommandWords::tr("Show help."));
     const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
     const QCommandLineOption vertex(QStringLiteral("vertex"), QString(), QStringLiteral("file"));
     const QCommandLineOption fragment(QStringLiteral("fragment"), QString(),
@@ -113,7 +118,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
     parser.addOptions(
         {help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly});
-    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
+    parser.addPositionalArgument(QStringLiteral("scene"), CheckCommandWords::tr("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
     if (const std::optional<int> exit =
@@ -121,8 +126,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")
-                                          : QStringLiteral("exactly one scene file expected"));
+        return usage(positional.isEmpty() ? CheckCommandWords::tr("missing the scene file")
+                                          : CheckCommandWords::tr("exactly one scene file expected"));
     CheckArgs args;
     args.scenePath = positional.first();
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
@@ -133,18 +138,18 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     if (parser.isSet(equation)) {
         args.equation = phongEquationFromKey(parser.value(equation));
         if (!args.equation)
-            return usage(QStringLiteral("--equation: expected slide or guarded, got '%1'")
+            return usage(CheckCommandWords::tr("--equation: expected slide or guarded, got '%1'")
                              .arg(parser.value(equation)));
     }
     if (parser.isSet(tolerance)) {
         bool ok = false;
         args.toleranceSteps = parser.value(tolerance).toInt(&ok);
         if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
-            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'")
+            return usage(CheckCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
                              .arg(parser.value(tolerance)));
     }
     if (parser.isSet(diff) && parser.value(diff).isEmpty())
-        return usage(QStringLiteral("--diff: missing the output file"));
+        return usage(CheckCommandWords::tr("--diff: missing the output file"));
     args.vertexPath = parser.value(vertex);
     args.fragmentPath = parser.value(fragment);
     args.json = parser.isSet(json);
@@ -175,7 +180,7 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
                            args.size.width(), args.size.height());
     if (!made) {
         outcome.errors.push_back(
-            inputError(args.scenePath, QStringLiteral("no reference: %1").arg(made.error())));
+            inputError(args.scenePath, CheckCommandWords::tr("no reference: %1").arg(made.error())));
         return outcome;
     }
     *reference = std::move(*made);
@@ -184,14 +189,37 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
     return outcome;
 }
 
+// The scene the check draws: the file's, with the command line's shading
+// and bindings over it. Made once the application exists, so that its
+// errors speak the run's language (core/Language).
+SceneLoadResult checkedScene(const CheckArgs &args)
+{
+    SceneLoadResult loaded = loadSceneFile(args.scenePath);
+    if (!loaded.ok())
+        return loaded;
+    if (args.shading)
+        loaded.scene->shading = *args.shading;
+    for (const auto &[name, meaning] : args.bindings)
+        loaded.scene->bindings[name] = meaning;
+    return loaded;
+}
+
 // `grade`'s child: draws and hands the drawing back (stdout and a PNG); the
 // parent judges it. Exit 0 whenever it could say what happened.
-int drawOnly(const CheckArgs &args, const Scene &scene, int argc, char **argv)
+int drawOnly(const CheckArgs &args, int argc, char **argv)
 {
     beAGradedChild();
     injectGradedChildFault(args.fragmentPath);
     QGuiApplication app(argc, argv);
-    CheckDrawing drawing = drawForCheck(inputOf(args), scene);
+    const SceneLoadResult loaded = checkedScene(args);
+    if (!loaded.ok()) {
+        CheckDrawing failed;
+        failed.outcome.errors.push_back(inputError(args.scenePath, loaded.error));
+        printLine(
+            QString::fromUtf8(QJsonDocument(drawingJson(failed)).toJson(QJsonDocument::Compact)));
+        return kExitOk;
+    }
+    CheckDrawing drawing = drawForCheck(inputOf(args), *loaded.scene);
     if (drawing.drawn()) {
         if (const Result<> written = writePng(drawing.image, args.drawOnlyPath); !written)
             drawing.outcome.errors.push_back(inputError(args.drawOnlyPath, written.error()));
@@ -202,24 +230,11 @@ int drawOnly(const CheckArgs &args, const Scene &scene, int argc, char **argv)
 
 int check(const CheckArgs &args, int argc, char **argv)
 {
-    const SceneLoadResult loaded = loadSceneFile(args.scenePath);
-    Scene scene = loaded.ok() ? *loaded.scene : Scene{};
-    if (args.shading)
-        scene.shading = *args.shading;
-    for (const auto &[name, meaning] : args.bindings)
-        scene.bindings[name] = meaning;
-
-    if (!args.drawOnlyPath.isEmpty()) {
-        if (!loaded.ok()) {
-            CheckDrawing failed;
-            failed.outcome.errors.push_back(inputError(args.scenePath, loaded.error));
-            printLine(QString::fromUtf8(
-                QJsonDocument(drawingJson(failed)).toJson(QJsonDocument::Compact)));
-            return kExitOk;
-        }
-        return drawOnly(args, scene, argc, argv);
-    }
+    if (!args.drawOnlyPath.isEmpty())
+        return drawOnly(args, argc, argv);
     QGuiApplication app(argc, argv);
+    const SceneLoadResult loaded = checkedScene(args);
+    const Scene scene = loaded.ok() ? *loaded.scene : Scene{};
     CheckOutcome outcome;
     CheckReference reference;
     QImage yours;

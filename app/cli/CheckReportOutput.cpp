@@ -2,6 +2,7 @@
 
 #include "SceneStages.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <cmath>
@@ -10,6 +11,13 @@ namespace phonglab::cli {
 
 namespace {
 
+// The text output's sentences, in the language the run speaks
+// (core/Language); the JSON's keys and key values never change with it.
+struct CheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckReportOutput)
+};
+
+// The verdict as JSON says it ("pass", "fail", "error").
 QString verdictName(CheckOutcome::Verdict v)
 {
     switch (v) {
@@ -18,6 +26,17 @@ QString verdictName(CheckOutcome::Verdict v)
     case CheckOutcome::Verdict::Error: break;
     }
     return QStringLiteral("error");
+}
+
+// The verdict as the text output says it.
+QString verdictWord(CheckOutcome::Verdict v)
+{
+    switch (v) {
+    case CheckOutcome::Verdict::Pass: return CheckWords::tr("pass");
+    case CheckOutcome::Verdict::Fail: return CheckWords::tr("fail");
+    case CheckOutcome::Verdict::Error: break;
+    }
+    return CheckWords::tr("error");
 }
 
 // The finding's own lines, then those of the mistakes it names beside it.
@@ -36,12 +55,12 @@ std::vector<SourceLine> findingLines(const MistakeFinding &f,
 
 QString findingMessage(const MistakeFinding &f)
 {
-    QString text = QStringLiteral("%1 explains %2 % of the difference (%3): %4")
+    QString text = CheckWords::tr("%1 explains %2 % of the difference (%3): %4")
                        .arg(shaderMistakeKey(f.key))
                        .arg(qRound(100.0 * f.confidence))
                        .arg(mistakeFormSummary({f.key, f.form}), shaderMistakeRule(f.key));
     for (ShaderMistake m : f.also)
-        text += QStringLiteral("; or, with the same image, %1: %2")
+        text += CheckWords::tr("; or, with the same image, %1: %2")
                     .arg(shaderMistakeKey(m), shaderMistakeRule(m));
     return text;
 }
@@ -49,8 +68,8 @@ QString findingMessage(const MistakeFinding &f)
 QString objectLabel(const Scene &scene, int object)
 {
     if (object < 0 || std::size_t(object) >= scene.objects.size())
-        return QStringLiteral("the background");
-    return QStringLiteral("object %1 (%2)")
+        return CheckWords::tr("the background");
+    return CheckWords::tr("object %1 (%2)")
         .arg(object)
         .arg(scene.objects[std::size_t(object)].mesh);
 }
@@ -69,7 +88,7 @@ QJsonObject unknownFinding()
             {QStringLiteral("also"), QJsonArray()},
             {QStringLiteral("confidence"), 0.0},
             {QStringLiteral("message"),
-             QStringLiteral("no classic mistake explains the difference; "
+             CheckWords::tr("no classic mistake explains the difference; "
                             "the error heatmap (--diff) shows where it is")},
             {QStringLiteral("lines"), QJsonArray()}};
 }
@@ -152,37 +171,37 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
 {
     QStringList out;
     if (const QString bound = bindingsText(outcome.bindings); !bound.isEmpty())
-        out << QStringLiteral("bindings: %1").arg(bound);
+        out << CheckWords::tr("bindings: %1").arg(bound);
     for (const QString &note : outcome.notes)
-        out << QStringLiteral("note: %1").arg(note);
+        out << CheckWords::tr("note: %1").arg(note);
     if (outcome.verdict == CheckOutcome::Verdict::Error) {
-        out << QStringLiteral("check: error");
+        out << CheckWords::tr("check: error");
         return out.join(QLatin1Char('\n'));
     }
     const CheckReport &r = outcome.report;
     const ImageComparison &c = r.comparison;
-    out << QStringLiteral("check: %1").arg(verdictName(outcome.verdict));
-    out << QStringLiteral(
+    out << CheckWords::tr("check: %1").arg(verdictWord(outcome.verdict));
+    out << CheckWords::tr(
                "%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
-               .arg(std::isfinite(c.psnr) ? QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 2)
-                                          : QStringLiteral("PSNR inf"))
+               .arg(std::isfinite(c.psnr) ? CheckWords::tr("PSNR %1 dB").arg(c.psnr, 0, 'f', 2)
+                                          : CheckWords::tr("PSNR inf"))
                .arg(c.maxError)
                .arg(r.toleranceSteps)
                .arg(100.0 * r.badFraction(), 0, 'f', 2)
                .arg(c.pixelsCompared);
     if (outcome.verdict == CheckOutcome::Verdict::Pass && r.equation == PhongEquation::Slide)
-        out << QStringLiteral("equation: the slide's, taken literally (a highlight even where "
+        out << CheckWords::tr("equation: the slide's, taken literally (a highlight even where "
                               "N·L <= 0), which is right too");
     if (c.pixelsCompared > 0 && c.maxError > 0)
-        out << QStringLiteral("worst pixel (%1, %2) on %3")
+        out << CheckWords::tr("worst pixel (%1, %2) on %3")
                    .arg(c.worstPixel.x())
                    .arg(c.worstPixel.y())
                    .arg(objectLabel(scene, r.worstObject));
     const MistakeDiagnosis &d = r.diagnosis;
     if (outcome.verdict == CheckOutcome::Verdict::Fail) {
-        out << QStringLiteral("diagnosis:");
+        out << CheckWords::tr("diagnosis:");
         if (d.unexplained())
-            out << QStringLiteral(
+            out << CheckWords::tr(
                 "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
                 "shows where it is");
         for (const MistakeFinding &f : d.findings) {
@@ -195,7 +214,7 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
         QStringList keys;
         for (ShaderMistake m : d.undetectable)
             keys << shaderMistakeKey(m);
-        out << QStringLiteral("cannot show in this scene: %1").arg(keys.join(QStringLiteral(", ")));
+        out << CheckWords::tr("cannot show in this scene: %1").arg(keys.join(QStringLiteral(", ")));
     }
     return out.join(QLatin1Char('\n'));
 }

@@ -5,10 +5,16 @@
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QRegularExpression>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct CheckStepsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckSteps)
+};
 
 ShaderDiagnostic inputError(const QString &file, const QString &message)
 {
@@ -67,7 +73,7 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
                 outcome.errors.push_back(d);
         if (outcome.errors.empty())
             outcome.errors.push_back(
-                inputError(files.fragment, QStringLiteral("the shaders did not compile")));
+                inputError(files.fragment, CheckStepsWords::tr("the shaders did not compile")));
         return drawing;
     }
     // Nothing PhongLab could not bind may decide the verdict: the student's
@@ -91,7 +97,7 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     }
     drawing.image = offscreen.renderImage(input.size);
     if (drawing.image.isNull())
-        return fail(QString(), QStringLiteral("rendering failed"));
+        return fail(QString(), CheckStepsWords::tr("rendering failed"));
     return drawing;
 }
 
@@ -108,7 +114,7 @@ void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReferen
     outcome->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
     if (!outcome->report.comparable()) {
         outcome->errors.push_back(inputError(
-            scenePath, QStringLiteral("nothing to compare: no surface away from silhouettes in "
+            scenePath, CheckStepsWords::tr("nothing to compare: no surface away from silhouettes in "
                                       "this view at %1x%2")
                            .arg(image.width())
                            .arg(image.height())));

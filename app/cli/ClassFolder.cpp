@@ -1,5 +1,6 @@
 #include "ClassFolder.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -8,6 +9,11 @@
 #include <algorithm>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ClassFolderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::ClassFolder)
+};
 
 namespace {
 
@@ -68,12 +74,12 @@ Submission readSubmission(const QFileInfo &folder)
             QStringList names;
             for (const QString &f : files)
                 names << relativeTo(dir, f);
-            problems << QStringLiteral("%1 files for the %2 stage: %3 (keep one)")
+            problems << ClassFolderWords::tr("%1 files for the %2 stage: %3 (keep one)")
                             .arg(files.size())
                             .arg(QLatin1String(stage), names.join(QStringLiteral(", ")));
         }
     if (vertex.isEmpty() && fragment.isEmpty())
-        problems << QStringLiteral("no shader file (.vert, .frag, .vs, .fs, .glsl) in %1")
+        problems << ClassFolderWords::tr("no shader file (.vert, .frag, .vs, .fs, .glsl) in %1")
                         .arg(s.name);
     s.error = problems.join(QStringLiteral("; "));
     if (s.error.isEmpty()) {
@@ -90,11 +96,11 @@ ClassFolder readClassFolder(const QString &path)
     ClassFolder out;
     const QFileInfo info(path);
     if (!info.exists()) {
-        out.error = QStringLiteral("%1: no such folder").arg(path);
+        out.error = ClassFolderWords::tr("%1: no such folder").arg(path);
         return out;
     }
     if (!info.isDir()) {
-        out.error = QStringLiteral("%1: not a folder (one subfolder per submission expected)")
+        out.error = ClassFolderWords::tr("%1: not a folder (one subfolder per submission expected)")
                         .arg(path);
         return out;
     }
@@ -107,7 +113,7 @@ ClassFolder readClassFolder(const QString &path)
               [](const Submission &a, const Submission &b) { return a.name < b.name; });
     if (out.submissions.empty())
         out.error =
-            QStringLiteral("%1: no submission folders in it (one subfolder per student expected)")
+            ClassFolderWords::tr("%1: no submission folders in it (one subfolder per student expected)")
                 .arg(path);
     return out;
 }

@@ -8,9 +8,15 @@
 #include "RenderCommand.h"
 #include "headless/HeadlessPlatform.h"
 
+#include <QCoreApplication>
 #include <QString>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct CliWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::Cli)
+};
 
 namespace {
 
@@ -26,8 +32,7 @@ constexpr Subcommand kSubcommands[] = {
 
 void printHelp(std::span<const Subcommand> more)
 {
-    QString text = QStringLiteral(
-        "usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
+    QString text = CliWords::tr("usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
         "                                        (.obj .ply .off .stl .om; the default scene "
         "when none given)\n"
         "       phonglab SCENE.json --vertex FILE --fragment FILE\n"
@@ -41,7 +46,7 @@ void printHelp(std::span<const Subcommand> more)
             text += QStringLiteral("  %1  %2\n")
                         .arg(QString::fromLatin1(c.name), -11)
                         .arg(QString::fromLatin1(c.summary));
-    text += QStringLiteral("\n'phonglab <command> --help' describes a command's options.");
+    text += CliWords::tr("\n'phonglab <command> --help' describes a command's options.");
     printLine(text);
 }
 
@@ -76,7 +81,7 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
         if (first == option || first.startsWith(option + QLatin1Char('=')))
             return std::nullopt;
     if (first.startsWith(QLatin1Char('-'))) {
-        printError(QStringLiteral("unknown option '%1' (see phonglab --help)").arg(first));
+        printError(CliWords::tr("unknown option '%1' (see phonglab --help)").arg(first));
         return kExitUsage;
     }
     return std::nullopt; // a scene file for the GUI

@@ -24,6 +24,11 @@
 
 namespace phonglab::cli {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct GradeCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeCommand)
+};
+
 namespace {
 
 constexpr int kMaxImageSide = 4096;
@@ -39,8 +44,7 @@ struct GradeArgs {
 
 const QString &synopsis()
 {
-    static const QString text = QStringLiteral(
-        "usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
+    static const QString text = GradeCommandWords::tr("usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
         "                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]\n"
         "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
         "[--equation slide|guarded]");
@@ -50,8 +54,7 @@ const QString &synopsis()
 QString helpText()
 {
     return synopsis()
-        + QStringLiteral(
-              "\n\n"
+        + GradeCommandWords::tr("\n\n"
               "Checks every submission in SUBMISSIONS against every scene, as `phonglab check` "
               "does,\n"
               "and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one\n"
@@ -89,7 +92,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show help."));
+                                  GradeCommandWords::tr("Show help."));
     const QCommandLineOption scene(QStringLiteral("scene"), QString(), QStringLiteral("file"));
     const QCommandLineOption out(QStringLiteral("out"), QString(), QStringLiteral("dir"));
     const QCommandLineOption jobs(QStringLiteral("jobs"), QString(), QStringLiteral("n"));
@@ -110,18 +113,18 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usage(positional.isEmpty() ? QStringLiteral("missing the submissions folder")
-                                          : QStringLiteral("exactly one submissions folder "
+        return usage(positional.isEmpty() ? GradeCommandWords::tr("missing the submissions folder")
+                                          : GradeCommandWords::tr("exactly one submissions folder "
                                                            "expected"));
     GradeArgs args;
     GradeSettings &settings = args.settings;
     settings.classFolder = positional.first();
     args.scenePaths = parser.values(scene);
     if (args.scenePaths.isEmpty())
-        return usage(QStringLiteral("--scene: at least one scene expected"));
+        return usage(GradeCommandWords::tr("--scene: at least one scene expected"));
     settings.outFolder = parser.isSet(out) ? parser.value(out) : QStringLiteral("grades");
     if (settings.outFolder.isEmpty())
-        return usage(QStringLiteral("--out: missing the folder"));
+        return usage(GradeCommandWords::tr("--out: missing the folder"));
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &settings.size),
                                  readBindOptions(parser, bind, &settings.bindings)})
         if (!wrong.isEmpty())
@@ -129,14 +132,14 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (parser.isSet(equation)) {
         settings.equation = phongEquationFromKey(parser.value(equation));
         if (!settings.equation)
-            return usage(QStringLiteral("--equation: expected slide or guarded, got '%1'")
+            return usage(GradeCommandWords::tr("--equation: expected slide or guarded, got '%1'")
                              .arg(parser.value(equation)));
     }
     bool ok = true;
     if (parser.isSet(tolerance)) {
         settings.toleranceSteps = parser.value(tolerance).toInt(&ok);
         if (!ok || settings.toleranceSteps < 0 || settings.toleranceSteps > 255)
-            return usage(QStringLiteral("--tolerance: expected 0..255 8-bit steps, got '%1'")
+            return usage(GradeCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
                              .arg(parser.value(tolerance)));
     }
     args.jobs = QThread::idealThreadCount();
@@ -149,7 +152,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const double seconds =
         parser.isSet(timeout) ? parser.value(timeout).toDouble(&ok) : kDefaultTimeoutS;
     if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400)
-        return usage(QStringLiteral("--timeout: expected seconds in (0, 86400], got '%1'")
+        return usage(GradeCommandWords::tr("--timeout: expected seconds in (0, 86400], got '%1'")
                          .arg(parser.value(timeout)));
     args.limits.wallClockMs = int(std::lround(seconds * 1000));
     const qint64 mib = parser.isSet(memory) ? parser.value(memory).toLongLong(&ok)
@@ -195,17 +198,17 @@ Result<> writeFile(const QString &path, const QByteArray &bytes)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(GradeCommandWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
     return {};
 }
 
 Result<> prepareOutFolder(const QString &folder)
 {
     if (!QDir().mkpath(folder + QStringLiteral("/images")))
-        return fail(QStringLiteral("%1: cannot make the folder").arg(folder));
+        return fail(GradeCommandWords::tr("%1: cannot make the folder").arg(folder));
     QTemporaryFile probe(folder + QStringLiteral("/.write-test-XXXXXX"));
     if (!probe.open())
-        return fail(QStringLiteral("%1: cannot write into it: %2").arg(folder, probe.errorString()));
+        return fail(GradeCommandWords::tr("%1: cannot write into it: %2").arg(folder, probe.errorString()));
     return {};
 }
 
@@ -245,7 +248,7 @@ int grade(const GradeArgs &args, int argc, char **argv)
     }
     const QString executable = importExecutable();
     if (executable.isEmpty()) {
-        printError(QStringLiteral("cannot find the phonglab program to run the checks with "
+        printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "
                                   "(set PHONGLAB_EXE)"));
         return kExitFailure;
     }

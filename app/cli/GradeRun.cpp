@@ -5,6 +5,7 @@
 #include "SceneStages.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QEventLoop>
 #include <QFileInfo>
@@ -14,6 +15,11 @@
 #include <unistd.h>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct GradeRunWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeRun)
+};
 
 namespace {
 
@@ -75,7 +81,7 @@ Result<> GradeRun::prepareReferences()
         const GradeScene &scene = m_results.scenes[i];
         QString error;
         if (!referenceFor(int(i), scene.scene, &error))
-            return fail(QStringLiteral("%1: no exact image: %2").arg(scene.path, error));
+            return fail(GradeRunWords::tr("%1: no exact image: %2").arg(scene.path, error));
     }
     if (m_tty)
         std::fprintf(stderr, "\r\033[K");
@@ -234,7 +240,7 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
     const QImage image = reader.read();
     if (image.isNull() || image.size() != m_results.settings.size) {
         failRow(row, GradeVerdict::Crash, QString(),
-                QStringLiteral("the check drew no image (%1)").arg(reader.errorString()));
+                GradeRunWords::tr("the check drew no image (%1)").arg(reader.errorString()));
         dropImage(row, m_results.settings.outFolder);
         return;
     }
@@ -244,7 +250,7 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
     const CheckReference *reference = referenceFor(row.scene, judged, &error);
     if (!reference) {
         failRow(row, GradeVerdict::Error, scene.path,
-                QStringLiteral("no reference: %1").arg(error));
+                GradeRunWords::tr("no reference: %1").arg(error));
         return;
     }
     const GradeSettings &settings = m_results.settings;

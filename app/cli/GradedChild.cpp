@@ -1,5 +1,6 @@
 #include "GradedChild.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QJsonDocument>
 
@@ -11,6 +12,11 @@
 #include <unistd.h>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct GradedChildWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradedChild)
+};
 
 namespace {
 
@@ -58,7 +64,7 @@ GradedChild::GradedChild(const QString &executable, const QStringList &arguments
     connect(&m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart)
             finish({GradedChildEnd::Kind::Crashed, {},
-                    QStringLiteral("the check could not start: %1").arg(m_process.errorString()),
+                    GradedChildWords::tr("the check could not start: %1").arg(m_process.errorString()),
                     0.0});
     });
 }
@@ -91,14 +97,14 @@ void GradedChild::poll()
     if (m_clock.elapsed() > m_limits.wallClockMs) {
         m_process.kill();
         finish({GradedChildEnd::Kind::TimedOut, {},
-                QStringLiteral("ran past the %1 s limit and was stopped (a loop that runs too "
+                GradedChildWords::tr("ran past the %1 s limit and was stopped (a loop that runs too "
                                "long, or a frame the GPU cannot finish)")
                     .arg(m_limits.wallClockMs / 1000.0),
                 seconds});
     } else if (const qint64 bytes = residentBytes(); bytes > m_limits.memoryBytes) {
         m_process.kill();
         finish({GradedChildEnd::Kind::Crashed, {},
-                QStringLiteral("used more than %1 MiB of memory and was stopped")
+                GradedChildWords::tr("used more than %1 MiB of memory and was stopped")
                     .arg(m_limits.memoryBytes / (1024 * 1024)),
                 seconds});
     }
@@ -108,25 +114,25 @@ void GradedChild::onFinished(int exitCode, QProcess::ExitStatus status)
 {
     const double seconds = m_clock.elapsed() / 1000.0;
     if (status == QProcess::CrashExit) {
-        QString message = QStringLiteral("the check crashed with signal %1 (%2)")
+        QString message = GradedChildWords::tr("the check crashed with signal %1 (%2)")
                               .arg(exitCode)
                               .arg(signalName(exitCode));
         if (const QString said = lastLine(m_process.readAllStandardError()); !said.isEmpty())
-            message += QStringLiteral("; it said: ") + said;
+            message += GradedChildWords::tr("; it said: ") + said;
         finish({GradedChildEnd::Kind::Crashed, {}, message, seconds});
         return;
     }
     if (exitCode == kGradedChildOutOfMemory) {
         finish({GradedChildEnd::Kind::Crashed, {},
-                QStringLiteral("the check ran out of memory"), seconds});
+                GradedChildWords::tr("the check ran out of memory"), seconds});
         return;
     }
     const QJsonObject answer = answerIn(m_process.readAllStandardOutput());
     if (answer.isEmpty()) {
-        QString message = QStringLiteral("the check exited with status %1 without an answer")
+        QString message = GradedChildWords::tr("the check exited with status %1 without an answer")
                               .arg(exitCode);
         if (const QString said = lastLine(m_process.readAllStandardError()); !said.isEmpty())
-            message += QStringLiteral("; it said: ") + said;
+            message += GradedChildWords::tr("; it said: ") + said;
         finish({GradedChildEnd::Kind::Crashed, {}, message, seconds});
         return;
     }

@@ -3,6 +3,7 @@
 #include "CliCommon.h"
 #include "mesh/MeshLoader.h"
 
+#include <QCoreApplication>
 #include <QCommandLineParser>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,6 +12,11 @@
 #include <variant>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshInfoCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::MeshInfoCommand)
+};
 
 namespace {
 
@@ -26,19 +32,18 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show help."));
+                                  MeshInfoCommandWords::tr("Show help."));
     const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
-    const QCommandLineOption normals(QStringLiteral("normals"), QStringLiteral("Normal method."),
+    const QCommandLineOption normals(QStringLiteral("normals"), MeshInfoCommandWords::tr("Normal method."),
                                      QStringLiteral("method"));
-    const QCommandLineOption crease(QStringLiteral("crease"), QStringLiteral("Crease angle."),
+    const QCommandLineOption crease(QStringLiteral("crease"), MeshInfoCommandWords::tr("Crease angle."),
                                     QStringLiteral("deg"));
     parser.addOptions({help, json, normals, crease});
 
     const QString synopsis = QString::fromLatin1(kUsage);
     const QString helpText =
         synopsis
-        + QStringLiteral(
-            "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its "
+        + MeshInfoCommandWords::tr("\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its "
             "vertices,\n"
             "faces, where the normals came from, bounds, split vertices, warnings and load "
             "time.\n\n"
@@ -54,7 +59,7 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
         return *exit;
     if (parser.positionalArguments().size() != 1)
-        return usage(QStringLiteral("expected exactly one mesh file"));
+        return usage(MeshInfoCommandWords::tr("expected exactly one mesh file"));
 
     MeshInfoArgs args;
     args.path = parser.positionalArguments().first();
@@ -63,7 +68,7 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
         const auto method = normalMethodFromName(parser.value(normals));
         if (!method)
             return usage(
-                QStringLiteral("--normals: unknown method '%1' (known: %2)")
+                MeshInfoCommandWords::tr("--normals: unknown method '%1' (known: %2)")
                     .arg(parser.value(normals), normalMethodNames().join(QStringLiteral(", "))));
         args.normals.method = *method;
     }
@@ -71,7 +76,7 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
         bool ok = false;
         const double degrees = parser.value(crease).toDouble(&ok);
         if (!ok || !(degrees >= 0.0 && degrees <= 180.0))
-            return usage(QStringLiteral("--crease: expected degrees in [0, 180], got '%1'")
+            return usage(MeshInfoCommandWords::tr("--crease: expected degrees in [0, 180], got '%1'")
                              .arg(parser.value(crease)));
         args.normals.creaseAngleDeg = degrees;
     }
@@ -141,20 +146,20 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
     printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
     printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
-    const QString normals = s.normalsFromFile ? QStringLiteral("from the file, per face corner")
+    const QString normals = s.normalsFromFile ? MeshInfoCommandWords::tr("from the file, per face corner")
         : path.startsWith(QLatin1String("builtin:"))
         ? QStringLiteral("analytic")
-        : QStringLiteral("computed (%1)").arg(methodDescription(s));
+        : MeshInfoCommandWords::tr("computed (%1)").arg(methodDescription(s));
     printLine(QStringLiteral("normals:         %1").arg(normals));
-    printLine(QStringLiteral("gpu vertices:    %1 (%2 split for differing normals)")
+    printLine(MeshInfoCommandWords::tr("gpu vertices:    %1 (%2 split for differing normals)")
                   .arg(s.vertices)
                   .arg(s.splitVertices));
     printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
     printLine(QStringLiteral("surface:         %1")
                   .arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
-    printLine(QStringLiteral("load time:       %1 ms%2")
+    printLine(MeshInfoCommandWords::tr("load time:       %1 ms%2")
                   .arg(s.loadMs, 0, 'f', 1)
-                  .arg(s.fromCache ? QStringLiteral(" (from the mesh cache)") : QString()));
+                  .arg(s.fromCache ? MeshInfoCommandWords::tr(" (from the mesh cache)") : QString()));
     printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
     for (const QString &w : r.warnings)
         printLine(QStringLiteral("  - ") + w);

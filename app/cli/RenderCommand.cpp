@@ -7,6 +7,7 @@
 #include "core/ShadingMethod.h"
 #include "render/OffscreenRenderer.h"
 
+#include <QCoreApplication>
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QSurfaceFormat>
@@ -15,6 +16,11 @@
 #include <variant>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct RenderCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::RenderCommand)
+};
 
 namespace {
 
@@ -35,35 +41,34 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show help."));
+                                  RenderCommandWords::tr("Show help."));
     parser.addOption(help);
-    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file (JSON)."));
+    parser.addPositionalArgument(QStringLiteral("scene"), RenderCommandWords::tr("Scene file (JSON)."));
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
                                     QStringLiteral("Output PNG file."), QStringLiteral("file"));
     const QCommandLineOption size(QStringLiteral("size"),
-                                  QStringLiteral("Image size, default 800x600."),
+                                  RenderCommandWords::tr("Image size, default 800x600."),
                                   QStringLiteral("WxH"));
     const QCommandLineOption vertex(QStringLiteral("vertex"),
-                                    QStringLiteral("Vertex shader to use instead of the scene's."),
+                                    RenderCommandWords::tr("Vertex shader to use instead of the scene's."),
                                     QStringLiteral("file"));
     const QCommandLineOption fragment(
         QStringLiteral("fragment"),
-        QStringLiteral("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
+        RenderCommandWords::tr("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
     const QCommandLineOption shading(QStringLiteral("shading"),
-                                     QStringLiteral("Shading method instead of the scene's."),
+                                     RenderCommandWords::tr("Shading method instead of the scene's."),
                                      QStringLiteral("name"));
     const QCommandLineOption bind(QStringLiteral("bind"),
-                                  QStringLiteral("What a uniform or input of the shader holds."),
+                                  RenderCommandWords::tr("What a uniform or input of the shader holds."),
                                   QStringLiteral("NAME=MEANING"));
     parser.addOptions({output, size, vertex, fragment, shading, bind});
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis =
-        QStringLiteral("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
+        RenderCommandWords::tr("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
                        "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]");
     const QString helpText = synopsis
-        + QStringLiteral(
-              "\n\n"
+        + RenderCommandWords::tr("\n\n"
               "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB "
               "PNG.\n\n"
               "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
@@ -83,8 +88,8 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usage(positional.isEmpty() ? QStringLiteral("missing the scene file")
-                                          : QStringLiteral("exactly one scene file expected"));
+        return usage(positional.isEmpty() ? RenderCommandWords::tr("missing the scene file")
+                                          : RenderCommandWords::tr("exactly one scene file expected"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("missing -o OUT.png"));
 
@@ -144,7 +149,7 @@ int render(const RenderArgs &args, int argc, char **argv)
     for (const ShaderDiagnostic &d : program.diagnostics)
         printErrLine(d.format());
     if (!program.ok) {
-        printError(QStringLiteral("the shaders did not compile; no image written"));
+        printError(RenderCommandWords::tr("the shaders did not compile; no image written"));
         return kExitFailure;
     }
     for (const QString &problem : renderer.program().bindings().problems) {
@@ -155,7 +160,7 @@ int render(const RenderArgs &args, int argc, char **argv)
         printErrLine(QStringLiteral("phonglab: warning: %1").arg(unbound.message));
     const QImage image = offscreen.renderImage(args.size);
     if (image.isNull()) {
-        printError(QStringLiteral("rendering failed"));
+        printError(RenderCommandWords::tr("rendering failed"));
         return kExitFailure;
     }
     if (const std::optional<QString> depth = depthPrecisionWarning(renderer.depthRange()))

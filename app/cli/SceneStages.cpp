@@ -4,11 +4,17 @@
 #include "core/ResourcePaths.h"
 #include "render/ShaderSource.h"
 
+#include <QCoreApplication>
 #include <QSaveFile>
 
 #include <algorithm>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct SceneStagesWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::SceneStages)
+};
 
 namespace {
 
@@ -40,7 +46,7 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
         return {};
     const auto parsed = parseSizeArgument(parser.value(option), 1, maxSide);
     if (!parsed)
-        return QStringLiteral("--size: expected WxH with 1..%1 pixels per side, got '%2'")
+        return SceneStagesWords::tr("--size: expected WxH with 1..%1 pixels per side, got '%2'")
             .arg(maxSide)
             .arg(parser.value(option));
     *size = *parsed;
@@ -54,7 +60,7 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
         return {};
     *shading = shadingFromName(parser.value(option));
     if (!*shading)
-        return QStringLiteral("--shading: unknown method '%1' (known: %2)")
+        return SceneStagesWords::tr("--shading: unknown method '%1' (known: %2)")
             .arg(parser.value(option), shadingNames().join(QStringLiteral(", ")));
     return {};
 }
@@ -141,16 +147,16 @@ std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene 
         if (b->isExplicit || b->variable.type == GlslType::Other
             || sceneGivesValue(scene, b->variable.name) || !allZero(snapshot, *b))
             continue;
-        QString message = QStringLiteral("uniform %1 (%2) is bound to nothing, so the shader "
+        QString message = SceneStagesWords::tr("uniform %1 (%2) is bound to nothing, so the shader "
                                          "reads zero")
                               .arg(b->variable.name, glslTypeSpelling(b->variable.type));
         if (const auto likely = likelyMeaning(b->variable))
-            message += QStringLiteral("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
+            message += SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
                                       "scene)")
                            .arg(bindingMeaningDescription(*likely), b->variable.name,
                                 bindingMeaningKey(*likely));
         else
-            message += QStringLiteral("; bind it with --bind %1=MEANING (meanings: %2), or give "
+            message += SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give "
                                       "it a value in the scene's \"uniforms\"")
                            .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
         out.push_back({b->variable.name, message});
@@ -186,7 +192,7 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
     for (PointLight &l : out.lights)
         if (l.enabled && kept++ >= *capacity)
             l.enabled = false;
-    *note = QStringLiteral("the shader takes %1 light%2 (its light uniforms have room for no "
+    *note = SceneStagesWords::tr("the shader takes %1 light%2 (its light uniforms have room for no "
                            "more) and the scene has %3 enabled: judged with the first %1 alone")
                 .arg(*capacity)
                 .arg(*capacity == 1 ? QString() : QStringLiteral("s"))
@@ -198,13 +204,13 @@ Result<> writePng(const QImage &image, const QString &path)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(SceneStagesWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
     if (!image.save(&file, "PNG")) {
         file.cancelWriting();
-        return fail(QStringLiteral("%1: PNG encoding failed").arg(path));
+        return fail(SceneStagesWords::tr("%1: PNG encoding failed").arg(path));
     }
     if (!file.commit())
-        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(SceneStagesWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
     return {};
 }
 

@@ -5,6 +5,7 @@
 #include "PhongReference.h"
 #include "ReferenceSample.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,6 +13,11 @@
 #include <vector>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct AnalyticRaycasterWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::AnalyticRaycaster)
+};
 
 namespace {
 
@@ -133,7 +139,7 @@ Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double as
         const SceneObject &object = scene.objects[i];
         const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
         if (!surface)
-            return fail(QStringLiteral("Object %1: mesh \"%2\" has no analytic surface "
+            return fail(AnalyticRaycasterWords::tr("Object %1: mesh \"%2\" has no analytic surface "
                                        "(the reference ray caster knows builtin:sphere, "
                                        "builtin:torus and builtin:cube)")
                             .arg(i)
@@ -354,7 +360,7 @@ Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
                                     const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0)
-        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(AnalyticRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
     const Result<std::vector<PreparedObject>> objects =
         prepareObjects(scene, double(width) / double(height), standIns);
     if (!objects)

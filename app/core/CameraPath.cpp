@@ -2,6 +2,7 @@
 
 #include "SceneJsonText.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -11,6 +12,11 @@
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct CameraPathWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::CameraPath)
+};
 
 namespace {
 
@@ -86,28 +92,28 @@ public:
         if (!doc)
             return fail(doc.error());
         if (!doc->isObject())
-            return fail(QStringLiteral("top level: expected a JSON object"));
+            return fail(CameraPathWords::tr("top level: expected a JSON object"));
         const QJsonObject root = doc->object();
         int frames = kDefaultPathFrames;
         if (const QJsonValue f = root.value(QStringLiteral("frames")); !f.isUndefined()) {
             if (!f.isDouble() || f.toDouble() != std::floor(f.toDouble()) || f.toDouble() < 2
                 || f.toDouble() > 10000)
-                return fail(QStringLiteral("frames: expected a whole number from 2 to 10000"));
+                return fail(CameraPathWords::tr("frames: expected a whole number from 2 to 10000"));
             frames = f.toInt();
         }
         const QJsonValue list = root.value(QStringLiteral("keyframes"));
         if (!list.isArray() || list.toArray().size() < 2)
-            return fail(QStringLiteral("keyframes: expected an array of at least 2 keyframes"));
+            return fail(CameraPathWords::tr("keyframes: expected an array of at least 2 keyframes"));
         std::vector<Camera> keys;
         Camera previous = start;
         const QJsonArray array = list.toArray();
         for (qsizetype i = 0; i < array.size(); ++i) {
             const QString path = QStringLiteral("keyframes[%1]").arg(i);
             if (!array.at(i).isObject())
-                return fail(path + QStringLiteral(": expected an object"));
+                return fail(path + CameraPathWords::tr(": expected an object"));
             const QJsonObject key = array.at(i).toObject();
             if (!key.contains(QStringLiteral("eye")))
-                return fail(path + QStringLiteral(".eye: required field missing"));
+                return fail(path + CameraPathWords::tr(".eye: required field missing"));
             Camera c = previous;
             if (!vec3(key, QStringLiteral("eye"), path, c.eye)
                 || !vec3(key, QStringLiteral("target"), path, c.target)
@@ -115,12 +121,12 @@ public:
                 return fail(m_error);
             if (const QJsonValue fov = key.value(QStringLiteral("fov_deg")); !fov.isUndefined()) {
                 if (!fov.isDouble() || !(fov.toDouble() > 0.0 && fov.toDouble() < 180.0))
-                    return fail(path + QStringLiteral(".fov_deg: expected degrees in (0, 180)"));
+                    return fail(path + CameraPathWords::tr(".fov_deg: expected degrees in (0, 180)"));
                 c.fovDeg = fov.toDouble();
             }
             if (!viewable(c))
                 return fail(path
-                            + QStringLiteral(": eye and target coincide, or up is along the view"));
+                            + CameraPathWords::tr(": eye and target coincide, or up is along the view"));
             keys.push_back(c);
             previous = c;
         }
@@ -133,7 +139,7 @@ public:
             // Two good keyframes can still pass through a bad camera (eye
             // and target swapping places, up turning over).
             if (!viewable(out.cameras.back()))
-                return fail(QStringLiteral("frame %1, between keyframes[%2] and [%3]: eye and "
+                return fail(CameraPathWords::tr("frame %1, between keyframes[%2] and [%3]: eye and "
                                            "target coincide, or up is along the view")
                                 .arg(i)
                                 .arg(k)
@@ -156,7 +162,7 @@ private:
         for (const QJsonValue &v : a)
             ok = ok && v.isDouble() && std::abs(v.toDouble()) <= kLargest;
         if (!ok) {
-            m_error = QStringLiteral("%1.%2: expected 3 numbers, each at most 1e150 in size")
+            m_error = CameraPathWords::tr("%1.%2: expected 3 numbers, each at most 1e150 in size")
                           .arg(path, field);
             return false;
         }
@@ -178,10 +184,10 @@ Result<CameraPath> loadCameraPath(const QString &file, const Camera &start)
 {
     QFile in(file);
     if (!in.open(QIODevice::ReadOnly))
-        return fail(QStringLiteral("%1: cannot read camera path (%2)").arg(file, in.errorString()));
+        return fail(CameraPathWords::tr("%1: cannot read camera path (%2)").arg(file, in.errorString()));
     // A keyframe file is a few lines; refuse anything huge before reading it.
     if (in.size() > 16 * 1024 * 1024)
-        return fail(QStringLiteral("%1: too large for a camera path").arg(file));
+        return fail(CameraPathWords::tr("%1: too large for a camera path").arg(file));
     Result<CameraPath> path =
         parseCameraPath(in.readAll(), start, QFileInfo(file).completeBaseName());
     if (!path)

@@ -1,5 +1,6 @@
 #include "DepthRange.h"
 
+#include <QCoreApplication>
 #include <QString>
 
 #include <algorithm>
@@ -7,6 +8,11 @@
 #include <limits>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct DepthRangeWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::DepthRange)
+};
 
 BoundingSphere boundingSphere(const glm::dvec3 &lo, const glm::dvec3 &hi, const glm::dmat4 &model)
 {
@@ -51,12 +57,10 @@ std::optional<QString> depthPrecisionWarning(const DepthRange &range)
     const double resolved =
         100.0 * range.ratio() / double(1 << 24); // percent of the distance, at far
     const QString effect = resolved < 50.0
-        ? QStringLiteral(
-              "surfaces closer than about %1 % of their distance may show through each other")
+        ? DepthRangeWords::tr("surfaces closer than about %1 % of their distance may show through each other")
               .arg(resolved, 0, 'g', 2)
-        : QStringLiteral("the depth buffer cannot tell surfaces apart");
-    return QStringLiteral(
-               "camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
+        : DepthRangeWords::tr("the depth buffer cannot tell surfaces apart");
+    return DepthRangeWords::tr("camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
                "object's bounds); %4: raise near")
         .arg(range.nearPlane, 0, 'g', 3)
         .arg(range.farPlane, 0, 'g', 3)

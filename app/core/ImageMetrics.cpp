@@ -2,6 +2,7 @@
 
 #include "PhongReference.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +11,11 @@
 #include <vector>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ImageMetricsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ImageMetrics)
+};
 
 namespace {
 
@@ -145,10 +151,10 @@ void setHeatColor(uchar *out, int error)
 QString ImageComparison::summary() const
 {
     if (pixelsCompared == 0)
-        return QStringLiteral("no pixels compared");
+        return ImageMetricsWords::tr("no pixels compared");
     const QString psnrText =
         std::isinf(psnr) ? QStringLiteral("inf") : QString::number(psnr, 'f', 2);
-    return QStringLiteral("PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px")
+    return ImageMetricsWords::tr("PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px")
         .arg(psnrText)
         .arg(rmse, 0, 'f', 2)
         .arg(maxError)

@@ -7,12 +7,18 @@
 #include "ReferenceSample.h"
 #include "SceneHits.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshRaycasterWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshRaycaster)
+};
 
 namespace {
 
@@ -60,7 +66,7 @@ Result<> prepareObjects(const Scene &scene,
                         const std::function<bool(double)> &progress)
 {
     if (objectMeshes.size() != scene.objects.size())
-        return fail(QStringLiteral("The scene has %1 objects but %2 meshes were given")
+        return fail(MeshRaycasterWords::tr("The scene has %1 objects but %2 meshes were given")
                         .arg(scene.objects.size())
                         .arg(objectMeshes.size()));
     std::size_t trianglesToBuild = 0;
@@ -70,12 +76,12 @@ Result<> prepareObjects(const Scene &scene,
         if (!mesh) {
             if (!builtinSurface(scene.objects[i].mesh))
                 return fail(
-                    QStringLiteral("Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                    MeshRaycasterWords::tr("Object %1: mesh \"%2\" was given no triangle mesh and has no "
                                    "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
                         .arg(i)
                         .arg(scene.objects[i].mesh));
         } else if (!mesh->isValid()) {
-            return fail(QStringLiteral("Object %1: the triangle mesh for \"%2\" is not valid")
+            return fail(MeshRaycasterWords::tr("Object %1: the triangle mesh for \"%2\" is not valid")
                             .arg(i)
                             .arg(scene.objects[i].mesh));
         } else if (bvhs.emplace(mesh, nullptr).second) {
@@ -244,7 +250,7 @@ Result<SceneHits> castSceneHits(const Scene &scene,
                                 int width, int height, const std::function<bool(double)> &progress)
 {
     if (width <= 0 || height <= 0)
-        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
     std::vector<PreparedObject> objects;
     if (const Result<> prepared =
             prepareObjects(scene, objectMeshes, double(width) / double(height), objects, progress);
@@ -294,7 +300,7 @@ Result<std::unique_ptr<SceneDepthCaster>> SceneDepthCaster::create(
     int height)
 {
     if (width <= 0 || height <= 0)
-        return fail(QStringLiteral("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
     std::unique_ptr<SceneDepthCaster> caster(new SceneDepthCaster);
     caster->m_objects = std::make_unique<Objects>();
     if (const Result<> prepared = prepareObjects(

@@ -2,11 +2,17 @@
 
 #include "PhongReference.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 #include <algorithm>
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct PixelTermsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PixelTerms)
+};
 
 namespace {
 
@@ -86,12 +92,12 @@ QString PixelTerms::toText() const
 {
     QStringList lines;
     const QString equation = shading == ReferenceShading::BlinnPhong ? QStringLiteral("Blinn-Phong")
-        : shading == ReferenceShading::Normals                       ? QStringLiteral("normals view")
+        : shading == ReferenceShading::Normals                       ? PixelTermsWords::tr("normals view")
         : this->equation == PhongEquation::Slide
-        ? QStringLiteral("Phong, the slide's equation (a highlight even where N·L <= 0)")
+        ? PixelTermsWords::tr("Phong, the slide's equation (a highlight even where N·L <= 0)")
         : QStringLiteral("Phong");
     lines
-        << QStringLiteral("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
+        << PixelTermsWords::tr("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
     lines << QStringLiteral("P world  %1").arg(vec(positionWorld));
     lines << QStringLiteral("P camera %1").arg(vec(positionCamera));
     lines << QStringLiteral("N        %1").arg(vec(N));
@@ -113,7 +119,7 @@ QString PixelTerms::toText() const
         lines << QStringLiteral("  diffuse  %1").arg(vec(t.diffuse));
         lines << QStringLiteral("  specular %1").arg(vec(t.specular));
     }
-    lines << QStringLiteral("I exact  %1 -> 8-bit (%2, %3, %4)")
+    lines << PixelTermsWords::tr("I exact  %1 -> 8-bit (%2, %3, %4)")
                  .arg(vec(intensity))
                  .arg(encodeChannel(intensity.r))
                  .arg(encodeChannel(intensity.g))

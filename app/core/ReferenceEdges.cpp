@@ -4,10 +4,16 @@
 #include "MeshRaycaster.h"
 #include "ParallelRows.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ReferenceEdgesWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ReferenceEdges)
+};
 
 namespace {
 
@@ -73,7 +79,7 @@ Result<std::vector<std::uint8_t>> awayFromSilhouettes(
     if (!ambiguous)
         return fail(ambiguous.error());
     if (ambiguous->size() != edges.size())
-        return fail(QStringLiteral("The reference is %1x%2 but the edges were cast at another size")
+        return fail(ReferenceEdgesWords::tr("The reference is %1x%2 but the edges were cast at another size")
                         .arg(reference.width)
                         .arg(reference.height));
     for (std::size_t i = 0; i < edges.size(); ++i)

@@ -2,6 +2,7 @@
 
 #include "SceneJsonText.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -11,6 +12,11 @@
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct SceneWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::SceneJson)
+};
 
 namespace {
 
@@ -100,14 +106,14 @@ void SceneReader::warnUnknownKeys(const QJsonObject &object, const QString &path
 {
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (std::find(known.begin(), known.end(), it.key()) == known.end())
-            m_warnings << childPath(path, it.key()) + QStringLiteral(": unknown key, ignored");
+            m_warnings << childPath(path, it.key()) + SceneWords::tr(": unknown key, ignored");
     }
 }
 
 bool SceneReader::readObject(const QJsonValue &value, const QString &path, QJsonObject &out)
 {
     if (!value.isObject() || overflowLiteral(value))
-        return fail(path, QStringLiteral("expected an object (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected an object (got %1)").arg(describeType(value)));
     out = value.toObject();
     return true;
 }
@@ -118,12 +124,12 @@ bool SceneReader::readNumber(const QJsonValue &value, const QString &path, doubl
         return true;
     if (const auto literal = overflowLiteral(value))
         return fail(path,
-                    QStringLiteral("must be a finite number (got %1, out of range)").arg(*literal));
+                    SceneWords::tr("must be a finite number (got %1, out of range)").arg(*literal));
     if (!value.isDouble())
-        return fail(path, QStringLiteral("expected a number (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected a number (got %1)").arg(describeType(value)));
     // Qt versions differ on whether 1e999 is a syntax error or inf; refuse inf here too.
     if (!std::isfinite(value.toDouble()))
-        return fail(path, QStringLiteral("must be a finite number (got %1)").arg(value.toDouble()));
+        return fail(path, SceneWords::tr("must be a finite number (got %1)").arg(value.toDouble()));
     out = value.toDouble();
     return true;
 }
@@ -132,7 +138,7 @@ bool SceneReader::readVec3(const QJsonValue &value, const QString &path, glm::dv
 {
     if (value.isUndefined())
         return true;
-    const QString expected = QStringLiteral("expected an array of 3 numbers");
+    const QString expected = SceneWords::tr("expected an array of 3 numbers");
     if (!value.isArray())
         return fail(path, expected + QStringLiteral(" (got %1)").arg(describeType(value)));
     const QJsonArray array = value.toArray();
@@ -156,7 +162,7 @@ bool SceneReader::readColor(const QJsonValue &value, const QString &path, glm::d
     for (int i = 0; i < 3; ++i)
         if (color[i] < 0.0)
             return fail(indexPath(path, i),
-                        QStringLiteral("must be >= 0 (got %1)").arg(number(color[i])));
+                        SceneWords::tr("must be >= 0 (got %1)").arg(number(color[i])));
     out = color;
     return true;
 }
@@ -164,12 +170,12 @@ bool SceneReader::readColor(const QJsonValue &value, const QString &path, glm::d
 bool SceneReader::readMesh(const QJsonValue &value, const QString &path, QString &out)
 {
     if (value.isUndefined())
-        return fail(path, QStringLiteral("required field missing"));
+        return fail(path, SceneWords::tr("required field missing"));
     if (!value.isString())
-        return fail(path, QStringLiteral("expected a string (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected a string (got %1)").arg(describeType(value)));
     if (value.toString().isEmpty())
         return fail(path,
-                    QStringLiteral("must not be empty (give a file path or \"builtin:sphere\")"));
+                    SceneWords::tr("must not be empty (give a file path or \"builtin:sphere\")"));
     out = value.toString();
     return true;
 }
@@ -192,7 +198,7 @@ bool SceneReader::readTransform(const QJsonValue &value, const QString &path, Tr
     // A zero scale collapses the mesh and makes the normal matrix singular.
     for (int i = 0; i < 3; ++i)
         if (transform.scale[i] == 0.0)
-            return fail(indexPath(childPath(path, "scale"_L1), i), QStringLiteral("must not be 0"));
+            return fail(indexPath(childPath(path, "scale"_L1), i), SceneWords::tr("must not be 0"));
     out = transform;
     return true;
 }
@@ -215,7 +221,7 @@ bool SceneReader::readMaterial(const QJsonValue &value, const QString &path, Mat
     // pow(cos, n) with n <= 0 is 1 (or inf) for surfaces facing away from the highlight.
     if (material.shininess <= 0.0)
         return fail(childPath(path, "shininess"_L1),
-                    QStringLiteral("must be > 0 (got %1)").arg(number(material.shininess)));
+                    SceneWords::tr("must be > 0 (got %1)").arg(number(material.shininess)));
     out = material;
     return true;
 }
@@ -242,7 +248,7 @@ bool SceneReader::readCamera(const QJsonValue &value, const QString &path, Camer
     if (const QJsonValue frame = object.value("frame_objects"_L1); !frame.isUndefined()) {
         if (!frame.isBool())
             return fail(childPath(path, "frame_objects"_L1),
-                        QStringLiteral("expected true or false (got %1)").arg(describeType(frame)));
+                        SceneWords::tr("expected true or false (got %1)").arg(describeType(frame)));
         camera.frameObjects = frame.toBool();
     }
     out = camera;
@@ -255,23 +261,23 @@ bool SceneReader::validateCamera(const Camera &camera, const QString &path)
     if (!(camera.fovDeg > 0.0 && camera.fovDeg < 180.0))
         return fail(
             childPath(path, "fov_deg"_L1),
-            QStringLiteral("must be in (0, 180) degrees (got %1)").arg(number(camera.fovDeg)));
+            SceneWords::tr("must be in (0, 180) degrees (got %1)").arg(number(camera.fovDeg)));
     if (camera.nearPlane <= 0.0)
         return fail(childPath(path, "near"_L1),
-                    QStringLiteral("must be > 0 (got %1)").arg(number(camera.nearPlane)));
+                    SceneWords::tr("must be > 0 (got %1)").arg(number(camera.nearPlane)));
     if (camera.farPlane <= camera.nearPlane)
         return fail(childPath(path, "far"_L1),
-                    QStringLiteral("must be greater than near (%1) (got %2)")
+                    SceneWords::tr("must be greater than near (%1) (got %2)")
                         .arg(number(camera.nearPlane), number(camera.farPlane)));
     if (camera.eye == camera.target)
-        return fail(childPath(path, "target"_L1), QStringLiteral("must differ from eye"));
+        return fail(childPath(path, "target"_L1), SceneWords::tr("must differ from eye"));
     const double upLength = glm::length(camera.up);
     if (upLength == 0.0)
-        return fail(childPath(path, "up"_L1), QStringLiteral("must not be the zero vector"));
+        return fail(childPath(path, "up"_L1), SceneWords::tr("must not be the zero vector"));
     const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
     if (glm::length(glm::cross(forward, camera.up / upLength)) < 1e-9)
         return fail(childPath(path, "up"_L1),
-                    QStringLiteral("must not be parallel to the view direction (target - eye)"));
+                    SceneWords::tr("must not be parallel to the view direction (target - eye)"));
     return true;
 }
 
@@ -285,7 +291,7 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
         {"position"_L1, "diffuse"_L1, "specular"_L1, "attenuation"_L1, "name"_L1, "enabled"_L1});
     // A light with no position would silently sit at the origin, inside the object.
     if (!object.contains("position"_L1))
-        return fail(childPath(path, "position"_L1), QStringLiteral("required field missing"));
+        return fail(childPath(path, "position"_L1), SceneWords::tr("required field missing"));
     PointLight light;
     const QString attenuationPath = childPath(path, "attenuation"_L1);
     if (!readVec3(object.value("position"_L1), childPath(path, "position"_L1), light.position)
@@ -297,18 +303,18 @@ bool SceneReader::readLight(const QJsonValue &value, const QString &path, PointL
     const double sum = light.attenuation.x + light.attenuation.y + light.attenuation.z;
     if (sum <= 0.0)
         return fail(attenuationPath,
-                    QStringLiteral("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
+                    SceneWords::tr("c1 + c2 + c3 must be positive (got %1)").arg(number(sum)));
     if (const QJsonValue name = object.value("name"_L1); !name.isUndefined()) {
         if (!name.isString())
             return fail(childPath(path, "name"_L1),
-                        QStringLiteral("expected a string (got %1)").arg(describeType(name)));
+                        SceneWords::tr("expected a string (got %1)").arg(describeType(name)));
         light.name = name.toString().toStdString();
     }
     if (const QJsonValue enabled = object.value("enabled"_L1); !enabled.isUndefined()) {
         if (!enabled.isBool())
             return fail(
                 childPath(path, "enabled"_L1),
-                QStringLiteral("expected true or false (got %1)").arg(describeType(enabled)));
+                SceneWords::tr("expected true or false (got %1)").arg(describeType(enabled)));
         light.enabled = enabled.toBool();
     }
     out = light;
@@ -321,12 +327,12 @@ bool SceneReader::readLights(const QJsonValue &value, const QString &path,
     if (value.isUndefined())
         return true;
     if (!value.isArray())
-        return fail(path, QStringLiteral("expected an array (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected an array (got %1)").arg(describeType(value)));
     const QJsonArray array = value.toArray();
     // The shaders have fixed-size light arrays.
     if (array.size() > kMaxLights)
         return fail(path,
-                    QStringLiteral("at most %1 lights are supported (got %2)")
+                    SceneWords::tr("at most %1 lights are supported (got %2)")
                         .arg(kMaxLights)
                         .arg(array.size()));
     std::vector<PointLight> lights(array.size());
@@ -341,7 +347,7 @@ bool SceneReader::readFormat(const QJsonValue &value, const QString &path)
 {
     if (value.isUndefined())
         return true; // format 1: written before the field existed
-    const QString expected = QStringLiteral("expected a whole number from 1");
+    const QString expected = SceneWords::tr("expected a whole number from 1");
     if (const auto literal = overflowLiteral(value))
         return fail(path, expected + QStringLiteral(", got %1").arg(*literal));
     if (!value.isDouble())
@@ -351,7 +357,7 @@ bool SceneReader::readFormat(const QJsonValue &value, const QString &path)
         return fail(path, expected + QStringLiteral(", got %1").arg(number(format)));
     if (format > kSceneFormat)
         m_warnings << path
-                + QStringLiteral(": %1 is newer than this PhongLab's %2; read as %2, fields it "
+                + SceneWords::tr(": %1 is newer than this PhongLab's %2; read as %2, fields it "
                                  "does not know are ignored")
                       .arg(number(format))
                       .arg(kSceneFormat);
@@ -364,12 +370,12 @@ bool SceneReader::readShading(const QJsonValue &value, const QString &path, Shad
     if (value.isUndefined())
         return true;
     if (!value.isString())
-        return fail(path, QStringLiteral("expected a string (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected a string (got %1)").arg(describeType(value)));
     // Before format 2, "flat" named the per-fragment shader now called
     // "faceted": an old scene keeps the look it was saved with.
     if (m_format < 2 && value.toString() == "flat"_L1) {
         m_warnings << path
-                + QStringLiteral(": \"flat\" in a scene without \"format\": 2 is the "
+                + SceneWords::tr(": \"flat\" in a scene without \"format\": 2 is the "
                                  "per-fragment shader now called \"faceted\"; loaded as "
                                  "\"faceted\" (saving writes that; write \"format\": 2 for "
                                  "flat shading once per face)");
@@ -379,7 +385,7 @@ bool SceneReader::readShading(const QJsonValue &value, const QString &path, Shad
     const auto method = shadingFromName(value.toString());
     if (!method)
         return fail(path,
-                    QStringLiteral("unknown shading method \"%1\" (known: %2)")
+                    SceneWords::tr("unknown shading method \"%1\" (known: %2)")
                         .arg(value.toString(), shadingNames().join(QStringLiteral(", "))));
     out = *method;
     return true;
@@ -402,11 +408,10 @@ bool SceneReader::readShaderFiles(const QJsonValue &value, const QString &path, 
         const QString filePath = childPath(path, keys[i]);
         if (!file.isString())
             return fail(filePath,
-                        QStringLiteral("expected a string (got %1)").arg(describeType(file)));
+                        SceneWords::tr("expected a string (got %1)").arg(describeType(file)));
         if (file.toString().isEmpty())
             return fail(filePath,
-                        QStringLiteral(
-                            "must not be empty (give a shader file path, or leave the key out)"));
+                        SceneWords::tr("must not be empty (give a shader file path, or leave the key out)"));
         files[i] = file.toString();
     }
     out.vertexShader = files[0];
@@ -418,10 +423,10 @@ bool SceneReader::readObjectList(const QJsonValue &value, const QString &path,
                                  std::vector<SceneObject> &out)
 {
     if (!value.isArray())
-        return fail(path, QStringLiteral("expected an array (got %1)").arg(describeType(value)));
+        return fail(path, SceneWords::tr("expected an array (got %1)").arg(describeType(value)));
     const QJsonArray array = value.toArray();
     if (array.isEmpty())
-        return fail(path, QStringLiteral("must list at least one object"));
+        return fail(path, SceneWords::tr("must list at least one object"));
     std::vector<SceneObject> objects(array.size());
     for (qsizetype i = 0; i < array.size(); ++i) {
         const QString objectPath = indexPath(path, i);
@@ -478,7 +483,7 @@ bool SceneReader::readDetail(const QJsonValue &value, const QString &path, Scene
         out.autoDetail = true;
         return true;
     }
-    const QString expected = QStringLiteral("expected a number in (0, 1]");
+    const QString expected = SceneWords::tr("expected a number in (0, 1]");
     if (const auto literal = overflowLiteral(value))
         return fail(path, expected + QStringLiteral(", got %1").arg(*literal));
     if (!value.isDouble())
@@ -508,16 +513,16 @@ bool SceneReader::readObjects(const QJsonObject &root, std::vector<SceneObject> 
     const bool hasObjects = root.contains("objects"_L1);
     if (hasMesh && hasObjects)
         return fail(QStringLiteral("objects"),
-                    QStringLiteral("cannot be combined with \"mesh\" (use one form)"));
+                    SceneWords::tr("cannot be combined with \"mesh\" (use one form)"));
     if (!hasMesh && !hasObjects)
         return fail(QStringLiteral("mesh"),
-                    QStringLiteral("required field missing (or give \"objects\")"));
+                    SceneWords::tr("required field missing (or give \"objects\")"));
     if (hasObjects) {
         // Top-level transform/material belong to the single-object form only.
         for (const auto key : {"transform"_L1, "material"_L1, "normals"_L1, "detail"_L1})
             if (root.contains(key))
                 m_warnings << QString(key)
-                        + QStringLiteral(": ignored with \"objects\" (give each object its own)");
+                        + SceneWords::tr(": ignored with \"objects\" (give each object its own)");
         return readObjectList(root.value("objects"_L1), QStringLiteral("objects"), out);
     }
     SceneObject object;
@@ -531,7 +536,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
 {
     SceneLoadResult result;
     if (!doc.isObject()) {
-        result.error = QStringLiteral("top level: expected a JSON object (got array)");
+        result.error = SceneWords::tr("top level: expected a JSON object (got array)");
         return result;
     }
     const QJsonObject root = doc.object();
@@ -580,7 +585,7 @@ SceneLoadResult loadSceneFile(const QString &path)
     if (!file.open(QIODevice::ReadOnly)) {
         SceneLoadResult result;
         result.error =
-            QStringLiteral("%1: cannot read scene file (%2)").arg(path, file.errorString());
+            SceneWords::tr("%1: cannot read scene file (%2)").arg(path, file.errorString());
         return result;
     }
     return parseScene(file.readAll(), QFileInfo(path).absolutePath());

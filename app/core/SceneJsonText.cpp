@@ -1,5 +1,6 @@
 #include "SceneJsonText.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <QJsonObject>
@@ -11,6 +12,11 @@
 #include <vector>
 
 namespace phonglab::scenejson {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct SceneJsonTextWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::SceneJsonText)
+};
 
 namespace {
 
@@ -83,7 +89,7 @@ QString syntaxError(const QByteArray &json, qsizetype offset, const QString &rea
     const QByteArray before = json.left(offset);
     const qsizetype line = before.count('\n') + 1;
     const qsizetype column = offset - (before.lastIndexOf('\n') + 1) + 1;
-    return QStringLiteral("JSON syntax error at line %1, column %2 (byte offset %3): %4")
+    return SceneJsonTextWords::tr("JSON syntax error at line %1, column %2 (byte offset %3): %4")
         .arg(line)
         .arg(column)
         .arg(offset)
@@ -123,7 +129,7 @@ std::optional<QString> overflowLiteral(const QJsonValue &value)
 QString describeType(const QJsonValue &value)
 {
     if (const auto literal = overflowLiteral(value))
-        return QStringLiteral("out-of-range number %1").arg(*literal);
+        return SceneJsonTextWords::tr("out-of-range number %1").arg(*literal);
     switch (value.type()) {
     case QJsonValue::Null: return QStringLiteral("null");
     case QJsonValue::Bool: return QStringLiteral("boolean");
@@ -147,11 +153,11 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     const auto readMethod = [&](const QJsonValue &v, const QString &where) -> Result<> {
         if (!v.isString())
             return located(where,
-                           QStringLiteral("expected a string (got %1)").arg(describeType(v)));
+                           SceneJsonTextWords::tr("expected a string (got %1)").arg(describeType(v)));
         const auto method = normalMethodFromName(v.toString());
         if (!method)
             return located(where,
-                           QStringLiteral("unknown normal method \"%1\" (known: %2)")
+                           SceneJsonTextWords::tr("unknown normal method \"%1\" (known: %2)")
                                .arg(v.toString(), normalMethodNames().join(QStringLiteral(", "))));
         out.method = *method;
         return {};
@@ -164,11 +170,11 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     if (!value.isObject())
         return located(
             path,
-            QStringLiteral("expected a string or an object (got %1)").arg(describeType(value)));
+            SceneJsonTextWords::tr("expected a string or an object (got %1)").arg(describeType(value)));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it)
         if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
-            return located(path + QLatin1Char('.') + it.key(), QStringLiteral("unknown key"));
+            return located(path + QLatin1Char('.') + it.key(), SceneJsonTextWords::tr("unknown key"));
     if (object.contains(QLatin1String("method")))
         if (const Result<> method =
                 readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method"));
@@ -183,11 +189,11 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     if (!crease.isDouble() || overflowLiteral(crease))
         return located(
             creasePath,
-            QStringLiteral("expected a finite number (got %1)").arg(describeType(crease)));
+            SceneJsonTextWords::tr("expected a finite number (got %1)").arg(describeType(crease)));
     const double degrees = crease.toDouble();
     if (!(degrees >= 0.0 && degrees <= 180.0))
         return located(creasePath,
-                       QStringLiteral("must be in [0, 180] degrees (got %1)").arg(degrees));
+                       SceneJsonTextWords::tr("must be in [0, 180] degrees (got %1)").arg(degrees));
     out.creaseAngleDeg = degrees;
     return out;
 }
@@ -208,7 +214,7 @@ Result<double> readUniformNumber(const QJsonValue &v, const QString &where)
 {
     if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble()))
         return fail(where
-                    + QStringLiteral(": expected a finite number (got %1)").arg(describeType(v)));
+                    + SceneJsonTextWords::tr(": expected a finite number (got %1)").arg(describeType(v)));
     return v.toDouble();
 }
 
@@ -220,21 +226,21 @@ Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &pa
         return UserUniforms{};
     if (!value.isObject())
         return fail(path
-                    + QStringLiteral(": expected an object of name: value (got %1)")
+                    + SceneJsonTextWords::tr(": expected an object of name: value (got %1)")
                           .arg(describeType(value)));
     const QJsonObject object = value.toObject();
     UserUniforms read;
     for (auto it = object.begin(); it != object.end(); ++it) {
         const QString where = path + QLatin1Char('.') + it.key();
         if (it.key().trimmed().isEmpty())
-            return fail(path + QStringLiteral(": a uniform name must not be empty"));
+            return fail(path + SceneJsonTextWords::tr(": a uniform name must not be empty"));
         std::vector<double> values;
         if (it.value().isArray()) {
             const QJsonArray array = it.value().toArray();
             if (array.isEmpty() || array.size() > 16)
                 return fail(
                     where
-                    + QStringLiteral(": expected 1 to 16 numbers (got %1)").arg(array.size()));
+                    + SceneJsonTextWords::tr(": expected 1 to 16 numbers (got %1)").arg(array.size()));
             for (qsizetype i = 0; i < array.size(); ++i) {
                 const Result<double> v =
                     readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i));
@@ -259,17 +265,17 @@ Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &pa
         return ExplicitBindings{};
     if (!value.isObject())
         return fail(path
-                    + QStringLiteral(": expected an object of name: meaning (got %1)")
+                    + SceneJsonTextWords::tr(": expected an object of name: meaning (got %1)")
                           .arg(describeType(value)));
     const QJsonObject object = value.toObject();
     ExplicitBindings read;
     for (auto it = object.begin(); it != object.end(); ++it) {
         const QString where = path + QLatin1Char('.') + it.key();
         if (it.key().trimmed().isEmpty())
-            return fail(path + QStringLiteral(": a variable name must not be empty"));
+            return fail(path + SceneJsonTextWords::tr(": a variable name must not be empty"));
         if (!it.value().isString())
             return fail(where
-                        + QStringLiteral(": expected a meaning's name (got %1)")
+                        + SceneJsonTextWords::tr(": expected a meaning's name (got %1)")
                               .arg(describeType(it.value())));
         const QString key = it.value().toString();
         if (key == kUnboundWord) {
@@ -279,7 +285,7 @@ Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &pa
         const std::optional<BindingMeaning> meaning = bindingMeaningFromKey(key);
         if (!meaning)
             return fail(where
-                        + QStringLiteral(": unknown meaning \"%1\" (known: %2, %3)")
+                        + SceneJsonTextWords::tr(": unknown meaning \"%1\" (known: %2, %3)")
                               .arg(key, bindingMeaningKeys().join(QStringLiteral(", ")),
                                    kUnboundWord));
         read[it.key()] = *meaning;

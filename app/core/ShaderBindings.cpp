@@ -2,6 +2,7 @@
 
 #include "core/EnumNames.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -11,6 +12,11 @@
 #include <utility>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ShaderBindingsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderBindings)
+};
 
 namespace {
 
@@ -334,7 +340,7 @@ QString glslTypeSpelling(GlslType type)
     case GlslType::Mat4: return QStringLiteral("mat4");
     case GlslType::Other: break;
     }
-    return QStringLiteral("another type");
+    return ShaderBindingsWords::tr("another type");
 }
 
 bool bindingFits(BindingMeaning meaning, const ShaderVariable &v)
@@ -421,7 +427,7 @@ std::optional<ParsedBinding> parseBindingArgument(const QString &text, QString *
         return ParsedBinding{name, std::nullopt};
     const auto meaning = bindingMeaningFromKey(key);
     if (!meaning) {
-        *error = QStringLiteral("'%1': unknown meaning '%2' (known: %3, %4)")
+        *error = ShaderBindingsWords::tr("'%1': unknown meaning '%2' (known: %3, %4)")
                      .arg(text, key, bindingMeaningKeys().join(QStringLiteral(", ")),
                           kUnboundWord);
         return std::nullopt;
@@ -496,7 +502,7 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         if (const auto it = explicitBindings.find(v.name); it != explicitBindings.end()) {
             b.isExplicit = true;
             if (it->second && !bindingFits(*it->second, v)) {
-                out.problems << QStringLiteral("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
+                out.problems << ShaderBindingsWords::tr("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
                                     .arg(v.name, bindingMeaningKey(*it->second),
                                          glslTypeSpelling(v.type),
                                          v.isArray ? QStringLiteral(" array") : QString(),
@@ -514,7 +520,7 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         const QString &name = entry.first;
         if (std::none_of(variables.begin(), variables.end(),
                          [&](const ShaderVariable &v) { return v.name == name; }))
-            out.notes << QStringLiteral("%1=%2: the program has no active uniform or input %1 "
+            out.notes << ShaderBindingsWords::tr("%1=%2: the program has no active uniform or input %1 "
                                         "(not declared, or unused and optimised away)")
                              .arg(name, entry.second ? bindingMeaningKey(*entry.second)
                                                      : kUnboundWord);

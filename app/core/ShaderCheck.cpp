@@ -3,6 +3,7 @@
 #include "PhongReference.h"
 #include "ReferenceEdges.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 
@@ -191,10 +192,15 @@ std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &re
 
 namespace {
 
+// The check's sentences, in the language the run speaks (core/Language).
+struct CheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderCheck)
+};
+
 QString psnrText(const ImageComparison &c)
 {
     return std::isinf(c.psnr) ? QStringLiteral("PSNR ∞")
-                              : QStringLiteral("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+                              : CheckWords::tr("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
 }
 
 } // namespace
@@ -204,17 +210,17 @@ QString checkStatusLine(const CheckReport &report)
     const QString psnr = psnrText(report.comparison);
     if (report.passed())
         return report.equation == PhongEquation::Slide
-            ? QStringLiteral("✓ %1 — the slide's equation (a highlight even where N·L <= 0)")
+            ? CheckWords::tr("✓ %1 — the slide's equation (a highlight even where N·L <= 0)")
                   .arg(psnr)
             : QStringLiteral("✓ %1").arg(psnr);
     const MistakeDiagnosis &d = report.diagnosis;
     if (d.unexplained() || d.findings.empty())
-        return QStringLiteral("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
+        return CheckWords::tr("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
     const MistakeFinding &top = d.findings.front();
-    QString line = QStringLiteral("✗ %1 — %2: %3")
+    QString line = CheckWords::tr("✗ %1 — %2: %3")
                        .arg(psnr, shaderMistakeKey(top.key), mistakeFormSummary({top.key, top.form}));
     for (ShaderMistake m : top.also)
-        line += QStringLiteral(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
+        line += CheckWords::tr(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
     return line;
 }
 
@@ -223,23 +229,23 @@ QString checkSummary(const CheckReport &report)
     const ImageComparison &c = report.comparison;
     const QString psnr = psnrText(c);
     if (report.passed())
-        return QStringLiteral("✓ matches the exact image (%1, max %2/255)")
+        return CheckWords::tr("✓ matches the exact image (%1, max %2/255)")
             .arg(psnr)
             .arg(c.maxError);
-    QString line = QStringLiteral("✗ %1, max %2/255, %3 % of pixels off")
+    QString line = CheckWords::tr("✗ %1, max %2/255, %3 % of pixels off")
                        .arg(psnr)
                        .arg(c.maxError)
                        .arg(100.0 * report.badFraction(), 0, 'f', 1);
     const MistakeDiagnosis &d = report.diagnosis;
     if (d.unexplained()) {
-        line += QStringLiteral(" — unknown: no classic mistake explains it; see the heatmap");
+        line += CheckWords::tr(" — unknown: no classic mistake explains it; see the heatmap");
     } else if (!d.findings.empty()) {
         const MistakeFinding &top = d.findings.front();
         QStringList keys{shaderMistakeKey(top.key)};
         for (ShaderMistake m : top.also)
             keys << shaderMistakeKey(m);
-        line += QStringLiteral(" — %1 (%2 %, %3): %4")
-                    .arg(keys.join(QStringLiteral(" or ")))
+        line += CheckWords::tr(" — %1 (%2 %, %3): %4")
+                    .arg(keys.join(CheckWords::tr(" or ")))
                     .arg(qRound(100.0 * top.confidence))
                     .arg(mistakeFormSummary({top.key, top.form}), shaderMistakeRule(top.key));
     }

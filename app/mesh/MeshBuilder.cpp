@@ -3,6 +3,7 @@
 #include "NormalComputation.h"
 #include "Triangulation.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -12,6 +13,11 @@
 #include <unordered_map>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshBuilderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshBuilder)
+};
 
 namespace {
 
@@ -113,7 +119,7 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles,
             result.normals.push_back(computed.at(c, triangles.positions));
         }
     }
-    warnings << QStringLiteral("%1 of %2 corners have a zero or invalid normal in the file; "
+    warnings << MeshBuilderWords::tr("%1 of %2 corners have a zero or invalid normal in the file; "
                                "computed angle-weighted normals replace them")
                     .arg(qint64(badCorners))
                     .arg(qint64(mesh.cornerNormal.size()));
@@ -241,18 +247,16 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
     for (std::size_t f = 0; f < mesh.faceCount(); ++f)
         triangleCorners += mesh.cornerCount(f) >= 3 ? 3 * (mesh.cornerCount(f) - 2) : 0;
     if (triangleCorners == 0)
-        return fail(QStringLiteral("the mesh has no faces"));
+        return fail(MeshBuilderWords::tr("the mesh has no faces"));
     if (triangleCorners > std::numeric_limits<std::uint32_t>::max())
         return fail(
-            QStringLiteral(
-                "the mesh is too large: %1 triangles exceed what 32-bit indices can address")
+            MeshBuilderWords::tr("the mesh is too large: %1 triangles exceed what 32-bit indices can address")
                 .arg(qint64(triangleCorners / 3)));
 
     Triangles triangles;
     gatherTriangles(mesh, triangles);
     if (triangles.fanFallbacks != 0)
-        warnings << QStringLiteral(
-                        "%1 polygons cross or fold onto themselves; they were split as fans")
+        warnings << MeshBuilderWords::tr("%1 polygons cross or fold onto themselves; they were split as fans")
                         .arg(qint64(triangles.fanFallbacks));
 
     std::size_t missingNormals = mesh.cornerPosition.size();
@@ -266,7 +270,7 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
         : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted
                                                : options.method;
     if (options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
-        warnings << QStringLiteral("%1 of %2 corners have no normal in the file; "
+        warnings << MeshBuilderWords::tr("%1 of %2 corners have no normal in the file; "
                                    "computed angle-weighted normals for the whole mesh")
                         .arg(qint64(missingNormals))
                         .arg(qint64(mesh.cornerPosition.size()));

@@ -6,6 +6,7 @@
 #include "OmPrecheck.h"
 #include "PlyPrecheck.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 
@@ -14,6 +15,11 @@
 #include <cstring>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshFilePrecheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshFilePrecheck)
+};
 
 namespace {
 
@@ -67,9 +73,9 @@ Sniffed sniffFormat(std::string_view head)
         if (startsWith(head, m.bytes))
             return {QString::fromLatin1(m.what), QString::fromLatin1(m.hint)};
     if (offHeaderAt(head))
-        return {QStringLiteral("an OFF file"), QStringLiteral("rename it to .off")};
+        return {QStringLiteral("an OFF file"), MeshFilePrecheckWords::tr("rename it to .off")};
     if (startsWithSolid(head))
-        return {QStringLiteral("an ascii STL file"), QStringLiteral("rename it to .stl")};
+        return {MeshFilePrecheckWords::tr("an ascii STL file"), MeshFilePrecheckWords::tr("rename it to .stl")};
     const std::size_t first = head.find_first_not_of(" \t\r\n");
     if (first != std::string_view::npos && head[first] == '{')
         return {QStringLiteral("a JSON file"), {}};
@@ -98,7 +104,7 @@ QString wrongMagic(std::string_view head, MeshFileFormat format, const QString &
     if (other.what.isEmpty())
         return expected;
     const QString error =
-        QStringLiteral("this is %1, not a %2 file").arg(other.what, suffixOf(format));
+        MeshFilePrecheckWords::tr("this is %1, not a %2 file").arg(other.what, suffixOf(format));
     return other.hint.isEmpty() ? error : QStringLiteral("%1 (%2)").arg(error, other.hint);
 }
 
@@ -151,7 +157,7 @@ void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
     quint64 facets = 0;
     while (nextLine()) {
         if (line.find("facet normal") != std::string_view::npos
-            && !numbersAfter(2, QStringLiteral("three numbers after 'facet normal'")))
+            && !numbersAfter(2, MeshFilePrecheckWords::tr("three numbers after 'facet normal'")))
             return;
         if (line.find("outer") == std::string_view::npos
             && line.find("OUTER") == std::string_view::npos)
@@ -159,16 +165,16 @@ void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
         for (int corner = 0; corner < 3; ++corner) {
             if (!nextLine()) {
                 check.error =
-                    QStringLiteral("the file ends inside facet %1 (truncated?)").arg(facets + 1);
+                    MeshFilePrecheckWords::tr("the file ends inside facet %1 (truncated?)").arg(facets + 1);
                 return;
             }
-            if (!numbersAfter(1, QStringLiteral("'vertex x y z'")))
+            if (!numbersAfter(1, MeshFilePrecheckWords::tr("'vertex x y z'")))
                 return;
         }
         ++facets;
     }
     if (facets == 0)
-        check.error = QStringLiteral("the STL file has no facets");
+        check.error = MeshFilePrecheckWords::tr("the STL file has no facets");
     check.declaredFaces = facets;
 }
 
@@ -202,10 +208,10 @@ void dropNonFiniteTriangles(const QString &path, MeshFilePrecheck &check)
         kept[80 + i] = char((count >> (8 * i)) & 0xff);
     check.rewritten = std::move(kept);
     check.declaredFaces = count;
-    check.warnings << QStringLiteral("dropped %1 with NaN or infinite coordinates")
+    check.warnings << MeshFilePrecheckWords::tr("dropped %1 with NaN or infinite coordinates")
                           .arg(meshtext::counted(bad, "triangle", "triangles"));
     if (count == 0)
-        check.error = QStringLiteral("every triangle has NaN or infinite coordinates");
+        check.error = MeshFilePrecheckWords::tr("every triangle has NaN or infinite coordinates");
 }
 
 void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &check)
@@ -227,27 +233,26 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
             return;
         if (size < 84) {
             check.error =
-                QStringLiteral("too small for a binary STL file (%1 bytes) and not an ascii one")
+                MeshFilePrecheckWords::tr("too small for a binary STL file (%1 bytes) and not an ascii one")
                     .arg(size);
             return;
         }
         if (size < expected) {
             check.error =
-                QStringLiteral(
-                    "the binary STL header declares %1 triangles (%2 bytes) but the file has "
+                MeshFilePrecheckWords::tr("the binary STL header declares %1 triangles (%2 bytes) but the file has "
                     "only %3 bytes (truncated or not an STL file)")
                     .arg((expected - 84) / 50)
                     .arg(expected)
                     .arg(size);
             return;
         }
-        check.warnings << QStringLiteral("ignored %1 after the last triangle")
+        check.warnings << MeshFilePrecheckWords::tr("ignored %1 after the last triangle")
                               .arg(meshtext::counted(size - expected, "byte", "bytes"));
     }
     check.binary = true;
     check.declaredFaces = quint64(expected - 84) / 50;
     if (check.declaredFaces == 0)
-        check.error = QStringLiteral("the STL file has no triangles");
+        check.error = MeshFilePrecheckWords::tr("the STL file has no triangles");
     else
         dropNonFiniteTriangles(path, check);
 }
@@ -257,7 +262,7 @@ void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check
     if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2]))
         check.error =
             wrongMagic(head, check.format,
-                       QStringLiteral("not an OpenMesh file (it does not start with 'OM')"));
+                       MeshFilePrecheckWords::tr("not an OpenMesh file (it does not start with 'OM')"));
     else
         precheckOm(path, check);
 }
@@ -291,32 +296,32 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     check.format = format;
     const QFileInfo info(path);
     if (!info.exists()) {
-        check.error = QStringLiteral("file not found");
+        check.error = MeshFilePrecheckWords::tr("file not found");
         return check;
     }
     if (!info.isFile()) {
-        check.error = QStringLiteral("not a regular file");
+        check.error = MeshFilePrecheckWords::tr("not a regular file");
         return check;
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        check.error = QStringLiteral("cannot open the file: %1").arg(file.errorString());
+        check.error = MeshFilePrecheckWords::tr("cannot open the file: %1").arg(file.errorString());
         return check;
     }
     check.fileSize = file.size();
     if (check.fileSize == 0) {
-        check.error = QStringLiteral("the file is empty");
+        check.error = MeshFilePrecheckWords::tr("the file is empty");
         return check;
     }
     if (check.fileSize > kMaxMeshFileBytes) {
-        check.error = QStringLiteral("the file is too large (%1 MiB; the limit is %2 MiB)")
+        check.error = MeshFilePrecheckWords::tr("the file is too large (%1 MiB; the limit is %2 MiB)")
                           .arg(check.fileSize >> 20)
                           .arg(kMaxMeshFileBytes >> 20);
         return check;
     }
     const QByteArray headBytes = file.read(kSampleBytes);
     if (headBytes.isEmpty()) {
-        check.error = QStringLiteral("cannot read the file: %1").arg(file.errorString());
+        check.error = MeshFilePrecheckWords::tr("cannot read the file: %1").arg(file.errorString());
         return check;
     }
     file.close();
@@ -327,7 +332,7 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     case MeshFileFormat::Ply:
         if (!startsWith(head, "ply\n") && !startsWith(head, "ply\r\n"))
             check.error = wrongMagic(
-                head, format, QStringLiteral("not a PLY file (it does not start with 'ply')"));
+                head, format, MeshFilePrecheckWords::tr("not a PLY file (it does not start with 'ply')"));
         else
             precheckPly(path, check);
         break;
@@ -335,7 +340,7 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
         if (!offHeaderAt(head))
             check.error = wrongMagic(
                 head, format,
-                QStringLiteral("not an OFF file (it does not start with an OFF header)"));
+                MeshFilePrecheckWords::tr("not an OFF file (it does not start with an OFF header)"));
         else
             precheckOff(path, check);
         break;
@@ -350,12 +355,12 @@ bool readWholeFile(const QString &path, std::string &bytes, QString &error,
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        error = QStringLiteral("cannot open the file: %1").arg(file.errorString());
+        error = MeshFilePrecheckWords::tr("cannot open the file: %1").arg(file.errorString());
         return false;
     }
     const qint64 size = file.size();
     if (size > kMaxMeshFileBytes) {
-        error = QStringLiteral("the file is too large (%1 MiB; the limit is %2 MiB)")
+        error = MeshFilePrecheckWords::tr("the file is too large (%1 MiB; the limit is %2 MiB)")
                     .arg(size >> 20)
                     .arg(kMaxMeshFileBytes >> 20);
         return false;
@@ -366,8 +371,8 @@ bool readWholeFile(const QString &path, std::string &bytes, QString &error,
     while (done < size) {
         const qint64 n = file.read(bytes.data() + done, std::min(kChunk, size - done));
         if (n <= 0) {
-            error = n < 0 ? QStringLiteral("cannot read the file: %1").arg(file.errorString())
-                          : QStringLiteral("the file got shorter while it was read");
+            error = n < 0 ? MeshFilePrecheckWords::tr("cannot read the file: %1").arg(file.errorString())
+                          : MeshFilePrecheckWords::tr("the file got shorter while it was read");
             return false;
         }
         done += n;

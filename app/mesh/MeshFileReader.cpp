@@ -4,12 +4,18 @@
 #include "ObjReader.h"
 #include "OpenMeshReader.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 
 #include <exception>
 #include <new>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshFileReaderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshFileReader)
+};
 
 namespace {
 
@@ -31,7 +37,7 @@ MeshReadResult readChecked(const QString &path, MeshFileFormat format,
     result.warnings = check.warnings + result.warnings;
     if (result.ok() && result.mesh->faceCount() == 0) {
         result.mesh.reset();
-        result.error = QStringLiteral("the file has no faces");
+        result.error = MeshFileReaderWords::tr("the file has no faces");
     }
     if (result.ok() && progress)
         progress(1.0);
@@ -47,8 +53,8 @@ MeshReadResult readMeshFile(const QString &path, const std::function<bool(double
         MeshReadResult result;
         const QString suffix = QFileInfo(path).suffix();
         result.error =
-            QStringLiteral("unsupported file type '%1' (supported: %2)")
-                .arg(suffix.isEmpty() ? QStringLiteral("no suffix") : QLatin1Char('.') + suffix,
+            MeshFileReaderWords::tr("unsupported file type '%1' (supported: %2)")
+                .arg(suffix.isEmpty() ? MeshFileReaderWords::tr("no suffix") : QLatin1Char('.') + suffix,
                      supportedMeshFileSuffixes());
         return result;
     }
@@ -58,11 +64,11 @@ MeshReadResult readMeshFile(const QString &path, const std::function<bool(double
         return readChecked(path, *format, progress);
     } catch (const std::bad_alloc &) {
         MeshReadResult result;
-        result.error = QStringLiteral("out of memory while reading the file");
+        result.error = MeshFileReaderWords::tr("out of memory while reading the file");
         return result;
     } catch (const std::exception &e) {
         MeshReadResult result;
-        result.error = QStringLiteral("reading failed: %1").arg(QString::fromLocal8Bit(e.what()));
+        result.error = MeshFileReaderWords::tr("reading failed: %1").arg(QString::fromLocal8Bit(e.what()));
         return result;
     }
 }

@@ -22,6 +22,11 @@
 
 namespace phonglab {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshImportProcessWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshImportProcess)
+};
+
 namespace {
 
 constexpr int kPollMs = 20; // how soon Cancel and the wall clock are noticed
@@ -72,18 +77,18 @@ QString failureMessage(const QProcess &child, const ChildReport &report,
     if (child.exitStatus() == QProcess::CrashExit) {
         const int signal = child.exitCode(); // Qt reports the terminating signal here
         if (signal == SIGXCPU)
-            return QStringLiteral("the reader used up its %1 s of CPU time and was stopped")
+            return MeshImportProcessWords::tr("the reader used up its %1 s of CPU time and was stopped")
                 .arg(limits.cpuSeconds);
-        return QStringLiteral("the reader crashed with signal %1 (%2)")
+        return MeshImportProcessWords::tr("the reader crashed with signal %1 (%2)")
             .arg(signal)
             .arg(signalName(signal));
     }
     if (report.outOfMemory || child.exitCode() == kImportExitOutOfMemory)
-        return QStringLiteral("the reader ran out of memory (limit %1 MB)")
+        return MeshImportProcessWords::tr("the reader ran out of memory (limit %1 MB)")
             .arg(limits.addressSpaceBytes / kMiB);
     if (!report.error.isEmpty())
         return report.error;
-    return QStringLiteral("the reader exited with status %1 without a result")
+    return MeshImportProcessWords::tr("the reader exited with status %1 without a result")
         .arg(child.exitCode());
 }
 
@@ -200,11 +205,10 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     };
     const QString executable = importExecutable();
     if (executable.isEmpty())
-        return fail(QStringLiteral(
-            "cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
+        return fail(MeshImportProcessWords::tr("cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
     const QString entryFile = temporaryEntryFile();
     if (entryFile.isEmpty())
-        return fail(QStringLiteral("cannot create a temporary file for the import"));
+        return fail(MeshImportProcessWords::tr("cannot create a temporary file for the import"));
     const MeshImportLimits limits = MeshImportLimits::forFile(QFileInfo(path).size());
 
     QProcess child;
@@ -217,7 +221,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     child.start(executable, childArguments(path, normals, entryFile, limits), QIODevice::ReadOnly);
     if (!child.waitForStarted(10'000)) {
         QFile::remove(entryFile);
-        return fail(QStringLiteral("cannot start the import process %1: %2")
+        return fail(MeshImportProcessWords::tr("cannot start the import process %1: %2")
                         .arg(executable, child.errorString()));
     }
     ChildReport report;
@@ -229,7 +233,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         if (progress && !progress(report.progress)) {
             stopped = QStringLiteral("cancelled");
         } else if (clock.elapsed() > limits.wallClockMs) {
-            stopped = QStringLiteral("%1: the reader stopped answering after %2 s and was stopped; "
+            stopped = MeshImportProcessWords::tr("%1: the reader stopped answering after %2 s and was stopped; "
                                      "the file is probably malformed")
                           .arg(path)
                           .arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
@@ -257,7 +261,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     entry.close();
     if (!answer) {
         QFile::remove(entryFile);
-        return fail(QStringLiteral("the import process gave no readable result"));
+        return fail(MeshImportProcessWords::tr("the import process gave no readable result"));
     }
     MeshCache::adopt(entryFile, path, normals);
     answer->stats.creaseAngleDeg = normals.creaseAngleDeg;
@@ -295,7 +299,7 @@ int runMeshImportChild(const QString &path, const NormalOptions &normals, const 
         || !MeshCache::encode(out, MeshCache::sourceKey(path, normals), result) || !out.flush()) {
         std::printf(
             "error %s\n",
-            QStringLiteral("cannot write the result to %1").arg(entryFile).toUtf8().constData());
+            MeshImportProcessWords::tr("cannot write the result to %1").arg(entryFile).toUtf8().constData());
         return 1;
     }
     return 0;

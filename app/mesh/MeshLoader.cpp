@@ -8,11 +8,17 @@
 #include "MeshRepair.h"
 #include "MeshTopology.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 
 #include <future>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshLoaderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshLoader)
+};
 
 namespace {
 
@@ -33,8 +39,7 @@ MeshLoadResult loadBuiltin(const QString &spec)
     result.mesh = builtinMesh(spec);
     if (!result.mesh) {
         result.error =
-            QStringLiteral(
-                "%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)")
+            MeshLoaderWords::tr("%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)")
                 .arg(spec);
         return result;
     }
@@ -75,7 +80,7 @@ MeshLoadResult importMeshFile(const QString &path, const NormalOptions &normals,
     const RepairReport repair = repairMesh(polygons);
     result.warnings += repair.warnings();
     if (polygons.faceCount() == 0) {
-        result.error = QStringLiteral("%1: no usable faces").arg(path);
+        result.error = MeshLoaderWords::tr("%1: no usable faces").arg(path);
         return result;
     }
     if (progress && !progress(0.85)) {

@@ -1,11 +1,17 @@
 #include "MeshRepair.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 #include <future>
 #include <numeric>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct MeshRepairWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshRepair)
+};
 
 namespace {
 
@@ -376,32 +382,31 @@ QStringList RepairReport::warnings() const
 {
     QStringList w;
     if (facesDroppedBadIndex)
-        w << QStringLiteral("dropped %1 with out-of-range vertex indices")
+        w << MeshRepairWords::tr("dropped %1 with out-of-range vertex indices")
                  .arg(counted(facesDroppedBadIndex, "face", "faces"));
     if (facesDroppedNonFinite)
-        w << QStringLiteral("dropped %1 using NaN or infinite coordinates")
+        w << MeshRepairWords::tr("dropped %1 using NaN or infinite coordinates")
                  .arg(counted(facesDroppedNonFinite, "face", "faces"));
     if (facesDroppedDegenerate)
-        w << QStringLiteral("dropped %1 (fewer than 3 distinct corners or zero area)")
+        w << MeshRepairWords::tr("dropped %1 (fewer than 3 distinct corners or zero area)")
                  .arg(counted(facesDroppedDegenerate, "degenerate face", "degenerate faces"));
     if (normalsDiscarded)
-        w << QStringLiteral(
-                 "ignored the file normal of %1 (missing, zero or not finite); computed instead")
+        w << MeshRepairWords::tr("ignored the file normal of %1 (missing, zero or not finite); computed instead")
                  .arg(counted(normalsDiscarded, "face corner", "face corners"));
     if (nonManifoldEdges)
-        w << QStringLiteral("%1 (shared by 3 or more faces), kept as they are")
+        w << MeshRepairWords::tr("%1 (shared by 3 or more faces), kept as they are")
                  .arg(counted(nonManifoldEdges, "non-manifold edge", "non-manifold edges"));
     if (orientationConflicts)
-        w << QStringLiteral("%1 no consistent winding agrees on (a non-orientable surface)")
+        w << MeshRepairWords::tr("%1 no consistent winding agrees on (a non-orientable surface)")
                  .arg(counted(orientationConflicts, "edge", "edges"));
     if (facesFlipped)
-        w << QStringLiteral("flipped %1 to make the winding consistent")
+        w << MeshRepairWords::tr("flipped %1 to make the winding consistent")
                  .arg(counted(facesFlipped, "face", "faces"));
     if (verticesDuplicated)
-        w << QStringLiteral("split %1 where surfaces touch only at that point")
+        w << MeshRepairWords::tr("split %1 where surfaces touch only at that point")
                  .arg(counted(verticesDuplicated, "vertex", "vertices"));
     if (isolatedVerticesRemoved)
-        w << QStringLiteral("removed %1 no face uses")
+        w << MeshRepairWords::tr("removed %1 no face uses")
                  .arg(counted(isolatedVerticesRemoved, "vertex", "vertices"));
     return w;
 }

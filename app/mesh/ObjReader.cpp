@@ -3,6 +3,7 @@
 #include "MeshFilePrecheck.h"
 #include "MeshTextTokens.h"
 
+#include <QCoreApplication>
 #include <atomic>
 #include <charconv>
 #include <cstring>
@@ -11,6 +12,11 @@
 #include <string>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ObjReaderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ObjReader)
+};
 
 namespace {
 
@@ -348,8 +354,8 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
 {
     if (m_mesh.faceCount() == 0) {
         result.error = m_mesh.positions.empty()
-            ? QStringLiteral("no vertices or faces found (not an OBJ file?)")
-            : QStringLiteral("the file has vertices but no faces");
+            ? ObjReaderWords::tr("no vertices or faces found (not an OBJ file?)")
+            : ObjReaderWords::tr("the file has vertices but no faces");
         return;
     }
     std::size_t missingNormals = 0;
@@ -365,21 +371,20 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
         }
     }
     if (m_badLines)
-        result.warnings << QStringLiteral("skipped %1 (first at line %2: \"%3\")")
+        result.warnings << ObjReaderWords::tr("skipped %1 (first at line %2: \"%3\")")
                                .arg(meshtext::counted(m_badLines, "unreadable line",
                                                       "unreadable lines"))
                                .arg(m_firstBadLine)
                                .arg(QString::fromUtf8(m_firstBadText));
     if (m_lastLineBad && !endsInNewline)
-        result.warnings << QStringLiteral("the last line is incomplete (the file looks truncated)");
+        result.warnings << ObjReaderWords::tr("the last line is incomplete (the file looks truncated)");
     if (m_freeform)
-        result.warnings << QStringLiteral("ignored %1 (only polygons are read)")
+        result.warnings << ObjReaderWords::tr("ignored %1 (only polygons are read)")
                                .arg(meshtext::counted(m_freeform,
                                                       "free-form curve or surface statement",
                                                       "free-form curve and surface statements"));
     if (missingNormals)
-        result.warnings << QStringLiteral(
-                               "%1 to normals the file does not have; they get computed normals")
+        result.warnings << ObjReaderWords::tr("%1 to normals the file does not have; they get computed normals")
                                .arg(meshtext::counted(missingNormals, "face corner refers",
                                                       "face corners refer"));
     result.mesh = std::move(m_mesh);

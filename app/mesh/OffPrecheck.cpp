@@ -3,9 +3,15 @@
 #include "ByteOrder.h"
 #include "MeshTextTokens.h"
 
+#include <QCoreApplication>
 #include <vector>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct OffPrecheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::OffPrecheck)
+};
 
 namespace {
 
@@ -53,14 +59,13 @@ QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
 {
     for (quint64 f = 0; f < faces; ++f) {
         if (text.size() - at < 4)
-            return QStringLiteral("the binary OFF file ends after %1 of %2 faces (truncated?)")
+            return OffPrecheckWords::tr("the binary OFF file ends after %1 of %2 faces (truncated?)")
                 .arg(f)
                 .arg(faces);
         const quint64 corners = littleEndian(text, at);
         at += 4;
         if (corners > (text.size() - at) / 4)
-            return QStringLiteral(
-                       "binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
+            return OffPrecheckWords::tr("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
                        "left can hold (corrupt?)")
                 .arg(f + 1)
                 .arg(at - 4)
@@ -77,15 +82,14 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     // numbers (OpenMesh reads them little-endian).
     const std::size_t body = text.find('\n') + 1;
     if (body == 0 || text.size() < body + 12) {
-        check.error = QStringLiteral("the binary OFF file ends before its counts");
+        check.error = OffPrecheckWords::tr("the binary OFF file ends before its counts");
         return;
     }
     // Colour and texture layouts depend on reader options this check cannot
     // see, so the faces could not be walked safely.
     if (k.colors || k.keyword.substr(0, 2) == "ST") {
         check.error =
-            QStringLiteral(
-                "binary %1 files (with colours or texture coordinates) are not supported; "
+            OffPrecheckWords::tr("binary %1 files (with colours or texture coordinates) are not supported; "
                 "save it as ascii OFF or as PLY")
                 .arg(QString::fromLatin1(k.keyword.data(), qsizetype(k.keyword.size())));
         return;
@@ -97,15 +101,14 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     const quint64 needed = body + 12 + vertexBytes + check.declaredFaces * 16;
     if (needed > text.size())
         check.error =
-            QStringLiteral(
-                "the binary OFF header declares %1 vertices and %2 faces, which need at least "
+            OffPrecheckWords::tr("the binary OFF header declares %1 vertices and %2 faces, which need at least "
                 "%3 bytes, but the file has %4 (truncated or corrupt)")
                 .arg(check.declaredVertices)
                 .arg(check.declaredFaces)
                 .arg(needed)
                 .arg(text.size());
     else if (check.declaredFaces == 0)
-        check.error = QStringLiteral("the OFF file has no faces");
+        check.error = OffPrecheckWords::tr("the OFF file has no faces");
     else
         check.error = checkBinaryFaces(text, body + 12 + vertexBytes, check.declaredFaces);
 }
@@ -138,11 +141,11 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const OffKeyword k = parseKeyword(tokens.next());
     const std::size_t headerLine = tokens.line();
     if (!k.ok) {
-        check.error = QStringLiteral("not an OFF file (it does not start with an OFF header)");
+        check.error = OffPrecheckWords::tr("not an OFF file (it does not start with an OFF header)");
         return;
     }
     if (k.higherDimension) {
-        check.error = QStringLiteral("4D and nD OFF files are not supported");
+        check.error = OffPrecheckWords::tr("4D and nD OFF files are not supported");
         return;
     }
     const meshtext::TextTokens afterHeader = tokens;
@@ -160,7 +163,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
         if (!meshtext::parseInteger(t, counts[i]) || counts[i] < 0 || counts[i] > UINT32_MAX) {
             check.error =
-                QStringLiteral("line %1: expected the vertex, face and edge counts, found %2")
+                OffPrecheckWords::tr("line %1: expected the vertex, face and edge counts, found %2")
                     .arg(tokens.line())
                     .arg(quoted(t));
             return;
@@ -169,7 +172,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     }
     if (!tokens.lineIsEmpty()) {
         check.error =
-            QStringLiteral("line %1: unexpected text after the counts").arg(tokens.line());
+            OffPrecheckWords::tr("line %1: unexpected text after the counts").arg(tokens.line());
         return;
     }
     check.declaredVertices = quint64(counts[0]);
@@ -178,8 +181,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const quint64 needed = 6 * check.declaredVertices + 8 * check.declaredFaces;
     if (needed > text.size()) {
         check.error =
-            QStringLiteral(
-                "the OFF header declares %1 vertices and %2 faces, which need at least %3 "
+            OffPrecheckWords::tr("the OFF header declares %1 vertices and %2 faces, which need at least %3 "
                 "bytes, but the file has %4 (truncated or corrupt)")
                 .arg(check.declaredVertices)
                 .arg(check.declaredFaces)
@@ -188,7 +190,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         return;
     }
     if (check.declaredFaces == 0) {
-        check.error = QStringLiteral("the OFF file has no faces");
+        check.error = OffPrecheckWords::tr("the OFF file has no faces");
         return;
     }
 
@@ -219,7 +221,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const std::size_t vertexNumbers = k.normals ? 6 : 3;
     for (quint64 v = 0; v < check.declaredVertices; ++v) {
         if (!readLine()) {
-            check.error = QStringLiteral("the file ends after %1 of %2 vertices (truncated?)")
+            check.error = OffPrecheckWords::tr("the file ends after %1 of %2 vertices (truncated?)")
                               .arg(v)
                               .arg(counts[0]);
             return;
@@ -231,25 +233,25 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
                             .arg(line.size()));
         for (std::string_view t : line)
             if (!meshtext::isReal(t))
-                return fail(QStringLiteral("expected a number, found %1").arg(quoted(t)));
+                return fail(OffPrecheckWords::tr("expected a number, found %1").arg(quoted(t)));
         appendLine(out, line, line.size());
     }
 
     std::size_t strayLines = 0;
     for (quint64 f = 0; f < check.declaredFaces; ++f) {
         if (!readLine()) {
-            check.error = QStringLiteral("the file ends after %1 of %2 faces (truncated?)")
+            check.error = OffPrecheckWords::tr("the file ends after %1 of %2 faces (truncated?)")
                               .arg(f)
                               .arg(counts[1]);
             return;
         }
         std::int64_t corners = -1;
         if (!meshtext::parseInteger(line[0], corners) || corners < 0)
-            return fail(QStringLiteral("expected the corner count of face %1, found %2")
+            return fail(OffPrecheckWords::tr("expected the corner count of face %1, found %2")
                             .arg(f + 1)
                             .arg(quoted(line[0])));
         if (std::size_t(corners) > line.size() - 1)
-            return fail(QStringLiteral("face %1 has %2 corners but only %3 indices")
+            return fail(OffPrecheckWords::tr("face %1 has %2 corners but only %3 indices")
                             .arg(f + 1)
                             .arg(corners)
                             .arg(line.size() - 1));
@@ -259,7 +261,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
                 return fail(
                     QStringLiteral("expected %1, found %2")
-                        .arg(index ? QStringLiteral("a vertex index") : QStringLiteral("a number"),
+                        .arg(index ? OffPrecheckWords::tr("a vertex index") : QStringLiteral("a number"),
                              quoted(line[i])));
         }
         // Values after the indices are a colour, which the reader only takes
@@ -272,12 +274,12 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         appendLine(out, line, k.colors ? line.size() : indicesEnd);
     }
     if (strayLines)
-        check.warnings << QStringLiteral("ignored the values after the vertex indices on %1 "
+        check.warnings << OffPrecheckWords::tr("ignored the values after the vertex indices on %1 "
                                          "(face colours need a COFF header)")
                               .arg(meshtext::counted(strayLines, "face line", "face lines"));
     tokens.nextLine();
     if (!tokens.next().empty())
-        check.warnings << QStringLiteral("ignored the text after the last face (from line %1)")
+        check.warnings << OffPrecheckWords::tr("ignored the text after the last face (from line %1)")
                               .arg(tokens.line());
     if (rewrite || tokens.sawComment())
         check.rewritten = std::move(out);

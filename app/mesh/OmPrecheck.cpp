@@ -2,10 +2,16 @@
 
 #include "ByteOrder.h"
 
+#include <QCoreApplication>
 #include <cstdint>
 #include <string_view>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct OmPrecheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::OmPrecheck)
+};
 
 namespace {
 
@@ -107,7 +113,7 @@ ChunkSize sized(quint64 bytes)
 ChunkSize wrongDims(const ChunkHeader &c, unsigned expected)
 {
     return {0,
-            QStringLiteral("a %1 chunk with %2 components per element, where the reader expects %3")
+            OmPrecheckWords::tr("a %1 chunk with %2 components per element, where the reader expects %3")
                 .arg(describe(c))
                 .arg(c.dims)
                 .arg(expected)};
@@ -120,7 +126,7 @@ ChunkSize vectorSize(const ChunkHeader &c, quint64 count)
         return wrongDims(c, 3);
     if (c.bits > 1)
         return {0,
-                QStringLiteral("a %1 chunk with a number size the reader does not know")
+                OmPrecheckWords::tr("a %1 chunk with a number size the reader does not know")
                     .arg(describe(c))};
     return sized(count * (c.bits == 0 ? 12 : 24));
 }
@@ -139,11 +145,11 @@ ChunkSize customSize(const OmHeader &h, std::string_view rest)
     quint64 at = 0;
     if (h.version > kVersion2_1) {
         if (rest.empty())
-            return {0, QStringLiteral("the file ends inside a custom property chunk")};
+            return {0, OmPrecheckWords::tr("the file ends inside a custom property chunk")};
         at = 1 + static_cast<unsigned char>(rest[0]);
     }
     if (rest.size() < at + 4)
-        return {0, QStringLiteral("the file ends inside a custom property chunk")};
+        return {0, OmPrecheckWords::tr("the file ends inside a custom property chunk")};
     return sized(at + 4 + littleEndian(rest, std::size_t(at), 4));
 }
 
@@ -158,13 +164,13 @@ ChunkSize faceIndexSize(const OmHeader &h, const ChunkHeader &c, std::string_vie
     for (quint64 f = 0; f < h.faces; ++f) {
         if (rest.size() - at < 2)
             return {0,
-                    QStringLiteral("the file ends after %1 of %2 faces (truncated?)")
+                    OmPrecheckWords::tr("the file ends after %1 of %2 faces (truncated?)")
                         .arg(f)
                         .arg(h.faces)};
         at += 2 + index * littleEndian(rest, std::size_t(at), 2);
         if (at > rest.size())
             return {0,
-                    QStringLiteral("face %1 of %2 runs past the end of the file (truncated?)")
+                    OmPrecheckWords::tr("face %1 of %2 runs past the end of the file (truncated?)")
                         .arg(f + 1)
                         .arg(h.faces)};
     }
@@ -193,7 +199,7 @@ ChunkSize dataSize(const OmHeader &h, const ChunkHeader &c, std::string_view res
 {
     if (c.entity != Vertex && c.entity != Mesh && c.entity != Face && c.entity != Edge
         && c.entity != Halfedge)
-        return {0, QStringLiteral("a chunk for an unknown kind of element (%1)").arg(c.entity)};
+        return {0, OmPrecheckWords::tr("a chunk for an unknown kind of element (%1)").arg(c.entity)};
     const quint64 count = elementCount(h, c.entity);
     switch (c.type) {
     case Pos:
@@ -232,15 +238,14 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
     for (int chunk = 1;; ++chunk) {
         const std::size_t start = at;
         if (bytes.size() - at < 2)
-            return QStringLiteral(
-                       "the file ends after %1 chunks, before the end marker OpenMesh writes "
+            return OmPrecheckWords::tr("the file ends after %1 chunks, before the end marker OpenMesh writes "
                        "(truncated?)")
                 .arg(chunk - 1);
         const ChunkHeader c = decodeChunkHeader(littleEndian(bytes, at, 2));
         at += 2;
         if (c.named) {
             if (at >= bytes.size() || bytes.size() - at - 1 < static_cast<unsigned char>(bytes[at]))
-                return QStringLiteral("chunk %1 (byte %2): the file ends inside its property name")
+                return OmPrecheckWords::tr("chunk %1 (byte %2): the file ends inside its property name")
                     .arg(chunk)
                     .arg(start);
             at += 1 + static_cast<unsigned char>(bytes[at]);
@@ -256,7 +261,7 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
         if (!size.error.isEmpty())
             return QStringLiteral("chunk %1 (byte %2): %3").arg(chunk).arg(start).arg(size.error);
         if (size.bytes > bytes.size() - at)
-            return QStringLiteral("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left "
+            return OmPrecheckWords::tr("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left "
                                   "(truncated or corrupt)")
                 .arg(chunk)
                 .arg(start)
@@ -279,7 +284,7 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     if (!readWholeFile(path, bytes, check.error))
         return;
     if (bytes.size() < kHeaderBytes) {
-        check.error = QStringLiteral("the file ends inside the OpenMesh header");
+        check.error = OmPrecheckWords::tr("the file ends inside the OpenMesh header");
         return;
     }
     OmHeader h;
@@ -295,8 +300,7 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     const quint64 needed = kHeaderBytes + 12 * h.vertices + h.faces;
     if (needed > bytes.size()) {
         check.error =
-            QStringLiteral(
-                "the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
+            OmPrecheckWords::tr("the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
                 "bytes, but the file has %4 (truncated or corrupt)")
                 .arg(h.vertices)
                 .arg(h.faces)
@@ -305,14 +309,14 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
         return;
     }
     if (h.faces == 0) {
-        check.error = QStringLiteral("the OpenMesh file has no faces");
+        check.error = OmPrecheckWords::tr("the OpenMesh file has no faces");
         return;
     }
     std::size_t end = 0;
     check.error = walkChunks(bytes, h, end, check.rewritten);
     if (check.ok() && end < bytes.size())
         check.warnings
-            << QStringLiteral("%1 bytes after the end marker were ignored").arg(bytes.size() - end);
+            << OmPrecheckWords::tr("%1 bytes after the end marker were ignored").arg(bytes.size() - end);
 }
 
 } // namespace phonglab

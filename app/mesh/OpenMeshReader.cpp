@@ -3,6 +3,7 @@
 #include "MeshTextTokens.h"
 #include "PolygonSoupImporter.h"
 
+#include <QCoreApplication>
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/System/omstream.hh>
@@ -16,6 +17,11 @@
 #include <sstream>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct OpenMeshReaderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::OpenMeshReader)
+};
 
 namespace {
 
@@ -80,7 +86,7 @@ bool readOm(std::istream &in, PolygonSoupImporter &importer, OpenMesh::IO::Optio
 {
     const bool ok = OpenMesh::IO::IOManager().read(in, "om", importer, options);
     if (in.eof())
-        error = QStringLiteral("the file ends before its end marker (truncated?)");
+        error = OpenMeshReaderWords::tr("the file ends before its end marker (truncated?)");
     return ok && !in.eof();
 }
 
@@ -95,7 +101,7 @@ bool readFileOrCopy(const QString &path, const MeshFilePrecheck &check, QString 
     }
     std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
     if (!in) {
-        error = QStringLiteral("cannot open the file");
+        error = OpenMeshReaderWords::tr("cannot open the file");
         return false;
     }
     return read(in);
@@ -125,8 +131,7 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         if (!dir.isValid() || !cleaned.open(QIODevice::WriteOnly)
             || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size()))
                 != qint64(check.rewritten.size())) {
-            error = QStringLiteral(
-                "cannot write a cleaned copy of the OFF file to the temporary folder");
+            error = OpenMeshReaderWords::tr("cannot write a cleaned copy of the OFF file to the temporary folder");
             return false;
         }
         cleaned.close();
@@ -167,12 +172,12 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         } catch (const PolygonSoupImporter::Cancelled &) {
             result.error = QStringLiteral("cancelled");
         } catch (const std::bad_alloc &) {
-            result.error = QStringLiteral("out of memory while reading the file");
+            result.error = OpenMeshReaderWords::tr("out of memory while reading the file");
         } catch (const std::exception &e) {
             result.error =
-                QStringLiteral("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
+                OpenMeshReaderWords::tr("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
         } catch (...) {
-            result.error = QStringLiteral("the reader failed");
+            result.error = OpenMeshReaderWords::tr("the reader failed");
         }
         messages = capture.errorLines();
     }
@@ -180,8 +185,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         return result;
     if (!ok) {
         result.error = messages.isEmpty()
-            ? QStringLiteral("OpenMesh could not read the file")
-            : QStringLiteral("OpenMesh could not read the file: %1").arg(messages.first());
+            ? OpenMeshReaderWords::tr("OpenMesh could not read the file")
+            : OpenMeshReaderWords::tr("OpenMesh could not read the file: %1").arg(messages.first());
         return result;
     }
     constexpr int kMaxMessages = 5;
@@ -196,23 +201,23 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
     PolygonMesh mesh = importer.takeMesh(result.warnings);
     if (check.declaredVertices && mesh.positions.size() != check.declaredVertices
         && check.format != MeshFileFormat::Stl)
-        result.warnings << QStringLiteral("read %1 of the %2 the header declares")
+        result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
                                .arg(mesh.positions.size())
                                .arg(
                                    meshtext::counted(check.declaredVertices, "vertex", "vertices"));
     if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
         // OpenMesh's STL reader merges corners by position and skips
         // triangles left with a repeated corner.
-        result.warnings << QStringLiteral("dropped %1 with two corners at the same position")
+        result.warnings << OpenMeshReaderWords::tr("dropped %1 with two corners at the same position")
                                .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle",
                                                       "triangles"));
     } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
-        result.warnings << QStringLiteral("read %1 of the %2 the header declares")
+        result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
                                .arg(faceCalls)
                                .arg(meshtext::counted(check.declaredFaces, "face", "faces"));
     }
     if (mesh.faceCount() == 0) {
-        result.error = QStringLiteral("no faces were read");
+        result.error = OpenMeshReaderWords::tr("no faces were read");
         return result;
     }
     result.mesh = std::move(mesh);

@@ -2,6 +2,7 @@
 
 #include "MeshTextTokens.h"
 
+#include <QCoreApplication>
 #include <QFile>
 
 #include <algorithm>
@@ -9,6 +10,11 @@
 #include <vector>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct PlyPrecheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PlyPrecheck)
+};
 
 namespace {
 
@@ -121,10 +127,10 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             line.remove_suffix(1);
         pos = eol + 1;
         ++lineNo;
-        const QString where = QStringLiteral("PLY header line %1").arg(lineNo);
+        const QString where = PlyPrecheckWords::tr("PLY header line %1").arg(lineNo);
         if (lineNo == 1) {
             if (line != "ply")
-                return QStringLiteral("not a PLY file (it does not start with 'ply')");
+                return PlyPrecheckWords::tr("not a PLY file (it does not start with 'ply')");
             continue;
         }
         const std::vector<std::string_view> w = words(line);
@@ -140,15 +146,14 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         });
         if (odd != line.end())
             return where
-                + QStringLiteral(
-                      ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                + PlyPrecheckWords::tr(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
                       .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
                       .arg(odd - line.begin() + 1);
         if (w[0] == "format") {
             if (h.format != PlyHeader::Unknown)
                 return where + QStringLiteral(": a second 'format' line");
             if (w.size() < 2)
-                return where + QStringLiteral(": 'format' without a format");
+                return where + PlyPrecheckWords::tr(": 'format' without a format");
             if (w[1] == "ascii")
                 h.format = PlyHeader::Ascii;
             else if (w[1] == "binary_little_endian")
@@ -156,7 +161,7 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             else if (w[1] == "binary_big_endian")
                 h.format = PlyHeader::BigEndian;
             else
-                return where + QStringLiteral(": unknown format %1").arg(quoted(w[1]));
+                return where + PlyPrecheckWords::tr(": unknown format %1").arg(quoted(w[1]));
             // OpenMesh reads the version with operator>>(float) and, on a failed read,
             // loops over the header forever; so accept only a plain number here.
             if (w.size() != 3 || !isPlainVersion(w[2]))
@@ -171,18 +176,18 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             h.elements.push_back({std::string(w[1]), quint64(count), {}});
         } else if (w[0] == "property") {
             if (h.elements.empty())
-                return where + QStringLiteral(": a property before any element");
+                return where + PlyPrecheckWords::tr(": a property before any element");
             PlyProperty p;
             if (w.size() == 5 && w[1] == "list") {
                 const auto countType = plyType(w[2]);
                 const auto itemType = plyType(w[3]);
                 if (!countType || !itemType || !countType->integer)
-                    return where + QStringLiteral(": unknown or unusable list types");
+                    return where + PlyPrecheckWords::tr(": unknown or unusable list types");
                 p = {std::string(w[4]), *itemType, true, *countType};
             } else if (w.size() == 3) {
                 const auto type = plyType(w[1]);
                 if (!type)
-                    return where + QStringLiteral(": unknown property type %1").arg(quoted(w[1]));
+                    return where + PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
                 p = {std::string(w[2]), *type, false, {}};
             } else {
                 return where + QStringLiteral(": expected 'property <type> <name>'");
@@ -190,17 +195,17 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             h.elements.back().properties.push_back(std::move(p));
         } else if (w[0] == "end_header") {
             if (w.size() != 1)
-                return where + QStringLiteral(": words after 'end_header'");
+                return where + PlyPrecheckWords::tr(": words after 'end_header'");
             if (h.format == PlyHeader::Unknown)
-                return QStringLiteral("the PLY header has no 'format' line");
+                return PlyPrecheckWords::tr("the PLY header has no 'format' line");
             h.bodyOffset = qint64(pos);
             h.bodyLine = lineNo + 1;
             return {};
         } else {
-            return where + QStringLiteral(": unknown keyword %1").arg(quoted(w[0]));
+            return where + PlyPrecheckWords::tr(": unknown keyword %1").arg(quoted(w[0]));
         }
     }
-    return QStringLiteral("the PLY header has no 'end_header' line (truncated or not a PLY file)");
+    return PlyPrecheckWords::tr("the PLY header has no 'end_header' line (truncated or not a PLY file)");
 }
 
 const PlyElement *findElement(const PlyHeader &h, std::string_view name)
@@ -288,7 +293,7 @@ std::int64_t decodeInteger(const unsigned char *b, const PlyType &t, bool bigEnd
 
 QString truncatedAt(const PlyElement &e, quint64 index)
 {
-    return QStringLiteral("the file ends inside %1 %2 of %3 (truncated?)")
+    return PlyPrecheckWords::tr("the file ends inside %1 %2 of %3 (truncated?)")
         .arg(QString::fromStdString(e.name))
         .arg(index + 1)
         .arg(e.count);
@@ -329,7 +334,7 @@ void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
                 }
                 const std::int64_t n = decodeInteger(raw, p.countType, bigEndian);
                 if (n < 0) {
-                    check.error = QStringLiteral("%1 %2 has a negative list length")
+                    check.error = PlyPrecheckWords::tr("%1 %2 has a negative list length")
                                       .arg(QString::fromStdString(e.name))
                                       .arg(i + 1);
                     return;
@@ -342,7 +347,7 @@ void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
         }
     }
     if (body.remaining() > 0)
-        check.warnings << QStringLiteral("ignored %1 after the last element")
+        check.warnings << PlyPrecheckWords::tr("ignored %1 after the last element")
                               .arg(meshtext::counted(quint64(body.remaining()), "byte", "bytes"));
 }
 
@@ -372,13 +377,13 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
                 };
                 if (!p.isList) {
                     if (!valueFits(t, p.type))
-                        return bad(p.type.integer ? QStringLiteral("an integer")
+                        return bad(p.type.integer ? PlyPrecheckWords::tr("an integer")
                                                   : QStringLiteral("a number"));
                     continue;
                 }
                 std::int64_t n = -1;
                 if (!meshtext::parseInteger(t, n) || n < 0 || quint64(n) > body.size() / 2)
-                    return bad(QStringLiteral("a list length"));
+                    return bad(PlyPrecheckWords::tr("a list length"));
                 for (std::int64_t k = 0; k < n; ++k) {
                     t = tokens.next();
                     if (t.empty()) {
@@ -386,14 +391,14 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
                         return;
                     }
                     if (!valueFits(t, p.type))
-                        return bad(p.type.integer ? QStringLiteral("an integer")
+                        return bad(p.type.integer ? PlyPrecheckWords::tr("an integer")
                                                   : QStringLiteral("a number"));
                 }
             }
         }
     }
     if (!tokens.next().empty())
-        check.warnings << QStringLiteral("ignored the text after the last element (from line %1)")
+        check.warnings << PlyPrecheckWords::tr("ignored the text after the last element (from line %1)")
                               .arg(tokens.line());
 }
 
@@ -403,7 +408,7 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        check.error = QStringLiteral("cannot open the file: %1").arg(file.errorString());
+        check.error = PlyPrecheckWords::tr("cannot open the file: %1").arg(file.errorString());
         return;
     }
     const QByteArray head = file.read(std::min(check.fileSize, kMaxHeaderBytes));
@@ -415,12 +420,12 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
     const PlyElement *vertex = findElement(h, "vertex");
     if (!vertex || !hasScalar(*vertex, "x") || !hasScalar(*vertex, "y")
         || !hasScalar(*vertex, "z")) {
-        check.error = QStringLiteral("the PLY file has no vertex element with x, y and z");
+        check.error = PlyPrecheckWords::tr("the PLY file has no vertex element with x, y and z");
         return;
     }
     const PlyElement *face = findElement(h, "face");
     if (!face || face->count == 0 || !hasFaceIndices(*face)) {
-        check.error = QStringLiteral("the PLY file has no faces (a point cloud?)");
+        check.error = PlyPrecheckWords::tr("the PLY file has no faces (a point cloud?)");
         return;
     }
     check.binary = h.format != PlyHeader::Ascii;
@@ -439,7 +444,7 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
         needed += e.count * perElement;
         if (needed > bodyBytes + 1) {
             check.error =
-                QStringLiteral("the header declares %1 %2 elements, which need at least %3 bytes, "
+                PlyPrecheckWords::tr("the header declares %1 %2 elements, which need at least %3 bytes, "
                                "but the file has %4 bytes after the header (truncated or corrupt)")
                     .arg(e.count)
                     .arg(QString::fromStdString(e.name))
@@ -459,7 +464,7 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
         return;
     const std::string_view body = std::string_view(bytes).substr(std::size_t(h.bodyOffset));
     if (body.find('\0') != std::string_view::npos) {
-        check.error = QStringLiteral("an ascii PLY file with binary data in it (a NUL byte)");
+        check.error = PlyPrecheckWords::tr("an ascii PLY file with binary data in it (a NUL byte)");
         return;
     }
     validateAscii(body, h, check);

@@ -1,5 +1,6 @@
 #include "BuildThread.h"
 
+#include <QCoreApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QThread>
@@ -7,6 +8,11 @@
 #include <chrono>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BuildThreadWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BuildThread)
+};
 
 namespace {
 
@@ -37,19 +43,19 @@ Result<> BuildThread::start(QOpenGLContext *shareContext)
 {
     stop();
     if (!shareContext)
-        return fail(QStringLiteral("the viewport has no OpenGL context yet"));
+        return fail(BuildThreadWords::tr("the viewport has no OpenGL context yet"));
     auto context = std::make_unique<QOpenGLContext>();
     context->setFormat(shareContext->format());
     context->setShareContext(shareContext);
     if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
         return fail(
-            QStringLiteral("the driver cannot create an OpenGL context sharing the viewport's"));
+            BuildThreadWords::tr("the driver cannot create an OpenGL context sharing the viewport's"));
     // QOffscreenSurface must be created (and destroyed) on the GUI thread.
     auto surface = std::make_unique<QOffscreenSurface>();
     surface->setFormat(context->format());
     surface->create();
     if (!surface->isValid())
-        return fail(QStringLiteral("cannot create an offscreen surface for the compile thread"));
+        return fail(BuildThreadWords::tr("cannot create an offscreen surface for the compile thread"));
     // For the viewport's own context when it is lent: a surface of its format.
     auto lentSurface = std::make_unique<QOffscreenSurface>();
     lentSurface->setFormat(shareContext->format());
@@ -170,7 +176,7 @@ void BuildThread::deliver(BuildReply reply, quint64 generation)
 void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, WarmDone done)
 {
     if (!m_worker) {
-        done(fail(QStringLiteral("the build thread is not running")));
+        done(fail(BuildThreadWords::tr("the build thread is not running")));
         return;
     }
     BuildWorker *worker = m_worker;

@@ -1,5 +1,6 @@
 #include "BuildWorker.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
@@ -7,6 +8,11 @@
 #include <QThread>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BuildWorkerWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BuildWorker)
+};
 
 BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
     : m_context(context)
@@ -17,8 +23,7 @@ BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
 Result<> BuildWorker::initialize()
 {
     if (!m_context->makeCurrent(m_surface))
-        return fail(QStringLiteral(
-            "the shared OpenGL context cannot be made current on the compile thread"));
+        return fail(BuildWorkerWords::tr("the shared OpenGL context cannot be made current on the compile thread"));
     m_parallelShaderCompile =
         m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
@@ -61,7 +66,7 @@ Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscree
     // whose shader variant the viewport's next frame needs.
     Result<> ready = lent.context->makeCurrent(lent.surface ? lent.surface : surface)
         ? Result<>()
-        : fail(QStringLiteral("the viewport's context cannot be made current on the build thread"));
+        : fail(BuildWorkerWords::tr("the viewport's context cannot be made current on the build thread"));
     if (ready && lent.whileCurrent)
         lent.whileCurrent();
     if (ready && !lent.warmer->isCreated())

@@ -2,10 +2,16 @@
 
 #include "mesh/FaceLayout.h"
 
+#include <QCoreApplication>
 #include <limits>
 #include <vector>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct GpuMeshWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::GpuMesh)
+};
 
 namespace {
 constexpr int kSharedAttributes = 2; // position, normal
@@ -59,7 +65,7 @@ Result<> GpuMesh::fill(Buffers &buffers, const std::vector<float> &vertices, int
                        const std::vector<std::uint32_t> &indices)
 {
     if (!buffers.vao.create() || !buffers.vbo.create() || !buffers.ibo.create())
-        return fail(QStringLiteral("the driver cannot create a vertex array or buffer"));
+        return fail(GpuMeshWords::tr("the driver cannot create a vertex array or buffer"));
     buffers.vao.bind();
     buffers.vbo.bind();
     // glBufferData rather than allocate(), whose int size stops at 2 GiB.
@@ -83,7 +89,7 @@ Result<> GpuMesh::fill(Buffers &buffers, const std::vector<float> &vertices, int
 Result<> GpuMesh::prepareFaceLayout(int level)
 {
     if (!isValid())
-        return fail(QStringLiteral("no mesh uploaded"));
+        return fail(GpuMeshWords::tr("no mesh uploaded"));
     Level &range = m_levels[std::size_t(level)];
     if (range.faces)
         return {};
@@ -91,7 +97,7 @@ Result<> GpuMesh::prepareFaceLayout(int level)
     const std::size_t indexBytes = std::size_t(range.count) * sizeof(std::uint32_t);
     const std::size_t indexOffset = std::size_t(range.first) * sizeof(std::uint32_t);
     if (!fitsRead(vertexBytes) || !fitsRead(indexBytes) || !fitsRead(indexOffset))
-        return fail(QStringLiteral("the mesh is too large to read back for flat shading"));
+        return fail(GpuMeshWords::tr("the mesh is too large to read back for flat shading"));
 
     // The CPU copy is gone once uploaded (Renderer::setScene): read it back.
     std::vector<float> interleaved(m_vertexCount * kSharedAttributes * 3);
@@ -106,7 +112,7 @@ Result<> GpuMesh::prepareFaceLayout(int level)
         m_shared.ibo.read(int(indexOffset), mesh.indices.data(), int(indexBytes));
     m_shared.vao.release();
     if (!readVertices || !readIndices)
-        return fail(QStringLiteral("the driver cannot read the mesh back for flat shading"));
+        return fail(GpuMeshWords::tr("the driver cannot read the mesh back for flat shading"));
 
     mesh.positions.resize(m_vertexCount);
     mesh.normals.resize(m_vertexCount);

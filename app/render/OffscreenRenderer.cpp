@@ -3,6 +3,7 @@
 #include "GlFormat.h"
 #include "headless/HeadlessPlatform.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QOpenGLExtraFunctions>
@@ -11,6 +12,11 @@
 
 namespace phonglab {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct OffscreenRendererWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::OffscreenRenderer)
+};
+
 namespace {
 
 // Names what is missing: the EGL platform's own reason without a display
@@ -18,12 +24,12 @@ namespace {
 QString noContextMessage()
 {
     if (runsHeadless())
-        return QStringLiteral("no OpenGL context could be created without a display server: %1. "
+        return OffscreenRendererWords::tr("no OpenGL context could be created without a display server: %1. "
                               "PhongLab renders through EGL there (Mesa: packages libegl1 and "
                               "libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)")
             .arg(headlessGlProblem());
     const QString display = qEnvironmentVariable("DISPLAY");
-    return QStringLiteral("no OpenGL context could be created on Qt's '%1' platform%2; "
+    return OffscreenRendererWords::tr("no OpenGL context could be created on Qt's '%1' platform%2; "
                           "QT_QPA_PLATFORM=phonglab-headless renders through EGL without a "
                           "display server")
         .arg(QGuiApplication::platformName(),
@@ -51,7 +57,7 @@ Result<> OffscreenRenderer::create(QOffscreenSurface *surface)
     const QSurfaceFormat got = m_context->format();
     if (got.version() < qMakePair(3, 3)) {
         m_context.reset();
-        return fail(QStringLiteral("OpenGL 3.3 is required, the driver offers %1.%2")
+        return fail(OffscreenRendererWords::tr("OpenGL 3.3 is required, the driver offers %1.%2")
                         .arg(got.majorVersion())
                         .arg(got.minorVersion()));
     }
@@ -66,7 +72,7 @@ Result<> OffscreenRenderer::create(QOffscreenSurface *surface)
     if (!m_context->makeCurrent(m_surface)) {
         destroy();
         return fail(
-            QStringLiteral("the OpenGL context could not be made current on an offscreen surface"));
+            OffscreenRendererWords::tr("the OpenGL context could not be made current on an offscreen surface"));
     }
     m_rendererName = QString::fromLatin1(
         reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));

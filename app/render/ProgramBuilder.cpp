@@ -3,9 +3,15 @@
 #include "UniformIntrospection.h"
 #include "core/ShaderDialect.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ProgramBuilderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ProgramBuilder)
+};
 
 namespace {
 
@@ -20,7 +26,7 @@ void ensureError(BuildReport &result, BuildStep step, const QString &file, const
     d.step = step;
     d.file = file;
     d.message = log.trimmed().isEmpty()
-        ? QStringLiteral("%1 failed without a message from the driver")
+        ? ProgramBuilderWords::tr("%1 failed without a message from the driver")
               .arg(step == BuildStep::Link ? "linking" : "compiling")
         : log.trimmed();
     result.diagnostics.push_back(d);
@@ -45,12 +51,11 @@ void explainDialect(std::vector<ShaderDiagnostic> &diagnostics, ShaderDialect di
         const QString m = d.message;
         if (dialect == ShaderDialect::Es100
             && (m.contains(QLatin1StringView("inverse")) || m.contains(QLatin1StringView("transpose"))))
-            d.message += QStringLiteral(
-                " (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, "
+            d.message += ProgramBuilderWords::tr(" (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, "
                 "or pass the normal matrix in as a uniform)");
         else if (dialect != ShaderDialect::Desktop && m.contains(QLatin1StringView("not supported"))
                  && m.contains(QLatin1StringView("version")))
-            d.message += QStringLiteral(" (this OpenGL driver does not run %1 shaders in a desktop "
+            d.message += ProgramBuilderWords::tr(" (this OpenGL driver does not run %1 shaders in a desktop "
                                         "context: it lacks ARB_ES%2_compatibility)")
                              .arg(shaderDialectName(dialect),
                                   dialect == ShaderDialect::Es300 ? QStringLiteral("3")
@@ -181,7 +186,7 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
             out.report.diagnostics.insert(
                 out.report.diagnostics.begin(),
                 {BuildStep::Link, ShaderDiagnostic::Severity::Error, linkName, 0, 0,
-                 QStringLiteral("the vertex shader is %1 and the fragment shader %2: both stages "
+                 ProgramBuilderWords::tr("the vertex shader is %1 and the fragment shader %2: both stages "
                                 "must be written in the same GLSL (give both files)")
                      .arg(shaderDialectName(v), shaderDialectName(f))});
     }

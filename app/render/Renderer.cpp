@@ -7,12 +7,18 @@
 #include "core/ResourcePaths.h"
 #include "mesh/BuiltinMeshes.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <cmath>
 #include <limits>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct RendererWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::Renderer)
+};
 
 namespace {
 constexpr double kMarkerRadius = 0.06; // world units
@@ -30,10 +36,10 @@ Result<> Renderer::initialize()
         return fail(markerFiles.error());
     const BuildReport marker = m_markerProgram.build(markerFiles->vertex, markerFiles->fragment);
     if (!marker.ok)
-        return fail(QStringLiteral("cannot build the light-marker program:\n")
+        return fail(RendererWords::tr("cannot build the light-marker program:\n")
                     + marker.errorSummary());
     if (Result<> uploaded = m_markerMesh.upload(makeUvSphere(16, 8)); !uploaded)
-        return fail(QStringLiteral("cannot upload the light marker: ") + uploaded.error());
+        return fail(RendererWords::tr("cannot upload the light marker: ") + uploaded.error());
     m_initialized = true;
     return {};
 }
@@ -94,7 +100,7 @@ Result<> Renderer::setScene(const Scene &scene, SceneMeshes &&loaded)
         };
         auto it = loaded.entries.find(key);
         if (it == loaded.entries.end() || !it->mesh)
-            return refuse(QStringLiteral("mesh was not loaded"));
+            return refuse(RendererWords::tr("mesh was not loaded"));
         auto gpu = std::make_shared<GpuMesh>();
         if (Result<> uploaded = gpu->upload(*it->mesh, it->levels.get()); !uploaded)
             return refuse(uploaded.error());
@@ -284,7 +290,7 @@ ShaderProgram *Renderer::programFor(const SceneObject &object)
             m_failedMethods.contains(method) ? BuildReport() : buildShipped(own, method);
         if (!built.ok) {
             m_failedMethods.insert(method);
-            m_drawError = QStringLiteral("%1: not drawn: the shipped %2 shaders did not build")
+            m_drawError = RendererWords::tr("%1: not drawn: the shipped %2 shaders did not build")
                               .arg(object.mesh, shadingName(method));
             return nullptr;
         }
@@ -323,7 +329,7 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
         if (perFace) {
             if (Result<> prepared = mesh->prepareFaceLayout(level); !prepared) {
                 m_drawError =
-                    QStringLiteral("%1: not drawn: %2").arg(object.mesh, prepared.error());
+                    RendererWords::tr("%1: not drawn: %2").arg(object.mesh, prepared.error());
                 continue;
             }
         }

@@ -2,10 +2,16 @@
 
 #include "mesh/BuiltinMeshes.h"
 
+#include <QCoreApplication>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct WarmUpDrawWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::WarmUpDraw)
+};
 
 namespace {
 constexpr int kTargetSide = 8; // pixels: enough to run every stage, cheap to fill
@@ -28,7 +34,7 @@ Result<> WarmUpDraw::create(Target target, int samples)
     m_fbo = std::make_unique<QOpenGLFramebufferObject>(QSize(kTargetSide, kTargetSide), format);
     if (!m_fbo->isValid()) {
         m_fbo.reset();
-        return fail(QStringLiteral("cannot create the %1-sample framebuffer for warming programs")
+        return fail(WarmUpDrawWords::tr("cannot create the %1-sample framebuffer for warming programs")
                         .arg(samples));
     }
     // Same interleaved layout as every scene mesh, so the vertex fetch code

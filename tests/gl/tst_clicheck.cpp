@@ -34,6 +34,29 @@ QJsonObject parseJson(const ProcessRun &r)
     return doc.object();
 }
 
+// The object's keys, recursively, with the values a script compares
+// (verdict, key, also, undetectable, the numbers): what must not change
+// with the language. Sentences ("message", "form") are left out.
+QJsonValue scriptView(const QJsonValue &value)
+{
+    if (value.isArray()) {
+        QJsonArray out;
+        for (const QJsonValue &v : value.toArray())
+            out.append(scriptView(v));
+        return out;
+    }
+    if (!value.isObject())
+        return value;
+    QJsonObject out;
+    const QJsonObject o = value.toObject();
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const bool sentence = it.key() == QLatin1String("message")
+            || it.key() == QLatin1String("form") || it.key() == QLatin1String("notes");
+        out.insert(it.key(), sentence ? QJsonValue(QStringLiteral("(text)")) : scriptView(*it));
+    }
+    return out;
+}
+
 } // namespace
 
 class TestCliCheck : public QObject
@@ -41,6 +64,55 @@ class TestCliCheck : public QObject
     Q_OBJECT
 
 private slots:
+    // Issue 33: under a German locale the verdict and the diagnosis are
+    // German, in the slide's words; --json keeps its keys and key values.
+    void germanLocaleSpeaksGermanButJsonKeepsItsKeys()
+    {
+        const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code,
+                                   QStringLiteral("de.frag"));
+        const QStringList args{QStringLiteral("check"), checkScene(), QStringLiteral("--size"),
+                               kSize, QStringLiteral("--fragment"), frag};
+        const ProcessRun english = runPhonglabUnderLocale(args, QStringLiteral("C"));
+        const ProcessRun german = runPhonglabUnderLocale(args, QStringLiteral("de_DE.UTF-8"));
+        QCOMPARE(english.exitCode, 1);
+        QCOMPARE(german.exitCode, 1);
+        const QString en = QString::fromUtf8(english.out);
+        const QString de = QString::fromUtf8(german.out);
+        QVERIFY2(en.contains(QStringLiteral("check: fail")), qPrintable(en));
+        QVERIFY2(en.contains(QStringLiteral("incident vector")), qPrintable(en));
+        QVERIFY2(!de.contains(QStringLiteral("check: fail")), qPrintable(de));
+        QVERIFY2(de.contains(QStringLiteral("Einfallsvektor")), qPrintable(de)); // the slide's word
+        QVERIFY2(de.contains(QStringLiteral("reflect-incident")), qPrintable(de)); // keys stay
+        QVERIFY2(!de.contains(QStringLiteral("explains")), qPrintable(de));
+        // --lang outranks the locale, both ways.
+        QCOMPARE(runPhonglabUnderLocale(args + QStringList{QStringLiteral("--lang"),
+                                                           QStringLiteral("de")},
+                                        QStringLiteral("C"))
+                     .out,
+                 german.out);
+        QCOMPARE(runPhonglabUnderLocale(args + QStringList{QStringLiteral("--lang=en")},
+                                        QStringLiteral("de_DE.UTF-8"))
+                     .out,
+                 english.out);
+
+        const QStringList json = args + QStringList{QStringLiteral("--json")};
+        const ProcessRun englishJson = runPhonglabUnderLocale(json, QStringLiteral("C"));
+        const ProcessRun germanJson = runPhonglabUnderLocale(json, QStringLiteral("de_DE.UTF-8"));
+        const QJsonObject e = parseJson(englishJson), g = parseJson(germanJson);
+        QVERIFY(!e.isEmpty());
+        QCOMPARE(scriptView(g), scriptView(e));
+        QVERIFY(g != e); // the sentences in it are German
+    }
+
+    void unknownLanguageIsAUsageError()
+    {
+        const ProcessRun r = runPhonglab({QStringLiteral("check"), checkScene(),
+                                          QStringLiteral("--lang"), QStringLiteral("fr")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("'fr'")), qPrintable(r.err));
+        QCOMPARE(runPhonglab({QStringLiteral("--lang")}).exitCode, 2);
+    }
+
     void helpNamesCheckAndItsKeys()
     {
         const ProcessRun top = runPhonglab({QStringLiteral("--help")});

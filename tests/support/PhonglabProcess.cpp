@@ -14,9 +14,10 @@ QString phonglabExecutable()
     return QCoreApplication::applicationDirPath() + QStringLiteral("/../app/phonglab");
 }
 
-ProcessRun runPhonglab(const QStringList &args, int timeoutMs)
+namespace {
+
+ProcessRun run(QProcess &p, const QStringList &args, int timeoutMs)
 {
-    QProcess p;
     p.start(phonglabExecutable(), args);
     if (!p.waitForFinished(timeoutMs)) {
         p.kill();
@@ -28,6 +29,25 @@ ProcessRun runPhonglab(const QStringList &args, int timeoutMs)
     r.out = p.readAllStandardOutput();
     r.err = QString::fromLocal8Bit(p.readAllStandardError());
     return r;
+}
+
+} // namespace
+
+ProcessRun runPhonglab(const QStringList &args, int timeoutMs)
+{
+    QProcess p;
+    return run(p, args, timeoutMs);
+}
+
+ProcessRun runPhonglabUnderLocale(const QStringList &args, const QString &lang, int timeoutMs)
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES"})
+        env.remove(QString::fromLatin1(name));
+    env.insert(QStringLiteral("LANG"), lang);
+    QProcess p;
+    p.setProcessEnvironment(env);
+    return run(p, args, timeoutMs);
 }
 
 } // namespace phonglab::test

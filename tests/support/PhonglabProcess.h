@@ -17,5 +17,9 @@ struct ProcessRun {
 QString phonglabExecutable();
 
 ProcessRun runPhonglab(const QStringList &args, int timeoutMs = 120000);
+// The same under the locale `lang` (LANG=lang; LANGUAGE, LC_ALL and
+// LC_MESSAGES removed), as a user of that desktop starts it.
+ProcessRun runPhonglabUnderLocale(const QStringList &args, const QString &lang,
+                                  int timeoutMs = 120000);
 
 } // namespace phonglab::test

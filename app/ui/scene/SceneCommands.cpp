@@ -16,10 +16,10 @@ int mergeIdFor(int kind, int index, int field)
     return kind * kItemsPerKind * kFieldsPerItem + index * kFieldsPerItem + field;
 }
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("SceneCommands", text);
-}
+// The undo steps' names, as the Edit menu shows them.
+struct CommandWords {
+    Q_DECLARE_TR_FUNCTIONS(SceneCommands)
+};
 
 } // namespace
 
@@ -39,35 +39,35 @@ void SceneCommand::change(const std::function<void(Scene &)> &edit) const
 
 SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight &before,
                                  const PointLight &after, LightField field, bool merge)
-    : SetPropertyCommand(std::move(access), tr("Edit light %1").arg(index + 1),
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Edit light %1").arg(index + 1),
                          merge ? mergeIdFor(1, index, int(field)) : -1, index, before, after)
 {
 }
 
 SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
     : SetPropertyCommand(std::move(access),
-                         (on ? tr("Switch on light %1") : tr("Switch off light %1")).arg(index + 1),
+                         (on ? CommandWords::tr("Switch on light %1") : CommandWords::tr("Switch off light %1")).arg(index + 1),
                          -1, index, !on, on)
 {
 }
 
 RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
                                        const std::string &after)
-    : SetPropertyCommand(std::move(access), tr("Rename light %1").arg(index + 1), -1, index, before,
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Rename light %1").arg(index + 1), -1, index, before,
                          after)
 {
 }
 
 SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before,
                                      const glm::dvec3 &after)
-    : SetPropertyCommand(std::move(access), tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0,
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0,
                          before, after)
 {
 }
 
 SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Material &before,
                                        const Material &after, MaterialField field)
-    : SetPropertyCommand(std::move(access), tr("Edit material"),
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Edit material"),
                          field == MaterialField::Preset ? -1 : mergeIdFor(3, object, int(field)),
                          object, before, after)
 {
@@ -75,13 +75,13 @@ SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Mat
 
 SetTransformCommand::SetTransformCommand(SceneAccess access, int object, const Transform &before,
                                          const Transform &after, TransformField field)
-    : SetPropertyCommand(std::move(access), tr("Move object"), mergeIdFor(4, object, int(field)),
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Move object"), mergeIdFor(4, object, int(field)),
                          object, before, after)
 {
 }
 
 AddLightCommand::AddLightCommand(SceneAccess access, const PointLight &light)
-    : SceneCommand(std::move(access), tr("Add light"), -1)
+    : SceneCommand(std::move(access), CommandWords::tr("Add light"), -1)
     , m_light(light)
 {
 }
@@ -97,7 +97,7 @@ void AddLightCommand::undo()
 }
 
 RemoveLightCommand::RemoveLightCommand(SceneAccess access, int index, const PointLight &light)
-    : SceneCommand(std::move(access), tr("Remove light %1").arg(index + 1), -1)
+    : SceneCommand(std::move(access), CommandWords::tr("Remove light %1").arg(index + 1), -1)
     , m_index(index)
     , m_light(light)
 {

@@ -18,7 +18,7 @@ namespace phonglab {
 // before the next draw.
 class GpuScene
 {
-    Q_DECLARE_TR_FUNCTIONS(GpuScene)
+    Q_DECLARE_TR_FUNCTIONS(phonglab::GpuScene)
 
 public:
     // GL: the renderer's resources.

@@ -1,6 +1,8 @@
 #include "GuiMain.h"
 
 #include "GuiArguments.h"
+#include "core/Language.h"
+#include "LanguageMenu.h"
 #include "MainWindow.h"
 #include "ui/viewport/Viewport.h"
 #include "core/ResourcePaths.h"
@@ -134,6 +136,11 @@ int runGui(int argc, char **argv)
     // Docks and task bars (Wayland's app id, X11's WM_CLASS) match the
     // window to the installed .desktop file, and so to its icon, by this.
     QGuiApplication::setDesktopFileName(QStringLiteral("org.phonglab.PhongLab"));
+    // The language chosen in the window (View → Language), unless --lang
+    // said otherwise for this run; else the locale's (core/Language).
+    if (const QString remembered = LanguageMenu::rememberedLanguage();
+        !languageRequested() && !remembered.isEmpty())
+        useLanguage(remembered);
 
     QStringList arguments = QApplication::arguments();
     arguments.removeFirst(); // the program

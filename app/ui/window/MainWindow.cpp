@@ -3,6 +3,7 @@
 #include "DefaultLayout.h"
 #include "ui/viewport/DetailLevelLabel.h"
 #include "FileMenu.h"
+#include "LanguageMenu.h"
 #include "FileTypes.h"
 #include "ui/viewport/FrameStatsLabel.h"
 #include "ui/help/HelpMenu.h"
@@ -279,6 +280,11 @@ void MainWindow::createViewMenu()
     view->addAction(performance);
     m_editDocks->addDockToggles(view);
     m_liveCheck->addViewActions(view);
+
+    view->addSeparator();
+    auto *language = new LanguageMenu(view->addMenu(tr("L&anguage")), this);
+    connect(language, &LanguageMenu::chosen, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
 }
 
 void MainWindow::createStatusBar()

@@ -1,0 +1,161 @@
+// Issue 33: PhongLab under a German desktop (LANG=de_DE.UTF-8). The menus
+// read Datei / Bearbeiten / Ansicht / Hilfe, the live check's status is
+// German, View → Language offers both languages and remembers a choice,
+// and a value typed the German way ("0,5") is saved as 0.5: the scene loads
+// identically under C and passes `phonglab check`.
+#include "PhonglabProcess.h"
+#include "ResultChecks.h"
+#include "TestPaths.h"
+#include "UiTestWindow.h"
+#include "core/Language.h"
+#include "core/SceneJson.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/scene/MaterialDock.h"
+#include "ui/scene/SceneEditDockSet.h"
+#include "ui/scene/Vec3Field.h"
+#include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/Viewport.h"
+#include "ui/window/LanguageMenu.h"
+#include "ui/window/MainWindow.h"
+
+#include <QAction>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace phonglab;
+using namespace phonglab::test;
+
+namespace {
+
+constexpr int kCheckTimeoutMs = 30000;
+
+QString plain(QString text)
+{
+    return text.remove(QLatin1Char('&'));
+}
+
+} // namespace
+
+class TestLanguage : public QObject, public UiTestWindow
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        m_env.isolate();
+        QSettings().remove(QStringLiteral("ui/language"));
+        // A German desktop, as the window sees it when it starts there.
+        for (const char *name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES"})
+            qunsetenv(name);
+        qputenv("LANG", "de_DE.UTF-8");
+        QCOMPARE(languageFromEnvironment(), QStringLiteral("de"));
+        useLanguage(languageFromEnvironment());
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    }
+
+    void cleanupTestCase()
+    {
+        useLanguage(QStringLiteral("en"));
+        QLocale::setDefault(QLocale::c());
+    }
+
+    void menusAndCheckSpeakGerman()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        QStringList menus;
+        for (QAction *action : m_window->menuBar()->actions())
+            menus << plain(action->text());
+        for (const char *expected : {"Datei", "Bearbeiten", "Ansicht", "Hilfe"})
+            QVERIFY2(menus.contains(QString::fromUtf8(expected)), qPrintable(menus.join(u'|')));
+
+        // The slide's equation taken literally: a pass the status names in words.
+        ShaderEditor *editor = fragmentEditor();
+        for (const auto &[from, to] :
+             {std::pair{QStringLiteral("if (NdotL <= 0.0)"), QStringLiteral("if (false)")},
+              std::pair{QStringLiteral("Id[i] * kd * NdotL"),
+                        QStringLiteral("Id[i] * kd * max(0.0, NdotL)")}}) {
+            QVERIFY2(editor->findFirst(from, false, true, false, false, true, 0, 0),
+                     qPrintable(from));
+            editor->setFocus();
+            QTest::keyClicks(editor, to);
+        }
+        LiveCheck *check = m_window->liveCheck();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return !check->isChecking() && check->lastResult()
+                    && check->lastResult()->report.equation == PhongEquation::Slide;
+            },
+            kCheckTimeoutMs));
+        const QString status = check->statusLabel()->text();
+        QVERIFY2(status.startsWith(QStringLiteral("✓")), qPrintable(status));
+        QVERIFY2(!status.contains(QStringLiteral("slide")), qPrintable(status));
+        QVERIFY2(status.contains(QStringLiteral("Folie")), qPrintable(status));
+    }
+
+    void languageMenuRemembersAChoice()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        auto *german = m_window->findChild<QAction *>(QStringLiteral("language-de"));
+        auto *english = m_window->findChild<QAction *>(QStringLiteral("language-en"));
+        QVERIFY(german && english);
+        QVERIFY(german->isChecked()); // the language in use
+        QCOMPARE(english->text(), QStringLiteral("English")); // each in its own words
+        english->trigger();
+        QCOMPARE(LanguageMenu::rememberedLanguage(), QStringLiteral("en"));
+        const QString said = m_window->statusBar()->currentMessage();
+        QVERIFY2(said.contains(QStringLiteral("English")) && said.contains(QStringLiteral("Start")),
+                 qPrintable(said));
+        german->trigger();
+        QCOMPARE(LanguageMenu::rememberedLanguage(), QStringLiteral("de"));
+        QSettings().remove(QStringLiteral("ui/language"));
+    }
+
+    // Number fields show and read the user's locale; the scene file does not
+    // depend on it.
+    void germanCommaIsSavedAsAPoint()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        Vec3Field *kd = m_window->editDocks()->materialDock()->field(MaterialField::Kd);
+        for (int axis = 0; axis < 3; ++axis)
+            kd->component(axis)->setText(QStringLiteral("0,5"));
+        kd->commit();
+        QCOMPARE(viewport()->currentScene().objects[0].material.kd, glm::dvec3(0.5));
+        QVERIFY(kd->component(0)->text().contains(QLatin1Char(','))); // shown the German way
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("saved.json"));
+        QVERIFY_OK(m_window->saveScene(path));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY2(text.contains("0.5") && !text.contains("0,5"), text.constData());
+
+        QLocale::setDefault(QLocale::c());
+        const SceneLoadResult loaded = loadSceneFile(path);
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+        QCOMPARE(loaded.scene->objects[0].material.kd, glm::dvec3(0.5));
+        QCOMPARE(loaded.scene->objects.size(), savedScene().objects.size());
+        const ProcessRun run =
+            runPhonglabUnderLocale({QStringLiteral("check"), path, QStringLiteral("--size"),
+                                    QStringLiteral("320x240")},
+                                   QStringLiteral("C"));
+        QVERIFY2(run.exitCode == 0, run.out.constData());
+    }
+
+    void cleanup() { m_window.reset(); }
+};
+
+QTEST_MAIN(TestLanguage)
+#include "tst_language.moc"

@@ -1,0 +1,3550 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>ObjectChoice</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>check: %1</source>
+        <translation>Prüfung: %1</translation>
+    </message>
+    <message>
+        <source>check: nothing to compare in this view</source>
+        <translation>Prüfung: in dieser Ansicht gibt es nichts zu vergleichen</translation>
+    </message>
+    <message>
+        <source>%1 against exact Phong: %2</source>
+        <translation>%1 verglichen mit exaktem Phong: %2</translation>
+    </message>
+    <message>
+        <source>analytic (exact)</source>
+        <translation>analytisch (exakt)</translation>
+    </message>
+    <message>
+        <source>from file</source>
+        <translation>aus der Datei</translation>
+    </message>
+    <message>
+        <source>, crease %1°</source>
+        <translation>, Knickwinkel %1°</translation>
+    </message>
+    <message>
+        <source>computed (%1)</source>
+        <translation>berechnet (%1)</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <source>open (back faces drawn)</source>
+        <translation>offen (Rückseiten werden gezeichnet)</translation>
+    </message>
+    <message>
+        <source>%1 %: %2 of %3 triangles</source>
+        <translation>%1 %: %2 von %3 Dreiecken</translation>
+    </message>
+    <message>
+        <source>The file&apos;s normals; computed angle-weighted when it has none</source>
+        <translation>Die Normalen der Datei; winkelgewichtet berechnet, wenn sie keine hat</translation>
+    </message>
+    <message>
+        <source>Each face&apos;s own normal at all its corners (faceted)</source>
+        <translation>Die eigene Normale jeder Fläche an all ihren Ecken (facettiert)</translation>
+    </message>
+    <message>
+        <source>Unweighted mean of the normals of the faces around a vertex</source>
+        <translation>Ungewichteter Mittelwert der Normalen der Flächen um einen Vertex</translation>
+    </message>
+    <message>
+        <source>Face normals weighted by face area</source>
+        <translation>Flächennormalen, gewichtet nach Flächeninhalt</translation>
+    </message>
+    <message>
+        <source>Face normals weighted by the face&apos;s angle at the vertex</source>
+        <translation>Flächennormalen, gewichtet nach dem Winkel der Fläche am Vertex</translation>
+    </message>
+    <message>
+        <source>Faces meeting at a sharper angle than this do not share normals</source>
+        <translation>Flächen, die in einem schärferen Winkel als diesem aufeinandertreffen, teilen sich keine Normalen</translation>
+    </message>
+    <message>
+        <source>%1 meshes</source>
+        <translation>%1 Meshes</translation>
+    </message>
+    <message>
+        <source>%1 (%2 normals)</source>
+        <translation>%1 (Normalen: %2)</translation>
+    </message>
+    <message>
+        <source>%1 at %2 detail</source>
+        <translation>%1, Detailstufe %2</translation>
+    </message>
+    <message>
+        <source>levels of detail</source>
+        <translation>Detailstufen</translation>
+    </message>
+    <message>
+        <source>full detail</source>
+        <translation>volle Detailstufe</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1: Speichern nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>(not editable here)</source>
+        <translation>(hier nicht bearbeitbar)</translation>
+    </message>
+    <message>
+        <source>%1 %2: not editable here</source>
+        <translation>%1 %2: hier nicht bearbeitbar</translation>
+    </message>
+    <message>
+        <source>%1 %2: set on the program as you edit; kept across recompiles</source>
+        <translation>%1 %2: wird beim Bearbeiten im Programm gesetzt; bleibt beim erneuten Kompilieren erhalten</translation>
+    </message>
+    <message>
+        <source>%1: level %2 of %3, %4 triangles</source>
+        <translation>%1: Stufe %2 von %3, %4 Dreiecke</translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n light(s) left out</source>
+        <translation>
+            <numerusform>, %n Lichtquelle ausgelassen</numerusform>
+            <numerusform>, %n Lichtquellen ausgelassen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No file to open.</source>
+        <translation>Keine Datei zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>%1: PhongLab cannot open this kind of file. It opens scenes (.json) and meshes (.%2).</source>
+        <translation>%1: PhongLab kann diese Art von Datei nicht öffnen. Es öffnet Szenen (.json) und Meshes (.%2).</translation>
+    </message>
+    <message>
+        <source>%1: a scene file opens on its own. Open one scene, or any number of meshes.</source>
+        <translation>%1: Eine Szenendatei wird nur für sich allein geöffnet. Bitte eine Szene oder beliebig viele Meshes öffnen.</translation>
+    </message>
+    <message>
+        <source>PhongLab scenes (*.json);;All files (*)</source>
+        <translation>PhongLab-Szenen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Meshes (%1);;All files (*)</source>
+        <translation>Meshes (%1);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>cannot open the default scene %1: %2</source>
+        <translation>die Standardszene %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>PhongLab</source>
+        <translation>PhongLab</translation>
+    </message>
+    <message>
+        <source>Cannot open</source>
+        <translation>Öffnen nicht möglich</translation>
+    </message>
+    <message>
+        <source>%1
+
+%2
+
+Showing the default scene instead.</source>
+        <translation>%1
+
+%2
+
+Stattdessen wird die Standardszene angezeigt.</translation>
+    </message>
+    <message>
+        <source>%1
+
+Showing the default scene instead.</source>
+        <translation>%1
+
+Stattdessen wird die Standardszene angezeigt.</translation>
+    </message>
+</context>
+<context>
+    <name>SceneCommands</name>
+    <message>
+        <source>Edit light %1</source>
+        <translation>Licht %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Switch on light %1</source>
+        <translation>Licht %1 einschalten</translation>
+    </message>
+    <message>
+        <source>Switch off light %1</source>
+        <translation>Licht %1 ausschalten</translation>
+    </message>
+    <message>
+        <source>Rename light %1</source>
+        <translation>Licht %1 umbenennen</translation>
+    </message>
+    <message>
+        <source>Edit ambient light</source>
+        <translation>Ambientes Licht bearbeiten</translation>
+    </message>
+    <message>
+        <source>Edit material</source>
+        <translation>Material bearbeiten</translation>
+    </message>
+    <message>
+        <source>Move object</source>
+        <translation>Objekt verschieben</translation>
+    </message>
+    <message>
+        <source>Add light</source>
+        <translation>Lichtquelle hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove light %1</source>
+        <translation>Licht %1 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>SceneShaderFiles</name>
+    <message>
+        <source>Cannot save the %1 shader: %2</source>
+        <translation>Shader %1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Kept your unsaved shader edits; the scene&apos;s shader files were not loaded</source>
+        <translation>Ungespeicherte Shader-Änderungen behalten; die Shader-Dateien der Szene wurden nicht geladen</translation>
+    </message>
+    <message>
+        <source>shaders.%1: %2: file not found</source>
+        <translation>shaders.%1: %2: Datei nicht gefunden</translation>
+    </message>
+    <message>
+        <source>shaders.%1: %2</source>
+        <translation>shaders.%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>UniformOwner</name>
+    <message>
+        <source>set by the renderer</source>
+        <translation>vom Renderer gesetzt</translation>
+    </message>
+    <message>
+        <source>set by the scene (Material/Lights docks)</source>
+        <translation>von der Szene gesetzt (Docks Material/Lichtquellen)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::AboutDialog</name>
+    <message>
+        <source>PhongLab: %1</source>
+        <translation>PhongLab: %1</translation>
+    </message>
+    <message>
+        <source>unknown version</source>
+        <translation>unbekannte Version</translation>
+    </message>
+    <message>
+        <source>Qt: %1 (built against %2)</source>
+        <translation>Qt: %1 (gebaut gegen %2)</translation>
+    </message>
+    <message>
+        <source>OpenGL: %1</source>
+        <translation>OpenGL: %1</translation>
+    </message>
+    <message>
+        <source>not started yet (the 3D view has not drawn)</source>
+        <translation>noch nicht gestartet (die 3D-Ansicht hat noch nicht gezeichnet)</translation>
+    </message>
+    <message>
+        <source>OpenMesh: %1</source>
+        <translation>OpenMesh: %1</translation>
+    </message>
+    <message>
+        <source>Platform: %1, %2</source>
+        <translation>Plattform: %1, %2</translation>
+    </message>
+    <message>
+        <source>About PhongLab</source>
+        <translation>Über PhongLab</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;PhongLab&lt;/h2&gt;&lt;p&gt;A shader editor for the Phong illumination model: edit the shaders while they run, and check them against the exact answer.&lt;/p&gt;&lt;p&gt;Free software under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;PhongLab&lt;/h2&gt;&lt;p&gt;Ein Shader-Editor für das Phong-Beleuchtungsmodell: Shader während der Ausführung bearbeiten und gegen das exakte Bild prüfen.&lt;/p&gt;&lt;p&gt;Freie Software unter der GNU General Public License, Version 3 oder neuer.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>Copy the versions, for a bug report</source>
+        <translation>Versionen kopieren, für einen Fehlerbericht</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::AnalyticRaycaster</name>
+    <message>
+        <source>Object %1: mesh &quot;%2&quot; has no analytic surface (the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)</source>
+        <translation>Objekt %1: Mesh &quot;%2&quot; hat keine analytische Oberfläche (der Referenz-Raycaster kennt builtin:sphere, builtin:torus und builtin:cube)</translation>
+    </message>
+    <message>
+        <source>Invalid reference image size %1x%2</source>
+        <translation>Ungültige Größe des Referenzbilds %1x%2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BenchProcess</name>
+    <message>
+        <source>a measurement is already running</source>
+        <translation>eine Messung läuft bereits</translation>
+    </message>
+    <message>
+        <source>no temporary folder for the measurement: %1</source>
+        <translation>kein temporärer Ordner für die Messung: %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>could not run %1: %2</source>
+        <translation>%1 konnte nicht ausgeführt werden: %2</translation>
+    </message>
+    <message>
+        <source>the measurement stopped (exit %1)</source>
+        <translation>die Messung wurde abgebrochen (Exit-Code %1)</translation>
+    </message>
+    <message>
+        <source>the measurement wrote no results: %1</source>
+        <translation>die Messung hat keine Ergebnisse geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BindingChoice</name>
+    <message>
+        <source>automatic: %1</source>
+        <translation>automatisch: %1</translation>
+    </message>
+    <message>
+        <source>automatic: your own</source>
+        <translation>automatisch: eigener Wert</translation>
+    </message>
+    <message>
+        <source>your own</source>
+        <translation>eigener Wert</translation>
+    </message>
+    <message>
+        <source>PhongLab never sets it: you edit it here</source>
+        <translation>PhongLab setzt diesen Wert nie: Er wird hier bearbeitet</translation>
+    </message>
+    <message>
+        <source>What PhongLab sets %1 to (saved with the scene as &quot;bindings&quot;)</source>
+        <translation>Der Wert, auf den PhongLab %1 setzt (mit der Szene unter &quot;bindings&quot; gespeichert)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BuildThread</name>
+    <message>
+        <source>the viewport has no OpenGL context yet</source>
+        <translation>die Ansicht hat noch keinen OpenGL-Kontext</translation>
+    </message>
+    <message>
+        <source>the driver cannot create an OpenGL context sharing the viewport&apos;s</source>
+        <translation>der Treiber kann keinen mit dem Kontext der Ansicht geteilten OpenGL-Kontext erstellen</translation>
+    </message>
+    <message>
+        <source>cannot create an offscreen surface for the compile thread</source>
+        <translation>für den Kompilier-Thread kann keine Offscreen-Oberfläche erstellt werden</translation>
+    </message>
+    <message>
+        <source>the build thread is not running</source>
+        <translation>der Build-Thread läuft nicht</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BuildWorker</name>
+    <message>
+        <source>the shared OpenGL context cannot be made current on the compile thread</source>
+        <translation>der geteilte OpenGL-Kontext kann im Kompilier-Thread nicht als aktueller Kontext gesetzt werden</translation>
+    </message>
+    <message>
+        <source>the viewport&apos;s context cannot be made current on the build thread</source>
+        <translation>der Kontext der Ansicht kann im Build-Thread nicht zum aktuellen Kontext gemacht werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::CameraPath</name>
+    <message>
+        <source>top level: expected a JSON object</source>
+        <translation>oberste Ebene: JSON-Objekt erwartet</translation>
+    </message>
+    <message>
+        <source>frames: expected a whole number from 2 to 10000</source>
+        <translation>frames: ganze Zahl von 2 bis 10000 erwartet</translation>
+    </message>
+    <message>
+        <source>keyframes: expected an array of at least 2 keyframes</source>
+        <translation>keyframes: Array mit mindestens 2 Keyframes erwartet</translation>
+    </message>
+    <message>
+        <source>: expected an object</source>
+        <translation>: Objekt erwartet</translation>
+    </message>
+    <message>
+        <source>.eye: required field missing</source>
+        <translation>.eye: Pflichtfeld fehlt</translation>
+    </message>
+    <message>
+        <source>.fov_deg: expected degrees in (0, 180)</source>
+        <translation>.fov_deg: Grad im Bereich (0, 180) erwartet</translation>
+    </message>
+    <message>
+        <source>: eye and target coincide, or up is along the view</source>
+        <translation>: eye und target fallen zusammen, oder up zeigt in Blickrichtung</translation>
+    </message>
+    <message>
+        <source>frame %1, between keyframes[%2] and [%3]: eye and target coincide, or up is along the view</source>
+        <translation>Frame %1, zwischen keyframes[%2] und [%3]: eye und target fallen zusammen, oder up liegt in Blickrichtung</translation>
+    </message>
+    <message>
+        <source>%1.%2: expected 3 numbers, each at most 1e150 in size</source>
+        <translation>%1.%2: 3 Zahlen erwartet, jede mit einem Betrag von höchstens 1e150</translation>
+    </message>
+    <message>
+        <source>%1: cannot read camera path (%2)</source>
+        <translation>%1: Kamerapfad kann nicht gelesen werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: too large for a camera path</source>
+        <translation>%1: zu groß für einen Kamerapfad</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::CheckOverlay</name>
+    <message>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+    <message>
+        <source>yours</source>
+        <translation>eigenes</translation>
+    </message>
+    <message>
+        <source>4/255</source>
+        <translation>4/255</translation>
+    </message>
+    <message>
+        <source>≥ 8/255</source>
+        <translation>≥ 8/255</translation>
+    </message>
+    <message>
+        <source>silhouette band, not judged</source>
+        <translation>Silhouettenrand, nicht bewertet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::DepthRange</name>
+    <message>
+        <source>surfaces closer than about %1 % of their distance may show through each other</source>
+        <translation>Oberflächen, die näher als etwa %1 % ihrer Entfernung beieinanderliegen, können durcheinander hindurchscheinen</translation>
+    </message>
+    <message>
+        <source>the depth buffer cannot tell surfaces apart</source>
+        <translation>der Tiefenpuffer kann die Oberflächen nicht unterscheiden</translation>
+    </message>
+    <message>
+        <source>camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an object&apos;s bounds); %4: raise near</source>
+        <translation>camera: near %1 und far %2 liegen %3 Größenordnungen auseinander (das Auge liegt innerhalb der Ausdehnung eines Objekts); %4: near erhöhen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::DetailLevelLabel</name>
+    <message>
+        <source>&quot;detail&quot;: &quot;auto&quot;: the level each object is drawn at, chosen from its size on screen within the Performance dock&apos;s budget</source>
+        <translation>&quot;detail&quot;: &quot;auto&quot;: die Detailstufe, in der jedes Objekt gezeichnet wird, gewählt nach seiner Größe auf dem Bildschirm im Rahmen des Budgets aus dem Leistungs-Dock</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::DocumentationBrowser</name>
+    <message>
+        <source>PhongLab Documentation</source>
+        <translation>PhongLab-Dokumentation</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <source>%1 is not part of the documentation installed here (%2).</source>
+        <translation>%1 gehört nicht zur hier installierten Dokumentation (%2).</translation>
+    </message>
+    <message>
+        <source>%1 — PhongLab Documentation</source>
+        <translation>%1 — PhongLab-Dokumentation</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ExamplesMenu</name>
+    <message>
+        <source>Tree and Cloud (the default)</source>
+        <translation>Baum und Wolke (Standard)</translation>
+    </message>
+    <message>
+        <source>Two Spheres (the check scene)</source>
+        <translation>Zwei Kugeln (die Prüfszene)</translation>
+    </message>
+    <message>
+        <source>Grazing Light on a Box</source>
+        <translation>Streiflicht auf einem Quader</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>Torus</source>
+        <translation>Torus</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::FileMenu</name>
+    <message>
+        <source>&amp;Open Scene…</source>
+        <translation>Szene ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Mesh…</source>
+        <translation>&amp;Mesh öffnen…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+O</source>
+        <translation>Ctrl+Shift+O</translation>
+    </message>
+    <message>
+        <source>&amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>Beis&amp;piele</translation>
+    </message>
+    <message>
+        <source>&amp;Save Scene</source>
+        <translation>Szene &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save Scene &amp;As…</source>
+        <translation>Szene speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>&amp;Export Image…</source>
+        <translation>Bild e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Ctrl+Q</source>
+        <translation>Ctrl+Q</translation>
+    </message>
+    <message>
+        <source>Cannot open: %1</source>
+        <translation>Öffnen nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open</source>
+        <translation>Öffnen nicht möglich</translation>
+    </message>
+    <message>
+        <source>%1
+
+The current scene is still open.</source>
+        <translation>%1
+
+Die aktuelle Szene bleibt geöffnet.</translation>
+    </message>
+    <message>
+        <source>Open Scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Mesh öffnen</translation>
+    </message>
+    <message>
+        <source>File not found</source>
+        <translation>Datei nicht gefunden</translation>
+    </message>
+    <message>
+        <source>%1
+
+The file no longer exists; it was removed from the recent files.</source>
+        <translation>%1
+
+Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten Dateien entfernt.</translation>
+    </message>
+    <message>
+        <source>Save Scene As</source>
+        <translation>Szene speichern unter</translation>
+    </message>
+    <message>
+        <source>Cannot save scene</source>
+        <translation>Szene kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>%1
+
+%2</source>
+        <translation>%1
+
+%2</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>Width (pixels):</source>
+        <translation>Breite (Pixel):</translation>
+    </message>
+    <message>
+        <source>Height (pixels):</source>
+        <translation>Höhe (Pixel):</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::FrameStatsLabel</name>
+    <message>
+        <source>draw %1 ms · %2 triangles%3</source>
+        <translation>Zeichnen %1 ms · %2 Dreiecke%3</translation>
+    </message>
+    <message>
+        <source> · low depth precision</source>
+        <translation> · geringe Tiefengenauigkeit</translation>
+    </message>
+    <message numerus="yes">
+        <source>Draw time per frame: from the frame&apos;s first OpenGL call to glFinish, the scene and anything drawn over it (presenting the frame is not included); the mean of the %n frame(s) of the last second.</source>
+        <translation>
+            <numerusform>Zeichenzeit pro Bild: vom ersten OpenGL-Aufruf des Bildes bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Bildes ist nicht enthalten); der Mittelwert über %n Bild der letzten Sekunde.</numerusform>
+            <numerusform>Zeichenzeit pro Bild: vom ersten OpenGL-Aufruf des Bildes bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Bildes ist nicht enthalten); der Mittelwert über %n Bilder der letzten Sekunde.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::GlslLexer</name>
+    <message>
+        <source>Keyword, qualifier or type</source>
+        <translation>Schlüsselwort, Qualifizierer oder Typ</translation>
+    </message>
+    <message>
+        <source>Built-in function or variable</source>
+        <translation>Built-In-Funktion oder -Variable</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::GpuMesh</name>
+    <message>
+        <source>the driver cannot create a vertex array or buffer</source>
+        <translation>der Treiber kann kein Vertex-Array oder Buffer-Objekt erstellen</translation>
+    </message>
+    <message>
+        <source>no mesh uploaded</source>
+        <translation>kein Mesh hochgeladen</translation>
+    </message>
+    <message>
+        <source>the mesh is too large to read back for flat shading</source>
+        <translation>das Mesh ist zu groß, um es für die flache Schattierung zurückzulesen</translation>
+    </message>
+    <message>
+        <source>the driver cannot read the mesh back for flat shading</source>
+        <translation>der Treiber kann das Mesh für die flache Schattierung nicht zurücklesen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::GpuScene</name>
+    <message>
+        <source>Cannot build the %1 shading program:
+%2</source>
+        <translation>Das Programm für das Schattierungsverfahren %1 kann nicht gebaut werden:
+%2</translation>
+    </message>
+    <message>
+        <source>%1: mesh was not loaded</source>
+        <translation>%1: Mesh wurde nicht geladen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::HelpMenu</name>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Dokumentation</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>&amp;About PhongLab</source>
+        <translation>Ü&amp;ber PhongLab</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>The documentation (README.md and docs/*.md) is in none of these folders:
+
+%1
+
+Set PHONGLAB_DOC_DIR to the folder that holds it.</source>
+        <translation>Die Dokumentation (README.md und docs/*.md) liegt in keinem dieser Ordner:
+
+%1
+
+Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
+    </message>
+    <message>
+        <source>Documentation not found</source>
+        <translation>Dokumentation nicht gefunden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ImageMetrics</name>
+    <message>
+        <source>no pixels compared</source>
+        <translation>keine Pixel verglichen</translation>
+    </message>
+    <message>
+        <source>PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px</source>
+        <translation>PSNR %1 dB, RMSE %2, max. %3/255 bei (%4,%5), %6 px</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LanguageMenu</name>
+    <message>
+        <source>PhongLab speaks %1.</source>
+        <translation>PhongLab spricht %1.</translation>
+    </message>
+    <message>
+        <source>PhongLab will speak %1 from the next start.</source>
+        <translation>PhongLab spricht ab dem nächsten Start %1.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LightsDock</name>
+    <message>
+        <source>c1 + c2 + c3 must be positive (got %1)</source>
+        <translation>c1 + c2 + c3 muss positiv sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>Lights</source>
+        <translation>Lichtquellen</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Position (world)</source>
+        <translation>Position (Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <source>Id (diffuse)</source>
+        <translation>Id (diffus)</translation>
+    </message>
+    <message>
+        <source>Is (specular)</source>
+        <translation>Is (spekular)</translation>
+    </message>
+    <message>
+        <source>c1, c2, c3</source>
+        <translation>c1, c2, c3</translation>
+    </message>
+    <message>
+        <source>Ambient Ia</source>
+        <translation>Ambiente Intensität Ia</translation>
+    </message>
+    <message>
+        <source>Headlight: follows the camera (not in world space, not saved)</source>
+        <translation>Kopflicht: folgt der Kamera (nicht in Weltkoordinaten, wird nicht gespeichert)</translation>
+    </message>
+    <message>
+        <source>Add Light</source>
+        <translation>Lichtquelle hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LiveCheck</name>
+    <message>
+        <source>check: waiting for the first frame</source>
+        <translation>Prüfung: wartet auf das erste Bild</translation>
+    </message>
+    <message>
+        <source>Pi&amp;xel Inspector</source>
+        <translation>Pi&amp;xel-Inspektor</translation>
+    </message>
+    <message>
+        <source>&amp;Check Toolbar</source>
+        <translation>Prüfungs-&amp;Werkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source> Overlay: </source>
+        <translation> Overlay: </translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Error heatmap</source>
+        <translation>Fehler-Heatmap</translation>
+    </message>
+    <message>
+        <source>Split: exact | yours</source>
+        <translation>Geteilt: exakt | eigenes</translation>
+    </message>
+    <message>
+        <source>Exact</source>
+        <translation>Exaktes Bild</translation>
+    </message>
+    <message>
+        <source>Compare the view with the exact image of the illumination equation</source>
+        <translation>Die Ansicht mit dem exakten Bild der Beleuchtungsgleichung vergleichen</translation>
+    </message>
+    <message>
+        <source>Inspect</source>
+        <translation>Inspizieren</translation>
+    </message>
+    <message>
+        <source>Click a pixel to see the terms of the equation there (or Ctrl+click) [I]</source>
+        <translation>Auf ein Pixel klicken, um dort die Anteile der Gleichung zu sehen (oder Ctrl+Klick) [I]</translation>
+    </message>
+    <message>
+        <source> checking…</source>
+        <translation> Prüfung läuft…</translation>
+    </message>
+    <message>
+        <source>checking…</source>
+        <translation>Prüfung läuft…</translation>
+    </message>
+    <message>
+        <source>Checking the current view; the pixel is shown when that is done.</source>
+        <translation>Die aktuelle Ansicht wird geprüft; das Pixel wird danach angezeigt.</translation>
+    </message>
+    <message>
+        <source>Pixel (%1, %2) shows the background: no surface, no equation.</source>
+        <translation>Pixel (%1, %2) zeigt den Hintergrund: keine Oberfläche, keine Gleichung.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LiveShaderController</name>
+    <message>
+        <source>Compiling…</source>
+        <translation>Wird kompiliert…</translation>
+    </message>
+    <message>
+        <source>The new shader has not finished its first draw after %1 s (an endless loop?). It is marked: PhongLab will not run it by itself at the next start.</source>
+        <translation>Der neue Shader hat sein erstes Zeichnen nach %1 s noch nicht beendet (eine Endlosschleife?). Er ist markiert: PhongLab führt ihn beim nächsten Start nicht von selbst aus.</translation>
+    </message>
+    <message>
+        <source>Kept your unsaved shader edits; the scene&apos;s %1 shading was not loaded (choose it in the Shaders dock to switch)</source>
+        <translation>Ungespeicherte Shader-Änderungen behalten; die %1-Schattierung der Szene wurde nicht geladen (zum Wechseln im Dock „Shader“ auswählen)</translation>
+    </message>
+    <message>
+        <source>Live editing is off: no OpenGL context could be shared with the build thread (%1)</source>
+        <translation>Live-Bearbeitung ist ausgeschaltet: Mit dem Build-Thread konnte kein OpenGL-Kontext geteilt werden (%1)</translation>
+    </message>
+    <message>
+        <source>Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames&apos; worth); the last good program keeps drawing</source>
+        <translation>Nicht übernommen: Ein Frame würde %1 ms oder länger dauern (das Budget beträgt %2 ms, einige Frames); das letzte funktionierende Programm zeichnet weiter</translation>
+    </message>
+    <message>
+        <source>Compiled in %1 ms (compile %2, link %3, first draw %4)</source>
+        <translation>Kompiliert in %1 ms (Kompilieren %2, Linken %3, erstes Zeichnen %4)</translation>
+    </message>
+    <message numerus="yes">
+        <source> — %n warning(s)</source>
+        <translation>
+            <numerusform> — %n Warnung</numerusform>
+            <numerusform> — %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s) — last good program still running</source>
+        <translation>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LoadProgressWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop loading and keep the current scene</source>
+        <translation>Laden abbrechen und die aktuelle Szene behalten</translation>
+    </message>
+    <message>
+        <source>Loading %1</source>
+        <translation>%1 wird geladen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MainWindow</name>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>One frame took %1 ms: the view draws again when you click, scroll or press a key in it</source>
+        <translation>Ein Bild dauerte %1 ms: Die Ansicht zeichnet erst wieder, wenn in ihr geklickt, gescrollt oder eine Taste gedrückt wird</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Kamera zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Reset &amp;Layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Put every dock back where a new window has it</source>
+        <translation>Jedes Dock dorthin zurücksetzen, wo es in einem neuen Fenster liegt</translation>
+    </message>
+    <message>
+        <source>Show &amp;Light Markers</source>
+        <translation>Licht&amp;markierungen anzeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Scene Dock</source>
+        <translation>&amp;Szenen-Dock</translation>
+    </message>
+    <message>
+        <source>S&amp;haders Dock</source>
+        <translation>S&amp;hader-Dock</translation>
+    </message>
+    <message>
+        <source>&amp;Uniforms Dock</source>
+        <translation>&amp;Uniform-Variablen-Dock</translation>
+    </message>
+    <message>
+        <source>&amp;Performance Dock</source>
+        <translation>&amp;Leistungs-Dock</translation>
+    </message>
+    <message>
+        <source>L&amp;anguage</source>
+        <translation>Sp&amp;rache</translation>
+    </message>
+    <message>
+        <source>OpenGL not started</source>
+        <translation>OpenGL nicht gestartet</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Cannot open the scene&apos;s shaders: %1</source>
+        <translation>Die Shader der Szene können nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open the scene&apos;s shaders</source>
+        <translation>Die Shader der Szene können nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1
+
+The scene uses its shading method&apos;s shipped shaders instead.</source>
+        <translation>%1
+
+Die Szene verwendet stattdessen die mitgelieferten Shader ihres Schattierungsverfahrens.</translation>
+    </message>
+    <message>
+        <source>%1: not a scene file (.json)</source>
+        <translation>%1: keine Szenendatei (.json)</translation>
+    </message>
+    <message>
+        <source>%1: no such shader file</source>
+        <translation>%1: Shader-Datei existiert nicht</translation>
+    </message>
+    <message>
+        <source>Normals of %1: %2</source>
+        <translation>Normalen von %1: %2</translation>
+    </message>
+    <message>
+        <source>Rendering failed: %1</source>
+        <translation>Rendern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Rendering failed</source>
+        <translation>Rendern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Cannot load %1: %2</source>
+        <translation>%1 kann nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot load %1</source>
+        <translation>%1 kann nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Cannot load %1:
+
+%2
+
+The current scene is still shown.</source>
+        <translation>%1 kann nicht geladen werden:
+
+%2
+
+Die aktuelle Szene wird weiterhin angezeigt.</translation>
+    </message>
+    <message>
+        <source>Loading %1 cancelled</source>
+        <translation>Laden von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>%1 — PhongLab</source>
+        <translation>%1 — PhongLab</translation>
+    </message>
+    <message>
+        <source>Cannot render a %1×%2 image</source>
+        <translation>Ein %1×%2-Bild kann nicht gerendert werden</translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MaterialDock</name>
+    <message>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>ka (ambient)</source>
+        <translation>ka (ambient)</translation>
+    </message>
+    <message>
+        <source>kd (diffuse)</source>
+        <translation>kd (diffus)</translation>
+    </message>
+    <message>
+        <source>ks (specular)</source>
+        <translation>ks (spekular)</translation>
+    </message>
+    <message>
+        <source>Shininess n</source>
+        <translation>Glanzexponent n</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Save as Preset…</source>
+        <translation>Als Vorlage speichern…</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Vorlage</translation>
+    </message>
+    <message>
+        <source>Save Material Preset</source>
+        <translation>Materialvorlage speichern</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshBuilder</name>
+    <message>
+        <source>%1 of %2 corners have a zero or invalid normal in the file; computed angle-weighted normals replace them</source>
+        <translation>%1 von %2 Ecken haben in der Datei eine Null- oder ungültige Normale; sie werden durch berechnete, winkelgewichtete Normalen ersetzt</translation>
+    </message>
+    <message>
+        <source>the mesh has no faces</source>
+        <translation>das Mesh hat keine Flächen</translation>
+    </message>
+    <message>
+        <source>the mesh is too large: %1 triangles exceed what 32-bit indices can address</source>
+        <translation>das Mesh ist zu groß: %1 Dreiecke übersteigen, was 32-Bit-Indizes adressieren können</translation>
+    </message>
+    <message>
+        <source>%1 polygons cross or fold onto themselves; they were split as fans</source>
+        <translation>%1 Polygone überschneiden sich selbst oder sind in sich gefaltet; sie wurden als Fächer zerlegt</translation>
+    </message>
+    <message>
+        <source>%1 of %2 corners have no normal in the file; computed angle-weighted normals for the whole mesh</source>
+        <translation>%1 von %2 Ecken haben in der Datei keine Normale; für das ganze Mesh wurden winkelgewichtete Normalen berechnet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshDecimation</name>
+    <message>
+        <source>detail must be in (0, 1] (got %1); mesh left as it is</source>
+        <translation>detail muss in (0, 1] liegen (erhalten: %1); Mesh bleibt unverändert</translation>
+    </message>
+    <message>
+        <source>invalid mesh (index out of range or normals missing); not decimated</source>
+        <translation>ungültiges Mesh (Index außerhalb des Bereichs oder Normalen fehlen); nicht reduziert</translation>
+    </message>
+    <message>
+        <source>no triangle could be taken for decimation (all degenerate, non-finite or non-manifold); mesh left as it is</source>
+        <translation>kein Dreieck für die Reduktion verwendbar (alle entartet, nicht endlich oder nicht mannigfaltig); Mesh bleibt unverändert</translation>
+    </message>
+    <message>
+        <source>%1 non-manifold triangles (an edge with more than two faces, or a vertex joining separate fans) could not be decimated and were left out</source>
+        <translation>%1 nicht-mannigfaltige Dreiecke (eine Kante mit mehr als zwei Flächen oder ein Vertex, der getrennte Fächer verbindet) konnten nicht reduziert werden und wurden ausgelassen</translation>
+    </message>
+    <message>
+        <source>%1 triangles with non-finite corners left out</source>
+        <translation>%1 Dreiecke mit nicht endlichen Ecken ausgelassen</translation>
+    </message>
+    <message>
+        <source>decimation stopped at %1 triangles (asked for %2): every further collapse would fold a face or break the surface</source>
+        <translation>Reduktion bei %1 Dreiecken beendet (angefordert: %2): jede weitere Kantenkontraktion würde eine Fläche umklappen oder die Oberfläche aufreißen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshFilePrecheck</name>
+    <message>
+        <source>rename it to .off</source>
+        <translation>in .off umbenennen</translation>
+    </message>
+    <message>
+        <source>an ascii STL file</source>
+        <translation>eine ASCII-STL-Datei</translation>
+    </message>
+    <message>
+        <source>rename it to .stl</source>
+        <translation>in .stl umbenennen</translation>
+    </message>
+    <message>
+        <source>this is %1, not a %2 file</source>
+        <translation>dies ist %1, keine %2-Datei</translation>
+    </message>
+    <message>
+        <source>three numbers after &apos;facet normal&apos;</source>
+        <translation>drei Zahlen nach &apos;facet normal&apos;</translation>
+    </message>
+    <message>
+        <source>the file ends inside facet %1 (truncated?)</source>
+        <translation>die Datei endet innerhalb von Facette %1 (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>&apos;vertex x y z&apos;</source>
+        <translation>&apos;vertex x y z&apos;</translation>
+    </message>
+    <message>
+        <source>the STL file has no facets</source>
+        <translation>die STL-Datei enthält keine Facetten</translation>
+    </message>
+    <message>
+        <source>dropped %1 with NaN or infinite coordinates</source>
+        <translation>%1 mit NaN- oder unendlichen Koordinaten verworfen</translation>
+    </message>
+    <message>
+        <source>every triangle has NaN or infinite coordinates</source>
+        <translation>jedes Dreieck hat NaN- oder unendliche Koordinaten</translation>
+    </message>
+    <message>
+        <source>too small for a binary STL file (%1 bytes) and not an ascii one</source>
+        <translation>zu klein für eine binäre STL-Datei (%1 Byte) und keine ASCII-STL-Datei</translation>
+    </message>
+    <message>
+        <source>the binary STL header declares %1 triangles (%2 bytes) but the file has only %3 bytes (truncated or not an STL file)</source>
+        <translation>der binäre STL-Header gibt %1 Dreiecke (%2 Byte) an, die Datei hat aber nur %3 Byte (abgeschnitten oder keine STL-Datei)</translation>
+    </message>
+    <message>
+        <source>ignored %1 after the last triangle</source>
+        <translation>%1 nach dem letzten Dreieck ignoriert</translation>
+    </message>
+    <message>
+        <source>the STL file has no triangles</source>
+        <translation>die STL-Datei enthält keine Dreiecke</translation>
+    </message>
+    <message>
+        <source>not an OpenMesh file (it does not start with &apos;OM&apos;)</source>
+        <translation>keine OpenMesh-Datei (beginnt nicht mit &apos;OM&apos;)</translation>
+    </message>
+    <message>
+        <source>file not found</source>
+        <translation>Datei nicht gefunden</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine reguläre Datei</translation>
+    </message>
+    <message>
+        <source>cannot open the file: %1</source>
+        <translation>Datei kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>die Datei ist leer</translation>
+    </message>
+    <message>
+        <source>the file is too large (%1 MiB; the limit is %2 MiB)</source>
+        <translation>die Datei ist zu groß (%1 MiB; die Grenze liegt bei %2 MiB)</translation>
+    </message>
+    <message>
+        <source>cannot read the file: %1</source>
+        <translation>Datei kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>not a PLY file (it does not start with &apos;ply&apos;)</source>
+        <translation>keine PLY-Datei (sie beginnt nicht mit &apos;ply&apos;)</translation>
+    </message>
+    <message>
+        <source>not an OFF file (it does not start with an OFF header)</source>
+        <translation>keine OFF-Datei (sie beginnt nicht mit einem OFF-Header)</translation>
+    </message>
+    <message>
+        <source>the file got shorter while it was read</source>
+        <translation>die Datei wurde während des Lesens kürzer</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshFileReader</name>
+    <message>
+        <source>the file has no faces</source>
+        <translation>die Datei enthält keine Flächen</translation>
+    </message>
+    <message>
+        <source>unsupported file type &apos;%1&apos; (supported: %2)</source>
+        <translation>nicht unterstützter Dateityp &apos;%1&apos; (unterstützt: %2)</translation>
+    </message>
+    <message>
+        <source>no suffix</source>
+        <translation>keine Dateiendung</translation>
+    </message>
+    <message>
+        <source>out of memory while reading the file</source>
+        <translation>Arbeitsspeicher beim Lesen der Datei erschöpft</translation>
+    </message>
+    <message>
+        <source>reading failed: %1</source>
+        <translation>Lesen fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshImportProcess</name>
+    <message>
+        <source>the reader used up its %1 s of CPU time and was stopped</source>
+        <translation>der Leseprozess hat seine %1 s CPU-Zeit aufgebraucht und wurde beendet</translation>
+    </message>
+    <message>
+        <source>the reader crashed with signal %1 (%2)</source>
+        <translation>der Leseprozess ist mit Signal %1 (%2) abgestürzt</translation>
+    </message>
+    <message>
+        <source>the reader ran out of memory (limit %1 MB)</source>
+        <translation>dem Einleseprozess ging der Speicher aus (Grenze: %1 MB)</translation>
+    </message>
+    <message>
+        <source>the reader exited with status %1 without a result</source>
+        <translation>der Leseprozess wurde mit Exit-Code %1 ohne Ergebnis beendet</translation>
+    </message>
+    <message>
+        <source>cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)</source>
+        <translation>das phonglab-Programm, das Meshes importiert, wurde nicht gefunden (PHONGLAB_EXE setzen)</translation>
+    </message>
+    <message>
+        <source>cannot create a temporary file for the import</source>
+        <translation>für den Import kann keine temporäre Datei angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot start the import process %1: %2</source>
+        <translation>der Importprozess %1 kann nicht gestartet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: the reader stopped answering after %2 s and was stopped; the file is probably malformed</source>
+        <translation>%1: der Leseprozess hat nach %2 s nicht mehr geantwortet und wurde beendet; die Datei ist vermutlich fehlerhaft</translation>
+    </message>
+    <message>
+        <source>the import process gave no readable result</source>
+        <translation>der Importprozess lieferte kein lesbares Ergebnis</translation>
+    </message>
+    <message>
+        <source>cannot write the result to %1</source>
+        <translation>das Ergebnis kann nicht nach %1 geschrieben werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshLoader</name>
+    <message>
+        <source>%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)</source>
+        <translation>%1: unbekanntes eingebautes Mesh (bekannt: builtin:sphere, builtin:torus, builtin:cube)</translation>
+    </message>
+    <message>
+        <source>%1: no usable faces</source>
+        <translation>%1: keine verwendbaren Flächen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshRaycaster</name>
+    <message>
+        <source>The scene has %1 objects but %2 meshes were given</source>
+        <translation>Die Szene hat %1 Objekte, es wurden aber %2 Meshes übergeben</translation>
+    </message>
+    <message>
+        <source>Object %1: mesh &quot;%2&quot; was given no triangle mesh and has no analytic surface (builtin:sphere, builtin:torus, builtin:cube)</source>
+        <translation>Objekt %1: für Mesh &quot;%2&quot; wurde kein Dreiecks-Mesh übergeben, und es hat keine analytische Oberfläche (builtin:sphere, builtin:torus, builtin:cube)</translation>
+    </message>
+    <message>
+        <source>Object %1: the triangle mesh for &quot;%2&quot; is not valid</source>
+        <translation>Objekt %1: das Dreiecks-Mesh für &quot;%2&quot; ist ungültig</translation>
+    </message>
+    <message>
+        <source>Invalid reference image size %1x%2</source>
+        <translation>Ungültige Größe des Referenzbilds %1x%2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::MeshRepair</name>
+    <message>
+        <source>dropped %1 with out-of-range vertex indices</source>
+        <translation>%1 mit Vertex-Indizes außerhalb des gültigen Bereichs verworfen</translation>
+    </message>
+    <message>
+        <source>dropped %1 using NaN or infinite coordinates</source>
+        <translation>%1 mit NaN- oder unendlichen Koordinaten entfernt</translation>
+    </message>
+    <message>
+        <source>dropped %1 (fewer than 3 distinct corners or zero area)</source>
+        <translation>%1 verworfen (weniger als 3 verschiedene Ecken oder Flächeninhalt null)</translation>
+    </message>
+    <message>
+        <source>ignored the file normal of %1 (missing, zero or not finite); computed instead</source>
+        <translation>Normale aus der Datei für %1 ignoriert (fehlend, null oder nicht endlich); stattdessen berechnet</translation>
+    </message>
+    <message>
+        <source>%1 (shared by 3 or more faces), kept as they are</source>
+        <translation>%1 (von 3 oder mehr Flächen geteilt), unverändert belassen</translation>
+    </message>
+    <message>
+        <source>%1 no consistent winding agrees on (a non-orientable surface)</source>
+        <translation>%1 ohne konsistente Umlaufrichtung (eine nicht orientierbare Oberfläche)</translation>
+    </message>
+    <message>
+        <source>flipped %1 to make the winding consistent</source>
+        <translation>%1 umgedreht, um die Umlaufrichtung konsistent zu machen</translation>
+    </message>
+    <message>
+        <source>split %1 where surfaces touch only at that point</source>
+        <translation>%1 aufgeteilt, an denen sich Oberflächen nur in diesem einen Punkt berühren</translation>
+    </message>
+    <message>
+        <source>removed %1 no face uses</source>
+        <translation>%1 ohne zugehörige Fläche entfernt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::NormalsEditor</name>
+    <message>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Crease</source>
+        <translation>Knickwinkel</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Verfahren</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ObjReader</name>
+    <message>
+        <source>no vertices or faces found (not an OBJ file?)</source>
+        <translation>keine Vertices oder Flächen gefunden (keine OBJ-Datei?)</translation>
+    </message>
+    <message>
+        <source>the file has vertices but no faces</source>
+        <translation>die Datei hat Vertices, aber keine Flächen</translation>
+    </message>
+    <message>
+        <source>skipped %1 (first at line %2: &quot;%3&quot;)</source>
+        <translation>%1 übersprungen (erstmals in Zeile %2: &quot;%3&quot;)</translation>
+    </message>
+    <message>
+        <source>the last line is incomplete (the file looks truncated)</source>
+        <translation>die letzte Zeile ist unvollständig (die Datei scheint abgeschnitten)</translation>
+    </message>
+    <message>
+        <source>ignored %1 (only polygons are read)</source>
+        <translation>%1 ignoriert (nur Polygone werden gelesen)</translation>
+    </message>
+    <message>
+        <source>%1 to normals the file does not have; they get computed normals</source>
+        <translation>%1 auf Normalen, die in der Datei fehlen; sie erhalten berechnete Normalen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ObjectDock</name>
+    <message>
+        <source>scale must not be zero: the object would collapse to a plane</source>
+        <translation>Skalierung darf nicht null sein: Das Objekt würde zu einer Ebene zusammenfallen</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Translate</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Rotate (°)</source>
+        <translation>Drehen (°)</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ObjectEditDock</name>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::OffPrecheck</name>
+    <message>
+        <source>the binary OFF file ends after %1 of %2 faces (truncated?)</source>
+        <translation>die binäre OFF-Datei endet nach %1 von %2 Flächen (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes left can hold (corrupt?)</source>
+        <translation>binäre OFF-Fläche %1 (Byte %2) gibt %3 Ecken an, mehr als die verbleibenden %4 Byte fassen können (beschädigt?)</translation>
+    </message>
+    <message>
+        <source>the binary OFF file ends before its counts</source>
+        <translation>die binäre OFF-Datei endet vor der Angabe der Anzahlen</translation>
+    </message>
+    <message>
+        <source>binary %1 files (with colours or texture coordinates) are not supported; save it as ascii OFF or as PLY</source>
+        <translation>binäre %1-Dateien (mit Farben oder Texturkoordinaten) werden nicht unterstützt; als ascii OFF oder als PLY speichern</translation>
+    </message>
+    <message>
+        <source>the binary OFF header declares %1 vertices and %2 faces, which need at least %3 bytes, but the file has %4 (truncated or corrupt)</source>
+        <translation>der binäre OFF-Header gibt %1 Vertices und %2 Flächen an, die mindestens %3 Byte benötigen, aber die Datei hat %4 (abgeschnitten oder beschädigt)</translation>
+    </message>
+    <message>
+        <source>the OFF file has no faces</source>
+        <translation>die OFF-Datei hat keine Flächen</translation>
+    </message>
+    <message>
+        <source>not an OFF file (it does not start with an OFF header)</source>
+        <translation>keine OFF-Datei (sie beginnt nicht mit einem OFF-Header)</translation>
+    </message>
+    <message>
+        <source>4D and nD OFF files are not supported</source>
+        <translation>4D- und nD-OFF-Dateien werden nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>line %1: expected the vertex, face and edge counts, found %2</source>
+        <translation>Zeile %1: Anzahl der Vertices, Flächen und Kanten erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>line %1: unexpected text after the counts</source>
+        <translation>Zeile %1: unerwarteter Text nach den Anzahlen</translation>
+    </message>
+    <message>
+        <source>the OFF header declares %1 vertices and %2 faces, which need at least %3 bytes, but the file has %4 (truncated or corrupt)</source>
+        <translation>der OFF-Header gibt %1 Vertices und %2 Flächen an, die mindestens %3 Byte benötigen, aber die Datei hat %4 (abgeschnitten oder beschädigt)</translation>
+    </message>
+    <message>
+        <source>the file ends after %1 of %2 vertices (truncated?)</source>
+        <translation>die Datei endet nach %1 von %2 Vertices (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>Zahl erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>the file ends after %1 of %2 faces (truncated?)</source>
+        <translation>die Datei endet nach %1 von %2 Flächen (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>expected the corner count of face %1, found %2</source>
+        <translation>Eckenzahl von Fläche %1 erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 corners but only %3 indices</source>
+        <translation>Fläche %1 hat %2 Ecken, aber nur %3 Indizes</translation>
+    </message>
+    <message>
+        <source>a vertex index</source>
+        <translation>ein Vertex-Index</translation>
+    </message>
+    <message>
+        <source>ignored the values after the vertex indices on %1 (face colours need a COFF header)</source>
+        <translation>Werte nach den Vertex-Indizes in %1 ignoriert (Flächenfarben erfordern einen COFF-Header)</translation>
+    </message>
+    <message>
+        <source>ignored the text after the last face (from line %1)</source>
+        <translation>Text nach der letzten Fläche ignoriert (ab Zeile %1)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::OffscreenRenderer</name>
+    <message>
+        <source>no OpenGL context could be created without a display server: %1. PhongLab renders through EGL there (Mesa: packages libegl1 and libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)</source>
+        <translation>ohne Display-Server konnte kein OpenGL-Kontext erstellt werden: %1. PhongLab rendert dort über EGL (Mesa: Pakete libegl1 und libegl-mesa0) oder unter einem X-Server (`xvfb-run -a phonglab ...`)</translation>
+    </message>
+    <message>
+        <source>no OpenGL context could be created on Qt&apos;s &apos;%1&apos; platform%2; QT_QPA_PLATFORM=phonglab-headless renders through EGL without a display server</source>
+        <translation>auf der Qt-Plattform &apos;%1&apos;%2 konnte kein OpenGL-Kontext erstellt werden; mit QT_QPA_PLATFORM=phonglab-headless wird über EGL ohne Display-Server gerendert</translation>
+    </message>
+    <message>
+        <source>OpenGL 3.3 is required, the driver offers %1.%2</source>
+        <translation>OpenGL 3.3 ist erforderlich, der Treiber bietet %1.%2</translation>
+    </message>
+    <message>
+        <source>the OpenGL context could not be made current on an offscreen surface</source>
+        <translation>der OpenGL-Kontext konnte auf einer Offscreen-Oberfläche nicht als aktueller Kontext gesetzt werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::OmPrecheck</name>
+    <message>
+        <source>a %1 chunk with %2 components per element, where the reader expects %3</source>
+        <translation>ein Chunk %1 mit %2 Komponenten pro Element, wo das Einleseprogramm %3 erwartet</translation>
+    </message>
+    <message>
+        <source>a %1 chunk with a number size the reader does not know</source>
+        <translation>ein Chunk %1 mit einer Zahlengröße, die der Leser nicht kennt</translation>
+    </message>
+    <message>
+        <source>the file ends inside a custom property chunk</source>
+        <translation>die Datei endet innerhalb eines Chunks mit einer benutzerdefinierten Eigenschaft</translation>
+    </message>
+    <message>
+        <source>the file ends after %1 of %2 faces (truncated?)</source>
+        <translation>die Datei endet nach %1 von %2 Flächen (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>face %1 of %2 runs past the end of the file (truncated?)</source>
+        <translation>Fläche %1 von %2 reicht über das Dateiende hinaus (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>a chunk for an unknown kind of element (%1)</source>
+        <translation>ein Chunk für eine unbekannte Elementart (%1)</translation>
+    </message>
+    <message>
+        <source>the file ends after %1 chunks, before the end marker OpenMesh writes (truncated?)</source>
+        <translation>die Datei endet nach %1 Chunks, vor der Endmarkierung, die OpenMesh schreibt (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>chunk %1 (byte %2): the file ends inside its property name</source>
+        <translation>Chunk %1 (Byte %2): die Datei endet innerhalb seines Eigenschaftsnamens</translation>
+    </message>
+    <message>
+        <source>chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left (truncated or corrupt)</source>
+        <translation>Chunk %1 (Byte %2, %3) benötigt %4 Byte, aber nur %5 sind übrig (abgeschnitten oder beschädigt)</translation>
+    </message>
+    <message>
+        <source>the file ends inside the OpenMesh header</source>
+        <translation>die Datei endet innerhalb des OpenMesh-Headers</translation>
+    </message>
+    <message>
+        <source>the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 bytes, but the file has %4 (truncated or corrupt)</source>
+        <translation>der OpenMesh-Header deklariert %1 Vertices und %2 Flächen, die mindestens %3 Byte benötigen, aber die Datei hat %4 (abgeschnitten oder beschädigt)</translation>
+    </message>
+    <message>
+        <source>the OpenMesh file has no faces</source>
+        <translation>die OpenMesh-Datei hat keine Flächen</translation>
+    </message>
+    <message>
+        <source>%1 bytes after the end marker were ignored</source>
+        <translation>%1 Byte nach der Endmarkierung wurden ignoriert</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::OpenMeshReader</name>
+    <message>
+        <source>the file ends before its end marker (truncated?)</source>
+        <translation>die Datei endet vor ihrer Endmarkierung (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>cannot open the file</source>
+        <translation>die Datei kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>cannot write a cleaned copy of the OFF file to the temporary folder</source>
+        <translation>eine bereinigte Kopie der OFF-Datei kann nicht in den temporären Ordner geschrieben werden</translation>
+    </message>
+    <message>
+        <source>out of memory while reading the file</source>
+        <translation>Arbeitsspeicher beim Lesen der Datei erschöpft</translation>
+    </message>
+    <message>
+        <source>the reader failed: %1</source>
+        <translation>das Einlesen ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>the reader failed</source>
+        <translation>das Einlesen ist fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>OpenMesh could not read the file</source>
+        <translation>OpenMesh konnte die Datei nicht lesen</translation>
+    </message>
+    <message>
+        <source>OpenMesh could not read the file: %1</source>
+        <translation>OpenMesh konnte die Datei nicht lesen: %1</translation>
+    </message>
+    <message>
+        <source>read %1 of the %2 the header declares</source>
+        <translation>%1 von %2 gelesen (laut Header)</translation>
+    </message>
+    <message>
+        <source>dropped %1 with two corners at the same position</source>
+        <translation>%1 mit zwei Ecken an derselben Position verworfen</translation>
+    </message>
+    <message>
+        <source>no faces were read</source>
+        <translation>es wurden keine Flächen gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PerformanceDock</name>
+    <message>
+        <source>Performance</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <source>Frame: -</source>
+        <translation>Frame: -</translation>
+    </message>
+    <message>
+        <source>Draw time per frame (first OpenGL call to glFinish), the mean of the last second&apos;s frames, and the triangles drawn.</source>
+        <translation>Zeichenzeit pro Frame (vom ersten OpenGL-Aufruf bis glFinish), der Mittelwert über die Frames der letzten Sekunde und die gezeichneten Dreiecke.</translation>
+    </message>
+    <message>
+        <source>Error budget:</source>
+        <translation>Fehlerbudget:</translation>
+    </message>
+    <message>
+        <source>max error (8-bit steps)</source>
+        <translation>max. Fehler (8-Bit-Stufen)</translation>
+    </message>
+    <message>
+        <source>PSNR at least (dB)</source>
+        <translation>PSNR mindestens (dB)</translation>
+    </message>
+    <message>
+        <source>Measured against the exact CPU reference, more than 2 px from silhouettes.</source>
+        <translation>Gemessen an der exakten CPU-Referenz, mehr als 2 px von Silhouetten entfernt.</translation>
+    </message>
+    <message>
+        <source>Model only what the view needs</source>
+        <translation>Nur modellieren, was die Ansicht braucht</translation>
+    </message>
+    <message>
+        <source>Every object at &quot;detail&quot;: &quot;auto&quot;: drawn at the coarsest level its size on screen allows, and without the lights it cannot show, each within a quarter of the budget. The levels are built in the background the first time.</source>
+        <translation>Jedes Objekt mit &quot;detail&quot;: &quot;auto&quot;: gezeichnet in der gröbsten Detailstufe, die seine Größe auf dem Bildschirm erlaubt, und ohne die Lichtquellen, die es nicht zeigen kann, jeweils innerhalb eines Viertels des Budgets. Die Detailstufen werden beim ersten Mal im Hintergrund gebaut.</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Messen</translation>
+    </message>
+    <message>
+        <source>Time every shipped method at every detail level for this view and these lights and compare each with the exact answer.</source>
+        <translation>Jedes mitgelieferte Schattierungsverfahren in jeder Detailstufe für diese Ansicht und diese Lichtquellen messen und jeweils mit dem exakten Bild vergleichen.</translation>
+    </message>
+    <message>
+        <source>Fit to budget</source>
+        <translation>An Budget anpassen</translation>
+    </message>
+    <message>
+        <source>Measure, then show the cheapest method and coarsest detail within the budget.</source>
+        <translation>Messen und dann das günstigste Schattierungsverfahren und die gröbste Detailstufe innerhalb des Budgets zeigen.</translation>
+    </message>
+    <message>
+        <source>Full detail</source>
+        <translation>Volle Detailstufe</translation>
+    </message>
+    <message>
+        <source>Back to every object&apos;s full mesh and the shading used before the fit.</source>
+        <translation>Zurück zum vollständigen Mesh jedes Objekts und zum Schattierungsverfahren von vor der Anpassung.</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Measure to see frame time against error for every method and detail level.</source>
+        <translation>Messen, um Framezeit und Fehler für jedes Schattierungsverfahren und jede Detailstufe zu vergleichen.</translation>
+    </message>
+    <message>
+        <source> dB</source>
+        <translation> dB</translation>
+    </message>
+    <message>
+        <source> /255</source>
+        <translation> /255</translation>
+    </message>
+    <message>
+        <source>Cannot measure: %1</source>
+        <translation>Messung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Measuring %1 × %2 px with the scene&apos;s lights…</source>
+        <translation>Messung bei %1 × %2 px mit den Lichtquellen der Szene…</translation>
+    </message>
+    <message>
+        <source>Measurement cancelled.</source>
+        <translation>Messung abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Measurement failed: %1</source>
+        <translation>Messung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Within %1: %2</source>
+        <translation>Innerhalb von %1: %2</translation>
+    </message>
+    <message>
+        <source>Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured offscreen, without multisampling).</source>
+        <translation>An %1 angepasst: Schattierungsverfahren %2 in Detailstufe %3, %4 Dreiecke, %5 ms pro Frame (offscreen gemessen, ohne Multisampling).</translation>
+    </message>
+    <message>
+        <source> Saved against full-detail Phong: %1 triangles (%2 %) and %3 ms (%4 → %5 ms).</source>
+        <translation> Ersparnis gegenüber Phong in voller Detailstufe: %1 Dreiecke (%2 %) und %3 ms (%4 → %5 ms).</translation>
+    </message>
+    <message>
+        <source>Back to full detail with %1 shading.</source>
+        <translation>Zurück zur vollen Detailstufe mit dem Schattierungsverfahren %1.</translation>
+    </message>
+    <message>
+        <source>This view: frame time against error</source>
+        <translation>Diese Ansicht: Framezeit gegenüber Fehler</translation>
+    </message>
+    <message>
+        <source>Frame: %1 ms · %2 triangles</source>
+        <translation>Frame: %1 ms · %2 Dreiecke</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PixelInspectorDock</name>
+    <message>
+        <source>Pixel Inspector</source>
+        <translation>Pixel-Inspektor</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <source>Copy the values as text</source>
+        <translation>Die Werte als Text kopieren</translation>
+    </message>
+    <message>
+        <source>Turn on Inspect (I) and click a pixel, or Ctrl+click one, to see the terms of the equation there.</source>
+        <translation>Inspizieren (I) einschalten und ein Pixel anklicken (oder eines mit Ctrl+Klick wählen), um dort die Anteile der Beleuchtungsgleichung zu sehen.</translation>
+    </message>
+    <message>
+        <source>yours</source>
+        <translation>eigenes</translation>
+    </message>
+    <message>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PixelTerms</name>
+    <message>
+        <source>normals view</source>
+        <translation>Normalenansicht</translation>
+    </message>
+    <message>
+        <source>Phong, the slide&apos;s equation (a highlight even where N·L &lt;= 0)</source>
+        <translation>Phong, die Gleichung der Folie (ein Glanzlicht auch dort, wo N·L &lt;= 0 ist)</translation>
+    </message>
+    <message>
+        <source>pixel (%1, %2), object %3, %4</source>
+        <translation>Pixel (%1, %2), Objekt %3, %4</translation>
+    </message>
+    <message>
+        <source>I exact  %1 -&gt; 8-bit (%2, %3, %4)</source>
+        <translation>I exakt  %1 -&gt; 8 Bit (%2, %3, %4)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PlyPrecheck</name>
+    <message>
+        <source>PLY header line %1</source>
+        <translation>PLY-Header, Zeile %1</translation>
+    </message>
+    <message>
+        <source>not a PLY file (it does not start with &apos;ply&apos;)</source>
+        <translation>keine PLY-Datei (sie beginnt nicht mit &apos;ply&apos;)</translation>
+    </message>
+    <message>
+        <source>: byte 0x%1 at column %2 is not text (a binary body before &apos;end_header&apos;?)</source>
+        <translation>: Byte 0x%1 in Spalte %2 ist kein Text (binäre Daten vor &apos;end_header&apos;?)</translation>
+    </message>
+    <message>
+        <source>: &apos;format&apos; without a format</source>
+        <translation>: &apos;format&apos; ohne Format</translation>
+    </message>
+    <message>
+        <source>: unknown format %1</source>
+        <translation>: unbekanntes Format %1</translation>
+    </message>
+    <message>
+        <source>: a property before any element</source>
+        <translation>: property vor dem ersten element</translation>
+    </message>
+    <message>
+        <source>: unknown or unusable list types</source>
+        <translation>: unbekannte oder unbrauchbare Listentypen</translation>
+    </message>
+    <message>
+        <source>: unknown property type %1</source>
+        <translation>: unbekannter Eigenschaftstyp %1</translation>
+    </message>
+    <message>
+        <source>: words after &apos;end_header&apos;</source>
+        <translation>: Wörter nach &apos;end_header&apos;</translation>
+    </message>
+    <message>
+        <source>the PLY header has no &apos;format&apos; line</source>
+        <translation>der PLY-Header hat keine &apos;format&apos;-Zeile</translation>
+    </message>
+    <message>
+        <source>: unknown keyword %1</source>
+        <translation>: unbekanntes Schlüsselwort %1</translation>
+    </message>
+    <message>
+        <source>the PLY header has no &apos;end_header&apos; line (truncated or not a PLY file)</source>
+        <translation>der PLY-Header hat keine &apos;end_header&apos;-Zeile (abgeschnitten oder keine PLY-Datei)</translation>
+    </message>
+    <message>
+        <source>the file ends inside %1 %2 of %3 (truncated?)</source>
+        <translation>die Datei endet innerhalb von %1 %2 von %3 (abgeschnitten?)</translation>
+    </message>
+    <message>
+        <source>%1 %2 has a negative list length</source>
+        <translation>%1 %2 hat eine negative Listenlänge</translation>
+    </message>
+    <message>
+        <source>ignored %1 after the last element</source>
+        <translation>%1 nach dem letzten Element ignoriert</translation>
+    </message>
+    <message>
+        <source>an integer</source>
+        <translation>eine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>a list length</source>
+        <translation>eine Listenlänge</translation>
+    </message>
+    <message>
+        <source>ignored the text after the last element (from line %1)</source>
+        <translation>Text nach dem letzten Element ignoriert (ab Zeile %1)</translation>
+    </message>
+    <message>
+        <source>cannot open the file: %1</source>
+        <translation>die Datei kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>the PLY file has no vertex element with x, y and z</source>
+        <translation>die PLY-Datei hat kein vertex-Element mit x, y und z</translation>
+    </message>
+    <message>
+        <source>the PLY file has no faces (a point cloud?)</source>
+        <translation>die PLY-Datei hat keine Flächen (eine Punktwolke?)</translation>
+    </message>
+    <message>
+        <source>the header declares %1 %2 elements, which need at least %3 bytes, but the file has %4 bytes after the header (truncated or corrupt)</source>
+        <translation>der Header deklariert %1 %2-Elemente, die mindestens %3 Byte benötigen, aber die Datei hat nach dem Header %4 Byte (abgeschnitten oder beschädigt)</translation>
+    </message>
+    <message>
+        <source>an ascii PLY file with binary data in it (a NUL byte)</source>
+        <translation>eine ASCII-PLY-Datei mit binären Daten darin (ein NUL-Byte)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PolygonSoupImporter</name>
+    <message>
+        <source>dropped %1 whose halfedge loop in the .om file is broken</source>
+        <translation>%1 mit unterbrochenem Halbkantenzyklus in der .om-Datei verworfen</translation>
+    </message>
+    <message>
+        <source>the file&apos;s facet normals are all zero or invalid; normals will be computed</source>
+        <translation>die Facettennormalen der Datei sind alle null oder ungültig; die Normalen werden berechnet</translation>
+    </message>
+    <message>
+        <source>%1 zero or invalid; those faces get computed normals</source>
+        <translation>%1 null oder ungültig; diese Flächen erhalten berechnete Normalen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ProgramBuilder</name>
+    <message>
+        <source>%1 failed without a message from the driver</source>
+        <translation>%1 ohne Meldung des Treibers fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source> (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, or pass the normal matrix in as a uniform)</source>
+        <translation> (GLSL ES 1.00, WebGL 1, kennt weder inverse() noch transpose(): #version 300 es schreiben oder die Normalenmatrix als Uniform-Variable übergeben)</translation>
+    </message>
+    <message>
+        <source> (this OpenGL driver does not run %1 shaders in a desktop context: it lacks ARB_ES%2_compatibility)</source>
+        <translation> (dieser OpenGL-Treiber führt %1-Shader nicht in einem Desktop-Kontext aus: ihm fehlt ARB_ES%2_compatibility)</translation>
+    </message>
+    <message>
+        <source>the vertex shader is %1 and the fragment shader %2: both stages must be written in the same GLSL (give both files)</source>
+        <translation>der Vertex-Shader ist %1 und der Fragment-Shader %2: Beide Stufen müssen in derselben GLSL-Version geschrieben sein (beide Dateien angeben)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::RecentFiles</name>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recent</source>
+        <translation>&amp;Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::RecoveryJournal</name>
+    <message>
+        <source>%1: cannot create the recovery folder</source>
+        <translation>%1: Wiederherstellungsordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1: cannot lock the recovery journal</source>
+        <translation>%1: das Wiederherstellungsjournal kann nicht gesperrt werden</translation>
+    </message>
+    <message>
+        <source>%1: not a complete PhongLab recovery journal</source>
+        <translation>%1: kein vollständiges PhongLab-Wiederherstellungsjournal</translation>
+    </message>
+    <message>
+        <source>%1: a shader buffer is missing from the journal</source>
+        <translation>%1: im Journal fehlt ein Shader-Puffer</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ReferenceEdges</name>
+    <message>
+        <source>The reference is %1x%2 but the edges were cast at another size</source>
+        <translation>Die Referenz ist %1x%2 groß, aber die Kanten wurden in einer anderen Größe ermittelt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::Renderer</name>
+    <message>
+        <source>cannot build the light-marker program:
+</source>
+        <translation>das Programm für die Lichtmarkierungen kann nicht gebaut werden:
+</translation>
+    </message>
+    <message>
+        <source>cannot upload the light marker: </source>
+        <translation>die Lichtmarkierung kann nicht hochgeladen werden: </translation>
+    </message>
+    <message>
+        <source>mesh was not loaded</source>
+        <translation>Mesh wurde nicht geladen</translation>
+    </message>
+    <message>
+        <source>%1: not drawn: the shipped %2 shaders did not build</source>
+        <translation>%1: nicht gezeichnet: die mitgelieferten Shader für %2 ließen sich nicht bauen</translation>
+    </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nicht gezeichnet: %2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneDock</name>
+    <message>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>not loaded</source>
+        <translation>nicht geladen</translation>
+    </message>
+    <message>
+        <source>%1 triangles</source>
+        <translation>%1 Dreiecke</translation>
+    </message>
+    <message>
+        <source> (detail %1 %)</source>
+        <translation> (Detailstufe %1 %)</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 Warnung</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>%1 Warnungen</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>Detailstufe</translation>
+    </message>
+    <message>
+        <source>Tessellated coarser (the object&apos;s &quot;detail&quot;)</source>
+        <translation>Gröber tesselliert (der Wert &quot;detail&quot; des Objekts)</translation>
+    </message>
+    <message>
+        <source>Decimated from the loaded mesh (the object&apos;s &quot;detail&quot;)</source>
+        <translation>Aus dem geladenen Mesh reduziert (der Wert &quot;detail&quot; des Objekts)</translation>
+    </message>
+    <message>
+        <source>Split vertices</source>
+        <translation>Aufgeteilte Vertices</translation>
+    </message>
+    <message>
+        <source>Vertices duplicated where a position has several normals</source>
+        <translation>Vertices, die verdoppelt werden, wo eine Position mehrere Normalen hat</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>In der Datei</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 faces</source>
+        <translation>%1 Vertices, %2 Flächen</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Bounds</source>
+        <translation>Ausdehnung</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>Oberfläche</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Load time</source>
+        <translation>Ladezeit</translation>
+    </message>
+    <message>
+        <source>%1 (from the mesh cache)</source>
+        <translation>%1 (aus dem Mesh-Cache)</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Warnungen</translation>
+    </message>
+    <message>
+        <source>Select an object to choose how its normals are made</source>
+        <translation>Objekt auswählen, um festzulegen, wie seine Normalen erzeugt werden</translation>
+    </message>
+    <message>
+        <source>builtin shapes have exact analytic normals</source>
+        <translation>eingebaute Formen haben exakte analytische Normalen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneEditDockSet</name>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>Ctrl+Z</source>
+        <translation>Ctrl+Z</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneJson</name>
+    <message>
+        <source>: unknown key, ignored</source>
+        <translation>: unbekannter Schlüssel, ignoriert</translation>
+    </message>
+    <message>
+        <source>expected an object (got %1)</source>
+        <translation>Objekt erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must be a finite number (got %1, out of range)</source>
+        <translation>muss eine endliche Zahl sein (erhalten: %1, außerhalb des Bereichs)</translation>
+    </message>
+    <message>
+        <source>expected a number (got %1)</source>
+        <translation>Zahl erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must be a finite number (got %1)</source>
+        <translation>muss eine endliche Zahl sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>expected an array of 3 numbers</source>
+        <translation>Array aus 3 Zahlen erwartet</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (got %1)</source>
+        <translation>muss &gt;= 0 sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>required field missing</source>
+        <translation>Pflichtfeld fehlt</translation>
+    </message>
+    <message>
+        <source>expected a string (got %1)</source>
+        <translation>Zeichenkette erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must not be empty (give a file path or &quot;builtin:sphere&quot;)</source>
+        <translation>darf nicht leer sein (einen Dateipfad oder &quot;builtin:sphere&quot; angeben)</translation>
+    </message>
+    <message>
+        <source>must not be 0</source>
+        <translation>darf nicht 0 sein</translation>
+    </message>
+    <message>
+        <source>must be &gt; 0 (got %1)</source>
+        <translation>muss &gt; 0 sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>expected true or false (got %1)</source>
+        <translation>true oder false erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must be in (0, 180) degrees (got %1)</source>
+        <translation>muss in (0, 180) Grad liegen (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must be greater than near (%1) (got %2)</source>
+        <translation>muss größer als near (%1) sein (erhalten: %2)</translation>
+    </message>
+    <message>
+        <source>must differ from eye</source>
+        <translation>muss sich von eye unterscheiden</translation>
+    </message>
+    <message>
+        <source>must not be the zero vector</source>
+        <translation>darf nicht der Nullvektor sein</translation>
+    </message>
+    <message>
+        <source>must not be parallel to the view direction (target - eye)</source>
+        <translation>darf nicht parallel zur Blickrichtung (target - eye) sein</translation>
+    </message>
+    <message>
+        <source>c1 + c2 + c3 must be positive (got %1)</source>
+        <translation>c1 + c2 + c3 muss positiv sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>expected an array (got %1)</source>
+        <translation>Array erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>at most %1 lights are supported (got %2)</source>
+        <translation>höchstens %1 Lichtquellen werden unterstützt (erhalten: %2)</translation>
+    </message>
+    <message>
+        <source>expected a whole number from 1</source>
+        <translation>ganze Zahl ab 1 erwartet</translation>
+    </message>
+    <message>
+        <source>: %1 is newer than this PhongLab&apos;s %2; read as %2, fields it does not know are ignored</source>
+        <translation>: %1 ist neuer als %2 dieser PhongLab-Version; gelesen als %2, unbekannte Felder werden ignoriert</translation>
+    </message>
+    <message>
+        <source>: &quot;flat&quot; in a scene without &quot;format&quot;: 2 is the per-fragment shader now called &quot;faceted&quot;; loaded as &quot;faceted&quot; (saving writes that; write &quot;format&quot;: 2 for flat shading once per face)</source>
+        <translation>: &quot;flat&quot; in einer Szene ohne &quot;format&quot;: 2 ist der Shader pro Fragment, der jetzt &quot;faceted&quot; heißt; als &quot;faceted&quot; geladen (beim Speichern wird das geschrieben; für flache Schattierung einmal pro Fläche &quot;format&quot;: 2 schreiben)</translation>
+    </message>
+    <message>
+        <source>unknown shading method &quot;%1&quot; (known: %2)</source>
+        <translation>unbekanntes Schattierungsverfahren &quot;%1&quot; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>must not be empty (give a shader file path, or leave the key out)</source>
+        <translation>darf nicht leer sein (Pfad einer Shader-Datei angeben oder den Schlüssel weglassen)</translation>
+    </message>
+    <message>
+        <source>must list at least one object</source>
+        <translation>muss mindestens ein Objekt enthalten</translation>
+    </message>
+    <message>
+        <source>expected a number in (0, 1]</source>
+        <translation>Zahl in (0, 1] erwartet</translation>
+    </message>
+    <message>
+        <source>cannot be combined with &quot;mesh&quot; (use one form)</source>
+        <translation>kann nicht mit &quot;mesh&quot; kombiniert werden (nur eine Form verwenden)</translation>
+    </message>
+    <message>
+        <source>required field missing (or give &quot;objects&quot;)</source>
+        <translation>Pflichtfeld fehlt (oder &quot;objects&quot; angeben)</translation>
+    </message>
+    <message>
+        <source>: ignored with &quot;objects&quot; (give each object its own)</source>
+        <translation>: bei &quot;objects&quot; ignoriert (stattdessen bei jedem Objekt einzeln angeben)</translation>
+    </message>
+    <message>
+        <source>top level: expected a JSON object (got array)</source>
+        <translation>oberste Ebene: JSON-Objekt erwartet (erhalten: array)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read scene file (%2)</source>
+        <translation>%1: Szenendatei kann nicht gelesen werden (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneJsonText</name>
+    <message>
+        <source>JSON syntax error at line %1, column %2 (byte offset %3): %4</source>
+        <translation>JSON-Syntaxfehler in Zeile %1, Spalte %2 (Byte-Offset %3): %4</translation>
+    </message>
+    <message>
+        <source>out-of-range number %1</source>
+        <translation>Zahl außerhalb des Wertebereichs %1</translation>
+    </message>
+    <message>
+        <source>expected a string (got %1)</source>
+        <translation>Zeichenkette erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>unknown normal method &quot;%1&quot; (known: %2)</source>
+        <translation>unbekanntes Normalenverfahren &quot;%1&quot; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>expected a string or an object (got %1)</source>
+        <translation>Zeichenkette oder Objekt erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>unknown key</source>
+        <translation>unbekannter Schlüssel</translation>
+    </message>
+    <message>
+        <source>expected a finite number (got %1)</source>
+        <translation>endliche Zahl erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>must be in [0, 180] degrees (got %1)</source>
+        <translation>muss in [0, 180] Grad liegen (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected a finite number (got %1)</source>
+        <translation>: endliche Zahl erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected an object of name: value (got %1)</source>
+        <translation>: Objekt aus Einträgen Name: Wert erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: a uniform name must not be empty</source>
+        <translation>: der Name einer Uniform-Variablen darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>: expected 1 to 16 numbers (got %1)</source>
+        <translation>: 1 bis 16 Zahlen erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected an object of name: meaning (got %1)</source>
+        <translation>: Objekt aus Einträgen Name: Bedeutung erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: a variable name must not be empty</source>
+        <translation>: ein Variablenname darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>: expected a meaning&apos;s name (got %1)</source>
+        <translation>: Name einer Bedeutung erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: unknown meaning &quot;%1&quot; (known: %2, %3)</source>
+        <translation>: unbekannte Bedeutung &quot;%1&quot; (bekannt: %2, %3)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneJsonWrite</name>
+    <message>
+        <source>refusing to save an invalid scene: %1</source>
+        <translation>ungültige Szene wird nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot write scene file (%2)</source>
+        <translation>%1: Szenendatei kann nicht geschrieben werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: write failed (%2)</source>
+        <translation>%1: Schreiben fehlgeschlagen (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::SceneLoadJob</name>
+    <message>
+        <source>loading stopped: %1</source>
+        <translation>Laden abgebrochen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderBindings</name>
+    <message>
+        <source>another type</source>
+        <translation>anderer Typ</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: unknown meaning &apos;%2&apos; (known: %3, %4)</source>
+        <translation>&apos;%1&apos;: unbekannte Bedeutung &apos;%2&apos; (bekannt: %3, %4)</translation>
+    </message>
+    <message>
+        <source>%1=%2: %1 is a %3%4 %5, which cannot hold %6</source>
+        <translation>%1=%2: %1 ist vom Typ %3%4 (%5) und kann %6 nicht aufnehmen</translation>
+    </message>
+    <message>
+        <source>%1=%2: the program has no active uniform or input %1 (not declared, or unused and optimised away)</source>
+        <translation>%1=%2: das Programm hat keine aktive Uniform-Variable oder Eingabevariable %1 (nicht deklariert oder unbenutzt und wegoptimiert)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderCheck</name>
+    <message>
+        <source>PSNR %1 dB</source>
+        <translation>PSNR %1 dB</translation>
+    </message>
+    <message>
+        <source>✓ %1 — the slide&apos;s equation (a highlight even where N·L &lt;= 0)</source>
+        <translation>✓ %1 — die Gleichung der Folie (Glanzlicht auch dort, wo N·L &lt;= 0)</translation>
+    </message>
+    <message>
+        <source>✗ %1 — no classic mistake explains it: see the heatmap</source>
+        <translation>✗ %1 — kein typischer Fehler erklärt das: siehe Heatmap</translation>
+    </message>
+    <message>
+        <source>✗ %1 — %2: %3</source>
+        <translation>✗ %1 — %2: %3</translation>
+    </message>
+    <message>
+        <source> (or %1)</source>
+        <translation> (oder %1)</translation>
+    </message>
+    <message>
+        <source>✓ matches the exact image (%1, max %2/255)</source>
+        <translation>✓ stimmt mit dem exakten Bild überein (%1, max. %2/255)</translation>
+    </message>
+    <message>
+        <source>✗ %1, max %2/255, %3 % of pixels off</source>
+        <translation>✗ %1, max. %2/255, %3 % der Pixel weichen ab</translation>
+    </message>
+    <message>
+        <source> — unknown: no classic mistake explains it; see the heatmap</source>
+        <translation> — unknown: kein typischer Fehler erklärt das; siehe Heatmap</translation>
+    </message>
+    <message>
+        <source> — %1 (%2 %, %3): %4</source>
+        <translation> — %1 (%2 %, %3): %4</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderDock</name>
+    <message>
+        <source>Shaders</source>
+        <translation>Shader</translation>
+    </message>
+    <message>
+        <source>Apply anyway</source>
+        <translation>Trotzdem anwenden</translation>
+    </message>
+    <message>
+        <source>Draw with this program although its frames are slow; the view then draws only when you ask it to</source>
+        <translation>Mit diesem Programm zeichnen, obwohl seine Bilder langsam sind; die Ansicht zeichnet dann nur noch auf Anforderung</translation>
+    </message>
+    <message>
+        <source>Load a shading method&apos;s shaders</source>
+        <translation>Shader eines Schattierungsverfahrens laden</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilieren</translation>
+    </message>
+    <message>
+        <source>Compile and link both stages (F5)</source>
+        <translation>Beide Stufen kompilieren und linken (F5)</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Öffnen…</translation>
+    </message>
+    <message>
+        <source>Open a shader, or a .vert/.frag pair</source>
+        <translation>Einen Shader oder ein .vert/.frag-Paar öffnen</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Save the current tab (shipped shaders are saved as a user copy)</source>
+        <translation>Aktuellen Tab speichern (mitgelieferte Shader werden als Benutzerkopie gespeichert)</translation>
+    </message>
+    <message>
+        <source>Save As…</source>
+        <translation>Speichern unter…</translation>
+    </message>
+    <message>
+        <source>Save the current tab under another name</source>
+        <translation>Aktuellen Tab unter einem anderen Namen speichern</translation>
+    </message>
+    <message>
+        <source>Open one shader, or a vertex and a fragment shader.</source>
+        <translation>Bitte einen Shader oder einen Vertex- und einen Fragment-Shader öffnen.</translation>
+    </message>
+    <message>
+        <source>%1: cannot tell which stage it is (use .vert or .frag)</source>
+        <translation>%1: Stufe nicht erkennbar (.vert oder .frag verwenden)</translation>
+    </message>
+    <message>
+        <source>Both files are %1 shaders.</source>
+        <translation>Beide Dateien sind %1-Shader.</translation>
+    </message>
+    <message>
+        <source>Open Shaders</source>
+        <translation>Shader öffnen</translation>
+    </message>
+    <message>
+        <source>Save Shader As</source>
+        <translation>Shader speichern unter</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Discard them?</source>
+        <translation>%1 enthält ungespeicherte Änderungen. Sollen sie verworfen werden?</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
+    <message>
+        <source>%1 shader</source>
+        <translation>%1-Shader</translation>
+    </message>
+    <message>
+        <source>
+Shipped with PhongLab: edits go to a user copy.</source>
+        <translation>
+Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderEditor</name>
+    <message>
+        <source>Error annotation</source>
+        <translation>Fehleranmerkung</translation>
+    </message>
+    <message>
+        <source>Warning annotation</source>
+        <translation>Warnungsanmerkung</translation>
+    </message>
+    <message>
+        <source>Ctrl+Space</source>
+        <translation>Ctrl+Space</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Space</source>
+        <translation>Ctrl+Shift+Space</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderFileSet</name>
+    <message>
+        <source>%1: cannot create the folder for user shaders</source>
+        <translation>%1: Der Ordner für eigene Shader kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1 is a shader shipped with PhongLab and is never overwritten; save under another name or folder.</source>
+        <translation>%1 ist ein mit PhongLab mitgelieferter Shader und wird nie überschrieben; bitte unter einem anderen Namen oder in einem anderen Ordner speichern.</translation>
+    </message>
+    <message>
+        <source>Shader changed on disk</source>
+        <translation>Shader auf dem Datenträger geändert</translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program, and the editor has unsaved changes to it.</source>
+        <translation>%1 wurde von einem anderen Programm geändert, und der Editor enthält ungespeicherte Änderungen daran.</translation>
+    </message>
+    <message>
+        <source>Reload it and lose your changes, or keep your version?</source>
+        <translation>Neu laden und die Änderungen verwerfen oder die eigene Version behalten?</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Neu laden</translation>
+    </message>
+    <message>
+        <source>Keep mine</source>
+        <translation>Eigene behalten</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderMistake</name>
+    <message>
+        <source>the normal N: it must be transformed by the inverse transpose of the model-view matrix, not by the model-view or model matrix, nor by a transpose without the inverse (which bends it under non-uniform scale)</source>
+        <translation>die Normale N: Bei der Normalentransformation muss sie mit der Inversen der Transponierten der Model-View-Matrix transformiert werden, nicht mit der Model-View- oder der Model-Matrix und auch nicht mit der Transponierten ohne Inverse (die sie bei nicht gleichmäßiger Skalierung verbiegt)</translation>
+    </message>
+    <message>
+        <source>the normal N: it must be normalised in the fragment shader, after interpolation has shortened it (and L and V must be unit length too)</source>
+        <translation>die Normale N: Sie muss im Fragment-Shader normalisiert werden, nachdem die Interpolation sie verkürzt hat (auch L und V müssen die Länge 1 haben)</translation>
+    </message>
+    <message>
+        <source>the light vector L: the light is placed in world coordinates and must be moved into camera coordinates by the view matrix (not left as it is, nor moved by the model-view matrix) before L = light - P</source>
+        <translation>der Lichtvektor L: Die Lichtquelle ist in Weltkoordinaten gegeben und muss mit der View-Matrix in Kamerakoordinaten überführt werden (weder unverändert bleiben noch mit der Model-View-Matrix transformiert werden), bevor L = light - P berechnet wird</translation>
+    </message>
+    <message>
+        <source>points and directions: a point (the position P, the light&apos;s position) is transformed with w = 1, a direction (the normal) with w = 0; a point with w = 0 loses the translation, a direction with w = 1 gains it</source>
+        <translation>Punkte und Richtungsvektoren: Ein Punkt (die Position P, die Position der Lichtquelle) wird mit w = 1 transformiert, ein Richtungsvektor (die Normale) mit w = 0; ein Punkt mit w = 0 verliert die Translation, ein Richtungsvektor mit w = 1 erhält sie fälschlich</translation>
+    </message>
+    <message>
+        <source>the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which points from the light to the surface</source>
+        <translation>der spekulare Anteil: R muss reflect(-L, N) sein; reflect() erwartet den Einfallsvektor, der von der Lichtquelle zur Oberfläche zeigt</translation>
+    </message>
+    <message>
+        <source>the specular term: V must point from the surface to the eye, V = normalize(-P) in camera coordinates</source>
+        <translation>der spekulare Anteil: V muss von der Oberfläche zum Auge zeigen, V = normalize(-P) in Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <source>the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light&apos;s diffuse and specular parts, with d the distance from the surface to the light, and never exceed 1</source>
+        <translation>der Abschwächungsfaktor f_att = min(1 / (c1 + c2·d + c3·d²), 1) muss den diffusen und den spekularen Anteil jeder Lichtquelle skalieren, mit d als Abstand von der Oberfläche zur Lichtquelle, und darf nie größer als 1 sein</translation>
+    </message>
+    <message>
+        <source>the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds nothing, it does not darken</source>
+        <translation>der diffuse Anteil: N·L muss mit max(0, N·L) begrenzt werden; eine Lichtquelle hinter der Oberfläche trägt nichts bei, sie verdunkelt nicht</translation>
+    </message>
+    <message>
+        <source>the specular term: where N·L &lt;= 0 the light is behind the surface and there is no highlight either</source>
+        <translation>der spekulare Anteil: Wo N·L &lt;= 0 ist, liegt die Lichtquelle hinter der Oberfläche, und es gibt auch kein Glanzlicht</translation>
+    </message>
+    <message>
+        <source>the ambient term Ia·ka must be added once, outside the sum over the lights</source>
+        <translation>der ambiente Anteil Ia·ka muss einmal addiert werden, außerhalb der Summe über die Lichtquellen</translation>
+    </message>
+    <message>
+        <source>where the equation is evaluated: per fragment, with the interpolated normal; evaluated per vertex and interpolated, highlights smear and vanish between vertices</source>
+        <translation>wo die Beleuchtungsgleichung ausgewertet wird: pro Fragment, mit der interpolierten Normale; wird sie pro Vertex ausgewertet und interpoliert, verschmieren die Glanzlichter und verschwinden zwischen den Vertices</translation>
+    </message>
+    <message>
+        <source>N moved by the model-view matrix, not its inverse transpose</source>
+        <translation>N mit der Model-View-Matrix transformiert statt mit der Inversen ihrer Transponierten</translation>
+    </message>
+    <message>
+        <source>N not normalised after interpolation</source>
+        <translation>N nach der Interpolation nicht normalisiert</translation>
+    </message>
+    <message>
+        <source>the light&apos;s world position used as a camera-space one</source>
+        <translation>die Lichtposition in Weltkoordinaten als Position in Kamerakoordinaten verwendet</translation>
+    </message>
+    <message>
+        <source>the position moved with w = 0</source>
+        <translation>die Position mit w = 0 transformiert</translation>
+    </message>
+    <message>
+        <source>reflect(L, N) instead of reflect(-L, N)</source>
+        <translation>reflect(L, N) statt reflect(-L, N)</translation>
+    </message>
+    <message>
+        <source>V points away from the eye</source>
+        <translation>V zeigt vom Auge weg</translation>
+    </message>
+    <message>
+        <source>f_att missing or wrong</source>
+        <translation>f_att fehlt oder ist falsch</translation>
+    </message>
+    <message>
+        <source>N·L not clamped with max(0, ·)</source>
+        <translation>N·L nicht mit max(0, ·) begrenzt</translation>
+    </message>
+    <message>
+        <source>a highlight where N·L &lt;= 0</source>
+        <translation>ein Glanzlicht, wo N·L &lt;= 0 ist</translation>
+    </message>
+    <message>
+        <source>Ia·ka missing or wrong</source>
+        <translation>Ia·ka fehlt oder ist falsch</translation>
+    </message>
+    <message>
+        <source>lit per vertex, not per fragment</source>
+        <translation>pro Vertex beleuchtet statt pro Fragment</translation>
+    </message>
+    <message>
+        <source>N moved by the model matrix alone</source>
+        <translation>N nur mit der Model-Matrix transformiert</translation>
+    </message>
+    <message>
+        <source>N moved by the transpose of the model-view matrix, without the inverse</source>
+        <translation>N mit der Transponierten der Model-View-Matrix transformiert, ohne Inverse</translation>
+    </message>
+    <message>
+        <source>L not normalised</source>
+        <translation>L nicht normalisiert</translation>
+    </message>
+    <message>
+        <source>the light moved by the model-view matrix, not the view matrix</source>
+        <translation>die Lichtquelle mit der Model-View-Matrix statt mit der View-Matrix transformiert</translation>
+    </message>
+    <message>
+        <source>the light&apos;s position moved with w = 0</source>
+        <translation>die Lichtposition mit w = 0 transformiert</translation>
+    </message>
+    <message>
+        <source>the normal, a direction, moved with w = 1</source>
+        <translation>die Normale, ein Richtungsvektor, mit w = 1 transformiert</translation>
+    </message>
+    <message>
+        <source>f_att not clamped with min(..., 1)</source>
+        <translation>f_att nicht mit min(..., 1) begrenzt</translation>
+    </message>
+    <message>
+        <source>Ia·ka added once per light</source>
+        <translation>Ia·ka einmal pro Lichtquelle addiert</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderRecovery</name>
+    <message>
+        <source>Discarded the shader edits recovered from %1</source>
+        <translation>Die geretteten Shader-Änderungen vom %1 wurden verworfen</translation>
+    </message>
+    <message>
+        <source>Restored the shader edits recovered from %1</source>
+        <translation>Die geretteten Shader-Änderungen vom %1 wurden wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>Restored shaders were running when PhongLab stopped unexpectedly, so they were not compiled; the shipped program is shown. Press F5 to compile them.</source>
+        <translation>Die wiederhergestellten Shader liefen, als PhongLab unerwartet beendet wurde, und wurden deshalb nicht kompiliert; angezeigt wird das mitgelieferte Programm. Zum Kompilieren F5 drücken.</translation>
+    </message>
+    <message>
+        <source>PhongLab stopped unexpectedly while trying a new shader; the restored shaders were not compiled and the shipped program is shown. Press F5 to compile them.</source>
+        <translation>PhongLab wurde beim Ausprobieren eines neuen Shaders unerwartet beendet; die wiederhergestellten Shader wurden nicht kompiliert, angezeigt wird das mitgelieferte Programm. Zum Kompilieren F5 drücken.</translation>
+    </message>
+    <message>
+        <source>Recover shader edits</source>
+        <translation>Shader-Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>PhongLab did not shut down cleanly. Shader edits from %1 were recovered.
+
+Restore them into the editor?</source>
+        <translation>PhongLab wurde nicht ordnungsgemäß beendet. Shader-Änderungen vom %1 wurden gerettet.
+
+Sollen sie im Editor wiederhergestellt werden?</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>A new shader was running when it stopped; it will not be compiled until you press F5.</source>
+        <translation>Als PhongLab beendet wurde, lief ein neuer Shader; er wird erst kompiliert, wenn F5 gedrückt wird.</translation>
+    </message>
+    <message>
+        <source>Unsaved shader changes</source>
+        <translation>Ungespeicherte Shader-Änderungen</translation>
+    </message>
+    <message>
+        <source>The shaders have unsaved changes. Save them before quitting?</source>
+        <translation>Die Shader haben ungespeicherte Änderungen. Vor dem Beenden speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot save shader</source>
+        <translation>Shader kann nicht gespeichert werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShortcutsDialog</name>
+    <message>
+        <source>3D view</source>
+        <translation>3D-Ansicht</translation>
+    </message>
+    <message>
+        <source>%1 dock</source>
+        <translation>Dock „%1“</translation>
+    </message>
+    <message>
+        <source>window</source>
+        <translation>Fenster</translation>
+    </message>
+    <message>
+        <source>anywhere in PhongLab</source>
+        <translation>überall in PhongLab</translation>
+    </message>
+    <message>
+        <source>anywhere in the window</source>
+        <translation>überall im Fenster</translation>
+    </message>
+    <message>
+        <source>toolbar</source>
+        <translation>Werkzeugleiste</translation>
+    </message>
+    <message>
+        <source>while the %1 has the focus</source>
+        <translation>wenn %1 den Fokus hat</translation>
+    </message>
+    <message>
+        <source> or the </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <source>%1 toolbar</source>
+        <translation>Werkzeugleiste „%1“</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>Fenster</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts — PhongLab</source>
+        <translation>Tastenkürzel — PhongLab</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Works</source>
+        <translation>Gilt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::UniformFloatRow</name>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::UniformNumberField</name>
+    <message>
+        <source>“%1” is not a number</source>
+        <translation>„%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>not a number (NaN)</source>
+        <translation>keine Zahl (NaN)</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is outside the range %2 … %3</source>
+        <translation>%1 liegt außerhalb des Bereichs %2 … %3</translation>
+    </message>
+    <message>
+        <source>Refused: %1. The value stays %2.</source>
+        <translation>Abgelehnt: %1. Der Wert bleibt %2.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::UniformVectorRow</name>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>Choose a colour</source>
+        <translation>Farbe auswählen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::UniformsDock</name>
+    <message>
+        <source>Uniforms</source>
+        <translation>Uniform-Variablen</translation>
+    </message>
+    <message>
+        <source>declared but optimised away: not used by the program</source>
+        <translation>deklariert, aber wegoptimiert: vom Programm nicht verwendet</translation>
+    </message>
+    <message>
+        <source>The compiler removed %1 %2 because nothing the output depends on reads it.</source>
+        <translation>Der Compiler hat %1 %2 entfernt, weil nichts, wovon die Ausgabe abhängt, diese Variable liest.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::Vec3Field</name>
+    <message>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <source>Pick as a colour</source>
+        <translation>Als Farbe wählen</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation>%1: &quot;%2&quot; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1: NaN is not allowed</source>
+        <translation>%1: NaN ist nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>%1: must be finite</source>
+        <translation>%1: muss endlich sein</translation>
+    </message>
+    <message>
+        <source>%1: must be in [%2, %3] (got %4)</source>
+        <translation>%1: muss in [%2, %3] liegen (erhalten: %4)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::Viewport</name>
+    <message>
+        <source>Cannot render with %1: %2</source>
+        <translation>Rendern mit %1 nicht möglich: %2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ViewportSurface</name>
+    <message>
+        <source>Cannot create an OpenGL context for the viewport</source>
+        <translation>Für die Ansicht kann kein OpenGL-Kontext erstellt werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::WarmUpDraw</name>
+    <message>
+        <source>cannot create the %1-sample framebuffer for warming programs</source>
+        <translation>der Framebuffer mit %1 Samples zum Aufwärmen der Programme kann nicht erstellt werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::CheckCommand</name>
+    <message>
+        <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                      [--json] [--diff OUT.png]</source>
+        <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                       [--json] [--diff OUT.png]</translation>
+    </message>
+    <message>
+        <source>
+
+Renders SCENE.json with the shaders `render` would use, compares the image with the exact
+(double-precision) reference of the same scene, leaving out a band around silhouettes,
+and when it differs names the classic mistake that explains it.
+
+  --vertex FILE       vertex shader instead of the scene&apos;s or the shading method&apos;s
+  --fragment FILE     fragment shader instead of the scene&apos;s or the shading method&apos;s
+  --shading NAME      shading method instead of the scene&apos;s; one of %1
+  --size WxH          image size in pixels, default 800x600
+  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
+  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable. Names are
+                      bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
+                      this wins over that. Meanings: %4, or none
+  --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
+                      or the guarded one (guarded: none there); by default either passes
+  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
+                      tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
+                      notes) instead of text
+  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;
+                      dark blue the silhouette band left out, black the background
+
+Mistake keys: %3, unknown.
+
+Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.
+Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <translation>
+
+Rendert SCENE.json mit den Shadern, die `render` verwenden würde, vergleicht das Bild mit der
+exakten Referenz (doppelte Genauigkeit) derselben Szene, ohne einen Rand um die Silhouetten,
+und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
+
+  --vertex FILE       Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
+  --fragment FILE     Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
+  --shading NAME      Schattierungsverfahren anstelle dessen der Szene; eines von %1
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
+  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
+                      wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
+                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none
+  --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
+                      N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
+                      besteht beides
+  --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
+                      bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
+                      equation, notes)
+  --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, gelb, rot ab 8/255 Abweichung;
+                      dunkelblau der ausgelassene Silhouettenrand, schwarz der Hintergrund
+
+Fehlerschlüssel: %3, unknown.
+
+Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
+2 falsche Argumente.
+Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
+    </message>
+    <message>
+        <source>Show help.</source>
+        <translation>Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Scene file (JSON).</source>
+        <translation>Szenendatei (JSON).</translation>
+    </message>
+    <message>
+        <source>missing the scene file</source>
+        <translation>Szenendatei fehlt</translation>
+    </message>
+    <message>
+        <source>exactly one scene file expected</source>
+        <translation>genau eine Szenendatei erwartet</translation>
+    </message>
+    <message>
+        <source>--equation: expected slide or guarded, got &apos;%1&apos;</source>
+        <translation>--equation: slide oder guarded erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--tolerance: expected 0..255 8-bit steps, got &apos;%1&apos;</source>
+        <translation>--tolerance: 0..255 8-Bit-Stufen erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--diff: missing the output file</source>
+        <translation>--diff: Ausgabedatei fehlt</translation>
+    </message>
+    <message>
+        <source>no reference: %1</source>
+        <translation>keine Referenz: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::CheckReportOutput</name>
+    <message>
+        <source>pass</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>%1 explains %2 % of the difference (%3): %4</source>
+        <translation>%1 erklärt %2 % des Unterschieds (%3): %4</translation>
+    </message>
+    <message>
+        <source>; or, with the same image, %1: %2</source>
+        <translation>; oder, bei gleichem Bild, %1: %2</translation>
+    </message>
+    <message>
+        <source>the background</source>
+        <translation>Hintergrund</translation>
+    </message>
+    <message>
+        <source>object %1 (%2)</source>
+        <translation>Objekt %1 (%2)</translation>
+    </message>
+    <message>
+        <source>no classic mistake explains the difference; the error heatmap (--diff) shows where it is</source>
+        <translation>kein typischer Fehler erklärt den Unterschied; die Fehler-Heatmap (--diff) zeigt, wo er liegt</translation>
+    </message>
+    <message>
+        <source>bindings: %1</source>
+        <translation>Zuordnungen: %1</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>check: error</source>
+        <translation>Prüfung: Fehler</translation>
+    </message>
+    <message>
+        <source>check: %1</source>
+        <translation>Prüfung: %1</translation>
+    </message>
+    <message>
+        <source>%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it</source>
+        <translation>%1, max. Fehler %2/255 (Toleranz %3/255), %4 % von %5 verglichenen Pixeln darüber</translation>
+    </message>
+    <message>
+        <source>PSNR %1 dB</source>
+        <translation>PSNR %1 dB</translation>
+    </message>
+    <message>
+        <source>PSNR inf</source>
+        <translation>PSNR inf</translation>
+    </message>
+    <message>
+        <source>equation: the slide&apos;s, taken literally (a highlight even where N·L &lt;= 0), which is right too</source>
+        <translation>Beleuchtungsgleichung: wörtlich wie auf der Folie (ein Glanzlicht auch dort, wo N·L &lt;= 0 ist); auch das ist richtig</translation>
+    </message>
+    <message>
+        <source>worst pixel (%1, %2) on %3</source>
+        <translation>schlechtestes Pixel (%1, %2): %3</translation>
+    </message>
+    <message>
+        <source>diagnosis:</source>
+        <translation>Diagnose:</translation>
+    </message>
+    <message>
+        <source>  unknown: no classic mistake explains the difference; the heatmap (--diff) shows where it is</source>
+        <translation>  unknown: kein typischer Fehler erklärt den Unterschied; die Heatmap (--diff) zeigt, wo er liegt</translation>
+    </message>
+    <message>
+        <source>cannot show in this scene: %1</source>
+        <translation>in dieser Szene nicht nachweisbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::CheckSteps</name>
+    <message>
+        <source>the shaders did not compile</source>
+        <translation>die Shader ließen sich nicht kompilieren</translation>
+    </message>
+    <message>
+        <source>rendering failed</source>
+        <translation>Rendern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
+        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::ClassFolder</name>
+    <message>
+        <source>%1 files for the %2 stage: %3 (keep one)</source>
+        <translation>%1 Dateien für die Stufe %2: %3 (nur eine behalten)</translation>
+    </message>
+    <message>
+        <source>no shader file (.vert, .frag, .vs, .fs, .glsl) in %1</source>
+        <translation>keine Shader-Datei (.vert, .frag, .vs, .fs, .glsl) in %1</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: Ordner existiert nicht</translation>
+    </message>
+    <message>
+        <source>%1: not a folder (one subfolder per submission expected)</source>
+        <translation>%1: kein Ordner (ein Unterordner pro Abgabe erwartet)</translation>
+    </message>
+    <message>
+        <source>%1: no submission folders in it (one subfolder per student expected)</source>
+        <translation>%1: enthält keine Abgabeordner (ein Unterordner pro Person erwartet)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::Cli</name>
+    <message>
+        <source>usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files
+                                        (.obj .ply .off .stl .om; the default scene when none given)
+       phonglab SCENE.json --vertex FILE --fragment FILE
+                                        the editor on a scene with these shaders (either one alone
+                                        keeps the scene&apos;s other stage)
+       phonglab &lt;command&gt; [options]     run a command without a window
+
+commands:
+</source>
+        <translation>Aufruf: phonglab [SCENE.json | MESH...]  den Editor mit einer Szene oder mit Mesh-Dateien starten
+                                         (.obj .ply .off .stl .om; ohne Angabe die Standardszene)
+        phonglab SCENE.json --vertex FILE --fragment FILE
+                                         den Editor mit einer Szene und diesen Shadern starten (ist nur
+                                         einer angegeben, bleibt die andere Stufe der Szene erhalten)
+        phonglab &lt;command&gt; [options]     einen Befehl ohne Fenster ausführen
+
+Befehle:
+</translation>
+    </message>
+    <message>
+        <source>
+&apos;phonglab &lt;command&gt; --help&apos; describes a command&apos;s options.</source>
+        <translation>
+&apos;phonglab &lt;command&gt; --help&apos; beschreibt die Optionen eines Befehls.</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos; (see phonglab --help)</source>
+        <translation>unbekannte Option &apos;%1&apos; (siehe phonglab --help)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::GradeCommand</name>
+    <message>
+        <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
+                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
+                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]</source>
+        <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
+                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
+                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]</translation>
+    </message>
+    <message>
+        <source>
+
+Checks every submission in SUBMISSIONS against every scene, as `phonglab check` does,
+and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one
+submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,
+.frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes.
+A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check runs in a
+child process of its own: a shader that runs too long or crashes costs that one verdict.
+
+  --scene FILE        a scene to check with; repeatable, at least one
+  --out DIR           where the results go, default ./grades
+  --jobs N            checks at once, default the number of cores (%1)
+  --timeout SECONDS   wall-clock limit of one check, default %2
+  --memory MIB        memory limit of one check, default %3
+  --size WxH          image size in pixels, default 800x600
+  --tolerance STEPS   largest error allowed per channel (0..255), default %4
+  --bind NAME=MEANING what every student&apos;s NAME holds, as in check; repeatable
+  --equation E        demand the slide&apos;s (slide) or the guarded (guarded) equation
+
+Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
+bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json
+(the check&apos;s JSON per row), DIR/report.html and its DIR/images/, and a table on stdout.
+Verdicts: pass, fail, error, timeout, crash.
+
+Exit status: 0 every submission got a verdict, 1 the run could not complete (a scene
+that does not load, no submissions, DIR not writable), 2 wrong arguments.</source>
+        <translation>
+
+Prüft jede Abgabe in SUBMISSIONS mit jeder Szene, wie `phonglab check` es tut, und
+schreibt die Ergebnisse der Studierenden nach DIR. Jeder Unterordner von SUBMISSIONS ist
+eine Abgabe: ihr Vertex- und/oder Fragment-Shader, unter beliebigen Dateinamen (.vert .vs
+.vsh, .frag .fs .fsh; .glsl je nachdem, ob gl_Position geschrieben wird), in jedem Dialekt,
+den `check` annimmt. Für eine fehlende Stufe wird die mitgelieferte des
+Schattierungsverfahrens der Szene verwendet. Jede Prüfung läuft in einem eigenen
+Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses eine Urteil.
+
+  --scene FILE        eine Szene, mit der geprüft wird; wiederholbar, mindestens eine
+  --out DIR           Ordner für die Ergebnisse, Standard ./grades
+  --jobs N            gleichzeitige Prüfungen, Standard die Anzahl der Kerne (%1)
+  --timeout SECONDS   Zeitlimit (Echtzeit) einer Prüfung, Standard %2
+  --memory MIB        Speicherlimit einer Prüfung, Standard %3
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal (0..255), Standard %4
+  --bind NAME=MEANING was NAME in jeder Abgabe enthält, wie bei check; wiederholbar
+  --equation E        die Gleichung der Folie (slide) oder die abgesicherte (guarded) verlangen
+
+Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
+bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json
+(das JSON der Prüfung pro Zeile), DIR/report.html mit DIR/images/ sowie eine Tabelle auf
+stdout.
+Urteile: pass, fail, error, timeout, crash.
+
+Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgeschlossen
+werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
+    </message>
+    <message>
+        <source>Show help.</source>
+        <translation>Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>missing the submissions folder</source>
+        <translation>der Ordner mit den Abgaben fehlt</translation>
+    </message>
+    <message>
+        <source>exactly one submissions folder expected</source>
+        <translation>genau ein Abgabenordner erwartet</translation>
+    </message>
+    <message>
+        <source>--scene: at least one scene expected</source>
+        <translation>--scene: mindestens eine Szene erwartet</translation>
+    </message>
+    <message>
+        <source>--out: missing the folder</source>
+        <translation>--out: der Ordner fehlt</translation>
+    </message>
+    <message>
+        <source>--equation: expected slide or guarded, got &apos;%1&apos;</source>
+        <translation>--equation: slide oder guarded erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--tolerance: expected 0..255 8-bit steps, got &apos;%1&apos;</source>
+        <translation>--tolerance: 0..255 8-Bit-Stufen erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--timeout: expected seconds in (0, 86400], got &apos;%1&apos;</source>
+        <translation>--timeout: Sekunden in (0, 86400] erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: Schreiben nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot make the folder</source>
+        <translation>%1: Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1: cannot write into it: %2</source>
+        <translation>%1: kann nicht beschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot find the phonglab program to run the checks with (set PHONGLAB_EXE)</source>
+        <translation>das phonglab-Programm zum Ausführen der Prüfungen wurde nicht gefunden (PHONGLAB_EXE setzen)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::GradeRun</name>
+    <message>
+        <source>%1: no exact image: %2</source>
+        <translation>%1: kein exaktes Bild: %2</translation>
+    </message>
+    <message>
+        <source>the check drew no image (%1)</source>
+        <translation>die Prüfung hat kein Bild gezeichnet (%1)</translation>
+    </message>
+    <message>
+        <source>no reference: %1</source>
+        <translation>keine Referenz: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::GradedChild</name>
+    <message>
+        <source>the check could not start: %1</source>
+        <translation>die Prüfung konnte nicht gestartet werden: %1</translation>
+    </message>
+    <message>
+        <source>ran past the %1 s limit and was stopped (a loop that runs too long, or a frame the GPU cannot finish)</source>
+        <translation>hat das Zeitlimit von %1 s überschritten und wurde abgebrochen (eine zu lange laufende Schleife oder ein Frame, den die GPU nicht fertigstellen kann)</translation>
+    </message>
+    <message>
+        <source>used more than %1 MiB of memory and was stopped</source>
+        <translation>hat mehr als %1 MiB Speicher belegt und wurde beendet</translation>
+    </message>
+    <message>
+        <source>the check crashed with signal %1 (%2)</source>
+        <translation>die Prüfung ist mit Signal %1 (%2) abgestürzt</translation>
+    </message>
+    <message>
+        <source>; it said: </source>
+        <translation>; Ausgabe: </translation>
+    </message>
+    <message>
+        <source>the check ran out of memory</source>
+        <translation>der Prüfung ging der Speicher aus</translation>
+    </message>
+    <message>
+        <source>the check exited with status %1 without an answer</source>
+        <translation>die Prüfung wurde mit Status %1 ohne Antwort beendet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::MeshInfoCommand</name>
+    <message>
+        <source>Show help.</source>
+        <translation>Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Normal method.</source>
+        <translation>Verfahren für die Normalen.</translation>
+    </message>
+    <message>
+        <source>Crease angle.</source>
+        <translation>Knickwinkel.</translation>
+    </message>
+    <message>
+        <source>
+
+Loads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,
+faces, where the normals came from, bounds, split vertices, warnings and load time.
+
+  --json            machine-readable output; keys: vertices, faces, normals (&quot;file&quot; or
+                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms, and more
+  --normals METHOD  auto (default: the file&apos;s, else angle), flat, average, area, angle
+  --crease DEG      split normals where faces meet at more than DEG degrees
+
+Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.</source>
+        <translation>
+
+Lädt ein Mesh (OBJ, PLY, OFF, STL, OM) so, wie eine Szene es lädt, und gibt seine Vertices,
+Flächen, die Herkunft der Normalen, Ausdehnung, aufgeteilte Vertices, Warnungen und Ladezeit aus.
+
+  --json            maschinenlesbare Ausgabe; Schlüssel: vertices, faces, normals (&quot;file&quot; oder
+                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms und weitere
+  --normals METHOD  auto (Standard: die der Datei, sonst angle), flat, average, area, angle
+  --crease DEG      Normalen aufteilen, wo Flächen in einem Winkel von mehr als DEG Grad aufeinandertreffen
+
+Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 falsche Argumente.</translation>
+    </message>
+    <message>
+        <source>expected exactly one mesh file</source>
+        <translation>genau eine Mesh-Datei erwartet</translation>
+    </message>
+    <message>
+        <source>--normals: unknown method &apos;%1&apos; (known: %2)</source>
+        <translation>--normals: unbekanntes Verfahren &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>--crease: expected degrees in [0, 180], got &apos;%1&apos;</source>
+        <translation>--crease: Grad in [0, 180] erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>from the file, per face corner</source>
+        <translation>aus der Datei, pro Flächenecke</translation>
+    </message>
+    <message>
+        <source>computed (%1)</source>
+        <translation>berechnet (%1)</translation>
+    </message>
+    <message>
+        <source>gpu vertices:    %1 (%2 split for differing normals)</source>
+        <translation>GPU-Vertices:    %1 (%2 wegen unterschiedlicher Normalen aufgeteilt)</translation>
+    </message>
+    <message>
+        <source>load time:       %1 ms%2</source>
+        <translation>Ladezeit:        %1 ms%2</translation>
+    </message>
+    <message>
+        <source> (from the mesh cache)</source>
+        <translation> (aus dem Mesh-Cache)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::RenderCommand</name>
+    <message>
+        <source>Show help.</source>
+        <translation>Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Scene file (JSON).</source>
+        <translation>Szenendatei (JSON).</translation>
+    </message>
+    <message>
+        <source>Image size, default 800x600.</source>
+        <translation>Bildgröße, Standard 800x600.</translation>
+    </message>
+    <message>
+        <source>Vertex shader to use instead of the scene&apos;s.</source>
+        <translation>Vertex-Shader, der statt des Vertex-Shaders der Szene verwendet wird.</translation>
+    </message>
+    <message>
+        <source>Fragment shader to use instead of the scene&apos;s.</source>
+        <translation>Fragment-Shader anstelle des Fragment-Shaders der Szene.</translation>
+    </message>
+    <message>
+        <source>Shading method instead of the scene&apos;s.</source>
+        <translation>Schattierungsverfahren statt des Verfahrens der Szene.</translation>
+    </message>
+    <message>
+        <source>What a uniform or input of the shader holds.</source>
+        <translation>Was eine Uniform-Variable oder Eingabevariable des Shaders enthält.</translation>
+    </message>
+    <message>
+        <source>usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]</source>
+        <translation>Aufruf: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]</translation>
+    </message>
+    <message>
+        <source>
+
+Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.
+
+  -o, --output FILE   the PNG to write (only written when everything succeeded)
+  --size WxH          image size in pixels, default 800x600
+  --shading NAME      shading method instead of the scene&apos;s &quot;shading&quot;; one of
+                      %1
+  --vertex FILE       vertex shader instead of the shading method&apos;s
+  --fragment FILE     fragment shader instead of the shading method&apos;s
+  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable (the
+                      meanings are those of `phonglab check`)
+
+Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.
+Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <translation>
+
+Rendert ein Bild von SCENE.json offscreen (ohne Multisampling) in ein 8-Bit-RGB-PNG.
+
+  -o, --output FILE   das zu schreibende PNG (wird nur geschrieben, wenn alles gelungen ist)
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --shading NAME      Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
+                      %1
+  --vertex FILE       Vertex-Shader statt dem des Schattierungsverfahrens
+  --fragment FILE     Fragment-Shader statt dem des Schattierungsverfahrens
+  --bind NAME=MEANING was die Uniform-Variable oder Eingabe NAME des Shaders enthält;
+                      wiederholbar (die Bedeutungen sind die von `phonglab check`)
+
+Exit-Status: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
+Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
+    </message>
+    <message>
+        <source>missing the scene file</source>
+        <translation>die Szenendatei fehlt</translation>
+    </message>
+    <message>
+        <source>exactly one scene file expected</source>
+        <translation>genau eine Szenendatei erwartet</translation>
+    </message>
+    <message>
+        <source>the shaders did not compile; no image written</source>
+        <translation>die Shader ließen sich nicht kompilieren; kein Bild geschrieben</translation>
+    </message>
+    <message>
+        <source>rendering failed</source>
+        <translation>Rendern fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::SceneStages</name>
+    <message>
+        <source>--size: expected WxH with 1..%1 pixels per side, got &apos;%2&apos;</source>
+        <translation>--size: WxH mit 1..%1 Pixeln pro Seite erwartet, erhalten: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--shading: unknown method &apos;%1&apos; (known: %2)</source>
+        <translation>--shading: unbekanntes Verfahren &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>uniform %1 (%2) is bound to nothing, so the shader reads zero</source>
+        <translation>Uniform %1 (%2) ist nichts zugeordnet, daher liest der Shader null</translation>
+    </message>
+    <message>
+        <source>; if it is %1, add --bind %2=%3 (or &quot;bindings&quot; in the scene)</source>
+        <translation>; falls es sich um %1 handelt, --bind %2=%3 angeben (oder &quot;bindings&quot; in der Szene)</translation>
+    </message>
+    <message>
+        <source>; bind it with --bind %1=MEANING (meanings: %2), or give it a value in the scene&apos;s &quot;uniforms&quot;</source>
+        <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
+    </message>
+    <message>
+        <source>the shader takes %1 light%2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
+        <translation>der Shader hat %1 Licht-Slot%2 (seine Licht-Uniforms fassen nicht mehr), die Szene hat %3 eingeschaltete Lichtquellen: bewertet nur mit den ersten %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: Schreiben nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>%1: PNG encoding failed</source>
+        <translation>%1: PNG-Kodierung fehlgeschlagen</translation>
+    </message>
+</context>
+</TS>
