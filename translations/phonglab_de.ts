@@ -3196,6 +3196,31 @@ Befehle:
         <source>unknown option &apos;%1&apos; (see phonglab --help)</source>
         <translation>unbekannte Option &apos;%1&apos; (siehe phonglab --help)</translation>
     </message>
+    <message>
+        <source>
+--lang en|de on any command or the window chooses the language of that run (else the locale&apos;s: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).</source>
+        <translation>--lang en|de wählt bei jedem Befehl und im Fenster die Sprache dieses Aufrufs (sonst die des Gebietsschemas: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).</translation>
+    </message>
+    <message>
+        <source>measure speed against accuracy of every shading method and detail</source>
+        <translation>Geschwindigkeit gegen Genauigkeit jedes Schattierungsverfahrens und jeder Detailstufe messen</translation>
+    </message>
+    <message>
+        <source>render a scene offscreen into a PNG</source>
+        <translation>eine Szene ohne Fenster in ein PNG rendern</translation>
+    </message>
+    <message>
+        <source>judge a shader against the exact image and name the mistake that explains a wrong one</source>
+        <translation>einen Shader am exakten Bild prüfen und den Fehler benennen, der ein falsches Bild erklärt</translation>
+    </message>
+    <message>
+        <source>check a class folder of submissions, each in a process of its own; a report</source>
+        <translation>einen Ordner mit den Abgaben einer Gruppe prüfen, jede in einem eigenen Prozess; mit Bericht</translation>
+    </message>
+    <message>
+        <source>load a mesh and report its size, normals, bounds and warnings</source>
+        <translation>ein Mesh laden und Größe, Normalen, Ausdehnung und Warnungen ausgeben</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::GradeCommand</name>

@@ -1,5 +1,6 @@
 #pragma once
 #include "cli/Cli.h"
+#include <QtGlobal>
 
 namespace phonglab::cli {
 
@@ -9,6 +10,10 @@ namespace phonglab::cli {
 int runBench(int argc, char **argv);
 
 inline constexpr Subcommand kBenchSubcommand{
-    "bench", "measure speed against accuracy of every shading method and detail", runBench};
+    "bench",
+    // Translated where `phonglab --help` prints it (cli/Cli.cpp).
+    QT_TRANSLATE_NOOP("phonglab::cli::Cli",
+                      "measure speed against accuracy of every shading method and detail"),
+    runBench};
 
 } // namespace phonglab::cli

@@ -8,8 +8,8 @@
 #include "core/SceneJson.h"
 #include "render/QtImages.h"
 
-#include <QCoreApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QGuiApplication>
 #include <QJsonDocument>
 
@@ -45,17 +45,18 @@ const QString &synopsis()
 {
     static const QString text =
         CheckCommandWords::tr("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
-                       "[--shading NAME] [--size WxH]\n"
-                       "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
-                       "[--equation slide|guarded]\n"
-                       "                      [--json] [--diff OUT.png]");
+                              "[--shading NAME] [--size WxH]\n"
+                              "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
+                              "[--equation slide|guarded]\n"
+                              "                      [--json] [--diff OUT.png]");
     return text;
 }
 
 QString helpText()
 {
     return synopsis()
-        + CheckCommandWords::tr("\n\n"
+        + CheckCommandWords::tr(
+              "\n\n"
               "Renders SCENE.json with the shaders `render` would use, compares the image with the "
               "exact\n"
               "(double-precision) reference of the same scene, leaving out a band around "
@@ -118,7 +119,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
     parser.addOptions(
         {help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly});
-    parser.addPositionalArgument(QStringLiteral("scene"), CheckCommandWords::tr("Scene file (JSON)."));
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 CheckCommandWords::tr("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
     if (const std::optional<int> exit =
@@ -126,8 +128,9 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usage(positional.isEmpty() ? CheckCommandWords::tr("missing the scene file")
-                                          : CheckCommandWords::tr("exactly one scene file expected"));
+        return usage(positional.isEmpty()
+                         ? CheckCommandWords::tr("missing the scene file")
+                         : CheckCommandWords::tr("exactly one scene file expected"));
     CheckArgs args;
     args.scenePath = positional.first();
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
@@ -179,8 +182,8 @@ CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReferenc
         makeCheckReference(judgedScene(scene, drawing.lightCapacity), drawing.objectMeshes,
                            args.size.width(), args.size.height());
     if (!made) {
-        outcome.errors.push_back(
-            inputError(args.scenePath, CheckCommandWords::tr("no reference: %1").arg(made.error())));
+        outcome.errors.push_back(inputError(
+            args.scenePath, CheckCommandWords::tr("no reference: %1").arg(made.error())));
         return outcome;
     }
     *reference = std::move(*made);
@@ -224,7 +227,8 @@ int drawOnly(const CheckArgs &args, int argc, char **argv)
         if (const Result<> written = writePng(drawing.image, args.drawOnlyPath); !written)
             drawing.outcome.errors.push_back(inputError(args.drawOnlyPath, written.error()));
     }
-    printLine(QString::fromUtf8(QJsonDocument(drawingJson(drawing)).toJson(QJsonDocument::Compact)));
+    printLine(
+        QString::fromUtf8(QJsonDocument(drawingJson(drawing)).toJson(QJsonDocument::Compact)));
     return kExitOk;
 }
 

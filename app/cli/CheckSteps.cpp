@@ -114,10 +114,11 @@ void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReferen
     outcome->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
     if (!outcome->report.comparable()) {
         outcome->errors.push_back(inputError(
-            scenePath, CheckStepsWords::tr("nothing to compare: no surface away from silhouettes in "
-                                      "this view at %1x%2")
-                           .arg(image.width())
-                           .arg(image.height())));
+            scenePath,
+            CheckStepsWords::tr("nothing to compare: no surface away from silhouettes in "
+                                "this view at %1x%2")
+                .arg(image.width())
+                .arg(image.height())));
         outcome->verdict = CheckOutcome::Verdict::Error;
         return;
     }
@@ -131,20 +132,19 @@ namespace {
 
 QJsonObject diagnosticJson(const ShaderDiagnostic &d)
 {
-    return {{QStringLiteral("step"), int(d.step)},
-            {QStringLiteral("error"), d.isError()},
-            {QStringLiteral("file"), d.file},
-            {QStringLiteral("line"), d.line},
-            {QStringLiteral("column"), d.column},
-            {QStringLiteral("message"), d.message}};
+    return {{QStringLiteral("step"), int(d.step)}, {QStringLiteral("error"), d.isError()},
+            {QStringLiteral("file"), d.file},      {QStringLiteral("line"), d.line},
+            {QStringLiteral("column"), d.column},  {QStringLiteral("message"), d.message}};
 }
 
 ShaderDiagnostic diagnosticFromJson(const QJsonObject &o)
 {
     ShaderDiagnostic d;
-    d.step = BuildStep(std::clamp(o.value(QStringLiteral("step")).toInt(), 0, int(BuildStep::Link)));
-    d.severity = o.value(QStringLiteral("error")).toBool(true) ? ShaderDiagnostic::Severity::Error
-                                                                : ShaderDiagnostic::Severity::Warning;
+    d.step =
+        BuildStep(std::clamp(o.value(QStringLiteral("step")).toInt(), 0, int(BuildStep::Link)));
+    d.severity = o.value(QStringLiteral("error")).toBool(true)
+        ? ShaderDiagnostic::Severity::Error
+        : ShaderDiagnostic::Severity::Warning;
     d.file = o.value(QStringLiteral("file")).toString();
     d.line = o.value(QStringLiteral("line")).toInt();
     d.column = o.value(QStringLiteral("column")).toInt();
@@ -183,11 +183,11 @@ QJsonObject drawingJson(const CheckDrawing &drawing)
     QJsonArray variables;
     for (const VariableBinding &b : o.bindings.variables)
         if (b.meaning || b.isExplicit)
-            variables.append(QJsonObject{
-                {QStringLiteral("name"), b.variable.name},
-                {QStringLiteral("meaning"),
-                 b.meaning ? QJsonValue(bindingMeaningKey(*b.meaning)) : QJsonValue()},
-                {QStringLiteral("explicit"), b.isExplicit}});
+            variables.append(
+                QJsonObject{{QStringLiteral("name"), b.variable.name},
+                            {QStringLiteral("meaning"),
+                             b.meaning ? QJsonValue(bindingMeaningKey(*b.meaning)) : QJsonValue()},
+                            {QStringLiteral("explicit"), b.isExplicit}});
     return {{QStringLiteral("errors"), diagnosticsJson(o.errors)},
             {QStringLiteral("compiler"), diagnosticsJson(drawing.compilerMessages)},
             {QStringLiteral("stages"), stages},

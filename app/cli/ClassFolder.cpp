@@ -69,7 +69,8 @@ Submission readSubmission(const QFileInfo &folder)
     vertex.sort();
     fragment.sort();
     QStringList problems;
-    for (const auto &[files, stage] : {std::pair{vertex, "vertex"}, std::pair{fragment, "fragment"}})
+    for (const auto &[files, stage] :
+         {std::pair{vertex, "vertex"}, std::pair{fragment, "fragment"}})
         if (files.size() > 1) {
             QStringList names;
             for (const QString &f : files)
@@ -112,9 +113,9 @@ ClassFolder readClassFolder(const QString &path)
     std::sort(out.submissions.begin(), out.submissions.end(),
               [](const Submission &a, const Submission &b) { return a.name < b.name; });
     if (out.submissions.empty())
-        out.error =
-            ClassFolderWords::tr("%1: no submission folders in it (one subfolder per student expected)")
-                .arg(path);
+        out.error = ClassFolderWords::tr(
+                        "%1: no submission folders in it (one subfolder per student expected)")
+                        .arg(path);
     return out;
 }
 

@@ -21,18 +21,28 @@ struct CliWords {
 namespace {
 
 constexpr Subcommand kSubcommands[] = {
-    {"render", "render a scene offscreen into a PNG", runRender},
+    {"render", QT_TRANSLATE_NOOP("phonglab::cli::Cli", "render a scene offscreen into a PNG"),
+     runRender},
     {"check",
-     "judge a shader against the exact image and name the mistake that explains a wrong one",
+     QT_TRANSLATE_NOOP(
+         "phonglab::cli::Cli",
+         "judge a shader against the exact image and name the mistake that explains a wrong one"),
      runCheck},
-    {"grade", "check a class folder of submissions, each in a process of its own; a report",
+    {"grade",
+     QT_TRANSLATE_NOOP(
+         "phonglab::cli::Cli",
+         "check a class folder of submissions, each in a process of its own; a report"),
      runGrade},
-    {"mesh-info", "load a mesh and report its size, normals, bounds and warnings", runMeshInfo},
+    {"mesh-info",
+     QT_TRANSLATE_NOOP("phonglab::cli::Cli",
+                       "load a mesh and report its size, normals, bounds and warnings"),
+     runMeshInfo},
 };
 
 void printHelp(std::span<const Subcommand> more)
 {
-    QString text = CliWords::tr("usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
+    QString text = CliWords::tr(
+        "usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
         "                                        (.obj .ply .off .stl .om; the default scene "
         "when none given)\n"
         "       phonglab SCENE.json --vertex FILE --fragment FILE\n"
@@ -45,7 +55,9 @@ void printHelp(std::span<const Subcommand> more)
         for (const Subcommand &c : commands)
             text += QStringLiteral("  %1  %2\n")
                         .arg(QString::fromLatin1(c.name), -11)
-                        .arg(QString::fromLatin1(c.summary));
+                        .arg(QCoreApplication::translate("phonglab::cli::Cli", c.summary));
+    text += CliWords::tr("\n--lang en|de on any command or the window chooses the language of "
+                         "that run (else the locale's: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).");
     text += CliWords::tr("\n'phonglab <command> --help' describes a command's options.");
     printLine(text);
 }
@@ -59,6 +71,7 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
     const QString first = QString::fromLocal8Bit(argv[1]);
     if (first == QLatin1String("--help") || first == QLatin1String("-h")
         || first == QLatin1String("help")) {
+        const QCoreApplication app(argc, argv); // its start installs the run's language
         printHelp(more);
         return kExitOk;
     }

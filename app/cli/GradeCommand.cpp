@@ -44,7 +44,8 @@ struct GradeArgs {
 
 const QString &synopsis()
 {
-    static const QString text = GradeCommandWords::tr("usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
+    static const QString text = GradeCommandWords::tr(
+        "usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
         "                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]\n"
         "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
         "[--equation slide|guarded]");
@@ -54,11 +55,13 @@ const QString &synopsis()
 QString helpText()
 {
     return synopsis()
-        + GradeCommandWords::tr("\n\n"
+        + GradeCommandWords::tr(
+              "\n\n"
               "Checks every submission in SUBMISSIONS against every scene, as `phonglab check` "
               "does,\n"
               "and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one\n"
-              "submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,\n"
+              "submission: its vertex and/or fragment shader, under any file names (.vert .vs "
+              ".vsh,\n"
               ".frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` "
               "takes.\n"
               "A stage left out is the scene's shading method's shipped one. Each check runs in a\n"
@@ -115,7 +118,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (positional.size() != 1)
         return usage(positional.isEmpty() ? GradeCommandWords::tr("missing the submissions folder")
                                           : GradeCommandWords::tr("exactly one submissions folder "
-                                                           "expected"));
+                                                                  "expected"));
     GradeArgs args;
     GradeSettings &settings = args.settings;
     settings.classFolder = positional.first();
@@ -155,8 +158,8 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
         return usage(GradeCommandWords::tr("--timeout: expected seconds in (0, 86400], got '%1'")
                          .arg(parser.value(timeout)));
     args.limits.wallClockMs = int(std::lround(seconds * 1000));
-    const qint64 mib = parser.isSet(memory) ? parser.value(memory).toLongLong(&ok)
-                                            : qint64(kDefaultMemoryMiB);
+    const qint64 mib =
+        parser.isSet(memory) ? parser.value(memory).toLongLong(&ok) : qint64(kDefaultMemoryMiB);
     if (!ok || mib < 64 || mib > 1024 * 1024)
         return usage(QStringLiteral("--memory: expected 64..1048576 MiB, got '%1'")
                          .arg(parser.value(memory)));
@@ -208,7 +211,8 @@ Result<> prepareOutFolder(const QString &folder)
         return fail(GradeCommandWords::tr("%1: cannot make the folder").arg(folder));
     QTemporaryFile probe(folder + QStringLiteral("/.write-test-XXXXXX"));
     if (!probe.open())
-        return fail(GradeCommandWords::tr("%1: cannot write into it: %2").arg(folder, probe.errorString()));
+        return fail(
+            GradeCommandWords::tr("%1: cannot write into it: %2").arg(folder, probe.errorString()));
     return {};
 }
 
@@ -249,7 +253,7 @@ int grade(const GradeArgs &args, int argc, char **argv)
     const QString executable = importExecutable();
     if (executable.isEmpty()) {
         printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "
-                                  "(set PHONGLAB_EXE)"));
+                                         "(set PHONGLAB_EXE)"));
         return kExitFailure;
     }
     GradeRun run(results, executable, args.jobs, args.limits);

@@ -70,8 +70,11 @@ void dropImage(GradeRow &row, const QString &outFolder)
 } // namespace
 
 GradeRun::GradeRun(GradeResults &results, QString executable, int jobs, GradedChildLimits limits)
-    : m_results(results), m_executable(std::move(executable)), m_jobs(std::max(1, jobs)),
-      m_limits(limits), m_tty(isatty(fileno(stderr)) != 0)
+    : m_results(results)
+    , m_executable(std::move(executable))
+    , m_jobs(std::max(1, jobs))
+    , m_limits(limits)
+    , m_tty(isatty(fileno(stderr)) != 0)
 {
 }
 
@@ -151,8 +154,8 @@ QStringList GradeRun::childArguments(const GradeRow &row) const
         args << QStringLiteral("--fragment") << s.fragment;
     for (const auto &[name, meaning] : m_results.settings.bindings)
         args << QStringLiteral("--bind")
-             << QStringLiteral("%1=%2").arg(name, meaning ? bindingMeaningKey(*meaning)
-                                                          : kUnboundWord);
+             << QStringLiteral("%1=%2").arg(name,
+                                            meaning ? bindingMeaningKey(*meaning) : kUnboundWord);
     return args;
 }
 
@@ -173,8 +176,8 @@ void GradeRun::run()
             } else {
                 const QString folder = submissionFolder(m_results, int(s));
                 QDir(m_results.settings.outFolder).mkpath(folder);
-                row.yoursImage = QStringLiteral("%1/%2-yours.png")
-                                     .arg(folder, m_results.scenes[c].slug);
+                row.yoursImage =
+                    QStringLiteral("%1/%2-yours.png").arg(folder, m_results.scenes[c].slug);
                 m_waiting.push_back({int(rows.size())});
             }
             rows.push_back(std::move(row));
@@ -193,12 +196,13 @@ void GradeRun::startNext()
     const Job job = m_waiting.front();
     m_waiting.pop_front();
     ++m_running;
-    auto *child = new GradedChild(m_executable, childArguments(m_results.rows[std::size_t(job.row)]),
-                                  m_limits, this);
-    connect(child, &GradedChild::ended, this, [this, child, row = job.row](const GradedChildEnd &end) {
-        child->deleteLater();
-        onEnded(row, end);
-    });
+    auto *child = new GradedChild(
+        m_executable, childArguments(m_results.rows[std::size_t(job.row)]), m_limits, this);
+    connect(child, &GradedChild::ended, this,
+            [this, child, row = job.row](const GradedChildEnd &end) {
+                child->deleteLater();
+                onEnded(row, end);
+            });
     child->start();
     showProgress();
 }
@@ -262,8 +266,8 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
                                                                      : GradeVerdict::Fail;
     const PhongEquation equation = row.outcome.report.equation;
     row.exactImage = exactImageFor(row.scene, enabledLights(judged), equation, *reference);
-    const QString heatmap = QString(row.yoursImage).replace(QLatin1String("-yours.png"),
-                                                            QLatin1String("-heatmap.png"));
+    const QString heatmap =
+        QString(row.yoursImage).replace(QLatin1String("-yours.png"), QLatin1String("-heatmap.png"));
     if (writePng(toQImage(checkHeatmap(toRgbImage(image), *reference, equation)), out + heatmap))
         row.heatmapImage = heatmap;
 }

@@ -56,16 +56,21 @@ QString lastLine(const QByteArray &text)
 
 GradedChild::GradedChild(const QString &executable, const QStringList &arguments,
                          const GradedChildLimits &limits, QObject *parent)
-    : QObject(parent), m_executable(executable), m_arguments(arguments), m_limits(limits)
+    : QObject(parent)
+    , m_executable(executable)
+    , m_arguments(arguments)
+    , m_limits(limits)
 {
     m_poll.setInterval(kPollMs);
     connect(&m_poll, &QTimer::timeout, this, &GradedChild::poll);
     connect(&m_process, &QProcess::finished, this, &GradedChild::onFinished);
     connect(&m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart)
-            finish({GradedChildEnd::Kind::Crashed, {},
-                    GradedChildWords::tr("the check could not start: %1").arg(m_process.errorString()),
-                    0.0});
+            finish(
+                {GradedChildEnd::Kind::Crashed,
+                 {},
+                 GradedChildWords::tr("the check could not start: %1").arg(m_process.errorString()),
+                 0.0});
     });
 }
 
@@ -96,14 +101,17 @@ void GradedChild::poll()
     const double seconds = m_clock.elapsed() / 1000.0;
     if (m_clock.elapsed() > m_limits.wallClockMs) {
         m_process.kill();
-        finish({GradedChildEnd::Kind::TimedOut, {},
-                GradedChildWords::tr("ran past the %1 s limit and was stopped (a loop that runs too "
-                               "long, or a frame the GPU cannot finish)")
-                    .arg(m_limits.wallClockMs / 1000.0),
-                seconds});
+        finish(
+            {GradedChildEnd::Kind::TimedOut,
+             {},
+             GradedChildWords::tr("ran past the %1 s limit and was stopped (a loop that runs too "
+                                  "long, or a frame the GPU cannot finish)")
+                 .arg(m_limits.wallClockMs / 1000.0),
+             seconds});
     } else if (const qint64 bytes = residentBytes(); bytes > m_limits.memoryBytes) {
         m_process.kill();
-        finish({GradedChildEnd::Kind::Crashed, {},
+        finish({GradedChildEnd::Kind::Crashed,
+                {},
                 GradedChildWords::tr("used more than %1 MiB of memory and was stopped")
                     .arg(m_limits.memoryBytes / (1024 * 1024)),
                 seconds});
@@ -123,14 +131,16 @@ void GradedChild::onFinished(int exitCode, QProcess::ExitStatus status)
         return;
     }
     if (exitCode == kGradedChildOutOfMemory) {
-        finish({GradedChildEnd::Kind::Crashed, {},
-                GradedChildWords::tr("the check ran out of memory"), seconds});
+        finish({GradedChildEnd::Kind::Crashed,
+                {},
+                GradedChildWords::tr("the check ran out of memory"),
+                seconds});
         return;
     }
     const QJsonObject answer = answerIn(m_process.readAllStandardOutput());
     if (answer.isEmpty()) {
-        QString message = GradedChildWords::tr("the check exited with status %1 without an answer")
-                              .arg(exitCode);
+        QString message =
+            GradedChildWords::tr("the check exited with status %1 without an answer").arg(exitCode);
         if (const QString said = lastLine(m_process.readAllStandardError()); !said.isEmpty())
             message += GradedChildWords::tr("; it said: ") + said;
         finish({GradedChildEnd::Kind::Crashed, {}, message, seconds});

@@ -3,8 +3,8 @@
 #include "CliCommon.h"
 #include "mesh/MeshLoader.h"
 
-#include <QCoreApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -34,16 +34,18 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   MeshInfoCommandWords::tr("Show help."));
     const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
-    const QCommandLineOption normals(QStringLiteral("normals"), MeshInfoCommandWords::tr("Normal method."),
+    const QCommandLineOption normals(QStringLiteral("normals"),
+                                     MeshInfoCommandWords::tr("Normal method."),
                                      QStringLiteral("method"));
-    const QCommandLineOption crease(QStringLiteral("crease"), MeshInfoCommandWords::tr("Crease angle."),
-                                    QStringLiteral("deg"));
+    const QCommandLineOption crease(
+        QStringLiteral("crease"), MeshInfoCommandWords::tr("Crease angle."), QStringLiteral("deg"));
     parser.addOptions({help, json, normals, crease});
 
     const QString synopsis = QString::fromLatin1(kUsage);
     const QString helpText =
         synopsis
-        + MeshInfoCommandWords::tr("\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its "
+        + MeshInfoCommandWords::tr(
+            "\n\nLoads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its "
             "vertices,\n"
             "faces, where the normals came from, bounds, split vertices, warnings and load "
             "time.\n\n"
@@ -76,8 +78,9 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
         bool ok = false;
         const double degrees = parser.value(crease).toDouble(&ok);
         if (!ok || !(degrees >= 0.0 && degrees <= 180.0))
-            return usage(MeshInfoCommandWords::tr("--crease: expected degrees in [0, 180], got '%1'")
-                             .arg(parser.value(crease)));
+            return usage(
+                MeshInfoCommandWords::tr("--crease: expected degrees in [0, 180], got '%1'")
+                    .arg(parser.value(crease)));
         args.normals.creaseAngleDeg = degrees;
     }
     return args;
@@ -146,7 +149,8 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
     printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
     printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
-    const QString normals = s.normalsFromFile ? MeshInfoCommandWords::tr("from the file, per face corner")
+    const QString normals = s.normalsFromFile
+        ? MeshInfoCommandWords::tr("from the file, per face corner")
         : path.startsWith(QLatin1String("builtin:"))
         ? QStringLiteral("analytic")
         : MeshInfoCommandWords::tr("computed (%1)").arg(methodDescription(s));
@@ -157,9 +161,10 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
     printLine(QStringLiteral("surface:         %1")
                   .arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
-    printLine(MeshInfoCommandWords::tr("load time:       %1 ms%2")
-                  .arg(s.loadMs, 0, 'f', 1)
-                  .arg(s.fromCache ? MeshInfoCommandWords::tr(" (from the mesh cache)") : QString()));
+    printLine(
+        MeshInfoCommandWords::tr("load time:       %1 ms%2")
+            .arg(s.loadMs, 0, 'f', 1)
+            .arg(s.fromCache ? MeshInfoCommandWords::tr(" (from the mesh cache)") : QString()));
     printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
     for (const QString &w : r.warnings)
         printLine(QStringLiteral("  - ") + w);

@@ -7,8 +7,8 @@
 #include "core/ShadingMethod.h"
 #include "render/OffscreenRenderer.h"
 
-#include <QCoreApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QGuiApplication>
 #include <QSurfaceFormat>
 
@@ -43,32 +43,37 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   RenderCommandWords::tr("Show help."));
     parser.addOption(help);
-    parser.addPositionalArgument(QStringLiteral("scene"), RenderCommandWords::tr("Scene file (JSON)."));
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 RenderCommandWords::tr("Scene file (JSON)."));
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
                                     QStringLiteral("Output PNG file."), QStringLiteral("file"));
     const QCommandLineOption size(QStringLiteral("size"),
                                   RenderCommandWords::tr("Image size, default 800x600."),
                                   QStringLiteral("WxH"));
-    const QCommandLineOption vertex(QStringLiteral("vertex"),
-                                    RenderCommandWords::tr("Vertex shader to use instead of the scene's."),
-                                    QStringLiteral("file"));
+    const QCommandLineOption vertex(
+        QStringLiteral("vertex"),
+        RenderCommandWords::tr("Vertex shader to use instead of the scene's."),
+        QStringLiteral("file"));
     const QCommandLineOption fragment(
         QStringLiteral("fragment"),
-        RenderCommandWords::tr("Fragment shader to use instead of the scene's."), QStringLiteral("file"));
-    const QCommandLineOption shading(QStringLiteral("shading"),
-                                     RenderCommandWords::tr("Shading method instead of the scene's."),
-                                     QStringLiteral("name"));
-    const QCommandLineOption bind(QStringLiteral("bind"),
-                                  RenderCommandWords::tr("What a uniform or input of the shader holds."),
-                                  QStringLiteral("NAME=MEANING"));
+        RenderCommandWords::tr("Fragment shader to use instead of the scene's."),
+        QStringLiteral("file"));
+    const QCommandLineOption shading(
+        QStringLiteral("shading"), RenderCommandWords::tr("Shading method instead of the scene's."),
+        QStringLiteral("name"));
+    const QCommandLineOption bind(
+        QStringLiteral("bind"),
+        RenderCommandWords::tr("What a uniform or input of the shader holds."),
+        QStringLiteral("NAME=MEANING"));
     parser.addOptions({output, size, vertex, fragment, shading, bind});
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
-    const QString synopsis =
-        RenderCommandWords::tr("usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
-                       "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]");
+    const QString synopsis = RenderCommandWords::tr(
+        "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
+        "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]");
     const QString helpText = synopsis
-        + RenderCommandWords::tr("\n\n"
+        + RenderCommandWords::tr(
+              "\n\n"
               "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB "
               "PNG.\n\n"
               "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
@@ -88,8 +93,9 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usage(positional.isEmpty() ? RenderCommandWords::tr("missing the scene file")
-                                          : RenderCommandWords::tr("exactly one scene file expected"));
+        return usage(positional.isEmpty()
+                         ? RenderCommandWords::tr("missing the scene file")
+                         : RenderCommandWords::tr("exactly one scene file expected"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("missing -o OUT.png"));
 

@@ -148,17 +148,19 @@ std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene 
             || sceneGivesValue(scene, b->variable.name) || !allZero(snapshot, *b))
             continue;
         QString message = SceneStagesWords::tr("uniform %1 (%2) is bound to nothing, so the shader "
-                                         "reads zero")
+                                               "reads zero")
                               .arg(b->variable.name, glslTypeSpelling(b->variable.type));
         if (const auto likely = likelyMeaning(b->variable))
-            message += SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
-                                      "scene)")
-                           .arg(bindingMeaningDescription(*likely), b->variable.name,
-                                bindingMeaningKey(*likely));
+            message +=
+                SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
+                                     "scene)")
+                    .arg(bindingMeaningDescription(*likely), b->variable.name,
+                         bindingMeaningKey(*likely));
         else
-            message += SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give "
-                                      "it a value in the scene's \"uniforms\"")
-                           .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
+            message +=
+                SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give "
+                                     "it a value in the scene's \"uniforms\"")
+                    .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
         out.push_back({b->variable.name, message});
     }
     return out;
@@ -192,11 +194,12 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
     for (PointLight &l : out.lights)
         if (l.enabled && kept++ >= *capacity)
             l.enabled = false;
-    *note = SceneStagesWords::tr("the shader takes %1 light%2 (its light uniforms have room for no "
-                           "more) and the scene has %3 enabled: judged with the first %1 alone")
-                .arg(*capacity)
-                .arg(*capacity == 1 ? QString() : QStringLiteral("s"))
-                .arg(enabled);
+    *note =
+        SceneStagesWords::tr("the shader takes %1 light%2 (its light uniforms have room for no "
+                             "more) and the scene has %3 enabled: judged with the first %1 alone")
+            .arg(*capacity)
+            .arg(*capacity == 1 ? QString() : QStringLiteral("s"))
+            .arg(enabled);
     return out;
 }
 

@@ -139,11 +139,12 @@ Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double as
         const SceneObject &object = scene.objects[i];
         const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
         if (!surface)
-            return fail(AnalyticRaycasterWords::tr("Object %1: mesh \"%2\" has no analytic surface "
-                                       "(the reference ray caster knows builtin:sphere, "
-                                       "builtin:torus and builtin:cube)")
-                            .arg(i)
-                            .arg(object.mesh));
+            return fail(
+                AnalyticRaycasterWords::tr("Object %1: mesh \"%2\" has no analytic surface "
+                                           "(the reference ray caster knows builtin:sphere, "
+                                           "builtin:torus and builtin:cube)")
+                    .arg(i)
+                    .arg(object.mesh));
         const ObjectMatrices matrices =
             ObjectMatrices::make(object.transform.matrix(), view, projection);
         // A zero scale flattens the object to something with no defined
@@ -360,7 +361,9 @@ Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
                                     const QHash<QString, QString> &standIns)
 {
     if (width <= 0 || height <= 0)
-        return fail(AnalyticRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(AnalyticRaycasterWords::tr("Invalid reference image size %1x%2")
+                        .arg(width)
+                        .arg(height));
     const Result<std::vector<PreparedObject>> objects =
         prepareObjects(scene, double(width) / double(height), standIns);
     if (!objects)

@@ -103,7 +103,8 @@ public:
         }
         const QJsonValue list = root.value(QStringLiteral("keyframes"));
         if (!list.isArray() || list.toArray().size() < 2)
-            return fail(CameraPathWords::tr("keyframes: expected an array of at least 2 keyframes"));
+            return fail(
+                CameraPathWords::tr("keyframes: expected an array of at least 2 keyframes"));
         std::vector<Camera> keys;
         Camera previous = start;
         const QJsonArray array = list.toArray();
@@ -121,12 +122,14 @@ public:
                 return fail(m_error);
             if (const QJsonValue fov = key.value(QStringLiteral("fov_deg")); !fov.isUndefined()) {
                 if (!fov.isDouble() || !(fov.toDouble() > 0.0 && fov.toDouble() < 180.0))
-                    return fail(path + CameraPathWords::tr(".fov_deg: expected degrees in (0, 180)"));
+                    return fail(path
+                                + CameraPathWords::tr(".fov_deg: expected degrees in (0, 180)"));
                 c.fovDeg = fov.toDouble();
             }
             if (!viewable(c))
-                return fail(path
-                            + CameraPathWords::tr(": eye and target coincide, or up is along the view"));
+                return fail(
+                    path
+                    + CameraPathWords::tr(": eye and target coincide, or up is along the view"));
             keys.push_back(c);
             previous = c;
         }
@@ -140,7 +143,7 @@ public:
             // and target swapping places, up turning over).
             if (!viewable(out.cameras.back()))
                 return fail(CameraPathWords::tr("frame %1, between keyframes[%2] and [%3]: eye and "
-                                           "target coincide, or up is along the view")
+                                                "target coincide, or up is along the view")
                                 .arg(i)
                                 .arg(k)
                                 .arg(k + 1));
@@ -184,7 +187,8 @@ Result<CameraPath> loadCameraPath(const QString &file, const Camera &start)
 {
     QFile in(file);
     if (!in.open(QIODevice::ReadOnly))
-        return fail(CameraPathWords::tr("%1: cannot read camera path (%2)").arg(file, in.errorString()));
+        return fail(
+            CameraPathWords::tr("%1: cannot read camera path (%2)").arg(file, in.errorString()));
     // A keyframe file is a few lines; refuse anything huge before reading it.
     if (in.size() > 16 * 1024 * 1024)
         return fail(CameraPathWords::tr("%1: too large for a camera path").arg(file));

@@ -57,10 +57,12 @@ std::optional<QString> depthPrecisionWarning(const DepthRange &range)
     const double resolved =
         100.0 * range.ratio() / double(1 << 24); // percent of the distance, at far
     const QString effect = resolved < 50.0
-        ? DepthRangeWords::tr("surfaces closer than about %1 % of their distance may show through each other")
+        ? DepthRangeWords::tr(
+              "surfaces closer than about %1 % of their distance may show through each other")
               .arg(resolved, 0, 'g', 2)
         : DepthRangeWords::tr("the depth buffer cannot tell surfaces apart");
-    return DepthRangeWords::tr("camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
+    return DepthRangeWords::tr(
+               "camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
                "object's bounds); %4: raise near")
         .arg(range.nearPlane, 0, 'g', 3)
         .arg(range.farPlane, 0, 'g', 3)

@@ -75,15 +75,16 @@ Result<> prepareObjects(const Scene &scene,
         const MeshData *mesh = objectMeshes[i].get();
         if (!mesh) {
             if (!builtinSurface(scene.objects[i].mesh))
-                return fail(
-                    MeshRaycasterWords::tr("Object %1: mesh \"%2\" was given no triangle mesh and has no "
-                                   "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
-                        .arg(i)
-                        .arg(scene.objects[i].mesh));
+                return fail(MeshRaycasterWords::tr(
+                                "Object %1: mesh \"%2\" was given no triangle mesh and has no "
+                                "analytic surface (builtin:sphere, builtin:torus, builtin:cube)")
+                                .arg(i)
+                                .arg(scene.objects[i].mesh));
         } else if (!mesh->isValid()) {
-            return fail(MeshRaycasterWords::tr("Object %1: the triangle mesh for \"%2\" is not valid")
-                            .arg(i)
-                            .arg(scene.objects[i].mesh));
+            return fail(
+                MeshRaycasterWords::tr("Object %1: the triangle mesh for \"%2\" is not valid")
+                    .arg(i)
+                    .arg(scene.objects[i].mesh));
         } else if (bvhs.emplace(mesh, nullptr).second) {
             trianglesToBuild += mesh->triangleCount();
         }
@@ -250,7 +251,8 @@ Result<SceneHits> castSceneHits(const Scene &scene,
                                 int width, int height, const std::function<bool(double)> &progress)
 {
     if (width <= 0 || height <= 0)
-        return fail(MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(
+            MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
     std::vector<PreparedObject> objects;
     if (const Result<> prepared =
             prepareObjects(scene, objectMeshes, double(width) / double(height), objects, progress);
@@ -300,7 +302,8 @@ Result<std::unique_ptr<SceneDepthCaster>> SceneDepthCaster::create(
     int height)
 {
     if (width <= 0 || height <= 0)
-        return fail(MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
+        return fail(
+            MeshRaycasterWords::tr("Invalid reference image size %1x%2").arg(width).arg(height));
     std::unique_ptr<SceneDepthCaster> caster(new SceneDepthCaster);
     caster->m_objects = std::make_unique<Objects>();
     if (const Result<> prepared = prepareObjects(

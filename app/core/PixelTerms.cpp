@@ -27,8 +27,7 @@ QString vec(const glm::dvec3 &v)
 } // namespace
 
 std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
-                                     ReferenceShading shading, int x, int y,
-                                     PhongEquation equation)
+                                     ReferenceShading shading, int x, int y, PhongEquation equation)
 {
     if (x < 0 || y < 0 || x >= hits.width || y >= hits.height)
         return std::nullopt;
@@ -73,8 +72,7 @@ std::optional<PixelTerms> pixelTerms(const SceneHits &hits, const Scene &scene,
                                      : glm::dvec3(0.0); // none for a light straight behind
         t.NdotH = glm::dot(out.N, t.H);
         t.attenuation = attenuationFactor(cam.attenuation, t.distance);
-        const bool slide =
-            shading == ReferenceShading::Phong && equation == PhongEquation::Slide;
+        const bool slide = shading == ReferenceShading::Phong && equation == PhongEquation::Slide;
         if (t.NdotL > 0.0 || slide) {
             const double factor = shading == ReferenceShading::BlinnPhong
                 ? std::pow(std::max(0.0, t.NdotH), kBlinnExponentFactor * material.shininess)
@@ -92,12 +90,15 @@ QString PixelTerms::toText() const
 {
     QStringList lines;
     const QString equation = shading == ReferenceShading::BlinnPhong ? QStringLiteral("Blinn-Phong")
-        : shading == ReferenceShading::Normals                       ? PixelTermsWords::tr("normals view")
+        : shading == ReferenceShading::Normals ? PixelTermsWords::tr("normals view")
         : this->equation == PhongEquation::Slide
         ? PixelTermsWords::tr("Phong, the slide's equation (a highlight even where N·L <= 0)")
         : QStringLiteral("Phong");
-    lines
-        << PixelTermsWords::tr("pixel (%1, %2), object %3, %4").arg(x).arg(y).arg(object).arg(equation);
+    lines << PixelTermsWords::tr("pixel (%1, %2), object %3, %4")
+                 .arg(x)
+                 .arg(y)
+                 .arg(object)
+                 .arg(equation);
     lines << QStringLiteral("P world  %1").arg(vec(positionWorld));
     lines << QStringLiteral("P camera %1").arg(vec(positionCamera));
     lines << QStringLiteral("N        %1").arg(vec(N));

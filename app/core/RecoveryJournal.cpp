@@ -117,11 +117,13 @@ Result<> RecoveryJournal::ensureSession()
     if (m_lock)
         return {};
     if (!QDir().mkpath(m_directory))
-        return fail(RecoveryJournalWords::tr("%1: cannot create the recovery folder").arg(m_directory));
+        return fail(
+            RecoveryJournalWords::tr("%1: cannot create the recovery folder").arg(m_directory));
     auto lock = std::make_unique<QLockFile>(filePath(m_sessionId, kLockSuffix));
     lock->setStaleLockTime(0); // only a dead process makes it stale, never age
     if (!lock->tryLock(0))
-        return fail(RecoveryJournalWords::tr("%1: cannot lock the recovery journal").arg(lock->fileName()));
+        return fail(
+            RecoveryJournalWords::tr("%1: cannot lock the recovery journal").arg(lock->fileName()));
     m_lock = std::move(lock);
     return {};
 }
@@ -158,11 +160,13 @@ Result<RecoveryRecord> RecoveryJournal::readFile(const QString &path)
     if (parseError.error != QJsonParseError::NoError
         || json.value("format").toString() != QLatin1String(kFormat)
         || json.value("version").toInt() != kVersion)
-        return fail(RecoveryJournalWords::tr("%1: not a complete PhongLab recovery journal").arg(path));
+        return fail(
+            RecoveryJournalWords::tr("%1: not a complete PhongLab recovery journal").arg(path));
     const auto vertex = bufferFromJson(json.value("vertex"));
     const auto fragment = bufferFromJson(json.value("fragment"));
     if (!vertex || !fragment)
-        return fail(RecoveryJournalWords::tr("%1: a shader buffer is missing from the journal").arg(path));
+        return fail(
+            RecoveryJournalWords::tr("%1: a shader buffer is missing from the journal").arg(path));
     RecoveryRecord record;
     record.vertex = *vertex;
     record.fragment = *fragment;

@@ -79,7 +79,8 @@ Result<std::vector<std::uint8_t>> awayFromSilhouettes(
     if (!ambiguous)
         return fail(ambiguous.error());
     if (ambiguous->size() != edges.size())
-        return fail(ReferenceEdgesWords::tr("The reference is %1x%2 but the edges were cast at another size")
+        return fail(ReferenceEdgesWords::tr(
+                        "The reference is %1x%2 but the edges were cast at another size")
                         .arg(reference.width)
                         .arg(reference.height));
     for (std::size_t i = 0; i < edges.size(); ++i)

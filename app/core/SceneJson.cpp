@@ -411,7 +411,8 @@ bool SceneReader::readShaderFiles(const QJsonValue &value, const QString &path, 
                         SceneWords::tr("expected a string (got %1)").arg(describeType(file)));
         if (file.toString().isEmpty())
             return fail(filePath,
-                        SceneWords::tr("must not be empty (give a shader file path, or leave the key out)"));
+                        SceneWords::tr(
+                            "must not be empty (give a shader file path, or leave the key out)"));
         files[i] = file.toString();
     }
     out.vertexShader = files[0];

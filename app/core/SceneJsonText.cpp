@@ -152,8 +152,8 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
     };
     const auto readMethod = [&](const QJsonValue &v, const QString &where) -> Result<> {
         if (!v.isString())
-            return located(where,
-                           SceneJsonTextWords::tr("expected a string (got %1)").arg(describeType(v)));
+            return located(
+                where, SceneJsonTextWords::tr("expected a string (got %1)").arg(describeType(v)));
         const auto method = normalMethodFromName(v.toString());
         if (!method)
             return located(where,
@@ -168,13 +168,14 @@ Result<NormalOptions> readNormalOptions(const QJsonValue &value, const QString &
         return out;
     }
     if (!value.isObject())
-        return located(
-            path,
-            SceneJsonTextWords::tr("expected a string or an object (got %1)").arg(describeType(value)));
+        return located(path,
+                       SceneJsonTextWords::tr("expected a string or an object (got %1)")
+                           .arg(describeType(value)));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it)
         if (it.key() != QLatin1String("method") && it.key() != QLatin1String("crease_deg"))
-            return located(path + QLatin1Char('.') + it.key(), SceneJsonTextWords::tr("unknown key"));
+            return located(path + QLatin1Char('.') + it.key(),
+                           SceneJsonTextWords::tr("unknown key"));
     if (object.contains(QLatin1String("method")))
         if (const Result<> method =
                 readMethod(object.value(QLatin1String("method")), path + QStringLiteral(".method"));
@@ -213,8 +214,9 @@ namespace {
 Result<double> readUniformNumber(const QJsonValue &v, const QString &where)
 {
     if (!v.isDouble() || overflowLiteral(v) || !std::isfinite(v.toDouble()))
-        return fail(where
-                    + SceneJsonTextWords::tr(": expected a finite number (got %1)").arg(describeType(v)));
+        return fail(
+            where
+            + SceneJsonTextWords::tr(": expected a finite number (got %1)").arg(describeType(v)));
     return v.toDouble();
 }
 
@@ -238,9 +240,9 @@ Result<UserUniforms> readUserUniforms(const QJsonValue &value, const QString &pa
         if (it.value().isArray()) {
             const QJsonArray array = it.value().toArray();
             if (array.isEmpty() || array.size() > 16)
-                return fail(
-                    where
-                    + SceneJsonTextWords::tr(": expected 1 to 16 numbers (got %1)").arg(array.size()));
+                return fail(where
+                            + SceneJsonTextWords::tr(": expected 1 to 16 numbers (got %1)")
+                                  .arg(array.size()));
             for (qsizetype i = 0; i < array.size(); ++i) {
                 const Result<double> v =
                     readUniformNumber(array.at(i), where + QStringLiteral("[%1]").arg(i));
@@ -284,10 +286,10 @@ Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &pa
         }
         const std::optional<BindingMeaning> meaning = bindingMeaningFromKey(key);
         if (!meaning)
-            return fail(where
-                        + SceneJsonTextWords::tr(": unknown meaning \"%1\" (known: %2, %3)")
-                              .arg(key, bindingMeaningKeys().join(QStringLiteral(", ")),
-                                   kUnboundWord));
+            return fail(
+                where
+                + SceneJsonTextWords::tr(": unknown meaning \"%1\" (known: %2, %3)")
+                      .arg(key, bindingMeaningKeys().join(QStringLiteral(", ")), kUnboundWord));
         read[it.key()] = *meaning;
     }
     return read;

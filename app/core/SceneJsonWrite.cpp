@@ -145,19 +145,20 @@ Result<> saveSceneFile(const Scene &scene, const QString &path)
     // that no longer opens; check it by reading back what would be written.
     const SceneLoadResult check = parseScene(json);
     if (!check.ok())
-        return fail(SceneJsonWriteWords::tr("refusing to save an invalid scene: %1").arg(check.error));
+        return fail(
+            SceneJsonWriteWords::tr("refusing to save an invalid scene: %1").arg(check.error));
 
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(
-            SceneJsonWriteWords::tr("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+        return fail(SceneJsonWriteWords::tr("%1: cannot write scene file (%2)")
+                        .arg(path, file.errorString()));
     if (file.write(json) != json.size()) {
         file.cancelWriting();
         return fail(SceneJsonWriteWords::tr("%1: write failed (%2)").arg(path, file.errorString()));
     }
     if (!file.commit())
-        return fail(
-            SceneJsonWriteWords::tr("%1: cannot write scene file (%2)").arg(path, file.errorString()));
+        return fail(SceneJsonWriteWords::tr("%1: cannot write scene file (%2)")
+                        .arg(path, file.errorString()));
     return {};
 }
 

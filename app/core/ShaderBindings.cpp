@@ -114,8 +114,8 @@ const std::vector<Aliases> &aliasTable()
           "normalobjecttoworld"}},
         {M::Eye,
          {"eye", "eyeposition", "eyepos", "camera", "cameraposition", "camerapos", "campos",
-          "camposition", "cam", "viewposition", "viewpos", "viewer", "viewerposition",
-          "viewerpos", "eyepoint"}},
+          "camposition", "cam", "viewposition", "viewpos", "viewer", "viewerposition", "viewerpos",
+          "eyepoint"}},
         {M::LightPosition,
          {"light", "lightposition", "lightpos", "lightpositions", "lights", "lightsposition",
           "lightspositions", "lightlocation", "lp", "lightsource", "lightsrc", "pointlight",
@@ -125,20 +125,20 @@ const std::vector<Aliases> &aliasTable()
           "countlights", "lightnum", "numlight", "nlight", "activelights", "lightsused", "m",
           "numberlights", "lightsnumber", "lightsnum"}},
         {M::LightDiffuse,
-         {"id", "diffuseintensity", "lightdiffuse", "diffuselight", "diffusecolor",
-          "diffusecolour", "lightdiffusecolor", "lightdiffusecolour", "lightdiffuseintensity",
-          "diffuselightcolor", "diffuselightcolour", "diffuselightintensity", "idiffuse",
-          "intensitydiffuse", "lightsdiffuse"}},
+         {"id", "diffuseintensity", "lightdiffuse", "diffuselight", "diffusecolor", "diffusecolour",
+          "lightdiffusecolor", "lightdiffusecolour", "lightdiffuseintensity", "diffuselightcolor",
+          "diffuselightcolour", "diffuselightintensity", "idiffuse", "intensitydiffuse",
+          "lightsdiffuse"}},
         {M::LightSpecular,
          {"is", "specularintensity", "lightspecular", "specularlight", "specularcolor",
-          "specularcolour", "lightspecularcolor", "lightspecularcolour",
-          "lightspecularintensity", "specularlightcolor", "specularlightcolour",
-          "specularlightintensity", "ispecular", "intensityspecular", "lightsspecular"}},
+          "specularcolour", "lightspecularcolor", "lightspecularcolour", "lightspecularintensity",
+          "specularlightcolor", "specularlightcolour", "specularlightintensity", "ispecular",
+          "intensityspecular", "lightsspecular"}},
         {M::Attenuation,
-         {"attenuation", "att", "atten", "attenuations", "attenuationfactor",
-          "attenuationfactors", "attenuationcoefficients", "attenuationcoeffs",
-          "attenuationconstants", "attenuationparams", "attenuationparameters",
-          "lightattenuation", "lightatt", "c", "fatt", "falloff"}},
+         {"attenuation", "att", "atten", "attenuations", "attenuationfactor", "attenuationfactors",
+          "attenuationcoefficients", "attenuationcoeffs", "attenuationconstants",
+          "attenuationparams", "attenuationparameters", "lightattenuation", "lightatt", "c", "fatt",
+          "falloff"}},
         {M::C1,
          {"c1", "constantattenuation", "attenuationconstant", "attconstant", "kc", "constant",
           "attc1", "attenuationc1"}},
@@ -146,12 +146,12 @@ const std::vector<Aliases> &aliasTable()
          {"c2", "linearattenuation", "attenuationlinear", "attlinear", "kl", "linear", "attc2",
           "attenuationc2"}},
         {M::C3,
-         {"c3", "quadraticattenuation", "attenuationquadratic", "attquadratic", "kq",
-          "quadratic", "attc3", "attenuationc3"}},
+         {"c3", "quadraticattenuation", "attenuationquadratic", "attquadratic", "kq", "quadratic",
+          "attc3", "attenuationc3"}},
         {M::Ambient,
-         {"ia", "ambientintensity", "ambientlight", "ambientcolor", "ambientcolour",
-          "lightambient", "globalambient", "iambient", "ambientlightcolor",
-          "ambientlightcolour", "ambientlightintensity", "intensityambient", "sceneambient"}},
+         {"ia", "ambientintensity", "ambientlight", "ambientcolor", "ambientcolour", "lightambient",
+          "globalambient", "iambient", "ambientlightcolor", "ambientlightcolour",
+          "ambientlightintensity", "intensityambient", "sceneambient"}},
         {M::Ka,
          {"ka", "ambientreflection", "ambientreflectance", "ambientreflectivity",
           "ambientcoefficient", "ambientcoeff", "materialambient", "matambient", "kambient",
@@ -162,8 +162,8 @@ const std::vector<Aliases> &aliasTable()
           "diffusematerial", "diffusek", "reflectiondiffuse", "albedo"}},
         {M::Ks,
          {"ks", "specularreflection", "specularreflectance", "specularreflectivity",
-          "specularcoefficient", "specularcoeff", "materialspecular", "matspecular",
-          "kspecular", "specularmaterial", "speculark", "reflectionspecular"}},
+          "specularcoefficient", "specularcoeff", "materialspecular", "matspecular", "kspecular",
+          "specularmaterial", "speculark", "reflectionspecular"}},
         {M::Shininess,
          {"shininess", "n", "shine", "shininessexponent", "specularexponent", "exponent",
           "phongexponent", "specularpower", "materialshininess", "matshininess", "glossiness",
@@ -428,8 +428,7 @@ std::optional<ParsedBinding> parseBindingArgument(const QString &text, QString *
     const auto meaning = bindingMeaningFromKey(key);
     if (!meaning) {
         *error = ShaderBindingsWords::tr("'%1': unknown meaning '%2' (known: %3, %4)")
-                     .arg(text, key, bindingMeaningKeys().join(QStringLiteral(", ")),
-                          kUnboundWord);
+                     .arg(text, key, bindingMeaningKeys().join(QStringLiteral(", ")), kUnboundWord);
         return std::nullopt;
     }
     return ParsedBinding{name, meaning};
@@ -502,12 +501,12 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         if (const auto it = explicitBindings.find(v.name); it != explicitBindings.end()) {
             b.isExplicit = true;
             if (it->second && !bindingFits(*it->second, v)) {
-                out.problems << ShaderBindingsWords::tr("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
-                                    .arg(v.name, bindingMeaningKey(*it->second),
-                                         glslTypeSpelling(v.type),
-                                         v.isArray ? QStringLiteral(" array") : QString(),
-                                         v.isInput ? QStringLiteral("input") : QStringLiteral("uniform"),
-                                         bindingMeaningDescription(*it->second));
+                out.problems
+                    << ShaderBindingsWords::tr("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
+                           .arg(v.name, bindingMeaningKey(*it->second), glslTypeSpelling(v.type),
+                                v.isArray ? QStringLiteral(" array") : QString(),
+                                v.isInput ? QStringLiteral("input") : QStringLiteral("uniform"),
+                                bindingMeaningDescription(*it->second));
             } else {
                 b.meaning = it->second;
             }
@@ -520,10 +519,11 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         const QString &name = entry.first;
         if (std::none_of(variables.begin(), variables.end(),
                          [&](const ShaderVariable &v) { return v.name == name; }))
-            out.notes << ShaderBindingsWords::tr("%1=%2: the program has no active uniform or input %1 "
-                                        "(not declared, or unused and optimised away)")
-                             .arg(name, entry.second ? bindingMeaningKey(*entry.second)
-                                                     : kUnboundWord);
+            out.notes << ShaderBindingsWords::tr(
+                             "%1=%2: the program has no active uniform or input %1 "
+                             "(not declared, or unused and optimised away)")
+                             .arg(name,
+                                  entry.second ? bindingMeaningKey(*entry.second) : kUnboundWord);
     }
     return out;
 }

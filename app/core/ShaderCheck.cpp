@@ -89,8 +89,9 @@ MistakeImages slideMistakes(const CheckReference &reference)
         }
         ReferenceShader shader(ReferenceShading::Phong, variant);
         shader.equation = PhongEquation::Slide;
-        out.emplace_back(variant, shadeSceneHits(reference.hits, reference.scene, shader)
-                                      .toImage(reference.background));
+        out.emplace_back(
+            variant,
+            shadeSceneHits(reference.hits, reference.scene, shader).toImage(reference.background));
     }
     return out;
 }
@@ -217,8 +218,9 @@ QString checkStatusLine(const CheckReport &report)
     if (d.unexplained() || d.findings.empty())
         return CheckWords::tr("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
     const MistakeFinding &top = d.findings.front();
-    QString line = CheckWords::tr("✗ %1 — %2: %3")
-                       .arg(psnr, shaderMistakeKey(top.key), mistakeFormSummary({top.key, top.form}));
+    QString line =
+        CheckWords::tr("✗ %1 — %2: %3")
+            .arg(psnr, shaderMistakeKey(top.key), mistakeFormSummary({top.key, top.form}));
     for (ShaderMistake m : top.also)
         line += CheckWords::tr(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
     return line;

@@ -26,61 +26,98 @@ constexpr std::array kKeys = {
 constexpr std::array kRules = {
     std::pair{
         ShaderMistake::NormalMatrix,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the normal N: it must be transformed by the inverse transpose of the model-view matrix, "
-        "not by the model-view or model matrix, nor by a transpose without the inverse (which "
-        "bends it under non-uniform scale)")},
-    std::pair{ShaderMistake::Unnormalized,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the normal N: it must be normalised in the fragment shader, after interpolation has "
-              "shortened it (and L and V must be unit length too)")},
-    std::pair{ShaderMistake::LightSpace,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the light vector L: the light is placed in world coordinates and must be moved into "
-              "camera coordinates by the view matrix (not left as it is, nor moved by the "
-              "model-view matrix) before L = light - P")},
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "the normal N: it must be transformed by the inverse transpose of the model-view "
+            "matrix, "
+            "not by the model-view or model matrix, nor by a transpose without the inverse (which "
+            "bends it under non-uniform scale)")},
+    std::pair{
+        ShaderMistake::Unnormalized,
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "the normal N: it must be normalised in the fragment shader, after interpolation has "
+            "shortened it (and L and V must be unit length too)")},
+    std::pair{
+        ShaderMistake::LightSpace,
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "the light vector L: the light is placed in world coordinates and must be moved into "
+            "camera coordinates by the view matrix (not left as it is, nor moved by the "
+            "model-view matrix) before L = light - P")},
     std::pair{
         ShaderMistake::HomogeneousW,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "points and directions: a point (the position P, the light's position) is transformed "
-        "with w = 1, a direction (the normal) with w = 0; a point with w = 0 loses the "
-        "translation, a direction with w = 1 gains it")},
-    std::pair{
-        ShaderMistake::ReflectIncident,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the specular term: R must be reflect(-L, N); reflect() takes the incident vector, which "
-        "points from the light to the surface")},
-    std::pair{
-        ShaderMistake::ViewVector,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the specular term: V must point from the surface to the eye, V = normalize(-P) in camera "
-        "coordinates")},
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "points and directions: a point (the position P, the light's position) is transformed "
+            "with w = 1, a direction (the normal) with w = 0; a point with w = 0 loses the "
+            "translation, a direction with w = 1 gains it")},
+    std::pair{ShaderMistake::ReflectIncident,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "the specular term: R must be reflect(-L, N); reflect() takes the "
+                                "incident vector, which "
+                                "points from the light to the surface")},
+    std::pair{ShaderMistake::ViewVector,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "the specular term: V must point from the surface to the eye, V = "
+                                "normalize(-P) in camera "
+                                "coordinates")},
     std::pair{
         ShaderMistake::Attenuation,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's diffuse "
-        "and specular parts, with d the distance from the surface to the light, and never "
-        "exceed 1")},
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "the attenuation f_att = min(1 / (c1 + c2·d + c3·d²), 1) must scale each light's "
+            "diffuse "
+            "and specular parts, with d the distance from the surface to the light, and never "
+            "exceed 1")},
+    std::pair{ShaderMistake::NegativeLight,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "the diffuse term: N·L must be clamped with max(0, N·L); a light "
+                                "behind the surface adds "
+                                "nothing, it does not darken")},
     std::pair{
-        ShaderMistake::NegativeLight,
-        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the diffuse term: N·L must be clamped with max(0, N·L); a light behind the surface adds "
-        "nothing, it does not darken")},
-    std::pair{ShaderMistake::BackfaceSpecular,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the specular term: where N·L <= 0 the light is behind the surface and there is no "
-              "highlight either")},
+        ShaderMistake::BackfaceSpecular,
+        QT_TRANSLATE_NOOP(
+            "phonglab::ShaderMistake",
+            "the specular term: where N·L <= 0 the light is behind the surface and there is no "
+            "highlight either")},
     std::pair{ShaderMistake::Ambient,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the ambient term Ia·ka must be added once, outside the sum over the lights")},
+              QT_TRANSLATE_NOOP(
+                  "phonglab::ShaderMistake",
+                  "the ambient term Ia·ka must be added once, outside the sum over the lights")},
     std::pair{ShaderMistake::Gouraud,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "where the equation is evaluated: per fragment, with the interpolated normal; "
-              "evaluated per "
-              "vertex and interpolated, highlights smear and vanish between vertices")},
+              QT_TRANSLATE_NOOP(
+                  "phonglab::ShaderMistake",
+                  "where the equation is evaluated: per fragment, with the interpolated normal; "
+                  "evaluated per "
+                  "vertex and interpolated, highlights smear and vanish between vertices")},
 };
 constexpr std::array kSummaries = {
     std::pair{ShaderMistake::NormalMatrix,
-              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N moved by the model-view matrix, not its inverse transpose")},
-    std::pair{ShaderMistake::Unnormalized, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N not normalised after interpolation")},
-    std::pair{ShaderMistake::LightSpace, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the light's world position used as a camera-space one")},
-    std::pair{ShaderMistake::HomogeneousW, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the position moved with w = 0")},
-    std::pair{ShaderMistake::ReflectIncident, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "reflect(L, N) instead of reflect(-L, N)")},
-    std::pair{ShaderMistake::ViewVector, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "V points away from the eye")},
-    std::pair{ShaderMistake::Attenuation, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "f_att missing or wrong")},
-    std::pair{ShaderMistake::NegativeLight, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N·L not clamped with max(0, ·)")},
-    std::pair{ShaderMistake::BackfaceSpecular, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "a highlight where N·L <= 0")},
-    std::pair{ShaderMistake::Ambient, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka missing or wrong")},
-    std::pair{ShaderMistake::Gouraud, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "lit per vertex, not per fragment")},
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "N moved by the model-view matrix, not its inverse transpose")},
+    std::pair{ShaderMistake::Unnormalized,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N not normalised after interpolation")},
+    std::pair{ShaderMistake::LightSpace,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "the light's world position used as a camera-space one")},
+    std::pair{ShaderMistake::HomogeneousW,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the position moved with w = 0")},
+    std::pair{
+        ShaderMistake::ReflectIncident,
+        QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "reflect(L, N) instead of reflect(-L, N)")},
+    std::pair{ShaderMistake::ViewVector,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "V points away from the eye")},
+    std::pair{ShaderMistake::Attenuation,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "f_att missing or wrong")},
+    std::pair{ShaderMistake::NegativeLight,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N·L not clamped with max(0, ·)")},
+    std::pair{ShaderMistake::BackfaceSpecular,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "a highlight where N·L <= 0")},
+    std::pair{ShaderMistake::Ambient,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka missing or wrong")},
+    std::pair{ShaderMistake::Gouraud,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "lit per vertex, not per fragment")},
 };
 
 struct Form {
@@ -92,17 +129,22 @@ constexpr std::array kForms = {
     Form{{ShaderMistake::NormalMatrix, MistakeForm::NormalByModel},
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N moved by the model matrix alone")},
     Form{{ShaderMistake::NormalMatrix, MistakeForm::NormalByTranspose},
-         QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "N moved by the transpose of the model-view matrix, without the inverse")},
-    Form{{ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized}, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "L not normalised")},
+         QT_TRANSLATE_NOOP(
+             "phonglab::ShaderMistake",
+             "N moved by the transpose of the model-view matrix, without the inverse")},
+    Form{{ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized},
+         QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "L not normalised")},
     Form{{ShaderMistake::LightSpace, MistakeForm::LightByModelView},
-         QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the light moved by the model-view matrix, not the view matrix")},
+         QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                           "the light moved by the model-view matrix, not the view matrix")},
     Form{{ShaderMistake::HomogeneousW, MistakeForm::LightWithW0},
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the light's position moved with w = 0")},
     Form{{ShaderMistake::HomogeneousW, MistakeForm::NormalWithW1},
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "the normal, a direction, moved with w = 1")},
     Form{{ShaderMistake::Attenuation, MistakeForm::Unclamped},
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "f_att not clamped with min(..., 1)")},
-    Form{{ShaderMistake::Ambient, MistakeForm::AmbientPerLight}, QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka added once per light")},
+    Form{{ShaderMistake::Ambient, MistakeForm::AmbientPerLight},
+         QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka added once per light")},
 };
 
 // In the language the run speaks (core/Language); UTF-8 (·, ²), unlike the keys.

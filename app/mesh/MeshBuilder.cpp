@@ -120,7 +120,7 @@ CornerNormals fileNormals(const PolygonMesh &mesh, const Triangles &triangles,
         }
     }
     warnings << MeshBuilderWords::tr("%1 of %2 corners have a zero or invalid normal in the file; "
-                               "computed angle-weighted normals replace them")
+                                     "computed angle-weighted normals replace them")
                     .arg(qint64(badCorners))
                     .arg(qint64(mesh.cornerNormal.size()));
     return result;
@@ -250,13 +250,15 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
         return fail(MeshBuilderWords::tr("the mesh has no faces"));
     if (triangleCorners > std::numeric_limits<std::uint32_t>::max())
         return fail(
-            MeshBuilderWords::tr("the mesh is too large: %1 triangles exceed what 32-bit indices can address")
+            MeshBuilderWords::tr(
+                "the mesh is too large: %1 triangles exceed what 32-bit indices can address")
                 .arg(qint64(triangleCorners / 3)));
 
     Triangles triangles;
     gatherTriangles(mesh, triangles);
     if (triangles.fanFallbacks != 0)
-        warnings << MeshBuilderWords::tr("%1 polygons cross or fold onto themselves; they were split as fans")
+        warnings << MeshBuilderWords::tr(
+                        "%1 polygons cross or fold onto themselves; they were split as fans")
                         .arg(qint64(triangles.fanFallbacks));
 
     std::size_t missingNormals = mesh.cornerPosition.size();
@@ -271,7 +273,7 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
                                                : options.method;
     if (options.method == NormalMethod::Auto && mesh.hasNormals() && missingNormals != 0)
         warnings << MeshBuilderWords::tr("%1 of %2 corners have no normal in the file; "
-                                   "computed angle-weighted normals for the whole mesh")
+                                         "computed angle-weighted normals for the whole mesh")
                         .arg(qint64(missingNormals))
                         .arg(qint64(mesh.cornerPosition.size()));
 

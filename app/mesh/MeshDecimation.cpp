@@ -4,9 +4,9 @@
 
 #include "DecimationMesh.h"
 
-#include <QCoreApplication>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/Observer.hh>
+#include <QCoreApplication>
 
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <memory>
@@ -386,7 +386,8 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
     for (std::size_t i = 0; i < fractions.size(); ++i) {
         const double fraction = fractions[i];
         if (!(fraction > 0.0 && fraction <= 1.0)) {
-            notes << MeshDecimationWords::tr("detail must be in (0, 1] (got %1); mesh left as it is")
+            notes << MeshDecimationWords::tr(
+                         "detail must be in (0, 1] (got %1); mesh left as it is")
                          .arg(fraction);
             levels[i] = mesh;
         } else if (fraction == 1.0 || mesh.indices.empty()) {
@@ -401,7 +402,8 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
     if (todo.empty())
         return finish();
     if (!mesh.isValid()) {
-        notes << MeshDecimationWords::tr("invalid mesh (index out of range or normals missing); not decimated");
+        notes << MeshDecimationWords::tr(
+            "invalid mesh (index out of range or normals missing); not decimated");
         for (std::size_t i : todo)
             levels[i] = mesh;
         return finish();
@@ -412,16 +414,18 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
     std::vector<std::uint32_t> faceTriangle;
     const AddReport added = buildOpenMesh(mesh, weld, om, faceTriangle);
     if (faceTriangle.empty()) {
-        notes << MeshDecimationWords::tr("no triangle could be taken for decimation (all degenerate, non-finite or "
+        notes << MeshDecimationWords::tr(
+            "no triangle could be taken for decimation (all degenerate, non-finite or "
             "non-manifold); mesh left as it is");
         for (std::size_t i : todo)
             levels[i] = mesh;
         return finish();
     }
     if (added.nonManifold > 0)
-        notes << MeshDecimationWords::tr("%1 non-manifold triangles (an edge with more than two faces, or a "
-                                "vertex joining "
-                                "separate fans) could not be decimated and were left out")
+        notes << MeshDecimationWords::tr(
+                     "%1 non-manifold triangles (an edge with more than two faces, or a "
+                     "vertex joining "
+                     "separate fans) could not be decimated and were left out")
                      .arg(count(added.nonManifold));
     if (added.nonFinite > 0)
         notes << MeshDecimationWords::tr("%1 triangles with non-finite corners left out")
@@ -469,9 +473,10 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
         // Some slack: collapses remove two faces at a time, and closed
         // pieces cannot shrink below a tetrahedron.
         if (faces > target + target / 20 + 4)
-            notes << MeshDecimationWords::tr("decimation stopped at %1 triangles (asked for %2): every "
-                                    "further collapse would "
-                                    "fold a face or break the surface")
+            notes << MeshDecimationWords::tr(
+                         "decimation stopped at %1 triangles (asked for %2): every "
+                         "further collapse would "
+                         "fold a face or break the surface")
                          .arg(count(faces), count(target));
         levels[i] = rebuild(mesh, weld, om, faceTriangle, faceted);
     }

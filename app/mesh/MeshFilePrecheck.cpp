@@ -75,7 +75,8 @@ Sniffed sniffFormat(std::string_view head)
     if (offHeaderAt(head))
         return {QStringLiteral("an OFF file"), MeshFilePrecheckWords::tr("rename it to .off")};
     if (startsWithSolid(head))
-        return {MeshFilePrecheckWords::tr("an ascii STL file"), MeshFilePrecheckWords::tr("rename it to .stl")};
+        return {MeshFilePrecheckWords::tr("an ascii STL file"),
+                MeshFilePrecheckWords::tr("rename it to .stl")};
     const std::size_t first = head.find_first_not_of(" \t\r\n");
     if (first != std::string_view::npos && head[first] == '{')
         return {QStringLiteral("a JSON file"), {}};
@@ -165,7 +166,8 @@ void validateAsciiStl(std::string_view text, MeshFilePrecheck &check)
         for (int corner = 0; corner < 3; ++corner) {
             if (!nextLine()) {
                 check.error =
-                    MeshFilePrecheckWords::tr("the file ends inside facet %1 (truncated?)").arg(facets + 1);
+                    MeshFilePrecheckWords::tr("the file ends inside facet %1 (truncated?)")
+                        .arg(facets + 1);
                 return;
             }
             if (!numbersAfter(1, MeshFilePrecheckWords::tr("'vertex x y z'")))
@@ -232,14 +234,15 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
         if (!check.ok())
             return;
         if (size < 84) {
-            check.error =
-                MeshFilePrecheckWords::tr("too small for a binary STL file (%1 bytes) and not an ascii one")
-                    .arg(size);
+            check.error = MeshFilePrecheckWords::tr(
+                              "too small for a binary STL file (%1 bytes) and not an ascii one")
+                              .arg(size);
             return;
         }
         if (size < expected) {
             check.error =
-                MeshFilePrecheckWords::tr("the binary STL header declares %1 triangles (%2 bytes) but the file has "
+                MeshFilePrecheckWords::tr(
+                    "the binary STL header declares %1 triangles (%2 bytes) but the file has "
                     "only %3 bytes (truncated or not an STL file)")
                     .arg((expected - 84) / 50)
                     .arg(expected)
@@ -260,9 +263,9 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
 void checkOm(const QString &path, std::string_view head, MeshFilePrecheck &check)
 {
     if (head.size() < 16 || !startsWith(head, "OM") || !std::strchr("TQP", head[2]))
-        check.error =
-            wrongMagic(head, check.format,
-                       MeshFilePrecheckWords::tr("not an OpenMesh file (it does not start with 'OM')"));
+        check.error = wrongMagic(
+            head, check.format,
+            MeshFilePrecheckWords::tr("not an OpenMesh file (it does not start with 'OM')"));
     else
         precheckOm(path, check);
 }
@@ -314,9 +317,10 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
         return check;
     }
     if (check.fileSize > kMaxMeshFileBytes) {
-        check.error = MeshFilePrecheckWords::tr("the file is too large (%1 MiB; the limit is %2 MiB)")
-                          .arg(check.fileSize >> 20)
-                          .arg(kMaxMeshFileBytes >> 20);
+        check.error =
+            MeshFilePrecheckWords::tr("the file is too large (%1 MiB; the limit is %2 MiB)")
+                .arg(check.fileSize >> 20)
+                .arg(kMaxMeshFileBytes >> 20);
         return check;
     }
     const QByteArray headBytes = file.read(kSampleBytes);
@@ -332,15 +336,16 @@ MeshFilePrecheck precheckMeshFile(const QString &path, MeshFileFormat format)
     case MeshFileFormat::Ply:
         if (!startsWith(head, "ply\n") && !startsWith(head, "ply\r\n"))
             check.error = wrongMagic(
-                head, format, MeshFilePrecheckWords::tr("not a PLY file (it does not start with 'ply')"));
+                head, format,
+                MeshFilePrecheckWords::tr("not a PLY file (it does not start with 'ply')"));
         else
             precheckPly(path, check);
         break;
     case MeshFileFormat::Off:
         if (!offHeaderAt(head))
-            check.error = wrongMagic(
-                head, format,
-                MeshFilePrecheckWords::tr("not an OFF file (it does not start with an OFF header)"));
+            check.error = wrongMagic(head, format,
+                                     MeshFilePrecheckWords::tr(
+                                         "not an OFF file (it does not start with an OFF header)"));
         else
             precheckOff(path, check);
         break;
@@ -371,8 +376,9 @@ bool readWholeFile(const QString &path, std::string &bytes, QString &error,
     while (done < size) {
         const qint64 n = file.read(bytes.data() + done, std::min(kChunk, size - done));
         if (n <= 0) {
-            error = n < 0 ? MeshFilePrecheckWords::tr("cannot read the file: %1").arg(file.errorString())
-                          : MeshFilePrecheckWords::tr("the file got shorter while it was read");
+            error = n < 0
+                ? MeshFilePrecheckWords::tr("cannot read the file: %1").arg(file.errorString())
+                : MeshFilePrecheckWords::tr("the file got shorter while it was read");
             return false;
         }
         done += n;

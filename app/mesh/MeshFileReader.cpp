@@ -52,10 +52,10 @@ MeshReadResult readMeshFile(const QString &path, const std::function<bool(double
     if (!format) {
         MeshReadResult result;
         const QString suffix = QFileInfo(path).suffix();
-        result.error =
-            MeshFileReaderWords::tr("unsupported file type '%1' (supported: %2)")
-                .arg(suffix.isEmpty() ? MeshFileReaderWords::tr("no suffix") : QLatin1Char('.') + suffix,
-                     supportedMeshFileSuffixes());
+        result.error = MeshFileReaderWords::tr("unsupported file type '%1' (supported: %2)")
+                           .arg(suffix.isEmpty() ? MeshFileReaderWords::tr("no suffix")
+                                                 : QLatin1Char('.') + suffix,
+                                supportedMeshFileSuffixes());
         return result;
     }
     // Nothing a broken file does may escape as an exception: the readers
@@ -68,7 +68,8 @@ MeshReadResult readMeshFile(const QString &path, const std::function<bool(double
         return result;
     } catch (const std::exception &e) {
         MeshReadResult result;
-        result.error = MeshFileReaderWords::tr("reading failed: %1").arg(QString::fromLocal8Bit(e.what()));
+        result.error =
+            MeshFileReaderWords::tr("reading failed: %1").arg(QString::fromLocal8Bit(e.what()));
         return result;
     }
 }

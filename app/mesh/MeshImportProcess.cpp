@@ -77,7 +77,8 @@ QString failureMessage(const QProcess &child, const ChildReport &report,
     if (child.exitStatus() == QProcess::CrashExit) {
         const int signal = child.exitCode(); // Qt reports the terminating signal here
         if (signal == SIGXCPU)
-            return MeshImportProcessWords::tr("the reader used up its %1 s of CPU time and was stopped")
+            return MeshImportProcessWords::tr(
+                       "the reader used up its %1 s of CPU time and was stopped")
                 .arg(limits.cpuSeconds);
         return MeshImportProcessWords::tr("the reader crashed with signal %1 (%2)")
             .arg(signal)
@@ -205,7 +206,8 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     };
     const QString executable = importExecutable();
     if (executable.isEmpty())
-        return fail(MeshImportProcessWords::tr("cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
+        return fail(MeshImportProcessWords::tr(
+            "cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));
     const QString entryFile = temporaryEntryFile();
     if (entryFile.isEmpty())
         return fail(MeshImportProcessWords::tr("cannot create a temporary file for the import"));
@@ -233,8 +235,9 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         if (progress && !progress(report.progress)) {
             stopped = QStringLiteral("cancelled");
         } else if (clock.elapsed() > limits.wallClockMs) {
-            stopped = MeshImportProcessWords::tr("%1: the reader stopped answering after %2 s and was stopped; "
-                                     "the file is probably malformed")
+            stopped = MeshImportProcessWords::tr(
+                          "%1: the reader stopped answering after %2 s and was stopped; "
+                          "the file is probably malformed")
                           .arg(path)
                           .arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
         }
@@ -297,9 +300,11 @@ int runMeshImportChild(const QString &path, const NormalOptions &normals, const 
     QFile out(entryFile);
     if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)
         || !MeshCache::encode(out, MeshCache::sourceKey(path, normals), result) || !out.flush()) {
-        std::printf(
-            "error %s\n",
-            MeshImportProcessWords::tr("cannot write the result to %1").arg(entryFile).toUtf8().constData());
+        std::printf("error %s\n",
+                    MeshImportProcessWords::tr("cannot write the result to %1")
+                        .arg(entryFile)
+                        .toUtf8()
+                        .constData());
         return 1;
     }
     return 0;

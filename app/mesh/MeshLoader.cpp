@@ -39,7 +39,8 @@ MeshLoadResult loadBuiltin(const QString &spec)
     result.mesh = builtinMesh(spec);
     if (!result.mesh) {
         result.error =
-            MeshLoaderWords::tr("%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)")
+            MeshLoaderWords::tr(
+                "%1: unknown builtin mesh (known: builtin:sphere, builtin:torus, builtin:cube)")
                 .arg(spec);
         return result;
     }

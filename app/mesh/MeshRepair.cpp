@@ -391,7 +391,8 @@ QStringList RepairReport::warnings() const
         w << MeshRepairWords::tr("dropped %1 (fewer than 3 distinct corners or zero area)")
                  .arg(counted(facesDroppedDegenerate, "degenerate face", "degenerate faces"));
     if (normalsDiscarded)
-        w << MeshRepairWords::tr("ignored the file normal of %1 (missing, zero or not finite); computed instead")
+        w << MeshRepairWords::tr(
+                 "ignored the file normal of %1 (missing, zero or not finite); computed instead")
                  .arg(counted(normalsDiscarded, "face corner", "face corners"));
     if (nonManifoldEdges)
         w << MeshRepairWords::tr("%1 (shared by 3 or more faces), kept as they are")

@@ -377,14 +377,16 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
                                .arg(m_firstBadLine)
                                .arg(QString::fromUtf8(m_firstBadText));
     if (m_lastLineBad && !endsInNewline)
-        result.warnings << ObjReaderWords::tr("the last line is incomplete (the file looks truncated)");
+        result.warnings << ObjReaderWords::tr(
+            "the last line is incomplete (the file looks truncated)");
     if (m_freeform)
         result.warnings << ObjReaderWords::tr("ignored %1 (only polygons are read)")
                                .arg(meshtext::counted(m_freeform,
                                                       "free-form curve or surface statement",
                                                       "free-form curve and surface statements"));
     if (missingNormals)
-        result.warnings << ObjReaderWords::tr("%1 to normals the file does not have; they get computed normals")
+        result.warnings << ObjReaderWords::tr(
+                               "%1 to normals the file does not have; they get computed normals")
                                .arg(meshtext::counted(missingNormals, "face corner refers",
                                                       "face corners refer"));
     result.mesh = std::move(m_mesh);

@@ -59,13 +59,15 @@ QString checkBinaryFaces(std::string_view text, std::size_t at, quint64 faces)
 {
     for (quint64 f = 0; f < faces; ++f) {
         if (text.size() - at < 4)
-            return OffPrecheckWords::tr("the binary OFF file ends after %1 of %2 faces (truncated?)")
+            return OffPrecheckWords::tr(
+                       "the binary OFF file ends after %1 of %2 faces (truncated?)")
                 .arg(f)
                 .arg(faces);
         const quint64 corners = littleEndian(text, at);
         at += 4;
         if (corners > (text.size() - at) / 4)
-            return OffPrecheckWords::tr("binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
+            return OffPrecheckWords::tr(
+                       "binary OFF face %1 (byte %2) declares %3 corners, more than the %4 bytes "
                        "left can hold (corrupt?)")
                 .arg(f + 1)
                 .arg(at - 4)
@@ -89,7 +91,8 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     // see, so the faces could not be walked safely.
     if (k.colors || k.keyword.substr(0, 2) == "ST") {
         check.error =
-            OffPrecheckWords::tr("binary %1 files (with colours or texture coordinates) are not supported; "
+            OffPrecheckWords::tr(
+                "binary %1 files (with colours or texture coordinates) are not supported; "
                 "save it as ascii OFF or as PLY")
                 .arg(QString::fromLatin1(k.keyword.data(), qsizetype(k.keyword.size())));
         return;
@@ -101,7 +104,8 @@ void checkBinary(std::string_view text, const OffKeyword &k, MeshFilePrecheck &c
     const quint64 needed = body + 12 + vertexBytes + check.declaredFaces * 16;
     if (needed > text.size())
         check.error =
-            OffPrecheckWords::tr("the binary OFF header declares %1 vertices and %2 faces, which need at least "
+            OffPrecheckWords::tr(
+                "the binary OFF header declares %1 vertices and %2 faces, which need at least "
                 "%3 bytes, but the file has %4 (truncated or corrupt)")
                 .arg(check.declaredVertices)
                 .arg(check.declaredFaces)
@@ -141,7 +145,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const OffKeyword k = parseKeyword(tokens.next());
     const std::size_t headerLine = tokens.line();
     if (!k.ok) {
-        check.error = OffPrecheckWords::tr("not an OFF file (it does not start with an OFF header)");
+        check.error =
+            OffPrecheckWords::tr("not an OFF file (it does not start with an OFF header)");
         return;
     }
     if (k.higherDimension) {
@@ -181,7 +186,8 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     const quint64 needed = 6 * check.declaredVertices + 8 * check.declaredFaces;
     if (needed > text.size()) {
         check.error =
-            OffPrecheckWords::tr("the OFF header declares %1 vertices and %2 faces, which need at least %3 "
+            OffPrecheckWords::tr(
+                "the OFF header declares %1 vertices and %2 faces, which need at least %3 "
                 "bytes, but the file has %4 (truncated or corrupt)")
                 .arg(check.declaredVertices)
                 .arg(check.declaredFaces)
@@ -259,10 +265,10 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         for (std::size_t i = 1; i < line.size(); ++i) {
             const bool index = i < indicesEnd;
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
-                return fail(
-                    QStringLiteral("expected %1, found %2")
-                        .arg(index ? OffPrecheckWords::tr("a vertex index") : QStringLiteral("a number"),
-                             quoted(line[i])));
+                return fail(QStringLiteral("expected %1, found %2")
+                                .arg(index ? OffPrecheckWords::tr("a vertex index")
+                                           : QStringLiteral("a number"),
+                                     quoted(line[i])));
         }
         // Values after the indices are a colour, which the reader only takes
         // from the rest of the line under a COFF header; otherwise it would
@@ -275,11 +281,12 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     }
     if (strayLines)
         check.warnings << OffPrecheckWords::tr("ignored the values after the vertex indices on %1 "
-                                         "(face colours need a COFF header)")
+                                               "(face colours need a COFF header)")
                               .arg(meshtext::counted(strayLines, "face line", "face lines"));
     tokens.nextLine();
     if (!tokens.next().empty())
-        check.warnings << OffPrecheckWords::tr("ignored the text after the last face (from line %1)")
+        check.warnings << OffPrecheckWords::tr(
+                              "ignored the text after the last face (from line %1)")
                               .arg(tokens.line());
     if (rewrite || tokens.sawComment())
         check.rewritten = std::move(out);

@@ -113,7 +113,8 @@ ChunkSize sized(quint64 bytes)
 ChunkSize wrongDims(const ChunkHeader &c, unsigned expected)
 {
     return {0,
-            OmPrecheckWords::tr("a %1 chunk with %2 components per element, where the reader expects %3")
+            OmPrecheckWords::tr(
+                "a %1 chunk with %2 components per element, where the reader expects %3")
                 .arg(describe(c))
                 .arg(c.dims)
                 .arg(expected)};
@@ -199,7 +200,8 @@ ChunkSize dataSize(const OmHeader &h, const ChunkHeader &c, std::string_view res
 {
     if (c.entity != Vertex && c.entity != Mesh && c.entity != Face && c.entity != Edge
         && c.entity != Halfedge)
-        return {0, OmPrecheckWords::tr("a chunk for an unknown kind of element (%1)").arg(c.entity)};
+        return {0,
+                OmPrecheckWords::tr("a chunk for an unknown kind of element (%1)").arg(c.entity)};
     const quint64 count = elementCount(h, c.entity);
     switch (c.type) {
     case Pos:
@@ -238,14 +240,16 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
     for (int chunk = 1;; ++chunk) {
         const std::size_t start = at;
         if (bytes.size() - at < 2)
-            return OmPrecheckWords::tr("the file ends after %1 chunks, before the end marker OpenMesh writes "
+            return OmPrecheckWords::tr(
+                       "the file ends after %1 chunks, before the end marker OpenMesh writes "
                        "(truncated?)")
                 .arg(chunk - 1);
         const ChunkHeader c = decodeChunkHeader(littleEndian(bytes, at, 2));
         at += 2;
         if (c.named) {
             if (at >= bytes.size() || bytes.size() - at - 1 < static_cast<unsigned char>(bytes[at]))
-                return OmPrecheckWords::tr("chunk %1 (byte %2): the file ends inside its property name")
+                return OmPrecheckWords::tr(
+                           "chunk %1 (byte %2): the file ends inside its property name")
                     .arg(chunk)
                     .arg(start);
             at += 1 + static_cast<unsigned char>(bytes[at]);
@@ -261,8 +265,9 @@ QString walkChunks(std::string_view bytes, const OmHeader &h, std::size_t &end, 
         if (!size.error.isEmpty())
             return QStringLiteral("chunk %1 (byte %2): %3").arg(chunk).arg(start).arg(size.error);
         if (size.bytes > bytes.size() - at)
-            return OmPrecheckWords::tr("chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left "
-                                  "(truncated or corrupt)")
+            return OmPrecheckWords::tr(
+                       "chunk %1 (byte %2, %3) needs %4 bytes, but only %5 are left "
+                       "(truncated or corrupt)")
                 .arg(chunk)
                 .arg(start)
                 .arg(describe(c))
@@ -300,7 +305,8 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     const quint64 needed = kHeaderBytes + 12 * h.vertices + h.faces;
     if (needed > bytes.size()) {
         check.error =
-            OmPrecheckWords::tr("the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
+            OmPrecheckWords::tr(
+                "the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 "
                 "bytes, but the file has %4 (truncated or corrupt)")
                 .arg(h.vertices)
                 .arg(h.faces)
@@ -315,8 +321,8 @@ void precheckOm(const QString &path, MeshFilePrecheck &check)
     std::size_t end = 0;
     check.error = walkChunks(bytes, h, end, check.rewritten);
     if (check.ok() && end < bytes.size())
-        check.warnings
-            << OmPrecheckWords::tr("%1 bytes after the end marker were ignored").arg(bytes.size() - end);
+        check.warnings << OmPrecheckWords::tr("%1 bytes after the end marker were ignored")
+                              .arg(bytes.size() - end);
 }
 
 } // namespace phonglab

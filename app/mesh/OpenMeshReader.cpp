@@ -3,10 +3,10 @@
 #include "MeshTextTokens.h"
 #include "PolygonSoupImporter.h"
 
-#include <QCoreApplication>
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+#include <QCoreApplication>
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -131,7 +131,8 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
         if (!dir.isValid() || !cleaned.open(QIODevice::WriteOnly)
             || cleaned.write(check.rewritten.data(), qint64(check.rewritten.size()))
                 != qint64(check.rewritten.size())) {
-            error = OpenMeshReaderWords::tr("cannot write a cleaned copy of the OFF file to the temporary folder");
+            error = OpenMeshReaderWords::tr(
+                "cannot write a cleaned copy of the OFF file to the temporary folder");
             return false;
         }
         cleaned.close();
@@ -174,8 +175,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         } catch (const std::bad_alloc &) {
             result.error = OpenMeshReaderWords::tr("out of memory while reading the file");
         } catch (const std::exception &e) {
-            result.error =
-                OpenMeshReaderWords::tr("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
+            result.error = OpenMeshReaderWords::tr("the reader failed: %1")
+                               .arg(QString::fromLocal8Bit(e.what()));
         } catch (...) {
             result.error = OpenMeshReaderWords::tr("the reader failed");
         }
@@ -208,7 +209,8 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
     if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
         // OpenMesh's STL reader merges corners by position and skips
         // triangles left with a repeated corner.
-        result.warnings << OpenMeshReaderWords::tr("dropped %1 with two corners at the same position")
+        result.warnings << OpenMeshReaderWords::tr(
+                               "dropped %1 with two corners at the same position")
                                .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle",
                                                       "triangles"));
     } else if (check.declaredFaces && faceCalls != check.declaredFaces) {

@@ -146,7 +146,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         });
         if (odd != line.end())
             return where
-                + PlyPrecheckWords::tr(": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                + PlyPrecheckWords::tr(
+                      ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
                       .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
                       .arg(odd - line.begin() + 1);
         if (w[0] == "format") {
@@ -187,7 +188,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             } else if (w.size() == 3) {
                 const auto type = plyType(w[1]);
                 if (!type)
-                    return where + PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
+                    return where
+                        + PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
                 p = {std::string(w[2]), *type, false, {}};
             } else {
                 return where + QStringLiteral(": expected 'property <type> <name>'");
@@ -205,7 +207,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
             return where + PlyPrecheckWords::tr(": unknown keyword %1").arg(quoted(w[0]));
         }
     }
-    return PlyPrecheckWords::tr("the PLY header has no 'end_header' line (truncated or not a PLY file)");
+    return PlyPrecheckWords::tr(
+        "the PLY header has no 'end_header' line (truncated or not a PLY file)");
 }
 
 const PlyElement *findElement(const PlyHeader &h, std::string_view name)
@@ -398,7 +401,8 @@ void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &
         }
     }
     if (!tokens.next().empty())
-        check.warnings << PlyPrecheckWords::tr("ignored the text after the last element (from line %1)")
+        check.warnings << PlyPrecheckWords::tr(
+                              "ignored the text after the last element (from line %1)")
                               .arg(tokens.line());
 }
 
@@ -443,13 +447,13 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
             perElement += check.binary ? quint64(p.isList ? p.countType.size : p.type.size) : 2;
         needed += e.count * perElement;
         if (needed > bodyBytes + 1) {
-            check.error =
-                PlyPrecheckWords::tr("the header declares %1 %2 elements, which need at least %3 bytes, "
-                               "but the file has %4 bytes after the header (truncated or corrupt)")
-                    .arg(e.count)
-                    .arg(QString::fromStdString(e.name))
-                    .arg(needed)
-                    .arg(bodyBytes);
+            check.error = PlyPrecheckWords::tr(
+                              "the header declares %1 %2 elements, which need at least %3 bytes, "
+                              "but the file has %4 bytes after the header (truncated or corrupt)")
+                              .arg(e.count)
+                              .arg(QString::fromStdString(e.name))
+                              .arg(needed)
+                              .arg(bodyBytes);
             return;
         }
     }

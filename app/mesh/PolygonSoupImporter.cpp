@@ -169,7 +169,8 @@ void PolygonSoupImporter::buildHalfedgeFaces(QStringList &warnings)
         m_mesh.faceStart.push_back(std::uint32_t(m_mesh.cornerPosition.size()));
     }
     if (broken)
-        warnings << PolygonSoupImporterWords::tr("dropped %1 whose halfedge loop in the .om file is broken")
+        warnings << PolygonSoupImporterWords::tr(
+                        "dropped %1 whose halfedge loop in the .om file is broken")
                         .arg(meshtext::counted(broken, "face", "faces"));
     m_faceHalfedge.clear();
 }
@@ -197,11 +198,13 @@ void PolygonSoupImporter::attachNormals(QStringList &warnings)
     for (const glm::vec3 &n : m_faceNormals)
         unusable += usableNormal(n) ? 0 : 1;
     if (unusable == m_faceNormals.size()) {
-        warnings << PolygonSoupImporterWords::tr("the file's facet normals are all zero or invalid; normals will be computed");
+        warnings << PolygonSoupImporterWords::tr(
+            "the file's facet normals are all zero or invalid; normals will be computed");
         return;
     }
     if (unusable)
-        warnings << PolygonSoupImporterWords::tr("%1 zero or invalid; those faces get computed normals")
+        warnings << PolygonSoupImporterWords::tr(
+                        "%1 zero or invalid; those faces get computed normals")
                         .arg(meshtext::counted(unusable, "facet normal is", "facet normals are"));
     m_mesh.normals = std::move(m_faceNormals);
     m_mesh.cornerNormal.resize(m_mesh.cornerPosition.size());

@@ -48,14 +48,15 @@ Result<> BuildThread::start(QOpenGLContext *shareContext)
     context->setFormat(shareContext->format());
     context->setShareContext(shareContext);
     if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
-        return fail(
-            BuildThreadWords::tr("the driver cannot create an OpenGL context sharing the viewport's"));
+        return fail(BuildThreadWords::tr(
+            "the driver cannot create an OpenGL context sharing the viewport's"));
     // QOffscreenSurface must be created (and destroyed) on the GUI thread.
     auto surface = std::make_unique<QOffscreenSurface>();
     surface->setFormat(context->format());
     surface->create();
     if (!surface->isValid())
-        return fail(BuildThreadWords::tr("cannot create an offscreen surface for the compile thread"));
+        return fail(
+            BuildThreadWords::tr("cannot create an offscreen surface for the compile thread"));
     // For the viewport's own context when it is lent: a surface of its format.
     auto lentSurface = std::make_unique<QOffscreenSurface>();
     lentSurface->setFormat(shareContext->format());

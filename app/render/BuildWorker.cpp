@@ -23,7 +23,8 @@ BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
 Result<> BuildWorker::initialize()
 {
     if (!m_context->makeCurrent(m_surface))
-        return fail(BuildWorkerWords::tr("the shared OpenGL context cannot be made current on the compile thread"));
+        return fail(BuildWorkerWords::tr(
+            "the shared OpenGL context cannot be made current on the compile thread"));
     m_parallelShaderCompile =
         m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
         || m_context->hasExtension(QByteArrayLiteral("GL_ARB_parallel_shader_compile"));
@@ -66,7 +67,8 @@ Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscree
     // whose shader variant the viewport's next frame needs.
     Result<> ready = lent.context->makeCurrent(lent.surface ? lent.surface : surface)
         ? Result<>()
-        : fail(BuildWorkerWords::tr("the viewport's context cannot be made current on the build thread"));
+        : fail(BuildWorkerWords::tr(
+            "the viewport's context cannot be made current on the build thread"));
     if (ready && lent.whileCurrent)
         lent.whileCurrent();
     if (ready && !lent.warmer->isCreated())

@@ -24,14 +24,16 @@ namespace {
 QString noContextMessage()
 {
     if (runsHeadless())
-        return OffscreenRendererWords::tr("no OpenGL context could be created without a display server: %1. "
-                              "PhongLab renders through EGL there (Mesa: packages libegl1 and "
-                              "libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)")
+        return OffscreenRendererWords::tr(
+                   "no OpenGL context could be created without a display server: %1. "
+                   "PhongLab renders through EGL there (Mesa: packages libegl1 and "
+                   "libegl-mesa0), or under an X server (`xvfb-run -a phonglab ...`)")
             .arg(headlessGlProblem());
     const QString display = qEnvironmentVariable("DISPLAY");
-    return OffscreenRendererWords::tr("no OpenGL context could be created on Qt's '%1' platform%2; "
-                          "QT_QPA_PLATFORM=phonglab-headless renders through EGL without a "
-                          "display server")
+    return OffscreenRendererWords::tr(
+               "no OpenGL context could be created on Qt's '%1' platform%2; "
+               "QT_QPA_PLATFORM=phonglab-headless renders through EGL without a "
+               "display server")
         .arg(QGuiApplication::platformName(),
              display.isEmpty() ? QString() : QStringLiteral(" (DISPLAY=%1)").arg(display));
 }
@@ -71,8 +73,8 @@ Result<> OffscreenRenderer::create(QOffscreenSurface *surface)
     }
     if (!m_context->makeCurrent(m_surface)) {
         destroy();
-        return fail(
-            OffscreenRendererWords::tr("the OpenGL context could not be made current on an offscreen surface"));
+        return fail(OffscreenRendererWords::tr(
+            "the OpenGL context could not be made current on an offscreen surface"));
     }
     m_rendererName = QString::fromLatin1(
         reinterpret_cast<const char *>(m_context->functions()->glGetString(GL_RENDERER)));

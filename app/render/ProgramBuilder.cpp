@@ -50,16 +50,19 @@ void explainDialect(std::vector<ShaderDiagnostic> &diagnostics, ShaderDialect di
             continue;
         const QString m = d.message;
         if (dialect == ShaderDialect::Es100
-            && (m.contains(QLatin1StringView("inverse")) || m.contains(QLatin1StringView("transpose"))))
-            d.message += ProgramBuilderWords::tr(" (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, "
+            && (m.contains(QLatin1StringView("inverse"))
+                || m.contains(QLatin1StringView("transpose"))))
+            d.message += ProgramBuilderWords::tr(
+                " (GLSL ES 1.00, WebGL 1, has no inverse() or transpose(): write #version 300 es, "
                 "or pass the normal matrix in as a uniform)");
         else if (dialect != ShaderDialect::Desktop && m.contains(QLatin1StringView("not supported"))
                  && m.contains(QLatin1StringView("version")))
-            d.message += ProgramBuilderWords::tr(" (this OpenGL driver does not run %1 shaders in a desktop "
+            d.message +=
+                ProgramBuilderWords::tr(" (this OpenGL driver does not run %1 shaders in a desktop "
                                         "context: it lacks ARB_ES%2_compatibility)")
-                             .arg(shaderDialectName(dialect),
-                                  dialect == ShaderDialect::Es300 ? QStringLiteral("3")
-                                                                  : QStringLiteral("2"));
+                    .arg(shaderDialectName(dialect),
+                         dialect == ShaderDialect::Es300 ? QStringLiteral("3")
+                                                         : QStringLiteral("2"));
     }
 }
 
@@ -186,8 +189,9 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
             out.report.diagnostics.insert(
                 out.report.diagnostics.begin(),
                 {BuildStep::Link, ShaderDiagnostic::Severity::Error, linkName, 0, 0,
-                 ProgramBuilderWords::tr("the vertex shader is %1 and the fragment shader %2: both stages "
-                                "must be written in the same GLSL (give both files)")
+                 ProgramBuilderWords::tr(
+                     "the vertex shader is %1 and the fragment shader %2: both stages "
+                     "must be written in the same GLSL (give both files)")
                      .arg(shaderDialectName(v), shaderDialectName(f))});
     }
     out.linkNs = timer.nsecsElapsed();

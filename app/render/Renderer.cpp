@@ -1,6 +1,5 @@
 #include "Renderer.h"
 
-
 #include "core/DetailSelection.h"
 #include "core/LightBound.h"
 #include "core/ObjectMatrices.h"
@@ -9,8 +8,8 @@
 
 #include <QCoreApplication>
 #include <algorithm>
-#include <glm/gtc/matrix_inverse.hpp>
 #include <cmath>
+#include <glm/gtc/matrix_inverse.hpp>
 #include <limits>
 
 namespace phonglab {

@@ -34,8 +34,9 @@ Result<> WarmUpDraw::create(Target target, int samples)
     m_fbo = std::make_unique<QOpenGLFramebufferObject>(QSize(kTargetSide, kTargetSide), format);
     if (!m_fbo->isValid()) {
         m_fbo.reset();
-        return fail(WarmUpDrawWords::tr("cannot create the %1-sample framebuffer for warming programs")
-                        .arg(samples));
+        return fail(
+            WarmUpDrawWords::tr("cannot create the %1-sample framebuffer for warming programs")
+                .arg(samples));
     }
     // Same interleaved layout as every scene mesh, so the vertex fetch code
     // generated here is the one the viewport needs too.

@@ -70,8 +70,9 @@ private slots:
     {
         const QString frag = write(withMistake(ShaderMistake::ReflectIncident).fragment.code,
                                    QStringLiteral("de.frag"));
-        const QStringList args{QStringLiteral("check"), checkScene(), QStringLiteral("--size"),
-                               kSize, QStringLiteral("--fragment"), frag};
+        const QStringList args{QStringLiteral("check"),      checkScene(),
+                               QStringLiteral("--size"),     kSize,
+                               QStringLiteral("--fragment"), frag};
         const ProcessRun english = runPhonglabUnderLocale(args, QStringLiteral("C"));
         const ProcessRun german = runPhonglabUnderLocale(args, QStringLiteral("de_DE.UTF-8"));
         QCOMPARE(english.exitCode, 1);
@@ -85,9 +86,9 @@ private slots:
         QVERIFY2(de.contains(QStringLiteral("reflect-incident")), qPrintable(de)); // keys stay
         QVERIFY2(!de.contains(QStringLiteral("explains")), qPrintable(de));
         // --lang outranks the locale, both ways.
-        QCOMPARE(runPhonglabUnderLocale(args + QStringList{QStringLiteral("--lang"),
-                                                           QStringLiteral("de")},
-                                        QStringLiteral("C"))
+        QCOMPARE(runPhonglabUnderLocale(
+                     args + QStringList{QStringLiteral("--lang"), QStringLiteral("de")},
+                     QStringLiteral("C"))
                      .out,
                  german.out);
         QCOMPARE(runPhonglabUnderLocale(args + QStringList{QStringLiteral("--lang=en")},

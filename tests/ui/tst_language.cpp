@@ -108,7 +108,7 @@ private slots:
         auto *german = m_window->findChild<QAction *>(QStringLiteral("language-de"));
         auto *english = m_window->findChild<QAction *>(QStringLiteral("language-en"));
         QVERIFY(german && english);
-        QVERIFY(german->isChecked()); // the language in use
+        QVERIFY(german->isChecked());                         // the language in use
         QCOMPARE(english->text(), QStringLiteral("English")); // each in its own words
         english->trigger();
         QCOMPARE(LanguageMenu::rememberedLanguage(), QStringLiteral("en"));
@@ -147,10 +147,9 @@ private slots:
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
         QCOMPARE(loaded.scene->objects[0].material.kd, glm::dvec3(0.5));
         QCOMPARE(loaded.scene->objects.size(), savedScene().objects.size());
-        const ProcessRun run =
-            runPhonglabUnderLocale({QStringLiteral("check"), path, QStringLiteral("--size"),
-                                    QStringLiteral("320x240")},
-                                   QStringLiteral("C"));
+        const ProcessRun run = runPhonglabUnderLocale(
+            {QStringLiteral("check"), path, QStringLiteral("--size"), QStringLiteral("320x240")},
+            QStringLiteral("C"));
         QVERIFY2(run.exitCode == 0, run.out.constData());
     }
 

@@ -45,23 +45,25 @@ SetLightCommand::SetLightCommand(SceneAccess access, int index, const PointLight
 }
 
 SetLightEnabledCommand::SetLightEnabledCommand(SceneAccess access, int index, bool on)
-    : SetPropertyCommand(std::move(access),
-                         (on ? CommandWords::tr("Switch on light %1") : CommandWords::tr("Switch off light %1")).arg(index + 1),
-                         -1, index, !on, on)
+    : SetPropertyCommand(
+        std::move(access),
+        (on ? CommandWords::tr("Switch on light %1") : CommandWords::tr("Switch off light %1"))
+            .arg(index + 1),
+        -1, index, !on, on)
 {
 }
 
 RenameLightCommand::RenameLightCommand(SceneAccess access, int index, const std::string &before,
                                        const std::string &after)
-    : SetPropertyCommand(std::move(access), CommandWords::tr("Rename light %1").arg(index + 1), -1, index, before,
-                         after)
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Rename light %1").arg(index + 1), -1,
+                         index, before, after)
 {
 }
 
 SetAmbientCommand::SetAmbientCommand(SceneAccess access, const glm::dvec3 &before,
                                      const glm::dvec3 &after)
-    : SetPropertyCommand(std::move(access), CommandWords::tr("Edit ambient light"), mergeIdFor(2, 0, 0), 0,
-                         before, after)
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Edit ambient light"),
+                         mergeIdFor(2, 0, 0), 0, before, after)
 {
 }
 
@@ -75,8 +77,8 @@ SetMaterialCommand::SetMaterialCommand(SceneAccess access, int object, const Mat
 
 SetTransformCommand::SetTransformCommand(SceneAccess access, int object, const Transform &before,
                                          const Transform &after, TransformField field)
-    : SetPropertyCommand(std::move(access), CommandWords::tr("Move object"), mergeIdFor(4, object, int(field)),
-                         object, before, after)
+    : SetPropertyCommand(std::move(access), CommandWords::tr("Move object"),
+                         mergeIdFor(4, object, int(field)), object, before, after)
 {
 }
 

@@ -1,12 +1,12 @@
 #include "GuiMain.h"
 
 #include "GuiArguments.h"
-#include "core/Language.h"
 #include "LanguageMenu.h"
 #include "MainWindow.h"
-#include "ui/viewport/Viewport.h"
+#include "core/Language.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QApplication>
 #include <QDir>
@@ -92,12 +92,12 @@ void openRequestedFiles(MainWindow &window, const QStringList &paths)
 // says why and leaves the default scene.
 void openSubmission(MainWindow &window, const GuiArguments &requested)
 {
-    const Result<> opened = window.openSubmission(
-        requested.files.front(), requested.vertexShader, requested.fragmentShader);
+    const Result<> opened = window.openSubmission(requested.files.front(), requested.vertexShader,
+                                                  requested.fragmentShader);
     if (!opened)
-        QMessageBox::warning(&window, QObject::tr("Cannot open"),
-                             QObject::tr("%1\n\nShowing the default scene instead.")
-                                 .arg(opened.error()));
+        QMessageBox::warning(
+            &window, QObject::tr("Cannot open"),
+            QObject::tr("%1\n\nShowing the default scene instead.").arg(opened.error()));
 }
 
 } // namespace

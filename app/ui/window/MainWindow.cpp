@@ -1,37 +1,37 @@
 #include "MainWindow.h"
 
 #include "DefaultLayout.h"
-#include "ui/viewport/DetailLevelLabel.h"
 #include "FileMenu.h"
-#include "LanguageMenu.h"
 #include "FileTypes.h"
-#include "ui/viewport/FrameStatsLabel.h"
-#include "ui/help/HelpMenu.h"
-#include "ui/scene/LightsDock.h"
-#include "ui/check/LiveCheck.h"
-#include "ui/shaders/LiveShaderController.h"
+#include "LanguageMenu.h"
 #include "LoadProgressWidget.h"
+#include "RecentFiles.h"
+#include "WarningBox.h"
+#include "core/SceneJson.h"
+#include "core/ScenePaths.h"
+#include "render/SceneUniforms.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/check/PixelInspectorDock.h"
+#include "ui/help/HelpMenu.h"
+#include "ui/performance/PerformanceDock.h"
+#include "ui/scene/LightsDock.h"
 #include "ui/scene/MaterialDock.h"
 #include "ui/scene/MeshStatsText.h"
 #include "ui/scene/ObjectDock.h"
-#include "ui/performance/PerformanceDock.h"
-#include "ui/check/PixelInspectorDock.h"
-#include "RecentFiles.h"
 #include "ui/scene/SceneDock.h"
 #include "ui/scene/SceneEditDockSet.h"
 #include "ui/scene/SceneLoadJob.h"
 #include "ui/scene/SceneLoadRequests.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/SceneShaderFiles.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/shaders/ShaderRecovery.h"
 #include "ui/uniforms/UniformsDock.h"
+#include "ui/viewport/DetailLevelLabel.h"
+#include "ui/viewport/FrameStatsLabel.h"
 #include "ui/viewport/Viewport.h"
-#include "WarningBox.h"
-#include "core/SceneJson.h"
-#include "core/ScenePaths.h"
-#include "render/SceneUniforms.h"
 
 #include <QAction>
 #include <QApplication>
@@ -380,7 +380,7 @@ Result<> MainWindow::openFiles(const QStringList &paths)
 }
 
 Result<> MainWindow::openSubmission(const QString &scenePath, const QString &vertexPath,
-                                     const QString &fragmentPath)
+                                    const QString &fragmentPath)
 {
     if (!isSceneFile(scenePath))
         return fail(tr("%1: not a scene file (.json)").arg(scenePath));
