@@ -244,9 +244,8 @@ int benchPath(const BenchArgs &args)
     return kExitOk;
 }
 
-int bench(const BenchArgs &args, int argc, char **argv)
+int bench(const BenchArgs &args)
 {
-    QApplication app(argc, argv); // Qt Charts draws with widgets
     if (!QDir().mkpath(args.outDir)) {
         printError(QStringLiteral("%1: cannot create the output folder").arg(args.outDir));
         return kExitFailure;
@@ -316,13 +315,18 @@ int bench(const BenchArgs &args, int argc, char **argv)
 
 } // namespace
 
+std::unique_ptr<QCoreApplication> makeWidgetsApplication(int &argc, char **argv)
+{
+    return std::make_unique<QApplication>(argc, argv);
+}
+
 int runBench(int argc, char **argv)
 {
     const QStringList arguments = argumentsFrom(argc, argv).mid(1);
     const auto parsed = parseBenchArgs(arguments);
     if (const int *code = std::get_if<int>(&parsed))
         return *code;
-    return bench(std::get<BenchArgs>(parsed), argc, argv);
+    return bench(std::get<BenchArgs>(parsed));
 }
 
 } // namespace phonglab::cli

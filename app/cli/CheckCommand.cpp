@@ -209,11 +209,10 @@ SceneLoadResult checkedScene(const CheckArgs &args)
 
 // `grade`'s child: draws and hands the drawing back (stdout and a PNG); the
 // parent judges it. Exit 0 whenever it could say what happened.
-int drawOnly(const CheckArgs &args, int argc, char **argv)
+int drawOnly(const CheckArgs &args)
 {
     beAGradedChild();
     injectGradedChildFault(args.fragmentPath);
-    QGuiApplication app(argc, argv);
     const SceneLoadResult loaded = checkedScene(args);
     if (!loaded.ok()) {
         CheckDrawing failed;
@@ -232,11 +231,10 @@ int drawOnly(const CheckArgs &args, int argc, char **argv)
     return kExitOk;
 }
 
-int check(const CheckArgs &args, int argc, char **argv)
+int check(const CheckArgs &args)
 {
     if (!args.drawOnlyPath.isEmpty())
-        return drawOnly(args, argc, argv);
-    QGuiApplication app(argc, argv);
+        return drawOnly(args);
     const SceneLoadResult loaded = checkedScene(args);
     const Scene scene = loaded.ok() ? *loaded.scene : Scene{};
     CheckOutcome outcome;
@@ -278,7 +276,7 @@ int runCheck(int argc, char **argv)
     const auto parsed = parseArgs(argumentsFrom(argc, argv).mid(1));
     if (const int *code = std::get_if<int>(&parsed))
         return *code;
-    return check(std::get<CheckArgs>(parsed), argc, argv);
+    return check(std::get<CheckArgs>(parsed));
 }
 
 } // namespace phonglab::cli

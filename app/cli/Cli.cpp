@@ -9,6 +9,7 @@
 #include "headless/HeadlessPlatform.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QString>
 
 namespace phonglab::cli {
@@ -22,12 +23,12 @@ namespace {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", QT_TRANSLATE_NOOP("phonglab::cli::Cli", "render a scene offscreen into a PNG"),
-     runRender},
+     runRender, makeGuiApplication},
     {"check",
      QT_TRANSLATE_NOOP(
          "phonglab::cli::Cli",
          "judge a shader against the exact image and name the mistake that explains a wrong one"),
-     runCheck},
+     runCheck, makeGuiApplication},
     {"grade",
      QT_TRANSLATE_NOOP(
          "phonglab::cli::Cli",
@@ -64,6 +65,16 @@ void printHelp(std::span<const Subcommand> more)
 
 } // namespace
 
+std::unique_ptr<QCoreApplication> makeCoreApplication(int &argc, char **argv)
+{
+    return std::make_unique<QCoreApplication>(argc, argv);
+}
+
+std::unique_ptr<QCoreApplication> makeGuiApplication(int &argc, char **argv)
+{
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
+
 std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> more)
 {
     if (argc < 2)
@@ -85,6 +96,7 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
                 // Commands draw only into framebuffer objects: without a
                 // (reachable) display server they render through EGL.
                 chooseCommandPlatform();
+                const std::unique_ptr<QCoreApplication> app = c.makeApplication(argc, argv);
                 return c.run(argc, argv);
             }
     if (first == QLatin1String("__import-mesh")) // internal, not in --help

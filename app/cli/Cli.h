@@ -1,13 +1,23 @@
 #pragma once
+#include <QCoreApplication>
+#include <memory>
 #include <optional>
 #include <span>
 
 namespace phonglab::cli {
 
+// The application object a command runs in, made before it reads its
+// arguments: from then on the run speaks its language (core/Language), its
+// usage errors included. `argc` must outlive it.
+using MakeApplication = std::unique_ptr<QCoreApplication> (*)(int &argc, char **argv);
+std::unique_ptr<QCoreApplication> makeCoreApplication(int &argc, char **argv);
+std::unique_ptr<QCoreApplication> makeGuiApplication(int &argc, char **argv); // draws (GL)
+
 struct Subcommand {
     const char *name;
     const char *summary; // one line in `phonglab --help`
     int (*run)(int argc, char **argv);
+    MakeApplication makeApplication = makeCoreApplication;
 };
 
 // Runs a subcommand when argv names one (or --help / --version) and returns

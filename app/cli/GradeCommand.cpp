@@ -229,9 +229,8 @@ Result<> writeOutputs(const GradeResults &results)
     return {};
 }
 
-int grade(const GradeArgs &args, int argc, char **argv)
+int grade(const GradeArgs &args)
 {
-    QCoreApplication app(argc, argv);
     GradeResults results;
     results.settings = args.settings;
     const ClassFolder folder = readClassFolder(args.settings.classFolder);
@@ -280,7 +279,7 @@ int runGrade(int argc, char **argv)
     const auto parsed = parseArgs(argumentsFrom(argc, argv).mid(1));
     if (const int *code = std::get_if<int>(&parsed))
         return *code;
-    return grade(std::get<GradeArgs>(parsed), argc, argv);
+    return grade(std::get<GradeArgs>(parsed));
 }
 
 } // namespace phonglab::cli

@@ -121,7 +121,7 @@ Result<BuildReport> buildProgram(Renderer &renderer, const RenderArgs &args, con
         chooseStageFiles(chosen, args.vertexPath, args.fragmentPath, args.shading.has_value()));
 }
 
-int render(const RenderArgs &args, int argc, char **argv)
+int render(const RenderArgs &args)
 {
     const SceneLoadResult loaded = loadSceneFile(args.scenePath);
     if (!loaded.ok()) {
@@ -135,7 +135,6 @@ int render(const RenderArgs &args, int argc, char **argv)
     for (const auto &[name, meaning] : args.bindings)
         scene.bindings[name] = meaning;
 
-    QGuiApplication app(argc, argv);
     OffscreenRenderer offscreen;
     if (const Result<> created = offscreen.create(); !created) {
         printError(created.error());
@@ -187,7 +186,7 @@ int runRender(int argc, char **argv)
     const auto parsed = parseArgs(arguments);
     if (const int *code = std::get_if<int>(&parsed))
         return *code;
-    return render(std::get<RenderArgs>(parsed), argc, argv);
+    return render(std::get<RenderArgs>(parsed));
 }
 
 } // namespace phonglab::cli

@@ -112,6 +112,14 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(QStringLiteral("'fr'")), qPrintable(r.err));
         QCOMPARE(runPhonglab({QStringLiteral("--lang")}).exitCode, 2);
+        // A usage error speaks the run's language too (the application is
+        // made before the arguments are read); its exit status does not change.
+        const ProcessRun german =
+            runPhonglabUnderLocale({QStringLiteral("check")}, QStringLiteral("de_DE.UTF-8"));
+        QCOMPARE(german.exitCode, 2);
+        QVERIFY2(!german.err.contains(QStringLiteral("usage:"))
+                     && german.err.contains(QStringLiteral("phonglab check SCENE.json")),
+                 qPrintable(german.err));
     }
 
     void helpNamesCheckAndItsKeys()
