@@ -1421,6 +1421,121 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::MeshText</name>
+    <message>
+        <source>triangle</source>
+        <translation>Dreieck</translation>
+    </message>
+    <message>
+        <source>triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>face</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>faces</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
+        <source>degenerate face</source>
+        <translation>entartete Fläche</translation>
+    </message>
+    <message>
+        <source>degenerate faces</source>
+        <translation>entartete Flächen</translation>
+    </message>
+    <message>
+        <source>face corner</source>
+        <translation>Flächenecke</translation>
+    </message>
+    <message>
+        <source>face corners</source>
+        <translation>Flächenecken</translation>
+    </message>
+    <message>
+        <source>non-manifold edge</source>
+        <translation>nicht-mannigfaltige Kante</translation>
+    </message>
+    <message>
+        <source>non-manifold edges</source>
+        <translation>nicht-mannigfaltige Kanten</translation>
+    </message>
+    <message>
+        <source>edge</source>
+        <translation>Kante</translation>
+    </message>
+    <message>
+        <source>edges</source>
+        <translation>Kanten</translation>
+    </message>
+    <message>
+        <source>vertex</source>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <source>vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>unreadable line</source>
+        <translation>unlesbare Zeile</translation>
+    </message>
+    <message>
+        <source>unreadable lines</source>
+        <translation>unlesbare Zeilen</translation>
+    </message>
+    <message>
+        <source>free-form curve or surface statement</source>
+        <translation>Anweisung für eine Freiformkurve oder -fläche</translation>
+    </message>
+    <message>
+        <source>free-form curve and surface statements</source>
+        <translation>Anweisungen für Freiformkurven und -flächen</translation>
+    </message>
+    <message>
+        <source>face corner refers</source>
+        <translation>Flächenecke verweist</translation>
+    </message>
+    <message>
+        <source>face corners refer</source>
+        <translation>Flächenecken verweisen</translation>
+    </message>
+    <message>
+        <source>face line</source>
+        <translation>Flächenzeile</translation>
+    </message>
+    <message>
+        <source>face lines</source>
+        <translation>Flächenzeilen</translation>
+    </message>
+    <message>
+        <source>message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>Meldungen</translation>
+    </message>
+    <message>
+        <source>facet normal is</source>
+        <translation>Facettennormale ist</translation>
+    </message>
+    <message>
+        <source>facet normals are</source>
+        <translation>Facettennormalen sind</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::NormalsEditor</name>
     <message>
         <source>Normals</source>

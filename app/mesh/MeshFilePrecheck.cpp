@@ -211,7 +211,9 @@ void dropNonFiniteTriangles(const QString &path, MeshFilePrecheck &check)
     check.rewritten = std::move(kept);
     check.declaredFaces = count;
     check.warnings << MeshFilePrecheckWords::tr("dropped %1 with NaN or infinite coordinates")
-                          .arg(meshtext::counted(bad, "triangle", "triangles"));
+                          .arg(meshtext::counted(
+                              bad, QT_TRANSLATE_NOOP("phonglab::MeshText", "triangle"),
+                              QT_TRANSLATE_NOOP("phonglab::MeshText", "triangles")));
     if (count == 0)
         check.error = MeshFilePrecheckWords::tr("every triangle has NaN or infinite coordinates");
 }
@@ -250,7 +252,9 @@ void checkStl(const QString &path, std::string_view head, MeshFilePrecheck &chec
             return;
         }
         check.warnings << MeshFilePrecheckWords::tr("ignored %1 after the last triangle")
-                              .arg(meshtext::counted(size - expected, "byte", "bytes"));
+                              .arg(meshtext::counted(
+                                  size - expected, QT_TRANSLATE_NOOP("phonglab::MeshText", "byte"),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "bytes")));
     }
     check.binary = true;
     check.declaredFaces = quint64(expected - 84) / 50;

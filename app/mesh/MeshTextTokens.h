@@ -1,4 +1,5 @@
 #pragma once
+#include <QCoreApplication>
 #include <QString>
 
 #include <algorithm>
@@ -137,10 +138,13 @@ inline bool isIndex(std::string_view t)
     return parseInteger(t, v) && v >= INT32_MIN && v <= std::int64_t(UINT32_MAX);
 }
 
-// "1 face", "2 faces": a count and its noun for a warning.
+// "1 face", "2 faces": a count and its noun for a warning, the noun in the
+// run's language (callers mark both forms with QT_TRANSLATE_NOOP in the
+// context "phonglab::MeshText").
 inline QString counted(quint64 n, const char *one, const char *many)
 {
-    return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
+    return QStringLiteral("%1 %2").arg(n).arg(
+        QCoreApplication::translate("phonglab::MeshText", n == 1 ? one : many));
 }
 
 // A token quoted for an error message, cut short when long.

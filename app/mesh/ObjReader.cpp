@@ -372,8 +372,10 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
     }
     if (m_badLines)
         result.warnings << ObjReaderWords::tr("skipped %1 (first at line %2: \"%3\")")
-                               .arg(meshtext::counted(m_badLines, "unreadable line",
-                                                      "unreadable lines"))
+                               .arg(meshtext::counted(
+                                   m_badLines,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "unreadable line"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "unreadable lines")))
                                .arg(m_firstBadLine)
                                .arg(QString::fromUtf8(m_firstBadText));
     if (m_lastLineBad && !endsInNewline)
@@ -381,14 +383,19 @@ void ObjParser::finish(MeshReadResult &result, bool endsInNewline)
             "the last line is incomplete (the file looks truncated)");
     if (m_freeform)
         result.warnings << ObjReaderWords::tr("ignored %1 (only polygons are read)")
-                               .arg(meshtext::counted(m_freeform,
-                                                      "free-form curve or surface statement",
-                                                      "free-form curve and surface statements"));
+                               .arg(meshtext::counted(
+                                   m_freeform,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText",
+                                                     "free-form curve or surface statement"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText",
+                                                     "free-form curve and surface statements")));
     if (missingNormals)
         result.warnings << ObjReaderWords::tr(
                                "%1 to normals the file does not have; they get computed normals")
-                               .arg(meshtext::counted(missingNormals, "face corner refers",
-                                                      "face corners refer"));
+                               .arg(meshtext::counted(
+                                   missingNormals,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "face corner refers"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "face corners refer")));
     result.mesh = std::move(m_mesh);
 }
 

@@ -282,7 +282,9 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     if (strayLines)
         check.warnings << OffPrecheckWords::tr("ignored the values after the vertex indices on %1 "
                                                "(face colours need a COFF header)")
-                              .arg(meshtext::counted(strayLines, "face line", "face lines"));
+                              .arg(meshtext::counted(
+                                  strayLines, QT_TRANSLATE_NOOP("phonglab::MeshText", "face line"),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "face lines")));
     tokens.nextLine();
     if (!tokens.next().empty())
         check.warnings << OffPrecheckWords::tr(

@@ -195,8 +195,10 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         result.warnings << QStringLiteral("OpenMesh: %1").arg(messages[i]);
     if (messages.size() > kMaxMessages)
         result.warnings << QStringLiteral("OpenMesh: %1 more")
-                               .arg(meshtext::counted(messages.size() - kMaxMessages, "message",
-                                                      "messages"));
+                               .arg(meshtext::counted(
+                                   messages.size() - kMaxMessages,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "message"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "messages")));
 
     const std::size_t faceCalls = importer.faceCallCount();
     PolygonMesh mesh = importer.takeMesh(result.warnings);
@@ -204,19 +206,25 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
         && check.format != MeshFileFormat::Stl)
         result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
                                .arg(mesh.positions.size())
-                               .arg(
-                                   meshtext::counted(check.declaredVertices, "vertex", "vertices"));
+                               .arg(meshtext::counted(
+                                   check.declaredVertices,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
     if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
         // OpenMesh's STL reader merges corners by position and skips
         // triangles left with a repeated corner.
-        result.warnings << OpenMeshReaderWords::tr(
-                               "dropped %1 with two corners at the same position")
-                               .arg(meshtext::counted(check.declaredFaces - faceCalls, "triangle",
-                                                      "triangles"));
+        result.warnings
+            << OpenMeshReaderWords::tr("dropped %1 with two corners at the same position")
+                   .arg(meshtext::counted(check.declaredFaces - faceCalls,
+                                          QT_TRANSLATE_NOOP("phonglab::MeshText", "triangle"),
+                                          QT_TRANSLATE_NOOP("phonglab::MeshText", "triangles")));
     } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
         result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
                                .arg(faceCalls)
-                               .arg(meshtext::counted(check.declaredFaces, "face", "faces"));
+                               .arg(meshtext::counted(
+                                   check.declaredFaces,
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
     }
     if (mesh.faceCount() == 0) {
         result.error = OpenMeshReaderWords::tr("no faces were read");

@@ -351,7 +351,10 @@ void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
     }
     if (body.remaining() > 0)
         check.warnings << PlyPrecheckWords::tr("ignored %1 after the last element")
-                              .arg(meshtext::counted(quint64(body.remaining()), "byte", "bytes"));
+                              .arg(meshtext::counted(
+                                  quint64(body.remaining()),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "byte"),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "bytes")));
 }
 
 bool valueFits(std::string_view t, const PlyType &type)

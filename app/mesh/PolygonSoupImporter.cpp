@@ -171,7 +171,9 @@ void PolygonSoupImporter::buildHalfedgeFaces(QStringList &warnings)
     if (broken)
         warnings << PolygonSoupImporterWords::tr(
                         "dropped %1 whose halfedge loop in the .om file is broken")
-                        .arg(meshtext::counted(broken, "face", "faces"));
+                        .arg(meshtext::counted(broken,
+                                               QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                               QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
     m_faceHalfedge.clear();
 }
 
@@ -205,7 +207,9 @@ void PolygonSoupImporter::attachNormals(QStringList &warnings)
     if (unusable)
         warnings << PolygonSoupImporterWords::tr(
                         "%1 zero or invalid; those faces get computed normals")
-                        .arg(meshtext::counted(unusable, "facet normal is", "facet normals are"));
+                        .arg(meshtext::counted(
+                            unusable, QT_TRANSLATE_NOOP("phonglab::MeshText", "facet normal is"),
+                            QT_TRANSLATE_NOOP("phonglab::MeshText", "facet normals are")));
     m_mesh.normals = std::move(m_faceNormals);
     m_mesh.cornerNormal.resize(m_mesh.cornerPosition.size());
     for (std::size_t f = 0; f < m_mesh.faceCount(); ++f) {
