@@ -314,6 +314,52 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::BenchEngine</name>
+    <message>
+        <source>the bench has no OpenGL context (initialize() failed or was not called)</source>
+        <translation>der Benchmark hat keinen OpenGL-Kontext (initialize() ist fehlgeschlagen oder wurde nicht aufgerufen)</translation>
+    </message>
+    <message>
+        <source>%1: loading meshes</source>
+        <translation>%1: Meshes werden geladen</translation>
+    </message>
+    <message>
+        <source>%1: no reference: %2</source>
+        <translation>%1: keine Referenz: %2</translation>
+    </message>
+    <message>
+        <source>%1: no silhouette mask: %2</source>
+        <translation>%1: keine Silhouettenmaske: %2</translation>
+    </message>
+    <message>
+        <source>%1, per-object fit: %2</source>
+        <translation>%1, Anpassung pro Objekt: %2</translation>
+    </message>
+    <message>
+        <source>%1: detail %2 draws the same %3 triangles as the level before; skipped</source>
+        <translation>%1: Detailstufe %2 zeichnet dieselben %3 Dreiecke wie die Stufe davor; übersprungen</translation>
+    </message>
+    <message>
+        <source>%1 at detail %2: %3</source>
+        <translation>%1 in Detailstufe %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: the shipped %2 shaders did not build: %3</source>
+        <translation>%1: die mitgelieferten Shader für %2 ließen sich nicht bauen: %3</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BenchPictures</name>
+    <message>
+        <source>CPU reference (exact)</source>
+        <translation>CPU-Referenz (exakt)</translation>
+    </message>
+    <message>
+        <source>error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band</source>
+        <translation>Fehler: grün exakt, gelb 4/255, rot ≥ 8/255, blau Silhouettenrand</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BenchProcess</name>
     <message>
         <source>a measurement is already running</source>
@@ -338,6 +384,49 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     <message>
         <source>the measurement wrote no results: %1</source>
         <translation>die Messung hat keine Ergebnisse geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::BenchResult</name>
+    <message>
+        <source>is not a number</source>
+        <translation>ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>is not a whole number</source>
+        <translation>ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>is out of range</source>
+        <translation>liegt außerhalb des gültigen Bereichs</translation>
+    </message>
+    <message>
+        <source>is not 0 or 1</source>
+        <translation>ist nicht 0 oder 1</translation>
+    </message>
+    <message>
+        <source>%1 line %2: unbalanced quotes</source>
+        <translation>%1 Zeile %2: Anführungszeichen nicht geschlossen</translation>
+    </message>
+    <message>
+        <source>%1: empty file, expected a header line starting with &apos;%2&apos;</source>
+        <translation>%1: leere Datei, Kopfzeile erwartet, die mit &apos;%2&apos; beginnt</translation>
+    </message>
+    <message>
+        <source>%1 line %2: column &apos;%3&apos; appears twice</source>
+        <translation>%1 Zeile %2: Spalte &apos;%3&apos; kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>%1 line %2: missing column%3 %4</source>
+        <translation>%1 Zeile %2: Spalten-Label%3 nicht gefunden: %4</translation>
+    </message>
+    <message>
+        <source>%1: expected %2 fields as in the header, found %3</source>
+        <translation>%1: %2 Felder wie in der Kopfzeile erwartet, gefunden: %3</translation>
+    </message>
+    <message>
+        <source>%1: method is empty</source>
+        <translation>%1: method ist leer</translation>
     </message>
 </context>
 <context>
@@ -441,6 +530,33 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::ChartImages</name>
+    <message>
+        <source>charts need a QApplication (Qt Charts are widgets)</source>
+        <translation>Diagramme brauchen eine QApplication (Qt Charts sind Widgets)</translation>
+    </message>
+    <message>
+        <source>no output file given</source>
+        <translation>keine Ausgabedatei angegeben</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>PhongLab benchmark chart</source>
+        <translation>PhongLab-Benchmark-Diagramm</translation>
+    </message>
+    <message>
+        <source>cannot write %1: SVG output failed</source>
+        <translation>%1 kann nicht geschrieben werden: SVG-Ausgabe fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>nothing to draw</source>
+        <translation>nichts zu zeichnen</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::CheckOverlay</name>
     <message>
         <source>exact</source>
@@ -510,6 +626,61 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     <message>
         <source>%1 — PhongLab Documentation</source>
         <translation>%1 — PhongLab-Dokumentation</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ErrorBudget</name>
+    <message>
+        <source>%1 at full detail</source>
+        <translation>%1 in voller Detailstufe</translation>
+    </message>
+    <message>
+        <source>%1 at detail %2</source>
+        <translation>%1 in Detailstufe %2</translation>
+    </message>
+    <message>
+        <source>max error %1/255</source>
+        <translation>max. Fehler %1/255</translation>
+    </message>
+    <message>
+        <source>max error ≤ %1/255</source>
+        <translation>max. Fehler ≤ %1/255</translation>
+    </message>
+    <message>
+        <source>nothing meets %1: no measured rows</source>
+        <translation>nichts erfüllt %1: keine gemessenen Zeilen</translation>
+    </message>
+    <message>
+        <source>nothing meets %1: the best measured was %2 (%3)</source>
+        <translation>nichts erfüllt %1: das beste gemessene Ergebnis war %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) meets %3; %4; no full-detail Phong row to compare against</source>
+        <translation>%1 (%2) erfüllt %3; %4; keine Phong-Zeile in voller Detailstufe zum Vergleich</translation>
+    </message>
+    <message>
+        <source>%1 is the cheapest that meets %2; %3</source>
+        <translation>%1 ist die günstigste Variante, die %2 erfüllt; %3</translation>
+    </message>
+    <message>
+        <source>%1 more triangles</source>
+        <translation>%1 Dreiecke mehr</translation>
+    </message>
+    <message>
+        <source>%1 ms more</source>
+        <translation>%1 ms mehr</translation>
+    </message>
+    <message>
+        <source>costs </source>
+        <translation>kostet </translation>
+    </message>
+    <message>
+        <source> but costs </source>
+        <translation> kostet aber </translation>
+    </message>
+    <message>
+        <source>saves nothing</source>
+        <translation>spart nichts</translation>
     </message>
 </context>
 <context>
@@ -759,6 +930,21 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px</source>
         <translation>PSNR %1 dB, RMSE %2, max. %3/255 bei (%4,%5), %6 px</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::LabelledChart</name>
+    <message>
+        <source>log; 0 drawn at %1</source>
+        <translation>log; 0 bei %1 dargestellt</translation>
+    </message>
+    <message>
+        <source>Pareto front</source>
+        <translation>Pareto-Front</translation>
+    </message>
+    <message>
+        <source>Pareto front (points)</source>
+        <translation>Pareto-Front (Punkte)</translation>
     </message>
 </context>
 <context>
@@ -1536,6 +1722,13 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::NormalStudyOutput</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: Schreiben nicht möglich: %2</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::NormalsEditor</name>
     <message>
         <source>Normals</source>
@@ -1605,6 +1798,33 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>Object</source>
         <translation>Objekt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ObjectFit</name>
+    <message>
+        <source>no per-object rows: nothing to fit object by object</source>
+        <translation>keine Zeilen pro Objekt: nichts Objekt für Objekt anzupassen</translation>
+    </message>
+    <message>
+        <source>no combination of the objects&apos; rows meets %1</source>
+        <translation>keine Kombination der Zeilen der Objekte erfüllt %1</translation>
+    </message>
+    <message>
+        <source>nothing meets %1 for %2</source>
+        <translation>nichts erfüllt %1 für %2</translation>
+    </message>
+    <message>
+        <source> against %1 ms at full-detail Phong</source>
+        <translation> gegenüber %1 ms mit Phong in voller Detailstufe</translation>
+    </message>
+    <message>
+        <source>; %1 limits the saving (its fastest, %2 at %3, errs %4/255)</source>
+        <translation>; %1 begrenzt die Ersparnis (seine schnellste Variante, %2 in Detailstufe %3, weicht um %4/255 ab)</translation>
+    </message>
+    <message>
+        <source>; every object at its fastest</source>
+        <translation>; jedes Objekt in seiner schnellsten Variante</translation>
     </message>
 </context>
 <context>
@@ -1805,6 +2025,56 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>no faces were read</source>
         <translation>es wurden keine Flächen gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PathBench</name>
+    <message>
+        <source>the path bench has no OpenGL context</source>
+        <translation>der Pfad-Benchmark hat keinen OpenGL-Kontext</translation>
+    </message>
+    <message>
+        <source>%1, frame %2: no reference: %3</source>
+        <translation>%1, Frame %2: keine Referenz: %3</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PathChart</name>
+    <message>
+        <source>%1 — %2: %3 of %4 frames over budget (%5)</source>
+        <translation>%1 — %2: %3 von %4 Frames über dem Budget (%5)</translation>
+    </message>
+    <message>
+        <source>max error (auto detail, unseen lights left out)</source>
+        <translation>max. Fehler (automatische Detailstufe, unsichtbare Lichtquellen weggelassen)</translation>
+    </message>
+    <message>
+        <source>frame ms, auto detail</source>
+        <translation>Frame-ms, automatische Detailstufe</translation>
+    </message>
+    <message>
+        <source>frame ms, full detail</source>
+        <translation>Frame-ms, volle Detailstufe</translation>
+    </message>
+    <message>
+        <source>frame along the path</source>
+        <translation>Frame entlang des Pfads</translation>
+    </message>
+    <message>
+        <source>max error, 8-bit steps</source>
+        <translation>max. Fehler, 8-Bit-Stufen</translation>
+    </message>
+    <message>
+        <source>ms per frame</source>
+        <translation>ms pro Frame</translation>
+    </message>
+    <message>
+        <source>no camera path to chart</source>
+        <translation>kein Kamerapfad für ein Diagramm</translation>
+    </message>
+    <message>
+        <source>PhongLab camera paths: error and time per frame</source>
+        <translation>PhongLab-Kamerapfade: Fehler und Zeit pro Frame</translation>
     </message>
 </context>
 <context>
@@ -2956,6 +3226,45 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::SpeedAccuracyChart</name>
+    <message>
+        <source>frame time (ms, median)</source>
+        <translation>Framezeit (ms, Median)</translation>
+    </message>
+    <message>
+        <source>8-bit steps</source>
+        <translation>8-Bit-Stufen</translation>
+    </message>
+    <message>
+        <source>no normal-study rows to chart</source>
+        <translation>keine Zeilen der Normalenstudie für ein Diagramm</translation>
+    </message>
+    <message>
+        <source>Normal methods: time against angular error</source>
+        <translation>Normalenverfahren: Zeit gegenüber Winkelfehler</translation>
+    </message>
+    <message>
+        <source>time (ms)</source>
+        <translation>Zeit (ms)</translation>
+    </message>
+    <message>
+        <source>mean angular error (degrees)</source>
+        <translation>mittlerer Winkelfehler (Grad)</translation>
+    </message>
+    <message>
+        <source>panel size %1×%2 is empty</source>
+        <translation>Diagrammfläche %1×%2 ist leer</translation>
+    </message>
+    <message>
+        <source>no benchmark rows to chart</source>
+        <translation>keine Benchmark-Zeilen für ein Diagramm</translation>
+    </message>
+    <message>
+        <source>PhongLab: frame time against error</source>
+        <translation>PhongLab: Framezeit gegenüber Fehler</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::UniformFloatRow</name>
     <message>
         <source>Refused: %1</source>
@@ -3057,6 +3366,284 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     <message>
         <source>cannot create the %1-sample framebuffer for warming programs</source>
         <translation>der Framebuffer mit %1 Samples zum Aufwärmen der Programme kann nicht erstellt werden</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::BenchArgs</name>
+    <message>
+        <source>usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]
+                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] [--images] [--normals]
+       phonglab bench --from results.csv [--out DIR] [--budget SPEC]
+       phonglab bench --path orbit|dolly|FILE.json [--path-frames N] [--scene FILE ...] [--out DIR]
+                      [--budget SPEC] [--size WxH] [--frames N] [--images]</source>
+        <translation>Aufruf: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]
+                       [--frames N] [--lights LIST] [--methods LIST] [--details LIST] [--images] [--normals]
+        phonglab bench --from results.csv [--out DIR] [--budget SPEC]
+        phonglab bench --path orbit|dolly|FILE.json [--path-frames N] [--scene FILE ...] [--out DIR]
+                       [--budget SPEC] [--size WxH] [--frames N] [--images]</translation>
+    </message>
+    <message>
+        <source>
+
+Measures every shading method at every level of detail under 1, 4 and 8 lights (and the
+scene&apos;s own lights): frame time against the error from the CPU double-precision reference.
+
+  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and
+                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)
+  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores
+  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)
+  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB
+  --size WxH       frame size (default 800x600, --quick 400x300)
+  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)
+  --lights LIST    light counts, comma separated, 1..8, and/or &apos;scene&apos; (default 1,4,8,scene)
+  --methods LIST   shading methods, comma separated (default flat,gouraud,faceted,blinn-phong,phong)
+  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625
+  --images         also write render | reference | error pictures into DIR/images
+  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.
+                   against another --budget); writes fit.csv and the chart into DIR
+  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run
+                   too (a full run always has it)
+  --path SPEC      instead of the sweep: draw each scene along a camera path with auto detail and
+                   unseen lights left out, every frame against the reference; SPEC is orbit (one
+                   turn moving out to 2.5x), dolly (from just outside the scene to 32x away) or a
+                   keyframe file (docs/speed-vs-accuracy.md). Prints &apos;frames over budget: K of N&apos;;
+                   writes DIR/path.csv and DIR/path.png/svg. Default scenes: default and sphere;
+                   400x300 px, 10 timed frames per path frame
+  --path-frames N  frames of an orbit or dolly, 2..10000 (default 24)
+
+Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the
+rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit
+steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong
+uses the matched exponent 4n (n = the material&apos;s shininess), as shaders/blinn-phong.frag does.
+
+Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.</source>
+        <translation>
+
+Misst jedes Schattierungsverfahren in jeder Detailstufe unter 1, 4 und 8 Lichtquellen (und den
+eigenen Lichtquellen der Szene): Framezeit gegenüber dem Fehler zur CPU-Referenz in doppelter
+Genauigkeit.
+
+  --scene FILE     eine zu messende Szene (wiederholbar); Standard: die mitgelieferten Szenen default
+                   (Baum und Wolke), sphere, torus und grazing (--quick: default und sphere)
+  --quick          400x300 px, Detailstufen 100/12.5/1.6 %: unter einer Minute auf zwei Kernen
+  --out DIR        Ordner für results.csv, fit.csv, chart.png und chart.svg (Standard ./phonglab-bench)
+  --budget SPEC    Fehlerbudget für die Anpassung: N (max. Fehler N/255, Standard 2) oder psnr:DB
+  --size WxH       Bildgröße (Standard 800x600, --quick 400x300)
+  --frames N       gemessene Frames pro Konfiguration nach 3 Aufwärm-Frames, mindestens 20 (Standard 20)
+  --lights LIST    Anzahlen der Lichtquellen, durch Kommas getrennt, 1..8, und/oder &apos;scene&apos;
+                   (Standard 1,4,8,scene)
+  --methods LIST   Schattierungsverfahren, durch Kommas getrennt
+                   (Standard flat,gouraud,faceted,blinn-phong,phong)
+  --details LIST   Anteile der Detailstufen in (0, 1], durch Kommas getrennt, z. B. 1,0.25,0.0625
+  --images         zusätzlich Bilder Render | Referenz | Fehler nach DIR/images schreiben
+  --from CSV       nichts messen: die Zeilen einer früheren results.csv anpassen und als Diagramm
+                   darstellen (z. B. mit einem anderen --budget); schreibt fit.csv und das Diagramm
+                   nach DIR
+  --normals        die Studie der Normalenverfahren (DIR/normals.csv, normals.png/svg) auch bei einem
+                   --quick-Lauf (ein vollständiger Lauf enthält sie immer)
+  --path SPEC      statt der Messreihe: jede Szene entlang eines Kamerapfads zeichnen, mit automatischer
+                   Detailstufe und ohne unsichtbare Lichtquellen, jeden Frame gegenüber der Referenz;
+                   SPEC ist orbit (eine Umdrehung, die sich bis auf 2.5x entfernt), dolly (von knapp
+                   außerhalb der Szene bis 32x so weit weg) oder eine Keyframe-Datei
+                   (docs/speed-vs-accuracy.md). Gibt &apos;frames over budget: K of N&apos; aus; schreibt
+                   DIR/path.csv und DIR/path.png/svg. Standardszenen: default und sphere;
+                   400x300 px, 10 gemessene Frames pro Pfad-Frame
+  --path-frames N  Frames eines orbit oder dolly, 2..10000 (Standard 24)
+
+Die Framezeit ist der Median der Echtzeit von Rendern + glFinish (auf llvmpipe verpasst eine
+Timer-Abfrage die Rasterizer-Threads); gpu_ms in results.csv ist GL_TIME_ELAPSED auf echten GPUs.
+Fehler sind in 8-Bit-Stufen angegeben, mehr als 2 px von einer Silhouette entfernt (dem Umriss und
+jeder verdeckenden Kontur). Blinn-Phong verwendet den entsprechenden Exponenten 4n (n = der
+Glanzexponent des Materials), wie es shaders/blinn-phong.frag tut.
+
+Exit-Code: 0 Erfolg, 1 eine Szene konnte nicht geladen oder gerendert werden, 2 falsche Argumente.</translation>
+    </message>
+    <message>
+        <source>Show help.</source>
+        <translation>Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Scene file.</source>
+        <translation>Szenendatei.</translation>
+    </message>
+    <message>
+        <source>Short run.</source>
+        <translation>Kurzer Lauf.</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>Ausgabeordner.</translation>
+    </message>
+    <message>
+        <source>Error budget.</source>
+        <translation>Fehlerbudget.</translation>
+    </message>
+    <message>
+        <source>Frame size.</source>
+        <translation>Bildgröße.</translation>
+    </message>
+    <message>
+        <source>Timed frames.</source>
+        <translation>Gemessene Frames.</translation>
+    </message>
+    <message>
+        <source>Light counts.</source>
+        <translation>Anzahl der Lichtquellen.</translation>
+    </message>
+    <message>
+        <source>Detail fractions.</source>
+        <translation>Anteile der Detailstufen.</translation>
+    </message>
+    <message>
+        <source>Write pictures.</source>
+        <translation>Bilder schreiben.</translation>
+    </message>
+    <message>
+        <source>Normal-method study.</source>
+        <translation>Studie der Normalenverfahren.</translation>
+    </message>
+    <message>
+        <source>Earlier results.</source>
+        <translation>Frühere Ergebnisse.</translation>
+    </message>
+    <message>
+        <source>Camera path.</source>
+        <translation>Kamerapfad.</translation>
+    </message>
+    <message>
+        <source>Path frames.</source>
+        <translation>Frames des Pfads.</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos; (scenes go after --scene)</source>
+        <translation>unerwartetes Argument &apos;%1&apos; (Szenen gehören hinter --scene)</translation>
+    </message>
+    <message>
+        <source>--from measures nothing: --%1 does not go with it</source>
+        <translation>--from misst nichts: --%1 passt nicht dazu</translation>
+    </message>
+    <message>
+        <source>--from: empty file name</source>
+        <translation>--from: leerer Dateiname</translation>
+    </message>
+    <message>
+        <source>--path measures a camera path: --%1 does not go with it</source>
+        <translation>--path misst einen Kamerapfad: --%1 passt nicht dazu</translation>
+    </message>
+    <message>
+        <source>--path: expected orbit, dolly or a keyframe file</source>
+        <translation>--path: orbit, dolly oder eine Keyframe-Datei erwartet</translation>
+    </message>
+    <message>
+        <source>--path-frames goes with --path orbit or --path dolly</source>
+        <translation>--path-frames gehört zu --path orbit oder --path dolly</translation>
+    </message>
+    <message>
+        <source>--path-frames: expected a whole number from 2 to 10000, got &apos;%1&apos;</source>
+        <translation>--path-frames: ganze Zahl von 2 bis 10000 erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--out: empty folder name</source>
+        <translation>--out: leerer Ordnername</translation>
+    </message>
+    <message>
+        <source>--budget: expected N (max error N/255) or psnr:DB, got &apos;%1&apos;</source>
+        <translation>--budget: N (max. Fehler N/255) oder psnr:DB erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--size: expected WxH with 16..8192 pixels per side, got &apos;%1&apos;</source>
+        <translation>--size: WxH mit 16..8192 Pixeln pro Seite erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--frames: expected a whole number from %1 to 10000, got &apos;%2&apos;</source>
+        <translation>--frames: ganze Zahl von %1 bis 10000 erwartet, erhalten: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--lights: expected counts 1..%1 and/or &apos;scene&apos;, comma separated, got &apos;%2&apos;</source>
+        <translation>--lights: Anzahlen 1..%1 und/oder &apos;scene&apos;, durch Kommas getrennt, erwartet, erhalten: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--methods: expected names from flat, gouraud, faceted, blinn-phong, phong, got &apos;%1&apos;</source>
+        <translation>--methods: Namen aus flat, gouraud, faceted, blinn-phong, phong erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--details: expected fractions in (0, 1], comma separated, got &apos;%1&apos;</source>
+        <translation>--details: Anteile in (0, 1], durch Kommas getrennt, erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::BenchCommand</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: Schreiben nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>
+fit to budget (%1, the scene&apos;s own lights, %2 px silhouette band left out):</source>
+        <translation>
+Anpassung an das Budget (%1, die eigenen Lichtquellen der Szene, %2 px Silhouettenrand ausgelassen):</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: Lesen nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>phonglab bench --path %1: %2 scene(s), %3x%4 px, %5 timed frames per path frame, budget %6, GL: %7</source>
+        <translation>phonglab bench --path %1: %2 Szene(n), %3x%4 px, %5 gemessene Frames pro Pfad-Frame, Budget %6, GL: %7</translation>
+    </message>
+    <message>
+        <source>every object at &quot;detail&quot;: &quot;auto&quot; (%1 px, shading within %2 steps), lights left out below %2 steps; against the exact Phong image and the same frame at full detail with every light
+</source>
+        <translation>jedes Objekt mit &quot;detail&quot;: &quot;auto&quot; (%1 px, Schattierung innerhalb von %2 Stufen), Lichtquellen unter %2 Stufen weggelassen; verglichen mit dem exakten Phong-Bild und demselben Frame in voller Detailstufe mit allen Lichtquellen
+</translation>
+    </message>
+    <message>
+        <source>  %1 frame %2/%3: distance %4, levels %5, %6 triangles (full %7), %8 lights left out, max error %9/255%10 (full detail %13/255), %11 ms (full %12 ms)</source>
+        <translation>  %1 Frame %2/%3: Abstand %4, Detailstufen %5, %6 Dreiecke (voll %7), %8 Lichtquellen weggelassen, max. Fehler %9/255%10 (volle Detailstufe %13/255), %11 ms (voll %12 ms)</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3 of %4 frames over budget (at full detail: %7); triangles %5 saved, time %6 saved against full detail</source>
+        <translation>%1, %2: %3 von %4 Frames über dem Budget (in voller Detailstufe: %7); Dreiecke: %5 gespart, Zeit: %6 gespart gegenüber voller Detailstufe</translation>
+    </message>
+    <message>
+        <source>over budget at full detail with every light: %1 of %2 (what the method itself misses; no model can do better there)</source>
+        <translation>über dem Budget in voller Detailstufe mit allen Lichtquellen: %1 von %2 (was das Schattierungsverfahren selbst verfehlt; besser kann dort kein Modell sein)</translation>
+    </message>
+    <message>
+        <source>triangles drawn: %1 against %2 at full detail (%3 saved); frame time: %4 ms against %5 ms (%6 saved), summed over the frames</source>
+        <translation>gezeichnete Dreiecke: %1 gegenüber %2 in voller Detailstufe (%3 gespart); Framezeit: %4 ms gegenüber %5 ms (%6 gespart), summiert über die Frames</translation>
+    </message>
+    <message>
+        <source>done in %1 s</source>
+        <translation>fertig in %1 s</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1: der Ausgabeordner kann nicht erstellt werden</translation>
+    </message>
+    <message>
+        <source>phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7</source>
+        <translation>phonglab bench%1: %2 Szene(n), %3x%4 px, %5 gemessene Frames nach %6 Aufwärm-Frames, GL: %7</translation>
+    </message>
+    <message>
+        <source>frame ms = median wall time of render + glFinish; cpu ms = submission; errors in 8-bit steps against the CPU reference; hl = inside the specular highlight; * = the scene&apos;s own lights; blinn-phong uses the matched exponent 4n
+</source>
+        <translation>frame ms = Median der Echtzeit von Rendern + glFinish; cpu ms = Übergabe der Befehle; Fehler in 8-Bit-Stufen gegenüber der CPU-Referenz; hl = innerhalb des Glanzlichts; * = die eigenen Lichtquellen der Szene; blinn-phong verwendet den entsprechenden Exponenten 4n
+</translation>
+    </message>
+    <message>
+        <source>
+per-object fit (%1; each object drawn alone for its time, its own pixels for its error):</source>
+        <translation>
+Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine eigenen Pixel für seinen Fehler):</translation>
+    </message>
+    <message>
+        <source>  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)</source>
+        <translation>  %1: als Ganzes gezeichnet: %2 ms, max. %3/255, PSNR %4 dB (%5)</translation>
+    </message>
+    <message>
+        <source>within budget</source>
+        <translation>innerhalb des Budgets</translation>
     </message>
 </context>
 <context>
@@ -3675,16 +4262,24 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
     </message>
     <message>
-        <source>the shader takes %1 light%2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
-        <translation>der Shader hat %1 Licht-Slot%2 (seine Licht-Uniforms fassen nicht mehr), die Szene hat %3 eingeschaltete Lichtquellen: bewertet nur mit den ersten %1</translation>
-    </message>
-    <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: Schreiben nicht möglich: %2</translation>
     </message>
     <message>
         <source>%1: PNG encoding failed</source>
         <translation>%1: PNG-Kodierung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
+        <translation>der Shader nimmt %1 %2 (seine Uniform-Variablen für Lichtquellen haben für nicht mehr Platz), die Szene hat %3 eingeschaltet: geprüft mit den ersten %1 allein</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>Lichtquelle</translation>
+    </message>
+    <message>
+        <source>lights</source>
+        <translation>Lichtquellen</translation>
     </message>
 </context>
 </TS>

@@ -14,6 +14,7 @@
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -22,6 +23,11 @@
 #include <set>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BenchEngineWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BenchEngine)
+};
 
 struct BenchEngine::SceneRun {
     QString name;
@@ -133,7 +139,7 @@ Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *ro
                           const BenchProgressFn &progress)
 {
     if (!m_offscreen)
-        return fail(QStringLiteral(
+        return fail(BenchEngineWords::tr(
             "the bench has no OpenGL context (initialize() failed or was not called)"));
     // Load every scene first: a bad file fails the run before any measuring,
     // and the progress total is known from the start.
@@ -171,7 +177,7 @@ Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path,
     // The reference always sees the full-resolution meshes: it is the exact
     // answer every detail level is measured against.
     const Scene full = withDetail(state.scene, 1.0);
-    if (!report(QStringLiteral("%1: loading meshes").arg(state.name)))
+    if (!report(BenchEngineWords::tr("%1: loading meshes").arg(state.name)))
         return fail(QStringLiteral("cancelled"));
     SceneMeshes meshes = loadSceneMeshes(full);
     if (!meshes.ok())
@@ -188,12 +194,12 @@ Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path,
             raycastSceneMeshes(withLights(full, count), state.fullMeshes, options.size.width(),
                                options.size.height(), ReferenceShading::Phong);
         if (!reference)
-            return fail(QStringLiteral("%1: no reference: %2").arg(path, reference.error()));
+            return fail(BenchEngineWords::tr("%1: no reference: %2").arg(path, reference.error()));
         if (state.compared.empty()) {
             auto compared = awayFromSilhouettes(*reference, full, state.fullMeshes, options.bandPx);
             if (!compared)
                 return fail(
-                    QStringLiteral("%1: no silhouette mask: %2").arg(path, compared.error()));
+                    BenchEngineWords::tr("%1: no silhouette mask: %2").arg(path, compared.error()));
             state.compared = std::move(*compared);
         }
         state.specular.push_back(
@@ -276,10 +282,11 @@ Result<> BenchEngine::checkObjectFit(const BenchOptions &options, SceneRun &stat
         m_offscreen->makeCurrent();
         Renderer &renderer = m_offscreen->renderer();
         if (const Result<> set = renderer.setScene(combined); !set)
-            return fail(QStringLiteral("%1, per-object fit: %2").arg(state.name, set.error()));
-        if (const BuildReport built = renderer.loadShading(combined.shading); !built.ok)
             return fail(
-                QStringLiteral("%1, per-object fit: %2").arg(state.name, built.errorSummary()));
+                BenchEngineWords::tr("%1, per-object fit: %2").arg(state.name, set.error()));
+        if (const BuildReport built = renderer.loadShading(combined.shading); !built.ok)
+            return fail(BenchEngineWords::tr("%1, per-object fit: %2")
+                            .arg(state.name, built.errorSummary()));
         check.measured = measureFrame(options, state, std::size_t(own - state.lightCounts.begin()),
                                       combined, QStringLiteral("per-object"), 1.0);
     }
@@ -300,7 +307,8 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
         // its minimum): the same meshes again would only repeat rows.
         m_done += int(options.methods.size() * state.lightCounts.size());
         const QString stage =
-            QStringLiteral("%1: detail %2 draws the same %3 triangles as the level before; skipped")
+            BenchEngineWords::tr(
+                "%1: detail %2 draws the same %3 triangles as the level before; skipped")
                 .arg(state.name, detailPercent(detail))
                 .arg(triangles);
         if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
@@ -311,12 +319,12 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
     Renderer &renderer = m_offscreen->renderer();
     m_offscreen->makeCurrent();
     if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
-        return fail(QStringLiteral("%1 at detail %2: %3")
+        return fail(BenchEngineWords::tr("%1 at detail %2: %3")
                         .arg(state.name, detailPercent(detail), set.error()));
     for (ShadingMethod method : options.methods) {
         const BuildReport built = renderer.loadShading(method);
         if (!built.ok)
-            return fail(QStringLiteral("%1: the shipped %2 shaders did not build: %3")
+            return fail(BenchEngineWords::tr("%1: the shipped %2 shaders did not build: %3")
                             .arg(state.name, shadingName(method), built.errorSummary()));
         for (std::size_t s = 0; s < state.lightCounts.size(); ++s) {
             rows->push_back(measure(options, state, s, method, detail));

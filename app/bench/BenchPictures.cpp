@@ -3,9 +3,15 @@
 #include "core/ImageMetrics.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QPainter>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BenchPicturesWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BenchPictures)
+};
 
 QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference,
                      const glm::dvec3 &background, int bandPx,
@@ -28,8 +34,9 @@ QImage benchTriptych(const QImage &rendered, const ReferenceImage &reference,
     painter.drawText(QRect(6, 0, out.width() - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
                      caption);
     const QStringList labels{
-        QStringLiteral("GPU"), QStringLiteral("CPU reference (exact)"),
-        QStringLiteral("error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
+        QStringLiteral("GPU"), BenchPicturesWords::tr("CPU reference (exact)"),
+        BenchPicturesWords::tr(
+            "error: green exact, yellow 4/255, red ≥ 8/255, blue silhouette band")};
     for (int i = 0; i < 3; ++i)
         painter.drawText(QRect(i * (w + kGap) + 6, kCaption + h, w - 12, kCaption),
                          Qt::AlignVCenter | Qt::AlignLeft, labels[i]);

@@ -1,5 +1,6 @@
 #include "BenchResult.h"
 
+#include <QCoreApplication>
 #include <QHash>
 
 #include <charconv>
@@ -8,6 +9,11 @@
 #include <system_error>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BenchResultWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BenchResult)
+};
 
 namespace {
 
@@ -197,7 +203,7 @@ public:
         const auto result = std::from_chars(begin, end, value);
         if (result.ec != std::errc() || result.ptr != end || lower.contains(QLatin1String("inf"))
             || lower.contains(QLatin1String("nan"))) {
-            fail(column, QStringLiteral("is not a number"), text);
+            fail(column, BenchResultWords::tr("is not a number"), text);
             return false;
         }
         *out = value;
@@ -209,7 +215,7 @@ public:
         bool ok = false;
         const qint64 value = text.trimmed().toLongLong(&ok);
         if (!ok) {
-            fail(column, QStringLiteral("is not a whole number"), text);
+            fail(column, BenchResultWords::tr("is not a whole number"), text);
             return false;
         }
         *out = value;
@@ -222,7 +228,7 @@ public:
         if (!readInt64(column, text, &value))
             return false;
         if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
-            fail(column, QStringLiteral("is out of range"), text);
+            fail(column, BenchResultWords::tr("is out of range"), text);
             return false;
         }
         *out = int(value);
@@ -240,7 +246,7 @@ public:
             *out = false;
             return true;
         }
-        fail(column, QStringLiteral("is not 0 or 1"), text);
+        fail(column, BenchResultWords::tr("is not 0 or 1"), text);
         return false;
     }
 
@@ -310,10 +316,12 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
     std::vector<Record> records;
     int badLine = 0;
     if (!splitRecords(body, &records, &badLine))
-        return fail(QStringLiteral("%1 line %2: unbalanced quotes").arg(sourceName).arg(badLine));
+        return fail(
+            BenchResultWords::tr("%1 line %2: unbalanced quotes").arg(sourceName).arg(badLine));
     if (records.empty())
-        return fail(QStringLiteral("%1: empty file, expected a header line starting with '%2'")
-                        .arg(sourceName, QString::fromLatin1(kColumnNames[0])));
+        return fail(
+            BenchResultWords::tr("%1: empty file, expected a header line starting with '%2'")
+                .arg(sourceName, QString::fromLatin1(kColumnNames[0])));
 
     // Header: find each known column by name; unknown ones are skipped.
     const Record &header = records.front();
@@ -324,7 +332,7 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         for (int c = 0; c < ColumnCount; ++c) {
             if (name == QLatin1String(kColumnNames[c])) {
                 if (index[c] != -1)
-                    return fail(QStringLiteral("%1 line %2: column '%3' appears twice")
+                    return fail(BenchResultWords::tr("%1 line %2: column '%3' appears twice")
                                     .arg(sourceName)
                                     .arg(header.line)
                                     .arg(name));
@@ -337,7 +345,7 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         if (index[c] == -1 && c != ColObject)
             missing.append(QString::fromLatin1(kColumnNames[c]));
     if (!missing.isEmpty())
-        return fail(QStringLiteral("%1 line %2: missing column%3 %4")
+        return fail(BenchResultWords::tr("%1 line %2: missing column%3 %4")
                         .arg(sourceName)
                         .arg(header.line)
                         .arg(missing.size() == 1 ? QString() : QStringLiteral("s"))
@@ -349,7 +357,7 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         const Record &record = records[r];
         const FieldReader reader(sourceName, record.line);
         if (record.fields.size() != header.fields.size())
-            return fail(QStringLiteral("%1: expected %2 fields as in the header, found %3")
+            return fail(BenchResultWords::tr("%1: expected %2 fields as in the header, found %3")
                             .arg(reader.where())
                             .arg(header.fields.size())
                             .arg(record.fields.size()));
@@ -384,7 +392,7 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         if (!ok)
             return fail(reader.error());
         if (row.method.isEmpty())
-            return fail(QStringLiteral("%1: method is empty").arg(reader.where()));
+            return fail(BenchResultWords::tr("%1: method is empty").arg(reader.where()));
         parsed.push_back(std::move(row));
     }
     return parsed;

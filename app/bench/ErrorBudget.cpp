@@ -1,5 +1,6 @@
 #include "ErrorBudget.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -7,6 +8,11 @@
 #include <limits>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ErrorBudgetWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ErrorBudget)
+};
 
 namespace {
 
@@ -62,8 +68,8 @@ QString methodTitle(const QString &method)
 QString rowLabel(const BenchRow &row)
 {
     if (row.detail >= 1.0)
-        return QStringLiteral("%1 at full detail").arg(row.method);
-    return QStringLiteral("%1 at detail %2").arg(row.method, detailPercent(row.detail));
+        return ErrorBudgetWords::tr("%1 at full detail").arg(row.method);
+    return ErrorBudgetWords::tr("%1 at detail %2").arg(row.method, detailPercent(row.detail));
 }
 
 // "3 412 triangles, 1.9 ms"
@@ -77,7 +83,7 @@ QString rowCost(const BenchRow &row)
 QString rowError(const BenchRow &row, ErrorBudget::Kind kind)
 {
     if (kind == ErrorBudget::Kind::MaxError)
-        return QStringLiteral("max error %1/255").arg(row.maxError);
+        return ErrorBudgetWords::tr("max error %1/255").arg(row.maxError);
     return QStringLiteral("PSNR %1 dB").arg(formatDb(row.psnr));
 }
 
@@ -109,7 +115,7 @@ bool ErrorBudget::accepts(int measuredMax, double psnr) const
 QString ErrorBudget::describe() const
 {
     if (kind == Kind::MaxError)
-        return QStringLiteral("max error ≤ %1/255").arg(maxError);
+        return ErrorBudgetWords::tr("max error ≤ %1/255").arg(maxError);
     return QStringLiteral("PSNR ≥ %1 dB").arg(QString::number(minPsnr, 'g', 6));
 }
 
@@ -219,9 +225,9 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
         }
         if (bestIndex < 0)
             fit.summary =
-                QStringLiteral("nothing meets %1: no measured rows").arg(budget.describe());
+                ErrorBudgetWords::tr("nothing meets %1: no measured rows").arg(budget.describe());
         else
-            fit.summary = QStringLiteral("nothing meets %1: the best measured was %2 (%3)")
+            fit.summary = ErrorBudgetWords::tr("nothing meets %1: the best measured was %2 (%3)")
                               .arg(budget.describe(), rowError(rows[bestIndex], budget.kind),
                                    rowLabel(rows[bestIndex]));
         return fit;
@@ -231,9 +237,9 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     const QString error = rowError(chosen, budget.kind);
 
     if (fit.baseline < 0) {
-        fit.summary =
-            QStringLiteral("%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
-                .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
+        fit.summary = ErrorBudgetWords::tr(
+                          "%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
+                          .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
         return fit;
     }
 
@@ -244,7 +250,7 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
         QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
 
     if (fit.chosen == fit.baseline) {
-        fit.summary = QStringLiteral("%1 is the cheapest that meets %2; %3")
+        fit.summary = ErrorBudgetWords::tr("%1 is the cheapest that meets %2; %3")
                           .arg(baseText, budget.describe(), error);
         return fit;
     }
@@ -265,14 +271,15 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
         effect = QStringLiteral("saves %1").arg(parts.join(QStringLiteral(" and ")));
     QStringList costs;
     if (fit.trianglesSaved < 0)
-        costs << QStringLiteral("%1 more triangles").arg(groupedNumber(-fit.trianglesSaved));
+        costs << ErrorBudgetWords::tr("%1 more triangles").arg(groupedNumber(-fit.trianglesSaved));
     if (std::isfinite(fit.msSaved) && fit.msSaved < 0)
-        costs << QStringLiteral("%1 ms more").arg(formatMs(-fit.msSaved));
+        costs << ErrorBudgetWords::tr("%1 ms more").arg(formatMs(-fit.msSaved));
     if (!costs.isEmpty())
-        effect += (effect.isEmpty() ? QStringLiteral("costs ") : QStringLiteral(" but costs "))
+        effect += (effect.isEmpty() ? ErrorBudgetWords::tr("costs ")
+                                    : ErrorBudgetWords::tr(" but costs "))
             + costs.join(QStringLiteral(" and "));
     if (effect.isEmpty())
-        effect = QStringLiteral("saves nothing");
+        effect = ErrorBudgetWords::tr("saves nothing");
 
     fit.summary = QStringLiteral("%1 (%2): %3 against %4; %5")
                       .arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);

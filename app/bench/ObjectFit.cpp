@@ -1,10 +1,16 @@
 #include "ObjectFit.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ObjectFitWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ObjectFit)
+};
 
 CombinedError combineObjectErrors(const std::vector<BenchRow> &rows, const std::vector<int> &chosen)
 {
@@ -135,7 +141,7 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
             fit.baselineMs += row.frameMs;
     }
     if (fit.choices.empty()) {
-        fit.summary = QStringLiteral("no per-object rows: nothing to fit object by object");
+        fit.summary = ObjectFitWords::tr("no per-object rows: nothing to fit object by object");
         return fit;
     }
     for (std::size_t o = 0; o < fit.choices.size(); ++o)
@@ -165,8 +171,9 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
             if (accepted[o].empty())
                 none << fit.choices[o].object;
         fit.summary = none.isEmpty()
-            ? QStringLiteral("no combination of the objects' rows meets %1").arg(budget.describe())
-            : QStringLiteral("nothing meets %1 for %2")
+            ? ObjectFitWords::tr("no combination of the objects' rows meets %1")
+                  .arg(budget.describe())
+            : ObjectFitWords::tr("nothing meets %1 for %2")
                   .arg(budget.describe(), none.join(QStringLiteral(", ")));
         return fit;
     }
@@ -190,7 +197,7 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
     fit.fits = budget.accepts(combined.maxError, combined.psnr);
     fit.summary = parts.join(QStringLiteral("; "))
         + QStringLiteral(": %1 ms").arg(fit.frameMs, 0, 'f', 2)
-        + (fit.baselineMs > 0 ? QStringLiteral(" against %1 ms at full-detail Phong")
+        + (fit.baselineMs > 0 ? ObjectFitWords::tr(" against %1 ms at full-detail Phong")
                                     .arg(fit.baselineMs, 0, 'f', 2)
                               : QString());
     if (!fit.limiting.isEmpty()) {
@@ -198,11 +205,12 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
             std::find_if(fit.choices.begin(), fit.choices.end(),
                          [&](const ObjectChoice &c) { return c.object == fit.limiting; });
         const BenchRow &fastest = rows[std::size_t(it->fastest)];
-        fit.summary += QStringLiteral("; %1 limits the saving (its fastest, %2 at %3, errs %4/255)")
-                           .arg(fit.limiting, fastest.method, detailPercent(fastest.detail))
-                           .arg(fastest.maxError);
+        fit.summary +=
+            ObjectFitWords::tr("; %1 limits the saving (its fastest, %2 at %3, errs %4/255)")
+                .arg(fit.limiting, fastest.method, detailPercent(fastest.detail))
+                .arg(fastest.maxError);
     } else {
-        fit.summary += QStringLiteral("; every object at its fastest");
+        fit.summary += ObjectFitWords::tr("; every object at its fastest");
     }
     return fit;
 }

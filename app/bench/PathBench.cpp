@@ -11,6 +11,7 @@
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 
@@ -18,6 +19,11 @@
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct PathBenchWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PathBench)
+};
 
 int PathRun::overBudget() const
 {
@@ -116,7 +122,7 @@ Result<PathRun> PathBench::run(const QString &scenePath, const QString &pathSpec
                                const PathOptions &options, const PathProgressFn &progress)
 {
     if (!m_auto || !m_full)
-        return fail(QStringLiteral("the path bench has no OpenGL context"));
+        return fail(PathBenchWords::tr("the path bench has no OpenGL context"));
     const SceneLoadResult loaded = loadSceneFile(scenePath);
     if (!loaded.ok())
         return fail(QStringLiteral("%1: %2").arg(scenePath, loaded.error));
@@ -180,7 +186,7 @@ Result<PathRun> PathBench::run(const QString &scenePath, const QString &pathSpec
             raycastSceneMeshes(exactScene, referenceMeshes, options.size.width(),
                                options.size.height(), ReferenceShading::Phong);
         if (!reference)
-            return fail(QStringLiteral("%1, frame %2: no reference: %3")
+            return fail(PathBenchWords::tr("%1, frame %2: no reference: %3")
                             .arg(run.scene)
                             .arg(i)
                             .arg(reference.error()));

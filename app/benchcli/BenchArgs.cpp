@@ -5,15 +5,21 @@
 #include "core/ResourcePaths.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QDir>
 
 #include <optional>
 
 namespace phonglab::cli {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BenchArgsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::BenchArgs)
+};
+
 namespace {
 
-const QString kSynopsis = QStringLiteral(
+const QString kSynopsis = BenchArgsWords::tr(
     "usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]\n"
     "                      [--frames N] [--lights LIST] [--methods LIST] [--details LIST] "
     "[--images] [--normals]\n"
@@ -25,7 +31,7 @@ const QString kSynopsis = QStringLiteral(
 QString helpText()
 {
     return kSynopsis
-        + QStringLiteral(
+        + BenchArgsWords::tr(
                "\n\n"
                "Measures every shading method at every level of detail under 1, 4 and 8 lights "
                "(and the\n"
@@ -113,33 +119,34 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show help."));
-    const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("Scene file."),
+                                  BenchArgsWords::tr("Show help."));
+    const QCommandLineOption scene(QStringLiteral("scene"), BenchArgsWords::tr("Scene file."),
                                    QStringLiteral("file"));
-    const QCommandLineOption quick(QStringLiteral("quick"), QStringLiteral("Short run."));
-    const QCommandLineOption out(QStringLiteral("out"), QStringLiteral("Output folder."),
+    const QCommandLineOption quick(QStringLiteral("quick"), BenchArgsWords::tr("Short run."));
+    const QCommandLineOption out(QStringLiteral("out"), BenchArgsWords::tr("Output folder."),
                                  QStringLiteral("dir"));
-    const QCommandLineOption budget(QStringLiteral("budget"), QStringLiteral("Error budget."),
+    const QCommandLineOption budget(QStringLiteral("budget"), BenchArgsWords::tr("Error budget."),
                                     QStringLiteral("spec"));
-    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Frame size."),
+    const QCommandLineOption size(QStringLiteral("size"), BenchArgsWords::tr("Frame size."),
                                   QStringLiteral("WxH"));
-    const QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Timed frames."),
+    const QCommandLineOption frames(QStringLiteral("frames"), BenchArgsWords::tr("Timed frames."),
                                     QStringLiteral("n"));
-    const QCommandLineOption lights(QStringLiteral("lights"), QStringLiteral("Light counts."),
+    const QCommandLineOption lights(QStringLiteral("lights"), BenchArgsWords::tr("Light counts."),
                                     QStringLiteral("list"));
     const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("Methods."),
                                      QStringLiteral("list"));
-    const QCommandLineOption details(QStringLiteral("details"), QStringLiteral("Detail fractions."),
-                                     QStringLiteral("list"));
-    const QCommandLineOption images(QStringLiteral("images"), QStringLiteral("Write pictures."));
+    const QCommandLineOption details(
+        QStringLiteral("details"), BenchArgsWords::tr("Detail fractions."), QStringLiteral("list"));
+    const QCommandLineOption images(QStringLiteral("images"),
+                                    BenchArgsWords::tr("Write pictures."));
     const QCommandLineOption normals(QStringLiteral("normals"),
-                                     QStringLiteral("Normal-method study."));
-    const QCommandLineOption from(QStringLiteral("from"), QStringLiteral("Earlier results."),
+                                     BenchArgsWords::tr("Normal-method study."));
+    const QCommandLineOption from(QStringLiteral("from"), BenchArgsWords::tr("Earlier results."),
                                   QStringLiteral("csv"));
-    const QCommandLineOption path(QStringLiteral("path"), QStringLiteral("Camera path."),
+    const QCommandLineOption path(QStringLiteral("path"), BenchArgsWords::tr("Camera path."),
                                   QStringLiteral("spec"));
     const QCommandLineOption pathFrames(QStringLiteral("path-frames"),
-                                        QStringLiteral("Path frames."), QStringLiteral("n"));
+                                        BenchArgsWords::tr("Path frames."), QStringLiteral("n"));
     parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details,
                        images, normals, from, path, pathFrames});
 
@@ -147,7 +154,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
     if (const std::optional<int> exit = parseOrExit(parser, arguments, help, kSynopsis, helpText()))
         return *exit;
     if (!parser.positionalArguments().isEmpty())
-        return usage(QStringLiteral("unexpected argument '%1' (scenes go after --scene)")
+        return usage(BenchArgsWords::tr("unexpected argument '%1' (scenes go after --scene)")
                          .arg(parser.positionalArguments().first()));
 
     BenchArgs args;
@@ -156,10 +163,10 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         for (const QCommandLineOption *measuring :
              {&scene, &quick, &size, &frames, &lights, &methods, &details, &images, &normals})
             if (parser.isSet(*measuring))
-                return usage(QStringLiteral("--from measures nothing: --%1 does not go with it")
+                return usage(BenchArgsWords::tr("--from measures nothing: --%1 does not go with it")
                                  .arg(measuring->names().constLast()));
         if (args.fromCsv.isEmpty())
-            return usage(QStringLiteral("--from: empty file name"));
+            return usage(BenchArgsWords::tr("--from: empty file name"));
     }
     args.path = parser.value(path);
     if (parser.isSet(path)) {
@@ -167,20 +174,21 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
              {&quick, &lights, &methods, &details, &normals, &from})
             if (parser.isSet(*sweep))
                 return usage(
-                    QStringLiteral("--path measures a camera path: --%1 does not go with it")
+                    BenchArgsWords::tr("--path measures a camera path: --%1 does not go with it")
                         .arg(sweep->names().constLast()));
         if (args.path.isEmpty())
-            return usage(QStringLiteral("--path: expected orbit, dolly or a keyframe file"));
+            return usage(BenchArgsWords::tr("--path: expected orbit, dolly or a keyframe file"));
     }
     if (parser.isSet(pathFrames)) {
         bool ok = false;
         const int n = parser.value(pathFrames).toInt(&ok);
         if (!parser.isSet(path))
-            return usage(QStringLiteral("--path-frames goes with --path orbit or --path dolly"));
-        if (!ok || n < 2 || n > 10000)
             return usage(
-                QStringLiteral("--path-frames: expected a whole number from 2 to 10000, got '%1'")
-                    .arg(parser.value(pathFrames)));
+                BenchArgsWords::tr("--path-frames goes with --path orbit or --path dolly"));
+        if (!ok || n < 2 || n > 10000)
+            return usage(BenchArgsWords::tr(
+                             "--path-frames: expected a whole number from 2 to 10000, got '%1'")
+                             .arg(parser.value(pathFrames)));
         args.pathFrames = n;
     }
     args.sizeGiven = parser.isSet(size);
@@ -191,7 +199,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                                               : defaultScenes(args.quick || parser.isSet(path));
     args.outDir = parser.isSet(out) ? parser.value(out) : QStringLiteral("phonglab-bench");
     if (args.outDir.isEmpty())
-        return usage(QStringLiteral("--out: empty folder name"));
+        return usage(BenchArgsWords::tr("--out: empty folder name"));
     args.normalStudy = args.fromCsv.isEmpty() && (parser.isSet(normals) || !args.quick);
     if (parser.isSet(images))
         args.options.imageDir = QDir(args.outDir).filePath(QStringLiteral("images"));
@@ -200,7 +208,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         const auto parsed = ErrorBudget::parse(parser.value(budget));
         if (!parsed)
             return usage(
-                QStringLiteral("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
+                BenchArgsWords::tr("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
                     .arg(parser.value(budget)));
         args.budget = *parsed;
     }
@@ -208,7 +216,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         const auto parsed = parseSizeArgument(parser.value(size), 16, 8192);
         if (!parsed)
             return usage(
-                QStringLiteral("--size: expected WxH with 16..8192 pixels per side, got '%1'")
+                BenchArgsWords::tr("--size: expected WxH with 16..8192 pixels per side, got '%1'")
                     .arg(parser.value(size)));
         args.options.size = *parsed;
     }
@@ -219,7 +227,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         const int least = parser.isSet(path) ? 3 : 20;
         if (!ok || n < least || n > 10000)
             return usage(
-                QStringLiteral("--frames: expected a whole number from %1 to 10000, got '%2'")
+                BenchArgsWords::tr("--frames: expected a whole number from %1 to 10000, got '%2'")
                     .arg(least)
                     .arg(parser.value(frames)));
         args.options.frames = n;
@@ -238,7 +246,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
             });
         if (!counts)
             return usage(
-                QStringLiteral(
+                BenchArgsWords::tr(
                     "--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
                     .arg(kMaxLights)
                     .arg(parser.value(lights)));
@@ -255,7 +263,7 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
         });
         if (!parsed)
             return usage(
-                QStringLiteral(
+                BenchArgsWords::tr(
                     "--methods: expected names from flat, gouraud, faceted, blinn-phong, phong, "
                     "got '%1'")
                     .arg(parser.value(methods)));
@@ -269,9 +277,9 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                 return ok && d > 0.0 && d <= 1.0 ? std::optional<double>(d) : std::nullopt;
             });
         if (!parsed)
-            return usage(
-                QStringLiteral("--details: expected fractions in (0, 1], comma separated, got '%1'")
-                    .arg(parser.value(details)));
+            return usage(BenchArgsWords::tr(
+                             "--details: expected fractions in (0, 1], comma separated, got '%1'")
+                             .arg(parser.value(details)));
         args.options.details = *parsed;
     }
     return args;

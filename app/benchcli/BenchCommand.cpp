@@ -11,6 +11,7 @@
 #include "core/ResourcePaths.h"
 
 #include <QApplication>
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -22,6 +23,11 @@
 
 namespace phonglab::cli {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct BenchCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::BenchCommand)
+};
+
 namespace {
 
 Result<> writeText(const QString &path, const QString &text)
@@ -29,7 +35,7 @@ Result<> writeText(const QString &path, const QString &text)
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0
         || !file.commit())
-        return fail(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(BenchCommandWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
     return {};
 }
 
@@ -83,7 +89,7 @@ int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool 
         printError(written.error());
         return kExitFailure;
     }
-    printLine(QStringLiteral(
+    printLine(BenchCommandWords::tr(
                   "\nfit to budget (%1, the scene's own lights, %2 px silhouette band left out):")
                   .arg(args.budget.describe())
                   .arg(args.options.bandPx));
@@ -108,7 +114,8 @@ int refit(const BenchArgs &args)
 {
     QFile file(args.fromCsv);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        printError(QStringLiteral("%1: cannot read: %2").arg(args.fromCsv, file.errorString()));
+        printError(
+            BenchCommandWords::tr("%1: cannot read: %2").arg(args.fromCsv, file.errorString()));
         return kExitFailure;
     }
     const Result<std::vector<BenchRow>> read =
@@ -149,40 +156,43 @@ int benchPath(const BenchArgs &args)
         printError(initialized.error());
         return kExitFailure;
     }
-    printLine(QStringLiteral("phonglab bench --path %1: %2 scene(s), %3x%4 px, %5 timed frames per "
-                             "path frame, budget %6, GL: %7")
+    printLine(BenchCommandWords::tr(
+                  "phonglab bench --path %1: %2 scene(s), %3x%4 px, %5 timed frames per "
+                  "path frame, budget %6, GL: %7")
                   .arg(args.path)
                   .arg(args.options.scenes.size())
                   .arg(options.size.width())
                   .arg(options.size.height())
                   .arg(options.frames)
                   .arg(args.budget.describe(), bench.glRendererName()));
-    printLine(QStringLiteral("every object at \"detail\": \"auto\" (%1 px, shading within %2 "
-                             "steps), lights left out below %2 steps; against the exact Phong "
-                             "image and the same frame at full detail with every light\n")
-                  .arg(options.detailPixels)
-                  .arg(255.0 * args.budget.reductionAllowance(), 0, 'g', 3));
+    printLine(
+        BenchCommandWords::tr("every object at \"detail\": \"auto\" (%1 px, shading within %2 "
+                              "steps), lights left out below %2 steps; against the exact Phong "
+                              "image and the same frame at full detail with every light\n")
+            .arg(options.detailPixels)
+            .arg(255.0 * args.budget.reductionAllowance(), 0, 'g', 3));
     QElapsedTimer clock;
     clock.start();
     std::vector<PathRun> runs;
     for (const QString &scene : args.options.scenes) {
         const auto progress = [&](int done, int total, const PathFrame &f) {
-            printLine(QStringLiteral("  %1 frame %2/%3: distance %4, levels %5, %6 triangles "
-                                     "(full %7), %8 lights left out, max error %9/255%10 "
-                                     "(full detail %13/255), %11 ms (full %12 ms)")
-                          .arg(QFileInfo(scene).completeBaseName())
-                          .arg(done)
-                          .arg(total)
-                          .arg(f.distance, 0, 'f', 2)
-                          .arg(f.levels)
-                          .arg(f.triangles)
-                          .arg(f.fullTriangles)
-                          .arg(f.lightsLeftOut)
-                          .arg(f.maxError)
-                          .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
-                          .arg(f.frameMs, 0, 'f', 2)
-                          .arg(f.fullFrameMs, 0, 'f', 2)
-                          .arg(f.fullMaxError));
+            printLine(
+                BenchCommandWords::tr("  %1 frame %2/%3: distance %4, levels %5, %6 triangles "
+                                      "(full %7), %8 lights left out, max error %9/255%10 "
+                                      "(full detail %13/255), %11 ms (full %12 ms)")
+                    .arg(QFileInfo(scene).completeBaseName())
+                    .arg(done)
+                    .arg(total)
+                    .arg(f.distance, 0, 'f', 2)
+                    .arg(f.levels)
+                    .arg(f.triangles)
+                    .arg(f.fullTriangles)
+                    .arg(f.lightsLeftOut)
+                    .arg(f.maxError)
+                    .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
+                    .arg(f.frameMs, 0, 'f', 2)
+                    .arg(f.fullFrameMs, 0, 'f', 2)
+                    .arg(f.fullMaxError));
             std::fflush(stdout);
             return true;
         };
@@ -191,8 +201,8 @@ int benchPath(const BenchArgs &args)
             printError(run.error());
             return kExitFailure;
         }
-        printLine(QStringLiteral("%1, %2: %3 of %4 frames over budget (at full detail: %7); "
-                                 "triangles %5 saved, time %6 saved against full detail")
+        printLine(BenchCommandWords::tr("%1, %2: %3 of %4 frames over budget (at full detail: %7); "
+                                        "triangles %5 saved, time %6 saved against full detail")
                       .arg(run->scene, run->path)
                       .arg(run->overBudget())
                       .arg(run->frames.size())
@@ -213,20 +223,24 @@ int benchPath(const BenchArgs &args)
         ms += run.frameMs();
         fullMs += run.fullFrameMs();
     }
-    printLine(QStringLiteral("\nframes over budget: %1 of %2").arg(over).arg(frames));
-    printLine(QStringLiteral("over budget at full detail with every light: %1 of %2 (what the "
-                             "method itself misses; no model can do better there)")
-                  .arg(fullOver)
-                  .arg(frames));
     printLine(
-        QStringLiteral("triangles drawn: %1 against %2 at full detail (%3 saved); frame time: "
-                       "%4 ms against %5 ms (%6 saved), summed over the frames")
-            .arg(triangles)
-            .arg(fullTriangles)
-            .arg(percentSaved(double(triangles), double(fullTriangles)))
-            .arg(ms, 0, 'f', 1)
-            .arg(fullMs, 0, 'f', 1)
-            .arg(percentSaved(ms, fullMs)));
+        QStringLiteral(
+            "\nframes over budget: %1 of %2") /* scripts read it: never translated */.arg(over)
+            .arg(frames));
+    printLine(
+        BenchCommandWords::tr("over budget at full detail with every light: %1 of %2 (what the "
+                              "method itself misses; no model can do better there)")
+            .arg(fullOver)
+            .arg(frames));
+    printLine(BenchCommandWords::tr(
+                  "triangles drawn: %1 against %2 at full detail (%3 saved); frame time: "
+                  "%4 ms against %5 ms (%6 saved), summed over the frames")
+                  .arg(triangles)
+                  .arg(fullTriangles)
+                  .arg(percentSaved(double(triangles), double(fullTriangles)))
+                  .arg(ms, 0, 'f', 1)
+                  .arg(fullMs, 0, 'f', 1)
+                  .arg(percentSaved(ms, fullMs)));
     const QDir out(args.outDir);
     const QString csv = out.filePath(QStringLiteral("path.csv"));
     const QString png = out.filePath(QStringLiteral("path.png"));
@@ -240,14 +254,14 @@ int benchPath(const BenchArgs &args)
         return kExitFailure;
     }
     printLine(QStringLiteral("wrote %1, %2, %3").arg(csv, png, svg));
-    printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    printLine(BenchCommandWords::tr("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
     return kExitOk;
 }
 
 int bench(const BenchArgs &args)
 {
     if (!QDir().mkpath(args.outDir)) {
-        printError(QStringLiteral("%1: cannot create the output folder").arg(args.outDir));
+        printError(BenchCommandWords::tr("%1: cannot create the output folder").arg(args.outDir));
         return kExitFailure;
     }
     if (!args.fromCsv.isEmpty())
@@ -260,7 +274,7 @@ int bench(const BenchArgs &args)
         return kExitFailure;
     }
     printLine(
-        QStringLiteral(
+        BenchCommandWords::tr(
             "phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
             .arg(args.quick ? QStringLiteral(" --quick") : QString())
             .arg(args.options.scenes.size())
@@ -269,7 +283,7 @@ int bench(const BenchArgs &args)
             .arg(args.options.frames)
             .arg(args.options.warmupFrames)
             .arg(engine.glRendererName()));
-    printLine(QStringLiteral(
+    printLine(BenchCommandWords::tr(
         "frame ms = median wall time of render + glFinish; cpu ms = submission; "
         "errors in 8-bit steps against the CPU reference; hl = inside the specular "
         "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
@@ -294,22 +308,23 @@ int bench(const BenchArgs &args)
     }
     const int written = writeOutputs(args, rows);
     if (!engine.objectFits().empty())
-        printLine(QStringLiteral("\nper-object fit (%1; each object drawn alone for its time, its "
-                                 "own pixels for its error):")
-                      .arg(args.budget.describe()));
+        printLine(
+            BenchCommandWords::tr("\nper-object fit (%1; each object drawn alone for its time, its "
+                                  "own pixels for its error):")
+                .arg(args.budget.describe()));
     for (const ObjectFitCheck &check : engine.objectFits()) {
         printLine(QStringLiteral("  %1: %2").arg(check.scene, check.fit.summary));
         if (check.measured)
-            printLine(QStringLiteral("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
+            printLine(BenchCommandWords::tr("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
                           .arg(check.scene)
                           .arg(check.measured->frameMs, 0, 'f', 2)
                           .arg(check.measured->maxError)
                           .arg(check.measured->psnr, 0, 'f', 1)
                           .arg(args.budget.accepts(*check.measured)
-                                   ? QStringLiteral("within budget")
+                                   ? BenchCommandWords::tr("within budget")
                                    : QStringLiteral("OVER BUDGET")));
     }
-    printLine(QStringLiteral("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    printLine(BenchCommandWords::tr("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
     return written;
 }
 

@@ -2,6 +2,7 @@
 #include "SpeedAccuracyChart.h"
 
 #include <QApplication>
+#include <QCoreApplication>
 #include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QImage>
@@ -13,11 +14,16 @@
 
 namespace phonglab {
 
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ChartImagesWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ChartImages)
+};
+
 Result<> haveApplication()
 {
     if (qobject_cast<QApplication *>(QCoreApplication::instance()))
         return {};
-    return fail(QStringLiteral("charts need a QApplication (Qt Charts are widgets)"));
+    return fail(ChartImagesWords::tr("charts need a QApplication (Qt Charts are widgets)"));
 }
 
 void settleLayouts(const std::vector<QChart *> &charts)
@@ -32,16 +38,18 @@ Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pn
                      const QString &svgPath, const QString &title)
 {
     if (pngPath.isEmpty() && svgPath.isEmpty())
-        return fail(QStringLiteral("no output file given"));
+        return fail(ChartImagesWords::tr("no output file given"));
 
     const QRectF rect(QPointF(0, 0), QSizeF(size));
 
     // Open both first so a bad path writes nothing.
     QSaveFile pngFile(pngPath), svgFile(svgPath);
     if (!pngPath.isEmpty() && !pngFile.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
+        return fail(
+            ChartImagesWords::tr("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
     if (!svgPath.isEmpty() && !svgFile.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
+        return fail(
+            ChartImagesWords::tr("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
 
     if (!pngPath.isEmpty()) {
         QImage image(size, QImage::Format_ARGB32_Premultiplied);
@@ -55,7 +63,8 @@ Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pn
         }
         QImageWriter writer(&pngFile, "png");
         if (!writer.write(image))
-            return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, writer.errorString()));
+            return fail(
+                ChartImagesWords::tr("cannot write %1: %2").arg(pngPath, writer.errorString()));
     }
     if (!svgPath.isEmpty()) {
         QSvgGenerator generator;
@@ -64,19 +73,21 @@ Result<> renderScene(QGraphicsScene &scene, const QSize &size, const QString &pn
         generator.setViewBox(rect);
         generator.setResolution(96);
         generator.setTitle(title);
-        generator.setDescription(QStringLiteral("PhongLab benchmark chart"));
+        generator.setDescription(ChartImagesWords::tr("PhongLab benchmark chart"));
         QPainter painter;
         if (!painter.begin(&generator))
-            return fail(QStringLiteral("cannot write %1: SVG output failed").arg(svgPath));
+            return fail(ChartImagesWords::tr("cannot write %1: SVG output failed").arg(svgPath));
         painter.setRenderHint(QPainter::Antialiasing);
         painter.fillRect(rect, Qt::white);
         scene.render(&painter, rect, rect);
         painter.end();
     }
     if (!pngPath.isEmpty() && !pngFile.commit())
-        return fail(QStringLiteral("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
+        return fail(
+            ChartImagesWords::tr("cannot write %1: %2").arg(pngPath, pngFile.errorString()));
     if (!svgPath.isEmpty() && !svgFile.commit())
-        return fail(QStringLiteral("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
+        return fail(
+            ChartImagesWords::tr("cannot write %1: %2").arg(svgPath, svgFile.errorString()));
     return {};
 }
 
@@ -85,7 +96,7 @@ Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &
     if (Result<> app = haveApplication(); !app)
         return app;
     if (!chart || size.isEmpty())
-        return fail(QStringLiteral("nothing to draw"));
+        return fail(ChartImagesWords::tr("nothing to draw"));
     QGraphicsScene scene(QRectF(QPointF(0, 0), QSizeF(size)));
     scene.addItem(chart);
     chart->setGeometry(QRectF(QPointF(0, 0), QSizeF(size)));

@@ -1,6 +1,7 @@
 #include "LabelledChart.h"
 #include "ChartLabels.h"
 
+#include <QCoreApplication>
 #include <QGraphicsSimpleTextItem>
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
@@ -16,6 +17,11 @@
 #include <memory>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct LabelledChartWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::LabelledChart)
+};
 
 namespace {
 
@@ -131,9 +137,10 @@ QChart *buildChart(const ChartSpec &spec)
         axis->setMinorTickCount(8);
         axis->setMinorGridLineColor(QColor(238, 238, 238));
         axis->setRange(yScale.min, yScale.max);
-        yNotes << (yScale.hasZero
-                       ? QStringLiteral("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
-                       : QStringLiteral("log"));
+        yNotes
+            << (yScale.hasZero
+                    ? LabelledChartWords::tr("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
+                    : QStringLiteral("log"));
         yAxis = axis;
     } else {
         auto *axis = new QValueAxis;
@@ -208,7 +215,7 @@ QChart *buildChart(const ChartSpec &spec)
     // step line (everything above and right of it is beaten) and rings.
     if (!spec.front.empty()) {
         auto *step = new QLineSeries;
-        step->setName(QStringLiteral("Pareto front"));
+        step->setName(LabelledChartWords::tr("Pareto front"));
         step->setPen(QPen(frontColor, 1.4, Qt::DashLine));
         for (size_t i = 0; i < spec.front.size(); ++i) {
             const QPointF p(spec.front[i].x(), yScale.map(spec.front[i].y()));
@@ -220,7 +227,7 @@ QChart *buildChart(const ChartSpec &spec)
         placer->lines.push_back(step);
 
         auto *rings = new QScatterSeries;
-        rings->setName(QStringLiteral("Pareto front (points)"));
+        rings->setName(LabelledChartWords::tr("Pareto front (points)"));
         rings->setMarkerShape(QScatterSeries::MarkerShapeCircle);
         rings->setMarkerSize(15);
         rings->setBrush(Qt::NoBrush);

@@ -4,6 +4,7 @@
 #include "bench/BenchResult.h"
 #include "mesh/NormalMethodStudy.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QSaveFile>
 #include <QTextStream>
@@ -11,6 +12,11 @@
 #include <cstdio>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct NormalStudyOutputWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::NormalStudyOutput)
+};
 
 namespace {
 
@@ -62,7 +68,8 @@ Result<> writeNormalStudy(const QString &outDir)
     QSaveFile csv(dir.filePath(QStringLiteral("normals.csv")));
     if (!csv.open(QIODevice::WriteOnly | QIODevice::Text) || csv.write(studyCsv(rows).toUtf8()) < 0
         || !csv.commit())
-        return fail(QStringLiteral("%1: cannot write: %2").arg(csv.fileName(), csv.errorString()));
+        return fail(NormalStudyOutputWords::tr("%1: cannot write: %2")
+                        .arg(csv.fileName(), csv.errorString()));
     return writeNormalStudyChart(rows, dir.filePath(QStringLiteral("normals.png")),
                                  dir.filePath(QStringLiteral("normals.svg")));
 }

@@ -2,6 +2,7 @@
 
 #include "ChartImages.h"
 
+#include <QCoreApplication>
 #include <QGraphicsScene>
 #include <QPen>
 #include <QtCharts/QChart>
@@ -13,6 +14,11 @@
 #include <cmath>
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct PathChartWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PathChart)
+};
 
 namespace {
 
@@ -30,18 +36,18 @@ QLineSeries *line(const QString &name, const QColor &color, Qt::PenStyle style =
 QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
 {
     auto *chart = new QChart;
-    chart->setTitle(QStringLiteral("%1 — %2: %3 of %4 frames over budget (%5)")
+    chart->setTitle(PathChartWords::tr("%1 — %2: %3 of %4 frames over budget (%5)")
                         .arg(run.scene, run.path)
                         .arg(run.overBudget())
                         .arg(run.frames.size())
                         .arg(budget.describe()));
     chart->legend()->setAlignment(Qt::AlignBottom);
 
-    QLineSeries *error = line(QStringLiteral("max error (auto detail, unseen lights left out)"),
+    QLineSeries *error = line(PathChartWords::tr("max error (auto detail, unseen lights left out)"),
                               QColor(0xc0, 0x39, 0x2b));
-    QLineSeries *fast = line(QStringLiteral("frame ms, auto detail"), QColor(0x1f, 0x6f, 0xb4));
+    QLineSeries *fast = line(PathChartWords::tr("frame ms, auto detail"), QColor(0x1f, 0x6f, 0xb4));
     QLineSeries *full =
-        line(QStringLiteral("frame ms, full detail"), QColor(0x7f, 0x8c, 0x8d), Qt::DashLine);
+        line(PathChartWords::tr("frame ms, full detail"), QColor(0x7f, 0x8c, 0x8d), Qt::DashLine);
     double top = 0.0, ms = 0.0;
     for (const PathFrame &f : run.frames) {
         error->append(f.index, f.maxError);
@@ -55,16 +61,16 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
         chart->addSeries(s);
 
     auto *x = new QValueAxis;
-    x->setTitleText(QStringLiteral("frame along the path"));
+    x->setTitleText(PathChartWords::tr("frame along the path"));
     x->setRange(0.0, std::max(1.0, last));
     x->setTickType(QValueAxis::TicksDynamic);
     x->setTickAnchor(0.0);
     x->setTickInterval(std::max(1.0, std::ceil(last / 12.0)));
     x->setLabelFormat(QStringLiteral("%d"));
     auto *errorAxis = new QValueAxis;
-    errorAxis->setTitleText(QStringLiteral("max error, 8-bit steps"));
+    errorAxis->setTitleText(PathChartWords::tr("max error, 8-bit steps"));
     auto *msAxis = new QValueAxis;
-    msAxis->setTitleText(QStringLiteral("ms per frame"));
+    msAxis->setTitleText(PathChartWords::tr("ms per frame"));
     msAxis->setRange(0.0, ms * 1.15 + 0.1);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(errorAxis, Qt::AlignLeft);
@@ -101,7 +107,7 @@ Result<> writePathCharts(const std::vector<PathRun> &runs, const ErrorBudget &bu
     if (Result<> app = haveApplication(); !app)
         return app;
     if (runs.empty() || panelSize.isEmpty())
-        return fail(QStringLiteral("no camera path to chart"));
+        return fail(PathChartWords::tr("no camera path to chart"));
     const QSize total(panelSize.width(), panelSize.height() * int(runs.size()));
     QGraphicsScene scene(QRectF(QPointF(0, 0), QSizeF(total)));
     std::vector<QChart *> charts;
@@ -114,7 +120,7 @@ Result<> writePathCharts(const std::vector<PathRun> &runs, const ErrorBudget &bu
     }
     settleLayouts(charts);
     return renderScene(scene, total, pngPath, svgPath,
-                       QStringLiteral("PhongLab camera paths: error and time per frame"));
+                       PathChartWords::tr("PhongLab camera paths: error and time per frame"));
 }
 
 } // namespace phonglab

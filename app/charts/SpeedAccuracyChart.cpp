@@ -3,6 +3,7 @@
 #include "LabelledChart.h"
 #include "bench/ParetoFront.h"
 
+#include <QCoreApplication>
 #include <QGraphicsScene>
 #include <QtCharts/QChart>
 #include <iterator>
@@ -16,6 +17,11 @@
 // image writer (ChartImages.h): which rows become which series and panels.
 
 namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct SpeedAccuracyChartWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::SpeedAccuracyChart)
+};
 
 namespace {
 
@@ -73,9 +79,9 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
 {
     ChartSpec spec;
     spec.title = title;
-    spec.xTitle = QStringLiteral("frame time (ms, median)");
+    spec.xTitle = SpeedAccuracyChartWords::tr("frame time (ms, median)");
     spec.yTitle = QStringLiteral("error: RMSE");
-    spec.yUnit = QStringLiteral("8-bit steps");
+    spec.yUnit = SpeedAccuracyChartWords::tr("8-bit steps");
 
     std::map<QString, std::vector<const BenchRow *>, decltype(&methodLess)> byMethod(&methodLess);
     std::vector<BenchRow> measured;
@@ -111,7 +117,7 @@ Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const Q
     if (Result<> app = haveApplication(); !app)
         return app;
     if (series.empty())
-        return fail(QStringLiteral("no normal-study rows to chart"));
+        return fail(SpeedAccuracyChartWords::tr("no normal-study rows to chart"));
     // Tessellations have no fixed colours of their own: a fixed sequence.
     static const QColor palette[] = {QColor(0x1f, 0x6f, 0xb4), QColor(0xe6, 0x7e, 0x22),
                                      QColor(0x2c, 0xa0, 0x2c), QColor(0xc0, 0x39, 0x2b),
@@ -124,8 +130,9 @@ Result<> writeNormalStudySeriesChart(std::vector<LabelledSeries> series, const Q
                          [](const LabelledPoint &a, const LabelledPoint &b) { return a.x < b.x; });
     }
     std::unique_ptr<QChart> chart(createLabelledChart(
-        series, QStringLiteral("Normal methods: time against angular error"),
-        QStringLiteral("time (ms)"), QStringLiteral("mean angular error (degrees)")));
+        series, SpeedAccuracyChartWords::tr("Normal methods: time against angular error"),
+        SpeedAccuracyChartWords::tr("time (ms)"),
+        SpeedAccuracyChartWords::tr("mean angular error (degrees)")));
     return writeChartImages(chart.get(), pngPath, svgPath, size);
 }
 
@@ -139,7 +146,7 @@ Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &allRows, const QS
     if (Result<> app = haveApplication(); !app)
         return app;
     if (panelSize.isEmpty())
-        return fail(QStringLiteral("panel size %1×%2 is empty")
+        return fail(SpeedAccuracyChartWords::tr("panel size %1×%2 is empty")
                         .arg(panelSize.width())
                         .arg(panelSize.height()));
 
@@ -159,7 +166,7 @@ Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &allRows, const QS
             own.push_back(setup);
     }
     if (scenes.isEmpty())
-        return fail(QStringLiteral("no benchmark rows to chart"));
+        return fail(SpeedAccuracyChartWords::tr("no benchmark rows to chart"));
     std::size_t columns = 0;
     for (auto &own : setups) {
         std::sort(own.begin(), own.end());
@@ -188,7 +195,7 @@ Result<> writeSpeedAccuracyCharts(const std::vector<BenchRow> &allRows, const QS
     }
     settleLayouts(charts);
     return renderScene(scene, total, pngPath, svgPath,
-                       QStringLiteral("PhongLab: frame time against error"));
+                       SpeedAccuracyChartWords::tr("PhongLab: frame time against error"));
 }
 
 } // namespace phonglab

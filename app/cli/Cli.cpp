@@ -99,8 +99,10 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
                 const std::unique_ptr<QCoreApplication> app = c.makeApplication(argc, argv);
                 return c.run(argc, argv);
             }
-    if (first == QLatin1String("__import-mesh")) // internal, not in --help
+    if (first == QLatin1String("__import-mesh")) { // internal, not in --help
+        const QCoreApplication app(argc, argv);    // its messages in the parent's language
         return runImportMesh(argc, argv);
+    }
     // The window's own options (GuiArguments) may come before the scene.
     for (const QLatin1String option : {QLatin1String("--vertex"), QLatin1String("--fragment")})
         if (first == option || first.startsWith(option + QLatin1Char('=')))

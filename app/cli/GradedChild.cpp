@@ -1,5 +1,7 @@
 #include "GradedChild.h"
 
+#include "core/Language.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonDocument>
@@ -77,7 +79,9 @@ GradedChild::GradedChild(const QString &executable, const QStringList &arguments
 void GradedChild::start()
 {
     m_clock.start();
-    m_process.start(m_executable, m_arguments);
+    // The child's sentences go into the report: in this run's language.
+    m_process.start(m_executable,
+                    m_arguments + QStringList{QStringLiteral("--lang"), currentLanguage()});
     m_poll.start();
 }
 

@@ -195,10 +195,10 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
         if (l.enabled && kept++ >= *capacity)
             l.enabled = false;
     *note =
-        SceneStagesWords::tr("the shader takes %1 light%2 (its light uniforms have room for no "
+        SceneStagesWords::tr("the shader takes %1 %2 (its light uniforms have room for no "
                              "more) and the scene has %3 enabled: judged with the first %1 alone")
             .arg(*capacity)
-            .arg(*capacity == 1 ? QString() : QStringLiteral("s"))
+            .arg(*capacity == 1 ? SceneStagesWords::tr("light") : SceneStagesWords::tr("lights"))
             .arg(enabled);
     return out;
 }

@@ -102,6 +102,11 @@ LanguageOption takeLanguageOption(int &argc, char **argv)
     int kept = 1;
     for (int i = 1; i < argc; ++i) {
         const char *argument = argv[i];
+        if (std::strcmp(argument, "--") == 0) { // what follows is file names
+            while (i < argc)
+                argv[kept++] = argv[i++];
+            break;
+        }
         QString value;
         bool found = false;
         if (std::strcmp(argument, "--lang") == 0) {

@@ -1,5 +1,7 @@
 #include "MeshImportProcess.h"
 
+#include "core/Language.h"
+
 #include "MeshCache.h"
 
 #include <QCoreApplication>
@@ -47,7 +49,9 @@ QStringList childArguments(const QString &path, const NormalOptions &normals,
         args << QStringLiteral("--crease") << QString::number(*normals.creaseAngleDeg, 'g', 17);
     args << QStringLiteral("--out") << entryFile << QStringLiteral("--address-space-mb")
          << QString::number(limits.addressSpaceBytes / kMiB) << QStringLiteral("--cpu-seconds")
-         << QString::number(limits.cpuSeconds) << QStringLiteral("--") << path;
+         << QString::number(limits.cpuSeconds)
+         // Its warnings and errors reach the user: in the parent's language.
+         << QStringLiteral("--lang") << currentLanguage() << QStringLiteral("--") << path;
     return args;
 }
 

@@ -1,5 +1,7 @@
 #include "BenchProcess.h"
 
+#include "core/Language.h"
+
 #include "core/SceneJson.h"
 
 #include <QCoreApplication>
@@ -75,19 +77,14 @@ Result<> BenchProcess::start(const Scene &scene, const QSize &size, const ErrorB
     for (double d : detailLevels())
         details << QString::number(d, 'g', 17);
     const QStringList arguments{
-        QStringLiteral("bench"),
-        QStringLiteral("--scene"),
-        scenePath,
-        QStringLiteral("--lights"),
-        QStringLiteral("scene"),
-        QStringLiteral("--details"),
-        details.join(QLatin1Char(',')),
+        QStringLiteral("bench"), QStringLiteral("--scene"), scenePath, QStringLiteral("--lights"),
+        QStringLiteral("scene"), QStringLiteral("--details"), details.join(QLatin1Char(',')),
         QStringLiteral("--size"),
         QStringLiteral("%1x%2").arg(std::max(size.width(), 16)).arg(std::max(size.height(), 16)),
-        QStringLiteral("--budget"),
-        budgetArgument(budget),
-        QStringLiteral("--out"),
-        m_dir->filePath(QStringLiteral("out"))};
+        QStringLiteral("--budget"), budgetArgument(budget), QStringLiteral("--out"),
+        m_dir->filePath(QStringLiteral("out")),
+        // Its progress lines are shown in the dock: in the window's language.
+        QStringLiteral("--lang"), currentLanguage()};
     m_process = new QProcess(this);
     m_stderr.clear();
     m_lastErrorLine.clear();
