@@ -4040,6 +4040,105 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     </message>
 </context>
 <context>
+    <name>phonglab::cli::GradeReport</name>
+    <message>
+        <source>Passes per scene</source>
+        <translation>Bestanden je Szene</translation>
+    </message>
+    <message>
+        <source>%1 of %2 pass</source>
+        <translation>%1 von %2 bestanden</translation>
+    </message>
+    <message>
+        <source>Most common mistakes</source>
+        <translation>Häufigste Fehler</translation>
+    </message>
+    <message>
+        <source>None: no check failed.</source>
+        <translation>Keine: keine Prüfung ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>Matches the exact image.</source>
+        <translation>Stimmt mit dem exakten Bild überein.</translation>
+    </message>
+    <message>
+        <source>no classic mistake explains the difference; the heatmap shows where it is.</source>
+        <translation>kein typischer Fehler erklärt den Unterschied; die Heatmap zeigt, wo er liegt.</translation>
+    </message>
+    <message>
+        <source>%1 explains %2 % of the difference: %3</source>
+        <translation>%1 erklärt %2 % des Unterschieds: %3</translation>
+    </message>
+    <message>
+        <source>note:</source>
+        <translation>Hinweis:</translation>
+    </message>
+    <message>
+        <source>theirs</source>
+        <translation>Abgabe</translation>
+    </message>
+    <message>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+    <message>
+        <source>heatmap</source>
+        <translation>Heatmap</translation>
+    </message>
+    <message>
+        <source>opens it in the window</source>
+        <translation>öffnet sie im Fenster</translation>
+    </message>
+    <message>
+        <source>PhongLab grades: %1</source>
+        <translation>PhongLab-Bewertung: %1</translation>
+    </message>
+    <message>
+        <source>%1 submission</source>
+        <translation>%1 Abgabe</translation>
+    </message>
+    <message>
+        <source>%1 submissions</source>
+        <translation>%1 Abgaben</translation>
+    </message>
+    <message>
+        <source>%1 scene</source>
+        <translation>%1 Szene</translation>
+    </message>
+    <message>
+        <source>%1 scenes</source>
+        <translation>%1 Szenen</translation>
+    </message>
+    <message>
+        <source>%1, %2×%3 pixels, tolerance %4/255. Sort the rows by a column&apos;s title.</source>
+        <translation>%1, %2×%3 Pixel, Toleranz %4/255. Ein Klick auf einen Spaltentitel sortiert die Zeilen.</translation>
+    </message>
+    <message>
+        <source>Every student and scene</source>
+        <translation>Alle Abgaben und Szenen</translation>
+    </message>
+    <message>
+        <source>student</source>
+        <translation>Abgabe</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <source>images</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>why, and the command that opens it</source>
+        <translation>Begründung und der Befehl, der sie öffnet</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::GradeRun</name>
     <message>
         <source>%1: no exact image: %2</source>

@@ -1,5 +1,8 @@
 #include "GradeReport.h"
 
+#include "core/Language.h"
+#include <QCoreApplication>
+
 #include "core/ResourcePaths.h"
 
 #include <QFileInfo>
@@ -9,6 +12,12 @@
 #include <map>
 
 namespace phonglab::cli {
+
+// The report's words, in the language of the run (core/Language); what
+// students wrote is escaped as before.
+struct ReportWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeReport)
+};
 
 namespace {
 
@@ -104,7 +113,8 @@ QString verdictBadge(GradeVerdict v)
 
 QString summary(const GradeResults &results)
 {
-    QString html = QStringLiteral("<h2>Passes per scene</h2><table>");
+    QString html =
+        QStringLiteral("<h2>%1</h2><table>").arg(esc(ReportWords::tr("Passes per scene")));
     const int students = int(results.submissions.size());
     for (std::size_t s = 0; s < results.scenes.size(); ++s) {
         std::map<GradeVerdict, int> counts;
@@ -119,20 +129,23 @@ QString summary(const GradeResults &results)
             if (n == 0)
                 continue;
             const double w = 400.0 * n / std::max(1, students);
-            rects += QStringLiteral("<rect x=\"%1\" width=\"%2\" height=\"16\" fill=\"%3\"><title>%4 "
-                                    "%5</title></rect>")
-                         .arg(x, 0, 'f', 1)
-                         .arg(w, 0, 'f', 1)
-                         .arg(verdictColour(v))
-                         .arg(n)
-                         .arg(gradeVerdictName(v));
+            rects +=
+                QStringLiteral("<rect x=\"%1\" width=\"%2\" height=\"16\" fill=\"%3\"><title>%4 "
+                               "%5</title></rect>")
+                    .arg(x, 0, 'f', 1)
+                    .arg(w, 0, 'f', 1)
+                    .arg(verdictColour(v))
+                    .arg(n)
+                    .arg(gradeVerdictName(v));
             x += w;
             parts << QStringLiteral("%1 %2").arg(n).arg(gradeVerdictName(v));
         }
+        const QString passes =
+            ReportWords::tr("%1 of %2 pass").arg(counts[GradeVerdict::Pass]).arg(students);
         html += QStringLiteral("<tr><td>%1</td><td><svg width=\"400\" height=\"16\" role=\"img\" "
-                               "aria-label=\"%2\">%3</svg></td><td>%4 of %5 pass · %2</td></tr>")
+                               "aria-label=\"%2\">%3</svg></td><td>%4 · %2</td></tr>")
                     .arg(esc(results.scenes[s].label), esc(parts.join(QStringLiteral(", "))), rects,
-                         QString::number(counts[GradeVerdict::Pass]), QString::number(students));
+                         esc(passes));
     }
     html += QStringLiteral("</table><p class=\"legend\">");
     for (GradeVerdict v : kVerdicts)
@@ -147,9 +160,10 @@ QString summary(const GradeResults &results)
     std::vector<std::pair<QString, int>> sorted(mistakes.begin(), mistakes.end());
     std::stable_sort(sorted.begin(), sorted.end(),
                      [](const auto &a, const auto &b) { return a.second > b.second; });
-    html += QStringLiteral("<h2>Most common mistakes</h2>");
+    html += QStringLiteral("<h2>%1</h2>").arg(esc(ReportWords::tr("Most common mistakes")));
     if (sorted.empty())
-        return html + QStringLiteral("<p>None: no check failed.</p>");
+        return html
+            + QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("None: no check failed.")));
     const int most = sorted.front().second;
     html += QStringLiteral("<table>");
     for (const auto &[key, n] : sorted)
@@ -178,8 +192,7 @@ QString linesInContext(const GradeRow &row, const QString &file, int line)
     QString html = QStringLiteral("<pre class=\"lines\">");
     for (int l = std::max(1, line - 2); l <= std::min(int(lines.size()), line + 2); ++l) {
         const QString text = QStringLiteral("%1:%2  %3")
-                                 .arg(esc(file), QStringLiteral("%1").arg(l, 4),
-                                      esc(lines[l - 1]));
+                                 .arg(esc(file), QStringLiteral("%1").arg(l, 4), esc(lines[l - 1]));
         html += l == line ? QStringLiteral("<span class=\"hit\">%1</span>").arg(text)
                           : text + QLatin1Char('\n');
     }
@@ -191,16 +204,23 @@ QString details(const GradeRow &row)
     QString html;
     const CheckOutcome &o = row.outcome;
     if (row.verdict == GradeVerdict::Pass)
-        html += QStringLiteral("<p>Matches the exact image.</p>");
+        html += QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("Matches the exact image.")));
     if (row.verdict == GradeVerdict::Fail) {
         const MistakeDiagnosis &d = o.report.diagnosis;
         if (d.unexplained())
-            html += QStringLiteral("<p><b>unknown</b>: no classic mistake explains the "
-                                   "difference; the heatmap shows where it is.</p>");
+            html += QStringLiteral("<p><b>unknown</b>: %1</p>")
+                        .arg(esc(ReportWords::tr("no classic mistake explains the difference; the "
+                                                 "heatmap shows where it is.")));
         for (const MistakeFinding &f : d.findings) {
-            html += QStringLiteral("<p><b>%1</b> explains %2 % of the difference: %3</p>")
-                        .arg(esc(shaderMistakeKey(f.key)), QString::number(qRound(100.0 * f.confidence)),
-                             esc(shaderMistakeRule(f.key)));
+            // The sentence is escaped whole, then the key made bold in it.
+            const QString key = esc(shaderMistakeKey(f.key));
+            html +=
+                QStringLiteral("<p>%1</p>")
+                    .arg(esc(ReportWords::tr("%1 explains %2 % of the difference: %3")
+                                 .arg(QStringLiteral("\x01"),
+                                      QString::number(qRound(100.0 * f.confidence)),
+                                      shaderMistakeRule(f.key)))
+                             .replace(QLatin1Char('\x01'), QStringLiteral("<b>%1</b>").arg(key)));
             for (const SourceLine &l : mistakeSourceLines(f.key, o.stages))
                 html += linesInContext(row, l.file, l.line);
         }
@@ -216,7 +236,7 @@ QString details(const GradeRow &row)
         html += linesInContext(row, e.file, e.line);
     }
     for (const QString &note : o.notes)
-        html += QStringLiteral("<p><i>note:</i> %1</p>").arg(esc(note));
+        html += QStringLiteral("<p><i>%1</i> %2</p>").arg(esc(ReportWords::tr("note:")), esc(note));
     return html;
 }
 
@@ -240,12 +260,10 @@ QString openCommand(const GradeResults &results, const GradeRow &row)
     const auto stage = [&](const QString &file, ShaderStage which) {
         return shellQuoted(file.isEmpty() ? shippedShaderPath(scene.scene.shading, which) : file);
     };
-    return QStringList{QStringLiteral("phonglab"),
-                       shellQuoted(QFileInfo(scene.path).absoluteFilePath()),
-                       QStringLiteral("--vertex"),
-                       stage(s.vertex, ShaderStage::Vertex),
-                       QStringLiteral("--fragment"),
-                       stage(s.fragment, ShaderStage::Fragment)}
+    return QStringList{
+        QStringLiteral("phonglab"),   shellQuoted(QFileInfo(scene.path).absoluteFilePath()),
+        QStringLiteral("--vertex"),   stage(s.vertex, ShaderStage::Vertex),
+        QStringLiteral("--fragment"), stage(s.fragment, ShaderStage::Fragment)}
         .join(QLatin1Char(' '));
 }
 
@@ -265,14 +283,14 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
              esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
              judged ? (std::isfinite(psnr) ? QString::number(psnr, 'f', 1) : QStringLiteral("∞"))
                     : QString(),
-             figure(row.yoursImage, QStringLiteral("theirs"))
-                 + figure(row.exactImage, QStringLiteral("exact"))
-                 + figure(row.heatmapImage, QStringLiteral("heatmap")),
+             figure(row.yoursImage, ReportWords::tr("theirs"))
+                 + figure(row.exactImage, ReportWords::tr("exact"))
+                 + figure(row.heatmapImage, ReportWords::tr("heatmap")),
              details(row),
-             command.isEmpty() ? QString()
-                               : QStringLiteral("<code class=\"command\" title=\"opens it in the "
-                                                "window\">%1</code>")
-                                     .arg(esc(command)));
+             command.isEmpty()
+                 ? QString()
+                 : QStringLiteral("<code class=\"command\" title=\"%1\">%2</code>")
+                       .arg(esc(ReportWords::tr("opens it in the window")), esc(command)));
 }
 
 } // namespace
@@ -288,28 +306,37 @@ QString shellQuoted(const QString &text)
 
 QString gradeReportHtml(const GradeResults &results)
 {
-    QString html = QStringLiteral("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-                                  "<title>PhongLab grades: %1</title><style>%2</style></head>\n"
-                                  "<body>\n<h1>PhongLab grades: %1</h1>\n")
-                       .arg(esc(results.settings.classFolder), QString::fromLatin1(kStyle));
-    const auto count = [](std::size_t n, const char *what) {
-        return QStringLiteral("%1 %2%3").arg(n).arg(QLatin1String(what), n == 1 ? "" : "s");
-    };
-    html += QStringLiteral("<p>%1, %2, %3×%4 pixels, tolerance %5/255. "
-                           "Sort the rows by a column's title.</p>\n"
-                           "<div id=\"missing\"></div>\n")
-                .arg(count(results.submissions.size(), "submission"),
-                     count(results.scenes.size(), "scene"))
-                .arg(results.settings.size.width())
-                .arg(results.settings.size.height())
-                .arg(results.settings.toleranceSteps);
+    const QString title =
+        esc(ReportWords::tr("PhongLab grades: %1").arg(results.settings.classFolder));
+    QString html =
+        QStringLiteral("<!DOCTYPE html>\n<html lang=\"%1\"><head><meta charset=\"utf-8\">"
+                       "<title>%2</title><style>%3</style></head>\n"
+                       "<body>\n<h1>%2</h1>\n")
+            .arg(currentLanguage(), title, QString::fromLatin1(kStyle));
+    const int submissions = int(results.submissions.size());
+    const int scenes = int(results.scenes.size());
+    const QString counts =
+        (submissions == 1 ? ReportWords::tr("%1 submission") : ReportWords::tr("%1 submissions"))
+            .arg(submissions)
+        + QStringLiteral(", ")
+        + (scenes == 1 ? ReportWords::tr("%1 scene") : ReportWords::tr("%1 scenes")).arg(scenes);
+    html += QStringLiteral("<p>%1</p>\n<div id=\"missing\"></div>\n")
+                .arg(esc(ReportWords::tr("%1, %2×%3 pixels, tolerance %4/255. Sort the rows by a "
+                                         "column's title.")
+                             .arg(counts)
+                             .arg(results.settings.size.width())
+                             .arg(results.settings.size.height())
+                             .arg(results.settings.toleranceSteps)));
     html += summary(results);
-    html += QStringLiteral(
-        "<h2>Every student and scene</h2>\n<table class=\"rows\"><thead><tr>"
-        "<th class=\"sortable\" data-sort=\"student\">student</th><th>scene</th>"
-        "<th class=\"sortable\" data-sort=\"verdict\">verdict</th>"
-        "<th class=\"sortable\" data-sort=\"psnr\">PSNR dB</th><th>images</th>"
-        "<th>why, and the command that opens it</th></tr></thead>\n<tbody>\n");
+    html += QStringLiteral("<h2>%1</h2>\n<table class=\"rows\"><thead><tr>"
+                           "<th class=\"sortable\" data-sort=\"student\">%2</th><th>%3</th>"
+                           "<th class=\"sortable\" data-sort=\"verdict\">%4</th>"
+                           "<th class=\"sortable\" data-sort=\"psnr\">PSNR dB</th><th>%5</th>"
+                           "<th>%6</th></tr></thead>\n<tbody>\n")
+                .arg(esc(ReportWords::tr("Every student and scene")),
+                     esc(ReportWords::tr("student")), esc(ReportWords::tr("scene")),
+                     esc(ReportWords::tr("verdict")), esc(ReportWords::tr("images")),
+                     esc(ReportWords::tr("why, and the command that opens it")));
     int order = 0;
     for (const GradeRow &row : results.rows)
         html += rowHtml(results, row, order++);

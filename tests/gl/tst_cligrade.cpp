@@ -110,8 +110,10 @@ QString withoutSeconds(const QByteArray &csv)
 void writeClass(const QString &root, bool everyFailure)
 {
     const ShaderPair mistaken = withMistake(ShaderMistake::ReflectIncident);
-    writeFile(root + QStringLiteral("/alice/my shader.vert"), shipped(QStringLiteral("phong.vert")));
-    writeFile(root + QStringLiteral("/alice/my shader.frag"), shipped(QStringLiteral("phong.frag")));
+    writeFile(root + QStringLiteral("/alice/my shader.vert"),
+              shipped(QStringLiteral("phong.vert")));
+    writeFile(root + QStringLiteral("/alice/my shader.frag"),
+              shipped(QStringLiteral("phong.frag")));
     // bob: the fragment stage alone (the vertex stage is the shipped one), one mistake
     writeFile(root + QStringLiteral("/bob/src/phong.fs"), mistaken.fragment.code);
     // heidi: WebGL 2 names, one folder down, .glsl: passes with no --bind
@@ -123,8 +125,7 @@ void writeClass(const QString &root, bool everyFailure)
               mistaken.fragment.code);
     if (!everyFailure)
         return;
-    writeFile(root + QStringLiteral("/carol/broken.frag"),
-              fragmentWith("this is not GLSL;"));
+    writeFile(root + QStringLiteral("/carol/broken.frag"), fragmentWith("this is not GLSL;"));
     writeFile(root + QStringLiteral("/dave/one.frag"), shipped(QStringLiteral("phong.frag")));
     writeFile(root + QStringLiteral("/dave/two.frag"), shipped(QStringLiteral("phong.frag")));
     writeFile(root + QStringLiteral("/erin/notes.txt"), "no shader here");
@@ -143,7 +144,7 @@ ProcessRun grade(const QString &classRoot, const QString &out, const QStringList
                                    QStringLiteral("160x120"), QStringLiteral("--timeout"),
                                    QString::number(kTimeoutS), QStringLiteral("--memory"),
                                    QStringLiteral("400"), QStringLiteral("--out"), out}
-                           + more);
+                       + more);
 }
 
 QMap<QString, QStringList> rowsBySubmission(const QByteArray &csv)
@@ -183,8 +184,8 @@ private slots:
         m_out = m_dir.filePath(QStringLiteral("out"));
         QElapsedTimer clock;
         clock.start();
-        m_run = grade(m_dir.filePath(QStringLiteral("class")), m_out, {QStringLiteral("--jobs"),
-                                                                      QStringLiteral("2")});
+        m_run = grade(m_dir.filePath(QStringLiteral("class")), m_out,
+                      {QStringLiteral("--jobs"), QStringLiteral("2")});
         m_runMs = clock.elapsed();
     }
 
@@ -244,9 +245,9 @@ private slots:
         QMap<QString, QJsonObject> by;
         for (const QJsonValue &r : rows)
             by[r.toObject().value(QStringLiteral("submission")).toString()] = r.toObject();
-        for (const char *key : {"verdict", "psnr_db", "max_error", "bad_fraction", "tolerance",
-                                "worst", "diagnosis", "undetectable", "errors", "bindings",
-                                "equation", "notes", "scene", "seconds"})
+        for (const char *key :
+             {"verdict", "psnr_db", "max_error", "bad_fraction", "tolerance", "worst", "diagnosis",
+              "undetectable", "errors", "bindings", "equation", "notes", "scene", "seconds"})
             QVERIFY2(by[QStringLiteral("bob")].contains(QLatin1String(key)), key);
         QCOMPARE(by[QStringLiteral("bob")]
                      .value(QStringLiteral("diagnosis"))
@@ -293,8 +294,8 @@ private slots:
         QVERIFY(html.contains(QStringLiteral("--fragment '")));
         // bob wrote the fragment stage alone: the command names the shipped
         // vertex shader he was checked with, as the window would not by itself.
-        QVERIFY(html.contains(QRegularExpression(
-            QStringLiteral(R"(--vertex \S*shaders/phong\.vert --fragment \S*/bob/src/phong\.fs)"))));
+        QVERIFY(html.contains(QRegularExpression(QStringLiteral(
+            R"(--vertex \S*shaders/phong\.vert --fragment \S*/bob/src/phong\.fs)"))));
         QVERIFY(html.contains(QStringLiteral("'\\''")));
     }
 
@@ -304,11 +305,12 @@ private slots:
         if (browser.isEmpty())
             QSKIP("no chromium installed (scripts/setup.sh installs it)");
         QProcess p;
-        p.start(browser, {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"),
-                          QStringLiteral("--disable-gpu"), QStringLiteral("--allow-file-access-from-files"),
-                          QStringLiteral("--virtual-time-budget=5000"), QStringLiteral("--dump-dom"),
-                          QUrl::fromLocalFile(m_out + QStringLiteral("/report.html")).toString()
-                              + QStringLiteral("#sort=verdict")});
+        p.start(browser,
+                {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"),
+                 QStringLiteral("--disable-gpu"), QStringLiteral("--allow-file-access-from-files"),
+                 QStringLiteral("--virtual-time-budget=5000"), QStringLiteral("--dump-dom"),
+                 QUrl::fromLocalFile(m_out + QStringLiteral("/report.html")).toString()
+                     + QStringLiteral("#sort=verdict")});
         QVERIFY(p.waitForFinished(120000));
         const QString dom = QString::fromUtf8(p.readAllStandardOutput());
         QVERIFY2(dom.contains(QStringLiteral("data-sorted-by=\"verdict\"")),
@@ -336,8 +338,35 @@ private slots:
         QCOMPARE(a.exitCode, 0);
         QCOMPARE(b.exitCode, 0);
         const QByteArray csvA = readFile(dir.filePath(QStringLiteral("a/grades.csv")));
-        QCOMPARE(withoutSeconds(csvA), withoutSeconds(readFile(dir.filePath(QStringLiteral("b/grades.csv")))));
+        QCOMPARE(withoutSeconds(csvA),
+                 withoutSeconds(readFile(dir.filePath(QStringLiteral("b/grades.csv")))));
         QCOMPARE(parseCsv(QString::fromUtf8(csvA)).size(), 5);
+    }
+
+    // Issue 33: --lang de makes the report German; the CSV a script reads
+    // (columns, keys, verdicts) is the same byte for byte.
+    void germanReportSameCsv()
+    {
+        QTemporaryDir dir;
+        const QString root = dir.filePath(QStringLiteral("class"));
+        writeClass(root, false);
+        const ProcessRun english = grade(root, dir.filePath(QStringLiteral("en")));
+        const ProcessRun german = grade(root, dir.filePath(QStringLiteral("de")),
+                                        {QStringLiteral("--lang"), QStringLiteral("de")});
+        QCOMPARE(english.exitCode, 0);
+        QCOMPARE(german.exitCode, 0);
+        QCOMPARE(withoutSeconds(readFile(dir.filePath(QStringLiteral("de/grades.csv")))),
+                 withoutSeconds(readFile(dir.filePath(QStringLiteral("en/grades.csv")))));
+        const QString en =
+            QString::fromUtf8(readFile(dir.filePath(QStringLiteral("en/report.html"))));
+        const QString de =
+            QString::fromUtf8(readFile(dir.filePath(QStringLiteral("de/report.html"))));
+        QVERIFY(en.contains(QStringLiteral("<html lang=\"en\">")));
+        QVERIFY(en.contains(QStringLiteral("Passes per scene")));
+        QVERIFY(de.contains(QStringLiteral("<html lang=\"de\">")));
+        QVERIFY2(de.contains(QStringLiteral("Bestanden je Szene"))
+                     && !de.contains(QStringLiteral("Passes per scene")),
+                 qPrintable(de.left(2000)));
     }
 
     void exitCodes()
@@ -357,9 +386,9 @@ private slots:
                  2);
         QCOMPARE(run({QStringLiteral("--scene"), checkScene()}).exitCode, 2);
         // The run cannot complete: 1
-        const ProcessRun noScene = run({root, QStringLiteral("--scene"),
-                                        dir.filePath(QStringLiteral("nosuch.json")),
-                                        QStringLiteral("--out"), out});
+        const ProcessRun noScene =
+            run({root, QStringLiteral("--scene"), dir.filePath(QStringLiteral("nosuch.json")),
+                 QStringLiteral("--out"), out});
         QCOMPARE(noScene.exitCode, 1);
         QVERIFY2(noScene.err.contains(QStringLiteral("nosuch.json")), qPrintable(noScene.err));
         writeFile(dir.filePath(QStringLiteral("file")), "not a folder");
