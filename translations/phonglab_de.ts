@@ -417,16 +417,20 @@ Stattdessen wird die Standardszene angezeigt.</translation>
         <translation>%1 Zeile %2: Spalte &apos;%3&apos; kommt zweimal vor</translation>
     </message>
     <message>
-        <source>%1 line %2: missing column%3 %4</source>
-        <translation>%1 Zeile %2: Spalten-Label%3 nicht gefunden: %4</translation>
-    </message>
-    <message>
         <source>%1: expected %2 fields as in the header, found %3</source>
         <translation>%1: %2 Felder wie in der Kopfzeile erwartet, gefunden: %3</translation>
     </message>
     <message>
         <source>%1: method is empty</source>
         <translation>%1: method ist leer</translation>
+    </message>
+    <message>
+        <source>%1 line %2: missing column %3</source>
+        <translation>%1 Zeile %2: Spalte %3 fehlt</translation>
+    </message>
+    <message>
+        <source>%1 line %2: missing columns %3</source>
+        <translation>%1 Zeile %2: Spalten %3 fehlen</translation>
     </message>
 </context>
 <context>
@@ -1904,6 +1908,10 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>ignored the text after the last face (from line %1)</source>
         <translation>Text nach der letzten Fläche ignoriert (ab Zeile %1)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
     </message>
 </context>
 <context>
@@ -4336,6 +4344,10 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>rendering failed</source>
         <translation>Rendern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>missing -o OUT.png</source>
+        <translation>-o OUT.png fehlt</translation>
     </message>
 </context>
 <context>

@@ -345,10 +345,10 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
         if (index[c] == -1 && c != ColObject)
             missing.append(QString::fromLatin1(kColumnNames[c]));
     if (!missing.isEmpty())
-        return fail(BenchResultWords::tr("%1 line %2: missing column%3 %4")
+        return fail((missing.size() == 1 ? BenchResultWords::tr("%1 line %2: missing column %3")
+                                         : BenchResultWords::tr("%1 line %2: missing columns %3"))
                         .arg(sourceName)
                         .arg(header.line)
-                        .arg(missing.size() == 1 ? QString() : QStringLiteral("s"))
                         .arg(missing.join(QStringLiteral(", "))));
 
     std::vector<BenchRow> parsed;

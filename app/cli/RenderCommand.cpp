@@ -97,7 +97,7 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
                          ? RenderCommandWords::tr("missing the scene file")
                          : RenderCommandWords::tr("exactly one scene file expected"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
-        return usage(QStringLiteral("missing -o OUT.png"));
+        return usage(RenderCommandWords::tr("missing -o OUT.png"));
 
     RenderArgs args;
     args.scenePath = positional.first();

@@ -267,7 +267,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
                 return fail(QStringLiteral("expected %1, found %2")
                                 .arg(index ? OffPrecheckWords::tr("a vertex index")
-                                           : QStringLiteral("a number"),
+                                           : OffPrecheckWords::tr("a number"),
                                      quoted(line[i])));
         }
         // Values after the indices are a colour, which the reader only takes
