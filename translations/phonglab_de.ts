@@ -1327,6 +1327,25 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::MaterialPresets</name>
+    <message>
+        <source>Plastic</source>
+        <translation>Kunststoff</translation>
+    </message>
+    <message>
+        <source>Rubber</source>
+        <translation>Gummi</translation>
+    </message>
+    <message>
+        <source>Polished metal</source>
+        <translation>Poliertes Metall</translation>
+    </message>
+    <message>
+        <source>Chalk</source>
+        <translation>Kreide</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::MeshBuilder</name>
     <message>
         <source>%1 of %2 corners have a zero or invalid normal in the file; computed angle-weighted normals replace them</source>

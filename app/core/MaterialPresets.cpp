@@ -1,10 +1,16 @@
 #include "MaterialPresets.h"
 
+#include <QCoreApplication>
 #include <QSettings>
 
 namespace phonglab {
 
 namespace {
+
+// The built-in presets' names, in the run's language (user presets keep theirs).
+struct PresetWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MaterialPresets)
+};
 
 const char *const kSettingsGroup = "materialPresets";
 
@@ -37,11 +43,12 @@ QList<MaterialPreset> builtinMaterialPresets()
     // diffuse, rubber almost none, metal a tinted highlight and little
     // diffuse, chalk no highlight at all.
     return {
-        {QStringLiteral("Plastic"), {{0.1, 0.02, 0.02}, {0.7, 0.1, 0.1}, {0.7, 0.7, 0.7}, 32.0}},
-        {QStringLiteral("Rubber"), {{0.05, 0.05, 0.05}, {0.4, 0.4, 0.4}, {0.05, 0.05, 0.05}, 10.0}},
-        {QStringLiteral("Polished metal"),
+        {PresetWords::tr("Plastic"), {{0.1, 0.02, 0.02}, {0.7, 0.1, 0.1}, {0.7, 0.7, 0.7}, 32.0}},
+        {PresetWords::tr("Rubber"),
+         {{0.05, 0.05, 0.05}, {0.4, 0.4, 0.4}, {0.05, 0.05, 0.05}, 10.0}},
+        {PresetWords::tr("Polished metal"),
          {{0.25, 0.2, 0.07}, {0.35, 0.3, 0.1}, {0.8, 0.75, 0.55}, 128.0}},
-        {QStringLiteral("Chalk"), {{0.25, 0.25, 0.25}, {0.9, 0.9, 0.88}, {0.0, 0.0, 0.0}, 1.0}},
+        {PresetWords::tr("Chalk"), {{0.25, 0.25, 0.25}, {0.9, 0.9, 0.88}, {0.0, 0.0, 0.0}, 1.0}},
     };
 }
 
