@@ -2,12 +2,12 @@
 
 #include "ResultChecks.h"
 #include "render/GlFormat.h"
-#include "ui/window/GuiMain.h"
 #include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/GuiMain.h"
+#include "ui/window/MainWindow.h"
 
 #include <QElapsedTimer>
 #include <QStandardPaths>
@@ -97,6 +97,15 @@ LiveShaderController *UiTestWindow::live() const
 ShaderEditor *UiTestWindow::fragmentEditor() const
 {
     return m_window->shaderDock()->editor(ShaderStage::Fragment);
+}
+
+void UiTestWindow::replaceInFragment(const QString &from, const QString &to) const
+{
+    ShaderEditor *editor = fragmentEditor();
+    QVERIFY2(editor->findFirst(from, false, true, false, false, true, 0, 0), qPrintable(from));
+    editor->setFocus();
+    QTest::keyClicks(editor, to);
+    QVERIFY(editor->text().contains(to));
 }
 
 } // namespace phonglab::test

@@ -94,6 +94,10 @@ protected:
     UniformSnapshot programSnapshot() const;
     LiveShaderController *live() const;
     ShaderEditor *fragmentEditor() const; // in the Shader dock
+    // As a user would: selects `from` in the fragment editor and types `to`
+    // over it (the build follows after the pause). Fails the current test
+    // with QTest's macros when `from` is not there.
+    void replaceInFragment(const QString &from, const QString &to) const;
     bool waitForApplied(int timeoutMs = kBuildTimeoutMs) const
     {
         return test::waitForApplied(*live(), timeoutMs);

@@ -78,16 +78,10 @@ private slots:
             QVERIFY2(menus.contains(QString::fromUtf8(expected)), qPrintable(menus.join(u'|')));
 
         // The slide's equation taken literally: a pass the status names in words.
-        ShaderEditor *editor = fragmentEditor();
-        for (const auto &[from, to] :
-             {std::pair{QStringLiteral("if (NdotL <= 0.0)"), QStringLiteral("if (false)")},
-              std::pair{QStringLiteral("Id[i] * kd * NdotL"),
-                        QStringLiteral("Id[i] * kd * max(0.0, NdotL)")}}) {
-            QVERIFY2(editor->findFirst(from, false, true, false, false, true, 0, 0),
-                     qPrintable(from));
-            editor->setFocus();
-            QTest::keyClicks(editor, to);
-        }
+        replaceInFragment(QStringLiteral("if (NdotL <= 0.0)"), QStringLiteral("if (false)"));
+        replaceInFragment(QStringLiteral("Id[i] * kd * NdotL"),
+                          QStringLiteral("Id[i] * kd * max(0.0, NdotL)"));
+        QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
         QVERIFY(QTest::qWaitFor(
             [&] {

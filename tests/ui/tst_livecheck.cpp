@@ -9,13 +9,13 @@
 #include "UiTestWindow.h"
 #include "render/QtImages.h"
 #include "ui/check/CheckOverlay.h"
-#include "ui/window/GuiArguments.h"
-#include "ui/window/GuiMain.h"
 #include "ui/check/LiveCheck.h"
-#include "ui/window/MainWindow.h"
 #include "ui/check/PixelInspectorDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/GuiArguments.h"
+#include "ui/window/GuiMain.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -24,9 +24,9 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QTemporaryDir>
 #include <QLabel>
 #include <QPushButton>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace phonglab;
@@ -173,8 +173,8 @@ private slots:
         QVERIFY2(result.report.passed(), qPrintable(check->statusLabel()->text()));
         QVERIFY2(check->statusLabel()->text().contains(QStringLiteral("slide")),
                  qPrintable(check->statusLabel()->text()));
-        const std::vector<int> errors = checkErrorSteps(toRgbImage(result.yours),
-                                                        *result.reference, PhongEquation::Slide);
+        const std::vector<int> errors =
+            checkErrorSteps(toRgbImage(result.yours), *result.reference, PhongEquation::Slide);
         for (std::size_t i = 0; i < errors.size(); ++i) {
             if (errors[i] < 0)
                 continue;
@@ -233,18 +233,19 @@ private slots:
         for (int y = 0; y < yours.height(); ++y)
             for (int x = 0; x < yours.width(); ++x)
                 worst = std::max(worst, maxChannelDifference(shown.pixel(x, y), yours.pixel(x, y)));
-        QVERIFY2(worst <= 1, qPrintable(QStringLiteral("the window's frame is off the check's by "
-                                                       "%1/255")
-                                            .arg(worst)));
+        QVERIFY2(worst <= 1,
+                 qPrintable(QStringLiteral("the window's frame is off the check's by "
+                                           "%1/255")
+                                .arg(worst)));
     }
 
     // Issue 31, B: `phonglab SCENE.json --vertex FILE --fragment FILE` opens
     // the scene with a student's shaders in the editor, checked live.
     void opensASubmission()
     {
-        const GuiArguments both = parseGuiArguments(
-            {QStringLiteral("s.json"), QStringLiteral("--vertex"), QStringLiteral("a.vert"),
-             QStringLiteral("--fragment=b.frag")});
+        const GuiArguments both =
+            parseGuiArguments({QStringLiteral("s.json"), QStringLiteral("--vertex"),
+                               QStringLiteral("a.vert"), QStringLiteral("--fragment=b.frag")});
         QVERIFY2(both.error.isEmpty(), qPrintable(both.error));
         QCOMPARE(both.files, QStringList{QStringLiteral("s.json")});
         QCOMPARE(both.vertexShader, QStringLiteral("a.vert"));
@@ -313,15 +314,6 @@ private slots:
     }
 
 private:
-    void replaceInFragment(const QString &from, const QString &to)
-    {
-        ShaderEditor *editor = fragmentEditor();
-        QVERIFY2(editor->findFirst(from, false, true, false, false, true, 0, 0), qPrintable(from));
-        editor->setFocus();
-        QTest::keyClicks(editor, to);
-        QVERIFY(editor->text().contains(to));
-    }
-
     // Waits for a finished check of the current frame with this verdict.
     bool waitForVerdict(bool passed)
     {
