@@ -2,10 +2,12 @@
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
 #include "core/Language.h"
+#include "core/RuntimeDirectory.h"
 #include "ui/window/GuiMain.h"
 
 int main(int argc, char **argv)
 {
+    phonglab::provideRuntimeDirectory(); // no Qt chatter about it on stderr
     // Any command and the window: `--lang en|de` anywhere on the line.
     if (const phonglab::LanguageOption language = phonglab::takeLanguageOption(argc, argv);
         !language.ok) {

@@ -154,8 +154,8 @@
         <translation>Meshes (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>cannot open the default scene %1: %2</source>
-        <translation>die Standardszene %1 kann nicht geöffnet werden: %2</translation>
+        <source>cannot open the default scene: %1</source>
+        <translation>die Standardszene kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
         <source>PhongLab</source>
@@ -184,6 +184,14 @@ Showing the default scene instead.</source>
         <translation>%1
 
 Stattdessen wird die Standardszene angezeigt.</translation>
+    </message>
+    <message>
+        <source>the check failed: %1</source>
+        <translation>die Prüfung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>cannot connect to the X display &apos;%1&apos; (DISPLAY)</source>
+        <translation>keine Verbindung zum X-Display &apos;%1&apos; (DISPLAY)</translation>
     </message>
 </context>
 <context>
@@ -686,6 +694,26 @@ Stattdessen wird die Standardszene angezeigt.</translation>
         <source>saves nothing</source>
         <translation>spart nichts</translation>
     </message>
+    <message>
+        <source>%1 triangles, %2 ms</source>
+        <translation>%1 Dreiecke, %2 ms</translation>
+    </message>
+    <message>
+        <source>full-detail %1 (%2)</source>
+        <translation>%1 in voller Detailstufe (%2)</translation>
+    </message>
+    <message>
+        <source>%1 triangles</source>
+        <translation>%1 Dreiecke</translation>
+    </message>
+    <message>
+        <source>saves %1</source>
+        <translation>spart %1</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
 </context>
 <context>
     <name>phonglab::ExamplesMenu</name>
@@ -827,6 +855,21 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
     <message>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::FrameRedraw</name>
+    <message>
+        <source>the driver gave no reason</source>
+        <translation>der Treiber nannte keinen Grund</translation>
+    </message>
+    <message>
+        <source>the frame could not be drawn at %1x%2</source>
+        <translation>das Bild konnte nicht in %1x%2 gezeichnet werden</translation>
+    </message>
+    <message>
+        <source>the program would not build again for the check: %1</source>
+        <translation>das Programm ließ sich für die Prüfung nicht erneut bauen: %1</translation>
     </message>
 </context>
 <context>
@@ -3194,6 +3237,13 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::ShaderSource</name>
+    <message>
+        <source>%1: cannot read shader: %2</source>
+        <translation>%1: Shader kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::ShortcutsDialog</name>
     <message>
         <source>3D view</source>
@@ -3289,6 +3339,10 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     <message>
         <source>PhongLab: frame time against error</source>
         <translation>PhongLab: Framezeit gegenüber Fehler</translation>
+    </message>
+    <message>
+        <source>error: RMSE</source>
+        <translation>Fehler: RMSE</translation>
     </message>
 </context>
 <context>
@@ -4280,6 +4334,50 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     <message>
         <source> (from the mesh cache)</source>
         <translation> (aus dem Mesh-Cache)</translation>
+    </message>
+    <message>
+        <source>file:            %1</source>
+        <translation>Datei:           %1</translation>
+    </message>
+    <message>
+        <source>vertices:        %1</source>
+        <translation>Vertices:        %1</translation>
+    </message>
+    <message>
+        <source>faces:           %1</source>
+        <translation>Flächen:         %1</translation>
+    </message>
+    <message>
+        <source>triangles:       %1</source>
+        <translation>Dreiecke:        %1</translation>
+    </message>
+    <message>
+        <source>analytic</source>
+        <translation>analytisch</translation>
+    </message>
+    <message>
+        <source>normals:         %1</source>
+        <translation>Normalen:        %1</translation>
+    </message>
+    <message>
+        <source>bounds:          %1 .. %2</source>
+        <translation>Ausdehnung:      %1 .. %2</translation>
+    </message>
+    <message>
+        <source>surface:         %1</source>
+        <translation>Oberfläche:      %1</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>offen</translation>
+    </message>
+    <message>
+        <source>warnings:        %1</source>
+        <translation>Warnungen:       %1</translation>
     </message>
 </context>
 <context>

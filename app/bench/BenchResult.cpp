@@ -1,5 +1,7 @@
 #include "BenchResult.h"
 
+#include "core/Language.h"
+
 #include <QCoreApplication>
 #include <QHash>
 
@@ -70,8 +72,9 @@ QString formatDouble(double v)
 QString detailPercent(double detail)
 {
     const double percent = detail * 100.0;
-    const QString number = std::abs(percent) >= 100 ? QString::number(percent, 'f', 0)
-                                                    : QString::number(percent, 'g', 3);
+    const QLocale locale = sentenceLocale();
+    const QString number = std::abs(percent) >= 100 ? locale.toString(percent, 'f', 0)
+                                                    : locale.toString(percent, 'g', 3);
     return number + QStringLiteral(" %");
 }
 

@@ -1,5 +1,7 @@
 #include "ErrorBudget.h"
 
+#include "core/Language.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 
@@ -30,17 +32,17 @@ QString formatMs(double ms)
 {
     const double a = std::abs(ms);
     if (a >= 100)
-        return QString::number(ms, 'f', 0);
+        return sentenceLocale().toString(ms, 'f', 0);
     if (a >= 1)
-        return QString::number(ms, 'f', 1);
-    return QString::number(ms, 'f', 2);
+        return sentenceLocale().toString(ms, 'f', 1);
+    return sentenceLocale().toString(ms, 'f', 2);
 }
 
 QString formatDb(double db)
 {
     if (std::isinf(db))
         return db > 0 ? QStringLiteral("∞") : QStringLiteral("-∞");
-    return QString::number(db, 'f', 1);
+    return sentenceLocale().toString(db, 'f', 1);
 }
 
 // flat < gouraud < faceted < blinn-phong < phong < anything else: per face,
@@ -75,7 +77,7 @@ QString rowLabel(const BenchRow &row)
 // "3 412 triangles, 1.9 ms"
 QString rowCost(const BenchRow &row)
 {
-    return QStringLiteral("%1 triangles, %2 ms")
+    return ErrorBudgetWords::tr("%1 triangles, %2 ms")
         .arg(groupedNumber(row.triangles), formatMs(row.frameMs));
 }
 
@@ -116,7 +118,7 @@ QString ErrorBudget::describe() const
 {
     if (kind == Kind::MaxError)
         return ErrorBudgetWords::tr("max error ≤ %1/255").arg(maxError);
-    return QStringLiteral("PSNR ≥ %1 dB").arg(QString::number(minPsnr, 'g', 6));
+    return QStringLiteral("PSNR ≥ %1 dB").arg(sentenceLocale().toString(minPsnr, 'g', 6));
 }
 
 std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
@@ -247,7 +249,7 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     fit.trianglesSaved = base.triangles - chosen.triangles;
     fit.msSaved = base.frameMs - chosen.frameMs;
     const QString baseText =
-        QStringLiteral("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
+        ErrorBudgetWords::tr("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
 
     if (fit.chosen == fit.baseline) {
         fit.summary = ErrorBudgetWords::tr("%1 is the cheapest that meets %2; %3")
@@ -257,18 +259,18 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
 
     QStringList parts;
     if (fit.trianglesSaved > 0)
-        parts << QStringLiteral("%1 triangles").arg(groupedNumber(fit.trianglesSaved));
+        parts << ErrorBudgetWords::tr("%1 triangles").arg(groupedNumber(fit.trianglesSaved));
     QString timePart;
     if (std::isfinite(fit.msSaved) && fit.msSaved > 0) {
         timePart = QStringLiteral("%1 ms").arg(formatMs(fit.msSaved));
         if (base.frameMs > 0)
             timePart += QStringLiteral(" (%1 %)").arg(
-                QString::number(fit.msSaved / base.frameMs * 100.0, 'f', 0));
+                sentenceLocale().toString(fit.msSaved / base.frameMs * 100.0, 'f', 0));
         parts << timePart;
     }
     QString effect;
     if (!parts.isEmpty())
-        effect = QStringLiteral("saves %1").arg(parts.join(QStringLiteral(" and ")));
+        effect = ErrorBudgetWords::tr("saves %1").arg(parts.join(ErrorBudgetWords::tr(" and ")));
     QStringList costs;
     if (fit.trianglesSaved < 0)
         costs << ErrorBudgetWords::tr("%1 more triangles").arg(groupedNumber(-fit.trianglesSaved));
@@ -277,7 +279,7 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
     if (!costs.isEmpty())
         effect += (effect.isEmpty() ? ErrorBudgetWords::tr("costs ")
                                     : ErrorBudgetWords::tr(" but costs "))
-            + costs.join(QStringLiteral(" and "));
+            + costs.join(ErrorBudgetWords::tr(" and "));
     if (effect.isEmpty())
         effect = ErrorBudgetWords::tr("saves nothing");
 

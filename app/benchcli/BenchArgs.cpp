@@ -147,11 +147,14 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                                   QStringLiteral("spec"));
     const QCommandLineOption pathFrames(QStringLiteral("path-frames"),
                                         BenchArgsWords::tr("Path frames."), QStringLiteral("n"));
-    parser.addOptions({help, scene, quick, out, budget, size, frames, lights, methods, details,
-                       images, normals, from, path, pathFrames});
 
     const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, kSynopsis, helpText()))
+    if (const std::optional<int> exit = parseOrExit(parser, arguments,
+                        {help,
+                         {scene, quick, out, budget, size, frames, lights, methods, details,
+                       images, normals, from, path, pathFrames},
+                         {QStringLiteral("scene")}},
+                        kSynopsis, helpText()))
         return *exit;
     if (!parser.positionalArguments().isEmpty())
         return usage(BenchArgsWords::tr("unexpected argument '%1' (scenes go after --scene)")

@@ -1,5 +1,6 @@
 #include "LabelledChart.h"
 #include "ChartLabels.h"
+#include "core/Language.h"
 
 #include <QCoreApplication>
 #include <QGraphicsSimpleTextItem>
@@ -72,7 +73,7 @@ YScale chooseYScale(const std::vector<double> &values)
 
 QString trimmedNumber(double v)
 {
-    return QString::number(v, 'g', 6);
+    return sentenceNumber(v, 'g', 6);
 }
 
 QFont sizedFont(QFont font, double pointSize, bool bold = false)
@@ -87,6 +88,8 @@ QFont sizedFont(QFont font, double pointSize, bool bold = false)
 QChart *buildChart(const ChartSpec &spec)
 {
     auto *chart = new QChart;
+    chart->setLocalizeNumbers(true); // axis labels write numbers as the sentences do
+    chart->setLocale(sentenceLocale());
     chart->setTitle(spec.title);
     chart->setTitleFont(sizedFont(chart->titleFont(), 11, true));
     chart->setAnimationOptions(QChart::NoAnimation);

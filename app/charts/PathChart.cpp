@@ -1,6 +1,7 @@
 #include "PathChart.h"
 
 #include "ChartImages.h"
+#include "core/Language.h"
 
 #include <QCoreApplication>
 #include <QGraphicsScene>
@@ -36,6 +37,8 @@ QLineSeries *line(const QString &name, const QColor &color, Qt::PenStyle style =
 QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
 {
     auto *chart = new QChart;
+    chart->setLocalizeNumbers(true); // axis labels write numbers as the sentences do
+    chart->setLocale(sentenceLocale());
     chart->setTitle(PathChartWords::tr("%1 — %2: %3 of %4 frames over budget (%5)")
                         .arg(run.scene, run.path)
                         .arg(run.overBudget())

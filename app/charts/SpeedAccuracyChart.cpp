@@ -80,7 +80,7 @@ QChart *createSpeedAccuracyChart(const std::vector<BenchRow> &rows, const QStrin
     ChartSpec spec;
     spec.title = title;
     spec.xTitle = SpeedAccuracyChartWords::tr("frame time (ms, median)");
-    spec.yTitle = QStringLiteral("error: RMSE");
+    spec.yTitle = SpeedAccuracyChartWords::tr("error: RMSE");
     spec.yUnit = SpeedAccuracyChartWords::tr("8-bit steps");
 
     std::map<QString, std::vector<const BenchRow *>, decltype(&methodLess)> byMethod(&methodLess);

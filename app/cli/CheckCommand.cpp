@@ -83,10 +83,11 @@ QString helpText()
               "                      tolerance, worst, diagnosis, undetectable, errors, "
               "bindings, equation,\n"
               "                      notes) instead of text\n"
-              "  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 "
-              "or more off;\n"
-              "                      dark blue the silhouette band left out, black the "
-              "background\n\n"
+              "  --diff OUT.png      write the error heatmap: dark green exact, bright green "
+              "1/255, yellow 4/255,\n"
+              "                      red 8/255 or more off; dark blue the silhouette band left "
+              "out, black the\n"
+              "                      background\n\n"
               "Mistake keys: %3, unknown.\n\n"
               "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong "
               "arguments.\n"
@@ -117,14 +118,17 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                       QStringLiteral("equation"));
     QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
     drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
-    parser.addOptions(
-        {help, size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  CheckCommandWords::tr("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
     if (const std::optional<int> exit =
-            parseOrExit(parser, arguments, help, synopsis(), helpText()))
+            parseOrExit(parser, arguments,
+                        {help,
+                         {size, vertex, fragment, shading, tolerance, json, diff, bind, equation,
+                          drawOnly},
+                         {QStringLiteral("bind")}},
+                        synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -158,6 +162,9 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     args.json = parser.isSet(json);
     args.diffPath = parser.value(diff);
     args.drawOnlyPath = parser.value(drawOnly);
+    if (const QString problem = pngNameProblem(QStringLiteral("--diff"), args.diffPath);
+        !problem.isEmpty())
+        return usage(problem);
     return args;
 }
 
@@ -216,7 +223,7 @@ int drawOnly(const CheckArgs &args)
     const SceneLoadResult loaded = checkedScene(args);
     if (!loaded.ok()) {
         CheckDrawing failed;
-        failed.outcome.errors.push_back(inputError(args.scenePath, loaded.error));
+        failed.outcome.errors.push_back(sceneError(args.scenePath, loaded));
         printLine(
             QString::fromUtf8(QJsonDocument(drawingJson(failed)).toJson(QJsonDocument::Compact)));
         return kExitOk;
@@ -241,7 +248,7 @@ int check(const CheckArgs &args)
     CheckReference reference;
     QImage yours;
     if (!loaded.ok())
-        outcome.errors.push_back(inputError(args.scenePath, loaded.error));
+        outcome.errors.push_back(sceneError(args.scenePath, loaded));
     else
         outcome = runCheckOn(args, scene, &reference, &yours);
 

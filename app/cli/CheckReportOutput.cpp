@@ -1,4 +1,5 @@
 #include "CheckReportOutput.h"
+#include "core/Language.h"
 
 #include "SceneStages.h"
 
@@ -183,11 +184,11 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     out << CheckWords::tr("check: %1").arg(verdictWord(outcome.verdict));
     out << CheckWords::tr(
                "%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
-               .arg(std::isfinite(c.psnr) ? CheckWords::tr("PSNR %1 dB").arg(c.psnr, 0, 'f', 2)
+               .arg(std::isfinite(c.psnr) ? CheckWords::tr("PSNR %1 dB").arg(sentenceNumber(c.psnr, 'f', 2))
                                           : CheckWords::tr("PSNR inf"))
                .arg(c.maxError)
                .arg(r.toleranceSteps)
-               .arg(100.0 * r.badFraction(), 0, 'f', 2)
+               .arg(sentenceNumber(100.0 * r.badFraction(), 'f', 2))
                .arg(c.pixelsCompared);
     if (outcome.verdict == CheckOutcome::Verdict::Pass && r.equation == PhongEquation::Slide)
         out << CheckWords::tr("equation: the slide's, taken literally (a highlight even where "

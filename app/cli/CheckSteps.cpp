@@ -6,6 +6,7 @@
 #include "render/QtImages.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QJsonArray>
 #include <QRegularExpression>
 
@@ -21,6 +22,14 @@ ShaderDiagnostic inputError(const QString &file, const QString &message)
     ShaderDiagnostic d;
     d.file = file;
     d.message = message;
+    return d;
+}
+
+ShaderDiagnostic sceneError(const QString &path, const SceneLoadResult &loaded)
+{
+    ShaderDiagnostic d = inputError(path, loaded.error);
+    d.line = loaded.errorLine;
+    d.column = loaded.errorColumn;
     return d;
 }
 
@@ -62,6 +71,11 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
         return fail(input.scenePath, set.error());
     const StageFiles files =
         chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
+    // A stage that cannot be read is that file's error (check --json's "file").
+    for (const QString &path : {files.vertex, files.fragment})
+        if (QFile file(path); !file.open(QIODevice::ReadOnly))
+            return fail(path,
+                        CheckStepsWords::tr("cannot read shader: %1").arg(file.errorString()));
     const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
     if (!built)
         return fail(QString(), built.error());

@@ -3,6 +3,7 @@
 #include "core/MeshData.h"
 #include "core/PhongEquation.h"
 #include "core/Scene.h"
+#include "core/SceneJson.h"
 #include "core/ShaderCheck.h"
 #include "render/ShaderDiagnostic.h"
 
@@ -61,6 +62,9 @@ void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReferen
 
 // An error not from the compiler: bad input, no GL, a file not read.
 ShaderDiagnostic inputError(const QString &file, const QString &message);
+// The scene file's error, at its line and column where the JSON text has
+// one (a syntax error).
+ShaderDiagnostic sceneError(const QString &path, const SceneLoadResult &loaded);
 
 // The drawing as `grade`'s child hands it to its parent (stdout, one JSON
 // object), and read back. The image travels as a PNG file beside it.

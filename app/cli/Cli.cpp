@@ -6,9 +6,12 @@
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
+#include "core/NearestSpelling.h"
+#include "core/ProgramSynopsis.h"
 #include "headless/HeadlessPlatform.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QString>
 
@@ -42,16 +45,7 @@ constexpr Subcommand kSubcommands[] = {
 
 void printHelp(std::span<const Subcommand> more)
 {
-    QString text = CliWords::tr(
-        "usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files\n"
-        "                                        (.obj .ply .off .stl .om; the default scene "
-        "when none given)\n"
-        "       phonglab SCENE.json --vertex FILE --fragment FILE\n"
-        "                                        the editor on a scene with these shaders (either "
-        "one alone\n"
-        "                                        keeps the scene's other stage)\n"
-        "       phonglab <command> [options]     run a command without a window\n\n"
-        "commands:\n");
+    QString text = programSynopsis() + CliWords::tr("\n\ncommands:\n");
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
         for (const Subcommand &c : commands)
             text += QStringLiteral("  %1  %2\n")
@@ -60,7 +54,15 @@ void printHelp(std::span<const Subcommand> more)
     text += CliWords::tr("\n--lang en|de on any command or the window chooses the language of "
                          "that run (else the locale's: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).");
     text += CliWords::tr("\n'phonglab <command> --help' describes a command's options.");
+    text += CliWords::tr("\n'phonglab --version' prints the version.");
     printLine(text);
+}
+
+// The options `phonglab` itself knows, before any command or file.
+QStringList topLevelOptions()
+{
+    return {QStringLiteral("--help"), QStringLiteral("--version"), QStringLiteral("--lang"),
+            QStringLiteral("--vertex"), QStringLiteral("--fragment")};
 }
 
 } // namespace
@@ -108,8 +110,21 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
         if (first == option || first.startsWith(option + QLatin1Char('=')))
             return std::nullopt;
     if (first.startsWith(QLatin1Char('-'))) {
-        printError(CliWords::tr("unknown option '%1' (see phonglab --help)").arg(first));
-        return kExitUsage;
+        const QCoreApplication app(argc, argv); // the message in the run's language
+        return usageError(unknownOptionMessage(first, topLevelOptions()), programSynopsis());
+    }
+    // A word that is neither a command nor a file is a slip: `meshinfo`.
+    if (!QFileInfo::exists(first)) {
+        const QCoreApplication app(argc, argv);
+        QStringList commands;
+        for (const auto &list : {std::span<const Subcommand>(kSubcommands), more})
+            for (const Subcommand &c : list)
+                commands << QString::fromLatin1(c.name);
+        const bool looksLikeAFile = first.contains(QLatin1Char('.')) || first.contains(QLatin1Char('/'));
+        return usageError(looksLikeAFile
+                              ? CliWords::tr("%1: no such file, and not a command").arg(first)
+                              : unknownCommandMessage(first, commands),
+                          programSynopsis());
     }
     return std::nullopt; // a scene file for the GUI
 }

@@ -1,11 +1,18 @@
 #include "CliCommon.h"
 
+#include "core/NearestSpelling.h"
+
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include <cstdio>
 
 namespace phonglab::cli {
+
+struct CliCommonWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CliCommon)
+};
 
 void printError(const QString &message)
 {
@@ -32,15 +39,62 @@ int usageError(const QString &message, const QString &synopsis)
     return kExitUsage;
 }
 
+namespace {
+
+// "-o" or "--size": an option's name as a user types it.
+QString dashed(const QString &name)
+{
+    return (name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + name;
+}
+
+// The unknown option `name` as the user typed it (without "=value").
+QString typedOption(const QString &name, const QStringList &arguments)
+{
+    for (const QString &argument : arguments.mid(1)) {
+        if (argument == QLatin1String("--"))
+            break;
+        const QString spelled = argument.section(QLatin1Char('='), 0, 0);
+        if (spelled.startsWith(QLatin1Char('-')) && spelled.mid(spelled.startsWith(QLatin1String("--")) ? 2 : 1) == name)
+            return spelled;
+    }
+    return dashed(name);
+}
+
+} // namespace
+
 std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments,
-                               const QCommandLineOption &help, const QString &synopsis,
+                               const CommandOptions &options, const QString &synopsis,
                                const QString &helpText)
 {
-    if (!parser.parse(arguments))
-        return usageError(parser.errorText(), synopsis);
-    if (parser.isSet(help)) {
+    parser.addOption(options.help);
+    parser.addOptions(options.options);
+    if (!parser.parse(arguments)) {
+        const QStringList unknown = parser.unknownOptionNames();
+        if (unknown.isEmpty())
+            return usageError(parser.errorText(), synopsis);
+        QStringList known;
+        for (const QCommandLineOption &option : options.options)
+            if (!(option.flags() & QCommandLineOption::HiddenFromHelp))
+                for (const QString &name : option.names())
+                    known << dashed(name);
+        for (const QString &name : options.help.names())
+            known << dashed(name);
+        return usageError(unknownOptionMessage(typedOption(unknown.first(), arguments), known),
+                          synopsis);
+    }
+    if (parser.isSet(options.help)) {
         printLine(helpText);
         return kExitOk;
+    }
+    for (const QCommandLineOption &option : options.options) {
+        const QString name = option.names().last();
+        if (option.valueName().isEmpty() || options.repeatable.contains(name))
+            continue;
+        if (const QStringList values = parser.values(option); values.size() > 1)
+            return usageError(CliCommonWords::tr("%1 given more than once ('%2', then '%3'): "
+                                                 "give it once")
+                                  .arg(dashed(name), values[0], values[1]),
+                              synopsis);
     }
     return std::nullopt;
 }

@@ -1,10 +1,11 @@
 #pragma once
+#include <QCommandLineOption>
+#include <QList>
 #include <QSize>
 #include <QString>
 #include <QStringList>
 #include <optional>
 
-class QCommandLineOption;
 class QCommandLineParser;
 
 namespace phonglab::cli {
@@ -24,10 +25,19 @@ QStringList argumentsFrom(int argc, char **argv);
 // A usage error: "phonglab: error: MESSAGE" and the synopsis on stderr;
 // returns kExitUsage.
 int usageError(const QString &message, const QString &synopsis);
-// What every subcommand does with its arguments first: a parse error is a
-// usage error, --help prints `helpText` and exits 0. nullopt: go on.
+// What every subcommand does with its arguments first: adds `help` and
+// `options` to `parser` and parses. A parse error is a usage error (an
+// unknown option named as typed, with the nearest known one suggested), and
+// so is an option with a value given twice unless `repeatable` names it
+// (`--bind`): the second would otherwise win silently. --help prints
+// `helpText` and exits 0. nullopt: go on.
+struct CommandOptions {
+    QCommandLineOption help;
+    QList<QCommandLineOption> options; // all but help
+    QStringList repeatable;            // names that may come more than once
+};
 std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &arguments,
-                               const QCommandLineOption &help, const QString &synopsis,
+                               const CommandOptions &options, const QString &synopsis,
                                const QString &helpText);
 
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.

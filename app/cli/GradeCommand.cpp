@@ -107,12 +107,15 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
-    parser.addOptions({help, scene, out, jobs, timeout, memory, size, tolerance, bind, equation});
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
     if (const std::optional<int> exit =
-            parseOrExit(parser, arguments, help, synopsis(), helpText()))
+            parseOrExit(parser, arguments,
+                        {help,
+                         {scene, out, jobs, timeout, memory, size, tolerance, bind, equation},
+                         {QStringLiteral("scene"), QStringLiteral("bind")}},
+                        synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -177,7 +180,7 @@ Result<std::vector<GradeScene>> loadScenes(const GradeArgs &args)
     for (const QString &path : args.scenePaths) {
         const SceneLoadResult loaded = loadSceneFile(path);
         if (!loaded.ok())
-            return fail(loaded.error);
+            return fail(QStringLiteral("%1: %2").arg(path, loaded.error));
         GradeScene s;
         s.path = path;
         s.label = names[QFileInfo(path).fileName()] > 1 ? path : QFileInfo(path).fileName();

@@ -281,7 +281,7 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
         .arg(QString::number(order), esc(student), QString::number(verdictRank(row.verdict)),
              std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("1e9"),
              esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
-             judged ? (std::isfinite(psnr) ? QString::number(psnr, 'f', 1) : QStringLiteral("∞"))
+             judged ? (std::isfinite(psnr) ? sentenceNumber(psnr, 'f', 1) : QStringLiteral("∞"))
                     : QString(),
              figure(row.yoursImage, ReportWords::tr("theirs"))
                  + figure(row.exactImage, ReportWords::tr("exact"))

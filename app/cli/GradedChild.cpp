@@ -110,7 +110,7 @@ void GradedChild::poll()
              {},
              GradedChildWords::tr("ran past the %1 s limit and was stopped (a loop that runs too "
                                   "long, or a frame the GPU cannot finish)")
-                 .arg(m_limits.wallClockMs / 1000.0),
+                 .arg(sentenceNumber(m_limits.wallClockMs / 1000.0)),
              seconds});
     } else if (const qint64 bytes = residentBytes(); bytes > m_limits.memoryBytes) {
         m_process.kill();

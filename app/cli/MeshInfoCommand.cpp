@@ -1,4 +1,5 @@
 #include "MeshInfoCommand.h"
+#include "core/Language.h"
 
 #include "CliCommon.h"
 #include "mesh/MeshLoader.h"
@@ -39,7 +40,6 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
                                      QStringLiteral("method"));
     const QCommandLineOption crease(
         QStringLiteral("crease"), MeshInfoCommandWords::tr("Crease angle."), QStringLiteral("deg"));
-    parser.addOptions({help, json, normals, crease});
 
     const QString synopsis = QString::fromLatin1(kUsage);
     const QString helpText =
@@ -58,7 +58,8 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
             "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
             "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
+    if (const std::optional<int> exit = parseOrExit(parser, arguments, {help, {json, normals, crease}, {}},
+                                                    synopsis, helpText))
         return *exit;
     if (parser.positionalArguments().size() != 1)
         return usage(MeshInfoCommandWords::tr("expected exactly one mesh file"));
@@ -143,29 +144,30 @@ void printText(const QString &path, const MeshLoadResult &r)
 {
     const MeshStats &s = r.stats;
     const auto v = [](const glm::vec3 &p) {
-        return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
+        return QStringLiteral("(%1, %2, %3)")
+            .arg(sentenceNumber(p.x), sentenceNumber(p.y), sentenceNumber(p.z));
     };
-    printLine(QStringLiteral("file:            %1").arg(path));
-    printLine(QStringLiteral("vertices:        %1").arg(s.fileVertices));
-    printLine(QStringLiteral("faces:           %1").arg(s.fileFaces));
-    printLine(QStringLiteral("triangles:       %1").arg(s.triangles));
+    printLine(MeshInfoCommandWords::tr("file:            %1").arg(path));
+    printLine(MeshInfoCommandWords::tr("vertices:        %1").arg(s.fileVertices));
+    printLine(MeshInfoCommandWords::tr("faces:           %1").arg(s.fileFaces));
+    printLine(MeshInfoCommandWords::tr("triangles:       %1").arg(s.triangles));
     const QString normals = s.normalsFromFile
         ? MeshInfoCommandWords::tr("from the file, per face corner")
         : path.startsWith(QLatin1String("builtin:"))
-        ? QStringLiteral("analytic")
+        ? MeshInfoCommandWords::tr("analytic")
         : MeshInfoCommandWords::tr("computed (%1)").arg(methodDescription(s));
-    printLine(QStringLiteral("normals:         %1").arg(normals));
+    printLine(MeshInfoCommandWords::tr("normals:         %1").arg(normals));
     printLine(MeshInfoCommandWords::tr("gpu vertices:    %1 (%2 split for differing normals)")
                   .arg(s.vertices)
                   .arg(s.splitVertices));
-    printLine(QStringLiteral("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
-    printLine(QStringLiteral("surface:         %1")
-                  .arg(s.closed ? QStringLiteral("closed") : QStringLiteral("open")));
+    printLine(MeshInfoCommandWords::tr("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
+    printLine(MeshInfoCommandWords::tr("surface:         %1")
+                  .arg(s.closed ? MeshInfoCommandWords::tr("closed") : MeshInfoCommandWords::tr("open")));
     printLine(
         MeshInfoCommandWords::tr("load time:       %1 ms%2")
-            .arg(s.loadMs, 0, 'f', 1)
+            .arg(sentenceNumber(s.loadMs, 'f', 1))
             .arg(s.fromCache ? MeshInfoCommandWords::tr(" (from the mesh cache)") : QString()));
-    printLine(QStringLiteral("warnings:        %1").arg(r.warnings.size()));
+    printLine(MeshInfoCommandWords::tr("warnings:        %1").arg(r.warnings.size()));
     for (const QString &w : r.warnings)
         printLine(QStringLiteral("  - ") + w);
 }

@@ -42,7 +42,6 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   RenderCommandWords::tr("Show help."));
-    parser.addOption(help);
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  RenderCommandWords::tr("Scene file (JSON)."));
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
@@ -65,7 +64,6 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
         QStringLiteral("bind"),
         RenderCommandWords::tr("What a uniform or input of the shader holds."),
         QStringLiteral("NAME=MEANING"));
-    parser.addOptions({output, size, vertex, fragment, shading, bind});
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis = RenderCommandWords::tr(
@@ -89,7 +87,10 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(knownMethods);
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments, help, synopsis, helpText))
+    if (const std::optional<int> exit = parseOrExit(
+            parser, arguments,
+            {help, {output, size, vertex, fragment, shading, bind}, {QStringLiteral("bind")}},
+            synopsis, helpText))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -102,6 +103,9 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     RenderArgs args;
     args.scenePath = positional.first();
     args.outputPath = parser.value(output);
+    if (const QString problem = pngNameProblem(QStringLiteral("-o"), args.outputPath);
+        !problem.isEmpty())
+        return usage(problem);
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
                                  readShadingOption(parser, shading, &args.shading),
                                  readBindOptions(parser, bind, &args.bindings)})
@@ -171,7 +175,7 @@ int render(const RenderArgs &args)
     if (const std::optional<QString> depth = depthPrecisionWarning(renderer.depthRange()))
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, *depth));
     if (const Result<> written = writePng(image, args.outputPath); !written) {
-        printError(written.error());
+        printError(QStringLiteral("%1: %2").arg(args.outputPath, written.error()));
         return kExitFailure;
     }
     return kExitOk;

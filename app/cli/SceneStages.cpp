@@ -5,6 +5,8 @@
 #include "render/ShaderSource.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
+#include <QImageWriter>
 #include <QSaveFile>
 
 #include <algorithm>
@@ -203,17 +205,35 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
     return out;
 }
 
+QString pngNameProblem(const QString &option, const QString &path)
+{
+    const QByteArray suffix = QFileInfo(path).suffix().toLower().toUtf8();
+    if (suffix.isEmpty() || suffix == "png")
+        return {};
+    static const QList<QByteArray> others = [] {
+        QList<QByteArray> formats = QImageWriter::supportedImageFormats();
+        formats << "jpg" << "jpeg" << "gif" << "webp" << "tif" << "tiff" << "bmp" << "svg"
+                << "exr" << "tga" << "heic" << "avif" << "jxl";
+        return formats;
+    }();
+    if (!others.contains(suffix))
+        return {};
+    return SceneStagesWords::tr("%1 %2: PhongLab writes PNG images only; give a name that ends "
+                                "in .png")
+        .arg(option, path);
+}
+
 Result<> writePng(const QImage &image, const QString &path)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(SceneStagesWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(SceneStagesWords::tr("cannot write: %1").arg(file.errorString()));
     if (!image.save(&file, "PNG")) {
         file.cancelWriting();
-        return fail(SceneStagesWords::tr("%1: PNG encoding failed").arg(path));
+        return fail(SceneStagesWords::tr("PNG encoding failed"));
     }
     if (!file.commit())
-        return fail(SceneStagesWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
+        return fail(SceneStagesWords::tr("cannot write: %1").arg(file.errorString()));
     return {};
 }
 

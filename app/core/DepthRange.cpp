@@ -1,4 +1,5 @@
 #include "DepthRange.h"
+#include "Language.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -59,13 +60,13 @@ std::optional<QString> depthPrecisionWarning(const DepthRange &range)
     const QString effect = resolved < 50.0
         ? DepthRangeWords::tr(
               "surfaces closer than about %1 % of their distance may show through each other")
-              .arg(resolved, 0, 'g', 2)
+              .arg(sentenceNumber(resolved, 'g', 2))
         : DepthRangeWords::tr("the depth buffer cannot tell surfaces apart");
     return DepthRangeWords::tr(
                "camera: near %1 and far %2 are %3 orders of magnitude apart (the eye is inside an "
                "object's bounds); %4: raise near")
-        .arg(range.nearPlane, 0, 'g', 3)
-        .arg(range.farPlane, 0, 'g', 3)
+        .arg(sentenceNumber(range.nearPlane, 'g', 3))
+        .arg(sentenceNumber(range.farPlane, 'g', 3))
         .arg(std::log10(range.ratio()), 0, 'f', 0)
         .arg(effect);
 }

@@ -1,4 +1,5 @@
 #include "ImageMetrics.h"
+#include "Language.h"
 
 #include "PhongReference.h"
 
@@ -153,10 +154,10 @@ QString ImageComparison::summary() const
     if (pixelsCompared == 0)
         return ImageMetricsWords::tr("no pixels compared");
     const QString psnrText =
-        std::isinf(psnr) ? QStringLiteral("inf") : QString::number(psnr, 'f', 2);
+        std::isinf(psnr) ? QStringLiteral("inf") : sentenceNumber(psnr, 'f', 2);
     return ImageMetricsWords::tr("PSNR %1 dB, RMSE %2, max %3/255 at (%4,%5), %6 px")
         .arg(psnrText)
-        .arg(rmse, 0, 'f', 2)
+        .arg(sentenceNumber(rmse, 'f', 2))
         .arg(maxError)
         .arg(worstPixel.x())
         .arg(worstPixel.y())

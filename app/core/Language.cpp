@@ -169,4 +169,15 @@ void useLanguage(const QString &language)
     }
 }
 
+QLocale sentenceLocale()
+{
+    return currentLanguage() == QLatin1String("de") ? QLocale(QLocale::German, QLocale::Germany)
+                                                    : QLocale::c();
+}
+
+QString sentenceNumber(double value, char format, int precision)
+{
+    return sentenceLocale().toString(value, format, precision);
+}
+
 } // namespace phonglab

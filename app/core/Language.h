@@ -1,4 +1,5 @@
 #pragma once
+#include <QLocale>
 #include <QString>
 #include <QStringList>
 
@@ -44,5 +45,12 @@ QString currentLanguage();
 // (none for English). For the window, whose remembered choice applies
 // after the application object exists. Needs a Q*Application.
 void useLanguage(const QString &language);
+// The locale for numbers inside the run's sentences: "12,5 %" and "2.683"
+// when it speaks German, the C locale ("12.5 %", "2683") in English, so
+// English output reads as it always has. Never for what a script reads:
+// files, JSON and CSV keep the C locale.
+QLocale sentenceLocale();
+// `value` written as the run's sentences write numbers (sentenceLocale()).
+QString sentenceNumber(double value, char format = 'g', int precision = 6);
 
 } // namespace phonglab

@@ -1,4 +1,5 @@
 #include "PixelTerms.h"
+#include "Language.h"
 
 #include "PhongReference.h"
 
@@ -19,9 +20,9 @@ namespace {
 QString vec(const glm::dvec3 &v)
 {
     return QStringLiteral("(%1, %2, %3)")
-        .arg(v.x, 0, 'f', 4)
-        .arg(v.y, 0, 'f', 4)
-        .arg(v.z, 0, 'f', 4);
+        .arg(sentenceNumber(v.x, 'f', 4))
+        .arg(sentenceNumber(v.y, 'f', 4))
+        .arg(sentenceNumber(v.z, 'f', 4));
 }
 
 } // namespace
@@ -108,14 +109,14 @@ QString PixelTerms::toText() const
         lines << QStringLiteral("light %1").arg(t.light);
         lines << QStringLiteral("  L      %1").arg(vec(t.L));
         lines << QStringLiteral("  R      %1").arg(vec(t.R));
-        lines << QStringLiteral("  d      %1").arg(t.distance, 0, 'f', 4);
-        lines << QStringLiteral("  f_att  %1").arg(t.attenuation, 0, 'f', 4);
-        lines << QStringLiteral("  N·L    %1").arg(t.NdotL, 0, 'f', 4);
+        lines << QStringLiteral("  d      %1").arg(sentenceNumber(t.distance, 'f', 4));
+        lines << QStringLiteral("  f_att  %1").arg(sentenceNumber(t.attenuation, 'f', 4));
+        lines << QStringLiteral("  N·L    %1").arg(sentenceNumber(t.NdotL, 'f', 4));
         if (shading == ReferenceShading::BlinnPhong) {
             lines << QStringLiteral("  H      %1").arg(vec(t.H));
-            lines << QStringLiteral("  N·H    %1").arg(t.NdotH, 0, 'f', 4);
+            lines << QStringLiteral("  N·H    %1").arg(sentenceNumber(t.NdotH, 'f', 4));
         } else {
-            lines << QStringLiteral("  R·V    %1").arg(t.RdotV, 0, 'f', 4);
+            lines << QStringLiteral("  R·V    %1").arg(sentenceNumber(t.RdotV, 'f', 4));
         }
         lines << QStringLiteral("  diffuse  %1").arg(vec(t.diffuse));
         lines << QStringLiteral("  specular %1").arg(vec(t.specular));

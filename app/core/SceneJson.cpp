@@ -571,9 +571,10 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
 
 SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir)
 {
-    const Result<QJsonDocument> doc = scenejson::parseJsonText(json);
+    SceneLoadResult result;
+    const Result<QJsonDocument> doc =
+        scenejson::parseJsonText(json, &result.errorLine, &result.errorColumn);
     if (!doc) {
-        SceneLoadResult result;
         result.error = doc.error();
         return result;
     }
@@ -585,8 +586,7 @@ SceneLoadResult loadSceneFile(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         SceneLoadResult result;
-        result.error =
-            SceneWords::tr("%1: cannot read scene file (%2)").arg(path, file.errorString());
+        result.error = SceneWords::tr("cannot read scene file (%1)").arg(file.errorString());
         return result;
     }
     return parseScene(file.readAll(), QFileInfo(path).absolutePath());

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace phonglab::scenejson {
@@ -83,12 +84,17 @@ qsizetype originalOffset(qsizetype offset, const std::vector<Rewrite> &rewrites)
     return std::max<qsizetype>(offset, 0);
 }
 
-QString syntaxError(const QByteArray &json, qsizetype offset, const QString &reason)
+QString syntaxError(const QByteArray &json, qsizetype offset, const QString &reason, int *lineOut,
+                    int *columnOut)
 {
     offset = std::min(offset, json.size());
     const QByteArray before = json.left(offset);
     const qsizetype line = before.count('\n') + 1;
     const qsizetype column = offset - (before.lastIndexOf('\n') + 1) + 1;
+    if (lineOut)
+        *lineOut = int(std::min<qsizetype>(line, std::numeric_limits<int>::max()));
+    if (columnOut)
+        *columnOut = int(std::min<qsizetype>(column, std::numeric_limits<int>::max()));
     return SceneJsonTextWords::tr("JSON syntax error at line %1, column %2 (byte offset %3): %4")
         .arg(line)
         .arg(column)
@@ -98,7 +104,7 @@ QString syntaxError(const QByteArray &json, qsizetype offset, const QString &rea
 
 } // namespace
 
-Result<QJsonDocument> parseJsonText(const QByteArray &json)
+Result<QJsonDocument> parseJsonText(const QByteArray &json, int *line, int *column)
 {
     QByteArray text = json;
     std::vector<Rewrite> rewrites;
@@ -112,7 +118,7 @@ Result<QJsonDocument> parseJsonText(const QByteArray &json)
             && rewriteOutOfRangeLiteral(text, parseError.offset, rewrites))
             continue;
         return fail(syntaxError(json, originalOffset(parseError.offset, rewrites),
-                                parseError.errorString()));
+                                parseError.errorString(), line, column));
     }
 }
 

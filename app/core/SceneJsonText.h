@@ -22,8 +22,10 @@ namespace phonglab::scenejson {
 //
 // On a genuine syntax error fails with
 // "JSON syntax error at line L, column C (byte offset N): <Qt's reason>",
-// positions counted in the caller's original text.
-Result<QJsonDocument> parseJsonText(const QByteArray &json);
+// positions counted in the caller's original text; `line` and `column`
+// (1-based) are set too where given.
+Result<QJsonDocument> parseJsonText(const QByteArray &json, int *line = nullptr,
+                                    int *column = nullptr);
 
 // The literal as written ("1e999") if `value` is an overflow marker.
 std::optional<QString> overflowLiteral(const QJsonValue &value);

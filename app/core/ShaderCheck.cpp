@@ -1,4 +1,5 @@
 #include "ShaderCheck.h"
+#include "Language.h"
 
 #include "PhongReference.h"
 #include "ReferenceEdges.h"
@@ -201,7 +202,7 @@ struct CheckWords {
 QString psnrText(const ImageComparison &c)
 {
     return std::isinf(c.psnr) ? QStringLiteral("PSNR ∞")
-                              : CheckWords::tr("PSNR %1 dB").arg(c.psnr, 0, 'f', 1);
+                              : CheckWords::tr("PSNR %1 dB").arg(sentenceNumber(c.psnr, 'f', 1));
 }
 
 } // namespace
@@ -237,7 +238,7 @@ QString checkSummary(const CheckReport &report)
     QString line = CheckWords::tr("✗ %1, max %2/255, %3 % of pixels off")
                        .arg(psnr)
                        .arg(c.maxError)
-                       .arg(100.0 * report.badFraction(), 0, 'f', 1);
+                       .arg(sentenceNumber(100.0 * report.badFraction(), 'f', 1));
     const MistakeDiagnosis &d = report.diagnosis;
     if (d.unexplained()) {
         line += CheckWords::tr(" — unknown: no classic mistake explains it; see the heatmap");

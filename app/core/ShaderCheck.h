@@ -81,8 +81,9 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
                         std::optional<PhongEquation> demanded = std::nullopt);
 
 // |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
-// from dark green (exact) through yellow to red (8/255 or more), the left-out
-// silhouette band dark blue, uncovered pixels black.
+// from dark green (exact) through bright green (1/255) and yellow (4/255) to
+// red (8/255 or more), the left-out silhouette band dark blue, uncovered
+// pixels black.
 // Against the exact image of `equation` (CheckReport::equation: the one the
 // render was judged by).
 RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference,

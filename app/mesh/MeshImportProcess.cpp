@@ -243,7 +243,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
                           "%1: the reader stopped answering after %2 s and was stopped; "
                           "the file is probably malformed")
                           .arg(path)
-                          .arg(limits.wallClockMs / 1000.0, 0, 'g', 3);
+                          .arg(sentenceNumber(limits.wallClockMs / 1000.0, 'g', 3));
         }
         if (!stopped.isEmpty()) {
             child.kill();

@@ -2,9 +2,15 @@
 
 #include "BuildReport.h"
 
+#include <QCoreApplication>
+
 namespace phonglab {
 
 namespace {
+
+struct FrameRedrawWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::FrameRedraw)
+};
 
 // The meshes are the same when every object names the same one: then only
 // lights, materials, transforms and the camera changed.
@@ -23,7 +29,7 @@ QString firstError(const BuildReport &report)
     for (const ShaderDiagnostic &d : report.diagnostics)
         if (d.isError())
             return d.message;
-    return QStringLiteral("the driver gave no reason");
+    return FrameRedrawWords::tr("the driver gave no reason");
 }
 
 } // namespace
@@ -51,7 +57,7 @@ Result<QImage> FrameRedraw::draw(const FrameRecipe &recipe, QOffscreenSurface *s
     renderer.setOptions(options);
     QImage image = m_offscreen->renderImage(recipe.size);
     if (image.isNull())
-        return fail(QStringLiteral("the frame could not be drawn at %1x%2")
+        return fail(FrameRedrawWords::tr("the frame could not be drawn at %1x%2")
                         .arg(recipe.size.width())
                         .arg(recipe.size.height()));
     return image;
@@ -89,7 +95,7 @@ Result<> FrameRedraw::useProgram(const FrameRecipe &recipe)
         recipe.sources ? renderer.setProgramSources(recipe.sources->vertex, recipe.sources->fragment)
                        : renderer.loadShading(recipe.scene.shading);
     if (!built.ok)
-        return fail(QStringLiteral("the program would not build again for the check: %1")
+        return fail(FrameRedrawWords::tr("the program would not build again for the check: %1")
                         .arg(firstError(built)));
     m_programOf = std::move(wanted);
     return {};

@@ -2,15 +2,22 @@
 
 #include "core/ShaderDialect.h"
 
+#include <QCoreApplication>
 #include <QFile>
 
 namespace phonglab {
+
+namespace {
+struct ShaderSourceWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderSource)
+};
+} // namespace
 
 Result<ShaderSource> ShaderSource::fromFile(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return fail(QStringLiteral("%1: cannot read shader: %2").arg(path, file.errorString()));
+        return fail(ShaderSourceWords::tr("%1: cannot read shader: %2").arg(path, file.errorString()));
     return ShaderSource{path, file.readAll()};
 }
 

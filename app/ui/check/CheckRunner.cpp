@@ -197,7 +197,7 @@ void CheckRunner::start(Request request)
                     {},
                     {},
                     {},
-                    QStringLiteral("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
+                    QObject::tr("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
                     0.0};
                 cache->reference.reset();
             }

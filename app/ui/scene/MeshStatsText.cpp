@@ -1,4 +1,5 @@
 #include "MeshStatsText.h"
+#include "core/Language.h"
 
 #include <QLocale>
 #include <QObject>
@@ -12,9 +13,9 @@ constexpr int kBoundsDigits = 4; // significant digits: enough to see the shape'
 QString pointText(const glm::vec3 &p)
 {
     return QStringLiteral("(%1, %2, %3)")
-        .arg(double(p.x), 0, 'g', kBoundsDigits)
-        .arg(double(p.y), 0, 'g', kBoundsDigits)
-        .arg(double(p.z), 0, 'g', kBoundsDigits);
+        .arg(sentenceNumber(double(p.x), 'g', kBoundsDigits))
+        .arg(sentenceNumber(double(p.y), 'g', kBoundsDigits))
+        .arg(sentenceNumber(double(p.z), 'g', kBoundsDigits));
 }
 
 } // namespace
@@ -27,7 +28,7 @@ QString normalsDescription(const MeshStats &stats, bool builtin)
         return QObject::tr("from file");
     QString how = normalMethodName(stats.normalMethod);
     if (stats.creaseAngleDeg)
-        how += QObject::tr(", crease %1°").arg(*stats.creaseAngleDeg, 0, 'g', 6);
+        how += QObject::tr(", crease %1°").arg(sentenceNumber(*stats.creaseAngleDeg, 'g', 6));
     return QObject::tr("computed (%1)").arg(how);
 }
 

@@ -1,4 +1,5 @@
 #include "SceneDock.h"
+#include "core/Language.h"
 
 #include "MeshStatsText.h"
 #include "NormalsEditor.h"
@@ -133,7 +134,7 @@ void SceneDock::addStats(QTreeWidgetItem *item, const SceneMeshes::Entry &entry,
     addField(item, tr("Normals"), normalsDescription(stats, builtin));
     addField(item, tr("Bounds"), boundsDescription(stats));
     addField(item, tr("Surface"), surfaceDescription(stats));
-    const QString loadTime = tr("%1 ms").arg(stats.loadMs, 0, 'f', 1);
+    const QString loadTime = tr("%1 ms").arg(sentenceNumber(stats.loadMs, 'f', 1));
     addField(item, tr("Load time"),
              stats.fromCache ? tr("%1 (from the mesh cache)").arg(loadTime) : loadTime);
 }

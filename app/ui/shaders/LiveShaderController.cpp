@@ -1,4 +1,5 @@
 #include "LiveShaderController.h"
+#include "core/Language.h"
 
 #include "ProgramTrial.h"
 
@@ -414,8 +415,8 @@ void LiveShaderController::keepOut(const QByteArray &hash, GlProgram program,
     const QString text =
         tr("Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames' "
            "worth); the last good program keeps drawing")
-            .arg(frameMs, 0, 'f', 0)
-            .arg(budgetMs, 0, 'f', 0);
+            .arg(sentenceNumber(frameMs, 'f', 0))
+            .arg(sentenceNumber(budgetMs, 'f', 0));
     m_dock->offerToApplyAnyway(text);
     emit programKeptOut(frameMs);
     emit statusMessage(text, kStatusTimeoutMs);
@@ -442,9 +443,9 @@ void LiveShaderController::announce(const QByteArray &hash, const BuildReport &r
     const int warnings = int(result.diagnostics.size());
     QString status = tr("Compiled in %1 ms (compile %2, link %3, first draw %4)")
                          .arg(double(m_buildClock.nsecsElapsed()) / 1e6, 0, 'f', 0)
-                         .arg(toMs(timings.compileNs), 0, 'f', 0)
-                         .arg(toMs(timings.linkNs), 0, 'f', 0)
-                         .arg(toMs(timings.warmNs), 0, 'f', 0);
+                         .arg(sentenceNumber(toMs(timings.compileNs), 'f', 0))
+                         .arg(sentenceNumber(toMs(timings.linkNs), 'f', 0))
+                         .arg(sentenceNumber(toMs(timings.warmNs), 'f', 0));
     if (warnings > 0)
         status += tr(" — %n warning(s)", nullptr, warnings);
     m_dock->setCompileStatus(status, true);

@@ -1,4 +1,5 @@
 #include "FrameStatsLabel.h"
+#include "core/Language.h"
 
 #include "Viewport.h"
 #include "core/DepthRange.h"
@@ -29,7 +30,7 @@ void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
         return;
     m_pace.shown(triangles);
     setText(tr("draw %1 ms · %2 triangles%3")
-                .arg(milliseconds, 0, 'f', 2)
+                .arg(sentenceNumber(milliseconds, 'f', 2))
                 .arg(QLocale().toString(triangles))
                 .arg(depth ? tr(" · low depth precision") : QString()));
     const QString explained =

@@ -1,8 +1,16 @@
 #include "GuiArguments.h"
 
+#include "core/NearestSpelling.h"
+
+#include <QCoreApplication>
+
 namespace phonglab {
 
 namespace {
+
+struct GuiArgumentsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::GuiArguments)
+};
 
 // "--vertex FILE" or "--vertex=FILE": the value, taking the next argument
 // when it is separate; false when `argument` is not `option`.
@@ -14,7 +22,7 @@ bool takeValue(const QString &option, const QStringList &arguments, qsizetype &i
         value = argument.mid(option.size() + 1);
     } else if (argument == option) {
         if (i + 1 >= arguments.size()) {
-            error = QStringLiteral("%1 needs a file").arg(option);
+            error = GuiArgumentsWords::tr("%1 needs a file").arg(option);
             return true;
         }
         value = arguments[++i];
@@ -22,7 +30,7 @@ bool takeValue(const QString &option, const QStringList &arguments, qsizetype &i
         return false;
     }
     if (value.isEmpty())
-        error = QStringLiteral("%1 needs a file").arg(option);
+        error = GuiArgumentsWords::tr("%1 needs a file").arg(option);
     return true;
 }
 
@@ -43,8 +51,12 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
                                     out.fragmentShader, out.error))) {
             continue;
         } else if (options && argument.startsWith(QLatin1Char('-')) && argument.size() > 1) {
-            out.error = QStringLiteral("unknown option %1 (phonglab --help lists the commands)")
-                            .arg(argument);
+            // --lang was taken out before (core/Language); the rest are
+            // the commands' own or slips.
+            out.error = unknownOptionMessage(
+                argument.section(QLatin1Char('='), 0, 0),
+                {QStringLiteral("--vertex"), QStringLiteral("--fragment"), QStringLiteral("--lang"),
+                 QStringLiteral("--help"), QStringLiteral("--version")});
         } else {
             out.files << argument;
         }
@@ -52,7 +64,7 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
     if (out.error.isEmpty() && out.hasShaders()
         && (out.files.size() != 1
             || !out.files.front().endsWith(QLatin1String(".json"), Qt::CaseInsensitive)))
-        out.error = QStringLiteral(
+        out.error = GuiArgumentsWords::tr(
             "--vertex and --fragment open one scene with those shaders: phonglab SCENE.json "
             "--vertex FILE --fragment FILE");
     return out;

@@ -4,6 +4,7 @@
 #include "LanguageMenu.h"
 #include "MainWindow.h"
 #include "core/Language.h"
+#include "core/ProgramSynopsis.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 #include "ui/viewport/Viewport.h"
@@ -69,8 +70,8 @@ bool openDefaultScene(MainWindow &window)
     const Result<> opened = window.openScene(path);
     if (opened)
         return true;
-    const QString message =
-        QObject::tr("cannot open the default scene %1: %2").arg(path, opened.error());
+    // The error names the file.
+    const QString message = QObject::tr("cannot open the default scene: %1").arg(opened.error());
     printError(message);
     QMessageBox::critical(nullptr, QObject::tr("PhongLab"), message);
     return false;
@@ -112,6 +113,17 @@ void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples)
 
 int runGui(int argc, char **argv)
 {
+    // A slip in the arguments is a usage error with or without a display.
+    GuiArguments requested;
+    {
+        const QCoreApplication words(argc, argv); // the run's language, for the message
+        requested = parseGuiArguments(QCoreApplication::arguments().mid(1));
+        if (!requested.error.isEmpty()) {
+            printError(requested.error);
+            std::fprintf(stderr, "%s\n", programSynopsis().toLocal8Bit().constData());
+            return kExitUsage;
+        }
+    }
     if (!displayConfigured()) {
         std::fputs(kNoDisplayMessage, stderr);
         return kExitFailure;
@@ -123,7 +135,7 @@ int runGui(int argc, char **argv)
     if (x11FallbackArmed) {
         qunsetenv("QT_QPA_PLATFORM"); // not for child processes
         if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
-            printError(QStringLiteral("cannot connect to the X display '%1' (DISPLAY)")
+            printError(QObject::tr("cannot connect to the X display '%1' (DISPLAY)")
                            .arg(qEnvironmentVariable("DISPLAY")));
             return kExitFailure;
         }
@@ -142,13 +154,6 @@ int runGui(int argc, char **argv)
         !languageRequested() && !remembered.isEmpty())
         useLanguage(remembered);
 
-    QStringList arguments = QApplication::arguments();
-    arguments.removeFirst(); // the program
-    const GuiArguments requested = parseGuiArguments(arguments);
-    if (!requested.error.isEmpty()) {
-        printError(requested.error);
-        return kExitUsage;
-    }
 
     MainWindow window;
     useMultisamplingInViewOnly(window, kViewportSamples);

@@ -1,4 +1,5 @@
 #include "MainWindow.h"
+#include "core/Language.h"
 
 #include "DefaultLayout.h"
 #include "FileMenu.h"
@@ -86,7 +87,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
         statusBar()->showMessage(
             tr("One frame took %1 ms: the view draws again when you click, scroll or press a key "
                "in it")
-                .arg(ms, 0, 'f', 0));
+                .arg(sentenceNumber(ms, 'f', 0)));
     });
     // Queued: the error is raised from inside the view's GL start or a frame, where a
     // dialog must not be opened.
@@ -314,7 +315,7 @@ Result<> MainWindow::openScene(const QString &path)
     m_loadJob->cancel(); // one load at a time
     const SceneLoadResult loaded = loadSceneFile(path);
     if (!loaded.ok())
-        return fail(loaded.error);
+        return fail(QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(path), loaded.error));
     if (Result<> set = m_viewport->setScene(*loaded.scene); !set)
         return set;
     setScenePath(path);
@@ -398,7 +399,7 @@ Result<> MainWindow::startSceneLoad(const QString &path, const QString &vertexPa
 {
     SceneLoadResult parsed = loadSceneFile(path);
     if (!parsed.ok())
-        return fail(parsed.error);
+        return fail(QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(path), parsed.error));
     if (!vertexPath.isEmpty())
         parsed.scene->vertexShader = QFileInfo(vertexPath).absoluteFilePath();
     if (!fragmentPath.isEmpty())
