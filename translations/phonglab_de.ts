@@ -934,6 +934,17 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
     </message>
 </context>
 <context>
+    <name>phonglab::GuiArguments</name>
+    <message>
+        <source>%1 needs a file</source>
+        <translation>%1 braucht eine Datei</translation>
+    </message>
+    <message>
+        <source>--vertex and --fragment open one scene with those shaders: phonglab SCENE.json --vertex FILE --fragment FILE</source>
+        <translation>--vertex und --fragment öffnen eine Szene mit diesen Shadern: phonglab SCENE.json --vertex FILE --fragment FILE</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::HelpMenu</name>
     <message>
         <source>&amp;Documentation</source>
@@ -1788,6 +1799,21 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::NearestSpelling</name>
+    <message>
+        <source> (did you mean &apos;%1&apos;?)</source>
+        <translation> (gemeint ist wohl &apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>unbekannte Option &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::NormalStudyOutput</name>
     <message>
         <source>%1: cannot write: %2</source>
@@ -2442,6 +2468,23 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::ProgramSynopsis</name>
+    <message>
+        <source>usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files
+                                        (.obj .ply .off .stl .om; the default scene when none given)
+       phonglab SCENE.json --vertex FILE --fragment FILE
+                                        the editor on a scene with these shaders (either one alone
+                                        keeps the scene&apos;s other stage)
+       phonglab &lt;command&gt; [options]     run a command without a window</source>
+        <translation>Aufruf: phonglab [SCENE.json | MESH...]  den Editor mit einer Szene oder mit Mesh-Dateien starten
+                                         (.obj .ply .off .stl .om; ohne Angabe die Standardszene)
+        phonglab SCENE.json --vertex FILE --fragment FILE
+                                         den Editor mit einer Szene und diesen Shadern starten (ist nur
+                                         einer angegeben, bleibt die andere Stufe der Szene erhalten)
+        phonglab &lt;command&gt; [options]     einen Befehl ohne Fenster ausführen</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::RecentFiles</name>
     <message>
         <source>&amp;%1 %2</source>
@@ -2760,8 +2803,12 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation>oberste Ebene: JSON-Objekt erwartet (erhalten: array)</translation>
     </message>
     <message>
-        <source>%1: cannot read scene file (%2)</source>
-        <translation>%1: Szenendatei kann nicht gelesen werden (%2)</translation>
+        <source>unknown builtin mesh &apos;%1&apos;%2; known: %3</source>
+        <translation>unbekanntes eingebautes Mesh &apos;%1&apos;%2; bekannt: %3</translation>
+    </message>
+    <message>
+        <source>cannot read scene file (%1)</source>
+        <translation>Szenendatei kann nicht gelesen werden (%1)</translation>
     </message>
 </context>
 <context>
@@ -3179,6 +3226,18 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
     <message>
         <source>Ia·ka added once per light</source>
         <translation>Ia·ka einmal pro Lichtquelle addiert</translation>
+    </message>
+    <message>
+        <source>which normal: the one interpolated across the face from the vertices&apos; normals; with each face&apos;s own normal the surface shows its facets</source>
+        <translation>welche Normale: die aus den Normalen der Vertices über die Fläche interpolierte; mit der eigenen Normale jeder Fläche zeigt die Oberfläche ihre Facetten</translation>
+    </message>
+    <message>
+        <source>lit once per face with its normal (flat shading)</source>
+        <translation>einmal pro Fläche mit ihrer Normale beleuchtet (flache Schattierung)</translation>
+    </message>
+    <message>
+        <source>lit per fragment with the face&apos;s normal (faceted shading)</source>
+        <translation>pro Fragment mit der Normale der Fläche beleuchtet (facettierte Schattierung)</translation>
     </message>
 </context>
 <context>
@@ -3738,62 +3797,6 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
                        [--json] [--diff OUT.png]</translation>
     </message>
     <message>
-        <source>
-
-Renders SCENE.json with the shaders `render` would use, compares the image with the exact
-(double-precision) reference of the same scene, leaving out a band around silhouettes,
-and when it differs names the classic mistake that explains it.
-
-  --vertex FILE       vertex shader instead of the scene&apos;s or the shading method&apos;s
-  --fragment FILE     fragment shader instead of the scene&apos;s or the shading method&apos;s
-  --shading NAME      shading method instead of the scene&apos;s; one of %1
-  --size WxH          image size in pixels, default 800x600
-  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
-  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable. Names are
-                      bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
-                      this wins over that. Meanings: %4, or none
-  --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
-                      or the guarded one (guarded: none there); by default either passes
-  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
-                      tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
-                      notes) instead of text
-  --diff OUT.png      write the error heatmap: dark green exact, yellow, red 8/255 or more off;
-                      dark blue the silhouette band left out, black the background
-
-Mistake keys: %3, unknown.
-
-Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.
-Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
-        <translation>
-
-Rendert SCENE.json mit den Shadern, die `render` verwenden würde, vergleicht das Bild mit der
-exakten Referenz (doppelte Genauigkeit) derselben Szene, ohne einen Rand um die Silhouetten,
-und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
-
-  --vertex FILE       Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
-  --fragment FILE     Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
-  --shading NAME      Schattierungsverfahren anstelle dessen der Szene; eines von %1
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
-  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
-                      wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
-                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none
-  --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
-                      N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
-                      besteht beides
-  --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
-                      bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
-                      equation, notes)
-  --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, gelb, rot ab 8/255 Abweichung;
-                      dunkelblau der ausgelassene Silhouettenrand, schwarz der Hintergrund
-
-Fehlerschlüssel: %3, unknown.
-
-Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
-2 falsche Argumente.
-Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
-    </message>
-    <message>
         <source>Show help.</source>
         <translation>Hilfe anzeigen.</translation>
     </message>
@@ -3824,6 +3827,64 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>no reference: %1</source>
         <translation>keine Referenz: %1</translation>
+    </message>
+    <message>
+        <source>
+
+Renders SCENE.json with the shaders `render` would use, compares the image with the exact
+(double-precision) reference of the same scene, leaving out a band around silhouettes,
+and when it differs names the classic mistake that explains it.
+
+  --vertex FILE       vertex shader instead of the scene&apos;s or the shading method&apos;s
+  --fragment FILE     fragment shader instead of the scene&apos;s or the shading method&apos;s
+  --shading NAME      shading method instead of the scene&apos;s; one of %1
+  --size WxH          image size in pixels, default 800x600
+  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
+  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable. Names are
+                      bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
+                      this wins over that. Meanings: %4, or none
+  --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
+                      or the guarded one (guarded: none there); by default either passes
+  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
+                      tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
+                      notes, warnings) instead of text
+  --diff OUT.png      write the error heatmap: dark green exact, bright green 1/255, yellow 4/255,
+                      red 8/255 or more off; dark blue the silhouette band left out, black the
+                      background
+
+Mistake keys: %3, unknown.
+
+Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.
+Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <translation>
+
+Rendert SCENE.json mit den Shadern, die `render` verwenden würde, vergleicht das Bild mit der
+exakten Referenz (doppelte Genauigkeit) derselben Szene, ohne einen Rand um die Silhouetten,
+und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
+
+  --vertex FILE       Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
+  --fragment FILE     Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
+  --shading NAME      Schattierungsverfahren anstelle dessen der Szene; eines von %1
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
+  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
+                      wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
+                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none
+  --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
+                      N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
+                      besteht beides
+  --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
+                      bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
+                      equation, notes, warnings)
+  --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, hellgrün 1/255, gelb 4/255,
+                      rot ab 8/255 Abweichung; dunkelblau der ausgelassene Silhouettenrand,
+                      schwarz der Hintergrund
+
+Fehlerschlüssel: %3, unknown.
+
+Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
+2 falsche Argumente.
+Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
     </message>
 </context>
 <context>
@@ -3923,6 +3984,10 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
         <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
     </message>
+    <message>
+        <source>cannot read shader: %1</source>
+        <translation>Shader kann nicht gelesen werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::ClassFolder</name>
@@ -3950,34 +4015,10 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
 <context>
     <name>phonglab::cli::Cli</name>
     <message>
-        <source>usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files
-                                        (.obj .ply .off .stl .om; the default scene when none given)
-       phonglab SCENE.json --vertex FILE --fragment FILE
-                                        the editor on a scene with these shaders (either one alone
-                                        keeps the scene&apos;s other stage)
-       phonglab &lt;command&gt; [options]     run a command without a window
-
-commands:
-</source>
-        <translation>Aufruf: phonglab [SCENE.json | MESH...]  den Editor mit einer Szene oder mit Mesh-Dateien starten
-                                         (.obj .ply .off .stl .om; ohne Angabe die Standardszene)
-        phonglab SCENE.json --vertex FILE --fragment FILE
-                                         den Editor mit einer Szene und diesen Shadern starten (ist nur
-                                         einer angegeben, bleibt die andere Stufe der Szene erhalten)
-        phonglab &lt;command&gt; [options]     einen Befehl ohne Fenster ausführen
-
-Befehle:
-</translation>
-    </message>
-    <message>
         <source>
 &apos;phonglab &lt;command&gt; --help&apos; describes a command&apos;s options.</source>
         <translation>
 &apos;phonglab &lt;command&gt; --help&apos; beschreibt die Optionen eines Befehls.</translation>
-    </message>
-    <message>
-        <source>unknown option &apos;%1&apos; (see phonglab --help)</source>
-        <translation>unbekannte Option &apos;%1&apos; (siehe phonglab --help)</translation>
     </message>
     <message>
         <source>
@@ -4003,6 +4044,33 @@ Befehle:
     <message>
         <source>load a mesh and report its size, normals, bounds and warnings</source>
         <translation>ein Mesh laden und Größe, Normalen, Ausdehnung und Warnungen ausgeben</translation>
+    </message>
+    <message>
+        <source>
+
+commands:
+</source>
+        <translation>
+
+Befehle:
+</translation>
+    </message>
+    <message>
+        <source>
+&apos;phonglab --version&apos; prints the version.</source>
+        <translation>
+&apos;phonglab --version&apos; gibt die Version aus.</translation>
+    </message>
+    <message>
+        <source>%1: no such file, and not a command</source>
+        <translation>%1: keine solche Datei und kein Befehl</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::CliCommon</name>
+    <message>
+        <source>%1 given more than once (&apos;%2&apos;, then &apos;%3&apos;): give it once</source>
+        <translation>%1 mehrfach angegeben (&apos;%2&apos;, dann &apos;%3&apos;): nur einmal angeben</translation>
     </message>
 </context>
 <context>
@@ -4280,30 +4348,6 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
         <translation>Knickwinkel.</translation>
     </message>
     <message>
-        <source>
-
-Loads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,
-faces, where the normals came from, bounds, split vertices, warnings and load time.
-
-  --json            machine-readable output; keys: vertices, faces, normals (&quot;file&quot; or
-                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms, and more
-  --normals METHOD  auto (default: the file&apos;s, else angle), flat, average, area, angle
-  --crease DEG      split normals where faces meet at more than DEG degrees
-
-Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.</source>
-        <translation>
-
-Lädt ein Mesh (OBJ, PLY, OFF, STL, OM) so, wie eine Szene es lädt, und gibt seine Vertices,
-Flächen, die Herkunft der Normalen, Ausdehnung, aufgeteilte Vertices, Warnungen und Ladezeit aus.
-
-  --json            maschinenlesbare Ausgabe; Schlüssel: vertices, faces, normals (&quot;file&quot; oder
-                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms und weitere
-  --normals METHOD  auto (Standard: die der Datei, sonst angle), flat, average, area, angle
-  --crease DEG      Normalen aufteilen, wo Flächen in einem Winkel von mehr als DEG Grad aufeinandertreffen
-
-Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 falsche Argumente.</translation>
-    </message>
-    <message>
         <source>expected exactly one mesh file</source>
         <translation>genau eine Mesh-Datei erwartet</translation>
     </message>
@@ -4378,6 +4422,37 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     <message>
         <source>warnings:        %1</source>
         <translation>Warnungen:       %1</translation>
+    </message>
+    <message>
+        <source>
+
+Loads a mesh (OBJ, PLY, OFF, STL, OM) the way a scene does and prints its vertices,
+faces, where the normals came from, bounds, split vertices, warnings and load time.
+
+  --json            machine-readable output; keys: vertices, faces, normals (&quot;file&quot; or
+                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms, and more
+  --normals METHOD  auto (default: the file&apos;s, else angle), flat, average, area, angle
+  --crease DEG      split computed normals where faces meet at more than DEG degrees; a file&apos;s
+                    own normals are used as written (--normals angle computes them instead)
+
+Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.</source>
+        <translation>
+
+Lädt ein Mesh (OBJ, PLY, OFF, STL, OM) so, wie eine Szene es lädt, und gibt seine Vertices,
+Flächen, die Herkunft der Normalen, Ausdehnung, aufgeteilte Vertices, Warnungen und Ladezeit aus.
+
+  --json            maschinenlesbare Ausgabe; Schlüssel: vertices, faces, normals (&quot;file&quot; oder
+                    &quot;computed&quot;), normal_method, bounds, warnings, load_ms und weitere
+  --normals METHOD  auto (Standard: die der Datei, sonst angle), flat, average, area, angle
+  --crease DEG      berechnete Normalen aufteilen, wo Flächen in einem Winkel von mehr als DEG Grad
+                    aufeinandertreffen; eigene Normalen einer Datei bleiben, wie sie sind
+                    (--normals angle berechnet sie stattdessen)
+
+Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 falsche Argumente.</translation>
+    </message>
+    <message>
+        <source>--crease %1 is not used: the file has normals of its own, used as written (--normals angle computes them with the crease)</source>
+        <translation>--crease %1 wird nicht verwendet: die Datei hat eigene Normalen, die unverändert verwendet werden (--normals angle berechnet sie mit dem Knickwinkel)</translation>
     </message>
 </context>
 <context>
@@ -4490,14 +4565,6 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
     </message>
     <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: Schreiben nicht möglich: %2</translation>
-    </message>
-    <message>
-        <source>%1: PNG encoding failed</source>
-        <translation>%1: PNG-Kodierung fehlgeschlagen</translation>
-    </message>
-    <message>
         <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
         <translation>der Shader nimmt %1 %2 (seine Uniform-Variablen für Lichtquellen haben für nicht mehr Platz), die Szene hat %3 eingeschaltet: geprüft mit den ersten %1 allein</translation>
     </message>
@@ -4508,6 +4575,18 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>lights</source>
         <translation>Lichtquellen</translation>
+    </message>
+    <message>
+        <source>%1 %2: PhongLab writes PNG images only; give a name that ends in .png</source>
+        <translation>%1 %2: PhongLab schreibt nur PNG-Bilder; einen Namen mit der Endung .png angeben</translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>PNG encoding failed</source>
+        <translation>PNG-Kodierung fehlgeschlagen</translation>
     </message>
 </context>
 </TS>

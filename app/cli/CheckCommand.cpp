@@ -82,7 +82,7 @@ QString helpText()
               "bad_fraction,\n"
               "                      tolerance, worst, diagnosis, undetectable, errors, "
               "bindings, equation,\n"
-              "                      notes) instead of text\n"
+              "                      notes, warnings) instead of text\n"
               "  --diff OUT.png      write the error heatmap: dark green exact, bright green "
               "1/255, yellow 4/255,\n"
               "                      red 8/255 or more off; dark blue the silhouette band left "
@@ -251,6 +251,10 @@ int check(const CheckArgs &args)
         outcome.errors.push_back(sceneError(args.scenePath, loaded));
     else
         outcome = runCheckOn(args, scene, &reference, &yours);
+    // What the file says but is not checked as written, as render says it.
+    outcome.warnings = loaded.warnings;
+    for (const QString &w : loaded.warnings)
+        printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
     if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
         const Result<> written =
@@ -268,7 +272,9 @@ int check(const CheckArgs &args)
                 .trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)
-            if (e.line == 0) // compile errors with a line are printed as the compiler's
+            // Compile errors with a line were printed as the compiler's; a
+            // scene's syntax error has a line too, and its message says it.
+            if (e.line == 0 || !loaded.ok())
                 printError(e.file.isEmpty() ? e.message
                                             : QStringLiteral("%1: %2").arg(e.file, e.message));
         printLine(checkText(outcome, scene));

@@ -165,6 +165,7 @@ QJsonObject checkJson(const CheckOutcome &outcome)
     o.insert(QStringLiteral("equation"),
              judged ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
     o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(outcome.notes));
+    o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(outcome.warnings));
     return o;
 }
 

@@ -29,6 +29,7 @@ struct CheckOutcome {
     std::vector<ShaderStageText> stages;  // the user's sources, for the diagnosis' lines
     ProgramBindings bindings;             // what each of the program's names was bound to
     QStringList notes;                    // what the verdict rests on that the user should know
+    QStringList warnings; // the scene file's: a key ignored, a format-1 "flat" read as "faceted"
 };
 
 QJsonObject checkJson(const CheckOutcome &outcome);

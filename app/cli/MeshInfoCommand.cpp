@@ -55,7 +55,10 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
             "more\n"
             "  --normals METHOD  auto (default: the file's, else angle), flat, average, area, "
             "angle\n"
-            "  --crease DEG      split normals where faces meet at more than DEG degrees\n\n"
+            "  --crease DEG      split computed normals where faces meet at more than DEG "
+            "degrees; a file's\n"
+            "                    own normals are used as written (--normals angle computes "
+            "them instead)\n\n"
             "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
     if (const std::optional<int> exit = parseOrExit(parser, arguments, {help, {json, normals, crease}, {}},
@@ -125,8 +128,10 @@ void printJson(const QString &path, const MeshLoadResult &r)
              s.normalsFromFile                                ? QStringLiteral("file")
                  : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
                                                               : normalMethodName(s.normalMethod));
-    o.insert(QStringLiteral("crease_deg"),
-             s.creaseAngleDeg ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
+    // A crease splits computed normals only; the file's are used as written.
+    o.insert(QStringLiteral("crease_deg"), s.creaseAngleDeg && !s.normalsFromFile
+                                               ? QJsonValue(*s.creaseAngleDeg)
+                                               : QJsonValue());
     o.insert(QStringLiteral("bounds"),
              QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)},
                          {QStringLiteral("max"), vec3Json(s.boundsMax)}});
@@ -185,6 +190,14 @@ int runMeshInfo(int argc, char **argv)
         printError(result.error);
         return kExitFailure;
     }
+    if (args.normals.creaseAngleDeg && result.stats.normalsFromFile)
+        printErrLine(QStringLiteral("phonglab: warning: %1: %2")
+                         .arg(args.path,
+                              MeshInfoCommandWords::tr(
+                                  "--crease %1 is not used: the file has normals of its own, "
+                                  "used as written (--normals angle computes them with the "
+                                  "crease)")
+                                  .arg(sentenceNumber(*args.normals.creaseAngleDeg))));
     if (args.json)
         printJson(args.path, result);
     else

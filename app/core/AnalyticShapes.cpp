@@ -13,4 +13,10 @@ std::optional<AnalyticShape> analyticShapeFor(const QString &spec)
     return std::nullopt;
 }
 
+QStringList builtinMeshSpecs()
+{
+    return {QStringLiteral("builtin:sphere"), QStringLiteral("builtin:torus"),
+            QStringLiteral("builtin:cube")};
+}
+
 } // namespace phonglab

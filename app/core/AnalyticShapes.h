@@ -1,5 +1,6 @@
 #pragma once
 #include <QString>
+#include <QStringList>
 #include <optional>
 
 namespace phonglab {
@@ -18,5 +19,7 @@ inline constexpr double kTorusMinorRadius = 0.4;
 
 // The shape a builtin mesh spec names; nullopt for anything else.
 std::optional<AnalyticShape> analyticShapeFor(const QString &spec);
+// Every builtin mesh spec: "builtin:sphere", "builtin:torus", "builtin:cube".
+QStringList builtinMeshSpecs();
 
 } // namespace phonglab

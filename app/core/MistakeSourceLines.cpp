@@ -43,6 +43,9 @@ std::vector<Pattern> patternsFor(ShaderMistake mistake)
                 {Stage::Both, R"(\bpow\s*\()"}};
     case ShaderMistake::Ambient: return {{Stage::Both, R"(\bIa\b.*\bka\b|\bka\b.*\bIa\b)"}};
     case ShaderMistake::Gouraud: return {{Stage::Vertex, R"(\bdot\s*\(|\bpow\s*\()"}};
+    case ShaderMistake::PerFace:
+        // A face normal comes from a flat varying or from the derivatives.
+        return {{Stage::Both, R"(\bflat\s+(out|in)\b|\bdFd[xy]\s*\(|\bcross\s*\()"}};
     }
     return {};
 }

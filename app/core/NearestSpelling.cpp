@@ -51,7 +51,9 @@ QString nearestSpelling(const QString &given, const QStringList &candidates)
         if (candidate.size() > kLongestWord)
             continue;
         const qsizetype distance = editDistance(lower, candidate.toLower());
-        const qsizetype allowed = std::max<qsizetype>(1, std::max(given.size(), candidate.size()) / 3);
+        // "-o" for "-h" is no slip worth naming: words this short get none.
+        const qsizetype longer = std::max(given.size(), candidate.size());
+        const qsizetype allowed = longer < 4 ? 0 : std::max<qsizetype>(1, longer / 3);
         if (distance <= allowed && (best.isEmpty() || distance < bestDistance)) {
             best = candidate;
             bestDistance = distance;

@@ -10,7 +10,8 @@ namespace phonglab {
 
 // The candidate closest to `given` by edit distance (a swap of two
 // neighbouring letters counts once), when it is close enough to be a slip:
-// at most a third of the longer word's letters differ (at least one). Empty
+// at most a third of the longer word's letters differ (at least one; none
+// for words under four letters, where anything is one letter off). Empty
 // when none is.
 QString nearestSpelling(const QString &given, const QStringList &candidates);
 

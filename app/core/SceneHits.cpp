@@ -63,6 +63,17 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
         [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
             if (shader.makes(ShaderMistake::Gouraud) && object.mesh && hit.triangle >= 0)
                 return shadeVertices(object, hit, material, scene.ambient, lights);
+            if (shader.mistake == ShaderMistake::PerFace && object.mesh && hit.triangle >= 0) {
+                // Flat: once at the face's centroid; faceted: at the hit, both
+                // with the face's normal. The rest of the equation is exact.
+                const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
+                const glm::dvec3 at = shader.form == MistakeForm::FaceNormalPerFragment
+                    ? hit.point
+                    : face.centroid;
+                return shadeReferenceHit(
+                    {at, face.normal, object.modelView, object.normalMatrix, object.model},
+                    material, scene.ambient, lights, ReferenceShader());
+            }
             return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix, object.model},
                                      material, scene.ambient, lights, shader);
         });

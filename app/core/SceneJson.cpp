@@ -1,5 +1,7 @@
 #include "SceneJson.h"
 
+#include "AnalyticShapes.h"
+#include "NearestSpelling.h"
 #include "SceneJsonText.h"
 
 #include <QCoreApplication>
@@ -176,6 +178,12 @@ bool SceneReader::readMesh(const QJsonValue &value, const QString &path, QString
     if (value.toString().isEmpty())
         return fail(path,
                     SceneWords::tr("must not be empty (give a file path or \"builtin:sphere\")"));
+    // A misspelt builtin is the scene's error, at its field, not the mesh loader's.
+    if (const QString spec = value.toString();
+        spec.startsWith("builtin:"_L1) && !analyticShapeFor(spec))
+        return fail(path, SceneWords::tr("unknown builtin mesh '%1'%2; known: %3")
+                              .arg(spec, didYouMean(spec, builtinMeshSpecs()),
+                                   builtinMeshSpecs().join(QStringLiteral(", "))));
     out = value.toString();
     return true;
 }

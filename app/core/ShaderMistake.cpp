@@ -21,6 +21,7 @@ constexpr std::array kKeys = {
     std::pair{ShaderMistake::BackfaceSpecular, "backface-specular"},
     std::pair{ShaderMistake::Ambient, "ambient"},
     std::pair{ShaderMistake::Gouraud, "gouraud"},
+    std::pair{ShaderMistake::PerFace, "per-face"},
 };
 
 constexpr std::array kRules = {
@@ -91,6 +92,11 @@ constexpr std::array kRules = {
                   "where the equation is evaluated: per fragment, with the interpolated normal; "
                   "evaluated per "
                   "vertex and interpolated, highlights smear and vanish between vertices")},
+    std::pair{ShaderMistake::PerFace,
+              QT_TRANSLATE_NOOP(
+                  "phonglab::ShaderMistake",
+                  "which normal: the one interpolated across the face from the vertices' "
+                  "normals; with each face's own normal the surface shows its facets")},
 };
 constexpr std::array kSummaries = {
     std::pair{ShaderMistake::NormalMatrix,
@@ -118,6 +124,9 @@ constexpr std::array kSummaries = {
               QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka missing or wrong")},
     std::pair{ShaderMistake::Gouraud,
               QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "lit per vertex, not per fragment")},
+    std::pair{ShaderMistake::PerFace,
+              QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                                "lit once per face with its normal (flat shading)")},
 };
 
 struct Form {
@@ -145,6 +154,9 @@ constexpr std::array kForms = {
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "f_att not clamped with min(..., 1)")},
     Form{{ShaderMistake::Ambient, MistakeForm::AmbientPerLight},
          QT_TRANSLATE_NOOP("phonglab::ShaderMistake", "Ia·ka added once per light")},
+    Form{{ShaderMistake::PerFace, MistakeForm::FaceNormalPerFragment},
+         QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                           "lit per fragment with the face's normal (faceted shading)")},
 };
 
 // In the language the run speaks (core/Language); UTF-8 (·, ²), unlike the keys.
@@ -231,7 +243,8 @@ bool isPointwiseMistake(ShaderMistake mistake)
     case ShaderMistake::NormalMatrix:
     case ShaderMistake::LightSpace:
     case ShaderMistake::HomogeneousW:
-    case ShaderMistake::Gouraud: return false;
+    case ShaderMistake::Gouraud:
+    case ShaderMistake::PerFace: return false;
     }
     return false;
 }

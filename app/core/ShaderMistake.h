@@ -22,6 +22,7 @@ enum class ShaderMistake {
     BackfaceSpecular, // "backface-specular": a highlight where N·L <= 0
     Ambient,          // "ambient": Ia·ka left out
     Gouraud,          // "gouraud": the equation evaluated per vertex and interpolated
+    PerFace,          // "per-face": the face's normal, not the interpolated one (flat, faceted)
 };
 
 // One way of breaking a mistake's rule (issue 30, E): students break a rule
@@ -45,6 +46,7 @@ inline constexpr int LightWithW0 = 1;       // homogeneous-w: the light's positi
 inline constexpr int NormalWithW1 = 2;      // homogeneous-w: N = (MV·(n, 1)).xyz
 inline constexpr int Unclamped = 1;         // attenuation: min(..., 1) left out
 inline constexpr int AmbientPerLight = 1;   // ambient: Ia·ka added once per light
+inline constexpr int FaceNormalPerFragment = 1; // per-face: per fragment with the face normal
 } // namespace MistakeForm
 
 int mistakeFormCount(ShaderMistake key);

@@ -150,7 +150,7 @@ private slots:
         for (const MistakeVariant &made : allMistakeVariants()) {
             if (made.key == ShaderMistake::NegativeLight
                 || made.key == ShaderMistake::BackfaceSpecular
-                || made.key == ShaderMistake::Gouraud)
+                || made.key == ShaderMistake::Gouraud || made.key == ShaderMistake::PerFace)
                 continue; // about the guard itself, or a shader of its own
             CheckReport report;
             const QString failure = judgeMistake(withMistake(made, PhongEquation::Slide),

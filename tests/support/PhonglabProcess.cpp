@@ -45,6 +45,11 @@ ProcessRun runPhonglabUnderLocale(const QStringList &args, const QString &lang, 
     for (const char *name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES"})
         env.remove(QString::fromLatin1(name));
     env.insert(QStringLiteral("LANG"), lang);
+    return runPhonglabIn(env, args, timeoutMs);
+}
+
+ProcessRun runPhonglabIn(const QProcessEnvironment &env, const QStringList &args, int timeoutMs)
+{
     QProcess p;
     p.setProcessEnvironment(env);
     return run(p, args, timeoutMs);

@@ -1,5 +1,6 @@
 #pragma once
 #include <QByteArray>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 
@@ -21,5 +22,8 @@ ProcessRun runPhonglab(const QStringList &args, int timeoutMs = 120000);
 // LC_MESSAGES removed), as a user of that desktop starts it.
 ProcessRun runPhonglabUnderLocale(const QStringList &args, const QString &lang,
                                   int timeoutMs = 120000);
+// The same in the environment `env`.
+ProcessRun runPhonglabIn(const QProcessEnvironment &env, const QStringList &args,
+                         int timeoutMs = 120000);
 
 } // namespace phonglab::test

@@ -78,6 +78,9 @@ constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;
 
 ShaderPair withMistake(MistakeVariant variant)
 {
+    if (variant == MistakeVariant{ShaderMistake::PerFace, MistakeForm::FaceNormalPerFragment})
+        return {readShipped(QStringLiteral("faceted.vert")),
+                readShipped(QStringLiteral("faceted.frag"))};
     if (variant.form == 0)
         return withMistake(variant.key);
     ShaderPair s = shippedPhong();
@@ -107,6 +110,8 @@ ShaderPair withMistake(ShaderMistake mistake)
     if (mistake == ShaderMistake::Gouraud)
         return {readShipped(QStringLiteral("gouraud.vert")),
                 readShipped(QStringLiteral("gouraud.frag"))};
+    if (mistake == ShaderMistake::PerFace) // the flat shader, once per face
+        return {readShipped(QStringLiteral("flat.vert")), readShipped(QStringLiteral("flat.frag"))};
     ShaderPair s = shippedPhong();
     const QString key = shaderMistakeKey(mistake);
     switch (mistake) {
@@ -156,7 +161,8 @@ ShaderPair withMistake(ShaderMistake mistake)
     case ShaderMistake::Ambient:
         replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
         break;
-    case ShaderMistake::Gouraud: break;
+    case ShaderMistake::Gouraud:
+    case ShaderMistake::PerFace: break;
     }
     return s;
 }

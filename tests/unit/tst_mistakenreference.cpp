@@ -43,15 +43,16 @@ class TestMistakenReference : public QObject
     Q_OBJECT
 
 private slots:
-    void everyMistakeButGouraudShowsOnTheEllipsoid_data()
+    // gouraud and per-face need the mesh's triangles (gouraudShadesExactlyHere).
+    void everyPointMistakeShowsOnTheEllipsoid_data()
     {
         QTest::addColumn<QString>("key");
         for (const QString &key : shaderMistakeKeys())
-            if (key != QLatin1String("gouraud"))
+            if (key != QLatin1String("gouraud") && key != QLatin1String("per-face"))
                 QTest::newRow(qPrintable(key)) << key;
     }
 
-    void everyMistakeButGouraudShowsOnTheEllipsoid()
+    void everyPointMistakeShowsOnTheEllipsoid()
     {
         QFETCH(QString, key);
         const Scene scene = mistakeScene();
@@ -87,12 +88,13 @@ private slots:
 
     void gouraudShadesExactlyHere()
     {
-        // Per-vertex evaluation needs the mesh's vertices, which the ray
-        // caster does not have.
+        // Per-vertex and per-face evaluation need the mesh's vertices, which
+        // the ray caster does not have.
         const Scene scene = mistakeScene();
-        QCOMPARE(differingPixels(render(scene, ReferenceShading::Phong),
-                                 render(scene, {ReferenceShading::Phong, ShaderMistake::Gouraud})),
-                 0);
+        for (const ShaderMistake m : {ShaderMistake::Gouraud, ShaderMistake::PerFace})
+            QCOMPARE(differingPixels(render(scene, ReferenceShading::Phong),
+                                     render(scene, {ReferenceShading::Phong, m})),
+                     0);
     }
 
     void exactShaderIsTheDefault()

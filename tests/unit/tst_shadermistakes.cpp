@@ -67,7 +67,8 @@ private slots:
     {
         const QStringList keys{"normal-matrix",     "unnormalized", "light-space", "homogeneous-w",
                                "reflect-incident",  "view-vector",  "attenuation", "negative-light",
-                               "backface-specular", "ambient",      "gouraud"};
+                               "backface-specular", "ambient",      "gouraud",
+                               "per-face"};
         QCOMPARE(shaderMistakeKeys(), keys);
         for (const QString &key : keys) {
             const std::optional<ShaderMistake> mistake = shaderMistakeFromKey(key);
@@ -204,7 +205,8 @@ private slots:
         // equation is evaluated, not the equation at a point.
         const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.02});
         for (ShaderMistake m : {ShaderMistake::NormalMatrix, ShaderMistake::LightSpace,
-                                ShaderMistake::HomogeneousW, ShaderMistake::Gouraud}) {
+                                ShaderMistake::HomogeneousW, ShaderMistake::Gouraud,
+                                ShaderMistake::PerFace}) {
             QVERIFY(!isPointwiseMistake(m));
             QCOMPARE(mistaken(kFacing, kUp, light, m), exact(kFacing, kUp, light));
         }
