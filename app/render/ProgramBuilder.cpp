@@ -103,6 +103,7 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     const QString log = infoLog(shader.id(), false);
     auto diagnostics = parseShaderLog(log, step, source.name);
     mapColumnsToSource(diagnostics, source.code);
+    pointAtMissingSemicolons(diagnostics, source.code);
     explainDialect(diagnostics, shaderDialectOf(source.code));
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {

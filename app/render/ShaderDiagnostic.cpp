@@ -2,6 +2,8 @@
 
 #include <QRegularExpression>
 
+#include <cctype>
+
 namespace phonglab {
 
 ShaderStage editorStage(BuildStep step)
@@ -123,6 +125,50 @@ int uncollapseColumn(const QByteArray &line, int collapsed)
 }
 
 } // namespace
+
+namespace {
+
+// The line's code without a trailing // comment or whitespace. Block
+// comments are rare at a line's end and are left in.
+QByteArray codeOf(const QByteArray &line)
+{
+    const qsizetype comment = line.indexOf("//");
+    QByteArray code = comment >= 0 ? line.left(comment) : line;
+    while (!code.isEmpty() && std::isspace(static_cast<unsigned char>(code.back())))
+        code.chop(1);
+    return code;
+}
+
+// Mesa: "syntax error, unexpected IDENTIFIER, expecting ',' or ';'"; other
+// drivers say "';' expected" or "missing ';'".
+bool expectsSemicolon(const QString &message)
+{
+    static const QRegularExpression pattern(
+        QStringLiteral(R"(expecting[^\n]*['"];['"]|['"];['"] expected|missing ['"]?;)"));
+    return pattern.match(message).hasMatch();
+}
+
+} // namespace
+
+void pointAtMissingSemicolons(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code)
+{
+    const QList<QByteArray> lines = code.split('\n');
+    for (ShaderDiagnostic &d : diagnostics) {
+        if (!d.isError() || d.line <= 1 || d.line > lines.size() || d.column <= 0
+            || !expectsSemicolon(d.message))
+            continue;
+        if (!lines[d.line - 1].left(d.column - 1).trimmed().isEmpty())
+            continue; // something before it on its line: the compiler's place is right
+        for (int previous = d.line - 1; previous >= 1; --previous) {
+            const QByteArray before = codeOf(lines[previous - 1]);
+            if (before.isEmpty())
+                continue;
+            d.line = previous;
+            d.column = int(before.size()) + 1;
+            break;
+        }
+    }
+}
 
 void mapColumnsToSource(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code)
 {

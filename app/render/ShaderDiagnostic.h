@@ -54,4 +54,12 @@ std::vector<ShaderDiagnostic> parseShaderLog(const QString &log, BuildStep step,
 // line are dropped. Lines are untouched.
 void mapColumnsToSource(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code);
 
+// A missing ';' is found by the compiler at the next token, which is often
+// the first of the next statement's line: "x = 1\n    y = 2;" is reported
+// at the y. Where an error expecting a ';' sits on the first token of its
+// line, this moves it to just past the end of the previous line with code,
+// where the ';' belongs (as other editors point). Columns must already be
+// the source's (mapColumnsToSource).
+void pointAtMissingSemicolons(std::vector<ShaderDiagnostic> &diagnostics, const QByteArray &code);
+
 } // namespace phonglab

@@ -5,6 +5,7 @@
 #include "PhonglabProcess.h"
 #include "TestPaths.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -51,6 +52,9 @@ private slots:
     void flatAndFacetedAreNamedPerFace();
     void unknownBuiltinNamesFileAndField();
     void creaseWithTheFilesNormalsIsSaid();
+    void sceneFormatExamplesRunAsWritten();
+    void missingSceneShaderFailsTheCommandLine();
+    void missingSemicolonIsPointedWhereItBelongs();
 
 private:
     QString write(const QString &name, const QByteArray &contents);
@@ -310,6 +314,82 @@ void TestCliContract::creaseWithTheFilesNormalsIsSaid()
         runPhonglab({"mesh-info", tree, "--normals", "angle", "--crease", "30", "--json"});
     QCOMPARE(jsonOf(computed).value("crease_deg").toDouble(), 30.0);
     QCOMPARE(computed.err, QString());
+}
+
+void TestCliContract::sceneFormatExamplesRunAsWritten()
+{
+    // Every ```json block of docs/scene-format.md, saved where the doc says
+    // (a scenes/ folder beside meshes/), renders with no error and no warning.
+    QFile doc(sourcePath(QStringLiteral("docs/scene-format.md")));
+    QVERIFY(doc.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QString text = QString::fromUtf8(doc.readAll());
+    QDir root(m_dir.path());
+    QVERIFY(root.mkpath(QStringLiteral("doc/scenes")));
+    QVERIFY(QFile::link(sourcePath(QStringLiteral("assets/meshes")),
+                        root.filePath(QStringLiteral("doc/meshes"))));
+    int examples = 0;
+    const QString fence = QStringLiteral("```json\n");
+    for (qsizetype at = text.indexOf(fence); at >= 0; at = text.indexOf(fence, at + 1)) {
+        const qsizetype begin = at + fence.size();
+        const qsizetype end = text.indexOf(QStringLiteral("```"), begin);
+        QVERIFY(end > begin);
+        const QString scene = root.filePath(QStringLiteral("doc/scenes/example-%1.json").arg(++examples));
+        QFile file(scene);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(text.mid(begin, end - begin).toUtf8());
+        file.close();
+        const ProcessRun r = runPhonglab(
+            {"render", scene, "-o", scene + QStringLiteral(".png"), "--size", "64x48"});
+        QVERIFY2(r.exitCode == 0 && r.err.isEmpty(),
+                 qPrintable(QStringLiteral("example %1: %2").arg(examples).arg(r.err)));
+    }
+    QVERIFY(examples >= 2);
+}
+
+void TestCliContract::missingSceneShaderFailsTheCommandLine()
+{
+    // The window opens such a scene with the shipped shaders so that it can
+    // be put right; a script must not get the shipped shaders' image or
+    // verdict for the scene's (docs/scene-format.md, shaders).
+    const QString frag = m_dir.filePath(QStringLiteral("gone.frag"));
+    const QString scene = write(QStringLiteral("gone.json"),
+                                QStringLiteral(R"({"mesh": "builtin:sphere",
+                                   "lights": [{"position": [3, 3, 4]}],
+                                   "shaders": {"fragment": "%1"}})")
+                                    .arg(frag)
+                                    .toUtf8());
+    const ProcessRun render =
+        runPhonglab({"render", scene, "-o", m_dir.filePath("gone.png"), "--size", "32x32"});
+    QCOMPARE(render.exitCode, 1);
+    QVERIFY2(render.err.contains(frag + QStringLiteral(": cannot read shader")),
+             qPrintable(render.err));
+    const ProcessRun check = runPhonglab({"check", scene, "--size", "64x48", "--json"});
+    QCOMPARE(check.exitCode, 1);
+    QCOMPARE(jsonOf(check).value("errors").toArray().at(0).toObject().value("file").toString(),
+             frag);
+}
+
+void TestCliContract::missingSemicolonIsPointedWhereItBelongs()
+{
+    // The compiler finds it at "vec3" two lines on; the ';' belongs just past
+    // "normalize(-positionCam)" (before the comment).
+    QFile shipped(sourcePath(QStringLiteral("shaders/phong.frag")));
+    QVERIFY(shipped.open(QIODevice::ReadOnly));
+    QByteArray code = shipped.readAll();
+    const QByteArray statement = "    vec3 V = normalize(-positionCam);";
+    const qsizetype at = code.indexOf(statement);
+    QVERIFY(at >= 0);
+    code.remove(at + statement.size() - 1, 1);
+    const int line = int(code.left(at).count('\n')) + 1;
+    const QString fragment = write(QStringLiteral("semicolon.frag"), code);
+    const ProcessRun r = runPhonglab({"render", smallScene(), "-o", m_dir.filePath("semi.png"),
+                                      "--fragment", fragment, "--size", "16x16"});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.startsWith(QStringLiteral("%1:%2:%3: error: ")
+                                  .arg(fragment)
+                                  .arg(line)
+                                  .arg(statement.size())),
+             qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliContract)

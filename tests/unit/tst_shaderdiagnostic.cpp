@@ -23,6 +23,7 @@ private slots:
     void prologueForOldGlsl();
     void noDefinesLeavesTextAlone();
     void columnsMapBackOverCollapsedWhitespace();
+    void missingSemicolonPointsAtTheLineItBelongsTo();
 };
 
 void TestShaderDiagnostic::parsesMesa()
@@ -153,6 +154,31 @@ void TestShaderDiagnostic::columnsMapBackOverCollapsedWhitespace()
     QCOMPARE(d[0].line, 2);
     QCOMPARE(d[1].column, 0);
     QCOMPARE(d[2].column, 0);
+}
+
+void TestShaderDiagnostic::missingSemicolonPointsAtTheLineItBelongsTo()
+{
+    // Mesa finds "vec3 a = vec3(1.0)" unfinished at the c of the next line.
+    const QByteArray code = "void main()\n{\n    vec3 a = vec3(1.0)   // note\n\n"
+                            "    c = vec4(a, 1.0);\n    d = 1 e = 2;\n}\n";
+    const QString expecting = QStringLiteral("syntax error, unexpected IDENTIFIER, expecting ',' or ';'");
+    std::vector<ShaderDiagnostic> d(3);
+    d[0].line = 5; // the first token of its line: moved
+    d[0].column = 5;
+    d[0].message = expecting;
+    d[1].line = 6; // inside its line: the compiler's place is right
+    d[1].column = 11;
+    d[1].message = expecting;
+    d[2].line = 5; // another error at a line's start: left alone
+    d[2].column = 5;
+    d[2].message = QStringLiteral("syntax error, unexpected IDENTIFIER");
+    pointAtMissingSemicolons(d, code);
+    QCOMPARE(d[0].line, 3);
+    QCOMPARE(d[0].column, 23); // just past "vec3(1.0)", before the spaces and the comment
+    QCOMPARE(d[1].line, 6);
+    QCOMPARE(d[1].column, 11);
+    QCOMPARE(d[2].line, 5);
+    QCOMPARE(d[2].column, 5);
 }
 
 QTEST_APPLESS_MAIN(TestShaderDiagnostic)
