@@ -3523,82 +3523,6 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
                        [--budget SPEC] [--size WxH] [--frames N] [--images]</translation>
     </message>
     <message>
-        <source>
-
-Measures every shading method at every level of detail under 1, 4 and 8 lights (and the
-scene&apos;s own lights): frame time against the error from the CPU double-precision reference.
-
-  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and
-                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)
-  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores
-  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)
-  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB
-  --size WxH       frame size (default 800x600, --quick 400x300)
-  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)
-  --lights LIST    light counts, comma separated, 1..8, and/or &apos;scene&apos; (default 1,4,8,scene)
-  --methods LIST   shading methods, comma separated (default flat,gouraud,faceted,blinn-phong,phong)
-  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625
-  --images         also write render | reference | error pictures into DIR/images
-  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.
-                   against another --budget); writes fit.csv and the chart into DIR
-  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run
-                   too (a full run always has it)
-  --path SPEC      instead of the sweep: draw each scene along a camera path with auto detail and
-                   unseen lights left out, every frame against the reference; SPEC is orbit (one
-                   turn moving out to 2.5x), dolly (from just outside the scene to 32x away) or a
-                   keyframe file (docs/speed-vs-accuracy.md). Prints &apos;frames over budget: K of N&apos;;
-                   writes DIR/path.csv and DIR/path.png/svg. Default scenes: default and sphere;
-                   400x300 px, 10 timed frames per path frame
-  --path-frames N  frames of an orbit or dolly, 2..10000 (default 24)
-
-Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the
-rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit
-steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong
-uses the matched exponent 4n (n = the material&apos;s shininess), as shaders/blinn-phong.frag does.
-
-Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.</source>
-        <translation>
-
-Misst jedes Schattierungsverfahren in jeder Detailstufe unter 1, 4 und 8 Lichtquellen (und den
-eigenen Lichtquellen der Szene): Framezeit gegenüber dem Fehler zur CPU-Referenz in doppelter
-Genauigkeit.
-
-  --scene FILE     eine zu messende Szene (wiederholbar); Standard: die mitgelieferten Szenen default
-                   (Baum und Wolke), sphere, torus und grazing (--quick: default und sphere)
-  --quick          400x300 px, Detailstufen 100/12.5/1.6 %: unter einer Minute auf zwei Kernen
-  --out DIR        Ordner für results.csv, fit.csv, chart.png und chart.svg (Standard ./phonglab-bench)
-  --budget SPEC    Fehlerbudget für die Anpassung: N (max. Fehler N/255, Standard 2) oder psnr:DB
-  --size WxH       Bildgröße (Standard 800x600, --quick 400x300)
-  --frames N       gemessene Frames pro Konfiguration nach 3 Aufwärm-Frames, mindestens 20 (Standard 20)
-  --lights LIST    Anzahlen der Lichtquellen, durch Kommas getrennt, 1..8, und/oder &apos;scene&apos;
-                   (Standard 1,4,8,scene)
-  --methods LIST   Schattierungsverfahren, durch Kommas getrennt
-                   (Standard flat,gouraud,faceted,blinn-phong,phong)
-  --details LIST   Anteile der Detailstufen in (0, 1], durch Kommas getrennt, z. B. 1,0.25,0.0625
-  --images         zusätzlich Bilder Render | Referenz | Fehler nach DIR/images schreiben
-  --from CSV       nichts messen: die Zeilen einer früheren results.csv anpassen und als Diagramm
-                   darstellen (z. B. mit einem anderen --budget); schreibt fit.csv und das Diagramm
-                   nach DIR
-  --normals        die Studie der Normalenverfahren (DIR/normals.csv, normals.png/svg) auch bei einem
-                   --quick-Lauf (ein vollständiger Lauf enthält sie immer)
-  --path SPEC      statt der Messreihe: jede Szene entlang eines Kamerapfads zeichnen, mit automatischer
-                   Detailstufe und ohne unsichtbare Lichtquellen, jeden Frame gegenüber der Referenz;
-                   SPEC ist orbit (eine Umdrehung, die sich bis auf 2.5x entfernt), dolly (von knapp
-                   außerhalb der Szene bis 32x so weit weg) oder eine Keyframe-Datei
-                   (docs/speed-vs-accuracy.md). Gibt &apos;frames over budget: K of N&apos; aus; schreibt
-                   DIR/path.csv und DIR/path.png/svg. Standardszenen: default und sphere;
-                   400x300 px, 10 gemessene Frames pro Pfad-Frame
-  --path-frames N  Frames eines orbit oder dolly, 2..10000 (Standard 24)
-
-Die Framezeit ist der Median der Echtzeit von Rendern + glFinish (auf llvmpipe verpasst eine
-Timer-Abfrage die Rasterizer-Threads); gpu_ms in results.csv ist GL_TIME_ELAPSED auf echten GPUs.
-Fehler sind in 8-Bit-Stufen angegeben, mehr als 2 px von einer Silhouette entfernt (dem Umriss und
-jeder verdeckenden Kontur). Blinn-Phong verwendet den entsprechenden Exponenten 4n (n = der
-Glanzexponent des Materials), wie es shaders/blinn-phong.frag tut.
-
-Exit-Code: 0 Erfolg, 1 eine Szene konnte nicht geladen oder gerendert werden, 2 falsche Argumente.</translation>
-    </message>
-    <message>
         <source>Show help.</source>
         <translation>Hilfe anzeigen.</translation>
     </message>
@@ -3709,6 +3633,82 @@ Exit-Code: 0 Erfolg, 1 eine Szene konnte nicht geladen oder gerendert werden, 2 
     <message>
         <source>--details: expected fractions in (0, 1], comma separated, got &apos;%1&apos;</source>
         <translation>--details: Anteile in (0, 1], durch Kommas getrennt, erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>
+
+Measures every shading method at every level of detail under 1, 4 and 8 lights (and the
+scene&apos;s own lights): frame time against the error from the CPU double-precision reference.
+
+  --scene FILE     a scene to measure (repeatable); default: the shipped default (tree and
+                   cloud), sphere, torus and grazing scenes (--quick: default and sphere)
+  --quick          400x300 px, detail 100/12.5/1.6 %: about 20 s on two cores
+  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default ./phonglab-bench)
+  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or psnr:DB
+  --size WxH       frame size (default 800x600, --quick 400x300)
+  --frames N       timed frames per configuration after 3 warm-up frames, at least 20 (default 20)
+  --lights LIST    light counts, comma separated, 1..8, and/or &apos;scene&apos; (default 1,4,8,scene)
+  --methods LIST   shading methods, comma separated (default flat,gouraud,faceted,blinn-phong,phong)
+  --details LIST   detail fractions in (0, 1], comma separated, e.g. 1,0.25,0.0625
+  --images         also write render | reference | error pictures into DIR/images
+  --from CSV       measure nothing: fit and chart the rows of an earlier results.csv (e.g.
+                   against another --budget); writes fit.csv and the chart into DIR
+  --normals        the normal-method study (DIR/normals.csv, normals.png/svg) in a --quick run
+                   too (a full run always has it)
+  --path SPEC      instead of the sweep: draw each scene along a camera path with auto detail and
+                   unseen lights left out, every frame against the reference; SPEC is orbit (one
+                   turn moving out to 2.5x), dolly (from just outside the scene to 32x away) or a
+                   keyframe file (docs/speed-vs-accuracy.md). Prints &apos;frames over budget: K of N&apos;;
+                   writes DIR/path.csv and DIR/path.png/svg. Default scenes: default and sphere;
+                   400x300 px, 10 timed frames per path frame
+  --path-frames N  frames of an orbit or dolly, 2..10000 (default 24)
+
+Frame time is the median wall time of render + glFinish (on llvmpipe a timer query misses the
+rasterizer threads); gpu_ms in results.csv is GL_TIME_ELAPSED on real GPUs. Errors are in 8-bit
+steps, more than 2 px from a silhouette (the outline and every occluding contour). Blinn-Phong
+uses the matched exponent 4n (n = the material&apos;s shininess), as shaders/blinn-phong.frag does.
+
+Exit status: 0 success, 1 a scene failed to load or render, 2 wrong arguments.</source>
+        <translation>
+
+Misst jedes Schattierungsverfahren in jeder Detailstufe unter 1, 4 und 8 Lichtquellen (und den
+eigenen Lichtquellen der Szene): Framezeit gegenüber dem Fehler zur CPU-Referenz in doppelter
+Genauigkeit.
+
+  --scene FILE     eine zu messende Szene (wiederholbar); Standard: die mitgelieferten Szenen default
+                   (Baum und Wolke), sphere, torus und grazing (--quick: default und sphere)
+  --quick          400x300 px, Detailstufen 100/12,5/1,6 %: etwa 20 s auf zwei Kernen
+  --out DIR        Ordner für results.csv, fit.csv, chart.png und chart.svg (Standard ./phonglab-bench)
+  --budget SPEC    Fehlerbudget für die Anpassung: N (max. Fehler N/255, Standard 2) oder psnr:DB
+  --size WxH       Bildgröße (Standard 800x600, --quick 400x300)
+  --frames N       gemessene Frames pro Konfiguration nach 3 Aufwärm-Frames, mindestens 20 (Standard 20)
+  --lights LIST    Anzahlen der Lichtquellen, durch Kommas getrennt, 1..8, und/oder &apos;scene&apos;
+                   (Standard 1,4,8,scene)
+  --methods LIST   Schattierungsverfahren, durch Kommas getrennt
+                   (Standard flat,gouraud,faceted,blinn-phong,phong)
+  --details LIST   Anteile der Detailstufen in (0, 1], durch Kommas getrennt, z. B. 1,0.25,0.0625
+  --images         zusätzlich Bilder Render | Referenz | Fehler nach DIR/images schreiben
+  --from CSV       nichts messen: die Zeilen einer früheren results.csv anpassen und als Diagramm
+                   darstellen (z. B. mit einem anderen --budget); schreibt fit.csv und das Diagramm
+                   nach DIR
+  --normals        die Studie der Normalenverfahren (DIR/normals.csv, normals.png/svg) auch bei einem
+                   --quick-Lauf (ein vollständiger Lauf enthält sie immer)
+  --path SPEC      statt der Messreihe: jede Szene entlang eines Kamerapfads zeichnen, mit automatischer
+                   Detailstufe und ohne unsichtbare Lichtquellen, jeden Frame gegenüber der Referenz;
+                   SPEC ist orbit (eine Umdrehung, die sich bis auf 2.5x entfernt), dolly (von knapp
+                   außerhalb der Szene bis 32x so weit weg) oder eine Keyframe-Datei
+                   (docs/speed-vs-accuracy.md). Gibt &apos;frames over budget: K of N&apos; aus; schreibt
+                   DIR/path.csv und DIR/path.png/svg. Standardszenen: default und sphere;
+                   400x300 px, 10 gemessene Frames pro Pfad-Frame
+  --path-frames N  Frames eines orbit oder dolly, 2..10000 (Standard 24)
+
+Die Framezeit ist der Median der Echtzeit von Rendern + glFinish (auf llvmpipe verpasst eine
+Timer-Abfrage die Rasterizer-Threads); gpu_ms in results.csv ist GL_TIME_ELAPSED auf echten GPUs.
+Fehler sind in 8-Bit-Stufen angegeben, mehr als 2 px von einer Silhouette entfernt (dem Umriss und
+jeder verdeckenden Kontur). Blinn-Phong verwendet den entsprechenden Exponenten 4n (n = der
+Glanzexponent des Materials), wie es shaders/blinn-phong.frag tut.
+
+Exit-Code: 0 Erfolg, 1 eine Szene konnte nicht geladen oder gerendert werden, 2 falsche Argumente.</translation>
     </message>
 </context>
 <context>

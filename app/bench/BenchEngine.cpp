@@ -172,7 +172,7 @@ Result<> BenchEngine::runScene(const BenchOptions &options, const QString &path,
                                std::vector<BenchRow> *rows, const BenchProgressFn &progress)
 {
     auto report = [&](const QString &stage) {
-        return !progress || progress(BenchProgress{m_done, m_total, stage, nullptr});
+        return !progress || progress(BenchProgress{m_done, m_total, stage, {}});
     };
     // The reference always sees the full-resolution meshes: it is the exact
     // answer every detail level is measured against.
@@ -311,7 +311,7 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
                 "%1: detail %2 draws the same %3 triangles as the level before; skipped")
                 .arg(state.name, detailPercent(detail))
                 .arg(triangles);
-        if (progress && !progress(BenchProgress{m_done, m_total, stage, nullptr}))
+        if (progress && !progress(BenchProgress{m_done, m_total, stage, {}}))
             return fail(QStringLiteral("cancelled"));
         return {};
     }
@@ -327,6 +327,7 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
             return fail(BenchEngineWords::tr("%1: the shipped %2 shaders did not build: %3")
                             .arg(state.name, shadingName(method), built.errorSummary()));
         for (std::size_t s = 0; s < state.lightCounts.size(); ++s) {
+            const std::size_t first = rows->size();
             rows->push_back(measure(options, state, s, method, detail));
             if (!state.objectIds.empty() && rows->back().sceneLights)
                 measureObjects(options, state, s, rows);
@@ -334,7 +335,8 @@ Result<> BenchEngine::measureDetail(const BenchOptions &options, SceneRun &state
             const QString stage = QStringLiteral("%1: %2, detail %3, %4 light(s)")
                                       .arg(state.name, shadingName(method), detailPercent(detail))
                                       .arg(state.lightCounts[s]);
-            if (progress && !progress(BenchProgress{m_done, m_total, stage, &rows->back()}))
+            const std::span<const BenchRow> measured(rows->data() + first, rows->size() - first);
+            if (progress && !progress(BenchProgress{m_done, m_total, stage, measured}))
                 return fail(QStringLiteral("cancelled"));
         }
     }

@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QString>
 #include <functional>
+#include <span>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -31,7 +32,10 @@ struct BenchProgress {
     int done = 0;  // configurations measured so far
     int total = 0; // configurations in the whole run
     QString stage; // "default: reference, 4 lights" / "default: phong, detail 25 %, 4 lights"
-    const BenchRow *row = nullptr; // the row just measured, if this step measured one
+    // The rows this step measured: the whole scene's, then at the scene's
+    // own lights one per object (drawn alone); empty for a step that
+    // measured none.
+    std::span<const BenchRow> rows;
 };
 using BenchProgressFn = std::function<bool(const BenchProgress &)>;
 

@@ -16,12 +16,21 @@ QString number(double value, int precision, int width)
     return QString::number(value, 'f', precision).rightJustified(width);
 }
 
+// "whole scene", or the object drawn alone ("1: cloud.obj"), cut to the column.
+QString objectColumn(const BenchRow &row)
+{
+    if (row.isWholeScene())
+        return QStringLiteral("whole scene");
+    return row.object.size() <= 14 ? row.object : row.object.left(13) + QStringLiteral("…");
+}
+
 } // namespace
 
 QString benchTableHeader()
 {
-    return QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12 %13")
+    return QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12 %13 %14")
         .arg(QStringLiteral("scene"), -10)
+        .arg(QStringLiteral("object"), -14)
         .arg(QStringLiteral("method"), -11)
         .arg(QStringLiteral("detail"), 7)
         .arg(QStringLiteral("triangles"), 9)
@@ -38,8 +47,9 @@ QString benchTableHeader()
 
 QString benchTableLine(const BenchRow &row)
 {
-    return QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12 %13")
+    return QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12 %13 %14")
         .arg(row.scene.left(10), -10)
+        .arg(objectColumn(row), -14)
         .arg(row.method, -11)
         .arg(detailPercent(row.detail), 7)
         .arg(row.triangles, 9)

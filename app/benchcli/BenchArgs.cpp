@@ -41,7 +41,7 @@ QString helpText()
                "(tree and\n"
                "                   cloud), sphere, torus and grazing scenes (--quick: default and "
                "sphere)\n"
-               "  --quick          400x300 px, detail 100/12.5/1.6 %: under a minute on two cores\n"
+               "  --quick          400x300 px, detail 100/12.5/1.6 %: about 20 s on two cores\n"
                "  --out DIR        where results.csv, fit.csv, chart.png and chart.svg go (default "
                "./phonglab-bench)\n"
                "  --budget SPEC    error budget for the fit: N (max error N/255, default 2) or "

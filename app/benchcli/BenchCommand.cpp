@@ -53,10 +53,11 @@ public:
         } else {
             printErrLine(line);
         }
-        if (p.row) {
+        if (!p.rows.empty()) {
             if (m_tty)
                 std::fprintf(stderr, "\r\033[K");
-            printLine(benchTableLine(*p.row));
+            for (const BenchRow &row : p.rows)
+                printLine(benchTableLine(row));
             std::fflush(stdout);
         }
         return true;
