@@ -2,6 +2,7 @@
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
 #include "core/Language.h"
+#include "core/ProgramSynopsis.h"
 #include "core/RuntimeDirectory.h"
 #include "ui/window/GuiMain.h"
 
@@ -11,8 +12,9 @@ int main(int argc, char **argv)
     // Any command and the window: `--lang en|de` anywhere on the line.
     if (const phonglab::LanguageOption language = phonglab::takeLanguageOption(argc, argv);
         !language.ok) {
-        phonglab::cli::printError(language.error);
-        return phonglab::cli::kExitUsage;
+        const QCoreApplication words(argc, argv); // the environment's language, for the message
+        return phonglab::cli::usageError(phonglab::languageOptionError(language),
+                                         phonglab::programSynopsis());
     }
     const phonglab::cli::Subcommand more[] = {phonglab::cli::kBenchSubcommand};
     if (const auto exitCode = phonglab::cli::dispatch(argc, argv, more))

@@ -1006,6 +1006,17 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::Language</name>
+    <message>
+        <source>--lang needs a language: en or de</source>
+        <translation>--lang braucht eine Sprache: en oder de</translation>
+    </message>
+    <message>
+        <source>--lang: PhongLab does not speak &apos;%1&apos; (en or de)</source>
+        <translation>--lang: PhongLab spricht &apos;%1&apos; nicht (en oder de)</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::LanguageMenu</name>
     <message>
         <source>PhongLab speaks %1.</source>

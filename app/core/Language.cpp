@@ -11,6 +11,10 @@ namespace phonglab {
 
 namespace {
 
+struct LanguageWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::Language)
+};
+
 QString &requestedLanguage()
 {
     static QString language; // from --lang; empty: the environment decides
@@ -124,9 +128,7 @@ LanguageOption takeLanguageOption(int &argc, char **argv)
         const QString spoken = spokenLanguages().contains(value) ? value : QString();
         if (spoken.isEmpty()) {
             option.ok = false;
-            option.error = value.isEmpty()
-                ? QStringLiteral("--lang needs a language: en or de")
-                : QStringLiteral("--lang: PhongLab does not speak '%1' (en or de)").arg(value);
+            option.refused = value;
         } else {
             option.language = spoken;
         }
@@ -167,6 +169,13 @@ void useLanguage(const QString &language)
         QCoreApplication::installTranslator(qt.get());
         qtTranslator() = std::move(qt);
     }
+}
+
+QString languageOptionError(const LanguageOption &option)
+{
+    return option.refused.isEmpty()
+        ? LanguageWords::tr("--lang needs a language: en or de")
+        : LanguageWords::tr("--lang: PhongLab does not speak '%1' (en or de)").arg(option.refused);
 }
 
 QLocale sentenceLocale()

@@ -28,14 +28,17 @@ QString languageFromEnvironment();
 // Takes `--lang CODE` or `--lang=CODE` out of the command line (any
 // command, or the window), so that no command's own parser sees it. Once
 // a Q*Application is made, the run speaks that language (else the
-// environment's). False, with `error` set, for a value PhongLab does not
-// speak or a missing one.
+// environment's). Not ok for a value PhongLab does not speak or a missing
+// one: languageOptionError() says so.
 struct LanguageOption {
     bool ok = true;
     QString language; // empty: not given
-    QString error;
+    QString refused;  // the value not spoken; empty when none was given
 };
 LanguageOption takeLanguageOption(int &argc, char **argv);
+// Why `option` is not ok, in the environment's language: made once a
+// Q*Application exists (before one, it is English).
+QString languageOptionError(const LanguageOption &option);
 // Whether this run was given `--lang` (which outranks the window's
 // remembered choice).
 bool languageRequested();

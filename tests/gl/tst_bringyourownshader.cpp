@@ -310,11 +310,17 @@ void main() {
 
         QByteArray f2 = readAsset(QStringLiteral("webgl2/phong.frag"));
         f2 = replaced(f2, "    vec3 I = uAmbientLight * uKa;", "    vec3 I = uAmbientLight * uKa");
-        const int next = QByteArray(f2.left(f2.indexOf("    for (int i"))).count('\n') + 1;
+        // The compiler finds the missing ';' at the next statement; it is
+        // pointed at just past the line where it belongs.
+        const QByteArray unfinished = "    vec3 I = uAmbientLight * uKa";
+        const int unfinishedLine = QByteArray(f2.left(f2.indexOf(unfinished + '\n'))).count('\n') + 1;
         const ProcessRun es3 = check(readAsset(QStringLiteral("webgl2/phong.vert")), f2, {}, {},
                                      false);
         QCOMPARE(es3.exitCode, 1);
-        QVERIFY2(es3.err.contains(QStringLiteral("student.frag:%1:").arg(next)), qPrintable(es3.err));
+        QVERIFY2(es3.err.contains(QStringLiteral("student.frag:%1:%2: error")
+                                      .arg(unfinishedLine)
+                                      .arg(unfinished.size() + 1)),
+                 qPrintable(es3.err));
 
         // A GLSL ES stage with a desktop one cannot link: said plainly.
         const ProcessRun mixed = runPhonglab(

@@ -112,6 +112,13 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(QStringLiteral("'fr'")), qPrintable(r.err));
         QCOMPARE(runPhonglab({QStringLiteral("--lang")}).exitCode, 2);
+        // Refused before any command reads its arguments, still in the
+        // desktop's language.
+        const ProcessRun refused = runPhonglabUnderLocale(
+            {QStringLiteral("check"), QStringLiteral("--lang"), QStringLiteral("fr")},
+            QStringLiteral("de_DE.UTF-8"));
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains(QStringLiteral("spricht 'fr' nicht")), qPrintable(refused.err));
         // A usage error speaks the run's language too (the application is
         // made before the arguments are read); its exit status does not change.
         const ProcessRun german =

@@ -39,6 +39,7 @@ class TestCliContract : public QObject
     Q_OBJECT
 
 private slots:
+    void helpSaysWhatTheManPageSays();
     void unknownWordsAreUsageErrors_data();
     void unknownWordsAreUsageErrors();
     void aValuedFlagGivenTwiceIsRefused();
@@ -68,6 +69,16 @@ QString TestCliContract::write(const QString &name, const QByteArray &contents)
     if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
         qFatal("cannot write %s", qPrintable(path));
     return path;
+}
+
+void TestCliContract::helpSaysWhatTheManPageSays()
+{
+    const QString top = QString::fromUtf8(runPhonglab({"--help"}).out);
+    QVERIFY2(top.contains(QStringLiteral("phonglab --version")), qPrintable(top));
+    const QString check = QString::fromUtf8(runPhonglab({"check", "--help"}).out);
+    for (const char *said : {"tolerance, worst", "notes, warnings", "bright green 1/255",
+                             "yellow 4/255", "per-face"})
+        QVERIFY2(check.contains(QString::fromUtf8(said)), said);
 }
 
 void TestCliContract::unknownWordsAreUsageErrors_data()
