@@ -114,7 +114,7 @@ QChart *buildChart(const ChartSpec &spec)
     xAxis->setTitleText(spec.xTitle);
     xAxis->setTitleFont(sizedFont(xAxis->titleFont(), 9));
     xAxis->setLabelsFont(sizedFont(xAxis->labelsFont(), 8));
-    xAxis->setLabelFormat(QStringLiteral("%g"));
+    xAxis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
     double xMin = 0, xMax = 1;
     if (!xs.empty()) {
         xMin = *std::min_element(xs.begin(), xs.end());
@@ -136,7 +136,7 @@ QChart *buildChart(const ChartSpec &spec)
     if (yScale.log) {
         auto *axis = new QLogValueAxis;
         axis->setBase(10);
-        axis->setLabelFormat(QStringLiteral("%g"));
+        axis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
         axis->setMinorTickCount(8);
         axis->setMinorGridLineColor(QColor(238, 238, 238));
         axis->setRange(yScale.min, yScale.max);
@@ -147,7 +147,7 @@ QChart *buildChart(const ChartSpec &spec)
         yAxis = axis;
     } else {
         auto *axis = new QValueAxis;
-        axis->setLabelFormat(QStringLiteral("%g"));
+        axis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
         axis->setRange(yScale.min, yScale.max);
         axis->setTickCount(6);
         axis->applyNiceNumbers();

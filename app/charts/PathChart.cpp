@@ -69,7 +69,7 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
     x->setTickType(QValueAxis::TicksDynamic);
     x->setTickAnchor(0.0);
     x->setTickInterval(std::max(1.0, std::ceil(last / 12.0)));
-    x->setLabelFormat(QStringLiteral("%d"));
+    x->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
     auto *errorAxis = new QValueAxis;
     errorAxis->setTitleText(PathChartWords::tr("max error, 8-bit steps"));
     auto *msAxis = new QValueAxis;
@@ -93,7 +93,7 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
     errorAxis->setTickType(QValueAxis::TicksDynamic);
     errorAxis->setTickAnchor(0.0);
     errorAxis->setTickInterval(step);
-    errorAxis->setLabelFormat(QStringLiteral("%d"));
+    errorAxis->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
     for (QLineSeries *s : {error, fast, full})
         s->attachAxis(x);
     error->attachAxis(errorAxis);

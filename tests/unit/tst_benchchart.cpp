@@ -4,6 +4,7 @@
 
 #include "ResultChecks.h"
 #include "charts/SpeedAccuracyChart.h"
+#include "core/Language.h"
 
 #include <QApplication>
 #include <QFile>
@@ -210,6 +211,41 @@ private slots:
         auto *linear = qobject_cast<QValueAxis *>(chart->axes(Qt::Vertical).value(0));
         QVERIFY(linear);
         QCOMPARE(linear->min(), 0.0);
+    }
+
+    // The axes carry their numbers (a localized axis draws none without a
+    // precision in its format), written as the run's sentences write them.
+    void axesAreLabelledInTheSentencesNumbers()
+    {
+        std::vector<BenchRow> rows;
+        const double errors[] = {0.05, 0.3, 5.0, 40.0};
+        for (int i = 0; i < 4; ++i) {
+            BenchRow r;
+            r.scene = "s";
+            r.method = "phong";
+            r.detail = 1.0 - i * 0.2;
+            r.frameMs = 2.5 * (i + 1);
+            r.rmse = errors[i];
+            rows.push_back(r);
+        }
+        const auto labels = [&](const QString &language) {
+            useLanguage(language);
+            std::unique_ptr<QChart> chart(createSpeedAccuracyChart(rows, "axes"));
+            QTemporaryDir dir;
+            const QString svg = dir.filePath("axes.svg");
+            QString text, error;
+            if (!writeChartImages(chart.get(), dir.filePath("axes.png"), svg)
+                || !readSvg(svg, &text, &error))
+                return QStringList{error};
+            return text.split('\n');
+        };
+        const QStringList english = labels("en");
+        const QStringList german = labels("de");
+        useLanguage("en");
+        for (const char *tick : {"0.1", "1", "10", "100"}) // the log axis' decades
+            QVERIFY2(english.contains(tick), qPrintable(english.join(" | ")));
+        QVERIFY2(german.contains("0,1") && german.contains("10"), qPrintable(german.join(" | ")));
+        QVERIFY(!german.contains("0.1"));
     }
 
     void methodColoursAreFixed()
