@@ -3,6 +3,7 @@
 // a slip; a path named once; stderr silent unless something is wrong; what
 // `check` says about the file it judges.
 #include "PhonglabProcess.h"
+#include "ShaderMutations.h"
 #include "TestPaths.h"
 
 #include <QDir>
@@ -13,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+using namespace phonglab;
 using namespace phonglab::test;
 
 namespace {
@@ -257,12 +259,8 @@ void TestCliContract::whatCannotShowIgnoresTheTolerance()
 {
     // reflect(L, N) is far off here; a tolerance that lets it pass must
     // not call it undetectable.
-    QFile shipped(sourcePath(QStringLiteral("shaders/phong.frag")));
-    QVERIFY(shipped.open(QIODevice::ReadOnly));
-    QByteArray code = shipped.readAll();
-    QVERIFY(code.contains("reflect(-L, N)"));
-    code.replace("reflect(-L, N)", "reflect(L, N)");
-    const QString fragment = write(QStringLiteral("reflect.frag"), code);
+    const QString fragment = write(QStringLiteral("reflect.frag"),
+                                   withMistake(ShaderMistake::ReflectIncident).fragment.code);
     const auto undetectable = [&](const QString &tolerance) {
         const QJsonObject o = jsonOf(runPhonglab({"check", checkScene(), "--size", "160x120",
                                                   "--fragment", fragment, "--tolerance",
@@ -384,9 +382,7 @@ void TestCliContract::missingSemicolonIsPointedWhereItBelongs()
 {
     // The compiler finds it at "vec3" two lines on; the ';' belongs just past
     // "normalize(-positionCam)" (before the comment).
-    QFile shipped(sourcePath(QStringLiteral("shaders/phong.frag")));
-    QVERIFY(shipped.open(QIODevice::ReadOnly));
-    QByteArray code = shipped.readAll();
+    QByteArray code = shippedPhong().fragment.code;
     const QByteArray statement = "    vec3 V = normalize(-positionCam);";
     const qsizetype at = code.indexOf(statement);
     QVERIFY(at >= 0);
