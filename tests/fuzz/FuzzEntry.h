@@ -175,9 +175,14 @@ inline Outcome runShaderLog(const QByteArray &bytes)
     std::vector<ShaderDiagnostic> diagnostics =
         parseShaderLog(QString::fromUtf8(log), step, QStringLiteral("shader.frag"), prologueLines);
     mapColumnsToSource(diagnostics, code);
-    for (const ShaderDiagnostic &d : diagnostics) {
+    const std::vector<ShaderDiagnostic> compilers = diagnostics;
+    pointAtMissingSemicolons(diagnostics, code);
+    for (std::size_t i = 0; i < diagnostics.size(); ++i) {
+        const ShaderDiagnostic &d = diagnostics[i];
         if (d.line < 0 || d.column < 0)
             brokenPromise("shaderlog", "a negative line or column");
+        if (d.line > compilers[i].line)
+            brokenPromise("shaderlog", "a missing ';' moved to a later line");
         (void)d.format();
     }
     return {true, {}};
