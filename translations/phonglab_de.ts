@@ -476,7 +476,7 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     </message>
     <message>
         <source>cannot create an offscreen surface for the compile thread</source>
-        <translation>für den Kompilier-Thread kann keine Offscreen-Oberfläche erstellt werden</translation>
+        <translation>für den Build-Thread kann keine Offscreen-Oberfläche erstellt werden</translation>
     </message>
     <message>
         <source>the build thread is not running</source>
@@ -487,7 +487,7 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     <name>phonglab::BuildWorker</name>
     <message>
         <source>the shared OpenGL context cannot be made current on the compile thread</source>
-        <translation>der geteilte OpenGL-Kontext kann im Kompilier-Thread nicht als aktueller Kontext gesetzt werden</translation>
+        <translation>der geteilte OpenGL-Kontext kann im Build-Thread nicht als aktueller Kontext gesetzt werden</translation>
     </message>
     <message>
         <source>the viewport&apos;s context cannot be made current on the build thread</source>
@@ -522,7 +522,7 @@ Stattdessen wird die Standardszene angezeigt.</translation>
     </message>
     <message>
         <source>: eye and target coincide, or up is along the view</source>
-        <translation>: eye und target fallen zusammen, oder up zeigt in Blickrichtung</translation>
+        <translation>: eye und target fallen zusammen, oder up liegt in Blickrichtung</translation>
     </message>
     <message>
         <source>frame %1, between keyframes[%2] and [%3]: eye and target coincide, or up is along the view</source>
@@ -885,8 +885,8 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
     <message numerus="yes">
         <source>Draw time per frame: from the frame&apos;s first OpenGL call to glFinish, the scene and anything drawn over it (presenting the frame is not included); the mean of the %n frame(s) of the last second.</source>
         <translation>
-            <numerusform>Zeichenzeit pro Bild: vom ersten OpenGL-Aufruf des Bildes bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Bildes ist nicht enthalten); der Mittelwert über %n Bild der letzten Sekunde.</numerusform>
-            <numerusform>Zeichenzeit pro Bild: vom ersten OpenGL-Aufruf des Bildes bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Bildes ist nicht enthalten); der Mittelwert über %n Bilder der letzten Sekunde.</numerusform>
+            <numerusform>Zeichenzeit pro Frame: vom ersten OpenGL-Aufruf des Frames bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Frames ist nicht enthalten); der Mittelwert über %n Frame der letzten Sekunde.</numerusform>
+            <numerusform>Zeichenzeit pro Frame: vom ersten OpenGL-Aufruf des Frames bis glFinish, die Szene und alles darüber Gezeichnete (das Anzeigen des Frames ist nicht enthalten); der Mittelwert über %n Frames der letzten Sekunde.</numerusform>
         </translation>
     </message>
 </context>
@@ -1213,7 +1213,7 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
     <message>
         <source>One frame took %1 ms: the view draws again when you click, scroll or press a key in it</source>
-        <translation>Ein Bild dauerte %1 ms: Die Ansicht zeichnet erst wieder, wenn in ihr geklickt, gescrollt oder eine Taste gedrückt wird</translation>
+        <translation>Ein Frame dauerte %1 ms: Die Ansicht zeichnet erst wieder, wenn in ihr geklickt, gescrollt oder eine Taste gedrückt wird</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1594,7 +1594,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>the reader ran out of memory (limit %1 MB)</source>
-        <translation>dem Einleseprozess ging der Speicher aus (Grenze: %1 MB)</translation>
+        <translation>dem Leseprozess ging der Speicher aus (Grenze: %1 MB)</translation>
     </message>
     <message>
         <source>the reader exited with status %1 without a result</source>
@@ -1663,7 +1663,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>dropped %1 using NaN or infinite coordinates</source>
-        <translation>%1 mit NaN- oder unendlichen Koordinaten entfernt</translation>
+        <translation>%1 mit NaN- oder unendlichen Koordinaten verworfen</translation>
     </message>
     <message>
         <source>dropped %1 (fewer than 3 distinct corners or zero area)</source>
@@ -1946,7 +1946,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>binary %1 files (with colours or texture coordinates) are not supported; save it as ascii OFF or as PLY</source>
-        <translation>binäre %1-Dateien (mit Farben oder Texturkoordinaten) werden nicht unterstützt; als ascii OFF oder als PLY speichern</translation>
+        <translation>binäre %1-Dateien (mit Farben oder Texturkoordinaten) werden nicht unterstützt; als ASCII-OFF oder als PLY speichern</translation>
     </message>
     <message>
         <source>the binary OFF header declares %1 vertices and %2 faces, which need at least %3 bytes, but the file has %4 (truncated or corrupt)</source>
@@ -2040,7 +2040,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>a %1 chunk with a number size the reader does not know</source>
-        <translation>ein Chunk %1 mit einer Zahlengröße, die der Leser nicht kennt</translation>
+        <translation>ein Chunk %1 mit einer Zahlengröße, die das Einleseprogramm nicht kennt</translation>
     </message>
     <message>
         <source>the file ends inside a custom property chunk</source>
@@ -2076,7 +2076,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>the OpenMesh header declares %1 vertices and %2 faces, which need at least %3 bytes, but the file has %4 (truncated or corrupt)</source>
-        <translation>der OpenMesh-Header deklariert %1 Vertices und %2 Flächen, die mindestens %3 Byte benötigen, aber die Datei hat %4 (abgeschnitten oder beschädigt)</translation>
+        <translation>der OpenMesh-Header gibt %1 Vertices und %2 Flächen an, die mindestens %3 Byte benötigen, aber die Datei hat %4 (abgeschnitten oder beschädigt)</translation>
     </message>
     <message>
         <source>the OpenMesh file has no faces</source>
@@ -2437,7 +2437,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>the header declares %1 %2 elements, which need at least %3 bytes, but the file has %4 bytes after the header (truncated or corrupt)</source>
-        <translation>der Header deklariert %1 %2-Elemente, die mindestens %3 Byte benötigen, aber die Datei hat nach dem Header %4 Byte (abgeschnitten oder beschädigt)</translation>
+        <translation>der Header gibt %1 %2-Elemente an, die mindestens %3 Byte benötigen, aber die Datei hat nach dem Header %4 Byte (abgeschnitten oder beschädigt)</translation>
     </message>
     <message>
         <source>an ascii PLY file with binary data in it (a NUL byte)</source>
@@ -2779,7 +2779,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>: &quot;flat&quot; in a scene without &quot;format&quot;: 2 is the per-fragment shader now called &quot;faceted&quot;; loaded as &quot;faceted&quot; (saving writes that; write &quot;format&quot;: 2 for flat shading once per face)</source>
-        <translation>: &quot;flat&quot; in einer Szene ohne &quot;format&quot;: 2 ist der Shader pro Fragment, der jetzt &quot;faceted&quot; heißt; als &quot;faceted&quot; geladen (beim Speichern wird das geschrieben; für flache Schattierung einmal pro Fläche &quot;format&quot;: 2 schreiben)</translation>
+        <translation>: &quot;flat&quot; in einer Szene ohne &quot;format&quot;: 2 ist der Shader pro Fragment, der jetzt &quot;faceted&quot; heißt; als &quot;faceted&quot; geladen (beim Speichern wird das geschrieben; für flache Schattierung, einmal pro Fläche, &quot;format&quot;: 2 schreiben)</translation>
     </message>
     <message>
         <source>unknown shading method &quot;%1&quot; (known: %2)</source>
@@ -2985,7 +2985,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
     <message>
         <source>Draw with this program although its frames are slow; the view then draws only when you ask it to</source>
-        <translation>Mit diesem Programm zeichnen, obwohl seine Bilder langsam sind; die Ansicht zeichnet dann nur noch auf Anforderung</translation>
+        <translation>Mit diesem Programm zeichnen, obwohl seine Frames langsam sind; die Ansicht zeichnet dann nur noch auf Anforderung</translation>
     </message>
     <message>
         <source>Load a shading method&apos;s shaders</source>
@@ -3341,7 +3341,7 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     </message>
     <message>
         <source>while the %1 has the focus</source>
-        <translation>wenn %1 den Fokus hat</translation>
+        <translation>bei Fokus auf %1</translation>
     </message>
     <message>
         <source> or the </source>
@@ -3706,7 +3706,7 @@ Genauigkeit.
                    --quick-Lauf (ein vollständiger Lauf enthält sie immer)
   --path SPEC      statt der Messreihe: jede Szene entlang eines Kamerapfads zeichnen, mit automatischer
                    Detailstufe und ohne unsichtbare Lichtquellen, jeden Frame gegenüber der Referenz;
-                   SPEC ist orbit (eine Umdrehung, die sich bis auf 2.5x entfernt), dolly (von knapp
+                   SPEC ist orbit (eine Umdrehung, die sich bis auf 2,5x entfernt), dolly (von knapp
                    außerhalb der Szene bis 32x so weit weg) oder eine Keyframe-Datei
                    (docs/speed-vs-accuracy.md). Gibt &apos;frames over budget: K of N&apos; aus; schreibt
                    DIR/path.csv und DIR/path.png/svg. Standardszenen: default und sphere;
@@ -4034,7 +4034,8 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>
 --lang en|de on any command or the window chooses the language of that run (else the locale&apos;s: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).</source>
-        <translation>--lang en|de wählt bei jedem Befehl und im Fenster die Sprache dieses Aufrufs (sonst die des Gebietsschemas: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).</translation>
+        <translation>
+--lang en|de wählt bei jedem Befehl und im Fenster die Sprache dieses Aufrufs (sonst die des Gebietsschemas: LANGUAGE, LC_ALL, LC_MESSAGES, LANG).</translation>
     </message>
     <message>
         <source>measure speed against accuracy of every shading method and detail</source>
@@ -4341,7 +4342,7 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     </message>
     <message>
         <source>the check exited with status %1 without an answer</source>
-        <translation>die Prüfung wurde mit Status %1 ohne Antwort beendet</translation>
+        <translation>die Prüfung wurde mit Exit-Code %1 ohne Antwort beendet</translation>
     </message>
 </context>
 <context>
@@ -4524,12 +4525,12 @@ Rendert ein Bild von SCENE.json offscreen (ohne Multisampling) in ein 8-Bit-RGB-
   --size WxH          Bildgröße in Pixeln, Standard 800x600
   --shading NAME      Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
                       %1
-  --vertex FILE       Vertex-Shader statt dem des Schattierungsverfahrens
-  --fragment FILE     Fragment-Shader statt dem des Schattierungsverfahrens
-  --bind NAME=MEANING was die Uniform-Variable oder Eingabe NAME des Shaders enthält;
+  --vertex FILE       Vertex-Shader anstelle dessen des Schattierungsverfahrens
+  --fragment FILE     Fragment-Shader anstelle dessen des Schattierungsverfahrens
+  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
                       wiederholbar (die Bedeutungen sind die von `phonglab check`)
 
-Exit-Status: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
+Exit-Code: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
 Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
     </message>
     <message>
@@ -4577,7 +4578,7 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     </message>
     <message>
         <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
-        <translation>der Shader nimmt %1 %2 (seine Uniform-Variablen für Lichtquellen haben für nicht mehr Platz), die Szene hat %3 eingeschaltet: geprüft mit den ersten %1 allein</translation>
+        <translation>der Shader verarbeitet %1 %2 (seine Uniform-Variablen für Lichtquellen bieten keinen Platz für mehr), die Szene hat %3 eingeschaltet: geprüft nur mit den ersten %1</translation>
     </message>
     <message>
         <source>light</source>
