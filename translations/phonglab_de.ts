@@ -193,6 +193,12 @@ Stattdessen wird die Standardszene angezeigt.</translation>
         <source>cannot connect to the X display &apos;%1&apos; (DISPLAY)</source>
         <translation>keine Verbindung zum X-Display &apos;%1&apos; (DISPLAY)</translation>
     </message>
+    <message>
+        <source>phonglab: the editor window needs a display (X11 or Wayland), and DISPLAY is not set.
+The commands render, check, grade, mesh-info and bench run without one (phonglab --help).</source>
+        <translation>phonglab: Das Editorfenster braucht ein Display (X11 oder Wayland), und DISPLAY ist nicht gesetzt.
+Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --help).</translation>
+    </message>
 </context>
 <context>
     <name>SceneCommands</name>
@@ -2821,6 +2827,10 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <source>cannot read scene file (%1)</source>
         <translation>Szenendatei kann nicht gelesen werden (%1)</translation>
     </message>
+    <message>
+        <source>a mesh, not a scene: name it in one, {&quot;mesh&quot;: &quot;%1&quot;, &quot;lights&quot;: [{&quot;position&quot;: [3, 4, 5]}]}, saved as a .json file beside it</source>
+        <translation>ein Mesh, keine Szene: in einer Szene angeben, {&quot;mesh&quot;: &quot;%1&quot;, &quot;lights&quot;: [{&quot;position&quot;: [3, 4, 5]}]}, als .json-Datei daneben gespeichert</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::SceneJsonText</name>
@@ -2928,6 +2938,18 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>%1=%2: the program has no active uniform or input %1 (not declared, or unused and optimised away)</source>
         <translation>%1=%2: das Programm hat keine aktive Uniform-Variable oder Eingabevariable %1 (nicht deklariert oder unbenutzt und wegoptimiert)</translation>
+    </message>
+    <message>
+        <source> array</source>
+        <translation>-Array</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>Eingabevariable</translation>
+    </message>
+    <message>
+        <source>uniform</source>
+        <translation>Uniform-Variable</translation>
     </message>
 </context>
 <context>

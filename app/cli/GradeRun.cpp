@@ -231,7 +231,9 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
         dropImage(row, m_results.settings.outFolder);
         return;
     }
-    const QString classRoot = QFileInfo(m_results.settings.classFolder).absoluteFilePath();
+    // cleanPath: "class/" as typed would leave "class//alice" unmatched.
+    const QString classRoot =
+        QDir::cleanPath(QFileInfo(m_results.settings.classFolder).absoluteFilePath());
     CheckDrawing drawing = drawingFromJson(end.answer);
     row.outcome = std::move(drawing.outcome);
     makeRelative(&row.outcome, classRoot);

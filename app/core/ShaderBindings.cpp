@@ -504,8 +504,9 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
                 out.problems
                     << ShaderBindingsWords::tr("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
                            .arg(v.name, bindingMeaningKey(*it->second), glslTypeSpelling(v.type),
-                                v.isArray ? QStringLiteral(" array") : QString(),
-                                v.isInput ? QStringLiteral("input") : QStringLiteral("uniform"),
+                                v.isArray ? ShaderBindingsWords::tr(" array") : QString(),
+                                v.isInput ? ShaderBindingsWords::tr("input")
+                                          : ShaderBindingsWords::tr("uniform"),
                                 bindingMeaningDescription(*it->second));
             } else {
                 b.meaning = it->second;

@@ -11,9 +11,7 @@ namespace phonglab::headless {
 // need.
 struct EglDisplayChoice {
     EGLDisplay display = EGL_NO_DISPLAY;
-    QString platform; // "device", "surfaceless"
-    QString renderer; // what the platform named, for messages
-    QString problem;  // why none could be opened, when display is EGL_NO_DISPLAY
+    QString problem; // why none could be opened, when display is EGL_NO_DISPLAY
 };
 
 // Tries $PHONGLAB_EGL_PLATFORM when set ("device" or "surfaceless"), else

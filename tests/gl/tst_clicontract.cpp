@@ -58,6 +58,8 @@ private slots:
     void sceneFormatExamplesRunAsWritten();
     void missingSceneShaderFailsTheCommandLine();
     void missingSemicolonIsPointedWhereItBelongs();
+    void unknownEglPlatformIsNamed();
+    void aMeshWhereASceneBelongsIsSaid();
 
 private:
     QString write(const QString &name, const QByteArray &contents);
@@ -396,6 +398,31 @@ void TestCliContract::missingSemicolonIsPointedWhereItBelongs()
                                   .arg(fragment)
                                   .arg(line)
                                   .arg(statement.size())),
+             qPrintable(r.err));
+}
+
+void TestCliContract::unknownEglPlatformIsNamed()
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        env.remove(QString::fromLatin1(name));
+    env.insert(QStringLiteral("PHONGLAB_EGL_PLATFORM"), QStringLiteral("bogus"));
+    const ProcessRun r = runPhonglabIn(
+        env, {"render", smallScene(), "-o", m_dir.filePath("bogus.png"), "--size", "16x16"});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral(
+                 "PHONGLAB_EGL_PLATFORM=bogus names no platform (device, surfaceless)")),
+             qPrintable(r.err));
+}
+
+void TestCliContract::aMeshWhereASceneBelongsIsSaid()
+{
+    const QString tree = sourcePath(QStringLiteral("assets/meshes/tree.obj"));
+    const ProcessRun r = runPhonglab({"render", tree, "-o", m_dir.filePath("tree.png")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.startsWith(QStringLiteral("phonglab: error: %1: a mesh, not a scene: name it "
+                                             "in one, {\"mesh\": \"tree.obj\"")
+                                  .arg(tree)),
              qPrintable(r.err));
 }
 

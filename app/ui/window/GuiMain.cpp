@@ -23,10 +23,6 @@ namespace {
 constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
 // Said instead of Qt's abort when there is nowhere to open the window.
-constexpr char kNoDisplayMessage[] =
-    "phonglab: the editor window needs a display (X11 or Wayland), and DISPLAY is not set.\n"
-    "The commands render, check, mesh-info and bench run without one (phonglab --help).\n";
-
 void printError(const QString &message)
 {
     std::fprintf(stderr, "phonglab: error: %s\n", message.toLocal8Bit().constData());
@@ -123,10 +119,16 @@ int runGui(int argc, char **argv)
             std::fprintf(stderr, "%s\n", programSynopsis().toLocal8Bit().constData());
             return kExitUsage;
         }
-    }
-    if (!displayConfigured()) {
-        std::fputs(kNoDisplayMessage, stderr);
-        return kExitFailure;
+        if (!displayConfigured()) {
+            std::fprintf(stderr, "%s\n",
+                         QObject::tr("phonglab: the editor window needs a display (X11 or "
+                                     "Wayland), and DISPLAY is not set.\nThe commands render, "
+                                     "check, grade, mesh-info and bench run without one "
+                                     "(phonglab --help).")
+                             .toLocal8Bit()
+                             .constData());
+            return kExitFailure;
+        }
     }
     // Must precede QApplication: the global share context is created with it.
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(kViewportSamples));
