@@ -3818,6 +3818,10 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
         <source>within budget</source>
         <translation>innerhalb des Budgets</translation>
     </message>
+    <message>
+        <source>  (--from draws nothing: the choices are not drawn whole to confirm them)</source>
+        <translation>  (--from zeichnet nichts: die Auswahl wird nicht als Ganzes gezeichnet, um sie zu bestätigen)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::CheckCommand</name>

@@ -9,9 +9,9 @@
 #include <QImage>
 #include <QString>
 #include <functional>
-#include <span>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace phonglab {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace phonglab {
 
@@ -84,6 +85,24 @@ std::vector<SceneFit> fitScenes(const std::vector<BenchRow> &rows, const ErrorBu
     }
     for (SceneFit &f : fits)
         f.fit = fitToBudget(f.rows, budget);
+    return fits;
+}
+
+std::vector<SceneObjectFit> fitObjectsByScene(const std::vector<BenchRow> &rows,
+                                              const ErrorBudget &budget)
+{
+    std::vector<QString> scenes; // in order of first appearance
+    for (const BenchRow &row : rows)
+        if (row.sceneLights && !row.isWholeScene()
+            && std::find(scenes.begin(), scenes.end(), row.scene) == scenes.end())
+            scenes.push_back(row.scene);
+    std::vector<SceneObjectFit> fits;
+    for (const QString &scene : scenes) {
+        std::vector<BenchRow> own;
+        std::copy_if(rows.begin(), rows.end(), std::back_inserter(own),
+                     [&](const BenchRow &r) { return r.sceneLights && r.scene == scene; });
+        fits.push_back({scene, fitObjects(own, budget)});
+    }
     return fits;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 #include "BenchResult.h"
 #include "ErrorBudget.h"
+#include "ObjectFit.h"
 
 #include <QString>
 #include <vector>
@@ -19,6 +20,16 @@ struct SceneFit {
     std::vector<BenchRow> rows; // the scene-light rows the fit chose from
 };
 std::vector<SceneFit> fitScenes(const std::vector<BenchRow> &rows, const ErrorBudget &budget);
+
+// The per-object fit of every scene in `rows` that has per-object rows (at
+// its own lights), from the rows alone: what `--from` can say without
+// drawing anything.
+struct SceneObjectFit {
+    QString scene;
+    ObjectFit fit;
+};
+std::vector<SceneObjectFit> fitObjectsByScene(const std::vector<BenchRow> &rows,
+                                              const ErrorBudget &budget);
 
 // fit.csv: one line per scene with the chosen model and its savings.
 QString sceneFitsToCsv(const std::vector<SceneFit> &fits, const ErrorBudget &budget);

@@ -1,4 +1,5 @@
 #include "ObjectFit.h"
+#include "core/Language.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -111,7 +112,7 @@ QString choiceText(const BenchRow &row)
 {
     return QStringLiteral("%1 %2 at %3 (%4 ms, max %5/255)")
         .arg(row.object, row.method, detailPercent(row.detail))
-        .arg(row.frameMs, 0, 'f', 2)
+        .arg(sentenceNumber(row.frameMs, 'f', 2))
         .arg(row.maxError);
 }
 
@@ -196,9 +197,9 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
     fit.psnr = combined.psnr;
     fit.fits = budget.accepts(combined.maxError, combined.psnr);
     fit.summary = parts.join(QStringLiteral("; "))
-        + QStringLiteral(": %1 ms").arg(fit.frameMs, 0, 'f', 2)
+        + QStringLiteral(": %1 ms").arg(sentenceNumber(fit.frameMs, 'f', 2))
         + (fit.baselineMs > 0 ? ObjectFitWords::tr(" against %1 ms at full-detail Phong")
-                                    .arg(fit.baselineMs, 0, 'f', 2)
+                                    .arg(sentenceNumber(fit.baselineMs, 'f', 2))
                               : QString());
     if (!fit.limiting.isEmpty()) {
         const auto it =

@@ -149,10 +149,11 @@ std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
                                         BenchArgsWords::tr("Path frames."), QStringLiteral("n"));
 
     const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments,
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments,
                         {help,
-                         {scene, quick, out, budget, size, frames, lights, methods, details,
-                       images, normals, from, path, pathFrames},
+                         {scene, quick, out, budget, size, frames, lights, methods, details, images,
+                          normals, from, path, pathFrames},
                          {QStringLiteral("scene")}},
                         kSynopsis, helpText()))
         return *exit;

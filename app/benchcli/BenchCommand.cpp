@@ -1,4 +1,5 @@
 #include "BenchCommand.h"
+#include "core/Language.h"
 
 #include "BenchArgs.h"
 #include "bench/BenchEngine.h"
@@ -110,6 +111,13 @@ int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool 
     return kExitOk;
 }
 
+void printObjectFitHeading(const ErrorBudget &budget)
+{
+    printLine(BenchCommandWords::tr("\nper-object fit (%1; each object drawn alone for its time, "
+                                    "its own pixels for its error):")
+                  .arg(budget.describe()));
+}
+
 // --from: the rows of an earlier run, fitted and charted again.
 int refit(const BenchArgs &args)
 {
@@ -129,14 +137,23 @@ int refit(const BenchArgs &args)
     printLine(benchTableHeader());
     for (const BenchRow &row : rows)
         printLine(benchTableLine(row));
-    return writeOutputs(args, rows, false);
+    const int written = writeOutputs(args, rows, false);
+    const std::vector<SceneObjectFit> objectFits = fitObjectsByScene(rows, args.budget);
+    if (!objectFits.empty())
+        printObjectFitHeading(args.budget);
+    for (const SceneObjectFit &f : objectFits)
+        printLine(QStringLiteral("  %1: %2").arg(f.scene, f.fit.summary));
+    if (!objectFits.empty())
+        printLine(BenchCommandWords::tr("  (--from draws nothing: the choices are not drawn whole "
+                                        "to confirm them)"));
+    return written;
 }
 
 QString percentSaved(double part, double whole)
 {
     if (whole <= 0.0)
         return QStringLiteral("0 %");
-    return QStringLiteral("%1 %").arg(100.0 * (1.0 - part / whole), 0, 'f', 1);
+    return QStringLiteral("%1 %").arg(sentenceNumber(100.0 * (1.0 - part / whole), 'f', 1));
 }
 
 // --path: every scene along the camera path; the one line scripts read is
@@ -171,7 +188,7 @@ int benchPath(const BenchArgs &args)
                               "steps), lights left out below %2 steps; against the exact Phong "
                               "image and the same frame at full detail with every light\n")
             .arg(options.detailPixels)
-            .arg(255.0 * args.budget.reductionAllowance(), 0, 'g', 3));
+            .arg(sentenceNumber(255.0 * args.budget.reductionAllowance(), 'g', 3)));
     QElapsedTimer clock;
     clock.start();
     std::vector<PathRun> runs;
@@ -184,15 +201,15 @@ int benchPath(const BenchArgs &args)
                     .arg(QFileInfo(scene).completeBaseName())
                     .arg(done)
                     .arg(total)
-                    .arg(f.distance, 0, 'f', 2)
+                    .arg(sentenceNumber(f.distance, 'f', 2))
                     .arg(f.levels)
                     .arg(f.triangles)
                     .arg(f.fullTriangles)
                     .arg(f.lightsLeftOut)
                     .arg(f.maxError)
                     .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
-                    .arg(f.frameMs, 0, 'f', 2)
-                    .arg(f.fullFrameMs, 0, 'f', 2)
+                    .arg(sentenceNumber(f.frameMs, 'f', 2))
+                    .arg(sentenceNumber(f.fullFrameMs, 'f', 2))
                     .arg(f.fullMaxError));
             std::fflush(stdout);
             return true;
@@ -239,8 +256,8 @@ int benchPath(const BenchArgs &args)
                   .arg(triangles)
                   .arg(fullTriangles)
                   .arg(percentSaved(double(triangles), double(fullTriangles)))
-                  .arg(ms, 0, 'f', 1)
-                  .arg(fullMs, 0, 'f', 1)
+                  .arg(sentenceNumber(ms, 'f', 1))
+                  .arg(sentenceNumber(fullMs, 'f', 1))
                   .arg(percentSaved(ms, fullMs)));
     const QDir out(args.outDir);
     const QString csv = out.filePath(QStringLiteral("path.csv"));
@@ -255,7 +272,8 @@ int benchPath(const BenchArgs &args)
         return kExitFailure;
     }
     printLine(QStringLiteral("wrote %1, %2, %3").arg(csv, png, svg));
-    printLine(BenchCommandWords::tr("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    printLine(BenchCommandWords::tr("done in %1 s")
+                  .arg(sentenceNumber(clock.elapsed() / 1000.0, 'f', 1)));
     return kExitOk;
 }
 
@@ -309,23 +327,21 @@ int bench(const BenchArgs &args)
     }
     const int written = writeOutputs(args, rows);
     if (!engine.objectFits().empty())
-        printLine(
-            BenchCommandWords::tr("\nper-object fit (%1; each object drawn alone for its time, its "
-                                  "own pixels for its error):")
-                .arg(args.budget.describe()));
+        printObjectFitHeading(args.budget);
     for (const ObjectFitCheck &check : engine.objectFits()) {
         printLine(QStringLiteral("  %1: %2").arg(check.scene, check.fit.summary));
         if (check.measured)
             printLine(BenchCommandWords::tr("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
                           .arg(check.scene)
-                          .arg(check.measured->frameMs, 0, 'f', 2)
+                          .arg(sentenceNumber(check.measured->frameMs, 'f', 2))
                           .arg(check.measured->maxError)
-                          .arg(check.measured->psnr, 0, 'f', 1)
+                          .arg(sentenceNumber(check.measured->psnr, 'f', 1))
                           .arg(args.budget.accepts(*check.measured)
                                    ? BenchCommandWords::tr("within budget")
                                    : QStringLiteral("OVER BUDGET")));
     }
-    printLine(BenchCommandWords::tr("done in %1 s").arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    printLine(BenchCommandWords::tr("done in %1 s")
+                  .arg(sentenceNumber(clock.elapsed() / 1000.0, 'f', 1)));
     return written;
 }
 

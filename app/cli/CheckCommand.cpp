@@ -122,13 +122,12 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                  CheckCommandWords::tr("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit =
-            parseOrExit(parser, arguments,
-                        {help,
-                         {size, vertex, fragment, shading, tolerance, json, diff, bind, equation,
-                          drawOnly},
-                         {QStringLiteral("bind")}},
-                        synopsis(), helpText()))
+    if (const std::optional<int> exit = parseOrExit(
+            parser, arguments,
+            {help,
+             {size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly},
+             {QStringLiteral("bind")}},
+            synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)

@@ -185,8 +185,9 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     out << CheckWords::tr("check: %1").arg(verdictWord(outcome.verdict));
     out << CheckWords::tr(
                "%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it")
-               .arg(std::isfinite(c.psnr) ? CheckWords::tr("PSNR %1 dB").arg(sentenceNumber(c.psnr, 'f', 2))
-                                          : CheckWords::tr("PSNR inf"))
+               .arg(std::isfinite(c.psnr)
+                        ? CheckWords::tr("PSNR %1 dB").arg(sentenceNumber(c.psnr, 'f', 2))
+                        : CheckWords::tr("PSNR inf"))
                .arg(c.maxError)
                .arg(r.toleranceSteps)
                .arg(sentenceNumber(100.0 * r.badFraction(), 'f', 2))

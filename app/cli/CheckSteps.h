@@ -28,8 +28,8 @@ namespace phonglab::cli {
 // What a check draws: the scene and the shader files it is drawn with.
 struct CheckInput {
     QString scenePath;
-    QString vertexPath;   // empty: the scene's, else the method's shipped one
-    QString fragmentPath; // likewise
+    QString vertexPath;        // empty: the scene's, else the method's shipped one
+    QString fragmentPath;      // likewise
     bool methodChosen = false; // --shading named the method: its shipped files win over the scene's
     QSize size{800, 600};
 };
@@ -38,10 +38,11 @@ struct CheckDrawing {
     // errors, stages, bindings and notes; the verdict stays Error (nothing
     // judged yet). Errors, when there are any, end the check.
     CheckOutcome outcome;
-    std::optional<int> lightCapacity; // ProgramBindings::lightCapacity()
-    QImage image;                     // the render; null where there are errors
+    std::optional<int> lightCapacity;               // ProgramBindings::lightCapacity()
+    QImage image;                                   // the render; null where there are errors
     std::vector<ShaderDiagnostic> compilerMessages; // errors and warnings, for stderr
-    std::vector<std::shared_ptr<const MeshData>> objectMeshes; // per scene object, for the reference
+    std::vector<std::shared_ptr<const MeshData>>
+        objectMeshes; // per scene object, for the reference
 
     bool drawn() const { return outcome.errors.empty() && !image.isNull(); }
 };

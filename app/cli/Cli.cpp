@@ -120,7 +120,8 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
         for (const auto &list : {std::span<const Subcommand>(kSubcommands), more})
             for (const Subcommand &c : list)
                 commands << QString::fromLatin1(c.name);
-        const bool looksLikeAFile = first.contains(QLatin1Char('.')) || first.contains(QLatin1Char('/'));
+        const bool looksLikeAFile =
+            first.contains(QLatin1Char('.')) || first.contains(QLatin1Char('/'));
         return usageError(looksLikeAFile
                               ? CliWords::tr("%1: no such file, and not a command").arg(first)
                               : unknownCommandMessage(first, commands),

@@ -54,7 +54,8 @@ QString typedOption(const QString &name, const QStringList &arguments)
         if (argument == QLatin1String("--"))
             break;
         const QString spelled = argument.section(QLatin1Char('='), 0, 0);
-        if (spelled.startsWith(QLatin1Char('-')) && spelled.mid(spelled.startsWith(QLatin1String("--")) ? 2 : 1) == name)
+        if (spelled.startsWith(QLatin1Char('-'))
+            && spelled.mid(spelled.startsWith(QLatin1String("--")) ? 2 : 1) == name)
             return spelled;
     }
     return dashed(name);

@@ -61,8 +61,8 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
             "them instead)\n\n"
             "Exit status: 0 loaded (maybe with warnings), 1 cannot be loaded, 2 wrong arguments.");
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
-    if (const std::optional<int> exit = parseOrExit(parser, arguments, {help, {json, normals, crease}, {}},
-                                                    synopsis, helpText))
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments, {help, {json, normals, crease}, {}}, synopsis, helpText))
         return *exit;
     if (parser.positionalArguments().size() != 1)
         return usage(MeshInfoCommandWords::tr("expected exactly one mesh file"));
@@ -129,9 +129,8 @@ void printJson(const QString &path, const MeshLoadResult &r)
                  : path.startsWith(QLatin1String("builtin:")) ? QStringLiteral("analytic")
                                                               : normalMethodName(s.normalMethod));
     // A crease splits computed normals only; the file's are used as written.
-    o.insert(QStringLiteral("crease_deg"), s.creaseAngleDeg && !s.normalsFromFile
-                                               ? QJsonValue(*s.creaseAngleDeg)
-                                               : QJsonValue());
+    o.insert(QStringLiteral("crease_deg"),
+             s.creaseAngleDeg && !s.normalsFromFile ? QJsonValue(*s.creaseAngleDeg) : QJsonValue());
     o.insert(QStringLiteral("bounds"),
              QJsonObject{{QStringLiteral("min"), vec3Json(s.boundsMin)},
                          {QStringLiteral("max"), vec3Json(s.boundsMax)}});
@@ -165,9 +164,11 @@ void printText(const QString &path, const MeshLoadResult &r)
     printLine(MeshInfoCommandWords::tr("gpu vertices:    %1 (%2 split for differing normals)")
                   .arg(s.vertices)
                   .arg(s.splitVertices));
-    printLine(MeshInfoCommandWords::tr("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
-    printLine(MeshInfoCommandWords::tr("surface:         %1")
-                  .arg(s.closed ? MeshInfoCommandWords::tr("closed") : MeshInfoCommandWords::tr("open")));
+    printLine(
+        MeshInfoCommandWords::tr("bounds:          %1 .. %2").arg(v(s.boundsMin), v(s.boundsMax)));
+    printLine(
+        MeshInfoCommandWords::tr("surface:         %1")
+            .arg(s.closed ? MeshInfoCommandWords::tr("closed") : MeshInfoCommandWords::tr("open")));
     printLine(
         MeshInfoCommandWords::tr("load time:       %1 ms%2")
             .arg(sentenceNumber(s.loadMs, 'f', 1))

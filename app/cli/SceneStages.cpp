@@ -212,8 +212,19 @@ QString pngNameProblem(const QString &option, const QString &path)
         return {};
     static const QList<QByteArray> others = [] {
         QList<QByteArray> formats = QImageWriter::supportedImageFormats();
-        formats << "jpg" << "jpeg" << "gif" << "webp" << "tif" << "tiff" << "bmp" << "svg"
-                << "exr" << "tga" << "heic" << "avif" << "jxl";
+        formats << "jpg"
+                << "jpeg"
+                << "gif"
+                << "webp"
+                << "tif"
+                << "tiff"
+                << "bmp"
+                << "svg"
+                << "exr"
+                << "tga"
+                << "heic"
+                << "avif"
+                << "jxl";
         return formats;
     }();
     if (!others.contains(suffix))

@@ -18,7 +18,8 @@ struct SpellingWords {
 qsizetype editDistance(const QString &a, const QString &b)
 {
     const qsizetype n = a.size(), m = b.size();
-    std::vector<std::vector<qsizetype>> d(std::size_t(n + 1), std::vector<qsizetype>(std::size_t(m + 1)));
+    std::vector<std::vector<qsizetype>> d(std::size_t(n + 1),
+                                          std::vector<qsizetype>(std::size_t(m + 1)));
     for (qsizetype i = 0; i <= n; ++i)
         d[std::size_t(i)][0] = i;
     for (qsizetype j = 0; j <= m; ++j)

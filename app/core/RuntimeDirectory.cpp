@@ -33,7 +33,8 @@ void provideRuntimeDirectory()
     const QByteArray native = QFile::encodeName(path);
     if (::mkdir(native.constData(), 0700) != 0 && errno != EEXIST)
         return;
-    struct stat info {};
+    struct stat info {
+    };
     if (::lstat(native.constData(), &info) != 0 || !S_ISDIR(info.st_mode)
         || info.st_uid != geteuid() || (info.st_mode & 0777) != 0700)
         return; // Qt says what is wrong with it

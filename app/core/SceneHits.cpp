@@ -67,15 +67,15 @@ ReferenceImage shadeSceneHits(const SceneHits &hits, const Scene &scene,
                 // Flat: once at the face's centroid; faceted: at the hit, both
                 // with the face's normal. The rest of the equation is exact.
                 const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
-                const glm::dvec3 at = shader.form == MistakeForm::FaceNormalPerFragment
-                    ? hit.point
-                    : face.centroid;
+                const glm::dvec3 at =
+                    shader.form == MistakeForm::FaceNormalPerFragment ? hit.point : face.centroid;
                 return shadeReferenceHit(
                     {at, face.normal, object.modelView, object.normalMatrix, object.model},
                     material, scene.ambient, lights, ReferenceShader());
             }
-            return shadeReferenceHit({hit.point, hit.normal, object.modelView, object.normalMatrix, object.model},
-                                     material, scene.ambient, lights, shader);
+            return shadeReferenceHit(
+                {hit.point, hit.normal, object.modelView, object.normalMatrix, object.model},
+                material, scene.ambient, lights, shader);
         });
 }
 
@@ -87,12 +87,12 @@ ReferenceImage shadeSceneFaces(const SceneHits &hits, const Scene &scene)
         [&](const SceneHits::Object &object, const ReferenceHit &hit, const Material &material) {
             if (!object.mesh || hit.triangle < 0)
                 return shadeReferenceHit(
-                    {hit.point, hit.normal, object.modelView, object.normalMatrix, object.model}, material,
-                    scene.ambient, lights, ReferenceShader());
+                    {hit.point, hit.normal, object.modelView, object.normalMatrix, object.model},
+                    material, scene.ambient, lights, ReferenceShader());
             const FaceGeometry face = faceGeometry(*object.mesh, std::size_t(hit.triangle));
             return shadeReferenceHit(
-                {face.centroid, face.normal, object.modelView, object.normalMatrix, object.model}, material,
-                scene.ambient, lights, ReferenceShader());
+                {face.centroid, face.normal, object.modelView, object.normalMatrix, object.model},
+                material, scene.ambient, lights, ReferenceShader());
         });
 }
 

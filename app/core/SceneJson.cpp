@@ -181,9 +181,10 @@ bool SceneReader::readMesh(const QJsonValue &value, const QString &path, QString
     // A misspelt builtin is the scene's error, at its field, not the mesh loader's.
     if (const QString spec = value.toString();
         spec.startsWith("builtin:"_L1) && !analyticShapeFor(spec))
-        return fail(path, SceneWords::tr("unknown builtin mesh '%1'%2; known: %3")
-                              .arg(spec, didYouMean(spec, builtinMeshSpecs()),
-                                   builtinMeshSpecs().join(QStringLiteral(", "))));
+        return fail(path,
+                    SceneWords::tr("unknown builtin mesh '%1'%2; known: %3")
+                        .arg(spec, didYouMean(spec, builtinMeshSpecs()),
+                             builtinMeshSpecs().join(QStringLiteral(", "))));
     out = value.toString();
     return true;
 }
@@ -605,10 +606,11 @@ SceneLoadResult loadSceneFile(const QString &path)
                                           QStringLiteral("om")};
     const QFileInfo info(path);
     if (!result.ok() && result.errorLine > 0 && meshSuffixes.contains(info.suffix().toLower())) {
-        result.error = SceneWords::tr("a mesh, not a scene: name it in one, "
-                                      "{\"mesh\": \"%1\", \"lights\": [{\"position\": [3, 4, 5]}]}, "
-                                      "saved as a .json file beside it")
-                           .arg(info.fileName());
+        result.error =
+            SceneWords::tr("a mesh, not a scene: name it in one, "
+                           "{\"mesh\": \"%1\", \"lights\": [{\"position\": [3, 4, 5]}]}, "
+                           "saved as a .json file beside it")
+                .arg(info.fileName());
         result.errorLine = result.errorColumn = 0;
     }
     return result;

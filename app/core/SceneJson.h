@@ -23,7 +23,7 @@ struct SceneLoadResult {
     QString error;              // set on failure
     int errorLine = 0;          // where a JSON syntax error is (1-based); 0: no text position
     int errorColumn = 0;
-    QStringList warnings;       // non-fatal findings, e.g. "camera.fovy: unknown key, ignored"
+    QStringList warnings; // non-fatal findings, e.g. "camera.fovy: unknown key, ignored"
 
     bool ok() const { return scene.has_value(); }
 };

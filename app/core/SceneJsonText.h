@@ -1,6 +1,6 @@
 #pragma once
-#include "ShaderBindings.h"
 #include "Result.h"
+#include "ShaderBindings.h"
 #include <QByteArray>
 #include <QJsonDocument>
 #include <QJsonValue>

@@ -501,13 +501,14 @@ ProgramBindings bindVariables(const std::vector<ShaderVariable> &variables,
         if (const auto it = explicitBindings.find(v.name); it != explicitBindings.end()) {
             b.isExplicit = true;
             if (it->second && !bindingFits(*it->second, v)) {
-                out.problems
-                    << ShaderBindingsWords::tr("%1=%2: %1 is a %3%4 %5, which cannot hold %6")
-                           .arg(v.name, bindingMeaningKey(*it->second), glslTypeSpelling(v.type),
-                                v.isArray ? ShaderBindingsWords::tr(" array") : QString(),
-                                v.isInput ? ShaderBindingsWords::tr("input")
-                                          : ShaderBindingsWords::tr("uniform"),
-                                bindingMeaningDescription(*it->second));
+                out.problems << ShaderBindingsWords::tr(
+                                    "%1=%2: %1 is a %3%4 %5, which cannot hold %6")
+                                    .arg(v.name, bindingMeaningKey(*it->second),
+                                         glslTypeSpelling(v.type),
+                                         v.isArray ? ShaderBindingsWords::tr(" array") : QString(),
+                                         v.isInput ? ShaderBindingsWords::tr("input")
+                                                   : ShaderBindingsWords::tr("uniform"),
+                                         bindingMeaningDescription(*it->second));
             } else {
                 b.meaning = it->second;
             }

@@ -17,7 +17,7 @@ namespace phonglab {
 
 inline constexpr int kDefaultCheckToleranceSteps = 2; // max error 2/255
 
-inline constexpr int kCheckBandPx = 2;                // the render tests' silhouette band
+inline constexpr int kCheckBandPx = 2; // the render tests' silhouette band
 
 // Everything a check needs that depends on the scene and the size alone, not
 // on the shader: computed once, then any number of renders are judged

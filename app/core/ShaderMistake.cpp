@@ -92,11 +92,11 @@ constexpr std::array kRules = {
                   "where the equation is evaluated: per fragment, with the interpolated normal; "
                   "evaluated per "
                   "vertex and interpolated, highlights smear and vanish between vertices")},
-    std::pair{ShaderMistake::PerFace,
-              QT_TRANSLATE_NOOP(
-                  "phonglab::ShaderMistake",
-                  "which normal: the one interpolated across the face from the vertices' "
-                  "normals; with each face's own normal the surface shows its facets")},
+    std::pair{
+        ShaderMistake::PerFace,
+        QT_TRANSLATE_NOOP("phonglab::ShaderMistake",
+                          "which normal: the one interpolated across the face from the vertices' "
+                          "normals; with each face's own normal the surface shows its facets")},
 };
 constexpr std::array kSummaries = {
     std::pair{ShaderMistake::NormalMatrix,

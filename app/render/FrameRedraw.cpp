@@ -91,9 +91,9 @@ Result<> FrameRedraw::useProgram(const FrameRecipe &recipe)
     if (m_programOf == wanted)
         return {};
     Renderer &renderer = m_offscreen->renderer();
-    const BuildReport built =
-        recipe.sources ? renderer.setProgramSources(recipe.sources->vertex, recipe.sources->fragment)
-                       : renderer.loadShading(recipe.scene.shading);
+    const BuildReport built = recipe.sources
+        ? renderer.setProgramSources(recipe.sources->vertex, recipe.sources->fragment)
+        : renderer.loadShading(recipe.scene.shading);
     if (!built.ok)
         return fail(FrameRedrawWords::tr("the program would not build again for the check: %1")
                         .arg(firstError(built)));

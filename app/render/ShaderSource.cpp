@@ -17,7 +17,8 @@ Result<ShaderSource> ShaderSource::fromFile(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return fail(ShaderSourceWords::tr("%1: cannot read shader: %2").arg(path, file.errorString()));
+        return fail(
+            ShaderSourceWords::tr("%1: cannot read shader: %2").arg(path, file.errorString()));
     return ShaderSource{path, file.readAll()};
 }
 

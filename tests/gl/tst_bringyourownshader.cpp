@@ -51,8 +51,9 @@ QJsonObject jsonOf(const ProcessRun &r)
 QString topKey(const QJsonObject &o)
 {
     const QJsonArray diagnosis = o.value(QStringLiteral("diagnosis")).toArray();
-    return diagnosis.isEmpty() ? QString()
-                               : diagnosis.first().toObject().value(QStringLiteral("key")).toString();
+    return diagnosis.isEmpty()
+        ? QString()
+        : diagnosis.first().toObject().value(QStringLiteral("key")).toString();
 }
 
 } // namespace
@@ -67,7 +68,8 @@ private slots:
         QTest::addColumn<QString>("dialect");
         QTest::addColumn<QString>("equation");
         QTest::newRow("WebGL 2, guarded") << QStringLiteral("webgl2") << QStringLiteral("guarded");
-        QTest::newRow("WebGL 1, the slide's") << QStringLiteral("webgl1") << QStringLiteral("slide");
+        QTest::newRow("WebGL 1, the slide's")
+            << QStringLiteral("webgl1") << QStringLiteral("slide");
     }
 
     // No flags: every name bound by what it says, the verdict `pass`, the
@@ -112,13 +114,11 @@ private slots:
             << "webgl2" << v2 << replaced(f2, "reflect(-L, N)", "reflect(L, N)")
             << "reflect-incident";
         QTest::newRow("WebGL 2 normals by model-view")
-            << "webgl2"
-            << replaced(v2, "transpose(inverse(mat3(modelView)))", "mat3(modelView)") << f2
-            << "normal-matrix";
+            << "webgl2" << replaced(v2, "transpose(inverse(mat3(modelView)))", "mat3(modelView)")
+            << f2 << "normal-matrix";
         QTest::newRow("WebGL 2 light not viewed")
             << "webgl2" << v2
-            << replaced(f2, "(uViewMatrix * vec4(uLightPosition[i], 1.0)).xyz",
-                        "uLightPosition[i]")
+            << replaced(f2, "(uViewMatrix * vec4(uLightPosition[i], 1.0)).xyz", "uLightPosition[i]")
             << "light-space";
         QTest::newRow("WebGL 2 no attenuation")
             << "webgl2" << v2
@@ -129,8 +129,7 @@ private slots:
             << "webgl1" << v1 << replaced(f1, "vec3 I = u_Ia * u_ka;", "vec3 I = vec3(0.0);")
             << "ambient";
         QTest::newRow("WebGL 2 V away from the eye")
-            << "webgl2" << v2
-            << replaced(f2, "normalize(-vPositionCam)", "normalize(vPositionCam)")
+            << "webgl2" << v2 << replaced(f2, "normalize(-vPositionCam)", "normalize(vPositionCam)")
             << "view-vector";
     }
 
@@ -192,21 +191,25 @@ private slots:
                                     .toObject()
                                     .value(QStringLiteral("message"))
                                     .toString();
-        QVERIFY2(message.contains(QLatin1String("uThing")) && message.contains(QLatin1String("mat4")),
+        QVERIFY2(message.contains(QLatin1String("uThing"))
+                     && message.contains(QLatin1String("mat4")),
                  qPrintable(message));
 
         const ProcessRun bound =
             check(vertex, fragment, {QStringLiteral("--bind"), QStringLiteral("uThing=model")});
         QVERIFY2(bound.exitCode == 0, qPrintable(QString::fromUtf8(bound.out)));
-        QCOMPARE(jsonOf(bound).value(QStringLiteral("bindings")).toObject().value(
-                     QStringLiteral("uThing")),
+        QCOMPARE(jsonOf(bound)
+                     .value(QStringLiteral("bindings"))
+                     .toObject()
+                     .value(QStringLiteral("uThing")),
                  QStringLiteral("model"));
 
         QFile original(checkScene());
         QVERIFY(original.open(QIODevice::ReadOnly));
         QJsonObject scene = QJsonDocument::fromJson(original.readAll()).object();
         scene.insert(QStringLiteral("bindings"), QJsonObject{{"uThing", "model"}});
-        const QString scenePath = write(QJsonDocument(scene).toJson(), QStringLiteral("bound.json"));
+        const QString scenePath =
+            write(QJsonDocument(scene).toJson(), QStringLiteral("bound.json"));
         const ProcessRun fromScene = check(vertex, fragment, {}, scenePath);
         QVERIFY2(fromScene.exitCode == 0, qPrintable(QString::fromUtf8(fromScene.out)));
 
@@ -305,7 +308,8 @@ void main() {
         const ProcessRun es1 = check(v1, readAsset(QStringLiteral("webgl1/phong.frag")), {}, {},
                                      /*json=*/false);
         QCOMPARE(es1.exitCode, 1);
-        QVERIFY2(es1.err.contains(QStringLiteral("student.vert:%1:").arg(line)), qPrintable(es1.err));
+        QVERIFY2(es1.err.contains(QStringLiteral("student.vert:%1:").arg(line)),
+                 qPrintable(es1.err));
         QVERIFY2(es1.err.contains(QLatin1String("GLSL ES 1.00")), qPrintable(es1.err));
 
         QByteArray f2 = readAsset(QStringLiteral("webgl2/phong.frag"));
@@ -313,9 +317,10 @@ void main() {
         // The compiler finds the missing ';' at the next statement; it is
         // pointed at just past the line where it belongs.
         const QByteArray unfinished = "    vec3 I = uAmbientLight * uKa";
-        const int unfinishedLine = QByteArray(f2.left(f2.indexOf(unfinished + '\n'))).count('\n') + 1;
-        const ProcessRun es3 = check(readAsset(QStringLiteral("webgl2/phong.vert")), f2, {}, {},
-                                     false);
+        const int unfinishedLine =
+            QByteArray(f2.left(f2.indexOf(unfinished + '\n'))).count('\n') + 1;
+        const ProcessRun es3 =
+            check(readAsset(QStringLiteral("webgl2/phong.vert")), f2, {}, {}, false);
         QCOMPARE(es3.exitCode, 1);
         QVERIFY2(es3.err.contains(QStringLiteral("student.frag:%1:%2: error")
                                       .arg(unfinishedLine)

@@ -144,17 +144,18 @@ private slots:
         const Scene scene = turnedScene();
         const CheckReference reference = makeTestCheckReference(scene);
         QVERIFY_OK(m_offscreen.renderer().setScene(scene));
-        QStringList table{QStringLiteral("| made, slide's equation | found first | % | judged by |"),
-                          QStringLiteral("|---|---|---|---|")};
+        QStringList table{
+            QStringLiteral("| made, slide's equation | found first | % | judged by |"),
+            QStringLiteral("|---|---|---|---|")};
         QStringList failures;
         for (const MistakeVariant &made : allMistakeVariants()) {
             if (made.key == ShaderMistake::NegativeLight
-                || made.key == ShaderMistake::BackfaceSpecular
-                || made.key == ShaderMistake::Gouraud || made.key == ShaderMistake::PerFace)
+                || made.key == ShaderMistake::BackfaceSpecular || made.key == ShaderMistake::Gouraud
+                || made.key == ShaderMistake::PerFace)
                 continue; // about the guard itself, or a shader of its own
             CheckReport report;
-            const QString failure = judgeMistake(withMistake(made, PhongEquation::Slide),
-                                                 reference, made, std::nullopt, false, report);
+            const QString failure = judgeMistake(withMistake(made, PhongEquation::Slide), reference,
+                                                 made, std::nullopt, false, report);
             if (!failure.isEmpty())
                 failures << failure;
             if (report.diagnosis.findings.empty())

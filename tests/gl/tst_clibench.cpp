@@ -93,8 +93,9 @@ void TestCliBench::quickRunWritesCsvAndChart()
     QCOMPARE(table.size(), qsizetype(rows.size()));
     QCOMPARE(table.filter(QStringLiteral(" whole scene ")).size(),
              qsizetype(rows.size()) - objectRows);
-    QCOMPARE(table.filter(QRegularExpression(QStringLiteral("^default +whole scene .* 2\\* "))).size(),
-             qsizetype(3 * 5));
+    QCOMPARE(
+        table.filter(QRegularExpression(QStringLiteral("^default +whole scene .* 2\\* "))).size(),
+        qsizetype(3 * 5));
     QVERIFY2(!table.filter(QStringLiteral(" tree.obj ")).isEmpty(), qPrintable(table.join('\n')));
     QVERIFY2(stdoutText.contains(QStringLiteral("per-object fit")),
              qPrintable(stdoutText.right(800)));
@@ -156,6 +157,8 @@ void TestCliBench::quickRunWritesCsvAndChart()
     QVERIFY2(QString::fromUtf8(again.out).contains(QStringLiteral("nothing meets PSNR")),
              again.out.constData());
     QCOMPARE(tableLines(QString::fromUtf8(again.out)), table); // --from: the same table
+    QVERIFY2(QString::fromUtf8(again.out).contains(QStringLiteral("per-object fit (PSNR")),
+             again.out.constData()); // and the per-object fit from the rows
     const QStringList refitLines =
         readText(refit + QStringLiteral("/fit.csv")).trimmed().split(QLatin1Char('\n'));
     QCOMPARE(refitLines.size(), 3);

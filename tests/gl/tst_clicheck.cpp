@@ -118,7 +118,8 @@ private slots:
             {QStringLiteral("check"), QStringLiteral("--lang"), QStringLiteral("fr")},
             QStringLiteral("de_DE.UTF-8"));
         QCOMPARE(refused.exitCode, 2);
-        QVERIFY2(refused.err.contains(QStringLiteral("spricht 'fr' nicht")), qPrintable(refused.err));
+        QVERIFY2(refused.err.contains(QStringLiteral("spricht 'fr' nicht")),
+                 qPrintable(refused.err));
         // A usage error speaks the run's language too (the application is
         // made before the arguments are read); its exit status does not change.
         const ProcessRun german =

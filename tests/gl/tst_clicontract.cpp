@@ -80,8 +80,8 @@ void TestCliContract::helpSaysWhatTheManPageSays()
     const QString top = QString::fromUtf8(runPhonglab({"--help"}).out);
     QVERIFY2(top.contains(QStringLiteral("phonglab --version")), qPrintable(top));
     const QString check = QString::fromUtf8(runPhonglab({"check", "--help"}).out);
-    for (const char *said : {"tolerance, worst", "notes, warnings", "bright green 1/255",
-                             "yellow 4/255", "per-face"})
+    for (const char *said :
+         {"tolerance, worst", "notes, warnings", "bright green 1/255", "yellow 4/255", "per-face"})
         QVERIFY2(check.contains(QString::fromUtf8(said)), said);
 }
 
@@ -92,22 +92,22 @@ void TestCliContract::unknownWordsAreUsageErrors_data()
     QTest::addColumn<QString>("synopsis"); // a piece of the synopsis printed after it
     const QString scene = smallScene();
     const QString top = QStringLiteral("usage: phonglab [SCENE.json");
-    QTest::newRow("command, near") << QStringList{"meshinfo", "x.obj"}
-                                   << "unknown command 'meshinfo' (did you mean 'mesh-info'?)"
-                                   << top;
+    QTest::newRow("command, near")
+        << QStringList{"meshinfo", "x.obj"}
+        << "unknown command 'meshinfo' (did you mean 'mesh-info'?)" << top;
     QTest::newRow("command, far") << QStringList{"frobnicate"} << "unknown command 'frobnicate'"
                                   << top;
     QTest::newRow("missing file") << QStringList{"nosuch.json"}
                                   << "nosuch.json: no such file, and not a command" << top;
-    QTest::newRow("top-level option") << QStringList{"--frobnicate"}
-                                      << "unknown option '--frobnicate'" << top;
+    QTest::newRow("top-level option")
+        << QStringList{"--frobnicate"} << "unknown option '--frobnicate'" << top;
     QTest::newRow("top-level option, near") << QStringList{"--verison"}
                                             << "unknown option '--verison' (did you mean "
                                                "'--version'?)"
                                             << top;
-    QTest::newRow("window option") << QStringList{scene, "--fragmnet", "x.frag"}
-                                   << "unknown option '--fragmnet' (did you mean '--fragment'?)"
-                                   << top;
+    QTest::newRow("window option")
+        << QStringList{scene, "--fragmnet", "x.frag"}
+        << "unknown option '--fragmnet' (did you mean '--fragment'?)" << top;
     QTest::newRow("render") << QStringList{"render", scene, "--szie", "100x100", "-o", "x.png"}
                             << "unknown option '--szie' (did you mean '--size'?)"
                             << "usage: phonglab render";
@@ -143,17 +143,16 @@ void TestCliContract::unknownWordsAreUsageErrors()
 void TestCliContract::aValuedFlagGivenTwiceIsRefused()
 {
     const QString out = m_dir.filePath(QStringLiteral("twice.png"));
-    const ProcessRun r = runPhonglab({"render", smallScene(), "-o", out, "--size", "10x10",
-                                      "--size", "20x20"});
+    const ProcessRun r =
+        runPhonglab({"render", smallScene(), "-o", out, "--size", "10x10", "--size", "20x20"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.startsWith(QStringLiteral("phonglab: error: --size given more than once "
                                              "('10x10', then '20x20')")),
              qPrintable(r.err));
     QVERIFY(!QFile::exists(out));
     // --bind is made to repeat.
-    const ProcessRun bound =
-        runPhonglab({"render", smallScene(), "-o", out, "--size", "16x16", "--bind",
-                     "Ia=Ia", "--bind", "ka=ka"});
+    const ProcessRun bound = runPhonglab({"render", smallScene(), "-o", out, "--size", "16x16",
+                                          "--bind", "Ia=Ia", "--bind", "ka=ka"});
     QVERIFY2(bound.exitCode == 0, qPrintable(bound.err));
 }
 
@@ -164,8 +163,7 @@ void TestCliContract::anotherImageFormatIsRefused()
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(QStringLiteral("PhongLab writes PNG images only")), qPrintable(r.err));
     QVERIFY(!QFile::exists(jpg));
-    const ProcessRun diff =
-        runPhonglab({"check", smallScene(), "--size", "16x16", "--diff", jpg});
+    const ProcessRun diff = runPhonglab({"check", smallScene(), "--size", "16x16", "--diff", jpg});
     QCOMPARE(diff.exitCode, 2);
     QVERIFY(!QFile::exists(jpg));
     // No suffix, or one no image format uses, stays a PNG.
@@ -184,13 +182,13 @@ void TestCliContract::aPathIsNamedOnce()
         if (args.front() == QLatin1String("render"))
             args << "-o" << m_dir.filePath("x.png");
         const ProcessRun r = runPhonglab(args);
-        QVERIFY2(r.err.contains(QStringLiteral("phonglab: error: %1: cannot read scene file")
-                                    .arg(missing)),
+        QVERIFY2(r.err.contains(
+                     QStringLiteral("phonglab: error: %1: cannot read scene file").arg(missing)),
                  qPrintable(r.err));
         QCOMPARE(r.err.count(missing), 1);
     }
-    const ProcessRun diff = runPhonglab(
-        {"check", smallScene(), "--size", "64x48", "--diff", "/nonexistent-dir/d.png"});
+    const ProcessRun diff =
+        runPhonglab({"check", smallScene(), "--size", "64x48", "--diff", "/nonexistent-dir/d.png"});
     QCOMPARE(diff.exitCode, 1);
     QCOMPARE(diff.err.count(QStringLiteral("/nonexistent-dir/d.png")), 1);
 }
@@ -222,9 +220,9 @@ void TestCliContract::checkJsonLocatesItsErrors()
     QCOMPARE(error.value("line").toInt(), 3);
     const int column = error.value("column").toInt();
     QVERIFY2(column >= 8, qPrintable(QString::number(column))); // at or just past the '}'
-    QVERIFY2(error.value("message").toString().contains(
-                 QStringLiteral("line 3, column %1").arg(column)),
-             qPrintable(error.value("message").toString()));
+    QVERIFY2(
+        error.value("message").toString().contains(QStringLiteral("line 3, column %1").arg(column)),
+        qPrintable(error.value("message").toString()));
     QVERIFY(syntax.value("max_error").isNull() && syntax.value("bad_fraction").isNull());
 
     const QString vertex = m_dir.filePath(QStringLiteral("missing.vert"));
@@ -249,8 +247,9 @@ void TestCliContract::checkSaysTheScenesWarnings()
     QCOMPARE(warnings.size(), 1);
     QVERIFY2(warnings.at(0).toString().startsWith(QStringLiteral("shadnig: unknown key")),
              qPrintable(warnings.at(0).toString()));
-    QVERIFY2(r.err.contains(QStringLiteral("phonglab: warning: %1: shadnig: unknown key").arg(path)),
-             qPrintable(r.err));
+    QVERIFY2(
+        r.err.contains(QStringLiteral("phonglab: warning: %1: shadnig: unknown key").arg(path)),
+        qPrintable(r.err));
     // A clean scene has the key too, empty.
     const ProcessRun clean = runPhonglab({"check", smallScene(), "--size", "64x48", "--json"});
     QVERIFY(jsonOf(clean).value("warnings").isArray());
@@ -264,9 +263,9 @@ void TestCliContract::whatCannotShowIgnoresTheTolerance()
     const QString fragment = write(QStringLiteral("reflect.frag"),
                                    withMistake(ShaderMistake::ReflectIncident).fragment.code);
     const auto undetectable = [&](const QString &tolerance) {
-        const QJsonObject o = jsonOf(runPhonglab({"check", checkScene(), "--size", "160x120",
-                                                  "--fragment", fragment, "--tolerance",
-                                                  tolerance, "--json"}));
+        const QJsonObject o =
+            jsonOf(runPhonglab({"check", checkScene(), "--size", "160x120", "--fragment", fragment,
+                                "--tolerance", tolerance, "--json"}));
         return std::pair{o.value("verdict").toString(), o.value("undetectable").toArray()};
     };
     const auto [strictVerdict, strict] = undetectable(QStringLiteral("2"));
@@ -294,7 +293,8 @@ void TestCliContract::flatAndFacetedAreNamedPerFace()
     QCOMPARE(top.value("key").toString(), QStringLiteral("per-face"));
     QVERIFY2(top.value("confidence").toDouble() > 0.99,
              qPrintable(QString::number(top.value("confidence").toDouble())));
-    QVERIFY2(top.value("form").toString().contains(method), qPrintable(top.value("form").toString()));
+    QVERIFY2(top.value("form").toString().contains(method),
+             qPrintable(top.value("form").toString()));
 }
 
 void TestCliContract::unknownBuiltinNamesFileAndField()
@@ -344,13 +344,14 @@ void TestCliContract::sceneFormatExamplesRunAsWritten()
         const qsizetype begin = at + fence.size();
         const qsizetype end = text.indexOf(QStringLiteral("```"), begin);
         QVERIFY(end > begin);
-        const QString scene = root.filePath(QStringLiteral("doc/scenes/example-%1.json").arg(++examples));
+        const QString scene =
+            root.filePath(QStringLiteral("doc/scenes/example-%1.json").arg(++examples));
         QFile file(scene);
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(text.mid(begin, end - begin).toUtf8());
         file.close();
-        const ProcessRun r = runPhonglab(
-            {"render", scene, "-o", scene + QStringLiteral(".png"), "--size", "64x48"});
+        const ProcessRun r =
+            runPhonglab({"render", scene, "-o", scene + QStringLiteral(".png"), "--size", "64x48"});
         QVERIFY2(r.exitCode == 0 && r.err.isEmpty(),
                  qPrintable(QStringLiteral("example %1: %2").arg(examples).arg(r.err)));
     }
@@ -394,10 +395,8 @@ void TestCliContract::missingSemicolonIsPointedWhereItBelongs()
     const ProcessRun r = runPhonglab({"render", smallScene(), "-o", m_dir.filePath("semi.png"),
                                       "--fragment", fragment, "--size", "16x16"});
     QCOMPARE(r.exitCode, 1);
-    QVERIFY2(r.err.startsWith(QStringLiteral("%1:%2:%3: error: ")
-                                  .arg(fragment)
-                                  .arg(line)
-                                  .arg(statement.size())),
+    QVERIFY2(r.err.startsWith(
+                 QStringLiteral("%1:%2:%3: error: ").arg(fragment).arg(line).arg(statement.size())),
              qPrintable(r.err));
 }
 

@@ -21,8 +21,7 @@ ShaderSource readShipped(const QString &fileName)
 // the mistake so diagnostics read "reflect-incident.frag:52: ...".
 void replace(ShaderSource &source, const char *from, const char *to, const QString &key);
 
-constexpr const char *kLightCam =
-    "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;";
+constexpr const char *kLightCam = "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;";
 
 // The mistake's other forms (form 0 is withMistake(key)).
 void makeForm(ShaderPair &s, MistakeVariant v, const QString &name)

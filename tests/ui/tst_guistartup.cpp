@@ -35,7 +35,8 @@ void TestGuiStartup::withoutADisplayExplainsAndExits()
     QVERIFY2(err.startsWith(QStringLiteral("phonglab: the editor window needs a display (X11 or "
                                            "Wayland), and DISPLAY is not set.")),
              qPrintable(err));
-    QVERIFY2(err.contains(QStringLiteral("render, check, grade, mesh-info and bench")), qPrintable(err));
+    QVERIFY2(err.contains(QStringLiteral("render, check, grade, mesh-info and bench")),
+             qPrintable(err));
     QVERIFY2(!err.contains(QStringLiteral("qt.qpa")), qPrintable(err)); // Qt never got to try
 }
 

@@ -80,8 +80,9 @@ private slots:
         // image is diagnosed as that mistake first, and fully explained.
         QFETCH(QString, key);
         const ShaderMistake mistake = *shaderMistakeFromKey(key);
-        const auto made = std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(),
-                                       [&](const auto &entry) { return entry.first.key == mistake; });
+        const auto made =
+            std::find_if(m_setup.mistaken.begin(), m_setup.mistaken.end(),
+                         [&](const auto &entry) { return entry.first.key == mistake; });
         const MistakeDiagnosis d = diagnose(m_setup, made->second.toImage(kBackground));
         QVERIFY(d.differingPixels > 0);
         QVERIFY(!d.findings.empty());

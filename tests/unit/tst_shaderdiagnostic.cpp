@@ -161,7 +161,8 @@ void TestShaderDiagnostic::missingSemicolonPointsAtTheLineItBelongsTo()
     // Mesa finds "vec3 a = vec3(1.0)" unfinished at the c of the next line.
     const QByteArray code = "void main()\n{\n    vec3 a = vec3(1.0)   // note\n\n"
                             "    c = vec4(a, 1.0);\n    d = 1 e = 2;\n}\n";
-    const QString expecting = QStringLiteral("syntax error, unexpected IDENTIFIER, expecting ',' or ';'");
+    const QString expecting =
+        QStringLiteral("syntax error, unexpected IDENTIFIER, expecting ',' or ';'");
     std::vector<ShaderDiagnostic> d(3);
     d[0].line = 5; // the first token of its line: moved
     d[0].column = 5;

@@ -43,7 +43,8 @@ double exact(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &l
 double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight &light,
                 ShaderMistake mistake, int form = 0)
 {
-    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1}, MistakeVariant{mistake, form})
+    return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1},
+                              MistakeVariant{mistake, form})
         .intensity.x;
 }
 
@@ -67,8 +68,7 @@ private slots:
     {
         const QStringList keys{"normal-matrix",     "unnormalized", "light-space", "homogeneous-w",
                                "reflect-incident",  "view-vector",  "attenuation", "negative-light",
-                               "backface-specular", "ambient",      "gouraud",
-                               "per-face"};
+                               "backface-specular", "ambient",      "gouraud",     "per-face"};
         QCOMPARE(shaderMistakeKeys(), keys);
         for (const QString &key : keys) {
             const std::optional<ShaderMistake> mistake = shaderMistakeFromKey(key);
@@ -204,9 +204,9 @@ private slots:
         // These change the inputs (normal, position, lights) or where the
         // equation is evaluated, not the equation at a point.
         const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.02});
-        for (ShaderMistake m : {ShaderMistake::NormalMatrix, ShaderMistake::LightSpace,
-                                ShaderMistake::HomogeneousW, ShaderMistake::Gouraud,
-                                ShaderMistake::PerFace}) {
+        for (ShaderMistake m :
+             {ShaderMistake::NormalMatrix, ShaderMistake::LightSpace, ShaderMistake::HomogeneousW,
+              ShaderMistake::Gouraud, ShaderMistake::PerFace}) {
             QVERIFY(!isPointwiseMistake(m));
             QCOMPARE(mistaken(kFacing, kUp, light, m), exact(kFacing, kUp, light));
         }

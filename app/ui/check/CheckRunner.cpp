@@ -127,8 +127,7 @@ void CheckRunner::request(const FrameRecipe &frame)
     }
     // Newest wins. A running job making the reference of another view is
     // wasted work; one judging the same view is nearly done.
-    if (m_running
-        && !(sameScene(m_running->first, frame.scene) && m_running->second == frame.size))
+    if (m_running && !(sameScene(m_running->first, frame.scene) && m_running->second == frame.size))
         m_cancelled->store(true);
     m_waiting = std::move(r);
 }
@@ -180,12 +179,10 @@ void CheckRunner::start(Request request)
                     // The exact image of the equation the frame was judged by:
                     // the slide's, for a shader that matched it.
                     const PhongEquation equation = result.report.equation;
-                    result.exact =
-                        equation == PhongEquation::Guarded
+                    result.exact = equation == PhongEquation::Guarded
                         ? toQImage(result.reference->exactImage)
                         : toQImage(result.reference->exactOf(equation).toImage(scene.background));
-                    result.heatmap =
-                        toQImage(checkHeatmap(yours, *result.reference, equation));
+                    result.heatmap = toQImage(checkHeatmap(yours, *result.reference, equation));
                 }
             } catch (
                 const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash

@@ -47,8 +47,8 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
         } else if (options
                    && (takeValue(QStringLiteral("--vertex"), arguments, i, out.vertexShader,
                                  out.error)
-                       || takeValue(QStringLiteral("--fragment"), arguments, i,
-                                    out.fragmentShader, out.error))) {
+                       || takeValue(QStringLiteral("--fragment"), arguments, i, out.fragmentShader,
+                                    out.error))) {
             continue;
         } else if (options && argument.startsWith(QLatin1Char('-')) && argument.size() > 1) {
             // --lang was taken out before (core/Language); the rest are

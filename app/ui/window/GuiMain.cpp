@@ -156,7 +156,6 @@ int runGui(int argc, char **argv)
         !languageRequested() && !remembered.isEmpty())
         useLanguage(remembered);
 
-
     MainWindow window;
     useMultisamplingInViewOnly(window, kViewportSamples);
     window.restoreWindowSettings(); // geometry and docks as the last session left them
