@@ -3,6 +3,7 @@
 #include "AnalyticShapes.h"
 #include "NearestSpelling.h"
 #include "SceneJsonText.h"
+#include "ScenePaths.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -601,16 +602,12 @@ SceneLoadResult loadSceneFile(const QString &path)
     SceneLoadResult result = parseScene(file.readAll(), QFileInfo(path).absolutePath());
     // A mesh where a scene belongs (`phonglab render tree.obj`): say what to
     // give instead of a JSON syntax error at line 1.
-    static const QStringList meshSuffixes{QStringLiteral("obj"), QStringLiteral("ply"),
-                                          QStringLiteral("off"), QStringLiteral("stl"),
-                                          QStringLiteral("om")};
-    const QFileInfo info(path);
-    if (!result.ok() && result.errorLine > 0 && meshSuffixes.contains(info.suffix().toLower())) {
+    if (!result.ok() && result.errorLine > 0 && isMeshFile(path)) {
         result.error =
             SceneWords::tr("a mesh, not a scene: name it in one, "
                            "{\"mesh\": \"%1\", \"lights\": [{\"position\": [3, 4, 5]}]}, "
                            "saved as a .json file beside it")
-                .arg(info.fileName());
+                .arg(QFileInfo(path).fileName());
         result.errorLine = result.errorColumn = 0;
     }
     return result;

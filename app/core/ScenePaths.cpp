@@ -5,6 +5,17 @@
 
 namespace phonglab {
 
+QStringList meshFileSuffixes()
+{
+    return {QStringLiteral("obj"), QStringLiteral("ply"), QStringLiteral("off"),
+            QStringLiteral("stl"), QStringLiteral("om")};
+}
+
+bool isMeshFile(const QString &path)
+{
+    return meshFileSuffixes().contains(QFileInfo(path).suffix(), Qt::CaseInsensitive);
+}
+
 bool isWritableLocation(const QString &path)
 {
     return !path.isEmpty() && !path.startsWith(QLatin1Char(':'));

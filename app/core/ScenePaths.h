@@ -2,11 +2,17 @@
 #include "Scene.h"
 
 #include <QString>
+#include <QStringList>
 
 namespace phonglab {
 
 // Where a scene's files are, as the scene file says them: paths relative to
 // the scene file's folder unless they lie outside it.
+
+// The mesh formats a scene's "mesh" may name (loadMesh reads them), by file
+// name suffix, case-insensitive: "obj", "ply", "off", "stl", "om".
+QStringList meshFileSuffixes();
+bool isMeshFile(const QString &path);
 
 // Scenes embedded in the binary (":/...") can be opened but not written.
 bool isWritableLocation(const QString &path);

@@ -2,6 +2,7 @@
 
 #include "ResultChecks.h"
 #include "render/GlFormat.h"
+#include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
@@ -106,6 +107,22 @@ void UiTestWindow::replaceInFragment(const QString &from, const QString &to) con
     editor->setFocus();
     QTest::keyClicks(editor, to);
     QVERIFY(editor->text().contains(to));
+}
+
+bool UiTestWindow::typeTheSlidesEquationAndCheck(int timeoutMs) const
+{
+    replaceInFragment(QStringLiteral("if (NdotL <= 0.0)"), QStringLiteral("if (false)"));
+    replaceInFragment(QStringLiteral("Id[i] * kd * NdotL"),
+                      QStringLiteral("Id[i] * kd * max(0.0, NdotL)"));
+    if (QTest::currentTestFailed())
+        return false;
+    const LiveCheck *check = m_window->liveCheck();
+    return QTest::qWaitFor(
+        [&] {
+            return !check->isChecking() && check->lastResult()
+                && check->lastResult()->report.equation == PhongEquation::Slide;
+        },
+        timeoutMs);
 }
 
 } // namespace phonglab::test

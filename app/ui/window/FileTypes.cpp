@@ -6,20 +6,9 @@
 
 namespace phonglab {
 
-QStringList meshFileSuffixes()
-{
-    return {QStringLiteral("obj"), QStringLiteral("ply"), QStringLiteral("off"),
-            QStringLiteral("stl"), QStringLiteral("om")};
-}
-
 bool isSceneFile(const QString &path)
 {
     return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
-}
-
-bool isMeshFile(const QString &path)
-{
-    return meshFileSuffixes().contains(QFileInfo(path).suffix(), Qt::CaseInsensitive);
 }
 
 QString whyNotOpenable(const QStringList &paths)

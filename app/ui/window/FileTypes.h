@@ -1,14 +1,14 @@
 #pragma once
+#include "core/ScenePaths.h" // meshFileSuffixes(), isMeshFile()
+
 #include <QString>
 #include <QStringList>
 
 namespace phonglab {
 
 // What the window opens, by file name suffix (case-insensitive): scenes
-// (.json) and the mesh formats loadMesh reads.
+// (.json) and the mesh formats (core/ScenePaths).
 bool isSceneFile(const QString &path);
-bool isMeshFile(const QString &path);
-QStringList meshFileSuffixes(); // "obj", "ply", ...
 
 // Why `paths` cannot be opened together (unsupported types, a scene mixed
 // with other files, nothing given); empty when they can.
