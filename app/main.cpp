@@ -2,7 +2,7 @@
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
 #include "core/Language.h"
-#include "core/ProgramSynopsis.h"
+#include "core/check/ProgramSynopsis.h"
 #include "core/RuntimeDirectory.h"
 #include "ui/window/GuiMain.h"
 

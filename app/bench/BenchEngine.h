@@ -2,7 +2,7 @@
 #include "BenchOptions.h"
 #include "BenchResult.h"
 #include "ObjectFit.h"
-#include "core/ReferenceImage.h"
+#include "core/reference/ReferenceImage.h"
 #include "core/Result.h"
 #include "core/Scene.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ReferenceImage.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <QImage>
 #include <QString>

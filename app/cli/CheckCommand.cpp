@@ -4,6 +4,7 @@
 #include "CheckSteps.h"
 #include "CliCommon.h"
 #include "GradedChild.h"
+#include "SceneOverrides.h"
 #include "SceneStages.h"
 #include "core/SceneJson.h"
 #include "render/QtImages.h"
@@ -36,7 +37,7 @@ struct CheckArgs {
     int toleranceSteps = kDefaultCheckToleranceSteps;
     bool json = false;
     QString diffPath;
-    ExplicitBindings bindings; // --bind, over the scene's
+    SceneOverrides overrides; // --bind, --define, --precision over the scene's
     std::optional<PhongEquation> equation;
     QString drawOnlyPath; // the hidden --draw-only OUT.png of grade's child
 };
@@ -48,6 +49,8 @@ const QString &synopsis()
                               "[--shading NAME] [--size WxH]\n"
                               "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
                               "[--equation slide|guarded]\n"
+                              "                      [--define NAME=VALUE ...] "
+                              "[--precision highp|as-written]\n"
                               "                      [--json] [--diff OUT.png]");
     return text;
 }
@@ -73,7 +76,18 @@ QString helpText()
               "Names are\n"
               "                      bound by themselves where they say it (uModelMatrix, "
               "aPosition, u_kd);\n"
-              "                      this wins over that. Meanings: %4, or none\n"
+              "                      this wins over that. Meanings: %4, or none; or a "
+              "constant the\n"
+              "                      page sets (--bind mode=1, --bind 'u_MatlSet[0].emit=0,0,0')\n"
+              "  --define NAME=VALUE a token the page's JavaScript replaces before compiling "
+              "(NUM_LIGHTS=2);\n"
+              "                      repeatable\n"
+              "  --precision RULE    highp (default): every float judged at 32 bits, as a "
+              "desktop browser\n"
+              "                      computes it, and what mediump or lowp would change said "
+              "apart;\n"
+              "                      as-written: the declared precision, as this driver "
+              "computes it\n"
               "  --equation E        demand the slide's equation (slide: a highlight even where "
               "N·L <= 0)\n"
               "                      or the guarded one (guarded: none there); by default "
@@ -113,7 +127,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                        QStringLiteral("steps"));
     const QCommandLineOption json(QStringLiteral("json"), QString());
     const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
-    const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
+    const SceneOverrideOptions overrides;
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
     QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
@@ -125,8 +139,10 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     if (const std::optional<int> exit = parseOrExit(
             parser, arguments,
             {help,
-             {size, vertex, fragment, shading, tolerance, json, diff, bind, equation, drawOnly},
-             {QStringLiteral("bind")}},
+             QList<QCommandLineOption>{size, vertex, fragment, shading, tolerance, json, diff,
+                                       equation, drawOnly}
+                 + overrides.all(),
+             SceneOverrideOptions::repeatable()},
             synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
@@ -138,7 +154,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     args.scenePath = positional.first();
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
                                  readShadingOption(parser, shading, &args.shading),
-                                 readBindOptions(parser, bind, &args.bindings)})
+                                 readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
     if (parser.isSet(equation)) {
@@ -208,8 +224,7 @@ SceneLoadResult checkedScene(const CheckArgs &args)
         return loaded;
     if (args.shading)
         loaded.scene->shading = *args.shading;
-    for (const auto &[name, meaning] : args.bindings)
-        loaded.scene->bindings[name] = meaning;
+    args.overrides.applyTo(*loaded.scene);
     return loaded;
 }
 
@@ -251,7 +266,7 @@ int check(const CheckArgs &args)
     else
         outcome = runCheckOn(args, scene, &reference, &yours);
     // What the file says but is not checked as written, as render says it.
-    outcome.warnings = loaded.warnings;
+    outcome.warnings = loaded.warnings + outcome.warnings;
     for (const QString &w : loaded.warnings)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 

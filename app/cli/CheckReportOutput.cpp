@@ -1,4 +1,5 @@
 #include "CheckReportOutput.h"
+#include "core/check/MistakeSets.h"
 #include "core/Language.h"
 
 #include "SceneStages.h"
@@ -7,6 +8,7 @@
 #include <QJsonArray>
 
 #include <cmath>
+#include <limits>
 
 namespace phonglab::cli {
 
@@ -116,6 +118,29 @@ QJsonArray diagnosisJson(const CheckOutcome &outcome)
     return out;
 }
 
+// The smallest set of mistakes that explains the render, each with its
+// likely lines: `together` {keys, explains, forms, lines}.
+QJsonValue togetherJson(const CheckOutcome &outcome)
+{
+    const MistakeSet &set = outcome.report.diagnosis.together;
+    if (outcome.verdict != CheckOutcome::Verdict::Fail || set.variants.empty())
+        return QJsonValue();
+    QJsonArray keys, forms, lines;
+    for (MistakeVariant v : set.variants) {
+        keys.append(shaderMistakeKey(v.key));
+        forms.append(mistakeFormSummary(v));
+        for (const SourceLine &l : mistakeSourceLines(v.key, outcome.stages))
+            lines.append(QJsonObject{{QStringLiteral("key"), shaderMistakeKey(v.key)},
+                                     {QStringLiteral("file"), l.file},
+                                     {QStringLiteral("line"), l.line},
+                                     {QStringLiteral("text"), l.text}});
+    }
+    return QJsonObject{{QStringLiteral("keys"), keys},
+                       {QStringLiteral("explains"), set.explains},
+                       {QStringLiteral("forms"), forms},
+                       {QStringLiteral("lines"), lines}};
+}
+
 QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
 {
     QJsonArray out;
@@ -128,6 +153,66 @@ QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
 }
 
 } // namespace
+
+QJsonObject precisionJson(const PrecisionFinding &p)
+{
+    QJsonObject o{{QStringLiteral("judged"), precisionRuleKey(p.judged)},
+                  {QStringLiteral("declared"), QJsonArray::fromStringList(p.declared)}};
+    o.insert(QStringLiteral("as_written_max_error"),
+             p.asWrittenMaxError ? QJsonValue(*p.asWrittenMaxError) : QJsonValue());
+    o.insert(QStringLiteral("as_written_error"),
+             p.asWrittenError.isEmpty() ? QJsonValue() : QJsonValue(p.asWrittenError));
+    o.insert(QStringLiteral("as_written_psnr_db"),
+             p.asWrittenMaxError && std::isfinite(p.asWrittenPsnr) ? QJsonValue(p.asWrittenPsnr)
+                                                                  : QJsonValue());
+    return o;
+}
+
+PrecisionFinding precisionFromJson(const QJsonObject &o)
+{
+    PrecisionFinding p;
+    p.judged = precisionRuleFromKey(o.value(QStringLiteral("judged")).toString())
+                   .value_or(PrecisionRule::Highp);
+    for (const QJsonValue &v : o.value(QStringLiteral("declared")).toArray())
+        p.declared << v.toString();
+    if (const QJsonValue e = o.value(QStringLiteral("as_written_max_error")); e.isDouble())
+        p.asWrittenMaxError = e.toInt();
+    p.asWrittenError = o.value(QStringLiteral("as_written_error")).toString();
+    const QJsonValue psnr = o.value(QStringLiteral("as_written_psnr_db"));
+    p.asWrittenPsnr = psnr.isDouble() ? psnr.toDouble() : std::numeric_limits<double>::infinity();
+    return p;
+}
+
+QString precisionText(const PrecisionFinding &p)
+{
+    if (p.declared.isEmpty())
+        return {};
+    const QString declared = p.declared.join(QStringLiteral(", "));
+    if (p.judged == PrecisionRule::AsWritten)
+        return CheckWords::tr("precision: %1 judged as written, as this driver computes it")
+            .arg(declared);
+    if (!p.asWrittenError.isEmpty())
+        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+                              "browser computes it; as written the program does not build on a "
+                              "driver that honours precision (a browser too): %2")
+            .arg(declared, p.asWrittenError);
+    if (!p.asWrittenMaxError)
+        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+                              "browser computes it")
+            .arg(declared);
+    if (*p.asWrittenMaxError == 0)
+        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+                              "browser computes it; as written it draws the same image here")
+            .arg(declared);
+    return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop browser "
+                          "computes it; as written, on a driver that computes %1 in fewer bits "
+                          "(this one does), the image changes by up to %2/255 (PSNR %3 dB): "
+                          "not counted against the shader")
+        .arg(declared)
+        .arg(*p.asWrittenMaxError)
+        .arg(std::isfinite(p.asWrittenPsnr) ? sentenceNumber(p.asWrittenPsnr, 'f', 1)
+                                            : QStringLiteral("∞"));
+}
 
 QJsonObject checkJson(const CheckOutcome &outcome)
 {
@@ -154,6 +239,7 @@ QJsonObject checkJson(const CheckOutcome &outcome)
     }
     o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
+    o.insert(QStringLiteral("together"), togetherJson(outcome));
     o.insert(QStringLiteral("undetectable"), keysJson(outcome.report.diagnosis.undetectable));
     o.insert(QStringLiteral("errors"), errorsJson(outcome.errors));
     QJsonObject bindings;
@@ -166,6 +252,7 @@ QJsonObject checkJson(const CheckOutcome &outcome)
              judged ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
     o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(outcome.notes));
     o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(outcome.warnings));
+    o.insert(QStringLiteral("precision"), precisionJson(outcome.precision));
     return o;
 }
 
@@ -176,6 +263,8 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
         out << CheckWords::tr("bindings: %1").arg(bound);
     for (const QString &note : outcome.notes)
         out << CheckWords::tr("note: %1").arg(note);
+    if (const QString precision = precisionText(outcome.precision); !precision.isEmpty())
+        out << precision;
     if (outcome.verdict == CheckOutcome::Verdict::Error) {
         out << CheckWords::tr("check: error");
         return out.join(QLatin1Char('\n'));
@@ -207,6 +296,20 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
             out << CheckWords::tr(
                 "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
                 "shows where it is");
+        if (d.together.variants.size() > 1 && !d.unexplained()) {
+            out << CheckWords::tr("  together: %1 explain %2 % of the difference")
+                       .arg(mistakeSetName(d.together))
+                       .arg(qRound(100.0 * d.together.explains));
+            for (MistakeVariant v : d.together.variants) {
+                out << QStringLiteral("    %1 (%2): %3")
+                           .arg(shaderMistakeKey(v.key), mistakeFormSummary(v),
+                                shaderMistakeRule(v.key));
+                for (const SourceLine &l : mistakeSourceLines(v.key, outcome.stages))
+                    out << QStringLiteral("      %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
+            }
+            if (!d.findings.empty())
+                out << CheckWords::tr("  each alone:");
+        }
         for (const MistakeFinding &f : d.findings) {
             out << QStringLiteral("  ") + findingMessage(f);
             for (const SourceLine &l : findingLines(f, outcome.stages))

@@ -1,11 +1,12 @@
 #pragma once
-#include "core/MistakeSourceLines.h"
+#include "core/check/MistakeSourceLines.h"
 #include "core/Scene.h"
-#include "core/ShaderCheck.h"
+#include "core/check/ShaderCheck.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QJsonObject>
 #include <QString>
+#include <optional>
 #include <vector>
 
 namespace phonglab::cli {
@@ -15,7 +16,25 @@ namespace phonglab::cli {
 // worst {x, y, object}, diagnosis [{key, also, confidence, message, lines
 // [{file, line, text}]}], undetectable, errors [{file, line, column,
 // message}], bindings {name: meaning or "none"}, equation ("guarded",
-// "slide", null on error), notes [text]. Never renamed; new keys may be added.
+// "slide", null on error), notes [text], warnings [text], together {keys,
+// explains, forms, lines [{key, file, line, text}]} (null unless it fails),
+// precision {judged, declared, as_written_max_error, as_written_psnr_db,
+// as_written_error}.
+// Never renamed; new keys may be added.
+
+// How precision was judged, and what the declared one would change: a
+// finding, never a verdict (a desktop browser computes floats at 32 bits).
+struct PrecisionFinding {
+    PrecisionRule judged = PrecisionRule::Highp;
+    QStringList declared; // the lower precisions the shaders declare: "mediump", "lowp"
+    // Judged at highp with a lower precision declared: the render as
+    // written against the one judged, on this driver.
+    std::optional<int> asWrittenMaxError;
+    double asWrittenPsnr = 0.0;
+    // Or why the program as written does not build there (a uniform both
+    // stages declare, at two precisions, does not link in a browser either).
+    QString asWrittenError;
+};
 
 struct CheckOutcome {
     enum class Verdict {
@@ -30,9 +49,15 @@ struct CheckOutcome {
     ProgramBindings bindings;             // what each of the program's names was bound to
     QStringList notes;                    // what the verdict rests on that the user should know
     QStringList warnings; // the scene file's: a key ignored, a format-1 "flat" read as "faceted"
+    PrecisionFinding precision;
 };
 
 QJsonObject checkJson(const CheckOutcome &outcome);
+// `precision`, and read back (grade's child hands it to its parent).
+QJsonObject precisionJson(const PrecisionFinding &precision);
+PrecisionFinding precisionFromJson(const QJsonObject &json);
+// "precision: mediump judged at highp ...", or empty where none is declared.
+QString precisionText(const PrecisionFinding &precision);
 QString checkText(const CheckOutcome &outcome, const Scene &scene);
 
 } // namespace phonglab::cli

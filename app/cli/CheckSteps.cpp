@@ -1,6 +1,9 @@
 #include "CheckSteps.h"
 
 #include "SceneStages.h"
+#include "core/ImageMetrics.h"
+#include "core/check/BindingConflicts.h"
+#include "core/check/CoursePrelude.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
@@ -25,6 +28,15 @@ ShaderDiagnostic inputError(const QString &file, const QString &message)
     return d;
 }
 
+QStringList buildWarnings(const std::vector<ShaderDiagnostic> &compilerMessages)
+{
+    QStringList out;
+    for (const ShaderDiagnostic &d : compilerMessages)
+        if (!d.isError())
+            out << d.format();
+    return out;
+}
+
 ShaderDiagnostic sceneError(const QString &path, const SceneLoadResult &loaded)
 {
     ShaderDiagnostic d = inputError(path, loaded.error);
@@ -44,6 +56,53 @@ QString declaringFile(const QString &name, const CheckOutcome &outcome, const St
     const bool inVertex =
         !outcome.stages.empty() && declared.match(outcome.stages.front().text).hasMatch();
     return inVertex ? files.vertex : files.fragment;
+}
+
+} // namespace
+
+namespace {
+
+// The lower precisions the stages declare and, where they were judged at
+// highp, how far the render as written is from the one judged: drawn again
+// with the declared precision (a second build and draw, only for shaders
+// that declare mediump or lowp).
+PrecisionFinding measurePrecision(OffscreenRenderer &offscreen, const StageFiles &files,
+                                  const Scene &judged, QSize size, const QImage &judgedImage)
+{
+    PrecisionFinding finding;
+    finding.judged = judged.course.precision;
+    const Result<StageSources> read = readStageFiles(files.vertex, files.fragment);
+    if (!read)
+        return finding;
+    for (const auto &[code, stage] : {std::pair{read->vertex.code, ShaderStage::Vertex},
+                                      std::pair{read->fragment.code, ShaderStage::Fragment}})
+        for (const QString &lower : coursePreludeFor(code, stage, judged.course).lowerPrecisions)
+            if (!finding.declared.contains(lower))
+                finding.declared << lower;
+    if (finding.declared.isEmpty() || finding.judged != PrecisionRule::Highp)
+        return finding;
+    Scene asWritten = judged;
+    asWritten.course.precision = PrecisionRule::AsWritten;
+    Renderer &renderer = offscreen.renderer();
+    renderer.updateSceneParameters(asWritten);
+    const Result<BuildReport> built = buildStages(renderer, files);
+    if (!built)
+        return finding;
+    if (!built->ok) {
+        for (const ShaderDiagnostic &d : built->diagnostics)
+            if (d.isError()) {
+                finding.asWrittenError = d.format();
+                break;
+            }
+        return finding;
+    }
+    const QImage image = offscreen.renderImage(size);
+    if (image.isNull())
+        return finding;
+    const ImageComparison c = compareImages(toRgbImage(image), toRgbImage(judgedImage));
+    finding.asWrittenMaxError = c.maxError;
+    finding.asWrittenPsnr = c.psnr;
+    return finding;
 }
 
 } // namespace
@@ -81,6 +140,7 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
         return fail(QString(), built.error());
     const BuildReport &program = *built;
     drawing.compilerMessages = program.diagnostics;
+    outcome.warnings << buildWarnings(drawing.compilerMessages);
     if (!program.ok) {
         for (const ShaderDiagnostic &d : program.diagnostics)
             if (d.isError())
@@ -101,6 +161,8 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     for (const UnboundUniform &unbound : unboundUniforms(linked, scene))
         outcome.errors.push_back(
             inputError(declaringFile(unbound.name, outcome, files), unbound.message));
+    for (const QString &conflict : bindingConflicts(outcome.bindings, scene))
+        outcome.errors.push_back(inputError(QStringLiteral("--bind"), conflict));
     if (!outcome.errors.empty())
         return drawing;
     QString lightsNote;
@@ -112,6 +174,7 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     drawing.image = offscreen.renderImage(input.size);
     if (drawing.image.isNull())
         return fail(QString(), CheckStepsWords::tr("rendering failed"));
+    outcome.precision = measurePrecision(offscreen, files, judged, input.size, drawing.image);
     return drawing;
 }
 
@@ -207,6 +270,7 @@ QJsonObject drawingJson(const CheckDrawing &drawing)
             {QStringLiteral("stages"), stages},
             {QStringLiteral("variables"), variables},
             {QStringLiteral("notes"), QJsonArray::fromStringList(o.notes)},
+            {QStringLiteral("precision"), precisionJson(o.precision)},
             {QStringLiteral("light_capacity"),
              drawing.lightCapacity ? QJsonValue(*drawing.lightCapacity) : QJsonValue()}};
 }
@@ -217,6 +281,7 @@ CheckDrawing drawingFromJson(const QJsonObject &json)
     CheckOutcome &o = drawing.outcome;
     o.errors = diagnosticsFromJson(json.value(QStringLiteral("errors")));
     drawing.compilerMessages = diagnosticsFromJson(json.value(QStringLiteral("compiler")));
+    o.warnings << buildWarnings(drawing.compilerMessages);
     for (const QJsonValue &v : json.value(QStringLiteral("stages")).toArray()) {
         const QJsonObject s = v.toObject();
         o.stages.push_back({s.value(QStringLiteral("path")).toString(),
@@ -233,6 +298,7 @@ CheckDrawing drawingFromJson(const QJsonObject &json)
     }
     for (const QJsonValue &v : json.value(QStringLiteral("notes")).toArray())
         o.notes << v.toString();
+    o.precision = precisionFromJson(json.value(QStringLiteral("precision")).toObject());
     if (const QJsonValue c = json.value(QStringLiteral("light_capacity")); c.isDouble())
         drawing.lightCapacity = c.toInt();
     return drawing;

@@ -1,10 +1,10 @@
 #pragma once
 #include "CheckReportOutput.h"
 #include "core/MeshData.h"
-#include "core/PhongEquation.h"
+#include "core/reference/PhongEquation.h"
 #include "core/Scene.h"
 #include "core/SceneJson.h"
-#include "core/ShaderCheck.h"
+#include "core/check/ShaderCheck.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QImage>
@@ -63,6 +63,10 @@ void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReferen
 
 // An error not from the compiler: bad input, no GL, a file not read.
 ShaderDiagnostic inputError(const QString &file, const QString &message);
+// The build's warnings (the compiler's, what the page's prelude added, and
+// what the image cannot show), each "FILE:LINE:COL: warning: MESSAGE", for
+// the check's `warnings`.
+QStringList buildWarnings(const std::vector<ShaderDiagnostic> &compilerMessages);
 // The scene file's error, at its line and column where the JSON text has
 // one (a syntax error).
 ShaderDiagnostic sceneError(const QString &path, const SceneLoadResult &loaded);

@@ -7,7 +7,7 @@
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
 #include "core/NearestSpelling.h"
-#include "core/ProgramSynopsis.h"
+#include "core/check/ProgramSynopsis.h"
 #include "headless/HeadlessPlatform.h"
 
 #include <QCoreApplication>

@@ -48,7 +48,8 @@ const QString &synopsis()
         "usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]\n"
         "                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]\n"
         "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
-        "[--equation slide|guarded]");
+        "[--equation slide|guarded]\n"
+        "                      [--define NAME=VALUE ...] [--precision highp|as-written]");
     return text;
 }
 
@@ -74,11 +75,17 @@ QString helpText()
               "  --memory MIB        memory limit of one check, default %3\n"
               "  --size WxH          image size in pixels, default 800x600\n"
               "  --tolerance STEPS   largest error allowed per channel (0..255), default %4\n"
-              "  --bind NAME=MEANING what every student's NAME holds, as in check; repeatable\n"
+              "  --bind NAME=MEANING what every student's NAME holds (or a constant, NAME=1), as "
+              "in check;\n"
+              "                      repeatable\n"
+              "  --define NAME=VALUE a token the page's JavaScript replaces, as in check; "
+              "repeatable\n"
+              "  --precision RULE    highp (default) or as-written, as in check\n"
               "  --equation E        demand the slide's (slide) or the guarded (guarded) "
               "equation\n\n"
               "Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,\n"
-              "bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json\n"
+              "bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),\n"
+              "DIR/grades.json\n"
               "(the check's JSON per row), DIR/report.html and its DIR/images/, and a table on "
               "stdout.\n"
               "Verdicts: pass, fail, error, timeout, crash.\n\n"
@@ -104,7 +111,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
     const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
                                        QStringLiteral("steps"));
-    const QCommandLineOption bind(QStringLiteral("bind"), QString(), QStringLiteral("binding"));
+    const SceneOverrideOptions overrides;
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
@@ -113,8 +120,10 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (const std::optional<int> exit =
             parseOrExit(parser, arguments,
                         {help,
-                         {scene, out, jobs, timeout, memory, size, tolerance, bind, equation},
-                         {QStringLiteral("scene"), QStringLiteral("bind")}},
+                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size,
+                                                   tolerance, equation}
+                             + overrides.all(),
+                         QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
                         synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
@@ -132,7 +141,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (settings.outFolder.isEmpty())
         return usage(GradeCommandWords::tr("--out: missing the folder"));
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &settings.size),
-                                 readBindOptions(parser, bind, &settings.bindings)})
+                                 readSceneOverrides(parser, overrides, &settings.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
     if (parser.isSet(equation)) {
@@ -188,8 +197,7 @@ Result<std::vector<GradeScene>> loadScenes(const GradeArgs &args)
                      .arg(scenes.size() + 1)
                      .arg(fileSlug(QFileInfo(path).completeBaseName()));
         s.scene = *loaded.scene;
-        for (const auto &[name, meaning] : args.settings.bindings)
-            s.scene.bindings[name] = meaning;
+        args.settings.overrides.applyTo(s.scene);
         SceneMeshes meshes = loadSceneMeshes(s.scene);
         if (!meshes.ok())
             return fail(QStringLiteral("%1: %2").arg(path, meshes.error));

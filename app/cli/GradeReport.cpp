@@ -155,7 +155,7 @@ QString summary(const GradeResults &results)
 
     std::map<QString, int> mistakes;
     for (const GradeRow &row : results.rows)
-        if (const QString key = rowMistakeKey(row); !key.isEmpty())
+        for (const QString &key : rowMistakeKeys(row).split(QLatin1Char(' '), Qt::SkipEmptyParts))
             ++mistakes[key];
     std::vector<std::pair<QString, int>> sorted(mistakes.begin(), mistakes.end());
     std::stable_sort(sorted.begin(), sorted.end(),
@@ -211,7 +211,26 @@ QString details(const GradeRow &row)
             html += QStringLiteral("<p><b>unknown</b>: %1</p>")
                         .arg(esc(ReportWords::tr("no classic mistake explains the difference; the "
                                                  "heatmap shows where it is.")));
+        if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence) {
+            html += QStringLiteral("<p>%1</p><ul>")
+                        .arg(esc(ReportWords::tr("%1 mistakes together explain %2 % of the "
+                                                 "difference:")
+                                     .arg(d.together.variants.size())
+                                     .arg(qRound(100.0 * d.together.explains))));
+            for (MistakeVariant v : d.together.variants) {
+                html += QStringLiteral("<li><b>%1</b>: %2")
+                            .arg(esc(shaderMistakeKey(v.key)),
+                                 esc(mistakeFormSummary(v) + QStringLiteral(" — ")
+                                     + shaderMistakeRule(v.key)));
+                for (const SourceLine &l : mistakeSourceLines(v.key, o.stages))
+                    html += linesInContext(row, l.file, l.line);
+                html += QStringLiteral("</li>");
+            }
+            html += QStringLiteral("</ul>");
+        }
         for (const MistakeFinding &f : d.findings) {
+            if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence)
+                break; // each alone explains less than the set above
             // The sentence is escaped whole, then the key made bold in it.
             const QString key = esc(shaderMistakeKey(f.key));
             html +=
@@ -237,6 +256,11 @@ QString details(const GradeRow &row)
     }
     for (const QString &note : o.notes)
         html += QStringLiteral("<p><i>%1</i> %2</p>").arg(esc(ReportWords::tr("note:")), esc(note));
+    for (const QString &warning : o.warnings)
+        html += QStringLiteral("<p><i>%1</i> %2</p>")
+                    .arg(esc(ReportWords::tr("warning:")), esc(warning));
+    if (const QString precision = precisionText(o.precision); !precision.isEmpty())
+        html += QStringLiteral("<p><i>%1</i></p>").arg(esc(precision));
     return html;
 }
 

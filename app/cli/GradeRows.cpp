@@ -1,5 +1,7 @@
 #include "GradeRows.h"
 
+#include "core/check/MistakeSets.h"
+
 namespace phonglab::cli {
 
 QString gradeVerdictName(GradeVerdict verdict)
@@ -27,6 +29,16 @@ QString rowMistakeKey(const GradeRow &row)
     if (const MistakeFinding *f = topFinding(row))
         return shaderMistakeKey(f->key);
     return row.verdict == GradeVerdict::Fail ? QStringLiteral("unknown") : QString();
+}
+
+QString rowMistakeKeys(const GradeRow &row)
+{
+    if (row.verdict != GradeVerdict::Fail)
+        return {};
+    const MistakeDiagnosis &d = row.outcome.report.diagnosis;
+    if (!d.together.variants.empty() && d.together.explains >= kExplainedConfidence)
+        return mistakeSetKeys(d.together);
+    return rowMistakeKey(row);
 }
 
 RowPlace rowPlace(const GradeRow &row)

@@ -1,8 +1,9 @@
 #pragma once
 #include "CheckReportOutput.h"
 #include "ClassFolder.h"
+#include "SceneOverrides.h"
 #include "core/MeshData.h"
-#include "core/PhongEquation.h"
+#include "core/reference/PhongEquation.h"
 #include "core/Scene.h"
 
 #include <QSize>
@@ -23,7 +24,7 @@ struct GradeSettings {
     QSize size{800, 600};
     int toleranceSteps = 2;
     std::optional<PhongEquation> equation;
-    ExplicitBindings bindings; // --bind, over each scene's
+    SceneOverrides overrides; // --bind, --define, --precision over each scene's
 };
 
 struct GradeScene {
@@ -67,6 +68,9 @@ const MistakeFinding *topFinding(const GradeRow &row);
 // The mistake key a row is filed under: the top finding's, "unknown" for a
 // fail nothing explains, empty otherwise.
 QString rowMistakeKey(const GradeRow &row);
+// Every mistake the row is explained by, keys space-separated: the smallest
+// set that explains it (MistakeSets), else "unknown"; empty unless it failed.
+QString rowMistakeKeys(const GradeRow &row);
 // Where to look: the top finding's first line, else the first error's
 // place. Empty file where there is none.
 struct RowPlace {

@@ -152,11 +152,7 @@ QStringList GradeRun::childArguments(const GradeRow &row) const
         args << QStringLiteral("--vertex") << s.vertex;
     if (!s.fragment.isEmpty())
         args << QStringLiteral("--fragment") << s.fragment;
-    for (const auto &[name, meaning] : m_results.settings.bindings)
-        args << QStringLiteral("--bind")
-             << QStringLiteral("%1=%2").arg(name,
-                                            meaning ? bindingMeaningKey(*meaning) : kUnboundWord);
-    return args;
+    return args + m_results.settings.overrides.arguments();
 }
 
 void GradeRun::run()

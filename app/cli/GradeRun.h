@@ -1,7 +1,7 @@
 #pragma once
 #include "GradeRows.h"
 #include "GradedChild.h"
-#include "core/ShaderCheck.h"
+#include "core/check/ShaderCheck.h"
 
 #include <QElapsedTimer>
 #include <QObject>

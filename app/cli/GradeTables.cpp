@@ -18,7 +18,7 @@ const QStringList &csvColumns()
         QStringLiteral("psnr_db"),    QStringLiteral("max_error"), QStringLiteral("bad_fraction"),
         QStringLiteral("key"),        QStringLiteral("also"),      QStringLiteral("file"),
         QStringLiteral("line"),       QStringLiteral("equation"),  QStringLiteral("bindings"),
-        QStringLiteral("seconds")};
+        QStringLiteral("seconds"),    QStringLiteral("mistakes")};
     return columns;
 }
 
@@ -77,7 +77,8 @@ QStringList csvRecord(const GradeResults &results, const GradeRow &row)
             place.file.isEmpty() || place.line <= 0 ? QString() : QString::number(place.line),
             judged(row) ? phongEquationKey(r.equation) : QString(),
             textCell(bindingsCell(row)),
-            QString::number(row.seconds, 'f', 2)};
+            QString::number(row.seconds, 'f', 2),
+            rowMistakeKeys(row)};
 }
 
 } // namespace
@@ -142,7 +143,7 @@ QString gradesTable(const GradeResults &results)
             ? QString()
             : cut(results.submissions[std::size_t(row.submission)].name, nameWidth);
         previous = row.submission;
-        QString what = rowMistakeKey(row);
+        QString what = rowMistakeKeys(row).replace(QLatin1Char(' '), QLatin1Char('+'));
         if (!judged(row) && !row.outcome.errors.empty())
             what = cut(row.outcome.errors.front().message, 60);
         const RowPlace place = rowPlace(row);

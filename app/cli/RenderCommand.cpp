@@ -1,6 +1,7 @@
 #include "RenderCommand.h"
 
 #include "CliCommon.h"
+#include "SceneOverrides.h"
 #include "SceneStages.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
@@ -33,7 +34,7 @@ struct RenderArgs {
     QString vertexPath;
     QString fragmentPath;
     std::optional<ShadingMethod> shading; // overrides the scene's
-    ExplicitBindings bindings;            // --bind, over the scene's
+    SceneOverrides overrides; // --bind, --define, --precision over the scene's
 };
 
 // Returns the arguments, or an exit code for usage errors / --help.
@@ -60,15 +61,13 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption shading(
         QStringLiteral("shading"), RenderCommandWords::tr("Shading method instead of the scene's."),
         QStringLiteral("name"));
-    const QCommandLineOption bind(
-        QStringLiteral("bind"),
-        RenderCommandWords::tr("What a uniform or input of the shader holds."),
-        QStringLiteral("NAME=MEANING"));
+    const SceneOverrideOptions overrides;
 
     const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis = RenderCommandWords::tr(
         "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
-        "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]");
+        "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]\n"
+        "                       [--define NAME=VALUE ...] [--precision highp|as-written]");
     const QString helpText = synopsis
         + RenderCommandWords::tr(
               "\n\n"
@@ -82,14 +81,24 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
               "  --fragment FILE     fragment shader instead of the shading method's\n"
               "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable "
               "(the\n"
-              "                      meanings are those of `phonglab check`)\n\n"
+              "                      meanings are those of `phonglab check`), or a constant "
+              "(NAME=1,0,0)\n"
+              "  --define NAME=VALUE a token the page's JavaScript replaces before compiling; "
+              "repeatable\n"
+              "  --precision RULE    highp (default: every float at 32 bits, as a desktop "
+              "browser\n"
+              "                      computes it) or as-written (the declared precision, as "
+              "this driver\n"
+              "                      computes it)\n\n"
               "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
               .arg(knownMethods);
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
     if (const std::optional<int> exit = parseOrExit(
             parser, arguments,
-            {help, {output, size, vertex, fragment, shading, bind}, {QStringLiteral("bind")}},
+            {help,
+             QList<QCommandLineOption>{output, size, vertex, fragment, shading} + overrides.all(),
+             SceneOverrideOptions::repeatable()},
             synopsis, helpText))
         return *exit;
     const QStringList positional = parser.positionalArguments();
@@ -108,7 +117,7 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
         return usage(problem);
     for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
                                  readShadingOption(parser, shading, &args.shading),
-                                 readBindOptions(parser, bind, &args.bindings)})
+                                 readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
     args.vertexPath = parser.value(vertex);
@@ -136,8 +145,7 @@ int render(const RenderArgs &args)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
     Scene scene = *loaded.scene;
-    for (const auto &[name, meaning] : args.bindings)
-        scene.bindings[name] = meaning;
+    args.overrides.applyTo(scene);
 
     OffscreenRenderer offscreen;
     if (const Result<> created = offscreen.create(); !created) {

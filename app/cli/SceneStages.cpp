@@ -81,19 +81,6 @@ Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,
     return renderer.setProgramSources(stages.vertex, stages.fragment);
 }
 
-QString readBindOptions(const QCommandLineParser &parser, const QCommandLineOption &option,
-                        ExplicitBindings *bindings)
-{
-    for (const QString &text : parser.values(option)) {
-        QString error;
-        const std::optional<ParsedBinding> parsed = parseBindingArgument(text, &error);
-        if (!parsed)
-            return QStringLiteral("--bind: %1").arg(error);
-        (*bindings)[parsed->name] = parsed->meaning;
-    }
-    return {};
-}
-
 namespace {
 
 bool allZero(const UniformSnapshot &snapshot, const VariableBinding &b)

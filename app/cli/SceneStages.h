@@ -1,5 +1,5 @@
 #pragma once
-#include "core/MistakeSourceLines.h"
+#include "core/check/MistakeSourceLines.h"
 #include "core/Scene.h"
 #include "core/ShadingMethod.h"
 #include "render/BuildReport.h"
@@ -31,11 +31,6 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
                        int maxSide, QSize *size);
 QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                           std::optional<ShadingMethod> *shading);
-
-// --bind NAME=MEANING, each given, over the scene's "bindings" (the command
-// line wins name by name). Empty, or the message for usage().
-QString readBindOptions(const QCommandLineParser &parser, const QCommandLineOption &option,
-                        ExplicitBindings *bindings);
 
 // The uniforms of the built program that PhongLab binds to nothing and that
 // nobody gives a value (no "uniforms" entry, no initialiser): a shader that

@@ -1,7 +1,7 @@
 #include "ImageMetrics.h"
 #include "Language.h"
 
-#include "PhongReference.h"
+#include "core/reference/PhongReference.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-#include "ReferenceImage.h"
+#include "core/reference/ReferenceImage.h"
 #include "RgbImage.h"
 
 #include <QPoint>

@@ -1,6 +1,6 @@
 #include "LightBound.h"
 
-#include "PhongReference.h"
+#include "core/reference/PhongReference.h"
 
 #include <algorithm>
 #include <cmath>

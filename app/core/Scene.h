@@ -1,5 +1,6 @@
 #pragma once
-#include "ShaderBindings.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderBindings.h"
 #include "Camera.h"
 #include "Material.h"
 #include "PointLight.h"
@@ -58,6 +59,11 @@ struct Scene {
     // "bindings": what the shader's own names mean, where the user said so
     // (core/ShaderBindings.h); every other name is bound automatically.
     ExplicitBindings bindings;
+    // How the course's page compiles the shaders (core/check/CoursePrelude.h):
+    // "precision" ("highp", as a desktop browser computes floats, or
+    // "as-written") and "defines" ({"NUM_POINT_LIGHTS": "2"}: tokens the
+    // page's JavaScript replaces).
+    CourseOptions course;
 
     // Folder the scene was loaded from; relative mesh paths resolve against it.
     // Not part of the scene's content, so not compared.

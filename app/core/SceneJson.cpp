@@ -1,6 +1,6 @@
 #include "SceneJson.h"
 
-#include "AnalyticShapes.h"
+#include "core/reference/AnalyticShapes.h"
 #include "NearestSpelling.h"
 #include "SceneJsonText.h"
 #include "ScenePaths.h"
@@ -554,7 +554,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
                      "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
-                     "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "format"_L1,
+                     "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "defines"_L1, "precision"_L1, "format"_L1,
                      "generator"_L1});
     Scene scene;
     scene.baseDir = baseDir;
@@ -568,7 +568,11 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && readShaderFiles(root.value("shaders"_L1), QStringLiteral("shaders"), scene)
         && readUniforms(root.value("uniforms"_L1), QStringLiteral("uniforms"), scene.uniforms)
         && take(scenejson::readBindings(root.value("bindings"_L1), QStringLiteral("bindings")),
-                scene.bindings);
+                scene.bindings)
+        && take(scenejson::readDefines(root.value("defines"_L1), QStringLiteral("defines")),
+                scene.course.defines)
+        && take(scenejson::readPrecision(root.value("precision"_L1), QStringLiteral("precision")),
+                scene.course.precision);
     if (ok)
         result.scene = std::move(scene);
     else

@@ -301,6 +301,59 @@ Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &pa
     return read;
 }
 
+Result<PageDefines> readDefines(const QJsonValue &value, const QString &path)
+{
+    if (value.isUndefined())
+        return PageDefines{};
+    if (!value.isObject())
+        return fail(path
+                    + SceneJsonTextWords::tr(": expected an object of NAME: VALUE (got %1)")
+                          .arg(describeType(value)));
+    const QJsonObject object = value.toObject();
+    PageDefines read;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const QString where = path + QLatin1Char('.') + it.key();
+        QString text;
+        if (it.value().isString())
+            text = it.value().toString();
+        else if (it.value().isDouble())
+            text = QString::number(it.value().toDouble(), 'g', 17);
+        else
+            return fail(where
+                        + SceneJsonTextWords::tr(": expected the token's value, a string or a "
+                                                 "number (got %1)")
+                              .arg(describeType(it.value())));
+        QString error;
+        const std::optional<ParsedDefine> parsed =
+            parseDefineArgument(it.key() + QLatin1Char('=') + text, &error);
+        if (!parsed)
+            return fail(where + QStringLiteral(": ") + error);
+        read[parsed->name] = parsed->value;
+    }
+    return read;
+}
+
+QJsonValue definesJson(const PageDefines &defines)
+{
+    QJsonObject object;
+    for (const auto &[name, value] : defines)
+        object.insert(name, value);
+    return object;
+}
+
+Result<PrecisionRule> readPrecision(const QJsonValue &value, const QString &path)
+{
+    if (value.isUndefined())
+        return PrecisionRule::Highp;
+    const std::optional<PrecisionRule> rule = precisionRuleFromKey(value.toString());
+    if (!value.isString() || !rule)
+        return fail(path
+                    + SceneJsonTextWords::tr(": expected \"highp\" or \"as-written\" (got %1)")
+                          .arg(value.isString() ? QStringLiteral("\"%1\"").arg(value.toString())
+                                                : describeType(value)));
+    return *rule;
+}
+
 QJsonValue bindingsJson(const ExplicitBindings &bindings)
 {
     QJsonObject object;

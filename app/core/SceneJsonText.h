@@ -1,6 +1,7 @@
 #pragma once
 #include "Result.h"
-#include "ShaderBindings.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderBindings.h"
 #include <QByteArray>
 #include <QJsonDocument>
 #include <QJsonValue>
@@ -49,5 +50,10 @@ QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &unifor
 // "bindings": {"uKd": "kd", "uGain": "none"} (core/ShaderBindings.h).
 Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &path);
 QJsonValue bindingsJson(const ExplicitBindings &bindings);
+// "defines": {"NAME": "VALUE"} (a number is written as its text), and
+// "precision": "highp" or "as-written" (core/check/CoursePrelude.h).
+Result<PageDefines> readDefines(const QJsonValue &value, const QString &path);
+QJsonValue definesJson(const PageDefines &defines);
+Result<PrecisionRule> readPrecision(const QJsonValue &value, const QString &path);
 
 } // namespace phonglab::scenejson

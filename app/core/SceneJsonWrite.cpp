@@ -127,6 +127,10 @@ QByteArray sceneToJson(const Scene &scene)
         root.insert(QStringLiteral("uniforms"), scenejson::userUniformsJson(scene.uniforms));
     if (!scene.bindings.empty())
         root.insert(QStringLiteral("bindings"), scenejson::bindingsJson(scene.bindings));
+    if (!scene.course.defines.empty())
+        root.insert(QStringLiteral("defines"), scenejson::definesJson(scene.course.defines));
+    if (scene.course.precision != PrecisionRule::Highp)
+        root.insert(QStringLiteral("precision"), precisionRuleKey(scene.course.precision));
     if (!scene.vertexShader.isEmpty() || !scene.fragmentShader.isEmpty()) {
         QJsonObject shaders;
         if (!scene.vertexShader.isEmpty())

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/AnalyticShapes.h"
+#include "core/reference/AnalyticShapes.h"
 #include "core/MeshData.h"
 
 #include <QString>

@@ -1,6 +1,6 @@
 #include "DetailLevels.h"
 
-#include "core/MeshBvh.h"
+#include "core/reference/MeshBvh.h"
 
 #include <meshoptimizer.h>
 

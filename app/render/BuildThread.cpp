@@ -136,9 +136,11 @@ void BuildThread::stop()
 }
 
 quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                           int warmSamples, const ExplicitBindings &bindings)
+                           int warmSamples, const ExplicitBindings &bindings,
+                           const CourseOptions &course)
 {
-    BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples, bindings};
+    BuildJob request{++m_lastSerial, vertex,   fragment, m_warmUp,
+                     warmSamples,    bindings, course};
     if (!m_worker)
         return request.serial;
     const qint64 queuedAt = monotonicNs();

@@ -41,9 +41,10 @@ public:
     // Queues a build; returns its serial, which the reply carries.
     // `warmSamples`: the sample count of the framebuffer the program will
     // draw into, for the warm-up in the worker's context (setWarmUp).
-    // `bindings`: the scene's explicit ones, which place vertex inputs.
+    // `bindings`: the scene's explicit ones, which place vertex inputs;
+    // `course`: the scene's, what the course's page adds to each stage.
     quint64 build(const ShaderSource &vertex, const ShaderSource &fragment, int warmSamples = 0,
-                  const ExplicitBindings &bindings = {});
+                  const ExplicitBindings &bindings = {}, const CourseOptions &course = {});
     // Frees a program that was built here but will not be used, on the
     // worker thread (where a context of its group is current).
     void release(GlProgram program);

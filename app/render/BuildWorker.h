@@ -18,6 +18,7 @@ struct BuildJob {
     bool warm = true;    // run one draw before handing the program over
     int warmSamples = 0; // ... into a framebuffer with this many samples
     ExplicitBindings bindings; // the scene's: they place the vertex inputs at link time
+    CourseOptions course;      // the scene's: what the course's page adds at compile time
 };
 
 // Where a build's time went, carried to the status bar and the benchmarks.

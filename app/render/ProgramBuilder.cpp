@@ -1,7 +1,9 @@
 #include "ProgramBuilder.h"
 
+#include "core/check/ShaderLint.h"
+
 #include "UniformIntrospection.h"
-#include "core/ShaderDialect.h"
+#include "core/check/ShaderDialect.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -86,11 +88,23 @@ QString ProgramBuilder::infoLog(GLuint object, bool isProgram)
 }
 
 GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
-                                      const QStringList &defines, BuildReport &result)
+                                      const QStringList &defines, const CourseOptions &course,
+                                      BuildReport &result)
 {
     const BuildStep step =
         type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
-    const QByteArray code = withPrologue(source.code, defines);
+    const CoursePrelude prelude = coursePreludeFor(
+        source.code, type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment,
+        course);
+    for (const QString &added : prelude.added) {
+        ShaderDiagnostic d;
+        d.step = step;
+        d.severity = ShaderDiagnostic::Severity::Warning;
+        d.file = source.name;
+        d.message = added;
+        result.diagnostics.push_back(d);
+    }
+    const QByteArray code = withPrologue(source.code, defines, prelude.text);
     const char *text = code.constData();
     const GLint length = GLint(code.size());
 
@@ -105,6 +119,14 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     mapColumnsToSource(diagnostics, source.code);
     pointAtMissingSemicolons(diagnostics, source.code);
     explainDialect(diagnostics, shaderDialectOf(source.code));
+    for (ShaderDiagnostic &d : diagnostics)
+        if (d.isError())
+            d.message = explainUndefinedToken(d.message, course.defines);
+    // What the image cannot show (a value GLSL leaves undefined): a warning
+    // on the student's line, never a verdict.
+    for (const LintFinding &f : lintShader(source.code))
+        diagnostics.push_back({step, ShaderDiagnostic::Severity::Warning, source.name, f.line,
+                               f.column, f.message});
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, step, source.name, log);
@@ -165,7 +187,8 @@ bool ProgramBuilder::placeInputs(GLuint program, const ExplicitBindings &binding
 }
 
 BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSource &fragment,
-                                   const QStringList &defines, const ExplicitBindings &bindings)
+                                   const QStringList &defines, const ExplicitBindings &bindings,
+                                   const CourseOptions &course)
 {
     if (!m_initialized) {
         initializeOpenGLFunctions();
@@ -174,8 +197,8 @@ BuiltProgram ProgramBuilder::build(const ShaderSource &vertex, const ShaderSourc
     BuiltProgram out;
     QElapsedTimer timer;
     timer.start();
-    const GlShader vs = compileStage(GL_VERTEX_SHADER, vertex, defines, out.report);
-    const GlShader fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, out.report);
+    const GlShader vs = compileStage(GL_VERTEX_SHADER, vertex, defines, course, out.report);
+    const GlShader fs = compileStage(GL_FRAGMENT_SHADER, fragment, defines, course, out.report);
     out.compileNs = timer.nsecsElapsed();
     if (!vs || !fs)
         return out;

@@ -2,7 +2,8 @@
 #include "BuildReport.h"
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
-#include "core/ShaderBindings.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderBindings.h"
 
 #include <QOpenGLExtraFunctions>
 
@@ -31,15 +32,17 @@ public:
     // The vertex inputs that mean the position and the normal are placed
     // where the meshes feed them (locations 0 and 1; a shader's own layout
     // qualifiers win): by name as core/ShaderBindings reads them, or by
-    // `bindings`.
+    // `bindings`. Each stage is compiled as the course's page would hand
+    // it over (`course`: core/check/CoursePrelude), on the user's own lines.
     BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment,
-                       const QStringList &defines = {}, const ExplicitBindings &bindings = {});
+                       const QStringList &defines = {}, const ExplicitBindings &bindings = {},
+                       const CourseOptions &course = {});
 
 private:
     bool placeInputs(GLuint program, const ExplicitBindings &bindings, const QString &linkName,
                      BuildReport &result);
     GlShader compileStage(GLenum type, const ShaderSource &source, const QStringList &defines,
-                          BuildReport &result);
+                          const CourseOptions &course, BuildReport &result);
     GlProgram link(const GlShader &vertex, const GlShader &fragment, const QString &linkName,
                    BuildReport &result);
     QString infoLog(GLuint object, bool isProgram);

@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "CourseUniforms.h"
 #include "core/DetailSelection.h"
 #include "core/LightBound.h"
 #include "core/ObjectMatrices.h"
@@ -148,8 +149,10 @@ BuildReport Renderer::buildShipped(ShaderProgram &program, ShadingMethod method)
 
 BuildReport Renderer::setProgramSources(const ShaderSource &vertex, const ShaderSource &fragment)
 {
-    // The scene's word on the inputs' names counts at link time.
+    // The scene's word on the inputs' names counts at link time, its
+    // course's options at compile time.
     m_program.setExplicitBindings(m_scene.bindings);
+    m_program.setCourseOptions(m_scene.course);
     return m_program.build(vertex, fragment);
 }
 
@@ -238,10 +241,12 @@ void Renderer::uploadLights(ShaderProgram &program, std::span<const int> lights)
     // Only the lights given are packed; the light count counts them.
     std::vector<glm::dvec3> position, diffuse, specular, attenuation;
     std::vector<double> c1, c2, c3;
+    m_uploadedLights.clear();
     for (int i : lights) {
         const PointLight &l = m_scene.lights[std::size_t(i)];
         if (int(position.size()) == kMaxLights)
             break;
+        m_uploadedLights.push_back(i);
         position.push_back(l.position); // world coordinates: the shader applies the view
         diffuse.push_back(l.diffuse);
         specular.push_back(l.specular);
@@ -345,6 +350,7 @@ void Renderer::drawObjects(const glm::dmat4 &view, const glm::dmat4 &projection,
         const ObjectMatrices m = ObjectMatrices::make(object.transform.matrix(), view, projection);
         glFrontFace(m.mirrors() ? GL_CW : GL_CCW);
         setObjectUniforms(*program, m, object.material);
+        setCourseUniforms(*program, m_scene, m_uploadedLights, object.material, view);
         if (perFace)
             mesh->drawFaces(level);
         else

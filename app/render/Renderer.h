@@ -134,6 +134,7 @@ private:
     Options m_options;
     Scene m_scene;
     ShaderProgram m_program;
+    std::vector<int> m_uploadedLights; // the scene's lights uploadLights() packed last
     // Shipped programs of the methods objects have of their own ("shading"
     // in an "objects" entry), built on first use.
     std::map<ShadingMethod, ShaderProgram> m_objectPrograms;

@@ -1,6 +1,6 @@
 #include "SceneUniforms.h"
 
-#include "core/UniformOwner.h"
+#include "core/check/UniformOwner.h"
 
 namespace phonglab {
 

@@ -93,7 +93,7 @@ BuildReport ShaderProgram::build(const ShaderSource &vertex, const ShaderSource 
                                  const QStringList &defines)
 {
     ensureInitialized();
-    BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines, m_explicit);
+    BuiltProgram built = ProgramBuilder().build(vertex, fragment, defines, m_explicit, m_course);
     if (built.ok())
         adopt(std::move(built.program));
     return built.report;

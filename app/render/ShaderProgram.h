@@ -3,7 +3,8 @@
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
 #include "UniformSnapshot.h"
-#include "core/ShaderBindings.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderBindings.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>
@@ -62,6 +63,9 @@ public:
     // lookup and nothing else.
     void setExplicitBindings(const ExplicitBindings &bindings);
     const ExplicitBindings &explicitBindings() const { return m_explicit; }
+    // How build() hands the stages to the driver (core/check/CoursePrelude).
+    void setCourseOptions(const CourseOptions &course) { m_course = course; }
+    const CourseOptions &courseOptions() const { return m_course; }
     const ProgramBindings &bindings() const { return m_bindings; }
     void setMatrix(BindingMeaning meaning, const glm::dmat4 &m);
     void setMatrix(BindingMeaning meaning, const glm::dmat3 &m);
@@ -94,7 +98,7 @@ private:
         bool isArray = false;
         int lightIndex = 0;
     };
-    static constexpr std::size_t kMeanings = std::size_t(BindingMeaning::Shininess) + 1;
+    static constexpr std::size_t kMeanings = kBindingMeaningCount;
     const std::vector<BoundUniform> &targets(BindingMeaning meaning) const
     {
         return m_targets[std::size_t(meaning)];
@@ -105,6 +109,7 @@ private:
     bool m_readsFacePoint = false;
     QHash<QByteArray, GLint> m_locations;
     ExplicitBindings m_explicit;
+    CourseOptions m_course;
     ProgramBindings m_bindings;
     std::array<std::vector<BoundUniform>, kMeanings> m_targets;
 };

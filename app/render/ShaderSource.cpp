@@ -1,6 +1,6 @@
 #include "ShaderSource.h"
 
-#include "core/ShaderDialect.h"
+#include "core/check/ShaderDialect.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -74,19 +74,22 @@ int lineDirectiveFor(int nextLine, const QByteArray &versionHead)
 
 } // namespace
 
-QByteArray withPrologue(const QByteArray &code, const QStringList &defines)
+QByteArray withPrologue(const QByteArray &code, const QStringList &defines,
+                        const QByteArray &prelude)
 {
     int versionLine = 0;
     const qsizetype split = endOfVersionLine(code, &versionLine);
     // No #version line: a WebGL 1 shader (core/ShaderDialect.h). GLSL ES
     // 1.00 must say so on its first line in a desktop context.
     const bool addVersion = !hasVersionLine(code);
-    if (defines.isEmpty() && !addVersion)
+    if (defines.isEmpty() && prelude.isEmpty() && !addVersion)
         return code;
     QByteArray head = addVersion ? QByteArray("#version 100\n") : code.left(split);
     if (split > 0 && !head.endsWith('\n'))
         head += '\n';
-    QByteArray prologue;
+    QByteArray prologue = prelude;
+    if (!prologue.isEmpty() && !prologue.endsWith('\n'))
+        prologue += '\n';
     for (const QString &d : defines)
         prologue += "#define " + d.toUtf8() + '\n';
     prologue += "#line " + QByteArray::number(lineDirectiveFor(versionLine + 1, head)) + '\n';

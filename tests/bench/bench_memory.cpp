@@ -18,7 +18,7 @@
 #include "LogLogFit.h"
 #include "ProcessMemory.h"
 #include "ScalingMeshes.h"
-#include "core/MeshBvh.h"
+#include "core/reference/MeshBvh.h"
 #include "headless/HeadlessPlatform.h"
 #include "mesh/DetailLevels.h"
 #include "render/OffscreenRenderer.h"

@@ -6,9 +6,9 @@
 //   build/tests/bench/bench_reference [--size N]
 
 #include "BenchHelpers.h"
-#include "core/AnalyticRaycaster.h"
-#include "core/MeshBvh.h"
-#include "core/MeshRaycaster.h"
+#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshBvh.h"
+#include "core/reference/MeshRaycaster.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "mesh/BuiltinMeshes.h"

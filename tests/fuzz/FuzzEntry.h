@@ -15,7 +15,7 @@
 #include "core/CameraPath.h"
 #include "core/RecoveryJournal.h"
 #include "core/SceneJson.h"
-#include "core/UniformAnnotations.h"
+#include "core/check/UniformAnnotations.h"
 #include "mesh/MeshCache.h"
 #include "mesh/MeshLoader.h"
 #include "render/ShaderDiagnostic.h"

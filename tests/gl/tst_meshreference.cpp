@@ -4,8 +4,8 @@
 // analytic references (RenderCheck.h); deliberately wrong variants must fail
 // the very same comparison.
 #include "RenderCheck.h"
-#include "core/MeshRaycaster.h"
-#include "core/ReferenceEdges.h"
+#include "core/reference/MeshRaycaster.h"
+#include "core/reference/ReferenceEdges.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"

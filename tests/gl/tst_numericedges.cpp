@@ -11,7 +11,7 @@
 // (docs/reliability.md).
 #include "RenderCheck.h"
 #include "TestPaths.h"
-#include "core/PhongReference.h"
+#include "core/reference/PhongReference.h"
 #include "core/SceneJson.h"
 #include "mesh/MeshLoader.h"
 #include "render/GlFormat.h"

@@ -5,7 +5,7 @@
 #include "PhonglabProcess.h"
 #include "RenderCheck.h"
 #include "ResultChecks.h"
-#include "core/PhongReference.h"
+#include "core/reference/PhongReference.h"
 #include "core/ShadingMethod.h"
 #include "mesh/BuiltinMeshes.h"
 #include "render/GlFormat.h"

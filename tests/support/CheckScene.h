@@ -1,6 +1,6 @@
 #pragma once
 #include "core/SceneJson.h"
-#include "core/ShaderCheck.h"
+#include "core/check/ShaderCheck.h"
 #include "mesh/SceneMeshes.h"
 
 #include "TestPaths.h"

@@ -1,6 +1,6 @@
 #include "RenderCheck.h"
 
-#include "core/AnalyticRaycaster.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"

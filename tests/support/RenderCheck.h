@@ -1,5 +1,5 @@
 #pragma once
-#include "core/AnalyticRaycaster.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
 #include "core/MeshData.h"
 #include "core/Scene.h"

@@ -22,6 +22,22 @@ ShaderSource readShipped(const QString &fileName)
 void replace(ShaderSource &source, const char *from, const char *to, const QString &key);
 
 constexpr const char *kLightCam = "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;";
+constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
+constexpr const char *kReflected = "        vec3 R = reflect(-L, N);          // reflect() takes the incident "
+                                   "vector -L\n        float RdotV = max(0.0, dot(R, V));\n";
+constexpr const char *kHalfway =
+    "        vec3 H = normalize(L + V);\n        float RdotV = max(0.0, dot(N, H));\n";
+// The attenuation computed before the N·L guard, so that a term added with
+// it is added for lights behind the surface too.
+constexpr const char *kGuardWithAttenuation =
+    "        if (NdotL <= 0.0)\n            continue;\n";
+constexpr const char *kGuardAfterAttenuation =
+    "        vec3 c0 = attenuation[i];\n"
+    "        float f0 = min(1.0 / (c0.x + c0.y * d + c0.z * d * d), 1.0);\n"
+    "        if (NdotL <= 0.0) {\n"
+    "            I += f0 * Ia * ka;\n"
+    "            continue;\n"
+    "        }\n";
 
 // The mistake's other forms (form 0 is withMistake(key)).
 void makeForm(ShaderPair &s, MistakeVariant v, const QString &name)
@@ -52,6 +68,24 @@ void makeForm(ShaderPair &s, MistakeVariant v, const QString &name)
     } else if (v == MistakeVariant{K::Attenuation, F::Unclamped}) {
         replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);",
                 "float fatt = 1.0 / (c.x + c.y * d + c.z * d * d);", name);
+    } else if (v == MistakeVariant{K::Attenuation, F::InverseSquare}) {
+        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);",
+                "float fatt = 1.0 / (d * d);", name);
+    } else if (v == MistakeVariant{K::Attenuation, F::LearnOpenGl}) {
+        replace(s.fragment, "float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);",
+                "float fatt = 1.0 / (1.0 + 0.09 * d + 0.032 * d * d);", name);
+    } else if (v == MistakeVariant{K::Ambient, F::AmbientAttenuated}) {
+        replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", name);
+        replace(s.fragment, "        float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);\n",
+                "        float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);\n"
+                "        I += fatt * Ia * ka;\n",
+                name);
+        // The ambient term comes before the N·L guard, as a loop body that
+        // starts with it does.
+        replace(s.fragment, kGuardWithAttenuation, kGuardAfterAttenuation, name);
+    } else if (v == MistakeVariant{K::HalfwayVector, F::BlinnExponent}) {
+        replace(s.fragment, kReflected, kHalfway, name);
+        replace(s.fragment, "pow(RdotV, shininess)", "pow(RdotV, 4.0 * shininess)", name);
     } else if (v == MistakeVariant{K::Ambient, F::AmbientPerLight}) {
         replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", name);
         replace(s.fragment, "    for (int i = 0; i < lightCount; ++i) {\n",
@@ -70,8 +104,6 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
         + (source.name.endsWith(QLatin1String(".vert")) ? QStringLiteral(".vert")
                                                         : QStringLiteral(".frag"));
 }
-
-constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
 
 } // namespace
 
@@ -104,14 +136,11 @@ ShaderPair shippedPhong()
     return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};
 }
 
-ShaderPair withMistake(ShaderMistake mistake)
+namespace {
+
+// Form 0 of `mistake`, made in the shipped Phong pair `s`.
+void makeKey(ShaderPair &s, ShaderMistake mistake)
 {
-    if (mistake == ShaderMistake::Gouraud)
-        return {readShipped(QStringLiteral("gouraud.vert")),
-                readShipped(QStringLiteral("gouraud.frag"))};
-    if (mistake == ShaderMistake::PerFace) // the flat shader, once per face
-        return {readShipped(QStringLiteral("flat.vert")), readShipped(QStringLiteral("flat.frag"))};
-    ShaderPair s = shippedPhong();
     const QString key = shaderMistakeKey(mistake);
     switch (mistake) {
     case ShaderMistake::NormalMatrix:
@@ -160,9 +189,43 @@ ShaderPair withMistake(ShaderMistake mistake)
     case ShaderMistake::Ambient:
         replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
         break;
+    case ShaderMistake::HalfwayVector:
+        replace(s.fragment, kReflected, kHalfway, key);
+        break;
     case ShaderMistake::Gouraud:
-    case ShaderMistake::PerFace: break;
+    case ShaderMistake::PerFace: qFatal("%s replaces the whole pair", qPrintable(key));
     }
+}
+
+} // namespace
+
+ShaderPair withMistake(ShaderMistake mistake)
+{
+    if (mistake == ShaderMistake::Gouraud)
+        return {readShipped(QStringLiteral("gouraud.vert")),
+                readShipped(QStringLiteral("gouraud.frag"))};
+    if (mistake == ShaderMistake::PerFace) // the flat shader, once per face
+        return {readShipped(QStringLiteral("flat.vert")), readShipped(QStringLiteral("flat.frag"))};
+    ShaderPair s = shippedPhong();
+    makeKey(s, mistake);
+    return s;
+}
+
+ShaderPair withMistakes(const std::vector<MistakeVariant> &set)
+{
+    ShaderPair s = shippedPhong();
+    QStringList names;
+    for (MistakeVariant v : set) {
+        const QString name =
+            mistakeVariantName(v).replace(QLatin1Char('/'), QLatin1Char('-'));
+        if (v.form == 0)
+            makeKey(s, v.key);
+        else
+            makeForm(s, v, name);
+        names << name;
+    }
+    s.vertex.name = names.join(QLatin1Char('+')) + QStringLiteral(".vert");
+    s.fragment.name = names.join(QLatin1Char('+')) + QStringLiteral(".frag");
     return s;
 }
 

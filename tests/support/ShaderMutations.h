@@ -1,7 +1,9 @@
 #pragma once
-#include "core/PhongEquation.h"
-#include "core/ShaderMistake.h"
+#include "core/reference/PhongEquation.h"
+#include "core/check/ShaderMistake.h"
 #include "render/ShaderSource.h"
+
+#include <vector>
 
 // The shipped Phong shaders (shaders/phong.vert, phong.frag) with one classic
 // mistake made in them, the way a student makes it: what the confusion-matrix
@@ -26,5 +28,8 @@ ShaderPair withMistake(MistakeVariant variant);
 // that are about that guard (negative-light, backface-specular) or that
 // replace the whole shader (gouraud).
 ShaderPair withMistake(MistakeVariant variant, PhongEquation equation);
+// Several mistakes made in one pair, as real code makes them (not gouraud
+// or per-face, which replace the whole pair).
+ShaderPair withMistakes(const std::vector<MistakeVariant> &set);
 
 } // namespace phonglab::test

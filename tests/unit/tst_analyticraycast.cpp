@@ -1,8 +1,8 @@
 // The analytic ray caster: geometry checked against projections worked out by
 // hand, shading checked against phongIntensity() at hand-known points.
 
-#include "core/AnalyticRaycaster.h"
-#include "core/PhongReference.h"
+#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/PhongReference.h"
 
 #include <QtTest>
 #include <cmath>

@@ -3,7 +3,7 @@
 // confidence (reflect-incident and view-vector together: they always give the
 // same image); none is undetectable there; the exact image passes.
 #include "CheckScene.h"
-#include "core/PixelTerms.h"
+#include "core/check/PixelTerms.h"
 
 #include <QTest>
 

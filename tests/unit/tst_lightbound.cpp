@@ -4,7 +4,7 @@
 // is never left out, alone or together with others.
 
 #include "core/LightBound.h"
-#include "core/PhongReference.h"
+#include "core/reference/PhongReference.h"
 
 #include <QRandomGenerator>
 #include <QtTest>

@@ -3,7 +3,7 @@
 
 #include "core/Camera.h"
 #include "core/ObjectMatrices.h"
-#include "core/PhongReference.h"
+#include "core/reference/PhongReference.h"
 #include "core/Transform.h"
 
 #include <QtTest>

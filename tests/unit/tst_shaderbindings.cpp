@@ -2,7 +2,7 @@
 // and type, the user's explicit word, what cannot be bound, how many lights
 // a program takes, and the scene file's "bindings".
 #include "core/SceneJson.h"
-#include "core/ShaderBindings.h"
+#include "core/check/ShaderBindings.h"
 
 #include <QTest>
 
@@ -88,6 +88,30 @@ private slots:
         row("uLight.constant", uniform("uLight.constant", T::Float), "c1");
         row("uMaterial.diffuse", uniform("uMaterial.diffuse", T::Vec3), "kd");
         row("material.shininess", uniform("material.shininess", T::Float), "shininess");
+        // What courses pass: Angel's products, one colour for two terms, the
+        // light already in camera coordinates, structs of every course, ints.
+        row("ambientProduct", uniform("ambientProduct", T::Vec4), "ambient-product");
+        row("diffuseProduct", uniform("diffuseProduct", T::Vec4), "diffuse-product");
+        row("specularProduct[2]", uniform("specularProduct", T::Vec3, 2), "specular-product");
+        row("uAmbientProduct", uniform("uAmbientProduct", T::Vec4), "ambient-product");
+        row("u_lightColor", uniform("u_lightColor", T::Vec3), "light-color");
+        row("light_colors[3]", uniform("light_colors", T::Vec3, 3), "light-color");
+        row("lights[1].color", uniform("lights[1].color", T::Vec3), "light-color");
+        row("pointLights[0].color", uniform("pointLights[0].color", T::Vec3), "light-color");
+        row("material_color", uniform("material_color", T::Vec3), "material-color");
+        row("u_color", uniform("u_color", T::Vec4), "material-color");
+        row("lightPosEye", uniform("lightPosEye", T::Vec4), "light-position-camera");
+        row("u_lightPositionView", uniform("u_lightPositionView", T::Vec3),
+            "light-position-camera");
+        row("u_lightWorldPosition", uniform("u_lightWorldPosition", T::Vec3), "light-position");
+        row("u_viewWorldPosition", uniform("u_viewWorldPosition", T::Vec3), "eye");
+        row("u_LampSet[0].pos", uniform("u_LampSet[0].pos", T::Vec3), "light-position");
+        row("u_LampSet[1].diff", uniform("u_LampSet[1].diff", T::Vec3), "Id");
+        row("u_LampSet[1].spec", uniform("u_LampSet[1].spec", T::Vec3), "Is");
+        row("u_MatlSet[0].ambi", uniform("u_MatlSet[0].ambi", T::Vec3), "ka");
+        row("u_MatlSet[0].shiny", uniform("u_MatlSet[0].shiny", T::Float), "shininess");
+        row("material.shininess as int", uniform("material.shininess", T::Int), "shininess");
+        row("lights[0].quadratic as int", uniform("lights[0].quadratic", T::Int), "c3");
         // The type decides, never the name alone.
         row("uLightPos as mat3", uniform("uLightPos", T::Mat3), "");
         row("n as mat3", uniform("n", T::Mat3), "normal-matrix");
@@ -113,7 +137,7 @@ private slots:
     {
         for (const QString &key : bindingMeaningKeys())
             QCOMPARE(bindingMeaningKey(*bindingMeaningFromKey(key)), key);
-        QCOMPARE(bindingMeaningKeys().size(), int(M::Shininess) + 1);
+        QCOMPARE(bindingMeaningKeys().size(), int(M::LightPositionCamera) + 1);
         QVERIFY(!bindingMeaningFromKey(QStringLiteral("Model")));
     }
 

@@ -1,8 +1,8 @@
 // The classic shader mistakes: their stable keys, and the illumination
 // equation with each pointwise mistake made, against values worked out by
 // hand at points chosen so that the mistake shows.
-#include "core/PhongReference.h"
-#include "core/ShaderMistake.h"
+#include "core/reference/PhongReference.h"
+#include "core/check/ShaderMistake.h"
 
 #include <QTest>
 
@@ -44,7 +44,7 @@ double mistaken(const glm::dvec3 &p, const glm::dvec3 &n, const CameraSpaceLight
                 ShaderMistake mistake, int form = 0)
 {
     return mistakenPhongTerms(p, n, material(), kAmbient, {&light, 1},
-                              MistakeVariant{mistake, form})
+                              std::array{MistakeVariant{mistake, form}})
         .intensity.x;
 }
 
@@ -68,7 +68,7 @@ private slots:
     {
         const QStringList keys{"normal-matrix",     "unnormalized", "light-space", "homogeneous-w",
                                "reflect-incident",  "view-vector",  "attenuation", "negative-light",
-                               "backface-specular", "ambient",      "gouraud",     "per-face"};
+                               "backface-specular", "ambient",      "gouraud",     "per-face", "halfway-vector"};
         QCOMPARE(shaderMistakeKeys(), keys);
         for (const QString &key : keys) {
             const std::optional<ShaderMistake> mistake = shaderMistakeFromKey(key);
@@ -133,7 +133,8 @@ private slots:
         const std::array lights{lightAt(kLitFrom), lightAt(kLitFrom)};
         const double twice =
             mistakenPhongTerms(kFacing, kUp, material(), kAmbient, lights,
-                               MistakeVariant{ShaderMistake::Ambient, MistakeForm::AmbientPerLight})
+                               std::array{MistakeVariant{ShaderMistake::Ambient,
+                                                         MistakeForm::AmbientPerLight}})
                 .intensity.x;
         QCOMPARE(twice, 2.0 * kAmbientPart + 2.0 * (kDiffusePart + kSpecularPart));
         QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient,
@@ -197,6 +198,59 @@ private slots:
         QVERIFY(std::abs(withHighlight - (kAmbientPart + 0.4 * 0.28 * 0.28)) < 1e-12);
         QCOMPARE(mistaken(grazing, kUp, light, ShaderMistake::NegativeLight),
                  kAmbientPart - 0.5 * 0.6);
+    }
+
+    void halfwayVector()
+    {
+        // H = normalize(L + V) = (0.6, 0, 1.8) / |.|: N·H = 0.9487, (N·H)² = 0.9.
+        const CameraSpaceLight light = lightAt(kLitFrom);
+        QVERIFY(std::abs(mistaken(kFacing, kUp, light, ShaderMistake::HalfwayVector)
+                         - (kAmbientPart + kDiffusePart + 0.4 * 0.9))
+                < 1e-12);
+        // With Blinn's 4n: (N·H)^8 = 0.9^4.
+        QVERIFY(std::abs(mistaken(kFacing, kUp, light, ShaderMistake::HalfwayVector,
+                                  MistakeForm::BlinnExponent)
+                         - (kAmbientPart + kDiffusePart + 0.4 * 0.6561))
+                < 1e-12);
+    }
+
+    void hardCodedAttenuationAndAttenuatedAmbient()
+    {
+        const CameraSpaceLight light = lightAt(kLitFrom, {1.0, 0.1, 0.0}); // f_att = 2/3 at d = 5
+        const double lit = kDiffusePart + kSpecularPart;
+        QVERIFY(std::abs(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation,
+                                  MistakeForm::InverseSquare)
+                         - (kAmbientPart + lit / 25.0))
+                < 1e-12);
+        QVERIFY(std::abs(mistaken(kFacing, kUp, light, ShaderMistake::Attenuation,
+                                  MistakeForm::LearnOpenGl)
+                         - (kAmbientPart + lit / (1.0 + 0.45 + 0.8)))
+                < 1e-12);
+        QVERIFY(std::abs(mistaken(kFacing, kUp, light, ShaderMistake::Ambient,
+                                  MistakeForm::AmbientAttenuated)
+                         - (kAmbientPart + lit) * 2.0 / 3.0)
+                < 1e-12);
+    }
+
+    void mistakesCombineAsRealCodeMakesThem()
+    {
+        // N·L unclamped and the specular unguarded, together: the diffuse
+        // term goes negative and the highlight stays.
+        const glm::dvec3 grazing(-4.0, 0.0, -3.0);
+        const CameraSpaceLight below = lightAt({-8.0, 0.0, -6.0});
+        const std::array both{MistakeVariant{ShaderMistake::NegativeLight, 0},
+                              MistakeVariant{ShaderMistake::BackfaceSpecular, 0}};
+        const double value =
+            mistakenPhongTerms(grazing, kUp, material(), kAmbient, {&below, 1}, both).intensity.x;
+        QVERIFY(std::abs(value - (kAmbientPart - 0.5 * 0.6 + 0.4 * 0.28 * 0.28)) < 1e-12);
+        // Blinn's halfway vector and no attenuation.
+        const CameraSpaceLight far = lightAt(kLitFrom, {1.0, 0.1, 0.0});
+        const std::array blinnUnattenuated{MistakeVariant{ShaderMistake::HalfwayVector, 0},
+                                           MistakeVariant{ShaderMistake::Attenuation, 0}};
+        const double blinn = mistakenPhongTerms(kFacing, kUp, material(), kAmbient, {&far, 1},
+                                                blinnUnattenuated)
+                                 .intensity.x;
+        QVERIFY(std::abs(blinn - (kAmbientPart + kDiffusePart + 0.4 * 0.9)) < 1e-12);
     }
 
     void otherMistakesLeaveThePointAlone()

@@ -1,6 +1,6 @@
 #pragma once
 #include "core/Camera.h"
-#include "core/PixelTerms.h"
+#include "core/check/PixelTerms.h"
 
 #include <QImage>
 #include <QWidget>

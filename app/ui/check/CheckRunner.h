@@ -1,6 +1,6 @@
 #pragma once
 #include "core/Scene.h"
-#include "core/ShaderCheck.h"
+#include "core/check/ShaderCheck.h"
 #include "render/FrameRedraw.h"
 
 #include <QElapsedTimer>

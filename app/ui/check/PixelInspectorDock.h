@@ -1,5 +1,5 @@
 #pragma once
-#include "core/PixelTerms.h"
+#include "core/check/PixelTerms.h"
 
 #include <QColor>
 #include <QDockWidget>

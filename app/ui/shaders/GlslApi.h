@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ShaderDialect.h"
+#include "core/check/ShaderDialect.h"
 
 #include <Qsci/qsciabstractapis.h>
 

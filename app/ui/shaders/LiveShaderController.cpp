@@ -311,7 +311,8 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     m_buildHash = hash;
     m_buildSources = {vertex, fragment};
     setState(State::Building);
-    m_buildSerial = m_buildThread->build(vertex, fragment, 0, m_viewport->currentScene().bindings);
+    const Scene &scene = m_viewport->currentScene();
+    m_buildSerial = m_buildThread->build(vertex, fragment, 0, scene.bindings, scene.course);
     m_slowBuildNote->start();
     m_hangNote->start();
 }

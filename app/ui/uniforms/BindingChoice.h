@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ShaderBindings.h"
+#include "core/check/ShaderBindings.h"
 
 #include <QComboBox>
 

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/UniformAnnotations.h"
-#include "core/UniformOwner.h"
+#include "core/check/UniformAnnotations.h"
+#include "core/check/UniformOwner.h"
 #include "render/UniformIntrospection.h"
 #include "render/UniformSnapshot.h"
 

@@ -4,7 +4,7 @@
 #include "LanguageMenu.h"
 #include "MainWindow.h"
 #include "core/Language.h"
-#include "core/ProgramSynopsis.h"
+#include "core/check/ProgramSynopsis.h"
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 #include "ui/viewport/Viewport.h"

@@ -1,0 +1,29 @@
+#include "CourseUniforms.h"
+
+#include <vector>
+
+namespace phonglab {
+
+void setCourseUniforms(ShaderProgram &program, const Scene &scene, std::span<const int> lights,
+                       const Material &material, const glm::dmat4 &view)
+{
+    using M = BindingMeaning;
+    std::vector<glm::dvec3> diffuseProduct, specularProduct, color, cameraPosition;
+    for (int i : lights) {
+        const PointLight &l = scene.lights[std::size_t(i)];
+        diffuseProduct.push_back(l.diffuse * material.kd);
+        specularProduct.push_back(l.specular * material.ks);
+        // Where Id and Is differ no colour is right: bindingConflicts() says
+        // so before anything is judged.
+        color.push_back(l.diffuse);
+        cameraPosition.push_back(glm::dvec3(view * glm::dvec4(l.position, 1.0)));
+    }
+    program.setVector(M::AmbientProduct, scene.ambient * material.ka);
+    program.setVector(M::MaterialColor, material.kd);
+    program.setPerLight(M::DiffuseProduct, diffuseProduct);
+    program.setPerLight(M::SpecularProduct, specularProduct);
+    program.setPerLight(M::LightColor, color);
+    program.setPerLight(M::LightPositionCamera, cameraPosition, 1.0);
+}
+
+} // namespace phonglab
