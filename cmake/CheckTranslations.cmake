@@ -1,5 +1,9 @@
 # unit.translations: every translation is complete and matches the code.
-#   cmake -DLUPDATE=<lupdate> -DSOURCES=<list file> -DWORK=<dir> -P CheckTranslations.cmake <ts>...
+#   cmake -DLUPDATE=<lupdate> -DSOURCES=<list file> -DWORK=<dir> -DINCLUDE=<app dir>
+#         -P CheckTranslations.cmake <ts>...
+# INCLUDE is where "core/..." includes resolve, as for update_translations:
+# lupdate reads the headers a file includes to know the contexts of its
+# tr() calls, and without them names some by their struct instead.
 # Fails when a .ts file has an entry that is unfinished or obsolete, or when
 # lupdate run over the sources now (into a copy) finds a string the .ts
 # lacks (new, so unfinished) or one the code no longer has (vanished). Each
@@ -47,7 +51,12 @@ foreach(i RANGE ${last})
   endif()
   file(MAKE_DIRECTORY "${WORK}")
   configure_file("${ts}" "${WORK}/${name}" COPYONLY)
-  execute_process(COMMAND "${LUPDATE}" -locations none "@${SOURCES}" -ts "${WORK}/${name}"
+  set(include_args "")
+  if(INCLUDE)
+    set(include_args "-I${INCLUDE}")
+  endif()
+  execute_process(COMMAND "${LUPDATE}" -locations none ${include_args} "@${SOURCES}"
+                          -ts "${WORK}/${name}"
                   RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "lupdate failed on ${ts}:\n${log}")

@@ -471,6 +471,17 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
+    <name>phonglab::BindingConflicts</name>
+    <message>
+        <source>%1 is one colour for Id and Is (light-color), but light %2 of the scene has Id = %3 and Is = %4: give the light one colour in the scene, or bind %1 to Id or Is</source>
+        <translation>%1 ist eine Farbe für Id und Is (light-color), aber Lichtquelle %2 der Szene hat Id = %3 und Is = %4: der Lichtquelle in der Szene eine Farbe geben oder %1 an Id oder Is binden</translation>
+    </message>
+    <message>
+        <source>%1 is one colour for ka and kd (material-color), but object %2 of the scene has ka = %3 and kd = %4: give the material one colour in the scene, or bind %1 to ka or kd</source>
+        <translation>%1 ist eine Farbe für ka und kd (material-color), aber Objekt %2 der Szene hat ka = %3 und kd = %4: dem Material in der Szene eine Farbe geben oder %1 an ka oder kd binden</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BuildThread</name>
     <message>
         <source>the viewport has no OpenGL context yet</source>
@@ -595,6 +606,33 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>silhouette band, not judged</source>
         <translation>Silhouettenrand, nicht bewertet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::CoursePrelude</name>
+    <message>
+        <source>expected NAME=VALUE with NAME a GLSL identifier, got &apos;%1&apos;</source>
+        <translation>NAME=VALUE erwartet, mit NAME als GLSL-Bezeichner, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the value must be one line</source>
+        <translation>&apos;%1&apos;: der Wert muss eine Zeile sein</translation>
+    </message>
+    <message>
+        <source>three.js&apos;s ShaderMaterial prelude added (its built-in uniforms and attributes, precision highp), as three.js adds it</source>
+        <translation>Vorspann von three.js&apos; ShaderMaterial hinzugefügt (seine eingebauten Uniform-Variablen und Attribute, precision highp), so wie three.js ihn hinzufügt</translation>
+    </message>
+    <message>
+        <source>no default float precision: judged with &apos;precision highp float;&apos; added, as the page&apos;s JavaScript adds it</source>
+        <translation>keine Standard-Genauigkeit für float: geprüft mit hinzugefügtem &apos;precision highp float;&apos;, so wie das JavaScript der Seite es hinzufügt</translation>
+    </message>
+    <message>
+        <source>%1 judged at highp (32-bit floats), as a desktop browser computes it (--precision as-written for this driver&apos;s own)</source>
+        <translation>%1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet (--precision as-written für die Genauigkeit dieses Treibers)</translation>
+    </message>
+    <message>
+        <source> (%1 is never defined: if the page&apos;s JavaScript replaces it before compiling, give its value with --define %1=VALUE or the scene&apos;s &quot;defines&quot;)</source>
+        <translation> (%1 ist nirgends definiert: Ersetzt das JavaScript der Seite ihn vor dem Kompilieren, seinen Wert mit --define %1=VALUE oder in den &quot;defines&quot; der Szene angeben)</translation>
     </message>
 </context>
 <context>
@@ -2898,6 +2936,18 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <source>: unknown meaning &quot;%1&quot; (known: %2, %3)</source>
         <translation>: unbekannte Bedeutung &quot;%1&quot; (bekannt: %2, %3)</translation>
     </message>
+    <message>
+        <source>: expected an object of NAME: VALUE (got %1)</source>
+        <translation>: Objekt aus Einträgen NAME: VALUE erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected the token&apos;s value, a string or a number (got %1)</source>
+        <translation>: Wert des Platzhalters erwartet, eine Zeichenkette oder eine Zahl (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected &quot;highp&quot; or &quot;as-written&quot; (got %1)</source>
+        <translation>: &quot;highp&quot; oder &quot;as-written&quot; erwartet (erhalten: %1)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::SceneJsonWrite</name>
@@ -2993,6 +3043,14 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source> or </source>
         <translation> oder </translation>
+    </message>
+    <message>
+        <source>✗ %1 — %2 mistakes together: %3</source>
+        <translation>✗ %1 — %2 Fehler zusammen: %3</translation>
+    </message>
+    <message>
+        <source> — %1 mistakes together (%2 %): %3</source>
+        <translation> — %1 Fehler zusammen (%2 %): %3</translation>
     </message>
 </context>
 <context>
@@ -3139,6 +3197,17 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
     </message>
 </context>
 <context>
+    <name>phonglab::ShaderLint</name>
+    <message>
+        <source>the output &apos;%1&apos; is read before it is written: its value is undefined in GLSL (this driver gives 0, another may not)</source>
+        <translation>die Ausgabevariable &apos;%1&apos; wird gelesen, bevor sie geschrieben ist: Ihr Wert ist in GLSL undefiniert (dieser Treiber liefert 0, ein anderer vielleicht nicht)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is read before it is set: its value is undefined in GLSL (this driver gives 0, another may not)</source>
+        <translation>&apos;%1&apos; wird gelesen, bevor ein Wert zugewiesen ist: Ihr Wert ist in GLSL undefiniert (dieser Treiber liefert 0, ein anderer vielleicht nicht)</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::ShaderMistake</name>
     <message>
         <source>the normal N: it must be transformed by the inverse transpose of the model-view matrix, not by the model-view or model matrix, nor by a transpose without the inverse (which bends it under non-uniform scale)</source>
@@ -3271,6 +3340,30 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
     <message>
         <source>lit per fragment with the face&apos;s normal (faceted shading)</source>
         <translation>pro Fragment mit der Normale der Fläche beleuchtet (facettierte Schattierung)</translation>
+    </message>
+    <message>
+        <source>the specular term: Phong&apos;s is max(0, R·V)^n with R = reflect(-L, N); Blinn&apos;s N·H with the halfway vector H = normalize(L + V) gives a wider highlight</source>
+        <translation>der spekulare Anteil: bei Phong max(0, R·V)^n mit R = reflect(-L, N); Blinns N·H mit dem Halbvektor H = normalize(L + V) ergibt ein breiteres Glanzlicht</translation>
+    </message>
+    <message>
+        <source>N·H with the halfway vector in place of R·V</source>
+        <translation>N·H mit dem Halbvektor statt R·V</translation>
+    </message>
+    <message>
+        <source>f_att hard-coded as 1 / d², not the light&apos;s c1, c2, c3</source>
+        <translation>f_att fest als 1 / d² geschrieben statt mit c1, c2, c3 der Lichtquelle</translation>
+    </message>
+    <message>
+        <source>f_att hard-coded as 1 / (1 + 0.09·d + 0.032·d²), not the light&apos;s c1, c2, c3</source>
+        <translation>f_att fest als 1 / (1 + 0,09·d + 0,032·d²) geschrieben statt mit c1, c2, c3 der Lichtquelle</translation>
+    </message>
+    <message>
+        <source>Ia·ka added inside the light loop, scaled by f_att</source>
+        <translation>Ia·ka in der Schleife über die Lichtquellen addiert, mit f_att abgeschwächt</translation>
+    </message>
+    <message>
+        <source>N·H with the halfway vector and the exponent 4n in place of R·V</source>
+        <translation>N·H mit dem Halbvektor und dem Exponenten 4n statt R·V</translation>
     </message>
 </context>
 <context>
@@ -3826,14 +3919,6 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
 <context>
     <name>phonglab::cli::CheckCommand</name>
     <message>
-        <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
-                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                      [--json] [--diff OUT.png]</source>
-        <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
-                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                       [--json] [--diff OUT.png]</translation>
-    </message>
-    <message>
         <source>Show help.</source>
         <translation>Hilfe anzeigen.</translation>
     </message>
@@ -3866,6 +3951,16 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
         <translation>keine Referenz: %1</translation>
     </message>
     <message>
+        <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                      [--define NAME=VALUE ...] [--precision highp|as-written]
+                      [--json] [--diff OUT.png]</source>
+        <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                       [--define NAME=VALUE ...] [--precision highp|as-written]
+                       [--json] [--diff OUT.png]</translation>
+    </message>
+    <message>
         <source>
 
 Renders SCENE.json with the shaders `render` would use, compares the image with the exact
@@ -3879,12 +3974,18 @@ and when it differs names the classic mistake that explains it.
   --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
   --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable. Names are
                       bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
-                      this wins over that. Meanings: %4, or none
+                      this wins over that. Meanings: %4, or none; or a constant the
+                      page sets (--bind mode=1, --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)
+  --define NAME=VALUE a token the page&apos;s JavaScript replaces before compiling (NUM_LIGHTS=2);
+                      repeatable
+  --precision RULE    highp (default): every float judged at 32 bits, as a desktop browser
+                      computes it, and what mediump or lowp would change said apart;
+                      as-written: the declared precision, as this driver computes it
   --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
                       or the guarded one (guarded: none there); by default either passes
   --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
                       tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
-                      notes, warnings) instead of text
+                      notes, warnings, together, precision) instead of text
   --diff OUT.png      write the error heatmap: dark green exact, bright green 1/255, yellow 4/255,
                       red 8/255 or more off; dark blue the silhouette band left out, black the
                       background
@@ -3906,13 +4007,20 @@ und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
   --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
   --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
                       wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
-                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none
+                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none;
+                      oder eine Konstante, die die Seite setzt (--bind mode=1,
+                      --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)
+  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite vor dem Kompilieren ersetzt
+                      (NUM_LIGHTS=2); wiederholbar
+  --precision RULE    highp (Standard): jede Gleitkommazahl mit 32 Bit beurteilt, so wie ein
+                      Desktop-Browser rechnet, und was mediump oder lowp ändern würden, gesondert
+                      genannt; as-written: die deklarierte Genauigkeit, so wie dieser Treiber rechnet
   --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
                       N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
                       besteht beides
   --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
                       bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
-                      equation, notes, warnings)
+                      equation, notes, warnings, together, precision)
   --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, hellgrün 1/255, gelb 4/255,
                       rot ab 8/255 Abweichung; dunkelblau der ausgelassene Silhouettenrand,
                       schwarz der Hintergrund
@@ -4005,6 +4113,34 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>cannot show in this scene: %1</source>
         <translation>in dieser Szene nicht nachweisbar: %1</translation>
+    </message>
+    <message>
+        <source>precision: %1 judged as written, as this driver computes it</source>
+        <translation>Genauigkeit: %1 wie geschrieben beurteilt, so wie dieser Treiber rechnet</translation>
+    </message>
+    <message>
+        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written the program does not build on a driver that honours precision (a browser too): %2</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben lässt sich das Programm auf einem Treiber, der die Genauigkeit einhält (auch in einem Browser), nicht bauen: %2</translation>
+    </message>
+    <message>
+        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet</translation>
+    </message>
+    <message>
+        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written it draws the same image here</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben zeichnet es hier dasselbe Bild</translation>
+    </message>
+    <message>
+        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written, on a driver that computes %1 in fewer bits (this one does), the image changes by up to %2/255 (PSNR %3 dB): not counted against the shader</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben ändert sich das Bild auf einem Treiber, der %1 mit weniger Bits rechnet (wie dieser), um bis zu %2/255 (PSNR %3 dB): wird dem Shader nicht angerechnet</translation>
+    </message>
+    <message>
+        <source>  together: %1 explain %2 % of the difference</source>
+        <translation>  zusammen: %1 erklären %2 % des Unterschieds</translation>
+    </message>
+    <message>
+        <source>  each alone:</source>
+        <translation>  jeder für sich:</translation>
     </message>
 </context>
 <context>
@@ -4114,70 +4250,6 @@ Befehle:
 <context>
     <name>phonglab::cli::GradeCommand</name>
     <message>
-        <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
-                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
-                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]</source>
-        <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
-                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
-                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]</translation>
-    </message>
-    <message>
-        <source>
-
-Checks every submission in SUBMISSIONS against every scene, as `phonglab check` does,
-and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one
-submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,
-.frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes.
-A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check runs in a
-child process of its own: a shader that runs too long or crashes costs that one verdict.
-
-  --scene FILE        a scene to check with; repeatable, at least one
-  --out DIR           where the results go, default ./grades
-  --jobs N            checks at once, default the number of cores (%1)
-  --timeout SECONDS   wall-clock limit of one check, default %2
-  --memory MIB        memory limit of one check, default %3
-  --size WxH          image size in pixels, default 800x600
-  --tolerance STEPS   largest error allowed per channel (0..255), default %4
-  --bind NAME=MEANING what every student&apos;s NAME holds, as in check; repeatable
-  --equation E        demand the slide&apos;s (slide) or the guarded (guarded) equation
-
-Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
-bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json
-(the check&apos;s JSON per row), DIR/report.html and its DIR/images/, and a table on stdout.
-Verdicts: pass, fail, error, timeout, crash.
-
-Exit status: 0 every submission got a verdict, 1 the run could not complete (a scene
-that does not load, no submissions, DIR not writable), 2 wrong arguments.</source>
-        <translation>
-
-Prüft jede Abgabe in SUBMISSIONS mit jeder Szene, wie `phonglab check` es tut, und
-schreibt die Ergebnisse der Studierenden nach DIR. Jeder Unterordner von SUBMISSIONS ist
-eine Abgabe: ihr Vertex- und/oder Fragment-Shader, unter beliebigen Dateinamen (.vert .vs
-.vsh, .frag .fs .fsh; .glsl je nachdem, ob gl_Position geschrieben wird), in jedem Dialekt,
-den `check` annimmt. Für eine fehlende Stufe wird die mitgelieferte des
-Schattierungsverfahrens der Szene verwendet. Jede Prüfung läuft in einem eigenen
-Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses eine Urteil.
-
-  --scene FILE        eine Szene, mit der geprüft wird; wiederholbar, mindestens eine
-  --out DIR           Ordner für die Ergebnisse, Standard ./grades
-  --jobs N            gleichzeitige Prüfungen, Standard die Anzahl der Kerne (%1)
-  --timeout SECONDS   Zeitlimit (Echtzeit) einer Prüfung, Standard %2
-  --memory MIB        Speicherlimit einer Prüfung, Standard %3
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --tolerance STEPS   größter erlaubter Fehler pro Kanal (0..255), Standard %4
-  --bind NAME=MEANING was NAME in jeder Abgabe enthält, wie bei check; wiederholbar
-  --equation E        die Gleichung der Folie (slide) oder die abgesicherte (guarded) verlangen
-
-Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
-bad_fraction, key, also, file, line, equation, bindings, seconds), DIR/grades.json
-(das JSON der Prüfung pro Zeile), DIR/report.html mit DIR/images/ sowie eine Tabelle auf
-stdout.
-Urteile: pass, fail, error, timeout, crash.
-
-Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgeschlossen
-werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
-    </message>
-    <message>
         <source>Show help.</source>
         <translation>Hilfe anzeigen.</translation>
     </message>
@@ -4224,6 +4296,80 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     <message>
         <source>cannot find the phonglab program to run the checks with (set PHONGLAB_EXE)</source>
         <translation>das phonglab-Programm zum Ausführen der Prüfungen wurde nicht gefunden (PHONGLAB_EXE setzen)</translation>
+    </message>
+    <message>
+        <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
+                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
+                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                      [--define NAME=VALUE ...] [--precision highp|as-written]</source>
+        <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
+                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
+                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                       [--define NAME=VALUE ...] [--precision highp|as-written]</translation>
+    </message>
+    <message>
+        <source>
+
+Checks every submission in SUBMISSIONS against every scene, as `phonglab check` does,
+and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one
+submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,
+.frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes.
+A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check runs in a
+child process of its own: a shader that runs too long or crashes costs that one verdict.
+
+  --scene FILE        a scene to check with; repeatable, at least one
+  --out DIR           where the results go, default ./grades
+  --jobs N            checks at once, default the number of cores (%1)
+  --timeout SECONDS   wall-clock limit of one check, default %2
+  --memory MIB        memory limit of one check, default %3
+  --size WxH          image size in pixels, default 800x600
+  --tolerance STEPS   largest error allowed per channel (0..255), default %4
+  --bind NAME=MEANING what every student&apos;s NAME holds (or a constant, NAME=1), as in check;
+                      repeatable
+  --define NAME=VALUE a token the page&apos;s JavaScript replaces, as in check; repeatable
+  --precision RULE    highp (default) or as-written, as in check
+  --equation E        demand the slide&apos;s (slide) or the guarded (guarded) equation
+
+Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
+bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),
+DIR/grades.json (the check&apos;s JSON per row), DIR/report.html and its DIR/images/,
+and a table on stdout.
+Verdicts: pass, fail, error, timeout, crash.
+
+Exit status: 0 every submission got a verdict, 1 the run could not complete (a scene
+that does not load, no submissions, DIR not writable), 2 wrong arguments.</source>
+        <translation>
+
+Prüft jede Abgabe in SUBMISSIONS mit jeder Szene, wie `phonglab check` es tut, und
+schreibt die Ergebnisse der Studierenden nach DIR. Jeder Unterordner von SUBMISSIONS ist
+eine Abgabe: ihr Vertex- und/oder Fragment-Shader, unter beliebigen Dateinamen (.vert .vs
+.vsh, .frag .fs .fsh; .glsl je nachdem, ob gl_Position geschrieben wird), in jedem Dialekt,
+den `check` annimmt. Für eine fehlende Stufe wird die mitgelieferte des
+Schattierungsverfahrens der Szene verwendet. Jede Prüfung läuft in einem eigenen
+Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses eine Urteil.
+
+  --scene FILE        eine Szene, mit der geprüft wird; wiederholbar, mindestens eine
+  --out DIR           Ordner für die Ergebnisse, Standard ./grades
+  --jobs N            gleichzeitige Prüfungen, Standard die Anzahl der Kerne (%1)
+  --timeout SECONDS   Zeitlimit (Echtzeit) einer Prüfung, Standard %2
+  --memory MIB        Speicherlimit einer Prüfung, Standard %3
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal (0..255), Standard %4
+  --bind NAME=MEANING was NAME in jeder Abgabe enthält (oder eine Konstante, NAME=1), wie bei
+                      check; wiederholbar
+  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite ersetzt, wie bei check;
+                      wiederholbar
+  --precision RULE    highp (Standard) oder as-written, wie bei check
+  --equation E        die Gleichung der Folie (slide) oder die abgesicherte (guarded) verlangen
+
+Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
+bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),
+DIR/grades.json (das JSON der Prüfung pro Zeile), DIR/report.html mit DIR/images/ sowie
+eine Tabelle auf stdout.
+Urteile: pass, fail, error, timeout, crash.
+
+Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgeschlossen
+werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
     </message>
 </context>
 <context>
@@ -4323,6 +4469,14 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     <message>
         <source>why, and the command that opens it</source>
         <translation>Begründung und der Befehl, der sie öffnet</translation>
+    </message>
+    <message>
+        <source>%1 mistakes together explain %2 % of the difference:</source>
+        <translation>%1 Fehler zusammen erklären %2 % des Unterschieds:</translation>
+    </message>
+    <message>
+        <source>warning:</source>
+        <translation>Warnung:</translation>
     </message>
 </context>
 <context>
@@ -4520,46 +4674,6 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
         <translation>Schattierungsverfahren statt des Verfahrens der Szene.</translation>
     </message>
     <message>
-        <source>What a uniform or input of the shader holds.</source>
-        <translation>Was eine Uniform-Variable oder Eingabevariable des Shaders enthält.</translation>
-    </message>
-    <message>
-        <source>usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]</source>
-        <translation>Aufruf: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]</translation>
-    </message>
-    <message>
-        <source>
-
-Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.
-
-  -o, --output FILE   the PNG to write (only written when everything succeeded)
-  --size WxH          image size in pixels, default 800x600
-  --shading NAME      shading method instead of the scene&apos;s &quot;shading&quot;; one of
-                      %1
-  --vertex FILE       vertex shader instead of the shading method&apos;s
-  --fragment FILE     fragment shader instead of the shading method&apos;s
-  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable (the
-                      meanings are those of `phonglab check`)
-
-Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.
-Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
-        <translation>
-
-Rendert ein Bild von SCENE.json offscreen (ohne Multisampling) in ein 8-Bit-RGB-PNG.
-
-  -o, --output FILE   das zu schreibende PNG (wird nur geschrieben, wenn alles gelungen ist)
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --shading NAME      Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
-                      %1
-  --vertex FILE       Vertex-Shader anstelle dessen des Schattierungsverfahrens
-  --fragment FILE     Fragment-Shader anstelle dessen des Schattierungsverfahrens
-  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
-                      wiederholbar (die Bedeutungen sind die von `phonglab check`)
-
-Exit-Code: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
-Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
-    </message>
-    <message>
         <source>missing the scene file</source>
         <translation>die Szenendatei fehlt</translation>
     </message>
@@ -4578,6 +4692,61 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>missing -o OUT.png</source>
         <translation>-o OUT.png fehlt</translation>
+    </message>
+    <message>
+        <source>usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]
+                       [--define NAME=VALUE ...] [--precision highp|as-written]</source>
+        <translation>Aufruf: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] [--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]
+                        [--define NAME=VALUE ...] [--precision highp|as-written]</translation>
+    </message>
+    <message>
+        <source>
+
+Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.
+
+  -o, --output FILE   the PNG to write (only written when everything succeeded)
+  --size WxH          image size in pixels, default 800x600
+  --shading NAME      shading method instead of the scene&apos;s &quot;shading&quot;; one of
+                      %1
+  --vertex FILE       vertex shader instead of the shading method&apos;s
+  --fragment FILE     fragment shader instead of the shading method&apos;s
+  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable (the
+                      meanings are those of `phonglab check`), or a constant (NAME=1,0,0)
+  --define NAME=VALUE a token the page&apos;s JavaScript replaces before compiling; repeatable
+  --precision RULE    highp (default: every float at 32 bits, as a desktop browser
+                      computes it) or as-written (the declared precision, as this driver
+                      computes it)
+
+Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.
+Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <translation>
+
+Rendert ein Bild von SCENE.json offscreen (ohne Multisampling) in ein 8-Bit-RGB-PNG.
+
+  -o, --output FILE   das zu schreibende PNG (wird nur geschrieben, wenn alles gelungen ist)
+  --size WxH          Bildgröße in Pixeln, Standard 800x600
+  --shading NAME      Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
+                      %1
+  --vertex FILE       Vertex-Shader anstelle dessen des Schattierungsverfahrens
+  --fragment FILE     Fragment-Shader anstelle dessen des Schattierungsverfahrens
+  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
+                      wiederholbar (die Bedeutungen sind die von `phonglab check`), oder eine
+                      Konstante (NAME=1,0,0)
+  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite vor dem Kompilieren ersetzt;
+                      wiederholbar
+  --precision RULE    highp (Standard: jede Gleitkommazahl mit 32 Bit, so wie ein Desktop-Browser
+                      rechnet) oder as-written (die deklarierte Genauigkeit, so wie dieser Treiber
+                      rechnet)
+
+Exit-Code: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
+Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::SceneOverrides</name>
+    <message>
+        <source>--precision: expected highp or as-written, got &apos;%1&apos;</source>
+        <translation>--precision: highp oder as-written erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
 </context>
 <context>

@@ -96,7 +96,7 @@ QString helpText()
               "bad_fraction,\n"
               "                      tolerance, worst, diagnosis, undetectable, errors, "
               "bindings, equation,\n"
-              "                      notes, warnings) instead of text\n"
+              "                      notes, warnings, together, precision) instead of text\n"
               "  --diff OUT.png      write the error heatmap: dark green exact, bright green "
               "1/255, yellow 4/255,\n"
               "                      red 8/255 or more off; dark blue the silhouette band left "

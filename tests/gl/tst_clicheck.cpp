@@ -51,7 +51,8 @@ QJsonValue scriptView(const QJsonValue &value)
     const QJsonObject o = value.toObject();
     for (auto it = o.begin(); it != o.end(); ++it) {
         const bool sentence = it.key() == QLatin1String("message")
-            || it.key() == QLatin1String("form") || it.key() == QLatin1String("notes");
+            || it.key() == QLatin1String("form") || it.key() == QLatin1String("notes")
+            || it.key() == QLatin1String("forms") || it.key() == QLatin1String("warnings");
         out.insert(it.key(), sentence ? QJsonValue(QStringLiteral("(text)")) : scriptView(*it));
     }
     return out;

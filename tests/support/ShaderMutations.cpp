@@ -80,9 +80,10 @@ void makeForm(ShaderPair &s, MistakeVariant v, const QString &name)
                 "        float fatt = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);\n"
                 "        I += fatt * Ia * ka;\n",
                 name);
-        // The ambient term comes before the N·L guard, as a loop body that
-        // starts with it does.
-        replace(s.fragment, kGuardWithAttenuation, kGuardAfterAttenuation, name);
+        // For the lights behind the surface too, where the guarded
+        // equation skips the rest (the slide's has no guard to skip).
+        if (s.fragment.code.contains(kGuardWithAttenuation))
+            replace(s.fragment, kGuardWithAttenuation, kGuardAfterAttenuation, name);
     } else if (v == MistakeVariant{K::HalfwayVector, F::BlinnExponent}) {
         replace(s.fragment, kReflected, kHalfway, name);
         replace(s.fragment, "pow(RdotV, shininess)", "pow(RdotV, 4.0 * shininess)", name);
@@ -105,38 +106,6 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
                                                         : QStringLiteral(".frag"));
 }
 
-} // namespace
-
-ShaderPair withMistake(MistakeVariant variant)
-{
-    if (variant == MistakeVariant{ShaderMistake::PerFace, MistakeForm::FaceNormalPerFragment})
-        return {readShipped(QStringLiteral("faceted.vert")),
-                readShipped(QStringLiteral("faceted.frag"))};
-    if (variant.form == 0)
-        return withMistake(variant.key);
-    ShaderPair s = shippedPhong();
-    makeForm(s, variant, mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-')));
-    return s;
-}
-
-ShaderPair withMistake(MistakeVariant variant, PhongEquation equation)
-{
-    ShaderPair s = withMistake(variant);
-    if (equation == PhongEquation::Slide) {
-        const QString name = QStringLiteral("slide-")
-            + mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-'));
-        replace(s.fragment, kGuard, "", name);
-        replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", name);
-    }
-    return s;
-}
-
-ShaderPair shippedPhong()
-{
-    return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};
-}
-
-namespace {
 
 // Form 0 of `mistake`, made in the shipped Phong pair `s`.
 void makeKey(ShaderPair &s, ShaderMistake mistake)
@@ -198,6 +167,44 @@ void makeKey(ShaderPair &s, ShaderMistake mistake)
 }
 
 } // namespace
+
+ShaderPair withMistake(MistakeVariant variant)
+{
+    if (variant == MistakeVariant{ShaderMistake::PerFace, MistakeForm::FaceNormalPerFragment})
+        return {readShipped(QStringLiteral("faceted.vert")),
+                readShipped(QStringLiteral("faceted.frag"))};
+    if (variant.form == 0)
+        return withMistake(variant.key);
+    ShaderPair s = shippedPhong();
+    makeForm(s, variant, mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-')));
+    return s;
+}
+
+ShaderPair withMistake(MistakeVariant variant, PhongEquation equation)
+{
+    if (equation != PhongEquation::Slide)
+        return withMistake(variant);
+    // The slide's form first (no guard, the diffuse term clamped), then the
+    // mistake made in it, as a student who writes that form makes it.
+    ShaderPair s = shippedPhong();
+    const QString name = QStringLiteral("slide-")
+        + mistakeVariantName(variant).replace(QLatin1Char('/'), QLatin1Char('-'));
+    replace(s.fragment, kGuard, "", name);
+    replace(s.fragment, "Id[i] * kd * NdotL", "Id[i] * kd * max(0.0, NdotL)", name);
+    if (variant.form == 0)
+        makeKey(s, variant.key);
+    else
+        makeForm(s, variant, name);
+    s.vertex.name = name + QStringLiteral(".vert");
+    s.fragment.name = name + QStringLiteral(".frag");
+    return s;
+}
+
+ShaderPair shippedPhong()
+{
+    return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};
+}
+
 
 ShaderPair withMistake(ShaderMistake mistake)
 {
