@@ -3199,12 +3199,12 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
 <context>
     <name>phonglab::ShaderLint</name>
     <message>
-        <source>the output &apos;%1&apos; is read before it is written: its value is undefined in GLSL (this driver gives 0, another may not)</source>
-        <translation>die Ausgabevariable &apos;%1&apos; wird gelesen, bevor sie geschrieben ist: Ihr Wert ist in GLSL undefiniert (dieser Treiber liefert 0, ein anderer vielleicht nicht)</translation>
+        <source>the output &apos;%1&apos; is read before it is written: its value is undefined in GLSL (drivers differ: some give 0, some keep what was there)</source>
+        <translation>die Ausgabevariable &apos;%1&apos; wird gelesen, bevor sie geschrieben ist: Ihr Wert ist in GLSL undefiniert (Treiber unterscheiden sich: manche liefern 0, manche behalten, was dort stand)</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; is read before it is set: its value is undefined in GLSL (this driver gives 0, another may not)</source>
-        <translation>&apos;%1&apos; wird gelesen, bevor ein Wert zugewiesen ist: Ihr Wert ist in GLSL undefiniert (dieser Treiber liefert 0, ein anderer vielleicht nicht)</translation>
+        <source>&apos;%1&apos; is read before it is set: its value is undefined in GLSL (drivers differ: some give 0, some keep what was there)</source>
+        <translation>&apos;%1&apos; wird gelesen, bevor ein Wert zugewiesen ist: Ihr Wert ist in GLSL undefiniert (Treiber unterscheiden sich: manche liefern 0, manche behalten, was dort stand)</translation>
     </message>
 </context>
 <context>

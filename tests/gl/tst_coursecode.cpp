@@ -10,9 +10,12 @@
 #include "PhonglabProcess.h"
 #include "TestPaths.h"
 
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace phonglab::test;
@@ -21,7 +24,7 @@ namespace {
 
 QString course(const QString &file)
 {
-    return sourcePath(QStringLiteral("tests/data/course/") + file);
+    return QDir::isAbsolutePath(file) ? file : sourcePath(QStringLiteral("tests/data/course/") + file);
 }
 
 struct Check {
@@ -59,6 +62,28 @@ QStringList together(const Check &c)
 QString binding(const Check &c, const QString &name)
 {
     return c.json.value(QStringLiteral("bindings")).toObject().value(name).toString();
+}
+
+QString warningsOf(const Check &c)
+{
+    return c.json.value(QStringLiteral("warnings")).toVariant().toStringList().join(
+        QLatin1Char('\n'));
+}
+
+// `from` (which must occur) replaced by `to` in a copy of `path` at `copy`.
+QString edited(const QString &path, const QString &copy, const char *from, const char *to)
+{
+    QFile in(path);
+    if (!in.open(QIODevice::ReadOnly))
+        qFatal("cannot read %s", qPrintable(path));
+    QByteArray text = in.readAll();
+    if (!text.contains(from))
+        qFatal("%s no longer contains \"%s\"", qPrintable(path), from);
+    text.replace(from, to);
+    QFile out(copy);
+    if (!out.open(QIODevice::WriteOnly) || out.write(text) != text.size())
+        qFatal("cannot write %s", qPrintable(copy));
+    return copy;
 }
 
 QString verdict(const Check &c)
@@ -171,6 +196,44 @@ private slots:
                  qPrintable(message));
         // Line 6 of the student's file declares the array.
         QCOMPARE(error.value(QStringLiteral("line")).toInt(), 6);
+    }
+
+    // What the image cannot be trusted to show: an accumulator and an
+    // output read before they are set, whose value GLSL leaves undefined.
+    // Each is a warning on the student's line, never the verdict (which is
+    // the image's: here Mesa keeps garbage in the accumulator, so it fails).
+    void undefinedReadsAreWarnedNeverJudged()
+    {
+        QTemporaryDir dir;
+        const QString accumulator = edited(
+            course(QStringLiteral("structs/phong.frag")), dir.filePath(QStringLiteral("acc.frag")),
+            "    vec3 result = ambientLight * material.ambient;\n",
+            "    vec3 result;\n    result += ambientLight * material.ambient;\n");
+        const Check c = check(QStringLiteral("structs/phong.vert"), accumulator,
+                              {QStringLiteral("--bind"), QStringLiteral("mode=1")});
+        QVERIFY(verdict(c) == QLatin1String("pass") || verdict(c) == QLatin1String("fail"));
+        QVERIFY2(warningsOf(c).contains(
+                     accumulator + QStringLiteral(":38:5: warning: 'result' is read before it is set")),
+                 qPrintable(warningsOf(c)));
+
+        const QString output = edited(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")),
+                                      dir.filePath(QStringLiteral("out.frag")),
+                                      "    outColor = vec4(I, 1.0);\n",
+                                      "    outColor += vec4(I, 1.0);\n");
+        const Check o = check(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")), output);
+        QVERIFY(verdict(o) == QLatin1String("pass") || verdict(o) == QLatin1String("fail"));
+        QVERIFY2(warningsOf(o).contains(
+                     QStringLiteral("warning: the output 'outColor' is read before it is written")),
+                 qPrintable(warningsOf(o)));
+
+        // The correct files: no such warning.
+        for (const Check &correct :
+             {check(QStringLiteral("structs/phong.vert"), QStringLiteral("structs/phong.frag"),
+                    {QStringLiteral("--bind"), QStringLiteral("mode=1")}),
+              check(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")),
+                    sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")))})
+            QVERIFY2(!warningsOf(correct).contains(QStringLiteral("before it")),
+                     qPrintable(warningsOf(correct)));
     }
 
     // mediump: judged at highp, as a desktop browser computes it; what the

@@ -1,5 +1,6 @@
 // The static lint of students' shaders (core/check/ShaderLint): values GLSL
-// leaves undefined, which Mesa reads as 0, so no image shows them.
+// leaves undefined, which no one image can be trusted to show (a driver may read
+// them as 0).
 #include "core/check/ShaderLint.h"
 
 #include <QTest>

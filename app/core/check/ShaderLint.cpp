@@ -607,9 +607,9 @@ private:
         const QString name = QString::fromUtf8(v.name.data(), qsizetype(v.name.size()));
         const QString message = v.output
             ? ShaderLintWords::tr("the output '%1' is read before it is written: its value is "
-                                  "undefined in GLSL (this driver gives 0, another may not)")
+                                  "undefined in GLSL (drivers differ: some give 0, some keep what was there)")
             : ShaderLintWords::tr("'%1' is read before it is set: its value is undefined in GLSL "
-                                  "(this driver gives 0, another may not)");
+                                  "(drivers differ: some give 0, some keep what was there)");
         using Kind = LintFinding::Kind;
         found.push_back({tok(at).line, tok(at).column, name,
                          v.output ? Kind::OutputReadBeforeWritten : Kind::ReadBeforeSet,

@@ -6,10 +6,12 @@
 
 namespace phonglab {
 
-// Values a shader reads that GLSL leaves undefined, which no picture shows:
-// Mesa reads them as 0, so the image is right here and may be wrong on the
-// student's own browser or GPU. Found by reading the text alone (GLSL ES 1.00,
-// 3.00 and desktop GLSL), in the order a function runs its statements.
+// Values a shader reads that GLSL leaves undefined, which no one picture can
+// be trusted to show: a driver may read them as 0 (the image is then right
+// there and wrong on the student's own browser or GPU) or as whatever was
+// there. Found by reading the text alone (GLSL ES 1.00, 3.00 and desktop
+// GLSL), in the order a function runs its statements; a warning, never a
+// verdict.
 struct LintFinding {
     int line = 0;   // 1-based, in the code as given
     int column = 0; // 1-based, in characters, where the bad read starts
