@@ -2,8 +2,8 @@
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
 #include "core/Language.h"
-#include "core/check/ProgramSynopsis.h"
 #include "core/RuntimeDirectory.h"
+#include "core/check/ProgramSynopsis.h"
 #include "ui/window/GuiMain.h"
 
 int main(int argc, char **argv)

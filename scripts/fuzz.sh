@@ -22,7 +22,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-targets_all=(obj ply off stl om meshcache scene shaderlog uniforms journal camerapath)
+targets_all=(obj ply off stl om meshcache scene shaderlog uniforms journal camerapath coursecode)
 mode=fuzz
 runs=""
 case "${1:-}" in

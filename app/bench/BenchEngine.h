@@ -2,9 +2,9 @@
 #include "BenchOptions.h"
 #include "BenchResult.h"
 #include "ObjectFit.h"
-#include "core/reference/ReferenceImage.h"
 #include "core/Result.h"
 #include "core/Scene.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <QImage>
 #include <QString>

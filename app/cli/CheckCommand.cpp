@@ -136,14 +136,14 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                  CheckCommandWords::tr("Scene file (JSON)."));
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit = parseOrExit(
-            parser, arguments,
-            {help,
-             QList<QCommandLineOption>{size, vertex, fragment, shading, tolerance, json, diff,
-                                       equation, drawOnly}
-                 + overrides.all(),
-             SceneOverrideOptions::repeatable()},
-            synopsis(), helpText()))
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments,
+                        {help,
+                         QList<QCommandLineOption>{size, vertex, fragment, shading, tolerance, json,
+                                                   diff, equation, drawOnly}
+                             + overrides.all(),
+                         SceneOverrideOptions::repeatable()},
+                        synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)

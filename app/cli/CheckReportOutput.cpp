@@ -1,6 +1,6 @@
 #include "CheckReportOutput.h"
-#include "core/check/MistakeSets.h"
 #include "core/Language.h"
+#include "core/check/MistakeSets.h"
 
 #include "SceneStages.h"
 
@@ -164,7 +164,7 @@ QJsonObject precisionJson(const PrecisionFinding &p)
              p.asWrittenError.isEmpty() ? QJsonValue() : QJsonValue(p.asWrittenError));
     o.insert(QStringLiteral("as_written_psnr_db"),
              p.asWrittenMaxError && std::isfinite(p.asWrittenPsnr) ? QJsonValue(p.asWrittenPsnr)
-                                                                  : QJsonValue());
+                                                                   : QJsonValue());
     return o;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/check/MistakeSourceLines.h"
 #include "core/Scene.h"
+#include "core/check/MistakeSourceLines.h"
 #include "core/check/ShaderCheck.h"
 #include "render/ShaderDiagnostic.h"
 

@@ -1,10 +1,10 @@
 #pragma once
 #include "CheckReportOutput.h"
 #include "core/MeshData.h"
-#include "core/reference/PhongEquation.h"
 #include "core/Scene.h"
 #include "core/SceneJson.h"
 #include "core/check/ShaderCheck.h"
+#include "core/reference/PhongEquation.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QImage>

@@ -116,14 +116,13 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit =
-            parseOrExit(parser, arguments,
-                        {help,
-                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size,
-                                                   tolerance, equation}
-                             + overrides.all(),
-                         QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
-                        synopsis(), helpText()))
+    if (const std::optional<int> exit = parseOrExit(
+            parser, arguments,
+            {help,
+             QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size, tolerance, equation}
+                 + overrides.all(),
+             QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
+            synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)

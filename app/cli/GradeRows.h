@@ -3,8 +3,8 @@
 #include "ClassFolder.h"
 #include "SceneOverrides.h"
 #include "core/MeshData.h"
-#include "core/reference/PhongEquation.h"
 #include "core/Scene.h"
+#include "core/reference/PhongEquation.h"
 
 #include <QSize>
 #include <QString>

@@ -34,7 +34,7 @@ struct RenderArgs {
     QString vertexPath;
     QString fragmentPath;
     std::optional<ShadingMethod> shading; // overrides the scene's
-    SceneOverrides overrides; // --bind, --define, --precision over the scene's
+    SceneOverrides overrides;             // --bind, --define, --precision over the scene's
 };
 
 // Returns the arguments, or an exit code for usage errors / --help.

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/check/MistakeSourceLines.h"
 #include "core/Scene.h"
 #include "core/ShadingMethod.h"
+#include "core/check/MistakeSourceLines.h"
 #include "render/BuildReport.h"
 #include "render/Renderer.h"
 

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/reference/ReferenceImage.h"
 #include "RgbImage.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <QPoint>
 #include <QString>

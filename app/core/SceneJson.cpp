@@ -1,9 +1,9 @@
 #include "SceneJson.h"
 
-#include "core/reference/AnalyticShapes.h"
 #include "NearestSpelling.h"
 #include "SceneJsonText.h"
 #include "ScenePaths.h"
+#include "core/reference/AnalyticShapes.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -554,8 +554,8 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
     warnUnknownKeys(root, {},
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
                      "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
-                     "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "defines"_L1, "precision"_L1, "format"_L1,
-                     "generator"_L1});
+                     "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "defines"_L1,
+                     "precision"_L1, "format"_L1, "generator"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readFormat(root.value("format"_L1), QStringLiteral("format"))

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/reference/AnalyticShapes.h"
 #include "core/MeshData.h"
+#include "core/reference/AnalyticShapes.h"
 
 #include <QString>
 #include <optional>

@@ -139,8 +139,7 @@ quint64 BuildThread::build(const ShaderSource &vertex, const ShaderSource &fragm
                            int warmSamples, const ExplicitBindings &bindings,
                            const CourseOptions &course)
 {
-    BuildJob request{++m_lastSerial, vertex,   fragment, m_warmUp,
-                     warmSamples,    bindings, course};
+    BuildJob request{++m_lastSerial, vertex, fragment, m_warmUp, warmSamples, bindings, course};
     if (!m_worker)
         return request.serial;
     const qint64 queuedAt = monotonicNs();

@@ -35,8 +35,8 @@ BuildReply BuildWorker::build(const BuildJob &request)
 {
     BuildReply reply;
     reply.serial = request.serial;
-    BuiltProgram built = m_builder.build(request.vertex, request.fragment, {}, request.bindings,
-                                        request.course);
+    BuiltProgram built =
+        m_builder.build(request.vertex, request.fragment, {}, request.bindings, request.course);
     reply.report = std::move(built.report);
     reply.program = std::move(built.program);
     reply.timings.compileNs = built.compileNs;

@@ -125,8 +125,8 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     // What the image cannot show (a value GLSL leaves undefined): a warning
     // on the student's line, never a verdict.
     for (const LintFinding &f : lintShader(source.code))
-        diagnostics.push_back({step, ShaderDiagnostic::Severity::Warning, source.name, f.line,
-                               f.column, f.message});
+        diagnostics.push_back(
+            {step, ShaderDiagnostic::Severity::Warning, source.name, f.line, f.column, f.message});
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, step, source.name, log);

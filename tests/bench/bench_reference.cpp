@@ -6,11 +6,11 @@
 //   build/tests/bench/bench_reference [--size N]
 
 #include "BenchHelpers.h"
+#include "core/ResourcePaths.h"
+#include "core/SceneJson.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/SceneMeshes.h"
 

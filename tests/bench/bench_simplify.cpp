@@ -13,9 +13,9 @@
 // per mille of the bounding-box diagonal. Neither moves a vertex, so the
 // simplified surface's own vertices lie on the original exactly.
 #include "BenchHelpers.h"
-#include "core/reference/MeshBvh.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
+#include "core/reference/MeshBvh.h"
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/MeshDecimation.h"
 #include "mesh/SceneMeshes.h"

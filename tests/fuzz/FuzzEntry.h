@@ -15,6 +15,8 @@
 #include "core/CameraPath.h"
 #include "core/RecoveryJournal.h"
 #include "core/SceneJson.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderLint.h"
 #include "core/check/UniformAnnotations.h"
 #include "mesh/MeshCache.h"
 #include "mesh/MeshLoader.h"
@@ -48,9 +50,9 @@ struct Outcome {
 // and tests/data/fuzz/<name>.
 inline const QStringList &targetNames()
 {
-    static const QStringList names{"obj",      "ply",       "off",       "stl",
-                                   "om",       "meshcache", "scene",     "shaderlog",
-                                   "uniforms", "journal",   "camerapath"};
+    static const QStringList names{"obj",      "ply",       "off",        "stl",
+                                   "om",       "meshcache", "scene",      "shaderlog",
+                                   "uniforms", "journal",   "camerapath", "coursecode"};
     return names;
 }
 
@@ -188,6 +190,34 @@ inline Outcome runShaderLog(const QByteArray &bytes)
     return {true, {}};
 }
 
+// A student's shader text as the course's page hands it over: the lint of
+// what the image cannot show, the page's prelude (precision, three.js,
+// defines) and the words on an undefined token. The first byte picks the
+// stage and the precision rule; the rest is the text.
+inline Outcome runCourseCode(const QByteArray &bytes)
+{
+    const unsigned char head = bytes.isEmpty() ? 0 : static_cast<unsigned char>(bytes[0]);
+    const QByteArray code = bytes.mid(1);
+    for (const LintFinding &f : lintShader(code)) {
+        if (f.line < 1 || f.column < 1 || f.variable.isEmpty() || f.message.isEmpty())
+            brokenPromise("coursecode", "a finding without a place, a name or a message");
+        if (f.line > code.count('\n') + 1)
+            brokenPromise("coursecode", "a finding past the last line");
+    }
+    CourseOptions options;
+    options.precision = head & 1 ? PrecisionRule::AsWritten : PrecisionRule::Highp;
+    options.defines[QStringLiteral("NUM_LIGHTS")] = QStringLiteral("2");
+    const CoursePrelude prelude =
+        coursePreludeFor(code, head & 2 ? ShaderStage::Fragment : ShaderStage::Vertex, options);
+    // The prelude goes before #line: a line of its own may not break one.
+    if (!prelude.text.isEmpty() && !prelude.text.endsWith('\n'))
+        brokenPromise("coursecode", "a prelude that does not end its last line");
+    const QString message = QString::fromUtf8(code.left(200));
+    if (!explainUndefinedToken(message, options.defines).startsWith(message))
+        brokenPromise("coursecode", "an explanation that changed the compiler's words");
+    return {true, {}};
+}
+
 // Shader text with uniform declarations and their // @range ... comments.
 inline Outcome runUniforms(const QByteArray &bytes)
 {
@@ -250,6 +280,8 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
         return runJournal(bytes);
     if (target == "camerapath")
         return runCameraPath(bytes);
+    if (target == "coursecode")
+        return runCourseCode(bytes);
     std::fprintf(stderr, "phonglab fuzz: unknown target %.*s\n", int(target.size()), target.data());
     std::abort();
 }

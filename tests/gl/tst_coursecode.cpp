@@ -24,7 +24,8 @@ namespace {
 
 QString course(const QString &file)
 {
-    return QDir::isAbsolutePath(file) ? file : sourcePath(QStringLiteral("tests/data/course/") + file);
+    return QDir::isAbsolutePath(file) ? file
+                                      : sourcePath(QStringLiteral("tests/data/course/") + file);
 }
 
 struct Check {
@@ -53,8 +54,10 @@ QString said(const Check &c)
 QStringList together(const Check &c)
 {
     QStringList keys;
-    for (const QJsonValue &k :
-         c.json.value(QStringLiteral("together")).toObject().value(QStringLiteral("keys")).toArray())
+    for (const QJsonValue &k : c.json.value(QStringLiteral("together"))
+                                   .toObject()
+                                   .value(QStringLiteral("keys"))
+                                   .toArray())
         keys << k.toString();
     return keys;
 }
@@ -66,8 +69,10 @@ QString binding(const Check &c, const QString &name)
 
 QString warningsOf(const Check &c)
 {
-    return c.json.value(QStringLiteral("warnings")).toVariant().toStringList().join(
-        QLatin1Char('\n'));
+    return c.json.value(QStringLiteral("warnings"))
+        .toVariant()
+        .toStringList()
+        .join(QLatin1Char('\n'));
 }
 
 // `from` (which must occur) replaced by `to` in a copy of `path` at `copy`.
@@ -102,15 +107,14 @@ private slots:
     // by --bind (the name says nothing of its coordinates).
     void angelProductsWithAVec4Light()
     {
-        const Check c = check(QStringLiteral("angel/phong.vert"), QStringLiteral("angel/phong.frag"),
-                              {QStringLiteral("--bind"),
-                               QStringLiteral("lightPosition=light-position-camera")});
+        const Check c = check(
+            QStringLiteral("angel/phong.vert"), QStringLiteral("angel/phong.frag"),
+            {QStringLiteral("--bind"), QStringLiteral("lightPosition=light-position-camera")});
         QVERIFY2(c.run.exitCode == 0, qPrintable(said(c)));
         QCOMPARE(verdict(c), QStringLiteral("pass"));
         QCOMPARE(binding(c, QStringLiteral("ambientProduct")), QStringLiteral("ambient-product"));
         QCOMPARE(binding(c, QStringLiteral("diffuseProduct")), QStringLiteral("diffuse-product"));
-        QCOMPARE(binding(c, QStringLiteral("specularProduct")),
-                 QStringLiteral("specular-product"));
+        QCOMPARE(binding(c, QStringLiteral("specularProduct")), QStringLiteral("specular-product"));
         QCOMPARE(binding(c, QStringLiteral("lightPosition")),
                  QStringLiteral("light-position-camera"));
         // Taken for a world position, the same light is in the wrong place.
@@ -123,12 +127,12 @@ private slots:
     // both named.
     void angelBlinnIsNamedInFull()
     {
-        const Check c = check(QStringLiteral("angel/phong.vert"), QStringLiteral("angel/blinn.frag"),
-                              {QStringLiteral("--bind"),
-                               QStringLiteral("lightPosition=light-position-camera")});
+        const Check c = check(
+            QStringLiteral("angel/phong.vert"), QStringLiteral("angel/blinn.frag"),
+            {QStringLiteral("--bind"), QStringLiteral("lightPosition=light-position-camera")});
         QCOMPARE(verdict(c), QStringLiteral("fail"));
-        QCOMPARE(together(c), (QStringList{QStringLiteral("attenuation"),
-                                           QStringLiteral("halfway-vector")}));
+        QCOMPARE(together(c),
+                 (QStringList{QStringLiteral("attenuation"), QStringLiteral("halfway-vector")}));
     }
 
     // World space, Blinn, no ambient, no attenuation: three deviations at
@@ -136,27 +140,28 @@ private slots:
     // times a ks of 1: the teacher binds it to the product.
     void webglFundamentalsWorldSpaceBlinn()
     {
-        const Check c = check(QStringLiteral("webglfundamentals/point-light.vert"),
-                              QStringLiteral("webglfundamentals/point-light.frag"),
-                              {QStringLiteral("--bind"),
-                               QStringLiteral("u_specularColor=specular-product")});
+        const Check c =
+            check(QStringLiteral("webglfundamentals/point-light.vert"),
+                  QStringLiteral("webglfundamentals/point-light.frag"),
+                  {QStringLiteral("--bind"), QStringLiteral("u_specularColor=specular-product")});
         QCOMPARE(verdict(c), QStringLiteral("fail"));
         QCOMPARE(binding(c, QStringLiteral("u_lightWorldPosition")),
                  QStringLiteral("light-position"));
         QCOMPARE(binding(c, QStringLiteral("u_viewWorldPosition")), QStringLiteral("eye"));
         QCOMPARE(binding(c, QStringLiteral("u_color")), QStringLiteral("material-color"));
         QCOMPARE(binding(c, QStringLiteral("u_lightColor")), QStringLiteral("light-color"));
-        QCOMPARE(together(c), (QStringList{QStringLiteral("attenuation"), QStringLiteral("ambient"),
-                                           QStringLiteral("halfway-vector")}));
+        QCOMPARE(together(c),
+                 (QStringList{QStringLiteral("attenuation"), QStringLiteral("ambient"),
+                              QStringLiteral("halfway-vector")}));
     }
 
     // Structs and an array of structs, bound member by member; the page's
     // mode switch given as a constant.
     void structsAndAModeSwitch()
     {
-        const Check c = check(QStringLiteral("structs/phong.vert"),
-                              QStringLiteral("structs/phong.frag"),
-                              {QStringLiteral("--bind"), QStringLiteral("mode=1")});
+        const Check c =
+            check(QStringLiteral("structs/phong.vert"), QStringLiteral("structs/phong.frag"),
+                  {QStringLiteral("--bind"), QStringLiteral("mode=1")});
         QVERIFY2(c.run.exitCode == 0, qPrintable(said(c)));
         QCOMPARE(verdict(c), QStringLiteral("pass"));
         QCOMPARE(binding(c, QStringLiteral("lights[1].color")), QStringLiteral("light-color"));
@@ -173,9 +178,9 @@ private slots:
     // own file in every message.
     void threeJsShaderMaterial()
     {
-        const Check c = check(QStringLiteral("threejs/phong.vert"),
-                              QStringLiteral("threejs/phong.frag"),
-                              {QStringLiteral("--define"), QStringLiteral("NUM_LIGHTS=2")});
+        const Check c =
+            check(QStringLiteral("threejs/phong.vert"), QStringLiteral("threejs/phong.frag"),
+                  {QStringLiteral("--define"), QStringLiteral("NUM_LIGHTS=2")});
         QVERIFY2(c.run.exitCode == 0, qPrintable(said(c)));
         QCOMPARE(verdict(c), QStringLiteral("pass"));
         const QJsonArray warnings = c.json.value(QStringLiteral("warnings")).toArray();
@@ -212,15 +217,17 @@ private slots:
         const Check c = check(QStringLiteral("structs/phong.vert"), accumulator,
                               {QStringLiteral("--bind"), QStringLiteral("mode=1")});
         QVERIFY(verdict(c) == QLatin1String("pass") || verdict(c) == QLatin1String("fail"));
-        QVERIFY2(warningsOf(c).contains(
-                     accumulator + QStringLiteral(":38:5: warning: 'result' is read before it is set")),
-                 qPrintable(warningsOf(c)));
+        QVERIFY2(
+            warningsOf(c).contains(
+                accumulator + QStringLiteral(":38:5: warning: 'result' is read before it is set")),
+            qPrintable(warningsOf(c)));
 
-        const QString output = edited(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")),
-                                      dir.filePath(QStringLiteral("out.frag")),
-                                      "    outColor = vec4(I, 1.0);\n",
-                                      "    outColor += vec4(I, 1.0);\n");
-        const Check o = check(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")), output);
+        const QString output =
+            edited(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")),
+                   dir.filePath(QStringLiteral("out.frag")), "    outColor = vec4(I, 1.0);\n",
+                   "    outColor += vec4(I, 1.0);\n");
+        const Check o =
+            check(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")), output);
         QVERIFY(verdict(o) == QLatin1String("pass") || verdict(o) == QLatin1String("fail"));
         QVERIFY2(warningsOf(o).contains(
                      QStringLiteral("warning: the output 'outColor' is read before it is written")),
@@ -240,8 +247,8 @@ private slots:
     // declared precision changes on this driver said apart.
     void mediumpIsJudgedAsTheBrowserRunsIt()
     {
-        const Check c = check(QStringLiteral("mediump/phong.vert"),
-                              QStringLiteral("mediump/phong.frag"));
+        const Check c =
+            check(QStringLiteral("mediump/phong.vert"), QStringLiteral("mediump/phong.frag"));
         QVERIFY2(c.run.exitCode == 0, qPrintable(said(c)));
         QCOMPARE(verdict(c), QStringLiteral("pass"));
         const QJsonObject precision = c.json.value(QStringLiteral("precision")).toObject();

@@ -25,10 +25,9 @@ using namespace phonglab::test;
 
 namespace {
 
-const std::vector<ShaderMistake> kDeviations{ShaderMistake::HalfwayVector,
-                                             ShaderMistake::Attenuation, ShaderMistake::Ambient,
-                                             ShaderMistake::LightSpace,
-                                             ShaderMistake::BackfaceSpecular};
+const std::vector<ShaderMistake> kDeviations{
+    ShaderMistake::HalfwayVector, ShaderMistake::Attenuation, ShaderMistake::Ambient,
+    ShaderMistake::LightSpace, ShaderMistake::BackfaceSpecular};
 
 // Every subset of `kDeviations` of `size`, in order.
 std::vector<std::vector<MistakeVariant>> subsets(int size)
@@ -121,8 +120,8 @@ private slots:
                     if (!within({m}, shown)
                         && !(m.key == ShaderMistake::BackfaceSpecular
                              && within({{ShaderMistake::LightSpace, 0}}, made)))
-                        failures << keysOf(made) + QStringLiteral(": %1 hidden")
-                                                       .arg(shaderMistakeKey(m.key));
+                        failures << keysOf(made)
+                                + QStringLiteral(": %1 hidden").arg(shaderMistakeKey(m.key));
             }
         }
         qInfo("mistakes made together on assets/scenes/check.json, %dx%d:\n%s", kCheckWidth,
@@ -164,10 +163,9 @@ private:
 
     CheckReport judge(const std::vector<MistakeVariant> &made)
     {
-        const bool guardDemanded =
-            std::any_of(made.begin(), made.end(), [](MistakeVariant v) {
-                return v.key == ShaderMistake::BackfaceSpecular;
-            });
+        const bool guardDemanded = std::any_of(made.begin(), made.end(), [](MistakeVariant v) {
+            return v.key == ShaderMistake::BackfaceSpecular;
+        });
         return checkRender(judgedImage(withMistakes(made)), m_reference,
                            kDefaultCheckToleranceSteps,
                            guardDemanded ? std::optional(PhongEquation::Guarded) : std::nullopt);

@@ -11,8 +11,8 @@
 // (docs/reliability.md).
 #include "RenderCheck.h"
 #include "TestPaths.h"
-#include "core/reference/PhongReference.h"
 #include "core/SceneJson.h"
+#include "core/reference/PhongReference.h"
 #include "mesh/MeshLoader.h"
 #include "render/GlFormat.h"
 

@@ -1,8 +1,8 @@
 #include "RenderCheck.h"
 
-#include "core/reference/AnalyticRaycaster.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"

@@ -1,8 +1,8 @@
 #pragma once
-#include "core/reference/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
 #include "core/MeshData.h"
 #include "core/Scene.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "render/BuildReport.h"
 #include "render/ShaderSource.h"
 

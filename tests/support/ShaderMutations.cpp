@@ -23,14 +23,14 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
 
 constexpr const char *kLightCam = "vec3 lightCam = (viewMatrix * vec4(lightPosition[i], 1.0)).xyz;";
 constexpr const char *kGuard = "        if (NdotL <= 0.0)\n            continue;\n";
-constexpr const char *kReflected = "        vec3 R = reflect(-L, N);          // reflect() takes the incident "
-                                   "vector -L\n        float RdotV = max(0.0, dot(R, V));\n";
+constexpr const char *kReflected =
+    "        vec3 R = reflect(-L, N);          // reflect() takes the incident "
+    "vector -L\n        float RdotV = max(0.0, dot(R, V));\n";
 constexpr const char *kHalfway =
     "        vec3 H = normalize(L + V);\n        float RdotV = max(0.0, dot(N, H));\n";
 // The attenuation computed before the N·L guard, so that a term added with
 // it is added for lights behind the surface too.
-constexpr const char *kGuardWithAttenuation =
-    "        if (NdotL <= 0.0)\n            continue;\n";
+constexpr const char *kGuardWithAttenuation = "        if (NdotL <= 0.0)\n            continue;\n";
 constexpr const char *kGuardAfterAttenuation =
     "        vec3 c0 = attenuation[i];\n"
     "        float f0 = min(1.0 / (c0.x + c0.y * d + c0.z * d * d), 1.0);\n"
@@ -106,7 +106,6 @@ void replace(ShaderSource &source, const char *from, const char *to, const QStri
                                                         : QStringLiteral(".frag"));
 }
 
-
 // Form 0 of `mistake`, made in the shipped Phong pair `s`.
 void makeKey(ShaderPair &s, ShaderMistake mistake)
 {
@@ -158,9 +157,7 @@ void makeKey(ShaderPair &s, ShaderMistake mistake)
     case ShaderMistake::Ambient:
         replace(s.fragment, "vec3 I = Ia * ka;", "vec3 I = vec3(0.0);", key);
         break;
-    case ShaderMistake::HalfwayVector:
-        replace(s.fragment, kReflected, kHalfway, key);
-        break;
+    case ShaderMistake::HalfwayVector: replace(s.fragment, kReflected, kHalfway, key); break;
     case ShaderMistake::Gouraud:
     case ShaderMistake::PerFace: qFatal("%s replaces the whole pair", qPrintable(key));
     }
@@ -205,7 +202,6 @@ ShaderPair shippedPhong()
     return {readShipped(QStringLiteral("phong.vert")), readShipped(QStringLiteral("phong.frag"))};
 }
 
-
 ShaderPair withMistake(ShaderMistake mistake)
 {
     if (mistake == ShaderMistake::Gouraud)
@@ -223,8 +219,7 @@ ShaderPair withMistakes(const std::vector<MistakeVariant> &set)
     ShaderPair s = shippedPhong();
     QStringList names;
     for (MistakeVariant v : set) {
-        const QString name =
-            mistakeVariantName(v).replace(QLatin1Char('/'), QLatin1Char('-'));
+        const QString name = mistakeVariantName(v).replace(QLatin1Char('/'), QLatin1Char('-'));
         if (v.form == 0)
             makeKey(s, v.key);
         else

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/reference/PhongEquation.h"
 #include "core/check/ShaderMistake.h"
+#include "core/reference/PhongEquation.h"
 #include "render/ShaderSource.h"
 
 #include <vector>

@@ -1,11 +1,11 @@
 // The mesh reference: the BVH against a brute-force loop over every triangle,
 // the mesh ray caster against the analytic one on a finely tessellated sphere,
 // the specular channel, bad input, and the time a default-scene frame takes.
-#include "core/reference/AnalyticRaycaster.h"
 #include "core/ImageMetrics.h"
+#include "core/SceneJson.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
-#include "core/SceneJson.h"
 #include "mesh/BuiltinMeshes.h"
 #include "mesh/MeshLoader.h"
 #include "mesh/SceneMeshes.h"

@@ -4,8 +4,8 @@
 // image has no finding; noise is unexplained; a mistake the scene cannot
 // show is listed as undetectable.
 #include "MistakeScenes.h"
-#include "core/reference/AnalyticRaycaster.h"
 #include "core/check/MistakeDiagnosis.h"
+#include "core/reference/AnalyticRaycaster.h"
 
 #include <QRandomGenerator>
 #include <QTest>

@@ -67,14 +67,12 @@ private slots:
             << std::vector<MistakeVariant>{{K::Attenuation, 0}, {K::HalfwayVector, 0}};
         QTest::newRow("ambient + halfway-vector")
             << std::vector<MistakeVariant>{{K::Ambient, 0}, {K::HalfwayVector, 0}};
-        QTest::newRow("attenuation + ambient + halfway-vector")
-            << std::vector<MistakeVariant>{
-                   {K::Attenuation, 0}, {K::Ambient, 0}, {K::HalfwayVector, 0}};
+        QTest::newRow("attenuation + ambient + halfway-vector") << std::vector<MistakeVariant>{
+            {K::Attenuation, 0}, {K::Ambient, 0}, {K::HalfwayVector, 0}};
         QTest::newRow("negative-light + backface-specular")
             << std::vector<MistakeVariant>{{K::NegativeLight, 0}, {K::BackfaceSpecular, 0}};
-        QTest::newRow("light-space + ambient per light")
-            << std::vector<MistakeVariant>{{K::LightSpace, 0},
-                                           {K::Ambient, MistakeForm::AmbientPerLight}};
+        QTest::newRow("light-space + ambient per light") << std::vector<MistakeVariant>{
+            {K::LightSpace, 0}, {K::Ambient, MistakeForm::AmbientPerLight}};
     }
 
     void severalMistakesAreNamedTogether()
@@ -105,8 +103,7 @@ private slots:
         for (std::uint8_t &b : yours.bytes)
             b = std::uint8_t(random.bounded(256));
         const Search found = search(s, yours);
-        QVERIFY2(found.set.explains < kExplainedConfidence,
-                 qPrintable(mistakeSetName(found.set)));
+        QVERIFY2(found.set.explains < kExplainedConfidence, qPrintable(mistakeSetName(found.set)));
         QVERIFY(int(found.set.variants.size()) <= kMaxMistakesTogether);
     }
 };

@@ -3,8 +3,8 @@
 
 #include "core/Camera.h"
 #include "core/ObjectMatrices.h"
-#include "core/reference/PhongReference.h"
 #include "core/Transform.h"
+#include "core/reference/PhongReference.h"
 
 #include <QtTest>
 #include <cmath>

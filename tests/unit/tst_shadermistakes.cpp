@@ -1,8 +1,8 @@
 // The classic shader mistakes: their stable keys, and the illumination
 // equation with each pointwise mistake made, against values worked out by
 // hand at points chosen so that the mistake shows.
-#include "core/reference/PhongReference.h"
 #include "core/check/ShaderMistake.h"
+#include "core/reference/PhongReference.h"
 
 #include <QTest>
 
@@ -68,7 +68,8 @@ private slots:
     {
         const QStringList keys{"normal-matrix",     "unnormalized", "light-space", "homogeneous-w",
                                "reflect-incident",  "view-vector",  "attenuation", "negative-light",
-                               "backface-specular", "ambient",      "gouraud",     "per-face", "halfway-vector"};
+                               "backface-specular", "ambient",      "gouraud",     "per-face",
+                               "halfway-vector"};
         QCOMPARE(shaderMistakeKeys(), keys);
         for (const QString &key : keys) {
             const std::optional<ShaderMistake> mistake = shaderMistakeFromKey(key);
@@ -132,9 +133,9 @@ private slots:
     {
         const std::array lights{lightAt(kLitFrom), lightAt(kLitFrom)};
         const double twice =
-            mistakenPhongTerms(kFacing, kUp, material(), kAmbient, lights,
-                               std::array{MistakeVariant{ShaderMistake::Ambient,
-                                                         MistakeForm::AmbientPerLight}})
+            mistakenPhongTerms(
+                kFacing, kUp, material(), kAmbient, lights,
+                std::array{MistakeVariant{ShaderMistake::Ambient, MistakeForm::AmbientPerLight}})
                 .intensity.x;
         QCOMPARE(twice, 2.0 * kAmbientPart + 2.0 * (kDiffusePart + kSpecularPart));
         QCOMPARE(mistaken(kFacing, kUp, lightAt(kLitFrom), ShaderMistake::Ambient,
@@ -247,9 +248,9 @@ private slots:
         const CameraSpaceLight far = lightAt(kLitFrom, {1.0, 0.1, 0.0});
         const std::array blinnUnattenuated{MistakeVariant{ShaderMistake::HalfwayVector, 0},
                                            MistakeVariant{ShaderMistake::Attenuation, 0}};
-        const double blinn = mistakenPhongTerms(kFacing, kUp, material(), kAmbient, {&far, 1},
-                                                blinnUnattenuated)
-                                 .intensity.x;
+        const double blinn =
+            mistakenPhongTerms(kFacing, kUp, material(), kAmbient, {&far, 1}, blinnUnattenuated)
+                .intensity.x;
         QVERIFY(std::abs(blinn - (kAmbientPart + kDiffusePart + 0.4 * 0.9)) < 1e-12);
     }
 

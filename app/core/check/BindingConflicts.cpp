@@ -24,8 +24,8 @@ QStringList bindingConflicts(const ProgramBindings &bindings, const Scene &scene
     for (const VariableBinding *b : bindings.bound(BindingMeaning::LightColor)) {
         int light = 0;
         for (const PointLight &l : scene.lights) {
-            const bool held = b->variable.isArray ? light < b->variable.arraySize
-                                                  : light == b->lightIndex;
+            const bool held =
+                b->variable.isArray ? light < b->variable.arraySize : light == b->lightIndex;
             if (l.enabled && held && l.diffuse != l.specular)
                 out << BindingConflictsWords::tr(
                            "%1 is one colour for Id and Is (light-color), but light %2 of the "

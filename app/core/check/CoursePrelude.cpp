@@ -140,7 +140,8 @@ QByteArray threeJsDeclarations(const QString &code, ShaderStage stage)
 
 const QRegularExpression &defaultFloatPrecision()
 {
-    static const QRegularExpression re(QStringLiteral(R"(\bprecision\s+(lowp|mediump|highp)\s+float\s*;)"));
+    static const QRegularExpression re(
+        QStringLiteral(R"(\bprecision\s+(lowp|mediump|highp)\s+float\s*;)"));
     return re;
 }
 
@@ -189,8 +190,8 @@ CoursePrelude coursePreludeFor(const QByteArray &code, ShaderStage stage,
 
 QString explainUndefinedToken(const QString &message, const PageDefines &defines)
 {
-    static const QRegularExpression undefined(
-        QStringLiteral(R"((?:undefined macro\s+|[`'"‘])([A-Z][A-Z0-9_]+)(?:['"’]?\s+undeclared)?)"));
+    static const QRegularExpression undefined(QStringLiteral(
+        R"((?:undefined macro\s+|[`'"‘])([A-Z][A-Z0-9_]+)(?:['"’]?\s+undeclared)?)"));
     const QRegularExpressionMatch m = undefined.match(message);
     if (!m.hasMatch()
         || !(message.contains(QLatin1StringView("undefined"))

@@ -146,15 +146,14 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
         }
         if (diagnosis.differingPixels == 0)
             continue;
-        finding.confidence = explainedFraction(yours, userDiffers, image, mistakeDiffers, compared,
-                                               toleranceSteps);
+        finding.confidence =
+            explainedFraction(yours, userDiffers, image, mistakeDiffers, compared, toleranceSteps);
         if (finding.confidence >= kMinListedConfidence)
             findings.push_back(std::move(finding));
     }
     for (const auto &[variant, image] : images)
         if (std::find(detectable.begin(), detectable.end(), variant.key) == detectable.end()
-            && std::find(diagnosis.undetectable.begin(), diagnosis.undetectable.end(),
-                         variant.key)
+            && std::find(diagnosis.undetectable.begin(), diagnosis.undetectable.end(), variant.key)
                 == diagnosis.undetectable.end())
             diagnosis.undetectable.push_back(variant.key);
     diagnosis.findings = bestFormOfEachKey(std::move(findings));

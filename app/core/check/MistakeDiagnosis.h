@@ -1,7 +1,7 @@
 #pragma once
-#include "core/reference/ReferenceImage.h"
 #include "core/RgbImage.h"
 #include "core/check/ShaderMistake.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <cstdint>
 #include <utility>

@@ -35,7 +35,8 @@ std::vector<MistakeVariant> withVariant(std::vector<MistakeVariant> set, Mistake
 // over `pixels`. What the search minimises: a term another one cancels in
 // places (no ambient, no attenuation) still takes its share off it, where
 // the fraction of pixels it matches says nothing yet.
-double distance(const RgbImage &yours, const RgbImage &image, const std::vector<std::size_t> &pixels)
+double distance(const RgbImage &yours, const RgbImage &image,
+                const std::vector<std::size_t> &pixels)
 {
     double sum = 0.0;
     for (std::size_t i : pixels)
@@ -81,8 +82,7 @@ public:
             for (int c = 0; c < 3; ++c) {
                 const std::size_t k = 3 * s + std::size_t(c);
                 const int exact = m_exact.pixel(m_samples[s])[c];
-                const int value =
-                    std::clamp(exact + m_base[k] + a[k] + (b ? (*b)[k] : 0), 0, 255);
+                const int value = std::clamp(exact + m_base[k] + a[k] + (b ? (*b)[k] : 0), 0, 255);
                 const int d = int(m_yours.pixel(m_samples[s])[c]) - value;
                 sum += double(d * d);
             }

@@ -178,8 +178,8 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
         const auto rank = [](const CheckReport &r) {
             const MistakeSet &set = r.diagnosis.together;
             const bool explained = set.explains >= kSetWellExplained;
-            return std::tuple(explained ? 0 : 1, explained ? set.variants.size() : 0,
-                              -set.explains, r.badPixels);
+            return std::tuple(explained ? 0 : 1, explained ? set.variants.size() : 0, -set.explains,
+                              r.badPixels);
         };
         if (slide.passed() || rank(slide) < rank(report))
             report = std::move(slide);

@@ -39,18 +39,18 @@ struct MistakeVariant {
 
 // The forms beyond 0, by key.
 namespace MistakeForm {
-inline constexpr int NormalByModel = 1;         // normal-matrix: the model matrix alone
-inline constexpr int NormalByTranspose = 2;     // normal-matrix: transpose(MV), no inverse
-inline constexpr int LightUnnormalized = 1;     // unnormalized: L = light - P, not normalised
-inline constexpr int LightByModelView = 1;      // light-space: moved by the model-view matrix
-inline constexpr int LightWithW0 = 1;           // homogeneous-w: the light's position with w = 0
-inline constexpr int NormalWithW1 = 2;          // homogeneous-w: N = (MV·(n, 1)).xyz
-inline constexpr int Unclamped = 1;             // attenuation: min(..., 1) left out
-inline constexpr int InverseSquare = 2;         // attenuation: hard-coded 1 / d²
-inline constexpr int LearnOpenGl = 3;           // attenuation: hard-coded 1 / (1 + 0.09d + 0.032d²)
-inline constexpr int AmbientPerLight = 1;       // ambient: Ia·ka added once per light
-inline constexpr int AmbientAttenuated = 2;     // ambient: Ia·ka per light, scaled by f_att
-inline constexpr int BlinnExponent = 1;         // halfway-vector: with the exponent 4n
+inline constexpr int NormalByModel = 1;     // normal-matrix: the model matrix alone
+inline constexpr int NormalByTranspose = 2; // normal-matrix: transpose(MV), no inverse
+inline constexpr int LightUnnormalized = 1; // unnormalized: L = light - P, not normalised
+inline constexpr int LightByModelView = 1;  // light-space: moved by the model-view matrix
+inline constexpr int LightWithW0 = 1;       // homogeneous-w: the light's position with w = 0
+inline constexpr int NormalWithW1 = 2;      // homogeneous-w: N = (MV·(n, 1)).xyz
+inline constexpr int Unclamped = 1;         // attenuation: min(..., 1) left out
+inline constexpr int InverseSquare = 2;     // attenuation: hard-coded 1 / d²
+inline constexpr int LearnOpenGl = 3;       // attenuation: hard-coded 1 / (1 + 0.09d + 0.032d²)
+inline constexpr int AmbientPerLight = 1;   // ambient: Ia·ka added once per light
+inline constexpr int AmbientAttenuated = 2; // ambient: Ia·ka per light, scaled by f_att
+inline constexpr int BlinnExponent = 1;     // halfway-vector: with the exponent 4n
 inline constexpr int FaceNormalPerFragment = 1; // per-face: per fragment with the face normal
 } // namespace MistakeForm
 

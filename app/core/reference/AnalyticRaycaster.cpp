@@ -1,7 +1,7 @@
 #include "core/reference/AnalyticRaycaster.h"
 
-#include "core/reference/AnalyticShapes.h"
 #include "core/ObjectMatrices.h"
+#include "core/reference/AnalyticShapes.h"
 #include "core/reference/PhongReference.h"
 #include "core/reference/ReferenceSample.h"
 

@@ -1,10 +1,10 @@
 #pragma once
 #include "core/Camera.h"
-#include "core/reference/PhongEquation.h"
-#include "core/reference/ReferenceImage.h"
 #include "core/Result.h"
 #include "core/Scene.h"
 #include "core/check/ShaderMistake.h"
+#include "core/reference/PhongEquation.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <QHash>
 #include <QString>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/reference/AnalyticRaycaster.h" // Ray
 #include "core/MeshData.h"
+#include "core/reference/AnalyticRaycaster.h" // Ray
 
 #include <glm/glm.hpp>
 

@@ -1,9 +1,9 @@
 #include "core/reference/MeshRaycaster.h"
 
-#include "core/reference/AnalyticShapes.h"
-#include "core/reference/MeshBvh.h"
 #include "core/ObjectMatrices.h"
 #include "core/ParallelRows.h"
+#include "core/reference/AnalyticShapes.h"
+#include "core/reference/MeshBvh.h"
 #include "core/reference/ReferenceSample.h"
 #include "core/reference/SceneHits.h"
 

@@ -1,8 +1,8 @@
 #pragma once
+#include "core/MeshData.h"
+#include "core/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/ReferenceImage.h"
-#include "core/Scene.h"
-#include "core/MeshData.h"
 
 #include <QString>
 #include <functional>

@@ -46,13 +46,13 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
 {
     const auto made = [&](ShaderMistake m, int form = 0) {
         // The slide's equation is the guarded one with backface-specular made.
-        if (m == ShaderMistake::BackfaceSpecular && form == 0
-            && equation == PhongEquation::Slide)
+        if (m == ShaderMistake::BackfaceSpecular && form == 0 && equation == PhongEquation::Slide)
             return true;
         return std::find(mistakes.begin(), mistakes.end(), MistakeVariant{m, form})
             != mistakes.end();
     };
-    if (made(ShaderMistake::HalfwayVector) || made(ShaderMistake::HalfwayVector, MistakeForm::BlinnExponent))
+    if (made(ShaderMistake::HalfwayVector)
+        || made(ShaderMistake::HalfwayVector, MistakeForm::BlinnExponent))
         model = Specular::HalfVector;
     const double exponent = model == Specular::HalfVector && !made(ShaderMistake::HalfwayVector)
         ? kBlinnExponentFactor * material.shininess
@@ -72,9 +72,9 @@ IlluminationTerms illumination(const glm::dvec3 &position, const glm::dvec3 &nor
             I += ambient * material.ka;
         const glm::dvec3 toLight = light.position - position;
         const double d = glm::length(toLight);
-        const glm::dvec3 L =
-            made(ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized) ? toLight
-                                                                              : toLight / d;
+        const glm::dvec3 L = made(ShaderMistake::Unnormalized, MistakeForm::LightUnnormalized)
+            ? toLight
+            : toLight / d;
         const double NdotL = glm::dot(N, L);
         const glm::dvec3 &c = light.attenuation;
         const double attenuation = attenuationMade(made, c, d);

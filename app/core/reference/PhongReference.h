@@ -1,8 +1,8 @@
 #pragma once
 #include "core/Material.h"
-#include "core/reference/PhongEquation.h"
 #include "core/PointLight.h"
 #include "core/check/ShaderMistake.h"
+#include "core/reference/PhongEquation.h"
 
 #include <glm/glm.hpp>
 #include <span>

@@ -1,8 +1,8 @@
 #include "core/reference/ReferenceEdges.h"
 
 #include "core/ImageMetrics.h"
-#include "core/reference/MeshRaycaster.h"
 #include "core/ParallelRows.h"
+#include "core/reference/MeshRaycaster.h"
 
 #include <QCoreApplication>
 #include <algorithm>

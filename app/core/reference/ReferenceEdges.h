@@ -1,8 +1,8 @@
 #pragma once
-#include "core/reference/ReferenceImage.h"
+#include "core/MeshData.h"
 #include "core/Result.h"
 #include "core/Scene.h"
-#include "core/MeshData.h"
+#include "core/reference/ReferenceImage.h"
 
 #include <QString>
 #include <cstdint>

@@ -1,8 +1,8 @@
 #pragma once
-#include "core/reference/AnalyticRaycaster.h"
 #include "core/Material.h"
-#include "core/reference/PhongReference.h"
 #include "core/Scene.h"
+#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/PhongReference.h"
 
 #include <glm/glm.hpp>
 #include <span>

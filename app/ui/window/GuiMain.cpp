@@ -4,8 +4,8 @@
 #include "LanguageMenu.h"
 #include "MainWindow.h"
 #include "core/Language.h"
-#include "core/check/ProgramSynopsis.h"
 #include "core/ResourcePaths.h"
+#include "core/check/ProgramSynopsis.h"
 #include "render/GlFormat.h"
 #include "ui/viewport/Viewport.h"
 
