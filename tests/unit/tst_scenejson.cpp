@@ -57,6 +57,9 @@ Scene fullScene()
     };
     scene.shading = ShadingMethod::BlinnPhong; // not the default
     scene.background = {0.3, 0.2, 0.1};
+    scene.course.defines = {{QStringLiteral("NUM_LIGHTS"), QStringLiteral("3")},
+                            {QStringLiteral("USE_BLINN"), QString()}};
+    scene.course.precision = PrecisionRule::AsWritten; // not the default
     return scene;
 }
 
@@ -143,6 +146,17 @@ void TestSceneJson::defaultsWhenOptionalFieldsMissing()
     QVERIFY(*result.scene == sphereScene());
     QVERIFY(result.scene->lights.empty());
     QCOMPARE(result.scene->baseDir, QStringLiteral("/scenes"));
+    // An old scene is judged as a desktop browser computes it, with no defines.
+    QVERIFY(result.scene->course.precision == PrecisionRule::Highp);
+    QVERIFY(result.scene->course.defines.empty());
+    QVERIFY(!sceneToJson(*result.scene).contains("precision"));
+    QVERIFY(!sceneToJson(*result.scene).contains("defines"));
+    // A number is the token's text.
+    const SceneLoadResult defined =
+        parseScene(withSphere(R"("defines": {"NUM_LIGHTS": 2, "SCALE": 0.5})"));
+    QVERIFY2(defined.ok(), qPrintable(defined.error));
+    QCOMPARE(defined.scene->course.defines.at(QStringLiteral("NUM_LIGHTS")), QStringLiteral("2"));
+    QCOMPARE(defined.scene->course.defines.at(QStringLiteral("SCALE")), QStringLiteral("0.5"));
 
     // Partial objects keep the defaults of the fields they leave out.
     const SceneLoadResult partial = parseScene(withSphere(R"(
@@ -192,6 +206,16 @@ void TestSceneJson::rejectsBadInput_data()
     row("not json", R"({"mesh": "builtin:sphere",)", "JSON syntax error at line 1", "byte offset");
     row("empty input", "", "JSON syntax error");
     row("top level array", R"([{"mesh": "builtin:sphere"}])", "top level:", "object");
+
+    // What the course's page adds
+    row("defines not object", withSphere(R"("defines": ["N=2"])"), "defines:", "NAME: VALUE");
+    row("define not identifier", withSphere(R"("defines": {"1N": 2})"), "defines.1N:",
+        "GLSL identifier");
+    row("define two lines", withSphere(R"("defines": {"N": "2\n#error"})"), "defines.N:",
+        "one line");
+    row("define array value", withSphere(R"("defines": {"N": [2]})"), "defines.N:", "got array");
+    row("precision unknown", withSphere(R"("precision": "mediump")"), "precision:",
+        "as-written");
 
     // Mesh / objects
     row("no mesh", R"({"camera": {}})", "mesh: required field missing", "objects");

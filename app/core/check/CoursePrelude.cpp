@@ -117,7 +117,7 @@ constexpr std::array kThreeJsNames = {
 // The declarations a three.js source leaves to three.js: only where the
 // source uses one of its matrices undeclared (a plain `position` alone says
 // nothing about three.js).
-QByteArray threeJsDeclarations(const QString &code, ShaderStage stage)
+QByteArray threeJsDeclarations(const QString &code, ShaderStage stage, ShaderDialect dialect)
 {
     bool three = false;
     for (const ThreeJsName &n : kThreeJsNames) {
@@ -132,8 +132,13 @@ QByteArray threeJsDeclarations(const QString &code, ShaderStage stage)
     for (const ThreeJsName &n : kThreeJsNames) {
         const QString name = QString::fromLatin1(n.name);
         if ((stage == ShaderStage::Vertex || !n.vertexOnly) && usesWord(code, name)
-            && !declares(code, name))
-            out += QByteArray(n.declaration) + '\n';
+            && !declares(code, name)) {
+            QByteArray line(n.declaration);
+            // GLSL ES 3.00 (three.js's GLSL3 materials) names inputs `in`.
+            if (dialect == ShaderDialect::Es300 && line.startsWith("attribute "))
+                line.replace(0, 9, "in");
+            out += line + '\n';
+        }
     }
     return out;
 }
@@ -156,9 +161,9 @@ CoursePrelude coursePreludeFor(const QByteArray &code, ShaderStage stage,
         if (usesWord(text, QString::fromLatin1(lower)))
             out.lowerPrecisions << QString::fromLatin1(lower);
 
-    const QByteArray three = threeJsDeclarations(text, stage);
-    out.usesThreeJs = !three.isEmpty();
     const ShaderDialect dialect = shaderDialectOf(code);
+    const QByteArray three = threeJsDeclarations(text, stage, dialect);
+    out.usesThreeJs = !three.isEmpty();
     const bool es = dialect != ShaderDialect::Desktop;
     // three.js and WebGL pages put precision first; a GLSL ES fragment
     // shader cannot compile without one.
@@ -184,7 +189,8 @@ CoursePrelude coursePreludeFor(const QByteArray &code, ShaderStage stage,
                          .arg(out.lowerPrecisions.join(QStringLiteral(", ")));
     }
     for (const auto &[name, value] : options.defines)
-        out.text += "#define " + name.toUtf8() + ' ' + value.toUtf8() + '\n';
+        out.text += "#define " + name.toUtf8() + (value.isEmpty() ? QByteArray() : ' ' + value.toUtf8())
+            + '\n';
     return out;
 }
 
