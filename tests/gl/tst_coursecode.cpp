@@ -155,6 +155,30 @@ private slots:
                               QStringLiteral("halfway-vector")}));
     }
 
+    // One colour for two values holds only a scene that gives both the same:
+    // on the check scene (ka != kd) the lesson's u_color cannot draw it, and
+    // that is an error naming both values, never a verdict.
+    void sharedColourAgainstASceneThatDiffers()
+    {
+        const ProcessRun r = runPhonglab(
+            {QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/check.json")),
+             QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--vertex"),
+             course(QStringLiteral("webglfundamentals/point-light.vert")), QStringLiteral("--fragment"),
+             course(QStringLiteral("webglfundamentals/point-light.frag")), QStringLiteral("--json")});
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
+        const QString message = json.value(QStringLiteral("errors"))
+                                    .toArray()
+                                    .first()
+                                    .toObject()
+                                    .value(QStringLiteral("message"))
+                                    .toString();
+        QVERIFY2(message.contains(QStringLiteral("u_color is one colour for ka and kd"))
+                     && message.contains(QStringLiteral("ka = (0.2, 0.2, 0.2)"))
+                     && message.contains(QStringLiteral("kd = (0.6, 0.5, 0.4)")),
+                 qPrintable(message));
+    }
+
     // Structs and an array of structs, bound member by member; the page's
     // mode switch given as a constant.
     void structsAndAModeSwitch()
