@@ -13,6 +13,8 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QGuiApplication>
+
+#include <string_view>
 #include <QString>
 
 namespace phonglab::cli {
@@ -65,6 +67,20 @@ QStringList topLevelOptions()
             QStringLiteral("--vertex"), QStringLiteral("--fragment")};
 }
 
+// `phonglab CMD ... --help`: the words of a command's help, wherever they
+// stand before a `--`.
+bool asksForHelp(int argc, char **argv)
+{
+    for (int i = 2; i < argc; ++i) {
+        const std::string_view a(argv[i]);
+        if (a == "--")
+            return false;
+        if (a == "--help" || a == "-h")
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 std::unique_ptr<QCoreApplication> makeCoreApplication(int &argc, char **argv)
@@ -95,6 +111,12 @@ std::optional<int> dispatch(int argc, char **argv, std::span<const Subcommand> m
     for (const auto &commands : {std::span<const Subcommand>(kSubcommands), more})
         for (const Subcommand &c : commands)
             if (first == QLatin1String(c.name)) {
+                // A command's help draws nothing: no display, no GL driver
+                // loaded (and nothing of the driver's left behind at exit).
+                if (asksForHelp(argc, argv)) {
+                    const QCoreApplication app(argc, argv);
+                    return c.run(argc, argv);
+                }
                 // Commands draw only into framebuffer objects: without a
                 // (reachable) display server they render through EGL.
                 chooseCommandPlatform();

@@ -13,11 +13,12 @@
 #include "CheckScene.h"
 #include "ShaderMutations.h"
 #include "core/check/MistakeSets.h"
+#include "headless/HeadlessPlatform.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
 #include <QCommandLineParser>
-#include <QCoreApplication>
+#include <QGuiApplication>
 #include <QElapsedTimer>
 #include <cstdio>
 
@@ -51,7 +52,8 @@ double judgeMs(const RgbImage &image, const CheckReference &reference, int runs,
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
+    chooseCommandPlatform(); // no display server needed
+    QGuiApplication app(argc, argv);
     QCommandLineParser parser;
     const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("judgements per shader"),
                                   QStringLiteral("n"), QStringLiteral("5"));
