@@ -11,6 +11,14 @@
 // apart. The peer in the same run is one frame of the same view rendered
 // again at the same size (Viewport::renderImage), so the ratio survives a
 // noisy machine.
+//
+//   ... [--busy N]
+//
+// Then the first check of a new view (the window narrowed: a new exact image
+// to make), idle and again with N programs busy beside the window (shell
+// loops, 2 by default: a student's browser and build), in one run: the time
+// to the verdict of each, their ratio, and the GUI thread's stalls while
+// each check runs (gaps between 2 ms timer ticks).
 #include "BenchHelpers.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
@@ -31,10 +39,14 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QProcess>
 #include <QThread>
+#include <QTimer>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 using namespace phonglab;
 using namespace phonglab::bench;
@@ -63,6 +75,59 @@ Sample edit(MainWindow &window, const QByteArray &text)
     return {double(clock.nsecsElapsed()) / 1e6, window.liveCheck()->lastResult()->milliseconds};
 }
 
+// The first check of a new view: the window narrowed by `narrower` pixels,
+// to the verdict of that size; the GUI thread's gaps meanwhile.
+struct ViewSample {
+    double verdictMs = -1;
+    double stallP95Ms = 0;
+    double stallMaxMs = 0;
+};
+
+ViewSample newView(MainWindow &window, int narrower)
+{
+    QSignalSpy checked(window.liveCheck(), &LiveCheck::checked);
+    std::vector<double> gaps;
+    QElapsedTimer tick;
+    QTimer timer;
+    timer.setInterval(2);
+    QObject::connect(&timer, &QTimer::timeout, [&] {
+        gaps.push_back(double(tick.nsecsElapsed()) / 1e6);
+        tick.restart();
+    });
+    QElapsedTimer clock;
+    clock.start();
+    tick.start();
+    timer.start();
+    window.resize(window.width() - narrower, window.height());
+    const bool done = QTest::qWaitFor(
+        [&] {
+            return checked.count() > 0 && !window.liveCheck()->isChecking()
+                && window.liveCheck()->lastResult()->reference;
+        },
+        600000);
+    timer.stop();
+    if (!done)
+        return {};
+    return {double(clock.nsecsElapsed()) / 1e6, percentile(gaps, 0.95),
+            *std::max_element(gaps.begin(), gaps.end())};
+}
+
+// Programs that keep a core busy until they are stopped (or 15 minutes
+// pass, should this program die first).
+std::vector<std::unique_ptr<QProcess>> busyPrograms(int n)
+{
+    std::vector<std::unique_ptr<QProcess>> out;
+    for (int i = 0; i < n; ++i) {
+        auto p = std::make_unique<QProcess>();
+        p->start(QStringLiteral("timeout"),
+                 {QStringLiteral("900"), QStringLiteral("sh"), QStringLiteral("-c"),
+                  QStringLiteral("while :; do :; done")});
+        p->waitForStarted();
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -80,6 +145,10 @@ int main(int argc, char **argv)
                       QStringLiteral("W"), QStringLiteral("1280")});
     parser.addOption({QStringLiteral("height"), QStringLiteral("Window height (default 800)."),
                       QStringLiteral("H"), QStringLiteral("800")});
+    parser.addOption({QStringLiteral("busy"),
+                      QStringLiteral("Busy programs beside the window for the new-view check "
+                                     "(default 2)."),
+                      QStringLiteral("N"), QStringLiteral("2")});
     parser.process(app);
     const int edits = std::max(1, parser.value(QStringLiteral("edits")).toInt());
 
@@ -127,6 +196,33 @@ int main(int argc, char **argv)
     std::printf("| first check of a view (makes the reference) | %.0f | |\n",
                 cold.compileToVerdictMs);
     std::printf("verdict / frame at p50: %.1fx\n", p50 / std::max(f50, 1e-9));
+
+    const int busy = std::max(0, parser.value(QStringLiteral("busy")).toInt());
+    const ViewSample idle = newView(window, 16);
+    ViewSample loaded;
+    {
+        const auto programs = busyPrograms(busy);
+        loaded = newView(window, 16);
+        // SIGTERM, which `timeout` hands on to its loop (a SIGKILL would
+        // leave the loop running).
+        for (const auto &p : programs)
+            p->terminate();
+        for (const auto &p : programs)
+            p->waitForFinished();
+    }
+    if (idle.verdictMs < 0 || loaded.verdictMs < 0) {
+        std::fprintf(stderr, "a new view got no verdict\n");
+        return 1;
+    }
+    std::printf("\nfirst check of a new view (makes the exact image), idle and beside %d busy "
+                "programs:\n",
+                busy);
+    std::printf("| machine | verdict ms | GUI gap p95 ms | longest GUI gap ms |\n|---|---|---|---|\n");
+    std::printf("| idle | %.0f | %.1f | %.1f |\n", idle.verdictMs, idle.stallP95Ms,
+                idle.stallMaxMs);
+    std::printf("| %d busy | %.0f | %.1f | %.1f |\n", busy, loaded.verdictMs, loaded.stallP95Ms,
+                loaded.stallMaxMs);
+    std::printf("busy / idle: %.2fx (aim: <= 5x)\n", loaded.verdictMs / idle.verdictMs);
     QDir(ShaderFileSet::userFolder()).removeRecursively();
     return 0;
 }

@@ -9,6 +9,7 @@
 #include "UiTestWindow.h"
 #include "render/QtImages.h"
 #include "ui/check/CheckOverlay.h"
+#include "ui/check/CheckRunner.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"
 #include "ui/shaders/ShaderEditor.h"
@@ -26,6 +27,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -154,6 +156,28 @@ private slots:
     // Issue 30, C: the slide's equation taken literally (no N·L guard on
     // the highlight) is right too; the window says which it matched, and its
     // pictures are of that equation: the heatmap shows no error.
+    // The first check of a view makes its exact image: the status says how
+    // far it is ("checking… 40 %"), and the check runs niced, never idle.
+    void aNewViewSaysHowFarItsCheckIs()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        LiveCheck *check = m_window->liveCheck();
+        QVERIFY(waitForVerdict(true));
+        auto *runner = check->findChild<CheckRunner *>();
+        QVERIFY(runner);
+        QStringList seen;
+        connect(runner, &CheckRunner::progressed, this,
+                [&] { seen << check->statusLabel()->text(); });
+        m_window->resize(m_window->width() - 24, m_window->height()); // a new view
+        QTRY_VERIFY_WITH_TIMEOUT(!seen.isEmpty(), kCheckTimeoutMs);
+        QVERIFY(waitForVerdict(true));
+        static const QRegularExpression howFar(QStringLiteral("checking… \\d+ %$"));
+        QVERIFY2(std::all_of(seen.begin(), seen.end(),
+                             [](const QString &s) { return howFar.match(s).hasMatch(); }),
+                 qPrintable(seen.join(QLatin1Char('|'))));
+    }
+
     void slidesEquationGetsCheck()
     {
         openWindow(sourcePath(QStringLiteral("assets/scenes/check.json")), {900, 600});

@@ -1,15 +1,17 @@
 #include "CheckRunner.h"
 
+#include "CheckPriority.h"
 #include "mesh/SceneMeshes.h"
 #include "render/GlFormat.h"
 #include "render/QtImages.h"
 
 #include <QOffscreenSurface>
-#include <QScopeGuard>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
 #include <exception>
+#include <functional>
 
 namespace phonglab {
 
@@ -67,8 +69,9 @@ struct CheckRunner::Cache {
         return out;
     }
 
-    Result<std::shared_ptr<const CheckReference>> referenceFor(const Scene &s, QSize sz,
-                                                               const std::atomic<bool> &cancelled)
+    Result<std::shared_ptr<const CheckReference>> referenceFor(
+        const Scene &s, QSize sz, const std::atomic<bool> &cancelled,
+        const std::function<void(double)> &progress)
     {
         if (reference && scene && sameScene(*scene, s) && size == sz)
             return reference;
@@ -76,8 +79,11 @@ struct CheckRunner::Cache {
         const auto objectMeshes = this->objectMeshes(s, cancelled);
         if (!objectMeshes)
             return fail(objectMeshes.error());
-        Result<CheckReference> made = makeCheckReference(s, *objectMeshes, sz.width(), sz.height(),
-                                                         [&](double) { return !cancelled.load(); });
+        Result<CheckReference> made =
+            makeCheckReference(s, *objectMeshes, sz.width(), sz.height(), [&](double f) {
+                progress(f);
+                return !cancelled.load();
+            });
         if (!made)
             return fail(made.error());
         reference = std::make_shared<const CheckReference>(std::move(*made));
@@ -146,15 +152,23 @@ void CheckRunner::start(Request request)
     m_running = std::make_pair(request.frame.scene, request.frame.size);
     m_watcher.setFuture(QtConcurrent::run(
         &m_pool,
-        [cache, cancelled = m_cancelled, surface = m_surface.get(),
+        [this, cache, cancelled = m_cancelled, surface = m_surface.get(),
          request = std::move(request)]() {
-            // Background work must never take a core from the window or a mesh
-            // load: idle priority (SCHED_IDLE on Linux), which the ray-casting
-            // threads started from here inherit. The pool thread is reused, so
-            // its priority is put back afterwards.
-            QThread::currentThread()->setPriority(QThread::IdlePriority);
-            const auto restore =
-                qScopeGuard([] { QThread::currentThread()->setPriority(QThread::NormalPriority); });
+            // How far the exact image is, in whole percent, to the GUI
+            // thread when it moves (this outlives the job: ~CheckRunner waits).
+            int shown = -1;
+            const auto progress = [&](double fraction) {
+                const int percent = std::clamp(int(100.0 * fraction), 0, 99);
+                if (percent != shown) {
+                    shown = percent;
+                    QMetaObject::invokeMethod(
+                        this, [this, percent] { emit progressed(percent); }, Qt::QueuedConnection);
+                }
+            };
+            // Behind the window and a mesh load, but with a real share of the
+            // processor beside busy programs (CheckPriority.h); the ray
+            // casting's threads started from here inherit it.
+            runAtCheckPriority();
             const Scene &scene = request.frame.scene;
             CheckedFrame result;
             result.generation = request.generation;
@@ -169,7 +183,7 @@ void CheckRunner::start(Request request)
                 result.yours = drawn.valueOr(QImage());
                 if (drawn) {
                     Result<std::shared_ptr<const CheckReference>> reference =
-                        cache->referenceFor(scene, request.frame.size, *cancelled);
+                        cache->referenceFor(scene, request.frame.size, *cancelled, progress);
                     result.error = reference.error();
                     result.reference = reference.valueOr(nullptr);
                 }

@@ -55,6 +55,9 @@ public:
 
 signals:
     void finished(const phonglab::CheckedFrame &result);
+    // How far the running check's exact image is, 0..99 %, as it moves (a
+    // check that reuses the kept one has none to report).
+    void progressed(int percent);
 
 private:
     struct Request {

@@ -67,6 +67,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     m_debounce->setSingleShot(true);
     connect(m_debounce, &QTimer::timeout, this, &LiveCheck::run);
     connect(m_runner, &CheckRunner::finished, this, &LiveCheck::show);
+    connect(m_runner, &CheckRunner::progressed, this, &LiveCheck::showProgress);
     // A new program is checked at once, but after its first frame is on
     // screen: the check's own build and draw of it would otherwise take
     // cores from that frame. View and scene changes come in bursts.
@@ -176,9 +177,17 @@ void LiveCheck::run()
                       m_viewport->programSnapshot(), m_viewport->renderOptions(), checkSize()};
     if (frame.size.isEmpty())
         return;
-    m_status->setText(m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + tr(" checking…")
-                             : tr("checking…"));
+    m_checkingPrefix = m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + QLatin1Char(' ')
+                              : QString();
+    m_status->setText(m_checkingPrefix + tr("checking…"));
     m_runner->request(frame);
+}
+
+void LiveCheck::showProgress(int percent)
+{
+    if (!m_runner->isBusy())
+        return; // a late report of a check that has answered
+    m_status->setText(m_checkingPrefix + tr("checking… %1 %").arg(percent));
 }
 
 QSize LiveCheck::checkSize() const

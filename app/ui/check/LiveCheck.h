@@ -67,6 +67,8 @@ private:
     void schedule(int delayMs = kCheckDebounceMs);
     void run();
     void show(const CheckedFrame &result);
+    // "checking… 40 %" while the exact image of a new view is made.
+    void showProgress(int percent);
     void showInspected(QPointF position);
     QSize checkSize() const;
     bool isCurrent(const CheckedFrame &result) const;
@@ -78,6 +80,7 @@ private:
     CheckOverlay *m_overlay = nullptr;
     PixelInspectorDock *m_inspector = nullptr;
     QLabel *m_status = nullptr;
+    QString m_checkingPrefix; // the last verdict's mark ("✓ "), kept while checking
     QComboBox *m_modes = nullptr;
     QAction *m_inspectAction = nullptr;
     QToolBar *m_toolBar = nullptr;
