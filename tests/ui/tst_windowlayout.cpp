@@ -112,6 +112,8 @@ private slots:
     void opensAtAShareOfTheScreen();
     void noTabLabelIsCutShort();
     void theCodeHas80ColumnsBesideTheView();
+    void theCodeGetsRoomAtCommonScreenSizes_data();
+    void theCodeGetsRoomAtCommonScreenSizes();
     void everyDockIsInTheViewMenu();
     void theViewFramesEveryObjectAtItsSizeAndAfterAResize();
     void resetLayoutBringsTheDefaultBack();
@@ -202,7 +204,13 @@ void TestWindowLayout::noTabLabelIsCutShort()
 
 void TestWindowLayout::theCodeHas80ColumnsBesideTheView()
 {
+    // On a 1920x1080 screen (the view keeps half the width: on a smaller
+    // one the code gets what is left of it).
+    m_window->resize(defaultWindowGeometry(QRect(0, 0, 1920, 1040)).size());
+    QTRY_COMPARE(m_window->width(), defaultWindowGeometry(QRect(0, 0, 1920, 1040)).width());
+    m_window->resetLayout();
     ShaderEditor *code = editor();
+    QTRY_VERIFY(code->visibleColumns() >= 80);
     QVERIFY(code->isVisible());
     QVERIFY2(code->visibleColumns() >= 80, qPrintable(QString::number(code->visibleColumns())));
     // Measured apart from visibleColumns(): the end of an 80-character line
@@ -220,9 +228,53 @@ void TestWindowLayout::theCodeHas80ColumnsBesideTheView()
     const QRect view(viewport()->mapTo(m_window.get(), QPoint()), viewport()->size());
     const QRect editorRect(code->mapTo(m_window.get(), QPoint()), code->size());
     QVERIFY(editorRect.left() >= view.right()); // beside the view, right of it
+    // The error list shows under the code when there is something to say.
     DiagnosticList *errors = m_window->shaderDock()->diagnosticList();
-    QVERIFY(errors->isVisible());
+    QVERIFY(!errors->isVisible());
+    errors->setDiagnostics({ShaderDiagnostic{BuildStep::CompileFragment,
+                                             ShaderDiagnostic::Severity::Error,
+                                             QStringLiteral("phong.frag"), 3, 1,
+                                             QStringLiteral("syntax error")}});
+    QTRY_VERIFY(errors->isVisible());
     QVERIFY(errors->mapTo(m_window.get(), QPoint()).y() >= editorRect.bottom()); // under it
+    errors->setDiagnostics({});
+    QVERIFY(!errors->isVisible());
+}
+
+// The code is what people come for: at the two commonest screen sizes the
+// first window (a share of the screen, the default layout) shows at least
+// 35 and 22 lines of it, with the view keeping at least half the width.
+void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes_data()
+{
+    QTest::addColumn<QSize>("screen");
+    QTest::addColumn<int>("lines");
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << 35;
+    QTest::newRow("1366x768") << QSize(1366, 768) << 22;
+}
+
+void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
+{
+    QFETCH(QSize, screen);
+    QFETCH(int, lines);
+    // The screen's available area: less a taskbar's 40 pixels.
+    const QRect available(QPoint(), screen - QSize(0, 40));
+    m_window->resize(defaultWindowGeometry(available).size());
+    QTRY_COMPARE(m_window->size(), defaultWindowGeometry(available).size());
+    m_window->resetLayout();
+    ShaderEditor *code = editor();
+    QTRY_VERIFY(code->isVisible());
+    QTest::qWait(50); // the docks settle after the layout's resizes
+    const long shown = code->SendScintilla(QsciScintillaBase::SCI_LINESONSCREEN);
+    qInfo("%dx%d screen: window %dx%d, %ld lines of code, view %d of %d px wide", screen.width(),
+          screen.height(), m_window->width(), m_window->height(), shown, viewport()->width(),
+          m_window->width());
+    QVERIFY2(shown >= lines, qPrintable(QString::number(shown)));
+    QVERIFY2(viewport()->width() * 2 >= m_window->width(),
+             qPrintable(QStringLiteral("view %1 of %2").arg(viewport()->width()).arg(m_window->width())));
+    if (screen.width() >= 1600)
+        QVERIFY(code->visibleColumns() >= 80);
+    // No error: the error list takes no room.
+    QVERIFY(!m_window->shaderDock()->diagnosticList()->isVisible());
 }
 
 void TestWindowLayout::everyDockIsInTheViewMenu()
@@ -294,14 +346,17 @@ void TestWindowLayout::resetLayoutBringsTheDefaultBack()
     QVERIFY(reset);
     reset->trigger();
     QTRY_COMPARE(describeDocks(*m_window), defaults);
-    QTRY_VERIFY(editor()->visibleColumns() >= 80);
+    // The code back right of the view, which keeps half the width.
+    QTRY_VERIFY(viewport()->width() * 2 >= m_window->width()
+                && editor()->mapTo(m_window.get(), QPoint()).x() > viewport()->width());
 }
 
 void TestWindowLayout::aWideWindowGivesTheSceneAColumn()
 {
-    // Wide enough for a scene column, the code and the narrowest view.
+    // Wide enough for a scene column and the code beside a view of half the
+    // window (a 2560-pixel screen's).
     const int editorWidth = m_window->shaderDock()->sizeHint().width();
-    m_window->resize(kSceneColumnWidth + editorWidth + kMinViewportWidth + 200, 800);
+    m_window->resize(2 * (kSceneColumnWidth + editorWidth) + 100, 800);
     m_window->resetLayout();
     const WindowDocks docks = m_window->docks();
     QTRY_COMPARE(m_window->dockWidgetArea(docks.scene), Qt::LeftDockWidgetArea);
@@ -309,7 +364,7 @@ void TestWindowLayout::aWideWindowGivesTheSceneAColumn()
     QCOMPARE(m_window->dockWidgetArea(docks.material), Qt::RightDockWidgetArea);
     QVERIFY(m_window->tabifiedDockWidgets(docks.scene).contains(docks.lights));
     QVERIFY(m_window->tabifiedDockWidgets(docks.material).contains(docks.uniforms));
-    QTRY_VERIFY(viewport()->width() >= kMinViewportWidth);
+    QTRY_VERIFY(viewport()->width() * 2 >= m_window->width());
     QTRY_VERIFY(editor()->visibleColumns() >= 80);
     for (QTabBar *bar : m_window->findChildren<QTabBar *>())
         if (bar->isVisible())
@@ -319,11 +374,12 @@ void TestWindowLayout::aWideWindowGivesTheSceneAColumn()
 void TestWindowLayout::anOlderSavedLayoutGivesWayOnce()
 {
     const QStringList defaults = describeDocks(*m_window);
-    // A layout saved by an older PhongLab: the code closed, under version 1.
+    // A layout saved by an older PhongLab (before the code got its room):
+    // the code closed, under version 2.
     m_window->docks().shaders->close();
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), m_window->saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), m_window->saveState(1));
+    settings.setValue(QStringLiteral("window/state"), m_window->saveState(2));
     settings.sync();
 
     openAtDefaultSize();

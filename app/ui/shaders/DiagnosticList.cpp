@@ -31,6 +31,7 @@ DiagnosticList::DiagnosticList(QWidget *parent)
     setSelectionMode(SingleSelection);
     connect(this, &QListWidget::itemClicked, this, &DiagnosticList::emitActivated);
     connect(this, &QListWidget::itemActivated, this, &DiagnosticList::emitActivated);
+    hide(); // until there is something to say
 }
 
 void DiagnosticList::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics)
@@ -39,6 +40,8 @@ void DiagnosticList::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnos
     m_errors = 0;
     for (const ShaderDiagnostic &diagnostic : diagnostics)
         addDiagnostic(diagnostic);
+    // Room only when there is something to say: the code has the rest.
+    setVisible(count() > 0);
 }
 
 void DiagnosticList::addDiagnostic(const ShaderDiagnostic &diagnostic)
@@ -53,6 +56,7 @@ void DiagnosticList::addDiagnostic(const ShaderDiagnostic &diagnostic)
     item->setData(kStageRole, static_cast<int>(editorStage(diagnostic.step)));
     item->setData(kLineRole, diagnostic.line);
     item->setData(kColumnRole, diagnostic.column);
+    show();
 }
 
 void DiagnosticList::emitActivated(QListWidgetItem *item)

@@ -2,15 +2,21 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QScrollArea>
 #include <algorithm>
 
 namespace phonglab {
 
 namespace {
 
-// The share of the code column's height the editor gets; the tabs under it
-// get the rest.
-constexpr double kShadersShareOfHeight = 0.6;
+// The tabs under the code get the height the material needs, but never
+// more than 40 % of the column, and in a short column (a laptop's) no more
+// than what leaves the code 640 pixels, down to 22 % of it: the code is
+// what people come for, and a short tab scrolls.
+constexpr double kMostTabsShareOfHeight = 0.4;
+constexpr double kLeastTabsShareOfHeight = 0.22;
+constexpr int kCodeHeight = 610;
+constexpr int kSplitterWidth = 8;
 
 void tabify(QMainWindow &window, std::initializer_list<QDockWidget *> docks)
 {
@@ -24,10 +30,22 @@ void tabify(QMainWindow &window, std::initializer_list<QDockWidget *> docks)
 
 } // namespace
 
+void scrollWhenShort(QDockWidget *dock)
+{
+    QWidget *contents = dock->widget();
+    if (!contents || qobject_cast<QScrollArea *>(contents))
+        return;
+    auto *scroll = new QScrollArea(dock);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(contents);
+    dock->setWidget(scroll);
+}
+
 QRect defaultWindowGeometry(const QRect &available)
 {
     const QSize size(int(available.width() * kWindowShareOfScreen),
-                     int(available.height() * kWindowShareOfScreen));
+                     int(available.height() * kWindowShareOfScreenHeight));
     QRect geometry(QPoint(), size);
     geometry.moveCenter(available.center());
     return geometry;
@@ -48,8 +66,12 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
     window.setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
     const int width = window.width();
-    const bool sceneColumn = width >= kSceneColumnWidth + editorWidth + kMinViewportWidth;
-    const int codeWidth = std::min(editorWidth, std::max(0, width - kMinViewportWidth));
+    // The view keeps at least half the window's width (and the splitter
+    // between it and the code); the code gets 80 columns where that leaves
+    // room for them.
+    const int viewWidth = std::max(kMinViewportWidth, width / 2 + kSplitterWidth);
+    const bool sceneColumn = width >= kSceneColumnWidth + editorWidth + viewWidth;
+    const int codeWidth = std::min(editorWidth, std::max(0, width - viewWidth));
 
     window.addDockWidget(Qt::RightDockWidgetArea, d.shaders);
     window.addDockWidget(Qt::RightDockWidgetArea, d.material, Qt::Vertical);
@@ -70,10 +92,10 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
     if (sceneColumn)
         window.resizeDocks({d.scene}, {kSceneColumnWidth}, Qt::Horizontal);
     const int height = window.centralWidget() ? window.centralWidget()->height() : window.height();
-    window.resizeDocks(
-        {d.shaders, d.material},
-        {int(height * kShadersShareOfHeight), int(height * (1.0 - kShadersShareOfHeight))},
-        Qt::Vertical);
+    const int tabs = std::min({d.material->widget()->sizeHint().height(),
+                               int(height * kMostTabsShareOfHeight),
+                               std::max(int(height * kLeastTabsShareOfHeight), height - kCodeHeight)});
+    window.resizeDocks({d.shaders, d.material}, {height - tabs, tabs}, Qt::Vertical);
 }
 
 } // namespace phonglab

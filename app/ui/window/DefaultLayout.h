@@ -23,20 +23,30 @@ struct WindowDocks {
     QDockWidget *performance = nullptr;
 };
 
-// The window's first geometry: this share of the screen's available area,
-// centred on it.
+// The window's first geometry: these shares of the screen's available area,
+// centred on it. Taller than wide: on a laptop's 768 lines every line of
+// code counts, and the title bar still fits.
 inline constexpr double kWindowShareOfScreen = 0.9;
+inline constexpr double kWindowShareOfScreenHeight = 0.95;
 QRect defaultWindowGeometry(const QRect &available);
 
 // The first layout (and View > Reset Layout), for the window's present size.
-// The code sits right of the view with room for `editorWidth` (80 columns),
-// its error list under it, and under the code the material and the
-// uniforms it is fed. Where the window is wide enough, the scene, object
-// and light docks are a column of their own left of the view; in a
-// narrower window they join the tabs under the code, so that neither the
-// view nor the code gets too narrow. Performance and the pixel inspector
+// The code sits right of the view with room for `editorWidth` (80 columns,
+// where the view keeps half the width beside them: 1600 pixels and up)
+// and most of the column's height (its error list under it, shown only when
+// there is something to say); under the code, as tabs at the height the
+// material needs, the material and the uniforms it is fed. The view keeps
+// at least half the width. Where the window is wide enough for that and a
+// column more, the scene, object and light docks are a column of their own
+// left of the view; otherwise they join the tabs under the code. Performance and the pixel inspector
 // are hidden until asked for (the View menu; Inspect shows the inspector).
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &docks, int editorWidth);
+
+// Puts a dock's contents in a frameless scroll area: a dock in the tabs
+// under the code must not make them taller than the tab shown needs (the
+// lights' editor alone asks for ~350 pixels), so that the code keeps its
+// height; a dock made short scrolls.
+void scrollWhenShort(QDockWidget *dock);
 
 // The narrowest view the layout leaves, and the width of the scene column.
 inline constexpr int kMinViewportWidth = 420;

@@ -94,6 +94,10 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     connect(m_viewport, &Viewport::renderError, this, &MainWindow::showRenderError,
             Qt::QueuedConnection);
     setScenePath({});
+    for (QDockWidget *dock : std::initializer_list<QDockWidget *>{
+             m_sceneDock, m_editDocks->objectDock(), m_editDocks->lightsDock(),
+             m_editDocks->materialDock()})
+        scrollWhenShort(dock);
     setGeometry(defaultWindowGeometry(screen()->availableGeometry()));
     resetLayout();
 }
@@ -177,8 +181,9 @@ namespace {
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 // Bump when the default layout changes: a layout saved under another
-// version gives way to the new default once (2: issue 18's layout).
-constexpr int kWindowStateVersion = 2;
+// version gives way to the new default once (2: the code beside the view;
+// 3: the code with most of the column's height).
+constexpr int kWindowStateVersion = 3;
 } // namespace
 
 void MainWindow::saveWindowSettings() const
