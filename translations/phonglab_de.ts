@@ -1173,10 +1173,6 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <translation>Auf ein Pixel klicken, um dort die Anteile der Gleichung zu sehen (oder Ctrl+Klick) [I]</translation>
     </message>
     <message>
-        <source> checking…</source>
-        <translation> Prüfung läuft…</translation>
-    </message>
-    <message>
         <source>checking…</source>
         <translation>Prüfung läuft…</translation>
     </message>
@@ -1187,6 +1183,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>Pixel (%1, %2) shows the background: no surface, no equation.</source>
         <translation>Pixel (%1, %2) zeigt den Hintergrund: keine Oberfläche, keine Gleichung.</translation>
+    </message>
+    <message>
+        <source>checking… %1 %</source>
+        <translation>Prüfung läuft… %1 %</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QScreen>
@@ -275,6 +276,11 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
         QVERIFY(code->visibleColumns() >= 80);
     // No error: the error list takes no room.
     QVERIFY(!m_window->shaderDock()->diagnosticList()->isVisible());
+    // The material's fields, in a scroll area now, are there to edit.
+    const QList<QLineEdit *> fields = m_window->docks().material->findChildren<QLineEdit *>();
+    QVERIFY(!fields.isEmpty());
+    QTRY_VERIFY(std::all_of(fields.begin(), fields.end(),
+                            [](QLineEdit *f) { return f->isEnabled(); }));
 }
 
 void TestWindowLayout::everyDockIsInTheViewMenu()

@@ -30,7 +30,9 @@ void ObjectEditDock::selectObject(int index)
 
 QWidget *ObjectEditDock::itemEditor() const
 {
-    return widget();
+    // The form itself, not widget(): the window may put the form in a
+    // scroll area (scrollWhenShort), and the form is what is enabled.
+    return m_form->parentWidget();
 }
 
 void ObjectEditDock::showScene()
