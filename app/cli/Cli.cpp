@@ -14,8 +14,8 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 
-#include <string_view>
 #include <QString>
+#include <string_view>
 
 namespace phonglab::cli {
 

@@ -24,22 +24,22 @@
 #include "core/SceneJson.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QProcess>
 #include <QThread>
 #include <QTimer>
 #include <algorithm>
@@ -217,7 +217,8 @@ int main(int argc, char **argv)
     std::printf("\nfirst check of a new view (makes the exact image), idle and beside %d busy "
                 "programs:\n",
                 busy);
-    std::printf("| machine | verdict ms | GUI gap p95 ms | longest GUI gap ms |\n|---|---|---|---|\n");
+    std::printf(
+        "| machine | verdict ms | GUI gap p95 ms | longest GUI gap ms |\n|---|---|---|---|\n");
     std::printf("| idle | %.0f | %.1f | %.1f |\n", idle.verdictMs, idle.stallP95Ms,
                 idle.stallMaxMs);
     std::printf("| %d busy | %.0f | %.1f | %.1f |\n", busy, loaded.verdictMs, loaded.stallP95Ms,

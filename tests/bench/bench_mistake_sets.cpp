@@ -18,8 +18,8 @@
 #include "render/QtImages.h"
 
 #include <QCommandLineParser>
-#include <QGuiApplication>
 #include <QElapsedTimer>
+#include <QGuiApplication>
 #include <cstdio>
 
 using namespace phonglab;

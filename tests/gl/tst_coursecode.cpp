@@ -163,8 +163,10 @@ private slots:
         const ProcessRun r = runPhonglab(
             {QStringLiteral("check"), sourcePath(QStringLiteral("assets/scenes/check.json")),
              QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--vertex"),
-             course(QStringLiteral("webglfundamentals/point-light.vert")), QStringLiteral("--fragment"),
-             course(QStringLiteral("webglfundamentals/point-light.frag")), QStringLiteral("--json")});
+             course(QStringLiteral("webglfundamentals/point-light.vert")),
+             QStringLiteral("--fragment"),
+             course(QStringLiteral("webglfundamentals/point-light.frag")),
+             QStringLiteral("--json")});
         const QJsonObject json = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(json.value(QStringLiteral("verdict")).toString(), QStringLiteral("error"));
         const QString message = json.value(QStringLiteral("errors"))

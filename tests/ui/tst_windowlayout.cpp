@@ -10,14 +10,14 @@
 #include "core/CameraFraming.h"
 #include "core/SceneJson.h"
 #include "mesh/SceneMeshes.h"
-#include "ui/window/DefaultLayout.h"
-#include "ui/shaders/DiagnosticList.h"
-#include "ui/check/LiveCheck.h"
-#include "ui/window/MainWindow.h"
 #include "ui/check/CheckRunner.h"
+#include "ui/check/LiveCheck.h"
+#include "ui/shaders/DiagnosticList.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/DefaultLayout.h"
+#include "ui/window/MainWindow.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -232,10 +232,9 @@ void TestWindowLayout::theCodeHas80ColumnsBesideTheView()
     // The error list shows under the code when there is something to say.
     DiagnosticList *errors = m_window->shaderDock()->diagnosticList();
     QVERIFY(!errors->isVisible());
-    errors->setDiagnostics({ShaderDiagnostic{BuildStep::CompileFragment,
-                                             ShaderDiagnostic::Severity::Error,
-                                             QStringLiteral("phong.frag"), 3, 1,
-                                             QStringLiteral("syntax error")}});
+    errors->setDiagnostics(
+        {ShaderDiagnostic{BuildStep::CompileFragment, ShaderDiagnostic::Severity::Error,
+                          QStringLiteral("phong.frag"), 3, 1, QStringLiteral("syntax error")}});
     QTRY_VERIFY(errors->isVisible());
     QVERIFY(errors->mapTo(m_window.get(), QPoint()).y() >= editorRect.bottom()); // under it
     errors->setDiagnostics({});
@@ -271,7 +270,8 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
           m_window->width());
     QVERIFY2(shown >= lines, qPrintable(QString::number(shown)));
     QVERIFY2(viewport()->width() * 2 >= m_window->width(),
-             qPrintable(QStringLiteral("view %1 of %2").arg(viewport()->width()).arg(m_window->width())));
+             qPrintable(
+                 QStringLiteral("view %1 of %2").arg(viewport()->width()).arg(m_window->width())));
     if (screen.width() >= 1600)
         QVERIFY(code->visibleColumns() >= 80);
     // No error: the error list takes no room.
@@ -279,8 +279,8 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
     // The material's fields, in a scroll area now, are there to edit.
     const QList<QLineEdit *> fields = m_window->docks().material->findChildren<QLineEdit *>();
     QVERIFY(!fields.isEmpty());
-    QTRY_VERIFY(std::all_of(fields.begin(), fields.end(),
-                            [](QLineEdit *f) { return f->isEnabled(); }));
+    QTRY_VERIFY(
+        std::all_of(fields.begin(), fields.end(), [](QLineEdit *f) { return f->isEnabled(); }));
 }
 
 void TestWindowLayout::everyDockIsInTheViewMenu()

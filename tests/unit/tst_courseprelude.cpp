@@ -29,8 +29,8 @@ private slots:
     {
         const QByteArray code = "precision mediump float;\nvoid main() { lowp vec3 c; }\n";
         const CoursePrelude highp = coursePreludeFor(code, ShaderStage::Fragment, {});
-        QCOMPARE(highp.lowerPrecisions, (QStringList{QStringLiteral("mediump"),
-                                                     QStringLiteral("lowp")}));
+        QCOMPARE(highp.lowerPrecisions,
+                 (QStringList{QStringLiteral("mediump"), QStringLiteral("lowp")}));
         QVERIFY(highp.text.contains("#define mediump highp\n"));
         QVERIFY(highp.text.contains("#define lowp highp\n"));
         QCOMPARE(highp.added.size(), 1);
@@ -57,14 +57,15 @@ private slots:
         QVERIFY(!vertex.text.contains("modelMatrix;")); // used in a comment only
         QVERIFY(vertex.text.startsWith("precision highp float;"));
         // three.js's GLSL3 materials: inputs are `in`.
-        const CoursePrelude es3 = coursePreludeFor("#version 300 es\n" + kThreeVertex.mid(
-                                                       kThreeVertex.indexOf("void")),
-                                                   ShaderStage::Vertex, {});
+        const CoursePrelude es3 =
+            coursePreludeFor("#version 300 es\n" + kThreeVertex.mid(kThreeVertex.indexOf("void")),
+                             ShaderStage::Vertex, {});
         QVERIFY2(es3.text.contains("in vec3 position;"), es3.text.constData());
 
         // A source that declares its own is nobody's three.js.
-        const QByteArray own = "uniform mat4 modelViewMatrix;\nattribute vec3 position;\n"
-                               "void main() { gl_Position = modelViewMatrix * vec4(position, 1.0); }";
+        const QByteArray own =
+            "uniform mat4 modelViewMatrix;\nattribute vec3 position;\n"
+            "void main() { gl_Position = modelViewMatrix * vec4(position, 1.0); }";
         QVERIFY(!coursePreludeFor(own, ShaderStage::Vertex, {}).usesThreeJs);
         // A plain `position` alone says nothing about three.js.
         QVERIFY(!coursePreludeFor("void main() { gl_Position = vec4(position, 1.0); }",
@@ -74,7 +75,8 @@ private slots:
 
     void esFragmentShaderGetsADefaultPrecision()
     {
-        const QByteArray noPrecision = "varying vec3 c;\nvoid main() { gl_FragColor = vec4(c, 1.0); }";
+        const QByteArray noPrecision =
+            "varying vec3 c;\nvoid main() { gl_FragColor = vec4(c, 1.0); }";
         const CoursePrelude es = coursePreludeFor(noPrecision, ShaderStage::Fragment, {});
         QCOMPARE(es.text, QByteArray("precision highp float;\n"));
         QCOMPARE(es.added.size(), 1);
@@ -115,14 +117,15 @@ private slots:
         const QString explained = explainUndefinedToken(mesa, {});
         QVERIFY(explained.startsWith(mesa));
         QVERIFY(explained.contains(QStringLiteral("--define NUM_POINT_LIGHTS=VALUE")));
-        QVERIFY(explainUndefinedToken(QStringLiteral("undefined macro NUM_LIGHTS in expression"), {})
-                    .contains(QStringLiteral("--define NUM_LIGHTS=VALUE")));
+        QVERIFY(
+            explainUndefinedToken(QStringLiteral("undefined macro NUM_LIGHTS in expression"), {})
+                .contains(QStringLiteral("--define NUM_LIGHTS=VALUE")));
         // A student's lower-case name is their own typo, not the page's token.
         QCOMPARE(explainUndefinedToken(QStringLiteral("`lightPos' undeclared"), {}),
                  QStringLiteral("`lightPos' undeclared"));
         // Defined already: the message is about something else.
-        QCOMPARE(explainUndefinedToken(mesa, {{QStringLiteral("NUM_POINT_LIGHTS"),
-                                               QStringLiteral("2")}}),
+        QCOMPARE(explainUndefinedToken(mesa,
+                                       {{QStringLiteral("NUM_POINT_LIGHTS"), QStringLiteral("2")}}),
                  mesa);
     }
 

@@ -209,13 +209,12 @@ void TestSceneJson::rejectsBadInput_data()
 
     // What the course's page adds
     row("defines not object", withSphere(R"("defines": ["N=2"])"), "defines:", "NAME: VALUE");
-    row("define not identifier", withSphere(R"("defines": {"1N": 2})"), "defines.1N:",
-        "GLSL identifier");
-    row("define two lines", withSphere(R"("defines": {"N": "2\n#error"})"), "defines.N:",
-        "one line");
+    row("define not identifier", withSphere(R"("defines": {"1N": 2})"),
+        "defines.1N:", "GLSL identifier");
+    row("define two lines", withSphere(R"("defines": {"N": "2\n#error"})"),
+        "defines.N:", "one line");
     row("define array value", withSphere(R"("defines": {"N": [2]})"), "defines.N:", "got array");
-    row("precision unknown", withSphere(R"("precision": "mediump")"), "precision:",
-        "as-written");
+    row("precision unknown", withSphere(R"("precision": "mediump")"), "precision:", "as-written");
 
     // Mesh / objects
     row("no mesh", R"({"camera": {}})", "mesh: required field missing", "objects");

@@ -189,8 +189,8 @@ CoursePrelude coursePreludeFor(const QByteArray &code, ShaderStage stage,
                          .arg(out.lowerPrecisions.join(QStringLiteral(", ")));
     }
     for (const auto &[name, value] : options.defines)
-        out.text += "#define " + name.toUtf8() + (value.isEmpty() ? QByteArray() : ' ' + value.toUtf8())
-            + '\n';
+        out.text += "#define " + name.toUtf8()
+            + (value.isEmpty() ? QByteArray() : ' ' + value.toUtf8()) + '\n';
     return out;
 }
 

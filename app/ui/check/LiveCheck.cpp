@@ -1,8 +1,8 @@
 #include "LiveCheck.h"
 
-#include "ui/shaders/LiveShaderController.h"
 #include "PixelInspectorDock.h"
 #include "ui/scene/SceneLoadJob.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "ui/viewport/Viewport.h"
 
 #include <QAction>
@@ -177,8 +177,8 @@ void LiveCheck::run()
                       m_viewport->programSnapshot(), m_viewport->renderOptions(), checkSize()};
     if (frame.size.isEmpty())
         return;
-    m_checkingPrefix = m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + QLatin1Char(' ')
-                              : QString();
+    m_checkingPrefix =
+        m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + QLatin1Char(' ') : QString();
     m_status->setText(m_checkingPrefix + tr("checking…"));
     m_runner->request(frame);
 }

@@ -92,9 +92,9 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
     if (sceneColumn)
         window.resizeDocks({d.scene}, {kSceneColumnWidth}, Qt::Horizontal);
     const int height = window.centralWidget() ? window.centralWidget()->height() : window.height();
-    const int tabs = std::min({d.material->widget()->sizeHint().height(),
-                               int(height * kMostTabsShareOfHeight),
-                               std::max(int(height * kLeastTabsShareOfHeight), height - kCodeHeight)});
+    const int tabs =
+        std::min({d.material->widget()->sizeHint().height(), int(height * kMostTabsShareOfHeight),
+                  std::max(int(height * kLeastTabsShareOfHeight), height - kCodeHeight)});
     window.resizeDocks({d.shaders, d.material}, {height - tabs, tabs}, Qt::Vertical);
 }
 
