@@ -14,7 +14,7 @@ namespace {
 const QStringList &csvColumns()
 {
     static const QStringList columns{
-        QStringLiteral("submission"), QStringLiteral("scene"),    QStringLiteral("verdict"),
+        QStringLiteral("submission"), QStringLiteral("scene"),     QStringLiteral("verdict"),
         QStringLiteral("psnr_db"),    QStringLiteral("max_error"), QStringLiteral("bad_fraction"),
         QStringLiteral("key"),        QStringLiteral("also"),      QStringLiteral("file"),
         QStringLiteral("line"),       QStringLiteral("equation"),  QStringLiteral("bindings"),
@@ -95,12 +95,14 @@ QJsonObject gradesJson(const GradeResults &results)
 {
     QJsonArray scenes;
     for (const GradeScene &s : results.scenes)
-        scenes.append(QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
+        scenes.append(
+            QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
     QJsonArray rows;
     for (const GradeRow &row : results.rows) {
         QJsonObject o = checkJson(row.outcome);
         o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
-        o.insert(QStringLiteral("submission"), results.submissions[std::size_t(row.submission)].name);
+        o.insert(QStringLiteral("submission"),
+                 results.submissions[std::size_t(row.submission)].name);
         o.insert(QStringLiteral("scene"), results.scenes[std::size_t(row.scene)].label);
         o.insert(QStringLiteral("seconds"), row.seconds);
         rows.append(o);

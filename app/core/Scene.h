@@ -1,12 +1,12 @@
 #pragma once
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderBindings.h"
 #include "Camera.h"
 #include "Material.h"
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
 #include "core/NormalOptions.h"
+#include "core/check/CoursePrelude.h"
+#include "core/check/ShaderBindings.h"
 
 #include <QString>
 #include <map>

@@ -15,8 +15,8 @@ struct BuildJob {
     quint64 serial = 0;
     ShaderSource vertex;
     ShaderSource fragment;
-    bool warm = true;    // run one draw before handing the program over
-    int warmSamples = 0; // ... into a framebuffer with this many samples
+    bool warm = true;          // run one draw before handing the program over
+    int warmSamples = 0;       // ... into a framebuffer with this many samples
     ExplicitBindings bindings; // the scene's: they place the vertex inputs at link time
     CourseOptions course;      // the scene's: what the course's page adds at compile time
 };

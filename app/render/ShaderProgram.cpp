@@ -184,7 +184,8 @@ void ShaderProgram::setPerLight(BindingMeaning meaning, std::span<const glm::dve
         const std::size_t first = u.isArray ? 0 : std::size_t(u.lightIndex);
         if (first >= values.size())
             continue;
-        const int count = u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
+        const int count =
+            u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
         if (u.type == GlslType::Vec3) {
             std::vector<glm::vec3> packed(values.begin() + first, values.begin() + first + count);
             glUniform3fv(u.location, count, glm::value_ptr(packed[0]));
@@ -203,7 +204,8 @@ void ShaderProgram::setPerLight(BindingMeaning meaning, std::span<const double> 
         const std::size_t first = u.isArray ? 0 : std::size_t(u.lightIndex);
         if (first >= values.size())
             continue;
-        const int count = u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
+        const int count =
+            u.isArray ? int(std::min<std::size_t>(values.size(), std::size_t(u.arraySize))) : 1;
         if (u.type == GlslType::Float) {
             std::vector<float> packed(values.begin() + first, values.begin() + first + count);
             glUniform1fv(u.location, count, packed.data());

@@ -81,8 +81,8 @@ std::vector<ShaderVariable> shaderVariablesOf(QOpenGLExtraFunctions *gl, GLuint 
     for (const ActiveInputInfo &a : activeInputsOf(gl, program))
         out.push_back({QString::fromUtf8(a.name), glslTypeOf(a.type), 1, false, true});
     for (const ActiveUniformInfo &u : activeUniformsOf(gl, program))
-        out.push_back({QString::fromUtf8(u.name), glslTypeOf(u.type), int(u.size), u.isArray,
-                       false});
+        out.push_back(
+            {QString::fromUtf8(u.name), glslTypeOf(u.type), int(u.size), u.isArray, false});
     return out;
 }
 

@@ -3,9 +3,9 @@
 #include "AboutDialog.h"
 #include "DocumentationBrowser.h"
 #include "DocumentationFiles.h"
-#include "ui/window/MainWindow.h"
 #include "ShortcutsDialog.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 #include "ui/window/WarningBox.h"
 
 #include <QAction>

@@ -4,8 +4,8 @@
 #include <QSignalBlocker>
 
 #include "BenchProcess.h"
-#include "ui/viewport/Viewport.h"
 #include "charts/SpeedAccuracyChart.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QChart>
 #include <QChartView>

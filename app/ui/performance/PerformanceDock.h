@@ -1,8 +1,8 @@
 #pragma once
-#include "ui/viewport/ReadoutPace.h"
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
 #include "core/ShadingMethod.h"
+#include "ui/viewport/ReadoutPace.h"
 
 #include <QDockWidget>
 #include <vector>
