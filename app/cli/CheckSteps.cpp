@@ -65,31 +65,31 @@ namespace {
 // The lower precisions the stages declare and, where they were judged at
 // highp, how far the render as written is from the one judged: drawn again
 // with the declared precision (a second build and draw, only for shaders
-// that declare mediump or lowp).
-PrecisionFinding measurePrecision(OffscreenRenderer &offscreen, const StageFiles &files,
-                                  const Scene &judged, QSize size, const QImage &judgedImage)
+// that declare mediump or lowp). `stages`: the texts the first build read.
+PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
+                                  const std::vector<ShaderStageText> &stages, const Scene &judged,
+                                  QSize size, const QImage &judgedImage)
 {
     PrecisionFinding finding;
     finding.judged = judged.course.precision;
-    const Result<StageSources> read = readStageFiles(files.vertex, files.fragment);
-    if (!read)
-        return finding;
-    for (const auto &[code, stage] : {std::pair{read->vertex.code, ShaderStage::Vertex},
-                                      std::pair{read->fragment.code, ShaderStage::Fragment}})
-        for (const QString &lower : coursePreludeFor(code, stage, judged.course).lowerPrecisions)
+    StageSources sources;
+    for (const ShaderStageText &s : stages) {
+        const ShaderStage stage = s.vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
+        (s.vertex ? sources.vertex : sources.fragment) = ShaderSource{s.path, s.text.toUtf8()};
+        for (const QString &lower :
+             coursePreludeFor(s.text.toUtf8(), stage, judged.course).lowerPrecisions)
             if (!finding.declared.contains(lower))
                 finding.declared << lower;
+    }
     if (finding.declared.isEmpty() || finding.judged != PrecisionRule::Highp)
         return finding;
     Scene asWritten = judged;
     asWritten.course.precision = PrecisionRule::AsWritten;
     Renderer &renderer = offscreen.renderer();
     renderer.updateSceneParameters(asWritten);
-    const Result<BuildReport> built = buildStages(renderer, files);
-    if (!built)
-        return finding;
-    if (!built->ok) {
-        for (const ShaderDiagnostic &d : built->diagnostics)
+    const BuildReport built = renderer.setProgramSources(sources.vertex, sources.fragment);
+    if (!built.ok) {
+        for (const ShaderDiagnostic &d : built.diagnostics)
             if (d.isError()) {
                 finding.asWrittenError = d.format();
                 break;
@@ -174,7 +174,8 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     drawing.image = offscreen.renderImage(input.size);
     if (drawing.image.isNull())
         return fail(QString(), CheckStepsWords::tr("rendering failed"));
-    outcome.precision = measurePrecision(offscreen, files, judged, input.size, drawing.image);
+    outcome.precision =
+        measurePrecision(offscreen, outcome.stages, judged, input.size, drawing.image);
     return drawing;
 }
 

@@ -27,13 +27,6 @@ using namespace phonglab::test;
 
 namespace {
 
-RgbImage draw(OffscreenRenderer &offscreen, const ShaderPair &s, QSize size)
-{
-    if (!offscreen.renderer().setProgramSources(s.vertex, s.fragment).ok)
-        qFatal("%s does not compile", qPrintable(s.fragment.name));
-    return toRgbImage(offscreen.renderImage(size));
-}
-
 // The median wall time of `runs` judgements, in ms, and the last report.
 double judgeMs(const RgbImage &image, const CheckReference &reference, int runs,
                CheckReport *report)
@@ -80,8 +73,9 @@ int main(int argc, char **argv)
         const CheckReference reference = makeTestCheckReference(scene, size.width(), size.height());
         const double referenceMs = double(clock.nsecsElapsed()) / 1e6;
         CheckReport oneReport, threeReport;
-        const double oneMs = judgeMs(draw(offscreen, one, size), reference, n, &oneReport);
-        const double threeMs = judgeMs(draw(offscreen, three, size), reference, n, &threeReport);
+        const double oneMs = judgeMs(drawPair(offscreen, one, size), reference, n, &oneReport);
+        const double threeMs =
+            judgeMs(drawPair(offscreen, three, size), reference, n, &threeReport);
         std::printf("%-9s %12.0f %14.1f %14.1f %14.2f %14.2f\n",
                     qPrintable(QStringLiteral("%1x%2").arg(size.width()).arg(size.height())),
                     referenceMs, oneMs, threeMs, threeMs / oneMs,

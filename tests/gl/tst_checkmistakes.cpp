@@ -231,10 +231,8 @@ private:
 
     QImage render(const ShaderSource &vertex, const ShaderSource &fragment)
     {
-        const BuildReport program = m_offscreen.renderer().setProgramSources(vertex, fragment);
-        if (!program.ok)
-            qFatal("%s", qPrintable(program.errorSummary()));
-        return m_offscreen.renderImage(QSize(kCheckWidth, kCheckHeight));
+        return toQImage(
+            drawPair(m_offscreen, {vertex, fragment}, QSize(kCheckWidth, kCheckHeight)));
     }
 
     Scene m_scene;

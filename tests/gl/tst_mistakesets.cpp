@@ -155,10 +155,7 @@ private:
 
     RgbImage judgedImage(const ShaderPair &s)
     {
-        const BuildReport built = m_offscreen.renderer().setProgramSources(s.vertex, s.fragment);
-        if (!built.ok)
-            qFatal("%s does not compile", qPrintable(s.fragment.name));
-        return toRgbImage(m_offscreen.renderImage(QSize(kCheckWidth, kCheckHeight)));
+        return drawPair(m_offscreen, s, QSize(kCheckWidth, kCheckHeight));
     }
 
     CheckReport judge(const std::vector<MistakeVariant> &made)

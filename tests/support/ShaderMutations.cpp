@@ -1,6 +1,7 @@
 #include "ShaderMutations.h"
 
 #include "TestPaths.h"
+#include "render/QtImages.h"
 
 #include <QtGlobal>
 
@@ -229,6 +230,14 @@ ShaderPair withMistakes(const std::vector<MistakeVariant> &set)
     s.vertex.name = names.join(QLatin1Char('+')) + QStringLiteral(".vert");
     s.fragment.name = names.join(QLatin1Char('+')) + QStringLiteral(".frag");
     return s;
+}
+
+RgbImage drawPair(OffscreenRenderer &offscreen, const ShaderPair &pair, QSize size)
+{
+    const BuildReport built = offscreen.renderer().setProgramSources(pair.vertex, pair.fragment);
+    if (!built.ok)
+        qFatal("%s: %s", qPrintable(pair.fragment.name), qPrintable(built.errorSummary()));
+    return toRgbImage(offscreen.renderImage(size));
 }
 
 } // namespace phonglab::test

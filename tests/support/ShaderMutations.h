@@ -1,6 +1,8 @@
 #pragma once
+#include "core/RgbImage.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
+#include "render/OffscreenRenderer.h"
 #include "render/ShaderSource.h"
 
 #include <vector>
@@ -31,5 +33,9 @@ ShaderPair withMistake(MistakeVariant variant, PhongEquation equation);
 // Several mistakes made in one pair, as real code makes them (not gouraud
 // or per-face, which replace the whole pair).
 ShaderPair withMistakes(const std::vector<MistakeVariant> &set);
+
+// The pair built in `offscreen`'s renderer and one frame of its scene drawn
+// at `size`; a pair that does not compile is the test's own bug (qFatal).
+RgbImage drawPair(OffscreenRenderer &offscreen, const ShaderPair &pair, QSize size);
 
 } // namespace phonglab::test

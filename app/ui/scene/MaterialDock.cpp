@@ -24,7 +24,8 @@ constexpr int kSliderMax = 512; // the slider covers the useful part
 } // namespace
 
 MaterialDock::MaterialDock(QWidget *parent)
-    : ObjectEditDock(tr("Material"), QStringLiteral("MaterialPanel"), parent) // the name saved layouts know it by
+    : ObjectEditDock(tr("Material"), QStringLiteral("MaterialPanel"),
+                     parent) // the name saved layouts know it by
 {
     buildForm();
 }

@@ -24,7 +24,8 @@ QString refuseZeroScale(const glm::dvec3 &scale)
 } // namespace
 
 ObjectDock::ObjectDock(QWidget *parent)
-    : ObjectEditDock(tr("Object"), QStringLiteral("ObjectPanel"), parent) // the name saved layouts know it by
+    : ObjectEditDock(tr("Object"), QStringLiteral("ObjectPanel"),
+                     parent) // the name saved layouts know it by
 {
     addField(tr("Translate"), TransformField::Translate, kMaxTranslate);
     addField(tr("Rotate (°)"), TransformField::Rotate, kMaxRotateDeg);

@@ -4,7 +4,8 @@
 
 namespace phonglab {
 
-BuildQueue::BuildQueue(int debounceMs, QObject *parent) : QObject(parent)
+BuildQueue::BuildQueue(int debounceMs, QObject *parent)
+    : QObject(parent)
 {
     m_pause.setSingleShot(true);
     m_pause.setInterval(std::max(0, debounceMs));

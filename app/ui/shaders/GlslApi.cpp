@@ -170,14 +170,20 @@ const QSet<QString> &es100Names()
     static const QSet<QString> names = [] {
         QSet<QString> set;
         for (const char *name :
-             {"radians", "degrees", "sin", "cos", "tan", "asin", "acos", "atan", "pow", "exp",
-              "log", "exp2", "log2", "sqrt", "inversesqrt", "abs", "sign", "floor", "ceil", "fract",
-              "mod", "min", "max", "clamp", "mix", "step", "smoothstep", "length", "distance",
-              "dot", "cross", "normalize", "faceforward", "reflect", "refract", "matrixCompMult",
-              "lessThan", "lessThanEqual", "greaterThan", "greaterThanEqual", "equal", "notEqual",
-              "any", "all", "not", "texture2D", "texture2DProj", "textureCube", "gl_Position",
-              "gl_PointSize", "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord", "gl_FragColor",
-              "gl_FragData", "gl_MaxDrawBuffers"})
+             {"radians",       "degrees",       "sin",           "cos",
+              "tan",           "asin",          "acos",          "atan",
+              "pow",           "exp",           "log",           "exp2",
+              "log2",          "sqrt",          "inversesqrt",   "abs",
+              "sign",          "floor",         "ceil",          "fract",
+              "mod",           "min",           "max",           "clamp",
+              "mix",           "step",          "smoothstep",    "length",
+              "distance",      "dot",           "cross",         "normalize",
+              "faceforward",   "reflect",       "refract",       "matrixCompMult",
+              "lessThan",      "lessThanEqual", "greaterThan",   "greaterThanEqual",
+              "equal",         "notEqual",      "any",           "all",
+              "not",           "texture2D",     "texture2DProj", "textureCube",
+              "gl_Position",   "gl_PointSize",  "gl_FragCoord",  "gl_FrontFacing",
+              "gl_PointCoord", "gl_FragColor",  "gl_FragData",   "gl_MaxDrawBuffers"})
             set.insert(QString::fromLatin1(name));
         return set;
     }();
@@ -187,15 +193,12 @@ const QSet<QString> &es100Names()
 bool availableIn(const GlslBuiltin &builtin, ShaderDialect dialect)
 {
     const QString name = QString::fromLatin1(builtin.name);
-    static const QSet<QString> es100Only{QStringLiteral("texture2D"),
-                                         QStringLiteral("texture2DProj"),
-                                         QStringLiteral("textureCube"),
-                                         QStringLiteral("gl_FragColor"),
-                                         QStringLiteral("gl_FragData")};
-    static const QSet<QString> desktopOnly{QStringLiteral("gl_ClipDistance"),
-                                           QStringLiteral("gl_PrimitiveID"),
-                                           QStringLiteral("gl_SampleID"),
-                                           QStringLiteral("gl_Layer")};
+    static const QSet<QString> es100Only{
+        QStringLiteral("texture2D"), QStringLiteral("texture2DProj"), QStringLiteral("textureCube"),
+        QStringLiteral("gl_FragColor"), QStringLiteral("gl_FragData")};
+    static const QSet<QString> desktopOnly{
+        QStringLiteral("gl_ClipDistance"), QStringLiteral("gl_PrimitiveID"),
+        QStringLiteral("gl_SampleID"), QStringLiteral("gl_Layer")};
     switch (dialect) {
     case ShaderDialect::Es100: return es100Names().contains(name);
     case ShaderDialect::Es300: return !es100Only.contains(name) && !desktopOnly.contains(name);

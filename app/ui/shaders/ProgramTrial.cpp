@@ -1,7 +1,7 @@
 #include "ProgramTrial.h"
 
-#include "ui/viewport/Viewport.h"
 #include "render/FrameEstimate.h"
+#include "ui/viewport/Viewport.h"
 
 #include <algorithm>
 

@@ -35,8 +35,8 @@ BindingChoice::BindingChoice(const ShaderVariable &variable,
     if (explicitBinding)
         current = findData(*explicitBinding ? bindingMeaningKey(**explicitBinding) : kUnboundWord);
     setCurrentIndex(std::max(0, current));
-    setToolTip(tr("What PhongLab sets %1 to (saved with the scene as \"bindings\")")
-                   .arg(variable.name));
+    setToolTip(
+        tr("What PhongLab sets %1 to (saved with the scene as \"bindings\")").arg(variable.name));
     connect(this, &QComboBox::activated, this, [this] { emit chosen(m_variable); });
 }
 

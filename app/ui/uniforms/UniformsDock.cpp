@@ -4,12 +4,12 @@
 
 #include "ui/viewport/CurrentContext.h"
 
-#include "ui/shaders/ShaderDock.h"
 #include "UniformBoolRow.h"
 #include "UniformFloatRow.h"
 #include "UniformIntRow.h"
 #include "UniformRowFactory.h"
 #include "UniformVectorRow.h"
+#include "ui/shaders/ShaderDock.h"
 #include "ui/viewport/Viewport.h"
 
 #include <QBoxLayout>
@@ -117,7 +117,7 @@ QStringList UniformsDock::layoutKey(const Program &program,
                    .arg(u.isArray)
                    .arg(int(uniformOwner(program.bindings.meaningOf(name))))
                    .arg(word == program.explicitBindings.end() ? QStringLiteral("-")
-                        : word->second                         ? bindingMeaningKey(*word->second)
+                            : word->second                     ? bindingMeaningKey(*word->second)
                                                                : kUnboundWord);
     }
     for (const UniformDeclaration &d : declared)
