@@ -79,7 +79,7 @@ Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscree
     if (ready)
         lent.warmer->warm(program); // ends in glFinish
     if (ready && lent.afterWarm)
-        lent.afterWarm();
+        lent.afterWarm(lent);
     lent.context->doneCurrent();
     lent.context->moveToThread(owner);
     m_context->makeCurrent(m_surface); // ready for the next build

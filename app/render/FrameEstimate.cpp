@@ -1,5 +1,6 @@
 #include "FrameEstimate.h"
 
+#include "LentContext.h"
 #include "Renderer.h"
 
 #include <QElapsedTimer>
@@ -9,16 +10,27 @@
 
 namespace phonglab {
 
+namespace {
+
+double timedRender(Renderer &renderer, const QSize &size)
+{
+    QElapsedTimer clock;
+    clock.start();
+    renderer.render(size);
+    QOpenGLContext::currentContext()->functions()->glFinish();
+    return double(clock.nsecsElapsed()) / 1e6;
+}
+
+double area(const QSize &size)
+{
+    return double(size.width()) * size.height();
+}
+
+} // namespace
+
 double estimateFrameMs(Renderer &renderer, const QSize &pixelSize, double limitMs)
 {
-    QOpenGLFunctions *gl = QOpenGLContext::currentContext()->functions();
-    const auto timed = [&](const QSize &size) {
-        QElapsedTimer clock;
-        clock.start();
-        renderer.render(size);
-        gl->glFinish();
-        return double(clock.nsecsElapsed()) / 1e6;
-    };
+    const auto timed = [&](const QSize &size) { return timedRender(renderer, size); };
     const QSize small = (pixelSize / 4).expandedTo(QSize(8, 8));
     const QSize medium = (pixelSize / 2).expandedTo(QSize(16, 16));
     const double fullPixels = double(pixelSize.width()) * pixelSize.height();
@@ -38,6 +50,24 @@ double estimateFrameMs(Renderer &renderer, const QSize &pixelSize, double limitM
     const double perPixel = std::max(0.0, (b - a) / (mediumPixels - smallPixels));
     const double perDraw = std::max(0.0, a - perPixel * smallPixels);
     return perDraw + perPixel * fullPixels;
+}
+
+double trialFrameMs(Renderer &renderer, const LentContext &lent, const QSize &pixelSize,
+                    double limitMs)
+{
+    if (lent.frame && lent.frame->pixels == pixelSize) {
+        const QSize probe = (pixelSize / 16).expandedTo(QSize(8, 8));
+        const double probeMs = timedRender(renderer, probe);
+        if (probeMs > limitMs)
+            return probeMs;
+        if (probeMs * area(pixelSize) / area(probe) <= std::max(limitMs, kBlindFrameMs)
+            && drawLoanFrame(lent))
+            return lent.frame->drawMs;
+    }
+    const double estimate = estimateFrameMs(renderer, pixelSize, limitMs);
+    if (estimate <= limitMs)
+        drawLoanFrame(lent); // the frame the view would draw next, shown from the loan
+    return estimate;
 }
 
 } // namespace phonglab

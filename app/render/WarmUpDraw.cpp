@@ -63,9 +63,12 @@ void WarmUpDraw::warm(GLuint program)
         glBindFramebuffer(GL_FRAMEBUFFER,
                           QOpenGLContext::currentContext()->defaultFramebufferObject());
     glViewport(0, 0, kTargetSide, kTargetSide);
+    // Renderer::render's state for a closed mesh, the scissor included: the
+    // clear stays in the corner rather than filling the window's buffer.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, kTargetSide, kTargetSide);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    // Renderer::render's state for a closed mesh.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
@@ -74,6 +77,7 @@ void WarmUpDraw::warm(GLuint program)
     glUseProgram(program);
     m_mesh.draw();
     glUseProgram(0);
+    glDisable(GL_SCISSOR_TEST);
     if (m_fbo)
         m_fbo->release();
     // The hand-over contract: the program has linked and run before another

@@ -9,6 +9,7 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/RecoveryJournal.h"
+#include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ProgramTrial.h"
 #include "ui/shaders/ShaderDock.h"
@@ -107,6 +108,8 @@ private slots:
     void cleanupTestCase();
 
     void typingChangesTheFrame();
+    void theTrialsFrameIsShownAndNotDrawnAgain();
+    void aChangeWhileTheContextIsLentIsDrawnAfter();
     void errorStaysOnItsLineAndFixClearsIt();
     void userUniformSurvivesRebuild();
     void unchangedTextIsNotRebuilt();
@@ -172,9 +175,7 @@ void TestLiveEdit::typingChangesTheFrame()
     QTRY_VERIFY(live()->buildsOnWorker());
     const QImage before = frame();
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
-    std::chrono::steady_clock::time_point appliedAt;
-    connect(live(), &LiveShaderController::programApplied, this,
-            [&appliedAt] { appliedAt = std::chrono::steady_clock::now(); });
+    const auto typedAt = std::chrono::steady_clock::now();
     QElapsedTimer timer;
     timer.start();
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.5"));
@@ -185,9 +186,10 @@ void TestLiveEdit::typingChangesTheFrame()
     // keep the viewport from lending its context for the warm-up.
     QTRY_VERIFY_WITH_TIMEOUT(applied.count() == 1, kBuildTimeoutMs);
     const qint64 applyMs = timer.elapsed();
-    // The new program's first frame is presented from a thread of its own;
-    // what the window system shows must be that frame.
-    QTRY_VERIFY(viewport()->lastPresentedAt() > appliedAt);
+    // The new program's first frame is presented from a thread other than
+    // this one (its trial's, or the presenter's); what the window system
+    // shows must be that frame.
+    QTRY_VERIFY(viewport()->lastPresentedAt() > typedAt);
     const QImage shown = QGuiApplication::primaryScreen()
                              ->grabWindow(viewport()->frameWindow()->winId())
                              .toImage()
@@ -207,6 +209,87 @@ void TestLiveEdit::typingChangesTheFrame()
     QVERIFY(journal.hasJournal());
     QVERIFY(dock()->isDirty(ShaderStage::Fragment));
     QVERIFY(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty());
+}
+
+// Issue 41, 2: the frame the trial of a new program drew in the lent context
+// is presented there, and is the one the window shows; the GUI thread does
+// not draw it again.
+void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
+{
+    openWindow();
+    QTRY_VERIFY(live()->buildsOnWorker());
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
+                && !viewport()->isContextLent());
+    QTest::qWait(300); // the check's pictures and labels have come and settled
+    const qint64 fromLoans = viewport()->framesFromLoans();
+    qint64 drawnAtApply = -1;
+    connect(live(), &LiveShaderController::programApplied, this,
+            [&] { drawnAtApply = viewport()->framesRendered(); });
+    QSignalSpy swapped(viewport(), &Viewport::frameSwapped);
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.25"));
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(swapped.count() > 0);
+    QCOMPARE(viewport()->framesFromLoans(), fromLoans + 1);
+    // Booked as the one frame since the program was applied, and no other
+    // follows before the check (kCheckDebounceMs) has something to show.
+    QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
+    QTest::qWait(kCheckDebounceMs / 2);
+    QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
+    const QImage shown = QGuiApplication::primaryScreen()
+                             ->grabWindow(viewport()->frameWindow()->winId())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    // frame() draws the new program again here, on this thread: the
+    // trial's frame must be that very picture (exact: single-sampled view).
+    QCOMPARE(test::differingPixels(shown, frame()), 0);
+
+    // A program kept out presents nothing: the last good one is drawn again.
+    const QImage lastGood = frame();
+    typeAfter(QStringLiteral("vec3 I = Ia * ka;"),
+              QStringLiteral(" for (int k = 0; k < 20000; ++k) I += 1e-7 * sin(I * float(k));"));
+    QSignalSpy keptOut(live(), &LiveShaderController::programKeptOut);
+    QTRY_VERIFY_WITH_TIMEOUT(keptOut.count() == 1, 60000);
+    QCOMPARE(viewport()->framesFromLoans(), fromLoans + 1);
+    QTRY_VERIFY(!viewport()->isContextLent());
+    QTest::qWait(100);
+    const QImage after = QGuiApplication::primaryScreen()
+                             ->grabWindow(viewport()->frameWindow()->winId())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(test::differingPixels(after, lastGood), 0);
+}
+
+// A change made while the context is out to the trial (a light dragged in
+// the scene) is not lost behind the frame the trial presents: the GUI
+// thread draws once the context is back, and that is what the window shows.
+void TestLiveEdit::aChangeWhileTheContextIsLentIsDrawnAfter()
+{
+    openWindow();
+    QTRY_VERIFY(live()->buildsOnWorker());
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
+                && !viewport()->isContextLent());
+    bool changedWhileLent = false;
+    connect(live(), &LiveShaderController::stateChanged, this,
+            [&](LiveShaderController::State state) {
+                if (state != LiveShaderController::State::Warming || changedWhileLent)
+                    return;
+                changedWhileLent = viewport()->isContextLent();
+                Scene scene = viewport()->currentScene();
+                scene.ambient = glm::dvec3(0.6, 0.1, 0.1);
+                viewport()->setSceneParameters(scene);
+            });
+    typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.75"));
+    QVERIFY(waitForApplied());
+    QVERIFY2(changedWhileLent, "the change was not made while the context was lent");
+    QTRY_VERIFY(!viewport()->isContextLent());
+    QTest::qWait(100);
+    const QImage shown = QGuiApplication::primaryScreen()
+                             ->grabWindow(viewport()->frameWindow()->winId())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(test::differingPixels(shown, frame()), 0);
 }
 
 void TestLiveEdit::errorStaysOnItsLineAndFixClearsIt()

@@ -20,14 +20,18 @@ std::shared_ptr<ProgramTrial> ProgramTrial::arm(LentContext &lent, Viewport *vie
     trial->budgetMs = frameBudgetMs(*viewport);
     trial->pixels = viewport->size() * viewport->devicePixelRatioF();
     lent.whileCurrent = [viewport, program] { viewport->renderer().exchangeProgram(*program); };
-    lent.afterWarm = [viewport, program, trial] {
+    lent.afterWarm = [viewport, program, trial](const LentContext &loan) {
         Renderer &renderer = viewport->renderer();
-        trial->frameMs = estimateFrameMs(renderer, trial->pixels, trial->budgetMs);
+        trial->frameMs = trialFrameMs(renderer, loan, trial->pixels, trial->budgetMs);
         trial->ran = true;
-        if (trial->keptOut())
+        if (trial->keptOut()) {
             renderer.exchangeProgram(*program); // the new one comes back out
-        else
-            *program = GlProgram(); // the previous one, freed in its context
+            return;
+        }
+        *program = GlProgram(); // the previous one, freed in its context
+        // Its frame, drawn by the trial, is the view's next: the GUI thread
+        // draws nothing more for the new program.
+        presentLoanFrame(loan);
     };
     return trial;
 }

@@ -19,8 +19,9 @@ double frameBudgetMs(const Viewport &viewport);
 
 // One new program tried in the viewport's lent context before the view
 // takes it: armed on a loan, it puts the program in the renderer while the
-// context is current, estimates one frame after the warm-up draw
-// (estimateFrameMs) and, over the budget, takes it out again. `program`
+// context is current, tries one frame after the warm-up draw
+// (trialFrameMs) and, over the budget, takes it out again; within it, the
+// frame the trial drew is presented from there (LoanFrame). `program`
 // holds whichever program is not in the renderer: the one kept out, or
 // nothing once the previous one was freed.
 struct ProgramTrial {

@@ -63,7 +63,9 @@ void UniformsDock::attach(Viewport *viewport, ShaderDock *shaders)
 void UniformsDock::scheduleRebuild()
 {
     m_rebuildPending = true;
-    if (m_viewport)
+    // A frame already on its way (a new program's first, presented by its
+    // trial) brings the rebuild as well as one asked for.
+    if (m_viewport && !m_viewport->isFrameComing())
         m_viewport->requestFrame();
 }
 

@@ -14,7 +14,7 @@ std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QSurface
     context->moveToThread(borrower);
     m_returned = std::make_shared<QSemaphore>(0);
     m_borrower = borrower;
-    return LentContext{context, surface, warmer, samples, m_returned, {}};
+    return LentContext{context, surface, warmer, samples, m_returned, {}, {}, {}};
 }
 
 bool ContextLender::end(int timeoutMs)

@@ -193,7 +193,9 @@ void GpuScene::setHeadlight(bool on)
 void GpuScene::setOptions(const Renderer::Options &options)
 {
     m_options = options;
-    m_renderer.setOptions(m_options); // plain state, no GL call
+    // Reaches the renderer with the next frame, like the parameters: while
+    // the context is lent, another thread may be drawing with it.
+    m_parametersDirty = true;
 }
 
 bool GpuScene::draw(const QSize &pixels)
@@ -221,6 +223,7 @@ void GpuScene::sendChangedParameters()
     if (!m_parametersDirty)
         return;
     m_renderer.updateSceneParameters(renderedScene());
+    m_renderer.setOptions(m_options);
     m_parametersDirty = false;
 }
 

@@ -75,6 +75,9 @@ public:
     bool headlight() const { return m_headlight; }
     // Parameters (camera, lights, ...) changed: sent before the next draw.
     void markChanged() { m_parametersDirty = true; }
+    // Parameters or options changed since the renderer last took them: a
+    // frame drawn now on another thread (LoanFrame) would show the old ones.
+    bool hasUnsentChanges() const { return m_parametersDirty; }
 
     const Renderer::Options &options() const { return m_options; }
     void setOptions(const Renderer::Options &options);

@@ -330,6 +330,23 @@ void Viewport::drawOverlays(const QSize &pixels)
     m_overlay->draw(pixels);
 }
 
+std::function<void(const QSize &)> Viewport::drawForBorrower(const QSize &pixels)
+{
+    if (!m_gpu.isReady() || m_gpu.hasUnsentChanges())
+        return {};
+    std::optional<QImage> overlay = m_overlay->paintedFor(pixels);
+    if (!overlay)
+        return {};
+    // The renderer and the overlay's layer are left alone by this thread
+    // while the context is out; the image is a copy of the one painted.
+    return [renderer = &m_gpu.renderer(), layer = m_overlay,
+            image = std::move(*overlay)](const QSize &size) {
+        renderer->render(size);
+        if (!image.isNull())
+            layer->drawPainted(image, size);
+    };
+}
+
 // Once, with the context just made and current.
 void Viewport::initializeGl()
 {

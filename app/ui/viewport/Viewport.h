@@ -106,6 +106,8 @@ public:
     // A new frame at the next turn of the event loop (QWidget::update()
     // repaints only the widget around the view's window).
     void requestFrame();
+    // A frame is on its way (frameRendered will come) without asking for one.
+    bool isFrameComing() const { return m_surface->isFrameComing(); }
     // The native window the frames go to; its input reaches this widget.
     QWindow *frameWindow() const;
     // When the last frame was handed to the window system (swapBuffers
@@ -168,6 +170,9 @@ public:
     qint64 framesRefused() const { return m_surface->framesRefused(); }
     void resumeFrames();
     qint64 framesRendered() const { return m_surface->framesRendered(); }
+    // Of those, the first frames of new programs that their trial drew and
+    // presented in the lent context (the GUI thread drew them no more).
+    qint64 framesFromLoans() const { return m_surface->framesFromLoans(); }
     // The draw times behind frameRendered()'s figure.
     const FrameTimeWindow &frameTimes() const { return m_surface->frameTimes(); }
     QString glRendererName() const { return m_glRendererName; }
@@ -220,6 +225,7 @@ private:
     // ViewportSurface::Content
     bool drawScene(const QSize &pixels) override;
     void drawOverlays(const QSize &pixels) override;
+    std::function<void(const QSize &)> drawForBorrower(const QSize &pixels) override;
 
     void initializeGl();
     void cleanup();

@@ -78,6 +78,12 @@ void ViewportSurface::requestFrame()
     m_window->requestFrame();
 }
 
+bool ViewportSurface::isFrameComing() const
+{
+    const bool presenting = m_presenter && m_lender.borrower() == m_presenter->presenterThread();
+    return m_window->isFramePending() || m_frameMissed || m_loanFramesToBook > 0 || presenting;
+}
+
 QSize ViewportSurface::pixels() const
 {
     return m_view->size() * m_view->devicePixelRatioF();
@@ -103,13 +109,38 @@ std::optional<LentContext> ViewportSurface::lendContext(QThread *borrower)
     if (!isStarted() || !takeBackContext())
         return std::nullopt;
     // A loan is for a new program's warm-up (the borrower may switch the
-    // renderer to it): the frame after it is an edit's.
+    // renderer to it, and present its first frame): the frames after it
+    // follow an edit (the check's pictures coming over the view).
     m_presentOffThread = true;
     // The warm-up draws into the window's own framebuffer only where a
     // context may be current on a window off the GUI thread.
     QSurface *surface = QOpenGLContext::supportsThreadedOpenGL() ? m_window : nullptr;
-    return m_lender.lend(m_context.get(), surface, borrower, &m_warmer,
-                         std::max(0, m_framebufferSamples));
+    std::optional<LentContext> lent = m_lender.lend(m_context.get(), surface, borrower, &m_warmer,
+                                                    std::max(0, m_framebufferSamples));
+    if (lent && surface) {
+        m_loanFrame = offerLoanFrame();
+        lent->frame = m_loanFrame;
+    }
+    return lent;
+}
+
+// The frame a borrower may present in this window: only where it is the
+// frame this thread would draw next, overlays and all, into a back buffer
+// of the window's size, and where frames are presented off this thread at
+// all (the platform allows it).
+std::shared_ptr<LoanFrame> ViewportSurface::offerLoanFrame()
+{
+    const QSize frame = pixels();
+    if (!m_presenter || m_framesHeld || !backBufferHolds(frame))
+        return nullptr;
+    std::function<void(const QSize &)> draw = m_content->drawForBorrower(frame);
+    if (!draw)
+        return nullptr;
+    auto offered = std::make_shared<LoanFrame>();
+    offered->pixels = frame;
+    offered->draw = std::move(draw);
+    offered->windowPixels = windowPixels();
+    return offered;
 }
 
 bool ViewportSurface::takeBackContext(int timeoutMs)
@@ -118,10 +149,27 @@ bool ViewportSurface::takeBackContext(int timeoutMs)
     if (!m_lender.end(timeoutMs))
         return false;
     // Back from a warm-up, whose borrower may have switched the renderer to
-    // the new program: its frame is due, as is any asked for meanwhile.
+    // the new program: its frame is due, as is any asked for meanwhile,
+    // unless the borrower presented that frame itself (LoanFrame).
     const bool fromWarmUp =
         borrower && (!m_presenter || borrower != m_presenter->presenterThread());
-    if (m_frameMissed || fromWarmUp) {
+    const std::shared_ptr<LoanFrame> loanFrame = std::exchange(m_loanFrame, nullptr);
+    const bool presentedOnLoan = fromWarmUp && loanFrame && loanFrame->presented;
+    if (presentedOnLoan) {
+        ++m_loanFramesToBook;
+        // Booked at the next turn of the event loop, as a presenter's frame
+        // is: whoever took the context back finishes first (the controller
+        // says the program is applied, then the frame is seen).
+        QMetaObject::invokeMethod(
+            this,
+            [this, loanFrame] {
+                --m_loanFramesToBook;
+                ++m_framesFromLoans;
+                bookPresented(loanFrame->drawMs, loanFrame->swappedAt, loanFrame->windowPixels);
+            },
+            Qt::QueuedConnection);
+    }
+    if (m_frameMissed || (fromWarmUp && !presentedOnLoan)) {
         m_frameMissed = false;
         requestFrame();
     }
@@ -210,9 +258,22 @@ void ViewportSurface::framePresented(quint64 loan, double drawMs, qint64 swapped
         requestFrame();
         return;
     }
-    m_lastPresentedAt =
-        std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs));
-    m_presentedSize = windowPixels();
+    bookPresented(
+        drawMs,
+        std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs)),
+        windowPixels());
+}
+
+// A frame another thread drew and swapped (the presenter, or a borrower
+// with a LoanFrame), booked as this thread's own are.
+void ViewportSurface::bookPresented(double drawMs, std::chrono::steady_clock::time_point swappedAt,
+                                    const QSize &backBuffer)
+{
+    // A frame this thread presented meanwhile is the newer one.
+    if (swappedAt > m_lastPresentedAt) {
+        m_lastPresentedAt = swappedAt;
+        m_presentedSize = backBuffer;
+    }
     frameDrawn(drawMs);
     emit frameSwapped();
 }

@@ -9,6 +9,7 @@
 #include <QOpenGLContext>
 #include <QSize>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -44,6 +45,10 @@ public:
         virtual bool drawScene(const QSize &pixels) = 0;
         // What lies over the scene (the view's child widgets).
         virtual void drawOverlays(const QSize &pixels) = 0;
+        // The next frame of `pixels` as a draw another thread may make with
+        // the context lent (LoanFrame::draw), or empty where only this
+        // thread can draw it (changes not yet sent, overlays to paint).
+        virtual std::function<void(const QSize &)> drawForBorrower(const QSize &pixels) = 0;
     };
 
     // `view`: the widget the window lies in, which gets the window's input
@@ -65,6 +70,10 @@ public:
     QSurfaceFormat format() const;
     // A frame at the next turn of the event loop.
     void requestFrame();
+    // A frame will be booked (frameTimed) without anyone asking for one:
+    // one is asked for, drawn or presented elsewhere, or missed while the
+    // context was lent (frames held back are not counted on).
+    bool isFrameComing() const;
     // The next frame is presented off this thread (it follows an edit, and
     // typing goes on meanwhile). Other frames (an orbit's stream) are
     // presented here: handing the context over costs ~3 ms a frame.
@@ -92,6 +101,9 @@ public:
     std::chrono::steady_clock::time_point lastPresentedAt() const { return m_lastPresentedAt; }
     const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
     qint64 framesRendered() const { return m_framesRendered; }
+    // Of those, the frames a borrower presented (LoanFrame): a new
+    // program's first, drawn by its trial.
+    qint64 framesFromLoans() const { return m_framesFromLoans; }
     bool framesHeld() const { return m_framesHeld; }
     qint64 framesRefused() const { return m_framesRefused; }
     void resumeFrames();
@@ -115,6 +127,9 @@ private:
     void start();
     void frameDrawn(double drawMs);
     void framePresented(quint64 loan, double drawMs, qint64 swappedNs, bool ok);
+    std::shared_ptr<LoanFrame> offerLoanFrame();
+    void bookPresented(double drawMs, std::chrono::steady_clock::time_point swappedAt,
+                       const QSize &backBuffer);
     QSize pixels() const; // the view's size in device pixels
     QSize windowPixels() const;
 
@@ -134,6 +149,9 @@ private:
     bool m_presentOffThread = false;
     quint64 m_presentLoans = 0; // the newest loan to the presenter: only it ends one
     bool m_frameMissed = false; // asked for while the context was lent
+    int m_loanFramesToBook = 0; // presented by a borrower, booked at the next turn
+    // The frame the current loan's borrower may present (null: none).
+    std::shared_ptr<LoanFrame> m_loanFrame;
     // The window's size (pixels) when a frame was last swapped on this
     // thread: the back buffer's size, which lags a resize until that swap.
     QSize m_presentedSize;
@@ -142,6 +160,7 @@ private:
     GLint m_framebufferSamples = -1; // of the window's framebuffer; -1: not known yet
     FrameTimeWindow m_frameTimes;    // draw times of the last second
     qint64 m_framesRendered = 0;
+    qint64 m_framesFromLoans = 0;
     bool m_framesHeld = false; // a frame ran long: none until the user acts
     qint64 m_framesRefused = 0;
 };

@@ -24,6 +24,7 @@ public:
     // A frame at the next turn of the event loop; several requests before
     // it make one frame (as QWidget::update).
     void requestFrame();
+    bool isFramePending() const { return m_framePending; }
 
 protected:
     bool event(QEvent *event) override;

@@ -44,13 +44,28 @@ bool WidgetOverlay::eventFilter(QObject *watched, QEvent *event)
     return false;
 }
 
-// The children as QPainter draws them (premultiplied).
-void WidgetOverlay::draw(const QSize &pixels)
+QList<QWidget *> WidgetOverlay::shownChildren() const
 {
     QList<QWidget *> shown;
     for (QWidget *child : m_view->findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
         if (child != m_excluded && child->isVisible())
             shown << child;
+    return shown;
+}
+
+std::optional<QImage> WidgetOverlay::paintedFor(const QSize &pixels) const
+{
+    if (shownChildren().isEmpty())
+        return QImage();
+    if (m_dirty || m_image.size() != pixels)
+        return std::nullopt;
+    return m_image;
+}
+
+// The children as QPainter draws them (premultiplied).
+void WidgetOverlay::draw(const QSize &pixels)
+{
+    const QList<QWidget *> shown = shownChildren();
     if (shown.isEmpty())
         return;
     if (m_dirty || m_image.size() != pixels) {

@@ -2,7 +2,9 @@
 #include "render/ImageLayer.h"
 
 #include <QImage>
+#include <QList>
 #include <QObject>
+#include <optional>
 
 class QWidget;
 
@@ -23,6 +25,13 @@ public:
 
     // GL, with the frame's framebuffer bound: the visible children over it.
     void draw(const QSize &pixels);
+    // What draw() would put over a frame of `pixels` with nothing painted
+    // again, for a frame drawn on another thread (LoanFrame): a null image
+    // when no child is shown, nullopt when they must be painted first
+    // (which only this thread may do).
+    std::optional<QImage> paintedFor(const QSize &pixels) const;
+    // GL, on whichever thread holds the context: `image` over the frame.
+    void drawPainted(const QImage &image, const QSize &pixels) { m_layer.draw(image, pixels); }
     // GL: frees the texture and program.
     void destroy() { m_layer.destroy(); }
 
@@ -34,6 +43,8 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
+    QList<QWidget *> shownChildren() const;
+
     QWidget *m_view = nullptr;
     QWidget *m_excluded = nullptr;
     ImageLayer m_layer;

@@ -220,8 +220,10 @@ void MainWindow::createUniformsDock()
                 Qt::QueuedConnection);
     connect(m_viewport, &Viewport::shippedProgramLoaded, m_uniformsDock,
             &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
+    // Direct: the new program's first frame may be presented already and
+    // be booked at the next turn of the event loop; the rows follow it.
     connect(m_liveShaders, &LiveShaderController::programApplied, m_uniformsDock,
-            &UniformsDock::scheduleRebuild, Qt::QueuedConnection);
+            &UniformsDock::scheduleRebuild);
 }
 
 // Hidden until asked for (DefaultLayout): measuring is occasional.
