@@ -188,6 +188,7 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     // The pixel: when the frame was handed to the window system (the
     // presenting thread's swapBuffers returned), as the raw path's.
     std::chrono::steady_clock::time_point start;
+    const qint64 fromLoansBefore = viewport->framesFromLoans();
     auto framed = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
             frameAt = std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -229,7 +230,10 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     s.compileMs = ms(timings.compileNs);
     s.linkMs = ms(timings.linkNs);
     s.warmMs = ms(timings.warmNs);
-    s.frameMs = ms(frameAt - appliedAt);
+    // Presented by the trial, the frame reached the window before the
+    // program was said to be applied: the GUI thread drew none.
+    s.frameFromLoan = viewport->framesFromLoans() > fromLoansBefore;
+    s.frameMs = s.frameFromLoan ? 0.0 : ms(frameAt - appliedAt);
     s.otherMs = s.totalMs - s.compileMs - s.linkMs - s.warmMs - s.frameMs;
     s.stallMs = ms(maxGap);
     s.steadyMs = steadyFrameMs();
@@ -280,7 +284,7 @@ double column(const std::vector<EditSample> &samples, double EditSample::*field,
 void printTable(const std::vector<Row> &rows)
 {
     std::printf("\n| path | edit→pixel median | p95 | compile | link | warm-up draw (worker "
-                "thread) | first frame "
+                "thread; the app's with its trial and first frame) | first frame "
                 "(GUI thread) | rest (queues, hops, adopt) | next frame, same program | longest "
                 "GUI stall to the pixel, median | p95 | longest GUI stall until the check's "
                 "verdict, median | p95 |\n");
@@ -298,11 +302,31 @@ void printTable(const std::vector<Row> &rows)
                     column(v, &EditSample::stallUntilCheckedMs, 0.5),
                     column(v, &EditSample::stallUntilCheckedMs, 0.95));
     }
+    for (const Row &row : rows) {
+        const auto fromLoans = std::count_if(row.samples.begin(), row.samples.end(),
+                                             [](const EditSample &s) { return s.frameFromLoan; });
+        if (fromLoans > 0)
+            std::printf("%s: %lld of %zu first frames presented by the trial in the lent context\n",
+                        qPrintable(row.name), static_cast<long long>(fromLoans),
+                        row.samples.size());
+    }
     const double raw = column(rows.front().samples, &EditSample::totalMs, 0.5);
     std::printf("\n");
     for (std::size_t i = 1; i < rows.size(); ++i)
         std::printf("%s / raw GL (medians): %.2fx\n", qPrintable(rows[i].name),
                     column(rows[i].samples, &EditSample::totalMs, 0.5) / raw);
+    // Each round's edits run back to back, so a change in the machine's
+    // load touches both of a pair: the median of the pairs' ratios is the
+    // steadier figure when the medians wander between runs.
+    std::printf("\n");
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::vector<double> ratios;
+        for (std::size_t k = 0; k < rows[i].samples.size() && k < rows[0].samples.size(); ++k)
+            if (rows[0].samples[k].totalMs > 0)
+                ratios.push_back(rows[i].samples[k].totalMs / rows[0].samples[k].totalMs);
+        std::printf("%s / raw GL (median of the rounds' ratios): %.2fx\n",
+                    qPrintable(rows[i].name), percentile(ratios, 0.5));
+    }
 }
 
 } // namespace
