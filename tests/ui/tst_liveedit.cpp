@@ -122,8 +122,12 @@ private slots:
 
 private:
     void openWindow();
+    // openWindow(), its program built on the worker and applied, nothing lent.
+    void openIdleWindow();
     ShaderDock *dock() const { return m_window->shaderDock(); }
     void typeAfter(const QString &anchor, const QString &keys);
+    // What the window system shows of the view (not drawn again here).
+    QImage shownInWindow() const;
 
     QHash<QString, QByteArray> m_shippedHashes;
 };
@@ -155,6 +159,23 @@ void TestLiveEdit::cleanupTestCase()
 void TestLiveEdit::openWindow()
 {
     UiTestWindow::openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+}
+
+QImage TestLiveEdit::shownInWindow() const
+{
+    return QGuiApplication::primaryScreen()
+        ->grabWindow(viewport()->frameWindow()->winId())
+        .toImage()
+        .convertToFormat(QImage::Format_RGB32);
+}
+
+void TestLiveEdit::openIdleWindow()
+{
+    openWindow();
+    QTRY_VERIFY(live()->buildsOnWorker());
+    QVERIFY(waitForApplied());
+    QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
+                && !viewport()->isContextLent());
 }
 
 // As a user would: cursor just after `anchor` in the fragment editor, then keys.
@@ -190,10 +211,7 @@ void TestLiveEdit::typingChangesTheFrame()
     // this one (its trial's, or the presenter's); what the window system
     // shows must be that frame.
     QTRY_VERIFY(viewport()->lastPresentedAt() > typedAt);
-    const QImage shown = QGuiApplication::primaryScreen()
-                             ->grabWindow(viewport()->frameWindow()->winId())
-                             .toImage()
-                             .convertToFormat(QImage::Format_RGB32);
+    const QImage shown = shownInWindow();
     QCOMPARE(test::differingPixels(shown, frame()), 0);
     QVERIFY(frame() != before);
     qInfo("edit to new program: %lld ms (debounce %d ms, warm-up draw %.0f ms off the GUI thread)",
@@ -216,11 +234,9 @@ void TestLiveEdit::typingChangesTheFrame()
 // not draw it again.
 void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
 {
-    openWindow();
-    QTRY_VERIFY(live()->buildsOnWorker());
-    QVERIFY(waitForApplied());
-    QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
-                && !viewport()->isContextLent());
+    openIdleWindow();
+    if (QTest::currentTestFailed())
+        return;
     QTest::qWait(300); // the check's pictures and labels have come and settled
     const qint64 fromLoans = viewport()->framesFromLoans();
     qint64 drawnAtApply = -1;
@@ -236,10 +252,7 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
     QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
     QTest::qWait(kCheckDebounceMs / 2);
     QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
-    const QImage shown = QGuiApplication::primaryScreen()
-                             ->grabWindow(viewport()->frameWindow()->winId())
-                             .toImage()
-                             .convertToFormat(QImage::Format_RGB32);
+    const QImage shown = shownInWindow();
     // frame() draws the new program again here, on this thread: the
     // trial's frame must be that very picture (exact: single-sampled view).
     QCOMPARE(test::differingPixels(shown, frame()), 0);
@@ -253,23 +266,18 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
     QCOMPARE(viewport()->framesFromLoans(), fromLoans + 1);
     QTRY_VERIFY(!viewport()->isContextLent());
     QTest::qWait(100);
-    const QImage after = QGuiApplication::primaryScreen()
-                             ->grabWindow(viewport()->frameWindow()->winId())
-                             .toImage()
-                             .convertToFormat(QImage::Format_RGB32);
+    const QImage after = shownInWindow();
     QCOMPARE(test::differingPixels(after, lastGood), 0);
 }
 
-// A change made while the context is out to the trial (a light dragged in
-// the scene) is not lost behind the frame the trial presents: the GUI
+// A change made while the context is out to the trial (the ambient light,
+// as the Scene dock sets it) is not lost behind the frame the trial presents: the GUI
 // thread draws once the context is back, and that is what the window shows.
 void TestLiveEdit::aChangeWhileTheContextIsLentIsDrawnAfter()
 {
-    openWindow();
-    QTRY_VERIFY(live()->buildsOnWorker());
-    QVERIFY(waitForApplied());
-    QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
-                && !viewport()->isContextLent());
+    openIdleWindow();
+    if (QTest::currentTestFailed())
+        return;
     bool changedWhileLent = false;
     connect(live(), &LiveShaderController::stateChanged, this,
             [&](LiveShaderController::State state) {
@@ -285,10 +293,7 @@ void TestLiveEdit::aChangeWhileTheContextIsLentIsDrawnAfter()
     QVERIFY2(changedWhileLent, "the change was not made while the context was lent");
     QTRY_VERIFY(!viewport()->isContextLent());
     QTest::qWait(100);
-    const QImage shown = QGuiApplication::primaryScreen()
-                             ->grabWindow(viewport()->frameWindow()->winId())
-                             .toImage()
-                             .convertToFormat(QImage::Format_RGB32);
+    const QImage shown = shownInWindow();
     QCOMPARE(test::differingPixels(shown, frame()), 0);
 }
 
