@@ -13,6 +13,7 @@ PACKAGES=(
   desktop-file-utils appstream shared-mime-info libglib2.0-bin # validate the desktop files (tests/install)
   xvfb xauth
   libtinyobjloader-dev libassimp-dev libmeshoptimizer-dev
+  libgumbo-dev libarchive-dev           # shaders in HTML projects, submissions in archives (grade)
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
   ccache                                # faster rebuilds (build.sh uses it when found)
   chromium                              # opens the pages PhongLab writes (grade's report test)

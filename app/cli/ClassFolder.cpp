@@ -48,18 +48,50 @@ QString relativeTo(const QDir &dir, const QString &path)
     return dir.relativeFilePath(path);
 }
 
+// A file a shader could be read from, by its name alone (nothing is read).
+bool looksLikeShader(const QFileInfo &file)
+{
+    const QString suffix = file.suffix().toLower();
+    for (const char *s : {"vert", "vs", "vsh", "frag", "fs", "fsh", "glsl"})
+        if (suffix == QLatin1String(s))
+            return true;
+    return false;
+}
+
+// Whether `file` is the submission's own: not a symbolic link, and its real
+// path inside the submission's real folder. A student's link to a file of
+// the teacher's would otherwise be read, quoted in the report and handed
+// back with the feedback.
+bool isOwnFile(const QFileInfo &file, const QString &realFolder)
+{
+    if (file.isSymLink())
+        return false;
+    const QString real = file.canonicalFilePath();
+    return !real.isEmpty() && real.startsWith(realFolder + QLatin1Char('/'));
+}
+
 Submission readSubmission(const QFileInfo &folder)
 {
     Submission s;
     s.name = folder.fileName();
     s.folder = folder.absoluteFilePath();
     const QDir dir(s.folder);
-    QStringList vertex, fragment;
-    QDirIterator it(s.folder, QDir::Files | QDir::NoDotAndDotDot, QDirIterator::Subdirectories);
-    for (int seen = 0; it.hasNext() && seen < kMaxFilesLookedAt; ++seen) {
+    const QString realFolder = folder.canonicalFilePath();
+    QStringList vertex, fragment, refused;
+    if (folder.isSymLink())
+        refused << s.name;
+    // System: a dangling link is listed too, and refused with the others.
+    QDirIterator it(s.folder, QDir::Files | QDir::System | QDir::NoDotAndDotDot,
+                    QDirIterator::Subdirectories);
+    for (int seen = 0; !folder.isSymLink() && it.hasNext() && seen < kMaxFilesLookedAt; ++seen) {
         const QFileInfo file(it.next());
         if (file.fileName().startsWith(QLatin1Char('.')))
             continue;
+        if (!isOwnFile(file, realFolder)) {
+            if (looksLikeShader(file))
+                refused << relativeTo(dir, file.absoluteFilePath());
+            continue;
+        }
         switch (stageOf(file)) {
         case StageGuess::Vertex: vertex << file.absoluteFilePath(); break;
         case StageGuess::Fragment: fragment << file.absoluteFilePath(); break;
@@ -69,6 +101,12 @@ Submission readSubmission(const QFileInfo &folder)
     vertex.sort();
     fragment.sort();
     QStringList problems;
+    if (!refused.isEmpty()) {
+        refused.sort();
+        problems << ClassFolderWords::tr("not read: %1 (a symbolic link, or a path that leaves "
+                                         "the submission; hand in the file itself)")
+                        .arg(refused.join(QStringLiteral(", ")));
+    }
     for (const auto &[files, stage] :
          {std::pair{vertex, "vertex"}, std::pair{fragment, "fragment"}})
         if (files.size() > 1) {
@@ -79,7 +117,7 @@ Submission readSubmission(const QFileInfo &folder)
                             .arg(files.size())
                             .arg(QLatin1String(stage), names.join(QStringLiteral(", ")));
         }
-    if (vertex.isEmpty() && fragment.isEmpty())
+    if (vertex.isEmpty() && fragment.isEmpty() && refused.isEmpty())
         problems << ClassFolderWords::tr("no shader file (.vert, .frag, .vs, .fs, .glsl) in %1")
                         .arg(s.name);
     s.error = problems.join(QStringLiteral("; "));

@@ -10,6 +10,7 @@
 #include "TestPaths.h"
 
 #include <QDir>
+#include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -111,6 +112,10 @@ QString withoutSeconds(const QByteArray &csv)
     return out.join(QLatin1Char('\n'));
 }
 
+// What a file outside the class holds: it must show in no output.
+constexpr char kSecret[] = "precision highp float; // TEACHER-ONLY 7f3a9c\n"
+                           "void main() { gl_FragColor = vec4(1.0); }\n";
+
 // The class: each student a way a submission can be.
 void writeClass(const QString &root, bool everyFailure)
 {
@@ -139,6 +144,15 @@ void writeClass(const QString &root, bool everyFailure)
               fragmentWith("for (int k = 0; k < 1000000; ++k) I += 1e-9 * sin(I * float(k));"));
     writeFile(root + QStringLiteral("/grace/crash.frag"), fragmentWith("// PHONGLAB_FAULT: crash"));
     writeFile(root + QStringLiteral("/ivan/hungry.frag"), fragmentWith("// PHONGLAB_FAULT: oom"));
+    // mallory: links to a file of the teacher's (outside the class) and a
+    // folder that is itself a link; neither may be read.
+    const QString secret = root + QStringLiteral("/../teacher-secret.frag");
+    writeFile(secret, kSecret);
+    QDir().mkpath(root + QStringLiteral("/mallory"));
+    QFile::link(secret, root + QStringLiteral("/mallory/phong.frag"));
+    QDir().mkpath(root + QStringLiteral("/../outside"));
+    writeFile(root + QStringLiteral("/../outside/phong.frag"), kSecret);
+    QFile::link(root + QStringLiteral("/../outside"), root + QStringLiteral("/trudy"));
 }
 
 ProcessRun grade(const QString &classRoot, const QString &out, const QStringList &more = {})
@@ -203,7 +217,7 @@ private slots:
         QVERIFY(csv.startsWith("submission,scene,verdict,psnr_db,max_error,bad_fraction,key,also,"
                                "file,line,equation,bindings,seconds,mistakes\n"));
         const QMap<QString, QStringList> rows = rowsBySubmission(csv);
-        QCOMPARE(rows.size(), 10);
+        QCOMPARE(rows.size(), 12);
         const auto verdict = [&](const QString &who) { return rows.value(who).value(2); };
         const auto column = [&](const QString &who, int c) { return rows.value(who).value(c); };
         QCOMPARE(verdict(QStringLiteral("alice")), QStringLiteral("pass"));
@@ -231,14 +245,32 @@ private slots:
         QCOMPARE(verdict(QStringLiteral("grace")), QStringLiteral("crash"));
         QCOMPARE(verdict(QStringLiteral("ivan")), QStringLiteral("crash"));
 
+        for (const char *who : {"mallory", "trudy"})
+            QCOMPARE(verdict(QLatin1String(who)), QStringLiteral("error"));
+
         // The hostile name, read back whole: CSV quoting, and the formula defused.
         QCOMPARE(verdict(QLatin1Char('\'') + kHostileName), QStringLiteral("fail"));
+    }
+
+    // Issue 42, C: a link to a file of the teacher's, or a submission that
+    // is a link, is never read: its text is in no table, page or log.
+    void noFileOutsideTheClassIsRead()
+    {
+        QVERIFY(!m_run.out.contains("TEACHER-ONLY") && !m_run.err.contains("TEACHER-ONLY"));
+        QDirIterator it(m_out, QDir::Files, QDirIterator::Subdirectories);
+        int files = 0;
+        while (it.hasNext()) {
+            const QString path = it.next();
+            ++files;
+            QVERIFY2(!readFile(path).contains("TEACHER-ONLY"), qPrintable(path));
+        }
+        QVERIFY(files >= 3); // grades.csv, grades.json, report.html at least
     }
 
     void theRunEndsSoonAfterTheTimeout()
     {
         // One shader that never ends must not hold up the class: the run
-        // ends within its timeout plus a margin (references, 10 children
+        // ends within its timeout plus a margin (references, 12 children
         // on 2 jobs).
         QVERIFY2(m_runMs < (kTimeoutS + 45) * 1000, qPrintable(QString::number(m_runMs)));
     }
@@ -248,7 +280,7 @@ private slots:
         const QJsonObject json =
             QJsonDocument::fromJson(readFile(m_out + QStringLiteral("/grades.json"))).object();
         const QJsonArray rows = json.value(QStringLiteral("rows")).toArray();
-        QCOMPARE(rows.size(), 10);
+        QCOMPARE(rows.size(), 12);
         QMap<QString, QJsonObject> by;
         for (const QJsonValue &r : rows)
             by[r.toObject().value(QStringLiteral("submission")).toString()] = r.toObject();
@@ -276,6 +308,16 @@ private slots:
                  qPrintable(daveError));
         QCOMPARE(by[QStringLiteral("frank")].value(QStringLiteral("verdict")).toString(),
                  QStringLiteral("timeout"));
+        for (const char *who : {"mallory", "trudy"}) {
+            const QString error = by[QLatin1String(who)]
+                                      .value(QStringLiteral("errors"))
+                                      .toArray()
+                                      .first()
+                                      .toObject()
+                                      .value(QStringLiteral("message"))
+                                      .toString();
+            QVERIFY2(error.contains(QStringLiteral("symbolic link")), qPrintable(error));
+        }
     }
 
     void stdoutTableNamesEveryStudent()
@@ -328,7 +370,7 @@ private slots:
         QList<int> ranks;
         for (auto it = rank.globalMatch(dom); it.hasNext();)
             ranks << it.next().captured(1).toInt();
-        QCOMPARE(ranks.size(), 10);
+        QCOMPARE(ranks.size(), 12);
         QVERIFY(std::is_sorted(ranks.begin(), ranks.end()));
         QCOMPARE(ranks.front(), 0);
         QCOMPARE(ranks.back(), 4);
