@@ -1,0 +1,32 @@
+#pragma once
+#include "JsShaders.h"
+
+#include <QByteArray>
+#include <QString>
+#include <vector>
+
+namespace phonglab {
+
+// Where shaders sit in a page and its scripts (issue 42, A), read with a
+// real HTML5 parser (gumbo): <script> elements of any type and id, hidden
+// <textarea>s, and the JavaScript of inline scripts.
+
+// A text that may be a shader, before its stage is told.
+struct FoundText {
+    QByteArray value;
+    std::vector<qsizetype> from; // the file's offset of each byte of value
+    QString name;                // an id, a variable, a property; empty: none
+    qsizetype begin = 0;         // the file's bytes that hold it
+    qsizetype end = 0;
+    bool writable = false; // those bytes are the value itself
+    QString notWritable;   // why not
+};
+
+std::vector<FoundText> shaderTextsInHtml(const QByteArray &html);
+// In JavaScript that starts at `base` in its file.
+std::vector<FoundText> foundInJs(const QByteArray &js, qsizetype base);
+// The program calls of a page's inline scripts or a script file; literal
+// offsets are the file's.
+std::vector<JsProgramCall> programCallsInFile(const QString &path);
+
+} // namespace phonglab

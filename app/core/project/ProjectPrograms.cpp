@@ -1,0 +1,244 @@
+#include "ProjectPrograms.h"
+
+#include "HtmlShaders.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QDirIterator>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include <algorithm>
+
+namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ProjectProgramsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ProjectPrograms)
+};
+
+namespace {
+
+constexpr int kMaxProjectFiles = 2000; // a node_modules folder is not a project
+
+bool isProjectFile(const QFileInfo &file)
+{
+    static const QStringList suffixes{
+        QStringLiteral("html"), QStringLiteral("htm"),  QStringLiteral("xhtml"),
+        QStringLiteral("js"),   QStringLiteral("mjs"),  QStringLiteral("cjs"),
+        QStringLiteral("vert"), QStringLiteral("frag"), QStringLiteral("vs"),
+        QStringLiteral("fs"),   QStringLiteral("vsh"),  QStringLiteral("fsh"),
+        QStringLiteral("glsl")};
+    const QString name = file.fileName().toLower();
+    // A library's bundle holds its own shaders (three.module.js), not the student's.
+    if (name.endsWith(QLatin1String(".min.js")) || name.startsWith(QLatin1String("three."))
+        || name.startsWith(QLatin1String("webgl-utils")) || name.startsWith(QLatin1String("twgl")))
+        return false;
+    return suffixes.contains(file.suffix().toLower());
+}
+
+QStringList projectFiles(const QString &path, QStringList *notes)
+{
+    const QFileInfo info(path);
+    if (info.isFile())
+        return {info.absoluteFilePath()};
+    const QString real = info.canonicalFilePath();
+    QStringList files;
+    QDirIterator it(info.absoluteFilePath(), QDir::Files | QDir::System | QDir::NoDotAndDotDot,
+                    QDirIterator::Subdirectories);
+    for (int seen = 0; it.hasNext() && seen < kMaxProjectFiles; ++seen) {
+        const QFileInfo file(it.next());
+        const QString relative = QDir(info.absoluteFilePath()).relativeFilePath(file.filePath());
+        if (relative.contains(QLatin1String("node_modules/"))
+            || relative.startsWith(QLatin1Char('.')) || relative.contains(QLatin1String("/."))
+            || !isProjectFile(file))
+            continue;
+        if (file.isSymLink() || !file.canonicalFilePath().startsWith(real + QLatin1Char('/'))) {
+            *notes << ProjectProgramsWords::tr("%1: not read (a symbolic link, or a path that "
+                                               "leaves the project)")
+                          .arg(relative);
+            continue;
+        }
+        files << file.absoluteFilePath();
+    }
+    files.sort();
+    return files;
+}
+
+// A name without its stage words: "phong-vs" and "phong-fs" are both
+// "phong", "vertex-shader" and "fragment-shader" both "".
+QString stemOf(const QString &name)
+{
+    QString n = QFileInfo(name).fileName();
+    static const QRegularExpression shaderSuffix(
+        QStringLiteral("\\.(vert|frag|vs|fs|vsh|fsh|glsl)$"),
+        QRegularExpression::CaseInsensitiveOption);
+    n.remove(shaderSuffix);
+    // camelCase and separators into words
+    n.replace(QRegularExpression(QStringLiteral("([a-z0-9])([A-Z])")), QStringLiteral("\\1_\\2"));
+    QStringList kept;
+    static const QStringList stageWords{
+        QStringLiteral("vertex"),  QStringLiteral("fragment"),   QStringLiteral("vert"),
+        QStringLiteral("frag"),    QStringLiteral("vs"),         QStringLiteral("fs"),
+        QStringLiteral("vsh"),     QStringLiteral("fsh"),        QStringLiteral("shader"),
+        QStringLiteral("source"),  QStringLiteral("src"),        QStringLiteral("glsl"),
+        QStringLiteral("v"),       QStringLiteral("f"),          QStringLiteral("x"),
+        QStringLiteral("text"),    QStringLiteral("code"),       QStringLiteral("pixel"),
+        QStringLiteral("3d"),      QStringLiteral("2d"),         QStringLiteral("vshader"),
+        QStringLiteral("fshader"), QStringLiteral("vertshader"), QStringLiteral("fragshader")};
+    for (const QString &word :
+         n.split(QRegularExpression(QStringLiteral("[^A-Za-z0-9]+")), Qt::SkipEmptyParts))
+        if (!stageWords.contains(word.toLower()))
+            kept << word.toLower();
+    return kept.join(QLatin1Char('_'));
+}
+
+bool mentionsLight(const QByteArray &code)
+{
+    const QByteArray lower = code.toLower();
+    for (const char *word : {"light", "ambientproduct", "diffuseproduct", "specularproduct",
+                             "shininess", "lambert", "phong"})
+        if (lower.contains(word))
+            return true;
+    return false;
+}
+
+// The shader a call's reference names.
+int resolve(const std::vector<ProjectShader> &shaders, const JsShaderRef &ref, const QString &file)
+{
+    for (std::size_t i = 0; i < shaders.size(); ++i) {
+        const ProjectShader &s = shaders[i];
+        if (ref.literalAt) {
+            if (s.file == file && s.begin <= *ref.literalAt
+                && *ref.literalAt < std::max(s.end, s.begin + 1))
+                return int(i);
+            continue;
+        }
+        if (ref.name.isEmpty())
+            continue;
+        // By id or variable; a file by the end of its path ("shaders/phong.vert").
+        if (s.key == ref.name
+            || (QFileInfo(s.file).fileName() == s.key
+                && QDir::fromNativeSeparators(s.file).endsWith(QLatin1Char('/') + ref.name)))
+            return int(i);
+    }
+    for (std::size_t i = 0; i < shaders.size(); ++i) // a file named by its file name alone
+        if (QFileInfo(shaders[i].file).fileName() == QFileInfo(ref.name).fileName()
+            && QFileInfo(shaders[i].file).fileName() == shaders[i].key)
+            return int(i);
+    return -1;
+}
+
+QString programName(const ProjectShader &vertex, const ProjectShader &fragment)
+{
+    const QString v = stemOf(vertex.key);
+    const QString f = stemOf(fragment.key);
+    if (!v.isEmpty() && v == f)
+        return v;
+    if (!f.isEmpty() && v.isEmpty())
+        return f;
+    if (!v.isEmpty() && f.isEmpty())
+        return v;
+    if (!v.isEmpty())
+        return v + QLatin1Char('+') + f;
+    return QFileInfo(fragment.file).completeBaseName();
+}
+
+} // namespace
+
+Project readProject(const QString &path)
+{
+    Project project;
+    project.path = path;
+    if (!QFileInfo::exists(path)) {
+        project.error = ProjectProgramsWords::tr("%1: no such file or folder").arg(path);
+        return project;
+    }
+    std::vector<ProjectShader> shaders;
+    const QStringList files = projectFiles(path, &project.notes);
+    for (const QString &file : files)
+        for (ProjectShader &s : shadersInFile(file))
+            shaders.push_back(std::move(s));
+    std::vector<bool> taken(shaders.size(), false);
+    const auto pair = [&](int v, int f) {
+        if (v < 0 || f < 0 || v == f || taken[std::size_t(v)] || taken[std::size_t(f)]
+            || shaders[std::size_t(v)].stage != ProjectStage::Vertex
+            || shaders[std::size_t(f)].stage != ProjectStage::Fragment)
+            return;
+        taken[std::size_t(v)] = taken[std::size_t(f)] = true;
+        ProjectProgram program;
+        program.vertex = shaders[std::size_t(v)];
+        program.fragment = shaders[std::size_t(f)];
+        program.name = programName(program.vertex, program.fragment);
+        program.lit = mentionsLight(program.vertex.code) || mentionsLight(program.fragment.code);
+        project.programs.push_back(std::move(program));
+    };
+    // 1. The project's own calls.
+    for (const QString &file : files)
+        for (const JsProgramCall &call : programCallsInFile(file))
+            pair(resolve(shaders, call.vertex, file), resolve(shaders, call.fragment, file));
+    // 2. Names that differ only in a stage word (non-empty stems).
+    for (std::size_t v = 0; v < shaders.size(); ++v)
+        for (std::size_t f = 0; f < shaders.size(); ++f)
+            if (!taken[v] && !taken[f] && !stemOf(shaders[v].key).isEmpty()
+                && stemOf(shaders[v].key) == stemOf(shaders[f].key))
+                pair(int(v), int(f));
+    // 3. The one vertex and one fragment shader left.
+    std::vector<int> vertices, fragments;
+    for (std::size_t i = 0; i < shaders.size(); ++i)
+        if (!taken[i])
+            (shaders[i].stage == ProjectStage::Vertex ? vertices : fragments).push_back(int(i));
+    if (vertices.size() == 1 && fragments.size() == 1)
+        pair(vertices.front(), fragments.front());
+    for (std::size_t i = 0; i < shaders.size(); ++i)
+        if (!taken[i])
+            project.notes << ProjectProgramsWords::tr("%1 (%2): a %3 shader no program takes")
+                                 .arg(QFileInfo(shaders[i].file).fileName(), shaders[i].key,
+                                      shaders[i].stage == ProjectStage::Vertex
+                                          ? ProjectProgramsWords::tr("vertex")
+                                          : ProjectProgramsWords::tr("fragment"));
+    // Unique names, in a stable order.
+    std::stable_sort(
+        project.programs.begin(), project.programs.end(),
+        [](const ProjectProgram &a, const ProjectProgram &b) { return a.name < b.name; });
+    for (std::size_t i = 1; i < project.programs.size(); ++i)
+        if (project.programs[i].name == project.programs[i - 1].name)
+            project.programs[i].name += QStringLiteral("-%1").arg(i + 1);
+    for (const ProjectProgram &p : project.programs)
+        if (!p.lit)
+            project.notes << ProjectProgramsWords::tr(
+                                 "%1: not judged, it lights nothing (no light, "
+                                 "material product or shininess in it)")
+                                 .arg(p.name);
+    if (shaders.empty())
+        project.error = ProjectProgramsWords::tr(
+                            "%1: no shader found (no <script> or <textarea> with one, no string "
+                            "in the JavaScript, no .vert/.frag/.glsl file)")
+                            .arg(path);
+    return project;
+}
+
+std::vector<const ProjectProgram *> litPrograms(const Project &project)
+{
+    std::vector<const ProjectProgram *> lit;
+    for (const ProjectProgram &p : project.programs)
+        if (p.lit)
+            lit.push_back(&p);
+    return lit;
+}
+
+const ProjectProgram *programNamed(const Project &project, const QString &name, QString *error)
+{
+    QStringList names;
+    for (const ProjectProgram &p : project.programs) {
+        if (p.name == name)
+            return &p;
+        names << p.name;
+    }
+    *error = ProjectProgramsWords::tr("%1: no program named %2 (there are: %3)")
+                 .arg(project.path, name,
+                      names.isEmpty() ? QStringLiteral("none") : names.join(QStringLiteral(", ")));
+    return nullptr;
+}
+
+} // namespace phonglab

@@ -1,0 +1,41 @@
+#pragma once
+#include "ProjectShader.h"
+
+#include <QString>
+#include <QStringList>
+#include <vector>
+
+namespace phonglab {
+
+// A WebGL project's programs: its shaders paired as its own calls pair them
+// (initShaders, createProgramFromScripts, ShaderMaterial, ...), else by
+// names that differ only in a stage word (phong.vert + phong.frag,
+// "phong-vs" + "phong-fs"), else the one vertex and one fragment shader
+// left (issue 42, A).
+
+struct ProjectProgram {
+    QString name; // the ids' or file names' common stem; the page's name where they have none
+    ProjectShader vertex;
+    ProjectShader fragment;
+    // Whether it lights anything: a program that names no light, no
+    // material product and no shininess (a grid, a skybox) is not judged.
+    bool lit = true;
+};
+
+struct Project {
+    QString path; // a file or a folder, as given
+    std::vector<ProjectProgram> programs;
+    // Shaders no program takes, unlit programs skipped, files not read.
+    QStringList notes;
+    QString error; // nothing could be read at all
+};
+
+// Reads a project: one page or script, or a folder (its .html, .js and
+// shader files, below it too; links and paths leaving it are not read).
+Project readProject(const QString &path);
+
+// The lit programs, or the one named `name` (error: none such, with the names there are).
+std::vector<const ProjectProgram *> litPrograms(const Project &project);
+const ProjectProgram *programNamed(const Project &project, const QString &name, QString *error);
+
+} // namespace phonglab

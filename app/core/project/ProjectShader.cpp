@@ -1,0 +1,187 @@
+#include "ProjectShader.h"
+
+#include "HtmlShaders.h"
+#include "JsShaders.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/Language).
+struct ProjectShaderWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::ProjectShader)
+};
+
+namespace {
+
+constexpr qint64 kMaxProjectFileBytes = 8 * 1024 * 1024; // a page or script, not a data file
+
+bool suffixIn(const QString &path, std::initializer_list<const char *> suffixes)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    for (const char *s : suffixes)
+        if (suffix == QLatin1String(s))
+            return true;
+    return false;
+}
+
+// GLSL without its comments: a comment naming gl_Position decides nothing.
+QByteArray withoutComments(const QByteArray &text)
+{
+    QByteArray out;
+    out.reserve(text.size());
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            while (i < text.size() && text[i] != '\n')
+                ++i;
+        } else if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            const qsizetype end = text.indexOf("*/", i + 2);
+            i = end < 0 ? text.size() : end + 1;
+            continue;
+        }
+        if (i < text.size())
+            out += text[i];
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<ProjectStage> stageOfShaderText(const QByteArray &text)
+{
+    const QByteArray code = withoutComments(text);
+    if (!code.contains("main"))
+        return std::nullopt;
+    if (code.contains("gl_Position"))
+        return ProjectStage::Vertex;
+    static const QRegularExpression out(QStringLiteral("\\bout\\s+(\\w+\\s+)*[iu]?vec4\\b"));
+    if (code.contains("gl_FragColor") || code.contains("gl_FragData")
+        || out.match(QString::fromUtf8(code)).hasMatch())
+        return ProjectStage::Fragment;
+    return std::nullopt;
+}
+
+namespace {
+
+QByteArray laidOutAsInFile(const QByteArray &file, const QByteArray &value,
+                           const std::vector<qsizetype> &from, int *firstLine)
+{
+    // Line starts of the file, for an offset's line and column.
+    std::vector<qsizetype> lineStarts{0};
+    for (qsizetype i = 0; i < file.size(); ++i)
+        if (file[i] == '\n')
+            lineStarts.push_back(i + 1);
+    const auto lineOf = [&](qsizetype offset) {
+        return int(std::upper_bound(lineStarts.begin(), lineStarts.end(), offset)
+                   - lineStarts.begin());
+    };
+    QByteArray code;
+    int codeLine = 1;
+    bool lineStart = true;
+    *firstLine = 0;
+    for (qsizetype i = 0; i < value.size(); ++i) {
+        const char c = value[i];
+        if (lineStart && c != '\n' && i < qsizetype(from.size())) {
+            const qsizetype at = from[std::size_t(i)];
+            const int line = lineOf(at);
+            if (*firstLine == 0)
+                *firstLine = line;
+            // Blank lines up to the file's line, unless the line before
+            // continues into this one (a backslash ends it).
+            const bool continued = code.endsWith("\\\n");
+            while (codeLine < line && !continued) {
+                code += '\n';
+                ++codeLine;
+            }
+            const qsizetype column = at - lineStarts[std::size_t(line - 1)];
+            code += QByteArray(column, ' ');
+        }
+        lineStart = c == '\n';
+        if (c == '\n')
+            ++codeLine;
+        code += c;
+    }
+    if (*firstLine == 0)
+        *firstLine = 1;
+    return code;
+}
+
+void addFound(std::vector<ProjectShader> &out, const QString &path, const QByteArray &file,
+              const FoundText &text)
+{
+    const std::optional<ProjectStage> stage = stageOfShaderText(text.value);
+    if (!stage)
+        return;
+    ProjectShader shader;
+    shader.file = path;
+    shader.stage = *stage;
+    shader.code = laidOutAsInFile(file, text.value, text.from, &shader.line);
+    shader.key =
+        text.name.isEmpty() ? ProjectShaderWords::tr("line %1").arg(shader.line) : text.name;
+    shader.begin = text.begin;
+    shader.end = text.end;
+    shader.writable = text.writable;
+    shader.notWritable = text.notWritable;
+    for (const ProjectShader &other : out)
+        if (other.key == shader.key) // two texts under one name: the later by its line
+            shader.key = ProjectShaderWords::tr("line %1").arg(shader.line);
+    out.push_back(std::move(shader));
+}
+
+} // namespace
+
+std::vector<ProjectShader> shadersInFile(const QString &path)
+{
+    std::vector<ProjectShader> out;
+    QFile f(path);
+    if (f.size() > kMaxProjectFileBytes || !f.open(QIODevice::ReadOnly))
+        return out;
+    const QByteArray file = f.readAll();
+    std::vector<FoundText> texts;
+    if (suffixIn(path, {"html", "htm", "xhtml"}))
+        texts = shaderTextsInHtml(file);
+    else if (suffixIn(path, {"js", "mjs", "cjs", "ts"}))
+        texts = foundInJs(file, 0);
+    else if (suffixIn(path, {"vert", "frag", "vs", "fs", "vsh", "fsh", "glsl"})) {
+        FoundText whole;
+        whole.value = file;
+        whole.from.resize(std::size_t(file.size()));
+        for (qsizetype i = 0; i < file.size(); ++i)
+            whole.from[std::size_t(i)] = i;
+        whole.name = QFileInfo(path).fileName();
+        whole.begin = 0;
+        whole.end = file.size();
+        whole.writable = true;
+        texts.push_back(std::move(whole));
+    }
+    for (const FoundText &text : texts)
+        addFound(out, path, file, text);
+    return out;
+}
+
+QString shaderLocator(const ProjectShader &shader)
+{
+    return shader.file + QLatin1Char('#') + shader.key;
+}
+
+bool isShaderLocator(const QString &path)
+{
+    const qsizetype hash = path.lastIndexOf(QLatin1Char('#'));
+    return hash > 0 && !QFileInfo(path).isFile() && QFileInfo(path.left(hash)).isFile();
+}
+
+Result<ProjectShader> shaderAtLocator(const QString &locator)
+{
+    const qsizetype hash = locator.lastIndexOf(QLatin1Char('#'));
+    const QString file = locator.left(hash);
+    const QString key = locator.mid(hash + 1);
+    for (ProjectShader &shader : shadersInFile(file))
+        if (shader.key == key)
+            return std::move(shader);
+    return fail(ProjectShaderWords::tr("%1: no shader named %2 in it").arg(file, key));
+}
+
+} // namespace phonglab
