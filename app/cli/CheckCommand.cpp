@@ -7,7 +7,10 @@
 #include "SceneOverrides.h"
 #include "SceneStages.h"
 #include "core/SceneJson.h"
+#include "core/project/ProjectPrograms.h"
 #include "render/QtImages.h"
+
+#include <QFileInfo>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -40,6 +43,8 @@ struct CheckArgs {
     SceneOverrides overrides; // --bind, --define, --precision over the scene's
     std::optional<PhongEquation> equation;
     QString drawOnlyPath; // the hidden --draw-only OUT.png of grade's child
+    QString projectPath;  // --project: a WebGL project's page, script or folder
+    QString programName;  // --program: which of its programs
 };
 
 const QString &synopsis()
@@ -47,6 +52,7 @@ const QString &synopsis()
     static const QString text =
         CheckCommandWords::tr("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
                               "[--shading NAME] [--size WxH]\n"
+                              "                      [--project PATH [--program NAME]]\n"
                               "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
                               "[--equation slide|guarded]\n"
                               "                      [--define NAME=VALUE ...] "
@@ -68,6 +74,13 @@ QString helpText()
               "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
               "  --fragment FILE     fragment shader instead of the scene's or the shading "
               "method's\n"
+              "  --project PATH      a WebGL project (a page, a script or a folder): its shaders "
+              "are found in\n"
+              "                      script elements, textareas, JavaScript strings or files of "
+              "their own,\n"
+              "                      and paired as its calls pair them\n"
+              "  --program NAME      which of the project's programs, where it has several that "
+              "light\n"
               "  --shading NAME      shading method instead of the scene's; one of %1\n"
               "  --size WxH          image size in pixels, default 800x600\n"
               "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), "
@@ -130,6 +143,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     const SceneOverrideOptions overrides;
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
+    const QCommandLineOption project(QStringLiteral("project"), QString(), QStringLiteral("path"));
+    const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
     QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
     drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
     parser.addPositionalArgument(QStringLiteral("scene"),
@@ -140,7 +155,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
             parseOrExit(parser, arguments,
                         {help,
                          QList<QCommandLineOption>{size, vertex, fragment, shading, tolerance, json,
-                                                   diff, equation, drawOnly}
+                                                   diff, equation, drawOnly, project, program}
                              + overrides.all(),
                          SceneOverrideOptions::repeatable()},
                         synopsis(), helpText()))
@@ -174,6 +189,13 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
         return usage(CheckCommandWords::tr("--diff: missing the output file"));
     args.vertexPath = parser.value(vertex);
     args.fragmentPath = parser.value(fragment);
+    args.projectPath = parser.value(project);
+    args.programName = parser.value(program);
+    if (!args.projectPath.isEmpty() && (parser.isSet(vertex) || parser.isSet(fragment)))
+        return usage(CheckCommandWords::tr(
+            "--project takes both stages from the project; leave out --vertex and --fragment"));
+    if (parser.isSet(program) && args.projectPath.isEmpty())
+        return usage(CheckCommandWords::tr("--program names a program of --project"));
     args.json = parser.isSet(json);
     args.diffPath = parser.value(diff);
     args.drawOnlyPath = parser.value(drawOnly);
@@ -189,11 +211,63 @@ CheckInput inputOf(const CheckArgs &args)
             args.size};
 }
 
+// --project: the program's two stages as locators into the project's
+// files, and what the project says beside (unlit programs left out). An
+// error where no program can be chosen.
+Result<QStringList> chooseProjectProgram(CheckArgs *args)
+{
+    const Project project = readProject(args->projectPath);
+    if (!project.error.isEmpty())
+        return fail(project.error);
+    const ProjectProgram *chosen = nullptr;
+    if (!args->programName.isEmpty()) {
+        QString error;
+        chosen = programNamed(project, args->programName, &error);
+        if (!chosen)
+            return fail(error);
+    } else {
+        const std::vector<const ProjectProgram *> lit = litPrograms(project);
+        QStringList names;
+        for (const ProjectProgram *p : lit)
+            names << p->name;
+        if (lit.size() != 1)
+            return fail(lit.empty() ? CheckCommandWords::tr("%1: no program that lights anything (%2)")
+                                          .arg(args->projectPath, project.notes.join(QStringLiteral("; ")))
+                                    : CheckCommandWords::tr("%1: %2 programs light the scene (%3); "
+                                                            "choose one with --program NAME")
+                                          .arg(args->projectPath)
+                                          .arg(lit.size())
+                                          .arg(names.join(QStringLiteral(", "))));
+        chosen = lit.front();
+    }
+    args->vertexPath = shaderLocator(chosen->vertex);
+    args->fragmentPath = shaderLocator(chosen->fragment);
+    QStringList notes = project.notes;
+    notes.prepend(CheckCommandWords::tr("program %1: %2 and %3")
+                      .arg(chosen->name, QFileInfo(chosen->vertex.file).fileName() + QLatin1Char('#')
+                                             + chosen->vertex.key,
+                           QFileInfo(chosen->fragment.file).fileName() + QLatin1Char('#')
+                               + chosen->fragment.key));
+    return notes;
+}
+
 // Everything up to the verdict; `yours` receives the render for --diff.
-CheckOutcome runCheckOn(const CheckArgs &args, const Scene &scene, CheckReference *reference,
+CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *reference,
                         QImage *yours)
 {
+    QStringList projectNotes;
+    if (!args.projectPath.isEmpty()) {
+        const Result<QStringList> chosen = chooseProjectProgram(&args);
+        if (!chosen) {
+            CheckOutcome failed;
+            failed.errors.push_back(inputError(args.projectPath, chosen.error()));
+            printErrLine(failed.errors.back().format());
+            return failed;
+        }
+        projectNotes = *chosen;
+    }
     CheckDrawing drawing = drawForCheck(inputOf(args), scene);
+    drawing.outcome.notes = projectNotes + drawing.outcome.notes;
     for (const ShaderDiagnostic &d : drawing.compilerMessages)
         if (d.isError() || !args.json)
             printErrLine(d.format());

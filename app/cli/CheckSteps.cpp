@@ -4,6 +4,7 @@
 #include "core/ImageMetrics.h"
 #include "core/check/BindingConflicts.h"
 #include "core/check/CoursePrelude.h"
+#include "core/project/ProjectShader.h"
 #include "mesh/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
@@ -131,10 +132,16 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     const StageFiles files =
         chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
     // A stage that cannot be read is that file's error (check --json's "file").
-    for (const QString &path : {files.vertex, files.fragment})
+    for (const QString &path : {files.vertex, files.fragment}) {
+        if (isShaderLocator(path)) {
+            if (const Result<ProjectShader> shader = shaderAtLocator(path); !shader)
+                return fail(path.left(path.lastIndexOf(QLatin1Char('#'))), shader.error());
+            continue;
+        }
         if (QFile file(path); !file.open(QIODevice::ReadOnly))
             return fail(path,
                         CheckStepsWords::tr("cannot read shader: %1").arg(file.errorString()));
+    }
     const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
     if (!built)
         return fail(QString(), built.error());

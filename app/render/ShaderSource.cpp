@@ -1,6 +1,7 @@
 #include "ShaderSource.h"
 
 #include "core/check/ShaderDialect.h"
+#include "core/project/ProjectShader.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -15,6 +16,14 @@ struct ShaderSourceWords {
 
 Result<ShaderSource> ShaderSource::fromFile(const QString &path)
 {
+    // "index.html#fragment-shader": a shader inside a WebGL project's
+    // file, laid out so its lines are the file's, reported under the file.
+    if (isShaderLocator(path)) {
+        Result<ProjectShader> shader = shaderAtLocator(path);
+        if (!shader)
+            return fail(shader.error());
+        return ShaderSource{shader->file, std::move(shader->code)};
+    }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return fail(

@@ -84,12 +84,14 @@ bool usesWord(const QString &code, const QString &word)
     return QRegularExpression(QStringLiteral("\\b%1\\b").arg(word)).match(code).hasMatch();
 }
 
-// A global declaration of `name` by the source itself (uniform, attribute,
-// in, or a #define of that name).
+// A declaration of `name` by the source itself (uniform, attribute, in, a
+// #define of that name, or a variable of its own: `mat3 normalMatrix = ...`
+// in main() is no three.js built-in).
 bool declares(const QString &code, const QString &name)
 {
     const QRegularExpression declared(
-        QStringLiteral(R"((?:\b(?:uniform|attribute|in)\b[^;{}]*\b%1\b)|(?:#\s*define\s+%1\b))")
+        QStringLiteral(R"((?:\b(?:uniform|attribute|in)\b[^;{}]*\b%1\b)|(?:#\s*define\s+%1\b))"
+                       R"(|(?:\b(?:[biu]?vec[234]|mat[234](?:x[234])?|float|u?int|bool)\s+%1\b))")
             .arg(name));
     return declared.match(code).hasMatch();
 }
