@@ -1,5 +1,7 @@
 #include "ClassFolder.h"
 
+#include "core/project/ProjectPrograms.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QDirIterator>
@@ -70,7 +72,16 @@ bool isOwnFile(const QFileInfo &file, const QString &realFolder)
     return !real.isEmpty() && real.startsWith(realFolder + QLatin1Char('/'));
 }
 
-Submission readSubmission(const QFileInfo &folder)
+bool isPageOrScript(const QFileInfo &file)
+{
+    const QString suffix = file.suffix().toLower();
+    for (const char *s : {"html", "htm", "xhtml", "js", "mjs"})
+        if (suffix == QLatin1String(s))
+            return true;
+    return false;
+}
+
+Submission readSubmission(const QFileInfo &folder, bool *isProject)
 {
     Submission s;
     s.name = folder.fileName();
@@ -92,6 +103,8 @@ Submission readSubmission(const QFileInfo &folder)
                 refused << relativeTo(dir, file.absoluteFilePath());
             continue;
         }
+        if (isPageOrScript(file))
+            *isProject = true;
         switch (stageOf(file)) {
         case StageGuess::Vertex: vertex << file.absoluteFilePath(); break;
         case StageGuess::Fragment: fragment << file.absoluteFilePath(); break;
@@ -120,12 +133,47 @@ Submission readSubmission(const QFileInfo &folder)
     if (vertex.isEmpty() && fragment.isEmpty() && refused.isEmpty())
         problems << ClassFolderWords::tr("no shader file (.vert, .frag, .vs, .fs, .glsl) in %1")
                         .arg(s.name);
+    if (vertex.size() > 1 || fragment.size() > 1)
+        *isProject = true; // a Gouraud and a Phong pair, say
+    if (!refused.isEmpty())
+        *isProject = false; // refused whole: nothing more of it is read
     s.error = problems.join(QStringLiteral("; "));
     if (s.error.isEmpty()) {
         s.vertex = vertex.value(0);
         s.fragment = fragment.value(0);
     }
     return s;
+}
+
+// A submission read as a WebGL project: one per program that lights. Where
+// none does, the files read plainly say more (two fragment shaders and no
+// vertex shader), else the project says why.
+std::vector<Submission> readProjectSubmission(const Submission &plain)
+{
+    const Project project = readProject(plain.folder);
+    const std::vector<const ProjectProgram *> lit = litPrograms(project);
+    if (lit.empty()) {
+        Submission s = plain;
+        if (s.error.isEmpty() && s.vertex.isEmpty() && s.fragment.isEmpty())
+            s.error = project.error.isEmpty()
+                ? ClassFolderWords::tr("no program that lights anything (%1)")
+                      .arg(project.notes.join(QStringLiteral("; ")))
+                : project.error;
+        s.notes = project.notes;
+        return {s};
+    }
+    std::vector<Submission> programs;
+    for (const ProjectProgram *p : lit) {
+        Submission s;
+        s.name = plain.name;
+        s.folder = plain.folder;
+        s.program = p->name;
+        s.vertex = shaderLocator(p->vertex);
+        s.fragment = shaderLocator(p->fragment);
+        s.notes = project.notes;
+        programs.push_back(std::move(s));
+    }
+    return programs;
 }
 
 } // namespace
@@ -145,11 +193,22 @@ ClassFolder readClassFolder(const QString &path)
     }
     const QFileInfoList folders =
         QDir(path).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::NoSort);
-    for (const QFileInfo &folder : folders)
-        if (!folder.fileName().startsWith(QLatin1Char('.')))
-            out.submissions.push_back(readSubmission(folder));
+    for (const QFileInfo &folder : folders) {
+        if (folder.fileName().startsWith(QLatin1Char('.')))
+            continue;
+        bool isProject = false;
+        Submission plain = readSubmission(folder, &isProject);
+        if (!isProject) {
+            out.submissions.push_back(std::move(plain));
+            continue;
+        }
+        for (Submission &s : readProjectSubmission(plain))
+            out.submissions.push_back(std::move(s));
+    }
     std::sort(out.submissions.begin(), out.submissions.end(),
-              [](const Submission &a, const Submission &b) { return a.name < b.name; });
+              [](const Submission &a, const Submission &b) {
+                  return std::pair(a.name, a.program) < std::pair(b.name, b.program);
+              });
     if (out.submissions.empty())
         out.error = ClassFolderWords::tr(
                         "%1: no submission folders in it (one subfolder per student expected)")

@@ -1,5 +1,6 @@
 #pragma once
 #include <QString>
+#include <QStringList>
 #include <vector>
 
 namespace phonglab::cli {
@@ -10,7 +11,10 @@ namespace phonglab::cli {
 // (.vert .vs .vsh for the vertex stage, .frag .fs .fsh for the fragment
 // stage) and, for .glsl, by whether the text writes gl_Position. Files are
 // looked for in the subfolder and the folders below it (an unpacked archive
-// often adds one level).
+// often adds one level). A subfolder with pages or scripts (.html, .js), or
+// with more than one file for a stage, is read as a WebGL project
+// (core/project): each program in it that lights is a submission of its
+// own, by the same name, with its program's name.
 
 struct Submission {
     QString name;     // the subfolder's name
@@ -18,10 +22,15 @@ struct Submission {
     QString vertex;   // absolute; empty: the method's shipped vertex shader
     QString fragment; // absolute; empty: the method's shipped fragment shader
     QString error;    // why it cannot be checked (two files for one stage, no shader at all)
+    // A WebGL project's program (issue 42): its name; the stages are then
+    // "FILE#KEY" locators into the project's pages, scripts or files.
+    QString program;
+    QStringList notes; // what the project says beside (unlit programs left out)
 };
 
 struct ClassFolder {
-    std::vector<Submission> submissions; // by name, in code-point order (the same on every machine)
+    // By name, then program, in code-point order (the same on every machine).
+    std::vector<Submission> submissions;
     QString error;                       // the folder cannot be read, or has no subfolder
 };
 

@@ -174,18 +174,27 @@ QString summary(const GradeResults &results)
     return html + QStringLiteral("</table>");
 }
 
-// The stage text a line or error points into: by the path the row reports.
-const ShaderStageText *stageText(const GradeRow &row, const QString &file)
+// The stage text a line or error points into: by the path the row reports
+// and, where both stages sit in one page (a WebGL project), the one that
+// has text on that line.
+const ShaderStageText *stageText(const GradeRow &row, const QString &file, int line)
 {
-    for (const ShaderStageText &s : row.outcome.stages)
-        if (s.path == file)
+    const ShaderStageText *found = nullptr;
+    for (const ShaderStageText &s : row.outcome.stages) {
+        if (s.path != file)
+            continue;
+        if (!found)
+            found = &s;
+        const QStringList lines = s.text.split(QLatin1Char('\n'));
+        if (line > 0 && line <= lines.size() && !lines[line - 1].trimmed().isEmpty())
             return &s;
-    return nullptr;
+    }
+    return found;
 }
 
 QString linesInContext(const GradeRow &row, const QString &file, int line)
 {
-    const ShaderStageText *stage = stageText(row, file);
+    const ShaderStageText *stage = stageText(row, file, line);
     if (!stage || line <= 0)
         return {};
     const QStringList lines = stage->text.split(QLatin1Char('\n'));

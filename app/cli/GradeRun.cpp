@@ -48,7 +48,10 @@ QString submissionFolder(const GradeResults &results, int submission)
 {
     return QStringLiteral("images/%1-%2")
         .arg(submission + 1, 3, 10, QLatin1Char('0'))
-        .arg(fileSlug(results.submissions[std::size_t(submission)].name));
+        .arg(fileSlug(results.submissions[std::size_t(submission)].name
+                      + (results.submissions[std::size_t(submission)].program.isEmpty()
+                             ? QString()
+                             : QLatin1Char('-') + results.submissions[std::size_t(submission)].program)));
 }
 
 void failRow(GradeRow &row, GradeVerdict verdict, const QString &file, const QString &message)
@@ -232,6 +235,9 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
         QDir::cleanPath(QFileInfo(m_results.settings.classFolder).absoluteFilePath());
     CheckDrawing drawing = drawingFromJson(end.answer);
     row.outcome = std::move(drawing.outcome);
+    // What the project said beside (an unlit program left out) goes with it.
+    row.outcome.notes =
+        m_results.submissions[std::size_t(row.submission)].notes + row.outcome.notes;
     makeRelative(&row.outcome, classRoot);
     row.verdict = GradeVerdict::Error;
     if (!row.outcome.errors.empty()) {

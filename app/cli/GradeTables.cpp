@@ -18,7 +18,7 @@ const QStringList &csvColumns()
         QStringLiteral("psnr_db"),    QStringLiteral("max_error"), QStringLiteral("bad_fraction"),
         QStringLiteral("key"),        QStringLiteral("also"),      QStringLiteral("file"),
         QStringLiteral("line"),       QStringLiteral("equation"),  QStringLiteral("bindings"),
-        QStringLiteral("seconds"),    QStringLiteral("mistakes")};
+        QStringLiteral("seconds"),    QStringLiteral("mistakes"),  QStringLiteral("program")};
     return columns;
 }
 
@@ -78,7 +78,8 @@ QStringList csvRecord(const GradeResults &results, const GradeRow &row)
             judged(row) ? phongEquationKey(r.equation) : QString(),
             textCell(bindingsCell(row)),
             QString::number(row.seconds, 'f', 2),
-            rowMistakeKeys(row)};
+            rowMistakeKeys(row),
+            textCell(results.submissions[std::size_t(row.submission)].program)};
 }
 
 } // namespace
@@ -103,6 +104,8 @@ QJsonObject gradesJson(const GradeResults &results)
         o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
+        o.insert(QStringLiteral("program"),
+                 results.submissions[std::size_t(row.submission)].program);
         o.insert(QStringLiteral("scene"), results.scenes[std::size_t(row.scene)].label);
         o.insert(QStringLiteral("seconds"), row.seconds);
         rows.append(o);

@@ -1,0 +1,211 @@
+// WebGL projects as students hand them in (issue 42, A and B): `check
+// --project` and `grade` find the shaders in pages, inline scripts, script
+// files and files of their own, judge each program that lights on its own
+// (the `program` column), leave out an unlit one with a note, and report
+// every error at the line of the file handed in.
+#include "PhonglabProcess.h"
+#include "TestPaths.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace phonglab::test;
+
+namespace {
+
+QByteArray read(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+QByteArray course(const char *path)
+{
+    return read(sourcePath(QStringLiteral("tests/data/course/") + QLatin1String(path)));
+}
+
+void write(const QString &path, const QByteArray &text)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+}
+
+int lineOf(const QByteArray &text, const QByteArray &needle)
+{
+    const qsizetype at = text.indexOf(needle);
+    return at < 0 ? -1 : int(text.left(at).count('\n')) + 1;
+}
+
+QByteArray script(const char *id, const char *type, const QByteArray &code)
+{
+    return "<script id=\"" + QByteArray(id) + "\" type=\"" + type + "\">\n" + code + "</script>\n";
+}
+
+// ada: Angel & Shreiner's page, two programs that light and a grid that does not.
+QByteArray angelPage()
+{
+    const QByteArray v = course("mediump/phong.vert"), f = course("mediump/phong.frag");
+    return "<!DOCTYPE html>\n<html><head><title>Lab 3</title>\n"
+        + script("vertex-shader", "x-shader/x-vertex", v)
+        + script("fragment-shader", "x-shader/x-fragment", f)
+        + script("gouraud-vertex-shader", "x-shader/x-vertex", v)
+        + script("gouraud-fragment-shader", "x-shader/x-fragment", f)
+        + "<script id=\"grid-vs\" type=\"notjs\">attribute vec4 p; void main() { gl_Position = p; }"
+          "</script>\n<script id=\"grid-fs\" type=\"notjs\">precision mediump float;\n"
+          "void main() { gl_FragColor = vec4(0.5); }</script>\n"
+          "<script>\nprogram = initShaders(gl, \"vertex-shader\", \"fragment-shader\");\n"
+          "gouraud = initShaders(gl, \"gouraud-vertex-shader\", \"gouraud-fragment-shader\");\n"
+          "grid = initShaders(gl, \"grid-vs\", \"grid-fs\");\n</script>\n</head><body></body></html>\n";
+}
+
+// ben: MDN's way, template literals in an inline script.
+QByteArray inlineScriptPage(const QByteArray &vertex, const QByteArray &fragment)
+{
+    return "<!DOCTYPE html>\n<html>\n<body>\n<canvas id=\"glcanvas\"></canvas>\n<script>\n"
+           "// the shaders, as the tutorial writes them\n"
+           "const vsSource = `"
+        + vertex + "`;\n\nconst fsSource = `" + fragment
+        + "`;\nconst shaderProgram = initShaderProgram(gl, vsSource, fsSource);\n"
+          "</script>\n</body>\n</html>\n";
+}
+
+// cleo: a three.js ShaderMaterial, its stages in script elements.
+QByteArray threePage()
+{
+    return "<html><body>\n"
+        + script("vertexShader", "x-shader/x-vertex", course("threejs/phong.vert"))
+        + script("fragmentShader", "x-shader/x-fragment", course("threejs/phong.frag"))
+        + "<script type=\"module\">\nconst material = new THREE.ShaderMaterial({\n"
+          "  vertexShader: document.getElementById('vertexShader').textContent,\n"
+          "  fragmentShader: document.getElementById('fragmentShader').textContent,\n"
+          "});\n</script></body></html>\n";
+}
+
+QMap<QString, QStringList> rowsByStudentAndProgram(const QByteArray &csv)
+{
+    QMap<QString, QStringList> rows;
+    const QList<QByteArray> lines = csv.split('\n');
+    for (const QByteArray &line : lines.mid(1)) {
+        if (line.isEmpty())
+            continue;
+        const QStringList cells = QString::fromUtf8(line).split(QLatin1Char(','));
+        rows[cells.first() + QLatin1Char('/') + cells.last()] = cells;
+    }
+    return rows;
+}
+
+} // namespace
+
+class TestCliProject : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QByteArray m_broken;
+
+private slots:
+    void initTestCase()
+    {
+        const QByteArray v = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
+        const QByteArray f = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
+        const QString root = m_dir.filePath(QStringLiteral("class"));
+        write(root + QStringLiteral("/ada/index.html"), angelPage());
+        write(root + QStringLiteral("/ben/index.html"), inlineScriptPage(v, f));
+        write(root + QStringLiteral("/cleo/index.html"), threePage());
+        QByteArray broken = f;
+        broken.replace("normalize(", "normalise(");
+        m_broken = inlineScriptPage(v, broken);
+        write(root + QStringLiteral("/dan/index.html"), m_broken);
+        // eve: a script file that fetches files of their own.
+        write(root + QStringLiteral("/eve/index.html"),
+              "<html><body><script src=\"main.js\"></script></body></html>\n");
+        write(root + QStringLiteral("/eve/main.js"),
+              "const vs = await (await fetch('shaders/phong.vert')).text();\n"
+              "const fs = await (await fetch('shaders/phong.frag')).text();\n");
+        write(root + QStringLiteral("/eve/shaders/phong.vert"), v);
+        write(root + QStringLiteral("/eve/shaders/phong.frag"), f);
+    }
+
+    void checkFindsTheProgramAndItsLines()
+    {
+        const QString scene = sourcePath(QStringLiteral("tests/data/course/scene.json"));
+        const QString ben = m_dir.filePath(QStringLiteral("class/ben/index.html"));
+        const ProcessRun pass = runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"),
+                                             ben, QStringLiteral("--size"), QStringLiteral("160x120")});
+        QVERIFY2(pass.exitCode == 0, qPrintable(pass.err + pass.out));
+        const QString dan = m_dir.filePath(QStringLiteral("class/dan"));
+        const ProcessRun broken =
+            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), dan,
+                         QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--json")});
+        QCOMPARE(broken.exitCode, 1);
+        const QJsonObject error = QJsonDocument::fromJson(broken.out)
+                                      .object()
+                                      .value(QStringLiteral("errors"))
+                                      .toArray()
+                                      .first()
+                                      .toObject();
+        QVERIFY2(error.value(QStringLiteral("file")).toString().endsWith(QStringLiteral("dan/index.html")),
+                 qPrintable(broken.out));
+        QCOMPARE(error.value(QStringLiteral("line")).toInt(), lineOf(m_broken, "normalise("));
+        // Two programs light in ada's page: one must be named.
+        const QString ada = m_dir.filePath(QStringLiteral("class/ada"));
+        const ProcessRun two = runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ada,
+                                            QStringLiteral("--size"), QStringLiteral("160x120")});
+        QCOMPARE(two.exitCode, 1);
+        QVERIFY2(two.err.contains("--program"), qPrintable(two.err));
+        const ProcessRun named = runPhonglab(
+            {QStringLiteral("check"), scene, QStringLiteral("--project"), ada, QStringLiteral("--program"),
+             QStringLiteral("gouraud"), QStringLiteral("--size"), QStringLiteral("160x120")});
+        QVERIFY2(named.exitCode == 0 && named.out.contains("grid: not judged"),
+                 qPrintable(named.err + named.out));
+    }
+
+    void gradeJudgesEveryProgramThatLights()
+    {
+        const QString out = m_dir.filePath(QStringLiteral("out"));
+        const ProcessRun run = runPhonglab(
+            {QStringLiteral("grade"), m_dir.filePath(QStringLiteral("class")), QStringLiteral("--scene"),
+             sourcePath(QStringLiteral("tests/data/course/scene.json")), QStringLiteral("--size"),
+             QStringLiteral("160x120"), QStringLiteral("--define"), QStringLiteral("NUM_LIGHTS=2"),
+             QStringLiteral("--out"), out, QStringLiteral("--jobs"), QStringLiteral("2")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QByteArray csv = read(out + QStringLiteral("/grades.csv"));
+        QVERIFY(csv.startsWith("submission,scene,verdict,"));
+        QVERIFY(csv.left(csv.indexOf('\n')).endsWith(",mistakes,program"));
+        const QMap<QString, QStringList> rows = rowsByStudentAndProgram(csv);
+        QCOMPARE(rows.keys(), (QStringList{QStringLiteral("ada/gouraud"), QStringLiteral("ada/index"),
+                                           QStringLiteral("ben/index"), QStringLiteral("cleo/index"),
+                                           QStringLiteral("dan/index"), QStringLiteral("eve/phong")}));
+        for (const char *pass : {"ada/gouraud", "ada/index", "ben/index", "cleo/index", "eve/phong"})
+            QVERIFY2(rows.value(QLatin1String(pass)).value(2) == QLatin1String("pass"),
+                     qPrintable(QLatin1String(pass) + QLatin1Char(' ') + rows.value(QLatin1String(pass)).join(QLatin1Char(','))));
+        const QStringList dan = rows.value(QStringLiteral("dan/index"));
+        QCOMPARE(dan.value(2), QStringLiteral("error"));
+        QCOMPARE(dan.value(8), QStringLiteral("dan/index.html"));
+        QCOMPARE(dan.value(9).toInt(), lineOf(m_broken, "normalise("));
+        // The unlit grid: said beside ada's rows, never judged.
+        const QJsonArray json = QJsonDocument::fromJson(read(out + QStringLiteral("/grades.json")))
+                                    .object()
+                                    .value(QStringLiteral("rows"))
+                                    .toArray();
+        bool gridNoted = false;
+        for (const QJsonValue &r : json)
+            if (r.toObject().value(QStringLiteral("submission")).toString() == QLatin1String("ada"))
+                for (const QJsonValue &n : r.toObject().value(QStringLiteral("notes")).toArray())
+                    gridNoted = gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
+        QVERIFY(gridNoted);
+        // The report quotes dan's line from the page.
+        const QByteArray report = read(out + QStringLiteral("/report.html"));
+        QVERIFY(report.contains("normalise("));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliProject)
+#include "tst_cliproject.moc"
