@@ -22,7 +22,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-targets_all=(obj ply off stl om meshcache scene shaderlog uniforms journal camerapath coursecode)
+targets_all=(obj ply off stl om meshcache scene shaderlog uniforms journal camerapath coursecode htmlshaders jsshaders)
 mode=fuzz
 runs=""
 case "${1:-}" in

@@ -1024,6 +1024,17 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::HtmlShaders</name>
+    <message>
+        <source>the textarea writes characters as HTML references (&amp;lt; and the like)</source>
+        <translation>das Textfeld schreibt Zeichen als HTML-Referenzen (&amp;lt; und ähnliche)</translation>
+    </message>
+    <message>
+        <source>the shader is built from several strings or escape sequences in the script</source>
+        <translation>der Shader wird im Skript aus mehreren Zeichenketten oder Escape-Sequenzen zusammengesetzt</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::ImageMetrics</name>
     <message>
         <source>no pixels compared</source>
@@ -2540,6 +2551,52 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::ProjectPrograms</name>
+    <message>
+        <source>%1: not read (a symbolic link, or a path that leaves the project)</source>
+        <translation>%1: nicht gelesen (ein symbolischer Link oder ein Pfad, der das Projekt verlässt)</translation>
+    </message>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation>%1: keine solche Datei und kein solcher Ordner</translation>
+    </message>
+    <message>
+        <source>%1 (%2): a %3 shader no program takes</source>
+        <translation>%1 (%2): ein %3-Shader, den kein Programm verwendet</translation>
+    </message>
+    <message>
+        <source>vertex</source>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <source>fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <source>%1: not judged, it lights nothing (no light, material product or shininess in it)</source>
+        <translation>%1: nicht beurteilt, es beleuchtet nichts (kein Licht, kein Materialprodukt und keine Glanzzahl darin)</translation>
+    </message>
+    <message>
+        <source>%1: no shader found (no &lt;script&gt; or &lt;textarea&gt; with one, no string in the JavaScript, no .vert/.frag/.glsl file)</source>
+        <translation>%1: kein Shader gefunden (kein &lt;script&gt; oder &lt;textarea&gt; mit einem, keine Zeichenkette im JavaScript, keine .vert-/.frag-/.glsl-Datei)</translation>
+    </message>
+    <message>
+        <source>%1: no program named %2 (there are: %3)</source>
+        <translation>%1: kein Programm namens %2 (vorhanden: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ProjectShader</name>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: no shader named %2 in it</source>
+        <translation>%1: kein Shader namens %2 darin</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::RecentFiles</name>
     <message>
         <source>&amp;%1 %2</source>
@@ -3952,10 +4009,12 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
     </message>
     <message>
         <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                      [--project PATH [--program NAME]]
                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                       [--define NAME=VALUE ...] [--precision highp|as-written]
                       [--json] [--diff OUT.png]</source>
         <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                       [--project PATH [--program NAME]]
                        [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                        [--define NAME=VALUE ...] [--precision highp|as-written]
                        [--json] [--diff OUT.png]</translation>
@@ -3969,6 +4028,10 @@ and when it differs names the classic mistake that explains it.
 
   --vertex FILE       vertex shader instead of the scene&apos;s or the shading method&apos;s
   --fragment FILE     fragment shader instead of the scene&apos;s or the shading method&apos;s
+  --project PATH      a WebGL project (a page, a script or a folder): its shaders are found in
+                      script elements, textareas, JavaScript strings or files of their own,
+                      and paired as its calls pair them
+  --program NAME      which of the project&apos;s programs, where it has several that light
   --shading NAME      shading method instead of the scene&apos;s; one of %1
   --size WxH          image size in pixels, default 800x600
   --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
@@ -4002,6 +4065,10 @@ und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
 
   --vertex FILE       Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
   --fragment FILE     Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
+  --project PATH      ein WebGL-Projekt (eine Seite, ein Skript oder ein Ordner): seine Shader
+                      werden in script-Elementen, Textfeldern, JavaScript-Zeichenketten oder
+                      eigenen Dateien gefunden und so gepaart, wie seine Aufrufe sie paaren
+  --program NAME      welches der Programme des Projekts, wo mehrere beleuchten
   --shading NAME      Schattierungsverfahren anstelle dessen der Szene; eines von %1
   --size WxH          Bildgröße in Pixeln, Standard 800x600
   --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
@@ -4030,6 +4097,26 @@ Fehlerschlüssel: %3, unknown.
 Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
 2 falsche Argumente.
 Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
+    </message>
+    <message>
+        <source>--project takes both stages from the project; leave out --vertex and --fragment</source>
+        <translation>--project nimmt beide Stufen aus dem Projekt; --vertex und --fragment weglassen</translation>
+    </message>
+    <message>
+        <source>--program names a program of --project</source>
+        <translation>--program nennt ein Programm von --project</translation>
+    </message>
+    <message>
+        <source>%1: no program that lights anything (%2)</source>
+        <translation>%1: kein Programm, das etwas beleuchtet (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2 programs light the scene (%3); choose one with --program NAME</source>
+        <translation>%1: %2 Programme beleuchten die Szene (%3); eines mit --program NAME wählen</translation>
+    </message>
+    <message>
+        <source>program %1: %2 and %3</source>
+        <translation>Programm %1: %2 und %3</translation>
     </message>
 </context>
 <context>
@@ -4183,6 +4270,14 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>%1: no submission folders in it (one subfolder per student expected)</source>
         <translation>%1: enthält keine Abgabeordner (ein Unterordner pro Person erwartet)</translation>
+    </message>
+    <message>
+        <source>not read: %1 (a symbolic link, or a path that leaves the submission; hand in the file itself)</source>
+        <translation>nicht gelesen: %1 (ein symbolischer Link oder ein Pfad, der die Abgabe verlässt; die Datei selbst abgeben)</translation>
+    </message>
+    <message>
+        <source>no program that lights anything (%1)</source>
+        <translation>kein Programm, das etwas beleuchtet (%1)</translation>
     </message>
 </context>
 <context>

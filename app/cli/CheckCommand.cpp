@@ -231,23 +231,25 @@ Result<QStringList> chooseProjectProgram(CheckArgs *args)
         for (const ProjectProgram *p : lit)
             names << p->name;
         if (lit.size() != 1)
-            return fail(lit.empty() ? CheckCommandWords::tr("%1: no program that lights anything (%2)")
-                                          .arg(args->projectPath, project.notes.join(QStringLiteral("; ")))
-                                    : CheckCommandWords::tr("%1: %2 programs light the scene (%3); "
-                                                            "choose one with --program NAME")
-                                          .arg(args->projectPath)
-                                          .arg(lit.size())
-                                          .arg(names.join(QStringLiteral(", "))));
+            return fail(lit.empty()
+                            ? CheckCommandWords::tr("%1: no program that lights anything (%2)")
+                                  .arg(args->projectPath, project.notes.join(QStringLiteral("; ")))
+                            : CheckCommandWords::tr("%1: %2 programs light the scene (%3); "
+                                                    "choose one with --program NAME")
+                                  .arg(args->projectPath)
+                                  .arg(lit.size())
+                                  .arg(names.join(QStringLiteral(", "))));
         chosen = lit.front();
     }
     args->vertexPath = shaderLocator(chosen->vertex);
     args->fragmentPath = shaderLocator(chosen->fragment);
     QStringList notes = project.notes;
-    notes.prepend(CheckCommandWords::tr("program %1: %2 and %3")
-                      .arg(chosen->name, QFileInfo(chosen->vertex.file).fileName() + QLatin1Char('#')
-                                             + chosen->vertex.key,
-                           QFileInfo(chosen->fragment.file).fileName() + QLatin1Char('#')
-                               + chosen->fragment.key));
+    notes.prepend(
+        CheckCommandWords::tr("program %1: %2 and %3")
+            .arg(chosen->name,
+                 QFileInfo(chosen->vertex.file).fileName() + QLatin1Char('#') + chosen->vertex.key,
+                 QFileInfo(chosen->fragment.file).fileName() + QLatin1Char('#')
+                     + chosen->fragment.key));
     return notes;
 }
 

@@ -194,7 +194,9 @@ ClassFolder readClassFolder(const QString &path)
     const QFileInfoList folders =
         QDir(path).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::NoSort);
     for (const QFileInfo &folder : folders) {
-        if (folder.fileName().startsWith(QLatin1Char('.')))
+        // Moodle's online text beside a file submission is no shader.
+        if (folder.fileName().startsWith(QLatin1Char('.'))
+            || folder.fileName().contains(QLatin1String("_assignsubmission_onlinetext_")))
             continue;
         bool isProject = false;
         Submission plain = readSubmission(folder, &isProject);

@@ -26,12 +26,16 @@ struct Submission {
     // "FILE#KEY" locators into the project's pages, scripts or files.
     QString program;
     QStringList notes; // what the project says beside (unlit programs left out)
+    // From a course platform's names (ClassStaging): Moodle's full name and
+    // participant number; empty elsewhere.
+    QString student;
+    QString participant;
 };
 
 struct ClassFolder {
     // By name, then program, in code-point order (the same on every machine).
     std::vector<Submission> submissions;
-    QString error;                       // the folder cannot be read, or has no subfolder
+    QString error; // the folder cannot be read, or has no subfolder
 };
 
 ClassFolder readClassFolder(const QString &path);

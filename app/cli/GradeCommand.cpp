@@ -1,5 +1,6 @@
 #include "GradeCommand.h"
 
+#include "ClassStaging.h"
 #include "CliCommon.h"
 #include "GradeReport.h"
 #include "GradeRun.h"
@@ -242,12 +243,26 @@ int grade(const GradeArgs &args)
 {
     GradeResults results;
     results.settings = args.settings;
-    const ClassFolder folder = readClassFolder(args.settings.classFolder);
+    // An archive or Moodle's flat files become folders under the out folder.
+    const StagedClass staged = stageClass(args.settings.classFolder, args.settings.outFolder);
+    if (!staged.error.isEmpty()) {
+        printError(staged.error);
+        return kExitFailure;
+    }
+    results.settings.classRoot = staged.root;
+    const ClassFolder folder = readClassFolder(staged.root);
     if (!folder.error.isEmpty()) {
         printError(folder.error);
         return kExitFailure;
     }
     results.submissions = folder.submissions;
+    for (Submission &s : results.submissions) {
+        const SubmissionOrigin origin = staged.origins.value(s.name);
+        s.student = origin.student;
+        s.participant = origin.participant;
+        if (staged.refused.contains(s.name)) // an archive of theirs was refused: that is the error
+            s.error = staged.refused.value(s.name);
+    }
     Result<std::vector<GradeScene>> scenes = loadScenes(args);
     if (!scenes) {
         printError(scenes.error());

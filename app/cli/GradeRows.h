@@ -20,6 +20,7 @@ namespace phonglab::cli {
 
 struct GradeSettings {
     QString classFolder; // SUBMISSIONS, as given
+    QString classRoot;   // the folder the submissions were read from (unpacked/ for an archive)
     QString outFolder;   // --out
     QSize size{800, 600};
     int toleranceSteps = 2;

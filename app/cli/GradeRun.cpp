@@ -48,10 +48,11 @@ QString submissionFolder(const GradeResults &results, int submission)
 {
     return QStringLiteral("images/%1-%2")
         .arg(submission + 1, 3, 10, QLatin1Char('0'))
-        .arg(fileSlug(results.submissions[std::size_t(submission)].name
-                      + (results.submissions[std::size_t(submission)].program.isEmpty()
-                             ? QString()
-                             : QLatin1Char('-') + results.submissions[std::size_t(submission)].program)));
+        .arg(fileSlug(
+            results.submissions[std::size_t(submission)].name
+            + (results.submissions[std::size_t(submission)].program.isEmpty()
+                   ? QString()
+                   : QLatin1Char('-') + results.submissions[std::size_t(submission)].program)));
 }
 
 void failRow(GradeRow &row, GradeVerdict verdict, const QString &file, const QString &message)
@@ -232,7 +233,7 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
     }
     // cleanPath: "class/" as typed would leave "class//alice" unmatched.
     const QString classRoot =
-        QDir::cleanPath(QFileInfo(m_results.settings.classFolder).absoluteFilePath());
+        QDir::cleanPath(QFileInfo(m_results.settings.classRoot).absoluteFilePath());
     CheckDrawing drawing = drawingFromJson(end.answer);
     row.outcome = std::move(drawing.outcome);
     // What the project said beside (an unlit program left out) goes with it.

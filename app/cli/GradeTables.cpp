@@ -14,11 +14,12 @@ namespace {
 const QStringList &csvColumns()
 {
     static const QStringList columns{
-        QStringLiteral("submission"), QStringLiteral("scene"),     QStringLiteral("verdict"),
-        QStringLiteral("psnr_db"),    QStringLiteral("max_error"), QStringLiteral("bad_fraction"),
-        QStringLiteral("key"),        QStringLiteral("also"),      QStringLiteral("file"),
-        QStringLiteral("line"),       QStringLiteral("equation"),  QStringLiteral("bindings"),
-        QStringLiteral("seconds"),    QStringLiteral("mistakes"),  QStringLiteral("program")};
+        QStringLiteral("submission"), QStringLiteral("scene"),      QStringLiteral("verdict"),
+        QStringLiteral("psnr_db"),    QStringLiteral("max_error"),  QStringLiteral("bad_fraction"),
+        QStringLiteral("key"),        QStringLiteral("also"),       QStringLiteral("file"),
+        QStringLiteral("line"),       QStringLiteral("equation"),   QStringLiteral("bindings"),
+        QStringLiteral("seconds"),    QStringLiteral("mistakes"),   QStringLiteral("program"),
+        QStringLiteral("student"),    QStringLiteral("participant")};
     return columns;
 }
 
@@ -79,7 +80,9 @@ QStringList csvRecord(const GradeResults &results, const GradeRow &row)
             textCell(bindingsCell(row)),
             QString::number(row.seconds, 'f', 2),
             rowMistakeKeys(row),
-            textCell(results.submissions[std::size_t(row.submission)].program)};
+            textCell(results.submissions[std::size_t(row.submission)].program),
+            textCell(results.submissions[std::size_t(row.submission)].student),
+            textCell(results.submissions[std::size_t(row.submission)].participant)};
 }
 
 } // namespace
@@ -104,8 +107,10 @@ QJsonObject gradesJson(const GradeResults &results)
         o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
-        o.insert(QStringLiteral("program"),
-                 results.submissions[std::size_t(row.submission)].program);
+        const Submission &submission = results.submissions[std::size_t(row.submission)];
+        o.insert(QStringLiteral("program"), submission.program);
+        o.insert(QStringLiteral("student"), submission.student);
+        o.insert(QStringLiteral("participant"), submission.participant);
         o.insert(QStringLiteral("scene"), results.scenes[std::size_t(row.scene)].label);
         o.insert(QStringLiteral("seconds"), row.seconds);
         rows.append(o);

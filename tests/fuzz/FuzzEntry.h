@@ -18,6 +18,8 @@
 #include "core/check/CoursePrelude.h"
 #include "core/check/ShaderLint.h"
 #include "core/check/UniformAnnotations.h"
+#include "core/project/HtmlShaders.h"
+#include "core/project/ProjectShader.h"
 #include "mesh/MeshCache.h"
 #include "mesh/MeshLoader.h"
 #include "render/ShaderDiagnostic.h"
@@ -50,9 +52,9 @@ struct Outcome {
 // and tests/data/fuzz/<name>.
 inline const QStringList &targetNames()
 {
-    static const QStringList names{"obj",      "ply",       "off",        "stl",
-                                   "om",       "meshcache", "scene",      "shaderlog",
-                                   "uniforms", "journal",   "camerapath", "coursecode"};
+    static const QStringList names{"obj",        "ply",        "off",         "stl",      "om",
+                                   "meshcache",  "scene",      "shaderlog",   "uniforms", "journal",
+                                   "camerapath", "coursecode", "htmlshaders", "jsshaders"};
     return names;
 }
 
@@ -218,6 +220,65 @@ inline Outcome runCourseCode(const QByteArray &bytes)
     return {true, {}};
 }
 
+// What every text found in a page or a script promises: one file offset
+// per byte, each inside the file; its bytes in the file, where it says they
+// can be written back, are the text itself.
+inline void checkFoundTexts(const char *target, const QByteArray &file,
+                            const std::vector<FoundText> &texts)
+{
+    for (const FoundText &t : texts) {
+        if (t.from.size() != std::size_t(t.value.size()))
+            brokenPromise(target, "a text without one offset per byte");
+        for (const qsizetype at : t.from)
+            if (at < 0 || at >= file.size())
+                brokenPromise(target, "an offset outside the file");
+        if (t.begin < 0 || t.end < t.begin || t.end > file.size())
+            brokenPromise(target, "a range outside the file");
+        if (t.writable && file.mid(t.begin, t.end - t.begin) != t.value)
+            brokenPromise(target, "a writable text whose bytes are not the text");
+    }
+}
+
+// The shaders of an HTML page (gumbo, then each inline script's JavaScript),
+// and the same bytes read as a page from a file: every shader's code holds
+// the text's own characters, in order, with only whitespace added.
+inline Outcome runHtmlShaders(const QByteArray &bytes)
+{
+    checkFoundTexts("htmlshaders", bytes, shaderTextsInHtml(bytes));
+    const QString path = scratchPath(QStringLiteral("page.html"));
+    if (!writeScratch(path, bytes))
+        brokenPromise("htmlshaders", "cannot write the scratch file");
+    for (const ProjectShader &s : shadersInFile(path)) {
+        if (s.key.isEmpty() || s.line < 1 || s.line > bytes.count('\n') + 1)
+            brokenPromise("htmlshaders", "a shader without a name or a line in the file");
+        // Laid out as in the file: its text starts on its line, not before.
+        qsizetype first = 0;
+        while (first < s.code.size() && (s.code[first] == '\n' || s.code[first] == ' '))
+            ++first;
+        if (first < s.code.size() && s.code.left(first).count('\n') + 1 < s.line)
+            brokenPromise("htmlshaders", "a text that starts before its line");
+    }
+    return {true, {}};
+}
+
+// JavaScript: the shader strings and the program calls.
+inline Outcome runJsShaders(const QByteArray &bytes)
+{
+    checkFoundTexts("jsshaders", bytes, foundInJs(bytes, 0));
+    const std::string_view js(bytes.constData(), std::size_t(bytes.size()));
+    qsizetype last = 0;
+    for (const JsToken &t : scanJs(js)) {
+        if (t.begin < last || t.end <= t.begin || t.end > bytes.size())
+            brokenPromise("jsshaders", "tokens out of order or outside the text");
+        last = t.end;
+    }
+    for (const JsProgramCall &call : programCallsInJs(js))
+        for (const JsShaderRef *ref : {&call.vertex, &call.fragment})
+            if (ref->literalAt && (*ref->literalAt < 0 || *ref->literalAt >= bytes.size()))
+                brokenPromise("jsshaders", "a literal outside the text");
+    return {true, {}};
+}
+
 // Shader text with uniform declarations and their // @range ... comments.
 inline Outcome runUniforms(const QByteArray &bytes)
 {
@@ -282,6 +343,10 @@ inline Outcome run(std::string_view target, const QByteArray &bytes)
         return runCameraPath(bytes);
     if (target == "coursecode")
         return runCourseCode(bytes);
+    if (target == "htmlshaders")
+        return runHtmlShaders(bytes);
+    if (target == "jsshaders")
+        return runJsShaders(bytes);
     std::fprintf(stderr, "phonglab fuzz: unknown target %.*s\n", int(target.size()), target.data());
     std::abort();
 }

@@ -215,7 +215,7 @@ private slots:
         QVERIFY2(m_run.exitCode == 0, qPrintable(m_run.err));
         const QByteArray csv = readFile(m_out + QStringLiteral("/grades.csv"));
         QVERIFY(csv.startsWith("submission,scene,verdict,psnr_db,max_error,bad_fraction,key,also,"
-                               "file,line,equation,bindings,seconds,mistakes,program\n"));
+                               "file,line,equation,bindings,seconds,mistakes,program,student,participant\n"));
         const QMap<QString, QStringList> rows = rowsBySubmission(csv);
         QCOMPARE(rows.size(), 12);
         const auto verdict = [&](const QString &who) { return rows.value(who).value(2); };

@@ -62,7 +62,8 @@ QByteArray angelPage()
           "void main() { gl_FragColor = vec4(0.5); }</script>\n"
           "<script>\nprogram = initShaders(gl, \"vertex-shader\", \"fragment-shader\");\n"
           "gouraud = initShaders(gl, \"gouraud-vertex-shader\", \"gouraud-fragment-shader\");\n"
-          "grid = initShaders(gl, \"grid-vs\", \"grid-fs\");\n</script>\n</head><body></body></html>\n";
+          "grid = initShaders(gl, \"grid-vs\", "
+          "\"grid-fs\");\n</script>\n</head><body></body></html>\n";
 }
 
 // ben: MDN's way, template literals in an inline script.
@@ -92,11 +93,13 @@ QMap<QString, QStringList> rowsByStudentAndProgram(const QByteArray &csv)
 {
     QMap<QString, QStringList> rows;
     const QList<QByteArray> lines = csv.split('\n');
+    const qsizetype program =
+        QString::fromUtf8(lines.first()).split(QLatin1Char(',')).indexOf(QStringLiteral("program"));
     for (const QByteArray &line : lines.mid(1)) {
         if (line.isEmpty())
             continue;
         const QStringList cells = QString::fromUtf8(line).split(QLatin1Char(','));
-        rows[cells.first() + QLatin1Char('/') + cells.last()] = cells;
+        rows[cells.first() + QLatin1Char('/') + cells.value(program)] = cells;
     }
     return rows;
 }
@@ -137,13 +140,14 @@ private slots:
     {
         const QString scene = sourcePath(QStringLiteral("tests/data/course/scene.json"));
         const QString ben = m_dir.filePath(QStringLiteral("class/ben/index.html"));
-        const ProcessRun pass = runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"),
-                                             ben, QStringLiteral("--size"), QStringLiteral("160x120")});
+        const ProcessRun pass =
+            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ben,
+                         QStringLiteral("--size"), QStringLiteral("160x120")});
         QVERIFY2(pass.exitCode == 0, qPrintable(pass.err + pass.out));
         const QString dan = m_dir.filePath(QStringLiteral("class/dan"));
-        const ProcessRun broken =
-            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), dan,
-                         QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--json")});
+        const ProcessRun broken = runPhonglab(
+            {QStringLiteral("check"), scene, QStringLiteral("--project"), dan,
+             QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--json")});
         QCOMPARE(broken.exitCode, 1);
         const QJsonObject error = QJsonDocument::fromJson(broken.out)
                                       .object()
@@ -151,18 +155,22 @@ private slots:
                                       .toArray()
                                       .first()
                                       .toObject();
-        QVERIFY2(error.value(QStringLiteral("file")).toString().endsWith(QStringLiteral("dan/index.html")),
+        QVERIFY2(error.value(QStringLiteral("file"))
+                     .toString()
+                     .endsWith(QStringLiteral("dan/index.html")),
                  qPrintable(broken.out));
         QCOMPARE(error.value(QStringLiteral("line")).toInt(), lineOf(m_broken, "normalise("));
         // Two programs light in ada's page: one must be named.
         const QString ada = m_dir.filePath(QStringLiteral("class/ada"));
-        const ProcessRun two = runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ada,
-                                            QStringLiteral("--size"), QStringLiteral("160x120")});
+        const ProcessRun two =
+            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ada,
+                         QStringLiteral("--size"), QStringLiteral("160x120")});
         QCOMPARE(two.exitCode, 1);
         QVERIFY2(two.err.contains("--program"), qPrintable(two.err));
-        const ProcessRun named = runPhonglab(
-            {QStringLiteral("check"), scene, QStringLiteral("--project"), ada, QStringLiteral("--program"),
-             QStringLiteral("gouraud"), QStringLiteral("--size"), QStringLiteral("160x120")});
+        const ProcessRun named =
+            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ada,
+                         QStringLiteral("--program"), QStringLiteral("gouraud"),
+                         QStringLiteral("--size"), QStringLiteral("160x120")});
         QVERIFY2(named.exitCode == 0 && named.out.contains("grid: not judged"),
                  qPrintable(named.err + named.out));
     }
@@ -171,21 +179,25 @@ private slots:
     {
         const QString out = m_dir.filePath(QStringLiteral("out"));
         const ProcessRun run = runPhonglab(
-            {QStringLiteral("grade"), m_dir.filePath(QStringLiteral("class")), QStringLiteral("--scene"),
-             sourcePath(QStringLiteral("tests/data/course/scene.json")), QStringLiteral("--size"),
-             QStringLiteral("160x120"), QStringLiteral("--define"), QStringLiteral("NUM_LIGHTS=2"),
-             QStringLiteral("--out"), out, QStringLiteral("--jobs"), QStringLiteral("2")});
+            {QStringLiteral("grade"), m_dir.filePath(QStringLiteral("class")),
+             QStringLiteral("--scene"), sourcePath(QStringLiteral("tests/data/course/scene.json")),
+             QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--define"),
+             QStringLiteral("NUM_LIGHTS=2"), QStringLiteral("--out"), out, QStringLiteral("--jobs"),
+             QStringLiteral("2")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         const QByteArray csv = read(out + QStringLiteral("/grades.csv"));
         QVERIFY(csv.startsWith("submission,scene,verdict,"));
-        QVERIFY(csv.left(csv.indexOf('\n')).endsWith(",mistakes,program"));
+        QVERIFY(csv.left(csv.indexOf('\n')).endsWith(",mistakes,program,student,participant"));
         const QMap<QString, QStringList> rows = rowsByStudentAndProgram(csv);
-        QCOMPARE(rows.keys(), (QStringList{QStringLiteral("ada/gouraud"), QStringLiteral("ada/index"),
-                                           QStringLiteral("ben/index"), QStringLiteral("cleo/index"),
-                                           QStringLiteral("dan/index"), QStringLiteral("eve/phong")}));
-        for (const char *pass : {"ada/gouraud", "ada/index", "ben/index", "cleo/index", "eve/phong"})
+        QCOMPARE(rows.keys(),
+                 (QStringList{QStringLiteral("ada/gouraud"), QStringLiteral("ada/index"),
+                              QStringLiteral("ben/index"), QStringLiteral("cleo/index"),
+                              QStringLiteral("dan/index"), QStringLiteral("eve/phong")}));
+        for (const char *pass :
+             {"ada/gouraud", "ada/index", "ben/index", "cleo/index", "eve/phong"})
             QVERIFY2(rows.value(QLatin1String(pass)).value(2) == QLatin1String("pass"),
-                     qPrintable(QLatin1String(pass) + QLatin1Char(' ') + rows.value(QLatin1String(pass)).join(QLatin1Char(','))));
+                     qPrintable(QLatin1String(pass) + QLatin1Char(' ')
+                                + rows.value(QLatin1String(pass)).join(QLatin1Char(','))));
         const QStringList dan = rows.value(QStringLiteral("dan/index"));
         QCOMPARE(dan.value(2), QStringLiteral("error"));
         QCOMPARE(dan.value(8), QStringLiteral("dan/index.html"));
@@ -199,7 +211,8 @@ private slots:
         for (const QJsonValue &r : json)
             if (r.toObject().value(QStringLiteral("submission")).toString() == QLatin1String("ada"))
                 for (const QJsonValue &n : r.toObject().value(QStringLiteral("notes")).toArray())
-                    gridNoted = gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
+                    gridNoted =
+                        gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
         QVERIFY(gridNoted);
         // The report quotes dan's line from the page.
         const QByteArray report = read(out + QStringLiteral("/report.html"));

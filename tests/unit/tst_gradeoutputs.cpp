@@ -79,14 +79,14 @@ private slots:
         const QList<QByteArray> lines = csv.split('\n');
         QCOMPARE(lines.value(0), QByteArray("submission,scene,verdict,psnr_db,max_error,"
                                             "bad_fraction,key,also,file,line,equation,bindings,"
-                                            "seconds,mistakes,program"));
+                                            "seconds,mistakes,program,student,participant"));
         QCOMPARE(lines.value(1),
-                 QByteArray("alice,check.json,pass,inf,0,0.000000,,,,,guarded,,0.50,,"));
+                 QByteArray("alice,check.json,pass,inf,0,0.000000,,,,,guarded,,0.50,,,,"));
         // The formula gets a ', the quote is doubled, "%1" stays as written.
         QCOMPARE(lines.value(2),
                  QByteArray("\"'=SUM(A1),\"\"x\"\" %1\",check.json,fail,23.46,145,0.250000,"
                             "reflect-incident,view-vector,x/a.frag,3,guarded,,1.25,"
-                            "reflect-incident,"));
+                            "reflect-incident,,,"));
         QCOMPARE(csv, gradesCsv(twoRows())); // the same rows, the same bytes
     }
 
