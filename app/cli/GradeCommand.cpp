@@ -2,6 +2,7 @@
 
 #include "ClassStaging.h"
 #include "CliCommon.h"
+#include "CoursePlatformOutputs.h"
 #include "GradeReport.h"
 #include "GradeRun.h"
 #include "GradeTables.h"
@@ -12,6 +13,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QCryptographicHash>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -41,6 +43,8 @@ struct GradeArgs {
     QStringList scenePaths;
     int jobs = 1;
     GradedChildLimits limits;
+    GradePoints points;  // --points, for moodle-grades.csv
+    bool resume = false; // --resume: the rows a stopped run finished are kept
 };
 
 const QString &synopsis()
@@ -50,7 +54,8 @@ const QString &synopsis()
         "                      [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]\n"
         "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
         "[--equation slide|guarded]\n"
-        "                      [--define NAME=VALUE ...] [--precision highp|as-written]");
+        "                      [--define NAME=VALUE ...] [--precision highp|as-written]\n"
+        "                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]");
     return text;
 }
 
@@ -65,10 +70,14 @@ QString helpText()
               "submission: its vertex and/or fragment shader, under any file names (.vert .vs "
               ".vsh,\n"
               ".frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` "
-              "takes.\n"
-              "A stage left out is the scene's shading method's shipped one. Each check runs in a\n"
-              "child process of its own: a shader that runs too long or crashes costs that one "
-              "verdict.\n\n"
+              "takes,\n"
+              "or a WebGL project (pages and scripts, as check --project reads them; each program\n"
+              "that lights is judged on its own). SUBMISSIONS may be a .zip or .tar.gz, and a\n"
+              "course platform's download: Moodle's folders or flat files by student. A student's\n"
+              "own archive is unpacked once; an archive with links or names that leave it is\n"
+              "refused. A stage left out is the scene's shading method's shipped one. Each check\n"
+              "runs in a child process of its own: a shader that runs too long or crashes costs\n"
+              "that one verdict.\n\n"
               "  --scene FILE        a scene to check with; repeatable, at least one\n"
               "  --out DIR           where the results go, default ./grades\n"
               "  --jobs N            checks at once, default the number of cores (%1)\n"
@@ -83,11 +92,19 @@ QString helpText()
               "repeatable\n"
               "  --precision RULE    highp (default) or as-written, as in check\n"
               "  --equation E        demand the slide's (slide) or the guarded (guarded) "
-              "equation\n\n"
+              "equation\n"
+              "  --points P          what each verdict is worth in moodle-grades.csv, summed over "
+              "a\n"
+              "                      student's rows; default pass=1,fail=0,error=0,timeout=0,"
+              "crash=0\n"
+              "  --resume            keep the rows a stopped run of the same command finished\n\n"
               "Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,\n"
-              "bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),\n"
-              "DIR/grades.json (the check's JSON per row), DIR/report.html and its DIR/images/,\n"
-              "and a table on stdout.\n"
+              "bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, "
+              "program,\n"
+              "student, participant), DIR/grades.json (the check's JSON per row), DIR/report.html\n"
+              "and its DIR/images/, and a table on stdout. From Moodle also DIR/moodle-grades.csv\n"
+              "(its offline grading worksheet) and DIR/feedback.zip (a feedback.html per "
+              "student).\n"
               "Verdicts: pass, fail, error, timeout, crash.\n\n"
               "Exit status: 0 every submission got a verdict, 1 the run could not complete (a "
               "scene\n"
@@ -114,16 +131,19 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const SceneOverrideOptions overrides;
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
+    const QCommandLineOption points(QStringLiteral("points"), QString(), QStringLiteral("points"));
+    const QCommandLineOption resume(QStringLiteral("resume"), QString());
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit = parseOrExit(
-            parser, arguments,
-            {help,
-             QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size, tolerance, equation}
-                 + overrides.all(),
-             QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
-            synopsis(), helpText()))
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments,
+                        {help,
+                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size,
+                                                   tolerance, equation, points, resume}
+                             + overrides.all(),
+                         QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
+                        synopsis(), helpText()))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -149,6 +169,13 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
             return usage(GradeCommandWords::tr("--equation: expected slide or guarded, got '%1'")
                              .arg(parser.value(equation)));
     }
+    if (parser.isSet(points)) {
+        const Result<GradePoints> parsed = parseGradePoints(parser.value(points));
+        if (!parsed)
+            return usage(parsed.error());
+        args.points = *parsed;
+    }
+    args.resume = parser.isSet(resume);
     bool ok = true;
     if (parser.isSet(tolerance)) {
         settings.toleranceSteps = parser.value(tolerance).toInt(&ok);
@@ -226,7 +253,7 @@ Result<> prepareOutFolder(const QString &folder)
     return {};
 }
 
-Result<> writeOutputs(const GradeResults &results)
+Result<> writeOutputs(const GradeResults &results, const GradePoints &points)
 {
     const QString dir = results.settings.outFolder + QLatin1Char('/');
     for (const Result<> &written :
@@ -236,7 +263,30 @@ Result<> writeOutputs(const GradeResults &results)
           writeFile(dir + QStringLiteral("report.html"), gradeReportHtml(results).toUtf8())})
         if (!written)
             return written;
-    return {};
+    // Back to Moodle, where the submissions came from it.
+    if (const QByteArray moodle = moodleGradesCsv(results, points); !moodle.isEmpty())
+        if (const Result<> written = writeFile(dir + QStringLiteral("moodle-grades.csv"), moodle);
+            !written)
+            return written;
+    return writeFeedbackZip(results, dir + QStringLiteral("feedback.zip"));
+}
+
+// What makes two runs one: the scenes, the settings and every submission's
+// files; a journal of another run is not resumed.
+QByteArray runFingerprint(const GradeArgs &args, const GradeResults &results)
+{
+    QStringList parts{
+        QString::number(args.settings.size.width()), QString::number(args.settings.size.height()),
+        QString::number(args.settings.toleranceSteps),
+        args.settings.equation ? phongEquationKey(*args.settings.equation) : QString()};
+    parts << args.settings.overrides.arguments();
+    for (const QString &scene : args.scenePaths)
+        parts << QFileInfo(scene).absoluteFilePath();
+    for (const Submission &s : results.submissions)
+        parts << s.name << s.program << s.vertex << s.fragment << s.error;
+    return QCryptographicHash::hash(parts.join(QLatin1Char('\x1f')).toUtf8(),
+                                    QCryptographicHash::Sha256)
+        .toHex();
 }
 
 int grade(const GradeArgs &args)
@@ -284,11 +334,21 @@ int grade(const GradeArgs &args)
         printError(prepared.error());
         return kExitFailure;
     }
+    GradeJournal journal(args.settings.outFolder, runFingerprint(args, results));
+    QHash<QString, GradedChildEnd> finished;
+    if (args.resume) {
+        finished = journal.resume();
+        printErrLine(GradeCommandWords::tr("grade: kept %1 finished checks of the stopped run")
+                         .arg(finished.size()));
+    } else
+        journal.start();
+    run.setJournal(&journal, std::move(finished));
     run.run();
-    if (const Result<> written = writeOutputs(results); !written) {
+    if (const Result<> written = writeOutputs(results, args.points); !written) {
         printError(written.error());
         return kExitFailure;
     }
+    journal.finish();
     printLine(gradesTable(results));
     printErrLine(QStringLiteral("grade: %1 checks; %2")
                      .arg(results.rows.size())

@@ -42,6 +42,10 @@ void makeRelative(CheckOutcome *outcome, const QString &classRoot)
         e.file = classRelative(e.file, classRoot);
     for (ShaderStageText &s : outcome->stages)
         s.path = classRelative(s.path, classRoot);
+    // "FILE:LINE:COL: warning: ..." and notes name files too.
+    for (QStringList *texts : {&outcome->warnings, &outcome->notes})
+        for (QString &text : *texts)
+            text.replace(classRoot + QLatin1Char('/'), QString());
 }
 
 QString submissionFolder(const GradeResults &results, int submission)
@@ -159,6 +163,19 @@ QStringList GradeRun::childArguments(const GradeRow &row) const
     return args + m_results.settings.overrides.arguments();
 }
 
+void GradeRun::setJournal(GradeJournal *journal, QHash<QString, GradedChildEnd> finished)
+{
+    m_journal = journal;
+    m_finished = std::move(finished);
+}
+
+QString GradeRun::rowKey(const GradeRow &row) const
+{
+    const Submission &s = m_results.submissions[std::size_t(row.submission)];
+    return QStringList{s.name, s.program, m_results.scenes[std::size_t(row.scene)].label}.join(
+        QLatin1Char('\x1f'));
+}
+
 void GradeRun::run()
 {
     m_clock.start();
@@ -178,7 +195,19 @@ void GradeRun::run()
                 QDir(m_results.settings.outFolder).mkpath(folder);
                 row.yoursImage =
                     QStringLiteral("%1/%2-yours.png").arg(folder, m_results.scenes[c].slug);
-                m_waiting.push_back({int(rows.size())});
+                // Finished by a stopped run: judged again from its journal.
+                const auto done = m_finished.constFind(rowKey(row));
+                if (done != m_finished.constEnd()
+                    && (done->kind != GradedChildEnd::Kind::Answered
+                        || QFileInfo::exists(m_results.settings.outFolder + QLatin1Char('/')
+                                             + row.yoursImage))) {
+                    row.seconds = done->seconds;
+                    m_childSeconds += done->seconds;
+                    judge(row, *done);
+                    ++m_done;
+                } else {
+                    m_waiting.push_back({int(rows.size())});
+                }
             }
             rows.push_back(std::move(row));
         }
@@ -213,6 +242,8 @@ void GradeRun::onEnded(int rowIndex, const GradedChildEnd &end)
     GradeRow &row = m_results.rows[std::size_t(rowIndex)];
     row.seconds = end.seconds;
     m_childSeconds += end.seconds;
+    if (m_journal)
+        m_journal->record(rowKey(row), end);
     judge(row, end);
     ++m_done;
     while (m_running < m_jobs && !m_waiting.empty())

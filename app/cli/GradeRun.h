@@ -1,4 +1,5 @@
 #pragma once
+#include "GradeJournal.h"
 #include "GradeRows.h"
 #include "GradedChild.h"
 #include "core/check/ShaderCheck.h"
@@ -26,8 +27,13 @@ public:
     // The exact images of every scene, before any child starts (they use
     // every core). Errors name the scene.
     Result<> prepareReferences();
+    // Each child's end goes to `journal` as it comes; the rows in
+    // `finished` (by rowKey) are judged from it and drawn no more (--resume).
+    void setJournal(GradeJournal *journal, QHash<QString, GradedChildEnd> finished);
     // Runs every check; returns when the last has ended.
     void run();
+    // What names a row in the journal: submission, program and scene.
+    QString rowKey(const GradeRow &row) const;
 
 private:
     struct Job {
@@ -55,6 +61,8 @@ private:
     // By scene, then the number of lights it is judged with.
     std::map<std::pair<int, int>, CheckReference> m_references;
     std::map<QString, QString> m_exactImages; // written once each
+    GradeJournal *m_journal = nullptr;
+    QHash<QString, GradedChildEnd> m_finished;
 };
 
 } // namespace phonglab::cli

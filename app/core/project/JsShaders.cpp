@@ -2,6 +2,8 @@
 
 #include <QHash>
 
+#include <algorithm>
+
 namespace phonglab {
 
 namespace {
@@ -200,7 +202,10 @@ std::vector<JsShaderText> shaderTextsInJs(std::string_view js)
             next = *past;
         } else if (t.isLiteral(i)) {
             append(text, t.value(i));
-            text.plain = text.value.size() == t[i].end - t[i].begin - 2;
+            // Its bytes between the quotes are the value: no escape, no CR.
+            text.plain = js.substr(std::size_t(t[i].begin) + 1,
+                                   std::size_t(std::max<qsizetype>(0, t[i].end - t[i].begin - 2)))
+                == std::string_view(text.value.constData(), std::size_t(text.value.size()));
             while (t.is(next, "+") && t.isLiteral(next + 1)) {
                 append(text, t.value(next + 1));
                 text.plain = false;
