@@ -217,30 +217,12 @@ CheckInput inputOf(const CheckArgs &args)
 Result<QStringList> chooseProjectProgram(CheckArgs *args)
 {
     const Project project = readProject(args->projectPath);
-    if (!project.error.isEmpty())
-        return fail(project.error);
-    const ProjectProgram *chosen = nullptr;
-    if (!args->programName.isEmpty()) {
-        QString error;
-        chosen = programNamed(project, args->programName, &error);
-        if (!chosen)
-            return fail(error);
-    } else {
-        const std::vector<const ProjectProgram *> lit = litPrograms(project);
-        QStringList names;
-        for (const ProjectProgram *p : lit)
-            names << p->name;
-        if (lit.size() != 1)
-            return fail(lit.empty()
-                            ? CheckCommandWords::tr("%1: no program that lights anything (%2)")
-                                  .arg(args->projectPath, project.notes.join(QStringLiteral("; ")))
-                            : CheckCommandWords::tr("%1: %2 programs light the scene (%3); "
-                                                    "choose one with --program NAME")
-                                  .arg(args->projectPath)
-                                  .arg(lit.size())
-                                  .arg(names.join(QStringLiteral(", "))));
-        chosen = lit.front();
-    }
+    const Result<ProjectProgram> choice = chooseProgram(project, args->programName);
+    if (!choice)
+        return fail(args->programName.isEmpty() && litPrograms(project).size() > 1
+                        ? choice.error() + CheckCommandWords::tr(" with --program NAME")
+                        : choice.error());
+    const ProjectProgram *chosen = &*choice;
     args->vertexPath = shaderLocator(chosen->vertex);
     args->fragmentPath = shaderLocator(chosen->fragment);
     QStringList notes = project.notes;

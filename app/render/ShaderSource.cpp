@@ -31,6 +31,16 @@ Result<ShaderSource> ShaderSource::fromFile(const QString &path)
     return ShaderSource{path, file.readAll()};
 }
 
+Result<ShaderSource> ShaderSource::forEditing(const QString &path)
+{
+    if (!isShaderLocator(path))
+        return fromFile(path);
+    Result<ProjectShader> shader = shaderAtLocator(path);
+    if (!shader)
+        return fail(shader.error());
+    return ShaderSource{path, std::move(shader->text)};
+}
+
 Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fragmentPath)
 {
     Result<ShaderSource> vertex = ShaderSource::fromFile(vertexPath);

@@ -15,7 +15,12 @@ struct ShaderSource {
 
     bool operator==(const ShaderSource &) const = default;
     // The file's text, or why it cannot be read ("PATH: cannot read shader: ...").
+    // A "FILE#KEY" locator (core/project) gives the shader in that page or
+    // script, laid out so its lines are the file's, named by the file.
     static Result<ShaderSource> fromFile(const QString &path);
+    // What an editor shows: the same, but a locator's shader as written
+    // (no layout), named by the locator.
+    static Result<ShaderSource> forEditing(const QString &path);
 };
 
 // A program's two stages.

@@ -19,6 +19,7 @@
 #include "core/check/ShaderLint.h"
 #include "core/check/UniformAnnotations.h"
 #include "core/project/HtmlShaders.h"
+#include "core/project/ProjectSave.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/MeshCache.h"
 #include "mesh/MeshLoader.h"
@@ -221,8 +222,7 @@ inline Outcome runCourseCode(const QByteArray &bytes)
 }
 
 // What every text found in a page or a script promises: one file offset
-// per byte, each inside the file; its bytes in the file, where it says they
-// can be written back, are the text itself.
+// per byte, each inside the file.
 inline void checkFoundTexts(const char *target, const QByteArray &file,
                             const std::vector<FoundText> &texts)
 {
@@ -234,37 +234,53 @@ inline void checkFoundTexts(const char *target, const QByteArray &file,
                 brokenPromise(target, "an offset outside the file");
         if (t.begin < 0 || t.end < t.begin || t.end > file.size())
             brokenPromise(target, "a range outside the file");
-        if (t.writable && file.mid(t.begin, t.end - t.begin) != t.value)
-            brokenPromise(target, "a writable text whose bytes are not the text");
     }
 }
 
-// The shaders of an HTML page (gumbo, then each inline script's JavaScript),
-// and the same bytes read as a page from a file: every shader's code holds
-// the text's own characters, in order, with only whitespace added.
+// The shaders read from a file of those bytes: named, on a line of the file,
+// laid out from that line, and a writable one saved back unchanged leaves
+// the file as it was.
+inline void checkShadersOf(const char *target, const QString &path, const QByteArray &bytes);
+
+// The shaders of an HTML page (gumbo, then each inline script's JavaScript).
 inline Outcome runHtmlShaders(const QByteArray &bytes)
 {
     checkFoundTexts("htmlshaders", bytes, shaderTextsInHtml(bytes));
     const QString path = scratchPath(QStringLiteral("page.html"));
     if (!writeScratch(path, bytes))
         brokenPromise("htmlshaders", "cannot write the scratch file");
+    checkShadersOf("htmlshaders", path, bytes);
+    return {true, {}};
+}
+
+inline void checkShadersOf(const char *target, const QString &path, const QByteArray &bytes)
+{
     for (const ProjectShader &s : shadersInFile(path)) {
+        // Saved back unchanged, a writable shader leaves the file as it was.
+        if (s.writable) {
+            const Result<QByteArray> saved = withShaderText(bytes, s, s.text);
+            if (!saved || *saved != bytes)
+                brokenPromise(target, "a writable shader saved back unchanged changed the file");
+        }
         if (s.key.isEmpty() || s.line < 1 || s.line > bytes.count('\n') + 1)
-            brokenPromise("htmlshaders", "a shader without a name or a line in the file");
+            brokenPromise(target, "a shader without a name or a line in the file");
         // Laid out as in the file: its text starts on its line, not before.
         qsizetype first = 0;
         while (first < s.code.size() && (s.code[first] == '\n' || s.code[first] == ' '))
             ++first;
         if (first < s.code.size() && s.code.left(first).count('\n') + 1 < s.line)
-            brokenPromise("htmlshaders", "a text that starts before its line");
+            brokenPromise(target, "a text that starts before its line");
     }
-    return {true, {}};
 }
 
 // JavaScript: the shader strings and the program calls.
 inline Outcome runJsShaders(const QByteArray &bytes)
 {
     checkFoundTexts("jsshaders", bytes, foundInJs(bytes, 0));
+    const QString path = scratchPath(QStringLiteral("script.js"));
+    if (!writeScratch(path, bytes))
+        brokenPromise("jsshaders", "cannot write the scratch file");
+    checkShadersOf("jsshaders", path, bytes);
     const std::string_view js(bytes.constData(), std::size_t(bytes.size()));
     qsizetype last = 0;
     for (const JsToken &t : scanJs(js)) {

@@ -7,11 +7,13 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "core/project/ProjectPrograms.h"
 #include "render/QtImages.h"
 #include "ui/check/CheckOverlay.h"
 #include "ui/check/CheckRunner.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"
+#include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/GuiArguments.h"
@@ -289,6 +291,80 @@ private slots:
         QVERIFY(waitForVerdict(true));
         QCOMPARE(m_window->liveCheck()->lastResult()->scene.vertexShader,
                  QFileInfo(vertex).absoluteFilePath());
+    }
+
+    // Issue 42, B: a WebGL project's program opens from its page, is
+    // checked live, and saves back into the page with only its bytes changed;
+    // a shader built from several strings offers Save As instead.
+    void opensAWebGlProject()
+    {
+        const GuiArguments args =
+            parseGuiArguments({QStringLiteral("s.json"), QStringLiteral("--project"),
+                               QStringLiteral("lab3"), QStringLiteral("--program=phong")});
+        QVERIFY2(args.error.isEmpty(), qPrintable(args.error));
+        QCOMPARE(args.project, QStringLiteral("lab3"));
+        QCOMPARE(args.program, QStringLiteral("phong"));
+        QVERIFY(args.hasShaders());
+        QVERIFY(!parseGuiArguments(
+                     {QStringLiteral("s.json"), QStringLiteral("--program"), QStringLiteral("x")})
+                     .error.isEmpty());
+
+        QTemporaryDir dir;
+        const auto readAll = [](const QString &path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        const QByteArray vertex =
+            readAll(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
+        const QByteArray fragment =
+            readAll(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
+        const QByteArray page = "<!DOCTYPE html>\n<html><body>\n<script>\nconst vsSource = `"
+            + vertex + "`;\nconst fsSource = `" + fragment
+            + "`;\nconst program = initShaderProgram(gl, vsSource, fsSource);\n</script>\n"
+              "</body></html>\n";
+        const QString pagePath = dir.filePath(QStringLiteral("index.html"));
+        {
+            QFile f(pagePath);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(page);
+        }
+        const Result<ProjectProgram> chosen = chooseProgram(readProject(dir.path()), {});
+        QVERIFY2(chosen, qPrintable(chosen.error()));
+        openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        QVERIFY_OK(m_window->openSubmission(sourcePath(QStringLiteral("assets/scenes/check.json")),
+                                            shaderLocator(chosen->vertex),
+                                            shaderLocator(chosen->fragment)));
+        // The editor shows the shader as written in the page, and it is checked.
+        QTRY_VERIFY_WITH_TIMEOUT(fragmentEditor()->text().toUtf8() == fragment, 20000);
+        QVERIFY(waitForApplied());
+        QVERIFY(waitForVerdict(true));
+        // An edit saved goes into the page: every other byte stays.
+        replaceInFragment(QStringLiteral("void main()"), QStringLiteral("/* edited */ "));
+        ShaderDock *dock = m_window->shaderDock();
+        QVERIFY_OK(dock->save(ShaderStage::Fragment));
+        const QByteArray saved = readAll(pagePath);
+        const qsizetype at = page.indexOf(fragment);
+        QVERIFY(saved.startsWith(page.left(at)));
+        QVERIFY(saved.endsWith(page.mid(at + fragment.size())));
+        QCOMPARE(saved.mid(at, saved.size() - page.size() + fragment.size()),
+                 fragmentEditor()->text().toUtf8());
+
+        // Pieces: Save says why, with Save As as the way out.
+        const QString pieces = dir.filePath(QStringLiteral("pieces.js"));
+        {
+            QFile f(pieces);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("var fs = 'precision highp float;\\n' +\n"
+                    "  'void main() { gl_FragColor = vec4(1); }\\n';\n");
+        }
+        QVERIFY_OK(dock->openFiles({pieces + QStringLiteral("#fs")}));
+        replaceInFragment(QStringLiteral("vec4(1)"), QStringLiteral(" "));
+        const Result<> refused = dock->save(ShaderStage::Fragment);
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().contains(QStringLiteral("Save As")), qPrintable(refused.error()));
+        QVERIFY_OK(
+            dock->openFiles({sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag"))}));
     }
 
     // Issue 30, D: the view's 4 samples blend each silhouette with the

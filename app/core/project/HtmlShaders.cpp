@@ -97,7 +97,6 @@ FoundText textareaText(const QByteArray &html, const RawText &raw)
     qsizetype i = raw.begin;
     if (i < raw.end && html[i] == '\n')
         ++i;
-    bool references = false;
     while (i < raw.end) {
         if (html[i] == '&') {
             if (const auto ref = characterReference(html, i)) {
@@ -106,7 +105,6 @@ FoundText textareaText(const QByteArray &html, const RawText &raw)
                     text.from.push_back(i);
                 }
                 i += ref->second;
-                references = true;
                 continue;
             }
         }
@@ -114,12 +112,9 @@ FoundText textareaText(const QByteArray &html, const RawText &raw)
         text.from.push_back(i);
         ++i;
     }
-    text.begin = raw.begin;
+    text.begin = raw.begin + (raw.begin < raw.end && html[raw.begin] == '\n' ? 1 : 0);
     text.end = raw.end;
-    text.writable = !references;
-    if (references)
-        text.notWritable = HtmlShadersWords::tr(
-            "the textarea writes characters as HTML references (&lt; and the like)");
+    text.container = ShaderContainer::Textarea;
     return text;
 }
 
@@ -144,7 +139,7 @@ void walk(const GumboNode *node, const QByteArray &html, std::vector<FoundText> 
             text.name = attribute(element, "id");
             text.begin = raw.begin;
             text.end = raw.end;
-            text.writable = true;
+            text.container = ShaderContainer::ScriptElement;
             out.push_back(std::move(text));
         }
         return;
@@ -195,15 +190,15 @@ std::vector<FoundText> foundInJs(const QByteArray &js, qsizetype base)
         text.name = t.name;
         text.begin = t.begin + base;
         text.end = t.end + base;
-        // A template literal or quoted string without escapes: its inside
-        // is the text (the quotes stay).
-        text.writable = t.plain;
-        if (text.writable) {
+        // One literal: its inside is the text's place (the quotes stay).
+        if (t.pieces == 1) {
             ++text.begin;
             --text.end;
+            text.container =
+                t.quote == '`' ? ShaderContainer::JsTemplate : ShaderContainer::JsString;
+            text.quote = t.quote;
         } else {
-            text.notWritable = HtmlShadersWords::tr(
-                "the shader is built from several strings or escape sequences in the script");
+            text.container = ShaderContainer::JsPieces;
         }
         out.push_back(std::move(text));
     }

@@ -1,5 +1,6 @@
 #pragma once
 #include "JsShaders.h"
+#include "ProjectShader.h"
 
 #include <QByteArray>
 #include <QString>
@@ -18,8 +19,8 @@ struct FoundText {
     QString name;                // an id, a variable, a property; empty: none
     qsizetype begin = 0;         // the file's bytes that hold it
     qsizetype end = 0;
-    bool writable = false; // those bytes are the value itself
-    QString notWritable;   // why not
+    ShaderContainer container = ShaderContainer::File;
+    char quote = 0; // a JavaScript literal's
 };
 
 std::vector<FoundText> shaderTextsInHtml(const QByteArray &html);

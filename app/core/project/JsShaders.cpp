@@ -200,15 +200,14 @@ std::vector<JsShaderText> shaderTextsInJs(std::string_view js)
                 continue;
             }
             next = *past;
+            text.pieces = 2; // an array joined: written back as one text, never
         } else if (t.isLiteral(i)) {
             append(text, t.value(i));
-            // Its bytes between the quotes are the value: no escape, no CR.
-            text.plain = js.substr(std::size_t(t[i].begin) + 1,
-                                   std::size_t(std::max<qsizetype>(0, t[i].end - t[i].begin - 2)))
-                == std::string_view(text.value.constData(), std::size_t(text.value.size()));
+            text.pieces = 1;
+            text.quote = js[std::size_t(t[i].begin)];
             while (t.is(next, "+") && t.isLiteral(next + 1)) {
                 append(text, t.value(next + 1));
-                text.plain = false;
+                ++text.pieces;
                 next += 2;
             }
         } else {

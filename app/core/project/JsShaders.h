@@ -20,8 +20,8 @@ struct JsShaderText {
     QString name;
     qsizetype begin = 0; // the expression's bytes in the scanned text
     qsizetype end = 0;
-    // One literal without escapes: its bytes are the value.
-    bool plain = false;
+    int pieces = 0; // literals it is made of
+    char quote = 0; // the one literal's quote: ' " or `
 };
 std::vector<JsShaderText> shaderTextsInJs(std::string_view js);
 

@@ -242,3 +242,32 @@ const ProjectProgram *programNamed(const Project &project, const QString &name, 
 }
 
 } // namespace phonglab
+
+namespace phonglab {
+
+Result<ProjectProgram> chooseProgram(const Project &project, const QString &name)
+{
+    if (!project.error.isEmpty())
+        return fail(project.error);
+    if (!name.isEmpty()) {
+        QString error;
+        if (const ProjectProgram *named = programNamed(project, name, &error))
+            return *named;
+        return fail(error);
+    }
+    const std::vector<const ProjectProgram *> lit = litPrograms(project);
+    if (lit.size() == 1)
+        return *lit.front();
+    if (lit.empty())
+        return fail(ProjectProgramsWords::tr("%1: no program that lights anything (%2)")
+                        .arg(project.path, project.notes.join(QStringLiteral("; "))));
+    QStringList names;
+    for (const ProjectProgram *p : lit)
+        names << p->name;
+    return fail(ProjectProgramsWords::tr("%1: %2 programs light the scene (%3); choose one")
+                    .arg(project.path)
+                    .arg(lit.size())
+                    .arg(names.join(QStringLiteral(", "))));
+}
+
+} // namespace phonglab

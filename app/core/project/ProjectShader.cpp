@@ -2,6 +2,7 @@
 
 #include "HtmlShaders.h"
 #include "JsShaders.h"
+#include "ProjectSave.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -123,8 +124,11 @@ void addFound(std::vector<ProjectShader> &out, const QString &path, const QByteA
         text.name.isEmpty() ? ProjectShaderWords::tr("line %1").arg(shader.line) : text.name;
     shader.begin = text.begin;
     shader.end = text.end;
-    shader.writable = text.writable;
-    shader.notWritable = text.notWritable;
+    shader.text = text.value;
+    shader.container = text.container;
+    shader.quote = text.quote;
+    shader.notWritable = whyNotWritable(shader, file);
+    shader.writable = shader.notWritable.isEmpty();
     for (const ProjectShader &other : out)
         if (other.key == shader.key) // two texts under one name: the later by its line
             shader.key = ProjectShaderWords::tr("line %1").arg(shader.line);
@@ -154,7 +158,7 @@ std::vector<ProjectShader> shadersInFile(const QString &path)
         whole.name = QFileInfo(path).fileName();
         whole.begin = 0;
         whole.end = file.size();
-        whole.writable = true;
+        whole.container = ShaderContainer::File;
         texts.push_back(std::move(whole));
     }
     for (const FoundText &text : texts)

@@ -18,23 +18,38 @@ enum class ProjectStage {
     Fragment
 };
 
+// What holds a shader's text in its file, which decides how it is written
+// back (ProjectSave).
+enum class ShaderContainer {
+    File,          // a file of its own: the text as it is
+    ScriptElement, // <script type="x-shader/...">: raw text
+    Textarea,      // <textarea>: & and < as references
+    JsTemplate,    // `...`: \ ` and ${ escaped
+    JsString,      // '...' or "...": \, the quote and line ends escaped
+    JsPieces,      // strings joined by + or an array joined: never written back
+};
+
 struct ProjectShader {
     QString file; // the file it is in, as found
     // What names it in its file: the element's id, the variable or property
     // holding it, a file's name; "line N" where nothing names it.
     QString key;
     ProjectStage stage = ProjectStage::Vertex;
+    QByteArray text; // as written, the way the page hands it to WebGL
     // Its text laid out as in the file: blank lines before it and spaces
     // before each line's first character, so that every line and column a
     // compiler or the check reports is the file's (index.html:57:12).
     // Whitespace only is added, and only between lines.
     QByteArray code;
     int line = 0; // the file's line its text starts on
-    // The file's bytes [begin, end) are exactly the shader's text (a script
-    // or textarea without character references, a literal without
-    // escapes): Save can write it back there.
+    // The file's bytes [begin, end) hold the text (inside a literal's
+    // quotes), escaped as its container escapes it.
     qsizetype begin = 0;
     qsizetype end = 0;
+    ShaderContainer container = ShaderContainer::File;
+    char quote = 0; // a JavaScript string's quote
+    // Writing the text back as its container escapes it gives the file's
+    // very bytes: Save can replace it there and leave every other byte.
     bool writable = false;
     QString notWritable; // why not, in a sentence
 };

@@ -1,5 +1,7 @@
 #include "SceneShaderFiles.h"
 
+#include "core/project/ProjectShader.h"
+
 #include "LiveShaderController.h"
 #include "ShaderDock.h"
 #include "ShaderEditor.h"
@@ -52,7 +54,7 @@ SceneShaderFiles::Opened SceneShaderFiles::open(const Scene &scene)
     QStringList missing;
     for (const auto &[stage, name] : files) {
         const QString path = scene.resolveShaderPath(name);
-        if (!name.isEmpty() && !QFileInfo(path).isFile())
+        if (!name.isEmpty() && !QFileInfo(path).isFile() && !isShaderLocator(path))
             missing << tr("shaders.%1: %2: file not found")
                            .arg(stageName(stage), QDir::toNativeSeparators(path));
     }
@@ -62,7 +64,7 @@ SceneShaderFiles::Opened SceneShaderFiles::open(const Scene &scene)
     bool opened = false;
     for (const auto &[stage, name] : files) {
         const QString path = scene.resolveShaderPath(name);
-        if (name.isEmpty() || !QFileInfo(path).isFile())
+        if (name.isEmpty() || (!QFileInfo(path).isFile() && !isShaderLocator(path)))
             continue;
         // One at a time, on its stage's tab, so any suffix goes to the right stage.
         m_dock->tabs()->setCurrentWidget(m_dock->editor(stage));

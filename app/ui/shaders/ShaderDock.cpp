@@ -1,5 +1,7 @@
 #include "ShaderDock.h"
 
+#include "core/project/ProjectShader.h"
+
 #include "DiagnosticList.h"
 #include "ShaderEditor.h"
 #include "ShaderFileSet.h"
@@ -30,6 +32,13 @@ const char kShaderFilter[] = "GLSL shaders (*.vert *.frag *.glsl *.vs *.fs);;All
 
 std::optional<ShaderStage> stageFromSuffix(const QString &path)
 {
+    // A WebGL project's shader: its stage is its content's.
+    if (isShaderLocator(path)) {
+        const Result<ProjectShader> shader = shaderAtLocator(path);
+        if (!shader)
+            return std::nullopt;
+        return shader->stage == ProjectStage::Vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
+    }
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == QLatin1String("vert") || suffix == QLatin1String("vs")
         || suffix == QLatin1String("vsh"))
@@ -289,7 +298,7 @@ Result<> ShaderDock::openFiles(const QStringList &paths)
         const auto stage = stageFromSuffix(path);
         if (!stage && paths.size() == 2)
             return fail(tr("%1: cannot tell which stage it is (use .vert or .frag)").arg(path));
-        Result<ShaderSource> source = ShaderSource::fromFile(path);
+        Result<ShaderSource> source = ShaderSource::forEditing(path);
         if (!source)
             return fail(source.error());
         opened.append({stage.value_or(currentStage()), *source});
@@ -301,7 +310,10 @@ Result<> ShaderDock::openFiles(const QStringList &paths)
     for (const auto &[stage, source] : opened) {
         editor(stage)->clearDiagnostics();
         editor(stage)->setCode(source.code);
-        m_files->setFile(stage, QFileInfo(source.name).absoluteFilePath(), source.code);
+        m_files->setFile(stage,
+                         isShaderLocator(source.name) ? source.name
+                                                      : QFileInfo(source.name).absoluteFilePath(),
+                         source.code);
     }
     m_settingText = wasSetting;
     m_tabs->setCurrentWidget(editor(opened.last().first));
@@ -347,15 +359,33 @@ void ShaderDock::chooseAndOpen()
 
 void ShaderDock::saveCurrent()
 {
-    if (const Result<> saved = save(currentStage()); !saved)
+    const ShaderStage stage = currentStage();
+    const Result<> saved = save(stage);
+    if (saved)
+        return;
+    if (!isShaderLocator(filePath(stage))) {
         warn(saved.error());
+        return;
+    }
+    // A shader the page or script cannot take back as it is: say why, and
+    // offer a file of its own.
+    QMessageBox box(QMessageBox::Warning, tr("Shaders"), saved.error(), QMessageBox::Cancel, this);
+    QPushButton *saveAs = box.addButton(tr("Save As…"), QMessageBox::AcceptRole);
+    box.setDefaultButton(saveAs);
+    box.exec();
+    if (box.clickedButton() == saveAs)
+        chooseAndSaveAsCurrent();
 }
 
 void ShaderDock::chooseAndSaveAsCurrent()
 {
     const ShaderStage stage = currentStage();
     QDir().mkpath(ShaderFileSet::userFolder());
-    const QString name = QFileInfo(filePath(stage)).fileName();
+    // A project's shader ("index.html#vsSource") suggests a file of its own.
+    const QString path0 = filePath(stage);
+    const QString name = isShaderLocator(path0) ? path0.section(QLatin1Char('#'), -1)
+            + (stage == ShaderStage::Vertex ? QStringLiteral(".vert") : QStringLiteral(".frag"))
+                                                : QFileInfo(path0).fileName();
     const QString suggested = QDir(ShaderFileSet::userFolder()).filePath(name);
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));

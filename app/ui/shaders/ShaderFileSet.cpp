@@ -1,5 +1,7 @@
 #include "ShaderFileSet.h"
 
+#include "core/project/ProjectSave.h"
+
 #include "core/ResourcePaths.h"
 #include "core/ShadingMethod.h"
 
@@ -180,10 +182,47 @@ Result<> ShaderFileSet::moveToUserCopy(ShaderStage stage, const QByteArray &cont
     return {};
 }
 
+namespace {
+
+// The text a stage's path holds now: a file's, or a project shader's.
+std::optional<QByteArray> currentText(const QString &path)
+{
+    if (isShaderLocator(path)) {
+        const Result<ProjectShader> shader = shaderAtLocator(path);
+        return shader ? std::optional<QByteArray>(shader->text) : std::nullopt;
+    }
+    QFile in(path);
+    if (!in.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    return in.readAll();
+}
+
+// Saves `code` in place of a project shader's text; every other byte of
+// its page or script stays.
+Result<> saveIntoProjectFile(const QString &locator, const QByteArray &code)
+{
+    const Result<ProjectShader> shader = shaderAtLocator(locator);
+    if (!shader)
+        return fail(shader.error());
+    QFile in(shader->file);
+    if (!in.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("%1: %2").arg(shader->file, in.errorString()));
+    const Result<QByteArray> saved = withShaderText(in.readAll(), *shader, code);
+    if (!saved)
+        return fail(saved.error());
+    return writeAtomically(shader->file, *saved);
+}
+
+} // namespace
+
 Result<> ShaderFileSet::save(ShaderStage stage, const QByteArray &code)
 {
     File &f = file(stage);
-    if (needsUserCopy(f.path)) {
+    if (isShaderLocator(f.path)) {
+        if (Result<> done = saveIntoProjectFile(f.path, code); !done)
+            return done;
+        f.diskCode = code;
+    } else if (needsUserCopy(f.path)) {
         if (Result<> done = moveToUserCopy(stage, code); !done)
             return done;
     } else {
@@ -237,13 +276,10 @@ void ShaderFileSet::checkForExternalChanges()
         const File &f = file(stage);
         if (f.path.isEmpty() || isResource(f.path))
             continue;
-        QFile in(f.path);
         // A missing file is mid-rename or deleted: keep the buffer either way.
-        if (!in.open(QIODevice::ReadOnly))
-            continue;
-        const QByteArray onDisk = in.readAll();
-        if (onDisk != f.diskCode)
-            handleExternalChange(stage, onDisk);
+        const std::optional<QByteArray> onDisk = currentText(f.path);
+        if (onDisk && *onDisk != f.diskCode)
+            handleExternalChange(stage, *onDisk);
     }
 }
 

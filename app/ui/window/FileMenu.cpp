@@ -4,16 +4,19 @@
 #include "FileTypes.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
-#include "ui/viewport/Viewport.h"
 #include "WarningBox.h"
 #include "core/ResourcePaths.h"
 #include "core/ScenePaths.h"
+#include "core/project/ProjectPrograms.h"
+#include "ui/shaders/ShaderDock.h"
+#include "ui/viewport/Viewport.h"
 
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
+#include <QMessageBox>
 #include <QStatusBar>
 
 namespace phonglab {
@@ -32,6 +35,7 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
     open->setShortcut(QKeySequence::Open);
     QAction *openMesh = menu->addAction(tr("Open &Mesh…"), this, &FileMenu::chooseAndOpenMeshes);
     openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    menu->addAction(tr("Open &Project…"), this, &FileMenu::chooseAndOpenProject);
     m_recentFiles = new RecentFiles(menu->addMenu(tr("&Recent")), this);
     connect(m_recentFiles, &RecentFiles::fileChosen, this,
             [this](const QString &path) { openOrExplain({path}); });
@@ -75,6 +79,46 @@ void FileMenu::chooseAndOpenScene()
         QFileDialog::getOpenFileName(m_window, tr("Open Scene"), dialogFolder(), sceneFileFilter());
     if (!path.isEmpty())
         openOrExplain({path});
+}
+
+void FileMenu::chooseAndOpenProject()
+{
+    const QString page =
+        QFileDialog::getOpenFileName(m_window, tr("Open WebGL Project"), dialogFolder(),
+                                     tr("WebGL projects (*.html *.htm *.js *.mjs);;All files (*)"));
+    if (page.isEmpty())
+        return;
+    rememberFolderOf(page);
+    // The page's folder: its scripts and shader files are the project too.
+    const Project project = readProject(QFileInfo(page).absolutePath());
+    QString name;
+    if (const std::vector<const ProjectProgram *> lit = litPrograms(project); lit.size() > 1) {
+        QStringList names;
+        for (const ProjectProgram *p : lit)
+            names << p->name;
+        bool ok = false;
+        name = QInputDialog::getItem(m_window, tr("Open WebGL Project"),
+                                     tr("The project has several programs that light. Which one?"),
+                                     names, 0, false, &ok);
+        if (!ok)
+            return;
+    }
+    const Result<ProjectProgram> chosen = chooseProgram(project, name);
+    if (chosen && m_window->shaderDock()->hasUnsavedChanges()
+        && QMessageBox::question(m_window, tr("Unsaved changes"),
+                                 tr("The shaders have unsaved changes. Discard them?"),
+                                 QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel)
+            != QMessageBox::Discard)
+        return;
+    const Result<> opened = chosen
+        ? m_window->openShaders(shaderLocator(chosen->vertex), shaderLocator(chosen->fragment))
+        : Result<>(fail(chosen.error()));
+    if (!opened) {
+        openWarning(m_window, tr("Cannot open"), opened.error());
+        return;
+    }
+    m_window->statusBar()->showMessage(
+        tr("Opened %1 of %2").arg(chosen->name, QFileInfo(page).fileName()), kMessageTimeoutMs);
 }
 
 void FileMenu::chooseAndOpenMeshes()

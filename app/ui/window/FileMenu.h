@@ -29,6 +29,9 @@ public:
 private:
     void chooseAndOpenScene();
     void chooseAndOpenMeshes();
+    // A WebGL project's page or script: its program that lights (asked
+    // which where there are several) into the Shaders dock.
+    void chooseAndOpenProject();
     void explainMissingRecentFile(const QString &path);
     void saveToCurrentFile();
     void chooseAndSave();

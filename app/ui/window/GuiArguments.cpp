@@ -48,6 +48,10 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
                    && (takeValue(QStringLiteral("--vertex"), arguments, i, out.vertexShader,
                                  out.error)
                        || takeValue(QStringLiteral("--fragment"), arguments, i, out.fragmentShader,
+                                    out.error)
+                       || takeValue(QStringLiteral("--project"), arguments, i, out.project,
+                                    out.error)
+                       || takeValue(QStringLiteral("--program"), arguments, i, out.program,
                                     out.error))) {
             continue;
         } else if (options && argument.startsWith(QLatin1Char('-')) && argument.size() > 1) {
@@ -55,7 +59,8 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
             // the commands' own or slips.
             out.error = unknownOptionMessage(
                 argument.section(QLatin1Char('='), 0, 0),
-                {QStringLiteral("--vertex"), QStringLiteral("--fragment"), QStringLiteral("--lang"),
+                {QStringLiteral("--vertex"), QStringLiteral("--fragment"),
+                 QStringLiteral("--project"), QStringLiteral("--program"), QStringLiteral("--lang"),
                  QStringLiteral("--help"), QStringLiteral("--version")});
         } else {
             out.files << argument;
@@ -67,6 +72,12 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
         out.error = GuiArgumentsWords::tr(
             "--vertex and --fragment open one scene with those shaders: phonglab SCENE.json "
             "--vertex FILE --fragment FILE");
+    if (out.error.isEmpty() && !out.project.isEmpty()
+        && (!out.vertexShader.isEmpty() || !out.fragmentShader.isEmpty()))
+        out.error = GuiArgumentsWords::tr(
+            "--project takes both stages from the project; leave out --vertex and --fragment");
+    if (out.error.isEmpty() && !out.program.isEmpty() && out.project.isEmpty())
+        out.error = GuiArgumentsWords::tr("--program names a program of --project");
     return out;
 }
 

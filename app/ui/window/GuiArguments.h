@@ -6,15 +6,21 @@ namespace phonglab {
 
 // What the window's command line asks for: `phonglab [FILE...]` opens a
 // scene or meshes; `phonglab SCENE.json --vertex FILE --fragment FILE` opens
-// a scene with a student's shaders (issue 31, B). Qt's own options are gone
+// a scene with a student's shaders (issue 31, B); `phonglab SCENE.json
+// --project PATH [--program NAME]` with a WebGL project's (issue 42, B). Qt's own options are gone
 // by now (QApplication takes them).
 struct GuiArguments {
     QStringList files;
     QString vertexShader;   // --vertex FILE
     QString fragmentShader; // --fragment FILE
+    QString project;        // --project PATH: a WebGL project's page, script or folder
+    QString program;        // --program NAME: which of its programs
     QString error;          // a usage error, in a sentence; empty when none
 
-    bool hasShaders() const { return !vertexShader.isEmpty() || !fragmentShader.isEmpty(); }
+    bool hasShaders() const
+    {
+        return !vertexShader.isEmpty() || !fragmentShader.isEmpty() || !project.isEmpty();
+    }
 };
 
 // `arguments` without the program's name.

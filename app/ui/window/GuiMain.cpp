@@ -1,5 +1,7 @@
 #include "GuiMain.h"
 
+#include "core/project/ProjectPrograms.h"
+
 #include "GuiArguments.h"
 #include "LanguageMenu.h"
 #include "MainWindow.h"
@@ -89,8 +91,21 @@ void openRequestedFiles(MainWindow &window, const QStringList &paths)
 // says why and leaves the default scene.
 void openSubmission(MainWindow &window, const GuiArguments &requested)
 {
-    const Result<> opened = window.openSubmission(requested.files.front(), requested.vertexShader,
-                                                  requested.fragmentShader);
+    QString vertex = requested.vertexShader, fragment = requested.fragmentShader;
+    Result<> opened;
+    if (!requested.project.isEmpty()) {
+        // A WebGL project's program: its stages where the page or script has them.
+        const Result<ProjectProgram> chosen =
+            chooseProgram(readProject(requested.project), requested.program);
+        if (chosen) {
+            vertex = shaderLocator(chosen->vertex);
+            fragment = shaderLocator(chosen->fragment);
+        } else {
+            opened = fail(chosen.error());
+        }
+    }
+    if (opened)
+        opened = window.openSubmission(requested.files.front(), vertex, fragment);
     if (!opened)
         QMessageBox::warning(
             &window, QObject::tr("Cannot open"),

@@ -1,5 +1,7 @@
 #include "MainWindow.h"
+
 #include "core/Language.h"
+#include "core/project/ProjectShader.h"
 
 #include "DefaultLayout.h"
 #include "FileMenu.h"
@@ -393,9 +395,17 @@ Result<> MainWindow::openSubmission(const QString &scenePath, const QString &ver
     if (!isSceneFile(scenePath))
         return fail(tr("%1: not a scene file (.json)").arg(scenePath));
     for (const QString &file : {vertexPath, fragmentPath})
-        if (!file.isEmpty() && !QFileInfo(file).isFile())
+        if (!file.isEmpty() && !QFileInfo(file).isFile() && !isShaderLocator(file))
             return fail(tr("%1: no such shader file").arg(file));
     return startSceneLoad(scenePath, vertexPath, fragmentPath);
+}
+
+Result<> MainWindow::openShaders(const QString &vertexPath, const QString &fragmentPath)
+{
+    if (const Result<> opened = m_shaderDock->openFiles({vertexPath, fragmentPath}); !opened)
+        return opened;
+    m_liveShaders->buildNow();
+    return {};
 }
 
 // The scene file itself is small and parsed here, so a broken one is refused
@@ -407,10 +417,14 @@ Result<> MainWindow::startSceneLoad(const QString &path, const QString &vertexPa
     SceneLoadResult parsed = loadSceneFile(path);
     if (!parsed.ok())
         return fail(QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(path), parsed.error));
+    // A locator (index.html#vsSource) is absolute already where a project gave it.
+    const auto absolute = [](const QString &file) {
+        return isShaderLocator(file) ? file : QFileInfo(file).absoluteFilePath();
+    };
     if (!vertexPath.isEmpty())
-        parsed.scene->vertexShader = QFileInfo(vertexPath).absoluteFilePath();
+        parsed.scene->vertexShader = absolute(vertexPath);
     if (!fragmentPath.isEmpty())
-        parsed.scene->fragmentShader = QFileInfo(fragmentPath).absoluteFilePath();
+        parsed.scene->fragmentShader = absolute(fragmentPath);
     SceneLoadRequest request = sceneFileRequest(path, *parsed.scene);
     request.shown = [this, path, warnings = parsed.warnings, scene = *parsed.scene] {
         setScenePath(path);

@@ -71,6 +71,10 @@ public:
     // stage (or the shipped one). Loads in the background as openFiles().
     Result<> openSubmission(const QString &scenePath, const QString &vertexPath,
                             const QString &fragmentPath);
+    // A program's two stages in the Shaders dock, built and checked live on
+    // the current scene (File → Open Project: "index.html#vsSource"
+    // locators). Unsaved edits are the caller's to confirm first.
+    Result<> openShaders(const QString &vertexPath, const QString &fragmentPath);
     // Reloads object `objectIndex`'s mesh with other normals, in the background.
     void changeNormals(int objectIndex, const NormalOptions &options);
     // Shows every object at `detail` with `method` shading (Fit to budget),
