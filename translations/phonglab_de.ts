@@ -900,6 +900,34 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
+    <message>
+        <source>Open &amp;Project…</source>
+        <translation>&amp;Projekt öffnen…</translation>
+    </message>
+    <message>
+        <source>Open WebGL Project</source>
+        <translation>WebGL-Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>WebGL projects (*.html *.htm *.js *.mjs);;All files (*)</source>
+        <translation>WebGL-Projekte (*.html *.htm *.js *.mjs);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The project has several programs that light. Which one?</source>
+        <translation>Das Projekt hat mehrere Programme, die beleuchten. Welches?</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The shaders have unsaved changes. Discard them?</source>
+        <translation>Die Shader haben ungespeicherte Änderungen. Verwerfen?</translation>
+    </message>
+    <message>
+        <source>Opened %1 of %2</source>
+        <translation>%1 aus %2 geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::FrameRedraw</name>
@@ -987,6 +1015,14 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
         <source>--vertex and --fragment open one scene with those shaders: phonglab SCENE.json --vertex FILE --fragment FILE</source>
         <translation>--vertex und --fragment öffnen eine Szene mit diesen Shadern: phonglab SCENE.json --vertex FILE --fragment FILE</translation>
     </message>
+    <message>
+        <source>--project takes both stages from the project; leave out --vertex and --fragment</source>
+        <translation>--project nimmt beide Stufen aus dem Projekt; --vertex und --fragment weglassen</translation>
+    </message>
+    <message>
+        <source>--program names a program of --project</source>
+        <translation>--program nennt ein Programm von --project</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::HelpMenu</name>
@@ -1021,17 +1057,6 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>Documentation not found</source>
         <translation>Dokumentation nicht gefunden</translation>
-    </message>
-</context>
-<context>
-    <name>phonglab::HtmlShaders</name>
-    <message>
-        <source>the textarea writes characters as HTML references (&amp;lt; and the like)</source>
-        <translation>das Textfeld schreibt Zeichen als HTML-Referenzen (&amp;lt; und ähnliche)</translation>
-    </message>
-    <message>
-        <source>the shader is built from several strings or escape sequences in the script</source>
-        <translation>der Shader wird im Skript aus mehreren Zeichenketten oder Escape-Sequenzen zusammengesetzt</translation>
     </message>
 </context>
 <context>
@@ -2584,6 +2609,41 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <source>%1: no program named %2 (there are: %3)</source>
         <translation>%1: kein Programm namens %2 (vorhanden: %3)</translation>
     </message>
+    <message>
+        <source>%1: no program that lights anything (%2)</source>
+        <translation>%1: kein Programm, das etwas beleuchtet (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2 programs light the scene (%3); choose one</source>
+        <translation>%1: %2 Programme beleuchten die Szene (%3); eines wählen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ProjectSave</name>
+    <message>
+        <source>the script builds the shader from several strings</source>
+        <translation>das Skript setzt den Shader aus mehreren Zeichenketten zusammen</translation>
+    </message>
+    <message>
+        <source>the textarea writes its characters another way than &amp; and &lt; as references</source>
+        <translation>das Textfeld schreibt seine Zeichen anders als &amp; und &lt; als Referenzen</translation>
+    </message>
+    <message>
+        <source>the script writes the shader with escapes of its own</source>
+        <translation>das Skript schreibt den Shader mit eigenen Escape-Sequenzen</translation>
+    </message>
+    <message>
+        <source>%1: the shader %2 cannot be saved back into the file (%3); use Save As to write it to a file of its own</source>
+        <translation>%1: der Shader %2 kann nicht in die Datei zurückgeschrieben werden (%3); mit „Speichern unter“ in eine eigene Datei schreiben</translation>
+    </message>
+    <message>
+        <source>%1: the shader %2 holds &quot;&lt;/script&quot;, which would end its script element; use Save As</source>
+        <translation>%1: der Shader %2 enthält „&lt;/script“, das sein script-Element beenden würde; „Speichern unter“ verwenden</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk; open it again</source>
+        <translation>%1 wurde auf dem Datenträger geändert; erneut öffnen</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::ProjectShader</name>
@@ -4107,16 +4167,12 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>--program nennt ein Programm von --project</translation>
     </message>
     <message>
-        <source>%1: no program that lights anything (%2)</source>
-        <translation>%1: kein Programm, das etwas beleuchtet (%2)</translation>
-    </message>
-    <message>
-        <source>%1: %2 programs light the scene (%3); choose one with --program NAME</source>
-        <translation>%1: %2 Programme beleuchten die Szene (%3); eines mit --program NAME wählen</translation>
-    </message>
-    <message>
         <source>program %1: %2 and %3</source>
         <translation>Programm %1: %2 und %3</translation>
+    </message>
+    <message>
+        <source> with --program NAME</source>
+        <translation> mit --program NAME</translation>
     </message>
 </context>
 <context>
@@ -4281,6 +4337,17 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     </message>
 </context>
 <context>
+    <name>phonglab::cli::ClassStaging</name>
+    <message>
+        <source>%1: cannot regroup the files into %2</source>
+        <translation>%1: die Dateien können nicht nach %2 umsortiert werden</translation>
+    </message>
+    <message>
+        <source>%1: cannot copy it into %2</source>
+        <translation>%1: kann nicht nach %2 kopiert werden</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::Cli</name>
     <message>
         <source>
@@ -4343,6 +4410,45 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>phonglab::cli::CoursePlatformOutputs</name>
+    <message>
+        <source>%1: matches the exact image.</source>
+        <translation>%1: stimmt mit dem exakten Bild überein.</translation>
+    </message>
+    <message>
+        <source>%1: differs from the exact image; no classic mistake explains it.</source>
+        <translation>%1: weicht vom exakten Bild ab; kein typischer Fehler erklärt es.</translation>
+    </message>
+    <message>
+        <source>%1: differs from the exact image, most likely %2.</source>
+        <translation>%1: weicht vom exakten Bild ab, wahrscheinlich %2.</translation>
+    </message>
+    <message>
+        <source>%1: not checked, %2 line %3: %4</source>
+        <translation>%1: nicht geprüft, %2 Zeile %3: %4</translation>
+    </message>
+    <message>
+        <source>%1: not checked: %2</source>
+        <translation>%1: nicht geprüft: %2</translation>
+    </message>
+    <message>
+        <source>%1: took longer than the time allowed.</source>
+        <translation>%1: hat länger gedauert als erlaubt.</translation>
+    </message>
+    <message>
+        <source>%1: the check crashed or ran out of memory.</source>
+        <translation>%1: die Prüfung ist abgestürzt oder hatte nicht genug Speicher.</translation>
+    </message>
+    <message>
+        <source>--points: expected VERDICT=NUMBER, … with the verdicts pass, fail, error, timeout, crash; got &apos;%1&apos;</source>
+        <translation>--points: erwartet URTEIL=ZAHL, … mit den Urteilen pass, fail, error, timeout, crash; erhalten &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::GradeCommand</name>
     <message>
         <source>Show help.</source>
@@ -4396,11 +4502,13 @@ Befehle:
         <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                      [--define NAME=VALUE ...] [--precision highp|as-written]</source>
+                      [--define NAME=VALUE ...] [--precision highp|as-written]
+                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]</source>
         <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                        [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                        [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                       [--define NAME=VALUE ...] [--precision highp|as-written]</translation>
+                       [--define NAME=VALUE ...] [--precision highp|as-written]
+                       [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]</translation>
     </message>
     <message>
         <source>
@@ -4408,9 +4516,14 @@ Befehle:
 Checks every submission in SUBMISSIONS against every scene, as `phonglab check` does,
 and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one
 submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,
-.frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes.
-A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check runs in a
-child process of its own: a shader that runs too long or crashes costs that one verdict.
+.frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes,
+or a WebGL project (pages and scripts, as check --project reads them; each program
+that lights is judged on its own). SUBMISSIONS may be a .zip or .tar.gz, and a
+course platform&apos;s download: Moodle&apos;s folders or flat files by student. A student&apos;s
+own archive is unpacked once; an archive with links or names that leave it is
+refused. A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check
+runs in a child process of its own: a shader that runs too long or crashes costs
+that one verdict.
 
   --scene FILE        a scene to check with; repeatable, at least one
   --out DIR           where the results go, default ./grades
@@ -4424,11 +4537,15 @@ child process of its own: a shader that runs too long or crashes costs that one 
   --define NAME=VALUE a token the page&apos;s JavaScript replaces, as in check; repeatable
   --precision RULE    highp (default) or as-written, as in check
   --equation E        demand the slide&apos;s (slide) or the guarded (guarded) equation
+  --points P          what each verdict is worth in moodle-grades.csv, summed over a
+                      student&apos;s rows; default pass=1,fail=0,error=0,timeout=0,crash=0
+  --resume            keep the rows a stopped run of the same command finished
 
 Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
-bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),
-DIR/grades.json (the check&apos;s JSON per row), DIR/report.html and its DIR/images/,
-and a table on stdout.
+bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
+student, participant), DIR/grades.json (the check&apos;s JSON per row), DIR/report.html
+and its DIR/images/, and a table on stdout. From Moodle also DIR/moodle-grades.csv
+(its offline grading worksheet) and DIR/feedback.zip (a feedback.html per student).
 Verdicts: pass, fail, error, timeout, crash.
 
 Exit status: 0 every submission got a verdict, 1 the run could not complete (a scene
@@ -4439,9 +4556,14 @@ Prüft jede Abgabe in SUBMISSIONS mit jeder Szene, wie `phonglab check` es tut, 
 schreibt die Ergebnisse der Studierenden nach DIR. Jeder Unterordner von SUBMISSIONS ist
 eine Abgabe: ihr Vertex- und/oder Fragment-Shader, unter beliebigen Dateinamen (.vert .vs
 .vsh, .frag .fs .fsh; .glsl je nachdem, ob gl_Position geschrieben wird), in jedem Dialekt,
-den `check` annimmt. Für eine fehlende Stufe wird die mitgelieferte des
-Schattierungsverfahrens der Szene verwendet. Jede Prüfung läuft in einem eigenen
-Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses eine Urteil.
+den `check` annimmt, oder ein WebGL-Projekt (Seiten und Skripte, wie check --project sie
+liest; jedes Programm, das beleuchtet, wird für sich beurteilt). SUBMISSIONS darf eine .zip-
+oder .tar.gz-Datei sein, auch der Download einer Lernplattform: Moodles Ordner oder flache
+Dateien pro Person. Ein eigenes Archiv einer Person wird einmal entpackt; ein Archiv mit
+Links oder Namen, die es verlassen, wird abgelehnt. Für eine fehlende Stufe wird die
+mitgelieferte des Schattierungsverfahrens der Szene verwendet. Jede Prüfung läuft in einem
+eigenen Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses eine
+Urteil.
 
   --scene FILE        eine Szene, mit der geprüft wird; wiederholbar, mindestens eine
   --out DIR           Ordner für die Ergebnisse, Standard ./grades
@@ -4456,15 +4578,24 @@ Kindprozess: Ein Shader, der zu lange läuft oder abstürzt, kostet nur dieses e
                       wiederholbar
   --precision RULE    highp (Standard) oder as-written, wie bei check
   --equation E        die Gleichung der Folie (slide) oder die abgesicherte (guarded) verlangen
+  --points P          was jedes Urteil in moodle-grades.csv wert ist, summiert über die
+                      Zeilen einer Person; Standard pass=1,fail=0,error=0,timeout=0,crash=0
+  --resume            die Zeilen behalten, die ein abgebrochener Lauf desselben Befehls
+                      fertig hatte
 
 Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
-bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes),
-DIR/grades.json (das JSON der Prüfung pro Zeile), DIR/report.html mit DIR/images/ sowie
-eine Tabelle auf stdout.
+bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
+student, participant), DIR/grades.json (das JSON der Prüfung pro Zeile), DIR/report.html
+mit DIR/images/ sowie eine Tabelle auf stdout. Aus Moodle außerdem DIR/moodle-grades.csv
+(seine Offline-Bewertungstabelle) und DIR/feedback.zip (eine feedback.html pro Person).
 Urteile: pass, fail, error, timeout, crash.
 
 Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgeschlossen
 werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
+    </message>
+    <message>
+        <source>grade: kept %1 finished checks of the stopped run</source>
+        <translation>grade: %1 fertige Prüfungen des abgebrochenen Laufs behalten</translation>
     </message>
 </context>
 <context>
@@ -4889,6 +5020,61 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>PNG encoding failed</source>
         <translation>PNG-Kodierung fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::SubmissionArchive</name>
+    <message>
+        <source>%1: refused: %2</source>
+        <translation>%1: abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot read it as an archive: %2</source>
+        <translation>%1: nicht als Archiv lesbar: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot make the folder %2</source>
+        <translation>%1: der Ordner %2 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>it is damaged (%1)</source>
+        <translation>es ist beschädigt (%1)</translation>
+    </message>
+    <message>
+        <source>more than %1 entries</source>
+        <translation>mehr als %1 Einträge</translation>
+    </message>
+    <message>
+        <source>the name %1 leaves the folder it is unpacked in</source>
+        <translation>der Name %1 verlässt den Ordner, in den entpackt wird</translation>
+    </message>
+    <message>
+        <source>%1 is a link</source>
+        <translation>%1 ist ein Link</translation>
+    </message>
+    <message>
+        <source>cannot make %1</source>
+        <translation>%1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a plain file</source>
+        <translation>%1 ist keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>it is damaged at %1 (%2)</source>
+        <translation>es ist bei %1 beschädigt (%2)</translation>
+    </message>
+    <message>
+        <source>more than %1 MiB unpacked</source>
+        <translation>mehr als %1 MiB entpackt</translation>
+    </message>
+    <message>
+        <source>a zip bomb: %1 MiB unpacked from %2 KiB and still going</source>
+        <translation>eine Zip-Bombe: %1 MiB aus %2 KiB entpackt, und es geht weiter</translation>
     </message>
 </context>
 </TS>

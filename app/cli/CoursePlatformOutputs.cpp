@@ -83,13 +83,19 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
     }
     case GradeVerdict::Error: {
         const RowPlace place = rowPlace(row);
-        const QString message =
-            row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
-        return place.line > 0 ? CoursePlatformWords::tr("%1: not checked, %2 line %3: %4")
-                                    .arg(where, place.file)
-                                    .arg(place.line)
-                                    .arg(message)
-                              : CoursePlatformWords::tr("%1: not checked: %2").arg(where, message);
+        QString message = row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
+        if (!message.endsWith(QLatin1Char('.')))
+            message += QLatin1Char('.');
+        // The student's own file, as they named it, not the download's folder.
+        QString file = place.file;
+        if (file.startsWith(s.name + QLatin1Char('/')))
+            file.remove(0, s.name.size() + 1);
+        return place.line > 0
+            ? CoursePlatformWords::tr("%1: not checked, %2 line %3: %4")
+                  .arg(where, file)
+                  .arg(place.line)
+                  .arg(message)
+            : CoursePlatformWords::tr("%1: not checked: %2").arg(where, message);
     }
     case GradeVerdict::Timeout:
         return CoursePlatformWords::tr("%1: took longer than the time allowed.").arg(where);
@@ -104,7 +110,14 @@ GradeResults onlyStudent(const GradeResults &results, const QString &folder)
 {
     GradeResults one;
     one.settings = results.settings;
-    one.settings.classFolder = folder; // the teacher's own paths stay with the teacher
+    // The student by name, their files by their own names: the download's
+    // folder and the teacher's paths stay with the teacher.
+    const QString student = results.submissions[std::size_t(submissionsOf(results, folder).front())]
+                                .student;
+    one.settings.classFolder = student.isEmpty() ? folder : student;
+    const auto own = [prefix = folder + QLatin1Char('/')](QString path) {
+        return path.startsWith(prefix) ? path.mid(prefix.size()) : path;
+    };
     one.scenes = results.scenes;
     std::map<int, int> index;
     for (const int s : submissionsOf(results, folder)) {
@@ -112,12 +125,21 @@ GradeResults onlyStudent(const GradeResults &results, const QString &folder)
         Submission copy = results.submissions[std::size_t(s)];
         copy.vertex.clear(); // the teacher's command to open it names the teacher's paths
         copy.fragment.clear();
+        if (!copy.student.isEmpty())
+            copy.name = copy.student;
         one.submissions.push_back(std::move(copy));
     }
     for (const GradeRow &row : results.rows)
         if (const auto it = index.find(row.submission); it != index.end()) {
             GradeRow copy = row;
             copy.submission = it->second;
+            for (ShaderDiagnostic &e : copy.outcome.errors)
+                e.file = own(e.file);
+            for (ShaderStageText &t : copy.outcome.stages)
+                t.path = own(t.path);
+            for (QStringList *texts : {&copy.outcome.warnings, &copy.outcome.notes})
+                for (QString &text : *texts)
+                    text.replace(folder + QLatin1Char('/'), QString());
             one.rows.push_back(std::move(copy));
         }
     return one;

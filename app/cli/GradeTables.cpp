@@ -1,5 +1,7 @@
 #include "GradeTables.h"
 
+#include <QHash>
+
 #include "SceneStages.h"
 #include "bench/BenchResult.h"
 
@@ -129,9 +131,18 @@ QString gradesTable(const GradeResults &results)
                 c = QLatin1Char('?');
         return clean.size() <= width ? clean : clean.left(width - 1) + QChar(0x2026);
     };
+    // A course platform's student by their name; a project's program beside
+    // it where the student handed in several.
+    QHash<QString, int> programs;
+    for (const Submission &s : results.submissions)
+        ++programs[s.name];
+    const auto shownName = [&](const Submission &s) {
+        const QString who = s.student.isEmpty() ? s.name : s.student;
+        return programs.value(s.name) < 2 ? who : QStringLiteral("%1 (%2)").arg(who, s.program);
+    };
     int nameWidth = 7, sceneWidth = 5;
     for (const Submission &s : results.submissions)
-        nameWidth = std::clamp(int(s.name.size()), nameWidth, 24);
+        nameWidth = std::clamp(int(shownName(s).size()), nameWidth, 24);
     for (const GradeScene &s : results.scenes)
         sceneWidth = std::clamp(int(s.label.size()), sceneWidth, 20);
     // Padded by hand: arg() again after a student's name would fill a "%2" in it.
@@ -151,7 +162,7 @@ QString gradesTable(const GradeResults &results)
     for (const GradeRow &row : results.rows) {
         const QString name = row.submission == previous
             ? QString()
-            : cut(results.submissions[std::size_t(row.submission)].name, nameWidth);
+            : cut(shownName(results.submissions[std::size_t(row.submission)]), nameWidth);
         previous = row.submission;
         QString what = rowMistakeKeys(row).replace(QLatin1Char(' '), QLatin1Char('+'));
         if (!judged(row) && !row.outcome.errors.empty())

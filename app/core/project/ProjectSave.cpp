@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QRegularExpression>
 
 namespace phonglab {
 
@@ -74,7 +75,12 @@ Result<QByteArray> withShaderText(const QByteArray &file, const ProjectShader &s
             ProjectSaveWords::tr("%1: the shader %2 cannot be saved back into the file (%3); "
                                  "use Save As to write it to a file of its own")
                 .arg(name, shader.key, shader.notWritable));
-    if (shader.container == ShaderContainer::ScriptElement && text.toLower().contains("</script"))
+    // What would end the element as HTML reads it: "</script" and then a
+    // space, a slash or ">" (any case).
+    static const QRegularExpression endTag(QStringLiteral("</script[\\t\\n\\f\\r />]"),
+                                           QRegularExpression::CaseInsensitiveOption);
+    if (shader.container == ShaderContainer::ScriptElement
+        && endTag.match(QString::fromUtf8(text)).hasMatch())
         return fail(
             ProjectSaveWords::tr("%1: the shader %2 holds \"</script\", which would end its "
                                  "script element; use Save As")
