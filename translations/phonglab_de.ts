@@ -2637,12 +2637,16 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation>%1: der Shader %2 kann nicht in die Datei zurückgeschrieben werden (%3); mit „Speichern unter“ in eine eigene Datei schreiben</translation>
     </message>
     <message>
-        <source>%1: the shader %2 holds &quot;&lt;/script&quot;, which would end its script element; use Save As</source>
-        <translation>%1: der Shader %2 enthält „&lt;/script“, das sein script-Element beenden würde; „Speichern unter“ verwenden</translation>
-    </message>
-    <message>
         <source>%1 changed on disk; open it again</source>
         <translation>%1 wurde auf dem Datenträger geändert; erneut öffnen</translation>
+    </message>
+    <message>
+        <source>the script element holds &quot;&lt;!--&quot; or &quot;&lt;/script&quot;</source>
+        <translation>das script-Element enthält „&lt;!--“ oder „&lt;/script“</translation>
+    </message>
+    <message>
+        <source>%1: the shader %2 holds &quot;&lt;!--&quot; or &quot;&lt;/script&quot;, which would change where its script element ends; use Save As</source>
+        <translation>%1: der Shader %2 enthält „&lt;!--“ oder „&lt;/script“, das verschieben würde, wo sein script-Element endet; „Speichern unter“ verwenden</translation>
     </message>
 </context>
 <context>

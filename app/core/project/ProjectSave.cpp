@@ -53,8 +53,24 @@ QByteArray encodedShaderText(ShaderContainer container, char quote, const QByteA
     return text;
 }
 
+namespace {
+
+// Text HTML would not read back as the script element's whole content: what
+// ends the element ("</script" and then a space, a slash or ">", any case),
+// or "<!--", after which a script's parsing takes turns of its own.
+bool breaksScriptElement(const QByteArray &text)
+{
+    static const QRegularExpression endTag(QStringLiteral("</script[\\t\\n\\f\\r />]"),
+                                           QRegularExpression::CaseInsensitiveOption);
+    return text.contains("<!--") || endTag.match(QString::fromUtf8(text)).hasMatch();
+}
+
+} // namespace
+
 QString whyNotWritable(const ProjectShader &shader, const QByteArray &file)
 {
+    if (shader.container == ShaderContainer::ScriptElement && breaksScriptElement(shader.text))
+        return ProjectSaveWords::tr("the script element holds \"<!--\" or \"</script\"");
     if (shader.container == ShaderContainer::JsPieces)
         return ProjectSaveWords::tr("the script builds the shader from several strings");
     if (encodedShaderText(shader.container, shader.quote, shader.text)
@@ -75,16 +91,10 @@ Result<QByteArray> withShaderText(const QByteArray &file, const ProjectShader &s
             ProjectSaveWords::tr("%1: the shader %2 cannot be saved back into the file (%3); "
                                  "use Save As to write it to a file of its own")
                 .arg(name, shader.key, shader.notWritable));
-    // What would end the element as HTML reads it: "</script" and then a
-    // space, a slash or ">" (any case).
-    static const QRegularExpression endTag(QStringLiteral("</script[\\t\\n\\f\\r />]"),
-                                           QRegularExpression::CaseInsensitiveOption);
-    if (shader.container == ShaderContainer::ScriptElement
-        && endTag.match(QString::fromUtf8(text)).hasMatch())
-        return fail(
-            ProjectSaveWords::tr("%1: the shader %2 holds \"</script\", which would end its "
-                                 "script element; use Save As")
-                .arg(name, shader.key));
+    if (shader.container == ShaderContainer::ScriptElement && breaksScriptElement(text))
+        return fail(ProjectSaveWords::tr("%1: the shader %2 holds \"<!--\" or \"</script\", which "
+                                         "would change where its script element ends; use Save As")
+                        .arg(name, shader.key));
     if (shader.begin < 0 || shader.end > file.size() || shader.end < shader.begin)
         return fail(ProjectSaveWords::tr("%1 changed on disk; open it again").arg(name));
     return file.left(shader.begin) + encodedShaderText(shader.container, shader.quote, text)
