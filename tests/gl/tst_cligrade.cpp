@@ -7,6 +7,7 @@
 // installed), the exit codes and the same bytes from the same input.
 #include "PhonglabProcess.h"
 #include "ShaderMutations.h"
+#include "TestFiles.h"
 #include "TestPaths.h"
 
 #include <QDir>
@@ -175,15 +176,6 @@ QMap<QString, QStringList> rowsBySubmission(const QByteArray &csv)
     return rows;
 }
 
-QString chromium()
-{
-    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
-        if (const QString path = QStandardPaths::findExecutable(QString::fromLatin1(name));
-            !path.isEmpty())
-            return path;
-    return {};
-}
-
 } // namespace
 
 class TestCliGrade : public QObject
@@ -214,8 +206,9 @@ private slots:
     {
         QVERIFY2(m_run.exitCode == 0, qPrintable(m_run.err));
         const QByteArray csv = readFile(m_out + QStringLiteral("/grades.csv"));
-        QVERIFY(csv.startsWith("submission,scene,verdict,psnr_db,max_error,bad_fraction,key,also,"
-                               "file,line,equation,bindings,seconds,mistakes,program,student,participant\n"));
+        QVERIFY(csv.startsWith(
+            "submission,scene,verdict,psnr_db,max_error,bad_fraction,key,also,"
+            "file,line,equation,bindings,seconds,mistakes,program,student,participant\n"));
         const QMap<QString, QStringList> rows = rowsBySubmission(csv);
         QCOMPARE(rows.size(), 12);
         const auto verdict = [&](const QString &who) { return rows.value(who).value(2); };
@@ -296,26 +289,23 @@ private slots:
                      .value(QStringLiteral("key"))
                      .toString(),
                  QStringLiteral("reflect-incident"));
-        const QString daveError = by[QStringLiteral("dave")]
-                                      .value(QStringLiteral("errors"))
-                                      .toArray()
-                                      .first()
-                                      .toObject()
-                                      .value(QStringLiteral("message"))
-                                      .toString();
+        const auto firstError = [&](const QString &who) {
+            return by[who]
+                .value(QStringLiteral("errors"))
+                .toArray()
+                .first()
+                .toObject()
+                .value(QStringLiteral("message"))
+                .toString();
+        };
+        const QString daveError = firstError(QStringLiteral("dave"));
         QVERIFY2(daveError.contains(QStringLiteral("one.frag"))
                      && daveError.contains(QStringLiteral("two.frag")),
                  qPrintable(daveError));
         QCOMPARE(by[QStringLiteral("frank")].value(QStringLiteral("verdict")).toString(),
                  QStringLiteral("timeout"));
         for (const char *who : {"mallory", "trudy"}) {
-            const QString error = by[QLatin1String(who)]
-                                      .value(QStringLiteral("errors"))
-                                      .toArray()
-                                      .first()
-                                      .toObject()
-                                      .value(QStringLiteral("message"))
-                                      .toString();
+            const QString error = firstError(QLatin1String(who));
             QVERIFY2(error.contains(QStringLiteral("symbolic link")), qPrintable(error));
         }
     }
@@ -350,7 +340,7 @@ private slots:
 
     void reportOpensInABrowser()
     {
-        const QString browser = chromium();
+        const QString browser = chromiumExecutable();
         if (browser.isEmpty())
             QSKIP("no chromium installed (scripts/setup.sh installs it)");
         QProcess p;

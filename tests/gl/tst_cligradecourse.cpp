@@ -7,6 +7,7 @@
 // run stopped half way that --resume finishes with the same grades.csv.
 #include "PhonglabProcess.h"
 #include "ShaderMutations.h"
+#include "TestFiles.h"
 #include "TestPaths.h"
 #include "cli/SubmissionArchive.h"
 
@@ -28,12 +29,6 @@ using namespace phonglab;
 using namespace phonglab::test;
 
 namespace {
-
-QByteArray read(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 // A zip through libarchive, names in UTF-8.
 void writeZip(const QString &path, const std::vector<std::pair<QByteArray, QByteArray>> &files)
@@ -61,7 +56,7 @@ QByteArray zipBytes(const std::vector<std::pair<QByteArray, QByteArray>> &files)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("z.zip"));
     writeZip(path, files);
-    return read(path);
+    return readTestFile(path);
 }
 
 QByteArray inlinePage(const QByteArray &vertex, const QByteArray &fragment)
@@ -84,15 +79,6 @@ QString withoutColumn(const QByteArray &csv, const QString &column)
         out << cells.join(QLatin1Char(','));
     }
     return out.join(QLatin1Char('\n'));
-}
-
-QString chromium()
-{
-    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
-        if (const QString path = QStandardPaths::findExecutable(QString::fromLatin1(name));
-            !path.isEmpty())
-            return path;
-    return {};
 }
 
 const char *kStudents[] = {"Anna Beck", "Ben Cho", "Cem Demir", "Dora Eng"};
@@ -123,8 +109,10 @@ class TestCliGradeCourse : public QObject
 private slots:
     void initTestCase()
     {
-        const QByteArray v = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
-        const QByteArray f = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
+        const QByteArray v =
+            readTestFile(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
+        const QByteArray f =
+            readTestFile(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
         const ShaderPair mistaken = withMistake(ShaderMistake::ReflectIncident);
         m_download = m_dir.filePath(QStringLiteral("Lab 3-Phong-download.zip"));
         writeZip(m_download,
@@ -147,7 +135,7 @@ private slots:
     void rowsNameTheStudents()
     {
         QVERIFY2(m_run.exitCode == 0, qPrintable(m_run.err));
-        const QByteArray csv = read(m_out + QStringLiteral("/grades.csv"));
+        const QByteArray csv = readTestFile(m_out + QStringLiteral("/grades.csv"));
         const QStringList lines =
             QString::fromUtf8(csv).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 5); // four students, no online text
@@ -173,7 +161,7 @@ private slots:
 
     void moodleGradesCsvBytes()
     {
-        const QByteArray csv = read(m_out + QStringLiteral("/moodle-grades.csv"));
+        const QByteArray csv = readTestFile(m_out + QStringLiteral("/moodle-grades.csv"));
         const QList<QByteArray> lines = csv.split('\n');
         QCOMPARE(lines.value(0),
                  QByteArray("\"Identifier\",\"Full name\",\"Grade\",\"Feedback comments\""));
@@ -204,11 +192,11 @@ private slots:
                               QStringLiteral("Ben Cho_1002_assignsubmission_file_"),
                               QStringLiteral("Cem Demir_1003_assignsubmission_file_"),
                               QStringLiteral("Dora Eng_1004_assignsubmission_file_")}));
-        const QString browser = chromium();
+        const QString browser = chromiumExecutable();
         for (int i = 0; i < 4; ++i) {
             const QString page =
                 into + QLatin1Char('/') + folders[i] + QStringLiteral("/feedback.html");
-            QByteArray html = read(page);
+            QByteArray html = readTestFile(page);
             QVERIFY2(!html.isEmpty(), qPrintable(page));
             if (!browser.isEmpty()) { // as the student's browser shows it
                 QProcess p;
@@ -236,7 +224,7 @@ private slots:
         QProcess p;
         p.start(phonglabExecutable(), gradeArgs(out, 1));
         const QString journal = out + QStringLiteral("/grades.partial.jsonl");
-        QTRY_VERIFY_WITH_TIMEOUT(read(journal).count('\n') >= 3,
+        QTRY_VERIFY_WITH_TIMEOUT(readTestFile(journal).count('\n') >= 3,
                                  60000); // the fingerprint and two rows
         ::kill(pid_t(p.processId()), SIGINT);
         QVERIFY(p.waitForFinished(20000));
@@ -246,11 +234,12 @@ private slots:
         static const QRegularExpression kept(QStringLiteral("kept (\\d+) finished checks"));
         const QRegularExpressionMatch m = kept.match(resumed.err);
         QVERIFY2(m.hasMatch() && m.captured(1).toInt() >= 2, qPrintable(resumed.err));
-        QCOMPARE(
-            withoutColumn(read(out + QStringLiteral("/grades.csv")), QStringLiteral("seconds")),
-            withoutColumn(read(m_out + QStringLiteral("/grades.csv")), QStringLiteral("seconds")));
-        QCOMPARE(read(out + QStringLiteral("/moodle-grades.csv")),
-                 read(m_out + QStringLiteral("/moodle-grades.csv")));
+        QCOMPARE(withoutColumn(readTestFile(out + QStringLiteral("/grades.csv")),
+                               QStringLiteral("seconds")),
+                 withoutColumn(readTestFile(m_out + QStringLiteral("/grades.csv")),
+                               QStringLiteral("seconds")));
+        QCOMPARE(readTestFile(out + QStringLiteral("/moodle-grades.csv")),
+                 readTestFile(m_out + QStringLiteral("/moodle-grades.csv")));
         QVERIFY(!QFile::exists(journal)); // done: the journal went
     }
 };

@@ -4,6 +4,7 @@
 // (the `program` column), leave out an unlit one with a note, and report
 // every error at the line of the file handed in.
 #include "PhonglabProcess.h"
+#include "TestFiles.h"
 #include "TestPaths.h"
 
 #include <QDir>
@@ -18,29 +19,9 @@ using namespace phonglab::test;
 
 namespace {
 
-QByteArray read(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
 QByteArray course(const char *path)
 {
-    return read(sourcePath(QStringLiteral("tests/data/course/") + QLatin1String(path)));
-}
-
-void write(const QString &path, const QByteArray &text)
-{
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(text);
-}
-
-int lineOf(const QByteArray &text, const QByteArray &needle)
-{
-    const qsizetype at = text.indexOf(needle);
-    return at < 0 ? -1 : int(text.left(at).count('\n')) + 1;
+    return readTestFile(sourcePath(QStringLiteral("tests/data/course/") + QLatin1String(path)));
 }
 
 QByteArray script(const char *id, const char *type, const QByteArray &code)
@@ -116,24 +97,26 @@ class TestCliProject : public QObject
 private slots:
     void initTestCase()
     {
-        const QByteArray v = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
-        const QByteArray f = read(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
+        const QByteArray v =
+            readTestFile(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert")));
+        const QByteArray f =
+            readTestFile(sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag")));
         const QString root = m_dir.filePath(QStringLiteral("class"));
-        write(root + QStringLiteral("/ada/index.html"), angelPage());
-        write(root + QStringLiteral("/ben/index.html"), inlineScriptPage(v, f));
-        write(root + QStringLiteral("/cleo/index.html"), threePage());
+        QVERIFY(writeTestFile(root + QStringLiteral("/ada/index.html"), angelPage()));
+        QVERIFY(writeTestFile(root + QStringLiteral("/ben/index.html"), inlineScriptPage(v, f)));
+        QVERIFY(writeTestFile(root + QStringLiteral("/cleo/index.html"), threePage()));
         QByteArray broken = f;
         broken.replace("normalize(", "normalise(");
         m_broken = inlineScriptPage(v, broken);
-        write(root + QStringLiteral("/dan/index.html"), m_broken);
+        QVERIFY(writeTestFile(root + QStringLiteral("/dan/index.html"), m_broken));
         // eve: a script file that fetches files of their own.
-        write(root + QStringLiteral("/eve/index.html"),
-              "<html><body><script src=\"main.js\"></script></body></html>\n");
-        write(root + QStringLiteral("/eve/main.js"),
-              "const vs = await (await fetch('shaders/phong.vert')).text();\n"
-              "const fs = await (await fetch('shaders/phong.frag')).text();\n");
-        write(root + QStringLiteral("/eve/shaders/phong.vert"), v);
-        write(root + QStringLiteral("/eve/shaders/phong.frag"), f);
+        QVERIFY(writeTestFile(root + QStringLiteral("/eve/index.html"),
+                              "<html><body><script src=\"main.js\"></script></body></html>\n"));
+        QVERIFY(writeTestFile(root + QStringLiteral("/eve/main.js"),
+                              "const vs = await (await fetch('shaders/phong.vert')).text();\n"
+                              "const fs = await (await fetch('shaders/phong.frag')).text();\n"));
+        QVERIFY(writeTestFile(root + QStringLiteral("/eve/shaders/phong.vert"), v));
+        QVERIFY(writeTestFile(root + QStringLiteral("/eve/shaders/phong.frag"), f));
     }
 
     void checkFindsTheProgramAndItsLines()
@@ -185,7 +168,7 @@ private slots:
              QStringLiteral("NUM_LIGHTS=2"), QStringLiteral("--out"), out, QStringLiteral("--jobs"),
              QStringLiteral("2")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-        const QByteArray csv = read(out + QStringLiteral("/grades.csv"));
+        const QByteArray csv = readTestFile(out + QStringLiteral("/grades.csv"));
         QVERIFY(csv.startsWith("submission,scene,verdict,"));
         QVERIFY(csv.left(csv.indexOf('\n')).endsWith(",mistakes,program,student,participant"));
         const QMap<QString, QStringList> rows = rowsByStudentAndProgram(csv);
@@ -203,10 +186,11 @@ private slots:
         QCOMPARE(dan.value(8), QStringLiteral("dan/index.html"));
         QCOMPARE(dan.value(9).toInt(), lineOf(m_broken, "normalise("));
         // The unlit grid: said beside ada's rows, never judged.
-        const QJsonArray json = QJsonDocument::fromJson(read(out + QStringLiteral("/grades.json")))
-                                    .object()
-                                    .value(QStringLiteral("rows"))
-                                    .toArray();
+        const QJsonArray json =
+            QJsonDocument::fromJson(readTestFile(out + QStringLiteral("/grades.json")))
+                .object()
+                .value(QStringLiteral("rows"))
+                .toArray();
         bool gridNoted = false;
         for (const QJsonValue &r : json)
             if (r.toObject().value(QStringLiteral("submission")).toString() == QLatin1String("ada"))
@@ -215,7 +199,7 @@ private slots:
                         gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
         QVERIFY(gridNoted);
         // The report quotes dan's line from the page.
-        const QByteArray report = read(out + QStringLiteral("/report.html"));
+        const QByteArray report = readTestFile(out + QStringLiteral("/report.html"));
         QVERIFY(report.contains("normalise("));
     }
 };

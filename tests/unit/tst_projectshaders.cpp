@@ -3,6 +3,7 @@
 // literals, concatenations and joined arrays, createTextNode, and files of
 // their own; paired by the project's own calls, by names, or as the one pair
 // left; every line where the file has it.
+#include "TestFiles.h"
 #include "core/project/JsScanner.h"
 #include "core/project/ProjectPrograms.h"
 
@@ -12,6 +13,7 @@
 #include <QTest>
 
 using namespace phonglab;
+using phonglab::test::lineOf;
 
 namespace {
 
@@ -35,17 +37,7 @@ constexpr char kPhongFragment[] =
 
 void write(const QString &path, const QByteArray &text)
 {
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(text);
-}
-
-// The 1-based line of the first occurrence of `needle` in `text`.
-int lineOf(const QByteArray &text, const QByteArray &needle)
-{
-    const qsizetype at = text.indexOf(needle);
-    return at < 0 ? -1 : int(text.left(at).count('\n')) + 1;
+    QVERIFY(test::writeTestFile(path, text));
 }
 
 const ProjectProgram *named(const Project &p, const QString &name)
