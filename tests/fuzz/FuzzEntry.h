@@ -237,7 +237,7 @@ inline void checkFoundTexts(const char *target, const QByteArray &file,
     }
 }
 
-// The shaders read from a file of those bytes: named, on a line of the file,
+// The shaders read from those bytes as a file named `path`: named, on a line of the file,
 // laid out from that line, and a writable one saved back unchanged leaves
 // the file as it was.
 inline void checkShadersOf(const char *target, const QString &path, const QByteArray &bytes);
@@ -246,16 +246,13 @@ inline void checkShadersOf(const char *target, const QString &path, const QByteA
 inline Outcome runHtmlShaders(const QByteArray &bytes)
 {
     checkFoundTexts("htmlshaders", bytes, shaderTextsInHtml(bytes));
-    const QString path = scratchPath(QStringLiteral("page.html"));
-    if (!writeScratch(path, bytes))
-        brokenPromise("htmlshaders", "cannot write the scratch file");
-    checkShadersOf("htmlshaders", path, bytes);
+    checkShadersOf("htmlshaders", QStringLiteral("page.html"), bytes);
     return {true, {}};
 }
 
 inline void checkShadersOf(const char *target, const QString &path, const QByteArray &bytes)
 {
-    for (const ProjectShader &s : shadersInFile(path)) {
+    for (const ProjectShader &s : shadersInText(path, bytes)) {
         // Saved back unchanged, a writable shader leaves the file as it was.
         if (s.writable) {
             const Result<QByteArray> saved = withShaderText(bytes, s, s.text);
@@ -277,10 +274,7 @@ inline void checkShadersOf(const char *target, const QString &path, const QByteA
 inline Outcome runJsShaders(const QByteArray &bytes)
 {
     checkFoundTexts("jsshaders", bytes, foundInJs(bytes, 0));
-    const QString path = scratchPath(QStringLiteral("script.js"));
-    if (!writeScratch(path, bytes))
-        brokenPromise("jsshaders", "cannot write the scratch file");
-    checkShadersOf("jsshaders", path, bytes);
+    checkShadersOf("jsshaders", QStringLiteral("script.js"), bytes);
     const std::string_view js(bytes.constData(), std::size_t(bytes.size()));
     qsizetype last = 0;
     for (const JsToken &t : scanJs(js)) {

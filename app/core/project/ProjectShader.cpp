@@ -139,11 +139,15 @@ void addFound(std::vector<ProjectShader> &out, const QString &path, const QByteA
 
 std::vector<ProjectShader> shadersInFile(const QString &path)
 {
-    std::vector<ProjectShader> out;
     QFile f(path);
     if (f.size() > kMaxProjectFileBytes || !f.open(QIODevice::ReadOnly))
-        return out;
-    const QByteArray file = f.readAll();
+        return {};
+    return shadersInText(path, f.readAll());
+}
+
+std::vector<ProjectShader> shadersInText(const QString &path, const QByteArray &file)
+{
+    std::vector<ProjectShader> out;
     std::vector<FoundText> texts;
     if (suffixIn(path, {"html", "htm", "xhtml"}))
         texts = shaderTextsInHtml(file);

@@ -67,6 +67,8 @@ Result<ProjectShader> shaderAtLocator(const QString &locator);
 // own (.vert .frag .vs .fs .vsh .fsh .glsl). Texts without `main` or whose
 // stage cannot be told are left out.
 std::vector<ProjectShader> shadersInFile(const QString &path);
+// The same for a file's bytes already read (`path` names it and its kind).
+std::vector<ProjectShader> shadersInText(const QString &path, const QByteArray &file);
 // The stage a text's content gives: gl_Position writes a vertex shader,
 // gl_FragColor, gl_FragData or an `out vec4` a fragment shader.
 std::optional<ProjectStage> stageOfShaderText(const QByteArray &text);
