@@ -4503,16 +4503,22 @@ Befehle:
         <translation>das phonglab-Programm zum Ausführen der Prüfungen wurde nicht gefunden (PHONGLAB_EXE setzen)</translation>
     </message>
     <message>
+        <source>grade: kept %1 finished checks of the stopped run</source>
+        <translation>grade: %1 fertige Prüfungen des abgebrochenen Laufs behalten</translation>
+    </message>
+    <message>
         <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                       [--define NAME=VALUE ...] [--precision highp|as-written]
-                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]</source>
+                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]
+                      [--program NAME]</source>
         <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                        [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                        [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                        [--define NAME=VALUE ...] [--precision highp|as-written]
-                       [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]</translation>
+                       [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]
+                       [--program NAME]</translation>
     </message>
     <message>
         <source>
@@ -4544,6 +4550,7 @@ that one verdict.
   --points P          what each verdict is worth in moodle-grades.csv, summed over a
                       student&apos;s rows; default pass=1,fail=0,error=0,timeout=0,crash=0
   --resume            keep the rows a stopped run of the same command finished
+  --program NAME      of a WebGL project with several programs, only this one
 
 Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
 bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
@@ -4586,6 +4593,7 @@ Urteil.
                       Zeilen einer Person; Standard pass=1,fail=0,error=0,timeout=0,crash=0
   --resume            die Zeilen behalten, die ein abgebrochener Lauf desselben Befehls
                       fertig hatte
+  --program NAME      von einem WebGL-Projekt mit mehreren Programmen nur dieses
 
 Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
 bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
@@ -4598,8 +4606,8 @@ Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgesc
 werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
     </message>
     <message>
-        <source>grade: kept %1 finished checks of the stopped run</source>
-        <translation>grade: %1 fertige Prüfungen des abgebrochenen Laufs behalten</translation>
+        <source>no program named %1 (there are: %2)</source>
+        <translation>kein Programm namens %1 (vorhanden: %2)</translation>
     </message>
 </context>
 <context>

@@ -45,6 +45,7 @@ struct GradeArgs {
     GradedChildLimits limits;
     GradePoints points;  // --points, for moodle-grades.csv
     bool resume = false; // --resume: the rows a stopped run finished are kept
+    QString program;     // --program: only this program of each WebGL project
 };
 
 const QString &synopsis()
@@ -55,7 +56,8 @@ const QString &synopsis()
         "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
         "[--equation slide|guarded]\n"
         "                      [--define NAME=VALUE ...] [--precision highp|as-written]\n"
-        "                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]");
+        "                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]\n"
+        "                      [--program NAME]");
     return text;
 }
 
@@ -97,7 +99,8 @@ QString helpText()
               "a\n"
               "                      student's rows; default pass=1,fail=0,error=0,timeout=0,"
               "crash=0\n"
-              "  --resume            keep the rows a stopped run of the same command finished\n\n"
+              "  --resume            keep the rows a stopped run of the same command finished\n"
+              "  --program NAME      of a WebGL project with several programs, only this one\n\n"
               "Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,\n"
               "bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, "
               "program,\n"
@@ -133,6 +136,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
                                       QStringLiteral("equation"));
     const QCommandLineOption points(QStringLiteral("points"), QString(), QStringLiteral("points"));
     const QCommandLineOption resume(QStringLiteral("resume"), QString());
+    const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
@@ -140,7 +144,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
             parseOrExit(parser, arguments,
                         {help,
                          QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size,
-                                                   tolerance, equation, points, resume}
+                                                   tolerance, equation, points, resume, program}
                              + overrides.all(),
                          QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
                         synopsis(), helpText()))
@@ -176,6 +180,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
         args.points = *parsed;
     }
     args.resume = parser.isSet(resume);
+    args.program = parser.value(program);
     bool ok = true;
     if (parser.isSet(tolerance)) {
         settings.toleranceSteps = parser.value(tolerance).toInt(&ok);
@@ -271,6 +276,33 @@ Result<> writeOutputs(const GradeResults &results, const GradePoints &points)
     return writeFeedbackZip(results, dir + QStringLiteral("feedback.zip"));
 }
 
+// --program: of each WebGL project, only that program. A student whose
+// project has no such program keeps a row that says so; shader files stay.
+std::vector<Submission> onlyProgram(const std::vector<Submission> &all, const QString &program)
+{
+    std::vector<Submission> kept;
+    for (std::size_t i = 0; i < all.size();) {
+        std::size_t end = i;
+        QStringList names;
+        const Submission *match = nullptr;
+        for (; end < all.size() && all[end].name == all[i].name; ++end) {
+            names << all[end].program;
+            if (all[end].program == program)
+                match = &all[end];
+        }
+        if (all[i].program.isEmpty() || match) {
+            kept.push_back(match ? *match : all[i]);
+        } else {
+            Submission missing = all[i];
+            missing.error = GradeCommandWords::tr("no program named %1 (there are: %2)")
+                                .arg(program, names.join(QStringLiteral(", ")));
+            kept.push_back(std::move(missing));
+        }
+        i = end;
+    }
+    return kept;
+}
+
 // What makes two runs one: the scenes, the settings and every submission's
 // files; a journal of another run is not resumed.
 QByteArray runFingerprint(const GradeArgs &args, const GradeResults &results)
@@ -305,7 +337,8 @@ int grade(const GradeArgs &args)
         printError(folder.error);
         return kExitFailure;
     }
-    results.submissions = folder.submissions;
+    results.submissions =
+        args.program.isEmpty() ? folder.submissions : onlyProgram(folder.submissions, args.program);
     for (Submission &s : results.submissions) {
         const SubmissionOrigin origin = staged.origins.value(s.name);
         s.student = origin.student;

@@ -202,6 +202,25 @@ private slots:
         const QByteArray report = readTestFile(out + QStringLiteral("/report.html"));
         QVERIFY(report.contains("normalise("));
     }
+
+    void gradeTakesOneProgramWhereAsked()
+    {
+        const QString out = m_dir.filePath(QStringLiteral("out-gouraud"));
+        const ProcessRun run = runPhonglab(
+            {QStringLiteral("grade"), m_dir.filePath(QStringLiteral("class")),
+             QStringLiteral("--scene"), sourcePath(QStringLiteral("tests/data/course/scene.json")),
+             QStringLiteral("--size"), QStringLiteral("96x72"), QStringLiteral("--define"),
+             QStringLiteral("NUM_LIGHTS=2"), QStringLiteral("--program"), QStringLiteral("gouraud"),
+             QStringLiteral("--out"), out});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QMap<QString, QStringList> rows =
+            rowsByStudentAndProgram(readTestFile(out + QStringLiteral("/grades.csv")));
+        // ada's gouraud alone; the others say they have no such program.
+        QCOMPARE(rows.value(QStringLiteral("ada/gouraud")).value(2), QStringLiteral("pass"));
+        QVERIFY(!rows.contains(QStringLiteral("ada/index")));
+        QCOMPARE(rows.value(QStringLiteral("ben/index")).value(2), QStringLiteral("error"));
+        QCOMPARE(rows.size(), 5);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliProject)
