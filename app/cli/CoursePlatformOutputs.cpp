@@ -83,19 +83,19 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
     }
     case GradeVerdict::Error: {
         const RowPlace place = rowPlace(row);
-        QString message = row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
+        QString message =
+            row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
         if (!message.endsWith(QLatin1Char('.')))
             message += QLatin1Char('.');
         // The student's own file, as they named it, not the download's folder.
         QString file = place.file;
         if (file.startsWith(s.name + QLatin1Char('/')))
             file.remove(0, s.name.size() + 1);
-        return place.line > 0
-            ? CoursePlatformWords::tr("%1: not checked, %2 line %3: %4")
-                  .arg(where, file)
-                  .arg(place.line)
-                  .arg(message)
-            : CoursePlatformWords::tr("%1: not checked: %2").arg(where, message);
+        return place.line > 0 ? CoursePlatformWords::tr("%1: not checked, %2 line %3: %4")
+                                    .arg(where, file)
+                                    .arg(place.line)
+                                    .arg(message)
+                              : CoursePlatformWords::tr("%1: not checked: %2").arg(where, message);
     }
     case GradeVerdict::Timeout:
         return CoursePlatformWords::tr("%1: took longer than the time allowed.").arg(where);
@@ -112,12 +112,9 @@ GradeResults onlyStudent(const GradeResults &results, const QString &folder)
     one.settings = results.settings;
     // The student by name, their files by their own names: the download's
     // folder and the teacher's paths stay with the teacher.
-    const QString student = results.submissions[std::size_t(submissionsOf(results, folder).front())]
-                                .student;
+    const QString student =
+        results.submissions[std::size_t(submissionsOf(results, folder).front())].student;
     one.settings.classFolder = student.isEmpty() ? folder : student;
-    const auto own = [prefix = folder + QLatin1Char('/')](QString path) {
-        return path.startsWith(prefix) ? path.mid(prefix.size()) : path;
-    };
     one.scenes = results.scenes;
     std::map<int, int> index;
     for (const int s : submissionsOf(results, folder)) {
@@ -133,13 +130,7 @@ GradeResults onlyStudent(const GradeResults &results, const QString &folder)
         if (const auto it = index.find(row.submission); it != index.end()) {
             GradeRow copy = row;
             copy.submission = it->second;
-            for (ShaderDiagnostic &e : copy.outcome.errors)
-                e.file = own(e.file);
-            for (ShaderStageText &t : copy.outcome.stages)
-                t.path = own(t.path);
-            for (QStringList *texts : {&copy.outcome.warnings, &copy.outcome.notes})
-                for (QString &text : *texts)
-                    text.replace(folder + QLatin1Char('/'), QString());
+            nameFilesWithin(copy, folder);
             one.rows.push_back(std::move(copy));
         }
     return one;

@@ -305,7 +305,7 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
     const CheckReport &r = row.outcome.report;
     const bool judged = row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
     const double psnr = judged ? r.comparison.psnr : -1.0;
-    const QString student = results.submissions[std::size_t(row.submission)].name;
+    const QString student = shownSubmissionName(results.submissions[std::size_t(row.submission)]);
     const QString command = openCommand(results, row);
     // One pass of arg(): text a student wrote may hold "%1" itself.
     return QStringLiteral("<tr data-order=\"%1\" data-student=\"%2\" data-rank=\"%3\" "
@@ -337,8 +337,14 @@ QString shellQuoted(const QString &text)
         + QLatin1Char('\'');
 }
 
-QString gradeReportHtml(const GradeResults &results)
+QString gradeReportHtml(const GradeResults &given)
 {
+    // A course platform's students by name, their files as they named them.
+    GradeResults results = given;
+    for (GradeRow &row : results.rows)
+        if (const Submission &s = results.submissions[std::size_t(row.submission)];
+            !s.student.isEmpty())
+            nameFilesWithin(row, s.name);
     const QString title =
         esc(ReportWords::tr("PhongLab grades: %1").arg(results.settings.classFolder));
     QString html =

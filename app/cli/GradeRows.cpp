@@ -65,4 +65,27 @@ QString fileSlug(const QString &text)
     return out.isEmpty() ? QStringLiteral("_") : out;
 }
 
+void nameFilesWithin(GradeRow &row, const QString &folder)
+{
+    const QString prefix = folder + QLatin1Char('/');
+    const auto own = [&](QString &path) {
+        if (path.startsWith(prefix))
+            path.remove(0, prefix.size());
+    };
+    for (ShaderDiagnostic &e : row.outcome.errors)
+        own(e.file);
+    for (ShaderStageText &t : row.outcome.stages)
+        own(t.path);
+    for (QStringList *texts : {&row.outcome.warnings, &row.outcome.notes})
+        for (QString &text : *texts)
+            text.replace(prefix, QString());
+}
+
+QString shownSubmissionName(const Submission &submission)
+{
+    return submission.student.isEmpty()
+        ? submission.name
+        : QStringLiteral("%1 (%2)").arg(submission.student, submission.participant);
+}
+
 } // namespace phonglab::cli

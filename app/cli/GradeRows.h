@@ -83,4 +83,12 @@ RowPlace rowPlace(const GradeRow &row);
 // Characters safe in a file name on every system: the rest become '_'.
 QString fileSlug(const QString &text);
 
+// The row's files named within `folder` (a course platform's download
+// folder of the student), as the student named them: "index.html", not
+// "Mia Schulz_20433_assignsubmission_file_/index.html".
+void nameFilesWithin(GradeRow &row, const QString &folder);
+// How a report names a submission: a course platform's student by their
+// name and number, else the folder's name.
+QString shownSubmissionName(const Submission &submission);
+
 } // namespace phonglab::cli
