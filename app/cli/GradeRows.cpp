@@ -83,9 +83,12 @@ void nameFilesWithin(GradeRow &row, const QString &folder)
 
 QString shownSubmissionName(const Submission &submission)
 {
-    return submission.student.isEmpty()
+    const QString who = submission.student.isEmpty()
         ? submission.name
         : QStringLiteral("%1 (%2)").arg(submission.student, submission.participant);
+    // A WebGL project's program: each is a row of its own.
+    return submission.program.isEmpty() ? who
+                                        : QStringLiteral("%1 · %2").arg(who, submission.program);
 }
 
 } // namespace phonglab::cli

@@ -88,7 +88,7 @@ QString fileSlug(const QString &text);
 // "Mia Schulz_20433_assignsubmission_file_/index.html".
 void nameFilesWithin(GradeRow &row, const QString &folder);
 // How a report names a submission: a course platform's student by their
-// name and number, else the folder's name.
+// name and number, else the folder's name; a project's program after it.
 QString shownSubmissionName(const Submission &submission);
 
 } // namespace phonglab::cli

@@ -198,9 +198,10 @@ private slots:
                     gridNoted =
                         gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
         QVERIFY(gridNoted);
-        // The report quotes dan's line from the page.
+        // The report quotes dan's line from the page, and names ada's programs.
         const QByteArray report = readTestFile(out + QStringLiteral("/report.html"));
         QVERIFY(report.contains("normalise("));
+        QVERIFY(report.contains("ada · gouraud") && report.contains("ada · index"));
     }
 
     void gradeTakesOneProgramWhereAsked()
