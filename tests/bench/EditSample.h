@@ -11,10 +11,10 @@ struct EditSample {
     // The warm-up draw off the GUI thread; in the app, with the trial and,
     // when it presents it there (frameFromLoan), the first frame too.
     double warmMs = 0;
-    double frameMs = 0; // the first frame drawn on the GUI thread (0: none)
+    double frameMs = 0;         // the first frame drawn on the GUI thread (0: none)
     bool frameFromLoan = false; // presented by the trial in the lent context
-    double otherMs = 0; // the rest: queues, thread hops, adopting the program
-    double stallMs = 0; // the longest the GUI thread did not get to its event loop
+    double otherMs = 0;         // the rest: queues, thread hops, adopting the program
+    double stallMs = 0;         // the longest the GUI thread did not get to its event loop
     // ... from the edit until the live check of the new program has its
     // verdict (it draws the scene again on the GUI thread after the frame)
     double stallUntilCheckedMs = 0;

@@ -324,8 +324,8 @@ void printTable(const std::vector<Row> &rows)
         for (std::size_t k = 0; k < rows[i].samples.size() && k < rows[0].samples.size(); ++k)
             if (rows[0].samples[k].totalMs > 0)
                 ratios.push_back(rows[i].samples[k].totalMs / rows[0].samples[k].totalMs);
-        std::printf("%s / raw GL (median of the rounds' ratios): %.2fx\n",
-                    qPrintable(rows[i].name), percentile(ratios, 0.5));
+        std::printf("%s / raw GL (median of the rounds' ratios): %.2fx\n", qPrintable(rows[i].name),
+                    percentile(ratios, 0.5));
     }
 }
 

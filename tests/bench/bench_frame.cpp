@@ -18,10 +18,10 @@
 #include "EditSample.h"
 #include "RawGlFramePath.h"
 #include "render/GlFormat.h"
-#include "ui/window/GuiMain.h"
 #include "ui/check/LiveCheck.h"
-#include "ui/window/MainWindow.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/GuiMain.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

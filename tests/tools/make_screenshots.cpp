@@ -6,15 +6,15 @@
 #include "core/ResourcePaths.h"
 #include "render/GlFormat.h"
 #include "ui/check/CheckOverlay.h"
-#include "ui/scene/LightsDock.h"
 #include "ui/check/LiveCheck.h"
-#include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/performance/PerformanceDock.h"
+#include "ui/scene/LightsDock.h"
 #include "ui/scene/SceneEditDockSet.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 #include "ui/window/WindowImage.h"
 
 #include <QApplication>

@@ -6,13 +6,13 @@
 //   soak [--edits N] [--reloads N] [--loads N]
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "ui/viewport/CurrentContext.h"
-#include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/SceneLoadJob.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
+#include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -5,10 +5,10 @@
 #include "UiTestWindow.h"
 #include "core/ResourcePaths.h"
 #include "core/SceneJson.h"
-#include "ui/window/ExamplesMenu.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/SceneLoadJob.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/ExamplesMenu.h"
+#include "ui/window/MainWindow.h"
 
 #include "core/ResourcePaths.h"
 #include <QAction>

@@ -10,10 +10,10 @@
 #include "ui/help/DocumentationBrowser.h"
 #include "ui/help/DocumentationFiles.h"
 #include "ui/help/HelpMenu.h"
-#include "ui/window/MainWindow.h"
 #include "ui/help/ShortcutsDialog.h"
-#include "ui/window/StartupOptions.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
+#include "ui/window/StartupOptions.h"
 
 #include <OpenMesh/Core/System/config.h>
 
@@ -279,8 +279,9 @@ void TestHelpMenu::documentationOpensReadmeAndFollowsALink()
 {
     helpMenu()->documentationAction()->trigger();
     DocumentationBrowser *docs = helpMenu()->documentationBrowser();
-    QVERIFY2(docs, qPrintable(HelpMenu::missingDocumentationMessage(
-                       documentationSearchFolders(StartupOptions::fromEnvironment().documentationFolder))));
+    QVERIFY2(docs,
+             qPrintable(HelpMenu::missingDocumentationMessage(documentationSearchFolders(
+                 StartupOptions::fromEnvironment().documentationFolder))));
     QVERIFY(QTest::qWaitForWindowExposed(docs));
     const QString readme = QDir::cleanPath(sourcePath(QStringLiteral("README.md")));
     QCOMPARE(docs->currentSource().toLocalFile(), readme);

@@ -81,7 +81,7 @@ private:
     QHash<QString, QWidget *> m_rows;
     QHash<QString, UniformOwner> m_owners;
     QStringList m_inactive;
-    QStringList m_layoutKey; // of the rows shown (layoutKey())
+    QStringList m_layoutKey;  // of the rows shown (layoutKey())
     UniformSnapshot m_values; // as last read: the type and layout each write needs
     bool m_rebuildPending = false;
     QElapsedTimer m_sinceRefresh; // read-only values follow the scene a few times a second
