@@ -1,8 +1,8 @@
 #include "benchcli/BenchCommand.h"
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
-#include "core/Language.h"
-#include "core/RuntimeDirectory.h"
+#include "core/support/Language.h"
+#include "core/support/RuntimeDirectory.h"
 #include "core/check/ProgramSynopsis.h"
 #include "ui/window/GuiMain.h"
 

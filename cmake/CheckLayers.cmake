@@ -10,6 +10,12 @@
 # header of Qt Widgets, Qt Charts or Qt OpenGL Widgets. Registered with CTest as unit.layers. The libraries enforce
 # the same order at link time (app/CMakeLists.txt): a layer links only the
 # ones listed here for it.
+#
+# Inside core and mesh the rooms (docs/architecture.md) have rules of their
+# own: support/ is the floor and includes no other room; check/ judges
+# images and programs and does not read scene files (scene/SceneJson*,
+# ScenePaths, RecoveryJournal): a check gets its scene already read, which
+# is what lets the window, the CLI and the grader hand it the same Scene.
 cmake_minimum_required(VERSION 3.16)
 get_filename_component(root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
@@ -38,7 +44,51 @@ if(NOT EXISTS "${qt_include_root}/QtWidgets")
                       "cannot tell a widget header (pass -DQT_CORE_INCLUDE_DIR=...)")
 endif()
 
+# ROOM "INCLUDE REGEX" "WHY": an include of a file of app/ROOM/ matching
+# the regex is refused.
+set(room_rules
+  "core/support" "^(core/(scene|view|reference|check|project)|mesh)/" "support/ is the floor of core"
+  "core/check" "^core/scene/(SceneJson|SceneJsonText|ScenePaths|RecoveryJournal)\\.h$" "check/ does not read scene files"
+  "mesh/detail" "^mesh/import/(MeshLoader|MeshImportProcess|MeshCache|SceneMeshes)\\.h$" "detail/ works on meshes already loaded")
+set(known_rooms
+  core/scene core/reference core/check core/view core/support core/project
+  mesh/import mesh/normals mesh/detail)
+
 set(violations 0)
+foreach(layer core mesh)
+  file(GLOB entries LIST_DIRECTORIES true "${root}/app/${layer}/*")
+  foreach(entry IN LISTS entries)
+    get_filename_component(name "${entry}" NAME)
+    if(IS_DIRECTORY "${entry}" AND NOT "${layer}/${name}" IN_LIST known_rooms)
+      message("app/${layer}/${name}/: a room CheckLayers.cmake does not know (add it to known_rooms and to docs/architecture.md)")
+      math(EXPR violations "${violations} + 1")
+    elseif(NOT IS_DIRECTORY "${entry}")
+      message("app/${layer}/${name}: outside the rooms of ${layer} (docs/architecture.md)")
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH room_rules rule_fields)
+math(EXPR last_rule "${rule_fields} - 1")
+foreach(at RANGE 0 ${last_rule} 3)
+  math(EXPR at_regex "${at} + 1")
+  math(EXPR at_why "${at} + 2")
+  list(GET room_rules ${at} room)
+  list(GET room_rules ${at_regex} refused)
+  list(GET room_rules ${at_why} why)
+  file(GLOB_RECURSE files "${root}/app/${room}/*.h" "${root}/app/${room}/*.cpp")
+  foreach(file IN LISTS files)
+    file(STRINGS "${file}" lines REGEX "^#include \"")
+    foreach(line IN LISTS lines)
+      string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+      if(included MATCHES "${refused}")
+        file(RELATIVE_PATH relative "${root}" "${file}")
+        message("${relative}: includes ${included}: ${why}")
+        math(EXPR violations "${violations} + 1")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
 foreach(layer IN LISTS layers)
   file(GLOB_RECURSE files "${root}/app/${layer}/*.h" "${root}/app/${layer}/*.cpp")
   foreach(file IN LISTS files)
@@ -82,6 +132,6 @@ foreach(layer IN LISTS layers)
 endforeach()
 
 if(violations GREATER 0)
-  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli), reach past Qt Core, or draw widgets below charts")
+  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli), reach past Qt Core, draw widgets below charts, or break a room's rule")
 endif()
-message(STATUS "layers: every include points down (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli); core and mesh use Qt Core alone; only charts, ui and benchcli use widgets")
+message(STATUS "layers: every include points down and every room keeps its rules (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli); core and mesh use Qt Core alone; only charts, ui and benchcli use widgets")

@@ -2,8 +2,8 @@
 #include "BenchOptions.h"
 #include "BenchResult.h"
 #include "ObjectFit.h"
-#include "core/Result.h"
-#include "core/Scene.h"
+#include "core/support/Result.h"
+#include "core/scene/Scene.h"
 #include "core/reference/ReferenceImage.h"
 
 #include <QImage>

@@ -1,6 +1,6 @@
 #pragma once
 #include "ErrorBudget.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/ShadingMethod.h"
 
 #include <QSize>
 #include <QStringList>

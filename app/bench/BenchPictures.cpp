@@ -1,6 +1,6 @@
 #include "BenchPictures.h"
 
-#include "core/ImageMetrics.h"
+#include "core/check/ImageMetrics.h"
 #include "render/QtImages.h"
 
 #include <QCoreApplication>
@@ -8,7 +8,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct BenchPicturesWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::BenchPictures)
 };

@@ -1,6 +1,6 @@
 #include "BenchResult.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -12,7 +12,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct BenchResultWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::BenchResult)
 };

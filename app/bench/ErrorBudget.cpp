@@ -1,6 +1,6 @@
 #include "ErrorBudget.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -11,7 +11,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ErrorBudgetWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ErrorBudget)
 };

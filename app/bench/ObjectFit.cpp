@@ -1,5 +1,5 @@
 #include "ObjectFit.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -8,7 +8,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ObjectFitWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ObjectFit)
 };

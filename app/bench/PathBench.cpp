@@ -2,12 +2,12 @@
 
 #include "BenchPictures.h"
 #include "BenchResult.h"
-#include "core/ImageMetrics.h"
-#include "core/SceneJson.h"
+#include "core/check/ImageMetrics.h"
+#include "core/scene/SceneJson.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
@@ -20,7 +20,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct PathBenchWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::PathBench)
 };

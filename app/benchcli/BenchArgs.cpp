@@ -1,8 +1,8 @@
 #include "BenchArgs.h"
 
 #include "cli/CliCommon.h"
-#include "core/PointLight.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/PointLight.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -12,7 +12,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct BenchArgsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::BenchArgs)
 };

@@ -1,5 +1,5 @@
 #include "BenchCommand.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "BenchArgs.h"
 #include "bench/BenchEngine.h"
@@ -9,7 +9,7 @@
 #include "charts/PathChart.h"
 #include "charts/SpeedAccuracyChart.h"
 #include "cli/CliCommon.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QApplication>
 #include <QCoreApplication>
@@ -24,7 +24,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct BenchCommandWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::BenchCommand)
 };

@@ -14,7 +14,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ChartImagesWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ChartImages)
 };

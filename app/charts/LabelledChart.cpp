@@ -1,6 +1,6 @@
 #include "LabelledChart.h"
 #include "ChartLabels.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <QGraphicsSimpleTextItem>
@@ -19,7 +19,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct LabelledChartWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::LabelledChart)
 };

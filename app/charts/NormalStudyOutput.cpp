@@ -2,7 +2,7 @@
 
 #include "SpeedAccuracyChart.h"
 #include "bench/BenchResult.h"
-#include "mesh/NormalMethodStudy.h"
+#include "mesh/normals/NormalMethodStudy.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -13,7 +13,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct NormalStudyOutputWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::NormalStudyOutput)
 };

@@ -1,7 +1,7 @@
 #include "PathChart.h"
 
 #include "ChartImages.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <QGraphicsScene>
@@ -16,7 +16,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct PathChartWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::PathChart)
 };

@@ -1,7 +1,7 @@
 #pragma once
 #include "bench/ErrorBudget.h"
 #include "bench/PathBench.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QSize>
 #include <QString>

@@ -18,7 +18,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct SpeedAccuracyChartWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::SpeedAccuracyChart)
 };

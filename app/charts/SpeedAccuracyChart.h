@@ -1,6 +1,6 @@
 #pragma once
 #include "bench/BenchResult.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QColor>
 #include <QSize>
@@ -63,7 +63,7 @@ QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QSt
 Result<> writeChartImages(QChart *chart, const QString &pngPath, const QString &svgPath,
                           QSize size = {640, 440});
 
-// The normal-method study (app/mesh/NormalMethodStudy.h, NormalStudyRow:
+// The normal-method study (app/mesh/normals/NormalMethodStudy.h, NormalStudyRow:
 // tessellation, method, triangles, ms, maxAngleDeg, meanAngleDeg): time (x,
 // ms) against mean angular error (y, degrees), one series per tessellation
 // with its points labelled by method. A template over the row type so this

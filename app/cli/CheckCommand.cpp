@@ -6,7 +6,7 @@
 #include "GradedChild.h"
 #include "SceneOverrides.h"
 #include "SceneStages.h"
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include "core/project/ProjectPrograms.h"
 #include "render/QtImages.h"
 
@@ -22,7 +22,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct CheckCommandWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckCommand)
 };
@@ -274,7 +274,7 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
 
 // The scene the check draws: the file's, with the command line's shading
 // and bindings over it. Made once the application exists, so that its
-// errors speak the run's language (core/Language).
+// errors speak the run's language (core/support/Language).
 SceneLoadResult checkedScene(const CheckArgs &args)
 {
     SceneLoadResult loaded = loadSceneFile(args.scenePath);

@@ -1,5 +1,5 @@
 #include "CheckReportOutput.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 #include "core/check/MistakeSets.h"
 
 #include "SceneStages.h"
@@ -15,7 +15,7 @@ namespace phonglab::cli {
 namespace {
 
 // The text output's sentences, in the language the run speaks
-// (core/Language); the JSON's keys and key values never change with it.
+// (core/support/Language); the JSON's keys and key values never change with it.
 struct CheckWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckReportOutput)
 };

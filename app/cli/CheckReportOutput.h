@@ -1,5 +1,5 @@
 #pragma once
-#include "core/Scene.h"
+#include "core/scene/Scene.h"
 #include "core/check/MistakeSourceLines.h"
 #include "core/check/ShaderCheck.h"
 #include "render/ShaderDiagnostic.h"

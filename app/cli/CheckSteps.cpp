@@ -1,11 +1,11 @@
 #include "CheckSteps.h"
 
 #include "SceneStages.h"
-#include "core/ImageMetrics.h"
+#include "core/check/ImageMetrics.h"
 #include "core/check/BindingConflicts.h"
 #include "core/check/CoursePrelude.h"
 #include "core/project/ProjectShader.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 
@@ -16,7 +16,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct CheckStepsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckSteps)
 };

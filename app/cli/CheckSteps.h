@@ -1,8 +1,8 @@
 #pragma once
 #include "CheckReportOutput.h"
-#include "core/MeshData.h"
-#include "core/Scene.h"
-#include "core/SceneJson.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
+#include "core/scene/SceneJson.h"
 #include "core/check/ShaderCheck.h"
 #include "core/reference/PhongEquation.h"
 #include "render/ShaderDiagnostic.h"

@@ -6,7 +6,7 @@
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
-#include "core/NearestSpelling.h"
+#include "core/support/NearestSpelling.h"
 #include "core/check/ProgramSynopsis.h"
 #include "headless/HeadlessPlatform.h"
 
@@ -19,7 +19,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct CliWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::Cli)
 };

@@ -7,7 +7,7 @@
 namespace phonglab::cli {
 
 // The application object a command runs in, made before it reads its
-// arguments: from then on the run speaks its language (core/Language), its
+// arguments: from then on the run speaks its language (core/support/Language), its
 // usage errors included. `argc` must outlive it.
 using MakeApplication = std::unique_ptr<QCoreApplication> (*)(int &argc, char **argv);
 std::unique_ptr<QCoreApplication> makeCoreApplication(int &argc, char **argv);

@@ -1,6 +1,6 @@
 #include "CliCommon.h"
 
-#include "core/NearestSpelling.h"
+#include "core/support/NearestSpelling.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

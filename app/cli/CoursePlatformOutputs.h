@@ -1,7 +1,7 @@
 #pragma once
 #include "GradeRows.h"
 
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QByteArray>
 #include <QString>

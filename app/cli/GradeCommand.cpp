@@ -7,9 +7,9 @@
 #include "GradeRun.h"
 #include "GradeTables.h"
 #include "SceneStages.h"
-#include "core/SceneJson.h"
-#include "mesh/MeshImportProcess.h"
-#include "mesh/SceneMeshes.h"
+#include "core/scene/SceneJson.h"
+#include "mesh/import/MeshImportProcess.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -27,7 +27,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct GradeCommandWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeCommand)
 };

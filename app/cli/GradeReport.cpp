@@ -1,9 +1,9 @@
 #include "GradeReport.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 #include <QCoreApplication>
 
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -13,7 +13,7 @@
 
 namespace phonglab::cli {
 
-// The report's words, in the language of the run (core/Language); what
+// The report's words, in the language of the run (core/support/Language); what
 // students wrote is escaped as before.
 struct ReportWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeReport)

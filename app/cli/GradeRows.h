@@ -2,8 +2,8 @@
 #include "CheckReportOutput.h"
 #include "ClassFolder.h"
 #include "SceneOverrides.h"
-#include "core/MeshData.h"
-#include "core/Scene.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 #include "core/reference/PhongEquation.h"
 
 #include <QSize>

@@ -1,6 +1,6 @@
 #include "GradedChild.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -15,7 +15,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct GradedChildWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradedChild)
 };

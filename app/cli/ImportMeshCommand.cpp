@@ -1,7 +1,7 @@
 #include "ImportMeshCommand.h"
 
 #include "CliCommon.h"
-#include "mesh/MeshImportProcess.h"
+#include "mesh/import/MeshImportProcess.h"
 
 namespace phonglab::cli {
 

@@ -1,8 +1,8 @@
 #include "MeshInfoCommand.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "CliCommon.h"
-#include "mesh/MeshLoader.h"
+#include "mesh/import/MeshLoader.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -14,7 +14,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct MeshInfoCommandWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::MeshInfoCommand)
 };

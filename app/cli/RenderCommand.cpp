@@ -3,9 +3,9 @@
 #include "CliCommon.h"
 #include "SceneOverrides.h"
 #include "SceneStages.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
+#include "core/scene/ShadingMethod.h"
 #include "render/OffscreenRenderer.h"
 
 #include <QCommandLineParser>
@@ -18,7 +18,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct RenderCommandWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::RenderCommand)
 };

@@ -5,7 +5,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct SceneOverridesWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::SceneOverrides)
 };

@@ -1,7 +1,7 @@
 #include "SceneStages.h"
 
 #include "CliCommon.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 #include "render/ShaderSource.h"
 
 #include <QCoreApplication>
@@ -13,7 +13,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct SceneStagesWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::SceneStages)
 };

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/Scene.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/Scene.h"
+#include "core/scene/ShadingMethod.h"
 #include "core/check/MistakeSourceLines.h"
 #include "render/BuildReport.h"
 #include "render/Renderer.h"

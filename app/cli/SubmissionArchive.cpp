@@ -13,7 +13,7 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct SubmissionArchiveWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::SubmissionArchive)
 };

@@ -1,6 +1,6 @@
 #pragma once
 #include "BuildWorker.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QMutex>
 #include <QObject>

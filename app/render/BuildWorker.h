@@ -2,7 +2,7 @@
 #include "LentContext.h"
 #include "ProgramBuilder.h"
 #include "WarmUpDraw.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QObject>
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "ShaderProgram.h"
-#include "core/Material.h"
-#include "core/Scene.h"
+#include "core/scene/Material.h"
+#include "core/scene/Scene.h"
 
 #include <glm/glm.hpp>
 #include <span>

@@ -3,9 +3,9 @@
 #include "Renderer.h"
 #include "ShaderSource.h"
 #include "UniformSnapshot.h"
-#include "core/Result.h"
-#include "core/Scene.h"
-#include "mesh/SceneMeshes.h"
+#include "core/support/Result.h"
+#include "core/scene/Scene.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QImage>
 #include <QSize>

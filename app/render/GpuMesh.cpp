@@ -1,6 +1,6 @@
 #include "GpuMesh.h"
 
-#include "mesh/FaceLayout.h"
+#include "mesh/normals/FaceLayout.h"
 
 #include <QCoreApplication>
 #include <limits>
@@ -8,7 +8,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct GpuMeshWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::GpuMesh)
 };

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/MeshData.h"
-#include "core/Result.h"
-#include "mesh/DetailLevels.h"
+#include "core/scene/MeshData.h"
+#include "core/support/Result.h"
+#include "mesh/detail/DetailLevels.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>

@@ -1,7 +1,7 @@
 #pragma once
 #include "FrameTiming.h"
 #include "Renderer.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QImage>
 #include <QOffscreenSurface>

@@ -1,11 +1,11 @@
 #include "Renderer.h"
 
 #include "CourseUniforms.h"
-#include "core/DetailSelection.h"
-#include "core/LightBound.h"
-#include "core/ObjectMatrices.h"
-#include "core/ResourcePaths.h"
-#include "mesh/BuiltinMeshes.h"
+#include "core/view/DetailSelection.h"
+#include "core/view/LightBound.h"
+#include "core/view/ObjectMatrices.h"
+#include "core/scene/ResourcePaths.h"
+#include "mesh/import/BuiltinMeshes.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -15,7 +15,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct RendererWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::Renderer)
 };

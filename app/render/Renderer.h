@@ -2,12 +2,12 @@
 #include "BuildReport.h"
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
-#include "core/DepthRange.h"
-#include "core/DetailSelection.h"
-#include "core/ObjectMatrices.h"
-#include "core/Result.h"
-#include "core/Scene.h"
-#include "mesh/SceneMeshes.h"
+#include "core/view/DepthRange.h"
+#include "core/view/DetailSelection.h"
+#include "core/view/ObjectMatrices.h"
+#include "core/support/Result.h"
+#include "core/scene/Scene.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>

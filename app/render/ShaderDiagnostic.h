@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ShaderStage.h"
+#include "core/scene/ShaderStage.h"
 
 #include <QString>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "WarmUpDraw.h"
 
-#include "mesh/BuiltinMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
 
 #include <QCoreApplication>
 #include <QOpenGLContext>
@@ -8,7 +8,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct WarmUpDrawWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::WarmUpDraw)
 };

@@ -1,6 +1,6 @@
 #pragma once
 #include "GpuMesh.h"
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QOpenGLExtraFunctions>
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
-#include "mesh/SceneMeshes.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QByteArray>
 #include <QFile>

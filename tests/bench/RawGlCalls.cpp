@@ -2,9 +2,9 @@
 
 #include "RawGlCalls.h"
 
-#include "core/ObjectMatrices.h"
+#include "core/view/ObjectMatrices.h"
 
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QByteArray>
 #include <QFile>

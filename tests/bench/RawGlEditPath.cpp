@@ -5,7 +5,7 @@
 
 #include "RawGlCalls.h"
 
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 #include "render/GlFormat.h"
 
 #include <QCoreApplication>

@@ -1,8 +1,8 @@
 #pragma once
 #include "EditSample.h"
 #include "RawGlCalls.h"
-#include "core/MeshData.h"
-#include "core/Scene.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 
 #include <QOpenGLContext>
 #include <QSize>

@@ -5,7 +5,7 @@
 
 #include "EditSample.h"
 #include "RawGlCalls.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 #include "render/GlFormat.h"
 
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 #pragma once
 #include "RawGlCalls.h"
-#include "core/Scene.h"
-#include "mesh/SceneMeshes.h"
+#include "core/scene/Scene.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QMainWindow>
 #include <QOpenGLContext>

@@ -1,7 +1,7 @@
 #pragma once
 #include "RawGlCalls.h"
-#include "core/MeshData.h"
-#include "core/Scene.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 
 #include <QSize>
 #include <QtGui/qopengl.h>

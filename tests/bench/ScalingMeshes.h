@@ -1,7 +1,7 @@
 #pragma once
 #include "BenchHelpers.h"
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <algorithm>
 #include <cmath>

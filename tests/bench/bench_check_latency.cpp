@@ -20,8 +20,8 @@
 // to the verdict of each, their ratio, and the GUI thread's stalls while
 // each check runs (gaps between 2 ms timer ticks).
 #include "BenchHelpers.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"

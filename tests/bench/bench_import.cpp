@@ -5,9 +5,9 @@
 // memory is its own. Prints a table; not a test.
 //
 //   bench_import FILE_WITH_NORMALS.obj [FILE_WITHOUT_NORMALS.obj] [--runs N]
-#include "mesh/MeshCache.h"
-#include "mesh/MeshLoader.h"
-#include "mesh/NormalComputation.h"
+#include "mesh/import/MeshCache.h"
+#include "mesh/import/MeshLoader.h"
+#include "mesh/normals/NormalComputation.h"
 
 #include "ChildMeasure.h"
 #include "TinyObjLoad.h"

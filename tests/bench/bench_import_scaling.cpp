@@ -11,7 +11,7 @@
 #include "ChartCsv.h"
 #include "LogLogFit.h"
 #include "ScalingMeshes.h"
-#include "mesh/MeshLoader.h"
+#include "mesh/import/MeshLoader.h"
 
 #include "ChildMeasure.h"
 #include "TinyObjLoad.h"

@@ -20,7 +20,7 @@
 #include "ScalingMeshes.h"
 #include "core/reference/MeshBvh.h"
 #include "headless/HeadlessPlatform.h"
-#include "mesh/DetailLevels.h"
+#include "mesh/detail/DetailLevels.h"
 #include "render/OffscreenRenderer.h"
 
 #include <QGuiApplication>

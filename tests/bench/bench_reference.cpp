@@ -6,13 +6,13 @@
 //   build/tests/bench/bench_reference [--size N]
 
 #include "BenchHelpers.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

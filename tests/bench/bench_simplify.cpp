@@ -13,12 +13,12 @@
 // per mille of the bounding-box diagonal. Neither moves a vertex, so the
 // simplified surface's own vertices lie on the original exactly.
 #include "BenchHelpers.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "core/reference/MeshBvh.h"
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/MeshDecimation.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/detail/MeshDecimation.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

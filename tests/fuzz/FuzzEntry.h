@@ -12,17 +12,17 @@
 // Header-only on purpose: the fuzz build links it with libFuzzer, the unit
 // test with QtTest, and neither needs a library of its own.
 
-#include "core/CameraPath.h"
-#include "core/RecoveryJournal.h"
-#include "core/SceneJson.h"
+#include "core/view/CameraPath.h"
+#include "core/scene/RecoveryJournal.h"
+#include "core/scene/SceneJson.h"
 #include "core/check/CoursePrelude.h"
 #include "core/check/ShaderLint.h"
 #include "core/check/UniformAnnotations.h"
 #include "core/project/HtmlShaders.h"
 #include "core/project/ProjectSave.h"
 #include "core/project/ProjectShader.h"
-#include "mesh/MeshCache.h"
-#include "mesh/MeshLoader.h"
+#include "mesh/import/MeshCache.h"
+#include "mesh/import/MeshLoader.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QBuffer>

@@ -4,9 +4,9 @@
 // allowance, in 8-bit steps, and the same comparison fails when a light
 // that is seen is dropped (an allowance far above the bound's).
 #include "RenderCheck.h"
-#include "core/ImageMetrics.h"
-#include "core/LightBound.h"
-#include "mesh/SceneMeshes.h"
+#include "core/check/ImageMetrics.h"
+#include "core/view/LightBound.h"
+#include "mesh/import/SceneMeshes.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"

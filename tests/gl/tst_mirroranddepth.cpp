@@ -4,7 +4,7 @@
 // the front), and a camera with an extreme near/far range collapsed the
 // depth buffer into an empty or scrambled frame.
 #include "RenderCheck.h"
-#include "core/DepthRange.h"
+#include "core/view/DepthRange.h"
 #include "render/GlFormat.h"
 
 #include <QGuiApplication>

@@ -11,9 +11,9 @@
 // (docs/reliability.md).
 #include "RenderCheck.h"
 #include "TestPaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include "core/reference/PhongReference.h"
-#include "mesh/MeshLoader.h"
+#include "mesh/import/MeshLoader.h"
 #include "render/GlFormat.h"
 
 #include <QFile>

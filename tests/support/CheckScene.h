@@ -1,7 +1,7 @@
 #pragma once
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include "core/check/ShaderCheck.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include "TestPaths.h"
 

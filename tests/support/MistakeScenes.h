@@ -1,5 +1,5 @@
 #pragma once
-#include "core/Scene.h"
+#include "core/scene/Scene.h"
 
 // Scenes for the shader-mistake tests.
 namespace phonglab::test {

@@ -1,9 +1,9 @@
 #include "RenderCheck.h"
 
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "core/reference/AnalyticRaycaster.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"
 

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/ImageMetrics.h"
-#include "core/MeshData.h"
-#include "core/Scene.h"
+#include "core/check/ImageMetrics.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "render/BuildReport.h"
 #include "render/ShaderSource.h"

@@ -1,9 +1,9 @@
 #pragma once
-#include "core/Result.h"
+#include "core/support/Result.h"
 
 #include <QTest>
 
-// QVERIFY for a Result (core/Result.h): passes when it holds a value, else
+// QVERIFY for a Result (core/support/Result.h): passes when it holds a value, else
 // fails the test with the result's own error message.
 #define QVERIFY_OK(expression)                                                                     \
     do {                                                                                           \

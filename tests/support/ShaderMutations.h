@@ -1,5 +1,5 @@
 #pragma once
-#include "core/RgbImage.h"
+#include "core/support/RgbImage.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
 #include "render/OffscreenRenderer.h"

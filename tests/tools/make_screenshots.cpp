@@ -3,7 +3,7 @@
 // live editor, the Lights dock, and the Performance dock after Fit to budget
 // on the sphere scene (it runs build/app/phonglab bench). Run under Xvfb:
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 #include "render/GlFormat.h"
 #include "ui/check/CheckOverlay.h"
 #include "ui/check/LiveCheck.h"

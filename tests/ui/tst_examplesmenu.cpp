@@ -3,14 +3,14 @@
 // opens it the way File → Open does.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/ResourcePaths.h"
-#include "core/SceneJson.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "ui/scene/SceneLoadJob.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/ExamplesMenu.h"
 #include "ui/window/MainWindow.h"
 
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 #include <QAction>
 #include <QDir>
 #include <QFileInfo>

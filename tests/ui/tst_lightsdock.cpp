@@ -9,7 +9,7 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/reference/AnalyticRaycaster.h"
-#include "core/MaterialPresets.h"
+#include "core/scene/MaterialPresets.h"
 #include "core/reference/PhongReference.h"
 #include "render/QtImages.h"
 #include "ui/scene/LightsDock.h"

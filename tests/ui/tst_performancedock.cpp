@@ -5,7 +5,7 @@
 // measurement and reports the savings; Full detail goes back.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/Scene.h"
+#include "core/scene/Scene.h"
 #include "ui/viewport/DetailLevelLabel.h"
 #include "ui/window/MainWindow.h"
 #include "ui/performance/PerformanceDock.h"

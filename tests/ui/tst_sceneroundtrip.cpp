@@ -6,7 +6,7 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/window/MainWindow.h"
 #include "ui/scene/SceneDock.h"

@@ -29,7 +29,7 @@
 #include <QTemporaryDir>
 
 #include "ResultChecks.h"
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include <QTest>
 #include <QToolButton>
 #include <memory>

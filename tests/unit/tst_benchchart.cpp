@@ -4,7 +4,7 @@
 
 #include "ResultChecks.h"
 #include "charts/SpeedAccuracyChart.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QApplication>
 #include <QFile>
@@ -303,7 +303,7 @@ private slots:
 
     void normalStudyChart()
     {
-        // The fields of NormalStudyRow (app/mesh/NormalMethodStudy.h).
+        // The fields of NormalStudyRow (app/mesh/normals/NormalMethodStudy.h).
         struct Row {
             QString tessellation;
             QString method;

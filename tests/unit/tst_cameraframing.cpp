@@ -1,7 +1,7 @@
 // A scene's camera moved back until every object is in a view of a given
 // shape: only ever back along its line of sight, exactly as far as the
 // point nearest an edge needs, and not at all when everything shows.
-#include "core/CameraFraming.h"
+#include "core/view/CameraFraming.h"
 
 #include <QTest>
 #include <vector>

@@ -2,7 +2,7 @@
 // once while moving out, the dolly runs from just outside the scene to far
 // away, and keyframe files are read with every error located.
 
-#include "core/CameraPath.h"
+#include "core/view/CameraPath.h"
 
 #include <QtTest>
 

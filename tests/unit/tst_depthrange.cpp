@@ -1,6 +1,6 @@
 // The near/far planes a frame is drawn with: the camera's, moved inwards to
 // what the scene occupies, never outwards.
-#include "core/DepthRange.h"
+#include "core/view/DepthRange.h"
 
 #include <QTest>
 #include <glm/gtc/matrix_transform.hpp>

@@ -4,10 +4,10 @@
 // ever letting the projected error exceed the target.
 
 #include "TestPaths.h"
-#include "core/DetailSelection.h"
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/DetailLevels.h"
-#include "mesh/MeshLoader.h"
+#include "core/view/DetailSelection.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/detail/DetailLevels.h"
+#include "mesh/import/MeshLoader.h"
 
 #include <QRandomGenerator>
 #include <QtTest>

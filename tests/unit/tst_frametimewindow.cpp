@@ -1,4 +1,4 @@
-#include "core/FrameTimeWindow.h"
+#include "core/support/FrameTimeWindow.h"
 
 #include <QTest>
 

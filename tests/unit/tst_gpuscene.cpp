@@ -3,7 +3,7 @@
 // until the user moves it (and what Save writes then), the headlight added
 // only where a light is free, and dock edits that change parameters but not
 // the objects.
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 #include "ui/viewport/GpuScene.h"
 
 #include <QTest>

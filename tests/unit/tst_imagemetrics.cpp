@@ -1,7 +1,7 @@
 // Image comparison: PSNR/RMSE worked out by hand, the silhouette band, and
 // inputs that do not fit together.
 
-#include "core/ImageMetrics.h"
+#include "core/check/ImageMetrics.h"
 #include "render/QtImages.h"
 
 #include <QtTest>

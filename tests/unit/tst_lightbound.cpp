@@ -3,7 +3,7 @@
 // normal and view, and a light that could change a pixel by the allowance
 // is never left out, alone or together with others.
 
-#include "core/LightBound.h"
+#include "core/view/LightBound.h"
 #include "core/reference/PhongReference.h"
 
 #include <QRandomGenerator>

@@ -2,8 +2,8 @@
 // concave polygons, the choice between file and computed normals, the
 // replacement of unusable file normals, welding, and the statistics.
 
-#include "mesh/MeshBuilder.h"
-#include "mesh/Triangulation.h"
+#include "mesh/normals/MeshBuilder.h"
+#include "mesh/import/Triangulation.h"
 
 #include <QPointF>
 #include <QtTest>

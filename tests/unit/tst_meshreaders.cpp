@@ -1,7 +1,7 @@
-#include "mesh/MeshFilePrecheck.h"
-#include "mesh/MeshFileReader.h"
-#include "mesh/MeshRepair.h"
-#include "mesh/ObjReader.h"
+#include "mesh/import/MeshFilePrecheck.h"
+#include "mesh/import/MeshFileReader.h"
+#include "mesh/import/MeshRepair.h"
+#include "mesh/import/ObjReader.h"
 
 #include "MeshFiles.h"
 

@@ -1,4 +1,4 @@
-#include "mesh/MeshRepair.h"
+#include "mesh/import/MeshRepair.h"
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-#include "mesh/MeshTopology.h"
+#include "mesh/import/MeshTopology.h"
 
 #include <QtTest>
 

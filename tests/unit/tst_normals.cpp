@@ -2,8 +2,8 @@
 // a triangle, two triangles folded at 90°, a cube, cancelling and degenerate
 // triangles, and a tessellated sphere against its analytic normals.
 
-#include "mesh/BuiltinMeshes.h"
-#include "mesh/NormalComputation.h"
+#include "mesh/import/BuiltinMeshes.h"
+#include "mesh/normals/NormalComputation.h"
 
 #include <QtTest>
 #include <bit>

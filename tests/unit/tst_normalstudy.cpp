@@ -1,6 +1,6 @@
 // The normal-method study: angular error against the exact sphere normal,
 // per method, on regular and irregular tessellations.
-#include "mesh/NormalMethodStudy.h"
+#include "mesh/normals/NormalMethodStudy.h"
 
 #include <QTest>
 

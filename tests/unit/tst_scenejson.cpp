@@ -1,4 +1,4 @@
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 
 #include <QDir>
 #include <QFile>

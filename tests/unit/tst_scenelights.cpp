@@ -1,6 +1,6 @@
 // The optional per-light fields "name" and "enabled" of the scene format:
 // defaults, round trip, written only when not the default, bad types.
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,5 +1,5 @@
 // The per-object "normals" field of scene files: how a mesh gets its normals.
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 
 #include <QTest>
 

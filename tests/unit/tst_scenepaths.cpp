@@ -1,7 +1,7 @@
-// How a saved scene names its files (core/ScenePaths): relative to the scene
+// How a saved scene names its files (core/scene/ScenePaths): relative to the scene
 // file's folder when under it, else absolute; meshes keep pointing at the
 // same files when the scene is saved elsewhere.
-#include "core/ScenePaths.h"
+#include "core/scene/ScenePaths.h"
 
 #include <QDir>
 #include <QTest>

@@ -1,6 +1,6 @@
 // The optional top-level "shaders" key of a scene file: shader files that
 // replace the shading method's shipped ones.
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,6 +1,6 @@
 // The scene's "uniforms": values of the shader's own uniforms, and which of
 // a running program's values a saved scene keeps (render/SceneUniforms).
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 #include "render/SceneUniforms.h"
 
 #include <QTest>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/Scene.h"
+#include "core/scene/Scene.h"
 #include "core/check/ShaderBindings.h"
 
 #include <QStringList>

@@ -1,5 +1,5 @@
 #include "core/check/PixelTerms.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "core/reference/PhongReference.h"
 
@@ -10,7 +10,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct PixelTermsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::PixelTerms)
 };

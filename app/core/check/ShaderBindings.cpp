@@ -1,6 +1,6 @@
 #include "core/check/ShaderBindings.h"
 
-#include "core/EnumNames.h"
+#include "core/support/EnumNames.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -13,7 +13,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ShaderBindingsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderBindings)
 };

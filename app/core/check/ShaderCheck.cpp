@@ -1,5 +1,5 @@
 #include "core/check/ShaderCheck.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "core/check/MistakeSets.h"
 #include "core/reference/PhongReference.h"
@@ -202,7 +202,7 @@ std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &re
 
 namespace {
 
-// The check's sentences, in the language the run speaks (core/Language).
+// The check's sentences, in the language the run speaks (core/support/Language).
 struct CheckWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderCheck)
 };

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ImageMetrics.h"
+#include "ImageMetrics.h"
 #include "core/check/MistakeDiagnosis.h"
 #include "core/reference/PhongEquation.h"
 #include "core/reference/SceneHits.h"

@@ -1,6 +1,6 @@
 #include "core/check/ShaderMistake.h"
 
-#include "core/EnumNames.h"
+#include "core/support/EnumNames.h"
 
 #include <QCoreApplication>
 #include <array>
@@ -181,7 +181,7 @@ constexpr std::array kForms = {
                            "N·H with the halfway vector and the exponent 4n in place of R·V")},
 };
 
-// In the language the run speaks (core/Language); UTF-8 (·, ²), unlike the keys.
+// In the language the run speaks (core/support/Language); UTF-8 (·, ²), unlike the keys.
 QString translated(const char *text)
 {
     return QCoreApplication::translate("phonglab::ShaderMistake", text);

@@ -12,7 +12,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ProjectProgramsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ProjectPrograms)
 };

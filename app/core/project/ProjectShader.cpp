@@ -11,7 +11,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ProjectShaderWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ProjectShader)
 };

@@ -1,6 +1,6 @@
 #include "core/reference/AnalyticRaycaster.h"
 
-#include "core/ObjectMatrices.h"
+#include "core/view/ObjectMatrices.h"
 #include "core/reference/AnalyticShapes.h"
 #include "core/reference/PhongReference.h"
 #include "core/reference/ReferenceSample.h"
@@ -14,7 +14,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct AnalyticRaycasterWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::AnalyticRaycaster)
 };

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/Camera.h"
-#include "core/Result.h"
-#include "core/Scene.h"
+#include "core/view/Camera.h"
+#include "core/support/Result.h"
+#include "core/scene/Scene.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
 #include "core/reference/ReferenceImage.h"

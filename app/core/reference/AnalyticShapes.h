@@ -7,7 +7,7 @@ namespace phonglab {
 
 // The analytic surfaces behind the builtin meshes: what "builtin:sphere",
 // "builtin:torus" and "builtin:cube" are exactly. The reference ray-casts
-// these; mesh/BuiltinMeshes tessellates them for the GPU.
+// these; mesh/import/BuiltinMeshes tessellates them for the GPU.
 enum class AnalyticShape {
     Sphere, // radius 1 at the origin
     Torus,  // around the Y axis, ring radius kTorusMajorRadius, tube radius kTorusMinorRadius

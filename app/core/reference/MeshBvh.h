@@ -1,5 +1,5 @@
 #pragma once
-#include "core/MeshData.h"
+#include "core/scene/MeshData.h"
 #include "core/reference/AnalyticRaycaster.h" // Ray
 
 #include <glm/glm.hpp>

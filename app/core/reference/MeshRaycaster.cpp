@@ -1,7 +1,7 @@
 #include "core/reference/MeshRaycaster.h"
 
-#include "core/ObjectMatrices.h"
-#include "core/ParallelRows.h"
+#include "core/view/ObjectMatrices.h"
+#include "core/support/ParallelRows.h"
 #include "core/reference/AnalyticShapes.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/ReferenceSample.h"
@@ -15,7 +15,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct MeshRaycasterWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::MeshRaycaster)
 };

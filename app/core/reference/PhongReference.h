@@ -1,6 +1,6 @@
 #pragma once
-#include "core/Material.h"
-#include "core/PointLight.h"
+#include "core/scene/Material.h"
+#include "core/scene/PointLight.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
 

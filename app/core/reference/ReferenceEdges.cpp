@@ -1,7 +1,7 @@
 #include "core/reference/ReferenceEdges.h"
 
-#include "core/ImageMetrics.h"
-#include "core/ParallelRows.h"
+#include "core/check/ImageMetrics.h"
+#include "core/support/ParallelRows.h"
 #include "core/reference/MeshRaycaster.h"
 
 #include <QCoreApplication>
@@ -10,7 +10,7 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/Language).
+// Messages a user reads, in the language the run speaks (core/support/Language).
 struct ReferenceEdgesWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::ReferenceEdges)
 };

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/MeshData.h"
-#include "core/Result.h"
-#include "core/Scene.h"
+#include "core/scene/MeshData.h"
+#include "core/support/Result.h"
+#include "core/scene/Scene.h"
 #include "core/reference/ReferenceImage.h"
 
 #include <QString>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/RgbImage.h"
+#include "core/support/RgbImage.h"
 
 #include <QtGlobal>
 #include <glm/glm.hpp>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/Material.h"
-#include "core/Scene.h"
+#include "core/scene/Material.h"
+#include "core/scene/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/PhongReference.h"
 

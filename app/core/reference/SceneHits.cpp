@@ -1,7 +1,7 @@
 #include "core/reference/SceneHits.h"
 
-#include "core/FaceGeometry.h"
-#include "core/ParallelRows.h"
+#include "FaceGeometry.h"
+#include "core/support/ParallelRows.h"
 #include "core/reference/ReferenceSample.h"
 
 namespace phonglab {

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/MeshData.h"
-#include "core/Scene.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/ReferenceImage.h"
 

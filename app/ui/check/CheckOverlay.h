@@ -1,5 +1,5 @@
 #pragma once
-#include "core/Camera.h"
+#include "core/view/Camera.h"
 #include "core/check/PixelTerms.h"
 
 #include <QImage>

@@ -1,7 +1,7 @@
 #include "CheckRunner.h"
 
 #include "CheckPriority.h"
-#include "mesh/SceneMeshes.h"
+#include "mesh/import/SceneMeshes.h"
 #include "render/GlFormat.h"
 #include "render/QtImages.h"
 

@@ -1,6 +1,6 @@
 #include "DocumentationFiles.h"
 
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QCoreApplication>
 #include <QDir>

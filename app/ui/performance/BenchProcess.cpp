@@ -1,8 +1,8 @@
 #include "BenchProcess.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 
-#include "core/SceneJson.h"
+#include "core/scene/SceneJson.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,7 +1,7 @@
 #pragma once
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/ShadingMethod.h"
 #include "ui/viewport/ReadoutPace.h"
 
 #include <QDockWidget>

@@ -1,7 +1,7 @@
 #include "MaterialDock.h"
 
 #include "Vec3Field.h"
-#include "core/MaterialPresets.h"
+#include "core/scene/MaterialPresets.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

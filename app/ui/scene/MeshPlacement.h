@@ -1,6 +1,6 @@
 #pragma once
-#include "core/Scene.h"
-#include "mesh/SceneMeshes.h"
+#include "core/scene/Scene.h"
+#include "mesh/import/SceneMeshes.h"
 
 #include <QStringList>
 

@@ -1,5 +1,5 @@
 #include "MeshStatsText.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QLocale>
 #include <QObject>

@@ -1,5 +1,5 @@
 #pragma once
-#include "mesh/MeshLoader.h"
+#include "mesh/import/MeshLoader.h"
 
 #include <QString>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/NormalOptions.h"
+#include "core/scene/NormalOptions.h"
 
 #include <QGroupBox>
 

@@ -1,9 +1,9 @@
 #include "SceneDock.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "MeshStatsText.h"
 #include "NormalsEditor.h"
-#include "mesh/BuiltinMeshes.h"
+#include "mesh/import/BuiltinMeshes.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,13 +1,13 @@
 #include "LiveShaderController.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "ProgramTrial.h"
 
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
-#include "core/RecoveryJournal.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/RecoveryJournal.h"
+#include "core/scene/ResourcePaths.h"
 #include "render/BuildThread.h"
 #include "ui/viewport/Viewport.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "BuildQueue.h"
 #include "ShaderRecovery.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/ShadingMethod.h"
 #include "render/BuildWorker.h"
 #include "render/ShaderSource.h"
 

@@ -6,7 +6,7 @@
 #include "ShaderDock.h"
 #include "ShaderEditor.h"
 #include "ShaderFileSet.h"
-#include "core/ScenePaths.h"
+#include "core/scene/ScenePaths.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/Result.h"
-#include "core/ShadingMethod.h"
+#include "core/support/Result.h"
+#include "core/scene/ShadingMethod.h"
 #include "render/ShaderDiagnostic.h"
 #include "render/ShaderSource.h"
 

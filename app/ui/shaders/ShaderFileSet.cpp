@@ -2,8 +2,8 @@
 
 #include "core/project/ProjectSave.h"
 
-#include "core/ResourcePaths.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/ShadingMethod.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/Result.h"
+#include "core/support/Result.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QByteArray>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/RecoveryJournal.h"
+#include "core/scene/RecoveryJournal.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,8 +1,8 @@
 #include "FrameStatsLabel.h"
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include "Viewport.h"
-#include "core/DepthRange.h"
+#include "core/view/DepthRange.h"
 
 #include <QLocale>
 #include <QStatusBar>

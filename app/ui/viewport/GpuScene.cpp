@@ -1,6 +1,6 @@
 #include "GpuScene.h"
 
-#include "core/CameraFraming.h"
+#include "core/view/CameraFraming.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

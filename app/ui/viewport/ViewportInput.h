@@ -1,5 +1,5 @@
 #pragma once
-#include "core/PointLight.h"
+#include "core/scene/PointLight.h"
 
 #include <QObject>
 #include <QPointF>

@@ -1,6 +1,6 @@
 #pragma once
 #include "ContextLender.h"
-#include "core/FrameTimeWindow.h"
+#include "core/support/FrameTimeWindow.h"
 #include "render/LentContext.h"
 #include "render/WarmUpDraw.h"
 

@@ -1,7 +1,7 @@
 #include "ExamplesMenu.h"
 
 #include "ThumbnailMenuStyle.h"
-#include "core/ResourcePaths.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QAction>
 #include <QDir>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/ScenePaths.h" // meshFileSuffixes(), isMeshFile()
+#include "core/scene/ScenePaths.h" // meshFileSuffixes(), isMeshFile()
 
 #include <QString>
 #include <QStringList>
@@ -7,7 +7,7 @@
 namespace phonglab {
 
 // What the window opens, by file name suffix (case-insensitive): scenes
-// (.json) and the mesh formats (core/ScenePaths).
+// (.json) and the mesh formats (core/scene/ScenePaths).
 bool isSceneFile(const QString &path);
 
 // Why `paths` cannot be opened together (unsupported types, a scene mixed

@@ -1,6 +1,6 @@
 #include "GuiArguments.h"
 
-#include "core/NearestSpelling.h"
+#include "core/support/NearestSpelling.h"
 
 #include <QCoreApplication>
 
@@ -55,7 +55,7 @@ GuiArguments parseGuiArguments(const QStringList &arguments)
                                     out.error))) {
             continue;
         } else if (options && argument.startsWith(QLatin1Char('-')) && argument.size() > 1) {
-            // --lang was taken out before (core/Language); the rest are
+            // --lang was taken out before (core/support/Language); the rest are
             // the commands' own or slips.
             out.error = unknownOptionMessage(
                 argument.section(QLatin1Char('='), 0, 0),

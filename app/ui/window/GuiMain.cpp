@@ -5,8 +5,8 @@
 #include "GuiArguments.h"
 #include "LanguageMenu.h"
 #include "MainWindow.h"
-#include "core/Language.h"
-#include "core/ResourcePaths.h"
+#include "core/support/Language.h"
+#include "core/scene/ResourcePaths.h"
 #include "core/check/ProgramSynopsis.h"
 #include "render/GlFormat.h"
 #include "ui/viewport/Viewport.h"
@@ -166,7 +166,7 @@ int runGui(int argc, char **argv)
     // window to the installed .desktop file, and so to its icon, by this.
     QGuiApplication::setDesktopFileName(QStringLiteral("org.phonglab.PhongLab"));
     // The language chosen in the window (View → Language), unless --lang
-    // said otherwise for this run; else the locale's (core/Language).
+    // said otherwise for this run; else the locale's (core/support/Language).
     if (const QString remembered = LanguageMenu::rememberedLanguage();
         !languageRequested() && !remembered.isEmpty())
         useLanguage(remembered);

@@ -1,6 +1,6 @@
 #include "LanguageMenu.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 
 #include <QAction>
 #include <QActionGroup>

@@ -1,6 +1,6 @@
 #include "MainWindow.h"
 
-#include "core/Language.h"
+#include "core/support/Language.h"
 #include "core/project/ProjectShader.h"
 
 #include "DefaultLayout.h"
@@ -10,8 +10,8 @@
 #include "LoadProgressWidget.h"
 #include "RecentFiles.h"
 #include "WarningBox.h"
-#include "core/SceneJson.h"
-#include "core/ScenePaths.h"
+#include "core/scene/SceneJson.h"
+#include "core/scene/ScenePaths.h"
 #include "render/SceneUniforms.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"

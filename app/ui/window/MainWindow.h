@@ -1,9 +1,9 @@
 #pragma once
 #include "DefaultLayout.h"
 #include "StartupOptions.h"
-#include "core/NormalOptions.h"
-#include "core/Result.h"
-#include "core/ShadingMethod.h"
+#include "core/scene/NormalOptions.h"
+#include "core/support/Result.h"
+#include "core/scene/ShadingMethod.h"
 
 #include <QMainWindow>
 

@@ -1,0 +1,515 @@
+#include "MeshDecimation.h"
+
+#include "mesh/import/MeshTopology.h"
+
+#include "DecimationMesh.h"
+
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/Observer.hh>
+#include <QCoreApplication>
+
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <memory>
+
+#include <QLocale>
+#include <QStringList>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <unordered_map>
+
+namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/support/Language).
+struct MeshDecimationWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::MeshDecimation)
+};
+
+namespace {
+
+using decimation::ModFlipGuardT;
+using decimation::OmMesh;
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// A collapse may turn a neighbouring face by at most this much: enough to
+// let curved surfaces coarsen, too little for a face to flip or fold over.
+constexpr double kMaxFaceTurnDeg = 60.0;
+// A new face of a faceted mesh reuses an original normal only when it is
+// this close to its own (Blender writes normals to ~1e-6, far below this).
+constexpr double kFacetKeepDeg = 0.05;
+
+// Exact float bits, with -0 and +0 as one value: "the same position" is the
+// same number, whatever the sign of a zero coordinate.
+std::uint32_t floatKey(float f)
+{
+    return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
+}
+
+struct Key3 {
+    std::uint32_t x, y, z;
+    bool operator==(const Key3 &) const = default;
+};
+
+Key3 key3(const glm::vec3 &v)
+{
+    return {floatKey(v.x), floatKey(v.y), floatKey(v.z)};
+}
+
+struct Key3Hash {
+    std::size_t operator()(const Key3 &k) const
+    {
+        std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
+        h ^= (h >> 29) + k.y * 0xBF58476D1CE4E5B9ull;
+        h ^= (h >> 31) + k.z * 0x94D049BB133111EBull;
+        return std::size_t(h ^ (h >> 32));
+    }
+};
+
+bool finite(const glm::vec3 &p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// The input welded by exact position: OpenMesh needs one vertex per point
+// to see the surface's connectivity, while MeshData splits a point into one
+// GPU vertex per normal. The split normals are kept aside as candidates.
+struct Weld {
+    std::vector<std::uint32_t> weldedOf;   // per input GPU vertex (kNone: unused)
+    std::vector<std::uint32_t> firstGpu;   // per welded vertex: a GPU vertex there (its position)
+    std::vector<std::uint32_t> candStart;  // CSR offsets into candidates, per welded vertex + 1
+    std::vector<std::uint32_t> candidates; // GPU vertices with distinct normals, per welded vertex
+};
+
+Weld weldByPosition(const MeshData &mesh)
+{
+    Weld w;
+    w.weldedOf.assign(mesh.positions.size(), kNone);
+    std::unordered_map<Key3, std::uint32_t, Key3Hash> idOf;
+    idOf.reserve(mesh.positions.size());
+    // Welded ids in order of first use, so the result never depends on hashing.
+    for (std::uint32_t v : mesh.indices) {
+        if (w.weldedOf[v] != kNone)
+            continue;
+        const auto [it, added] =
+            idOf.try_emplace(key3(mesh.positions[v]), std::uint32_t(w.firstGpu.size()));
+        if (added)
+            w.firstGpu.push_back(v);
+        w.weldedOf[v] = it->second;
+    }
+    const std::size_t count = w.firstGpu.size();
+    w.candStart.assign(count + 1, 0);
+    for (std::uint32_t id : w.weldedOf)
+        if (id != kNone)
+            ++w.candStart[id + 1];
+    for (std::size_t i = 0; i < count; ++i)
+        w.candStart[i + 1] += w.candStart[i];
+    w.candidates.resize(w.candStart[count]);
+    std::vector<std::uint32_t> fill(w.candStart.begin(), w.candStart.end() - 1);
+    for (std::uint32_t v = 0; v < w.weldedOf.size(); ++v)
+        if (w.weldedOf[v] != kNone)
+            w.candidates[fill[w.weldedOf[v]]++] = v;
+    // One candidate per distinct normal (by bits), the lowest GPU vertex first.
+    std::vector<std::uint32_t> kept;
+    kept.reserve(w.candidates.size());
+    std::vector<std::uint32_t> start(count + 1, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        start[i] = std::uint32_t(kept.size());
+        const auto begin = w.candidates.begin() + w.candStart[i],
+                   end = w.candidates.begin() + w.candStart[i + 1];
+        const auto normalKey = [&](std::uint32_t v) {
+            const Key3 k = key3(mesh.normals[v]);
+            return std::tuple(k.x, k.y, k.z, v);
+        };
+        std::sort(begin, end,
+                  [&](std::uint32_t a, std::uint32_t b) { return normalKey(a) < normalKey(b); });
+        for (auto it = begin; it != end; ++it)
+            if (it == begin || !(key3(mesh.normals[*it]) == key3(mesh.normals[*(it - 1)])))
+                kept.push_back(*it);
+    }
+    start[count] = std::uint32_t(kept.size());
+    w.candidates = std::move(kept);
+    w.candStart = std::move(start);
+    return w;
+}
+
+// A faceted mesh's three corners of every triangle carry one normal.
+bool isFaceted(const MeshData &mesh)
+{
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const Key3 n = key3(mesh.normals[mesh.indices[t]]);
+        if (!(key3(mesh.normals[mesh.indices[t + 1]]) == n)
+            || !(key3(mesh.normals[mesh.indices[t + 2]]) == n))
+            return false;
+    }
+    return true;
+}
+
+// What adding the triangles to OpenMesh left out.
+struct AddReport {
+    std::size_t collapsed =
+        0; // two corners at one position (a UV sphere's poles): invisible, dropped silently
+    std::size_t nonFinite = 0;   // a corner at NaN or infinity
+    std::size_t nonManifold = 0; // an edge or vertex OpenMesh cannot take
+};
+
+// Adds every triangle OpenMesh accepts; faceTriangle[f] = the input triangle of face f.
+AddReport buildOpenMesh(const MeshData &mesh, const Weld &w, OmMesh &om,
+                        std::vector<std::uint32_t> &faceTriangle)
+{
+    AddReport report;
+    om.reserve(w.firstGpu.size(), mesh.indices.size() / 2 + 3, mesh.triangleCount());
+    for (std::uint32_t gpu : w.firstGpu) {
+        const glm::vec3 &p = mesh.positions[gpu];
+        om.add_vertex(OmMesh::Point(p.x, p.y, p.z));
+    }
+    faceTriangle.reserve(mesh.triangleCount());
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        OpenMesh::VertexHandle v[3];
+        bool ok = true;
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t gpu = mesh.indices[3 * t + c];
+            ok = ok && finite(mesh.positions[gpu]);
+            v[c] = OpenMesh::VertexHandle(int(w.weldedOf[gpu]));
+        }
+        if (!ok) {
+            ++report.nonFinite;
+            continue;
+        }
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
+            ++report.collapsed;
+            continue;
+        }
+        // add_face's own first checks, made here so that refused faces are
+        // counted instead of printed: every corner must be on the border of
+        // what is there already (or unused), and no directed edge may already
+        // have a face (a third face on an edge, or a duplicate face).
+        for (int c = 0; c < 3 && ok; ++c) {
+            ok = om.is_boundary(v[c]);
+            const OpenMesh::HalfedgeHandle h = om.find_halfedge(v[c], v[(c + 1) % 3]);
+            ok = ok && (!h.is_valid() || om.is_boundary(h));
+        }
+        if (ok && om.add_face(v[0], v[1], v[2]).is_valid())
+            faceTriangle.push_back(std::uint32_t(t));
+        else
+            ++report.nonManifold;
+    }
+    return report;
+}
+
+void prepareForDecimation(OmMesh &om)
+{
+    om.request_vertex_status();
+    om.request_edge_status();
+    om.request_face_status();
+    // Boundary vertices stay where they are: open edges keep their exact
+    // outline (and parts that only touch along a border do not crack apart).
+    for (OpenMesh::VertexHandle v : om.vertices())
+        if (om.is_boundary(v))
+            om.status(v).set_locked(true);
+    // The flip guard measures against face normals.
+    om.request_face_normals();
+    om.update_face_normals();
+}
+
+std::size_t liveFaces(const OmMesh &om)
+{
+    std::size_t faces = 0;
+    for (OpenMesh::FaceHandle f : om.all_faces())
+        faces += om.status(f).deleted() ? 0 : 1;
+    return faces;
+}
+
+// Output vertices, one per (welded position, normal bits).
+class VertexTable
+{
+public:
+    explicit VertexTable(const MeshData &input, const Weld &weld)
+        : m_input(input)
+        , m_weld(weld)
+    {
+    }
+
+    std::uint32_t add(std::uint32_t welded, const glm::vec3 &normal)
+    {
+        const Key3 n = key3(normal);
+        const auto [it, added] =
+            m_index.try_emplace(Key{welded, n.x, n.y, n.z}, std::uint32_t(out.positions.size()));
+        if (added) {
+            out.positions.push_back(m_input.positions[m_weld.firstGpu[welded]]);
+            out.normals.push_back(normal);
+        }
+        return it->second;
+    }
+
+    MeshData out;
+
+private:
+    struct Key {
+        std::uint32_t welded, x, y, z;
+        bool operator==(const Key &) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key &k) const
+        {
+            return Key3Hash()(Key3{k.x ^ (k.welded * 0x85EBCA6Bu), k.y, k.z + k.welded});
+        }
+    };
+    const MeshData &m_input;
+    const Weld &m_weld;
+    std::unordered_map<Key, std::uint32_t, KeyHash> m_index;
+};
+
+// Among the candidate normals at `welded`, the one closest to `direction`.
+glm::vec3 closestNormal(const MeshData &mesh, const Weld &w, std::uint32_t welded,
+                        const glm::dvec3 &direction)
+{
+    std::uint32_t best = w.candidates[w.candStart[welded]];
+    double bestDot = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = w.candStart[welded]; i < w.candStart[welded + 1]; ++i) {
+        const double d = glm::dot(glm::dvec3(mesh.normals[w.candidates[i]]), direction);
+        if (d > bestDot) {
+            bestDot = d;
+            best = w.candidates[i];
+        }
+    }
+    return mesh.normals[best];
+}
+
+MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om,
+                 const std::vector<std::uint32_t> &faceTriangle, bool faceted)
+{
+    VertexTable table(input, w);
+    table.out.indices.reserve(om.n_faces() * 3);
+    const double keepCos = std::cos(glm::radians(kFacetKeepDeg));
+    for (OpenMesh::FaceHandle f : om.all_faces()) {
+        if (om.status(f).deleted())
+            continue;
+        // The halfedge cycle follows the order the face was added in, so the
+        // winding is the input's.
+        std::uint32_t v[3];
+        OpenMesh::HalfedgeHandle h = om.halfedge_handle(f);
+        for (int c = 0; c < 3; ++c, h = om.next_halfedge_handle(h))
+            v[c] = std::uint32_t(om.to_vertex_handle(h).idx());
+        const glm::dvec3 p0(input.positions[w.firstGpu[v[0]]]),
+            p1(input.positions[w.firstGpu[v[1]]]), p2(input.positions[w.firstGpu[v[2]]]);
+        const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
+        const double length = glm::length(cross);
+        const glm::dvec3 faceNormal = length > 0.0 ? cross / length : glm::dvec3(0.0);
+
+        // The input triangle this face started as, corner by welded position.
+        const std::uint32_t t = faceTriangle[std::size_t(f.idx())];
+        const std::uint32_t *original = &input.indices[3 * std::size_t(t)];
+        const auto originalCorner = [&](std::uint32_t welded) -> std::uint32_t {
+            for (int c = 0; c < 3; ++c)
+                if (w.weldedOf[original[c]] == welded)
+                    return original[c];
+            return kNone;
+        };
+
+        glm::vec3 normal[3];
+        const bool untouched = originalCorner(v[0]) != kNone && originalCorner(v[1]) != kNone
+            && originalCorner(v[2]) != kNone;
+        if (untouched) {
+            for (int c = 0; c < 3; ++c)
+                normal[c] = input.normals[originalCorner(v[c])];
+        } else if (faceted) {
+            // One normal for the whole face: an original one if the face
+            // still lies in an original facet's plane, else its own.
+            glm::vec3 best(0.0f);
+            double bestDot = -2.0;
+            for (int c = 0; c < 3; ++c) {
+                const glm::vec3 n = closestNormal(input, w, v[c], faceNormal);
+                const double d = glm::dot(glm::dvec3(n), faceNormal);
+                if (d > bestDot) {
+                    bestDot = d;
+                    best = n;
+                }
+            }
+            const glm::vec3 own(faceNormal);
+            const glm::vec3 chosen = (bestDot >= keepCos || length == 0.0) ? best : own;
+            normal[0] = normal[1] = normal[2] = chosen;
+        } else {
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t kept = originalCorner(v[c]);
+                normal[c] =
+                    kept != kNone ? input.normals[kept] : closestNormal(input, w, v[c], faceNormal);
+            }
+        }
+        for (int c = 0; c < 3; ++c)
+            table.out.indices.push_back(table.add(v[c], normal[c]));
+    }
+    return std::move(table.out);
+}
+
+QString count(std::size_t n)
+{
+    return QLocale::c().toString(qulonglong(n));
+}
+
+// Reports the collapses done against the ones needed for the coarsest level,
+// and stops the Decimater when the caller says so.
+class ProgressObserver : public OpenMesh::Decimater::Observer
+{
+public:
+    ProgressObserver(const DecimationProgress &progress, std::size_t collapses)
+        : Observer(std::max<std::size_t>(1, collapses / 50))
+        , m_progress(progress)
+        , m_collapses(std::max<std::size_t>(1, collapses))
+    {
+    }
+    void notify(std::size_t step) override
+    {
+        m_cancelled = m_cancelled || !m_progress(std::min(1.0, double(step) / double(m_collapses)));
+    }
+    bool abort() const override { return m_cancelled; }
+    bool cancelled() const { return m_cancelled; }
+
+private:
+    const DecimationProgress &m_progress;
+    std::size_t m_collapses;
+    bool m_cancelled = false;
+};
+
+} // namespace
+
+DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
+                                   const DecimationProgress &progress)
+{
+    std::vector<MeshData> levels(fractions.size());
+    QStringList notes;
+    // Levels that need no decimation: out of range (said), 1, nothing to decimate.
+    std::vector<std::size_t> todo;
+    for (std::size_t i = 0; i < fractions.size(); ++i) {
+        const double fraction = fractions[i];
+        if (!(fraction > 0.0 && fraction <= 1.0)) {
+            notes << MeshDecimationWords::tr(
+                         "detail must be in (0, 1] (got %1); mesh left as it is")
+                         .arg(fraction);
+            levels[i] = mesh;
+        } else if (fraction == 1.0 || mesh.indices.empty()) {
+            levels[i] = mesh;
+        } else {
+            todo.push_back(i);
+        }
+    }
+    const auto finish = [&] {
+        return DecimatedLevels{std::move(levels), notes.join(QStringLiteral("; "))};
+    };
+    if (todo.empty())
+        return finish();
+    if (!mesh.isValid()) {
+        notes << MeshDecimationWords::tr(
+            "invalid mesh (index out of range or normals missing); not decimated");
+        for (std::size_t i : todo)
+            levels[i] = mesh;
+        return finish();
+    }
+
+    const Weld weld = weldByPosition(mesh);
+    OmMesh om;
+    std::vector<std::uint32_t> faceTriangle;
+    const AddReport added = buildOpenMesh(mesh, weld, om, faceTriangle);
+    if (faceTriangle.empty()) {
+        notes << MeshDecimationWords::tr(
+            "no triangle could be taken for decimation (all degenerate, non-finite or "
+            "non-manifold); mesh left as it is");
+        for (std::size_t i : todo)
+            levels[i] = mesh;
+        return finish();
+    }
+    if (added.nonManifold > 0)
+        notes << MeshDecimationWords::tr(
+                     "%1 non-manifold triangles (an edge with more than two faces, or a "
+                     "vertex joining "
+                     "separate fans) could not be decimated and were left out")
+                     .arg(count(added.nonManifold));
+    if (added.nonFinite > 0)
+        notes << MeshDecimationWords::tr("%1 triangles with non-finite corners left out")
+                     .arg(count(added.nonFinite));
+
+    prepareForDecimation(om);
+    OpenMesh::Decimater::DecimaterT<OmMesh> decimater(om);
+    OpenMesh::Decimater::ModQuadricT<OmMesh>::Handle quadric;
+    ModFlipGuardT<OmMesh>::Handle flipGuard;
+    decimater.add(quadric);
+    decimater.module(quadric).unset_max_err(); // the face budget decides, not an error bound
+    decimater.add(flipGuard);
+    decimater.module(flipGuard).set_max_normal_deviation(kMaxFaceTurnDeg);
+    const bool ready = decimater.initialize();
+
+    // Finest first: each coarser level goes on from the one before (the
+    // quadrics carry over), so all levels cost one run to the coarsest.
+    std::stable_sort(todo.begin(), todo.end(),
+                     [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
+    const bool faceted = isFaceted(mesh);
+    std::size_t faces = faceTriangle.size();
+    // Each collapse removes about two faces: that many to reach the coarsest level.
+    const double coarsest = fractions[todo.back()];
+    std::unique_ptr<ProgressObserver> observer;
+    if (progress) {
+        const auto collapses = std::size_t(double(faces) * (1.0 - coarsest) / 2.0);
+        observer = std::make_unique<ProgressObserver>(progress, collapses);
+        decimater.set_observer(observer.get());
+    }
+    for (std::size_t i : todo) {
+        const std::size_t target = std::max<std::size_t>(
+            1, std::size_t(std::llround(fractions[i] * double(mesh.triangleCount()))));
+        if (ready && target < faces) {
+            // The decimater counts the faces deleted so far (no garbage
+            // collection here: face handles index faceTriangle) as present.
+            decimater.decimate_to_faces(0, target + (om.n_faces() - faces));
+            faces = liveFaces(om);
+            if (observer && observer->cancelled()) {
+                decimater.set_observer(nullptr);
+                notes = QStringList{QStringLiteral("cancelled")};
+                levels.assign(fractions.size(), MeshData{});
+                return finish();
+            }
+        }
+        // Some slack: collapses remove two faces at a time, and closed
+        // pieces cannot shrink below a tetrahedron.
+        if (faces > target + target / 20 + 4)
+            notes << MeshDecimationWords::tr(
+                         "decimation stopped at %1 triangles (asked for %2): every "
+                         "further collapse would "
+                         "fold a face or break the surface")
+                         .arg(count(faces), count(target));
+        levels[i] = rebuild(mesh, weld, om, faceTriangle, faceted);
+    }
+    if (observer)
+        decimater.set_observer(nullptr);
+    return finish();
+}
+
+DecimatedMesh decimateMesh(const MeshData &mesh, double fraction,
+                           const DecimationProgress &progress)
+{
+    DecimatedLevels decimated = decimateMeshLevels(mesh, {fraction}, progress);
+    return {std::move(decimated.levels.front()), std::move(decimated.note)};
+}
+
+bool isClosedMesh(const MeshData &mesh)
+{
+    if (!mesh.isValid() || mesh.indices.empty())
+        return false;
+    const Weld weld = weldByPosition(mesh);
+    PolygonMesh polygons;
+    polygons.positions.resize(weld.firstGpu.size());
+    polygons.reserve(weld.firstGpu.size(), mesh.triangleCount(), mesh.indices.size());
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint32_t a = weld.weldedOf[mesh.indices[3 * t]],
+                            b = weld.weldedOf[mesh.indices[3 * t + 1]],
+                            c = weld.weldedOf[mesh.indices[3 * t + 2]];
+        if (a == b || b == c || c == a)
+            continue; // no area, no edges of the surface (a UV sphere's pole triangles)
+        polygons.cornerPosition.insert(polygons.cornerPosition.end(), {a, b, c});
+        polygons.faceStart.push_back(std::uint32_t(polygons.cornerPosition.size()));
+    }
+    return isClosedSurface(polygons);
+}
+
+} // namespace phonglab

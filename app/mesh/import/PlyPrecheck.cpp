@@ -1,0 +1,480 @@
+#include "PlyPrecheck.h"
+
+#include "MeshTextTokens.h"
+
+#include <QCoreApplication>
+#include <QFile>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+namespace phonglab {
+
+// Messages a user reads, in the language the run speaks (core/support/Language).
+struct PlyPrecheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PlyPrecheck)
+};
+
+namespace {
+
+using meshtext::quoted;
+
+// A header larger than this is not a mesh header.
+constexpr qint64 kMaxHeaderBytes = 1 << 20;
+
+struct PlyType {
+    int size = 0;
+    bool integer = false;
+    bool isSigned = false;
+};
+
+std::optional<PlyType> plyType(std::string_view n)
+{
+    if (n == "char" || n == "int8")
+        return PlyType{1, true, true};
+    if (n == "uchar" || n == "uint8")
+        return PlyType{1, true, false};
+    if (n == "short" || n == "int16")
+        return PlyType{2, true, true};
+    if (n == "ushort" || n == "uint16")
+        return PlyType{2, true, false};
+    if (n == "int" || n == "int32")
+        return PlyType{4, true, true};
+    if (n == "uint" || n == "uint32")
+        return PlyType{4, true, false};
+    if (n == "float" || n == "float32")
+        return PlyType{4, false, true};
+    if (n == "double" || n == "float64")
+        return PlyType{8, false, true};
+    return std::nullopt;
+}
+
+struct PlyProperty {
+    std::string name;
+    PlyType type;
+    bool isList = false;
+    PlyType countType;
+};
+
+struct PlyElement {
+    std::string name;
+    quint64 count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+    enum Format {
+        Unknown,
+        Ascii,
+        LittleEndian,
+        BigEndian
+    } format = Unknown;
+    std::vector<PlyElement> elements;
+    qint64 bodyOffset = 0;
+    std::size_t bodyLine = 1;
+};
+
+std::vector<std::string_view> words(std::string_view line)
+{
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t')
+            ++i;
+        if (i > start)
+            out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
+// "1.0" or "1": digits, optionally a point and more digits, short enough
+// for a float (a version that overflows one fails operator>> just the same).
+bool isPlainVersion(std::string_view v)
+{
+    if (v.size() > 8)
+        return false;
+    const auto digits = [&](std::size_t &i) {
+        const std::size_t start = i;
+        while (i < v.size() && v[i] >= '0' && v[i] <= '9')
+            ++i;
+        return i > start;
+    };
+    std::size_t i = 0;
+    if (!digits(i))
+        return false;
+    if (i < v.size() && v[i] == '.') {
+        ++i;
+        if (!digits(i))
+            return false;
+    }
+    return i == v.size();
+}
+
+QString parseHeader(std::string_view text, PlyHeader &h)
+{
+    std::size_t pos = 0;
+    std::size_t lineNo = 0;
+    while (pos < text.size()) {
+        const std::size_t eol = text.find('\n', pos);
+        if (eol == std::string_view::npos)
+            break;
+        std::string_view line = text.substr(pos, eol - pos);
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        pos = eol + 1;
+        ++lineNo;
+        const QString where = PlyPrecheckWords::tr("PLY header line %1").arg(lineNo);
+        if (lineNo == 1) {
+            if (line != "ply")
+                return PlyPrecheckWords::tr("not a PLY file (it does not start with 'ply')");
+            continue;
+        }
+        const std::vector<std::string_view> w = words(line);
+        if (w.empty() || w[0] == "comment" || w[0] == "obj_info")
+            continue; // OpenMesh skips the rest of these lines, whatever they hold
+        // OpenMesh splits header words at any whitespace (form feeds and
+        // vertical tabs too) and reads counts with operator>>; a header
+        // word it cannot read sends it round its header loop forever. The
+        // other header lines are text: control and non-ASCII bytes are refused.
+        const auto odd = std::find_if(line.begin(), line.end(), [](char c) {
+            const auto u = static_cast<unsigned char>(c);
+            return (u < 0x20 && c != '\t') || u > 0x7e;
+        });
+        if (odd != line.end())
+            return where
+                + PlyPrecheckWords::tr(
+                      ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+                      .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
+                      .arg(odd - line.begin() + 1);
+        if (w[0] == "format") {
+            if (h.format != PlyHeader::Unknown)
+                return where + QStringLiteral(": a second 'format' line");
+            if (w.size() < 2)
+                return where + PlyPrecheckWords::tr(": 'format' without a format");
+            if (w[1] == "ascii")
+                h.format = PlyHeader::Ascii;
+            else if (w[1] == "binary_little_endian")
+                h.format = PlyHeader::LittleEndian;
+            else if (w[1] == "binary_big_endian")
+                h.format = PlyHeader::BigEndian;
+            else
+                return where + PlyPrecheckWords::tr(": unknown format %1").arg(quoted(w[1]));
+            // OpenMesh reads the version with operator>>(float) and, on a failed read,
+            // loops over the header forever; so accept only a plain number here.
+            if (w.size() != 3 || !isPlainVersion(w[2]))
+                return where
+                    + QStringLiteral(": expected 'format %1 1.0'")
+                          .arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
+        } else if (w[0] == "element") {
+            std::int64_t count = -1;
+            if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0
+                || count > UINT32_MAX)
+                return where + QStringLiteral(": expected 'element <name> <count>'");
+            h.elements.push_back({std::string(w[1]), quint64(count), {}});
+        } else if (w[0] == "property") {
+            if (h.elements.empty())
+                return where + PlyPrecheckWords::tr(": a property before any element");
+            PlyProperty p;
+            if (w.size() == 5 && w[1] == "list") {
+                const auto countType = plyType(w[2]);
+                const auto itemType = plyType(w[3]);
+                if (!countType || !itemType || !countType->integer)
+                    return where + PlyPrecheckWords::tr(": unknown or unusable list types");
+                p = {std::string(w[4]), *itemType, true, *countType};
+            } else if (w.size() == 3) {
+                const auto type = plyType(w[1]);
+                if (!type)
+                    return where
+                        + PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
+                p = {std::string(w[2]), *type, false, {}};
+            } else {
+                return where + QStringLiteral(": expected 'property <type> <name>'");
+            }
+            h.elements.back().properties.push_back(std::move(p));
+        } else if (w[0] == "end_header") {
+            if (w.size() != 1)
+                return where + PlyPrecheckWords::tr(": words after 'end_header'");
+            if (h.format == PlyHeader::Unknown)
+                return PlyPrecheckWords::tr("the PLY header has no 'format' line");
+            h.bodyOffset = qint64(pos);
+            h.bodyLine = lineNo + 1;
+            return {};
+        } else {
+            return where + PlyPrecheckWords::tr(": unknown keyword %1").arg(quoted(w[0]));
+        }
+    }
+    return PlyPrecheckWords::tr(
+        "the PLY header has no 'end_header' line (truncated or not a PLY file)");
+}
+
+const PlyElement *findElement(const PlyHeader &h, std::string_view name)
+{
+    for (const PlyElement &e : h.elements)
+        if (e.name == name)
+            return &e;
+    return nullptr;
+}
+
+bool hasScalar(const PlyElement &e, std::string_view name)
+{
+    for (const PlyProperty &p : e.properties)
+        if (p.name == name && !p.isList)
+            return true;
+    return false;
+}
+
+bool hasFaceIndices(const PlyElement &e)
+{
+    for (const PlyProperty &p : e.properties)
+        if (p.isList && (p.name == "vertex_indices" || p.name == "vertex_index"))
+            return true;
+    return false;
+}
+
+// Sequential reads over the body of a binary PLY with a large buffer, so the
+// walk over list lengths costs about as much as reading the file once.
+class BodyReader
+{
+public:
+    BodyReader(QFile &file, qint64 offset, qint64 size)
+        : m_file(file)
+        , m_pos(offset)
+        , m_size(size)
+    {
+    }
+
+    qint64 remaining() const { return m_size - m_pos; }
+
+    bool skip(quint64 n)
+    {
+        if (n > quint64(remaining()))
+            return false;
+        m_pos += qint64(n);
+        return true;
+    }
+
+    bool read(unsigned char *dst, int n)
+    {
+        if (remaining() < n)
+            return false;
+        if (m_pos < m_bufStart || m_pos + n > m_bufStart + m_buf.size()) {
+            m_file.seek(m_pos);
+            m_buf = m_file.read(std::min<qint64>(remaining(), 1 << 20));
+            m_bufStart = m_pos;
+            if (m_buf.size() < n)
+                return false;
+        }
+        std::memcpy(dst, m_buf.constData() + (m_pos - m_bufStart), std::size_t(n));
+        m_pos += n;
+        return true;
+    }
+
+private:
+    QFile &m_file;
+    QByteArray m_buf;
+    qint64 m_bufStart = 0;
+    qint64 m_pos;
+    qint64 m_size;
+};
+
+std::int64_t decodeInteger(const unsigned char *b, const PlyType &t, bool bigEndian)
+{
+    std::uint32_t u = 0;
+    for (int i = 0; i < t.size; ++i)
+        u |= std::uint32_t(b[bigEndian ? t.size - 1 - i : i]) << (8 * i);
+    if (!t.isSigned)
+        return u;
+    const int bits = 8 * t.size;
+    return bits == 32
+        ? std::int64_t(std::int32_t(u))
+        : (std::int64_t(u) ^ (std::int64_t(1) << (bits - 1))) - (std::int64_t(1) << (bits - 1));
+}
+
+QString truncatedAt(const PlyElement &e, quint64 index)
+{
+    return PlyPrecheckWords::tr("the file ends inside %1 %2 of %3 (truncated?)")
+        .arg(QString::fromStdString(e.name))
+        .arg(index + 1)
+        .arg(e.count);
+}
+
+void walkBinary(QFile &file, const PlyHeader &h, MeshFilePrecheck &check)
+{
+    BodyReader body(file, h.bodyOffset, check.fileSize);
+    const bool bigEndian = h.format == PlyHeader::BigEndian;
+    for (const PlyElement &e : h.elements) {
+        quint64 stride = 0;
+        bool hasList = false;
+        for (const PlyProperty &p : e.properties) {
+            hasList = hasList || p.isList;
+            stride += quint64(p.type.size);
+        }
+        if (!hasList) {
+            if (!body.skip(e.count * stride)) {
+                check.error =
+                    truncatedAt(e, quint64(body.remaining()) / std::max<quint64>(stride, 1));
+                return;
+            }
+            continue;
+        }
+        for (quint64 i = 0; i < e.count; ++i) {
+            for (const PlyProperty &p : e.properties) {
+                if (!p.isList) {
+                    if (!body.skip(quint64(p.type.size))) {
+                        check.error = truncatedAt(e, i);
+                        return;
+                    }
+                    continue;
+                }
+                unsigned char raw[4];
+                if (!body.read(raw, p.countType.size)) {
+                    check.error = truncatedAt(e, i);
+                    return;
+                }
+                const std::int64_t n = decodeInteger(raw, p.countType, bigEndian);
+                if (n < 0) {
+                    check.error = PlyPrecheckWords::tr("%1 %2 has a negative list length")
+                                      .arg(QString::fromStdString(e.name))
+                                      .arg(i + 1);
+                    return;
+                }
+                if (!body.skip(quint64(n) * quint64(p.type.size))) {
+                    check.error = truncatedAt(e, i);
+                    return;
+                }
+            }
+        }
+    }
+    if (body.remaining() > 0)
+        check.warnings << PlyPrecheckWords::tr("ignored %1 after the last element")
+                              .arg(meshtext::counted(
+                                  quint64(body.remaining()),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "byte"),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "bytes")));
+}
+
+bool valueFits(std::string_view t, const PlyType &type)
+{
+    return type.integer ? meshtext::isIndex(t) : meshtext::isReal(t);
+}
+
+void validateAscii(std::string_view body, const PlyHeader &h, MeshFilePrecheck &check)
+{
+    meshtext::TextTokens tokens(body, h.bodyLine);
+    for (const PlyElement &e : h.elements) {
+        const QString name = QString::fromStdString(e.name);
+        for (quint64 i = 0; i < e.count; ++i) {
+            for (const PlyProperty &p : e.properties) {
+                std::string_view t = tokens.next();
+                if (t.empty()) {
+                    check.error = truncatedAt(e, i);
+                    return;
+                }
+                auto bad = [&](const QString &what) {
+                    check.error = QStringLiteral("line %1: expected %2 for '%3' of %4 %5, found %6")
+                                      .arg(tokens.line())
+                                      .arg(what, QString::fromStdString(p.name), name)
+                                      .arg(i + 1)
+                                      .arg(quoted(t));
+                };
+                if (!p.isList) {
+                    if (!valueFits(t, p.type))
+                        return bad(p.type.integer ? PlyPrecheckWords::tr("an integer")
+                                                  : QStringLiteral("a number"));
+                    continue;
+                }
+                std::int64_t n = -1;
+                if (!meshtext::parseInteger(t, n) || n < 0 || quint64(n) > body.size() / 2)
+                    return bad(PlyPrecheckWords::tr("a list length"));
+                for (std::int64_t k = 0; k < n; ++k) {
+                    t = tokens.next();
+                    if (t.empty()) {
+                        check.error = truncatedAt(e, i);
+                        return;
+                    }
+                    if (!valueFits(t, p.type))
+                        return bad(p.type.integer ? PlyPrecheckWords::tr("an integer")
+                                                  : QStringLiteral("a number"));
+                }
+            }
+        }
+    }
+    if (!tokens.next().empty())
+        check.warnings << PlyPrecheckWords::tr(
+                              "ignored the text after the last element (from line %1)")
+                              .arg(tokens.line());
+}
+
+} // namespace
+
+void precheckPly(const QString &path, MeshFilePrecheck &check)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        check.error = PlyPrecheckWords::tr("cannot open the file: %1").arg(file.errorString());
+        return;
+    }
+    const QByteArray head = file.read(std::min(check.fileSize, kMaxHeaderBytes));
+    PlyHeader h;
+    check.error = parseHeader(std::string_view(head.constData(), std::size_t(head.size())), h);
+    if (!check.ok())
+        return;
+
+    const PlyElement *vertex = findElement(h, "vertex");
+    if (!vertex || !hasScalar(*vertex, "x") || !hasScalar(*vertex, "y")
+        || !hasScalar(*vertex, "z")) {
+        check.error = PlyPrecheckWords::tr("the PLY file has no vertex element with x, y and z");
+        return;
+    }
+    const PlyElement *face = findElement(h, "face");
+    if (!face || face->count == 0 || !hasFaceIndices(*face)) {
+        check.error = PlyPrecheckWords::tr("the PLY file has no faces (a point cloud?)");
+        return;
+    }
+    check.binary = h.format != PlyHeader::Ascii;
+    check.declaredVertices = vertex->count;
+    check.declaredFaces = face->count;
+
+    // What each element needs at the least: its scalars and list lengths in
+    // binary, a digit and a separator per value in ascii. A header claiming
+    // more than the file can hold is refused here, before any allocation.
+    const quint64 bodyBytes = quint64(check.fileSize - h.bodyOffset);
+    quint64 needed = 0;
+    for (const PlyElement &e : h.elements) {
+        quint64 perElement = 0;
+        for (const PlyProperty &p : e.properties)
+            perElement += check.binary ? quint64(p.isList ? p.countType.size : p.type.size) : 2;
+        needed += e.count * perElement;
+        if (needed > bodyBytes + 1) {
+            check.error = PlyPrecheckWords::tr(
+                              "the header declares %1 %2 elements, which need at least %3 bytes, "
+                              "but the file has %4 bytes after the header (truncated or corrupt)")
+                              .arg(e.count)
+                              .arg(QString::fromStdString(e.name))
+                              .arg(needed)
+                              .arg(bodyBytes);
+            return;
+        }
+    }
+
+    if (check.binary) {
+        walkBinary(file, h, check);
+        return;
+    }
+    file.close();
+    std::string bytes;
+    if (!readWholeFile(path, bytes, check.error))
+        return;
+    const std::string_view body = std::string_view(bytes).substr(std::size_t(h.bodyOffset));
+    if (body.find('\0') != std::string_view::npos) {
+        check.error = PlyPrecheckWords::tr("an ascii PLY file with binary data in it (a NUL byte)");
+        return;
+    }
+    validateAscii(body, h, check);
+}
+
+} // namespace phonglab
