@@ -2,8 +2,9 @@
 // concave polygons, the choice between file and computed normals, the
 // replacement of unusable file normals, welding, and the statistics.
 
-#include "mesh/normals/MeshBuilder.h"
+#include "mesh/detail/MeshDecimation.h"
 #include "mesh/import/Triangulation.h"
+#include "mesh/normals/MeshBuilder.h"
 
 #include <QPointF>
 #include <QtTest>
@@ -112,6 +113,7 @@ private slots:
     void fileNormalsKeptAsWritten();
     void boundsAndStats();
     void emptyMeshFails();
+    void minusZeroIsPlusZeroEverywhere();
 };
 
 void TestMeshBuilder::flatCubeSplitsAtEdges()
@@ -487,6 +489,39 @@ void TestMeshBuilder::emptyMeshFails()
     QVERIFY(data.positions.empty());
     QVERIFY(data.indices.empty());
     QCOMPARE(error, QStringLiteral("the mesh has no faces"));
+}
+
+void TestMeshBuilder::minusZeroIsPlusZeroEverywhere()
+{
+    // A tetrahedron whose file writes one normal twice, once with -0 where
+    // the other has 0 (Blender writes both). One position, one normal: one
+    // GPU vertex, no split, whichever zero a corner names.
+    PolygonMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    mesh.normals = {{0.0f, 0.0f, -1.0f}, {-0.0f, -0.0f, -1.0f}};
+    addFace(mesh, {0, 2, 1});
+    addFace(mesh, {0, 1, 3});
+    addFace(mesh, {0, 3, 2});
+    addFace(mesh, {1, 2, 3});
+    // Position 0 gets the -0 spelling in one face and the +0 one in another;
+    // the rest share the +0 one (the normals are not meant to be right).
+    mesh.cornerNormal = {0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0};
+    const BuiltMesh built = buildMeshData(mesh, {NormalMethod::Auto, std::nullopt});
+    QVERIFY2(built.error.isEmpty(), qPrintable(built.error));
+    QCOMPARE(qint64(built.mesh.positions.size()), 4);
+    QCOMPARE(built.stats.splitVertices, 0);
+
+    // Decimation welds positions with the same key: a closed mesh whose
+    // copies of one corner differ only in the sign of a zero stays closed.
+    const BuiltMesh flat = buildMeshData(mesh, {NormalMethod::Flat, std::nullopt});
+    MeshData signed0 = flat.mesh;
+    QVERIFY(isClosedMesh(signed0));
+    int flipped = 0;
+    for (glm::vec3 &p : signed0.positions)
+        if (p == glm::vec3(0, 0, 0) && flipped++ % 2 == 0)
+            p = glm::vec3(-0.0f, 0.0f, -0.0f);
+    QCOMPARE(flipped, 3);
+    QVERIFY(isClosedMesh(signed0));
 }
 
 QTEST_GUILESS_MAIN(TestMeshBuilder)

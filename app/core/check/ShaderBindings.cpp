@@ -1,6 +1,7 @@
 #include "core/check/ShaderBindings.h"
 
 #include "core/support/EnumNames.h"
+#include "core/support/NearestSpelling.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -328,24 +329,6 @@ const std::vector<Aliases> *memberTableFor(const QString &container)
     return nullptr;
 }
 
-int editDistance(const QString &a, const QString &b)
-{
-    std::vector<int> row(std::size_t(b.size()) + 1);
-    for (std::size_t j = 0; j < row.size(); ++j)
-        row[j] = int(j);
-    for (qsizetype i = 1; i <= a.size(); ++i) {
-        int diagonal = row[0];
-        row[0] = int(i);
-        for (qsizetype j = 1; j <= b.size(); ++j) {
-            const int above = row[std::size_t(j)];
-            row[std::size_t(j)] = std::min({above + 1, row[std::size_t(j - 1)] + 1,
-                                            diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = above;
-        }
-    }
-    return row.back();
-}
-
 bool isOneOf(GlslType type, std::initializer_list<GlslType> types)
 {
     return std::find(types.begin(), types.end(), type) != types.end();
@@ -480,7 +463,7 @@ std::optional<BindingMeaning> likelyMeaning(const ShaderVariable &variable)
             // any spelling distance; one-letter aliases tell nothing there.
             const int score = a.size() > 2 && normalized.contains(a)
                 ? 0
-                : editDistance(normalized, a) * 10 / int(std::max<qsizetype>(a.size(), 1));
+                : int(editDistance(normalized, a)) * 10 / int(std::max<qsizetype>(a.size(), 1));
             if (score < bestScore) {
                 bestScore = score;
                 best = entry.meaning;

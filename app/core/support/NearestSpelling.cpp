@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace phonglab {
@@ -13,30 +14,29 @@ struct SpellingWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::NearestSpelling)
 };
 
-// Optimal string alignment distance: insertions, deletions, substitutions
-// and transpositions of neighbours each cost one.
+} // namespace
+
 qsizetype editDistance(const QString &a, const QString &b)
 {
-    const qsizetype n = a.size(), m = b.size();
-    std::vector<std::vector<qsizetype>> d(std::size_t(n + 1),
-                                          std::vector<qsizetype>(std::size_t(m + 1)));
-    for (qsizetype i = 0; i <= n; ++i)
-        d[std::size_t(i)][0] = i;
-    for (qsizetype j = 0; j <= m; ++j)
-        d[0][std::size_t(j)] = j;
-    for (qsizetype i = 1; i <= n; ++i) {
-        for (qsizetype j = 1; j <= m; ++j) {
-            const auto I = std::size_t(i), J = std::size_t(j);
+    // Three rows of the table: a transposition looks two rows back.
+    const auto width = std::size_t(b.size()) + 1;
+    std::vector<qsizetype> before(width), above(width), row(width);
+    for (std::size_t j = 0; j < width; ++j)
+        row[j] = qsizetype(j);
+    for (qsizetype i = 1; i <= a.size(); ++i) {
+        std::swap(before, above);
+        std::swap(above, row);
+        row[0] = i;
+        for (qsizetype j = 1; j <= b.size(); ++j) {
+            const auto J = std::size_t(j);
             const qsizetype cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            d[I][J] = std::min({d[I - 1][J] + 1, d[I][J - 1] + 1, d[I - 1][J - 1] + cost});
+            row[J] = std::min({above[J] + 1, row[J - 1] + 1, above[J - 1] + cost});
             if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[I][J] = std::min(d[I][J], d[I - 2][J - 2] + 1);
+                row[J] = std::min(row[J], before[J - 2] + 1);
         }
     }
-    return d[std::size_t(n)][std::size_t(m)];
+    return row.back();
 }
-
-} // namespace
 
 QString nearestSpelling(const QString &given, const QStringList &candidates)
 {

@@ -8,6 +8,12 @@
 // line, the window's arguments and the scene reader read alike.
 namespace phonglab {
 
+// Optimal string alignment distance: insertions, deletions, substitutions
+// and swaps of two neighbouring letters each cost one. The one measure of
+// "how far apart are two spellings" (option names, mesh names, uniform
+// names against their usual aliases).
+qsizetype editDistance(const QString &a, const QString &b);
+
 // The candidate closest to `given` by edit distance (a swap of two
 // neighbouring letters counts once), when it is close enough to be a slip:
 // at most a third of the longer word's letters differ (at least one; none

@@ -1,5 +1,6 @@
 #include "MeshDecimation.h"
 
+#include "core/support/Vec3Key.h"
 #include "mesh/import/MeshTopology.h"
 
 #include "DecimationMesh.h"
@@ -42,33 +43,6 @@ constexpr double kMaxFaceTurnDeg = 60.0;
 // this close to its own (Blender writes normals to ~1e-6, far below this).
 constexpr double kFacetKeepDeg = 0.05;
 
-// Exact float bits, with -0 and +0 as one value: "the same position" is the
-// same number, whatever the sign of a zero coordinate.
-std::uint32_t floatKey(float f)
-{
-    return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
-}
-
-struct Key3 {
-    std::uint32_t x, y, z;
-    bool operator==(const Key3 &) const = default;
-};
-
-Key3 key3(const glm::vec3 &v)
-{
-    return {floatKey(v.x), floatKey(v.y), floatKey(v.z)};
-}
-
-struct Key3Hash {
-    std::size_t operator()(const Key3 &k) const
-    {
-        std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
-        h ^= (h >> 29) + k.y * 0xBF58476D1CE4E5B9ull;
-        h ^= (h >> 31) + k.z * 0x94D049BB133111EBull;
-        return std::size_t(h ^ (h >> 32));
-    }
-};
-
 bool finite(const glm::vec3 &p)
 {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
@@ -88,14 +62,14 @@ Weld weldByPosition(const MeshData &mesh)
 {
     Weld w;
     w.weldedOf.assign(mesh.positions.size(), kNone);
-    std::unordered_map<Key3, std::uint32_t, Key3Hash> idOf;
+    std::unordered_map<Vec3Key, std::uint32_t, Vec3KeyHash> idOf;
     idOf.reserve(mesh.positions.size());
     // Welded ids in order of first use, so the result never depends on hashing.
     for (std::uint32_t v : mesh.indices) {
         if (w.weldedOf[v] != kNone)
             continue;
         const auto [it, added] =
-            idOf.try_emplace(key3(mesh.positions[v]), std::uint32_t(w.firstGpu.size()));
+            idOf.try_emplace(vec3Key(mesh.positions[v]), std::uint32_t(w.firstGpu.size()));
         if (added)
             w.firstGpu.push_back(v);
         w.weldedOf[v] = it->second;
@@ -121,13 +95,13 @@ Weld weldByPosition(const MeshData &mesh)
         const auto begin = w.candidates.begin() + w.candStart[i],
                    end = w.candidates.begin() + w.candStart[i + 1];
         const auto normalKey = [&](std::uint32_t v) {
-            const Key3 k = key3(mesh.normals[v]);
+            const Vec3Key k = vec3Key(mesh.normals[v]);
             return std::tuple(k.x, k.y, k.z, v);
         };
         std::sort(begin, end,
                   [&](std::uint32_t a, std::uint32_t b) { return normalKey(a) < normalKey(b); });
         for (auto it = begin; it != end; ++it)
-            if (it == begin || !(key3(mesh.normals[*it]) == key3(mesh.normals[*(it - 1)])))
+            if (it == begin || !(vec3Key(mesh.normals[*it]) == vec3Key(mesh.normals[*(it - 1)])))
                 kept.push_back(*it);
     }
     start[count] = std::uint32_t(kept.size());
@@ -140,9 +114,9 @@ Weld weldByPosition(const MeshData &mesh)
 bool isFaceted(const MeshData &mesh)
 {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const Key3 n = key3(mesh.normals[mesh.indices[t]]);
-        if (!(key3(mesh.normals[mesh.indices[t + 1]]) == n)
-            || !(key3(mesh.normals[mesh.indices[t + 2]]) == n))
+        const Vec3Key n = vec3Key(mesh.normals[mesh.indices[t]]);
+        if (!(vec3Key(mesh.normals[mesh.indices[t + 1]]) == n)
+            || !(vec3Key(mesh.normals[mesh.indices[t + 2]]) == n))
             return false;
     }
     return true;
@@ -235,7 +209,7 @@ public:
 
     std::uint32_t add(std::uint32_t welded, const glm::vec3 &normal)
     {
-        const Key3 n = key3(normal);
+        const Vec3Key n = vec3Key(normal);
         const auto [it, added] =
             m_index.try_emplace(Key{welded, n.x, n.y, n.z}, std::uint32_t(out.positions.size()));
         if (added) {
@@ -255,7 +229,7 @@ private:
     struct KeyHash {
         std::size_t operator()(const Key &k) const
         {
-            return Key3Hash()(Key3{k.x ^ (k.welded * 0x85EBCA6Bu), k.y, k.z + k.welded});
+            return Vec3KeyHash()(Vec3Key{k.x ^ (k.welded * 0x85EBCA6Bu), k.y, k.z + k.welded});
         }
     };
     const MeshData &m_input;

@@ -1,5 +1,7 @@
 #include "MeshRepair.h"
 
+#include "MeshTextTokens.h"
+
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
@@ -371,13 +373,6 @@ void removeUnusedVertices(PolygonMesh &mesh, RepairReport &report)
         v = remap[v];
 }
 
-// As meshtext::counted: the noun in the run's language.
-QString counted(int n, const char *one, const char *many)
-{
-    return QStringLiteral("%1 %2").arg(n).arg(
-        QCoreApplication::translate("phonglab::MeshText", n == 1 ? one : many));
-}
-
 } // namespace
 
 QStringList RepairReport::warnings() const
@@ -385,46 +380,51 @@ QStringList RepairReport::warnings() const
     QStringList w;
     if (facesDroppedBadIndex)
         w << MeshRepairWords::tr("dropped %1 with out-of-range vertex indices")
-                 .arg(counted(facesDroppedBadIndex, QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
+                 .arg(meshtext::counted(facesDroppedBadIndex,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
     if (facesDroppedNonFinite)
         w << MeshRepairWords::tr("dropped %1 using NaN or infinite coordinates")
-                 .arg(counted(facesDroppedNonFinite,
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
+                 .arg(meshtext::counted(facesDroppedNonFinite,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
     if (facesDroppedDegenerate)
         w << MeshRepairWords::tr("dropped %1 (fewer than 3 distinct corners or zero area)")
-                 .arg(counted(facesDroppedDegenerate,
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "degenerate face"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "degenerate faces")));
+                 .arg(meshtext::counted(
+                     facesDroppedDegenerate,
+                     QT_TRANSLATE_NOOP("phonglab::MeshText", "degenerate face"),
+                     QT_TRANSLATE_NOOP("phonglab::MeshText", "degenerate faces")));
     if (normalsDiscarded)
         w << MeshRepairWords::tr(
                  "ignored the file normal of %1 (missing, zero or not finite); computed instead")
-                 .arg(counted(normalsDiscarded,
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "face corner"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "face corners")));
+                 .arg(meshtext::counted(normalsDiscarded,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "face corner"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "face corners")));
     if (nonManifoldEdges)
         w << MeshRepairWords::tr("%1 (shared by 3 or more faces), kept as they are")
-                 .arg(counted(nonManifoldEdges,
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "non-manifold edge"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "non-manifold edges")));
+                 .arg(meshtext::counted(
+                     nonManifoldEdges, QT_TRANSLATE_NOOP("phonglab::MeshText", "non-manifold edge"),
+                     QT_TRANSLATE_NOOP("phonglab::MeshText", "non-manifold edges")));
     if (orientationConflicts)
         w << MeshRepairWords::tr("%1 no consistent winding agrees on (a non-orientable surface)")
-                 .arg(counted(orientationConflicts, QT_TRANSLATE_NOOP("phonglab::MeshText", "edge"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "edges")));
+                 .arg(meshtext::counted(orientationConflicts,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "edge"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "edges")));
     if (facesFlipped)
         w << MeshRepairWords::tr("flipped %1 to make the winding consistent")
-                 .arg(counted(facesFlipped, QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
+                 .arg(meshtext::counted(facesFlipped,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
     if (verticesDuplicated)
         w << MeshRepairWords::tr("split %1 where surfaces touch only at that point")
-                 .arg(counted(verticesDuplicated, QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
+                 .arg(meshtext::counted(verticesDuplicated,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
     if (isolatedVerticesRemoved)
         w << MeshRepairWords::tr("removed %1 no face uses")
-                 .arg(counted(isolatedVerticesRemoved,
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
-                              QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
+                 .arg(meshtext::counted(isolatedVerticesRemoved,
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
+                                        QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
     return w;
 }
 

@@ -1,5 +1,7 @@
 #include "SceneMeshes.h"
 
+#include "core/support/Vec3Key.h"
+
 #include "BuiltinMeshes.h"
 #include "mesh/detail/MeshDecimation.h"
 
@@ -33,14 +35,12 @@ void fillDrawnStats(const MeshData &mesh, MeshStats &s, bool countSplits)
     s.vertices = qint64(mesh.positions.size());
     s.triangles = qint64(mesh.triangleCount());
     if (countSplits) {
-        // GPU vertices beyond one per position (exact bits, -0 = +0), as MeshBuilder counts them.
-        const auto bits = [](float f) {
-            return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f);
-        };
-        std::vector<std::array<std::uint32_t, 3>> keys;
+        // GPU vertices beyond one per position (Vec3Key: what MeshBuilder
+        // welds as one).
+        std::vector<Vec3Key> keys;
         keys.reserve(mesh.positions.size());
         for (const glm::vec3 &p : mesh.positions)
-            keys.push_back({bits(p.x), bits(p.y), bits(p.z)});
+            keys.push_back(vec3Key(p));
         std::sort(keys.begin(), keys.end());
         const auto distinct = qint64(std::unique(keys.begin(), keys.end()) - keys.begin());
         s.splitVertices = s.vertices - distinct;

@@ -1,6 +1,7 @@
 #include "MeshBuilder.h"
 
 #include "NormalComputation.h"
+#include "core/support/Vec3Key.h"
 #include "mesh/import/Triangulation.h"
 
 #include <QCoreApplication>
@@ -21,17 +22,9 @@ struct MeshBuilderWords {
 
 namespace {
 
-using NormalBits = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
-
-NormalBits bitsOf(const glm::vec3 &n)
+bool sameNormal(const glm::vec3 &a, const glm::vec3 &b)
 {
-    return {std::bit_cast<std::uint32_t>(n.x), std::bit_cast<std::uint32_t>(n.y),
-            std::bit_cast<std::uint32_t>(n.z)};
-}
-
-bool sameBits(const glm::vec3 &a, const glm::vec3 &b)
-{
-    return bitsOf(a) == bitsOf(b);
+    return vec3Key(a) == vec3Key(b);
 }
 
 // The file's normal at unit length. One already at unit length, to about
@@ -150,10 +143,10 @@ std::size_t weldPerPosition(std::span<const glm::vec3> positions,
     return out.positions.size();
 }
 
-// One GPU vertex per distinct (position index, normal bits), in order of
+// One GPU vertex per distinct (position index, normal's Vec3Key), in order of
 // first use (which suits the GPU's vertex cache). Each position keeps a
 // chain of the vertices made for it, newest first; a corner walks its
-// position's chain comparing normal bits. Chains are short (one for smooth
+// position's chain comparing normals. Chains are short (one for smooth
 // positions, a handful at hard edges); a position with many distinct
 // normals (the apex of a flat-shaded cone) moves to a hash map instead.
 // Returns how many positions the triangles use.
@@ -167,15 +160,14 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     constexpr int kChainLimit = 32;
     struct Key {
         std::uint32_t position;
-        NormalBits bits;
+        Vec3Key normal;
         bool operator==(const Key &) const = default;
     };
     struct KeyHash {
         std::size_t operator()(const Key &k) const
         {
-            const auto [x, y, z] = k.bits;
-            const std::uint64_t h = k.position * 0x9E3779B97F4A7C15ull ^ x * 0xC2B2AE3D27D4EB4Full
-                ^ y * 0x165667B19E3779F9ull ^ z * 0x27D4EB2F165667C5ull;
+            const std::uint64_t h = k.position * 0x9E3779B97F4A7C15ull
+                ^ Vec3KeyHash()(k.normal) * 0xC2B2AE3D27D4EB4Full;
             return std::size_t(h ^ h >> 29);
         }
     };
@@ -202,16 +194,16 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
         const glm::vec3 &n = normals.at(c, triPositions);
         std::uint32_t v = kNone;
         if (crowded[p]) {
-            const auto found = crowdedVertex.find({p, bitsOf(n)});
+            const auto found = crowdedVertex.find({p, vec3Key(n)});
             v = found != crowdedVertex.end() ? found->second : kNone;
         } else {
             int steps = 0;
-            for (v = head[p]; v != kNone && !sameBits(out.normals[v], n); v = next[v])
+            for (v = head[p]; v != kNone && !sameNormal(out.normals[v], n); v = next[v])
                 ++steps;
             if (v == kNone && steps >= kChainLimit) {
                 crowded[p] = 1;
                 for (std::uint32_t w = head[p]; w != kNone; w = next[w])
-                    crowdedVertex.emplace(Key{p, bitsOf(out.normals[w])}, w);
+                    crowdedVertex.emplace(Key{p, vec3Key(out.normals[w])}, w);
             }
         }
         if (v == kNone) {
@@ -222,7 +214,7 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
             next.push_back(head[p]);
             head[p] = v;
             if (crowded[p])
-                crowdedVertex.emplace(Key{p, bitsOf(n)}, v);
+                crowdedVertex.emplace(Key{p, vec3Key(n)}, v);
         }
         out.indices[c] = v;
     }
