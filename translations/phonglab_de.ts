@@ -604,7 +604,7 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <translation>≥ 8/255</translation>
     </message>
     <message>
-        <source>silhouette band, not judged</source>
+        <source>silhouette band, not checked</source>
         <translation>Silhouettenrand, nicht bewertet</translation>
     </message>
 </context>
@@ -623,11 +623,11 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <translation>Vorspann von three.js&apos; ShaderMaterial hinzugefügt (seine eingebauten Uniform-Variablen und Attribute, precision highp), so wie three.js ihn hinzufügt</translation>
     </message>
     <message>
-        <source>no default float precision: judged with &apos;precision highp float;&apos; added, as the page&apos;s JavaScript adds it</source>
+        <source>no default float precision: checked with &apos;precision highp float;&apos; added, as the page&apos;s JavaScript adds it</source>
         <translation>keine Standard-Genauigkeit für float: geprüft mit hinzugefügtem &apos;precision highp float;&apos;, so wie das JavaScript der Seite es hinzufügt</translation>
     </message>
     <message>
-        <source>%1 judged at highp (32-bit floats), as a desktop browser computes it (--precision as-written for this driver&apos;s own)</source>
+        <source>%1 checked at highp (32-bit floats), as a desktop browser computes it (--precision as-written for this driver&apos;s own)</source>
         <translation>%1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet (--precision as-written für die Genauigkeit dieses Treibers)</translation>
     </message>
     <message>
@@ -2598,7 +2598,7 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation>Fragment</translation>
     </message>
     <message>
-        <source>%1: not judged, it lights nothing (no light, material product or shininess in it)</source>
+        <source>%1: not checked, it lights nothing (no light, material product or shininess in it)</source>
         <translation>%1: nicht beurteilt, es beleuchtet nichts (kein Licht, kein Materialprodukt und keine Glanzzahl darin)</translation>
     </message>
     <message>
@@ -4105,7 +4105,7 @@ and when it differs names the classic mistake that explains it.
                       page sets (--bind mode=1, --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)
   --define NAME=VALUE a token the page&apos;s JavaScript replaces before compiling (NUM_LIGHTS=2);
                       repeatable
-  --precision RULE    highp (default): every float judged at 32 bits, as a desktop browser
+  --precision RULE    highp (default): every float checked at 32 bits, as a desktop browser
                       computes it, and what mediump or lowp would change said apart;
                       as-written: the declared precision, as this driver computes it
   --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
@@ -4262,23 +4262,23 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>in dieser Szene nicht nachweisbar: %1</translation>
     </message>
     <message>
-        <source>precision: %1 judged as written, as this driver computes it</source>
+        <source>precision: %1 checked as written, as this driver computes it</source>
         <translation>Genauigkeit: %1 wie geschrieben beurteilt, so wie dieser Treiber rechnet</translation>
     </message>
     <message>
-        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written the program does not build on a driver that honours precision (a browser too): %2</source>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written the program does not build on a driver that honours precision (a browser too): %2</source>
         <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben lässt sich das Programm auf einem Treiber, der die Genauigkeit einhält (auch in einem Browser), nicht bauen: %2</translation>
     </message>
     <message>
-        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it</source>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it</source>
         <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet</translation>
     </message>
     <message>
-        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written it draws the same image here</source>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written it draws the same image here</source>
         <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben zeichnet es hier dasselbe Bild</translation>
     </message>
     <message>
-        <source>precision: %1 judged at highp (32-bit floats), as a desktop browser computes it; as written, on a driver that computes %1 in fewer bits (this one does), the image changes by up to %2/255 (PSNR %3 dB): not counted against the shader</source>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written, on a driver that computes %1 in fewer bits (this one does), the image changes by up to %2/255 (PSNR %3 dB): not counted against the shader</source>
         <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben ändert sich das Bild auf einem Treiber, der %1 mit weniger Bits rechnet (wie dieser), um bis zu %2/255 (PSNR %3 dB): wird dem Shader nicht angerechnet</translation>
     </message>
     <message>
@@ -4374,7 +4374,7 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>eine Szene ohne Fenster in ein PNG rendern</translation>
     </message>
     <message>
-        <source>judge a shader against the exact image and name the mistake that explains a wrong one</source>
+        <source>check a shader against the exact image and name the mistake that explains a wrong one</source>
         <translation>einen Shader am exakten Bild prüfen und den Fehler benennen, der ein falsches Bild erklärt</translation>
     </message>
     <message>
@@ -4528,7 +4528,7 @@ and writes what each student got into DIR. Each subfolder of SUBMISSIONS is one
 submission: its vertex and/or fragment shader, under any file names (.vert .vs .vsh,
 .frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` takes,
 or a WebGL project (pages and scripts, as check --project reads them; each program
-that lights is judged on its own). SUBMISSIONS may be a .zip or .tar.gz, and a
+that lights is checked on its own). SUBMISSIONS may be a .zip or .tar.gz, and a
 course platform&apos;s download: Moodle&apos;s folders or flat files by student. A student&apos;s
 own archive is unpacked once; an archive with links or names that leave it is
 refused. A stage left out is the scene&apos;s shading method&apos;s shipped one. Each check
@@ -5010,7 +5010,7 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
         <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
     </message>
     <message>
-        <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: judged with the first %1 alone</source>
+        <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: checked with the first %1 alone</source>
         <translation>der Shader verarbeitet %1 %2 (seine Uniform-Variablen für Lichtquellen bieten keinen Platz für mehr), die Szene hat %3 eingeschaltet: geprüft nur mit den ersten %1</translation>
     </message>
     <message>

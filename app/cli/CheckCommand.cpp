@@ -95,7 +95,7 @@ QString helpText()
               "  --define NAME=VALUE a token the page's JavaScript replaces before compiling "
               "(NUM_LIGHTS=2);\n"
               "                      repeatable\n"
-              "  --precision RULE    highp (default): every float judged at 32 bits, as a "
+              "  --precision RULE    highp (default): every float checked at 32 bits, as a "
               "desktop browser\n"
               "                      computes it, and what mediump or lowp would change said "
               "apart;\n"
@@ -259,7 +259,7 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     if (!drawing.drawn())
         return outcome;
     Result<CheckReference> made =
-        makeCheckReference(judgedScene(scene, drawing.lightCapacity), drawing.objectMeshes,
+        makeCheckReference(sceneForCheck(scene, drawing.lightCapacity), drawing.objectMeshes,
                            args.size.width(), args.size.height());
     if (!made) {
         outcome.errors.push_back(inputError(
@@ -268,7 +268,7 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     }
     *reference = std::move(*made);
     *yours = drawing.image;
-    judgeDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation, args.scenePath);
+    checkDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation, args.scenePath);
     return outcome;
 }
 
@@ -287,7 +287,7 @@ SceneLoadResult checkedScene(const CheckArgs &args)
 }
 
 // `grade`'s child: draws and hands the drawing back (stdout and a PNG); the
-// parent judges it. Exit 0 whenever it could say what happened.
+// parent checks it. Exit 0 whenever it could say what happened.
 int drawOnly(const CheckArgs &args)
 {
     beAGradedChild();

@@ -156,7 +156,7 @@ QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
 
 QJsonObject precisionJson(const PrecisionFinding &p)
 {
-    QJsonObject o{{QStringLiteral("judged"), precisionRuleKey(p.judged)},
+    QJsonObject o{{QStringLiteral("judged"), precisionRuleKey(p.checkedAt)},
                   {QStringLiteral("declared"), QJsonArray::fromStringList(p.declared)}};
     o.insert(QStringLiteral("as_written_max_error"),
              p.asWrittenMaxError ? QJsonValue(*p.asWrittenMaxError) : QJsonValue());
@@ -171,7 +171,7 @@ QJsonObject precisionJson(const PrecisionFinding &p)
 PrecisionFinding precisionFromJson(const QJsonObject &o)
 {
     PrecisionFinding p;
-    p.judged = precisionRuleFromKey(o.value(QStringLiteral("judged")).toString())
+    p.checkedAt = precisionRuleFromKey(o.value(QStringLiteral("judged")).toString())
                    .value_or(PrecisionRule::Highp);
     for (const QJsonValue &v : o.value(QStringLiteral("declared")).toArray())
         p.declared << v.toString();
@@ -188,23 +188,23 @@ QString precisionText(const PrecisionFinding &p)
     if (p.declared.isEmpty())
         return {};
     const QString declared = p.declared.join(QStringLiteral(", "));
-    if (p.judged == PrecisionRule::AsWritten)
-        return CheckWords::tr("precision: %1 judged as written, as this driver computes it")
+    if (p.checkedAt == PrecisionRule::AsWritten)
+        return CheckWords::tr("precision: %1 checked as written, as this driver computes it")
             .arg(declared);
     if (!p.asWrittenError.isEmpty())
-        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+        return CheckWords::tr("precision: %1 checked at highp (32-bit floats), as a desktop "
                               "browser computes it; as written the program does not build on a "
                               "driver that honours precision (a browser too): %2")
             .arg(declared, p.asWrittenError);
     if (!p.asWrittenMaxError)
-        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+        return CheckWords::tr("precision: %1 checked at highp (32-bit floats), as a desktop "
                               "browser computes it")
             .arg(declared);
     if (*p.asWrittenMaxError == 0)
-        return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop "
+        return CheckWords::tr("precision: %1 checked at highp (32-bit floats), as a desktop "
                               "browser computes it; as written it draws the same image here")
             .arg(declared);
-    return CheckWords::tr("precision: %1 judged at highp (32-bit floats), as a desktop browser "
+    return CheckWords::tr("precision: %1 checked at highp (32-bit floats), as a desktop browser "
                           "computes it; as written, on a driver that computes %1 in fewer bits "
                           "(this one does), the image changes by up to %2/255 (PSNR %3 dB): "
                           "not counted against the shader")
@@ -216,20 +216,20 @@ QString precisionText(const PrecisionFinding &p)
 
 QJsonObject checkJson(const CheckOutcome &outcome)
 {
-    const bool judged = outcome.verdict != CheckOutcome::Verdict::Error;
+    const bool checked = outcome.verdict != CheckOutcome::Verdict::Error;
     const ImageComparison &c = outcome.report.comparison;
     QJsonObject o;
     o.insert(QStringLiteral("verdict"), verdictName(outcome.verdict));
     // Identical images have an infinite PSNR, which JSON cannot write: null.
     o.insert(QStringLiteral("psnr_db"),
-             judged && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
-    o.insert(QStringLiteral("max_error"), judged ? QJsonValue(c.maxError) : QJsonValue());
+             checked && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
+    o.insert(QStringLiteral("max_error"), checked ? QJsonValue(c.maxError) : QJsonValue());
     o.insert(QStringLiteral("bad_fraction"),
-             judged ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
+             checked ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
     o.insert(QStringLiteral("tolerance"), outcome.report.toleranceSteps);
     QJsonObject worst;
     // No worst pixel when every compared pixel is exact.
-    const bool hasWorst = judged && c.pixelsCompared > 0 && c.maxError > 0;
+    const bool hasWorst = checked && c.pixelsCompared > 0 && c.maxError > 0;
     if (hasWorst) {
         worst.insert(QStringLiteral("x"), c.worstPixel.x());
         worst.insert(QStringLiteral("y"), c.worstPixel.y());
@@ -249,7 +249,7 @@ QJsonObject checkJson(const CheckOutcome &outcome)
                             b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
     o.insert(QStringLiteral("bindings"), bindings);
     o.insert(QStringLiteral("equation"),
-             judged ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
+             checked ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
     o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(outcome.notes));
     o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(outcome.warnings));
     o.insert(QStringLiteral("precision"), precisionJson(outcome.precision));

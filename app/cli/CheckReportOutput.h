@@ -18,17 +18,17 @@ namespace phonglab::cli {
 // message}], bindings {name: meaning or "none"}, equation ("guarded",
 // "slide", null on error), notes [text], warnings [text], together {keys,
 // explains, forms, lines [{key, file, line, text}]} (null unless it fails),
-// precision {judged, declared, as_written_max_error, as_written_psnr_db,
+// precision {checked, declared, as_written_max_error, as_written_psnr_db,
 // as_written_error}.
 // Never renamed; new keys may be added.
 
-// How precision was judged, and what the declared one would change: a
+// How precision was checked, and what the declared one would change: a
 // finding, never a verdict (a desktop browser computes floats at 32 bits).
 struct PrecisionFinding {
-    PrecisionRule judged = PrecisionRule::Highp;
+    PrecisionRule checkedAt = PrecisionRule::Highp;
     QStringList declared; // the lower precisions the shaders declare: "mediump", "lowp"
-    // Judged at highp with a lower precision declared: the render as
-    // written against the one judged, on this driver.
+    // Checked at highp with a lower precision declared: the render as
+    // written against the one checked, on this driver.
     std::optional<int> asWrittenMaxError;
     double asWrittenPsnr = 0.0;
     // Or why the program as written does not build there (a uniform both
@@ -56,7 +56,7 @@ QJsonObject checkJson(const CheckOutcome &outcome);
 // `precision`, and read back (grade's child hands it to its parent).
 QJsonObject precisionJson(const PrecisionFinding &precision);
 PrecisionFinding precisionFromJson(const QJsonObject &json);
-// "precision: mediump judged at highp ...", or empty where none is declared.
+// "precision: mediump checked at highp ...", or empty where none is declared.
 QString precisionText(const PrecisionFinding &precision);
 QString checkText(const CheckOutcome &outcome, const Scene &scene);
 

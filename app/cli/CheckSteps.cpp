@@ -63,28 +63,28 @@ QString declaringFile(const QString &name, const CheckOutcome &outcome, const St
 
 namespace {
 
-// The lower precisions the stages declare and, where they were judged at
-// highp, how far the render as written is from the one judged: drawn again
+// The lower precisions the stages declare and, where they were checked at
+// highp, how far the render as written is from the one checked: drawn again
 // with the declared precision (a second build and draw, only for shaders
 // that declare mediump or lowp). `stages`: the texts the first build read.
 PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
-                                  const std::vector<ShaderStageText> &stages, const Scene &judged,
-                                  QSize size, const QImage &judgedImage)
+                                  const std::vector<ShaderStageText> &stages, const Scene &checked,
+                                  QSize size, const QImage &checkedImage)
 {
     PrecisionFinding finding;
-    finding.judged = judged.course.precision;
+    finding.checkedAt = checked.course.precision;
     StageSources sources;
     for (const ShaderStageText &s : stages) {
         const ShaderStage stage = s.vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
         (s.vertex ? sources.vertex : sources.fragment) = ShaderSource{s.path, s.text.toUtf8()};
         for (const QString &lower :
-             coursePreludeFor(s.text.toUtf8(), stage, judged.course).lowerPrecisions)
+             coursePreludeFor(s.text.toUtf8(), stage, checked.course).lowerPrecisions)
             if (!finding.declared.contains(lower))
                 finding.declared << lower;
     }
-    if (finding.declared.isEmpty() || finding.judged != PrecisionRule::Highp)
+    if (finding.declared.isEmpty() || finding.checkedAt != PrecisionRule::Highp)
         return finding;
-    Scene asWritten = judged;
+    Scene asWritten = checked;
     asWritten.course.precision = PrecisionRule::AsWritten;
     Renderer &renderer = offscreen.renderer();
     renderer.updateSceneParameters(asWritten);
@@ -100,7 +100,7 @@ PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
     const QImage image = offscreen.renderImage(size);
     if (image.isNull())
         return finding;
-    const ImageComparison c = compareImages(toRgbImage(image), toRgbImage(judgedImage));
+    const ImageComparison c = compareImages(toRgbImage(image), toRgbImage(checkedImage));
     finding.asWrittenMaxError = c.maxError;
     finding.asWrittenPsnr = c.psnr;
     return finding;
@@ -173,26 +173,26 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     if (!outcome.errors.empty())
         return drawing;
     QString lightsNote;
-    const Scene judged = sceneForCapacity(scene, drawing.lightCapacity, &lightsNote);
+    const Scene checked = sceneForCapacity(scene, drawing.lightCapacity, &lightsNote);
     if (!lightsNote.isEmpty()) {
         outcome.notes << lightsNote;
-        renderer.updateSceneParameters(judged);
+        renderer.updateSceneParameters(checked);
     }
     drawing.image = offscreen.renderImage(input.size);
     if (drawing.image.isNull())
         return fail(QString(), CheckStepsWords::tr("rendering failed"));
     outcome.precision =
-        measurePrecision(offscreen, outcome.stages, judged, input.size, drawing.image);
+        measurePrecision(offscreen, outcome.stages, checked, input.size, drawing.image);
     return drawing;
 }
 
-Scene judgedScene(const Scene &scene, std::optional<int> lightCapacity)
+Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity)
 {
     QString unused;
     return sceneForCapacity(scene, lightCapacity, &unused);
 }
 
-void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
+void checkDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
                   int toleranceSteps, std::optional<PhongEquation> equation,
                   const QString &scenePath)
 {

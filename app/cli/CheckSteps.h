@@ -19,9 +19,9 @@
 namespace phonglab::cli {
 
 // A check in its two steps. Drawing needs the GPU and runs the student's
-// code; judging needs only the exact reference and the drawn pixels.
+// code; checking needs only the exact reference and the drawn pixels.
 // `check` takes both in one process. `grade` draws in a child process per
-// submission (a shader may hang the driver or eat memory) and judges in its
+// submission (a shader may hang the driver or eat memory) and checks in its
 // own, against one reference per scene: the same functions, so the same
 // verdict.
 
@@ -36,7 +36,7 @@ struct CheckInput {
 
 struct CheckDrawing {
     // errors, stages, bindings and notes; the verdict stays Error (nothing
-    // judged yet). Errors, when there are any, end the check.
+    // checked yet). Errors, when there are any, end the check.
     CheckOutcome outcome;
     std::optional<int> lightCapacity;               // ProgramBindings::lightCapacity()
     QImage image;                                   // the render; null where there are errors
@@ -53,11 +53,11 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene);
 
 // The scene as far as a program with `lightCapacity` lights can light it
 // (sceneForCapacity()): what the reference is made of.
-Scene judgedScene(const Scene &scene, std::optional<int> lightCapacity);
+Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity);
 
-// Judges a drawn image: sets outcome's report and verdict, or an error when
+// Checks a drawn image: sets outcome's report and verdict, or an error when
 // no pixel could be compared.
-void judgeDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
+void checkDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
                   int toleranceSteps, std::optional<PhongEquation> equation,
                   const QString &scenePath);
 

@@ -32,7 +32,7 @@ constexpr Subcommand kSubcommands[] = {
     {"check",
      QT_TRANSLATE_NOOP(
          "phonglab::cli::Cli",
-         "judge a shader against the exact image and name the mistake that explains a wrong one"),
+         "check a shader against the exact image and name the mistake that explains a wrong one"),
      runCheck, makeGuiApplication},
     {"grade",
      QT_TRANSLATE_NOOP(

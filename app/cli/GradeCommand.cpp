@@ -74,7 +74,7 @@ QString helpText()
               ".frag .fs .fsh; .glsl by whether it writes gl_Position), in any dialect `check` "
               "takes,\n"
               "or a WebGL project (pages and scripts, as check --project reads them; each program\n"
-              "that lights is judged on its own). SUBMISSIONS may be a .zip or .tar.gz, and a\n"
+              "that lights is checked on its own). SUBMISSIONS may be a .zip or .tar.gz, and a\n"
               "course platform's download: Moodle's folders or flat files by student. A student's\n"
               "own archive is unpacked once; an archive with links or names that leave it is\n"
               "refused. A stage left out is the scene's shading method's shipped one. Each check\n"

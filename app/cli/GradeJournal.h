@@ -10,8 +10,8 @@ namespace phonglab::cli {
 // What a grade run has finished, row by row, so that a run stopped by
 // Ctrl-C or a crash loses nothing (issue 42, E): each child's end is
 // appended to DIR/grades.partial.jsonl as it comes, flushed, and `grade
-// --resume` judges those rows again from it instead of drawing them again.
-// The judging is deterministic, so the resumed run's tables are the
+// --resume` checks those rows again from it instead of drawing them again.
+// The checking is deterministic, so the resumed run's tables are the
 // uninterrupted run's, apart from `seconds`. The first line is the run's
 // fingerprint (scenes, settings, submissions and their files): a journal of
 // another run is not used. It is removed once the run has written its tables.

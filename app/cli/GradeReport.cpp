@@ -303,8 +303,8 @@ QString openCommand(const GradeResults &results, const GradeRow &row)
 QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
 {
     const CheckReport &r = row.outcome.report;
-    const bool judged = row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
-    const double psnr = judged ? r.comparison.psnr : -1.0;
+    const bool checked = row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+    const double psnr = checked ? r.comparison.psnr : -1.0;
     const QString student = shownSubmissionName(results.submissions[std::size_t(row.submission)]);
     const QString command = openCommand(results, row);
     // One pass of arg(): text a student wrote may hold "%1" itself.
@@ -314,7 +314,7 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
         .arg(QString::number(order), esc(student), QString::number(verdictRank(row.verdict)),
              std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("1e9"),
              esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
-             judged ? (std::isfinite(psnr) ? sentenceNumber(psnr, 'f', 1) : QStringLiteral("∞"))
+             checked ? (std::isfinite(psnr) ? sentenceNumber(psnr, 'f', 1) : QStringLiteral("∞"))
                     : QString(),
              figure(row.yoursImage, ReportWords::tr("theirs"))
                  + figure(row.exactImage, ReportWords::tr("exact"))

@@ -99,9 +99,9 @@ Result<> GradeRun::prepareReferences()
     return {};
 }
 
-const CheckReference *GradeRun::referenceFor(int scene, const Scene &judged, QString *error)
+const CheckReference *GradeRun::referenceFor(int scene, const Scene &checked, QString *error)
 {
-    const std::pair key{scene, enabledLights(judged)};
+    const std::pair key{scene, enabledLights(checked)};
     if (const auto found = m_references.find(key); found != m_references.end())
         return &found->second;
     const GradeScene &s = m_results.scenes[std::size_t(scene)];
@@ -113,7 +113,7 @@ const CheckReference *GradeRun::referenceFor(int scene, const Scene &judged, QSt
         return true;
     };
     Result<CheckReference> made =
-        makeCheckReference(judged, s.objectMeshes, m_results.settings.size.width(),
+        makeCheckReference(checked, s.objectMeshes, m_results.settings.size.width(),
                            m_results.settings.size.height(), progress);
     if (!made) {
         *error = made.error();
@@ -195,7 +195,7 @@ void GradeRun::run()
                 QDir(m_results.settings.outFolder).mkpath(folder);
                 row.yoursImage =
                     QStringLiteral("%1/%2-yours.png").arg(folder, m_results.scenes[c].slug);
-                // Finished by a stopped run: judged again from its journal.
+                // Finished by a stopped run: checked again from its journal.
                 const auto done = m_finished.constFind(rowKey(row));
                 if (done != m_finished.constEnd()
                     && (done->kind != GradedChildEnd::Kind::Answered
@@ -203,7 +203,7 @@ void GradeRun::run()
                                              + row.yoursImage))) {
                     row.seconds = done->seconds;
                     m_childSeconds += done->seconds;
-                    judge(row, *done);
+                    check(row, *done);
                     ++m_done;
                 } else {
                     m_waiting.push_back({int(rows.size())});
@@ -244,14 +244,14 @@ void GradeRun::onEnded(int rowIndex, const GradedChildEnd &end)
     m_childSeconds += end.seconds;
     if (m_journal)
         m_journal->record(rowKey(row), end);
-    judge(row, end);
+    check(row, end);
     ++m_done;
     while (m_running < m_jobs && !m_waiting.empty())
         startNext();
     showProgress();
 }
 
-void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
+void GradeRun::check(GradeRow &row, const GradedChildEnd &end)
 {
     const QString out = m_results.settings.outFolder + QLatin1Char('/');
     if (end.kind != GradedChildEnd::Kind::Answered) {
@@ -285,23 +285,23 @@ void GradeRun::judge(GradeRow &row, const GradedChildEnd &end)
         return;
     }
     const GradeScene &scene = m_results.scenes[std::size_t(row.scene)];
-    const Scene judged = judgedScene(scene.scene, drawing.lightCapacity);
+    const Scene checked = sceneForCheck(scene.scene, drawing.lightCapacity);
     QString error;
-    const CheckReference *reference = referenceFor(row.scene, judged, &error);
+    const CheckReference *reference = referenceFor(row.scene, checked, &error);
     if (!reference) {
         failRow(row, GradeVerdict::Error, scene.path,
                 GradeRunWords::tr("no reference: %1").arg(error));
         return;
     }
     const GradeSettings &settings = m_results.settings;
-    judgeDrawing(&row.outcome, image, *reference, settings.toleranceSteps, settings.equation,
+    checkDrawing(&row.outcome, image, *reference, settings.toleranceSteps, settings.equation,
                  scene.path);
     if (row.outcome.verdict == CheckOutcome::Verdict::Error)
         return;
     row.verdict = row.outcome.verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass
                                                                      : GradeVerdict::Fail;
     const PhongEquation equation = row.outcome.report.equation;
-    row.exactImage = exactImageFor(row.scene, enabledLights(judged), equation, *reference);
+    row.exactImage = exactImageFor(row.scene, enabledLights(checked), equation, *reference);
     const QString heatmap =
         QString(row.yoursImage).replace(QLatin1String("-yours.png"), QLatin1String("-heatmap.png"));
     if (writePng(toQImage(checkHeatmap(toRgbImage(image), *reference, equation)), out + heatmap))

@@ -13,7 +13,7 @@
 namespace phonglab::cli {
 
 // The checks of `grade`: one child per submission × scene, `jobs` at once,
-// each judged here as it ends against the exact image of its scene, made
+// each checked here as it ends against the exact image of its scene, made
 // once (once per number of lights a shader can take, where one takes fewer
 // than the scene has). Fills results.rows; writes each student's image and
 // heatmap under the out folder's images/. A progress line on a terminal.
@@ -28,7 +28,7 @@ public:
     // every core). Errors name the scene.
     Result<> prepareReferences();
     // Each child's end goes to `journal` as it comes; the rows in
-    // `finished` (by rowKey) are judged from it and drawn no more (--resume).
+    // `finished` (by rowKey) are checked from it and drawn no more (--resume).
     void setJournal(GradeJournal *journal, QHash<QString, GradedChildEnd> finished);
     // Runs every check; returns when the last has ended.
     void run();
@@ -41,8 +41,8 @@ private:
     };
     void startNext();
     void onEnded(int row, const GradedChildEnd &end);
-    void judge(GradeRow &row, const GradedChildEnd &end);
-    const CheckReference *referenceFor(int scene, const Scene &judged, QString *error);
+    void check(GradeRow &row, const GradedChildEnd &end);
+    const CheckReference *referenceFor(int scene, const Scene &checked, QString *error);
     QString exactImageFor(int scene, int lights, PhongEquation equation,
                           const CheckReference &reference);
     QStringList childArguments(const GradeRow &row) const;
@@ -58,7 +58,7 @@ private:
     double m_childSeconds = 0.0;
     QElapsedTimer m_clock;
     bool m_tty = false;
-    // By scene, then the number of lights it is judged with.
+    // By scene, then the number of lights it is checked with.
     std::map<std::pair<int, int>, CheckReference> m_references;
     std::map<QString, QString> m_exactImages; // written once each
     GradeJournal *m_journal = nullptr;

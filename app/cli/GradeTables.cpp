@@ -35,14 +35,14 @@ QString textCell(const QString &text)
     return csvField(text);
 }
 
-bool judged(const GradeRow &row)
+bool checked(const GradeRow &row)
 {
     return row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
 }
 
 QString psnrText(const GradeRow &row)
 {
-    if (!judged(row))
+    if (!checked(row))
         return {};
     const double psnr = row.outcome.report.comparison.psnr;
     return std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("inf");
@@ -72,13 +72,13 @@ QStringList csvRecord(const GradeResults &results, const GradeRow &row)
             textCell(results.scenes[std::size_t(row.scene)].label),
             gradeVerdictName(row.verdict),
             psnrText(row),
-            judged(row) ? QString::number(r.comparison.maxError) : QString(),
-            judged(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
+            checked(row) ? QString::number(r.comparison.maxError) : QString(),
+            checked(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
             rowMistakeKey(row),
             alsoText(row),
             textCell(place.file),
             place.file.isEmpty() || place.line <= 0 ? QString() : QString::number(place.line),
-            judged(row) ? phongEquationKey(r.equation) : QString(),
+            checked(row) ? phongEquationKey(r.equation) : QString(),
             textCell(bindingsCell(row)),
             QString::number(row.seconds, 'f', 2),
             rowMistakeKeys(row),
@@ -165,7 +165,7 @@ QString gradesTable(const GradeResults &results)
             : cut(shownName(results.submissions[std::size_t(row.submission)]), nameWidth);
         previous = row.submission;
         QString what = rowMistakeKeys(row).replace(QLatin1Char(' '), QLatin1Char('+'));
-        if (!judged(row) && !row.outcome.errors.empty())
+        if (!checked(row) && !row.outcome.errors.empty())
             what = cut(row.outcome.errors.front().message, 60);
         const RowPlace place = rowPlace(row);
         if (!place.file.isEmpty())

@@ -185,7 +185,7 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
             l.enabled = false;
     *note =
         SceneStagesWords::tr("the shader takes %1 %2 (its light uniforms have room for no "
-                             "more) and the scene has %3 enabled: judged with the first %1 alone")
+                             "more) and the scene has %3 enabled: checked with the first %1 alone")
             .arg(*capacity)
             .arg(*capacity == 1 ? SceneStagesWords::tr("light") : SceneStagesWords::tr("lights"))
             .arg(enabled);

@@ -14,7 +14,7 @@ void setCourseUniforms(ShaderProgram &program, const Scene &scene, std::span<con
         diffuseProduct.push_back(l.diffuse * material.kd);
         specularProduct.push_back(l.specular * material.ks);
         // Where Id and Is differ no colour is right: bindingConflicts() says
-        // so before anything is judged.
+        // so before anything is checked.
         color.push_back(l.diffuse);
         cameraPosition.push_back(glm::dvec3(view * glm::dvec4(l.position, 1.0)));
     }

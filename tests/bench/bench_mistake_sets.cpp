@@ -5,9 +5,9 @@
 // On the check scene (assets/scenes/check.json), at 320x240 and 800x600: the
 // shipped Phong shaders with one mistake (reflect-incident) and with three
 // (halfway-vector, attenuation and ambient), drawn on the GPU once each, then
-// judged again and again (checkRender: the diagnosis, and for the three the
+// checked again and again (checkRender: the diagnosis, and for the three the
 // search for the smallest set that explains them). A `phonglab check` is the
-// reference (ray casting, made once per scene and size) plus the judging;
+// reference (ray casting, made once per scene and size) plus the checking;
 // both ratios are printed, each against its peer in the same run.
 #include "BenchHelpers.h"
 #include "CheckScene.h"
@@ -27,8 +27,8 @@ using namespace phonglab::test;
 
 namespace {
 
-// The median wall time of `runs` judgements, in ms, and the last report.
-double judgeMs(const RgbImage &image, const CheckReference &reference, int runs,
+// The median wall time of `runs` verdicts, in ms, and the last report.
+double checkOnceMs(const RgbImage &image, const CheckReference &reference, int runs,
                CheckReport *report)
 {
     std::vector<double> ms;
@@ -48,7 +48,7 @@ int main(int argc, char **argv)
     chooseCommandPlatform(); // no display server needed
     QGuiApplication app(argc, argv);
     QCommandLineParser parser;
-    const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("judgements per shader"),
+    const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("verdicts per shader"),
                                   QStringLiteral("n"), QStringLiteral("5"));
     parser.addOption(runs);
     parser.addHelpOption();
@@ -65,17 +65,17 @@ int main(int argc, char **argv)
     const ShaderPair three = withMistakes({{ShaderMistake::Attenuation, 0},
                                            {ShaderMistake::Ambient, 0},
                                            {ShaderMistake::HalfwayVector, 0}});
-    std::printf("%-9s %12s %14s %14s %14s %14s\n", "size", "reference ms", "judge 1 ms",
-                "judge 3 ms", "judge 3/1", "check 3/1");
+    std::printf("%-9s %12s %14s %14s %14s %14s\n", "size", "reference ms", "check 1 ms",
+                "check 3 ms", "check 3/1", "check 3/1");
     for (const QSize size : {QSize(320, 240), QSize(800, 600)}) {
         QElapsedTimer clock;
         clock.start();
         const CheckReference reference = makeTestCheckReference(scene, size.width(), size.height());
         const double referenceMs = double(clock.nsecsElapsed()) / 1e6;
         CheckReport oneReport, threeReport;
-        const double oneMs = judgeMs(drawPair(offscreen, one, size), reference, n, &oneReport);
+        const double oneMs = checkOnceMs(drawPair(offscreen, one, size), reference, n, &oneReport);
         const double threeMs =
-            judgeMs(drawPair(offscreen, three, size), reference, n, &threeReport);
+            checkOnceMs(drawPair(offscreen, three, size), reference, n, &threeReport);
         std::printf("%-9s %12.0f %14.1f %14.1f %14.2f %14.2f\n",
                     qPrintable(QStringLiteral("%1x%2").arg(size.width()).arg(size.height())),
                     referenceMs, oneMs, threeMs, threeMs / oneMs,
@@ -86,6 +86,6 @@ int main(int argc, char **argv)
                     100.0 * threeReport.diagnosis.together.explains);
     }
     std::printf("check 3/1: a whole check (the reference, made once per scene and size, plus "
-                "the judging) of the three-mistake shader against the one-mistake shader's\n");
+                "the checking) of the three-mistake shader against the one-mistake shader's\n");
     return 0;
 }

@@ -282,7 +282,7 @@ void main() {
     }
 
     // A single light uniform takes light 0; the check says so.
-    void oneLightShaderIsJudgedWithOneLight()
+    void oneLightShaderIsCheckedWithOneLight()
     {
         QByteArray fragment = readAsset(QStringLiteral("webgl2/phong.frag"));
         fragment = replaced(fragment, "uniform vec3 uLightPosition[MAX_LIGHTS];",

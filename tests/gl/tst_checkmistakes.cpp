@@ -117,7 +117,7 @@ private slots:
         QStringList failures;
         for (const MistakeVariant &made : allMistakeVariants()) {
             CheckReport report;
-            const QString failure = judgeMistake(withMistake(made), reference, made,
+            const QString failure = checkMistake(withMistake(made), reference, made,
                                                  PhongEquation::Guarded, true, report);
             if (!failure.isEmpty())
                 failures << failure;
@@ -137,7 +137,7 @@ private slots:
 
     // A student who writes the slide's equation makes the same mistakes:
     // each is named by its key first, as in the guarded one (issue 30, C
-    // and E); the table says which equation judged it (the guarded one where
+    // and E); the table says which equation checked it (the guarded one where
     // a mistake leaves no highlight behind a surface to tell the two apart).
     void mistakesInTheSlidesEquation()
     {
@@ -145,7 +145,7 @@ private slots:
         const CheckReference reference = makeTestCheckReference(scene);
         QVERIFY_OK(m_offscreen.renderer().setScene(scene));
         QStringList table{
-            QStringLiteral("| made, slide's equation | found first | % | judged by |"),
+            QStringLiteral("| made, slide's equation | found first | % | checked by |"),
             QStringLiteral("|---|---|---|---|")};
         QStringList failures;
         for (const MistakeVariant &made : allMistakeVariants()) {
@@ -154,7 +154,7 @@ private slots:
                 || made.key == ShaderMistake::PerFace)
                 continue; // about the guard itself, or a shader of its own
             CheckReport report;
-            const QString failure = judgeMistake(withMistake(made, PhongEquation::Slide), reference,
+            const QString failure = checkMistake(withMistake(made, PhongEquation::Slide), reference,
                                                  made, std::nullopt, false, report);
             if (!failure.isEmpty())
                 failures << failure;
@@ -210,7 +210,7 @@ private:
     // `made` must be found, named first (its key, or beside the key) and
     // explaining at least half the difference, and alone in first place
     // where `alone` asks. Empty when all holds; `report` gets the report.
-    QString judgeMistake(const ShaderPair &shaders, const CheckReference &reference,
+    QString checkMistake(const ShaderPair &shaders, const CheckReference &reference,
                          MistakeVariant made, std::optional<PhongEquation> demanded, bool alone,
                          CheckReport &report)
     {

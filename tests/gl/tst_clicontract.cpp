@@ -1,7 +1,7 @@
 // What a script reads from `phonglab`, and a newcomer's slips (issue 34):
 // one wording for what is not known, with the nearest suggested; exit 2 for
 // a slip; a path named once; stderr silent unless something is wrong; what
-// `check` says about the file it judges.
+// `check` says about the file it checks.
 #include "PhonglabProcess.h"
 #include "ShaderMutations.h"
 #include "TestPaths.h"

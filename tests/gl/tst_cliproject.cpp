@@ -1,6 +1,6 @@
 // WebGL projects as students hand them in (issue 42, A and B): `check
 // --project` and `grade` find the shaders in pages, inline scripts, script
-// files and files of their own, judge each program that lights on its own
+// files and files of their own, check each program that lights on its own
 // (the `program` column), leave out an unlit one with a note, and report
 // every error at the line of the file handed in.
 #include "PhonglabProcess.h"
@@ -154,11 +154,11 @@ private slots:
             runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--project"), ada,
                          QStringLiteral("--program"), QStringLiteral("gouraud"),
                          QStringLiteral("--size"), QStringLiteral("160x120")});
-        QVERIFY2(named.exitCode == 0 && named.out.contains("grid: not judged"),
+        QVERIFY2(named.exitCode == 0 && named.out.contains("grid: not checked"),
                  qPrintable(named.err + named.out));
     }
 
-    void gradeJudgesEveryProgramThatLights()
+    void gradeChecksEveryProgramThatLights()
     {
         const QString out = m_dir.filePath(QStringLiteral("out"));
         const ProcessRun run = runPhonglab(
@@ -185,7 +185,7 @@ private slots:
         QCOMPARE(dan.value(2), QStringLiteral("error"));
         QCOMPARE(dan.value(8), QStringLiteral("dan/index.html"));
         QCOMPARE(dan.value(9).toInt(), lineOf(m_broken, "normalise("));
-        // The unlit grid: said beside ada's rows, never judged.
+        // The unlit grid: said beside ada's rows, never checked.
         const QJsonArray json =
             QJsonDocument::fromJson(readTestFile(out + QStringLiteral("/grades.json")))
                 .object()
@@ -196,7 +196,7 @@ private slots:
             if (r.toObject().value(QStringLiteral("submission")).toString() == QLatin1String("ada"))
                 for (const QJsonValue &n : r.toObject().value(QStringLiteral("notes")).toArray())
                     gridNoted =
-                        gridNoted || n.toString().contains(QStringLiteral("grid: not judged"));
+                        gridNoted || n.toString().contains(QStringLiteral("grid: not checked"));
         QVERIFY(gridNoted);
         // The report quotes dan's line from the page, and names ada's programs.
         const QByteArray report = readTestFile(out + QStringLiteral("/report.html"));

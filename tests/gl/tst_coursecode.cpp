@@ -5,7 +5,7 @@
 // colour), structs and arrays of structs with an int shininess and a mode
 // switch the page sets, a three.js ShaderMaterial with a token the page
 // replaces, and a correct WebGL 1 pair declaring mediump. Each is bound,
-// compiled and judged as its page runs it: a correct one passes, one that
+// compiled and checked as its page runs it: a correct one passes, one that
 // deviates is named with every deviation at once.
 #include "PhonglabProcess.h"
 #include "TestPaths.h"
@@ -233,7 +233,7 @@ private slots:
     // output read before they are set, whose value GLSL leaves undefined.
     // Each is a warning on the student's line, never the verdict (which is
     // the image's: here Mesa keeps garbage in the accumulator, so it fails).
-    void undefinedReadsAreWarnedNeverJudged()
+    void undefinedReadsAreWarnedNeverChecked()
     {
         QTemporaryDir dir;
         const QString accumulator = edited(
@@ -269,9 +269,9 @@ private slots:
                      qPrintable(warningsOf(correct)));
     }
 
-    // mediump: judged at highp, as a desktop browser computes it; what the
+    // mediump: checked at highp, as a desktop browser computes it; what the
     // declared precision changes on this driver said apart.
-    void mediumpIsJudgedAsTheBrowserRunsIt()
+    void mediumpIsCheckedAsTheBrowserRunsIt()
     {
         const Check c =
             check(QStringLiteral("mediump/phong.vert"), QStringLiteral("mediump/phong.frag"));
@@ -300,7 +300,7 @@ private slots:
                 >= c.json.value(QStringLiteral("max_error")).toInt());
 
         // A uniform both stages declare at two precisions does not link in a
-        // browser either: judged at highp it passes, and that is said.
+        // browser either: checked at highp it passes, and that is said.
         const Check mixed = check(QStringLiteral("../../../assets/shaders/webgl1/phong.vert"),
                                   QStringLiteral("mediump/phong.frag"));
         QCOMPARE(verdict(mixed), QStringLiteral("pass"));

@@ -9,7 +9,7 @@
 // required (here only light-space hides backface-specular's highlight); the
 // table says where. backface-specular is a mistake only where the guarded
 // equation is demanded (by default the slide's literal equation passes
-// too), so a set holding it is judged with --equation guarded.
+// too), so a set holding it is checked with --equation guarded.
 #include "CheckScene.h"
 #include "ResultChecks.h"
 #include "ShaderMutations.h"
@@ -70,7 +70,7 @@ private slots:
     void correctShaderPasses()
     {
         const ShaderPair s = shippedPhong();
-        const CheckReport report = checkRender(judgedImage(s), m_reference);
+        const CheckReport report = checkRender(checkedImage(s), m_reference);
         QVERIFY2(report.passed(), qPrintable(checkSummary(report)));
         QVERIFY(report.diagnosis.together.variants.empty());
     }
@@ -78,7 +78,7 @@ private slots:
     void oneMistakeKeepsItsOneKey()
     {
         for (ShaderMistake m : kDeviations) {
-            const CheckReport report = judge({{m, 0}});
+            const CheckReport report = check({{m, 0}});
             QVERIFY2(!report.passed(), qPrintable(shaderMistakeKey(m)));
             QCOMPARE(keysOf(report.diagnosis.together.variants), shaderMistakeKey(m));
             QCOMPARE(report.diagnosis.findings.front().key, m);
@@ -92,7 +92,7 @@ private slots:
         QStringList failures;
         for (int size : {2, 3}) {
             for (const std::vector<MistakeVariant> &made : subsets(size)) {
-                const CheckReport report = judge(made);
+                const CheckReport report = check(made);
                 const MistakeSet &found = report.diagnosis.together;
                 const std::vector<MistakeVariant> shown = showing(made);
                 table << QStringLiteral("| %1 | %2 | %3 % |%4")
@@ -153,17 +153,17 @@ private:
         return out;
     }
 
-    RgbImage judgedImage(const ShaderPair &s)
+    RgbImage checkedImage(const ShaderPair &s)
     {
         return drawPair(m_offscreen, s, QSize(kCheckWidth, kCheckHeight));
     }
 
-    CheckReport judge(const std::vector<MistakeVariant> &made)
+    CheckReport check(const std::vector<MistakeVariant> &made)
     {
         const bool guardDemanded = std::any_of(made.begin(), made.end(), [](MistakeVariant v) {
             return v.key == ShaderMistake::BackfaceSpecular;
         });
-        return checkRender(judgedImage(withMistakes(made)), m_reference,
+        return checkRender(checkedImage(withMistakes(made)), m_reference,
                            kDefaultCheckToleranceSteps,
                            guardDemanded ? std::optional(PhongEquation::Guarded) : std::nullopt);
     }

@@ -100,7 +100,7 @@ protected:
     void replaceInFragment(const QString &from, const QString &to) const;
     // Types the shipped fragment shader into the slide's equation taken
     // literally (no N·L guard on the highlight, the diffuse term clamped) and
-    // waits until the live check has judged it by that equation; false when
+    // waits until the live check has checked it by that equation; false when
     // it did not within `timeoutMs`. Check QTest::currentTestFailed() too.
     bool typeTheSlidesEquationAndCheck(int timeoutMs) const;
     bool waitForApplied(int timeoutMs = kBuildTimeoutMs) const

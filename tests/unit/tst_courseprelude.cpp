@@ -1,5 +1,5 @@
 // What a course's page adds to a shader before the browser compiles it
-// (core/check/CoursePrelude): lower precisions judged at highp unless asked
+// (core/check/CoursePrelude): lower precisions checked at highp unless asked
 // otherwise, three.js's declarations only where the source leaves them to
 // three.js, a default float precision for a GLSL ES fragment shader without
 // one, the page's defines, and what to do about a token nobody defines.
@@ -25,7 +25,7 @@ class TestCoursePrelude : public QObject
     Q_OBJECT
 
 private slots:
-    void lowerPrecisionIsJudgedAtHighp()
+    void lowerPrecisionIsCheckedAtHighp()
     {
         const QByteArray code = "precision mediump float;\nvoid main() { lowp vec3 c; }\n";
         const CoursePrelude highp = coursePreludeFor(code, ShaderStage::Fragment, {});

@@ -104,7 +104,7 @@ private slots:
         QVERIFY(phong->lit && gouraud->lit);
         QVERIFY(!grid->lit);
         QCOMPARE(litPrograms(p).size(), std::size_t(2));
-        QVERIFY(p.notes.join(QLatin1Char('\n')).contains(QStringLiteral("grid: not judged")));
+        QVERIFY(p.notes.join(QLatin1Char('\n')).contains(QStringLiteral("grid: not checked")));
         // Lines as in the page: the code's gl_Position line is the page's.
         const QByteArray html = angelPage();
         QCOMPARE(lineOf(phong->vertex.code, "gl_Position"), lineOf(html, "gl_Position"));

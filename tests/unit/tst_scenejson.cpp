@@ -146,7 +146,7 @@ void TestSceneJson::defaultsWhenOptionalFieldsMissing()
     QVERIFY(*result.scene == sphereScene());
     QVERIFY(result.scene->lights.empty());
     QCOMPARE(result.scene->baseDir, QStringLiteral("/scenes"));
-    // An old scene is judged as a desktop browser computes it, with no defines.
+    // An old scene is checked as a desktop browser computes it, with no defines.
     QVERIFY(result.scene->course.precision == PrecisionRule::Highp);
     QVERIFY(result.scene->course.defines.empty());
     QVERIFY(!sceneToJson(*result.scene).contains("precision"));

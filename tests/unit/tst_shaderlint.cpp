@@ -425,7 +425,7 @@ void TestShaderLint::messageNamesTheVariable()
     QVERIFY(found[1].message.startsWith(QStringLiteral("'r' is read before it is set")));
 }
 
-// An editor lints while the student types: every cut of a shader is judged
+// An editor lints while the student types: every cut of a shader is checked
 // without a crash, and the comments' bugs never show.
 void TestShaderLint::survivesEveryPrefix()
 {

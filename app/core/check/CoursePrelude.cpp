@@ -179,14 +179,14 @@ CoursePrelude coursePreludeFor(const QByteArray &code, ShaderStage stage,
                && !defaultFloatPrecision().match(text).hasMatch()) {
         out.text += "precision highp float;\n";
         out.added << CoursePreludeWords::tr(
-            "no default float precision: judged with 'precision highp float;' added, as the "
+            "no default float precision: checked with 'precision highp float;' added, as the "
             "page's JavaScript adds it");
     }
     if (options.precision == PrecisionRule::Highp && !out.lowerPrecisions.isEmpty()) {
         for (const QString &lower : out.lowerPrecisions)
             out.text += "#define " + lower.toLatin1() + " highp\n";
         out.added << CoursePreludeWords::tr(
-                         "%1 judged at highp (32-bit floats), as a desktop browser computes it "
+                         "%1 checked at highp (32-bit floats), as a desktop browser computes it "
                          "(--precision as-written for this driver's own)")
                          .arg(out.lowerPrecisions.join(QStringLiteral(", ")));
     }

@@ -12,10 +12,10 @@ namespace phonglab {
 
 // What a course's web page does to a shader before the browser compiles it,
 // done the same way before the driver here compiles it, so that a student's
-// file is judged as their page runs it:
+// file is checked as their page runs it:
 //  - precision: a desktop browser computes every float in 32 bits, whatever
 //    the shader declares; Mesa computes `mediump` in 16. By default PhongLab
-//    judges at highp too (`#define mediump highp`, `#define lowp highp`) and
+//    checks at highp too (`#define mediump highp`, `#define lowp highp`) and
 //    says so; "as-written" leaves the driver the declared precision.
 //  - three.js's ShaderMaterial declares modelViewMatrix, projectionMatrix,
 //    normalMatrix, viewMatrix, modelMatrix, cameraPosition, position and

@@ -44,7 +44,7 @@ BandComparison compareOutsideBand(const RgbImage &rendered, const ReferenceImage
 
 // Pixels next to an occluding contour inside the reference: where one
 // surface passes in front of another, so the covered pixels on either side
-// belong to different surfaces (the tree's tiers). Judged per axis on the
+// belong to different surfaces (the tree's tiers). Checked per axis on the
 // second difference of inverse depth over neighbouring pixels, which is zero
 // on any plane whatever its angle and small on smooth surfaces, and jumps
 // across an occlusion: flagged where it exceeds `relativeJump` · 1/z.

@@ -50,7 +50,7 @@ inline constexpr double kMinListedConfidence = 0.1;
 
 // `yours` is the render (RGB, the reference's size); `exact` the reference;
 // `mistaken` the reference with each mistake made; `compared` the pixels to
-// judge (1: compared; the silhouette band left out), one per pixel. A pixel
+// check (1: compared; the silhouette band left out), one per pixel. A pixel
 // matches another within `toleranceSteps` 8-bit steps in every channel.
 // Where two mistakes give the same image, the one earlier in
 // ShaderMistake's order is `key`. A key has one finding, its best form's. A render of another size than the
@@ -62,7 +62,7 @@ MistakeDiagnosis diagnoseMistakes(
 
 // The same on images already encoded as the GPU writes them
 // (ReferenceImage::toImage()), which is all the diagnosis looks at: what a
-// caller judging many renders against one reference keeps.
+// caller checking many renders against one reference keeps.
 using MistakeImages = std::vector<std::pair<MistakeVariant, RgbImage>>;
 
 // The pieces of the diagnosis MistakeSets shares. A pixel matches another

@@ -62,15 +62,15 @@ double CheckReport::badFraction() const
 
 namespace {
 
-// The reference judged against: the guarded one as made, or the slide's
+// The reference checked against: the guarded one as made, or the slide's
 // with the guarded image taking backface-specular's place among the mistakes.
-struct JudgedAgainst {
+struct CheckedAgainst {
     const ReferenceImage *exact;
     RgbImage exactImage;
     MistakeImages mistaken;
 };
 
-JudgedAgainst judgedAgainst(const CheckReference &reference, PhongEquation equation)
+CheckedAgainst checkedAgainst(const CheckReference &reference, PhongEquation equation)
 {
     if (equation == PhongEquation::Guarded || reference.slide.color.empty())
         return {&reference.exact, reference.exactImage, reference.mistaken};
@@ -79,7 +79,7 @@ JudgedAgainst judgedAgainst(const CheckReference &reference, PhongEquation equat
 
 // Every mistake made in the slide's equation, as a student who writes the
 // slide's form makes it (the reference holds them in the guarded one only):
-// shaded from the kept hits when a render judged by the slide's equation
+// shaded from the kept hits when a render checked by the slide's equation
 // fails, which is rare enough not to keep them. Backface-specular's place
 // goes to the guarded equation: against the slide's, that is its mistake.
 MistakeImages slideMistakes(const CheckReference &reference)
@@ -117,10 +117,10 @@ std::vector<int> errorSteps(const RgbImage &yours, const ReferenceImage &exact,
     return out;
 }
 
-CheckReport judge(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
-                  PhongEquation equation)
+CheckReport checkAgainstEquation(const RgbImage &yours, const CheckReference &reference,
+                                 int toleranceSteps, PhongEquation equation)
 {
-    JudgedAgainst against = judgedAgainst(reference, equation);
+    CheckedAgainst against = checkedAgainst(reference, equation);
     CheckReport report;
     report.toleranceSteps = toleranceSteps;
     report.equation = equation;
@@ -164,17 +164,18 @@ CheckReport judge(const RgbImage &yours, const CheckReference &reference, int to
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, int toleranceSteps,
                         std::optional<PhongEquation> demanded)
 {
-    CheckReport report =
-        judge(yours, reference, toleranceSteps, demanded.value_or(PhongEquation::Guarded));
+    CheckReport report = checkAgainstEquation(yours, reference, toleranceSteps,
+                                              demanded.value_or(PhongEquation::Guarded));
     if (demanded || !report.comparable() || reference.slide.color.empty())
         return report;
     // Either equation is right: backface-specular is no mistake here. A
-    // render that matches neither is judged by the one in which a mistake
+    // render that matches neither is checked by the one in which a mistake
     // explains with the fewest mistakes (a student writing the slide's form
     // makes the same mistakes in it, and backface-specular is none of
     // them), then the one explained best, then the one it is closer to.
     if (!report.passed()) {
-        CheckReport slide = judge(yours, reference, toleranceSteps, PhongEquation::Slide);
+        CheckReport slide =
+            checkAgainstEquation(yours, reference, toleranceSteps, PhongEquation::Slide);
         const auto rank = [](const CheckReport &r) {
             const MistakeSet &set = r.diagnosis.together;
             const bool explained = set.explains >= kSetWellExplained;

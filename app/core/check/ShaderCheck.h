@@ -11,7 +11,7 @@
 
 namespace phonglab {
 
-// `phonglab check` and the editor's check: a render judged against the
+// `phonglab check` and the editor's check: a render checked against the
 // exact reference of the same scene at the same size, and when it is off,
 // which classic mistake explains it.
 
@@ -20,7 +20,7 @@ inline constexpr int kDefaultCheckToleranceSteps = 2; // max error 2/255
 inline constexpr int kCheckBandPx = 2; // the render tests' silhouette band
 
 // Everything a check needs that depends on the scene and the size alone, not
-// on the shader: computed once, then any number of renders are judged
+// on the shader: computed once, then any number of renders are checked
 // against it.
 struct CheckReference {
     Scene scene; // as cast and shaded
@@ -62,7 +62,7 @@ struct CheckReport {
     qint64 badPixels = 0;       // compared pixels off by more than the tolerance
     int worstObject = -1;       // the scene object under comparison.worstPixel
     MistakeDiagnosis diagnosis;
-    // The equation the render was judged by: the one it matched, else the
+    // The equation the render was checked by: the one it matched, else the
     // one demanded (guarded where none was).
     PhongEquation equation = PhongEquation::Guarded;
 
@@ -73,7 +73,7 @@ struct CheckReport {
     double badFraction() const;
 };
 
-// Judged against the guarded equation, and where that fails against the
+// Checked against the guarded equation, and where that fails against the
 // slide's, unless `demanded` names one: the other is then a mistake
 // (backface-specular).
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
@@ -85,7 +85,7 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
 // red (8/255 or more), the left-out silhouette band dark blue, uncovered
 // pixels black.
 // Against the exact image of `equation` (CheckReport::equation: the one the
-// render was judged by).
+// render was checked by).
 RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference,
                       PhongEquation equation = PhongEquation::Guarded);
 

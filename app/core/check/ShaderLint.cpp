@@ -18,7 +18,7 @@ struct ShaderLintWords {
 namespace {
 
 // Bounds that keep arbitrary bytes from exhausting the stack or the time: a
-// shader past them is not judged at all.
+// shader past them is not checked at all.
 constexpr int kMaxNesting = 200; // statements in statements
 constexpr std::size_t kMaxVariables = 2000;
 
@@ -73,7 +73,7 @@ public:
         });
         for (const Function &f : functions) {
             vars.clear();
-            if (f.name == "main") // outputs are judged in main() only
+            if (f.name == "main") // outputs are checked in main() only
                 for (int o : outputs)
                     declare(o, hiddenCalls ? State::Maybe : State::Unset, true);
             for (int p : f.parameters)

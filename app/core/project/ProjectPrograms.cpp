@@ -207,7 +207,7 @@ Project readProject(const QString &path)
     for (const ProjectProgram &p : project.programs)
         if (!p.lit)
             project.notes << ProjectProgramsWords::tr(
-                                 "%1: not judged, it lights nothing (no light, "
+                                 "%1: not checked, it lights nothing (no light, "
                                  "material product or shininess in it)")
                                  .arg(p.name);
     if (shaders.empty())

@@ -18,7 +18,7 @@ struct ProjectProgram {
     ProjectShader vertex;
     ProjectShader fragment;
     // Whether it lights anything: a program that names no light, no
-    // material product and no shininess (a grid, a skybox) is not judged.
+    // material product and no shininess (a grid, a skybox) is not checked.
     bool lit = true;
 };
 
@@ -37,7 +37,7 @@ Project readProject(const QString &path);
 // The lit programs, or the one named `name` (error: none such, with the names there are).
 std::vector<const ProjectProgram *> litPrograms(const Project &project);
 const ProjectProgram *programNamed(const Project &project, const QString &name, QString *error);
-// The program to judge or edit: the one named `name`, else the one that
+// The program to check or edit: the one named `name`, else the one that
 // lights. An error where the project cannot be read, has no such program,
 // none that lights, or several (named: the caller says how to choose).
 Result<ProjectProgram> chooseProgram(const Project &project, const QString &name);

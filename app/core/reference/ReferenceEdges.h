@@ -39,7 +39,7 @@ inline constexpr int kDefaultSubpixelBits = 8;
 // top) and its pixel centres are exactly raycastSceneMeshes()'s. An
 // uncovered pixel is ambiguous when one moved centre is covered.
 //
-// "Continuation" is judged on the inverse depth 1/z, which is exactly affine
+// "Continuation" is checked on the inverse depth 1/z, which is exactly affine
 // in the image for any plane (the quantity a GPU interpolates linearly): per
 // axis, the second difference 1/z(+step) + 1/z(-step) - 2/z(0) is zero on a
 // plane, whatever the angle it is seen at, and tiny on a smooth or finely
@@ -47,7 +47,7 @@ inline constexpr int kDefaultSubpixelBits = 8;
 // itself. A pixel is ambiguous where it exceeds 0.1 % of 1/z(0), i.e. a
 // depth jump of more than about 0.1 % — the gaps between the tree's tiers
 // are under 1 % (pixel (32, 114) at 256² lies 0.0008 px from a tier's
-// edge). Judging the jump of z itself instead would also flag continuous
+// edge). Checking the jump of z itself instead would also flag continuous
 // surfaces seen at a grazing angle, whose depth changes fast but smoothly:
 // that must not happen, those pixels are where the bench measures most.
 // Missed: occluding gaps under 0.1 % of the depth, and a centre between two
@@ -60,7 +60,7 @@ Result<std::vector<std::uint8_t>> ambiguousReferencePixels(
     const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
     int height, int subpixelBits);
 
-// The pixels a render is judged on against the reference: every pixel more
+// The pixels a render is checked on against the reference: every pixel more
 // than bandPx (Chebyshev) from an occluding contour (occludingContourPixels())
 // or an ambiguous pixel (ambiguousReferencePixels()), which together are the
 // silhouettes, the outline included. 1 = compared. What `phonglab bench` and

@@ -134,7 +134,7 @@ DetailLevels buildDetailLevels(const MeshData &mesh, const std::function<bool(do
         std::vector<std::uint32_t> simplified(previous.indices.size());
         float stepError = 0.0f;
         // No error limit (1 = the whole extent): the triangle target rules,
-        // and the error is reported for the view to judge.
+        // and the error is reported for the view to check.
         simplified.resize(meshopt_simplify(simplified.data(), previous.indices.data(),
                                            previous.indices.size(), positions, vertexCount,
                                            sizeof(glm::vec3), target, 1.0f, 0, &stepError));

@@ -128,7 +128,7 @@ void CheckOverlay::paintLegend(QPainter &painter) const
                      tr("≥ 8/255"));
     painter.fillRect(QRect(box.left() + 10, box.top() + 44, 10, 10), QColor(0, 0, 96));
     painter.drawText(QRect(box.left() + 24, box.top() + 40, 150, 16), Qt::AlignLeft,
-                     tr("silhouette band, not judged"));
+                     tr("silhouette band, not checked"));
 }
 
 void CheckOverlay::paintArrows(QPainter &painter) const

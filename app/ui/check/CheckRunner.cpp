@@ -132,7 +132,7 @@ void CheckRunner::request(const FrameRecipe &frame)
         return;
     }
     // Newest wins. A running job making the reference of another view is
-    // wasted work; one judging the same view is nearly done.
+    // wasted work; one checking the same view is nearly done.
     if (m_running && !(sameScene(m_running->first, frame.scene) && m_running->second == frame.size))
         m_cancelled->store(true);
     m_waiting = std::move(r);
@@ -190,7 +190,7 @@ void CheckRunner::start(Request request)
                 if (result.reference) {
                     const RgbImage yours = toRgbImage(result.yours);
                     result.report = checkRender(yours, *result.reference);
-                    // The exact image of the equation the frame was judged by:
+                    // The exact image of the equation the frame was checked by:
                     // the slide's, for a shader that matched it.
                     const PhongEquation equation = result.report.equation;
                     result.exact = equation == PhongEquation::Guarded

@@ -36,7 +36,7 @@ QString shortSummary(const CheckedFrame &result)
     if (!result.report.comparable())
         return QObject::tr("check: nothing to compare in this view");
     // Gouraud, flat and faceted are approximations by design: say what they
-    // are judged against.
+    // are checked against.
     const ShadingMethod method = result.scene.shading;
     if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat
         || method == ShadingMethod::Faceted)
