@@ -2,7 +2,7 @@
 
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"

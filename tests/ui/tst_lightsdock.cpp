@@ -8,7 +8,7 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 #include "core/scene/MaterialPresets.h"
 #include "core/reference/PhongReference.h"
 #include "render/QtImages.h"

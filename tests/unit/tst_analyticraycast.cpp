@@ -1,11 +1,12 @@
 // The analytic ray caster: geometry checked against projections worked out by
 // hand, shading checked against phongIntensity() at hand-known points.
 
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 #include "core/reference/PhongReference.h"
 
 #include <QtTest>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 using namespace phonglab;
@@ -57,6 +58,43 @@ ReferenceImage render(const Scene &scene, int w, int h)
     return *image;
 }
 
+// Three builtins turned, scaled and overlapping, two attenuated lights: every
+// analytic surface, the nearest-hit rule and every term of the equation.
+Scene mixedScene()
+{
+    Scene scene;
+    SceneObject sphere = object(QStringLiteral("builtin:sphere"), glm::dvec3(0.8));
+    sphere.transform.translate = {-1.1, 0.3, 0.0};
+    SceneObject torus = object(QStringLiteral("builtin:torus"));
+    torus.transform.rotateDeg = {60.0, 20.0, 0.0};
+    torus.transform.translate = {0.9, -0.2, -0.5};
+    SceneObject cube = object(QStringLiteral("builtin:cube"), glm::dvec3(0.5, 0.7, 0.4));
+    cube.transform.rotateDeg = {25.0, 40.0, 10.0};
+    cube.transform.translate = {0.2, 0.9, 0.6};
+    scene.objects = {sphere, torus, cube};
+    PointLight key;
+    key.position = {3.0, 4.0, 5.0};
+    key.attenuation = {1.0, 0.05, 0.01};
+    PointLight fill;
+    fill.position = {-4.0, -1.0, 2.0};
+    fill.diffuse = {0.3, 0.3, 0.5};
+    fill.specular = {0.2, 0.2, 0.2};
+    scene.lights = {key, fill};
+    return scene;
+}
+
+// FNV-1a over the 8-bit image and the coverage: what the reference shows.
+quint64 imageHash(const ReferenceImage &image)
+{
+    quint64 h = 1469598103934665603ull;
+    const auto add = [&h](std::uint8_t byte) { h = (h ^ byte) * 1099511628211ull; };
+    for (std::uint8_t byte : image.toImage({0.1, 0.2, 0.3}).bytes)
+        add(byte);
+    for (std::uint8_t covered : image.coverage)
+        add(covered);
+    return h;
+}
+
 int coveredInRow(const ReferenceImage &image, int y)
 {
     int n = 0;
@@ -72,6 +110,33 @@ class TestAnalyticRaycast : public QObject
     Q_OBJECT
 
 private slots:
+    // The images the analytic surfaces gave before their ray casting became
+    // the triangle meshes' one path (MeshRaycaster): the same rays, hits
+    // and shading must give them bit for bit in 8 bits.
+    void imagesUnchangedByTheOnePath_data()
+    {
+        QTest::addColumn<int>("shader");
+        QTest::addColumn<quint64>("expected");
+        QTest::newRow("phong") << 0 << quint64(4392566288901443761ull);
+        QTest::newRow("blinn-phong") << 1 << quint64(10322002333853613776ull);
+        QTest::newRow("normals") << 2 << quint64(193999887573511982ull);
+        QTest::newRow("normal-matrix + attenuation") << 3 << quint64(1718540188898440815ull);
+    }
+    void imagesUnchangedByTheOnePath()
+    {
+        QFETCH(int, shader);
+        QFETCH(quint64, expected);
+        const ReferenceShader shaders[] = {
+            ReferenceShader(ReferenceShading::Phong), ReferenceShader(ReferenceShading::BlinnPhong),
+            ReferenceShader(ReferenceShading::Normals),
+            ReferenceShader(ReferenceShading::Phong,
+                            std::vector<MistakeVariant>{{ShaderMistake::NormalMatrix, 0},
+                                                        {ShaderMistake::Attenuation, 0}})};
+        const Result<ReferenceImage> image = raycastScene(mixedScene(), 96, 72, shaders[shader]);
+        QVERIFY2(image, qPrintable(image.error()));
+        QCOMPARE(imageHash(*image), expected);
+    }
+
     void sphereCentrePixel()
     {
         // 101×101: pixel (50, 50) is sampled at ndc (0, 0), straight down -Z.

@@ -5,7 +5,7 @@
 // show is listed as undetectable.
 #include "MistakeScenes.h"
 #include "core/check/MistakeDiagnosis.h"
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 
 #include <QRandomGenerator>
 #include <QTest>

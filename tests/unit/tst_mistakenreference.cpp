@@ -3,7 +3,7 @@
 // show in a scene (normal-matrix under uniform scale) changes nothing there.
 #include "MistakeScenes.h"
 #include "core/check/ShaderMistake.h"
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 
 #include <QTest>
 

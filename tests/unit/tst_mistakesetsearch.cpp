@@ -5,7 +5,7 @@
 // no set that explains it.
 #include "MistakeScenes.h"
 #include "core/check/MistakeSets.h"
-#include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/MeshRaycaster.h"
 
 #include <QRandomGenerator>
 #include <QTest>

@@ -1,11 +1,8 @@
 #include "core/reference/AnalyticRaycaster.h"
 
-#include "core/view/ObjectMatrices.h"
 #include "core/reference/AnalyticShapes.h"
 #include "core/reference/PhongReference.h"
-#include "core/reference/ReferenceSample.h"
 
-#include <QCoreApplication>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,11 +10,6 @@
 #include <vector>
 
 namespace phonglab {
-
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct AnalyticRaycasterWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::AnalyticRaycaster)
-};
 
 namespace {
 
@@ -106,114 +98,6 @@ int rootsInInterval(const Coefficients &c, int degree, double lo, double hi, dou
     if (valueA == 0.0 && (count == 0 || roots[count - 1] != a))
         roots[count++] = a;
     return count;
-}
-
-// --- Scene preparation -------------------------------------------------------
-
-using Surface = AnalyticShape;
-
-// Everything one object needs per ray, computed once per image.
-struct PreparedObject {
-    Surface surface = Surface::Sphere;
-    glm::dmat4 modelView{1.0};
-    glm::dmat3 normalMatrix{1.0};
-    glm::dmat4 model{1.0};
-    glm::dmat3 inverseLinear{1.0}; // camera-space directions -> object space
-    glm::dvec3 eyeInObject{0.0};   // the camera-space origin in object space
-    const Material *material = nullptr;
-};
-
-std::optional<Surface> analyticSurfaceFor(const QString &meshAsWritten,
-                                          const QHash<QString, QString> &standIns)
-{
-    return analyticShapeFor(standIns.value(meshAsWritten, meshAsWritten));
-}
-
-Result<std::vector<PreparedObject>> prepareObjects(const Scene &scene, double aspect,
-                                                   const QHash<QString, QString> &standIns)
-{
-    const glm::dmat4 view = scene.camera.viewMatrix();
-    const glm::dmat4 projection = scene.camera.projectionMatrix(aspect);
-    std::vector<PreparedObject> prepared;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject &object = scene.objects[i];
-        const std::optional<Surface> surface = analyticSurfaceFor(object.mesh, standIns);
-        if (!surface)
-            return fail(
-                AnalyticRaycasterWords::tr("Object %1: mesh \"%2\" has no analytic surface "
-                                           "(the reference ray caster knows builtin:sphere, "
-                                           "builtin:torus and builtin:cube)")
-                    .arg(i)
-                    .arg(object.mesh));
-        const ObjectMatrices matrices =
-            ObjectMatrices::make(object.transform.matrix(), view, projection);
-        // A zero scale flattens the object to something with no defined
-        // normals; there is no meaningful reference for it, so it is left out.
-        const double det = glm::determinant(glm::dmat3(matrices.modelView));
-        if (!std::isfinite(det) || std::abs(det) < 1e-300)
-            continue;
-        const glm::dmat4 inverse = glm::inverse(matrices.modelView);
-        PreparedObject p;
-        p.surface = *surface;
-        p.modelView = matrices.modelView;
-        p.normalMatrix = matrices.normalMatrix;
-        p.model = matrices.model;
-        p.inverseLinear = glm::dmat3(inverse);
-        p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-        p.material = &object.material;
-        prepared.push_back(p);
-    }
-    return prepared;
-}
-
-struct Hit {
-    double t = std::numeric_limits<double>::infinity();
-    const PreparedObject *object = nullptr;
-    glm::dvec3 objectPoint{0.0};
-};
-
-// The nearest surface along a camera ray over all objects. Each object is
-// intersected in its own space with the ray mapped through inverse(modelView);
-// a linear map keeps the parameter t, so t stays the camera-space depth.
-Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
-               double nearPlane, double farPlane)
-{
-    Hit best;
-    for (const PreparedObject &object : objects) {
-        const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
-        const double tMax = std::min(farPlane, best.t);
-        std::optional<double> t;
-        switch (object.surface) {
-        case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
-        case Surface::Torus:
-            t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
-            break;
-        case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
-        }
-        // Strictly nearer only: on an exact tie the GPU's GL_LESS depth test
-        // keeps the object drawn first.
-        if (t && *t < best.t) {
-            best.t = *t;
-            best.object = &object;
-            best.objectPoint = ray.at(*t);
-        }
-    }
-    return best;
-}
-
-ReferenceSample shade(const Hit &hit, const Scene &scene, std::span<const CameraSpaceLight> lights,
-                      const ReferenceShader &shader)
-{
-    const PreparedObject &object = *hit.object;
-    const glm::dvec3 p = hit.objectPoint;
-    // Exact normals of the analytic surface, mapped like the GPU maps vertex
-    // normals. No flip towards the viewer: phong.frag does not flip either,
-    // so an inside seen through the near plane is lit as the GPU lights it.
-    const glm::dvec3 objectNormal = object.surface == Surface::Sphere ? p
-        : object.surface == Surface::Torus ? torusNormal(p, kTorusMajorRadius)
-                                           : boxNormal(p);
-    return shadeReferenceHit({p, objectNormal, object.modelView, object.normalMatrix, object.model},
-                             *object.material, scene.ambient, lights, shader);
 }
 
 } // namespace
@@ -348,46 +232,6 @@ ReferenceShading idealShadingFor(ShadingMethod method)
     case ShadingMethod::Faceted: break;
     }
     return ReferenceShading::Phong;
-}
-
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                    const QHash<QString, QString> &standIns)
-{
-    return raycastScene(scene, width, height, ReferenceShading::Phong, standIns);
-}
-
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                    const ReferenceShader &shader,
-                                    const QHash<QString, QString> &standIns)
-{
-    if (width <= 0 || height <= 0)
-        return fail(AnalyticRaycasterWords::tr("Invalid reference image size %1x%2")
-                        .arg(width)
-                        .arg(height));
-    const Result<std::vector<PreparedObject>> objects =
-        prepareObjects(scene, double(width) / double(height), standIns);
-    if (!objects)
-        return fail(objects.error());
-
-    const std::vector<CameraSpaceLight> lights = enabledCameraSpaceLights(scene, shader);
-
-    ReferenceImage image(width, height);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const Ray ray = cameraRay(scene.camera, x, y, width, height);
-            const Hit hit =
-                nearestHit(*objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
-            if (!hit.object)
-                continue;
-            const std::size_t i = image.index(x, y);
-            image.coverage[i] = 1;
-            image.depth[i] = hit.t;
-            const ReferenceSample sample = shade(hit, scene, lights, shader);
-            image.color[i] = sample.color;
-            image.specular[i] = sample.specular;
-        }
-    }
-    return image;
 }
 
 } // namespace phonglab

@@ -1,10 +1,10 @@
 #pragma once
-#include "core/view/Camera.h"
-#include "core/support/Result.h"
-#include "core/scene/Scene.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/scene/Scene.h"
+#include "core/support/Result.h"
+#include "core/view/Camera.h"
 
 #include <QHash>
 #include <QString>
@@ -14,22 +14,12 @@
 
 namespace phonglab {
 
-// The CPU ground truth for a whole scene: every object is ray-cast against the
-// analytic surface its builtin mesh approximates ("builtin:sphere" is the unit
-// sphere, "builtin:torus" the torus of AnalyticShapes.h), then shaded with
-// phongIntensity() at the exact hit point and exact normal. Rays follow the
-// GPU's conventions (pixel centres, vertical fov, near/far clip, normals by
-// the normal matrix, no back-face culling), so a correct GPU render differs
-// from this only by tessellation, interpolation and float precision.
-//
-// Objects with any other mesh have no analytic surface: the result is a
-// failure naming the mesh.
-//
-// `standIns` maps a mesh as written in the scene (e.g. a Blender cube's file
-// path) to the builtin whose analytic surface it should be compared with
-// ("builtin:cube" is the box [-1, 1]³ with its face normals).
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                    const QHash<QString, QString> &standIns = {});
+// The analytic surfaces the builtins approximate ("builtin:sphere" is the
+// unit sphere, "builtin:torus" the torus of AnalyticShapes.h, "builtin:cube"
+// the box [-1, 1]³) and their exact intersections and normals, the camera
+// ray through a pixel, and what a hit is shaded with (ReferenceShader). The
+// scene itself is ray-cast in one place, MeshRaycaster.h, where an object is
+// either one of these surfaces or a triangle mesh.
 
 // What the reference computes at each hit point. Gouraud and flat shading
 // have no per-pixel analytic counterpart: their result depends on the mesh's
@@ -90,11 +80,6 @@ struct ReferenceShader {
         return std::nullopt;
     }
 };
-
-// As above, shaded with `shader` instead of exact Phong.
-Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
-                                    const ReferenceShader &shader,
-                                    const QHash<QString, QString> &standIns = {});
 
 // A ray o + t·d; d need not be unit length (t then keeps its meaning across a
 // change of coordinates, which is what lets camera-space depth be compared

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/scene/MeshData.h"
 #include "core/reference/AnalyticRaycaster.h" // Ray
+#include "core/scene/MeshData.h"
 
 #include <glm/glm.hpp>
 

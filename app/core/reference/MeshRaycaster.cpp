@@ -1,11 +1,11 @@
 #include "core/reference/MeshRaycaster.h"
 
-#include "core/view/ObjectMatrices.h"
-#include "core/support/ParallelRows.h"
 #include "core/reference/AnalyticShapes.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/ReferenceSample.h"
 #include "core/reference/SceneHits.h"
+#include "core/support/ParallelRows.h"
+#include "core/view/ObjectMatrices.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -98,7 +98,7 @@ Result<> prepareObjects(const Scene &scene,
         const ObjectMatrices matrices =
             ObjectMatrices::make(object.transform.matrix(), view, projection);
         // A zero scale flattens the object to something with no defined
-        // normals; as in raycastScene() there is no reference for it.
+        // normals; there is no reference for it.
         const double det = glm::determinant(glm::dmat3(matrices.modelView));
         if (!std::isfinite(det) || std::abs(det) < 1e-300)
             continue;
@@ -152,6 +152,10 @@ glm::dvec3 interpolatedNormal(const MeshData &mesh, const TriangleHit &hit)
 
 // The nearest surface along a camera ray over all objects, each intersected
 // in its own space; a linear map keeps t, so t stays the camera depth.
+// Without kSurface only t and the object are found: where surfaces are,
+// not how they look (SceneDepthCaster), which spares the normal's
+// interpolation. Same objects, order and tie rule either way, so the same t.
+template <bool kSurface>
 Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
                double nearPlane, double farPlane)
 {
@@ -160,14 +164,11 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
         const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
         const double tMax = std::min(farPlane, best.t);
         std::optional<double> t;
-        glm::dvec3 normal(0.0);
         std::optional<TriangleHit> triangleHit;
         switch (object.surface) {
         case Surface::Mesh:
-            if ((triangleHit = object.bvh->closestHit(ray, nearPlane, tMax))) {
+            if ((triangleHit = object.bvh->closestHit(ray, nearPlane, tMax)))
                 t = triangleHit->t;
-                normal = interpolatedNormal(*object.mesh, *triangleHit);
-            }
             break;
         case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
         case Surface::Torus:
@@ -181,45 +182,21 @@ Hit nearestHit(const std::vector<PreparedObject> &objects, const glm::dvec3 &cam
             continue;
         best.t = *t;
         best.object = &object;
-        best.objectPoint = ray.at(*t);
-        best.triangle = triangleHit ? std::int32_t(triangleHit->triangle) : -1;
-        best.barycentric = triangleHit ? triangleHit->barycentric : glm::dvec3(0.0);
-        switch (object.surface) {
-        case Surface::Mesh: best.objectNormal = normal; break;
-        case Surface::Sphere: best.objectNormal = best.objectPoint; break;
-        case Surface::Torus:
-            best.objectNormal = torusNormal(best.objectPoint, kTorusMajorRadius);
-            break;
-        case Surface::Box: best.objectNormal = boxNormal(best.objectPoint); break;
+        if constexpr (kSurface) {
+            best.objectPoint = ray.at(*t);
+            best.triangle = triangleHit ? std::int32_t(triangleHit->triangle) : -1;
+            best.barycentric = triangleHit ? triangleHit->barycentric : glm::dvec3(0.0);
+            switch (object.surface) {
+            case Surface::Mesh:
+                best.objectNormal = interpolatedNormal(*object.mesh, *triangleHit);
+                break;
+            case Surface::Sphere: best.objectNormal = best.objectPoint; break;
+            case Surface::Torus:
+                best.objectNormal = torusNormal(best.objectPoint, kTorusMajorRadius);
+                break;
+            case Surface::Box: best.objectNormal = boxNormal(best.objectPoint); break;
+            }
         }
-    }
-    return best;
-}
-
-// The nearest hit's depth alone: nearestHit() without the hit point and the
-// normal, which only shading needs. Same objects, order and tie rule, so the
-// same t as nearestHit().t.
-double nearestDepth(const std::vector<PreparedObject> &objects, const glm::dvec3 &cameraDirection,
-                    double nearPlane, double farPlane)
-{
-    double best = std::numeric_limits<double>::infinity();
-    for (const PreparedObject &object : objects) {
-        const Ray ray{object.eyeInObject, object.inverseLinear * cameraDirection};
-        const double tMax = std::min(farPlane, best);
-        std::optional<double> t;
-        switch (object.surface) {
-        case Surface::Mesh:
-            if (const std::optional<TriangleHit> hit = object.bvh->closestHit(ray, nearPlane, tMax))
-                t = hit->t;
-            break;
-        case Surface::Sphere: t = intersectUnitSphere(ray, nearPlane, tMax); break;
-        case Surface::Torus:
-            t = intersectTorus(ray, nearPlane, tMax, kTorusMajorRadius, kTorusMinorRadius);
-            break;
-        case Surface::Box: t = intersectUnitBox(ray, nearPlane, tMax); break;
-        }
-        if (t && *t < best)
-            best = *t;
     }
     return best;
 }
@@ -231,7 +208,7 @@ void castRow(const Scene &scene, const std::vector<PreparedObject> &objects, Sce
     for (int x = 0; x < hits.width; ++x) {
         const Ray ray = cameraRay(scene.camera, x, y, hits.width, hits.height);
         const Hit hit =
-            nearestHit(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
+            nearestHit<true>(objects, ray.direction, scene.camera.nearPlane, scene.camera.farPlane);
         if (!hit.object)
             continue;
         ReferenceHit &out = hits.hits[std::size_t(y) * std::size_t(hits.width) + std::size_t(x)];
@@ -290,6 +267,24 @@ Result<ReferenceImage> raycastSceneMeshes(
     return shadeSceneHits(*hits, scene, shader);
 }
 
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const ReferenceShader &shader,
+                                    const QHash<QString, QString> &standIns)
+{
+    Scene analytic = scene;
+    for (SceneObject &object : analytic.objects)
+        object.mesh = standIns.value(object.mesh, object.mesh);
+    return raycastSceneMeshes(analytic,
+                              std::vector<std::shared_ptr<const MeshData>>(analytic.objects.size()),
+                              width, height, shader);
+}
+
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const QHash<QString, QString> &standIns)
+{
+    return raycastScene(scene, width, height, ReferenceShading::Phong, standIns);
+}
+
 struct SceneDepthCaster::Objects {
     std::vector<PreparedObject> prepared;
 };
@@ -330,7 +325,7 @@ double SceneDepthCaster::depthAt(double px, double py) const
     const double ndcX = 2.0 * px / m_width - 1.0;
     const double ndcY = 1.0 - 2.0 * py / m_height;
     const glm::dvec3 direction(ndcX * m_tanHalfFov * aspect, ndcY * m_tanHalfFov, -1.0);
-    return nearestDepth(m_objects->prepared, direction, m_nearPlane, m_farPlane);
+    return nearestHit<false>(m_objects->prepared, direction, m_nearPlane, m_farPlane).t;
 }
 
 } // namespace phonglab

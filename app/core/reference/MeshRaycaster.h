@@ -1,9 +1,10 @@
 #pragma once
-#include "core/scene/MeshData.h"
-#include "core/scene/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
 
+#include <QHash>
 #include <QString>
 #include <functional>
 #include <memory>
@@ -23,7 +24,7 @@ namespace phonglab {
 // mapped normal, normalised per fragment), so against a correct GPU render
 // only float precision and rasterisation differ, never the tessellation.
 //
-// Same conventions as raycastScene(): cameraRay() pixel centres, the
+// The conventions: cameraRay() pixel centres (AnalyticRaycaster.h), the
 // near/far clip on camera depth, each object intersected in its own space
 // with the camera ray mapped by inverse(modelView) (so t stays the camera
 // depth), the nearest hit over all objects (an exact tie keeps the earlier
@@ -38,7 +39,7 @@ namespace phonglab {
 //
 // objectMeshes has one entry per scene object, in the same order: the
 // triangle mesh to ray-cast, or null to use the analytic surface of the
-// object's builtin ("builtin:sphere|torus|cube", as raycastScene() does).
+// object's builtin ("builtin:sphere|torus|cube").
 // A size mismatch, an invalid mesh, or a null entry for a non-builtin mesh
 // gives nullopt and *error. Objects sharing one MeshData pointer share one
 // BVH, built once per call.
@@ -51,6 +52,20 @@ namespace phonglab {
 Result<ReferenceImage> raycastSceneMeshes(
     const Scene &scene, const std::vector<std::shared_ptr<const MeshData>> &objectMeshes, int width,
     int height, const ReferenceShader &shader, const std::function<bool(double)> &progress = {});
+
+// A scene of builtins alone, each ray-cast against its analytic surface
+// (AnalyticRaycaster.h) by raycastSceneMeshes() with no triangle meshes:
+// exact normals at exact hit points, so a correct GPU render differs from it
+// only by tessellation, interpolation and float precision. An object with
+// any other mesh makes it fail, naming the mesh. `standIns` maps a mesh as
+// written in the scene (a Blender cube's file path) to the builtin whose
+// surface stands in for it ("builtin:cube").
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const ReferenceShader &shader,
+                                    const QHash<QString, QString> &standIns = {});
+// The same with exact Phong.
+Result<ReferenceImage> raycastScene(const Scene &scene, int width, int height,
+                                    const QHash<QString, QString> &standIns = {});
 
 // Geometry only: the camera depth of the nearest surface along the ray
 // through any point of the image, with the objects, meshes, conventions and

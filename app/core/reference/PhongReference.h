@@ -1,8 +1,8 @@
 #pragma once
-#include "core/scene/Material.h"
-#include "core/scene/PointLight.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
+#include "core/scene/Material.h"
+#include "core/scene/PointLight.h"
 
 #include <glm/glm.hpp>
 #include <span>

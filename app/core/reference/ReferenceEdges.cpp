@@ -1,8 +1,8 @@
 #include "core/reference/ReferenceEdges.h"
 
 #include "core/check/ImageMetrics.h"
-#include "core/support/ParallelRows.h"
 #include "core/reference/MeshRaycaster.h"
+#include "core/support/ParallelRows.h"
 
 #include <QCoreApplication>
 #include <algorithm>

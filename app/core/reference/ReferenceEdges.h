@@ -1,8 +1,8 @@
 #pragma once
-#include "core/scene/MeshData.h"
-#include "core/support/Result.h"
-#include "core/scene/Scene.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/scene/MeshData.h"
+#include "core/scene/Scene.h"
+#include "core/support/Result.h"
 
 #include <QString>
 #include <cstdint>

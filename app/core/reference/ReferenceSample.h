@@ -1,8 +1,8 @@
 #pragma once
-#include "core/scene/Material.h"
-#include "core/scene/Scene.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/PhongReference.h"
+#include "core/scene/Material.h"
+#include "core/scene/Scene.h"
 
 #include <glm/glm.hpp>
 #include <span>

@@ -1,8 +1,8 @@
 #include "core/reference/SceneHits.h"
 
 #include "FaceGeometry.h"
-#include "core/support/ParallelRows.h"
 #include "core/reference/ReferenceSample.h"
+#include "core/support/ParallelRows.h"
 
 namespace phonglab {
 
