@@ -317,17 +317,6 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
-    <name>phonglab::AnalyticRaycaster</name>
-    <message>
-        <source>Object %1: mesh &quot;%2&quot; has no analytic surface (the reference ray caster knows builtin:sphere, builtin:torus and builtin:cube)</source>
-        <translation>Objekt %1: Mesh &quot;%2&quot; hat keine analytische Oberfläche (der Referenz-Raycaster kennt builtin:sphere, builtin:torus und builtin:cube)</translation>
-    </message>
-    <message>
-        <source>Invalid reference image size %1x%2</source>
-        <translation>Ungültige Größe des Referenzbilds %1x%2</translation>
-    </message>
-</context>
-<context>
     <name>phonglab::BenchEngine</name>
     <message>
         <source>the bench has no OpenGL context (initialize() failed or was not called)</source>
@@ -3121,6 +3110,126 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>uniform</source>
         <translation>Uniform-Variable</translation>
+    </message>
+    <message>
+        <source>the vertex position, object coordinates</source>
+        <translation>die Vertex-Position, Objektkoordinaten</translation>
+    </message>
+    <message>
+        <source>the vertex normal, object coordinates</source>
+        <translation>die Vertex-Normale, Objektkoordinaten</translation>
+    </message>
+    <message>
+        <source>the model matrix (object to world)</source>
+        <translation>die Model-Matrix (Objekt- zu Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <source>the view matrix (world to camera)</source>
+        <translation>die View-Matrix (Welt- zu Kamerakoordinaten)</translation>
+    </message>
+    <message>
+        <source>the projection matrix (camera to clip)</source>
+        <translation>die Projektionsmatrix (Kamera- zu Clip-Koordinaten)</translation>
+    </message>
+    <message>
+        <source>the model-view matrix (object to camera)</source>
+        <translation>die Model-View-Matrix (Objekt- zu Kamerakoordinaten)</translation>
+    </message>
+    <message>
+        <source>the model-view-projection matrix (object to clip)</source>
+        <translation>die Model-View-Projection-Matrix (Objekt- zu Clip-Koordinaten)</translation>
+    </message>
+    <message>
+        <source>the view-projection matrix (world to clip)</source>
+        <translation>die View-Projection-Matrix (Welt- zu Clip-Koordinaten)</translation>
+    </message>
+    <message>
+        <source>the normal matrix, inverse transpose of the model-view matrix</source>
+        <translation>die Normalenmatrix, Inverse der Transponierten der Model-View-Matrix</translation>
+    </message>
+    <message>
+        <source>the inverse transpose of the model matrix</source>
+        <translation>die Inverse der Transponierten der Model-Matrix</translation>
+    </message>
+    <message>
+        <source>the camera&apos;s position, world coordinates</source>
+        <translation>die Position der Kamera, Weltkoordinaten</translation>
+    </message>
+    <message>
+        <source>the light&apos;s position, world coordinates</source>
+        <translation>die Position des Lichts, Weltkoordinaten</translation>
+    </message>
+    <message>
+        <source>the number of lights</source>
+        <translation>die Anzahl der Lichter</translation>
+    </message>
+    <message>
+        <source>the light&apos;s diffuse intensity Id</source>
+        <translation>die diffuse Intensität Id des Lichts</translation>
+    </message>
+    <message>
+        <source>the light&apos;s specular intensity Is</source>
+        <translation>die spekulare Intensität Is des Lichts</translation>
+    </message>
+    <message>
+        <source>the light&apos;s attenuation constants (c1, c2, c3)</source>
+        <translation>die Abschwächungskonstanten (c1, c2, c3) des Lichts</translation>
+    </message>
+    <message>
+        <source>the constant attenuation c1</source>
+        <translation>die konstante Abschwächung c1</translation>
+    </message>
+    <message>
+        <source>the linear attenuation c2</source>
+        <translation>die lineare Abschwächung c2</translation>
+    </message>
+    <message>
+        <source>the quadratic attenuation c3</source>
+        <translation>die quadratische Abschwächung c3</translation>
+    </message>
+    <message>
+        <source>the ambient intensity Ia</source>
+        <translation>die ambiente Intensität Ia</translation>
+    </message>
+    <message>
+        <source>the ambient reflection ka</source>
+        <translation>der ambiente Materialkoeffizient ka</translation>
+    </message>
+    <message>
+        <source>the diffuse reflection kd</source>
+        <translation>der diffuse Materialkoeffizient kd</translation>
+    </message>
+    <message>
+        <source>the specular reflection ks</source>
+        <translation>der spekulare Materialkoeffizient ks</translation>
+    </message>
+    <message>
+        <source>the shininess n</source>
+        <translation>der Glanzexponent n</translation>
+    </message>
+    <message>
+        <source>the ambient product Ia·ka</source>
+        <translation>das ambiente Produkt Ia·ka</translation>
+    </message>
+    <message>
+        <source>the light&apos;s diffuse product Id·kd</source>
+        <translation>das diffuse Produkt Id·kd des Lichts</translation>
+    </message>
+    <message>
+        <source>the light&apos;s specular product Is·ks</source>
+        <translation>das spekulare Produkt Is·ks des Lichts</translation>
+    </message>
+    <message>
+        <source>the light&apos;s colour, both Id and Is</source>
+        <translation>die Farbe des Lichts, Id und Is zugleich</translation>
+    </message>
+    <message>
+        <source>the material&apos;s colour, both ka and kd</source>
+        <translation>die Farbe des Materials, ka und kd zugleich</translation>
+    </message>
+    <message>
+        <source>the light&apos;s position, camera coordinates</source>
+        <translation>die Position des Lichts, Kamerakoordinaten</translation>
     </message>
 </context>
 <context>

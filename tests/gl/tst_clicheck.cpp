@@ -65,6 +65,27 @@ class TestCliCheck : public QObject
     Q_OBJECT
 
 private slots:
+    // The few words that say what a binding means come out in the run's
+    // language like the sentence around them (they stayed English once).
+    void bindingDescriptionsSpeakTheRunsLanguage()
+    {
+        const QStringList args{QStringLiteral("check"),  checkScene(),
+                               QStringLiteral("--size"), kSize,
+                               QStringLiteral("--bind"), QStringLiteral("kd=model")};
+        const ProcessRun english =
+            runPhonglab(args + QStringList{QStringLiteral("--lang"), QStringLiteral("en")});
+        const ProcessRun german =
+            runPhonglab(args + QStringList{QStringLiteral("--lang"), QStringLiteral("de")});
+        const QString en = QString::fromUtf8(english.out) + english.err;
+        const QString de = QString::fromUtf8(german.out) + german.err;
+        QVERIFY2(en.contains(QStringLiteral("cannot hold the model matrix (object to world)")),
+                 qPrintable(en));
+        QVERIFY2(de.contains(QStringLiteral("die Model-Matrix (Objekt- zu Weltkoordinaten)")),
+                 qPrintable(de));
+        QVERIFY2(!de.contains(QStringLiteral("the model matrix")), qPrintable(de));
+        QCOMPARE(german.exitCode, english.exitCode);
+    }
+
     // Issue 33: under a German locale the verdict and the diagnosis are
     // German, in the slide's words; --json keeps its keys and key values.
     void germanLocaleSpeaksGermanButJsonKeepsItsKeys()

@@ -57,36 +57,71 @@ constexpr std::array kKeys = {
 };
 
 constexpr std::array kDescriptions = {
-    std::pair{M::Position, "the vertex position, object coordinates"},
-    std::pair{M::Normal, "the vertex normal, object coordinates"},
-    std::pair{M::Model, "the model matrix (object to world)"},
-    std::pair{M::View, "the view matrix (world to camera)"},
-    std::pair{M::Projection, "the projection matrix (camera to clip)"},
-    std::pair{M::ModelView, "the model-view matrix (object to camera)"},
-    std::pair{M::ModelViewProjection, "the model-view-projection matrix (object to clip)"},
-    std::pair{M::ViewProjection, "the view-projection matrix (world to clip)"},
-    std::pair{M::NormalMatrix, "the normal matrix, inverse transpose of the model-view matrix"},
-    std::pair{M::ModelNormalMatrix, "the inverse transpose of the model matrix"},
-    std::pair{M::Eye, "the camera's position, world coordinates"},
-    std::pair{M::LightPosition, "the light's position, world coordinates"},
-    std::pair{M::LightCount, "the number of lights"},
-    std::pair{M::LightDiffuse, "the light's diffuse intensity Id"},
-    std::pair{M::LightSpecular, "the light's specular intensity Is"},
-    std::pair{M::Attenuation, "the light's attenuation constants (c1, c2, c3)"},
-    std::pair{M::C1, "the constant attenuation c1"},
-    std::pair{M::C2, "the linear attenuation c2"},
-    std::pair{M::C3, "the quadratic attenuation c3"},
-    std::pair{M::Ambient, "the ambient intensity Ia"},
-    std::pair{M::Ka, "the ambient reflection ka"},
-    std::pair{M::Kd, "the diffuse reflection kd"},
-    std::pair{M::Ks, "the specular reflection ks"},
-    std::pair{M::Shininess, "the shininess n"},
-    std::pair{M::AmbientProduct, "the ambient product Ia·ka"},
-    std::pair{M::DiffuseProduct, "the light's diffuse product Id·kd"},
-    std::pair{M::SpecularProduct, "the light's specular product Is·ks"},
-    std::pair{M::LightColor, "the light's colour, both Id and Is"},
-    std::pair{M::MaterialColor, "the material's colour, both ka and kd"},
-    std::pair{M::LightPositionCamera, "the light's position, camera coordinates"},
+    std::pair{
+        M::Position,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the vertex position, object coordinates")},
+    std::pair{
+        M::Normal,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the vertex normal, object coordinates")},
+    std::pair{M::Model,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the model matrix (object to world)")},
+    std::pair{M::View,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the view matrix (world to camera)")},
+    std::pair{
+        M::Projection,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the projection matrix (camera to clip)")},
+    std::pair{
+        M::ModelView,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the model-view matrix (object to camera)")},
+    std::pair{M::ModelViewProjection,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "the model-view-projection matrix (object to clip)")},
+    std::pair{M::ViewProjection,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "the view-projection matrix (world to clip)")},
+    std::pair{M::NormalMatrix,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "the normal matrix, inverse transpose of the model-view matrix")},
+    std::pair{
+        M::ModelNormalMatrix,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the inverse transpose of the model matrix")},
+    std::pair{
+        M::Eye,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the camera's position, world coordinates")},
+    std::pair{
+        M::LightPosition,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's position, world coordinates")},
+    std::pair{M::LightCount, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the number of lights")},
+    std::pair{M::LightDiffuse,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's diffuse intensity Id")},
+    std::pair{M::LightSpecular,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's specular intensity Is")},
+    std::pair{M::Attenuation,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "the light's attenuation constants (c1, c2, c3)")},
+    std::pair{M::C1, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the constant attenuation c1")},
+    std::pair{M::C2, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the linear attenuation c2")},
+    std::pair{M::C3, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the quadratic attenuation c3")},
+    std::pair{M::Ambient,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the ambient intensity Ia")},
+    std::pair{M::Ka, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the ambient reflection ka")},
+    std::pair{M::Kd, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the diffuse reflection kd")},
+    std::pair{M::Ks, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the specular reflection ks")},
+    std::pair{M::Shininess, QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the shininess n")},
+    std::pair{M::AmbientProduct,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the ambient product Ia·ka")},
+    std::pair{M::DiffuseProduct,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's diffuse product Id·kd")},
+    std::pair{M::SpecularProduct,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's specular product Is·ks")},
+    std::pair{M::LightColor,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's colour, both Id and Is")},
+    std::pair{
+        M::MaterialColor,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the material's colour, both ka and kd")},
+    std::pair{
+        M::LightPositionCamera,
+        QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's position, camera coordinates")},
 };
 
 // Names as students write them, normalised (normalizedName()): lower case,
@@ -353,7 +388,12 @@ QStringList bindingMeaningKeys()
 
 QString bindingMeaningDescription(BindingMeaning meaning)
 {
-    return enumName(kDescriptions, meaning);
+    // Marked for lupdate in the table, translated here: the table's
+    // entries are constant, the run's language is not.
+    for (const auto &[m, text] : kDescriptions)
+        if (m == meaning)
+            return QCoreApplication::translate("phonglab::ShaderBindings", text);
+    return {};
 }
 
 bool isPerLight(BindingMeaning meaning)

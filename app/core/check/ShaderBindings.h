@@ -57,7 +57,8 @@ inline constexpr std::size_t kBindingMeaningCount =
 QString bindingMeaningKey(BindingMeaning meaning);
 std::optional<BindingMeaning> bindingMeaningFromKey(const QString &key);
 QStringList bindingMeaningKeys(); // in the order of the enum
-// A few words for a person ("the light's position, world coordinates").
+// A few words for a person, in the run's language ("the light's position,
+// world coordinates").
 QString bindingMeaningDescription(BindingMeaning meaning);
 bool isPerLight(BindingMeaning meaning); // one value per light (LightCount is not)
 bool isVertexInput(BindingMeaning meaning);
