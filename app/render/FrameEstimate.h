@@ -12,7 +12,7 @@ struct LentContext;
 inline constexpr double kBlindFrameMs = 1000.0;
 
 // How long one frame of `pixelSize` would take with `renderer`'s program, as
-// far as telling it from `limitMs` needs (issue 31, C): a frame of a 16th
+// far as telling it from `limitMs` needs: a frame of a 16th
 // of its area is drawn into the bound framebuffer and timed to glFinish.
 // Over the limit already, or under it even scaled by the area, that settles
 // it (its time, a lower bound, or the scaled time, an upper bound, is
@@ -26,7 +26,7 @@ double estimateFrameMs(Renderer &renderer, const QSize &pixelSize, double limitM
 
 namespace phonglab {
 
-// A new program's trial in the view's lent context (issue 41): a probe of a
+// A new program's trial in the view's lent context: a probe of a
 // 256th of the frame's area first, which costs little more than the draw
 // itself. Where even that probe scaled by the area promises the frame
 // cannot take longer than kBlindFrameMs and the lender offered its next

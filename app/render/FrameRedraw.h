@@ -3,8 +3,8 @@
 #include "Renderer.h"
 #include "ShaderSource.h"
 #include "UniformSnapshot.h"
-#include "core/support/Result.h"
 #include "core/scene/Scene.h"
+#include "core/support/Result.h"
 #include "mesh/import/SceneMeshes.h"
 
 #include <QImage>
@@ -27,7 +27,7 @@ struct FrameRecipe {
     QSize size;                          // device pixels
 };
 
-// The live check's copy of the window's frame (issue 30, D), drawn in a
+// The live check's copy of the window's frame, drawn in a
 // context of its own on the checker's thread, into a single-sampled target.
 // Single-sampled because the exact image is point-sampled: the window's 4
 // samples blend every silhouette with the background and cost a correct

@@ -13,7 +13,7 @@ namespace phonglab {
 class WarmUpDraw;
 
 // The whole frame a borrower may show in the lender's window before it
-// gives the context back (issue 41: the frame after a new program's trial
+// gives the context back (the frame after a new program's trial
 // is the one the view would draw next, and drawing it there spares the GUI
 // thread a second draw and the hand-overs). The lender offers one only when
 // nothing it would draw differs: the borrower draws `pixels` with `draw`,

@@ -34,7 +34,7 @@ Result<CheckReference> makeCheckReference(
     for (std::size_t i = 0; i < out.compared.size(); ++i)
         out.compared[i] = out.compared[i] && out.exact.coverage[i];
     if (out.shader.shading == ReferenceShading::Phong) {
-        // Every form of every mistake, each its own image (issue 30, E).
+        // Every form of every mistake, each its own image.
         const std::vector<MistakeVariant> variants = allMistakeVariants();
         for (std::size_t m = 0; m < variants.size(); ++m) {
             if (progress && !progress(0.7 + 0.3 * double(m) / double(variants.size())))

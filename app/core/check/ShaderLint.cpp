@@ -1,518 +1,153 @@
 #include "core/check/ShaderLint.h"
 
-#include "core/check/GlslTokens.h"
-
-#include <QCoreApplication>
+#include "core/check/ShaderLintWalk.h"
 
 #include <algorithm>
-#include <string_view>
 #include <tuple>
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct ShaderLintWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::ShaderLint)
-};
+namespace lint {
 
-namespace {
-
-// Bounds that keep arbitrary bytes from exhausting the stack or the time: a
-// shader past them is not checked at all.
-constexpr int kMaxNesting = 200; // statements in statements
-constexpr std::size_t kMaxVariables = 2000;
-
-using namespace glsl;
-
-enum class State {
-    Unset,
-    Maybe, // written on some paths only: never flagged
-    Set,
-};
-
-enum class Use {
-    Read,
-    Write,
-    None,
-};
-
-struct Variable {
-    std::string_view name;
-    int declared = 0; // its name's token: which declaration this is
-    State state = State::Unset;
-    bool output = false;
-    int loopDepth = 0; // the body depth of a loop that writes it later; 0 outside
-};
-
-struct Function {
-    std::string_view name;
-    int body = -1;               // its '{', -1 for a prototype
-    std::vector<bool> writes;    // per parameter: out or inout
-    std::vector<int> parameters; // their names' tokens
-    bool mayWriteOutputs = false;
-};
-
-class Lint
+Lint::Lint(const QByteArray &code)
+    : tokens(tokenize(code, macroWords))
+    , n(int(tokens.size()))
 {
-public:
-    explicit Lint(const QByteArray &code)
-        : tokens(tokenize(code, macroWords))
-        , n(int(tokens.size()))
-    {
-        matchBrackets();
-        readTopLevel();
-        for (Function &f : functions)
-            f.mayWriteOutputs = mayWriteOutputs(f);
+    matchBrackets();
+    readTopLevel();
+    for (Function &f : functions)
+        f.mayWriteOutputs = mayWriteOutputs(f);
+}
+
+std::vector<LintFinding> Lint::run()
+{
+    // A macro that calls a helper (`#define SHADE shade()`) may set an output unseen.
+    const bool hiddenCalls = std::any_of(functions.begin(), functions.end(), [&](auto &f) {
+        return std::find(macroWords.begin(), macroWords.end(), f.name) != macroWords.end();
+    });
+    for (const Function &f : functions) {
+        vars.clear();
+        if (f.name == "main") // outputs are checked in main() only
+            for (int o : outputs)
+                declare(o, hiddenCalls ? State::Maybe : State::Unset, true);
+        for (int p : f.parameters)
+            declare(p, State::Set, false);
+        if (f.body >= 0)
+            block(f.body, n);
     }
+    std::sort(found.begin(), found.end(), [](const LintFinding &a, const LintFinding &b) {
+        return std::pair(a.line, a.column) < std::pair(b.line, b.column);
+    });
+    return gaveUp ? std::vector<LintFinding>() : found;
+}
 
-    std::vector<LintFinding> run()
-    {
-        // A macro that calls a helper (`#define SHADE shade()`) may set an output unseen.
-        const bool hiddenCalls = std::any_of(functions.begin(), functions.end(), [&](auto &f) {
-            return std::find(macroWords.begin(), macroWords.end(), f.name) != macroWords.end();
-        });
-        for (const Function &f : functions) {
-            vars.clear();
-            if (f.name == "main") // outputs are checked in main() only
-                for (int o : outputs)
-                    declare(o, hiddenCalls ? State::Maybe : State::Unset, true);
-            for (int p : f.parameters)
-                declare(p, State::Set, false);
-            if (f.body >= 0)
-                block(f.body, n);
-        }
-        std::sort(found.begin(), found.end(), [](const LintFinding &a, const LintFinding &b) {
-            return std::pair(a.line, a.column) < std::pair(b.line, b.column);
-        });
-        return gaveUp ? std::vector<LintFinding>() : found;
-    }
-
-private:
-    const Token &tok(int i) const { return i >= 0 && i < n ? tokens[i] : none; }
-    std::string_view text(int i) const { return tok(i).text; }
-    bool is(int i, std::string_view t) const { return text(i) == t; }
-    bool opens(int i) const { return oneOf(text(i), {"(", "[", "{"}); }
-    int closeOf(int i) const { return i >= 0 && i < n && partner[i] >= 0 ? partner[i] : n; }
-
-    // The first `stop`, `;` or unmatched `}` at this bracket level from i, or end.
-    int until(int i, int end, std::string_view stop) const
-    {
-        while (i < end && !is(i, stop) && !is(i, ";") && !is(i, "}"))
-            i = opens(i) ? closeOf(i) + 1 : i + 1;
-        return std::min(i, end);
-    }
-
-    void matchBrackets()
-    {
-        partner.assign(n, -1);
-        enclosing.assign(n, -1);
-        argument.assign(n, 0);
-        const std::string_view pairs = "()[]{}";
-        std::vector<std::pair<int, int>> open; // bracket, commas so far
-        for (int i = 0; i < n; ++i) {
-            if (!open.empty())
-                std::tie(enclosing[i], argument[i]) = open.back();
-            const std::string_view t = text(i);
-            if (opens(i)) {
-                open.push_back({i, 0});
-                partner[i] = n;
-            } else if (t == "," && !open.empty()) {
-                ++open.back().second;
-            } else if (!open.empty() && oneOf(t, {")", "]", "}"})
-                       && text(open.back().first)[0] == pairs[pairs.find(t[0]) - 1]) {
-                partner[i] = open.back().first;
-                partner[open.back().first] = i;
-                open.pop_back();
-            }
+void Lint::matchBrackets()
+{
+    partner.assign(n, -1);
+    enclosing.assign(n, -1);
+    argument.assign(n, 0);
+    const std::string_view pairs = "()[]{}";
+    std::vector<std::pair<int, int>> open; // bracket, commas so far
+    for (int i = 0; i < n; ++i) {
+        if (!open.empty())
+            std::tie(enclosing[i], argument[i]) = open.back();
+        const std::string_view t = text(i);
+        if (opens(i)) {
+            open.push_back({i, 0});
+            partner[i] = n;
+        } else if (t == "," && !open.empty()) {
+            ++open.back().second;
+        } else if (!open.empty() && oneOf(t, {")", "]", "}"})
+                   && text(open.back().first)[0] == pairs[pairs.find(t[0]) - 1]) {
+            partner[i] = open.back().first;
+            partner[open.back().first] = i;
+            open.pop_back();
         }
     }
+}
 
-    // Functions, prototypes, struct names and `out` variables.
-    void readTopLevel()
-    {
-        for (int i = 0, k = 0; i < n; i = k + 1) {
-            for (k = i; k < n && !is(k, ";") && !is(k, "{") && !is(k, "}");)
-                k = is(k, "(") || is(k, "[") ? closeOf(k) + 1 : k + 1;
-            const int open = is(k - 1, ")") ? partner[k - 1] : -1;
-            const bool function = open > i && tok(open - 1).word;
-            if (is(k, "{") && function) {
-                addFunction(open, k);
-                k = closeOf(k);
-            } else if (is(k, "{")) { // a struct or an interface block, and its declarators
-                for (int s = i; s < k; ++s)
-                    if (is(s, "struct") && tok(s + 1).word)
-                        structs.push_back(text(s + 1));
-                k = until(closeOf(k) + 1, n, ";");
-            } else if (is(k, ";") && function && until(i, open, "=") == open) {
-                addFunction(open, -1);
-            } else if (is(k, ";")) {
-                declareOutputs(i, k);
-            }
+// Functions, prototypes, struct names and `out` variables.
+void Lint::readTopLevel()
+{
+    for (int i = 0, k = 0; i < n; i = k + 1) {
+        for (k = i; k < n && !is(k, ";") && !is(k, "{") && !is(k, "}");)
+            k = is(k, "(") || is(k, "[") ? closeOf(k) + 1 : k + 1;
+        const int open = is(k - 1, ")") ? partner[k - 1] : -1;
+        const bool function = open > i && tok(open - 1).word;
+        if (is(k, "{") && function) {
+            addFunction(open, k);
+            k = closeOf(k);
+        } else if (is(k, "{")) { // a struct or an interface block, and its declarators
+            for (int s = i; s < k; ++s)
+                if (is(s, "struct") && tok(s + 1).word)
+                    structs.push_back(text(s + 1));
+            k = until(closeOf(k) + 1, n, ";");
+        } else if (is(k, ";") && function && until(i, open, "=") == open) {
+            addFunction(open, -1);
+        } else if (is(k, ";")) {
+            declareOutputs(i, k);
         }
     }
+}
 
-    // `vec3 shade(in vec3 n, out float d)`: which arguments it writes, its
-    // parameters' names.
-    void addFunction(int open, int body)
-    {
-        Function f{text(open - 1), body, {}, {}};
-        for (int k = open + 1, e = 0; k < closeOf(open); k = e + 1) {
-            e = until(k, closeOf(open), ",");
-            bool writes = false;
-            int name = -1;
-            for (int m = k; m < e; m = is(m, "[") ? closeOf(m) + 1 : m + 1) {
-                writes = writes || is(m, "out") || is(m, "inout");
-                name = tok(m).word ? m : name;
-            }
-            f.writes.push_back(writes);
-            if (name >= 0)
-                f.parameters.push_back(name);
+// `vec3 shade(in vec3 n, out float d)`: which arguments it writes, its
+// parameters' names.
+void Lint::addFunction(int open, int body)
+{
+    Function f{text(open - 1), body, {}, {}};
+    for (int k = open + 1, e = 0; k < closeOf(open); k = e + 1) {
+        e = until(k, closeOf(open), ",");
+        bool writes = false;
+        int name = -1;
+        for (int m = k; m < e; m = is(m, "[") ? closeOf(m) + 1 : m + 1) {
+            writes = writes || is(m, "out") || is(m, "inout");
+            name = tok(m).word ? m : name;
         }
-        functions.push_back(f);
+        f.writes.push_back(writes);
+        if (name >= 0)
+            f.parameters.push_back(name);
     }
+    functions.push_back(f);
+}
 
-    // Whether a call of f may set an output: its body names one, or calls
-    // another function of the shader (not followed further).
-    bool mayWriteOutputs(const Function &f) const
-    {
-        for (int k = f.body + 1; f.body >= 0 && k < closeOf(f.body); ++k) {
-            const auto named = [&](int o) { return is(k, text(o)); };
-            if (std::any_of(outputs.begin(), outputs.end(), named)
-                || (tok(k).word && is(k + 1, "(") && function(text(k)) && !outputs.empty()))
-                return true;
-        }
-        return false;
+// Whether a call of f may set an output: its body names one, or calls
+// another function of the shader (not followed further).
+bool Lint::mayWriteOutputs(const Function &f) const
+{
+    for (int k = f.body + 1; f.body >= 0 && k < closeOf(f.body); ++k) {
+        const auto named = [&](int o) { return is(k, text(o)); };
+        if (std::any_of(outputs.begin(), outputs.end(), named)
+            || (tok(k).word && is(k + 1, "(") && function(text(k)) && !outputs.empty()))
+            return true;
     }
+    return false;
+}
 
-    // `out vec4 fragColor;`, `layout(location = 0) out vec4 c;`
-    void declareOutputs(int i, int semi)
-    {
-        if (is(i, "layout") && is(i + 1, "("))
-            i = closeOf(i + 1) + 1;
-        bool output = false;
-        for (; isQualifier(text(i)) || is(i, "out"); ++i)
-            output = output || is(i, "out");
-        if (output && tok(i).word)
-            declaration(i, semi, true);
-    }
+// `out vec4 fragColor;`, `layout(location = 0) out vec4 c;`
+void Lint::declareOutputs(int i, int semi)
+{
+    if (is(i, "layout") && is(i + 1, "("))
+        i = closeOf(i + 1) + 1;
+    bool output = false;
+    for (; isQualifier(text(i)) || is(i, "out"); ++i)
+        output = output || is(i, "out");
+    if (output && tok(i).word)
+        declaration(i, semi, true);
+}
 
-    // Walks the statement at i; returns where the next one starts.
-    int statement(int i, int end)
-    {
-        if (i >= end || gaveUp || nesting > kMaxNesting) {
-            gaveUp = gaveUp || i < end;
-            return end;
-        }
-        ++nesting;
-        const int next = std::max(i + 1, walk(i, end));
-        --nesting;
-        return std::min(next, end);
-    }
+const Function *Lint::function(std::string_view name) const
+{
+    for (const Function &f : functions)
+        if (f.name == name)
+            return &f;
+    return nullptr;
+}
 
-    int walk(int i, int end)
-    {
-        const std::string_view w = text(i);
-        const bool paren = is(i + 1, "(");
-        if (w == "{")
-            return block(i, end);
-        if (w == "if" && paren)
-            return ifStatement(i, end);
-        if (w == "for" && paren)
-            return forStatement(i, end);
-        if (w == "do") { // once for sure, but a break may come before the write
-            const int j = loop(i + 1, i + 1, i + 1, end);
-            if (j < end && is(j, "while") && is(j + 1, "("))
-                expression(j + 2, std::min(closeOf(j + 1), end));
-            return until(j, end, ";") + 1;
-        }
-        if ((w == "while" || w == "switch") && paren) {
-            const int close = std::min(closeOf(i + 1), end);
-            expression(i + 2, close);
-            if (w == "while")
-                return loop(close, close, close + 1, end);
-            const std::vector<Variable> before = vars; // a switch's cases may not run
-            ++condition;
-            const int next = statement(close + 1, end);
-            --condition;
-            join(before);
-            return next;
-        }
-        if (w == "case" || (w == "default" && is(i + 1, ":")))
-            return until(i, end, ":") + 1;
-        const int semi = until(i, end, ";");
-        const int type = declarationType(i);
-        if (type >= 0)
-            declaration(type, semi, false);
-        else
-            expression(i, semi);
-        return semi + 1;
-    }
-
-    int block(int i, int end)
-    {
-        const int close = std::min(closeOf(i), end);
-        const std::size_t scope = vars.size();
-        for (int j = i + 1; j < close;)
-            j = statement(j, close);
-        vars.resize(scope);
-        return close + 1;
-    }
-
-    // Written in both branches is written; in one only, maybe.
-    int ifStatement(int i, int end)
-    {
-        const int close = std::min(closeOf(i + 1), end);
-        expression(i + 2, close);
-        const std::vector<Variable> before = vars;
-        ++condition;
-        int j = statement(close + 1, end);
-        const std::vector<Variable> taken = vars;
-        vars = before;
-        if (j < end && is(j, "else"))
-            j = statement(j + 1, end);
-        --condition;
-        join(taken);
-        return j;
-    }
-
-    int forStatement(int i, int end)
-    {
-        const int close = std::min(closeOf(i + 1), end);
-        const int first = until(i + 2, close, ";");
-        const int second = until(first + 1, close, ";");
-        const std::size_t scope = vars.size();
-        const int type = declarationType(i + 2);
-        if (type >= 0)
-            declaration(type, first, false);
-        else
-            expression(i + 2, first);
-        expression(first + 1, second);
-        const int next = loop(second + 1, close, close + 1, end);
-        vars.resize(scope);
-        return next;
-    }
-
-    // A body that may run no times, or many. A variable the loop writes may
-    // be read before that write in a later round (`if (i > 0) sum += prev;
-    // prev = x;`): such a read under a condition in the body is not flagged.
-    int loop(int update, int updateEnd, int body, int end)
-    {
-        std::vector<std::string_view> written;
-        const int last = bodyEnd(body, end);
-        for (int k = update; k < last; ++k) // the update, `)`, the body
-            if (tok(k).word && !is(k - 1, ".") && use(k) == Use::Write)
-                written.push_back(text(k));
-        const std::vector<Variable> before = vars;
-        ++condition;
-        for (Variable &v : vars)
-            if (v.state == State::Unset && v.loopDepth == 0
-                && std::find(written.begin(), written.end(), v.name) != written.end())
-                v.loopDepth = condition;
-        const int next = statement(body, end);
-        expression(update, updateEnd);
-        for (std::size_t k = 0; k < before.size() && k < vars.size(); ++k)
-            vars[k].loopDepth = before[k].loopDepth;
-        --condition;
-        join(before);
-        return next;
-    }
-
-    // Where a loop body ends, or a little after (which only flags less): a
-    // block at its brace, another statement at its `;`, past any `else`.
-    int bodyEnd(int i, int end) const
-    {
-        if (is(i, "{"))
-            return std::min(closeOf(i), end);
-        do
-            i = until(i, end, ";") + 1;
-        while (i < end && is(i, "else"));
-        return std::min(i, end);
-    }
-
-    void join(const std::vector<Variable> &other)
-    {
-        vars.resize(std::min(vars.size(), other.size()));
-        for (std::size_t k = 0; k < vars.size(); ++k)
-            if (vars[k].state != other[k].state)
-                vars[k].state = State::Maybe;
-    }
-
-    // `vec3 c`, `const highp float x[2]`, `Light l`, `float[2] a`: a type
-    // word, a name, then what may follow a declared name. The type, or -1.
-    int declarationType(int i) const
-    {
-        while (isQualifier(text(i)))
-            ++i;
-        const int k = is(i + 1, "[") ? closeOf(i + 1) + 1 : i + 1;
-        const bool named = tok(i).word && tok(k).word && !isKeyword(text(i)) && !isKeyword(text(k));
-        return named && oneOf(text(k + 1), {";", ",", "=", "["}) ? i : -1;
-    }
-
-    // `vec3 a = b, c;` sets a (after reading b) and leaves c unset.
-    void declaration(int type, int semi, bool output)
-    {
-        int k = type + 1;
-        while (is(k, "["))
-            k = closeOf(k) + 1;
-        while (k < semi && tok(k).word) {
-            const int name = k++;
-            while (is(k, "["))
-                k = closeOf(k) + 1;
-            const bool initialized = is(k, "=");
-            if (initialized) {
-                const int e = until(k + 1, semi, ",");
-                if (!output)
-                    expression(k + 1, e);
-                k = e;
-            }
-            if (output)
-                outputs.push_back(name);
-            else
-                declare(name, initialized ? State::Set : State::Unset, false);
-            if (!is(k++, ","))
-                break;
-        }
-    }
-
-    void declare(int name, State state, bool output)
-    {
-        gaveUp = gaveUp || vars.size() >= kMaxVariables;
-        // A macro may write it where this scan cannot see.
-        const bool macro =
-            std::find(macroWords.begin(), macroWords.end(), text(name)) != macroWords.end();
-        vars.push_back({text(name), name, macro ? State::Maybe : state, output, 0});
-    }
-
-    void expression(int begin, int end)
-    {
-        // A helper of the shader's own may set an output (`shade(); fragColor.a = 1.0;`).
-        for (int i = begin; i < end; ++i)
-            if (tok(i).word && is(i + 1, "(") && callMayWriteOutputs(text(i)))
-                for (Variable &v : vars)
-                    if (v.output && v.state == State::Unset)
-                        v.state = State::Maybe;
-        // `x = x * 2.0` reads x before it writes it: writes count from the end.
-        std::vector<int> writes;
-        bool conditional = false; // past a `?`, `&&` or `||`: evaluated only sometimes
-        for (int i = begin; i < end; ++i) {
-            conditional = conditional || oneOf(text(i), {"?", "&&", "||"});
-            const int v = tok(i).word && !is(i - 1, ".") && !is(i + 1, "(") ? lookup(text(i)) : -1;
-            const Use u = v < 0 ? Use::None : use(i);
-            if (u == Use::Write)
-                writes.push_back(v);
-            else if (u == Use::Read)
-                read(vars[v], i, conditional);
-        }
-        for (int v : writes)
-            vars[v].state = State::Set;
-    }
-
-    // `c = `, `c.x = ` and `a[i] = ` write; `c += `, `c++` and every other
-    // mention read.
-    Use use(int i) const
-    {
-        int j = i + 1;
-        while (is(j, "[") || (is(j, ".") && tok(j + 1).word)) {
-            if (is(j, ".") && is(j + 1, "length") && is(j + 2, "("))
-                return Use::None; // an array's length reads none of its values
-            j = is(j, "[") ? closeOf(j) + 1 : j + 2;
-        }
-        if (is(i - 1, "++") || is(i - 1, "--"))
-            return Use::Read;
-        if (is(j, "="))
-            return Use::Write;
-        if ((is(i - 1, "(") || is(i - 1, ",")) && (is(j, ")") || is(j, ",")))
-            return argumentUse(i);
-        return Use::Read;
-    }
-
-    // A variable passed whole to a call: read by constructors, built-ins and
-    // `in` parameters; written by `out` and `inout` ones, and, to be safe, by
-    // a function the text does not declare (a macro, an extension).
-    Use argumentUse(int i) const
-    {
-        const int open = enclosing[i];
-        if (open < 0 || !is(open, "(") || !tok(open - 1).word)
-            return Use::Read;
-        const std::string_view callee = text(open - 1);
-        if (function(callee)) {
-            for (const Function &f : functions) // any overload
-                if (f.name == callee && argument[i] < int(f.writes.size()) && f.writes[argument[i]])
-                    return Use::Write;
-            return Use::Read;
-        }
-        const bool reads = isKeyword(callee) || isTypeName(callee) || onlyReads(callee)
-            || std::find(structs.begin(), structs.end(), callee) != structs.end();
-        return reads ? Use::Read : Use::Write;
-    }
-
-    void read(const Variable &v, int at, bool conditional)
-    {
-        if (v.state != State::Unset
-            || std::find(reported.begin(), reported.end(), v.declared) != reported.end())
-            return;
-        if (v.loopDepth > 0 && condition + int(conditional) > v.loopDepth)
-            return;
-        reported.push_back(v.declared);
-        const QString name = QString::fromUtf8(v.name.data(), qsizetype(v.name.size()));
-        const QString message = v.output
-            ? ShaderLintWords::tr(
-                "the output '%1' is read before it is written: its value is "
-                "undefined in GLSL (drivers differ: some give 0, some keep what was there)")
-            : ShaderLintWords::tr("'%1' is read before it is set: its value is undefined in GLSL "
-                                  "(drivers differ: some give 0, some keep what was there)");
-        using Kind = LintFinding::Kind;
-        found.push_back({tok(at).line, tok(at).column, name,
-                         v.output ? Kind::OutputReadBeforeWritten : Kind::ReadBeforeSet,
-                         message.arg(name)});
-    }
-
-    bool callMayWriteOutputs(std::string_view name) const
-    {
-        return std::any_of(functions.begin(), functions.end(),
-                           [&](const Function &f) { return f.name == name && f.mayWriteOutputs; });
-    }
-
-    const Function *function(std::string_view name) const
-    {
-        for (const Function &f : functions)
-            if (f.name == name)
-                return &f;
-        return nullptr;
-    }
-
-    int lookup(std::string_view name) const
-    {
-        for (int k = int(vars.size()) - 1; k >= 0; --k)
-            if (vars[k].name == name)
-                return k;
-        return -1;
-    }
-
-    std::vector<std::string_view> macroWords; // every word of a preprocessor line
-    std::vector<Token> tokens;
-    int n = 0;
-    Token none;
-    std::vector<int> partner;   // of each bracket; n for an unclosed one, -1 for others
-    std::vector<int> enclosing; // the innermost open bracket around each token, -1 for none
-    std::vector<int> argument;  // the commas before each token inside that bracket
-    std::vector<Function> functions;
-    std::vector<std::string_view> structs;
-    std::vector<int> outputs; // names of the global `out` variables
-    // The walk of one function body.
-    std::vector<Variable> vars; // in scope, innermost last
-    std::vector<int> reported;  // declarations already flagged
-    std::vector<LintFinding> found;
-    int condition = 0; // branches and loop bodies around the walk
-    int nesting = 0;
-    bool gaveUp = false;
-};
-
-} // namespace
+} // namespace lint
 
 std::vector<LintFinding> lintShader(const QByteArray &code)
 {
-    return Lint(code).run();
+    return lint::Lint(code).run();
 }
 
 } // namespace phonglab

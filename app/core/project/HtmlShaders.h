@@ -8,7 +8,7 @@
 
 namespace phonglab {
 
-// Where shaders sit in a page and its scripts (issue 42, A), read with a
+// Where shaders sit in a page and its scripts, read with a
 // real HTML5 parser (gumbo): <script> elements of any type and id, hidden
 // <textarea>s, and the JavaScript of inline scripts.
 

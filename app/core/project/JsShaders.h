@@ -8,7 +8,7 @@
 namespace phonglab {
 
 // What JavaScript says about shaders: the strings that hold one, and the
-// calls that make a program of two (issue 42, A).
+// calls that make a program of two.
 
 // A string expression whose value has `main` in it: one literal, literals
 // joined by `+`, or an array of literals joined with `.join(...)`.

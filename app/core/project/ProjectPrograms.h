@@ -11,7 +11,7 @@ namespace phonglab {
 // (initShaders, createProgramFromScripts, ShaderMaterial, ...), else by
 // names that differ only in a stage word (phong.vert + phong.frag,
 // "phong-vs" + "phong-fs"), else the one vertex and one fragment shader
-// left (issue 42, A).
+// left.
 
 struct ProjectProgram {
     QString name; // the ids' or file names' common stem; the page's name where they have none

@@ -5,7 +5,7 @@
 
 namespace phonglab {
 
-// Saving a shader back into the page or script it came from (issue 42, B):
+// Saving a shader back into the page or script it came from:
 // only the shader's bytes change. The text is escaped as its container
 // escapes it (a template literal's backslashes, backticks and ${, a
 // textarea's & and <); a shader built from several strings is never written

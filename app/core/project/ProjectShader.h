@@ -11,7 +11,7 @@ namespace phonglab {
 
 // A shader as a WebGL project holds it: in a <script> or <textarea> of an
 // HTML page, in a JavaScript string (a template literal, a concatenation,
-// an array joined), or in a file of its own (issue 42, A).
+// an array joined), or in a file of its own.
 
 enum class ProjectStage {
     Vertex,
