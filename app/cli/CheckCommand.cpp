@@ -236,8 +236,9 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     for (const ShaderDiagnostic &d : drawing.compilerMessages)
         if (d.isError() || !args.json)
             printErrLine(d.format());
-    CheckOutcome &outcome = drawing.outcome;
-    if (!drawing.drawn())
+    const bool drawn = drawing.drawn();
+    CheckOutcome outcome{std::move(drawing.outcome)}; // Error until checked
+    if (!drawn)
         return outcome;
     Result<CheckReference> made =
         makeCheckReference(sceneForCheck(scene, drawing.lightCapacity), drawing.objectMeshes,
@@ -249,7 +250,8 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     }
     *reference = std::move(*made);
     *yours = drawing.image;
-    checkDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation, args.scenePath);
+    outcome.verdict = checkDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation,
+                                   args.scenePath);
     return outcome;
 }
 
@@ -321,7 +323,8 @@ int check(const CheckArgs &args)
     }
     if (args.json) {
         printLine(
-            QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented))
+            QString::fromUtf8(
+                QJsonDocument(checkJson(outcome.verdict, outcome)).toJson(QJsonDocument::Indented))
                 .trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)

@@ -36,7 +36,7 @@ QString classRelative(const QString &path, const QString &classRoot)
     return QString(path).replace(classRoot + QLatin1Char('/'), QString());
 }
 
-void makeRelative(CheckOutcome *outcome, const QString &classRoot)
+void makeRelative(CheckFindings *outcome, const QString &classRoot)
 {
     for (ShaderDiagnostic &e : outcome->errors)
         e.file = classRelative(e.file, classRoot);
@@ -62,7 +62,6 @@ QString submissionFolder(const GradeResults &results, int submission)
 void failRow(GradeRow &row, GradeVerdict verdict, const QString &file, const QString &message)
 {
     row.verdict = verdict;
-    row.outcome.verdict = CheckOutcome::Verdict::Error;
     row.outcome.errors.push_back(inputError(file, message));
 }
 
@@ -294,12 +293,11 @@ void GradeRun::check(GradeRow &row, const GradedChildEnd &end)
         return;
     }
     const GradeSettings &settings = m_results.settings;
-    checkDrawing(&row.outcome, image, *reference, settings.toleranceSteps, settings.equation,
-                 scene.path);
-    if (row.outcome.verdict == CheckOutcome::Verdict::Error)
+    const CheckOutcome::Verdict verdict = checkDrawing(
+        &row.outcome, image, *reference, settings.toleranceSteps, settings.equation, scene.path);
+    if (verdict == CheckOutcome::Verdict::Error)
         return;
-    row.verdict = row.outcome.verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass
-                                                                     : GradeVerdict::Fail;
+    row.verdict = verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass : GradeVerdict::Fail;
     const PhongEquation equation = row.outcome.report.equation;
     row.exactImage = exactImageFor(row.scene, enabledLights(checked), equation, *reference);
     const QString heatmap =

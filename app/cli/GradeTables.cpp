@@ -40,6 +40,19 @@ bool checked(const GradeRow &row)
     return row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
 }
 
+// The check's verdict the row's stands for: a timeout or a crash checked nothing.
+CheckOutcome::Verdict checkVerdict(GradeVerdict verdict)
+{
+    switch (verdict) {
+    case GradeVerdict::Pass: return CheckOutcome::Verdict::Pass;
+    case GradeVerdict::Fail: return CheckOutcome::Verdict::Fail;
+    case GradeVerdict::Error:
+    case GradeVerdict::Timeout:
+    case GradeVerdict::Crash: break;
+    }
+    return CheckOutcome::Verdict::Error;
+}
+
 QString psnrText(const GradeRow &row)
 {
     if (!checked(row))
@@ -105,7 +118,7 @@ QJsonObject gradesJson(const GradeResults &results)
             QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
     QJsonArray rows;
     for (const GradeRow &row : results.rows) {
-        QJsonObject o = checkJson(row.outcome);
+        QJsonObject o = checkJson(checkVerdict(row.verdict), row.outcome);
         o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
