@@ -4583,6 +4583,18 @@ Urteile: pass, fail, error, timeout, crash.
 Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgeschlossen
 werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
     </message>
+    <message>
+        <source>--jobs: expected 1..256, got &apos;%1&apos;</source>
+        <translation>--jobs: 1..256 erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--memory: expected 64..1048576 MiB, got &apos;%1&apos;</source>
+        <translation>--memory: 64..1048576 MiB erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>grade: %1 checks; %2</source>
+        <translation>grade: %1 Prüfungen; %2</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::GradeReport</name>
@@ -4705,6 +4717,41 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
         <source>no reference: %1</source>
         <translation>keine Referenz: %1</translation>
     </message>
+    <message>
+        <source>grade: the exact image of %1, %2 %</source>
+        <translation>grade: das exakte Bild von %1, %2 %</translation>
+    </message>
+    <message>
+        <source>grade: %1 of %2 checked</source>
+        <translation>grade: %1 von %2 geprüft</translation>
+    </message>
+    <message>
+        <source>, about %1 s left</source>
+        <translation>, noch etwa %1 s</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::GradeTables</name>
+    <message>
+        <source>student</source>
+        <translation>Abgabe</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <source>PSNR dB</source>
+        <translation>PSNR dB</translation>
+    </message>
+    <message>
+        <source>mistake, where</source>
+        <translation>Fehler, Stelle</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::GradedChild</name>
@@ -4735,6 +4782,13 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     <message>
         <source>the check exited with status %1 without an answer</source>
         <translation>die Prüfung wurde mit Exit-Code %1 ohne Antwort beendet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::ImportMeshCommand</name>
+    <message>
+        <source>__import-mesh is internal: the app runs it to import a mesh file</source>
+        <translation>__import-mesh ist intern: das Programm ruft es auf, um eine Mesh-Datei zu importieren</translation>
     </message>
 </context>
 <context>
@@ -4857,6 +4911,14 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     <message>
         <source>--crease %1 is not used: the file has normals of its own, used as written (--normals angle computes them with the crease)</source>
         <translation>--crease %1 wird nicht verwendet: die Datei hat eigene Normalen, die unverändert verwendet werden (--normals angle berechnet sie mit dem Knickwinkel)</translation>
+    </message>
+    <message>
+        <source>Print JSON.</source>
+        <translation>JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>, crease %1°</source>
+        <translation>, Knickwinkel %1°</translation>
     </message>
 </context>
 <context>

@@ -188,7 +188,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
         args.jobs = parser.value(jobs).toInt(&ok);
         if (!ok || args.jobs < 1 || args.jobs > 256)
             return usage(
-                QStringLiteral("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
+                GradeCommandWords::tr("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
     }
     const double seconds =
         parser.isSet(timeout) ? parser.value(timeout).toDouble(&ok) : kDefaultTimeoutS;
@@ -199,7 +199,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const qint64 mib =
         parser.isSet(memory) ? parser.value(memory).toLongLong(&ok) : qint64(kDefaultMemoryMiB);
     if (!ok || mib < 64 || mib > 1024 * 1024)
-        return usage(QStringLiteral("--memory: expected 64..1048576 MiB, got '%1'")
+        return usage(GradeCommandWords::tr("--memory: expected 64..1048576 MiB, got '%1'")
                          .arg(parser.value(memory)));
     args.limits.memoryBytes = mib * 1024 * 1024;
     return args;
@@ -378,9 +378,9 @@ int grade(const GradeArgs &args)
     }
     journal.finish();
     printLine(gradesTable(results));
-    printErrLine(QStringLiteral("grade: %1 checks; %2")
-                     .arg(results.rows.size())
-                     .arg(QDir(args.settings.outFolder).filePath(QStringLiteral("report.html"))));
+    printErrLine(GradeCommandWords::tr("grade: %1 checks; %2")
+                     .arg(QString::number(results.rows.size()),
+                          QDir(args.settings.outFolder).filePath(QStringLiteral("report.html"))));
     return kExitOk;
 }
 
