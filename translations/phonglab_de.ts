@@ -4193,85 +4193,6 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
                        [--json] [--diff OUT.png]</translation>
     </message>
     <message>
-        <source>
-
-Renders SCENE.json with the shaders `render` would use, compares the image with the exact
-(double-precision) reference of the same scene, leaving out a band around silhouettes,
-and when it differs names the classic mistake that explains it.
-
-  --vertex FILE       vertex shader instead of the scene&apos;s or the shading method&apos;s
-  --fragment FILE     fragment shader instead of the scene&apos;s or the shading method&apos;s
-  --project PATH      a WebGL project (a page, a script or a folder): its shaders are found in
-                      script elements, textareas, JavaScript strings or files of their own,
-                      and paired as its calls pair them
-  --program NAME      which of the project&apos;s programs, where it has several that light
-  --shading NAME      shading method instead of the scene&apos;s; one of %1
-  --size WxH          image size in pixels, default 800x600
-  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %2
-  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable. Names are
-                      bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
-                      this wins over that. Meanings: %4, or none; or a constant the
-                      page sets (--bind mode=1, --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)
-  --define NAME=VALUE a token the page&apos;s JavaScript replaces before compiling (NUM_LIGHTS=2);
-                      repeatable
-  --precision RULE    highp (default): every float checked at 32 bits, as a desktop browser
-                      computes it, and what mediump or lowp would change said apart;
-                      as-written: the declared precision, as this driver computes it
-  --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
-                      or the guarded one (guarded: none there); by default either passes
-  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
-                      tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
-                      notes, warnings, together, precision) instead of text
-  --diff OUT.png      write the error heatmap: dark green exact, bright green 1/255, yellow 4/255,
-                      red 8/255 or more off; dark blue the silhouette band left out, black the
-                      background
-
-Mistake keys: %3, unknown.
-
-Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.
-Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
-        <translation>
-
-Rendert SCENE.json mit den Shadern, die `render` verwenden würde, vergleicht das Bild mit der
-exakten Referenz (doppelte Genauigkeit) derselben Szene, ohne einen Rand um die Silhouetten,
-und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
-
-  --vertex FILE       Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
-  --fragment FILE     Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens
-  --project PATH      ein WebGL-Projekt (eine Seite, ein Skript oder ein Ordner): seine Shader
-                      werden in script-Elementen, Textfeldern, JavaScript-Zeichenketten oder
-                      eigenen Dateien gefunden und so gepaart, wie seine Aufrufe sie paaren
-  --program NAME      welches der Programme des Projekts, wo mehrere beleuchten
-  --shading NAME      Schattierungsverfahren anstelle dessen der Szene; eines von %1
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %2
-  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
-                      wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
-                      werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %4 oder none;
-                      oder eine Konstante, die die Seite setzt (--bind mode=1,
-                      --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)
-  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite vor dem Kompilieren ersetzt
-                      (NUM_LIGHTS=2); wiederholbar
-  --precision RULE    highp (Standard): jede Gleitkommazahl mit 32 Bit beurteilt, so wie ein
-                      Desktop-Browser rechnet, und was mediump oder lowp ändern würden, gesondert
-                      genannt; as-written: die deklarierte Genauigkeit, so wie dieser Treiber rechnet
-  --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
-                      N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
-                      besteht beides
-  --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
-                      bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
-                      equation, notes, warnings, together, precision)
-  --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, hellgrün 1/255, gelb 4/255,
-                      rot ab 8/255 Abweichung; dunkelblau der ausgelassene Silhouettenrand,
-                      schwarz der Hintergrund
-
-Fehlerschlüssel: %3, unknown.
-
-Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
-2 falsche Argumente.
-Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
-    </message>
-    <message>
         <source>--project takes both stages from the project; leave out --vertex and --fragment</source>
         <translation>--project nimmt beide Stufen aus dem Projekt; --vertex und --fragment weglassen</translation>
     </message>
@@ -4286,6 +4207,65 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source> with --program NAME</source>
         <translation> mit --program NAME</translation>
+    </message>
+    <message>
+        <source>
+
+Renders SCENE.json with the shaders `render` would use, compares the image with the exact
+(double-precision) reference of the same scene, leaving out a band around silhouettes,
+and when it differs names the classic mistake that explains it.
+
+%1
+  --project PATH      a WebGL project (a page, a script or a folder): its shaders are found in
+                      script elements, textareas, JavaScript strings or files of their own,
+                      and paired as its calls pair them
+  --program NAME      which of the project&apos;s programs, where it has several that light
+%2
+  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), default %3
+%4
+  --equation E        demand the slide&apos;s equation (slide: a highlight even where N·L &lt;= 0)
+                      or the guarded one (guarded: none there); by default either passes
+  --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
+                      tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
+                      notes, warnings, together, precision) instead of text
+  --diff OUT.png      write the error heatmap: dark green exact, bright green 1/255, yellow 4/255,
+                      red 8/255 or more off; dark blue the silhouette band left out, black the
+                      background
+
+Mistake keys: %5, unknown.
+
+Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong arguments.
+Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <extracomment>%1: the lines of --vertex and --fragment; %2: of --shading and --size; %4: of --bind, --define and --precision, each option&apos;s own</extracomment>
+        <translation>
+
+Rendert SCENE.json mit den Shadern, die `render` verwenden würde, vergleicht das Bild mit der
+exakten Referenz (doppelte Genauigkeit) derselben Szene, ohne einen Rand um die Silhouetten,
+und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
+
+%1
+  --project PATH      ein WebGL-Projekt (eine Seite, ein Skript oder ein Ordner): seine Shader
+                      werden in script-Elementen, Textfeldern, JavaScript-Zeichenketten oder
+                      eigenen Dateien gefunden und so gepaart, wie seine Aufrufe sie paaren
+  --program NAME      welches der Programme des Projekts, wo mehrere beleuchten
+%2
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal, in 8-Bit-Stufen (0..255), Standard %3
+%4
+  --equation E        die Gleichung der Folie verlangen (slide: ein Glanzlicht auch dort, wo
+                      N·L &lt;= 0) oder die abgesicherte (guarded: dort keines); standardmäßig
+                      besteht beides
+  --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
+                      bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
+                      equation, notes, warnings, together, precision)
+  --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, hellgrün 1/255, gelb 4/255,
+                      rot ab 8/255 Abweichung; dunkelblau der ausgelassene Silhouettenrand,
+                      schwarz der Hintergrund
+
+Fehlerschlüssel: %5, unknown.
+
+Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
+2 falsche Argumente.
+Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
     </message>
 </context>
 <context>
@@ -4630,6 +4610,10 @@ Befehle:
                        [--program NAME]</translation>
     </message>
     <message>
+        <source>no program named %1 (there are: %2)</source>
+        <translation>kein Programm namens %1 (vorhanden: %2)</translation>
+    </message>
+    <message>
         <source>
 
 Checks every submission in SUBMISSIONS against every scene, as `phonglab check` does,
@@ -4649,12 +4633,9 @@ that one verdict.
   --jobs N            checks at once, default the number of cores (%1)
   --timeout SECONDS   wall-clock limit of one check, default %2
   --memory MIB        memory limit of one check, default %3
-  --size WxH          image size in pixels, default 800x600
-  --tolerance STEPS   largest error allowed per channel (0..255), default %4
-  --bind NAME=MEANING what every student&apos;s NAME holds (or a constant, NAME=1), as in check;
-                      repeatable
-  --define NAME=VALUE a token the page&apos;s JavaScript replaces, as in check; repeatable
-  --precision RULE    highp (default) or as-written, as in check
+%4
+  --tolerance STEPS   largest error allowed per channel (0..255), default %5
+%6
   --equation E        demand the slide&apos;s (slide) or the guarded (guarded) equation
   --points P          what each verdict is worth in moodle-grades.csv, summed over a
                       student&apos;s rows; default pass=1,fail=0,error=0,timeout=0,crash=0
@@ -4670,6 +4651,7 @@ Verdicts: pass, fail, error, timeout, crash.
 
 Exit status: 0 every submission got a verdict, 1 the run could not complete (a scene
 that does not load, no submissions, DIR not writable), 2 wrong arguments.</source>
+        <extracomment>%4: the line of --size; %6: of --bind, --define and --precision, each option&apos;s own</extracomment>
         <translation>
 
 Prüft jede Abgabe in SUBMISSIONS mit jeder Szene, wie `phonglab check` es tut, und
@@ -4690,13 +4672,9 @@ Urteil.
   --jobs N            gleichzeitige Prüfungen, Standard die Anzahl der Kerne (%1)
   --timeout SECONDS   Zeitlimit (Echtzeit) einer Prüfung, Standard %2
   --memory MIB        Speicherlimit einer Prüfung, Standard %3
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --tolerance STEPS   größter erlaubter Fehler pro Kanal (0..255), Standard %4
-  --bind NAME=MEANING was NAME in jeder Abgabe enthält (oder eine Konstante, NAME=1), wie bei
-                      check; wiederholbar
-  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite ersetzt, wie bei check;
-                      wiederholbar
-  --precision RULE    highp (Standard) oder as-written, wie bei check
+%4
+  --tolerance STEPS   größter erlaubter Fehler pro Kanal (0..255), Standard %5
+%6
   --equation E        die Gleichung der Folie (slide) oder die abgesicherte (guarded) verlangen
   --points P          was jedes Urteil in moodle-grades.csv wert ist, summiert über die
                       Zeilen einer Person; Standard pass=1,fail=0,error=0,timeout=0,crash=0
@@ -4715,8 +4693,16 @@ Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgesc
 werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
     </message>
     <message>
-        <source>no program named %1 (there are: %2)</source>
-        <translation>kein Programm namens %1 (vorhanden: %2)</translation>
+        <source>--jobs: expected 1..256, got &apos;%1&apos;</source>
+        <translation>--jobs: 1..256 erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--memory: expected 64..1048576 MiB, got &apos;%1&apos;</source>
+        <translation>--memory: 64..1048576 MiB erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>grade: %1 checks; %2</source>
+        <translation>grade: %1 Prüfungen; %2</translation>
     </message>
 </context>
 <context>
@@ -4840,6 +4826,41 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
         <source>no reference: %1</source>
         <translation>keine Referenz: %1</translation>
     </message>
+    <message>
+        <source>grade: the exact image of %1, %2 %</source>
+        <translation>grade: das exakte Bild von %1, %2 %</translation>
+    </message>
+    <message>
+        <source>grade: %1 of %2 checked</source>
+        <translation>grade: %1 von %2 geprüft</translation>
+    </message>
+    <message>
+        <source>, about %1 s left</source>
+        <translation>, noch etwa %1 s</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::GradeTables</name>
+    <message>
+        <source>student</source>
+        <translation>Abgabe</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <source>PSNR dB</source>
+        <translation>PSNR dB</translation>
+    </message>
+    <message>
+        <source>mistake, where</source>
+        <translation>Fehler, Stelle</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::GradedChild</name>
@@ -4870,6 +4891,13 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     <message>
         <source>the check exited with status %1 without an answer</source>
         <translation>die Prüfung wurde mit Exit-Code %1 ohne Antwort beendet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::ImportMeshCommand</name>
+    <message>
+        <source>__import-mesh is internal: the app runs it to import a mesh file</source>
+        <translation>__import-mesh ist intern: das Programm ruft es auf, um eine Mesh-Datei zu importieren</translation>
     </message>
 </context>
 <context>
@@ -4993,6 +5021,14 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
         <source>--crease %1 is not used: the file has normals of its own, used as written (--normals angle computes them with the crease)</source>
         <translation>--crease %1 wird nicht verwendet: die Datei hat eigene Normalen, die unverändert verwendet werden (--normals angle berechnet sie mit dem Knickwinkel)</translation>
     </message>
+    <message>
+        <source>Print JSON.</source>
+        <translation>JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>, crease %1°</source>
+        <translation>, Knickwinkel %1°</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::cli::RenderCommand</name>
@@ -5003,22 +5039,6 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     <message>
         <source>Scene file (JSON).</source>
         <translation>Szenendatei (JSON).</translation>
-    </message>
-    <message>
-        <source>Image size, default 800x600.</source>
-        <translation>Bildgröße, Standard 800x600.</translation>
-    </message>
-    <message>
-        <source>Vertex shader to use instead of the scene&apos;s.</source>
-        <translation>Vertex-Shader, der statt des Vertex-Shaders der Szene verwendet wird.</translation>
-    </message>
-    <message>
-        <source>Fragment shader to use instead of the scene&apos;s.</source>
-        <translation>Fragment-Shader anstelle des Fragment-Shaders der Szene.</translation>
-    </message>
-    <message>
-        <source>Shading method instead of the scene&apos;s.</source>
-        <translation>Schattierungsverfahren statt des Verfahrens der Szene.</translation>
     </message>
     <message>
         <source>missing the scene file</source>
@@ -5052,38 +5072,17 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
 Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB PNG.
 
   -o, --output FILE   the PNG to write (only written when everything succeeded)
-  --size WxH          image size in pixels, default 800x600
-  --shading NAME      shading method instead of the scene&apos;s &quot;shading&quot;; one of
-                      %1
-  --vertex FILE       vertex shader instead of the shading method&apos;s
-  --fragment FILE     fragment shader instead of the shading method&apos;s
-  --bind NAME=MEANING what the shader&apos;s uniform or input NAME holds; repeatable (the
-                      meanings are those of `phonglab check`), or a constant (NAME=1,0,0)
-  --define NAME=VALUE a token the page&apos;s JavaScript replaces before compiling; repeatable
-  --precision RULE    highp (default: every float at 32 bits, as a desktop browser
-                      computes it) or as-written (the declared precision, as this driver
-                      computes it)
+%1
 
 Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.
 Compile errors are printed as FILE:LINE:COL: error: MESSAGE.</source>
+        <extracomment>%1: the lines of --size, --shading, --vertex, --fragment, --bind, --define and --precision, each option&apos;s own</extracomment>
         <translation>
 
 Rendert ein Bild von SCENE.json offscreen (ohne Multisampling) in ein 8-Bit-RGB-PNG.
 
   -o, --output FILE   das zu schreibende PNG (wird nur geschrieben, wenn alles gelungen ist)
-  --size WxH          Bildgröße in Pixeln, Standard 800x600
-  --shading NAME      Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
-                      %1
-  --vertex FILE       Vertex-Shader anstelle dessen des Schattierungsverfahrens
-  --fragment FILE     Fragment-Shader anstelle dessen des Schattierungsverfahrens
-  --bind NAME=MEANING was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
-                      wiederholbar (die Bedeutungen sind die von `phonglab check`), oder eine
-                      Konstante (NAME=1,0,0)
-  --define NAME=VALUE ein Platzhalter, den das JavaScript der Seite vor dem Kompilieren ersetzt;
-                      wiederholbar
-  --precision RULE    highp (Standard: jede Gleitkommazahl mit 32 Bit, so wie ein Desktop-Browser
-                      rechnet) oder as-written (die deklarierte Genauigkeit, so wie dieser Treiber
-                      rechnet)
+%1
 
 Exit-Code: 0 Erfolg, 1 ungültige Eingabe oder Kompilier-/Renderfehler, 2 falsche Argumente.
 Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
@@ -5094,6 +5093,39 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>--precision: expected highp or as-written, got &apos;%1&apos;</source>
         <translation>--precision: highp oder as-written erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>what the shader&apos;s uniform or input NAME holds; repeatable. Names are
+bound by themselves where they say it (uModelMatrix, aPosition, u_kd);
+this wins over that. Meanings: %1, or none; or a constant the
+page sets (--bind mode=1, --bind &apos;u_MatlSet[0].emit=0,0,0&apos;)</source>
+        <translation>was die Uniform-Variable oder Eingabevariable NAME des Shaders enthält;
+wiederholbar. Namen, die es selbst sagen (uModelMatrix, aPosition, u_kd),
+werden automatisch zugeordnet; --bind hat Vorrang. Bedeutungen: %1 oder none;
+oder eine Konstante, die die Seite setzt (--bind mode=1,
+--bind &apos;u_MatlSet[0].emit=0,0,0&apos;)</translation>
+    </message>
+    <message>
+        <source>a token the page&apos;s JavaScript replaces before compiling (NUM_LIGHTS=2);
+repeatable</source>
+        <translation>ein Platzhalter, den das JavaScript der Seite vor dem Kompilieren ersetzt
+(NUM_LIGHTS=2); wiederholbar</translation>
+    </message>
+    <message>
+        <source>highp (default): every float checked at 32 bits, as a desktop browser
+computes it, and what mediump or lowp would change said apart;
+as-written: the declared precision, as this driver computes it</source>
+        <translation>highp (Standard): jede Gleitkommazahl mit 32 Bit beurteilt, so wie ein
+Desktop-Browser rechnet, und was mediump oder lowp ändern würden, gesondert
+genannt; as-written: die deklarierte Genauigkeit, so wie dieser Treiber rechnet</translation>
+    </message>
+    <message>
+        <source>highp (default: every float at 32 bits, as a desktop browser
+computes it) or as-written (the declared precision, as this driver
+computes it)</source>
+        <translation>highp (Standard: jede Gleitkommazahl mit 32 Bit, so wie ein Desktop-Browser
+rechnet) oder as-written (die deklarierte Genauigkeit, so wie dieser Treiber
+rechnet)</translation>
     </message>
 </context>
 <context>
@@ -5141,6 +5173,24 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>PNG encoding failed</source>
         <translation>PNG-Kodierung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>image size in pixels, default 800x600</source>
+        <translation>Bildgröße in Pixeln, Standard 800x600</translation>
+    </message>
+    <message>
+        <source>vertex shader instead of the scene&apos;s or the shading method&apos;s</source>
+        <translation>Vertex-Shader anstelle dessen der Szene oder des Schattierungsverfahrens</translation>
+    </message>
+    <message>
+        <source>fragment shader instead of the scene&apos;s or the shading method&apos;s</source>
+        <translation>Fragment-Shader anstelle dessen der Szene oder des Schattierungsverfahrens</translation>
+    </message>
+    <message>
+        <source>shading method instead of the scene&apos;s &quot;shading&quot;; one of
+%1</source>
+        <translation>Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
+%1</translation>
     </message>
 </context>
 <context>

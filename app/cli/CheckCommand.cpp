@@ -6,8 +6,8 @@
 #include "GradedChild.h"
 #include "SceneOverrides.h"
 #include "SceneStages.h"
-#include "core/scene/SceneJson.h"
 #include "core/project/ProjectPrograms.h"
+#include "core/scene/SceneJson.h"
 #include "render/QtImages.h"
 
 #include <QFileInfo>
@@ -61,8 +61,10 @@ const QString &synopsis()
     return text;
 }
 
-QString helpText()
+QString helpText(const StageOptions &stage, const SceneOverrideOptions &overrides)
 {
+    //: %1: the lines of --vertex and --fragment; %2: of --shading and --size; %4: of --bind,
+    //: --define and --precision, each option's own
     return synopsis()
         + CheckCommandWords::tr(
               "\n\n"
@@ -71,9 +73,7 @@ QString helpText()
               "(double-precision) reference of the same scene, leaving out a band around "
               "silhouettes,\n"
               "and when it differs names the classic mistake that explains it.\n\n"
-              "  --vertex FILE       vertex shader instead of the scene's or the shading method's\n"
-              "  --fragment FILE     fragment shader instead of the scene's or the shading "
-              "method's\n"
+              "%1\n"
               "  --project PATH      a WebGL project (a page, a script or a folder): its shaders "
               "are found in\n"
               "                      script elements, textareas, JavaScript strings or files of "
@@ -81,26 +81,10 @@ QString helpText()
               "                      and paired as its calls pair them\n"
               "  --program NAME      which of the project's programs, where it has several that "
               "light\n"
-              "  --shading NAME      shading method instead of the scene's; one of %1\n"
-              "  --size WxH          image size in pixels, default 800x600\n"
+              "%2\n"
               "  --tolerance STEPS   largest error allowed per channel, in 8-bit steps (0..255), "
-              "default %2\n"
-              "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable. "
-              "Names are\n"
-              "                      bound by themselves where they say it (uModelMatrix, "
-              "aPosition, u_kd);\n"
-              "                      this wins over that. Meanings: %4, or none; or a "
-              "constant the\n"
-              "                      page sets (--bind mode=1, --bind 'u_MatlSet[0].emit=0,0,0')\n"
-              "  --define NAME=VALUE a token the page's JavaScript replaces before compiling "
-              "(NUM_LIGHTS=2);\n"
-              "                      repeatable\n"
-              "  --precision RULE    highp (default): every float checked at 32 bits, as a "
-              "desktop browser\n"
-              "                      computes it, and what mediump or lowp would change said "
-              "apart;\n"
-              "                      as-written: the declared precision, as this driver "
-              "computes it\n"
+              "default %3\n"
+              "%4\n"
               "  --equation E        demand the slide's equation (slide: a highlight even where "
               "N·L <= 0)\n"
               "                      or the guarded one (guarded: none there); by default "
@@ -115,14 +99,14 @@ QString helpText()
               "                      red 8/255 or more off; dark blue the silhouette band left "
               "out, black the\n"
               "                      background\n\n"
-              "Mistake keys: %3, unknown.\n\n"
+              "Mistake keys: %5, unknown.\n\n"
               "Exit status: 0 matches, 1 does not match, does not compile, or bad input, 2 wrong "
               "arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
-              .arg(shadingNames().join(QStringLiteral(", ")))
-              .arg(kDefaultCheckToleranceSteps)
-              .arg(shaderMistakeKeys().join(QStringLiteral(", ")))
-              .arg(bindingMeaningKeys().join(QStringLiteral(", ")));
+              .arg(helpLines({stage.vertex, stage.fragment}),
+                   helpLines({stage.shading, stage.size}),
+                   QString::number(kDefaultCheckToleranceSteps), helpLines(overrides.all()),
+                   shaderMistakeKeys().join(QStringLiteral(", ")));
 }
 
 // The arguments, or an exit code for usage errors and --help.
@@ -131,16 +115,12 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   CheckCommandWords::tr("Show help."));
-    const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
-    const QCommandLineOption vertex(QStringLiteral("vertex"), QString(), QStringLiteral("file"));
-    const QCommandLineOption fragment(QStringLiteral("fragment"), QString(),
-                                      QStringLiteral("file"));
-    const QCommandLineOption shading(QStringLiteral("shading"), QString(), QStringLiteral("name"));
+    const StageOptions stage;
     const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
                                        QStringLiteral("steps"));
     const QCommandLineOption json(QStringLiteral("json"), QString());
     const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
-    const SceneOverrideOptions overrides;
+    const SceneOverrideOptions overrides(SceneOverrideOptions::Use::Check);
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
     const QCommandLineOption project(QStringLiteral("project"), QString(), QStringLiteral("path"));
@@ -154,11 +134,12 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     if (const std::optional<int> exit =
             parseOrExit(parser, arguments,
                         {help,
-                         QList<QCommandLineOption>{size, vertex, fragment, shading, tolerance, json,
-                                                   diff, equation, drawOnly, project, program}
+                         stage.all()
+                             + QList<QCommandLineOption>{tolerance, json, diff, equation, drawOnly,
+                                                         project, program}
                              + overrides.all(),
                          SceneOverrideOptions::repeatable()},
-                        synopsis(), helpText()))
+                        synopsis(), helpText(stage, overrides)))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -167,8 +148,8 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                          : CheckCommandWords::tr("exactly one scene file expected"));
     CheckArgs args;
     args.scenePath = positional.first();
-    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
-                                 readShadingOption(parser, shading, &args.shading),
+    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &args.size),
+                                 readShadingOption(parser, stage.shading, &args.shading),
                                  readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
@@ -187,11 +168,11 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     }
     if (parser.isSet(diff) && parser.value(diff).isEmpty())
         return usage(CheckCommandWords::tr("--diff: missing the output file"));
-    args.vertexPath = parser.value(vertex);
-    args.fragmentPath = parser.value(fragment);
+    args.vertexPath = parser.value(stage.vertex);
+    args.fragmentPath = parser.value(stage.fragment);
     args.projectPath = parser.value(project);
     args.programName = parser.value(program);
-    if (!args.projectPath.isEmpty() && (parser.isSet(vertex) || parser.isSet(fragment)))
+    if (!args.projectPath.isEmpty() && (parser.isSet(stage.vertex) || parser.isSet(stage.fragment)))
         return usage(CheckCommandWords::tr(
             "--project takes both stages from the project; leave out --vertex and --fragment"));
     if (parser.isSet(program) && args.projectPath.isEmpty())
@@ -255,8 +236,9 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     for (const ShaderDiagnostic &d : drawing.compilerMessages)
         if (d.isError() || !args.json)
             printErrLine(d.format());
-    CheckOutcome &outcome = drawing.outcome;
-    if (!drawing.drawn())
+    const bool drawn = drawing.drawn();
+    CheckOutcome outcome{std::move(drawing.outcome)}; // Error until checked
+    if (!drawn)
         return outcome;
     Result<CheckReference> made =
         makeCheckReference(sceneForCheck(scene, drawing.lightCapacity), drawing.objectMeshes,
@@ -268,7 +250,8 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
     }
     *reference = std::move(*made);
     *yours = drawing.image;
-    checkDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation, args.scenePath);
+    outcome.verdict = checkDrawing(&outcome, *yours, *reference, args.toleranceSteps, args.equation,
+                                   args.scenePath);
     return outcome;
 }
 
@@ -340,7 +323,8 @@ int check(const CheckArgs &args)
     }
     if (args.json) {
         printLine(
-            QString::fromUtf8(QJsonDocument(checkJson(outcome)).toJson(QJsonDocument::Indented))
+            QString::fromUtf8(
+                QJsonDocument(checkJson(outcome.verdict, outcome)).toJson(QJsonDocument::Indented))
                 .trimmed());
     } else {
         for (const ShaderDiagnostic &e : outcome.errors)

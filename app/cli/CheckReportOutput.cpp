@@ -1,6 +1,6 @@
 #include "CheckReportOutput.h"
-#include "core/support/Language.h"
 #include "core/check/MistakeSets.h"
+#include "core/support/Language.h"
 
 #include "SceneStages.h"
 
@@ -96,7 +96,7 @@ QJsonObject unknownFinding()
             {QStringLiteral("lines"), QJsonArray()}};
 }
 
-QJsonArray diagnosisJson(const CheckOutcome &outcome)
+QJsonArray diagnosisJson(const CheckFindings &outcome)
 {
     QJsonArray out;
     const MistakeDiagnosis &d = outcome.report.diagnosis;
@@ -120,10 +120,10 @@ QJsonArray diagnosisJson(const CheckOutcome &outcome)
 
 // The smallest set of mistakes that explains the render, each with its
 // likely lines: `together` {keys, explains, forms, lines}.
-QJsonValue togetherJson(const CheckOutcome &outcome)
+QJsonValue togetherJson(CheckOutcome::Verdict verdict, const CheckFindings &outcome)
 {
     const MistakeSet &set = outcome.report.diagnosis.together;
-    if (outcome.verdict != CheckOutcome::Verdict::Fail || set.variants.empty())
+    if (verdict != CheckOutcome::Verdict::Fail || set.variants.empty())
         return QJsonValue();
     QJsonArray keys, forms, lines;
     for (MistakeVariant v : set.variants) {
@@ -172,7 +172,7 @@ PrecisionFinding precisionFromJson(const QJsonObject &o)
 {
     PrecisionFinding p;
     p.checkedAt = precisionRuleFromKey(o.value(QStringLiteral("judged")).toString())
-                   .value_or(PrecisionRule::Highp);
+                      .value_or(PrecisionRule::Highp);
     for (const QJsonValue &v : o.value(QStringLiteral("declared")).toArray())
         p.declared << v.toString();
     if (const QJsonValue e = o.value(QStringLiteral("as_written_max_error")); e.isDouble())
@@ -214,19 +214,19 @@ QString precisionText(const PrecisionFinding &p)
                                             : QStringLiteral("∞"));
 }
 
-QJsonObject checkJson(const CheckOutcome &outcome)
+QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findings)
 {
-    const bool checked = outcome.verdict != CheckOutcome::Verdict::Error;
-    const ImageComparison &c = outcome.report.comparison;
+    const bool checked = verdict != CheckOutcome::Verdict::Error;
+    const ImageComparison &c = findings.report.comparison;
     QJsonObject o;
-    o.insert(QStringLiteral("verdict"), verdictName(outcome.verdict));
+    o.insert(QStringLiteral("verdict"), verdictName(verdict));
     // Identical images have an infinite PSNR, which JSON cannot write: null.
     o.insert(QStringLiteral("psnr_db"),
              checked && std::isfinite(c.psnr) ? QJsonValue(c.psnr) : QJsonValue());
     o.insert(QStringLiteral("max_error"), checked ? QJsonValue(c.maxError) : QJsonValue());
     o.insert(QStringLiteral("bad_fraction"),
-             checked ? QJsonValue(outcome.report.badFraction()) : QJsonValue());
-    o.insert(QStringLiteral("tolerance"), outcome.report.toleranceSteps);
+             checked ? QJsonValue(findings.report.badFraction()) : QJsonValue());
+    o.insert(QStringLiteral("tolerance"), findings.report.toleranceSteps);
     QJsonObject worst;
     // No worst pixel when every compared pixel is exact.
     const bool hasWorst = checked && c.pixelsCompared > 0 && c.maxError > 0;
@@ -234,25 +234,25 @@ QJsonObject checkJson(const CheckOutcome &outcome)
         worst.insert(QStringLiteral("x"), c.worstPixel.x());
         worst.insert(QStringLiteral("y"), c.worstPixel.y());
         worst.insert(QStringLiteral("object"),
-                     outcome.report.worstObject >= 0 ? QJsonValue(outcome.report.worstObject)
-                                                     : QJsonValue());
+                     findings.report.worstObject >= 0 ? QJsonValue(findings.report.worstObject)
+                                                      : QJsonValue());
     }
     o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
-    o.insert(QStringLiteral("diagnosis"), diagnosisJson(outcome));
-    o.insert(QStringLiteral("together"), togetherJson(outcome));
-    o.insert(QStringLiteral("undetectable"), keysJson(outcome.report.diagnosis.undetectable));
-    o.insert(QStringLiteral("errors"), errorsJson(outcome.errors));
+    o.insert(QStringLiteral("diagnosis"), diagnosisJson(findings));
+    o.insert(QStringLiteral("together"), togetherJson(verdict, findings));
+    o.insert(QStringLiteral("undetectable"), keysJson(findings.report.diagnosis.undetectable));
+    o.insert(QStringLiteral("errors"), errorsJson(findings.errors));
     QJsonObject bindings;
-    for (const VariableBinding &b : outcome.bindings.variables)
+    for (const VariableBinding &b : findings.bindings.variables)
         if (b.meaning || b.isExplicit)
             bindings.insert(b.variable.name,
                             b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
     o.insert(QStringLiteral("bindings"), bindings);
     o.insert(QStringLiteral("equation"),
-             checked ? QJsonValue(phongEquationKey(outcome.report.equation)) : QJsonValue());
-    o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(outcome.notes));
-    o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(outcome.warnings));
-    o.insert(QStringLiteral("precision"), precisionJson(outcome.precision));
+             checked ? QJsonValue(phongEquationKey(findings.report.equation)) : QJsonValue());
+    o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(findings.notes));
+    o.insert(QStringLiteral("warnings"), QJsonArray::fromStringList(findings.warnings));
+    o.insert(QStringLiteral("precision"), precisionJson(findings.precision));
     return o;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/scene/Scene.h"
 #include "core/check/MistakeSourceLines.h"
 #include "core/check/ShaderCheck.h"
+#include "core/scene/Scene.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QJsonObject>
@@ -36,15 +36,11 @@ struct PrecisionFinding {
     QString asWrittenError;
 };
 
-struct CheckOutcome {
-    enum class Verdict {
-        Pass,
-        Fail,
-        Error
-    };
-    Verdict verdict = Verdict::Error;
-    CheckReport report;                   // Pass and Fail
-    std::vector<ShaderDiagnostic> errors; // Error: compile errors, or one for bad input
+// What a check found, its verdict aside: a drawing not checked yet has
+// none, and a row of `grade` has its own (GradeRow).
+struct CheckFindings {
+    CheckReport report;                   // when it passed or failed
+    std::vector<ShaderDiagnostic> errors; // compile errors, or one for bad input
     std::vector<ShaderStageText> stages;  // the user's sources, for the diagnosis' lines
     ProgramBindings bindings;             // what each of the program's names was bound to
     QStringList notes;                    // what the verdict rests on that the user should know
@@ -52,7 +48,17 @@ struct CheckOutcome {
     PrecisionFinding precision;
 };
 
-QJsonObject checkJson(const CheckOutcome &outcome);
+// `check`'s: the findings and their verdict.
+struct CheckOutcome : CheckFindings {
+    enum class Verdict {
+        Pass,
+        Fail,
+        Error
+    };
+    Verdict verdict = Verdict::Error;
+};
+
+QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findings);
 // `precision`, and read back (grade's child hands it to its parent).
 QJsonObject precisionJson(const PrecisionFinding &precision);
 PrecisionFinding precisionFromJson(const QJsonObject &json);

@@ -1,9 +1,9 @@
 #include "CheckSteps.h"
 
 #include "SceneStages.h"
-#include "core/check/ImageMetrics.h"
 #include "core/check/BindingConflicts.h"
 #include "core/check/CoursePrelude.h"
+#include "core/check/ImageMetrics.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
@@ -50,7 +50,7 @@ namespace {
 
 // The file that declares uniform `name`: the vertex stage's, else the
 // fragment's.
-QString declaringFile(const QString &name, const CheckOutcome &outcome, const StageFiles &files)
+QString declaringFile(const QString &name, const CheckFindings &outcome, const StageFiles &files)
 {
     const QRegularExpression declared(
         QStringLiteral(R"(\buniform\b[^;]*\b%1\b)").arg(QRegularExpression::escape(name)));
@@ -111,7 +111,7 @@ PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
 CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
 {
     CheckDrawing drawing;
-    CheckOutcome &outcome = drawing.outcome;
+    CheckFindings &outcome = drawing.outcome;
     const auto fail = [&](const QString &file, const QString &message) {
         outcome.errors.push_back(inputError(file, message));
         return std::move(drawing);
@@ -192,23 +192,21 @@ Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity)
     return sceneForCapacity(scene, lightCapacity, &unused);
 }
 
-void checkDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
-                  int toleranceSteps, std::optional<PhongEquation> equation,
-                  const QString &scenePath)
+CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
+                                   const CheckReference &reference, int toleranceSteps,
+                                   std::optional<PhongEquation> equation, const QString &scenePath)
 {
-    outcome->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
-    if (!outcome->report.comparable()) {
-        outcome->errors.push_back(inputError(
+    findings->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
+    if (!findings->report.comparable()) {
+        findings->errors.push_back(inputError(
             scenePath,
             CheckStepsWords::tr("nothing to compare: no surface away from silhouettes in "
                                 "this view at %1x%2")
                 .arg(image.width())
                 .arg(image.height())));
-        outcome->verdict = CheckOutcome::Verdict::Error;
-        return;
+        return CheckOutcome::Verdict::Error;
     }
-    outcome->verdict =
-        outcome->report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    return findings->report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
 }
 
 // --- the child's answer ----------------------------------------------------
@@ -257,7 +255,7 @@ std::vector<ShaderDiagnostic> diagnosticsFromJson(const QJsonValue &value)
 
 QJsonObject drawingJson(const CheckDrawing &drawing)
 {
-    const CheckOutcome &o = drawing.outcome;
+    const CheckFindings &o = drawing.outcome;
     QJsonArray stages;
     for (const ShaderStageText &s : o.stages)
         stages.append(QJsonObject{{QStringLiteral("path"), s.path},
@@ -286,7 +284,7 @@ QJsonObject drawingJson(const CheckDrawing &drawing)
 CheckDrawing drawingFromJson(const QJsonObject &json)
 {
     CheckDrawing drawing;
-    CheckOutcome &o = drawing.outcome;
+    CheckFindings &o = drawing.outcome;
     o.errors = diagnosticsFromJson(json.value(QStringLiteral("errors")));
     drawing.compilerMessages = diagnosticsFromJson(json.value(QStringLiteral("compiler")));
     o.warnings << buildWarnings(drawing.compilerMessages);

@@ -1,10 +1,10 @@
 #pragma once
 #include "CheckReportOutput.h"
+#include "core/check/ShaderCheck.h"
+#include "core/reference/PhongEquation.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
 #include "core/scene/SceneJson.h"
-#include "core/check/ShaderCheck.h"
-#include "core/reference/PhongEquation.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QImage>
@@ -35,9 +35,9 @@ struct CheckInput {
 };
 
 struct CheckDrawing {
-    // errors, stages, bindings and notes; the verdict stays Error (nothing
-    // checked yet). Errors, when there are any, end the check.
-    CheckOutcome outcome;
+    // errors, stages, bindings and notes; no verdict (nothing checked yet).
+    // Errors, when there are any, end the check.
+    CheckFindings outcome;
     std::optional<int> lightCapacity;               // ProgramBindings::lightCapacity()
     QImage image;                                   // the render; null where there are errors
     std::vector<ShaderDiagnostic> compilerMessages; // errors and warnings, for stderr
@@ -55,11 +55,11 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene);
 // (sceneForCapacity()): what the reference is made of.
 Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity);
 
-// Checks a drawn image: sets outcome's report and verdict, or an error when
-// no pixel could be compared.
-void checkDrawing(CheckOutcome *outcome, const QImage &image, const CheckReference &reference,
-                  int toleranceSteps, std::optional<PhongEquation> equation,
-                  const QString &scenePath);
+// Checks a drawn image: sets the findings' report and returns the verdict;
+// Error, with an error added, when no pixel could be compared.
+CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
+                                   const CheckReference &reference, int toleranceSteps,
+                                   std::optional<PhongEquation> equation, const QString &scenePath);
 
 // An error not from the compiler: bad input, no GL, a file not read.
 ShaderDiagnostic inputError(const QString &file, const QString &message);

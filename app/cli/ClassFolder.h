@@ -22,7 +22,7 @@ struct Submission {
     QString vertex;   // absolute; empty: the method's shipped vertex shader
     QString fragment; // absolute; empty: the method's shipped fragment shader
     QString error;    // why it cannot be checked (two files for one stage, no shader at all)
-    // A WebGL project's program (issue 42): its name; the stages are then
+    // A WebGL project's program: its name; the stages are then
     // "FILE#KEY" locators into the project's pages, scripts or files.
     QString program;
     QStringList notes; // what the project says beside (unlit programs left out)

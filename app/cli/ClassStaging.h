@@ -7,7 +7,7 @@
 namespace phonglab::cli {
 
 // What `grade` is handed, made into a folder of one subfolder per
-// submission (issue 42, C and D):
+// submission:
 // - a folder as it is (plain, or GitHub Classroom's `assignment-user/`);
 // - a .zip or .tar.gz (a course platform's "download all"), unpacked into
 //   the out folder's `unpacked/`;

@@ -100,6 +100,27 @@ std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &ar
     return std::nullopt;
 }
 
+QString helpLine(const QCommandLineOption &option)
+{
+    QStringList names;
+    for (const QString &name : option.names())
+        names << dashed(name);
+    QString head = QStringLiteral("  ") + names.join(QStringLiteral(", "));
+    if (!option.valueName().isEmpty())
+        head += QLatin1Char(' ') + option.valueName();
+    const QString indent = QLatin1Char('\n') + QString(22, QLatin1Char(' '));
+    return head.leftJustified(21) + QLatin1Char(' ')
+        + QString(option.description()).replace(QLatin1Char('\n'), indent);
+}
+
+QString helpLines(const QList<QCommandLineOption> &options)
+{
+    QStringList lines;
+    for (const QCommandLineOption &option : options)
+        lines << helpLine(option);
+    return lines.join(QLatin1Char('\n'));
+}
+
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide)
 {
     static const QRegularExpression re(QStringLiteral(R"(^(\d{1,6})[xX](\d{1,6})$)"));

@@ -40,6 +40,12 @@ std::optional<int> parseOrExit(QCommandLineParser &parser, const QStringList &ar
                                const CommandOptions &options, const QString &synopsis,
                                const QString &helpText);
 
+// An option's line in a command's --help: "  --size WxH", then from the
+// 23rd column its description, each further line of it indented as far.
+QString helpLine(const QCommandLineOption &option);
+// Several, one line (or more) each.
+QString helpLines(const QList<QCommandLineOption> &options);
+
 // "WxH" with each side in [minSide, maxSide] pixels; nullopt otherwise.
 std::optional<QSize> parseSizeArgument(const QString &text, int minSide, int maxSide);
 

@@ -8,7 +8,7 @@
 
 namespace phonglab::cli {
 
-// What goes back to a course platform (issue 42, D), Moodle first: a grade
+// What goes back to a course platform, Moodle first: a grade
 // and a comment per participant for its offline grading worksheet, and a
 // zip of feedback pages for its "upload multiple feedback files in a zip".
 

@@ -61,8 +61,9 @@ const QString &synopsis()
     return text;
 }
 
-QString helpText()
+QString helpText(const StageOptions &stage, const SceneOverrideOptions &overrides)
 {
+    //: %4: the line of --size; %6: of --bind, --define and --precision, each option's own
     return synopsis()
         + GradeCommandWords::tr(
               "\n\n"
@@ -85,14 +86,9 @@ QString helpText()
               "  --jobs N            checks at once, default the number of cores (%1)\n"
               "  --timeout SECONDS   wall-clock limit of one check, default %2\n"
               "  --memory MIB        memory limit of one check, default %3\n"
-              "  --size WxH          image size in pixels, default 800x600\n"
-              "  --tolerance STEPS   largest error allowed per channel (0..255), default %4\n"
-              "  --bind NAME=MEANING what every student's NAME holds (or a constant, NAME=1), as "
-              "in check;\n"
-              "                      repeatable\n"
-              "  --define NAME=VALUE a token the page's JavaScript replaces, as in check; "
-              "repeatable\n"
-              "  --precision RULE    highp (default) or as-written, as in check\n"
+              "%4\n"
+              "  --tolerance STEPS   largest error allowed per channel (0..255), default %5\n"
+              "%6\n"
               "  --equation E        demand the slide's (slide) or the guarded (guarded) "
               "equation\n"
               "  --points P          what each verdict is worth in moodle-grades.csv, summed over "
@@ -112,10 +108,9 @@ QString helpText()
               "Exit status: 0 every submission got a verdict, 1 the run could not complete (a "
               "scene\n"
               "that does not load, no submissions, DIR not writable), 2 wrong arguments.")
-              .arg(QThread::idealThreadCount())
-              .arg(kDefaultTimeoutS)
-              .arg(kDefaultMemoryMiB)
-              .arg(kDefaultCheckToleranceSteps);
+              .arg(QString::number(QThread::idealThreadCount()), QString::number(kDefaultTimeoutS),
+                   QString::number(kDefaultMemoryMiB), helpLine(stage.size),
+                   QString::number(kDefaultCheckToleranceSteps), helpLines(overrides.all()));
 }
 
 std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
@@ -128,10 +123,10 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption jobs(QStringLiteral("jobs"), QString(), QStringLiteral("n"));
     const QCommandLineOption timeout(QStringLiteral("timeout"), QString(), QStringLiteral("s"));
     const QCommandLineOption memory(QStringLiteral("memory"), QString(), QStringLiteral("mib"));
-    const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
+    const StageOptions stage; // --size alone: each submission brings its own stages
     const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
                                        QStringLiteral("steps"));
-    const SceneOverrideOptions overrides;
+    const SceneOverrideOptions overrides(SceneOverrideOptions::Use::Check);
     const QCommandLineOption equation(QStringLiteral("equation"), QString(),
                                       QStringLiteral("equation"));
     const QCommandLineOption points(QStringLiteral("points"), QString(), QStringLiteral("points"));
@@ -143,11 +138,11 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (const std::optional<int> exit =
             parseOrExit(parser, arguments,
                         {help,
-                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, size,
+                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, stage.size,
                                                    tolerance, equation, points, resume, program}
                              + overrides.all(),
                          QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
-                        synopsis(), helpText()))
+                        synopsis(), helpText(stage, overrides)))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -163,7 +158,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     settings.outFolder = parser.isSet(out) ? parser.value(out) : QStringLiteral("grades");
     if (settings.outFolder.isEmpty())
         return usage(GradeCommandWords::tr("--out: missing the folder"));
-    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &settings.size),
+    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &settings.size),
                                  readSceneOverrides(parser, overrides, &settings.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
@@ -193,7 +188,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
         args.jobs = parser.value(jobs).toInt(&ok);
         if (!ok || args.jobs < 1 || args.jobs > 256)
             return usage(
-                QStringLiteral("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
+                GradeCommandWords::tr("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
     }
     const double seconds =
         parser.isSet(timeout) ? parser.value(timeout).toDouble(&ok) : kDefaultTimeoutS;
@@ -204,7 +199,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const qint64 mib =
         parser.isSet(memory) ? parser.value(memory).toLongLong(&ok) : qint64(kDefaultMemoryMiB);
     if (!ok || mib < 64 || mib > 1024 * 1024)
-        return usage(QStringLiteral("--memory: expected 64..1048576 MiB, got '%1'")
+        return usage(GradeCommandWords::tr("--memory: expected 64..1048576 MiB, got '%1'")
                          .arg(parser.value(memory)));
     args.limits.memoryBytes = mib * 1024 * 1024;
     return args;
@@ -383,9 +378,9 @@ int grade(const GradeArgs &args)
     }
     journal.finish();
     printLine(gradesTable(results));
-    printErrLine(QStringLiteral("grade: %1 checks; %2")
-                     .arg(results.rows.size())
-                     .arg(QDir(args.settings.outFolder).filePath(QStringLiteral("report.html"))));
+    printErrLine(GradeCommandWords::tr("grade: %1 checks; %2")
+                     .arg(QString::number(results.rows.size()),
+                          QDir(args.settings.outFolder).filePath(QStringLiteral("report.html"))));
     return kExitOk;
 }
 

@@ -8,7 +8,7 @@
 namespace phonglab::cli {
 
 // What a grade run has finished, row by row, so that a run stopped by
-// Ctrl-C or a crash loses nothing (issue 42, E): each child's end is
+// Ctrl-C or a crash loses nothing: each child's end is
 // appended to DIR/grades.partial.jsonl as it comes, flushed, and `grade
 // --resume` checks those rows again from it instead of drawing them again.
 // The checking is deterministic, so the resumed run's tables are the

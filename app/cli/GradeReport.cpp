@@ -211,7 +211,7 @@ QString linesInContext(const GradeRow &row, const QString &file, int line)
 QString details(const GradeRow &row)
 {
     QString html;
-    const CheckOutcome &o = row.outcome;
+    const CheckFindings &o = row.outcome;
     if (row.verdict == GradeVerdict::Pass)
         html += QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("Matches the exact image.")));
     if (row.verdict == GradeVerdict::Fail) {
@@ -315,7 +315,7 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
              std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("1e9"),
              esc(results.scenes[std::size_t(row.scene)].label), verdictBadge(row.verdict),
              checked ? (std::isfinite(psnr) ? sentenceNumber(psnr, 'f', 1) : QStringLiteral("∞"))
-                    : QString(),
+                     : QString(),
              figure(row.yoursImage, ReportWords::tr("theirs"))
                  + figure(row.exactImage, ReportWords::tr("exact"))
                  + figure(row.heatmapImage, ReportWords::tr("heatmap")),

@@ -2,9 +2,9 @@
 #include "CheckReportOutput.h"
 #include "ClassFolder.h"
 #include "SceneOverrides.h"
+#include "core/reference/PhongEquation.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
-#include "core/reference/PhongEquation.h"
 
 #include <QSize>
 #include <QString>
@@ -46,10 +46,12 @@ enum class GradeVerdict {
 QString gradeVerdictName(GradeVerdict verdict); // pass, fail, error, timeout, crash
 
 struct GradeRow {
-    int submission = 0; // index into the submissions
-    int scene = 0;      // index into the scenes
-    GradeVerdict verdict = GradeVerdict::Error;
-    CheckOutcome outcome; // as `check` reports it; paths in the class folder relative to it
+    int submission = 0;                         // index into the submissions
+    int scene = 0;                              // index into the scenes
+    GradeVerdict verdict = GradeVerdict::Error; // the row's one verdict
+    // What the check found, as `check` reports it but for the verdict;
+    // paths in the class folder relative to it.
+    CheckFindings outcome;
     double seconds = 0.0; // the child's wall time
     // Relative to the out folder; empty where there is none.
     QString yoursImage;

@@ -36,7 +36,7 @@ QString classRelative(const QString &path, const QString &classRoot)
     return QString(path).replace(classRoot + QLatin1Char('/'), QString());
 }
 
-void makeRelative(CheckOutcome *outcome, const QString &classRoot)
+void makeRelative(CheckFindings *outcome, const QString &classRoot)
 {
     for (ShaderDiagnostic &e : outcome->errors)
         e.file = classRelative(e.file, classRoot);
@@ -62,7 +62,6 @@ QString submissionFolder(const GradeResults &results, int submission)
 void failRow(GradeRow &row, GradeVerdict verdict, const QString &file, const QString &message)
 {
     row.verdict = verdict;
-    row.outcome.verdict = CheckOutcome::Verdict::Error;
     row.outcome.errors.push_back(inputError(file, message));
 }
 
@@ -105,11 +104,13 @@ const CheckReference *GradeRun::referenceFor(int scene, const Scene &checked, QS
     if (const auto found = m_references.find(key); found != m_references.end())
         return &found->second;
     const GradeScene &s = m_results.scenes[std::size_t(scene)];
-    const QByteArray label = s.label.toLocal8Bit();
     const auto progress = [&](double done) {
         if (m_tty)
-            std::fprintf(stderr, "\r\033[Kgrade: the exact image of %s, %d %%", label.constData(),
-                         int(done * 100));
+            std::fprintf(stderr, "\r\033[K%s",
+                         GradeRunWords::tr("grade: the exact image of %1, %2 %")
+                             .arg(s.label, QString::number(int(done * 100)))
+                             .toLocal8Bit()
+                             .constData());
         return true;
     };
     Result<CheckReference> made =
@@ -294,12 +295,11 @@ void GradeRun::check(GradeRow &row, const GradedChildEnd &end)
         return;
     }
     const GradeSettings &settings = m_results.settings;
-    checkDrawing(&row.outcome, image, *reference, settings.toleranceSteps, settings.equation,
-                 scene.path);
-    if (row.outcome.verdict == CheckOutcome::Verdict::Error)
+    const CheckOutcome::Verdict verdict = checkDrawing(
+        &row.outcome, image, *reference, settings.toleranceSteps, settings.equation, scene.path);
+    if (verdict == CheckOutcome::Verdict::Error)
         return;
-    row.verdict = row.outcome.verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass
-                                                                     : GradeVerdict::Fail;
+    row.verdict = verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass : GradeVerdict::Fail;
     const PhongEquation equation = row.outcome.report.equation;
     row.exactImage = exactImageFor(row.scene, enabledLights(checked), equation, *reference);
     const QString heatmap =
@@ -313,14 +313,13 @@ void GradeRun::showProgress()
     if (!m_tty)
         return;
     const int total = int(m_results.rows.size());
-    QString left;
     const int checked = m_done;
+    QString text = GradeRunWords::tr("grade: %1 of %2 checked").arg(checked).arg(total);
     if (checked > 0 && checked < total) {
         const double perCheck = m_clock.elapsed() / 1000.0 / checked;
-        left = QStringLiteral(", about %1 s left").arg(qRound(perCheck * (total - checked)));
+        text += GradeRunWords::tr(", about %1 s left").arg(qRound(perCheck * (total - checked)));
     }
-    std::fprintf(stderr, "\r\033[Kgrade: %d of %d checked%s", checked, total,
-                 left.toLocal8Bit().constData());
+    std::fprintf(stderr, "\r\033[K%s", text.toLocal8Bit().constData());
     std::fflush(stderr);
 }
 

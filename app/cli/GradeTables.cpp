@@ -5,11 +5,17 @@
 #include "SceneStages.h"
 #include "bench/BenchResult.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <cmath>
 
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/support/Language).
+struct GradeTablesWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeTables)
+};
 
 namespace {
 
@@ -38,6 +44,19 @@ QString textCell(const QString &text)
 bool checked(const GradeRow &row)
 {
     return row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+}
+
+// The check's verdict the row's stands for: a timeout or a crash checked nothing.
+CheckOutcome::Verdict checkVerdict(GradeVerdict verdict)
+{
+    switch (verdict) {
+    case GradeVerdict::Pass: return CheckOutcome::Verdict::Pass;
+    case GradeVerdict::Fail: return CheckOutcome::Verdict::Fail;
+    case GradeVerdict::Error:
+    case GradeVerdict::Timeout:
+    case GradeVerdict::Crash: break;
+    }
+    return CheckOutcome::Verdict::Error;
 }
 
 QString psnrText(const GradeRow &row)
@@ -105,7 +124,7 @@ QJsonObject gradesJson(const GradeResults &results)
             QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
     QJsonArray rows;
     for (const GradeRow &row : results.rows) {
-        QJsonObject o = checkJson(row.outcome);
+        QJsonObject o = checkJson(checkVerdict(row.verdict), row.outcome);
         o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
@@ -140,7 +159,11 @@ QString gradesTable(const GradeResults &results)
         const QString who = s.student.isEmpty() ? s.name : s.student;
         return programs.value(s.name) < 2 ? who : QStringLiteral("%1 (%2)").arg(who, s.program);
     };
-    int nameWidth = 7, sceneWidth = 5;
+    // The table's head: the verdicts below it are keys, as in grades.csv.
+    const QString nameHead = GradeTablesWords::tr("student");
+    const QString sceneHead = GradeTablesWords::tr("scene");
+    int nameWidth = std::max(7, int(nameHead.size()));
+    int sceneWidth = std::max(5, int(sceneHead.size()));
     for (const Submission &s : results.submissions)
         nameWidth = std::clamp(int(shownName(s).size()), nameWidth, 24);
     for (const GradeScene &s : results.scenes)
@@ -155,9 +178,9 @@ QString gradesTable(const GradeResults &results)
             text.chop(1);
         return text;
     };
-    QStringList lines{line(QStringLiteral("student"), QStringLiteral("scene"),
-                           QStringLiteral("verdict"), QStringLiteral("PSNR dB"),
-                           QStringLiteral("mistake, where"))};
+    QStringList lines{line(nameHead, sceneHead, GradeTablesWords::tr("verdict"),
+                           GradeTablesWords::tr("PSNR dB"),
+                           GradeTablesWords::tr("mistake, where"))};
     int previous = -1;
     for (const GradeRow &row : results.rows) {
         const QString name = row.submission == previous

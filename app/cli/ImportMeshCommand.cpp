@@ -3,7 +3,14 @@
 #include "CliCommon.h"
 #include "mesh/import/MeshImportProcess.h"
 
+#include <QCoreApplication>
+
 namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/support/Language).
+struct ImportMeshCommandWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::ImportMeshCommand)
+};
 
 int runImportMesh(int argc, char **argv)
 {
@@ -39,8 +46,8 @@ int runImportMesh(int argc, char **argv)
         }
     }
     if (!ok || path.isEmpty() || out.isEmpty()) {
-        printError(
-            QStringLiteral("__import-mesh is internal: the app runs it to import a mesh file"));
+        printError(ImportMeshCommandWords::tr(
+            "__import-mesh is internal: the app runs it to import a mesh file"));
         return kExitUsage;
     }
     return runMeshImportChild(path, normals, out, limits);

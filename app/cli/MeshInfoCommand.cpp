@@ -34,7 +34,7 @@ std::variant<MeshInfoArgs, int> parseArgs(const QStringList &arguments)
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   MeshInfoCommandWords::tr("Show help."));
-    const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print JSON."));
+    const QCommandLineOption json(QStringLiteral("json"), MeshInfoCommandWords::tr("Print JSON."));
     const QCommandLineOption normals(QStringLiteral("normals"),
                                      MeshInfoCommandWords::tr("Normal method."),
                                      QStringLiteral("method"));
@@ -111,7 +111,7 @@ QString methodDescription(const MeshStats &s)
 {
     QString text = normalMethodName(s.normalMethod);
     if (s.creaseAngleDeg)
-        text += QStringLiteral(", crease %1°").arg(*s.creaseAngleDeg);
+        text += MeshInfoCommandWords::tr(", crease %1°").arg(*s.creaseAngleDeg);
     return text;
 }
 

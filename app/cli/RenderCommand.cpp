@@ -45,61 +45,35 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
                                   RenderCommandWords::tr("Show help."));
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  RenderCommandWords::tr("Scene file (JSON)."));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Output PNG file."), QStringLiteral("file"));
-    const QCommandLineOption size(QStringLiteral("size"),
-                                  RenderCommandWords::tr("Image size, default 800x600."),
-                                  QStringLiteral("WxH"));
-    const QCommandLineOption vertex(
-        QStringLiteral("vertex"),
-        RenderCommandWords::tr("Vertex shader to use instead of the scene's."),
-        QStringLiteral("file"));
-    const QCommandLineOption fragment(
-        QStringLiteral("fragment"),
-        RenderCommandWords::tr("Fragment shader to use instead of the scene's."),
-        QStringLiteral("file"));
-    const QCommandLineOption shading(
-        QStringLiteral("shading"), RenderCommandWords::tr("Shading method instead of the scene's."),
-        QStringLiteral("name"));
-    const SceneOverrideOptions overrides;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, QString(),
+                                    QStringLiteral("file"));
+    const StageOptions stage;
+    const SceneOverrideOptions overrides(SceneOverrideOptions::Use::Draw);
 
-    const QString knownMethods = shadingNames().join(QStringLiteral(", "));
     const QString synopsis = RenderCommandWords::tr(
         "usage: phonglab render SCENE.json -o OUT.png [--size WxH] [--shading NAME] "
         "[--vertex FILE] [--fragment FILE] [--bind NAME=MEANING ...]\n"
         "                       [--define NAME=VALUE ...] [--precision highp|as-written]");
+    //: %1: the lines of --size, --shading, --vertex, --fragment, --bind, --define and
+    //: --precision, each option's own
     const QString helpText = synopsis
         + RenderCommandWords::tr(
               "\n\n"
               "Renders one frame of SCENE.json offscreen (no multisampling) into an 8-bit RGB "
               "PNG.\n\n"
               "  -o, --output FILE   the PNG to write (only written when everything succeeded)\n"
-              "  --size WxH          image size in pixels, default 800x600\n"
-              "  --shading NAME      shading method instead of the scene's \"shading\"; one of\n"
-              "                      %1\n"
-              "  --vertex FILE       vertex shader instead of the shading method's\n"
-              "  --fragment FILE     fragment shader instead of the shading method's\n"
-              "  --bind NAME=MEANING what the shader's uniform or input NAME holds; repeatable "
-              "(the\n"
-              "                      meanings are those of `phonglab check`), or a constant "
-              "(NAME=1,0,0)\n"
-              "  --define NAME=VALUE a token the page's JavaScript replaces before compiling; "
-              "repeatable\n"
-              "  --precision RULE    highp (default: every float at 32 bits, as a desktop "
-              "browser\n"
-              "                      computes it) or as-written (the declared precision, as "
-              "this driver\n"
-              "                      computes it)\n\n"
+              "%1\n\n"
               "Exit status: 0 success, 1 bad input or compile/render failure, 2 wrong arguments.\n"
               "Compile errors are printed as FILE:LINE:COL: error: MESSAGE.")
-              .arg(knownMethods);
+              .arg(helpLines(
+                  QList<QCommandLineOption>{stage.size, stage.shading, stage.vertex, stage.fragment}
+                  + overrides.all()));
     const auto usage = [&](const QString &message) { return usageError(message, synopsis); };
-    if (const std::optional<int> exit = parseOrExit(
-            parser, arguments,
-            {help,
-             QList<QCommandLineOption>{output, size, vertex, fragment, shading} + overrides.all(),
-             SceneOverrideOptions::repeatable()},
-            synopsis, helpText))
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments,
+                        {help, QList<QCommandLineOption>{output} + stage.all() + overrides.all(),
+                         SceneOverrideOptions::repeatable()},
+                        synopsis, helpText))
         return *exit;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
@@ -115,13 +89,13 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     if (const QString problem = pngNameProblem(QStringLiteral("-o"), args.outputPath);
         !problem.isEmpty())
         return usage(problem);
-    for (const QString &wrong : {readSizeOption(parser, size, kMaxImageSide, &args.size),
-                                 readShadingOption(parser, shading, &args.shading),
+    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &args.size),
+                                 readShadingOption(parser, stage.shading, &args.shading),
                                  readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())
             return usage(wrong);
-    args.vertexPath = parser.value(vertex);
-    args.fragmentPath = parser.value(fragment);
+    args.vertexPath = parser.value(stage.vertex);
+    args.fragmentPath = parser.value(stage.fragment);
     return args;
 }
 

@@ -37,6 +37,33 @@ QString numbersText(const std::vector<double> &numbers)
 
 } // namespace
 
+SceneOverrideOptions::SceneOverrideOptions(Use use)
+    : bind(QStringLiteral("bind"),
+           SceneOverridesWords::tr("what the shader's uniform or input NAME holds; repeatable. "
+                                   "Names are\nbound by themselves where they say it "
+                                   "(uModelMatrix, aPosition, u_kd);\nthis wins over that. "
+                                   "Meanings: %1, or none; or a constant the\npage sets "
+                                   "(--bind mode=1, --bind 'u_MatlSet[0].emit=0,0,0')")
+               .arg(bindingMeaningKeys().join(QStringLiteral(", "))),
+           QStringLiteral("NAME=MEANING"))
+    , define(QStringLiteral("define"),
+             SceneOverridesWords::tr("a token the page's JavaScript replaces before compiling "
+                                     "(NUM_LIGHTS=2);\nrepeatable"),
+             QStringLiteral("NAME=VALUE"))
+    , precision(QStringLiteral("precision"),
+                use == Use::Check
+                    ? SceneOverridesWords::tr("highp (default): every float checked at 32 bits, "
+                                              "as a desktop browser\ncomputes it, and what "
+                                              "mediump or lowp would change said apart;\n"
+                                              "as-written: the declared precision, as this "
+                                              "driver computes it")
+                    : SceneOverridesWords::tr("highp (default: every float at 32 bits, as a "
+                                              "desktop browser\ncomputes it) or as-written (the "
+                                              "declared precision, as this driver\ncomputes it)"),
+                QStringLiteral("RULE"))
+{
+}
+
 void SceneOverrides::applyTo(Scene &scene) const
 {
     for (const auto &[name, meaning] : bindings)

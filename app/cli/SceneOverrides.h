@@ -31,11 +31,19 @@ struct SceneOverrides {
     QStringList arguments() const;
 };
 
-// The options, declared once for every command that takes them.
+// The options, declared once with their help (helpLine()) for every command
+// that takes them. --precision's help says what the command does with it:
+// `check` and `grade` judge at highp and say apart what the declared
+// precision changes; `render` draws.
 struct SceneOverrideOptions {
-    QCommandLineOption bind{QStringLiteral("bind"), QString(), QStringLiteral("binding")};
-    QCommandLineOption define{QStringLiteral("define"), QString(), QStringLiteral("define")};
-    QCommandLineOption precision{QStringLiteral("precision"), QString(), QStringLiteral("rule")};
+    enum class Use {
+        Draw,
+        Check
+    };
+    explicit SceneOverrideOptions(Use use);
+    QCommandLineOption bind;
+    QCommandLineOption define;
+    QCommandLineOption precision;
 
     QList<QCommandLineOption> all() const { return {bind, define, precision}; }
     // The options that may be given more than once.

@@ -41,6 +41,23 @@ StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg,
                       shippedShaderPath(scene.shading, ShaderStage::Fragment))};
 }
 
+StageOptions::StageOptions()
+    : size(QStringLiteral("size"), SceneStagesWords::tr("image size in pixels, default 800x600"),
+           QStringLiteral("WxH"))
+    , vertex(QStringLiteral("vertex"),
+             SceneStagesWords::tr("vertex shader instead of the scene's or the shading method's"),
+             QStringLiteral("FILE"))
+    , fragment(QStringLiteral("fragment"),
+               SceneStagesWords::tr("fragment shader instead of the scene's or the shading "
+                                    "method's"),
+               QStringLiteral("FILE"))
+    , shading(QStringLiteral("shading"),
+              SceneStagesWords::tr("shading method instead of the scene's \"shading\"; one of\n%1")
+                  .arg(shadingNames().join(QStringLiteral(", "))),
+              QStringLiteral("NAME"))
+{
+}
+
 QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                        int maxSide, QSize *size)
 {

@@ -1,7 +1,7 @@
 #pragma once
+#include "core/check/MistakeSourceLines.h"
 #include "core/scene/Scene.h"
 #include "core/scene/ShadingMethod.h"
-#include "core/check/MistakeSourceLines.h"
 #include "render/BuildReport.h"
 #include "render/Renderer.h"
 
@@ -24,7 +24,20 @@ struct StageFiles {
 StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg,
                             const QString &fragmentArg, bool methodChosen);
 
-// --size and --shading, read the one way `render` and `check` take them.
+// --size, --shading, --vertex and --fragment, declared once with their help
+// (helpLine()) for `render` and `check`; `grade` takes --size alone (each
+// submission brings its own stages).
+struct StageOptions {
+    StageOptions();
+    QCommandLineOption size;
+    QCommandLineOption vertex;
+    QCommandLineOption fragment;
+    QCommandLineOption shading;
+
+    QList<QCommandLineOption> all() const { return {size, vertex, fragment, shading}; }
+};
+
+// --size and --shading, read the one way every command takes them.
 // Each leaves its output alone when the option is not given and returns an
 // empty string, or the message for usage() when the value is wrong.
 QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOption &option,

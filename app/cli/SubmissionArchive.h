@@ -6,7 +6,7 @@
 namespace phonglab::cli {
 
 // A .zip or .tar.gz as students and course platforms hand them in, unpacked
-// with libarchive into a folder of PhongLab's own (issue 42, C). Whatever the
+// with libarchive into a folder of PhongLab's own. Whatever the
 // archive holds, nothing is written outside that folder: an archive with an
 // absolute name, a `..` in a name, a link of any kind, a device, more
 // entries or more bytes than the limits, a ratio no honest archive has (a

@@ -32,7 +32,6 @@ GradeResults twoRows()
     GradeRow pass;
     pass.submission = 0;
     pass.verdict = GradeVerdict::Pass;
-    pass.outcome.verdict = CheckOutcome::Verdict::Pass;
     pass.outcome.report.comparison.psnr = std::numeric_limits<double>::infinity();
     pass.outcome.report.comparison.pixelsCompared = 100;
     pass.seconds = 0.5;
@@ -40,7 +39,6 @@ GradeResults twoRows()
     GradeRow fail;
     fail.submission = 1;
     fail.verdict = GradeVerdict::Fail;
-    fail.outcome.verdict = CheckOutcome::Verdict::Fail;
     fail.outcome.report.comparison.psnr = 23.456;
     fail.outcome.report.comparison.maxError = 145;
     fail.outcome.report.comparison.pixelsCompared = 1000;
@@ -77,9 +75,10 @@ private slots:
     {
         const QByteArray csv = gradesCsv(twoRows());
         const QList<QByteArray> lines = csv.split('\n');
-        QCOMPARE(lines.value(0), QByteArray("submission,scene,verdict,psnr_db,max_error,"
-                                            "bad_fraction,key,also,file,line,equation,bindings,"
-                                            "seconds,mistakes,program,student,participant"));
+        QCOMPARE(lines.value(0),
+                 QByteArray("submission,scene,verdict,psnr_db,max_error,"
+                            "bad_fraction,key,also,file,line,equation,bindings,"
+                            "seconds,mistakes,program,student,participant"));
         QCOMPARE(lines.value(1),
                  QByteArray("alice,check.json,pass,inf,0,0.000000,,,,,guarded,,0.50,,,,"));
         // The formula gets a ', the quote is doubled, "%1" stays as written.
@@ -115,7 +114,8 @@ private slots:
         QTemporaryDir dir;
         const QString root = dir.path();
         write(root + QStringLiteral("/zoe/shader.VERT"), "void main() { gl_Position = vec4(0); }");
-        write(root + QStringLiteral("/amy/deep/er/v.glsl"), "void main() { gl_Position = vec4(0); }");
+        write(root + QStringLiteral("/amy/deep/er/v.glsl"),
+              "void main() { gl_Position = vec4(0); }");
         write(root + QStringLiteral("/amy/f.glsl"), "void main() {}");
         write(root + QStringLiteral("/bo/a.frag"), "");
         write(root + QStringLiteral("/bo/b.fs"), "");
@@ -141,12 +141,12 @@ private slots:
     void classFolderErrors()
     {
         QTemporaryDir dir;
-        QVERIFY(readClassFolder(dir.filePath(QStringLiteral("nosuch"))).error.contains(
-            QStringLiteral("no such folder")));
+        QVERIFY(readClassFolder(dir.filePath(QStringLiteral("nosuch")))
+                    .error.contains(QStringLiteral("no such folder")));
         QVERIFY(readClassFolder(dir.path()).error.contains(QStringLiteral("no submission")));
         write(dir.filePath(QStringLiteral("file")), "");
-        QVERIFY(readClassFolder(dir.filePath(QStringLiteral("file"))).error.contains(
-            QStringLiteral("not a folder")));
+        QVERIFY(readClassFolder(dir.filePath(QStringLiteral("file")))
+                    .error.contains(QStringLiteral("not a folder")));
     }
 };
 

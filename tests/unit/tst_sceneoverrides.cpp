@@ -14,7 +14,7 @@ namespace {
 QString read(const QStringList &arguments, SceneOverrides *out)
 {
     QCommandLineParser parser;
-    const SceneOverrideOptions options;
+    const SceneOverrideOptions options(SceneOverrideOptions::Use::Check);
     parser.addOptions(options.all());
     if (!parser.parse(QStringList{QStringLiteral("phonglab")} + arguments))
         return parser.errorText();
