@@ -2081,6 +2081,14 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
+    <message>
+        <source>vertex %1 needs %2 numbers, found %3</source>
+        <translation>Vertex %1 braucht %2 Zahlen, gefunden: %3</translation>
+    </message>
+    <message>
+        <source>expected %1, found %2</source>
+        <translation>%1 erwartet, gefunden: %2</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::OffscreenRenderer</name>

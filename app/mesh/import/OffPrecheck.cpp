@@ -233,7 +233,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
             return;
         }
         if (line.size() < vertexNumbers)
-            return fail(QStringLiteral("vertex %1 needs %2 numbers, found %3")
+            return fail(OffPrecheckWords::tr("vertex %1 needs %2 numbers, found %3")
                             .arg(v + 1)
                             .arg(vertexNumbers)
                             .arg(line.size()));
@@ -265,7 +265,7 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
         for (std::size_t i = 1; i < line.size(); ++i) {
             const bool index = i < indicesEnd;
             if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
-                return fail(QStringLiteral("expected %1, found %2")
+                return fail(OffPrecheckWords::tr("expected %1, found %2")
                                 .arg(index ? OffPrecheckWords::tr("a vertex index")
                                            : OffPrecheckWords::tr("a number"),
                                      quoted(line[i])));
