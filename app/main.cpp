@@ -1,9 +1,9 @@
 #include "benchcli/BenchCommand.h"
 #include "cli/Cli.h"
 #include "cli/CliCommon.h"
+#include "core/check/ProgramSynopsis.h"
 #include "core/support/Language.h"
 #include "core/support/RuntimeDirectory.h"
-#include "core/check/ProgramSynopsis.h"
 #include "ui/window/GuiMain.h"
 
 int main(int argc, char **argv)

@@ -2,9 +2,9 @@
 #include "BenchOptions.h"
 #include "BenchResult.h"
 #include "ObjectFit.h"
-#include "core/support/Result.h"
-#include "core/scene/Scene.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/scene/Scene.h"
+#include "core/support/Result.h"
 
 #include <QImage>
 #include <QString>

@@ -1,7 +1,7 @@
 #pragma once
 #include "ErrorBudget.h"
-#include "core/view/CameraPath.h"
 #include "core/support/Result.h"
+#include "core/view/CameraPath.h"
 
 #include <QSize>
 #include <QString>

@@ -6,8 +6,8 @@
 #include "ImportMeshCommand.h"
 #include "MeshInfoCommand.h"
 #include "RenderCommand.h"
-#include "core/support/NearestSpelling.h"
 #include "core/check/ProgramSynopsis.h"
+#include "core/support/NearestSpelling.h"
 #include "headless/HeadlessPlatform.h"
 
 #include <QCoreApplication>

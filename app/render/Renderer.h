@@ -2,11 +2,11 @@
 #include "BuildReport.h"
 #include "GpuMesh.h"
 #include "ShaderProgram.h"
+#include "core/scene/Scene.h"
+#include "core/support/Result.h"
 #include "core/view/DepthRange.h"
 #include "core/view/DetailSelection.h"
 #include "core/view/ObjectMatrices.h"
-#include "core/support/Result.h"
-#include "core/scene/Scene.h"
 #include "mesh/import/SceneMeshes.h"
 
 #include <QHash>

@@ -29,7 +29,7 @@ namespace {
 
 // The median wall time of `runs` verdicts, in ms, and the last report.
 double checkOnceMs(const RgbImage &image, const CheckReference &reference, int runs,
-               CheckReport *report)
+                   CheckReport *report)
 {
     std::vector<double> ms;
     for (int i = 0; i < runs; ++i) {

@@ -6,11 +6,11 @@
 //   build/tests/bench/bench_reference [--size N]
 
 #include "BenchHelpers.h"
-#include "core/scene/ResourcePaths.h"
-#include "core/scene/SceneJson.h"
 #include "core/reference/AnalyticRaycaster.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
 #include "mesh/import/SceneMeshes.h"
 

@@ -13,11 +13,11 @@
 // per mille of the bounding-box diagonal. Neither moves a vertex, so the
 // simplified surface's own vertices lie on the original exactly.
 #include "BenchHelpers.h"
+#include "core/reference/MeshBvh.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
-#include "core/reference/MeshBvh.h"
-#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/detail/MeshDecimation.h"
+#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/import/SceneMeshes.h"
 
 #include <QCoreApplication>

@@ -12,15 +12,15 @@
 // Header-only on purpose: the fuzz build links it with libFuzzer, the unit
 // test with QtTest, and neither needs a library of its own.
 
-#include "core/view/CameraPath.h"
-#include "core/scene/RecoveryJournal.h"
-#include "core/scene/SceneJson.h"
 #include "core/check/CoursePrelude.h"
 #include "core/check/ShaderLint.h"
 #include "core/check/UniformAnnotations.h"
 #include "core/project/HtmlShaders.h"
 #include "core/project/ProjectSave.h"
 #include "core/project/ProjectShader.h"
+#include "core/scene/RecoveryJournal.h"
+#include "core/scene/SceneJson.h"
+#include "core/view/CameraPath.h"
 #include "mesh/import/MeshCache.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/ShaderDiagnostic.h"

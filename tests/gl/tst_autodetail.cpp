@@ -3,8 +3,8 @@
 // close), the level moves with the camera without flickering, and flat
 // shading draws from the level's own face layout.
 #include "RenderCheck.h"
-#include "core/view/DetailSelection.h"
 #include "core/check/ImageMetrics.h"
+#include "core/view/DetailSelection.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"

@@ -4,9 +4,9 @@
 // analytic references (RenderCheck.h); deliberately wrong variants must fail
 // the very same comparison.
 #include "RenderCheck.h"
-#include "core/scene/SceneJson.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
+#include "core/scene/SceneJson.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"

@@ -11,8 +11,8 @@
 // (docs/reliability.md).
 #include "RenderCheck.h"
 #include "TestPaths.h"
-#include "core/scene/SceneJson.h"
 #include "core/reference/PhongReference.h"
+#include "core/scene/SceneJson.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/GlFormat.h"
 

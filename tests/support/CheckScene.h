@@ -1,6 +1,6 @@
 #pragma once
-#include "core/scene/SceneJson.h"
 #include "core/check/ShaderCheck.h"
+#include "core/scene/SceneJson.h"
 #include "mesh/import/SceneMeshes.h"
 
 #include "TestPaths.h"

@@ -1,8 +1,8 @@
 #include "RenderCheck.h"
 
+#include "core/reference/MeshRaycaster.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
-#include "core/reference/MeshRaycaster.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
 #include "render/QtImages.h"

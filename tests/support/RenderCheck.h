@@ -1,8 +1,8 @@
 #pragma once
 #include "core/check/ImageMetrics.h"
+#include "core/reference/AnalyticRaycaster.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
-#include "core/reference/AnalyticRaycaster.h"
 #include "render/BuildReport.h"
 #include "render/ShaderSource.h"
 

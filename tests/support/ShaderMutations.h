@@ -1,7 +1,7 @@
 #pragma once
-#include "core/support/RgbImage.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
+#include "core/support/RgbImage.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ShaderSource.h"
 

@@ -9,16 +9,16 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/reference/MeshRaycaster.h"
-#include "core/scene/MaterialPresets.h"
 #include "core/reference/PhongReference.h"
+#include "core/scene/MaterialPresets.h"
 #include "render/QtImages.h"
 #include "ui/scene/LightsDock.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/MaterialDock.h"
 #include "ui/scene/ObjectDock.h"
 #include "ui/scene/SceneEditDockSet.h"
 #include "ui/scene/Vec3Field.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 #include "ui/window/WindowImage.h"
 
 #include <QAction>

@@ -6,11 +6,11 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/view/CameraFraming.h"
 #include "core/scene/SceneJson.h"
+#include "core/view/CameraFraming.h"
 #include "ui/viewport/FrameStatsLabel.h"
-#include "ui/window/MainWindow.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 #include "ui/window/WindowImage.h"
 
 #include <QDir>

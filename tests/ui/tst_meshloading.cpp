@@ -11,15 +11,15 @@
 #include "UiTestWindow.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/MeshLoader.h"
-#include "ui/window/LoadProgressWidget.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/MeshPlacement.h"
 #include "ui/scene/MeshStatsText.h"
 #include "ui/scene/NormalsEditor.h"
-#include "ui/window/RecentFiles.h"
 #include "ui/scene/SceneDock.h"
 #include "ui/scene/SceneLoadJob.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/LoadProgressWidget.h"
+#include "ui/window/MainWindow.h"
+#include "ui/window/RecentFiles.h"
 #include "ui/window/WindowImage.h"
 
 #include <QCheckBox>

@@ -6,10 +6,10 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/scene/Scene.h"
-#include "ui/viewport/DetailLevelLabel.h"
-#include "ui/window/MainWindow.h"
 #include "ui/performance/PerformanceDock.h"
+#include "ui/viewport/DetailLevelLabel.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QApplication>
 #include <QChart>

@@ -7,14 +7,14 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/scene/SceneJson.h"
-#include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/SceneDock.h"
+#include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/uniforms/UniformsDock.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QAction>
 #include <QDir>

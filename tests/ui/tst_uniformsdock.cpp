@@ -4,12 +4,11 @@
 // dock, changes the frame, survives a recompile; bad input is refused.
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "ui/uniforms/BindingChoice.h"
 #include "ui/shaders/LiveShaderController.h"
-#include "ui/window/MainWindow.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/shaders/ShaderFileSet.h"
+#include "ui/uniforms/BindingChoice.h"
 #include "ui/uniforms/UniformBoolRow.h"
 #include "ui/uniforms/UniformFloatRow.h"
 #include "ui/uniforms/UniformIntRow.h"
@@ -17,6 +16,7 @@
 #include "ui/uniforms/UniformVectorRow.h"
 #include "ui/uniforms/UniformsDock.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
 
 #include <QCheckBox>
 #include <QDir>

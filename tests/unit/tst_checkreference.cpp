@@ -63,8 +63,8 @@ private slots:
             QSKIP("this form gives the exact image in this scene");
         // The guarded equation demanded: backface-specular's image is the
         // slide's equation, which passes by default.
-        const CheckReport report = checkRender(it->second, m_reference,
-                                               kDefaultCheckToleranceSteps, PhongEquation::Guarded);
+        const CheckReport report = checkRender(it->second, m_reference, kDefaultCheckToleranceSteps,
+                                               PhongEquation::Guarded);
         QVERIFY(!report.passed());
         QVERIFY(!report.diagnosis.findings.empty());
         const MistakeFinding &top = report.diagnosis.findings.front();

@@ -5,8 +5,8 @@
 
 #include "TestPaths.h"
 #include "core/view/DetailSelection.h"
-#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/detail/DetailLevels.h"
+#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/import/MeshLoader.h"
 
 #include <QRandomGenerator>

@@ -47,7 +47,7 @@ private slots:
         showBeforeGl(gpu, scene);
         QVERIFY(!gpu.isInitialized());
         QVERIFY(!gpu.isReady());
-        QCOMPARE(gpu.meshInfo().size(), 1); // one sphere mesh, used twice
+        QCOMPARE(gpu.meshInfo().size(), 1);  // one sphere mesh, used twice
         QVERIFY(gpu.loadedKeys().isEmpty()); // nothing is on the GPU yet
 
         Scene other = scene;
@@ -66,7 +66,7 @@ private slots:
         QVERIFY(gpu.frame({800, 600}));
         QVERIFY(gpu.isCameraFramed());
         QVERIFY(gpu.camera().eye.z > scene.camera.eye.z); // moved back to show both
-        QCOMPARE(gpu.cameraToSave(), scene.camera); // the scene's own, not the fitted one
+        QCOMPARE(gpu.cameraToSave(), scene.camera);       // the scene's own, not the fitted one
         QVERIFY(gpu.currentScene().camera.frameObjects);
         QVERIFY(!gpu.frame({800, 600})); // the same view: nothing moves
         const Camera framed = gpu.camera();

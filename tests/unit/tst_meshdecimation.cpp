@@ -1,8 +1,8 @@
 // Levels of detail: OpenMesh's quadric decimation through decimateMesh, the
 // builtins tessellated coarser, and a scene object's "detail" through
 // loadSceneMeshes. The mesh's own normals must survive exactly.
-#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/detail/MeshDecimation.h"
+#include "mesh/import/BuiltinMeshes.h"
 #include "mesh/import/MeshLoader.h"
 #include "mesh/import/SceneMeshes.h"
 

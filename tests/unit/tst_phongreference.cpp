@@ -1,10 +1,10 @@
 // The CPU reference against values worked out by hand (in the comments), so a
 // mistake in PhongReference.cpp cannot hide behind the same mistake here.
 
+#include "core/reference/PhongReference.h"
+#include "core/scene/Transform.h"
 #include "core/view/Camera.h"
 #include "core/view/ObjectMatrices.h"
-#include "core/scene/Transform.h"
-#include "core/reference/PhongReference.h"
 
 #include <QtTest>
 #include <cmath>

@@ -5,9 +5,9 @@
 // changes fast but continuously. Also: the geometry-only SceneDepthCaster
 // gives raycastSceneMeshes()'s depths bit for bit, bad input, and the time
 // the mask takes for the default scene at 800x600.
-#include "core/scene/SceneJson.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
+#include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
 #include "mesh/import/SceneMeshes.h"
 

@@ -139,8 +139,9 @@ void TestSceneUniforms::savesOnlyTheUsersPlainNumbers()
     // A uniform the user bound to a meaning is PhongLab's to set, not saved.
     std::map<QString, std::vector<double>> withoutGain = expected;
     withoutGain.erase(QStringLiteral("gain"));
-    QCOMPARE(userUniformValues(snapshot, bindVariables(variables, {{QStringLiteral("gain"),
-                                                                     BindingMeaning::Shininess}})),
+    QCOMPARE(userUniformValues(
+                 snapshot,
+                 bindVariables(variables, {{QStringLiteral("gain"), BindingMeaning::Shininess}})),
              withoutGain);
 }
 

@@ -1,8 +1,8 @@
 // What students' names mean (core/ShaderBindings): automatic binding by name
 // and type, the user's explicit word, what cannot be bound, how many lights
 // a program takes, and the scene file's "bindings".
-#include "core/scene/SceneJson.h"
 #include "core/check/ShaderBindings.h"
+#include "core/scene/SceneJson.h"
 
 #include <QTest>
 
@@ -148,9 +148,9 @@ private slots:
             uniform("uKd", T::Vec3), uniform("uGain", T::Float)};
         const ExplicitBindings explicitBindings = {
             {QStringLiteral("normalMatrix"), M::ModelNormalMatrix}, // world-space lighting
-            {QStringLiteral("uKd"), std::nullopt},                 // the user's own
-            {QStringLiteral("uGain"), M::Model},                   // cannot hold
-            {QStringLiteral("uNothing"), M::Eye}};                 // no such variable
+            {QStringLiteral("uKd"), std::nullopt},                  // the user's own
+            {QStringLiteral("uGain"), M::Model},                    // cannot hold
+            {QStringLiteral("uNothing"), M::Eye}};                  // no such variable
         const ProgramBindings b = bindVariables(variables, explicitBindings);
         QCOMPARE(b.meaningOf(QStringLiteral("normalMatrix")), M::ModelNormalMatrix);
         QVERIFY(b.variables[0].isExplicit);
@@ -212,8 +212,8 @@ private slots:
         QVERIFY2(again.ok(), qPrintable(again.error));
         QCOMPARE(again.scene->bindings, expected);
 
-        const SceneLoadResult wrong = parseScene(
-            R"({"mesh": "builtin:sphere", "bindings": {"uWorld": "modle"}})", QString());
+        const SceneLoadResult wrong =
+            parseScene(R"({"mesh": "builtin:sphere", "bindings": {"uWorld": "modle"}})", QString());
         QVERIFY(!wrong.ok());
         QVERIFY2(wrong.error.startsWith(QLatin1String("bindings.uWorld: unknown meaning")),
                  qPrintable(wrong.error));

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/scene/Scene.h"
 #include "core/check/ShaderBindings.h"
+#include "core/scene/Scene.h"
 
 #include <QStringList>
 

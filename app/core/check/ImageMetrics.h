@@ -1,6 +1,6 @@
 #pragma once
-#include "core/support/RgbImage.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/support/RgbImage.h"
 
 #include <QPoint>
 #include <QString>

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/support/RgbImage.h"
 #include "core/check/ShaderMistake.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/support/RgbImage.h"
 
 #include <cstdint>
 #include <utility>

@@ -1,12 +1,12 @@
 #pragma once
-#include "core/view/Camera.h"
 #include "Material.h"
+#include "NormalOptions.h"
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
-#include "NormalOptions.h"
 #include "core/check/CoursePrelude.h"
 #include "core/check/ShaderBindings.h"
+#include "core/view/Camera.h"
 
 #include <QString>
 #include <map>

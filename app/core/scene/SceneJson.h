@@ -1,6 +1,6 @@
 #pragma once
-#include "core/support/Result.h"
 #include "Scene.h"
+#include "core/support/Result.h"
 
 #include <QByteArray>
 #include <QString>

@@ -1,7 +1,7 @@
 #pragma once
-#include "core/support/Result.h"
 #include "core/check/CoursePrelude.h"
 #include "core/check/ShaderBindings.h"
+#include "core/support/Result.h"
 #include <QByteArray>
 #include <QJsonDocument>
 #include <QJsonValue>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/scene/MeshData.h"
 #include "core/reference/AnalyticShapes.h"
+#include "core/scene/MeshData.h"
 
 #include <QString>
 #include <optional>

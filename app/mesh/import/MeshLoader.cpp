@@ -1,12 +1,12 @@
 #include "MeshLoader.h"
 
 #include "BuiltinMeshes.h"
-#include "mesh/normals/MeshBuilder.h"
 #include "MeshCache.h"
 #include "MeshFileReader.h"
 #include "MeshImportProcess.h"
 #include "MeshRepair.h"
 #include "MeshTopology.h"
+#include "mesh/normals/MeshBuilder.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 #pragma once
-#include "mesh/detail/DetailLevels.h"
 #include "MeshLoader.h"
 #include "core/scene/Scene.h"
+#include "mesh/detail/DetailLevels.h"
 
 #include <QHash>
 #include <QSet>

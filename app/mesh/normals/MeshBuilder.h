@@ -1,8 +1,8 @@
 #pragma once
-#include "mesh/import/MeshStats.h"
-#include "mesh/import/PolygonMesh.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/NormalOptions.h"
+#include "mesh/import/MeshStats.h"
+#include "mesh/import/PolygonMesh.h"
 
 #include <QString>
 #include <QStringList>

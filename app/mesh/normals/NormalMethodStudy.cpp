@@ -1,8 +1,8 @@
 #include "NormalMethodStudy.h"
 
-#include "mesh/import/BuiltinMeshes.h"
-#include "mesh/detail/MeshDecimation.h"
 #include "NormalComputation.h"
+#include "mesh/detail/MeshDecimation.h"
+#include "mesh/import/BuiltinMeshes.h"
 
 #include <QElapsedTimer>
 
