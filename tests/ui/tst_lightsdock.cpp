@@ -9,16 +9,17 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/reference/AnalyticRaycaster.h"
-#include "core/scene/MaterialPresets.h"
 #include "core/reference/PhongReference.h"
+#include "core/scene/MaterialPresets.h"
 #include "render/QtImages.h"
 #include "ui/scene/LightsDock.h"
-#include "ui/window/MainWindow.h"
 #include "ui/scene/MaterialDock.h"
 #include "ui/scene/ObjectDock.h"
 #include "ui/scene/SceneEditDockSet.h"
 #include "ui/scene/Vec3Field.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 #include "ui/window/WindowImage.h"
 
 #include <QAction>
@@ -308,7 +309,7 @@ void TestLightsDock::exportImageAtAnySize()
 {
     const QString path = QDir::temp().filePath(QStringLiteral("phonglab-export-test.png"));
     QString error;
-    QVERIFY_OK(m_window->exportImage(path, {333, 211}));
+    QVERIFY_OK(m_window->document()->exportImage(path, {333, 211}));
     const QImage image(path);
     QCOMPARE(image.size(), QSize(333, 211));
     QFile::remove(path);
