@@ -482,6 +482,47 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
+    <name>phonglab::BuildStatusText</name>
+    <message>
+        <source>Compiling…</source>
+        <translation>Wird kompiliert…</translation>
+    </message>
+    <message>
+        <source>The new shader has not finished its first draw after %1 s (an endless loop?). It is marked: PhongLab will not run it by itself at the next start.</source>
+        <translation>Der neue Shader hat sein erstes Zeichnen nach %1 s noch nicht beendet (eine Endlosschleife?). Er ist markiert: PhongLab führt ihn beim nächsten Start nicht von selbst aus.</translation>
+    </message>
+    <message>
+        <source>Live editing is off: no OpenGL context could be shared with the build thread (%1)</source>
+        <translation>Live-Bearbeitung ist ausgeschaltet: Mit dem Build-Thread konnte kein OpenGL-Kontext geteilt werden (%1)</translation>
+    </message>
+    <message>
+        <source>Kept your unsaved shader edits; the scene&apos;s %1 shading was not loaded (choose it in the Shaders dock to switch)</source>
+        <translation>Ungespeicherte Shader-Änderungen behalten; die %1-Schattierung der Szene wurde nicht geladen (zum Wechseln im Dock „Shader“ auswählen)</translation>
+    </message>
+    <message>
+        <source>Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames&apos; worth); the last good program keeps drawing</source>
+        <translation>Nicht übernommen: Ein Frame würde %1 ms oder länger dauern (das Budget beträgt %2 ms, einige Frames); das letzte funktionierende Programm zeichnet weiter</translation>
+    </message>
+    <message>
+        <source>Compiled in %1 ms (compile %2, link %3, first draw %4)</source>
+        <translation>Kompiliert in %1 ms (Kompilieren %2, Linken %3, erstes Zeichnen %4)</translation>
+    </message>
+    <message numerus="yes">
+        <source> — %n warning(s)</source>
+        <translation>
+            <numerusform> — %n Warnung</numerusform>
+            <numerusform> — %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s) — last good program still running</source>
+        <translation>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BuildThread</name>
     <message>
         <source>the viewport has no OpenGL context yet</source>
@@ -1223,47 +1264,6 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>checking… %1 %</source>
         <translation>Prüfung läuft… %1 %</translation>
-    </message>
-</context>
-<context>
-    <name>phonglab::LiveShaderController</name>
-    <message>
-        <source>Compiling…</source>
-        <translation>Wird kompiliert…</translation>
-    </message>
-    <message>
-        <source>The new shader has not finished its first draw after %1 s (an endless loop?). It is marked: PhongLab will not run it by itself at the next start.</source>
-        <translation>Der neue Shader hat sein erstes Zeichnen nach %1 s noch nicht beendet (eine Endlosschleife?). Er ist markiert: PhongLab führt ihn beim nächsten Start nicht von selbst aus.</translation>
-    </message>
-    <message>
-        <source>Kept your unsaved shader edits; the scene&apos;s %1 shading was not loaded (choose it in the Shaders dock to switch)</source>
-        <translation>Ungespeicherte Shader-Änderungen behalten; die %1-Schattierung der Szene wurde nicht geladen (zum Wechseln im Dock „Shader“ auswählen)</translation>
-    </message>
-    <message>
-        <source>Live editing is off: no OpenGL context could be shared with the build thread (%1)</source>
-        <translation>Live-Bearbeitung ist ausgeschaltet: Mit dem Build-Thread konnte kein OpenGL-Kontext geteilt werden (%1)</translation>
-    </message>
-    <message>
-        <source>Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames&apos; worth); the last good program keeps drawing</source>
-        <translation>Nicht übernommen: Ein Frame würde %1 ms oder länger dauern (das Budget beträgt %2 ms, einige Frames); das letzte funktionierende Programm zeichnet weiter</translation>
-    </message>
-    <message>
-        <source>Compiled in %1 ms (compile %2, link %3, first draw %4)</source>
-        <translation>Kompiliert in %1 ms (Kompilieren %2, Linken %3, erstes Zeichnen %4)</translation>
-    </message>
-    <message numerus="yes">
-        <source> — %n warning(s)</source>
-        <translation>
-            <numerusform> — %n Warnung</numerusform>
-            <numerusform> — %n Warnungen</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n error(s) — last good program still running</source>
-        <translation>
-            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
-            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
-        </translation>
     </message>
 </context>
 <context>

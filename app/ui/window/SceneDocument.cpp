@@ -210,14 +210,29 @@ void SceneDocument::offerRecovery(ShaderRecovery::Answer answer, const QString &
     // Tests answer through the environment at once; a person is asked once
     // the window is up.
     if (answer != ShaderRecovery::Answer::Ask)
-        m_liveShaders->offerRecovery(answer, m_window);
+        askAboutRecovery(answer);
     else
-        QTimer::singleShot(0, this,
-                           [this, answer] { m_liveShaders->offerRecovery(answer, m_window); });
+        QTimer::singleShot(0, this, [this, answer] { askAboutRecovery(answer); });
     if (!testText.isEmpty())
         connect(
             m_viewport, &Viewport::glInitialized, this,
             [this, testText] { typeAfterStart(testText); }, Qt::SingleShotConnection);
+}
+
+// Restored text builds at once, unless it was on its way to the driver when
+// that session died: then it waits for F5.
+void SceneDocument::askAboutRecovery(ShaderRecovery::Answer answer)
+{
+    const ShaderRecovery::Outcome outcome = m_liveShaders->recovery()->offer(answer, m_window);
+    if (outcome.note.isEmpty())
+        return;
+    if (outcome.restored)
+        m_liveShaders->takeRestoredText(shadingFromName(outcome.shading),
+                                        outcome.suspect
+                                            ? LiveShaderController::AutoBuild::OnlyOnF5
+                                            : LiveShaderController::AutoBuild::AfterPause);
+    m_shaders->setCompileStatus(outcome.note, !outcome.suspect);
+    m_window->statusBar()->showMessage(outcome.note);
 }
 
 // For the crash-recovery test: an edit made by "the user" in a process the

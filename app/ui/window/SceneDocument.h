@@ -118,6 +118,7 @@ private:
     void setPath(const QString &path, const QString &title = {});
     void showLoadFailure(const QString &label, const QString &error);
     void showLoadCancelled(const QString &label);
+    void askAboutRecovery(ShaderRecovery::Answer answer);
     void typeAfterStart(const QString &text);
     void showStatus(const QString &message);
 
