@@ -471,6 +471,47 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
+    <name>phonglab::BuildStatusText</name>
+    <message>
+        <source>Compiling…</source>
+        <translation>Wird kompiliert…</translation>
+    </message>
+    <message>
+        <source>The new shader has not finished its first draw after %1 s (an endless loop?). It is marked: PhongLab will not run it by itself at the next start.</source>
+        <translation>Der neue Shader hat sein erstes Zeichnen nach %1 s noch nicht beendet (eine Endlosschleife?). Er ist markiert: PhongLab führt ihn beim nächsten Start nicht von selbst aus.</translation>
+    </message>
+    <message>
+        <source>Live editing is off: no OpenGL context could be shared with the build thread (%1)</source>
+        <translation>Live-Bearbeitung ist ausgeschaltet: Mit dem Build-Thread konnte kein OpenGL-Kontext geteilt werden (%1)</translation>
+    </message>
+    <message>
+        <source>Kept your unsaved shader edits; the scene&apos;s %1 shading was not loaded (choose it in the Shaders dock to switch)</source>
+        <translation>Ungespeicherte Shader-Änderungen behalten; die %1-Schattierung der Szene wurde nicht geladen (zum Wechseln im Dock „Shader“ auswählen)</translation>
+    </message>
+    <message>
+        <source>Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames&apos; worth); the last good program keeps drawing</source>
+        <translation>Nicht übernommen: Ein Frame würde %1 ms oder länger dauern (das Budget beträgt %2 ms, einige Frames); das letzte funktionierende Programm zeichnet weiter</translation>
+    </message>
+    <message>
+        <source>Compiled in %1 ms (compile %2, link %3, first draw %4)</source>
+        <translation>Kompiliert in %1 ms (Kompilieren %2, Linken %3, erstes Zeichnen %4)</translation>
+    </message>
+    <message numerus="yes">
+        <source> — %n warning(s)</source>
+        <translation>
+            <numerusform> — %n Warnung</numerusform>
+            <numerusform> — %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s) — last good program still running</source>
+        <translation>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BuildThread</name>
     <message>
         <source>the viewport has no OpenGL context yet</source>
@@ -1215,47 +1256,6 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
-    <name>phonglab::LiveShaderController</name>
-    <message>
-        <source>Compiling…</source>
-        <translation>Wird kompiliert…</translation>
-    </message>
-    <message>
-        <source>The new shader has not finished its first draw after %1 s (an endless loop?). It is marked: PhongLab will not run it by itself at the next start.</source>
-        <translation>Der neue Shader hat sein erstes Zeichnen nach %1 s noch nicht beendet (eine Endlosschleife?). Er ist markiert: PhongLab führt ihn beim nächsten Start nicht von selbst aus.</translation>
-    </message>
-    <message>
-        <source>Kept your unsaved shader edits; the scene&apos;s %1 shading was not loaded (choose it in the Shaders dock to switch)</source>
-        <translation>Ungespeicherte Shader-Änderungen behalten; die %1-Schattierung der Szene wurde nicht geladen (zum Wechseln im Dock „Shader“ auswählen)</translation>
-    </message>
-    <message>
-        <source>Live editing is off: no OpenGL context could be shared with the build thread (%1)</source>
-        <translation>Live-Bearbeitung ist ausgeschaltet: Mit dem Build-Thread konnte kein OpenGL-Kontext geteilt werden (%1)</translation>
-    </message>
-    <message>
-        <source>Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames&apos; worth); the last good program keeps drawing</source>
-        <translation>Nicht übernommen: Ein Frame würde %1 ms oder länger dauern (das Budget beträgt %2 ms, einige Frames); das letzte funktionierende Programm zeichnet weiter</translation>
-    </message>
-    <message>
-        <source>Compiled in %1 ms (compile %2, link %3, first draw %4)</source>
-        <translation>Kompiliert in %1 ms (Kompilieren %2, Linken %3, erstes Zeichnen %4)</translation>
-    </message>
-    <message numerus="yes">
-        <source> — %n warning(s)</source>
-        <translation>
-            <numerusform> — %n Warnung</numerusform>
-            <numerusform> — %n Warnungen</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n error(s) — last good program still running</source>
-        <translation>
-            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
-            <numerusform>%n Fehler — letztes funktionierendes Programm läuft weiter</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>phonglab::LoadProgressWidget</name>
     <message>
         <source>Cancel</source>
@@ -1293,80 +1293,8 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <source>&amp;Reset Camera</source>
-        <translation>&amp;Kamera zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Reset &amp;Layout</source>
-        <translation>&amp;Layout zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Put every dock back where a new window has it</source>
-        <translation>Jedes Dock dorthin zurücksetzen, wo es in einem neuen Fenster liegt</translation>
-    </message>
-    <message>
-        <source>Show &amp;Light Markers</source>
-        <translation>Licht&amp;markierungen anzeigen</translation>
-    </message>
-    <message>
-        <source>&amp;Scene Dock</source>
-        <translation>&amp;Szenen-Dock</translation>
-    </message>
-    <message>
-        <source>S&amp;haders Dock</source>
-        <translation>S&amp;hader-Dock</translation>
-    </message>
-    <message>
-        <source>&amp;Uniforms Dock</source>
-        <translation>&amp;Uniform-Variablen-Dock</translation>
-    </message>
-    <message>
-        <source>&amp;Performance Dock</source>
-        <translation>&amp;Leistungs-Dock</translation>
-    </message>
-    <message>
-        <source>L&amp;anguage</source>
-        <translation>Sp&amp;rache</translation>
-    </message>
-    <message>
         <source>OpenGL not started</source>
         <translation>OpenGL nicht gestartet</translation>
-    </message>
-    <message>
-        <source>Opened %1</source>
-        <translation>%1 geöffnet</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>%1 gespeichert</translation>
-    </message>
-    <message>
-        <source>Cannot open the scene&apos;s shaders: %1</source>
-        <translation>Die Shader der Szene können nicht geöffnet werden: %1</translation>
-    </message>
-    <message>
-        <source>Cannot open the scene&apos;s shaders</source>
-        <translation>Die Shader der Szene können nicht geöffnet werden</translation>
-    </message>
-    <message>
-        <source>%1
-
-The scene uses its shading method&apos;s shipped shaders instead.</source>
-        <translation>%1
-
-Die Szene verwendet stattdessen die mitgelieferten Shader ihres Schattierungsverfahrens.</translation>
-    </message>
-    <message>
-        <source>%1: not a scene file (.json)</source>
-        <translation>%1: keine Szenendatei (.json)</translation>
-    </message>
-    <message>
-        <source>%1: no such shader file</source>
-        <translation>%1: Shader-Datei existiert nicht</translation>
-    </message>
-    <message>
-        <source>Normals of %1: %2</source>
-        <translation>Normalen von %1: %2</translation>
     </message>
     <message>
         <source>Rendering failed: %1</source>
@@ -1375,46 +1303,6 @@ Die Szene verwendet stattdessen die mitgelieferten Shader ihres Schattierungsver
     <message>
         <source>Rendering failed</source>
         <translation>Rendern fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Cannot load %1: %2</source>
-        <translation>%1 kann nicht geladen werden: %2</translation>
-    </message>
-    <message>
-        <source>Cannot load %1</source>
-        <translation>%1 kann nicht geladen werden</translation>
-    </message>
-    <message>
-        <source>Cannot load %1:
-
-%2
-
-The current scene is still shown.</source>
-        <translation>%1 kann nicht geladen werden:
-
-%2
-
-Die aktuelle Szene wird weiterhin angezeigt.</translation>
-    </message>
-    <message>
-        <source>Loading %1 cancelled</source>
-        <translation>Laden von %1 abgebrochen</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Unbenannt</translation>
-    </message>
-    <message>
-        <source>%1 — PhongLab</source>
-        <translation>%1 — PhongLab</translation>
-    </message>
-    <message>
-        <source>Cannot render a %1×%2 image</source>
-        <translation>Ein %1×%2-Bild kann nicht gerendert werden</translation>
-    </message>
-    <message>
-        <source>Cannot write %1</source>
-        <translation>%1 kann nicht geschrieben werden</translation>
     </message>
 </context>
 <context>
@@ -2827,6 +2715,85 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::SceneDocument</name>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>%1: not a scene file (.json)</source>
+        <translation>%1: keine Szenendatei (.json)</translation>
+    </message>
+    <message>
+        <source>%1: no such shader file</source>
+        <translation>%1: Shader-Datei existiert nicht</translation>
+    </message>
+    <message>
+        <source>Cannot open the scene&apos;s shaders: %1</source>
+        <translation>Die Shader der Szene können nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open the scene&apos;s shaders</source>
+        <translation>Die Shader der Szene können nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1
+
+The scene uses its shading method&apos;s shipped shaders instead.</source>
+        <translation>%1
+
+Die Szene verwendet stattdessen die mitgelieferten Shader ihres Schattierungsverfahrens.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Cannot render a %1×%2 image</source>
+        <translation>Ein %1×%2-Bild kann nicht gerendert werden</translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Normals of %1: %2</source>
+        <translation>Normalen von %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot load %1: %2</source>
+        <translation>%1 kann nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot load %1</source>
+        <translation>%1 kann nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Cannot load %1:
+
+%2
+
+The current scene is still shown.</source>
+        <translation>%1 kann nicht geladen werden:
+
+%2
+
+Die aktuelle Szene wird weiterhin angezeigt.</translation>
+    </message>
+    <message>
+        <source>Loading %1 cancelled</source>
+        <translation>Laden von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>%1 — PhongLab</source>
+        <translation>%1 — PhongLab</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::SceneEditDockSet</name>
     <message>
         <source>&amp;Undo</source>
@@ -3849,6 +3816,45 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     <message>
         <source>%1: must be in [%2, %3] (got %4)</source>
         <translation>%1: muss in [%2, %3] liegen (erhalten: %4)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ViewMenu</name>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Kamera zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Reset &amp;Layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Put every dock back where a new window has it</source>
+        <translation>Jedes Dock dorthin zurücksetzen, wo es in einem neuen Fenster liegt</translation>
+    </message>
+    <message>
+        <source>Show &amp;Light Markers</source>
+        <translation>Licht&amp;markierungen anzeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Scene Dock</source>
+        <translation>&amp;Szenen-Dock</translation>
+    </message>
+    <message>
+        <source>S&amp;haders Dock</source>
+        <translation>S&amp;hader-Dock</translation>
+    </message>
+    <message>
+        <source>&amp;Uniforms Dock</source>
+        <translation>&amp;Uniform-Variablen-Dock</translation>
+    </message>
+    <message>
+        <source>&amp;Performance Dock</source>
+        <translation>&amp;Leistungs-Dock</translation>
+    </message>
+    <message>
+        <source>L&amp;anguage</source>
+        <translation>Sp&amp;rache</translation>
     </message>
 </context>
 <context>

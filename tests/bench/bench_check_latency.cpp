@@ -29,6 +29,7 @@
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -157,7 +158,7 @@ int main(int argc, char **argv)
                   parser.value(QStringLiteral("height")).toInt());
     window.show();
     QString error;
-    if (const Result<> done = window.openScene(defaultScenePath()); !done) {
+    if (const Result<> done = window.document()->openAndWait(defaultScenePath()); !done) {
         std::fprintf(stderr, "%s\n", qPrintable(done.error()));
         return 1;
     }

@@ -9,6 +9,7 @@
 #include "ui/viewport/Viewport.h"
 #include "ui/window/GuiMain.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QElapsedTimer>
 #include <QStandardPaths>
@@ -58,7 +59,7 @@ void openWindow(std::unique_ptr<MainWindow> &window, const QString &scenePath, Q
     if (viewportSamples > 0)
         useMultisamplingInViewOnly(*window, viewportSamples);
     QString error;
-    QVERIFY_OK(window->openScene(scenePath));
+    QVERIFY_OK(window->document()->openAndWait(scenePath));
     showAndWaitForFrame(*window, size);
 }
 

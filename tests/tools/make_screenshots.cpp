@@ -15,6 +15,7 @@
 #include "ui/shaders/ShaderEditor.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 #include "ui/window/WindowImage.h"
 
 #include <QApplication>
@@ -71,7 +72,7 @@ int main(int argc, char **argv)
                     .toUtf8());
     MainWindow window; // at its default size: a share of the screen (DefaultLayout)
     QString error;
-    if (const Result<> done = window.openScene(defaultScenePath()); !done) {
+    if (const Result<> done = window.document()->openAndWait(defaultScenePath()); !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
     }
@@ -100,7 +101,8 @@ int main(int argc, char **argv)
     // The check on its own scene with reflect(L, N) typed in: the verdict in
     // the status bar, the heatmap, the split view, the pixel inspector.
     fragment->setCode(code.replace("normalise(", "normalize("));
-    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/check.json")));
+    if (const Result<> done =
+            window.document()->openAndWait(assetPath(QStringLiteral("scenes/check.json")));
         !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;
@@ -128,7 +130,8 @@ int main(int argc, char **argv)
 
     // Fit to budget on the sphere scene (the dock measures with the phonglab
     // binary set before the window was made, above).
-    if (const Result<> done = window.openScene(assetPath(QStringLiteral("scenes/sphere.json")));
+    if (const Result<> done =
+            window.document()->openAndWait(assetPath(QStringLiteral("scenes/sphere.json")));
         !done) {
         std::fprintf(stderr, "make_screenshots: %s\n", qPrintable(done.error()));
         return 1;

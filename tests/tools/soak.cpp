@@ -13,6 +13,7 @@
 #include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -110,9 +111,9 @@ public:
 
     bool open(const QString &path)
     {
-        if (!m_window.openFiles({path}))
+        if (!m_window.document()->openFiles({path}))
             return false;
-        return waitFor([&] { return !m_window.loadJob()->isRunning(); }, 60000);
+        return waitFor([&] { return !m_window.document()->loadJob()->isRunning(); }, 60000);
     }
 
 private:
@@ -146,7 +147,7 @@ int main(int argc, char **argv)
     const QString scene = test::sourcePath(QStringLiteral("assets/scenes/default.json"));
     MainWindow window;
     QString error;
-    if (const Result<> done = window.openScene(scene); !done) {
+    if (const Result<> done = window.document()->openAndWait(scene); !done) {
         std::fprintf(stderr, "soak: %s\n", qPrintable(done.error()));
         return 1;
     }

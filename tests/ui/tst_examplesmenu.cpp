@@ -9,6 +9,7 @@
 #include "ui/viewport/Viewport.h"
 #include "ui/window/ExamplesMenu.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include "core/scene/ResourcePaths.h"
 #include <QAction>
@@ -143,7 +144,9 @@ void TestExamplesMenu::choosingAnExampleOpensIt()
 {
     QFETCH(QString, name);
     // From another scene, so the change is seen.
-    QVERIFY(m_window->openScene(testDataPath(QStringLiteral("scenes/gl_cube.json"))).ok());
+    QVERIFY(m_window->document()
+                ->openAndWait(testDataPath(QStringLiteral("scenes/gl_cube.json")))
+                .ok());
     QMenu *menu = examplesMenu();
     QVERIFY(menu);
     QAction *chosen = nullptr;
@@ -154,21 +157,21 @@ void TestExamplesMenu::choosingAnExampleOpensIt()
     chosen->trigger();
 
     const QString file = name + QStringLiteral(".json");
-    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(m_window->scenePath()).fileName() == file
-                                 && !m_window->loadJob()->isRunning(),
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(m_window->document()->path()).fileName() == file
+                                 && !m_window->document()->loadJob()->isRunning(),
                              kLoadTimeoutMs);
-    QCOMPARE(QFileInfo(m_window->scenePath()).canonicalFilePath(),
+    QCOMPARE(QFileInfo(m_window->document()->path()).canonicalFilePath(),
              QFileInfo(sourcePath(QStringLiteral("assets/scenes/") + file)).canonicalFilePath());
     QVERIFY2(m_window->windowTitle().startsWith(file), qPrintable(m_window->windowTitle()));
     // The scene shown is the file's.
-    const SceneLoadResult expected = loadSceneFile(m_window->scenePath());
+    const SceneLoadResult expected = loadSceneFile(m_window->document()->path());
     QVERIFY(expected.ok());
     const Scene shown = viewport()->currentScene();
     QCOMPARE(shown.objects.size(), expected.scene->objects.size());
     for (size_t i = 0; i < shown.objects.size(); ++i)
         QCOMPARE(shown.objects[i].mesh, expected.scene->objects[i].mesh);
     // Save does not write over an example (File → Save asks where instead).
-    QVERIFY(isShippedScene(m_window->scenePath()));
+    QVERIFY(isShippedScene(m_window->document()->path()));
     QVERIFY(!isShippedScene(testDataPath(QStringLiteral("scenes/gl_cube.json"))));
 }
 

@@ -17,6 +17,7 @@
 #include "ui/viewport/Viewport.h"
 #include "ui/window/LanguageMenu.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QAction>
 #include <QFile>
@@ -121,7 +122,7 @@ private slots:
 
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("saved.json"));
-        QVERIFY_OK(m_window->saveScene(path));
+        QVERIFY_OK(m_window->document()->save(path));
         QFile file(path);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QByteArray text = file.readAll();

@@ -19,6 +19,7 @@
 #include "ui/scene/Vec3Field.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 #include "ui/window/WindowImage.h"
 
 #include <QAction>
@@ -308,7 +309,7 @@ void TestLightsDock::exportImageAtAnySize()
 {
     const QString path = QDir::temp().filePath(QStringLiteral("phonglab-export-test.png"));
     QString error;
-    QVERIFY_OK(m_window->exportImage(path, {333, 211}));
+    QVERIFY_OK(m_window->document()->exportImage(path, {333, 211}));
     const QImage image(path);
     QCOMPARE(image.size(), QSize(333, 211));
     QFile::remove(path);

@@ -19,6 +19,7 @@
 #include "ui/window/GuiArguments.h"
 #include "ui/window/GuiMain.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -283,8 +284,9 @@ private slots:
         const QString scene = sourcePath(QStringLiteral("assets/scenes/check.json"));
         const QString vertex = sourcePath(QStringLiteral("assets/shaders/webgl2/phong.vert"));
         const QString fragment = sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag"));
-        QVERIFY(!m_window->openSubmission(scene, QStringLiteral("/no/such/file.vert"), fragment));
-        QVERIFY_OK(m_window->openSubmission(scene, vertex, fragment));
+        QVERIFY(!m_window->document()->openSubmission(scene, QStringLiteral("/no/such/file.vert"),
+                                                      fragment));
+        QVERIFY_OK(m_window->document()->openSubmission(scene, vertex, fragment));
         QTRY_VERIFY_WITH_TIMEOUT(
             fragmentEditor()->text().contains(QStringLiteral("uLightPosition")), 20000);
         QVERIFY(waitForApplied());
@@ -332,9 +334,9 @@ private slots:
         QVERIFY2(chosen, qPrintable(chosen.error()));
         openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
         QVERIFY(!QTest::currentTestFailed());
-        QVERIFY_OK(m_window->openSubmission(sourcePath(QStringLiteral("assets/scenes/check.json")),
-                                            shaderLocator(chosen->vertex),
-                                            shaderLocator(chosen->fragment)));
+        QVERIFY_OK(m_window->document()->openSubmission(
+            sourcePath(QStringLiteral("assets/scenes/check.json")), shaderLocator(chosen->vertex),
+            shaderLocator(chosen->fragment)));
         // The editor shows the shader as written in the page, and it is checked.
         QTRY_VERIFY_WITH_TIMEOUT(fragmentEditor()->text().toUtf8() == fragment, 20000);
         QVERIFY(waitForApplied());

@@ -11,6 +11,7 @@
 #include "ui/viewport/FrameStatsLabel.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 #include "ui/window/WindowImage.h"
 
 #include <QDir>
@@ -275,12 +276,12 @@ void TestMainWindow::failedOpenKeepsCurrentScene()
     const QString title = m_window->windowTitle();
     const QImage imageBefore = frame();
 
-    const Result<> refusal = m_window->openScene(path);
+    const Result<> refusal = m_window->document()->openAndWait(path);
     QVERIFY(!refusal);
     QVERIFY2(refusal.error().contains(expectedError), qPrintable(refusal.error()));
 
     QCOMPARE(viewport()->currentScene(), before);
-    QCOMPARE(m_window->scenePath(), defaultScenePathInSource());
+    QCOMPARE(m_window->document()->path(), defaultScenePathInSource());
     QCOMPARE(m_window->windowTitle(), title);
     QCOMPARE(differingPixels(frame(), imageBefore), 0);
 }
@@ -386,8 +387,8 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("saved.json"));
-    QVERIFY_OK(m_window->saveScene(path));
-    QCOMPARE(m_window->scenePath(), path);
+    QVERIFY_OK(m_window->document()->save(path));
+    QCOMPARE(m_window->document()->path(), path);
     QVERIFY(m_window->windowTitle().contains(QStringLiteral("saved.json")));
 
     const SceneLoadResult reread = loadSceneFile(path);
@@ -396,8 +397,8 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
 
     // Reopened in the window it is the same scene, and "reset" now goes back
     // to the saved camera.
-    QVERIFY(m_window->openScene(defaultScenePathInSource()));
-    QVERIFY_OK(m_window->openScene(path));
+    QVERIFY(m_window->document()->openAndWait(defaultScenePathInSource()));
+    QVERIFY_OK(m_window->document()->openAndWait(path));
     QCOMPARE(withResolvedMeshes(viewport()->currentScene()), withResolvedMeshes(shown));
     drag(Qt::LeftButton, {-60, 0});
     viewport()->resetCamera();
@@ -405,10 +406,10 @@ void TestMainWindow::saveThenReopenGivesEqualScene()
 
     // A failed save reports why and changes nothing.
     const QString unwritable = dir.filePath(QStringLiteral("no-such-folder/saved.json"));
-    const Result<> refusal = m_window->saveScene(unwritable);
+    const Result<> refusal = m_window->document()->save(unwritable);
     QVERIFY(!refusal);
     QVERIFY(!refusal.error().isEmpty());
-    QCOMPARE(m_window->scenePath(), path);
+    QCOMPARE(m_window->document()->path(), path);
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -20,6 +20,7 @@
 #include "ui/window/LoadProgressWidget.h"
 #include "ui/window/MainWindow.h"
 #include "ui/window/RecentFiles.h"
+#include "ui/window/SceneDocument.h"
 #include "ui/window/WindowImage.h"
 
 #include <QCheckBox>
@@ -182,7 +183,8 @@ void TestMeshLoading::init()
     m_window = std::make_unique<MainWindow>();
     m_window->recentFiles()->clear();
     QString error;
-    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
+    QVERIFY_OK(m_window->document()->openAndWait(
+        sourcePath(QStringLiteral("assets/scenes/default.json"))));
     test::showAndWaitForFrame(*m_window, {1000, 640});
 }
 
@@ -193,7 +195,7 @@ void TestMeshLoading::cleanup()
 
 bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
 {
-    SceneLoadJob *job = m_window->loadJob();
+    SceneLoadJob *job = m_window->document()->loadJob();
     QSignalSpy loaded(job, &SceneLoadJob::loaded);
     QSignalSpy failed(job, &SceneLoadJob::failed);
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
@@ -212,7 +214,7 @@ bool TestMeshLoading::waitForLoad(const std::function<void()> &start)
 bool TestMeshLoading::openAndWait(const QStringList &paths)
 {
     return waitForLoad([&] {
-        if (const Result<> opened = m_window->openFiles(paths); !opened)
+        if (const Result<> opened = m_window->document()->openFiles(paths); !opened)
             m_lastError = opened.error();
     });
 }
@@ -340,16 +342,16 @@ void TestMeshLoading::unsupportedFileIsRefused()
     const QString path = m_dir.filePath(QStringLiteral("notes.txt"));
     writeFile(path, "not a mesh");
     const Scene before = viewport()->currentScene();
-    QSignalSpy started(m_window->loadJob(), &SceneLoadJob::started);
+    QSignalSpy started(m_window->document()->loadJob(), &SceneLoadJob::started);
 
-    const Result<> notAMesh = m_window->openFiles({path});
+    const Result<> notAMesh = m_window->document()->openFiles({path});
     QVERIFY(!notAMesh);
     QVERIFY2(notAMesh.error().contains(QStringLiteral("notes.txt"))
                  && notAMesh.error().contains(QStringLiteral(".obj")),
              qPrintable(notAMesh.error()));
     // A scene goes on its own, not mixed with meshes.
-    const Result<> mixed =
-        m_window->openFiles({treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
+    const Result<> mixed = m_window->document()->openFiles(
+        {treePath(), sourcePath(QStringLiteral("assets/scenes/default.json"))});
     QVERIFY(!mixed);
     QVERIFY2(mixed.error().contains(QStringLiteral("scene")), qPrintable(mixed.error()));
     QCOMPARE(started.count(), 0);
@@ -367,15 +369,15 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     ticker.setInterval(kTickIntervalMs);
     connect(&ticker, &QTimer::timeout, this, [&] {
         longestGapMs = std::max(longestGapMs, sinceTick.restart());
-        ticks += m_window->loadJob()->isRunning();
+        ticks += m_window->document()->loadJob()->isRunning();
     });
     bool progressShown = false;
     const qint64 framesBefore = viewport()->framesRendered();
-    QSignalSpy progress(m_window->loadJob(), &SceneLoadJob::progressChanged);
+    QSignalSpy progress(m_window->document()->loadJob(), &SceneLoadJob::progressChanged);
     QElapsedTimer loadTime;
     const bool ok = waitForLoad([&] {
         QString error;
-        QVERIFY_OK(m_window->openFiles({m_largeObj}));
+        QVERIFY_OK(m_window->document()->openFiles({m_largeObj}));
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
         viewport()->requestFrame(); // a frame of the old scene while loading
@@ -403,11 +405,11 @@ void TestMeshLoading::staysResponsiveWhileLoading()
 void TestMeshLoading::cancelKeepsScene()
 {
     const Scene before = viewport()->currentScene();
-    SceneLoadJob *job = m_window->loadJob();
+    SceneLoadJob *job = m_window->document()->loadJob();
     QSignalSpy loaded(job, &SceneLoadJob::loaded);
     QSignalSpy cancelled(job, &SceneLoadJob::cancelled);
     QString error;
-    QVERIFY_OK(m_window->openFiles({m_largeObj}));
+    QVERIFY_OK(m_window->document()->openFiles({m_largeObj}));
     QVERIFY(m_window->loadProgress()->isVisible());
     QTest::mouseClick(m_window->loadProgress()->cancelButton(), Qt::LeftButton);
 
@@ -456,14 +458,14 @@ void TestMeshLoading::cancelEndsTheImportChild()
     const Scene before = viewport()->currentScene();
     qputenv("PHONGLAB_IMPORT_FAULT", "hang");
     QString error;
-    QVERIFY_OK(m_window->openFiles({path}));
+    QVERIFY_OK(m_window->document()->openFiles({path}));
     QTRY_VERIFY_WITH_TIMEOUT(!importChildren().isEmpty(), 5000);
     qunsetenv("PHONGLAB_IMPORT_FAULT");
     QElapsedTimer clock;
     clock.start();
     QTest::mouseClick(m_window->loadProgress()->cancelButton(), Qt::LeftButton);
     const qint64 toIdleMs = clock.elapsed(); // the window takes input again
-    QVERIFY(!m_window->loadJob()->isRunning());
+    QVERIFY(!m_window->document()->loadJob()->isRunning());
     QTRY_VERIFY_WITH_TIMEOUT(importChildren().isEmpty(), 2000);
     const qint64 childGoneMs = clock.elapsed();
     qInfo("Cancel: window idle after %lld ms, import child gone after %lld ms", toIdleMs,
@@ -477,8 +479,8 @@ void TestMeshLoading::closingWhileLoading()
     // The window goes while its worker runs: the worker is stopped and
     // nothing it finishes reaches the destroyed window.
     QString error;
-    QVERIFY_OK(m_window->openFiles({m_largeObj}));
-    QVERIFY(m_window->loadJob()->isRunning());
+    QVERIFY_OK(m_window->document()->openFiles({m_largeObj}));
+    QVERIFY(m_window->document()->loadJob()->isRunning());
     QElapsedTimer timer;
     timer.start();
     m_window.reset();
@@ -529,7 +531,7 @@ void TestMeshLoading::normalsSurviveSaveAndReopen()
     auto *angle = dock()->normalsEditor()->findChild<QSpinBox *>(QStringLiteral("creaseAngle"));
     QVERIFY(crease && angle);
     QVERIFY(waitForLoad([&] {
-        m_window->changeNormals(0, {NormalMethod::AreaWeighted, std::nullopt});
+        m_window->document()->changeNormals(0, {NormalMethod::AreaWeighted, std::nullopt});
     }));
     QVERIFY(waitForLoad([&] { crease->click(); }));
     QVERIFY(waitForLoad([&] { angle->setValue(40); }));
@@ -541,15 +543,16 @@ void TestMeshLoading::normalsSurviveSaveAndReopen()
 
     const QString path = m_dir.filePath(QStringLiteral("tree-scene.json"));
     QString error;
-    QVERIFY_OK(m_window->saveScene(path));
+    QVERIFY_OK(m_window->document()->save(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->objects[0].normals, expected);
     QCOMPARE(saved.scene->objects[0].transform, viewport()->currentScene().objects[0].transform);
 
-    QVERIFY(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
+    QVERIFY(m_window->document()->openAndWait(
+        sourcePath(QStringLiteral("assets/scenes/default.json"))));
     QVERIFY2(openAndWait({path}), qPrintable(m_lastError));
-    QCOMPARE(m_window->scenePath(), path);
+    QCOMPARE(m_window->document()->path(), path);
     QCOMPARE(viewport()->currentScene().objects[0].normals, expected);
     QCOMPARE(dock()->normalsEditor()->options(), expected);
     QVERIFY(crease->isChecked());
@@ -584,13 +587,13 @@ void TestMeshLoading::droppedFilesOpenSideBySide()
     QTRY_VERIFY(visibleMessageBox());
     QVERIFY2(visibleMessageBox()->text().contains(QStringLiteral("readme.txt")),
              qPrintable(visibleMessageBox()->text()));
-    QVERIFY(!m_window->loadJob()->isRunning());
+    QVERIFY(!m_window->document()->loadJob()->isRunning());
     QCOMPARE(viewport()->currentScene(), scene);
 
     // A dropped scene file opens as the scene.
     const QString torus = sourcePath(QStringLiteral("assets/scenes/torus.json"));
     QVERIFY(waitForLoad([&] { QVERIFY(dropFiles({torus})); }));
-    QCOMPARE(m_window->scenePath(), torus);
+    QCOMPARE(m_window->document()->path(), torus);
     QCOMPARE(savedScene(), *loadSceneFile(torus).scene);
 }
 
@@ -599,7 +602,8 @@ void TestMeshLoading::meshOpenedBeforeFirstShow()
     // The meshes wait in the viewport until GL is up, then show.
     m_window = std::make_unique<MainWindow>();
     QString error;
-    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/default.json"))));
+    QVERIFY_OK(m_window->document()->openAndWait(
+        sourcePath(QStringLiteral("assets/scenes/default.json"))));
     QVERIFY2(openAndWait({treePath()}), qPrintable(m_lastError));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QVERIFY(!dockField(dock(), 0, QStringLiteral("Triangles")).isEmpty());
@@ -648,7 +652,8 @@ void TestMeshLoading::recentFilesRememberAndForget()
 void TestMeshLoading::builtinShapesHaveNoNormalsControl()
 {
     QString error;
-    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
+    QVERIFY_OK(
+        m_window->document()->openAndWait(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     QCOMPARE(dock()->objectTree()->topLevelItemCount(), 1);
     QCOMPARE(dock()->objectTree()->topLevelItem(0)->text(0), QStringLiteral("builtin:torus"));
     QCOMPARE(dockField(dock(), 0, QStringLiteral("Normals")), QStringLiteral("analytic (exact)"));

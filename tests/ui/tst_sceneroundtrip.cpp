@@ -15,6 +15,7 @@
 #include "ui/uniforms/UniformsDock.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QAction>
 #include <QDir>
@@ -115,7 +116,7 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
 
     const QString scenePath = m_sceneDir.filePath(QStringLiteral("saved.json"));
     QString error;
-    QVERIFY_OK(m_window->saveScene(scenePath));
+    QVERIFY_OK(m_window->document()->save(scenePath));
     QVERIFY(!dock()->hasUnsavedChanges()); // the shader buffer was saved with the scene
     const QString fragmentFile = dock()->filePath(ShaderStage::Fragment);
     QCOMPARE(readFile(fragmentFile), edited.toUtf8());
@@ -126,14 +127,15 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
     QVERIFY(written.scene->vertexShader.isEmpty()); // still the shipped one: not written
 
     // Another scene, and the shipped shaders back in the dock.
-    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
+    QVERIFY_OK(
+        m_window->document()->openAndWait(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     live()->applyPreset(ShadingMethod::Phong);
     QVERIFY(waitForApplied());
     QVERIFY(!fragmentEditor()->text().contains(QStringLiteral("vec4(I * 0.5")));
     QVERIFY(frame() != before);
 
-    QVERIFY_OK(m_window->openScene(scenePath));
-    QVERIFY(m_window->lastShaderError().isEmpty());
+    QVERIFY_OK(m_window->document()->openAndWait(scenePath));
+    QVERIFY(m_window->document()->lastShaderError().isEmpty());
     QCOMPARE(fragmentEditor()->text(), edited);
     QCOMPARE(QFileInfo(dock()->filePath(ShaderStage::Fragment)).absoluteFilePath(),
              QFileInfo(fragmentFile).absoluteFilePath());
@@ -156,10 +158,10 @@ void TestSceneRoundTrip::missingShaderFallsBackToShipped()
                       "shaders": {"fragment": "nowhere/gone.frag"}})");
     }
     QString error;
-    QVERIFY_OK(m_window->openScene(scenePath));
-    QVERIFY2(m_window->lastShaderError().contains(QStringLiteral("shaders.fragment")),
-             qPrintable(m_window->lastShaderError()));
-    QVERIFY(m_window->lastShaderError().contains(QStringLiteral("gone.frag")));
+    QVERIFY_OK(m_window->document()->openAndWait(scenePath));
+    QVERIFY2(m_window->document()->lastShaderError().contains(QStringLiteral("shaders.fragment")),
+             qPrintable(m_window->document()->lastShaderError()));
+    QVERIFY(m_window->document()->lastShaderError().contains(QStringLiteral("gone.frag")));
     QCOMPARE(fragmentEditor()->text().toUtf8(), shipped);
     QVERIFY(dock()->files()->isShipped(dock()->filePath(ShaderStage::Fragment)));
     QVERIFY(waitForApplied());

@@ -17,6 +17,7 @@
 #include "ui/uniforms/UniformsDock.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QCheckBox>
 #include <QDir>
@@ -205,7 +206,7 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("with-gain.json"));
     QString error;
-    QVERIFY_OK(m_window->saveScene(path));
+    QVERIFY_OK(m_window->document()->save(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->uniforms.size(),
@@ -213,11 +214,12 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QCOMPARE(saved.scene->uniforms.at(QStringLiteral("gain")), std::vector<double>{0.5});
 
     // Away, change it, and back: the reopened scene sets the saved value.
-    QVERIFY_OK(m_window->openScene(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
+    QVERIFY_OK(
+        m_window->document()->openAndWait(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow(), 10000);
     typeInto(gainRow()->field(), QStringLiteral("1.5"));
     QCOMPARE(programValue("gain"), 1.5f);
-    QVERIFY_OK(m_window->openScene(path));
+    QVERIFY_OK(m_window->document()->openAndWait(path));
     QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
 }
 
@@ -243,7 +245,7 @@ void TestUniformsDock::boundToChoiceIsSavedWithTheScene()
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("bound.json"));
-    QVERIFY_OK(m_window->saveScene(path));
+    QVERIFY_OK(m_window->document()->save(path));
     const SceneLoadResult saved = loadSceneFile(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error));
     QCOMPARE(saved.scene->bindings.size(), std::size_t(1));

@@ -18,6 +18,7 @@
 #include "ui/viewport/Viewport.h"
 #include "ui/window/DefaultLayout.h"
 #include "ui/window/MainWindow.h"
+#include "ui/window/SceneDocument.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -150,7 +151,7 @@ void TestWindowLayout::cleanup()
 void TestWindowLayout::openAtDefaultSize()
 {
     m_window = std::make_unique<MainWindow>();
-    QVERIFY_OK(m_window->openScene(defaultScenePathInSource()));
+    QVERIFY_OK(m_window->document()->openAndWait(defaultScenePathInSource()));
     test::showAndWaitForFrame(*m_window, m_window->size());
 }
 

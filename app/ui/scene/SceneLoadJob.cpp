@@ -78,6 +78,16 @@ void SceneLoadJob::cancel()
     emit cancelled(label);
 }
 
+void SceneLoadJob::finishNow()
+{
+    if (!isRunning())
+        return;
+    // Its finished() and any progress still queued must not come again.
+    m_watcher->disconnect(this);
+    m_watcher->waitForFinished();
+    workerFinished();
+}
+
 // The worker stops at its next progress report; until then it runs on
 // unobserved, and its watcher goes when it ends.
 void SceneLoadJob::abandonWorker()

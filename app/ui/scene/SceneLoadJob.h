@@ -39,6 +39,10 @@ public:
     ~SceneLoadJob() override;
 
     void start(SceneLoadRequest request);
+    // Waits on this thread for the running load's worker, then ends the load
+    // here (shown, loaded() or failed()) instead of at a later turn of the
+    // event loop: for start-up and tests, which go on with the scene shown.
+    void finishNow();
     bool isRunning() const { return m_watcher != nullptr; }
     QString label() const { return m_request.label; }
 

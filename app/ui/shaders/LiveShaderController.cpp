@@ -1,8 +1,7 @@
 #include "LiveShaderController.h"
-#include "core/support/Language.h"
 
+#include "BuildStatusText.h"
 #include "ProgramTrial.h"
-
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
@@ -35,11 +34,6 @@ QByteArray shippedHash(ShadingMethod method)
 {
     const StageSources shipped = shippedSources(method).valueOr(StageSources{});
     return recoveryTextHash(shipped.vertex.code, shipped.fragment.code);
-}
-
-double toMs(qint64 ns)
-{
-    return double(ns) / 1e6;
 }
 
 } // namespace
@@ -75,14 +69,11 @@ void LiveShaderController::setUpTimers()
     m_slowBuildNote->setSingleShot(true);
     m_slowBuildNote->setInterval(kSlowBuildNoteMs);
     connect(m_slowBuildNote, &QTimer::timeout, this,
-            [this] { m_dock->setCompileStatus(tr("Compiling…"), true); });
+            [this] { m_dock->setCompileStatus(BuildStatusText::compiling(), true); });
     m_hangNote->setSingleShot(true);
     m_hangNote->setInterval(kHangNoteMs);
     connect(m_hangNote, &QTimer::timeout, this, [this] {
-        const QString text =
-            tr("The new shader has not finished its first draw after %1 s (an endless loop?). "
-               "It is marked: PhongLab will not run it by itself at the next start.")
-                .arg(kHangNoteMs / 1000);
+        const QString text = BuildStatusText::firstDrawHangs(kHangNoteMs / 1000);
         m_dock->setCompileStatus(text, false);
         emit statusMessage(text, 0);
     });
@@ -151,11 +142,7 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
     // Unsaved edits are never replaced behind the user's back: they stay,
     // are built again over the scene's program, and the scene follows them.
     m_viewport->setShading(m_shading);
-    emit statusMessage(
-        tr("Kept your unsaved shader edits; the scene's %1 shading was not loaded (choose it "
-           "in the Shaders dock to switch)")
-            .arg(shadingName(method)),
-        kStatusTimeoutMs);
+    emit statusMessage(BuildStatusText::keptUnsavedEdits(method), kStatusTimeoutMs);
     if (m_autoBuild == AutoBuild::AfterPause)
         requestBuild(BuildRequest::Always);
 }
@@ -172,23 +159,17 @@ bool LiveShaderController::isWaitingToBuild() const
     return m_queue->isPausing();
 }
 
-void LiveShaderController::offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent)
+void LiveShaderController::takeRestoredText(std::optional<ShadingMethod> method,
+                                            AutoBuild autoBuild)
 {
-    const ShaderRecovery::Outcome outcome = m_recovery->offer(answer, dialogParent);
-    if (outcome.note.isEmpty())
-        return;
-    if (outcome.restored) {
-        if (const auto method = shadingFromName(outcome.shading)) {
-            m_shading = *method; // the preset the restored buffers came from
-            m_dock->setPreset(*method);
-        }
-        m_autoBuild = outcome.suspect ? AutoBuild::OnlyOnF5 : AutoBuild::AfterPause;
-        m_queue->stopPause(); // restoring typed the text in again; build it once, below
-        if (!outcome.suspect)
-            requestBuild(BuildRequest::NewText);
+    if (method) {
+        m_shading = *method; // the preset the restored buffers came from
+        m_dock->setPreset(*method);
     }
-    m_dock->setCompileStatus(outcome.note, !outcome.suspect);
-    emit statusMessage(outcome.note, 0);
+    m_autoBuild = autoBuild;
+    m_queue->stopPause(); // restoring typed the text in again; build it once, below
+    if (autoBuild == AutoBuild::AfterPause)
+        requestBuild(BuildRequest::NewText);
 }
 
 void LiveShaderController::onTextEdited()
@@ -230,8 +211,8 @@ void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
 
 void LiveShaderController::onGlAboutToBeReleased()
 {
-    // The worker's context shares with the one going away; a new one comes
-    // with the next glInitialized().
+    // The worker's context shares with the view's, which goes with the view
+    // (the window is closing): nothing is built from here on.
     m_buildThread->stop();
     takeBackContextNow();
     setState(State::WaitingForGl);
@@ -262,10 +243,7 @@ bool LiveShaderController::startWorker()
     if (const Result<> started = m_buildThread->start(m_viewport->context()); !started) {
         qWarning("phonglab: shaders cannot be built off the GUI thread: %s",
                  qPrintable(started.error()));
-        const QString text =
-            tr("Live editing is off: no OpenGL context could be shared with the build thread "
-               "(%1)")
-                .arg(started.error());
+        const QString text = BuildStatusText::liveEditingOff(started.error());
         m_dock->setCompileStatus(text, false);
         emit statusMessage(text, 0);
         return false;
@@ -298,10 +276,8 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     // warm-up draw, then leaves the text in the journal and marked suspect.
     m_recovery->writeNow();
     m_recovery->buildStarted(hash);
-    if (m_keptOut) { // newer text supersedes it
-        m_buildThread->release(std::move(m_keptOut->program));
-        m_keptOut.reset();
-    }
+    if (GlProgram superseded = m_keptOut.supersede())
+        m_buildThread->release(std::move(superseded));
     m_queue->setLastBuilt(hash);
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex),
                               m_dock->text(ShaderStage::Vertex)};
@@ -366,72 +342,63 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
     // The program goes to the renderer on the worker thread, with the lent
     // context current; if it never got that far, here, once it is back.
     const GLuint programId = reply.program.id();
-    auto program = std::make_shared<GlProgram>(std::move(reply.program));
-    // A trial first (issue 31, C): over the budget the new program comes
-    // out again and the last good one keeps drawing.
-    const std::shared_ptr<ProgramTrial> trial = ProgramTrial::arm(*lent, m_viewport, program);
+    WarmUp warmUp{
+        ++m_warmSerial, hash,         std::make_shared<GlProgram>(std::move(reply.program)),
+        nullptr,        reply.report, reply.timings};
+    // A trial first: over the budget the new program comes out again and the
+    // last good one keeps drawing.
+    warmUp.trial = ProgramTrial::arm(*lent, m_viewport, warmUp.program);
     setState(State::Warming);
-    const quint64 warm = ++m_warmSerial;
     m_buildThread->warmInLentContext(
-        *lent, programId,
-        [this, warm, hash, program, trial, result = reply.report,
-         timings = reply.timings](const Result<qint64> &warmNs) {
-            // The context went away meanwhile (and came back with it), or
-            // this is an older warm-up.
-            if (m_state != State::Warming || warm != m_warmSerial)
-                return;
-            setState(State::Idle);
-            m_hangNote->stop();
-            m_viewport->takeBackContext();
-            if (trial->keptOut()) {
-                keepOut(hash, std::move(*program), result, timings, trial->frameMs,
-                        trial->budgetMs);
-                startQueuedBuild();
-                return;
-            }
-            if (*program) // the trial never ran: the context could not be had there
-                m_viewport->adoptProgram(std::move(*program));
-            BuildTimings warmed = timings;
-            if (warmNs) {
-                warmed.warmNs = *warmNs;
-            } else {
-                qWarning("phonglab: warming programs in the viewport's context is off: %s",
-                         qPrintable(warmNs.error()));
-                m_warmInViewport = false;
-            }
-            announce(hash, result, warmed);
-            startQueuedBuild();
-        });
+        *lent, programId, [this, warmUp](const Result<qint64> &warmNs) { warmed(warmUp, warmNs); });
     return true;
 }
 
-// A program whose frame would take longer than the budget: the last good
-// program keeps drawing, and the user may apply it anyway.
-void LiveShaderController::keepOut(const QByteArray &hash, GlProgram program,
-                                   const BuildReport &result, const BuildTimings &timings,
-                                   double frameMs, double budgetMs)
+// The lent context's first draw is over (`warmNs`: how long it took, or why
+// it could not be made there).
+void LiveShaderController::warmed(const WarmUp &warmUp, const Result<qint64> &warmNs)
 {
-    m_recovery->buildFailed();
-    m_keptOut = {hash, std::move(program), result, timings, m_buildSources};
-    const QString text =
-        tr("Kept out: one frame would take %1 ms or more (the budget is %2 ms, a few frames' "
-           "worth); the last good program keeps drawing")
-            .arg(sentenceNumber(frameMs, 'f', 0))
-            .arg(sentenceNumber(budgetMs, 'f', 0));
-    m_dock->offerToApplyAnyway(text);
-    emit programKeptOut(frameMs);
-    emit statusMessage(text, kStatusTimeoutMs);
+    // The context went away meanwhile (and came back with it), or this is an
+    // older warm-up.
+    if (m_state != State::Warming || warmUp.serial != m_warmSerial)
+        return;
+    setState(State::Idle);
+    m_hangNote->stop();
+    m_viewport->takeBackContext();
+    const ProgramTrial &trial = *warmUp.trial;
+    if (trial.keptOut()) {
+        const QString text = m_keptOut.keep({warmUp.hash, std::move(*warmUp.program), warmUp.report,
+                                             warmUp.timings, m_buildSources},
+                                            trial.frameMs, trial.budgetMs);
+        emit programKeptOut(trial.frameMs);
+        emit statusMessage(text, kStatusTimeoutMs);
+        startQueuedBuild();
+        return;
+    }
+    if (*warmUp.program) // the trial never ran: the context could not be had there
+        m_viewport->adoptProgram(std::move(*warmUp.program));
+    BuildTimings timings = warmUp.timings;
+    if (warmNs) {
+        timings.warmNs = *warmNs;
+    } else {
+        qWarning("phonglab: warming programs in the viewport's context is off: %s",
+                 qPrintable(warmNs.error()));
+        m_warmInViewport = false;
+    }
+    announce(warmUp.hash, warmUp.report, timings);
+    startQueuedBuild();
 }
 
 void LiveShaderController::applyKeptOut()
 {
-    if (!m_keptOut || m_state != State::Idle)
+    if (m_state != State::Idle)
         return;
-    KeptOut kept = std::move(*m_keptOut);
-    m_keptOut.reset();
-    m_viewport->adoptProgram(std::move(kept.program));
-    m_buildSources = kept.sources;
-    announce(kept.hash, kept.report, kept.timings);
+    std::optional<KeptOutProgram::Built> kept = m_keptOut.take();
+    if (!kept)
+        return;
+    m_viewport->adoptProgram(std::move(kept->program));
+    m_buildSources = kept->sources;
+    announce(kept->hash, kept->report, kept->timings);
 }
 
 void LiveShaderController::announce(const QByteArray &hash, const BuildReport &result,
@@ -441,15 +408,9 @@ void LiveShaderController::announce(const QByteArray &hash, const BuildReport &r
     m_appliedSources = m_buildSources;
     m_lastApplied = timings;
     m_recovery->programShown(hash);
-    const int warnings = int(result.diagnostics.size());
-    QString status = tr("Compiled in %1 ms (compile %2, link %3, first draw %4)")
-                         .arg(double(m_buildClock.nsecsElapsed()) / 1e6, 0, 'f', 0)
-                         .arg(sentenceNumber(toMs(timings.compileNs), 'f', 0))
-                         .arg(sentenceNumber(toMs(timings.linkNs), 'f', 0))
-                         .arg(sentenceNumber(toMs(timings.warmNs), 'f', 0));
-    if (warnings > 0)
-        status += tr(" — %n warning(s)", nullptr, warnings);
-    m_dock->setCompileStatus(status, true);
+    m_dock->setCompileStatus(BuildStatusText::compiled(double(m_buildClock.nsecsElapsed()) / 1e6,
+                                                       timings, int(result.diagnostics.size())),
+                             true);
     emit programApplied(hash, timings);
 }
 
@@ -459,7 +420,7 @@ void LiveShaderController::showFailure(const BuildReport &result)
     int errors = 0;
     for (const ShaderDiagnostic &d : result.diagnostics)
         errors += d.isError();
-    const QString text = tr("%n error(s) — last good program still running", nullptr, errors);
+    const QString text = BuildStatusText::failed(errors);
     m_dock->setCompileStatus(text, false);
     emit statusMessage(text, kStatusTimeoutMs);
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include "BuildQueue.h"
+#include "KeptOutProgram.h"
 #include "ShaderRecovery.h"
 #include "core/scene/ShadingMethod.h"
 #include "render/BuildWorker.h"
@@ -7,16 +8,17 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <memory>
 #include <optional>
 
 class QTimer;
-class QWidget;
 
 namespace phonglab {
 
 class BuildThread;
 class ShaderDock;
 class Viewport;
+struct ProgramTrial;
 
 // Live shader editing: connects the Shaders dock to the viewport. After an
 // edit and a pause (QSettings "editor/debounceMs", 300 ms by default), and
@@ -28,7 +30,9 @@ class Viewport;
 // compares it with live in the benchmark (bench_edit_latency). A failed build leaves the
 // last good program running and puts each message on the user's line. The
 // buffers are journaled (ShaderRecovery) before every build, and a sentinel
-// marks a program that has not yet drawn a few frames.
+// marks a program that has not yet drawn a few frames. A program too slow
+// to draw is kept out (KeptOutProgram); what the dock and the status bar
+// say is worded in BuildStatusText.
 class LiveShaderController : public QObject
 {
     Q_OBJECT
@@ -38,7 +42,7 @@ public:
     // is on that path at a time; a build asked for meanwhile is queued and
     // starts when the controller is Idle again.
     enum class State {
-        WaitingForGl, // no GL context yet, or it is being replaced
+        WaitingForGl, // no GL context yet, or the view's is going (the window closes)
         Idle,         // the viewport draws the applied program; a build can start
         Building,     // the worker compiles and links the program
         Warming,      // the viewport's context is lent to the worker for the program's first draw
@@ -64,8 +68,10 @@ public:
     // F5: builds now, even unchanged or suspect text.
     void buildNow();
 
-    // Offers a dead session's journal (see ShaderRecovery). Call once at start.
-    void offerRecovery(ShaderRecovery::Answer answer, QWidget *dialogParent);
+    // The dock holds text restored from a dead session's journal, from
+    // `method`'s preset (if known): AfterPause builds it now, OnlyOnF5 (it
+    // crashed or hung a build last time) waits for F5.
+    void takeRestoredText(std::optional<ShadingMethod> method, AutoBuild autoBuild);
 
     int debounceMs() const { return m_queue->debounceMs(); }
     // The build thread runs (false before GL is up, or when no context
@@ -88,7 +94,7 @@ public:
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
     // A program kept out for its frame time, waiting for "Apply anyway".
-    bool hasKeptOutProgram() const { return m_keptOut.has_value(); }
+    bool hasKeptOutProgram() const { return m_keptOut.isWaiting(); }
     // Applies the program kept out (the dock's "Apply anyway").
     void applyKeptOut();
 
@@ -118,18 +124,18 @@ private:
     void dispatch(const QByteArray &hash);
     void onBuilt(BuildReply reply);
     void finish(const QByteArray &hash, BuildReply reply);
-    bool warmInViewport(const QByteArray &hash, BuildReply &reply);
-    void announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings);
-    void keepOut(const QByteArray &hash, GlProgram program, const BuildReport &result,
-                 const BuildTimings &timings, double frameMs, double budgetMs);
-
-    struct KeptOut {
+    // A first draw on its way in the lent context, and what its end needs.
+    struct WarmUp {
+        quint64 serial = 0; // m_warmSerial when it started
         QByteArray hash;
-        GlProgram program;
+        std::shared_ptr<GlProgram> program; // until the trial puts it in the renderer
+        std::shared_ptr<ProgramTrial> trial;
         BuildReport report;
         BuildTimings timings;
-        StageSources sources;
     };
+    bool warmInViewport(const QByteArray &hash, BuildReply &reply);
+    void warmed(const WarmUp &warmUp, const Result<qint64> &warmNs);
+    void announce(const QByteArray &hash, const BuildReport &result, const BuildTimings &timings);
     void takeBackContextNow();
     void showFailure(const BuildReport &result);
 
@@ -154,8 +160,8 @@ private:
     QByteArray m_buildHash;      // while Building or Warming: the text on its way
     StageSources m_buildSources; // ... and the sources it was built from
     std::optional<StageSources> m_appliedSources;
-    std::optional<KeptOut> m_keptOut; // freed by the next build, or applied anyway
-    QElapsedTimer m_buildClock;       // from dispatch to reply, for the status
+    KeptOutProgram m_keptOut{m_dock, m_recovery}; // freed by the next build, or applied anyway
+    QElapsedTimer m_buildClock;                   // from dispatch to reply, for the status
 };
 
 } // namespace phonglab

@@ -4,10 +4,11 @@
 #include "FileTypes.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
+#include "SceneDocument.h"
 #include "WarningBox.h"
+#include "core/project/ProjectPrograms.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/ScenePaths.h"
-#include "core/project/ProjectPrograms.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/viewport/Viewport.h"
 
@@ -58,7 +59,7 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
 
 void FileMenu::openOrExplain(const QStringList &paths)
 {
-    const Result<> opened = m_window->openFiles(paths);
+    const Result<> opened = m_window->document()->openFiles(paths);
     if (opened)
         return;
     m_window->statusBar()->showMessage(tr("Cannot open: %1").arg(firstLine(opened.error())),
@@ -110,9 +111,9 @@ void FileMenu::chooseAndOpenProject()
                                  QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Discard)
         return;
-    const Result<> opened = chosen
-        ? m_window->openShaders(shaderLocator(chosen->vertex), shaderLocator(chosen->fragment))
-        : Result<>(fail(chosen.error()));
+    const Result<> opened = chosen ? m_window->document()->openShaders(
+                                shaderLocator(chosen->vertex), shaderLocator(chosen->fragment))
+                                   : Result<>(fail(chosen.error()));
     if (!opened) {
         openWarning(m_window, tr("Cannot open"), opened.error());
         return;
@@ -138,12 +139,12 @@ void FileMenu::explainMissingRecentFile(const QString &path)
 
 void FileMenu::saveToCurrentFile()
 {
-    const QString path = m_window->scenePath();
+    const QString path = m_window->document()->path();
     if (!isWritableLocation(path) || isShippedScene(path)) {
         chooseAndSave();
         return;
     }
-    if (const Result<> saved = m_window->saveScene(path); !saved)
+    if (const Result<> saved = m_window->document()->save(path); !saved)
         warnCannotSave(path, saved.error());
 }
 
@@ -157,7 +158,7 @@ void FileMenu::chooseAndSave()
         path += QStringLiteral(".json");
     // saveSceneFile writes atomically: on failure the old file and the scene
     // in the window are both untouched, so the user can retry elsewhere.
-    if (const Result<> saved = m_window->saveScene(path); !saved)
+    if (const Result<> saved = m_window->document()->save(path); !saved)
         warnCannotSave(path, saved.error());
 }
 
@@ -184,7 +185,8 @@ void FileMenu::chooseAndExportImage()
                                                       tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
-    if (const Result<> exported = m_window->exportImage(path, {width, height}); !exported)
+    if (const Result<> exported = m_window->document()->exportImage(path, {width, height});
+        !exported)
         openWarning(m_window, tr("Export Image"), exported.error());
     else
         m_window->statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()),

@@ -9,8 +9,8 @@ namespace phonglab {
 class MainWindow;
 class RecentFiles;
 
-// The File menu: the dialogs in front of MainWindow's open, save and export
-// (which work without them, for tests and start-up), the recent files, the
+// The File menu: the dialogs in front of SceneDocument's open, save and
+// export (which work without them, for tests and start-up), the recent files, the
 // shipped example scenes (ExamplesMenu), and what each says when it fails.
 class FileMenu : public QObject
 {

@@ -5,9 +5,10 @@
 #include "GuiArguments.h"
 #include "LanguageMenu.h"
 #include "MainWindow.h"
-#include "core/support/Language.h"
-#include "core/scene/ResourcePaths.h"
+#include "SceneDocument.h"
 #include "core/check/ProgramSynopsis.h"
+#include "core/scene/ResourcePaths.h"
+#include "core/support/Language.h"
 #include "render/GlFormat.h"
 #include "ui/viewport/Viewport.h"
 
@@ -65,7 +66,7 @@ bool armX11Fallback()
 bool openDefaultScene(MainWindow &window)
 {
     const QString path = defaultScenePath();
-    const Result<> opened = window.openScene(path);
+    const Result<> opened = window.document()->openAndWait(path);
     if (opened)
         return true;
     // The error names the file.
@@ -80,7 +81,7 @@ bool openDefaultScene(MainWindow &window)
 // files; a load failing reports itself.
 void openRequestedFiles(MainWindow &window, const QStringList &paths)
 {
-    if (const Result<> opened = window.openFiles(paths); !opened)
+    if (const Result<> opened = window.document()->openFiles(paths); !opened)
         QMessageBox::warning(
             &window, QObject::tr("Cannot open"),
             QObject::tr("%1\n\n%2\n\nShowing the default scene instead.")
@@ -105,7 +106,7 @@ void openSubmission(MainWindow &window, const GuiArguments &requested)
         }
     }
     if (opened)
-        opened = window.openSubmission(requested.files.front(), vertex, fragment);
+        opened = window.document()->openSubmission(requested.files.front(), vertex, fragment);
     if (!opened)
         QMessageBox::warning(
             &window, QObject::tr("Cannot open"),
