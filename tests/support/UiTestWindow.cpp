@@ -88,7 +88,7 @@ QImage UiTestWindow::frame() const
 
 UniformSnapshot UiTestWindow::programSnapshot() const
 {
-    return viewport()->programSnapshot();
+    return viewport()->program().values();
 }
 
 LiveShaderController *UiTestWindow::live() const

@@ -11,6 +11,7 @@
 #include "ui/help/DocumentationFiles.h"
 #include "ui/help/HelpMenu.h"
 #include "ui/help/ShortcutsDialog.h"
+#include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
 #include "ui/window/StartupOptions.h"
@@ -242,14 +243,14 @@ void TestHelpMenu::aboutNamesVersionsAndRenderer()
 {
     QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7-test"));
     // The renderer as the view's own context names it, asked here.
-    viewport()->takeBackContext();
-    viewport()->makeCurrent();
-    QOpenGLFunctions *gl = viewport()->context()->functions();
-    const QString renderer =
-        QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)));
-    const QString version =
-        QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_VERSION)));
-    viewport()->doneCurrent();
+    QString renderer, version;
+    {
+        const CurrentContext current(*viewport());
+        QOpenGLFunctions *gl = viewport()->context()->functions();
+        renderer =
+            QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)));
+        version = QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_VERSION)));
+    }
     QVERIFY(!renderer.isEmpty());
 
     helpMenu()->aboutAction()->trigger();

@@ -17,7 +17,6 @@
 #include "ui/shaders/ShaderFileSet.h"
 #include "ui/shaders/ShaderRecovery.h"
 #include "ui/uniforms/UniformsDock.h"
-#include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/MainWindow.h"
 
@@ -336,13 +335,12 @@ void TestLiveEdit::userUniformSurvivesRebuild()
     QVERIFY(waitForApplied());
     const QImage black = frame(); // gain starts at 0
 
-    {
-        const CurrentContext current(
-            *viewport()); // the one way to the viewport's context, lent or not
-        ShaderProgram &program = viewport()->renderer().program();
-        program.bind();
-        program.setUniform("gain", 0.5f);
-    }
+    const UniformSnapshot values = programSnapshot();
+    const UniformValue *gain = values.find("gain");
+    QVERIFY(gain);
+    UniformValue half = *gain;
+    half.floats[0] = 0.5f;
+    QVERIFY(viewport()->program().set(half)); // as the Uniforms dock sets it
     viewport()->requestFrame();
     QTRY_VERIFY(frame() != black);
     const QImage withGain = frame();
@@ -543,7 +541,7 @@ void TestLiveEdit::slowProgramIsKeptOut()
     // The window's first rows of uniforms (~40 ms of the GUI thread, once)
     // are made before the measurement, not in it.
     QTRY_VERIFY(rowsMade.count() > 0 && !uniforms->rebuildPending());
-    const GLuint lastGood = viewport()->renderer().program().id();
+    const GLuint lastGood = viewport()->program().id();
     const QImage lastGoodPicture = frame();
     QSignalSpy keptOut(live(), &LiveShaderController::programKeptOut);
     // Types a loop with `bound` steps, compiles, and returns the longest
@@ -582,13 +580,13 @@ void TestLiveEdit::slowProgramIsKeptOut()
     QCOMPARE(frame(), lastGoodPicture); // the last good one still draws
     QVERIFY(dock()->applyAnywayButton()->isVisible());
     QVERIFY(live()->hasKeptOutProgram());
-    QCOMPARE(viewport()->renderer().program().id(), lastGood);
+    QCOMPARE(viewport()->program().id(), lastGood);
 
     // Apply anyway: it draws now, and the status no longer offers it.
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
     dock()->applyAnywayButton()->click();
     QCOMPARE(applied.count(), 1);
-    QVERIFY(viewport()->renderer().program().id() != lastGood);
+    QVERIFY(viewport()->program().id() != lastGood);
     QVERIFY(!live()->hasKeptOutProgram());
     QVERIFY(!dock()->applyAnywayButton()->isVisible());
 

@@ -174,7 +174,7 @@ void LiveCheck::run()
     m_pending = false;
     // No drawing here: the checker's thread draws this frame again itself.
     FrameRecipe frame{m_viewport->renderedScene(), m_live->appliedSources(),
-                      m_viewport->programSnapshot(), m_viewport->renderOptions(), checkSize()};
+                      m_viewport->program().values(), m_viewport->renderOptions(), checkSize()};
     if (frame.size.isEmpty())
         return;
     m_checkingPrefix =

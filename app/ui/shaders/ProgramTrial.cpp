@@ -1,6 +1,5 @@
 #include "ProgramTrial.h"
 
-#include "render/FrameEstimate.h"
 #include "ui/viewport/Viewport.h"
 
 #include <algorithm>
@@ -19,10 +18,12 @@ std::shared_ptr<ProgramTrial> ProgramTrial::arm(LentContext &lent, Viewport *vie
     auto trial = std::make_shared<ProgramTrial>();
     trial->budgetMs = frameBudgetMs(*viewport);
     trial->pixels = viewport->size() * viewport->devicePixelRatioF();
-    lent.whileCurrent = [viewport, program] { viewport->renderer().exchangeProgram(*program); };
-    lent.afterWarm = [viewport, program, trial](const LentContext &loan) {
-        Renderer &renderer = viewport->renderer();
-        trial->frameMs = trialFrameMs(renderer, loan, trial->pixels, trial->budgetMs);
+    // On the worker thread, with the lent context current: the view's
+    // renderer only as its borrower may use it.
+    const LentRenderer renderer = viewport->lentRenderer();
+    lent.whileCurrent = [renderer, program] { renderer.exchangeProgram(*program); };
+    lent.afterWarm = [renderer, program, trial](const LentContext &loan) {
+        trial->frameMs = renderer.trialFrameMs(loan, trial->pixels, trial->budgetMs);
         trial->ran = true;
         if (trial->keptOut()) {
             renderer.exchangeProgram(*program); // the new one comes back out

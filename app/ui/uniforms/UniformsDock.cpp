@@ -2,8 +2,6 @@
 
 #include "BindingChoice.h"
 
-#include "ui/viewport/CurrentContext.h"
-
 #include "UniformBoolRow.h"
 #include "UniformFloatRow.h"
 #include "UniformIntRow.h"
@@ -15,7 +13,6 @@
 #include <QBoxLayout>
 #include <QFormLayout>
 #include <QLabel>
-#include <QOpenGLContext>
 #include <QScrollArea>
 #include <QStyle>
 
@@ -81,14 +78,14 @@ void UniformsDock::onFrameRendered()
 
 bool UniformsDock::readProgram(Program &program)
 {
-    if (!m_viewport || !m_viewport->isRenderReady())
+    if (!m_viewport)
         return false;
-    const CurrentContext current(*m_viewport);
-    ShaderProgram &shader = m_viewport->renderer().program();
-    program.active =
-        activeUniformsOf(QOpenGLContext::currentContext()->extraFunctions(), shader.id());
-    program.values = shader.snapshot();
-    program.bindings = shader.bindings();
+    std::optional<ViewProgram::Uniforms> uniforms = m_viewport->program().readUniforms();
+    if (!uniforms)
+        return false;
+    program.active = std::move(uniforms->active);
+    program.values = std::move(uniforms->values);
+    program.bindings = std::move(uniforms->bindings);
     program.explicitBindings = m_viewport->currentScene().bindings;
     return true;
 }
@@ -295,13 +292,9 @@ void UniformsDock::writeInt(const QString &element, int number)
 
 void UniformsDock::write(const UniformValue &value)
 {
-    if (!m_viewport || !m_viewport->isRenderReady())
+    // Set only where name and type still match the program.
+    if (!m_viewport || !m_viewport->program().set(value))
         return;
-    {
-        const CurrentContext current(*m_viewport);
-        // restore() sets it only where name and type still match the program.
-        m_viewport->renderer().program().restore(UniformSnapshot{{value}});
-    }
     for (UniformValue &kept : m_values.values)
         if (kept.name == value.name)
             kept = value;

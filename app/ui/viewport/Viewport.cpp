@@ -81,11 +81,6 @@ void Viewport::setFormat(const QSurfaceFormat &format)
     m_surface->setFormat(format);
 }
 
-QSurfaceFormat Viewport::format() const
-{
-    return m_surface->format();
-}
-
 void Viewport::requestFrame()
 {
     m_surface->requestFrame();
@@ -245,14 +240,6 @@ void Viewport::setBindings(const ExplicitBindings &bindings)
     m_gpu.setBindings(bindings);
     parametersChanged();
     emit sceneParametersChanged();
-}
-
-UniformSnapshot Viewport::programSnapshot()
-{
-    if (!m_gpu.isReady())
-        return {};
-    const CurrentContext current(*this);
-    return m_gpu.programSnapshot();
 }
 
 void Viewport::setHeadlight(bool on)

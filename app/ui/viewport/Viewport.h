@@ -1,5 +1,7 @@
 #pragma once
 #include "GpuScene.h"
+#include "LentRenderer.h"
+#include "ViewProgram.h"
 #include "ViewportSurface.h"
 #include "render/LentContext.h"
 #include "render/SharedGlObject.h"
@@ -31,7 +33,9 @@ class WidgetOverlay;
 // the context, its loans, presenting and timing frames), ViewportInput
 // (mouse, keys, drops) and GpuScene (the scene, camera and renderer), with
 // WidgetOverlay drawing the children. This class ties them together and is
-// what the rest of the window talks to.
+// what the rest of the window talks to; the renderer itself it keeps: the
+// window reaches the program it draws with through ViewProgram, and a
+// borrower of its context through LentRenderer.
 class Viewport : public QWidget, private ViewportSurface::Content
 {
     Q_OBJECT
@@ -70,10 +74,8 @@ public:
     // (the build thread's) and owns it from then on; uniforms the user set
     // carry over. Needs GL to be up (glInitialized()).
     void adoptProgram(GlProgram program);
-    Renderer &renderer()
-    {
-        return m_gpu.renderer();
-    } // call with the context current (CurrentContext)
+    // The program the view draws with: its uniforms, its bindings.
+    ViewProgram &program() { return m_program; }
     // The near/far planes of the last frame (no GL call; any time).
     const DepthRange &depthRange() const { return m_gpu.renderer().depthRange(); }
 
@@ -84,6 +86,8 @@ public:
     // Waits for a frame being presented first. Refused (nullopt) before GL
     // is up: the caller then does the work itself.
     std::optional<LentContext> lendContext(QThread *borrower);
+    // The renderer as the borrower may use it while the loan lasts.
+    LentRenderer lentRenderer() { return LentRenderer(&m_gpu.renderer()); }
     // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
     // and paints again. False if it did not come back in time.
     bool takeBackContext(int timeoutMs = -1);
@@ -94,15 +98,12 @@ public:
     // context is back; null before the window was first shown.
     QImage grabFramebuffer();
 
-    // The view's GL context (null before the window was first shown);
-    // makeCurrent() and doneCurrent() as QOpenGLWidget's.
+    // The view's GL context (null before the window was first shown), made
+    // current on this thread by CurrentContext only.
     QOpenGLContext *context() const { return m_surface->context(); }
-    void makeCurrent();
-    void doneCurrent();
     // The format the view's window asks for (samples, depth); set before the
     // window is first shown.
     void setFormat(const QSurfaceFormat &format);
-    QSurfaceFormat format() const;
     // A new frame at the next turn of the event loop (QWidget::update()
     // repaints only the widget around the view's window).
     void requestFrame();
@@ -129,25 +130,18 @@ public:
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
     // How the view draws (light markers, detail, lights left out).
     const Renderer::Options &renderOptions() const { return m_gpu.options(); }
-    // The current values of the program the view draws with (empty before
-    // GL starts), read with the context taken back if it is lent.
-    UniformSnapshot programSnapshot();
     // The scene's explicit bindings (its "bindings"): the uniforms' new
     // meanings apply from the next frame; vertex inputs keep theirs until
     // the program is linked again.
     void setBindings(const ExplicitBindings &bindings);
-    // What each of that program's variables is bound to (core/ShaderBindings.h).
-    const ProgramBindings &programBindings() { return m_gpu.renderer().program().bindings(); }
     // A white light at the eye that follows the camera: the one light not in
     // world space. A view setting, not part of the scene (currentScene() has
     // no trace of it); added only while fewer than kMaxLights are in use.
     void setHeadlight(bool on);
-    bool headlight() const { return m_gpu.headlight(); }
     // currentScene() plus the headlight: what the renderer draws.
     Scene renderedScene() const;
     // The light whose marker is drawn highlighted (-1: none).
     void setSelectedLight(int index);
-    int selectedLight() const { return m_gpu.options().selectedLight; }
 
     void resetCamera();
     void setShowLightMarkers(bool show);
@@ -164,11 +158,10 @@ public:
     bool isRenderReady() const { return m_gpu.isReady(); }
     // After a frame longer than kHoldFramesAfterMs the view draws nothing
     // until a click, a wheel turn or a key in it, a new program or a new
-    // scene (resumeFrames()): such a frame is never repeated by itself.
+    // scene: such a frame is never repeated by itself.
     bool framesHeld() const { return m_surface->framesHeld(); }
     // Frames asked for while held, and not drawn.
     qint64 framesRefused() const { return m_surface->framesRefused(); }
-    void resumeFrames();
     qint64 framesRendered() const { return m_surface->framesRendered(); }
     // Of those, the first frames of new programs that their trial drew and
     // presented in the lent context (the GUI thread drew them no more).
@@ -222,6 +215,11 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
+    friend class CurrentContext; // the one way to make the context current
+
+    // As QOpenGLWidget's: CurrentContext's, and the view's own.
+    void makeCurrent();
+    void doneCurrent();
     // ViewportSurface::Content
     bool drawScene(const QSize &pixels) override;
     void drawOverlays(const QSize &pixels) override;
@@ -229,6 +227,8 @@ private:
 
     void initializeGl();
     void cleanup();
+    void resumeFrames();
+    int selectedLight() const { return m_gpu.options().selectedLight; }
     QSize pixelSize() const;
     void showUploaded(const Scene &scene);
     // The camera or another parameter changed: a new frame.
@@ -236,6 +236,7 @@ private:
     void cameraMoved();
 
     GpuScene m_gpu;
+    ViewProgram m_program{this, &m_gpu};
     ViewportSurface *m_surface = nullptr; // children of this widget
     ViewportInput *m_input = nullptr;
     WidgetOverlay *m_overlay = nullptr;

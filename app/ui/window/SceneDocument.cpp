@@ -159,8 +159,8 @@ Result<> SceneDocument::save(const QString &path)
     current.camera = m_viewport->cameraToSave();
     Scene scene = rebasedOnto(current, path);
     m_sceneShaderFiles->nameIn(scene, path);
-    scene.uniforms =
-        userUniformValues(m_viewport->programSnapshot(), m_viewport->programBindings());
+    ViewProgram &program = m_viewport->program();
+    scene.uniforms = userUniformValues(program.values(), program.bindings());
     if (Result<> saved = saveSceneFile(scene, path); !saved)
         return saved;
     setPath(path);
