@@ -327,7 +327,7 @@ void TestShaderEditor::highlightingAndCompletionFollowTheDialect()
                    "varying vec3 vNormal;\n"
                    "void main() { gl_FragColor = vec4(normalize(vNormal), 1.0); }\n");
     QCOMPARE(editor.glslLexer()->dialect(), ShaderDialect::Es100);
-    QCOMPARE(styleAt(editor, 1, 0), int(QsciLexerCPP::Keyword)); // "varying"
+    QCOMPARE(styleAt(editor, 1, 0), int(QsciLexerCPP::Keyword));      // "varying"
     QCOMPARE(styleAt(editor, 2, 14), int(QsciLexerCPP::KeywordSet2)); // "gl_FragColor"
     QVERIFY(completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture2D")));
     QVERIFY(!completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture")));
@@ -344,8 +344,10 @@ void TestShaderEditor::highlightingAndCompletionFollowTheDialect()
     QVERIFY(!completions(editor, QStringLiteral("textu")).contains(QStringLiteral("texture2D")));
     QVERIFY(completions(editor, QStringLiteral("inv")).contains(QStringLiteral("inverse")));
     QVERIFY(!completions(editor, QStringLiteral("attr")).contains(QStringLiteral("attribute")));
-    QVERIFY(completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragCoord")));
-    QVERIFY(!completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragColor")));
+    QVERIFY(
+        completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragCoord")));
+    QVERIFY(
+        !completions(editor, QStringLiteral("gl_Frag")).contains(QStringLiteral("gl_FragColor")));
 
     editor.setCode(kSmallShader); // #version 330 core
     QCOMPARE(editor.glslLexer()->dialect(), ShaderDialect::Desktop);
@@ -667,10 +669,10 @@ void TestShaderEditor::f5AndPresetBoxEmitRequests()
     QCOMPARE(compile.count(), 1);
     QCOMPARE(dock.text(ShaderStage::Fragment), kSmallShader); // F5 typed nothing
 
-    QSignalSpy preset(&dock, &ShaderDock::presetRequested);
-    QComboBox *box = dock.presetBox();
+    QSignalSpy preset(&dock, &ShaderDock::shadingMethodRequested);
+    QComboBox *box = dock.shadingMethodBox();
     QCOMPARE(box->count(), shadingNames().size());
-    dock.setPreset(ShadingMethod::Phong);
+    dock.selectShadingMethod(ShadingMethod::Phong);
     QCOMPARE(preset.count(), 0); // only the user's choices are requests
     emit box->activated(box->findData(QStringLiteral("phong")));
     QCOMPARE(preset.count(), 1);
