@@ -435,7 +435,7 @@ void TestLightsDock::presetsAndShininess()
     const QList<MaterialPreset> builtins = builtinMaterialPresets();
     const int chalk = panel->presetBox()->findText(QStringLiteral("Chalk"));
     QVERIFY(chalk >= 0);
-    panel->applyPreset(chalk);
+    panel->applyMaterialPreset(chalk);
     QCOMPARE(viewport()->currentScene().objects[0].material, builtins[chalk].material);
     for (double n : {5.0, 6.0, 7.0})
         panel->shininessBox()->setValue(n);
@@ -447,7 +447,7 @@ void TestLightsDock::presetsAndShininess()
     QCOMPARE(viewport()->currentScene().objects[0].material, original);
     const int saved = panel->presetBox()->findText(QStringLiteral("test chalk 7"));
     QVERIFY(saved >= int(builtins.size()));
-    panel->applyPreset(saved);
+    panel->applyMaterialPreset(saved);
     QCOMPARE(viewport()->currentScene().objects[0].material.shininess, 7.0);
     QCOMPARE(viewport()->currentScene().objects[0].material.kd, builtins[chalk].material.kd);
 }

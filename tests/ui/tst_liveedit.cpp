@@ -421,7 +421,7 @@ void TestLiveEdit::presetLoadsBuildsAndSetsSceneShading()
 {
     openWindow();
     const QImage phong = frame();
-    emit dock()->presetRequested(ShadingMethod::Gouraud); // as choosing it in the box does
+    emit dock()->shadingMethodRequested(ShadingMethod::Gouraud); // as choosing it in the box does
     QCOMPARE(dock()->text(ShaderStage::Fragment), readShipped(QStringLiteral("gouraud.frag")));
     QCOMPARE(dock()->text(ShaderStage::Vertex), readShipped(QStringLiteral("gouraud.vert")));
     QVERIFY(!dock()->isDirty(ShaderStage::Fragment));

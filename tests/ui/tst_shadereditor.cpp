@@ -669,10 +669,10 @@ void TestShaderEditor::f5AndPresetBoxEmitRequests()
     QCOMPARE(compile.count(), 1);
     QCOMPARE(dock.text(ShaderStage::Fragment), kSmallShader); // F5 typed nothing
 
-    QSignalSpy preset(&dock, &ShaderDock::presetRequested);
-    QComboBox *box = dock.presetBox();
+    QSignalSpy preset(&dock, &ShaderDock::shadingMethodRequested);
+    QComboBox *box = dock.shadingMethodBox();
     QCOMPARE(box->count(), shadingNames().size());
-    dock.setPreset(ShadingMethod::Phong);
+    dock.selectShadingMethod(ShadingMethod::Phong);
     QCOMPARE(preset.count(), 0); // only the user's choices are requests
     emit box->activated(box->findData(QStringLiteral("phong")));
     QCOMPARE(preset.count(), 1);

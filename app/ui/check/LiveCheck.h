@@ -21,7 +21,7 @@ class PixelInspectorDock;
 class SceneLoadJob;
 class Viewport;
 
-// The editor's check (issue 12, C and D): after every applied program, and
+// The editor's check: after every applied program, and
 // whenever the view or the scene changes, the frame is drawn again
 // single-sampled and checked against the exact image in the background
 // (CheckRunner; typing is never blocked and the newest frame wins). Shows ✓ / ✗ with PSNR and the top diagnosis in

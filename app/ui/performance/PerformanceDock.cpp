@@ -64,14 +64,14 @@ PerformanceDock::PerformanceDock(Viewport *viewport, const QString &program, QWi
            "budget. The levels are built in the background the first time."));
     layout->addWidget(m_autoDetail);
     connect(m_autoDetail, &QCheckBox::toggled, this, [this](bool on) {
-        sendModelReduction();
+        sendReductionAllowance();
         emit autoDetailRequested(on);
     });
     connect(m_budgetKind, &QComboBox::currentIndexChanged, this,
-            &PerformanceDock::sendModelReduction);
+            &PerformanceDock::sendReductionAllowance);
     connect(m_budgetValue, &QDoubleSpinBox::valueChanged, this,
-            &PerformanceDock::sendModelReduction);
-    sendModelReduction();
+            &PerformanceDock::sendReductionAllowance);
+    sendReductionAllowance();
 
     auto *buttons = new QHBoxLayout;
     m_measureButton = new QPushButton(tr("Measure"), body);
@@ -126,16 +126,16 @@ PerformanceDock::PerformanceDock(Viewport *viewport, const QString &program, QWi
 
 PerformanceDock::~PerformanceDock() = default;
 
-void PerformanceDock::sendModelReduction()
+void PerformanceDock::sendReductionAllowance()
 {
-    m_viewport->setModelReduction(budget().reductionAllowance(), m_autoDetail->isChecked());
+    m_viewport->setReductionAllowance(budget().reductionAllowance(), m_autoDetail->isChecked());
 }
 
 void PerformanceDock::showAutoDetail(bool on)
 {
     const QSignalBlocker quiet(m_autoDetail);
     m_autoDetail->setChecked(on);
-    sendModelReduction();
+    sendReductionAllowance();
 }
 
 ErrorBudget PerformanceDock::budget() const
@@ -248,7 +248,7 @@ void PerformanceDock::applyFit()
         return;
     m_shadingBeforeFit = m_viewport->currentScene().shading;
     m_fullButton->setEnabled(true);
-    emit applyModelRequested(*method, chosen.detail);
+    emit applyFitRequested(*method, chosen.detail);
     const QLocale locale;
     QString text =
         tr("Fitted to %1: %2 shading at detail %3, %4 triangles, %5 ms per frame (measured "
@@ -272,7 +272,7 @@ void PerformanceDock::applyFit()
 
 void PerformanceDock::restoreFullDetail()
 {
-    emit applyModelRequested(m_shadingBeforeFit, 1.0);
+    emit applyFitRequested(m_shadingBeforeFit, 1.0);
     m_fullButton->setEnabled(false);
     m_report->setText(
         tr("Back to full detail with %1 shading.").arg(shadingName(m_shadingBeforeFit)));

@@ -20,7 +20,7 @@ namespace phonglab {
 class BenchProcess;
 class Viewport;
 
-// "Model no more than a scene needs": live frame time, the speed-against-
+// No more drawing than the scene needs: live frame time, the speed-against-
 // accuracy chart of the scene in the window (every shipped method at every
 // detail level, measured for the current view and lights by `phonglab
 // bench` in a child process), and Fit to budget, which picks the cheapest
@@ -52,21 +52,21 @@ public slots:
     // The toggle as the scene on screen has it (no request sent).
     void showAutoDetail(bool on);
     void measure();     // measure only: chart, no change to the scene
-    void fitToBudget(); // measure, then apply the cheapest model within budget
+    void fitToBudget(); // measure, then apply the cheapest method and detail within budget
     void restoreFullDetail();
     void cancel();
 
 signals:
     // Show the scene with every object at `detail` and `method` shading.
-    void applyModelRequested(phonglab::ShadingMethod method, double detail);
+    void applyFitRequested(phonglab::ShadingMethod method, double detail);
     // The toggle: every object to "detail": "auto" (true) or back to full detail.
     void autoDetailRequested(bool on);
     void measured();   // rows() are new (or the run failed: rows() empty)
-    void fitApplied(); // the model was handed to applyModelRequested
+    void fitApplied(); // the fit was handed to applyFitRequested
 
 private:
     void setBudgetKind(int index);
-    void sendModelReduction();
+    void sendReductionAllowance();
     void startMeasurement(bool thenFit);
     void showProgress(int done, int total, const QString &stage);
     void measurementFinished(const std::vector<BenchRow> &rows, const QString &error);
@@ -93,7 +93,7 @@ private:
     std::vector<BenchRow> m_rows;
     BudgetFit m_fit;
     bool m_fitAfterMeasuring = false;
-    // The model shown before the last fit, for Full detail.
+    // The shading shown before the last fit, for Full detail.
     ShadingMethod m_shadingBeforeFit = ShadingMethod::Phong;
 };
 

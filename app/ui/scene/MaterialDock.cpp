@@ -78,7 +78,8 @@ void MaterialDock::buildForm()
     m_presets = new QComboBox(form);
     auto *apply = new QPushButton(tr("Apply"), form);
     auto *save = new QPushButton(tr("Save as Preset…"), form);
-    connect(apply, &QPushButton::clicked, this, [this] { applyPreset(m_presets->currentIndex()); });
+    connect(apply, &QPushButton::clicked, this,
+            [this] { applyMaterialPreset(m_presets->currentIndex()); });
     connect(save, &QPushButton::clicked, this, &MaterialDock::askPresetName);
     auto *presetRow = new QHBoxLayout;
     presetRow->addWidget(m_presets, 1);
@@ -111,7 +112,7 @@ void MaterialDock::pushMaterial(const Material &after, MaterialField field)
         pushEdit(new SetMaterialCommand(access(), index, before, after, field));
 }
 
-void MaterialDock::applyPreset(int index)
+void MaterialDock::applyMaterialPreset(int index)
 {
     const QList<MaterialPreset> presets = allMaterialPresets();
     if (index < 0 || index >= presets.size() || selectedObject() < 0)

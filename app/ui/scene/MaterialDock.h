@@ -23,7 +23,7 @@ public:
     QDoubleSpinBox *shininessBox() const { return m_shininess; }
     QComboBox *presetBox() const { return m_presets; }
     // Applies preset `index` of allMaterialPresets() to the selected object.
-    void applyPreset(int index);
+    void applyMaterialPreset(int index);
     void saveAsPreset(const QString &name);
 
 protected:

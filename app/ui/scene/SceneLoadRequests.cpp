@@ -51,7 +51,7 @@ SceneLoadRequest normalsRequest(const Scene &current, int objectIndex, const Nor
     return request;
 }
 
-SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double detail)
+SceneLoadRequest fitRequest(const Scene &current, ShadingMethod method, double detail)
 {
     auto apply = [method, detail](Scene scene) {
         scene.shading = method;

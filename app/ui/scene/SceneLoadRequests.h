@@ -18,7 +18,7 @@ SceneLoadRequest normalsRequest(const Scene &current, int objectIndex,
                                 const NormalOptions &options);
 // `current` with every object at `detail` (fraction of its full triangles)
 // and `method` shading: what Fit to budget applies.
-SceneLoadRequest modelRequest(const Scene &current, ShadingMethod method, double detail);
+SceneLoadRequest fitRequest(const Scene &current, ShadingMethod method, double detail);
 // Every object to "detail": "auto" (the levels are built by the load, off
 // the GUI thread), or back to full detail.
 SceneLoadRequest autoDetailRequest(const Scene &current, bool on);

@@ -9,7 +9,7 @@ namespace phonglab {
 // comments, numbers, operators and preprocessor lines the way GLSL writes
 // them. Keyword set 1 holds GLSL's keywords, qualifiers and types; set 2 its
 // built-in functions and variables (from GlslApi), shown in their own colour.
-// Both sets follow the dialect (issue 30, A): GLSL ES 1.00 has attribute,
+// Both sets follow the dialect: GLSL ES 1.00 has attribute,
 // varying, texture2D and gl_FragColor, GLSL ES 3.00 and desktop GLSL do not.
 class GlslLexer : public QsciLexerCPP
 {

@@ -58,7 +58,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     connect(m_viewport, &Viewport::shippedProgramLoaded, this,
             &LiveShaderController::onShippedProgramLoaded);
     connectDock();
-    showPreset(m_viewport->currentScene().shading);
+    showShippedShaders(m_viewport->currentScene().shading);
 }
 
 void LiveShaderController::setUpTimers()
@@ -90,7 +90,8 @@ void LiveShaderController::connectDock()
 {
     connect(m_dock, &ShaderDock::textEdited, this, &LiveShaderController::onTextEdited);
     connect(m_dock, &ShaderDock::compileRequested, this, &LiveShaderController::buildNow);
-    connect(m_dock, &ShaderDock::presetRequested, this, &LiveShaderController::applyPreset);
+    connect(m_dock, &ShaderDock::shadingMethodRequested, this,
+            &LiveShaderController::switchShadingMethod);
     connect(m_dock, &ShaderDock::applyAnywayRequested, this, &LiveShaderController::applyKeptOut);
     connect(m_dock, &ShaderDock::filesChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
     connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery,
@@ -107,7 +108,7 @@ bool LiveShaderController::buildsOnWorker() const
     return m_buildThread->isRunning();
 }
 
-void LiveShaderController::showPreset(ShadingMethod method)
+void LiveShaderController::showShippedShaders(ShadingMethod method)
 {
     const Result<StageSources> shipped = shippedSources(method);
     if (!shipped) {
@@ -115,14 +116,14 @@ void LiveShaderController::showPreset(ShadingMethod method)
         return;
     }
     m_dock->setSources(shipped->vertex, shipped->fragment);
-    m_dock->setPreset(method);
+    m_dock->selectShadingMethod(method);
     m_shading = method;
     m_recovery->setShading(shadingName(method));
 }
 
-void LiveShaderController::applyPreset(ShadingMethod method)
+void LiveShaderController::switchShadingMethod(ShadingMethod method)
 {
-    showPreset(method);
+    showShippedShaders(method);
     m_viewport->setShading(method); // so Save writes the method in use
     m_autoBuild = AutoBuild::AfterPause;
     requestBuild(BuildRequest::Always);
@@ -133,7 +134,7 @@ void LiveShaderController::followSceneShading(ShadingMethod method)
     if (method == m_shading)
         return;
     if (!m_dock->hasUnsavedChanges()) {
-        showPreset(method); // what the viewport has just loaded
+        showShippedShaders(method); // what the viewport has just loaded
         m_appliedHash = currentHash();
         m_queue->setLastBuilt(m_appliedHash);
         m_appliedSources.reset();
@@ -163,8 +164,8 @@ void LiveShaderController::takeRestoredText(std::optional<ShadingMethod> method,
                                             AutoBuild autoBuild)
 {
     if (method) {
-        m_shading = *method; // the preset the restored buffers came from
-        m_dock->setPreset(*method);
+        m_shading = *method; // the method the restored buffers came from
+        m_dock->selectShadingMethod(*method);
     }
     m_autoBuild = autoBuild;
     m_queue->stopPause(); // restoring typed the text in again; build it once, below

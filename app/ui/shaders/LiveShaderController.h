@@ -60,16 +60,17 @@ public:
 
     // Puts `method`'s shipped shaders into the dock without building them
     // (the viewport builds its scene's program itself).
-    void showPreset(ShadingMethod method);
-    // The user chose a preset: load, build at once, and the scene follows.
-    void applyPreset(ShadingMethod method);
+    void showShippedShaders(ShadingMethod method);
+    // The user chose a shading method: its shipped shaders load and build at
+    // once, and the scene follows.
+    void switchShadingMethod(ShadingMethod method);
     // The viewport's scene changed its shading method (a scene was opened).
     void followSceneShading(ShadingMethod method);
     // F5: builds now, even unchanged or suspect text.
     void buildNow();
 
     // The dock holds text restored from a dead session's journal, from
-    // `method`'s preset (if known): AfterPause builds it now, OnlyOnF5 (it
+    // `method`'s shaders (if known): AfterPause builds it now, OnlyOnF5 (it
     // crashed or hung a build last time) waits for F5.
     void takeRestoredText(std::optional<ShadingMethod> method, AutoBuild autoBuild);
 

@@ -10,7 +10,7 @@ namespace phonglab {
 class Viewport;
 
 // A new program whose frame would take longer than a few frames of the view,
-// and at least this, is kept out (issue 31, C; docs/first-five-minutes.md).
+// and at least this, is kept out (docs/first-five-minutes.md).
 inline constexpr double kMinFrameBudgetMs = 250.0;
 
 // The budget for the view as it draws now: 4 frames of it, at least

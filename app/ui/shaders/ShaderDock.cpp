@@ -49,7 +49,7 @@ std::optional<ShaderStage> stageFromSuffix(const QString &path)
     return std::nullopt;
 }
 
-// "blinn-phong" -> "Blinn-Phong" for the preset box.
+// "blinn-phong" -> "Blinn-Phong" for the shading method box.
 QString displayName(const QString &name)
 {
     QStringList parts = name.split(QLatin1Char('-'));
@@ -71,7 +71,7 @@ ShaderDock::ShaderDock(QWidget *parent)
     , m_vertex(new ShaderEditor)
     , m_fragment(new ShaderEditor)
     , m_tabs(new QTabWidget)
-    , m_presets(new QComboBox)
+    , m_shadingMethods(new QComboBox)
     , m_status(new QLabel)
     , m_diagnostics(new DiagnosticList)
     , m_files(new ShaderFileSet(this))
@@ -126,13 +126,13 @@ QWidget *ShaderDock::createToolBar()
     auto *bar = new QToolBar;
     bar->setIconSize(QSize(16, 16));
     for (const QString &name : shadingNames())
-        m_presets->addItem(displayName(name), name);
-    m_presets->setToolTip(tr("Load a shading method's shaders"));
-    connect(m_presets, &QComboBox::activated, this, [this](int index) {
-        if (const auto method = shadingFromName(m_presets->itemData(index).toString()))
-            emit presetRequested(*method);
+        m_shadingMethods->addItem(displayName(name), name);
+    m_shadingMethods->setToolTip(tr("Load a shading method's shaders"));
+    connect(m_shadingMethods, &QComboBox::activated, this, [this](int index) {
+        if (const auto method = shadingFromName(m_shadingMethods->itemData(index).toString()))
+            emit shadingMethodRequested(*method);
     });
-    bar->addWidget(m_presets);
+    bar->addWidget(m_shadingMethods);
 
     // The shortcut works wherever the focus is inside the dock, the editors
     // included (QScintilla does not bind F5).
@@ -272,11 +272,11 @@ void ShaderDock::offerToApplyAnyway(const QString &text)
     m_applyAnyway->show();
 }
 
-void ShaderDock::setPreset(ShadingMethod method)
+void ShaderDock::selectShadingMethod(ShadingMethod method)
 {
-    const int index = m_presets->findData(shadingName(method));
+    const int index = m_shadingMethods->findData(shadingName(method));
     if (index >= 0)
-        m_presets->setCurrentIndex(index); // activated() is for the user's choices only
+        m_shadingMethods->setCurrentIndex(index); // activated() is for the user's choices only
 }
 
 void ShaderDock::goTo(ShaderStage stage, int line, int column)

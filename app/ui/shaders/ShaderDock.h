@@ -1,6 +1,6 @@
 #pragma once
-#include "core/support/Result.h"
 #include "core/scene/ShadingMethod.h"
+#include "core/support/Result.h"
 #include "render/ShaderDiagnostic.h"
 #include "render/ShaderSource.h"
 
@@ -19,8 +19,8 @@ class DiagnosticList;
 class ShaderEditor;
 class ShaderFileSet;
 
-// The Shaders dock: a vertex and a fragment ShaderEditor in tabs, a preset
-// chooser, Compile (F5), Open, Save and Save As, a status line and the
+// The Shaders dock: a vertex and a fragment ShaderEditor in tabs, a shading
+// method chooser (its shipped shaders), Compile (F5), Open, Save and Save As, a status line and the
 // compiler's messages. It compiles nothing itself: it reports edits and
 // requests, and shows what the owner sends back. Nothing here does work
 // per keystroke beyond the editor's own; the owner debounces compiles.
@@ -48,8 +48,8 @@ public:
     // with an "Apply anyway" button beside it (until the next status).
     void offerToApplyAnyway(const QString &text);
     QPushButton *applyAnywayButton() const { return m_applyAnyway; }
-    // Selects `method` in the preset box without emitting presetRequested().
-    void setPreset(ShadingMethod method);
+    // Selects `method` in the shading method box without emitting shadingMethodRequested().
+    void selectShadingMethod(ShadingMethod method);
 
     // Without dialogs (tests, command line). openFiles() takes one file or a
     // .vert/.frag pair; the stage comes from the suffix, else the current tab.
@@ -65,7 +65,7 @@ public:
     ShaderFileSet *files() const { return m_files; }
     DiagnosticList *diagnosticList() const { return m_diagnostics; }
     QTabWidget *tabs() const { return m_tabs; }
-    QComboBox *presetBox() const { return m_presets; }
+    QComboBox *shadingMethodBox() const { return m_shadingMethods; }
     QLabel *statusLabel() const { return m_status; }
     QAction *compileAction() const { return m_compileAction; }
 
@@ -79,7 +79,7 @@ signals:
     // reload from disk, Open. Emitted per change; debounce before compiling.
     void textEdited(phonglab::ShaderStage stage);
     void compileRequested();
-    void presetRequested(phonglab::ShadingMethod method);
+    void shadingMethodRequested(phonglab::ShadingMethod method);
     // A stage now shows another file (Open, Save As, a user copy of a
     // shipped shader) or its file was reloaded from disk.
     void filesChanged();
@@ -98,7 +98,7 @@ private:
     ShaderEditor *m_vertex = nullptr;
     ShaderEditor *m_fragment = nullptr;
     QTabWidget *m_tabs = nullptr;
-    QComboBox *m_presets = nullptr;
+    QComboBox *m_shadingMethods = nullptr;
     QLabel *m_status = nullptr;
     QPushButton *m_applyAnyway = nullptr;
     DiagnosticList *m_diagnostics = nullptr;

@@ -36,7 +36,7 @@ public:
         // restored text must not be compiled until the user asks.
         bool suspect = false;
         QString note;    // for the status line
-        QString shading; // the preset the restored buffers came from
+        QString shading; // the shading method the restored buffers came from
     };
 
     explicit ShaderRecovery(ShaderDock *dock, QObject *parent = nullptr);

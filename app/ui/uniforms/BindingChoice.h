@@ -5,7 +5,7 @@
 
 namespace phonglab {
 
-// The Uniforms dock's "bound to" choice for one uniform (issue 30, B): what
+// The Uniforms dock's "bound to" choice for one uniform: what
 // PhongLab sets it to. "automatic" leaves it to the name and type (and says
 // what they gave); "your own" keeps PhongLab's hands off (the dock edits it);
 // a meaning binds it explicitly, whatever its name. Only the meanings its

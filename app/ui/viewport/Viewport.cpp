@@ -264,7 +264,7 @@ void Viewport::resetCamera()
     cameraMoved();
 }
 
-void Viewport::setModelReduction(double allowance, bool leaveOutLights)
+void Viewport::setReductionAllowance(double allowance, bool leaveOutLights)
 {
     Renderer::Options options = m_gpu.options();
     options.lightAllowance = leaveOutLights ? allowance : 0.0;

@@ -67,7 +67,7 @@ public:
     Camera cameraToSave() const;
 
     // The scene's shading method changes without touching the program: the
-    // live shader controller builds it (so Save writes the preset in use).
+    // live shader controller builds it (so Save writes the method in use).
     void setShading(ShadingMethod method);
 
     // Switches to a program linked on a context sharing this one's objects
@@ -153,7 +153,7 @@ public:
     }
     // What auto detail and, when `leaveOutLights`, leaving out unseen
     // lights may each change a pixel by (linear intensity; Renderer::Options).
-    void setModelReduction(double allowance, bool leaveOutLights);
+    void setReductionAllowance(double allowance, bool leaveOutLights);
 
     bool isRenderReady() const { return m_gpu.isReady(); }
     // After a frame longer than kHoldFramesAfterMs the view draws nothing

@@ -22,7 +22,7 @@ class FramePresenter;
 class ViewportWindow;
 
 // A frame that took longer than this is not drawn again by itself: the view
-// waits until the user acts on it (issue 31, C).
+// waits until the user acts on it.
 inline constexpr double kHoldFramesAfterMs = 250.0;
 
 // Where the viewport's frames go: its native window (ViewportWindow), the GL

@@ -6,9 +6,9 @@ namespace phonglab {
 
 // What the window's command line asks for: `phonglab [FILE...]` opens a
 // scene or meshes; `phonglab SCENE.json --vertex FILE --fragment FILE` opens
-// a scene with a student's shaders (issue 31, B); `phonglab SCENE.json
-// --project PATH [--program NAME]` with a WebGL project's (issue 42, B). Qt's own options are gone
-// by now (QApplication takes them).
+// a scene with a student's shaders; `phonglab SCENE.json
+// --project PATH [--program NAME]` with a WebGL project's. Qt's own
+// options are gone by now (QApplication takes them).
 struct GuiArguments {
     QStringList files;
     QString vertexShader;   // --vertex FILE

@@ -200,8 +200,8 @@ void MainWindow::createPerformanceDock()
 {
     m_performanceDock = new PerformanceDock(m_viewport, m_options.benchExecutable, this);
     addDockWidget(Qt::LeftDockWidgetArea, m_performanceDock);
-    connect(m_performanceDock, &PerformanceDock::applyModelRequested, m_document,
-            &SceneDocument::applyModel);
+    connect(m_performanceDock, &PerformanceDock::applyFitRequested, m_document,
+            &SceneDocument::applyFit);
     connect(m_performanceDock, &PerformanceDock::autoDetailRequested, m_document,
             &SceneDocument::setAutoDetail);
     new DetailLevelLabel(m_viewport);

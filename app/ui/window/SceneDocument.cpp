@@ -195,9 +195,9 @@ void SceneDocument::changeNormals(int objectIndex, const NormalOptions &options)
     m_loadJob->start(std::move(request));
 }
 
-void SceneDocument::applyModel(ShadingMethod method, double detail)
+void SceneDocument::applyFit(ShadingMethod method, double detail)
 {
-    m_loadJob->start(modelRequest(m_viewport->currentScene(), method, detail));
+    m_loadJob->start(fitRequest(m_viewport->currentScene(), method, detail));
 }
 
 void SceneDocument::setAutoDetail(bool on)

@@ -82,7 +82,7 @@ public:
     void changeNormals(int objectIndex, const NormalOptions &options);
     // Shows every object at `detail` with `method` shading (Fit to budget),
     // loading the coarser meshes in the background.
-    void applyModel(ShadingMethod method, double detail);
+    void applyFit(ShadingMethod method, double detail);
     // Every object to "detail": "auto", or back to full detail.
     void setAutoDetail(bool on);
 
