@@ -1,6 +1,6 @@
 #pragma once
-#include "core/view/Camera.h"
 #include "core/check/PixelTerms.h"
+#include "core/view/Camera.h"
 
 #include <QImage>
 #include <QWidget>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/scene/Scene.h"
 #include "core/check/ShaderCheck.h"
+#include "core/scene/Scene.h"
 #include "render/FrameRedraw.h"
 
 #include <QElapsedTimer>

@@ -1,8 +1,8 @@
 #pragma once
 #include "bench/BenchResult.h"
 #include "bench/ErrorBudget.h"
-#include "core/support/Result.h"
 #include "core/scene/Scene.h"
+#include "core/support/Result.h"
 
 #include <QObject>
 #include <QProcess>

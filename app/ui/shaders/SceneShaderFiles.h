@@ -1,6 +1,6 @@
 #pragma once
-#include "core/support/Result.h"
 #include "core/scene/Scene.h"
+#include "core/support/Result.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,6 +1,6 @@
 #pragma once
-#include "core/view/OrbitCamera.h"
 #include "core/scene/Scene.h"
+#include "core/view/OrbitCamera.h"
 #include "render/Renderer.h"
 #include "render/UniformSnapshot.h"
 

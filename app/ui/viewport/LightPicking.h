@@ -1,6 +1,6 @@
 #pragma once
-#include "core/view/Camera.h"
 #include "core/scene/PointLight.h"
+#include "core/view/Camera.h"
 
 #include <QPointF>
 #include <QSizeF>
