@@ -12,7 +12,9 @@
 # ones listed here for it.
 #
 # Inside core and mesh the rooms (docs/architecture.md) have rules of their
-# own: support/ is the floor and includes no other room; check/ judges
+# own: support/ is the floor and includes no other room; program/ (the
+# vocabulary of a shader program: stages, dialect, bindings, the course's
+# prelude, tokens, lint) stands on support/ alone; check/ judges
 # images and programs and does not read scene files (scene/SceneJson*,
 # ScenePaths, RecoveryJournal): a check gets its scene already read, which
 # is what lets the window, the CLI and the grader hand it the same Scene.
@@ -47,11 +49,12 @@ endif()
 # ROOM "INCLUDE REGEX" "WHY": an include of a file of app/ROOM/ matching
 # the regex is refused.
 set(room_rules
-  "core/support" "^(core/(scene|view|reference|check|project)|mesh)/" "support/ is the floor of core"
+  "core/support" "^(core/(scene|view|reference|check|project|program)|mesh)/" "support/ is the floor of core"
+  "core/program" "^(core/(scene|view|reference|check|project)|mesh)/" "program/ is the vocabulary of a shader program, below scene and check"
   "core/check" "^core/scene/(SceneJson[A-Za-z]*|ScenePaths|RecoveryJournal)\\.h$" "check/ does not read scene files"
   "mesh/detail" "^mesh/import/(MeshLoader|MeshImportProcess|MeshCache|SceneMeshes)\\.h$" "detail/ works on meshes already loaded")
 set(known_rooms
-  core/scene core/reference core/check core/view core/support core/project
+  core/scene core/reference core/check core/view core/support core/project core/program
   mesh/import mesh/normals mesh/detail)
 
 set(violations 0)

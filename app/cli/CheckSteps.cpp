@@ -2,7 +2,7 @@
 
 #include "SceneStages.h"
 #include "core/check/BindingConflicts.h"
-#include "core/check/CoursePrelude.h"
+#include "core/program/CoursePrelude.h"
 #include "core/check/ImageMetrics.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/import/SceneMeshes.h"

@@ -1,9 +1,9 @@
 #include "ProgramBuilder.h"
 
-#include "core/check/ShaderLint.h"
+#include "core/program/ShaderLint.h"
 
 #include "UniformIntrospection.h"
-#include "core/check/ShaderDialect.h"
+#include "core/program/ShaderDialect.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -2,8 +2,8 @@
 #include "BuildReport.h"
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/ShaderBindings.h"
 
 #include <QOpenGLExtraFunctions>
 
@@ -33,7 +33,7 @@ public:
     // where the meshes feed them (locations 0 and 1; a shader's own layout
     // qualifiers win): by name as core/ShaderBindings reads them, or by
     // `bindings`. Each stage is compiled as the course's page would hand
-    // it over (`course`: core/check/CoursePrelude), on the user's own lines.
+    // it over (`course`: core/program/CoursePrelude), on the user's own lines.
     BuiltProgram build(const ShaderSource &vertex, const ShaderSource &fragment,
                        const QStringList &defines = {}, const ExplicitBindings &bindings = {},
                        const CourseOptions &course = {});

@@ -1,6 +1,6 @@
 #include "SceneUniforms.h"
 
-#include "core/check/UniformOwner.h"
+#include "core/program/UniformOwner.h"
 
 namespace phonglab {
 

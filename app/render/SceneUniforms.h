@@ -1,6 +1,6 @@
 #pragma once
 #include "UniformSnapshot.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindings.h"
 
 #include <QString>
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/scene/ShaderStage.h"
+#include "core/program/ShaderStage.h"
 
 #include <QString>
 #include <vector>

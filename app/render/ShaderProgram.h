@@ -3,8 +3,8 @@
 #include "ShaderSource.h"
 #include "SharedGlObject.h"
 #include "UniformSnapshot.h"
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/ShaderBindings.h"
 
 #include <QHash>
 #include <QOpenGLExtraFunctions>
@@ -63,7 +63,7 @@ public:
     // lookup and nothing else.
     void setExplicitBindings(const ExplicitBindings &bindings);
     const ExplicitBindings &explicitBindings() const { return m_explicit; }
-    // How build() hands the stages to the driver (core/check/CoursePrelude).
+    // How build() hands the stages to the driver (core/program/CoursePrelude).
     void setCourseOptions(const CourseOptions &course) { m_course = course; }
     const CourseOptions &courseOptions() const { return m_course; }
     const ProgramBindings &bindings() const { return m_bindings; }

@@ -1,6 +1,6 @@
 #include "ShaderSource.h"
 
-#include "core/check/ShaderDialect.h"
+#include "core/program/ShaderDialect.h"
 #include "core/project/ProjectShader.h"
 
 #include <QCoreApplication>

@@ -38,7 +38,7 @@ Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fr
 // after it is numbered exactly as in the user's file. Without a #version line
 // the prologue goes first and `#line 1` follows it. A shader with no #version
 // line at all is GLSL ES 1.00 (WebGL 1): `#version 100` is put before it.
-// `prelude` (whole lines: what the course's page adds, core/check/CoursePrelude)
+// `prelude` (whole lines: what the course's page adds, core/program/CoursePrelude)
 // goes before the `#define`s.
 QByteArray withPrologue(const QByteArray &code, const QStringList &defines,
                         const QByteArray &prelude = {});

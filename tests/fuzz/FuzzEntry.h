@@ -12,9 +12,9 @@
 // Header-only on purpose: the fuzz build links it with libFuzzer, the unit
 // test with QtTest, and neither needs a library of its own.
 
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderLint.h"
-#include "core/check/UniformAnnotations.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/ShaderLint.h"
+#include "core/program/UniformAnnotations.h"
 #include "core/project/HtmlShaders.h"
 #include "core/project/ProjectSave.h"
 #include "core/project/ProjectShader.h"

@@ -3,7 +3,7 @@
 // shader text, which says what was declared and how to edit it
 // (// @range lo hi, @color, @step s).
 #include "ResultChecks.h"
-#include "core/check/UniformAnnotations.h"
+#include "core/program/UniformAnnotations.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/ShaderProgram.h"

@@ -1,9 +1,9 @@
 // What a course's page adds to a shader before the browser compiles it
-// (core/check/CoursePrelude): lower precisions checked at highp unless asked
+// (core/program/CoursePrelude): lower precisions checked at highp unless asked
 // otherwise, three.js's declarations only where the source leaves them to
 // three.js, a default float precision for a GLSL ES fragment shader without
 // one, the page's defines, and what to do about a token nobody defines.
-#include "core/check/CoursePrelude.h"
+#include "core/program/CoursePrelude.h"
 
 #include <QTest>
 

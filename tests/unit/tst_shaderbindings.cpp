@@ -1,7 +1,7 @@
 // What students' names mean (core/ShaderBindings): automatic binding by name
 // and type, the user's explicit word, what cannot be bound, how many lights
 // a program takes, and the scene file's "bindings".
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindings.h"
 #include "core/scene/SceneJson.h"
 
 #include <QTest>

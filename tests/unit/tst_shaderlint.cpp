@@ -1,7 +1,7 @@
-// The static lint of students' shaders (core/check/ShaderLint): values GLSL
+// The static lint of students' shaders (core/program/ShaderLint): values GLSL
 // leaves undefined, which no one image can be trusted to show (a driver may read
 // them as 0).
-#include "core/check/ShaderLint.h"
+#include "core/program/ShaderLint.h"
 
 #include <QTest>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindings.h"
 #include "core/scene/Scene.h"
 
 #include <QStringList>

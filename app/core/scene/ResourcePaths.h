@@ -1,5 +1,5 @@
 #pragma once
-#include "ShaderStage.h"
+#include "core/program/ShaderStage.h"
 #include "ShadingMethod.h"
 
 #include <QString>

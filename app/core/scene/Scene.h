@@ -4,8 +4,8 @@
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/ShaderBindings.h"
 #include "core/view/Camera.h"
 
 #include <QString>
@@ -59,7 +59,7 @@ struct Scene {
     // "bindings": what the shader's own names mean, where the user said so
     // (core/ShaderBindings.h); every other name is bound automatically.
     ExplicitBindings bindings;
-    // How the course's page compiles the shaders (core/check/CoursePrelude.h):
+    // How the course's page compiles the shaders (core/program/CoursePrelude.h):
     // "precision" ("highp", as a desktop browser computes floats, or
     // "as-written") and "defines" ({"NUM_POINT_LIGHTS": "2"}: tokens the
     // page's JavaScript replaces).

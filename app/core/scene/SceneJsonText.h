@@ -1,6 +1,6 @@
 #pragma once
-#include "core/check/CoursePrelude.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/ShaderBindings.h"
 #include "core/support/Result.h"
 #include <QByteArray>
 #include <QJsonDocument>
@@ -51,7 +51,7 @@ QJsonValue userUniformsJson(const std::map<QString, std::vector<double>> &unifor
 Result<ExplicitBindings> readBindings(const QJsonValue &value, const QString &path);
 QJsonValue bindingsJson(const ExplicitBindings &bindings);
 // "defines": {"NAME": "VALUE"} (a number is written as its text), and
-// "precision": "highp" or "as-written" (core/check/CoursePrelude.h).
+// "precision": "highp" or "as-written" (core/program/CoursePrelude.h).
 Result<PageDefines> readDefines(const QJsonValue &value, const QString &path);
 QJsonValue definesJson(const PageDefines &defines);
 Result<PrecisionRule> readPrecision(const QJsonValue &value, const QString &path);

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/check/ShaderDialect.h"
+#include "core/program/ShaderDialect.h"
 
 #include <Qsci/qsciabstractapis.h>
 

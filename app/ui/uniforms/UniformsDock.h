@@ -1,6 +1,6 @@
 #pragma once
-#include "core/check/UniformAnnotations.h"
-#include "core/check/UniformOwner.h"
+#include "core/program/UniformAnnotations.h"
+#include "core/program/UniformOwner.h"
 #include "render/UniformIntrospection.h"
 #include "render/UniformSnapshot.h"
 

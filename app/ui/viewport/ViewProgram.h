@@ -1,5 +1,5 @@
 #pragma once
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindings.h"
 #include "render/UniformIntrospection.h"
 #include "render/UniformSnapshot.h"
 
@@ -35,7 +35,7 @@ public:
     // (ShaderProgram::restore); the frame is the caller's to ask for. False,
     // and nothing set, before GL is up.
     bool set(const UniformValue &value);
-    // What each of the program's variables is bound to (core/check/ShaderBindings.h).
+    // What each of the program's variables is bound to (core/program/ShaderBindings.h).
     const ProgramBindings &bindings() const;
     // The program's GL name, which tells one program from the next (0 before GL).
     GLuint id() const;

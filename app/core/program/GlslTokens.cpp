@@ -1,4 +1,4 @@
-#include "core/check/GlslTokens.h"
+#include "core/program/GlslTokens.h"
 
 #include <QtGlobal>
 

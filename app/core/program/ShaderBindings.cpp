@@ -1,6 +1,6 @@
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindings.h"
 
-#include "core/check/ShaderBindingsAliases.h"
+#include "core/program/ShaderBindingsAliases.h"
 #include "core/support/EnumNames.h"
 
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "core/check/UniformOwner.h"
+#include "core/program/UniformOwner.h"
 
 #include <QCoreApplication>
 

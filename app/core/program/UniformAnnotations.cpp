@@ -1,4 +1,4 @@
-#include "core/check/UniformAnnotations.h"
+#include "core/program/UniformAnnotations.h"
 
 #include <QRegularExpression>
 #include <QStringList>

@@ -1,6 +1,6 @@
 #include "CoursePrelude.h"
 
-#include "core/check/ShaderDialect.h"
+#include "core/program/ShaderDialect.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

@@ -2,7 +2,7 @@
 // branches and loops joined into "set", "unset" or "maybe" for each
 // variable, and each first read of an unset one recorded. Apart from
 // ShaderLint.cpp, which reads the outline this walk starts from.
-#include "core/check/ShaderLintWalk.h"
+#include "core/program/ShaderLintWalk.h"
 
 #include <QCoreApplication>
 

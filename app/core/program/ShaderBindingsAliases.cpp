@@ -2,8 +2,8 @@
 // type gives a variable (automaticMeaning, likelyMeaning). Apart from
 // ShaderBindings.cpp, which binds variables by these names or by the
 // user's word: the alias tables alone are as long as the rest.
-#include "core/check/ShaderBindingsAliases.h"
-#include "core/check/ShaderBindings.h"
+#include "core/program/ShaderBindingsAliases.h"
+#include "core/program/ShaderBindings.h"
 
 #include "core/support/NearestSpelling.h"
 

@@ -4,8 +4,8 @@
 // brackets, functions and `out` variables); ShaderLintWalk.cpp walks each
 // function's statements in the order they run, following which variables are
 // set, and records the reads it finds.
-#include "core/check/GlslTokens.h"
-#include "core/check/ShaderLint.h"
+#include "core/program/GlslTokens.h"
+#include "core/program/ShaderLint.h"
 
 #include <QByteArray>
 

@@ -1,6 +1,6 @@
-#include "core/check/ShaderLint.h"
+#include "core/program/ShaderLint.h"
 
-#include "core/check/ShaderLintWalk.h"
+#include "core/program/ShaderLintWalk.h"
 
 #include <algorithm>
 #include <tuple>

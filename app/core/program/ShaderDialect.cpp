@@ -1,4 +1,4 @@
-#include "core/check/ShaderDialect.h"
+#include "core/program/ShaderDialect.h"
 
 #include <QList>
 
