@@ -471,6 +471,29 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
+    <name>phonglab::BindingsByUse</name>
+    <message>
+        <source>the exponent of pow</source>
+        <translation>der Exponent von pow</translation>
+    </message>
+    <message>
+        <source>bounds the loop over the lights</source>
+        <translation>begrenzt die Schleife über die Lichter</translation>
+    </message>
+    <message>
+        <source>its place in the gl_Position chain (projection · view · model)</source>
+        <translation>seine Stelle in der Kette von gl_Position (Projektion · View · Model)</translation>
+    </message>
+    <message>
+        <source>subtracted from the surface position %1, as a light&apos;s position (world coordinates)</source>
+        <translation>von der Oberflächenposition %1 abgezogen, als Position eines Lichts (Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <source>subtracted from the surface position %1, as the eye&apos;s</source>
+        <translation>von der Oberflächenposition %1 abgezogen, als Position des Auges</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BuildStatusText</name>
     <message>
         <source>Compiling…</source>
@@ -3404,12 +3427,12 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
 <context>
     <name>phonglab::ShaderLint</name>
     <message>
-        <source>the output &apos;%1&apos; is read before it is written: its value is undefined in GLSL (drivers differ: some give 0, some keep what was there)</source>
-        <translation>die Ausgabevariable &apos;%1&apos; wird gelesen, bevor sie geschrieben ist: Ihr Wert ist in GLSL undefiniert (Treiber unterscheiden sich: manche liefern 0, manche behalten, was dort stand)</translation>
+        <source>the output &apos;%1&apos; is read before it is written: its value is undefined in GLSL; a browser&apos;s WebGL starts it at 0 and PhongLab checks it so, but a GPU elsewhere may keep what was there</source>
+        <translation>die Ausgabe &apos;%1&apos; wird gelesen, bevor sie geschrieben wird: ihr Wert ist in GLSL undefiniert; das WebGL eines Browsers setzt sie auf 0 und PhongLab prüft sie so, aber eine andere GPU kann behalten, was dort stand</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; is read before it is set: its value is undefined in GLSL (drivers differ: some give 0, some keep what was there)</source>
-        <translation>&apos;%1&apos; wird gelesen, bevor ein Wert zugewiesen ist: Ihr Wert ist in GLSL undefiniert (Treiber unterscheiden sich: manche liefern 0, manche behalten, was dort stand)</translation>
+        <source>&apos;%1&apos; is read before it is set: its value is undefined in GLSL; a browser&apos;s WebGL starts it at 0 and PhongLab checks it so, but a GPU elsewhere may keep what was there</source>
+        <translation>&apos;%1&apos; wird gelesen, bevor es gesetzt wird: sein Wert ist in GLSL undefiniert; das WebGL eines Browsers setzt ihn auf 0 und PhongLab prüft ihn so, aber eine andere GPU kann behalten, was dort stand</translation>
     </message>
 </context>
 <context>
@@ -4241,7 +4264,8 @@ and when it differs names the classic mistake that explains it.
                       or the guarded one (guarded: none there); by default either passes
   --json              print one JSON object (keys: verdict, psnr_db, max_error, bad_fraction,
                       tolerance, worst, diagnosis, undetectable, errors, bindings, equation,
-                      notes, warnings, together, precision) instead of text
+                      notes, warnings, together, partial, bindings_by_use, precision)
+                      instead of text
   --diff OUT.png      write the error heatmap: dark green exact, bright green 1/255, yellow 4/255,
                       red 8/255 or more off; dark blue the silhouette band left out, black the
                       background
@@ -4270,7 +4294,8 @@ und nennt bei einer Abweichung den typischen Fehler, der sie erklärt.
                       besteht beides
   --json              ein JSON-Objekt statt Text ausgeben (Schlüssel: verdict, psnr_db, max_error,
                       bad_fraction, tolerance, worst, diagnosis, undetectable, errors, bindings,
-                      equation, notes, warnings, together, precision)
+                      equation, notes, warnings, together, partial, bindings_by_use,
+                      precision)
   --diff OUT.png      die Fehler-Heatmap schreiben: dunkelgrün exakt, hellgrün 1/255, gelb 4/255,
                       rot ab 8/255 Abweichung; dunkelblau der ausgelassene Silhouettenrand,
                       schwarz der Hintergrund
@@ -4391,6 +4416,22 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>  each alone:</source>
         <translation>  jeder für sich:</translation>
+    </message>
+    <message>
+        <source>bound by use: %1</source>
+        <translation>nach Verwendung gebunden: %1</translation>
+    </message>
+    <message>
+        <source>%1: the vertex shader computes the lighting and the fragment shader interpolates it (its image alone explains %2 % of the difference): %3</source>
+        <translation>%1: der Vertex-Shader berechnet die Beleuchtung und der Fragment-Shader interpoliert sie (ihr Bild allein erklärt %2 % des Unterschieds): %3</translation>
+    </message>
+    <message>
+        <source>  closest, partial: %1 explain %2 % of the difference</source>
+        <translation>  am nächsten, teilweise: %1 erklären %2 % des Unterschieds</translation>
+    </message>
+    <message>
+        <source>  more than %1 deviations would be needed to explain all of it: the heatmap shows the rest</source>
+        <translation>  mehr als %1 Abweichungen wären nötig, um alles zu erklären: die Heatmap zeigt den Rest</translation>
     </message>
 </context>
 <context>
@@ -5205,6 +5246,10 @@ rechnet)</translation>
 %1</source>
         <translation>Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
 %1</translation>
+    </message>
+    <message>
+        <source>%1=%2: %3 (%4 shader, line %5)</source>
+        <translation>%1=%2: %3 (%4-Shader, Zeile %5)</translation>
     </message>
 </context>
 <context>

@@ -58,10 +58,16 @@ std::vector<SourceLine> findingLines(const MistakeFinding &f,
 
 QString findingMessage(const MistakeFinding &f)
 {
-    QString text = CheckWords::tr("%1 explains %2 % of the difference (%3): %4")
-                       .arg(shaderMistakeKey(f.key))
-                       .arg(qRound(100.0 * f.confidence))
-                       .arg(mistakeFormSummary({f.key, f.form}), shaderMistakeRule(f.key));
+    QString text = f.fromCode
+        ? CheckWords::tr("%1: the vertex shader computes the lighting and the fragment shader "
+                         "interpolates it (its image alone explains %2 % of the difference): %3")
+              .arg(shaderMistakeKey(f.key))
+              .arg(qRound(100.0 * f.confidence))
+              .arg(shaderMistakeRule(f.key))
+        : CheckWords::tr("%1 explains %2 % of the difference (%3): %4")
+              .arg(shaderMistakeKey(f.key))
+              .arg(qRound(100.0 * f.confidence))
+              .arg(mistakeFormSummary({f.key, f.form}), shaderMistakeRule(f.key));
     for (ShaderMistake m : f.also)
         text += CheckWords::tr("; or, with the same image, %1: %2")
                     .arg(shaderMistakeKey(m), shaderMistakeRule(m));
@@ -112,6 +118,7 @@ QJsonArray diagnosisJson(const CheckFindings &outcome)
                                {QStringLiteral("form"), mistakeFormSummary({f.key, f.form})},
                                {QStringLiteral("also"), keysJson(f.also)},
                                {QStringLiteral("confidence"), f.confidence},
+                               {QStringLiteral("from_code"), f.fromCode},
                                {QStringLiteral("message"), findingMessage(f)},
                                {QStringLiteral("lines"), lines}});
     }
@@ -119,11 +126,15 @@ QJsonArray diagnosisJson(const CheckFindings &outcome)
 }
 
 // The smallest set of mistakes that explains the render, each with its
-// likely lines: `together` {keys, explains, forms, lines}.
-QJsonValue togetherJson(CheckOutcome::Verdict verdict, const CheckFindings &outcome)
+// likely lines: `together` {keys, explains, forms, lines, beyond_limit},
+// where it explains enough (MistakeDiagnosis::togetherExplains); below that
+// the closest set is `partial`, of the same shape, and `together` is null.
+QJsonValue setJson(CheckOutcome::Verdict verdict, const CheckFindings &outcome, bool explaining)
 {
-    const MistakeSet &set = outcome.report.diagnosis.together;
-    if (verdict != CheckOutcome::Verdict::Fail || set.variants.empty())
+    const MistakeDiagnosis &d = outcome.report.diagnosis;
+    const MistakeSet &set = d.together;
+    if (verdict != CheckOutcome::Verdict::Fail || set.variants.empty()
+        || d.togetherExplains() != explaining)
         return QJsonValue();
     QJsonArray keys, forms, lines;
     for (MistakeVariant v : set.variants) {
@@ -138,7 +149,8 @@ QJsonValue togetherJson(CheckOutcome::Verdict verdict, const CheckFindings &outc
     return QJsonObject{{QStringLiteral("keys"), keys},
                        {QStringLiteral("explains"), set.explains},
                        {QStringLiteral("forms"), forms},
-                       {QStringLiteral("lines"), lines}};
+                       {QStringLiteral("lines"), lines},
+                       {QStringLiteral("beyond_limit"), set.beyondLimit}};
 }
 
 QJsonArray errorsJson(const std::vector<ShaderDiagnostic> &errors)
@@ -239,7 +251,8 @@ QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findin
     }
     o.insert(QStringLiteral("worst"), hasWorst ? QJsonValue(worst) : QJsonValue());
     o.insert(QStringLiteral("diagnosis"), diagnosisJson(findings));
-    o.insert(QStringLiteral("together"), togetherJson(verdict, findings));
+    o.insert(QStringLiteral("together"), setJson(verdict, findings, true));
+    o.insert(QStringLiteral("partial"), setJson(verdict, findings, false));
     o.insert(QStringLiteral("undetectable"), keysJson(findings.report.diagnosis.undetectable));
     o.insert(QStringLiteral("errors"), errorsJson(findings.errors));
     QJsonObject bindings;
@@ -248,6 +261,17 @@ QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findin
             bindings.insert(b.variable.name,
                             b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
     o.insert(QStringLiteral("bindings"), bindings);
+    // Why each variable no name decided means what it does (extends
+    // "bindings", whose values stay the meanings' keys).
+    QJsonObject byUse;
+    for (const VariableBinding &b : findings.bindings.variables)
+        if (b.meaning && b.byUse)
+            byUse.insert(b.variable.name,
+                         QJsonObject{{QStringLiteral("meaning"), bindingMeaningKey(*b.meaning)},
+                                     {QStringLiteral("reason"), b.byUse->reason},
+                                     {QStringLiteral("stage"), stageName(b.byUse->stage)},
+                                     {QStringLiteral("line"), b.byUse->line}});
+    o.insert(QStringLiteral("bindings_by_use"), byUse);
     o.insert(QStringLiteral("equation"),
              checked ? QJsonValue(phongEquationKey(findings.report.equation)) : QJsonValue());
     o.insert(QStringLiteral("notes"), QJsonArray::fromStringList(findings.notes));
@@ -261,6 +285,8 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     QStringList out;
     if (const QString bound = bindingsText(outcome.bindings); !bound.isEmpty())
         out << CheckWords::tr("bindings: %1").arg(bound);
+    for (const QString &line : bindingsByUseText(outcome.bindings))
+        out << CheckWords::tr("bound by use: %1").arg(line);
     for (const QString &note : outcome.notes)
         out << CheckWords::tr("note: %1").arg(note);
     if (const QString precision = precisionText(outcome.precision); !precision.isEmpty())
@@ -292,11 +318,20 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     const MistakeDiagnosis &d = r.diagnosis;
     if (outcome.verdict == CheckOutcome::Verdict::Fail) {
         out << CheckWords::tr("diagnosis:");
-        if (d.unexplained())
+        if (d.unexplained()) {
             out << CheckWords::tr(
                 "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
                 "shows where it is");
-        if (d.together.variants.size() > 1 && !d.unexplained()) {
+            if (!d.together.variants.empty())
+                out << CheckWords::tr("  closest, partial: %1 explain %2 % of the difference")
+                           .arg(mistakeSetName(d.together))
+                           .arg(qRound(100.0 * d.together.explains));
+        }
+        if (d.together.beyondLimit)
+            out << CheckWords::tr("  more than %1 deviations would be needed to explain all of "
+                                  "it: the heatmap shows the rest")
+                       .arg(kMaxMistakesTogether);
+        if (d.together.variants.size() > 1 && d.togetherExplains()) {
             out << CheckWords::tr("  together: %1 explain %2 % of the difference")
                        .arg(mistakeSetName(d.together))
                        .arg(qRound(100.0 * d.together.explains));

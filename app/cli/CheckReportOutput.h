@@ -13,13 +13,15 @@ namespace phonglab::cli {
 
 // How `phonglab check` reports, for people (text) and for scripts (--json).
 // The JSON keys are an interface: verdict, psnr_db, max_error, bad_fraction,
-// worst {x, y, object}, diagnosis [{key, also, confidence, message, lines
-// [{file, line, text}]}], undetectable, errors [{file, line, column,
-// message}], bindings {name: meaning or "none"}, equation ("guarded",
-// "slide", null on error), notes [text], warnings [text], together {keys,
-// explains, forms, lines [{key, file, line, text}]} (null unless it fails),
-// precision {checked, declared, as_written_max_error, as_written_psnr_db,
-// as_written_error}.
+// worst {x, y, object}, diagnosis [{key, also, confidence, from_code,
+// message, lines [{file, line, text}]}], undetectable, errors [{file, line,
+// column, message}], bindings {name: meaning or "none"}, bindings_by_use
+// {name: {meaning, reason, stage, line}}, equation ("guarded", "slide", null
+// on error), notes [text], warnings [text], together {keys, explains, forms,
+// lines [{key, file, line, text}], beyond_limit} (null unless it fails and
+// the set explains at least kExplainedConfidence), partial (the same shape:
+// the closest set where it explains less), precision {checked, declared,
+// as_written_max_error, as_written_psnr_db, as_written_error}.
 // Never renamed; new keys may be added.
 
 // How precision was checked, and what the declared one would change: a

@@ -2,8 +2,9 @@
 
 #include "SceneStages.h"
 #include "core/check/BindingConflicts.h"
-#include "core/program/CoursePrelude.h"
 #include "core/check/ImageMetrics.h"
+#include "core/program/CoursePrelude.h"
+#include "core/program/VertexLighting.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
@@ -192,11 +193,26 @@ Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity)
     return sceneForCapacity(scene, lightCapacity, &unused);
 }
 
+namespace {
+
+QByteArray stageText(const std::vector<ShaderStageText> &stages, bool vertex)
+{
+    for (const ShaderStageText &s : stages)
+        if (s.vertex == vertex)
+            return s.text.toUtf8();
+    return {};
+}
+
+} // namespace
+
 CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
                                    const CheckReference &reference, int toleranceSteps,
                                    std::optional<PhongEquation> equation, const QString &scenePath)
 {
     findings->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
+    if (!findings->report.passed()
+        && lightsPerVertex(stageText(findings->stages, true), stageText(findings->stages, false)))
+        nameGouraudFromCode(findings->report.diagnosis);
     if (!findings->report.comparable()) {
         findings->errors.push_back(inputError(
             scenePath,

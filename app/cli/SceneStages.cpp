@@ -189,6 +189,18 @@ QString bindingsText(const ProgramBindings &bindings)
     return worthSaying ? parts.join(QStringLiteral(", ")) : QString();
 }
 
+QStringList bindingsByUseText(const ProgramBindings &bindings)
+{
+    QStringList out;
+    for (const VariableBinding &b : bindings.variables)
+        if (b.meaning && b.byUse)
+            out << SceneStagesWords::tr("%1=%2: %3 (%4 shader, line %5)")
+                       .arg(b.variable.name, bindingMeaningKey(*b.meaning), b.byUse->reason,
+                            stageName(b.byUse->stage))
+                       .arg(b.byUse->line);
+    return out;
+}
+
 Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString *note)
 {
     const auto enabled = std::count_if(scene.lights.begin(), scene.lights.end(),

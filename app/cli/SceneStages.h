@@ -56,6 +56,9 @@ std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene 
 // "aPosition=position, uModel=model, uGain=none" for a person; empty where
 // every variable has PhongLab's own name (nothing worth saying).
 QString bindingsText(const ProgramBindings &bindings);
+// One line per variable bound by its use (core/program/BindingsByUse):
+// "shininessVal=shininess: the exponent of pow (fragment shader, line 41)".
+QStringList bindingsByUseText(const ProgramBindings &bindings);
 
 // The scene as far as the program can light it: where it takes fewer lights
 // (ProgramBindings::lightCapacity(): a single light uniform, a short array)

@@ -1,9 +1,9 @@
 #include "ProgramBuilder.h"
 
-#include "core/program/ShaderLint.h"
-
 #include "UniformIntrospection.h"
+#include "core/program/BrowserRules.h"
 #include "core/program/ShaderDialect.h"
+#include "core/program/ShaderLint.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -93,9 +93,12 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
 {
     const BuildStep step =
         type == GL_VERTEX_SHADER ? BuildStep::CompileVertex : BuildStep::CompileFragment;
-    const CoursePrelude prelude = coursePreludeFor(
-        source.code, type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment,
-        course);
+    const ShaderStage stage =
+        type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment;
+    const CoursePrelude prelude = coursePreludeFor(source.code, stage, course);
+    // What the browser's WebGL does to the text (unset values start at
+    // zero), on the student's own lines.
+    const BrowserRewrite browser = applyBrowserRules(source.code, stage);
     for (const QString &added : prelude.added) {
         ShaderDiagnostic d;
         d.step = step;
@@ -104,7 +107,7 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
         d.message = added;
         result.diagnostics.push_back(d);
     }
-    const QByteArray code = withPrologue(source.code, defines, prelude.text);
+    const QByteArray code = withPrologue(browser.code, defines, prelude.text);
     const char *text = code.constData();
     const GLint length = GLint(code.size());
 
@@ -116,7 +119,10 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
     const QString log = infoLog(shader.id(), false);
     auto diagnostics = parseShaderLog(log, step, source.name);
-    mapColumnsToSource(diagnostics, source.code);
+    mapColumnsToSource(diagnostics, browser.code);
+    for (ShaderDiagnostic &d : diagnostics)
+        if (d.line > 0 && d.column > 0)
+            d.column = browser.sourceColumn(d.line, d.column);
     pointAtMissingSemicolons(diagnostics, source.code);
     explainDialect(diagnostics, shaderDialectOf(source.code));
     for (ShaderDiagnostic &d : diagnostics)

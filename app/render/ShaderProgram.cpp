@@ -2,6 +2,7 @@
 
 #include "ProgramBuilder.h"
 #include "UniformIntrospection.h"
+#include "core/program/BindingsByUse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,10 @@ void ShaderProgram::resolveBindings()
     if (!m_program)
         return;
     m_bindings = bindVariables(shaderVariablesOf(this, m_program.id()), m_explicit);
+    // Where no name decides, the use does: read from the program itself, so
+    // that every path that builds one (build thread, trial, CLI) binds alike.
+    const CompiledStages stages = compiledStagesOf(this, m_program.id());
+    bindByUse(m_bindings, stages.vertex, stages.fragment);
     for (const VariableBinding &b : m_bindings.variables) {
         if (!b.meaning || b.variable.isInput)
             continue;

@@ -123,4 +123,45 @@ QString glslTypeName(GLenum type)
     }
 }
 
+namespace {
+
+// withPrologue's head ends with the first `#line N`: from there on the text
+// is the student's, starting at line N.
+QByteArray studentLines(const QByteArray &compiled)
+{
+    qsizetype at = compiled.startsWith("#line ") ? 0 : compiled.indexOf("\n#line ");
+    if (at < 0)
+        return compiled;
+    if (at > 0)
+        ++at;
+    const qsizetype eol = compiled.indexOf('\n', at);
+    if (eol < 0)
+        return {};
+    const int first = compiled.mid(at + 6, eol - at - 6).trimmed().toInt();
+    return QByteArray(std::max(0, first - 1), '\n') + compiled.mid(eol + 1);
+}
+
+} // namespace
+
+CompiledStages compiledStagesOf(QOpenGLExtraFunctions *gl, GLuint program)
+{
+    CompiledStages out;
+    GLuint shaders[8] = {};
+    GLsizei count = 0;
+    gl->glGetAttachedShaders(program, 8, &count, shaders);
+    for (GLsizei k = 0; k < count; ++k) {
+        GLint type = 0;
+        GLint length = 0;
+        gl->glGetShaderiv(shaders[k], GL_SHADER_TYPE, &type);
+        gl->glGetShaderiv(shaders[k], GL_SHADER_SOURCE_LENGTH, &length);
+        if (length <= 1)
+            continue;
+        QByteArray text(length, '\0');
+        gl->glGetShaderSource(shaders[k], length, nullptr, text.data());
+        text.truncate(qsizetype(qstrnlen(text.constData(), std::size_t(length))));
+        (type == GL_VERTEX_SHADER ? out.vertex : out.fragment) = studentLines(text);
+    }
+    return out;
+}
+
 } // namespace phonglab

@@ -36,6 +36,17 @@ GlslType glslTypeOf(GLenum type);
 // Every active uniform and vertex input, as core/ShaderBindings takes them.
 std::vector<ShaderVariable> shaderVariablesOf(QOpenGLExtraFunctions *gl, GLuint program);
 
+// The text of each stage the program was linked from, as the driver was
+// handed it (glGetShaderSource), with what PhongLab put before the
+// student's `#line` turned into blank lines: the student's lines, numbered
+// as in their file, whichever path built the program (the build thread,
+// the window's trial, the CLI). Empty for a stage it cannot read.
+struct CompiledStages {
+    QByteArray vertex;
+    QByteArray fragment;
+};
+CompiledStages compiledStagesOf(QOpenGLExtraFunctions *gl, GLuint program);
+
 // GLSL spelling of a uniform type ("vec3", "sampler2D"); empty if unknown.
 QString glslTypeName(GLenum type);
 

@@ -174,13 +174,16 @@ private slots:
         QCOMPARE(wrong.exitCode, 2);
     }
 
-    // A name nothing explains: an error that names it, never a `fail`; the
-    // user's word, on the command line or in the scene, binds it.
+    // A name nothing explains, used where no term of the equation takes it
+    // (a switch): an error that names it, never a `fail`; the user's word,
+    // on the command line or in the scene, makes it theirs.
     void unboundUniformIsAnErrorUntilBound()
     {
-        const QByteArray vertex =
-            readAsset(QStringLiteral("webgl2/phong.vert")).replace("uModelMatrix", "uThing");
-        const QByteArray fragment = readAsset(QStringLiteral("webgl2/phong.frag"));
+        const QByteArray vertex = readAsset(QStringLiteral("webgl2/phong.vert"));
+        QByteArray fragment = readAsset(QStringLiteral("webgl2/phong.frag"));
+        fragment.replace("uniform vec3 uKa;", "uniform vec3 uKa;\nuniform float uThing;")
+            .replace("void main()\n{", "void main()\n{\n    if (uThing > 0.5) discard;");
+        QVERIFY(fragment.contains("discard"));
         const ProcessRun unbound = check(vertex, fragment);
         QCOMPARE(unbound.exitCode, 1);
         const QJsonObject o = jsonOf(unbound);
@@ -192,22 +195,22 @@ private slots:
                                     .value(QStringLiteral("message"))
                                     .toString();
         QVERIFY2(message.contains(QLatin1String("uThing"))
-                     && message.contains(QLatin1String("mat4")),
+                     && message.contains(QLatin1String("float")),
                  qPrintable(message));
 
         const ProcessRun bound =
-            check(vertex, fragment, {QStringLiteral("--bind"), QStringLiteral("uThing=model")});
+            check(vertex, fragment, {QStringLiteral("--bind"), QStringLiteral("uThing=none")});
         QVERIFY2(bound.exitCode == 0, qPrintable(QString::fromUtf8(bound.out)));
         QCOMPARE(jsonOf(bound)
                      .value(QStringLiteral("bindings"))
                      .toObject()
                      .value(QStringLiteral("uThing")),
-                 QStringLiteral("model"));
+                 QStringLiteral("none"));
 
         QFile original(checkScene());
         QVERIFY(original.open(QIODevice::ReadOnly));
         QJsonObject scene = QJsonDocument::fromJson(original.readAll()).object();
-        scene.insert(QStringLiteral("bindings"), QJsonObject{{"uThing", "model"}});
+        scene.insert(QStringLiteral("bindings"), QJsonObject{{"uThing", "none"}});
         const QString scenePath =
             write(QJsonDocument(scene).toJson(), QStringLiteral("bound.json"));
         const ProcessRun fromScene = check(vertex, fragment, {}, scenePath);
@@ -218,6 +221,28 @@ private slots:
         QCOMPARE(cannotHold.exitCode, 1);
         QCOMPARE(jsonOf(cannotHold).value(QStringLiteral("verdict")).toString(),
                  QStringLiteral("error"));
+    }
+
+    // A model matrix under a name no rule knows is placed by the gl_Position
+    // chain, and says so; the shader then passes with no --bind.
+    void unknownMatrixNameIsBoundByUse()
+    {
+        const QByteArray vertex =
+            readAsset(QStringLiteral("webgl2/phong.vert")).replace("uModelMatrix", "uThing");
+        const ProcessRun run = check(vertex, readAsset(QStringLiteral("webgl2/phong.frag")));
+        QVERIFY2(run.exitCode == 0, qPrintable(QString::fromUtf8(run.out)));
+        const QJsonObject o = jsonOf(run);
+        QCOMPARE(o.value(QStringLiteral("bindings")).toObject().value(QStringLiteral("uThing")),
+                 QStringLiteral("model"));
+        const QJsonObject why = o.value(QStringLiteral("bindings_by_use"))
+                                    .toObject()
+                                    .value(QStringLiteral("uThing"))
+                                    .toObject();
+        QCOMPARE(why.value(QStringLiteral("meaning")).toString(), QStringLiteral("model"));
+        QCOMPARE(why.value(QStringLiteral("stage")).toString(), QStringLiteral("vertex"));
+        QCOMPARE(why.value(QStringLiteral("line")).toInt(), 24); // gl_Position = ...
+        QVERIFY(
+            why.value(QStringLiteral("reason")).toString().contains(QLatin1String("gl_Position")));
     }
 
     // Lighting in world coordinates (the eye, the model's normal matrix)

@@ -78,8 +78,30 @@ std::vector<MistakeFinding> bestFormOfEachKey(std::vector<MistakeFinding> findin
 bool MistakeDiagnosis::unexplained() const
 {
     return differingPixels > 0
-        && (findings.empty() || findings.front().confidence < kExplainedConfidence)
-        && together.explains < kExplainedConfidence;
+        && (findings.empty()
+            || (findings.front().confidence < kExplainedConfidence && !findings.front().fromCode))
+        && !togetherExplains();
+}
+
+bool MistakeDiagnosis::togetherExplains() const
+{
+    return !together.variants.empty() && together.explains >= kExplainedConfidence;
+}
+
+void nameGouraudFromCode(MistakeDiagnosis &diagnosis)
+{
+    auto &found = diagnosis.findings;
+    const auto it = std::find_if(found.begin(), found.end(), [](const MistakeFinding &f) {
+        return f.key == ShaderMistake::Gouraud;
+    });
+    MistakeFinding gouraud{ShaderMistake::Gouraud, 0, {}, 0.0, true};
+    if (it != found.end()) {
+        gouraud = *it;
+        gouraud.fromCode = true;
+        found.erase(it);
+    }
+    found.insert(found.begin(), gouraud);
+    diagnosis.together = {};
 }
 
 MistakeDiagnosis diagnoseMistakes(

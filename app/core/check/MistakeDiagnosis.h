@@ -21,6 +21,9 @@ struct MistakeFinding {
     // view-vector always do): named beside `key` rather than guessed between.
     std::vector<ShaderMistake> also;
     double confidence = 0.0; // 0..1, the fraction of the difference it explains
+    // Named by what the code does, not by the image: lighting in the vertex
+    // shader is `gouraud` (core/program/VertexLighting), whatever it explains.
+    bool fromCode = false;
 };
 
 // Real code breaks several rules at once: the smallest set of mistakes
@@ -29,6 +32,9 @@ struct MistakeFinding {
 struct MistakeSet {
     std::vector<MistakeVariant> variants;
     double explains = 0.0; // as MistakeFinding::confidence, of the combined image
+    // The search reached kMaxMistakesTogether and the set still leaves a
+    // part unexplained: more deviations than that would be needed.
+    bool beyondLimit = false;
 };
 
 struct MistakeDiagnosis {
@@ -43,7 +49,15 @@ struct MistakeDiagnosis {
     // Differs, and no mistake explains at least kExplainedConfidence of it
     // (`unknown`: the heatmap is the answer).
     bool unexplained() const;
+    // The set explains enough to be the answer (kExplainedConfidence, the
+    // single mistakes' threshold); below it a set is only the closest one.
+    bool togetherExplains() const;
 };
+
+// A program that lights per vertex is `gouraud` first, whatever the image:
+// its Gouraud finding (or one made for it) goes to the front, marked
+// fromCode, and the set of per-fragment mistakes is dropped.
+void nameGouraudFromCode(MistakeDiagnosis &diagnosis);
 
 inline constexpr double kExplainedConfidence = 0.5;
 inline constexpr double kMinListedConfidence = 0.1;

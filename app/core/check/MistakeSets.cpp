@@ -238,6 +238,8 @@ MistakeSet findMistakeSet(const RgbImage &yours, const RgbImage &exact,
         setDistance = bestDistance;
     }
     std::sort(set.variants.begin(), set.variants.end());
+    set.beyondLimit =
+        int(set.variants.size()) >= kMaxMistakesTogether && set.explains < kSetWellExplained;
     return set;
 }
 

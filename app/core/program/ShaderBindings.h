@@ -1,4 +1,6 @@
 #pragma once
+#include "core/program/ShaderStage.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -101,10 +103,19 @@ struct ParsedBinding {
 };
 std::optional<ParsedBinding> parseBindingArgument(const QString &text, QString *error);
 
+// Why a variable no name rule decided means what it does: its use in the
+// shader (core/program/BindingsByUse), where.
+struct UseEvidence {
+    ShaderStage stage = ShaderStage::Fragment;
+    int line = 0;
+    QString reason; // in the run's language ("the exponent of pow")
+};
+
 struct VariableBinding {
     ShaderVariable variable;
     std::optional<BindingMeaning> meaning;
     bool isExplicit = false;
+    std::optional<UseEvidence> byUse; // bound by its use, not its name
     // For a per-light meaning on a variable that is no array: the light it
     // holds (a member of "uLights[1]" is light 1; a plain uniform light 0).
     int lightIndex = 0;

@@ -278,10 +278,12 @@ void Lint::read(const Variable &v, int at, bool conditional)
     const QString name = QString::fromUtf8(v.name.data(), qsizetype(v.name.size()));
     const QString message = v.output
         ? ShaderLintWords::tr(
-            "the output '%1' is read before it is written: its value is "
-            "undefined in GLSL (drivers differ: some give 0, some keep what was there)")
-        : ShaderLintWords::tr("'%1' is read before it is set: its value is undefined in GLSL "
-                              "(drivers differ: some give 0, some keep what was there)");
+            "the output '%1' is read before it is written: its value is undefined in GLSL; "
+            "a browser's WebGL starts it at 0 and PhongLab checks it so, but a GPU elsewhere "
+            "may keep what was there")
+        : ShaderLintWords::tr("'%1' is read before it is set: its value is undefined in GLSL; "
+                              "a browser's WebGL starts it at 0 and PhongLab checks it so, but a "
+                              "GPU elsewhere may keep what was there");
     using Kind = LintFinding::Kind;
     found.push_back({tok(at).line, tok(at).column, name,
                      v.output ? Kind::OutputReadBeforeWritten : Kind::ReadBeforeSet,

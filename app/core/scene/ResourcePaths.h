@@ -1,6 +1,6 @@
 #pragma once
-#include "core/program/ShaderStage.h"
 #include "ShadingMethod.h"
+#include "core/program/ShaderStage.h"
 
 #include <QString>
 #include <QStringList>

@@ -1,0 +1,476 @@
+#include "core/program/BindingsByUse.h"
+
+#include "core/program/GlslTokens.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+namespace phonglab {
+
+namespace {
+
+struct BindingsByUseWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::BindingsByUse)
+};
+
+using namespace glsl;
+using M = BindingMeaning;
+
+// Bounds that keep arbitrary bytes from exhausting the time.
+constexpr std::size_t kMaxTokens = 200000;
+constexpr int kMaxFollow = 4; // locals followed back to what they were set from
+
+QString toQString(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+// The pieces of projection · view · model a matrix meaning covers, as the
+// first and last index of {0: projection, 1: view, 2: model}.
+struct Span {
+    int first = 0;
+    int last = 0;
+};
+std::optional<Span> spanOf(M meaning)
+{
+    switch (meaning) {
+    case M::Projection: return Span{0, 0};
+    case M::View: return Span{1, 1};
+    case M::Model: return Span{2, 2};
+    case M::ModelView: return Span{1, 2};
+    case M::ViewProjection: return Span{0, 1};
+    case M::ModelViewProjection: return Span{0, 2};
+    default: return std::nullopt;
+    }
+}
+M meaningOfSpan(Span s)
+{
+    static const M table[3][3] = {{M::Projection, M::ViewProjection, M::ModelViewProjection},
+                                  {M::Projection, M::View, M::ModelView},
+                                  {M::Projection, M::View, M::Model}};
+    return table[s.first][s.last];
+}
+
+// Spans for `count` matrices no name decided, covering pieces [first, last]
+// in order; empty where they cannot (fewer pieces than matrices).
+std::vector<Span> fill(int count, int first, int last)
+{
+    const int pieces = last - first + 1;
+    if (count <= 0 || count > pieces)
+        return {};
+    if (count == 1)
+        return {{first, last}};
+    if (count == pieces) {
+        std::vector<Span> out;
+        for (int p = first; p <= last; ++p)
+            out.push_back({p, p});
+        return out;
+    }
+    // Two for three: projection, then model-view (Angel's, the exercise's).
+    return {{first, first}, {first + 1, last}};
+}
+
+class UseReader
+{
+public:
+    UseReader(const QByteArray &code, ShaderStage stage, ProgramBindings &bindings)
+        : m_stage(stage)
+        , m_bindings(bindings)
+        , m_tokens(tokenize(code, m_macroWords))
+        , m_n(int(m_tokens.size()))
+    {
+        matchBrackets();
+    }
+
+    int run()
+    {
+        if (std::size_t(m_n) > kMaxTokens)
+            return 0;
+        for (int i = 0; i < m_n; ++i) {
+            if (is(i, "pow") && is(i + 1, "("))
+                exponent(i);
+            else if (is(i, "for") && is(i + 1, "("))
+                loopBound(i);
+            else if (is(i, "gl_Position") && is(i + 1, "=") && m_stage == ShaderStage::Vertex)
+                positionChain(i + 2);
+            else if (m_tokens[i].word)
+                subtractedFromPosition(i);
+        }
+        return m_bound;
+    }
+
+private:
+    std::string_view text(int i) const { return i >= 0 && i < m_n ? m_tokens[i].text : ""; }
+    bool is(int i, std::string_view t) const { return text(i) == t; }
+    bool word(int i) const { return i >= 0 && i < m_n && m_tokens[i].word; }
+    int closeOf(int i) const { return i >= 0 && i < m_n && m_partner[i] >= 0 ? m_partner[i] : m_n; }
+    int next(int i) const { return oneOf(text(i), {"(", "[", "{"}) ? closeOf(i) + 1 : i + 1; }
+    // The end of one argument or operand list from `i`: the first `stop`
+    // (or `,`, `;`, `)`) at this bracket level.
+    int until(int i, std::string_view stop) const
+    {
+        while (i < m_n && !is(i, stop) && !oneOf(text(i), {",", ";", ")", "]", "}"}))
+            i = next(i);
+        return i;
+    }
+
+    void matchBrackets();
+    std::vector<int> variablesAt(int i, int *end) const;
+    std::vector<int> referenceIn(int begin, int end, int depth = 0) const;
+    int initializerOf(std::string_view local, int before) const;
+    bool unbound(int v) const
+    {
+        const VariableBinding &b = m_bindings.variables[std::size_t(v)];
+        return !b.meaning && !b.isExplicit && !b.variable.isInput;
+    }
+    void bind(const std::vector<int> &variables, M meaning, int at, const QString &reason);
+
+    void exponent(int pow);
+    void loopBound(int forWord);
+    void positionChain(int begin);
+    void chainFactors(int begin, int end, int depth, std::vector<int> &matrices) const;
+    void subtractedFromPosition(int i);
+    bool isSurfaceWord(int i) const;
+    bool usedAsLightDirection(int statementBegin) const;
+    int enclosingCall(int k) const;
+
+    ShaderStage m_stage;
+    ProgramBindings &m_bindings;
+    std::vector<std::string_view> m_macroWords;
+    std::vector<Token> m_tokens;
+    int m_n = 0;
+    std::vector<int> m_partner;
+    int m_bound = 0;
+};
+
+void UseReader::matchBrackets()
+{
+    m_partner.assign(std::size_t(m_n), -1);
+    std::vector<int> open;
+    for (int i = 0; i < m_n; ++i) {
+        const std::string_view t = text(i);
+        if (oneOf(t, {"(", "[", "{"})) {
+            open.push_back(i);
+        } else if (oneOf(t, {")", "]", "}"}) && !open.empty()) {
+            const char expected = t == ")" ? '(' : t == "]" ? '[' : '{';
+            if (text(open.back())[0] != expected)
+                continue;
+            m_partner[std::size_t(i)] = open.back();
+            m_partner[std::size_t(open.back())] = i;
+            open.pop_back();
+        }
+    }
+}
+
+// The variables a reference starting at `i` names: `u`, `u[i]` (an array,
+// one variable), `s.member`, `s[k].member` (the member of light k, or of
+// every light for an index that is no number); a swizzle is the vector's.
+std::vector<int> UseReader::variablesAt(int i, int *end) const
+{
+    *end = i;
+    if (!word(i) || isKeyword(text(i)) || isTypeName(text(i)))
+        return {};
+    const QString name = toQString(text(i));
+    int j = i + 1;
+    QString index;
+    bool indexed = false;
+    if (is(j, "[")) {
+        indexed = true;
+        const int close = closeOf(j);
+        if (close == j + 2 && isDigit(text(j + 1)[0]))
+            index = toQString(text(j + 1));
+        j = close + 1;
+    }
+    QString member; // a struct's member, or a swizzle
+    if (is(j, ".") && word(j + 1)) {
+        member = toQString(text(j + 1));
+        j += 2;
+    }
+    *end = j;
+    std::vector<int> out;
+    const auto &vars = m_bindings.variables;
+    if (!member.isEmpty()) {
+        for (std::size_t v = 0; v < vars.size(); ++v) {
+            const QString &n = vars[v].variable.name;
+            const bool plain = !indexed && n == name + QLatin1Char('.') + member;
+            const bool element = indexed && n.startsWith(name + QLatin1Char('['))
+                && n.endsWith(QStringLiteral("].") + member)
+                && (index.isEmpty() || n == QStringLiteral("%1[%2].%3").arg(name, index, member));
+            if (plain || element)
+                out.push_back(int(v));
+        }
+        if (!out.empty())
+            return out;
+    }
+    for (std::size_t v = 0; v < vars.size(); ++v)
+        if (vars[v].variable.name == name)
+            out.push_back(int(v));
+    if (out.empty())
+        *end = i;
+    return out;
+}
+
+// The variables the expression [begin, end) is, as a whole: a reference,
+// in parentheses, a constructor of one argument (`float(n)`, `vec3(u)`), or
+// a local set from one.
+std::vector<int> UseReader::referenceIn(int begin, int end, int depth) const
+{
+    while (end - begin >= 3 && is(begin + 1, "(") && closeOf(begin + 1) == end - 1
+           && isTypeName(text(begin)))
+        begin += 2, --end;
+    while (end - begin >= 2 && is(begin, "(") && closeOf(begin) == end - 1)
+        ++begin, --end;
+    int after = begin;
+    std::vector<int> vars = variablesAt(begin, &after);
+    if (!vars.empty())
+        return after == end ? vars : std::vector<int>();
+    if (end == begin + 1 && word(begin) && depth < kMaxFollow) {
+        const int init = initializerOf(text(begin), begin);
+        if (init >= 0)
+            return referenceIn(init, until(init, ";"), depth + 1);
+    }
+    return {};
+}
+
+// Where the value of the local `local` is given last before token `before`
+// (`float n = EXPR;` or `n = EXPR;`): EXPR's first token, or -1.
+int UseReader::initializerOf(std::string_view local, int before) const
+{
+    for (int k = std::min(before, m_n) - 1; k > 0; --k)
+        if (text(k) == local && is(k + 1, "=") && !is(k - 1, "."))
+            return k + 2;
+    return -1;
+}
+
+void UseReader::bind(const std::vector<int> &variables, M meaning, int at, const QString &reason)
+{
+    for (int v : variables) {
+        VariableBinding &b = m_bindings.variables[std::size_t(v)];
+        if (!unbound(v) || !bindingFits(meaning, b.variable))
+            continue;
+        b.meaning = meaning;
+        b.byUse = UseEvidence{m_stage, m_tokens[std::size_t(at)].line, reason};
+        ++m_bound;
+    }
+}
+
+// pow(R·V, n): n is the shininess.
+void UseReader::exponent(int pow)
+{
+    const int close = closeOf(pow + 1);
+    const int comma = until(pow + 2, ",");
+    if (!is(comma, ",") || comma >= close)
+        return;
+    bind(referenceIn(comma + 1, close), M::Shininess, pow,
+         BindingsByUseWords::tr("the exponent of pow"));
+}
+
+// for (int i = 0; i < n; ++i) { ... u[i] ... }, or WebGL 1's
+// for (int i = 0; i < MAX; ++i) { if (i >= n) break; ... }: n is the light count.
+void UseReader::loopBound(int forWord)
+{
+    const int open = forWord + 1;
+    const int close = closeOf(open);
+    const int initEnd = until(open + 1, ";");
+    if (!is(initEnd, ";") || !is(initEnd - 4, "int") || !is(initEnd - 2, "="))
+        return;
+    const std::string_view index = text(initEnd - 3);
+    const int body = close + 1;
+    const int bodyEnd = is(body, "{") ? closeOf(body) : until(body, ";");
+    bool indexesArrays = false;
+    for (int k = body; k < bodyEnd && !indexesArrays; ++k)
+        indexesArrays = is(k, "[") && text(k + 1) == index && is(k + 2, "]");
+    if (!indexesArrays)
+        return;
+    const QString reason = BindingsByUseWords::tr("bounds the loop over the lights");
+    const int condition = initEnd + 1;
+    const int conditionEnd = until(condition, ";");
+    if (text(condition) == index && oneOf(text(condition + 1), {"<", "<="}))
+        bind(referenceIn(condition + 2, conditionEnd), M::LightCount, condition, reason);
+    for (int k = body; k < bodyEnd; ++k) {
+        if (!is(k, "if") || !is(k + 1, "(") || text(k + 2) != index
+            || !oneOf(text(k + 3), {">=", "==", ">"}))
+            continue;
+        const int testEnd = closeOf(k + 1);
+        if (oneOf(text(testEnd + 1), {"break", "{"}) || is(testEnd + 2, "break"))
+            bind(referenceIn(k + 4, testEnd), M::LightCount, k, reason);
+    }
+}
+
+// The matrices a product [begin, end) multiplies the position by, outermost
+// first: factors joined by `*`, parentheses and locals followed.
+void UseReader::chainFactors(int begin, int end, int depth, std::vector<int> &matrices) const
+{
+    for (int f = begin; f < end;) {
+        int e = f;
+        while (e < end && !is(e, "*"))
+            e = next(e);
+        if (is(f, "(") && closeOf(f) == e - 1) {
+            chainFactors(f + 1, e - 1, depth, matrices);
+        } else if (const std::vector<int> vars = referenceIn(f, e); vars.size() == 1) {
+            const GlslType type = m_bindings.variables[std::size_t(vars[0])].variable.type;
+            if (type == GlslType::Mat4)
+                matrices.push_back(vars[0]);
+        } else if (e == f + 1 && word(f) && depth < kMaxFollow) {
+            if (const int init = initializerOf(text(f), f); init >= 0)
+                chainFactors(init, until(init, ";"), depth + 1, matrices);
+        }
+        f = e + 1;
+    }
+}
+
+// gl_Position = P * V * M * position: each unknown matrix's place.
+void UseReader::positionChain(int begin)
+{
+    std::vector<int> chain;
+    chainFactors(begin, until(begin, ";"), 0, chain);
+    std::vector<std::pair<int, Span>> spans; // chain index, span
+    int piece = 0;
+    std::vector<int> pending; // chain indices no name decided, since the last known
+    const auto settle = [&](int last) {
+        const std::vector<Span> filled = fill(int(pending.size()), piece, last);
+        if (filled.size() != pending.size())
+            return false;
+        for (std::size_t k = 0; k < pending.size(); ++k)
+            spans.push_back({pending[k], filled[k]});
+        pending.clear();
+        return true;
+    };
+    for (std::size_t c = 0; c < chain.size(); ++c) {
+        const VariableBinding &b = m_bindings.variables[std::size_t(chain[c])];
+        if (unbound(chain[c])) {
+            pending.push_back(int(c));
+            continue;
+        }
+        const std::optional<Span> known = b.meaning ? spanOf(*b.meaning) : std::nullopt;
+        if (!known || known->first < piece || !settle(known->first - 1))
+            return;
+        piece = known->last + 1;
+    }
+    if (!pending.empty() && !settle(2))
+        return;
+    const QString reason =
+        BindingsByUseWords::tr("its place in the gl_Position chain (projection · view · model)");
+    for (const auto &[c, span] : spans)
+        bind({chain[std::size_t(c)]}, meaningOfSpan(span), begin, reason);
+}
+
+// Whether the token at `i` is a word for the surface's position: no
+// uniform, no call, no type.
+bool UseReader::isSurfaceWord(int i) const
+{
+    int end = i;
+    return word(i) && !isKeyword(text(i)) && !isTypeName(text(i)) && !is(i + 1, "(")
+        && variablesAt(i, &end).empty();
+}
+
+// light - P (or P - light): a light's position (or, where the shader names
+// a light already, the eye's).
+void UseReader::subtractedFromPosition(int i)
+{
+    if (is(i - 1, "."))
+        return;
+    int end = i;
+    std::vector<int> vars = variablesAt(i, &end);
+    std::erase_if(vars, [&](int v) {
+        const GlslType t = m_bindings.variables[std::size_t(v)].variable.type;
+        return !unbound(v) || (t != GlslType::Vec3 && t != GlslType::Vec4);
+    });
+    if (vars.empty())
+        return;
+    int surface = -1;
+    if (is(end, "-") && isSurfaceWord(end + 1))
+        surface = end + 1;
+    else if (is(i - 1, "-") && isSurfaceWord(i - 2) && !is(i - 3, "."))
+        surface = i - 2;
+    if (surface < 0)
+        return;
+    int statement = i;
+    while (statement > 0 && !oneOf(text(statement - 1), {";", "{", "}"}))
+        --statement;
+    const bool perLight = m_bindings.variables[std::size_t(vars[0])].variable.isArray
+        || m_bindings.variables[std::size_t(vars[0])].variable.name.contains(QLatin1Char('['));
+    const bool lightNamed = !m_bindings.bound(M::LightPosition).empty()
+        || !m_bindings.bound(M::LightPositionCamera).empty();
+    if (perLight || usedAsLightDirection(statement) || !lightNamed) {
+        bind(vars, M::LightPosition, i,
+             BindingsByUseWords::tr("subtracted from the surface position %1, as a light's "
+                                    "position (world coordinates)")
+                 .arg(toQString(text(surface))));
+    } else if (m_bindings.bound(M::Eye).empty()) {
+        bind(vars, M::Eye, i,
+             BindingsByUseWords::tr("subtracted from the surface position %1, as the eye's")
+                 .arg(toQString(text(surface))));
+    }
+}
+
+// Whether the local the statement at `statementBegin` sets is a light
+// direction: reflected, or dotted with anything but a reflection (the view
+// vector is dotted with R = reflect(...)).
+bool UseReader::usedAsLightDirection(int statementBegin) const
+{
+    int eq = statementBegin;
+    while (eq < m_n && !is(eq, "=") && !is(eq, ";"))
+        ++eq;
+    if (!is(eq, "=") || !word(eq - 1))
+        return false;
+    const std::string_view local = text(eq - 1);
+    const auto isReflection = [&](int a) {
+        const int init = word(a) ? initializerOf(text(a), m_n) : -1;
+        return init >= 0 && is(init, "reflect");
+    };
+    for (int k = eq + 1; k < m_n; ++k) {
+        if (text(k) != local || is(k - 1, "."))
+            continue;
+        const int around = m_partner.empty() ? -1 : enclosingCall(k);
+        if (around < 0)
+            continue;
+        if (is(around, "reflect"))
+            return true;
+        if (is(around, "dot")) {
+            // The view vector is dotted with the reflection.
+            const int close = closeOf(around + 1);
+            bool reflection = false;
+            bool other = false;
+            for (int a = around + 2; a < close; ++a) {
+                reflection = reflection || is(a, "reflect") || isReflection(a);
+                other = other || (word(a) && text(a) != local);
+            }
+            if (other && !reflection)
+                return true;
+        }
+    }
+    return false;
+}
+
+// The name of the call whose parentheses hold token `k` directly, or -1.
+int UseReader::enclosingCall(int k) const
+{
+    int depth = 0;
+    for (int up = k - 1; up >= 0 && up > k - 64; --up) {
+        if (oneOf(text(up), {")", "]"}))
+            ++depth;
+        else if (oneOf(text(up), {"(", "["}) && depth > 0)
+            --depth;
+        else if (is(up, "(") && word(up - 1))
+            return up - 1;
+        else if (oneOf(text(up), {";", "{", "}"}))
+            return -1;
+    }
+    return -1;
+}
+
+} // namespace
+
+int bindByUse(ProgramBindings &bindings, const QByteArray &vertex, const QByteArray &fragment)
+{
+    // The vertex stage first: its gl_Position chain places the matrices
+    // before the fragment stage's subtractions are read.
+    const int bound = UseReader(vertex, ShaderStage::Vertex, bindings).run();
+    return bound + UseReader(fragment, ShaderStage::Fragment, bindings).run();
+}
+
+} // namespace phonglab
