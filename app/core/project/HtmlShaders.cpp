@@ -205,6 +205,17 @@ std::vector<FoundText> foundInJs(const QByteArray &js, qsizetype base)
     return out;
 }
 
+bool holdsShaderStrings(const QByteArray &file)
+{
+    // GLSL holds no quote or backtick outside comments: most shader files end here.
+    if (!file.contains('`') && !file.contains('"') && !file.contains('\''))
+        return false;
+    for (const FoundText &text : foundInJs(file, 0))
+        if (stageOfShaderText(text.value))
+            return true;
+    return false;
+}
+
 std::vector<JsProgramCall> programCallsInFile(const QString &path)
 {
     QFile f(path);

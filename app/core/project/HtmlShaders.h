@@ -26,6 +26,11 @@ struct FoundText {
 std::vector<FoundText> shaderTextsInHtml(const QByteArray &html);
 // In JavaScript that starts at `base` in its file.
 std::vector<FoundText> foundInJs(const QByteArray &js, qsizetype base);
+// Whether a file is JavaScript that holds a shader in a string: a quoted or
+// template string whose value has `main` and a stage's output. GLSL has no
+// strings, so a shader file (phong.vert) that does is a script in disguise
+// (`var phongVS = `...`;`, loaded by <script src="phong.vert">).
+bool holdsShaderStrings(const QByteArray &file);
 // The program calls of a page's inline scripts or a script file; literal
 // offsets are the file's.
 std::vector<JsProgramCall> programCallsInFile(const QString &path);

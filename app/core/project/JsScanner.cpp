@@ -209,6 +209,32 @@ std::size_t readEscape(std::string_view js, std::size_t i, std::size_t end, JsSt
     }
 }
 
+// The value of a literal's text [i, end), inside its quotes: escapes
+// resolved, a template's CR LF read as LF; known from here on.
+void readValue(std::string_view js, std::size_t i, std::size_t end, bool isTemplate,
+               JsStringValue &out)
+{
+    while (i < end) {
+        const char c = js[i];
+        if (c == '\\') {
+            i = readEscape(js, i, end, out);
+            continue;
+        }
+        if (c == '\r' && isTemplate) {
+            if (i + 1 < end && js[i + 1] == '\n')
+                ++i;
+            out.value += '\n';
+            out.from.push_back(qsizetype(i));
+            ++i;
+            continue;
+        }
+        out.value += c;
+        out.from.push_back(qsizetype(i));
+        ++i;
+    }
+    out.known = true;
+}
+
 } // namespace
 
 std::vector<JsToken> scanJs(std::string_view js)
@@ -280,25 +306,42 @@ JsStringValue jsStringValue(std::string_view js, const JsToken &literal)
     const char quote = js[std::size_t(literal.begin)];
     if (js[end] != quote)
         return out; // unterminated
-    for (std::size_t i = std::size_t(literal.begin) + 1; i < end;) {
-        const char c = js[i];
-        if (c == '\\') {
-            i = readEscape(js, i, end, out);
+    readValue(js, std::size_t(literal.begin) + 1, end, literal.kind == JsTokenKind::Template, out);
+    return out;
+}
+
+JsTemplateParts jsTemplateParts(std::string_view js, const JsToken &literal)
+{
+    JsTemplateParts out;
+    if (literal.kind != JsTokenKind::Template || literal.end - literal.begin < 2
+        || js[std::size_t(literal.end) - 1] != '`')
+        return out;
+    const std::size_t end = std::size_t(literal.end) - 1; // the closing backtick
+    std::size_t partBegin = std::size_t(literal.begin) + 1;
+    std::vector<JsStringValue> parts;
+    std::vector<std::pair<qsizetype, qsizetype>> substitutions;
+    for (std::size_t i = partBegin; i < end;) {
+        if (js[i] == '\\') {
+            i += 2; // \${ is text, not a substitution
             continue;
         }
-        if (c == '\r' && literal.kind == JsTokenKind::Template) {
-            if (i + 1 < end && js[i + 1] == '\n')
-                ++i;
-            out.value += '\n';
-            out.from.push_back(qsizetype(i));
+        if (js[i] != '$' || i + 1 >= end || js[i + 1] != '{') {
             ++i;
             continue;
         }
-        out.value += c;
-        out.from.push_back(qsizetype(i));
-        ++i;
+        // The scanner found the same closing brace: the token ends after it.
+        const std::size_t close = skipSubstitution(js, i + 2);
+        if (close > end)
+            return out; // a substitution that never closes: nothing is known
+        parts.emplace_back();
+        readValue(js, partBegin, i, true, parts.back());
+        substitutions.emplace_back(qsizetype(i + 2), qsizetype(close - 1));
+        partBegin = i = close;
     }
-    out.known = true;
+    parts.emplace_back();
+    readValue(js, partBegin, end, true, parts.back());
+    out.parts = std::move(parts);
+    out.substitutions = std::move(substitutions);
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include <QString>
 
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace phonglab {
@@ -41,5 +42,15 @@ struct JsStringValue {
     bool known = false;
 };
 JsStringValue jsStringValue(std::string_view js, const JsToken &literal);
+
+// A template literal with ${...} cut at its substitutions: the values of
+// the text between them (one more part than substitutions; a part may be
+// empty) and each substitution's code, [begin, end) inside its `${` `}`.
+// Both empty for an unterminated literal or one that is no template.
+struct JsTemplateParts {
+    std::vector<JsStringValue> parts;
+    std::vector<std::pair<qsizetype, qsizetype>> substitutions;
+};
+JsTemplateParts jsTemplateParts(std::string_view js, const JsToken &literal);
 
 } // namespace phonglab

@@ -1,12 +1,59 @@
 #include "JsShaders.h"
 
 #include <QHash>
+#include <QRegularExpression>
 
 #include <algorithm>
+#include <cctype>
 
 namespace phonglab {
 
 namespace {
+
+// Names an expression reads through or converts with, which say nothing of
+// what its value is (`this.n`, `String(n)`, `n.toFixed(1)`).
+bool isHolderOrConversion(std::string_view word)
+{
+    for (const char *w : {"this", "window", "self", "globalThis", "String", "Number", "parseInt",
+                          "parseFloat", "toString", "toFixed", "Math", "round", "floor"})
+        if (word == w)
+            return true;
+    return false;
+}
+
+// "numLights" and "num_lights" both NUM_LIGHTS: the way a page's tokens are written.
+QByteArray upperSnake(std::string_view word)
+{
+    QByteArray out;
+    for (std::size_t k = 0; k < word.size(); ++k) {
+        const unsigned char c = static_cast<unsigned char>(word[k]);
+        const unsigned char before = k > 0 ? static_cast<unsigned char>(word[k - 1]) : 0;
+        if (std::isupper(c) && (std::islower(before) || std::isdigit(before)))
+            out += '_';
+        if (std::isalnum(c))
+            out += char(std::toupper(c));
+        else if (c == '_' || c == '$')
+            out += '_';
+    }
+    return out;
+}
+
+// A name GLSL takes: no run of underscores (reserved) and none at either
+// end, no digit first, no GL_ first (reserved), not too long.
+QByteArray validGlslName(const QByteArray &name)
+{
+    QByteArray out;
+    for (const char c : name.left(64))
+        if (c != '_' || (!out.isEmpty() && !out.endsWith('_')))
+            out += c;
+    while (out.endsWith('_'))
+        out.chop(1);
+    if (out.isEmpty())
+        return "JS_VALUE";
+    if (std::isdigit(static_cast<unsigned char>(out[0])) || out.startsWith("GL_"))
+        out.prepend("JS_");
+    return out;
+}
 
 class Tokens
 {
@@ -33,11 +80,20 @@ public:
                 || m_tokens[i].kind == JsTokenKind::Template)
             && !m_tokens[i].hasSubstitution;
     }
+    // A template literal with ${...}: a piece whose substitutions the page fills in.
+    bool isTemplateWithSubstitution(std::size_t i) const
+    {
+        return i < size() && m_tokens[i].kind == JsTokenKind::Template
+            && m_tokens[i].hasSubstitution;
+    }
+    bool isPiece(std::size_t i) const { return isLiteral(i) || isTemplateWithSubstitution(i); }
     bool isIdentifier(std::size_t i) const
     {
         return i < size() && m_tokens[i].kind == JsTokenKind::Identifier;
     }
+    std::string_view js() const { return m_js; }
     JsStringValue value(std::size_t i) const { return jsStringValue(m_js, m_tokens[i]); }
+    JsTemplateParts parts(std::size_t i) const { return jsTemplateParts(m_js, m_tokens[i]); }
     QString string(std::size_t i) const { return QString::fromUtf8(value(i).value); }
     // The index of the bracket closing the one at `open`, or size().
     std::size_t closing(std::size_t open) const
@@ -64,6 +120,109 @@ void append(JsShaderText &out, const JsStringValue &piece)
     out.from.insert(out.from.end(), piece.from.begin(), piece.from.end());
 }
 
+// Whether the text's last line defines the macro `name` (`#define N ` before
+// the value `n`): its placeholder may not be N too, since `#define N N`
+// clashes with the `--define N=3` that would give it.
+bool definesMacroNamed(const QByteArray &value, const QByteArray &name)
+{
+    static const QRegularExpression define(QStringLiteral("^\\s*#\\s*define\\s+(\\w+)\\W"));
+    const QRegularExpressionMatch m =
+        define.match(QString::fromUtf8(value.mid(value.lastIndexOf('\n') + 1)));
+    return m.hasMatch() && m.captured(1).toUtf8() == name;
+}
+
+// The placeholder for the JavaScript expression [begin, end) of the scanned
+// text, appended: every byte of it comes from the expression's first, so a
+// line that starts with it starts where the expression does.
+void appendPlaceholder(const Tokens &t, qsizetype begin, qsizetype end, JsShaderText &out)
+{
+    const std::string_view js = t.js();
+    qsizetype at = begin;
+    while (at < end && std::isspace(static_cast<unsigned char>(js[std::size_t(at)])))
+        ++at;
+    QByteArray name = jsPlaceholderName(js.substr(std::size_t(begin), std::size_t(end - begin)));
+    if (definesMacroNamed(out.value, name))
+        name += "_VALUE";
+    out.value += name;
+    out.from.insert(out.from.end(), std::size_t(name.size()), at < end ? at : begin);
+}
+
+// A literal piece, or a template literal with its substitutions read as
+// placeholders.
+void appendPiece(const Tokens &t, std::size_t i, JsShaderText &out)
+{
+    if (t.isLiteral(i)) {
+        append(out, t.value(i));
+        ++out.pieces;
+        return;
+    }
+    const JsTemplateParts template_ = t.parts(i);
+    for (std::size_t k = 0; k < template_.parts.size(); ++k) {
+        append(out, template_.parts[k]);
+        if (k < template_.substitutions.size())
+            appendPlaceholder(t, template_.substitutions[k].first,
+                              template_.substitutions[k].second, out);
+    }
+    out.pieces += int(template_.parts.size());
+}
+
+constexpr std::size_t kMaxExpressionTokens = 64;
+
+bool endsOperand(const Tokens &t, std::size_t i)
+{
+    const JsTokenKind kind = t[i].kind;
+    return kind != JsTokenKind::Punctuator || t.is(i, ")") || t.is(i, "]");
+}
+
+// The expression that starts at token `i` and is followed by `+` and another
+// piece (`this.num_lights` in `'lights[' + this.num_lights + '];'`): the index
+// of that `+`. None where the expression ends the concatenation instead (at
+// `;` `,` `)`, a `?`, an `=`, or a name right after an operand: a statement
+// that has no semicolon).
+std::optional<std::size_t> expressionBeforePiece(const Tokens &t, std::size_t i)
+{
+    int depth = 0;
+    for (std::size_t k = i; k < t.size() && k < i + kMaxExpressionTokens; ++k) {
+        const std::string_view s = t.text(k);
+        if (depth == 0) {
+            if (s == "+" && k > i && t.isPiece(k + 1))
+                return k;
+            if (s == ";" || s == "," || s == "=" || s == ":" || s == "?" || s == "{" || s == ")"
+                || s == "]" || s == "}")
+                return std::nullopt;
+            if (k > i && endsOperand(t, k - 1) && t[k].kind != JsTokenKind::Punctuator)
+                return std::nullopt;
+        }
+        if (s == "(" || s == "[" || s == "{")
+            ++depth;
+        else if (s == ")" || s == "]" || s == "}")
+            --depth;
+    }
+    return std::nullopt;
+}
+
+// The pieces joined by `+` from piece `i` on, an expression between two of
+// them read as its placeholder; the index past the last piece.
+std::size_t concatenation(const Tokens &t, std::size_t i, JsShaderText &out)
+{
+    appendPiece(t, i, out);
+    std::size_t next = i + 1;
+    while (t.is(next, "+")) {
+        if (t.isPiece(next + 1)) {
+            appendPiece(t, next + 1, out);
+            next += 2;
+            continue;
+        }
+        const std::optional<std::size_t> plus = expressionBeforePiece(t, next + 1);
+        if (!plus)
+            break;
+        appendPlaceholder(t, t[next + 1].begin, t[*plus - 1].end, out);
+        appendPiece(t, *plus + 1, out);
+        next = *plus + 2;
+    }
+    return next;
+}
+
 // `[ 'a', 'b' ].join('\n')` at `open` (the bracket): its value, and the
 // index past the join's closing parenthesis.
 std::optional<std::size_t> arrayJoin(const Tokens &t, std::size_t open, JsShaderText &out)
@@ -77,11 +236,11 @@ std::optional<std::size_t> arrayJoin(const Tokens &t, std::size_t open, JsShader
     for (std::size_t i = open + 1; i < close; ++i) {
         if (t.is(i, ","))
             continue;
-        if (!t.isLiteral(i))
+        if (!t.isPiece(i))
             return std::nullopt;
         if (!first)
             append(out, separator);
-        append(out, t.value(i));
+        appendPiece(t, i, out);
         first = false;
     }
     return close + 6;
@@ -117,6 +276,13 @@ JsShaderRef refAt(const Tokens &t, std::size_t begin, std::size_t end)
                 return ref;
             }
         }
+    }
+    if (t.isTemplateWithSubstitution(begin)) {
+        JsShaderText text;
+        appendPiece(t, begin, text);
+        if (text.value.contains("main"))
+            ref.literalAt = t[begin].begin;
+        return ref; // a name computed by the page names nothing here
     }
     if (t.isLiteral(begin)) {
         const JsStringValue v = t.value(begin);
@@ -186,6 +352,26 @@ std::optional<JsProgramCall> materialCall(const Tokens &t, std::size_t open)
 
 } // namespace
 
+QByteArray jsPlaceholderName(std::string_view expression)
+{
+    std::vector<std::string_view> words;
+    for (const JsToken &token : scanJs(expression)) {
+        if (token.kind != JsTokenKind::Identifier)
+            continue;
+        const std::string_view word =
+            expression.substr(std::size_t(token.begin), std::size_t(token.end - token.begin));
+        if (!isHolderOrConversion(word))
+            words.push_back(word);
+    }
+    QByteArray name;
+    if (!words.empty()) {
+        name = upperSnake(words.back());
+        if ((words.back() == "length" || words.back() == "size") && words.size() > 1)
+            name = upperSnake(words[words.size() - 2]) + '_' + name;
+    }
+    return validGlslName(name);
+}
+
 std::vector<JsShaderText> shaderTextsInJs(std::string_view js)
 {
     const Tokens t(js);
@@ -201,15 +387,9 @@ std::vector<JsShaderText> shaderTextsInJs(std::string_view js)
             }
             next = *past;
             text.pieces = 2; // an array joined: written back as one text, never
-        } else if (t.isLiteral(i)) {
-            append(text, t.value(i));
-            text.pieces = 1;
+        } else if (t.isPiece(i)) {
             text.quote = js[std::size_t(t[i].begin)];
-            while (t.is(next, "+") && t.isLiteral(next + 1)) {
-                append(text, t.value(next + 1));
-                ++text.pieces;
-                next += 2;
-            }
+            next = concatenation(t, i, text);
         } else {
             ++i;
             continue;

@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QDirIterator>
+#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 
@@ -19,24 +20,68 @@ struct ProjectProgramsWords {
 
 namespace {
 
-constexpr int kMaxProjectFiles = 2000; // a node_modules folder is not a project
+constexpr int kMaxProjectFiles = 2000;                   // a node_modules folder is not a project
+constexpr qint64 kMaxProjectFileBytes = 8 * 1024 * 1024; // as shadersInFile reads
+// Past this, a script with no shader in it is no student's (a library, a bundle).
+constexpr qint64 kLargestStudentScript = 512 * 1024;
+
+const QStringList &shaderSuffixes()
+{
+    static const QStringList suffixes{
+        QStringLiteral("vert"), QStringLiteral("frag"), QStringLiteral("vs"),  QStringLiteral("fs"),
+        QStringLiteral("vsh"),  QStringLiteral("fsh"),  QStringLiteral("glsl")};
+    return suffixes;
+}
+
+bool isScript(const QFileInfo &file)
+{
+    const QString suffix = file.suffix().toLower();
+    return suffix == QLatin1String("js") || suffix == QLatin1String("mjs")
+        || suffix == QLatin1String("cjs");
+}
+
+// A library's bundle by its name: it holds its own shaders (three.module.js),
+// not the student's. Only names no student's own file takes: a file named
+// like a library of the student's (Phong-Lib.js, shaderlib.js) is read.
+bool isKnownBundle(const QString &fileName)
+{
+    const QString name = fileName.toLower();
+    if (name.endsWith(QLatin1String(".min.js")) || name.endsWith(QLatin1String(".min.mjs")))
+        return true;
+    for (const char *library : {"three.", "twgl", "webgl-utils", "gl-matrix"})
+        if (name.startsWith(QLatin1String(library)))
+            return true;
+    return false;
+}
 
 bool isProjectFile(const QFileInfo &file)
 {
-    static const QStringList suffixes{
-        QStringLiteral("html"), QStringLiteral("htm"),  QStringLiteral("xhtml"),
-        QStringLiteral("js"),   QStringLiteral("mjs"),  QStringLiteral("cjs"),
-        QStringLiteral("vert"), QStringLiteral("frag"), QStringLiteral("vs"),
-        QStringLiteral("fs"),   QStringLiteral("vsh"),  QStringLiteral("fsh"),
-        QStringLiteral("glsl")};
-    const QString name = file.fileName().toLower();
-    // A library's bundle holds its own shaders (three.module.js), not the student's.
-    if (name.endsWith(QLatin1String(".min.js")) || name.startsWith(QLatin1String("three."))
-        || name.startsWith(QLatin1String("webgl-utils")) || name.startsWith(QLatin1String("twgl")))
+    static const QStringList pages{QStringLiteral("html"), QStringLiteral("htm"),
+                                   QStringLiteral("xhtml")};
+    const QString suffix = file.suffix().toLower();
+    if (isKnownBundle(file.fileName()))
         return false;
-    return suffixes.contains(file.suffix().toLower());
+    return pages.contains(suffix) || isScript(file) || shaderSuffixes().contains(suffix);
 }
 
+// Minified: lines far longer than anyone writes by hand, all through the file.
+bool looksMinified(const QByteArray &js)
+{
+    return js.size() >= 16 * 1024 && js.size() / (js.count('\n') + 1) > 500;
+}
+
+// A script read in a folder with no shader in it that is large or
+// minified: a library's, whose own program calls (initShaders defined
+// there) must not pair the student's shaders.
+bool isLibraryByContent(const QFileInfo &file, const QByteArray &bytes)
+{
+    return isScript(file) && (bytes.size() > kLargestStudentScript || looksMinified(bytes));
+}
+
+// A file's shaders. A shader file that is in fact JavaScript (phong.vert
+// holding `var phongVS = `...`;`) is read as the script it is, not as one
+// GLSL text; shadersInText tells a file's kind by its suffix, so it reads
+// it as a .js of that name, and the shaders keep the file's own path.
 QStringList projectFiles(const QString &path, QStringList *notes)
 {
     const QFileInfo info(path);
@@ -144,6 +189,28 @@ QString programName(const ProjectShader &vertex, const ProjectShader &fragment)
     return QFileInfo(fragment.file).completeBaseName();
 }
 
+// The shaders of the project's files into `shaders`; the files read (a
+// library's by its content left out), whose calls pair them.
+QStringList readProjectFiles(const QString &path, QStringList *notes,
+                             std::vector<ProjectShader> *shaders)
+{
+    const bool folder = QFileInfo(path).isDir();
+    QStringList read;
+    for (const QString &file : projectFiles(path, notes)) {
+        QFile f(file);
+        if (f.size() > kMaxProjectFileBytes || !f.open(QIODevice::ReadOnly))
+            continue;
+        const QByteArray bytes = f.readAll();
+        std::vector<ProjectShader> found = shadersInText(file, bytes);
+        if (found.empty() && folder && isLibraryByContent(QFileInfo(file), bytes))
+            continue;
+        for (ProjectShader &s : found)
+            shaders->push_back(std::move(s));
+        read << file;
+    }
+    return read;
+}
+
 } // namespace
 
 Project readProject(const QString &path)
@@ -155,10 +222,7 @@ Project readProject(const QString &path)
         return project;
     }
     std::vector<ProjectShader> shaders;
-    const QStringList files = projectFiles(path, &project.notes);
-    for (const QString &file : files)
-        for (ProjectShader &s : shadersInFile(file))
-            shaders.push_back(std::move(s));
+    const QStringList files = readProjectFiles(path, &project.notes, &shaders);
     std::vector<bool> taken(shaders.size(), false);
     const auto pair = [&](int v, int f) {
         if (v < 0 || f < 0 || v == f || taken[std::size_t(v)] || taken[std::size_t(f)]

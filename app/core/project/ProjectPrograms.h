@@ -32,6 +32,11 @@ struct Project {
 
 // Reads a project: one page or script, or a folder (its .html, .js and
 // shader files, below it too; links and paths leaving it are not read).
+// In a folder, a library's bundle is not read: by its name (*.min.js,
+// three.*, twgl*, webgl-utils*, gl-matrix*), or a script with no shader
+// string in it that is minified or far larger than a student's. A shader
+// file that is JavaScript (`var phongVS = `...`;` in phong.vert) is read as
+// its strings.
 Project readProject(const QString &path);
 
 // The lit programs, or the one named `name` (error: none such, with the names there are).

@@ -151,7 +151,9 @@ std::vector<ProjectShader> shadersInText(const QString &path, const QByteArray &
     std::vector<FoundText> texts;
     if (suffixIn(path, {"html", "htm", "xhtml"}))
         texts = shaderTextsInHtml(file);
-    else if (suffixIn(path, {"js", "mjs", "cjs", "ts"}))
+    else if (suffixIn(path, {"js", "mjs", "cjs", "ts"})
+             || (suffixIn(path, {"vert", "frag", "vs", "fs", "vsh", "fsh", "glsl"})
+                 && holdsShaderStrings(file))) // a course's "shader file" that is JavaScript
         texts = foundInJs(file, 0);
     else if (suffixIn(path, {"vert", "frag", "vs", "fs", "vsh", "fsh", "glsl"})) {
         FoundText whole;
