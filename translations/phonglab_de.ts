@@ -492,6 +492,30 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>subtracted from the surface position %1, as the eye&apos;s</source>
         <translation>von der Oberflächenposition %1 abgezogen, als Position des Auges</translation>
     </message>
+    <message>
+        <source>scales the diffuse term</source>
+        <translation>skaliert den diffusen Term</translation>
+    </message>
+    <message>
+        <source>scales the specular term</source>
+        <translation>skaliert den spekularen Term</translation>
+    </message>
+    <message>
+        <source>scales the ambient term</source>
+        <translation>skaliert den ambienten Term</translation>
+    </message>
+    <message>
+        <source>holds the whole %1 beside the gain %2</source>
+        <translation>hält das ganze %1 neben dem Faktor %2</translation>
+    </message>
+    <message>
+        <source>moved into %1 and subtracted from the surface position %2, as a light&apos;s position (world coordinates)</source>
+        <translation>nach %1 verschoben und von der Oberflächenposition %2 abgezogen, als Position eines Lichts (Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <source>moves the light&apos;s position into camera coordinates (%1)</source>
+        <translation>bringt die Position des Lichts in Kamerakoordinaten (%1)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BuildStatusText</name>
@@ -3228,6 +3252,10 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>the light&apos;s position, camera coordinates</source>
         <translation>die Position des Lichts, Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <source>a gain whose term&apos;s other factors hold its whole value: 1</source>
+        <translation>ein Faktor, dessen Term seinen ganzen Wert schon in den anderen Faktoren hat: 1</translation>
     </message>
 </context>
 <context>

@@ -162,6 +162,8 @@ void Renderer::setObjectUniforms(ShaderProgram &program, const ObjectMatrices &m
     program.setVector(M::Kd, material.kd);
     program.setVector(M::Ks, material.ks);
     program.setScalar(M::Shininess, material.shininess);
+    program.setScalar(M::Gain, 1.0);
+    program.setVector(M::Gain, glm::dvec3(1.0), 1.0);
 }
 
 // The level an object is drawn at: 0 unless it has levels of detail and

@@ -58,6 +58,8 @@ private slots:
     void positionChainPlacesMatrices();
     void subtractedFromPositionIsALight();
     void eyeWhereALightIsNamed();
+    void termFactorsSplitTheProducts();
+    void aGainBesideANamedColour();
     void namesAndTheUsersWordWin();
     void whatNoTermTakesStaysUnbound();
     void survivesEveryPrefix();
@@ -188,6 +190,55 @@ void TestBindingsByUse::eyeWhereALightIsNamed()
     QCOMPARE(b.of("lightPosition"), M::LightPosition);
     QVERIFY(!b.binding("lightPosition")->byUse); // by its name
     QCOMPARE(b.of("watcher"), M::Eye);
+}
+
+void TestBindingsByUse::termFactorsSplitTheProducts()
+{
+    // Names no rule knows: each term's first colour takes the product, the
+    // other factors are 1.
+    const QByteArray fragment =
+        "precision highp float;\nuniform vec3 tintA, tintB, tintC, tintD;\nuniform float "
+        "strength;\nuniform vec3 beacon;\nvarying vec3 pos, nrm;\nvoid main() {\n"
+        "  vec3 L = normalize(beacon - pos);\n  vec3 R = reflect(-L, nrm);\n"
+        "  float lambert = max(dot(nrm, L), 0.0);\n"
+        "  vec3 diffuse = tintA * tintB * lambert;\n"
+        "  float spec = pow(max(dot(R, normalize(-pos)), 0.0), 32.0);\n"
+        "  vec3 specular = strength * spec * tintC;\n"
+        "  gl_FragColor = vec4(tintD + diffuse + specular, 1.0);\n}\n";
+    const Bound b =
+        bindAll({uniform("tintA", GlslType::Vec3), uniform("tintB", GlslType::Vec3),
+                 uniform("tintC", GlslType::Vec3), uniform("tintD", GlslType::Vec3),
+                 uniform("strength", GlslType::Float), uniform("beacon", GlslType::Vec3)},
+                kVertex, fragment);
+    QCOMPARE(b.of("beacon"), M::LightPosition);
+    QCOMPARE(b.of("tintA"), M::DiffuseProduct);
+    QCOMPARE(b.of("tintB"), M::Gain);
+    QCOMPARE(b.of("tintC"), M::SpecularProduct);
+    QCOMPARE(b.of("strength"), M::Gain);
+    QCOMPARE(b.of("tintD"), M::AmbientProduct);
+    QCOMPARE(b.binding("tintA")->byUse->line, 10);
+    QCOMPARE(b.binding("tintA")->byUse->reason, QStringLiteral("scales the diffuse term"));
+    QVERIFY(b.bindings.unboundUniforms().empty());
+}
+
+void TestBindingsByUse::aGainBesideANamedColour()
+{
+    // A scalar ka beside a colour whose name says Ia: the colour holds Ia·ka,
+    // the gain is 1, and the product is right whatever the scene's ka.
+    const QByteArray fragment =
+        "precision highp float;\nuniform float kA;\nuniform vec3 uAmbientLight;\n"
+        "uniform vec3 diffuseProduct;\nuniform vec3 beacon;\nvarying vec3 pos, nrm;\n"
+        "void main() {\n  vec3 L = normalize(beacon - pos);\n"
+        "  vec3 c = kA * uAmbientLight + diffuseProduct * max(dot(nrm, L), 0.0);\n"
+        "  gl_FragColor = vec4(c, 1.0);\n}\n";
+    const Bound b =
+        bindAll({uniform("kA", GlslType::Float), uniform("uAmbientLight", GlslType::Vec3),
+                 uniform("diffuseProduct", GlslType::Vec3), uniform("beacon", GlslType::Vec3)},
+                kVertex, fragment);
+    QCOMPARE(b.of("diffuseProduct"), M::DiffuseProduct);
+    QCOMPARE(b.of("kA"), M::Gain);
+    QCOMPARE(b.of("uAmbientLight"), M::AmbientProduct);
+    QVERIFY(b.binding("uAmbientLight")->byUse->reason.contains(QStringLiteral("kA")));
 }
 
 void TestBindingsByUse::namesAndTheUsersWordWin()

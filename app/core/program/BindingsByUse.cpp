@@ -1,6 +1,6 @@
 #include "core/program/BindingsByUse.h"
 
-#include "core/program/GlslTokens.h"
+#include "core/program/UseTokens.h"
 
 #include <QCoreApplication>
 
@@ -17,16 +17,8 @@ struct BindingsByUseWords {
 };
 
 using namespace glsl;
+using namespace usetokens;
 using M = BindingMeaning;
-
-// Bounds that keep arbitrary bytes from exhausting the time.
-constexpr std::size_t kMaxTokens = 200000;
-constexpr int kMaxFollow = 4; // locals followed back to what they were set from
-
-QString toQString(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), qsizetype(s.size()));
-}
 
 // The pieces of projection · view · model a matrix meaning covers, as the
 // first and last index of {0: projection, 1: view, 2: model}.
@@ -73,21 +65,19 @@ std::vector<Span> fill(int count, int first, int last)
     return {{first, first}, {first + 1, last}};
 }
 
-class UseReader
+class UseReader : UseTokens
 {
 public:
     UseReader(const QByteArray &code, ShaderStage stage, ProgramBindings &bindings)
-        : m_stage(stage)
+        : UseTokens(code, bindings)
+        , m_stage(stage)
         , m_bindings(bindings)
-        , m_tokens(tokenize(code, m_macroWords))
-        , m_n(int(m_tokens.size()))
     {
-        matchBrackets();
     }
 
     int run()
     {
-        if (std::size_t(m_n) > kMaxTokens)
+        if (std::size_t(m_n) > kMaxUseTokens)
             return 0;
         for (int i = 0; i < m_n; ++i) {
             if (is(i, "pow") && is(i + 1, "("))
@@ -96,31 +86,15 @@ public:
                 loopBound(i);
             else if (is(i, "gl_Position") && is(i + 1, "=") && m_stage == ShaderStage::Vertex)
                 positionChain(i + 2);
-            else if (m_tokens[i].word)
+            else if (word(i))
                 subtractedFromPosition(i);
+            if (is(i, "-") && word(i - 1) && isSurfaceWord(i + 1))
+                movedThenSubtracted(i - 1);
         }
         return m_bound;
     }
 
 private:
-    std::string_view text(int i) const { return i >= 0 && i < m_n ? m_tokens[i].text : ""; }
-    bool is(int i, std::string_view t) const { return text(i) == t; }
-    bool word(int i) const { return i >= 0 && i < m_n && m_tokens[i].word; }
-    int closeOf(int i) const { return i >= 0 && i < m_n && m_partner[i] >= 0 ? m_partner[i] : m_n; }
-    int next(int i) const { return oneOf(text(i), {"(", "[", "{"}) ? closeOf(i) + 1 : i + 1; }
-    // The end of one argument or operand list from `i`: the first `stop`
-    // (or `,`, `;`, `)`) at this bracket level.
-    int until(int i, std::string_view stop) const
-    {
-        while (i < m_n && !is(i, stop) && !oneOf(text(i), {",", ";", ")", "]", "}"}))
-            i = next(i);
-        return i;
-    }
-
-    void matchBrackets();
-    std::vector<int> variablesAt(int i, int *end) const;
-    std::vector<int> referenceIn(int begin, int end, int depth = 0) const;
-    int initializerOf(std::string_view local, int before) const;
     bool unbound(int v) const
     {
         const VariableBinding &b = m_bindings.variables[std::size_t(v)];
@@ -134,116 +108,13 @@ private:
     void chainFactors(int begin, int end, int depth, std::vector<int> &matrices) const;
     void subtractedFromPosition(int i);
     bool isSurfaceWord(int i) const;
+    void movedThenSubtracted(int localToken);
     bool usedAsLightDirection(int statementBegin) const;
-    int enclosingCall(int k) const;
 
     ShaderStage m_stage;
     ProgramBindings &m_bindings;
-    std::vector<std::string_view> m_macroWords;
-    std::vector<Token> m_tokens;
-    int m_n = 0;
-    std::vector<int> m_partner;
     int m_bound = 0;
 };
-
-void UseReader::matchBrackets()
-{
-    m_partner.assign(std::size_t(m_n), -1);
-    std::vector<int> open;
-    for (int i = 0; i < m_n; ++i) {
-        const std::string_view t = text(i);
-        if (oneOf(t, {"(", "[", "{"})) {
-            open.push_back(i);
-        } else if (oneOf(t, {")", "]", "}"}) && !open.empty()) {
-            const char expected = t == ")" ? '(' : t == "]" ? '[' : '{';
-            if (text(open.back())[0] != expected)
-                continue;
-            m_partner[std::size_t(i)] = open.back();
-            m_partner[std::size_t(open.back())] = i;
-            open.pop_back();
-        }
-    }
-}
-
-// The variables a reference starting at `i` names: `u`, `u[i]` (an array,
-// one variable), `s.member`, `s[k].member` (the member of light k, or of
-// every light for an index that is no number); a swizzle is the vector's.
-std::vector<int> UseReader::variablesAt(int i, int *end) const
-{
-    *end = i;
-    if (!word(i) || isKeyword(text(i)) || isTypeName(text(i)))
-        return {};
-    const QString name = toQString(text(i));
-    int j = i + 1;
-    QString index;
-    bool indexed = false;
-    if (is(j, "[")) {
-        indexed = true;
-        const int close = closeOf(j);
-        if (close == j + 2 && isDigit(text(j + 1)[0]))
-            index = toQString(text(j + 1));
-        j = close + 1;
-    }
-    QString member; // a struct's member, or a swizzle
-    if (is(j, ".") && word(j + 1)) {
-        member = toQString(text(j + 1));
-        j += 2;
-    }
-    *end = j;
-    std::vector<int> out;
-    const auto &vars = m_bindings.variables;
-    if (!member.isEmpty()) {
-        for (std::size_t v = 0; v < vars.size(); ++v) {
-            const QString &n = vars[v].variable.name;
-            const bool plain = !indexed && n == name + QLatin1Char('.') + member;
-            const bool element = indexed && n.startsWith(name + QLatin1Char('['))
-                && n.endsWith(QStringLiteral("].") + member)
-                && (index.isEmpty() || n == QStringLiteral("%1[%2].%3").arg(name, index, member));
-            if (plain || element)
-                out.push_back(int(v));
-        }
-        if (!out.empty())
-            return out;
-    }
-    for (std::size_t v = 0; v < vars.size(); ++v)
-        if (vars[v].variable.name == name)
-            out.push_back(int(v));
-    if (out.empty())
-        *end = i;
-    return out;
-}
-
-// The variables the expression [begin, end) is, as a whole: a reference,
-// in parentheses, a constructor of one argument (`float(n)`, `vec3(u)`), or
-// a local set from one.
-std::vector<int> UseReader::referenceIn(int begin, int end, int depth) const
-{
-    while (end - begin >= 3 && is(begin + 1, "(") && closeOf(begin + 1) == end - 1
-           && isTypeName(text(begin)))
-        begin += 2, --end;
-    while (end - begin >= 2 && is(begin, "(") && closeOf(begin) == end - 1)
-        ++begin, --end;
-    int after = begin;
-    std::vector<int> vars = variablesAt(begin, &after);
-    if (!vars.empty())
-        return after == end ? vars : std::vector<int>();
-    if (end == begin + 1 && word(begin) && depth < kMaxFollow) {
-        const int init = initializerOf(text(begin), begin);
-        if (init >= 0)
-            return referenceIn(init, until(init, ";"), depth + 1);
-    }
-    return {};
-}
-
-// Where the value of the local `local` is given last before token `before`
-// (`float n = EXPR;` or `n = EXPR;`): EXPR's first token, or -1.
-int UseReader::initializerOf(std::string_view local, int before) const
-{
-    for (int k = std::min(before, m_n) - 1; k > 0; --k)
-        if (text(k) == local && is(k + 1, "=") && !is(k - 1, "."))
-            return k + 2;
-    return -1;
-}
 
 void UseReader::bind(const std::vector<int> &variables, M meaning, int at, const QString &reason)
 {
@@ -252,7 +123,7 @@ void UseReader::bind(const std::vector<int> &variables, M meaning, int at, const
         if (!unbound(v) || !bindingFits(meaning, b.variable))
             continue;
         b.meaning = meaning;
-        b.byUse = UseEvidence{m_stage, m_tokens[std::size_t(at)].line, reason};
+        b.byUse = UseEvidence{m_stage, line(at), reason};
         ++m_bound;
     }
 }
@@ -407,6 +278,47 @@ void UseReader::subtractedFromPosition(int i)
     }
 }
 
+// lightCam - P, where lightCam = (V * vec4(light, 1.0)).xyz: the vector a
+// local was moved from is a light's position, world coordinates.
+void UseReader::movedThenSubtracted(int localToken)
+{
+    if (is(localToken - 1, ".") || !isSurfaceWord(localToken))
+        return;
+    const int init = initializerOf(text(localToken), localToken);
+    int statement = localToken;
+    while (statement > 0 && !oneOf(text(statement - 1), {";", "{", "}"}))
+        --statement;
+    if (init < 0 || !usedAsLightDirection(statement))
+        return; // the eye's position is moved and subtracted too
+    const int end = until(init, ";");
+    std::vector<int> moved;  // the vectors
+    std::vector<int> movers; // the matrices that moved them
+    for (int k = init; k < end; ++k) {
+        int after = k;
+        for (int v : variablesAt(k, &after)) {
+            const GlslType t = m_bindings.variables[std::size_t(v)].variable.type;
+            if (!unbound(v))
+                continue;
+            if (t == GlslType::Vec3 || t == GlslType::Vec4)
+                moved.push_back(v);
+            else if (t == GlslType::Mat4)
+                movers.push_back(v);
+        }
+    }
+    const QString local = toQString(text(localToken));
+    const QString surface = toQString(text(localToken + 2));
+    bind(moved, M::LightPosition, init,
+         BindingsByUseWords::tr("moved into %1 and subtracted from the surface position %2, "
+                                "as a light's position (world coordinates)")
+             .arg(local, surface));
+    // The exercise's step 3: the view matrix takes the light from world
+    // into camera coordinates.
+    if (!moved.empty() && movers.size() == 1)
+        bind(movers, M::View, init,
+             BindingsByUseWords::tr("moves the light's position into camera coordinates (%1)")
+                 .arg(local));
+}
+
 // Whether the local the statement at `statementBegin` sets is a light
 // direction: reflected, or dotted with anything but a reflection (the view
 // vector is dotted with R = reflect(...)).
@@ -417,17 +329,30 @@ bool UseReader::usedAsLightDirection(int statementBegin) const
         ++eq;
     if (!is(eq, "=") || !word(eq - 1))
         return false;
-    const std::string_view local = text(eq - 1);
+    // The local, and the locals made from it (`L = toLight / d`).
+    std::vector<std::string_view> locals{text(eq - 1)};
+    for (int k = eq + 1; k < m_n && locals.size() < std::size_t(kMaxFollow); ++k) {
+        if (!is(k, "=") || !word(k - 1)
+            || std::find(locals.begin(), locals.end(), text(k - 1)) != locals.end())
+            continue;
+        const int end = until(k + 1, ";");
+        for (int a = k + 1; a < end; ++a)
+            if (std::find(locals.begin(), locals.end(), text(a)) != locals.end()) {
+                locals.push_back(text(k - 1));
+                break;
+            }
+    }
     const auto isReflection = [&](int a) {
         const int init = word(a) ? initializerOf(text(a), m_n) : -1;
         return init >= 0 && is(init, "reflect");
     };
+    const auto mine = [&](int k) {
+        return std::find(locals.begin(), locals.end(), text(k)) != locals.end() && !is(k - 1, ".");
+    };
     for (int k = eq + 1; k < m_n; ++k) {
-        if (text(k) != local || is(k - 1, "."))
+        if (!mine(k))
             continue;
-        const int around = m_partner.empty() ? -1 : enclosingCall(k);
-        if (around < 0)
-            continue;
+        const int around = enclosingCall(k);
         if (is(around, "reflect"))
             return true;
         if (is(around, "dot")) {
@@ -437,7 +362,7 @@ bool UseReader::usedAsLightDirection(int statementBegin) const
             bool other = false;
             for (int a = around + 2; a < close; ++a) {
                 reflection = reflection || is(a, "reflect") || isReflection(a);
-                other = other || (word(a) && text(a) != local);
+                other = other || (word(a) && !mine(a));
             }
             if (other && !reflection)
                 return true;
@@ -446,31 +371,17 @@ bool UseReader::usedAsLightDirection(int statementBegin) const
     return false;
 }
 
-// The name of the call whose parentheses hold token `k` directly, or -1.
-int UseReader::enclosingCall(int k) const
-{
-    int depth = 0;
-    for (int up = k - 1; up >= 0 && up > k - 64; --up) {
-        if (oneOf(text(up), {")", "]"}))
-            ++depth;
-        else if (oneOf(text(up), {"(", "["}) && depth > 0)
-            --depth;
-        else if (is(up, "(") && word(up - 1))
-            return up - 1;
-        else if (oneOf(text(up), {";", "{", "}"}))
-            return -1;
-    }
-    return -1;
-}
-
 } // namespace
 
 int bindByUse(ProgramBindings &bindings, const QByteArray &vertex, const QByteArray &fragment)
 {
     // The vertex stage first: its gl_Position chain places the matrices
     // before the fragment stage's subtractions are read.
-    const int bound = UseReader(vertex, ShaderStage::Vertex, bindings).run();
-    return bound + UseReader(fragment, ShaderStage::Fragment, bindings).run();
+    int bound = UseReader(vertex, ShaderStage::Vertex, bindings).run();
+    bound += UseReader(fragment, ShaderStage::Fragment, bindings).run();
+    // The terms' factors last: a vector the rules above placed (a light's
+    // position) is no factor of a term.
+    return bound + bindTermFactors(bindings, vertex, fragment);
 }
 
 } // namespace phonglab

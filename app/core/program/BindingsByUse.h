@@ -15,6 +15,10 @@ namespace phonglab {
 //    to projection · view · model, and the matrices the names decided fix
 //    the others' places (two unknowns and nothing known: projection and
 //    model-view, as the exercise's course code writes it);
+//  - colours and gains that scale the ambient, diffuse (dot) or specular
+//    (pow) term are its factors: one takes what the names leave missing
+//    (I·k, I or k), the rest are 1 (`gain`); any split whose factors
+//    multiply to Ia·ka, Id·kd or Is·ks is right (BindingsByTerm.cpp);
 //  - a vector subtracted from the surface position is a light's position,
 //    in world coordinates as the exercise gives it: a shader that forgets
 //    to move it into camera coordinates is then told `light-space`, never

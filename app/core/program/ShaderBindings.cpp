@@ -53,6 +53,7 @@ constexpr std::array kKeys = {
     std::pair{M::LightColor, "light-color"},
     std::pair{M::MaterialColor, "material-color"},
     std::pair{M::LightPositionCamera, "light-position-camera"},
+    std::pair{M::Gain, "gain"},
 };
 
 constexpr std::array kDescriptions = {
@@ -121,6 +122,9 @@ constexpr std::array kDescriptions = {
     std::pair{
         M::LightPositionCamera,
         QT_TRANSLATE_NOOP("phonglab::ShaderBindings", "the light's position, camera coordinates")},
+    std::pair{M::Gain,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "a gain whose term's other factors hold its whole value: 1")},
 };
 
 bool isOneOf(GlslType type, std::initializer_list<GlslType> types)
@@ -233,6 +237,7 @@ bool bindingFits(BindingMeaning meaning, const ShaderVariable &v)
     case M::C3: return isOneOf(v.type, {T::Float, T::Int}); // an int where the value is whole
     case M::LightCount: return isOneOf(v.type, {T::Int, T::UInt, T::Float});
     case M::Shininess: return isOneOf(v.type, {T::Float, T::Int});
+    case M::Gain: return isOneOf(v.type, {T::Float, T::Vec3, T::Vec4});
     }
     return false;
 }

@@ -51,10 +51,13 @@ enum class BindingMeaning {
     LightColor,          // one colour for Id and Is of a light (they must be equal)
     MaterialColor,       // one colour for ka and kd (they must be equal)
     LightPositionCamera, // the light's position, camera coordinates
+    // A factor of a term whose other factors already hold its whole value
+    // (a scalar `ka` beside a colour given Ia·ka): 1 (a float, or a vector
+    // of ones). Bound by use only.
+    Gain,
 };
 // How many meanings there are (the last one + 1): a table indexed by them.
-inline constexpr std::size_t kBindingMeaningCount =
-    std::size_t(BindingMeaning::LightPositionCamera) + 1;
+inline constexpr std::size_t kBindingMeaningCount = std::size_t(BindingMeaning::Gain) + 1;
 
 QString bindingMeaningKey(BindingMeaning meaning);
 std::optional<BindingMeaning> bindingMeaningFromKey(const QString &key);
