@@ -3841,6 +3841,10 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
         <source>The compiler removed %1 %2 because nothing the output depends on reads it.</source>
         <translation>Der Compiler hat %1 %2 entfernt, weil nichts, wovon die Ausgabe abhängt, diese Variable liest.</translation>
     </message>
+    <message>
+        <source>by its use: %1 (%2 shader, line %3)</source>
+        <translation>nach Verwendung: %1 (%2-Shader, Zeile %3)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::Vec3Field</name>

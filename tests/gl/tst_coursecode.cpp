@@ -123,6 +123,29 @@ private slots:
         QCOMPARE(verdict(world), QStringLiteral("fail"));
     }
 
+    // shadedCube lights per vertex: `gouraud` first, from its code, with
+    // the vertex shader's lines, whatever else the image shows; no set of
+    // per-fragment mistakes is offered for it.
+    void angelShadedCubeIsGouraud()
+    {
+        const Check c = check(
+            QStringLiteral("angel/shadedCube.vert"), QStringLiteral("angel/shadedCube.frag"),
+            {QStringLiteral("--bind"), QStringLiteral("lightPosition=light-position-camera")});
+        QCOMPARE(verdict(c), QStringLiteral("fail"));
+        const QJsonObject first =
+            c.json.value(QStringLiteral("diagnosis")).toArray().first().toObject();
+        QCOMPARE(first.value(QStringLiteral("key")).toString(), QStringLiteral("gouraud"));
+        QVERIFY(first.value(QStringLiteral("from_code")).toBool());
+        const QJsonArray lines = first.value(QStringLiteral("lines")).toArray();
+        QVERIFY2(!lines.isEmpty(), qPrintable(said(c)));
+        QVERIFY(lines.first()
+                    .toObject()
+                    .value(QStringLiteral("file"))
+                    .toString()
+                    .endsWith(QLatin1String("shadedCube.vert")));
+        QVERIFY(c.json.value(QStringLiteral("together")).isNull());
+    }
+
     // The book's own fragment shader: the halfway vector and no attenuation,
     // both named.
     void angelBlinnIsNamedInFull()

@@ -23,11 +23,22 @@ bool callsLightingFunctions(const QByteArray &code)
     });
 }
 
+// A `flat` output carries one colour per face (flat shading), which the
+// image names per-face.
+bool hasFlatOutput(const QByteArray &vertex)
+{
+    std::vector<std::string_view> macroWords;
+    const std::vector<glsl::Token> tokens = glsl::tokenize(vertex, macroWords);
+    return std::any_of(tokens.begin(), tokens.end(),
+                       [](const glsl::Token &t) { return t.text == "flat"; });
+}
+
 } // namespace
 
 bool lightsPerVertex(const QByteArray &vertex, const QByteArray &fragment)
 {
-    return callsLightingFunctions(vertex) && !callsLightingFunctions(fragment);
+    return callsLightingFunctions(vertex) && !callsLightingFunctions(fragment)
+        && !hasFlatOutput(vertex);
 }
 
 } // namespace phonglab

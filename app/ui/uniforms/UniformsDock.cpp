@@ -213,9 +213,21 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
     std::optional<std::optional<BindingMeaning>> word; // none: automatic
     if (const auto it = program.explicitBindings.find(name); it != program.explicitBindings.end())
         word = it->second;
-    auto *choice =
-        new BindingChoice(variable->variable, automaticMeaning(variable->variable), word, label);
+    // "Automatic" is what PhongLab made of it: by its name, or by its use.
+    const std::optional<BindingMeaning> automatic =
+        variable->isExplicit ? automaticMeaning(variable->variable) : variable->meaning;
+    auto *choice = new BindingChoice(variable->variable, automatic, word, label);
     layout->addWidget(choice);
+    if (variable->byUse && !variable->isExplicit) {
+        auto *why = new QLabel(tr("by its use: %1 (%2 shader, line %3)")
+                                   .arg(variable->byUse->reason, stageName(variable->byUse->stage))
+                                   .arg(variable->byUse->line),
+                               label);
+        why->setObjectName(QStringLiteral("byUse:") + name);
+        why->setWordWrap(true);
+        why->setEnabled(false); // a note's grey
+        layout->addWidget(why);
+    }
     connect(choice, &BindingChoice::chosen, this, [this, choice](const QString &variableName) {
         m_viewport->setBindings(withBinding(m_viewport->currentScene().bindings, variableName,
                                             choice->explicitBinding()));
