@@ -60,6 +60,7 @@ private slots:
     void eyeWhereALightIsNamed();
     void termFactorsSplitTheProducts();
     void aGainBesideANamedColour();
+    void aGainOfTheWholeColourStaysTheUsers();
     void namesAndTheUsersWordWin();
     void whatNoTermTakesStaysUnbound();
     void survivesEveryPrefix();
@@ -239,6 +240,22 @@ void TestBindingsByUse::aGainBesideANamedColour()
     QCOMPARE(b.of("kA"), M::Gain);
     QCOMPARE(b.of("uAmbientLight"), M::AmbientProduct);
     QVERIFY(b.binding("uAmbientLight")->byUse->reason.contains(QStringLiteral("kA")));
+}
+
+void TestBindingsByUse::aGainOfTheWholeColourStaysTheUsers()
+{
+    // An exposure slider scales every term: the Uniforms dock's to turn.
+    const QByteArray fragment =
+        "precision highp float;\nuniform float exposure;\nuniform vec3 ambientProduct, "
+        "diffuseProduct, specularProduct;\nvarying vec3 nrm, L, R, V;\nvoid main() {\n"
+        "  vec3 I = ambientProduct + diffuseProduct * max(dot(nrm, L), 0.0)"
+        " + specularProduct * pow(max(dot(R, V), 0.0), 8.0);\n"
+        "  gl_FragColor = vec4(I * exposure, 1.0);\n}\n";
+    const Bound b = bindAll(
+        {uniform("exposure", GlslType::Float), uniform("ambientProduct", GlslType::Vec3),
+         uniform("diffuseProduct", GlslType::Vec3), uniform("specularProduct", GlslType::Vec3)},
+        kVertex, fragment);
+    QCOMPARE(b.of("exposure"), std::nullopt);
 }
 
 void TestBindingsByUse::namesAndTheUsersWordWin()

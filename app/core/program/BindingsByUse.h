@@ -18,7 +18,8 @@ namespace phonglab {
 //  - colours and gains that scale the ambient, diffuse (dot) or specular
 //    (pow) term are its factors: one takes what the names leave missing
 //    (I·k, I or k), the rest are 1 (`gain`); any split whose factors
-//    multiply to Ia·ka, Id·kd or Is·ks is right (BindingsByTerm.cpp);
+//    multiply to Ia·ka, Id·kd or Is·ks is right (BindingsByTerm.cpp); what
+//    scales all three terms scales the whole colour and stays the user's;
 //  - a vector subtracted from the surface position is a light's position,
 //    in world coordinates as the exercise gives it: a shader that forgets
 //    to move it into camera coordinates is then told `light-space`, never
