@@ -516,6 +516,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>moves the light&apos;s position into camera coordinates (%1)</source>
         <translation>bringt die Position des Lichts in Kamerakoordinaten (%1)</translation>
     </message>
+    <message>
+        <source>the term&apos;s only factor: %1</source>
+        <translation>der einzige Faktor des Terms: %1</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BuildStatusText</name>

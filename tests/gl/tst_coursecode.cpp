@@ -159,14 +159,16 @@ private slots:
     }
 
     // World space, Blinn, no ambient, no attenuation: three deviations at
-    // once. The lesson's u_specularColor is the light's specular colour
-    // times a ks of 1: the teacher binds it to the product.
+    // once, with no --bind. The lesson's u_specularColor is the specular
+    // term's only factor, so its whole product Is·ks (bound by use).
     void webglFundamentalsWorldSpaceBlinn()
     {
-        const Check c =
-            check(QStringLiteral("webglfundamentals/point-light.vert"),
-                  QStringLiteral("webglfundamentals/point-light.frag"),
-                  {QStringLiteral("--bind"), QStringLiteral("u_specularColor=specular-product")});
+        const Check c = check(QStringLiteral("webglfundamentals/point-light.vert"),
+                              QStringLiteral("webglfundamentals/point-light.frag"));
+        QCOMPARE(binding(c, QStringLiteral("u_specularColor")), QStringLiteral("specular-product"));
+        QVERIFY(c.json.value(QStringLiteral("bindings_by_use"))
+                    .toObject()
+                    .contains(QStringLiteral("u_specularColor")));
         QCOMPARE(verdict(c), QStringLiteral("fail"));
         QCOMPARE(binding(c, QStringLiteral("u_lightWorldPosition")),
                  QStringLiteral("light-position"));

@@ -354,13 +354,20 @@ int TermBinder::bind(Term term, const std::vector<Factor> &factors, const std::v
         if (!vectors.empty()) {
             give(vectors.front(), missing, reason);
             vectors.erase(vectors.begin());
-        } else if (!gains.empty() && named)
+        } else if (!gains.empty() && named) {
             give(*named, meanings.product,
                  TermWords::tr("holds the whole %1 beside the gain %2")
                      .arg(bindingMeaningDescription(meanings.product),
                           at(gains.front().variable).variable.name));
-        else
+        } else if (factors.size() == 1 && named) {
+            // The term's one factor can only be all of it, whatever part its
+            // name suggests (webglfundamentals' u_specularColor).
+            give(*named, meanings.product,
+                 TermWords::tr("the term's only factor: %1")
+                     .arg(bindingMeaningDescription(meanings.product)));
+        } else {
             return 0;
+        }
     } else if (vectors.empty() && gains.empty()) {
         return 0;
     }
