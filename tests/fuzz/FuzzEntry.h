@@ -12,6 +12,8 @@
 // Header-only on purpose: the fuzz build links it with libFuzzer, the unit
 // test with QtTest, and neither needs a library of its own.
 
+#include "core/program/BindingsByUse.h"
+#include "core/program/BrowserRules.h"
 #include "core/program/CoursePrelude.h"
 #include "core/program/ShaderLint.h"
 #include "core/program/UniformAnnotations.h"
@@ -218,6 +220,34 @@ inline Outcome runCourseCode(const QByteArray &bytes)
     const QString message = QString::fromUtf8(code.left(200));
     if (!explainUndefinedToken(message, options.defines).startsWith(message))
         brokenPromise("coursecode", "an explanation that changed the compiler's words");
+    // The browser's rules insert, never remove, and keep every line.
+    const BrowserRewrite browser =
+        applyBrowserRules(code, head & 2 ? ShaderStage::Fragment : ShaderStage::Vertex);
+    qsizetype inserted = 0;
+    for (const SourceInsertion &at : browser.insertions) {
+        inserted += at.text.size();
+        if (at.offset < 0 || at.offset > code.size() || at.text.contains('\n'))
+            brokenPromise("coursecode", "an insertion outside the text or across a line");
+    }
+    if (browser.code.size() != code.size() + inserted
+        || browser.code.count('\n') != code.count('\n'))
+        brokenPromise("coursecode", "a rewrite that lost text or moved a line");
+    // Binding by use binds only what nothing bound, and says where.
+    std::vector<ShaderVariable> variables;
+    for (const UniformDeclaration &d : parseUniformDeclarations(QString::fromUtf8(code)))
+        variables.push_back({d.name,
+                             d.type == QLatin1String("mat4")        ? GlslType::Mat4
+                                 : d.type == QLatin1String("float") ? GlslType::Float
+                                                                    : GlslType::Vec3,
+                             std::max(1, d.arraySize), d.isArray, false});
+    ProgramBindings bindings = bindVariables(variables, {});
+    bindByUse(bindings, code, code);
+    for (const VariableBinding &b : bindings.variables) {
+        if (b.byUse && (b.byUse->line < 1 || b.byUse->line > code.count('\n') + 1))
+            brokenPromise("coursecode", "a binding by use on no line of the text");
+        if (b.byUse && !b.meaning)
+            brokenPromise("coursecode", "a reason for no meaning");
+    }
     return {true, {}};
 }
 

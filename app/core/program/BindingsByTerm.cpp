@@ -408,15 +408,16 @@ int bindTermFactors(ProgramBindings &bindings, const QByteArray &vertex, const Q
         }
     }
     std::vector<int> shared;
-    for (const auto &[variable, in] : termsOf) {
-        if (in.size() > 1)
+    for (const auto &entry : termsOf) {
+        const int variable = entry.first;
+        if (entry.second.size() > 1)
             shared.push_back(variable);
         // What scales every term scales the whole colour (an exposure the
         // user turns in the Uniforms dock): no factor of the equation.
-        if (in.size() == 3) {
-            for (auto &[term, list] : terms)
-                std::erase_if(list, [&](const Factor &f) { return f.variable == variable; });
-        }
+        if (entry.second.size() == 3)
+            for (auto &term : terms)
+                std::erase_if(term.second,
+                              [variable](const Factor &f) { return f.variable == variable; });
     }
     TermBinder binder(bindings);
     int bound = 0;
