@@ -7,6 +7,8 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
+#include "core/check/MistakeSets.h"
+#include "core/check/ShaderCheck.h"
 #include "core/project/ProjectPrograms.h"
 #include "render/QtImages.h"
 #include "ui/check/CheckOverlay.h"
@@ -26,6 +28,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
@@ -293,6 +296,46 @@ private slots:
         QVERIFY(waitForVerdict(true));
         QCOMPARE(m_window->liveCheck()->lastResult()->scene.vertexShader,
                  QFileInfo(vertex).absoluteFilePath());
+    }
+
+    // webglfundamentals' point-light lesson, with no binding given: the
+    // window binds u_specularColor by its use and names the lesson's three
+    // deviations, as `phonglab check` does (gl.tst_coursecode), on a scene
+    // of the one light the shader takes.
+    void namesTheLessonsDeviationsWithNoBinding()
+    {
+        QFile course(sourcePath(QStringLiteral("tests/data/course/scene.json")));
+        QVERIFY(course.open(QIODevice::ReadOnly));
+        QJsonObject scene = QJsonDocument::fromJson(course.readAll()).object();
+        QJsonArray lights = scene.value(QStringLiteral("lights")).toArray();
+        lights.removeLast();
+        scene.insert(QStringLiteral("lights"), lights);
+        QTemporaryDir dir;
+        const QString scenePath = dir.filePath(QStringLiteral("one-light.json"));
+        QFile out(scenePath);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(scene).toJson());
+        out.close();
+        openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        const QString lesson = sourcePath(QStringLiteral("tests/data/course/webglfundamentals/"));
+        QVERIFY_OK(m_window->document()->openSubmission(
+            scenePath, lesson + QStringLiteral("point-light.vert"),
+            lesson + QStringLiteral("point-light.frag")));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            fragmentEditor()->text().contains(QStringLiteral("u_specularColor")), 20000);
+        QVERIFY(waitForApplied());
+        QVERIFY(waitForVerdict(false));
+        const CheckReport &report = m_window->liveCheck()->lastResult()->report;
+        QVERIFY2(report.diagnosis.togetherExplains(), qPrintable(checkSummary(report)));
+        QCOMPARE(mistakeSetKeys(report.diagnosis.together),
+                 QStringLiteral("attenuation ambient halfway-vector"));
+        // The Uniforms dock says why, under the choice the student can change.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_window->findChild<QLabel *>(QStringLiteral("byUse:u_specularColor")), 10000);
+        QVERIFY(m_window->findChild<QLabel *>(QStringLiteral("byUse:u_specularColor"))
+                    ->text()
+                    .contains(QStringLiteral("line 26")));
     }
 
     // Issue 42, B: a WebGL project's program opens from its page, is
