@@ -17,7 +17,7 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
   clang-format-14                       # the tree's format, checked by .ci/run (scripts/format.sh)
   ccache                                # faster rebuilds (build.sh uses it when found)
-  chromium                              # opens the pages PhongLab writes (grade's report test)
+  chromium                              # grade's report test; the browser PhongLab is proved against (gl.tst_browserdifferential)
 )
 
 missing=()
