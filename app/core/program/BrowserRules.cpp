@@ -77,7 +77,6 @@ private:
         return oneOf(text(i), {"(", "[", "{"}) ? closeOf(i) + 1 : i + 1;
     }
 
-    void matchBrackets();
     void topLevel();
     int globalDeclaration(int begin, int end);
     void function(int open, int body);
@@ -111,25 +110,6 @@ private:
     int m_mainBody = -1;
     BrowserRewrite m_out;
 };
-
-void Rewriter::matchBrackets()
-{
-    m_partner.assign(m_n, -1);
-    std::vector<int> open;
-    for (int i = 0; i < m_n; ++i) {
-        const std::string_view t = text(i);
-        if (oneOf(t, {"(", "[", "{"})) {
-            open.push_back(i);
-        } else if (oneOf(t, {")", "]", "}"}) && !open.empty()) {
-            const char expected = t == ")" ? '(' : t == "]" ? '[' : '{';
-            if (text(open.back())[0] != expected)
-                continue;
-            m_partner[i] = open.back();
-            m_partner[open.back()] = i;
-            open.pop_back();
-        }
-    }
-}
 
 const StructType *Rewriter::structNamed(std::string_view name) const
 {
@@ -498,7 +478,7 @@ BrowserRewrite Rewriter::run()
     m_out.code = m_code;
     if (std::size_t(m_n) > kMaxTokens)
         return m_out;
-    matchBrackets();
+    m_partner = bracketPartners(m_tokens);
     topLevel();
     if (m_mainBody >= 0) {
         std::vector<Declared> atEntry;

@@ -155,4 +155,24 @@ std::vector<Token> tokenize(const QByteArray &code, std::vector<std::string_view
     return out;
 }
 
+std::vector<int> bracketPartners(const std::vector<Token> &tokens)
+{
+    std::vector<int> partner(tokens.size(), -1);
+    std::vector<int> open;
+    for (int i = 0; i < int(tokens.size()); ++i) {
+        const std::string_view t = tokens[std::size_t(i)].text;
+        if (oneOf(t, {"(", "[", "{"})) {
+            open.push_back(i);
+        } else if (oneOf(t, {")", "]", "}"}) && !open.empty()) {
+            const char expected = t == ")" ? '(' : t == "]" ? '[' : '{';
+            if (tokens[std::size_t(open.back())].text[0] != expected)
+                continue;
+            partner[std::size_t(i)] = open.back();
+            partner[std::size_t(open.back())] = i;
+            open.pop_back();
+        }
+    }
+    return partner;
+}
+
 } // namespace phonglab::glsl

@@ -39,5 +39,8 @@ struct Token {
 std::size_t tokenEnd(std::string_view s, std::size_t i);
 // `code` as tokens; `macroWords` receives every word of every directive.
 std::vector<Token> tokenize(const QByteArray &code, std::vector<std::string_view> &macroWords);
+// Each bracket's partner, by token index: -1 for tokens that are no
+// bracket and for a bracket that closes none or is never closed.
+std::vector<int> bracketPartners(const std::vector<Token> &tokens);
 
 } // namespace phonglab::glsl

@@ -16,7 +16,7 @@ UseTokens::UseTokens(const QByteArray &code, const ProgramBindings &bindings)
     , m_tokens(tokenize(code, m_macroWords))
     , m_n(int(m_tokens.size()))
 {
-    matchBrackets();
+    m_partner = bracketPartners(m_tokens);
 }
 
 int UseTokens::until(int i, std::string_view stop) const
@@ -24,25 +24,6 @@ int UseTokens::until(int i, std::string_view stop) const
     while (i < m_n && !is(i, stop) && !oneOf(text(i), {",", ";", ")", "]", "}"}))
         i = next(i);
     return i;
-}
-
-void UseTokens::matchBrackets()
-{
-    m_partner.assign(std::size_t(m_n), -1);
-    std::vector<int> open;
-    for (int i = 0; i < m_n; ++i) {
-        const std::string_view t = text(i);
-        if (oneOf(t, {"(", "[", "{"})) {
-            open.push_back(i);
-        } else if (oneOf(t, {")", "]", "}"}) && !open.empty()) {
-            const char expected = t == ")" ? '(' : t == "]" ? '[' : '{';
-            if (text(open.back())[0] != expected)
-                continue;
-            m_partner[std::size_t(i)] = open.back();
-            m_partner[std::size_t(open.back())] = i;
-            open.pop_back();
-        }
-    }
 }
 
 // The variables a reference starting at `i` names: `u`, `u[i]` (an array,

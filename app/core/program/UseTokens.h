@@ -48,8 +48,6 @@ public:
     int enclosingCall(int k) const;
 
 protected:
-    void matchBrackets();
-
     const ProgramBindings &m_variables;
     std::vector<std::string_view> m_macroWords;
     std::vector<glsl::Token> m_tokens;
