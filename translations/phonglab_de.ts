@@ -3938,6 +3938,21 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::WebGl1Limits</name>
+    <message>
+        <source>WebGL 1 has no %1 loops (GLSL ES 1.00, appendix A): the browser refuses this shader (&quot;This type of loop is not allowed&quot;); write a for loop with a constant bound</source>
+        <translation>WebGL 1 kennt keine %1-Schleifen (GLSL ES 1.00, Anhang A): der Browser lehnt diesen Shader ab (&quot;This type of loop is not allowed&quot;); eine for-Schleife mit konstanter Grenze schreiben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no constant: WebGL 1 starts a loop&apos;s index at a constant, and the browser refuses this shader (&quot;Loop index cannot be initialized with non-constant expression&quot;)</source>
+        <translation>&apos;%1&apos; ist keine Konstante: WebGL 1 beginnt den Index einer Schleife bei einer Konstanten, und der Browser lehnt diesen Shader ab (&quot;Loop index cannot be initialized with non-constant expression&quot;)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no constant: WebGL 1 compares a loop&apos;s index with a constant, and the browser refuses this shader (&quot;Loop index cannot be compared with non-constant expression&quot;); bound the loop by a constant and break at the count</source>
+        <translation>&apos;%1&apos; ist keine Konstante: WebGL 1 vergleicht den Index einer Schleife mit einer Konstanten, und der Browser lehnt diesen Shader ab (&quot;Loop index cannot be compared with non-constant expression&quot;); die Schleife durch eine Konstante begrenzen und bei der Anzahl mit break abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::BenchArgs</name>
     <message>
         <source>usage: phonglab bench [--scene FILE ...] [--quick] [--out DIR] [--budget SPEC] [--size WxH]

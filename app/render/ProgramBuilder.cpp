@@ -4,6 +4,7 @@
 #include "core/program/BrowserRules.h"
 #include "core/program/ShaderDialect.h"
 #include "core/program/ShaderLint.h"
+#include "core/program/WebGl1Limits.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -133,11 +134,18 @@ GlShader ProgramBuilder::compileStage(GLenum type, const ShaderSource &source,
     for (const LintFinding &f : lintShader(source.code))
         diagnostics.push_back(
             {step, ShaderDiagnostic::Severity::Warning, source.name, f.line, f.column, f.message});
+    // What the browser refuses in WebGL 1, this driver accepts: refused here too.
+    const std::vector<WebGlRefusal> refused = webGl1Refusals(source.code);
+    for (const WebGlRefusal &r : refused)
+        diagnostics.push_back(
+            {step, ShaderDiagnostic::Severity::Error, source.name, r.line, r.column, r.message});
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
         ensureError(result, step, source.name, log);
         return {};
     }
+    if (!refused.empty())
+        return {};
     return shader;
 }
 
