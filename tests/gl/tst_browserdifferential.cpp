@@ -246,10 +246,13 @@ void TestBrowserDifferential::probesDrawTheBrowsersPixels()
         QVERIFY2(worst <= kTolerance, qPrintable(where));
         qInfo("probe %s: the browser's pixels (within %d/255)", qPrintable(name), kTolerance);
     } else {
-        QVERIFY2(worst > kTolerance,
-                 qPrintable(name
-                            + QStringLiteral(" now matches the browser: take it off the "
-                                             "list of probes PhongLab cannot match")));
+        // The list is this driver's (Mesa llvmpipe: mediump in 16 bits, no
+        // clamped index); another GPU may happen to agree with the browser.
+        if (m_offscreen.glRendererName().contains(QLatin1String("llvmpipe")))
+            QVERIFY2(worst > kTolerance,
+                     qPrintable(name
+                                + QStringLiteral(" now matches the browser: take it off the "
+                                                 "list of probes PhongLab cannot match")));
         qInfo("probe %s: differs, as listed: %s (%s)", qPrintable(name), qPrintable(listed),
               qPrintable(where));
     }
