@@ -15,6 +15,7 @@ class TestBrowserRules : public QObject
 private slots:
     void unsetVariablesStartAtZero_data();
     void unsetVariablesStartAtZero();
+    void indicesAreClampedIntoTheArray();
     void valuesAndConstantsAreLeftAlone();
     void everyLineStaysTheStudents();
     void columnsMapBack();
@@ -104,6 +105,33 @@ void TestBrowserRules::unsetVariablesStartAtZero()
         applyBrowserRules(code, fragment ? ShaderStage::Fragment : ShaderStage::Vertex);
     QCOMPARE(r.code, expected);
     QCOMPARE(r.zeroed, zeroed);
+}
+
+void TestBrowserRules::indicesAreClampedIntoTheArray()
+{
+    // A uniform array, a local one sized by a macro, a parameter: each index
+    // that is no number is clamped, as ANGLE does; declarations, number
+    // indices and members of structs are left as written.
+    const QByteArray code =
+        "#version 300 es\n#define N 2\nuniform vec3 L[4], M[N];\nstruct S { float k[2]; };\n"
+        "uniform S s;\nout vec4 o;\nfloat f(float p[2], int j) { return p[j]; }\n"
+        "void main() {\n  float a[N] = float[N](1.0, 2.0);\n  int i = 5;\n"
+        "  o = vec4(L[i] + M[i - 1] + L[0], a[i] + s.k[i] + f(a, i));\n}\n";
+    const BrowserRewrite r = applyBrowserRules(code, ShaderStage::Fragment);
+    const auto clamped = [](const char *array, const char *index, const char *size) {
+        return QByteArray(array) + "[int(clamp(float(" + index + "), 0.0, float(" + size
+            + ") - 1.0))]";
+    };
+    QVERIFY2(r.code.contains(clamped("L", "i", "4")), r.code.constData());
+    QVERIFY(r.code.contains(clamped("M", "i - 1", "N")));
+    QVERIFY(r.code.contains(clamped("a", "i", "N")));
+    QVERIFY(r.code.contains(clamped("p", "j", "2")));
+    QVERIFY(r.code.contains("L[0]"));
+    QVERIFY(r.code.contains("s.k[i]"));
+    QVERIFY(r.code.contains("uniform vec3 L[4], M[N];"));
+    QVERIFY(r.code.contains("float a[N] = float[N](1.0, 2.0);"));
+    QVERIFY(r.code.contains("float f(float p[2], int j)"));
+    QCOMPARE(r.code.count('\n'), code.count('\n'));
 }
 
 void TestBrowserRules::valuesAndConstantsAreLeftAlone()

@@ -3,6 +3,7 @@
 #include "core/program/BrowserRulesRewriter.h"
 
 #include <algorithm>
+#include <map>
 
 namespace phonglab {
 
@@ -190,6 +191,60 @@ int Rewriter::localDeclaration(int begin, int close)
     return end + 1;
 }
 
+// Whether the `[` at `open` sizes an array where it is declared
+// (`vec3 a[3]`, `float b[2], c[N];`, a parameter) rather than indexes one.
+bool Rewriter::isDeclarationBracket(int open) const
+{
+    const int before = open - 2;
+    if (isType(text(before)) || isQualifier(text(before)))
+        return true;
+    if (!is(before, ",") || !oneOf(text(closeOf(open) + 1), {";", ",", "="}))
+        return false;
+    int start = before;
+    while (start > 0 && !oneOf(text(start - 1), {";", "{", "}"}))
+        --start;
+    while (isQualifier(text(start))
+           || oneOf(text(start), {"uniform", "in", "out", "varying", "attribute"}))
+        ++start;
+    return isType(text(start));
+}
+
+// ANGLE clamps every index that is no constant into the array
+// (clampIndirectArrayBounds): `a[i]` reads `a[clamp(i, 0, N - 1)]`, so an
+// index past the end reads the last element in the browser. The same for
+// every array the shader declares with a size; members of structs and
+// vectors are left as they are.
+void Rewriter::clampIndices()
+{
+    std::map<std::string_view, QByteArray> sizes; // empty: sized twice, differently
+    std::vector<bool> declaring(std::size_t(m_n), false);
+    for (int i = 1; i + 1 < m_n; ++i) {
+        if (!is(i, "[") || !m_tokens[std::size_t(i - 1)].word || !isDeclarationBracket(i))
+            continue;
+        declaring[std::size_t(i)] = true;
+        const int close = closeOf(i);
+        if (close >= m_n || close == i + 1)
+            continue;
+        const qsizetype from = m_tokens[std::size_t(i + 1)].text.data() - m_code.constData();
+        const qsizetype to = m_tokens[std::size_t(close)].text.data() - m_code.constData();
+        const QByteArray size = m_code.mid(from, to - from).simplified();
+        const auto [it, added] = sizes.try_emplace(text(i - 1), size);
+        if (!added && it->second != size)
+            it->second.clear();
+    }
+    for (int i = 1; i + 2 < m_n; ++i) {
+        if (!is(i, "[") || declaring[std::size_t(i)] || is(i - 2, "."))
+            continue;
+        const auto it = sizes.find(text(i - 1));
+        const int close = closeOf(i);
+        if (it == sizes.end() || it->second.isEmpty() || close >= m_n
+            || (close == i + 2 && isDigit(text(i + 1)[0])))
+            continue; // a constant index ANGLE checks when it compiles
+        insertAfter(i, "int(clamp(float(");
+        insertBefore(close, "), 0.0, float(" + it->second + ") - 1.0))");
+    }
+}
+
 BrowserRewrite Rewriter::run()
 {
     m_out.code = m_code;
@@ -197,6 +252,7 @@ BrowserRewrite Rewriter::run()
         return m_out;
     m_partner = bracketPartners(m_tokens);
     topLevel();
+    clampIndices();
     if (m_mainBody >= 0) {
         std::vector<Declared> atEntry;
         const auto mentions = [&](std::string_view word) {

@@ -66,6 +66,9 @@ private:
     }
 
     void topLevel();
+    bool isDeclarationBracket(int open) const;
+    void clampIndices();
+    void insertBefore(int token, const QByteArray &text);
     int globalDeclaration(int begin, int end);
     void function(int open, int body);
     void body(int open, int close);

@@ -155,6 +155,12 @@ std::optional<QByteArray> Rewriter::zeroing(const Declared &d) const
         + "[phonglab_i] = " + *zero + ';';
 }
 
+void Rewriter::insertBefore(int token, const QByteArray &text)
+{
+    const Token &t = m_tokens[std::size_t(token)];
+    m_out.insertions.push_back({t.text.data() - m_code.constData(), t.line, t.column, text});
+}
+
 void Rewriter::insertAfter(int token, const QByteArray &text)
 {
     const Token &t = m_tokens[token];
