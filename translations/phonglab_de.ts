@@ -520,6 +520,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>the term&apos;s only factor: %1</source>
         <translation>der einzige Faktor des Terms: %1</translation>
     </message>
+    <message>
+        <source>its columns scale the ambient, diffuse and specular terms in that order</source>
+        <translation>seine Spalten skalieren den ambienten, diffusen und spekularen Term in dieser Reihenfolge</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BuildStatusText</name>
@@ -3260,6 +3264,14 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>a gain whose term&apos;s other factors hold its whole value: 1</source>
         <translation>ein Faktor, dessen Term seinen ganzen Wert schon in den anderen Faktoren hat: 1</translation>
+    </message>
+    <message>
+        <source>Ia, Id and Is of light 0, as a mat3&apos;s columns or a vec3[3]</source>
+        <translation>Ia, Id und Is von Licht 0, als Spalten einer mat3 oder als vec3[3]</translation>
+    </message>
+    <message>
+        <source>ka, kd and ks, as a mat3&apos;s columns or a vec3[3]</source>
+        <translation>ka, kd und ks, als Spalten einer mat3 oder als vec3[3]</translation>
     </message>
 </context>
 <context>

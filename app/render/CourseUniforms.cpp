@@ -1,5 +1,6 @@
 #include "CourseUniforms.h"
 
+#include <array>
 #include <vector>
 
 namespace phonglab {
@@ -24,6 +25,20 @@ void setCourseUniforms(ShaderProgram &program, const Scene &scene, std::span<con
     program.setPerLight(M::SpecularProduct, specularProduct);
     program.setPerLight(M::LightColor, color);
     program.setPerLight(M::LightPositionCamera, cameraPosition, 1.0);
+    // The terms' parts in one uniform: a mat3's columns, or a vec3[3].
+    glm::dvec3 id(0.0);
+    glm::dvec3 is(0.0);
+    if (!lights.empty()) {
+        id = scene.lights[std::size_t(lights.front())].diffuse;
+        is = scene.lights[std::size_t(lights.front())].specular;
+    }
+    const std::array<glm::dvec3, 3> light = {scene.ambient, id, is};
+    const std::array<glm::dvec3, 3> coefficients = {material.ka, material.kd, material.ks};
+    program.setMatrix(M::LightTerms, glm::dmat3(light[0], light[1], light[2]));
+    program.setPerLight(M::LightTerms, light);
+    program.setMatrix(M::MaterialTerms,
+                      glm::dmat3(coefficients[0], coefficients[1], coefficients[2]));
+    program.setPerLight(M::MaterialTerms, coefficients);
 }
 
 } // namespace phonglab

@@ -146,6 +146,17 @@ private slots:
         QVERIFY(c.json.value(QStringLiteral("together")).isNull());
     }
 
+    // Ia, Id and Is as a mat3's columns: bound by use (light-terms), one
+    // light, and the correct pair passes with no --bind.
+    void lightPartsAsMatrixColumns()
+    {
+        const Check c =
+            check(QStringLiteral("columns/phong.vert"), QStringLiteral("columns/phong.frag"));
+        QVERIFY2(c.run.exitCode == 0, qPrintable(said(c)));
+        QCOMPARE(verdict(c), QStringLiteral("pass"));
+        QCOMPARE(binding(c, QStringLiteral("uLamp")), QStringLiteral("light-terms"));
+    }
+
     // The book's own fragment shader: the halfway vector and no attenuation,
     // both named.
     void angelBlinnIsNamedInFull()

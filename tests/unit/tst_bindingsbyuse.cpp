@@ -61,6 +61,7 @@ private slots:
     void termFactorsSplitTheProducts();
     void aGainBesideANamedColour();
     void aGainOfTheWholeColourStaysTheUsers();
+    void columnsAndElementsScaleTheirTerms();
     void namesAndTheUsersWordWin();
     void whatNoTermTakesStaysUnbound();
     void survivesEveryPrefix();
@@ -105,6 +106,14 @@ void TestBindingsByUse::loopBoundIsLightCount()
     QCOMPARE(b.of("howMany"), M::LightCount);
     QCOMPARE(b.binding("howMany")->byUse->line, 9);
     QCOMPARE(b.of("spots"), M::LightPosition); // subtracted from the surface position, per light
+
+    // The same as the driver is handed it, the index clamped by the
+    // browser's rules (core/program/BrowserRules).
+    QByteArray clamped = fragment;
+    clamped.replace("spots[k]", "spots[int(clamp(float(k), 0.0, float(4) - 1.0))]");
+    const Bound c = bindAll(
+        {uniform("howMany", GlslType::Int), uniform("spots", GlslType::Vec3, 4)}, kVertex, clamped);
+    QCOMPARE(c.of("howMany"), M::LightCount);
 }
 
 void TestBindingsByUse::webGl1BreakIsLightCount()
@@ -256,6 +265,41 @@ void TestBindingsByUse::aGainOfTheWholeColourStaysTheUsers()
          uniform("diffuseProduct", GlslType::Vec3), uniform("specularProduct", GlslType::Vec3)},
         kVertex, fragment);
     QCOMPARE(b.of("exposure"), std::nullopt);
+}
+
+void TestBindingsByUse::columnsAndElementsScaleTheirTerms()
+{
+    // A mat3 whose columns are Ia, Id, Is beside named coefficients, and a
+    // vec3[3] of ka, kd, ks beside named intensities.
+    const QByteArray lightColumns =
+        "precision highp float;\nuniform mat3 lamp;\nuniform vec3 ka, kd, ks;\n"
+        "varying vec3 n, L, R, V;\nvoid main() {\n"
+        "  vec3 c = lamp[0] * ka + lamp[1] * kd * max(dot(n, L), 0.0)"
+        " + lamp[2] * ks * pow(max(dot(R, V), 0.0), 8.0);\n"
+        "  gl_FragColor = vec4(c, 1.0);\n}\n";
+    const Bound a = bindAll({uniform("lamp", GlslType::Mat3), uniform("ka", GlslType::Vec3),
+                             uniform("kd", GlslType::Vec3), uniform("ks", GlslType::Vec3)},
+                            kVertex, lightColumns);
+    QCOMPARE(a.of("lamp"), M::LightTerms);
+    QCOMPARE(a.binding("lamp")->byUse->line, 6);
+    QCOMPARE(a.bindings.lightCapacity(), 1);
+    const QByteArray materialElements =
+        "precision highp float;\nuniform vec3 coefs[3];\nuniform vec3 Ia, Id, Is;\n"
+        "varying vec3 n, L, R, V;\nvoid main() {\n"
+        "  vec3 c = Ia * coefs[0] + Id * coefs[1] * max(dot(n, L), 0.0)"
+        " + Is * coefs[2] * pow(max(dot(R, V), 0.0), 8.0);\n"
+        "  gl_FragColor = vec4(c, 1.0);\n}\n";
+    const Bound b = bindAll({uniform("coefs", GlslType::Vec3, 3), uniform("Ia", GlslType::Vec3),
+                             uniform("Id", GlslType::Vec3), uniform("Is", GlslType::Vec3)},
+                            kVertex, materialElements);
+    QCOMPARE(b.of("coefs"), M::MaterialTerms);
+    // Out of order (the specular column in the ambient term): no binding.
+    QByteArray swapped = lightColumns;
+    swapped.replace("lamp[0] * ka", "lamp[2] * ka");
+    const Bound c = bindAll({uniform("lamp", GlslType::Mat3), uniform("ka", GlslType::Vec3),
+                             uniform("kd", GlslType::Vec3), uniform("ks", GlslType::Vec3)},
+                            kVertex, swapped);
+    QCOMPARE(c.of("lamp"), std::nullopt);
 }
 
 void TestBindingsByUse::namesAndTheUsersWordWin()

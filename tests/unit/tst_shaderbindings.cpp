@@ -137,7 +137,7 @@ private slots:
     {
         for (const QString &key : bindingMeaningKeys())
             QCOMPARE(bindingMeaningKey(*bindingMeaningFromKey(key)), key);
-        QCOMPARE(bindingMeaningKeys().size(), int(M::Gain) + 1);
+        QCOMPARE(bindingMeaningKeys().size(), int(kBindingMeaningCount));
         QVERIFY(!bindingMeaningFromKey(QStringLiteral("Model")));
     }
 

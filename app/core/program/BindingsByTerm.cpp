@@ -35,6 +35,7 @@ struct Factor {
     int variable = -1;
     int line = 0; // where it was read
     ShaderStage stage = ShaderStage::Fragment;
+    int element = -1; // `m[1]`: the column or element taken; -1 for the whole
 };
 
 struct Product {
@@ -123,9 +124,11 @@ Sum TermReader::operand(int begin, int end, int depth) const
     int after = begin;
     const std::vector<int> vars = variablesAt(begin, &after);
     if (!vars.empty() && after == end) {
+        const bool element =
+            is(begin + 1, "[") && closeOf(begin + 1) == begin + 3 && isDigit(text(begin + 2)[0]);
         Product p;
         for (int v : vars)
-            p.factors.push_back({v, line(begin), m_stage});
+            p.factors.push_back({v, line(begin), m_stage, element ? text(begin + 2)[0] - '0' : -1});
         return {p};
     }
     if (end == begin + 1 || (is(begin + 1, ".") && end == begin + 3)) // a local, or its swizzle
@@ -149,6 +152,12 @@ Sum TermReader::sum(int begin, int end, int depth) const
         out = sum(question + 1, colon, depth + 1);
         const Sum otherwise = sum(colon + 1, end, depth + 1);
         out.insert(out.end(), otherwise.begin(), otherwise.end());
+        // `N·L > 0.0 ? pow(...) : 0.0`: the constant branch is no term.
+        const bool termed = std::any_of(out.begin(), out.end(),
+                                        [](const Product &p) { return p.term != Term::None; });
+        if (termed)
+            std::erase_if(
+                out, [](const Product &p) { return p.term == Term::None && p.factors.empty(); });
         return out;
     }
     for (int piece = begin; piece < end;) {
@@ -261,6 +270,8 @@ Parts partsOf(M meaning, Term term)
     case M::Kd: return {false, diffuse};
     case M::Ks: return {false, specular};
     case M::MaterialColor: return {false, ambient || diffuse};
+    case M::LightTerms: return {true, false};
+    case M::MaterialTerms: return {false, true};
     default: return {};
     }
 }
@@ -379,6 +390,59 @@ int TermBinder::bind(Term term, const std::vector<Factor> &factors, const std::v
     return m_bound - before;
 }
 
+// The term a column or element stands for in the equation's order.
+int termColumn(Term term)
+{
+    return term == Term::None ? 0 : term == Term::Diffuse ? 1 : 2;
+}
+
+// A mat3 or vec3[3] whose column k scales term k (ambient, diffuse,
+// specular) in two terms or more holds their light parts where the other
+// factors are the material's, or their material parts where they are the
+// light's: `light-terms`, `material-terms`.
+int bindTermColumns(ProgramBindings &bindings, const Sum &reaching)
+{
+    std::map<int, std::vector<const Product *>> uses; // variable -> products with a column of it
+    for (const Product &p : reaching)
+        for (const Factor &f : p.factors)
+            if (f.element >= 0 && p.term != Term::Mixed)
+                uses[f.variable].push_back(&p);
+    int bound = 0;
+    for (const auto &[variable, products] : uses) {
+        VariableBinding &b = bindings.variables[std::size_t(variable)];
+        if (b.meaning || b.isExplicit || !bindingFits(M::LightTerms, b.variable))
+            continue;
+        std::vector<Term> terms;
+        bool inOrder = true;
+        Parts others;
+        const Factor *first = nullptr;
+        for (const Product *p : products) {
+            for (const Factor &f : p->factors) {
+                const std::optional<M> meaning =
+                    bindings.variables[std::size_t(f.variable)].meaning;
+                if (f.variable != variable) {
+                    const Parts parts = meaning ? partsOf(*meaning, p->term) : Parts{};
+                    others.light = others.light || parts.light;
+                    others.material = others.material || parts.material;
+                    continue;
+                }
+                first = first ? first : &f;
+                inOrder = inOrder && f.element == termColumn(p->term);
+                if (std::find(terms.begin(), terms.end(), p->term) == terms.end())
+                    terms.push_back(p->term);
+            }
+        }
+        if (!inOrder || terms.size() < 2 || others.light == others.material || !first)
+            continue;
+        b.meaning = others.material ? M::LightTerms : M::MaterialTerms;
+        b.byUse = UseEvidence{first->stage, first->line,
+                              TermWords::tr("its columns scale the ambient, diffuse and specular "
+                                            "terms in that order")};
+        ++bound;
+    }
+    return bound;
+}
+
 } // namespace
 
 int bindTermFactors(ProgramBindings &bindings, const QByteArray &vertex, const QByteArray &fragment)
@@ -414,13 +478,14 @@ int bindTermFactors(ProgramBindings &bindings, const QByteArray &vertex, const Q
             shared.push_back(variable);
         // What scales every term scales the whole colour (an exposure the
         // user turns in the Uniforms dock): no factor of the equation.
-        if (entry.second.size() == 3)
+        if (entry.second.size() == 3
+            && bindings.variables[std::size_t(variable)].variable.type == GlslType::Float)
             for (auto &term : terms)
                 std::erase_if(term.second,
                               [variable](const Factor &f) { return f.variable == variable; });
     }
+    int bound = bindTermColumns(bindings, reaching);
     TermBinder binder(bindings);
-    int bound = 0;
     for (Term term : {Term::Diffuse, Term::Specular, Term::None})
         bound += binder.bind(term, terms[term], shared);
     return bound;

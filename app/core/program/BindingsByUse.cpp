@@ -151,9 +151,12 @@ void UseReader::loopBound(int forWord)
     const std::string_view index = text(initEnd - 3);
     const int body = close + 1;
     const int bodyEnd = is(body, "{") ? closeOf(body) : until(body, ";");
+    // `u[i]`, or `u[int(clamp(float(i), ...))]` as the browser's rules write it.
     bool indexesArrays = false;
     for (int k = body; k < bodyEnd && !indexesArrays; ++k)
-        indexesArrays = is(k, "[") && text(k + 1) == index && is(k + 2, "]");
+        if (is(k, "["))
+            for (int a = k + 1; a < closeOf(k) && !indexesArrays; ++a)
+                indexesArrays = text(a) == index;
     if (!indexesArrays)
         return;
     const QString reason = BindingsByUseWords::tr("bounds the loop over the lights");

@@ -54,6 +54,8 @@ constexpr std::array kKeys = {
     std::pair{M::MaterialColor, "material-color"},
     std::pair{M::LightPositionCamera, "light-position-camera"},
     std::pair{M::Gain, "gain"},
+    std::pair{M::LightTerms, "light-terms"},
+    std::pair{M::MaterialTerms, "material-terms"},
 };
 
 constexpr std::array kDescriptions = {
@@ -125,6 +127,12 @@ constexpr std::array kDescriptions = {
     std::pair{M::Gain,
               QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
                                 "a gain whose term's other factors hold its whole value: 1")},
+    std::pair{M::LightTerms,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "Ia, Id and Is of light 0, as a mat3's columns or a vec3[3]")},
+    std::pair{M::MaterialTerms,
+              QT_TRANSLATE_NOOP("phonglab::ShaderBindings",
+                                "ka, kd and ks, as a mat3's columns or a vec3[3]")},
 };
 
 bool isOneOf(GlslType type, std::initializer_list<GlslType> types)
@@ -204,6 +212,9 @@ bool bindingFits(BindingMeaning meaning, const ShaderVariable &v)
     using T = GlslType;
     if (isVertexInput(meaning) != v.isInput)
         return false;
+    if (meaning == M::LightTerms || meaning == M::MaterialTerms)
+        return (v.type == T::Mat3 && !v.isArray)
+            || (v.type == T::Vec3 && v.isArray && v.arraySize == 3);
     if (v.isArray && !isPerLight(meaning))
         return false;
     switch (meaning) {
@@ -238,6 +249,8 @@ bool bindingFits(BindingMeaning meaning, const ShaderVariable &v)
     case M::LightCount: return isOneOf(v.type, {T::Int, T::UInt, T::Float});
     case M::Shininess: return isOneOf(v.type, {T::Float, T::Int});
     case M::Gain: return isOneOf(v.type, {T::Float, T::Vec3, T::Vec4});
+    case M::LightTerms:
+    case M::MaterialTerms: return false; // above
     }
     return false;
 }
@@ -275,6 +288,9 @@ std::optional<int> ProgramBindings::lightCapacity() const
         const int r = b.variable.isArray ? b.variable.arraySize : b.lightIndex + 1;
         room[*b.meaning] = std::max(room[*b.meaning], r);
     }
+    // The terms' parts in one uniform hold light 0's alone.
+    if (!bound(M::LightTerms).empty())
+        room[M::LightTerms] = 1;
     std::optional<int> capacity;
     for (const auto &[meaning, r] : room)
         capacity = capacity ? std::min(*capacity, r) : r;

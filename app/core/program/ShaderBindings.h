@@ -55,9 +55,14 @@ enum class BindingMeaning {
     // (a scalar `ka` beside a colour given Ia·ka): 1 (a float, or a vector
     // of ones). Bound by use only.
     Gain,
+    // The three terms' parts in one uniform, as a mat3's columns or a
+    // vec3[3]'s elements, in the equation's order (ambient, diffuse,
+    // specular): Ia, Id, Is of light 0, or ka, kd, ks.
+    LightTerms,
+    MaterialTerms,
 };
 // How many meanings there are (the last one + 1): a table indexed by them.
-inline constexpr std::size_t kBindingMeaningCount = std::size_t(BindingMeaning::Gain) + 1;
+inline constexpr std::size_t kBindingMeaningCount = std::size_t(BindingMeaning::MaterialTerms) + 1;
 
 QString bindingMeaningKey(BindingMeaning meaning);
 std::optional<BindingMeaning> bindingMeaningFromKey(const QString &key);
