@@ -145,7 +145,7 @@ std::optional<QByteArray> Rewriter::zeroing(const Declared &d) const
     const int begin = d.sizeBegin >= 0 ? d.sizeBegin : -1;
     if (begin < 0)
         return name + " = " + *zero + ';';
-    if (d.sizeEnd <= begin)
+    if (d.sizeEnd <= begin || d.sizeEnd >= m_n)
         return std::nullopt; // `float a[];`: sized by its initializer, which it has
     const qsizetype from = m_tokens[begin].text.data() - m_code.constData();
     const qsizetype to = m_tokens[d.sizeEnd].text.data() - m_code.constData();
