@@ -4,7 +4,6 @@
 #include "core/check/BindingConflicts.h"
 #include "core/check/ImageMetrics.h"
 #include "core/program/CoursePrelude.h"
-#include "core/program/VertexLighting.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
@@ -210,9 +209,8 @@ CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
                                    std::optional<PhongEquation> equation, const QString &scenePath)
 {
     findings->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
-    if (!findings->report.passed()
-        && lightsPerVertex(stageText(findings->stages, true), stageText(findings->stages, false)))
-        nameGouraudFromCode(findings->report.diagnosis);
+    nameWhatTheCodeDoes(findings->report, stageText(findings->stages, true),
+                        stageText(findings->stages, false));
     if (!findings->report.comparable()) {
         findings->errors.push_back(inputError(
             scenePath,

@@ -336,6 +336,26 @@ private slots:
         QVERIFY(m_window->findChild<QLabel *>(QStringLiteral("byUse:u_specularColor"))
                     ->text()
                     .contains(QStringLiteral("line 26")));
+
+        // Angel's shadedCube lights per vertex: `gouraud` first, from its
+        // code, in the window as in `check` (gl.tst_coursecode).
+        const QString angel = sourcePath(QStringLiteral("tests/data/course/angel/"));
+        QVERIFY_OK(m_window->document()->openSubmission(scenePath,
+                                                        angel + QStringLiteral("shadedCube.vert"),
+                                                        angel + QStringLiteral("shadedCube.frag")));
+        QTRY_VERIFY_WITH_TIMEOUT(fragmentEditor()->text().contains(QStringLiteral("fColor")),
+                                 20000);
+        QVERIFY(waitForApplied());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_window->liveCheck()->lastResult()
+                && m_window->liveCheck()->lastResult()->scene.vertexShader.endsWith(
+                    QLatin1String("shadedCube.vert")),
+            kCheckTimeoutMs);
+        QVERIFY(waitForVerdict(false));
+        const MistakeDiagnosis &cube = m_window->liveCheck()->lastResult()->report.diagnosis;
+        QVERIFY(!cube.findings.empty());
+        QCOMPARE(cube.findings.front().key, ShaderMistake::Gouraud);
+        QVERIFY(cube.findings.front().fromCode);
     }
 
     // Issue 42, B: a WebGL project's program opens from its page, is

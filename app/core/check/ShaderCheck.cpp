@@ -2,6 +2,7 @@
 #include "core/support/Language.h"
 
 #include "core/check/MistakeSets.h"
+#include "core/program/VertexLighting.h"
 #include "core/reference/PhongReference.h"
 #include "core/reference/ReferenceEdges.h"
 
@@ -187,6 +188,12 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
     }
     std::erase(report.diagnosis.undetectable, ShaderMistake::BackfaceSpecular);
     return report;
+}
+
+void nameWhatTheCodeDoes(CheckReport &report, const QByteArray &vertex, const QByteArray &fragment)
+{
+    if (report.comparable() && !report.passed() && lightsPerVertex(vertex, fragment))
+        nameGouraudFromCode(report.diagnosis);
 }
 
 RgbImage checkHeatmap(const RgbImage &yours, const CheckReference &reference,

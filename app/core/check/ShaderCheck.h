@@ -4,6 +4,8 @@
 #include "core/reference/PhongEquation.h"
 #include "core/reference/SceneHits.h"
 
+#include <QByteArray>
+
 #include <functional>
 #include <optional>
 #include <utility>
@@ -79,6 +81,11 @@ struct CheckReport {
 CheckReport checkRender(const RgbImage &yours, const CheckReference &reference,
                         int toleranceSteps = kDefaultCheckToleranceSteps,
                         std::optional<PhongEquation> demanded = std::nullopt);
+// What the program's text says that the image cannot: a program that
+// lights per vertex (core/program/VertexLighting) is `gouraud` first, with
+// its lines, whatever else its render shows. For every check of a render
+// whose sources are known: `check`, `grade` and the window alike.
+void nameWhatTheCodeDoes(CheckReport &report, const QByteArray &vertex, const QByteArray &fragment);
 
 // |yours − exact| per pixel, as errorHeatmap() draws it: compared pixels
 // from dark green (exact) through bright green (1/255) and yellow (4/255) to

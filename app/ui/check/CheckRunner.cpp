@@ -190,6 +190,9 @@ void CheckRunner::start(Request request)
                 if (result.reference) {
                     const RgbImage yours = toRgbImage(result.yours);
                     result.report = checkRender(yours, *result.reference);
+                    if (request.frame.sources)
+                        nameWhatTheCodeDoes(result.report, request.frame.sources->vertex.code,
+                                            request.frame.sources->fragment.code);
                     // The exact image of the equation the frame was checked by:
                     // the slide's, for a shader that matched it.
                     const PhongEquation equation = result.report.equation;
