@@ -1,6 +1,6 @@
 #include "CheckCommand.h"
 
-#include "CheckReportOutput.h"
+#include "render/CheckReportOutput.h"
 #include "CheckSteps.h"
 #include "CliCommon.h"
 #include "GradedChild.h"

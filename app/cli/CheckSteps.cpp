@@ -1,9 +1,7 @@
 #include "CheckSteps.h"
 
 #include "SceneStages.h"
-#include "core/check/BindingConflicts.h"
 #include "core/check/ImageMetrics.h"
-#include "core/program/CoursePrelude.h"
 #include "core/project/ProjectShader.h"
 #include "mesh/import/SceneMeshes.h"
 #include "render/OffscreenRenderer.h"
@@ -61,53 +59,6 @@ QString declaringFile(const QString &name, const CheckFindings &outcome, const S
 
 } // namespace
 
-namespace {
-
-// The lower precisions the stages declare and, where they were checked at
-// highp, how far the render as written is from the one checked: drawn again
-// with the declared precision (a second build and draw, only for shaders
-// that declare mediump or lowp). `stages`: the texts the first build read.
-PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
-                                  const std::vector<ShaderStageText> &stages, const Scene &checked,
-                                  QSize size, const QImage &checkedImage)
-{
-    PrecisionFinding finding;
-    finding.checkedAt = checked.course.precision;
-    StageSources sources;
-    for (const ShaderStageText &s : stages) {
-        const ShaderStage stage = s.vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
-        (s.vertex ? sources.vertex : sources.fragment) = ShaderSource{s.path, s.text.toUtf8()};
-        for (const QString &lower :
-             coursePreludeFor(s.text.toUtf8(), stage, checked.course).lowerPrecisions)
-            if (!finding.declared.contains(lower))
-                finding.declared << lower;
-    }
-    if (finding.declared.isEmpty() || finding.checkedAt != PrecisionRule::Highp)
-        return finding;
-    Scene asWritten = checked;
-    asWritten.course.precision = PrecisionRule::AsWritten;
-    Renderer &renderer = offscreen.renderer();
-    renderer.updateSceneParameters(asWritten);
-    const BuildReport built = renderer.setProgramSources(sources.vertex, sources.fragment);
-    if (!built.ok) {
-        for (const ShaderDiagnostic &d : built.diagnostics)
-            if (d.isError()) {
-                finding.asWrittenError = d.format();
-                break;
-            }
-        return finding;
-    }
-    const QImage image = offscreen.renderImage(size);
-    if (image.isNull())
-        return finding;
-    const ImageComparison c = compareImages(toRgbImage(image), toRgbImage(checkedImage));
-    finding.asWrittenMaxError = c.maxError;
-    finding.asWrittenPsnr = c.psnr;
-    return finding;
-}
-
-} // namespace
-
 CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
 {
     CheckDrawing drawing;
@@ -159,23 +110,22 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     }
     // Nothing PhongLab could not bind may decide the verdict: the student's
     // names are PhongLab's gap, never the student's mistake.
-    ShaderProgram &linked = renderer.program();
-    outcome.bindings = linked.bindings();
-    drawing.lightCapacity = outcome.bindings.lightCapacity();
-    outcome.notes << outcome.bindings.notes;
-    for (const QString &problem : outcome.bindings.problems)
+    const ProgramFindings found = findProgramFindings(renderer.program(), scene);
+    outcome.bindings = found.bindings;
+    drawing.lightCapacity = found.lightCapacity;
+    outcome.notes << found.bindings.notes;
+    for (const QString &problem : found.problems)
         outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
-    for (const UnboundUniform &unbound : unboundUniforms(linked, scene))
+    for (const UnboundUniform &unbound : found.unbound)
         outcome.errors.push_back(
-            inputError(declaringFile(unbound.name, outcome, files), unbound.message));
-    for (const QString &conflict : bindingConflicts(outcome.bindings, scene))
+            inputError(declaringFile(unbound.name, outcome, files), unboundMessage(unbound)));
+    for (const QString &conflict : found.conflicts)
         outcome.errors.push_back(inputError(QStringLiteral("--bind"), conflict));
     if (!outcome.errors.empty())
         return drawing;
-    QString lightsNote;
-    const Scene checked = sceneForCapacity(scene, drawing.lightCapacity, &lightsNote);
-    if (!lightsNote.isEmpty()) {
-        outcome.notes << lightsNote;
+    const Scene &checked = found.checked;
+    if (!found.lightsNote.isEmpty()) {
+        outcome.notes << found.lightsNote;
         renderer.updateSceneParameters(checked);
     }
     drawing.image = offscreen.renderImage(input.size);

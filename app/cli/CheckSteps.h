@@ -1,5 +1,5 @@
 #pragma once
-#include "CheckReportOutput.h"
+#include "render/CheckReportOutput.h"
 #include "core/check/ShaderCheck.h"
 #include "core/reference/PhongEquation.h"
 #include "core/scene/MeshData.h"

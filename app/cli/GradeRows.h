@@ -1,5 +1,5 @@
 #pragma once
-#include "CheckReportOutput.h"
+#include "render/CheckReportOutput.h"
 #include "ClassFolder.h"
 #include "SceneOverrides.h"
 #include "core/reference/PhongEquation.h"

@@ -148,7 +148,7 @@ int render(const RenderArgs &args)
         return kExitFailure;
     }
     for (const UnboundUniform &unbound : unboundUniforms(renderer.program(), scene))
-        printErrLine(QStringLiteral("phonglab: warning: %1").arg(unbound.message));
+        printErrLine(QStringLiteral("phonglab: warning: %1").arg(unboundMessage(unbound)));
     const QImage image = offscreen.renderImage(args.size);
     if (image.isNull()) {
         printError(RenderCommandWords::tr("rendering failed"));

@@ -98,127 +98,17 @@ Result<BuildReport> buildStages(Renderer &renderer, const StageFiles &files,
     return renderer.setProgramSources(stages.vertex, stages.fragment);
 }
 
-namespace {
-
-bool allZero(const UniformSnapshot &snapshot, const VariableBinding &b)
+QString unboundMessage(const UnboundUniform &unbound)
 {
-    for (const UniformValue &v : snapshot.values) {
-        const QString name = QString::fromUtf8(v.name);
-        if (name != b.variable.name && !name.startsWith(b.variable.name + QLatin1Char('[')))
-            continue;
-        for (int i = 0; i < v.components; ++i) {
-            const bool zero = v.kind == UniformValue::Kind::Float ? v.floats[i] == 0.0f
-                : v.kind == UniformValue::Kind::Int               ? v.ints[i] == 0
-                                                                  : v.uints[i] == 0u;
-            if (!zero)
-                return false;
-        }
-    }
-    return true;
-}
-
-bool sceneGivesValue(const Scene &scene, const QString &name)
-{
-    for (const auto &[key, values] : scene.uniforms)
-        if (key == name || key.startsWith(name + QLatin1Char('[')))
-            return true;
-    return false;
-}
-
-// PhongLab's own name for each meaning: a binding under it says nothing new.
-QString ownName(BindingMeaning meaning)
-{
-    switch (meaning) {
-    case BindingMeaning::Model: return QStringLiteral("modelMatrix");
-    case BindingMeaning::View: return QStringLiteral("viewMatrix");
-    case BindingMeaning::Projection: return QStringLiteral("projectionMatrix");
-    case BindingMeaning::ModelView: return QStringLiteral("modelViewMatrix");
-    case BindingMeaning::NormalMatrix: return QStringLiteral("normalMatrix");
-    case BindingMeaning::LightPosition: return QStringLiteral("lightPosition");
-    case BindingMeaning::LightCount: return QStringLiteral("lightCount");
-    case BindingMeaning::LightDiffuse: return QStringLiteral("Id");
-    case BindingMeaning::LightSpecular: return QStringLiteral("Is");
-    case BindingMeaning::Ambient: return QStringLiteral("Ia");
-    default: return bindingMeaningKey(meaning);
-    }
-}
-
-} // namespace
-
-std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene &scene)
-{
-    std::vector<UnboundUniform> out;
-    const UniformSnapshot snapshot = program.snapshot();
-    for (const VariableBinding *b : program.bindings().unboundUniforms()) {
-        if (b->isExplicit || b->variable.type == GlslType::Other
-            || sceneGivesValue(scene, b->variable.name) || !allZero(snapshot, *b))
-            continue;
-        QString message = SceneStagesWords::tr("uniform %1 (%2) is bound to nothing, so the shader "
-                                               "reads zero")
-                              .arg(b->variable.name, glslTypeSpelling(b->variable.type));
-        if (const auto likely = likelyMeaning(b->variable))
-            message +=
-                SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the "
-                                     "scene)")
-                    .arg(bindingMeaningDescription(*likely), b->variable.name,
-                         bindingMeaningKey(*likely));
-        else
-            message +=
-                SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give "
-                                     "it a value in the scene's \"uniforms\"")
-                    .arg(b->variable.name, bindingMeaningKeys().join(QStringLiteral(", ")));
-        out.push_back({b->variable.name, message});
-    }
-    return out;
-}
-
-QString bindingsText(const ProgramBindings &bindings)
-{
-    QStringList parts;
-    bool worthSaying = false;
-    for (const VariableBinding &b : bindings.variables) {
-        if (b.meaning)
-            worthSaying = worthSaying || b.isExplicit || b.variable.name != ownName(*b.meaning);
-        else if (b.isExplicit)
-            worthSaying = true;
-        else
-            continue; // the user's own uniforms: the Uniforms dock's, not a binding
-        parts << QStringLiteral("%1=%2").arg(
-            b.variable.name, b.meaning ? bindingMeaningKey(*b.meaning) : kUnboundWord);
-    }
-    return worthSaying ? parts.join(QStringLiteral(", ")) : QString();
-}
-
-QStringList bindingsByUseText(const ProgramBindings &bindings)
-{
-    QStringList out;
-    for (const VariableBinding &b : bindings.variables)
-        if (b.meaning && b.byUse)
-            out << SceneStagesWords::tr("%1=%2: %3 (%4 shader, line %5)")
-                       .arg(b.variable.name, bindingMeaningKey(*b.meaning), b.byUse->reason,
-                            stageName(b.byUse->stage))
-                       .arg(b.byUse->line);
-    return out;
-}
-
-Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString *note)
-{
-    const auto enabled = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                       [](const PointLight &l) { return l.enabled; });
-    if (!capacity || enabled <= *capacity)
-        return scene;
-    Scene out = scene;
-    int kept = 0;
-    for (PointLight &l : out.lights)
-        if (l.enabled && kept++ >= *capacity)
-            l.enabled = false;
-    *note =
-        SceneStagesWords::tr("the shader takes %1 %2 (its light uniforms have room for no "
-                             "more) and the scene has %3 enabled: checked with the first %1 alone")
-            .arg(*capacity)
-            .arg(*capacity == 1 ? SceneStagesWords::tr("light") : SceneStagesWords::tr("lights"))
-            .arg(enabled);
-    return out;
+    if (unbound.likely)
+        return unboundSentence(unbound)
+            + SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the scene)")
+                  .arg(bindingMeaningDescription(*unbound.likely), unbound.name,
+                       bindingMeaningKey(*unbound.likely));
+    return unboundSentence(unbound)
+        + SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give it a "
+                               "value in the scene's \"uniforms\"")
+              .arg(unbound.name, bindingMeaningKeys().join(QStringLiteral(", ")));
 }
 
 QString pngNameProblem(const QString &option, const QString &path)

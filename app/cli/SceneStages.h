@@ -3,6 +3,7 @@
 #include "core/scene/Scene.h"
 #include "core/scene/ShadingMethod.h"
 #include "render/BuildReport.h"
+#include "render/ProgramFindings.h"
 #include "render/Renderer.h"
 
 #include <QCommandLineParser>
@@ -45,26 +46,10 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
 QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOption &option,
                           std::optional<ShadingMethod> *shading);
 
-// The uniforms of the built program that PhongLab binds to nothing and that
-// nobody gives a value (no "uniforms" entry, no initialiser): a shader that
-// reads them reads zero. One sentence each, naming the likely meaning.
-struct UnboundUniform {
-    QString name;
-    QString message;
-};
-std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene &scene);
-// "aPosition=position, uModel=model, uGain=none" for a person; empty where
-// every variable has PhongLab's own name (nothing worth saying).
-QString bindingsText(const ProgramBindings &bindings);
-// One line per variable bound by its use (core/program/BindingsByUse):
-// "shininessVal=shininess: the exponent of pow (fragment shader, line 41)".
-QStringList bindingsByUseText(const ProgramBindings &bindings);
-
-// The scene as far as the program can light it: where it takes fewer lights
-// (ProgramBindings::lightCapacity(): a single light uniform, a short array)
-// than the scene has enabled, the first ones it takes. `note` says what was
-// left out, or stays empty.
-Scene sceneForCapacity(const Scene &scene, std::optional<int> lightCapacity, QString *note);
+// unboundSentence() and how to bind it on the command line: "; if it is the
+// light's position, add --bind uLight=light-position (or \"bindings\" in the
+// scene)".
+QString unboundMessage(const UnboundUniform &unbound);
 
 // Reads both files and builds the program: its report, or (nothing built)
 // why a file cannot be read. `texts` receives what was read.

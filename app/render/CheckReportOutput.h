@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-namespace phonglab::cli {
+namespace phonglab {
 
 // How `phonglab check` reports, for people (text) and for scripts (--json).
 // The JSON keys are an interface: verdict, psnr_db, max_error, bad_fraction,
@@ -68,4 +68,4 @@ PrecisionFinding precisionFromJson(const QJsonObject &json);
 QString precisionText(const PrecisionFinding &precision);
 QString checkText(const CheckOutcome &outcome, const Scene &scene);
 
-} // namespace phonglab::cli
+} // namespace phonglab

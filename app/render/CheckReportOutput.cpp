@@ -2,7 +2,7 @@
 #include "core/check/MistakeSets.h"
 #include "core/support/Language.h"
 
-#include "SceneStages.h"
+#include "ProgramFindings.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -10,14 +10,14 @@
 #include <cmath>
 #include <limits>
 
-namespace phonglab::cli {
+namespace phonglab {
 
 namespace {
 
 // The text output's sentences, in the language the run speaks
 // (core/support/Language); the JSON's keys and key values never change with it.
 struct CheckWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckReportOutput)
+    Q_DECLARE_TR_FUNCTIONS(phonglab::CheckReportOutput)
 };
 
 // The verdict as JSON says it ("pass", "fail", "error").
@@ -360,4 +360,4 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     return out.join(QLatin1Char('\n'));
 }
 
-} // namespace phonglab::cli
+} // namespace phonglab
