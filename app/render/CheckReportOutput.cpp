@@ -254,6 +254,11 @@ QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findin
     o.insert(QStringLiteral("together"), setJson(verdict, findings, true));
     o.insert(QStringLiteral("partial"), setJson(verdict, findings, false));
     o.insert(QStringLiteral("undetectable"), keysJson(findings.report.diagnosis.undetectable));
+    QJsonArray silent;
+    for (const SilentTerm &t : findings.report.silent)
+        silent.append(QJsonObject{{QStringLiteral("term"), silentTermKey(t.term)},
+                                  {QStringLiteral("why"), t.why}});
+    o.insert(QStringLiteral("unchecked_terms"), silent);
     o.insert(QStringLiteral("errors"), errorsJson(findings.errors));
     QJsonObject bindings;
     for (const VariableBinding &b : findings.bindings.variables)
@@ -357,6 +362,8 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
             keys << shaderMistakeKey(m);
         out << CheckWords::tr("cannot show in this scene: %1").arg(keys.join(QStringLiteral(", ")));
     }
+    if (!r.silent.empty())
+        out << CheckWords::tr("not checked in this scene: %1").arg(silentTermsText(r.silent));
     return out.join(QLatin1Char('\n'));
 }
 

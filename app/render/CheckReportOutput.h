@@ -13,7 +13,7 @@ namespace phonglab {
 
 // How `phonglab check` reports, for people (text) and for scripts (--json).
 // The JSON keys are an interface: verdict, psnr_db, max_error, bad_fraction,
-// worst {x, y, object}, diagnosis [{key, also, confidence, from_code,
+// worst {x, y, object}, unchecked_terms [{term, why}], diagnosis [{key, also, confidence, from_code,
 // message, lines [{file, line, text}]}], undetectable, errors [{file, line,
 // column, message}], bindings {name: meaning or "none"}, bindings_by_use
 // {name: {meaning, reason, stage, line}}, equation ("guarded", "slide", null

@@ -101,6 +101,19 @@ Result<> FrameRedraw::useProgram(const FrameRecipe &recipe)
     return {};
 }
 
+PrecisionFinding FrameRedraw::measurePrecision(const FrameRecipe &recipe,
+                                              const std::vector<ShaderStageText> &stages,
+                                              const Scene &checked, const QImage &checkedImage)
+{
+    PrecisionFinding finding = declaredPrecision(stages, checked);
+    if (finding.declared.isEmpty() || finding.checkedAt != PrecisionRule::Highp || !m_offscreen)
+        return finding;
+    m_offscreen->makeCurrent();
+    m_programOf.reset(); // built as written below
+    return phonglab::measurePrecision(*m_offscreen, stages, checked, recipe.size, checkedImage,
+                                      &recipe.uniforms);
+}
+
 void FrameRedraw::destroy()
 {
     m_offscreen.reset();

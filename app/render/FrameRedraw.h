@@ -1,5 +1,6 @@
 #pragma once
 #include "OffscreenRenderer.h"
+#include "ProgramFindings.h"
 #include "Renderer.h"
 #include "ShaderSource.h"
 #include "UniformSnapshot.h"
@@ -52,6 +53,16 @@ public:
     // cancels a mesh load. The image is RGB888; the failure says why.
     Result<QImage> draw(const FrameRecipe &recipe, QOffscreenSurface *surface,
                         const std::function<bool()> &keepGoing, const MeshesLoaded &meshesLoaded);
+    // The program the last draw() used, for what it bound
+    // (findProgramFindings()); only after a draw that succeeded.
+    ShaderProgram &program() { return m_offscreen->renderer().program(); }
+    // The last drawn program again as its stages declare their precision,
+    // where they declare a lower one and `checked` was checked at highp:
+    // measurePrecision() with the recipe's values. The next draw() builds
+    // the checked program again.
+    PrecisionFinding measurePrecision(const FrameRecipe &recipe,
+                                      const std::vector<ShaderStageText> &stages,
+                                      const Scene &checked, const QImage &checkedImage);
     // Frees the context and what it holds; on the drawing thread.
     void destroy();
 

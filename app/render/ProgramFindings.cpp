@@ -159,7 +159,8 @@ PrecisionFinding declaredPrecision(const std::vector<ShaderStageText> &stages, c
 
 PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
                                   const std::vector<ShaderStageText> &stages, const Scene &checked,
-                                  QSize size, const QImage &checkedImage)
+                                  QSize size, const QImage &checkedImage,
+                                  const UniformSnapshot *values)
 {
     PrecisionFinding finding = declaredPrecision(stages, checked);
     if (finding.declared.isEmpty() || finding.checkedAt != PrecisionRule::Highp)
@@ -180,6 +181,8 @@ PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
             }
         return finding;
     }
+    if (values)
+        renderer.restoreUniforms(*values);
     const QImage image = offscreen.renderImage(size);
     if (image.isNull())
         return finding;

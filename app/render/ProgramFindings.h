@@ -2,6 +2,7 @@
 #include "CheckReportOutput.h"
 #include "OffscreenRenderer.h"
 #include "ShaderProgram.h"
+#include "UniformSnapshot.h"
 #include "core/program/ShaderBindings.h"
 #include "core/scene/Scene.h"
 
@@ -67,10 +68,12 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> lightCapacity, QSt
 // highp, how far the render as written is from the one checked: drawn again
 // with the declared precision (a second build and draw, only for shaders
 // that declare mediump or lowp). Leaves `offscreen` with the program as
-// written where it built it. `stages`: the texts the first build read.
+// written where it built it. `stages`: the texts the first build read;
+// `values`: the user's own uniforms' values where the window has them.
 PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
                                   const std::vector<ShaderStageText> &stages, const Scene &checked,
-                                  QSize size, const QImage &checkedImage);
+                                  QSize size, const QImage &checkedImage,
+                                  const UniformSnapshot *values = nullptr);
 // What measurePrecision() finds without drawing: the lower precisions
 // declared and the rule they were checked by.
 PrecisionFinding declaredPrecision(const std::vector<ShaderStageText> &stages, const Scene &checked);

@@ -121,7 +121,7 @@ bool UiTestWindow::typeTheSlidesEquationAndCheck(int timeoutMs) const
     return QTest::qWaitFor(
         [&] {
             return !check->isChecking() && check->lastResult()
-                && check->lastResult()->report.equation == PhongEquation::Slide;
+                && check->lastResult()->report().equation == PhongEquation::Slide;
         },
         timeoutMs);
 }

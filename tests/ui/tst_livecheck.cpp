@@ -77,7 +77,7 @@ private slots:
         QVERIFY2(status.startsWith(QStringLiteral("✗"))
                      && status.contains(QStringLiteral("reflect-incident")),
                  qPrintable(status));
-        QCOMPARE(result.report.diagnosis.findings.front().key, ShaderMistake::ReflectIncident);
+        QCOMPARE(result.report().diagnosis.findings.front().key, ShaderMistake::ReflectIncident);
 
         // Where the mistake shows (its image off the exact one by more than
         // the tolerance) the heatmap is red-to-yellow, elsewhere dark green.
@@ -117,7 +117,7 @@ private slots:
         check->setOverlayMode(OverlayMode::Heatmap);
         QVERIFY(check->overlay()->isVisible());
         const QImage overlay = check->overlay()->grab().toImage();
-        const QPoint worst = result.report.comparison.worstPixel;
+        const QPoint worst = result.report().comparison.worstPixel;
         if (overlay.size() == result.heatmap.size())
             QCOMPARE(overlay.pixel(worst), result.heatmap.pixel(worst));
         // ... into the frame the view presents (drawn over it in GL), and
@@ -156,7 +156,7 @@ private slots:
                     && check->lastResult()->scene.lights.size() == lights + 1;
             },
             kCheckTimeoutMs));
-        QVERIFY(check->lastResult()->report.passed());
+        QVERIFY(check->lastResult()->report().passed());
     }
 
     // Issue 30, C: the slide's equation taken literally (no N·L guard on
@@ -193,7 +193,7 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
         const CheckedFrame &result = *check->lastResult();
-        QVERIFY2(result.report.passed(), qPrintable(check->statusLabel()->text()));
+        QVERIFY2(result.report().passed(), qPrintable(check->statusLabel()->text()));
         QVERIFY2(check->statusLabel()->text().contains(QStringLiteral("slide")),
                  qPrintable(check->statusLabel()->text()));
         const std::vector<int> errors =
@@ -326,7 +326,7 @@ private slots:
             fragmentEditor()->text().contains(QStringLiteral("u_specularColor")), 20000);
         QVERIFY(waitForApplied());
         QVERIFY(waitForVerdict(false));
-        const CheckReport &report = m_window->liveCheck()->lastResult()->report;
+        const CheckReport &report = m_window->liveCheck()->lastResult()->report();
         QVERIFY2(report.diagnosis.togetherExplains(), qPrintable(checkSummary(report)));
         QCOMPARE(mistakeSetKeys(report.diagnosis.together),
                  QStringLiteral("attenuation ambient halfway-vector"));
@@ -352,7 +352,7 @@ private slots:
                     QLatin1String("shadedCube.vert")),
             kCheckTimeoutMs);
         QVERIFY(waitForVerdict(false));
-        const MistakeDiagnosis &cube = m_window->liveCheck()->lastResult()->report.diagnosis;
+        const MistakeDiagnosis &cube = m_window->liveCheck()->lastResult()->report().diagnosis;
         QVERIFY(!cube.findings.empty());
         QCOMPARE(cube.findings.front().key, ShaderMistake::Gouraud);
         QVERIFY(cube.findings.front().fromCode);
@@ -479,7 +479,7 @@ private:
         return QTest::qWaitFor(
             [&] {
                 return !check->isChecking() && check->lastResult() && check->lastResult()->reference
-                    && check->lastResult()->report.passed() == passed;
+                    && check->lastResult()->report().passed() == passed;
             },
             kCheckTimeoutMs);
     }

@@ -407,7 +407,7 @@ void TestWindowLayout::theFirstLookChecksOut()
 {
     LiveCheck *check = m_window->liveCheck();
     QTRY_VERIFY_WITH_TIMEOUT(check->lastResult().has_value() && !check->isChecking(), 60000);
-    const CheckReport &report = check->lastResult()->report;
+    const CheckReport &report = check->lastResult()->report();
     QVERIFY2(report.passed(), qPrintable(check->statusLabel()->text()));
 }
 

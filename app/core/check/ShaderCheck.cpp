@@ -167,6 +167,7 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
 {
     CheckReport report = checkAgainstEquation(yours, reference, toleranceSteps,
                                               demanded.value_or(PhongEquation::Guarded));
+    report.silent = silentTerms(reference.scene);
     if (demanded || !report.comparable() || reference.slide.color.empty())
         return report;
     // Either equation is right: backface-specular is no mistake here. A
@@ -183,8 +184,10 @@ CheckReport checkRender(const RgbImage &yours, const CheckReference &reference, 
             return std::tuple(explained ? 0 : 1, explained ? set.variants.size() : 0, -set.explains,
                               r.badPixels);
         };
-        if (slide.passed() || rank(slide) < rank(report))
+        if (slide.passed() || rank(slide) < rank(report)) {
+            slide.silent = std::move(report.silent);
             report = std::move(slide);
+        }
     }
     std::erase(report.diagnosis.undetectable, ShaderMistake::BackfaceSpecular);
     return report;
@@ -240,25 +243,30 @@ QString setSummaries(const MistakeSet &set)
 QString checkStatusLine(const CheckReport &report)
 {
     const QString psnr = psnrText(report.comparison);
-    if (report.passed())
-        return report.equation == PhongEquation::Slide
-            ? CheckWords::tr("✓ %1 — the slide's equation (a highlight even where N·L <= 0)")
-                  .arg(psnr)
+    if (report.passed()) {
+        QString line = report.equation == PhongEquation::Slide
+            ? CheckWords::tr("✓ %1 — the slide's equation").arg(psnr)
             : QStringLiteral("✓ %1").arg(psnr);
+        QStringList silent;
+        for (const SilentTerm &t : report.silent)
+            silent << equationTermName(t.term);
+        if (!silent.isEmpty())
+            line += CheckWords::tr(" — not checked here: %1").arg(silent.join(QStringLiteral(", ")));
+        return line;
+    }
     const MistakeDiagnosis &d = report.diagnosis;
-    if (explainedBySeveral(d))
-        return CheckWords::tr("✗ %1 — %2 mistakes together: %3")
-            .arg(psnr)
-            .arg(d.together.variants.size())
-            .arg(setSummaries(d.together));
+    if (explainedBySeveral(d)) {
+        QStringList keys;
+        for (MistakeVariant v : d.together.variants)
+            keys << shaderMistakeKey(v.key);
+        return CheckWords::tr("✗ %1 — %2").arg(psnr, keys.join(QStringLiteral(" + ")));
+    }
     if (d.unexplained() || d.findings.empty())
-        return CheckWords::tr("✗ %1 — no classic mistake explains it: see the heatmap").arg(psnr);
+        return CheckWords::tr("✗ %1 — no classic mistake explains it").arg(psnr);
     const MistakeFinding &top = d.findings.front();
-    QString line =
-        CheckWords::tr("✗ %1 — %2: %3")
-            .arg(psnr, shaderMistakeKey(top.key), mistakeFormSummary({top.key, top.form}));
+    QString line = CheckWords::tr("✗ %1 — %2").arg(psnr, shaderMistakeKey(top.key));
     for (ShaderMistake m : top.also)
-        line += CheckWords::tr(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the tooltip
+        line += CheckWords::tr(" (or %1)").arg(shaderMistakeKey(m)); // its words are in the panel
     return line;
 }
 

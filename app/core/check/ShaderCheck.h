@@ -1,6 +1,7 @@
 #pragma once
 #include "ImageMetrics.h"
 #include "core/check/MistakeDiagnosis.h"
+#include "core/check/SilentTerms.h"
 #include "core/reference/PhongEquation.h"
 #include "core/reference/SceneHits.h"
 
@@ -67,6 +68,9 @@ struct CheckReport {
     // The equation the render was checked by: the one it matched, else the
     // one demanded (guarded where none was).
     PhongEquation equation = PhongEquation::Guarded;
+    // The terms zero in the whole scene (ks = 0 everywhere): a pass says
+    // nothing about them.
+    std::vector<SilentTerm> silent;
 
     // False when no pixel could be compared (nothing in view, or a tiny
     // image all silhouette): no verdict then, neither pass nor fail.
@@ -105,9 +109,10 @@ std::vector<int> checkErrorSteps(const RgbImage &yours, const CheckReference &re
 // "✗ PSNR 21.4 dB, max 87/255, 12.0 % of pixels off — reflect-incident
 // or view-vector (100 %): <the rule>" — everything in one line.
 QString checkSummary(const CheckReport &report);
-// The same for a status bar: "✓ 58.2 dB" or "✗ 21.4 dB — reflect-incident:
-// reflect(L, N) instead of reflect(-L, N) (or view-vector)": the top
-// finding in words, the keys it is grouped with by name.
+// The short form for a status bar: "✓ 58.2 dB — not checked here:
+// specular", "✗ 21.4 dB — reflect-incident (or view-vector)", "✗ 26.8 dB —
+// attenuation + halfway-vector": the mistakes' keys alone; their words are
+// in the check's panel.
 QString checkStatusLine(const CheckReport &report);
 
 } // namespace phonglab

@@ -91,7 +91,128 @@ struct CheckRunner::Cache {
         size = sz;
         return reference;
     }
+
+    // The precision finding of a program, measured once: an orbit or a
+    // light moved changes it by a step at most, and measuring builds and
+    // draws the program a second time.
+    PrecisionFinding precisionOf(const FrameRecipe &frame,
+                                 const std::vector<ShaderStageText> &stages, const Scene &checked,
+                                 const QImage &image)
+    {
+        QStringList key{QString::number(int(checked.course.precision))};
+        for (const ShaderStageText &s : stages)
+            key << s.text;
+        if (!precision || precision->first != key)
+            precision.emplace(key, redraw.measurePrecision(frame, stages, checked, image));
+        return precision->second;
+    }
+    std::optional<std::pair<QStringList, PrecisionFinding>> precision;
+
+    CheckedFrame check(const Request &request, QOffscreenSurface *surface,
+                       const std::atomic<bool> &cancelled,
+                       const std::function<void(double)> &progress);
 };
+
+namespace {
+
+std::vector<ShaderStageText> stagesOf(const FrameRecipe &frame)
+{
+    if (!frame.sources)
+        return {};
+    return {{frame.sources->vertex.name, QString::fromUtf8(frame.sources->vertex.code), true},
+            {frame.sources->fragment.name, QString::fromUtf8(frame.sources->fragment.code),
+             false}};
+}
+
+// What nothing could place, as check's errors say it, with the window's way
+// to place it.
+void addPlacingErrors(CheckOutcome &outcome, const ProgramFindings &found)
+{
+    const auto error = [](const QString &message) {
+        ShaderDiagnostic d;
+        d.message = message;
+        return d;
+    };
+    for (const QString &problem : found.problems)
+        outcome.errors.push_back(error(problem));
+    for (const UnboundUniform &unbound : found.unbound)
+        outcome.errors.push_back(
+            error(QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(unbound))));
+    for (const QString &conflict : found.conflicts)
+        outcome.errors.push_back(error(conflict));
+}
+
+} // namespace
+
+// The steps of drawForCheck() and checkDrawing() (cli/CheckSteps), on the
+// window's frame: draw, find what the program bound, draw the lights it
+// takes, compare, name what the code does.
+CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface *surface,
+                                       const std::atomic<bool> &cancelled,
+                                       const std::function<void(double)> &progress)
+{
+    CheckedFrame result;
+    result.generation = request.generation;
+    result.scene = request.frame.scene;
+    CheckOutcome &outcome = result.outcome;
+    outcome.stages = stagesOf(request.frame);
+    const auto keepGoing = [&] { return !cancelled.load(); };
+    const auto keepMeshes = [&](const SceneMeshes &loaded) { keep(loaded); };
+    Result<QImage> drawn = redraw.draw(request.frame, surface, keepGoing, keepMeshes);
+    if (!drawn) {
+        result.error = drawn.error();
+        return result;
+    }
+    const ProgramFindings found = findProgramFindings(redraw.program(), request.frame.scene);
+    outcome.bindings = found.bindings;
+    outcome.notes << found.bindings.notes;
+    result.unbound = found.unbound;
+    addPlacingErrors(outcome, found);
+    if (!outcome.errors.empty())
+        return result; // no verdict: PhongLab's gap, not the student's mistake
+    result.scene = found.checked;
+    if (!found.lightsNote.isEmpty()) {
+        outcome.notes << found.lightsNote;
+        FrameRecipe lit = request.frame;
+        lit.scene = found.checked;
+        drawn = redraw.draw(lit, surface, keepGoing, keepMeshes);
+        if (!drawn) {
+            result.error = drawn.error();
+            return result;
+        }
+    }
+    result.yours = *drawn;
+    Result<std::shared_ptr<const CheckReference>> made =
+        referenceFor(result.scene, request.frame.size, cancelled, progress);
+    if (!made) {
+        result.error = made.error();
+        return result;
+    }
+    result.reference = *made;
+    const RgbImage yours = toRgbImage(result.yours);
+    outcome.report = checkRender(yours, *result.reference);
+    if (request.frame.sources)
+        nameWhatTheCodeDoes(outcome.report, request.frame.sources->vertex.code,
+                            request.frame.sources->fragment.code);
+    if (!outcome.report.comparable()) {
+        ShaderDiagnostic d;
+        d.message = QObject::tr("nothing to compare: no surface away from silhouettes in this view");
+        outcome.errors.push_back(d);
+        return result;
+    }
+    outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass
+                                              : CheckOutcome::Verdict::Fail;
+    if (request.frame.sources)
+        outcome.precision = precisionOf(request.frame, outcome.stages, result.scene, result.yours);
+    // The exact image of the equation the frame was checked by: the slide's,
+    // for a shader that matched it.
+    const PhongEquation equation = outcome.report.equation;
+    result.exact = equation == PhongEquation::Guarded
+        ? toQImage(result.reference->exactImage)
+        : toQImage(result.reference->exactOf(equation).toImage(result.scene.background));
+    result.heatmap = toQImage(checkHeatmap(yours, *result.reference, equation));
+    return result;
+}
 
 CheckRunner::CheckRunner(QObject *parent)
     : QObject(parent)
@@ -169,50 +290,20 @@ void CheckRunner::start(Request request)
             // processor beside busy programs (CheckPriority.h); the ray
             // casting's threads started from here inherit it.
             runAtCheckPriority();
-            const Scene &scene = request.frame.scene;
             CheckedFrame result;
-            result.generation = request.generation;
-            result.scene = scene;
-            if (cancelled->load())
+            if (cancelled->load()) {
+                result.generation = request.generation;
                 return result; // dropped by onFinished()
+            }
             try {
-                Result<QImage> drawn = cache->redraw.draw(
-                    request.frame, surface, [&] { return !cancelled->load(); },
-                    [&](const SceneMeshes &loaded) { cache->keep(loaded); });
-                result.error = drawn.error();
-                result.yours = drawn.valueOr(QImage());
-                if (drawn) {
-                    Result<std::shared_ptr<const CheckReference>> reference =
-                        cache->referenceFor(scene, request.frame.size, *cancelled, progress);
-                    result.error = reference.error();
-                    result.reference = reference.valueOr(nullptr);
-                }
-                if (result.reference) {
-                    const RgbImage yours = toRgbImage(result.yours);
-                    result.report = checkRender(yours, *result.reference);
-                    if (request.frame.sources)
-                        nameWhatTheCodeDoes(result.report, request.frame.sources->vertex.code,
-                                            request.frame.sources->fragment.code);
-                    // The exact image of the equation the frame was checked by:
-                    // the slide's, for a shader that matched it.
-                    const PhongEquation equation = result.report.equation;
-                    result.exact = equation == PhongEquation::Guarded
-                        ? toQImage(result.reference->exactImage)
-                        : toQImage(result.reference->exactOf(equation).toImage(scene.background));
-                    result.heatmap = toQImage(checkHeatmap(yours, *result.reference, equation));
-                }
+                result = cache->check(request, surface, *cancelled, progress);
             } catch (
                 const std::exception &e) { // std::bad_alloc on a huge view: a message, not a crash
-                result = CheckedFrame{
-                    request.generation,
-                    scene,
-                    {},
-                    {},
-                    {},
-                    {},
-                    {},
-                    QObject::tr("the check failed: %1").arg(QString::fromLocal8Bit(e.what())),
-                    0.0};
+                result = CheckedFrame{};
+                result.generation = request.generation;
+                result.scene = request.frame.scene;
+                result.error =
+                    QObject::tr("the check failed: %1").arg(QString::fromLocal8Bit(e.what()));
                 cache->reference.reset();
             }
             result.milliseconds = double(request.clock.nsecsElapsed()) / 1e6;

@@ -1,5 +1,7 @@
 #pragma once
 #include "core/check/ShaderCheck.h"
+#include "render/CheckReportOutput.h"
+#include "render/ProgramFindings.h"
 #include "core/scene/Scene.h"
 #include "render/FrameRedraw.h"
 
@@ -14,17 +16,25 @@
 
 namespace phonglab {
 
-// One finished check of the window's frame against the exact image.
+// One finished check of the window's frame against the exact image: the
+// verdict `phonglab check` gives on the same scene and files, found by the
+// same steps (render/ProgramFindings, checkRender, nameWhatTheCodeDoes).
 struct CheckedFrame {
     quint64 generation = 0; // of the request it answers
-    Scene scene;            // as checked (headlight included)
+    Scene scene;            // as checked: the headlight included, the lights the program takes
     std::shared_ptr<const CheckReference> reference;
     QImage yours;   // the frame, without light markers, single-sampled
     QImage exact;   // the reference, 8-bit
     QImage heatmap; // checkHeatmap()
-    CheckReport report;
-    QString error;             // no reference could be made
+    // The verdict, the report, the bindings, the notes; errors where nothing
+    // could be checked: a uniform nothing places, no surface in view.
+    CheckOutcome outcome;
+    std::vector<UnboundUniform> unbound; // the uniforms the user is to place, in the dock
+    QString error;             // the check itself could not run (no frame, no reference)
     double milliseconds = 0.0; // request to result
+
+    const CheckReport &report() const { return outcome.report; }
+    bool hasVerdict() const { return outcome.verdict != CheckOutcome::Verdict::Error; }
 };
 
 // Runs checks off the GUI thread, one at a time; while one runs only the

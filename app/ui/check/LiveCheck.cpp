@@ -33,7 +33,7 @@ QString shortSummary(const CheckedFrame &result)
 {
     if (!result.error.isEmpty())
         return QObject::tr("check: %1").arg(result.error);
-    if (!result.report.comparable())
+    if (!result.report().comparable())
         return QObject::tr("check: nothing to compare in this view");
     // Gouraud, flat and faceted are approximations by design: say what they
     // are checked against.
@@ -41,8 +41,8 @@ QString shortSummary(const CheckedFrame &result)
     if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat
         || method == ShadingMethod::Faceted)
         return QObject::tr("%1 against exact Phong: %2")
-            .arg(shadingName(method), checkStatusLine(result.report));
-    return checkStatusLine(result.report); // the whole rule goes in the tooltip
+            .arg(shadingName(method), checkStatusLine(result.report()));
+    return checkStatusLine(result.report()); // the whole rule goes in the tooltip
 }
 
 } // namespace
@@ -210,7 +210,7 @@ void LiveCheck::show(const CheckedFrame &result)
 {
     m_last = result;
     m_status->setText(shortSummary(result));
-    m_status->setToolTip(result.error.isEmpty() ? checkSummary(result.report) : result.error);
+    m_status->setToolTip(result.error.isEmpty() ? checkSummary(result.report()) : result.error);
     m_overlay->setImages(result.exact, result.heatmap);
     m_overlay->setFresh(isCurrent(result));
     if (m_inspectWhenReady && isCurrent(result)) {
@@ -244,7 +244,7 @@ void LiveCheck::showInspected(QPointF fraction)
         std::clamp(int(std::floor(fraction.y() * r.yours.height())), 0, r.yours.height() - 1));
     const std::optional<PixelTerms> terms =
         pixelTerms(r.reference->hits, r.scene, r.reference->shader.shading, pixel.x(), pixel.y(),
-                   r.report.equation);
+                   r.report().equation);
     if (!terms) {
         m_inspector->showMessage(tr("Pixel (%1, %2) shows the background: no surface, no equation.")
                                      .arg(pixel.x())

@@ -18,7 +18,10 @@ BindingChoice::BindingChoice(const ShaderVariable &variable,
     , m_variable(variable.name)
 {
     setObjectName(QStringLiteral("boundTo:") + variable.name);
-    setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // Closed it shows the meaning's start; open, each meaning with its
+    // description in full.
+    setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    setMinimumContentsLength(22);
     addItem(automatic ? tr("automatic: %1").arg(bindingMeaningKey(*automatic))
                       : tr("automatic: your own"),
             kAutomatic);
@@ -28,7 +31,7 @@ BindingChoice::BindingChoice(const ShaderVariable &variable,
         const BindingMeaning meaning = *bindingMeaningFromKey(key);
         if (isVertexInput(meaning) || !bindingFits(meaning, variable))
             continue;
-        addItem(key, key);
+        addItem(tr("%1 — %2").arg(key, bindingMeaningDescription(meaning)), key);
         setItemData(count() - 1, bindingMeaningDescription(meaning), Qt::ToolTipRole);
     }
     int current = 0;
@@ -37,6 +40,7 @@ BindingChoice::BindingChoice(const ShaderVariable &variable,
     setCurrentIndex(std::max(0, current));
     setToolTip(
         tr("What PhongLab sets %1 to (saved with the scene as \"bindings\")").arg(variable.name));
+    view()->setMinimumWidth(view()->sizeHintForColumn(0) + 24);
     connect(this, &QComboBox::activated, this, [this] { emit chosen(m_variable); });
 }
 

@@ -40,10 +40,10 @@ UniformsDock::UniformsDock(QWidget *parent)
 {
     setObjectName(QStringLiteral("UniformsDock"));
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setWidget(m_contents);
-    setWidget(scroll);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setWidget(m_contents);
+    setWidget(m_scroll);
     m_sinceRefresh.start();
 }
 
@@ -209,7 +209,8 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
     auto *layout = new QVBoxLayout(label);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(1);
-    layout->addWidget(new QLabel(name, label));
+    auto *title = new QLabel(name, label);
+    layout->addWidget(title);
     std::optional<std::optional<BindingMeaning>> word; // none: automatic
     if (const auto it = program.explicitBindings.find(name); it != program.explicitBindings.end())
         word = it->second;
@@ -228,6 +229,14 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
         why->setEnabled(false); // a note's grey
         layout->addWidget(why);
     }
+    if (m_unplaced.contains(name)) {
+        title->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
+        auto *unplaced = new QLabel(tr("bound to nothing: choose what it is"), label);
+        unplaced->setObjectName(QStringLiteral("unplaced:") + name);
+        unplaced->setStyleSheet(QStringLiteral("color: #c62828;"));
+        unplaced->setWordWrap(true);
+        layout->addWidget(unplaced);
+    }
     connect(choice, &BindingChoice::chosen, this, [this, choice](const QString &variableName) {
         m_viewport->setBindings(withBinding(m_viewport->currentScene().bindings, variableName,
                                             choice->explicitBinding()));
@@ -235,6 +244,31 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
     });
     return label;
 }
+void UniformsDock::markUnplaced(const QStringList &names)
+{
+    if (names == m_unplaced)
+        return;
+    m_unplaced = names;
+    m_layoutKey.clear(); // the rows' labels change
+    scheduleRebuild();
+}
+
+void UniformsDock::showUniform(const QString &name)
+{
+    show();
+    raise();
+    QWidget *row = m_rows.value(name);
+    if (!row)
+        row = m_rows.value(name + QStringLiteral("[0]"));
+    if (!row)
+        return;
+    m_scroll->ensureWidgetVisible(row);
+    if (auto *choice = m_contents->findChild<QComboBox *>(QStringLiteral("boundTo:") + name)) {
+        m_scroll->ensureWidgetVisible(choice);
+        choice->setFocus(Qt::OtherFocusReason);
+    }
+}
+
 void UniformsDock::addInactive(const UniformDeclaration &declaration)
 {
     auto *row = new QWidget(m_contents);

@@ -9,6 +9,7 @@
 #include <QHash>
 
 class QFormLayout;
+class QScrollArea;
 
 namespace phonglab {
 
@@ -42,6 +43,15 @@ public:
     // The row of one element ("gain", "Id[1]") or declared-but-inactive name.
     QWidget *row(const QString &element) const { return m_rows.value(element); }
     QStringList inactiveNames() const { return m_inactive; }
+
+    // The uniforms the check found nothing to place (render/ProgramFindings):
+    // their rows in red, "bound to nothing: choose what it is", until the
+    // next check says otherwise.
+    void markUnplaced(const QStringList &names);
+    QStringList unplacedNames() const { return m_unplaced; }
+    // Brings the dock to the front with `name`'s row in view and its
+    // "bound to" choice in focus.
+    void showUniform(const QString &name);
 
 signals:
     void rebuilt();
@@ -81,9 +91,11 @@ private:
     QHash<QString, QWidget *> m_rows;
     QHash<QString, UniformOwner> m_owners;
     QStringList m_inactive;
+    QStringList m_unplaced;
     QStringList m_layoutKey;  // of the rows shown (layoutKey())
     UniformSnapshot m_values; // as last read: the type and layout each write needs
     bool m_rebuildPending = false;
+    QScrollArea *m_scroll = nullptr;
     QElapsedTimer m_sinceRefresh; // read-only values follow the scene a few times a second
 };
 
