@@ -29,22 +29,6 @@ constexpr int kDividerGrabPx = 6;
 // repaint) before the check's thread builds and draws the program again.
 constexpr int kAfterFrameMs = 20;
 
-QString shortSummary(const CheckedFrame &result)
-{
-    if (!result.error.isEmpty())
-        return QObject::tr("check: %1").arg(result.error);
-    if (!result.report().comparable())
-        return QObject::tr("check: nothing to compare in this view");
-    // Gouraud, flat and faceted are approximations by design: say what they
-    // are checked against.
-    const ShadingMethod method = result.scene.shading;
-    if (method == ShadingMethod::Gouraud || method == ShadingMethod::Flat
-        || method == ShadingMethod::Faceted)
-        return QObject::tr("%1 against exact Phong: %2")
-            .arg(shadingName(method), checkStatusLine(result.report()));
-    return checkStatusLine(result.report()); // the whole rule goes in the tooltip
-}
-
 } // namespace
 
 LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderController *live)
@@ -54,14 +38,25 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     , m_runner(new CheckRunner(this))
     , m_overlay(new CheckOverlay(viewport))
     , m_inspector(new PixelInspectorDock(window))
-    , m_status(new QLabel(window))
+    , m_status(new VerdictLabel(window))
+    , m_verdict(new VerdictDock(window))
     , m_debounce(new QTimer(this))
 {
     m_status->setObjectName(QStringLiteral("checkStatus"));
-    m_status->setText(tr("check: waiting for the first frame"));
-    window->statusBar()->addPermanentWidget(m_status);
+    m_status->setVerdict(tr("check: waiting for the first frame"));
+    window->statusBar()->addPermanentWidget(m_status, 1);
     window->addDockWidget(Qt::RightDockWidgetArea, m_inspector);
     m_inspector->hide();
+    window->addDockWidget(Qt::RightDockWidgetArea, m_verdict);
+    m_verdict->hide();
+    connect(m_status, &VerdictLabel::clicked, this, &LiveCheck::followStatusClick);
+    connect(m_verdict, &VerdictDock::uniformChosen, this, &LiveCheck::uniformToPlace);
+    // The editor's code does not compile: what is shown is the last good
+    // program's verdict, and says so.
+    connect(live, &LiveShaderController::buildFailed, this, [this] {
+        m_codeCompiles = false;
+        showVerdict();
+    });
     createToolBar(window);
 
     m_debounce->setSingleShot(true);
@@ -72,6 +67,7 @@ LiveCheck::LiveCheck(QMainWindow *window, Viewport *viewport, LiveShaderControll
     // screen: the check's own build and draw of it would otherwise take
     // cores from that frame. View and scene changes come in bursts.
     connect(live, &LiveShaderController::programApplied, this, [this] {
+        m_codeCompiles = true;
         m_debounce->stop(); // a check due now would draw the old frame's moment
         m_checkAfterFrame = true;
         m_pending = true;
@@ -111,6 +107,9 @@ void LiveCheck::addViewActions(QMenu *view)
     QAction *dock = m_inspector->toggleViewAction();
     dock->setText(tr("Pi&xel Inspector"));
     view->addAction(dock);
+    QAction *verdict = m_verdict->toggleViewAction();
+    verdict->setText(tr("Check &Verdict"));
+    view->addAction(verdict);
     QAction *bar = m_toolBar->toggleViewAction();
     bar->setText(tr("&Check Toolbar"));
     view->addAction(bar);
@@ -140,8 +139,10 @@ void LiveCheck::createToolBar(QMainWindow *window)
         tr("Click a pixel to see the terms of the equation there (or Ctrl+click) [I]"));
     connect(m_inspectAction, &QAction::toggled, this, [this](bool on) {
         m_viewport->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
-        if (on)
+        if (on) {
             m_inspector->show();
+            m_inspector->raise();
+        }
     });
 }
 
@@ -177,9 +178,10 @@ void LiveCheck::run()
                       m_viewport->program().values(), m_viewport->renderOptions(), checkSize()};
     if (frame.size.isEmpty())
         return;
-    m_checkingPrefix =
-        m_last ? m_status->text().section(QLatin1Char(' '), 0, 0) + QLatin1Char(' ') : QString();
-    m_status->setText(m_checkingPrefix + tr("checking…"));
+    m_checkingPrefix = m_last && m_last->hasVerdict()
+        ? m_status->verdict().section(QLatin1Char(' '), 0, 0) + QLatin1Char(' ')
+        : QString();
+    m_status->setVerdict(m_checkingPrefix + tr("checking…"));
     m_runner->request(frame);
 }
 
@@ -187,7 +189,7 @@ void LiveCheck::showProgress(int percent)
 {
     if (!m_runner->isBusy())
         return; // a late report of a check that has answered
-    m_status->setText(m_checkingPrefix + tr("checking… %1 %").arg(percent));
+    m_status->setVerdict(m_checkingPrefix + tr("checking… %1 %").arg(percent));
 }
 
 QSize LiveCheck::checkSize() const
@@ -209,8 +211,7 @@ bool LiveCheck::isCurrent(const CheckedFrame &result) const
 void LiveCheck::show(const CheckedFrame &result)
 {
     m_last = result;
-    m_status->setText(shortSummary(result));
-    m_status->setToolTip(result.error.isEmpty() ? checkSummary(result.report()) : result.error);
+    showVerdict();
     m_overlay->setImages(result.exact, result.heatmap);
     m_overlay->setFresh(isCurrent(result));
     if (m_inspectWhenReady && isCurrent(result)) {
@@ -220,6 +221,24 @@ void LiveCheck::show(const CheckedFrame &result)
     emit checked(result);
 }
 
+void LiveCheck::showVerdict()
+{
+    if (!m_last)
+        return;
+    m_status->setVerdict(verdictStatusText(*m_last, m_codeCompiles));
+    m_verdict->showVerdict(*m_last, m_codeCompiles);
+}
+
+void LiveCheck::followStatusClick()
+{
+    if (m_last && !m_last->unbound.empty()) {
+        emit uniformToPlace(m_last->unbound.front().name);
+        return;
+    }
+    m_verdict->show();
+    m_verdict->raise();
+}
+
 void LiveCheck::inspect(QPoint position)
 {
     // Pixel centres: the point's fraction of the view, whatever the size the
@@ -227,6 +246,7 @@ void LiveCheck::inspect(QPoint position)
     const QPointF fraction((position.x() + 0.5) / std::max(1, m_viewport->width()),
                            (position.y() + 0.5) / std::max(1, m_viewport->height()));
     m_inspector->show();
+    m_inspector->raise();
     if (m_last && isCurrent(*m_last)) {
         showInspected(fraction);
         return;

@@ -1,6 +1,8 @@
 #pragma once
 #include "CheckOverlay.h"
 #include "CheckRunner.h"
+#include "VerdictDock.h"
+#include "VerdictLabel.h"
 
 #include <QObject>
 #include <QPoint>
@@ -52,12 +54,15 @@ public:
 
     const std::optional<CheckedFrame> &lastResult() const { return m_last; }
     bool isChecking() const { return m_pending || m_runner->isBusy(); }
-    QLabel *statusLabel() const { return m_status; }
+    VerdictLabel *statusLabel() const { return m_status; }
+    VerdictDock *verdictDock() const { return m_verdict; }
     CheckOverlay *overlay() const { return m_overlay; }
     PixelInspectorDock *inspector() const { return m_inspector; }
 
 signals:
     void checked(const phonglab::CheckedFrame &result);
+    // The way on from a verdict that has none: the Uniforms dock's row.
+    void uniformToPlace(const QString &name);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -67,6 +72,8 @@ private:
     void schedule(int delayMs = kCheckDebounceMs);
     void run();
     void show(const CheckedFrame &result);
+    void showVerdict();
+    void followStatusClick();
     // "checking… 40 %" while the exact image of a new view is made.
     void showProgress(int percent);
     void showInspected(QPointF position);
@@ -79,7 +86,11 @@ private:
     CheckRunner *m_runner = nullptr;
     CheckOverlay *m_overlay = nullptr;
     PixelInspectorDock *m_inspector = nullptr;
-    QLabel *m_status = nullptr;
+    VerdictLabel *m_status = nullptr;
+    VerdictDock *m_verdict = nullptr;
+    // False from a failed build of the editor's code until a program of it
+    // is applied: the verdict shown is the last good program's.
+    bool m_codeCompiles = true;
     QString m_checkingPrefix; // the last verdict's mark ("✓ "), kept while checking
     QComboBox *m_modes = nullptr;
     QAction *m_inspectAction = nullptr;

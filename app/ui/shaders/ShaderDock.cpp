@@ -258,6 +258,17 @@ void ShaderDock::showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostic
     m_diagnostics->setDiagnostics(diagnostics);
 }
 
+void ShaderDock::showCheckMarks(const std::vector<ShaderDiagnostic> &vertex,
+                                const QByteArray &vertexText,
+                                const std::vector<ShaderDiagnostic> &fragment,
+                                const QByteArray &fragmentText)
+{
+    m_vertex->setCheckMarks(m_vertex->code() == vertexText ? vertex
+                                                           : std::vector<ShaderDiagnostic>{});
+    m_fragment->setCheckMarks(m_fragment->code() == fragmentText ? fragment
+                                                                 : std::vector<ShaderDiagnostic>{});
+}
+
 void ShaderDock::setCompileStatus(const QString &text, bool ok)
 {
     m_applyAnyway->hide();

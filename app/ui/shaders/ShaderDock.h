@@ -42,6 +42,12 @@ public:
     // Routes each diagnostic to its stage's editor (Link ones to the
     // fragment editor when they carry a line) and lists them all.
     void showDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
+    // What the check found, on the lines of the text it checked: a stage's
+    // marks are shown only while its editor holds that text (after an edit
+    // they wait for the next check).
+    void showCheckMarks(const std::vector<ShaderDiagnostic> &vertex, const QByteArray &vertexText,
+                        const std::vector<ShaderDiagnostic> &fragment,
+                        const QByteArray &fragmentText);
     // "compiled in 12 ms" (ok) or "2 errors — last good program still running".
     void setCompileStatus(const QString &text, bool ok);
     // A program kept out for its frame time: `text` as a failed status,

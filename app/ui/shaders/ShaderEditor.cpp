@@ -25,6 +25,8 @@ namespace {
 // (0-27, 32-39 predefined, 64-91 inactive code).
 constexpr int kErrorAnnotationStyle = 120;
 constexpr int kWarningAnnotationStyle = 121;
+constexpr int kCheckAnnotationStyle = 122;
+const QColor kCheckColor(0x6a, 0x1b, 0x9a);
 constexpr int kLineNumberMargin = 0;
 constexpr int kMarkerMargin = 1;
 constexpr int kDeclarationRefreshMs = 400;
@@ -140,6 +142,9 @@ void ShaderEditor::setUpMargins()
     setMarkerForegroundColor(kErrorColor.darker(130), m_errorMarker);
     const int lineHeight = QFontMetrics(fixed).height();
     m_warningMarker = markerDefine(warningTriangle(std::max(10, lineHeight - 2)));
+    m_checkMarker = markerDefine(RightArrow);
+    setMarkerBackgroundColor(kCheckColor, m_checkMarker);
+    setMarkerForegroundColor(kCheckColor.darker(130), m_checkMarker);
 
     setMarginType(kMarkerMargin, SymbolMargin);
     setMarginWidth(kMarkerMargin, lineHeight + 4);
@@ -155,6 +160,9 @@ void ShaderEditor::setUpDiagnosticStyles()
         .apply(this);
     QsciStyle(kWarningAnnotationStyle, tr("Warning annotation"), QColor(0x7a, 0x4a, 0x00),
               QColor(0xfd, 0xf3, 0xdc), font)
+        .apply(this);
+    QsciStyle(kCheckAnnotationStyle, tr("Check annotation"), kCheckColor.darker(120),
+              QColor(0xf3, 0xe5, 0xf5), font)
         .apply(this);
 
     m_errorIndicator = indicatorDefine(SquiggleIndicator);
@@ -236,48 +244,62 @@ void ShaderEditor::followDialect(ShaderDialect dialect)
 
 void ShaderEditor::clearDiagnostics()
 {
-    markerDeleteAll(m_errorMarker);
-    markerDeleteAll(m_warningMarker);
-    clearAnnotations();
-    clearIndicator(m_errorIndicator);
-    clearIndicator(m_warningIndicator);
+    m_diagnostics.clear();
+    showMarks();
 }
 
 void ShaderEditor::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics)
 {
-    clearDiagnostics();
-    const int lastLine = std::max(0, lines() - 1);
-    std::map<int, std::vector<const ShaderDiagnostic *>> byLine;
-    for (const ShaderDiagnostic &diagnostic : diagnostics) {
-        if (diagnostic.line <= 0)
-            continue;
-        const int line = std::min(diagnostic.line - 1, lastLine);
-        byLine[line].push_back(&diagnostic);
-        markerAdd(line, diagnostic.isError() ? m_errorMarker : m_warningMarker);
-        if (diagnostic.column > 0 && diagnostic.line - 1 <= lastLine)
-            underline(line, diagnostic.column, indicatorFor(diagnostic.severity));
-    }
-    for (const auto &[line, onLine] : byLine)
-        annotateLine(line, onLine);
+    m_diagnostics = diagnostics;
+    showMarks();
 }
 
-void ShaderEditor::annotateLine(int line, const std::vector<const ShaderDiagnostic *> &diagnostics)
+void ShaderEditor::setCheckMarks(const std::vector<ShaderDiagnostic> &marks)
 {
-    QStringList messages;
-    QList<int> styles;
-    for (const ShaderDiagnostic *diagnostic : diagnostics) {
-        const QString text = annotationLine(*diagnostic);
-        if (messages.contains(text))
-            continue; // drivers repeat some messages verbatim
-        messages << text;
-        styles << (diagnostic->isError() ? kErrorAnnotationStyle : kWarningAnnotationStyle);
+    m_checkMarks = marks;
+    showMarks();
+}
+
+QList<int> ShaderEditor::checkMarkLines() const
+{
+    return linesWithMarker(m_checkMarker);
+}
+
+// The compiler's diagnostics and the check's marks, each line's messages in
+// one box under it: errors, warnings, then what the check found.
+void ShaderEditor::showMarks()
+{
+    for (int marker : {m_errorMarker, m_warningMarker, m_checkMarker})
+        markerDeleteAll(marker);
+    clearAnnotations();
+    clearIndicator(m_errorIndicator);
+    clearIndicator(m_warningIndicator);
+    const int lastLine = std::max(0, lines() - 1);
+    std::map<int, QList<QsciStyledText>> byLine;
+    const auto add = [&](const ShaderDiagnostic &d, int marker, int style) {
+        if (d.line <= 0)
+            return;
+        const int line = std::min(d.line - 1, lastLine);
+        const QString text = marker == m_checkMarker ? d.message : annotationLine(d);
+        QList<QsciStyledText> &texts = byLine[line];
+        if (std::any_of(texts.begin(), texts.end(),
+                        [&](const QsciStyledText &t) { return t.text().trimmed() == text; }))
+            return; // drivers repeat some messages verbatim
+        texts << QsciStyledText(text, style);
+        markerAdd(line, marker);
+        if (d.column > 0 && d.line - 1 <= lastLine && marker != m_checkMarker)
+            underline(line, d.column, indicatorFor(d.severity));
+    };
+    for (const ShaderDiagnostic &d : m_diagnostics)
+        add(d, d.isError() ? m_errorMarker : m_warningMarker,
+            d.isError() ? kErrorAnnotationStyle : kWarningAnnotationStyle);
+    for (const ShaderDiagnostic &d : m_checkMarks)
+        add(d, m_checkMarker, kCheckAnnotationStyle);
+    for (auto &[line, texts] : byLine) {
+        for (qsizetype i = 0; i + 1 < texts.size(); ++i)
+            texts[i] = QsciStyledText(texts[i].text() + QLatin1Char('\n'), texts[i].style());
+        annotate(line, texts);
     }
-    QList<QsciStyledText> texts;
-    for (qsizetype i = 0; i < messages.size(); ++i) {
-        const bool last = i + 1 == messages.size();
-        texts << QsciStyledText(last ? messages[i] : messages[i] + QLatin1Char('\n'), styles[i]);
-    }
-    annotate(line, texts);
 }
 
 void ShaderEditor::underline(int line, int column, int indicator)
@@ -313,8 +335,13 @@ int ShaderEditor::markerNumber(ShaderDiagnostic::Severity severity) const
 
 QList<int> ShaderEditor::markerLines(ShaderDiagnostic::Severity severity) const
 {
+    return linesWithMarker(markerNumber(severity));
+}
+
+QList<int> ShaderEditor::linesWithMarker(int marker) const
+{
     QList<int> result;
-    const unsigned mask = 1u << markerNumber(severity);
+    const unsigned mask = 1u << marker;
     for (int line = markerFindNext(0, mask); line >= 0; line = markerFindNext(line + 1, mask))
         result << line + 1;
     return result;

@@ -36,6 +36,11 @@ public:
     // last line.
     void setDiagnostics(const std::vector<ShaderDiagnostic> &diagnostics);
     void clearDiagnostics();
+    // What the check found on these lines (ui/check/CheckMarks): a purple
+    // arrow and a box under the line, beside the compiler's own; replaces
+    // the check's marks before.
+    void setCheckMarks(const std::vector<ShaderDiagnostic> &marks);
+    QList<int> checkMarkLines() const;
 
     // For tests and tools: 1-based lines holding a marker of `severity`,
     // the annotation under 1-based `line`, and the text a diagnostic
@@ -74,7 +79,8 @@ private:
     void setUpDiagnosticStyles();
     void setUpEditing();
     void addShortcuts();
-    void annotateLine(int line, const std::vector<const ShaderDiagnostic *> &diagnostics);
+    void showMarks();
+    QList<int> linesWithMarker(int marker) const;
     void underline(int line, int column, int indicator);
     void clearIndicator(int indicator);
     int indicatorFor(ShaderDiagnostic::Severity severity) const;
@@ -84,6 +90,9 @@ private:
     QTimer *m_declarationTimer = nullptr;
     int m_errorMarker = -1;
     int m_warningMarker = -1;
+    int m_checkMarker = -1;
+    std::vector<ShaderDiagnostic> m_diagnostics; // the compiler's
+    std::vector<ShaderDiagnostic> m_checkMarks;
     int m_errorIndicator = -1;
     int m_warningIndicator = -1;
 };

@@ -1,5 +1,7 @@
 #include "BindingChoice.h"
 
+#include <QAbstractItemView>
+
 namespace phonglab {
 
 namespace {

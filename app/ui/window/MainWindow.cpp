@@ -7,6 +7,7 @@
 #include "ViewMenu.h"
 #include "WarningBox.h"
 #include "core/support/Language.h"
+#include "ui/check/CheckMarks.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"
 #include "ui/help/HelpMenu.h"
@@ -61,6 +62,7 @@ MainWindow::MainWindow(QWidget *parent, const StartupOptions &options)
     connectLoading();
     m_liveCheck->pauseWhileLoading(m_document->loadJob());
     connect(m_uniformsDock, &UniformsDock::valueWritten, m_liveCheck, &LiveCheck::frameChanged);
+    connectCheck();
     connect(m_viewport, &Viewport::glRendererChanged, m_rendererLabel, &QLabel::setText);
     connect(m_viewport, &Viewport::framesHeldAfter, this, [this](double ms) {
         statusBar()->showMessage(
@@ -196,6 +198,27 @@ void MainWindow::createUniformsDock()
 }
 
 // Hidden until asked for (DefaultLayout): measuring is occasional.
+// The check's findings where the student works: a uniform to place in the
+// Uniforms dock, a mistake on its line in the editor.
+void MainWindow::connectCheck()
+{
+    connect(m_liveCheck, &LiveCheck::uniformToPlace, m_uniformsDock, &UniformsDock::showUniform);
+    connect(m_liveCheck->verdictDock(), &VerdictDock::lineChosen, this,
+            [this](ShaderStage stage, int line) { m_shaderDock->goTo(stage, line, 0); });
+    connect(m_liveCheck, &LiveCheck::checked, this, [this](const CheckedFrame &result) {
+        QStringList unplaced;
+        for (const UnboundUniform &u : result.unbound)
+            unplaced << u.name;
+        m_uniformsDock->markUnplaced(unplaced);
+        const CheckMarks marks = checkMarks(result);
+        QByteArray vertex;
+        QByteArray fragment;
+        for (const ShaderStageText &s : result.outcome.stages)
+            (s.vertex ? vertex : fragment) = s.text.toUtf8();
+        m_shaderDock->showCheckMarks(marks.vertex, vertex, marks.fragment, fragment);
+    });
+}
+
 void MainWindow::createPerformanceDock()
 {
     m_performanceDock = new PerformanceDock(m_viewport, m_options.benchExecutable, this);

@@ -71,6 +71,7 @@ private:
     void createDocument();
     void createUniformsDock();
     void createPerformanceDock();
+    void connectCheck();
     void createStatusBar();
     void connectLoading();
     void showRenderError(const QString &message);
