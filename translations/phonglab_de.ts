@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
+    <name>CheckStepsWords</name>
+    <message>
+        <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
+        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
+    </message>
+</context>
+<context>
     <name>ObjectChoice</name>
     <message>
         <source>%1: %2</source>
@@ -13,10 +20,6 @@
     <message>
         <source>check: %1</source>
         <translation>Prüfung: %1</translation>
-    </message>
-    <message>
-        <source>check: nothing to compare in this view</source>
-        <translation>Prüfung: in dieser Ansicht gibt es nichts zu vergleichen</translation>
     </message>
     <message>
         <source>%1 against exact Phong: %2</source>
@@ -198,6 +201,54 @@ Stattdessen wird die Standardszene angezeigt.</translation>
 The commands render, check, grade, mesh-info and bench run without one (phonglab --help).</source>
         <translation>phonglab: Das Editorfenster braucht ein Display (X11 oder Wayland), und DISPLAY ist nicht gesetzt.
 Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --help).</translation>
+    </message>
+    <message>
+        <source>%1: choose what it means in Uniforms</source>
+        <translation>%1: Unter „Uniform-Variablen“ auswählen, was sie bedeutet</translation>
+    </message>
+    <message>
+        <source>check: %1 — %2</source>
+        <translation>Prüfung: %1 — %2</translation>
+    </message>
+    <message>
+        <source>nothing to compare: no surface away from silhouettes in this view</source>
+        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>The check could not run: %1</source>
+        <translation>Die Prüfung konnte nicht laufen: %1</translation>
+    </message>
+    <message>
+        <source>choose what %1 means in Uniforms</source>
+        <translation>unter „Uniform-Variablen“ auswählen, was %1 bedeutet</translation>
+    </message>
+    <message>
+        <source>no verdict: choose what %1 %2 in Uniforms</source>
+        <translation>kein Urteil: unter „Uniform-Variablen“ auswählen, was %1 %2</translation>
+    </message>
+    <message>
+        <source>means</source>
+        <translation>bedeutet</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>bedeuten</translation>
+    </message>
+    <message>
+        <source>no verdict: %1</source>
+        <translation>kein Urteil: %1</translation>
+    </message>
+    <message>
+        <source>see the check&apos;s panel</source>
+        <translation>siehe das Prüfungsfenster</translation>
+    </message>
+    <message>
+        <source>last good program: %1</source>
+        <translation>letztes fehlerfreies Programm: %1</translation>
     </message>
 </context>
 <context>
@@ -458,6 +509,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>What PhongLab sets %1 to (saved with the scene as &quot;bindings&quot;)</source>
         <translation>Der Wert, auf den PhongLab %1 setzt (mit der Szene unter &quot;bindings&quot; gespeichert)</translation>
     </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BindingConflicts</name>
@@ -691,6 +746,137 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>silhouette band, not checked</source>
         <translation>Silhouettenrand, nicht bewertet</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::CheckReportOutput</name>
+    <message>
+        <source>pass</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>%1 explains %2 % of the difference (%3): %4</source>
+        <translation>%1 erklärt %2 % des Unterschieds (%3): %4</translation>
+    </message>
+    <message>
+        <source>; or, with the same image, %1: %2</source>
+        <translation>; oder, bei gleichem Bild, %1: %2</translation>
+    </message>
+    <message>
+        <source>the background</source>
+        <translation>Hintergrund</translation>
+    </message>
+    <message>
+        <source>object %1 (%2)</source>
+        <translation>Objekt %1 (%2)</translation>
+    </message>
+    <message>
+        <source>no classic mistake explains the difference; the error heatmap (--diff) shows where it is</source>
+        <translation>kein typischer Fehler erklärt den Unterschied; die Fehler-Heatmap (--diff) zeigt, wo er liegt</translation>
+    </message>
+    <message>
+        <source>bindings: %1</source>
+        <translation>Zuordnungen: %1</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>check: error</source>
+        <translation>Prüfung: Fehler</translation>
+    </message>
+    <message>
+        <source>check: %1</source>
+        <translation>Prüfung: %1</translation>
+    </message>
+    <message>
+        <source>%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it</source>
+        <translation>%1, max. Fehler %2/255 (Toleranz %3/255), %4 % von %5 verglichenen Pixeln darüber</translation>
+    </message>
+    <message>
+        <source>PSNR %1 dB</source>
+        <translation>PSNR %1 dB</translation>
+    </message>
+    <message>
+        <source>PSNR inf</source>
+        <translation>PSNR inf</translation>
+    </message>
+    <message>
+        <source>equation: the slide&apos;s, taken literally (a highlight even where N·L &lt;= 0), which is right too</source>
+        <translation>Beleuchtungsgleichung: wörtlich wie auf der Folie (ein Glanzlicht auch dort, wo N·L &lt;= 0 ist); auch das ist richtig</translation>
+    </message>
+    <message>
+        <source>worst pixel (%1, %2) on %3</source>
+        <translation>schlechtestes Pixel (%1, %2): %3</translation>
+    </message>
+    <message>
+        <source>diagnosis:</source>
+        <translation>Diagnose:</translation>
+    </message>
+    <message>
+        <source>  unknown: no classic mistake explains the difference; the heatmap (--diff) shows where it is</source>
+        <translation>  unknown: kein typischer Fehler erklärt den Unterschied; die Heatmap (--diff) zeigt, wo er liegt</translation>
+    </message>
+    <message>
+        <source>cannot show in this scene: %1</source>
+        <translation>in dieser Szene nicht nachweisbar: %1</translation>
+    </message>
+    <message>
+        <source>precision: %1 checked as written, as this driver computes it</source>
+        <translation>Genauigkeit: %1 wie geschrieben beurteilt, so wie dieser Treiber rechnet</translation>
+    </message>
+    <message>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written the program does not build on a driver that honours precision (a browser too): %2</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben lässt sich das Programm auf einem Treiber, der die Genauigkeit einhält (auch in einem Browser), nicht bauen: %2</translation>
+    </message>
+    <message>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet</translation>
+    </message>
+    <message>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written it draws the same image here</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben zeichnet es hier dasselbe Bild</translation>
+    </message>
+    <message>
+        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written, on a driver that computes %1 in fewer bits (this one does), the image changes by up to %2/255 (PSNR %3 dB): not counted against the shader</source>
+        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben ändert sich das Bild auf einem Treiber, der %1 mit weniger Bits rechnet (wie dieser), um bis zu %2/255 (PSNR %3 dB): wird dem Shader nicht angerechnet</translation>
+    </message>
+    <message>
+        <source>  together: %1 explain %2 % of the difference</source>
+        <translation>  zusammen: %1 erklären %2 % des Unterschieds</translation>
+    </message>
+    <message>
+        <source>  each alone:</source>
+        <translation>  jeder für sich:</translation>
+    </message>
+    <message>
+        <source>bound by use: %1</source>
+        <translation>nach Verwendung gebunden: %1</translation>
+    </message>
+    <message>
+        <source>%1: the vertex shader computes the lighting and the fragment shader interpolates it (its image alone explains %2 % of the difference): %3</source>
+        <translation>%1: der Vertex-Shader berechnet die Beleuchtung und der Fragment-Shader interpoliert sie (ihr Bild allein erklärt %2 % des Unterschieds): %3</translation>
+    </message>
+    <message>
+        <source>  closest, partial: %1 explain %2 % of the difference</source>
+        <translation>  am nächsten, teilweise: %1 erklären %2 % des Unterschieds</translation>
+    </message>
+    <message>
+        <source>  more than %1 deviations would be needed to explain all of it: the heatmap shows the rest</source>
+        <translation>  mehr als %1 Abweichungen wären nötig, um alles zu erklären: die Heatmap zeigt den Rest</translation>
+    </message>
+    <message>
+        <source>not checked in this scene: %1</source>
+        <translation>in dieser Szene nicht geprüft: %1</translation>
     </message>
 </context>
 <context>
@@ -1308,6 +1494,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>checking… %1 %</source>
         <translation>Prüfung läuft… %1 %</translation>
+    </message>
+    <message>
+        <source>Check &amp;Verdict</source>
+        <translation>&amp;Prüfungsergebnis</translation>
     </message>
 </context>
 <context>
@@ -2499,6 +2689,29 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::ProgramFindings</name>
+    <message>
+        <source>uniform %1 (%2) is bound to nothing, so the shader reads zero</source>
+        <translation>Uniform %1 (%2) ist nichts zugeordnet, daher liest der Shader null</translation>
+    </message>
+    <message>
+        <source>%1=%2: %3 (%4 shader, line %5)</source>
+        <translation>%1=%2: %3 (%4-Shader, Zeile %5)</translation>
+    </message>
+    <message>
+        <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: checked with the first %1 alone</source>
+        <translation>der Shader verarbeitet %1 %2 (seine Uniform-Variablen für Lichtquellen bieten keinen Platz für mehr), die Szene hat %3 eingeschaltet: geprüft nur mit den ersten %1</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>Lichtquelle</translation>
+    </message>
+    <message>
+        <source>lights</source>
+        <translation>Lichtquellen</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::ProgramSynopsis</name>
     <message>
         <source>usage: phonglab [SCENE.json | MESH...]  start the editor on a scene or mesh files
@@ -3281,18 +3494,6 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation>PSNR %1 dB</translation>
     </message>
     <message>
-        <source>✓ %1 — the slide&apos;s equation (a highlight even where N·L &lt;= 0)</source>
-        <translation>✓ %1 — die Gleichung der Folie (Glanzlicht auch dort, wo N·L &lt;= 0)</translation>
-    </message>
-    <message>
-        <source>✗ %1 — no classic mistake explains it: see the heatmap</source>
-        <translation>✗ %1 — kein typischer Fehler erklärt das: siehe Heatmap</translation>
-    </message>
-    <message>
-        <source>✗ %1 — %2: %3</source>
-        <translation>✗ %1 — %2: %3</translation>
-    </message>
-    <message>
         <source> (or %1)</source>
         <translation> (oder %1)</translation>
     </message>
@@ -3317,12 +3518,24 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation> oder </translation>
     </message>
     <message>
-        <source>✗ %1 — %2 mistakes together: %3</source>
-        <translation>✗ %1 — %2 Fehler zusammen: %3</translation>
-    </message>
-    <message>
         <source> — %1 mistakes together (%2 %): %3</source>
         <translation> — %1 Fehler zusammen (%2 %): %3</translation>
+    </message>
+    <message>
+        <source>✓ %1 — the slide&apos;s equation</source>
+        <translation>✓ %1 — die Gleichung der Folie</translation>
+    </message>
+    <message>
+        <source> — not checked here: %1</source>
+        <translation> — hier nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <source>✗ %1 — %2</source>
+        <translation>✗ %1 — %2</translation>
+    </message>
+    <message>
+        <source>✗ %1 — no classic mistake explains it</source>
+        <translation>✗ %1 — kein klassischer Fehler erklärt es</translation>
     </message>
 </context>
 <context>
@@ -3435,6 +3648,10 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
     <message>
         <source>Ctrl+Shift+Space</source>
         <translation>Ctrl+Shift+Space</translation>
+    </message>
+    <message>
+        <source>Check annotation</source>
+        <translation>Prüfungshinweis</translation>
     </message>
 </context>
 <context>
@@ -3760,6 +3977,53 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::SilentTerms</name>
+    <message>
+        <source>Ia = 0</source>
+        <translation>Ia = 0</translation>
+    </message>
+    <message>
+        <source>ka = 0 on every object</source>
+        <translation>ka = 0 bei jedem Objekt</translation>
+    </message>
+    <message>
+        <source>no light is on</source>
+        <translation>keine Lichtquelle ist eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Id = 0 for every light</source>
+        <translation>Id = 0 bei jeder Lichtquelle</translation>
+    </message>
+    <message>
+        <source>Is = 0 for every light</source>
+        <translation>Is = 0 bei jeder Lichtquelle</translation>
+    </message>
+    <message>
+        <source>kd = 0 on every object</source>
+        <translation>kd = 0 bei jedem Objekt</translation>
+    </message>
+    <message>
+        <source>ks = 0 on every object</source>
+        <translation>ks = 0 bei jedem Objekt</translation>
+    </message>
+    <message>
+        <source>ambient</source>
+        <translation>ambient</translation>
+    </message>
+    <message>
+        <source>diffuse</source>
+        <translation>diffus</translation>
+    </message>
+    <message>
+        <source>specular</source>
+        <translation>spekular</translation>
+    </message>
+    <message>
+        <source>the %1 term (%2)</source>
+        <translation>der Anteil %1 (%2)</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::SpeedAccuracyChart</name>
     <message>
         <source>frame time (ms, median)</source>
@@ -3861,6 +4125,10 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
         <source>by its use: %1 (%2 shader, line %3)</source>
         <translation>nach Verwendung: %1 (%2-Shader, Zeile %3)</translation>
     </message>
+    <message>
+        <source>bound to nothing: choose what it is</source>
+        <translation>nichts zugeordnet: auswählen, was sie ist</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::Vec3Field</name>
@@ -3887,6 +4155,21 @@ Sollen sie im Editor wiederhergestellt werden?</translation>
     <message>
         <source>%1: must be in [%2, %3] (got %4)</source>
         <translation>%1: muss in [%2, %3] liegen (erhalten: %4)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::VerdictDock</name>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>The check&apos;s verdict appears here once the first frame is checked.</source>
+        <translation>Das Prüfungsergebnis erscheint hier, sobald das erste Bild geprüft ist.</translation>
+    </message>
+    <message>
+        <source>The code in the editor does not compile: this is the verdict of the last program that did, which is still drawn.</source>
+        <translation>Der Code im Editor lässt sich nicht kompilieren: Dies ist das Urteil über das letzte Programm, das sich kompilieren ließ und weiterhin gezeichnet wird.</translation>
     </message>
 </context>
 <context>
@@ -4371,133 +4654,6 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     </message>
 </context>
 <context>
-    <name>phonglab::cli::CheckReportOutput</name>
-    <message>
-        <source>pass</source>
-        <translation>bestanden</translation>
-    </message>
-    <message>
-        <source>fail</source>
-        <translation>nicht bestanden</translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <source>%1 explains %2 % of the difference (%3): %4</source>
-        <translation>%1 erklärt %2 % des Unterschieds (%3): %4</translation>
-    </message>
-    <message>
-        <source>; or, with the same image, %1: %2</source>
-        <translation>; oder, bei gleichem Bild, %1: %2</translation>
-    </message>
-    <message>
-        <source>the background</source>
-        <translation>Hintergrund</translation>
-    </message>
-    <message>
-        <source>object %1 (%2)</source>
-        <translation>Objekt %1 (%2)</translation>
-    </message>
-    <message>
-        <source>no classic mistake explains the difference; the error heatmap (--diff) shows where it is</source>
-        <translation>kein typischer Fehler erklärt den Unterschied; die Fehler-Heatmap (--diff) zeigt, wo er liegt</translation>
-    </message>
-    <message>
-        <source>bindings: %1</source>
-        <translation>Zuordnungen: %1</translation>
-    </message>
-    <message>
-        <source>note: %1</source>
-        <translation>Hinweis: %1</translation>
-    </message>
-    <message>
-        <source>check: error</source>
-        <translation>Prüfung: Fehler</translation>
-    </message>
-    <message>
-        <source>check: %1</source>
-        <translation>Prüfung: %1</translation>
-    </message>
-    <message>
-        <source>%1, max error %2/255 (tolerance %3/255), %4 % of %5 compared pixels over it</source>
-        <translation>%1, max. Fehler %2/255 (Toleranz %3/255), %4 % von %5 verglichenen Pixeln darüber</translation>
-    </message>
-    <message>
-        <source>PSNR %1 dB</source>
-        <translation>PSNR %1 dB</translation>
-    </message>
-    <message>
-        <source>PSNR inf</source>
-        <translation>PSNR inf</translation>
-    </message>
-    <message>
-        <source>equation: the slide&apos;s, taken literally (a highlight even where N·L &lt;= 0), which is right too</source>
-        <translation>Beleuchtungsgleichung: wörtlich wie auf der Folie (ein Glanzlicht auch dort, wo N·L &lt;= 0 ist); auch das ist richtig</translation>
-    </message>
-    <message>
-        <source>worst pixel (%1, %2) on %3</source>
-        <translation>schlechtestes Pixel (%1, %2): %3</translation>
-    </message>
-    <message>
-        <source>diagnosis:</source>
-        <translation>Diagnose:</translation>
-    </message>
-    <message>
-        <source>  unknown: no classic mistake explains the difference; the heatmap (--diff) shows where it is</source>
-        <translation>  unknown: kein typischer Fehler erklärt den Unterschied; die Heatmap (--diff) zeigt, wo er liegt</translation>
-    </message>
-    <message>
-        <source>cannot show in this scene: %1</source>
-        <translation>in dieser Szene nicht nachweisbar: %1</translation>
-    </message>
-    <message>
-        <source>precision: %1 checked as written, as this driver computes it</source>
-        <translation>Genauigkeit: %1 wie geschrieben beurteilt, so wie dieser Treiber rechnet</translation>
-    </message>
-    <message>
-        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written the program does not build on a driver that honours precision (a browser too): %2</source>
-        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben lässt sich das Programm auf einem Treiber, der die Genauigkeit einhält (auch in einem Browser), nicht bauen: %2</translation>
-    </message>
-    <message>
-        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it</source>
-        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet</translation>
-    </message>
-    <message>
-        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written it draws the same image here</source>
-        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben zeichnet es hier dasselbe Bild</translation>
-    </message>
-    <message>
-        <source>precision: %1 checked at highp (32-bit floats), as a desktop browser computes it; as written, on a driver that computes %1 in fewer bits (this one does), the image changes by up to %2/255 (PSNR %3 dB): not counted against the shader</source>
-        <translation>Genauigkeit: %1 mit highp beurteilt (32-Bit-Gleitkommazahlen), so wie ein Desktop-Browser rechnet; wie geschrieben ändert sich das Bild auf einem Treiber, der %1 mit weniger Bits rechnet (wie dieser), um bis zu %2/255 (PSNR %3 dB): wird dem Shader nicht angerechnet</translation>
-    </message>
-    <message>
-        <source>  together: %1 explain %2 % of the difference</source>
-        <translation>  zusammen: %1 erklären %2 % des Unterschieds</translation>
-    </message>
-    <message>
-        <source>  each alone:</source>
-        <translation>  jeder für sich:</translation>
-    </message>
-    <message>
-        <source>bound by use: %1</source>
-        <translation>nach Verwendung gebunden: %1</translation>
-    </message>
-    <message>
-        <source>%1: the vertex shader computes the lighting and the fragment shader interpolates it (its image alone explains %2 % of the difference): %3</source>
-        <translation>%1: der Vertex-Shader berechnet die Beleuchtung und der Fragment-Shader interpoliert sie (ihr Bild allein erklärt %2 % des Unterschieds): %3</translation>
-    </message>
-    <message>
-        <source>  closest, partial: %1 explain %2 % of the difference</source>
-        <translation>  am nächsten, teilweise: %1 erklären %2 % des Unterschieds</translation>
-    </message>
-    <message>
-        <source>  more than %1 deviations would be needed to explain all of it: the heatmap shows the rest</source>
-        <translation>  mehr als %1 Abweichungen wären nötig, um alles zu erklären: die Heatmap zeigt den Rest</translation>
-    </message>
-</context>
-<context>
     <name>phonglab::cli::CheckSteps</name>
     <message>
         <source>the shaders did not compile</source>
@@ -4506,10 +4662,6 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>rendering failed</source>
         <translation>Rendern fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
-        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
     </message>
     <message>
         <source>cannot read shader: %1</source>
@@ -5257,28 +5409,12 @@ rechnet)</translation>
         <translation>--shading: unbekanntes Verfahren &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <source>uniform %1 (%2) is bound to nothing, so the shader reads zero</source>
-        <translation>Uniform %1 (%2) ist nichts zugeordnet, daher liest der Shader null</translation>
-    </message>
-    <message>
         <source>; if it is %1, add --bind %2=%3 (or &quot;bindings&quot; in the scene)</source>
         <translation>; falls es sich um %1 handelt, --bind %2=%3 angeben (oder &quot;bindings&quot; in der Szene)</translation>
     </message>
     <message>
         <source>; bind it with --bind %1=MEANING (meanings: %2), or give it a value in the scene&apos;s &quot;uniforms&quot;</source>
         <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
-    </message>
-    <message>
-        <source>the shader takes %1 %2 (its light uniforms have room for no more) and the scene has %3 enabled: checked with the first %1 alone</source>
-        <translation>der Shader verarbeitet %1 %2 (seine Uniform-Variablen für Lichtquellen bieten keinen Platz für mehr), die Szene hat %3 eingeschaltet: geprüft nur mit den ersten %1</translation>
-    </message>
-    <message>
-        <source>light</source>
-        <translation>Lichtquelle</translation>
-    </message>
-    <message>
-        <source>lights</source>
-        <translation>Lichtquellen</translation>
     </message>
     <message>
         <source>%1 %2: PhongLab writes PNG images only; give a name that ends in .png</source>
@@ -5309,10 +5445,6 @@ rechnet)</translation>
 %1</source>
         <translation>Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
 %1</translation>
-    </message>
-    <message>
-        <source>%1=%2: %3 (%4 shader, line %5)</source>
-        <translation>%1=%2: %3 (%4-Shader, Zeile %5)</translation>
     </message>
 </context>
 <context>
