@@ -82,7 +82,7 @@ private slots:
         QVERIFY(typeTheSlidesEquationAndCheck(kCheckTimeoutMs));
         QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
-        const QString status = check->statusLabel()->text();
+        const QString status = check->statusLabel()->verdict();
         QVERIFY2(status.startsWith(QStringLiteral("✓")), qPrintable(status));
         QVERIFY2(!status.contains(QStringLiteral("slide")), qPrintable(status));
         QVERIFY2(status.contains(QStringLiteral("Folie")), qPrintable(status));

@@ -67,13 +67,13 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
         QVERIFY(waitForVerdict(true));
-        QVERIFY2(check->statusLabel()->text().startsWith(QStringLiteral("✓")),
-                 qPrintable(check->statusLabel()->text()));
+        QVERIFY2(check->statusLabel()->verdict().startsWith(QStringLiteral("✓")),
+                 qPrintable(check->statusLabel()->verdict()));
 
         replaceInFragment(QStringLiteral("reflect(-L, N)"), QStringLiteral("reflect(L, N)"));
         QVERIFY(waitForVerdict(false));
         const CheckedFrame &result = *check->lastResult();
-        const QString status = check->statusLabel()->text();
+        const QString status = check->statusLabel()->verdict();
         QVERIFY2(status.startsWith(QStringLiteral("✗"))
                      && status.contains(QStringLiteral("reflect-incident")),
                  qPrintable(status));
@@ -144,7 +144,7 @@ private slots:
         // Undo the mistake: ✓ again.
         replaceInFragment(QStringLiteral("reflect(L, N)"), QStringLiteral("reflect(-L, N)"));
         QVERIFY(waitForVerdict(true));
-        QVERIFY(check->statusLabel()->text().startsWith(QStringLiteral("✓")));
+        QVERIFY(check->statusLabel()->verdict().startsWith(QStringLiteral("✓")));
 
         // The headlight changes the frame, not the scene: checked again, with it.
         const quint64 before = check->lastResult()->generation;
@@ -174,7 +174,7 @@ private slots:
         QVERIFY(runner);
         QStringList seen;
         connect(runner, &CheckRunner::progressed, this,
-                [&] { seen << check->statusLabel()->text(); });
+                [&] { seen << check->statusLabel()->verdict(); });
         m_window->resize(m_window->width() - 24, m_window->height()); // a new view
         QTRY_VERIFY_WITH_TIMEOUT(!seen.isEmpty(), kCheckTimeoutMs);
         QVERIFY(waitForVerdict(true));
@@ -193,9 +193,9 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         LiveCheck *check = m_window->liveCheck();
         const CheckedFrame &result = *check->lastResult();
-        QVERIFY2(result.report().passed(), qPrintable(check->statusLabel()->text()));
-        QVERIFY2(check->statusLabel()->text().contains(QStringLiteral("slide")),
-                 qPrintable(check->statusLabel()->text()));
+        QVERIFY2(result.report().passed(), qPrintable(check->statusLabel()->verdict()));
+        QVERIFY2(check->statusLabel()->verdict().contains(QStringLiteral("slide")),
+                 qPrintable(check->statusLabel()->verdict()));
         const std::vector<int> errors =
             checkErrorSteps(toRgbImage(result.yours), *result.reference, PhongEquation::Slide);
         for (std::size_t i = 0; i < errors.size(); ++i) {
@@ -463,7 +463,7 @@ private slots:
                     && check->lastResult()->reference;
             },
             kCheckTimeoutMs));
-        const QString status = check->statusLabel()->text();
+        const QString status = check->statusLabel()->verdict();
         QVERIFY2(status.startsWith(QStringLiteral("✓")), qPrintable(status));
         // What was checked is the view as it is: its size and its scene.
         QCOMPARE(check->lastResult()->yours.size(),

@@ -61,6 +61,7 @@ private slots:
     void termFactorsSplitTheProducts();
     void aGainBesideANamedColour();
     void aGainOfTheWholeColourStaysTheUsers();
+    void aColourAddedBesideTheAmbientStaysTheUsers();
     void columnsAndElementsScaleTheirTerms();
     void namesAndTheUsersWordWin();
     void whatNoTermTakesStaysUnbound();
@@ -265,6 +266,24 @@ void TestBindingsByUse::aGainOfTheWholeColourStaysTheUsers()
          uniform("diffuseProduct", GlslType::Vec3), uniform("specularProduct", GlslType::Vec3)},
         kVertex, fragment);
     QCOMPARE(b.of("exposure"), std::nullopt);
+}
+
+void TestBindingsByUse::aColourAddedBesideTheAmbientStaysTheUsers()
+{
+    // Issue 49: `+= uZork` beside a named ambientProduct is no factor of the
+    // ambient term (it was bound as its gain, 1, and whitened the image
+    // into a fail); nothing places it, which check says.
+    const QByteArray fragment =
+        "precision highp float;\nuniform vec3 uZork;\nuniform vec3 ambientProduct, "
+        "diffuseProduct, specularProduct;\nvarying vec3 nrm, L, R, V;\nvoid main() {\n"
+        "  vec3 I = ambientProduct + diffuseProduct * max(dot(nrm, L), 0.0)"
+        " + specularProduct * pow(max(dot(R, V), 0.0), 8.0);\n"
+        "  I += uZork;\n  gl_FragColor = vec4(I, 1.0);\n}\n";
+    const Bound b = bindAll(
+        {uniform("uZork", GlslType::Vec3), uniform("ambientProduct", GlslType::Vec3),
+         uniform("diffuseProduct", GlslType::Vec3), uniform("specularProduct", GlslType::Vec3)},
+        kVertex, fragment);
+    QCOMPARE(b.of("uZork"), std::nullopt);
 }
 
 void TestBindingsByUse::columnsAndElementsScaleTheirTerms()

@@ -455,11 +455,26 @@ int bindTermFactors(ProgramBindings &bindings, const QByteArray &vertex, const Q
     });
     if (!lit)
         return 0;
+    // Where one unlit product holds the ambient term by name (Angel's
+    // `ambientProduct`), another unlit one added beside it is no part of it:
+    // `+= uZork` is the student's own, not the ambient term's gain.
+    const auto holdsAmbient = [&](const Product &p) {
+        return std::any_of(p.factors.begin(), p.factors.end(), [&](const Factor &f) {
+            const auto &meaning = bindings.variables[std::size_t(f.variable)].meaning;
+            if (!meaning)
+                return false;
+            const Parts parts = partsOf(*meaning, Term::None);
+            return parts.light || parts.material;
+        });
+    };
+    const bool ambientNamed = std::any_of(reaching.begin(), reaching.end(), [&](const Product &p) {
+        return p.term == Term::None && holdsAmbient(p);
+    });
     // Each term's factors, each variable once; a variable in two terms is shared.
     std::map<Term, std::vector<Factor>> terms;
     std::map<int, std::vector<Term>> termsOf;
     for (const Product &p : reaching) {
-        if (p.term == Term::Mixed)
+        if (p.term == Term::Mixed || (p.term == Term::None && ambientNamed && !holdsAmbient(p)))
             continue;
         for (const Factor &f : p.factors) {
             std::vector<Factor> &list = terms[p.term];

@@ -14,6 +14,8 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QScrollArea>
+#include <QTimer>
+#include <utility>
 #include <QStyle>
 
 namespace phonglab {
@@ -229,14 +231,14 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
         why->setEnabled(false); // a note's grey
         layout->addWidget(why);
     }
-    if (m_unplaced.contains(name)) {
-        title->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
-        auto *unplaced = new QLabel(tr("bound to nothing: choose what it is"), label);
-        unplaced->setObjectName(QStringLiteral("unplaced:") + name);
-        unplaced->setStyleSheet(QStringLiteral("color: #c62828;"));
-        unplaced->setWordWrap(true);
-        layout->addWidget(unplaced);
-    }
+    // Shown while the check finds nothing to place it (markUnplaced()).
+    title->setObjectName(QStringLiteral("uniformName:") + name);
+    auto *unplaced = new QLabel(tr("bound to nothing: choose what it is"), label);
+    unplaced->setObjectName(QStringLiteral("unplaced:") + name);
+    unplaced->setStyleSheet(QStringLiteral("color: #c62828;"));
+    unplaced->setWordWrap(true);
+    layout->addWidget(unplaced);
+    showUnplaced(name);
     connect(choice, &BindingChoice::chosen, this, [this, choice](const QString &variableName) {
         m_viewport->setBindings(withBinding(m_viewport->currentScene().bindings, variableName,
                                             choice->explicitBinding()));
@@ -246,11 +248,21 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
 }
 void UniformsDock::markUnplaced(const QStringList &names)
 {
-    if (names == m_unplaced)
-        return;
-    m_unplaced = names;
-    m_layoutKey.clear(); // the rows' labels change
-    scheduleRebuild();
+    const QStringList before = std::exchange(m_unplaced, names);
+    for (const QString &name : before + names)
+        showUnplaced(name);
+}
+
+// The mark on `name`'s row as m_unplaced says, the rows kept (making them
+// again takes the GUI thread's time and the user's focus).
+void UniformsDock::showUnplaced(const QString &name)
+{
+    const bool unplaced = m_unplaced.contains(name);
+    if (auto *mark = m_contents->findChild<QLabel *>(QStringLiteral("unplaced:") + name))
+        mark->setVisible(unplaced);
+    if (auto *title = m_contents->findChild<QLabel *>(QStringLiteral("uniformName:") + name))
+        title->setStyleSheet(unplaced ? QStringLiteral("color: #c62828; font-weight: bold;")
+                                      : QString());
 }
 
 void UniformsDock::showUniform(const QString &name)
@@ -264,8 +276,11 @@ void UniformsDock::showUniform(const QString &name)
         return;
     m_scroll->ensureWidgetVisible(row);
     if (auto *choice = m_contents->findChild<QComboBox *>(QStringLiteral("boundTo:") + name)) {
-        m_scroll->ensureWidgetVisible(choice);
-        choice->setFocus(Qt::OtherFocusReason);
+        // Once the dock just shown is laid out: a hidden widget takes no focus.
+        QTimer::singleShot(0, choice, [this, choice] {
+            m_scroll->ensureWidgetVisible(choice);
+            choice->setFocus(Qt::OtherFocusReason);
+        });
     }
 }
 

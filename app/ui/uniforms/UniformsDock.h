@@ -78,6 +78,7 @@ private:
                 QWidget *labelWidget = nullptr);
     QWidget *labelWithChoice(const QString &name, const Program &program);
     void connectRow(QWidget *row, const QString &element);
+    void showUnplaced(const QString &name);
     void writeFloats(const QString &element, const QList<float> &values);
     void writeInt(const QString &element, int value);
     void write(const UniformValue &value);
