@@ -1,5 +1,7 @@
 #include "LightsDock.h"
 
+#include "core/view/LightPlacement.h"
+
 #include "Vec3Field.h"
 
 #include <QCheckBox>
@@ -224,9 +226,8 @@ void LightsDock::addLight()
 {
     if (!isBound() || int(scene().lights.size()) >= kMaxLights)
         return;
-    // Above and in front of the target, where a new light is visible at once.
     PointLight light;
-    light.position = scene().camera.target + glm::dvec3(2.0, 3.0, 2.0);
+    light.position = visibleLightPosition(scene().camera, int(scene().lights.size()));
     pushEdit(new AddLightCommand(access(), light));
     selectLight(int(scene().lights.size()) - 1);
 }
