@@ -135,6 +135,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")),
                                  kCheckTimeoutMs);
         QVERIFY(check->inspector()->text().contains(QStringLiteral("N·L")));
+        // Issue 49: the lights as the Lights dock numbers them, from 1; and
+        // the inspector in front, not a tab behind another dock.
+        QVERIFY(check->inspector()->text().contains(QStringLiteral("\nlight 1\n")));
+        QVERIFY(!check->inspector()->text().contains(QStringLiteral("light 0")));
+        QVERIFY(!check->inspector()->visibleRegion().isEmpty());
         QVERIFY(check->overlay()->hasArrows());
         auto *copy = check->inspector()->findChild<QPushButton *>();
         QVERIFY(copy && copy->isEnabled());

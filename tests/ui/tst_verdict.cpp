@@ -19,6 +19,8 @@
 #include "ui/window/SceneDocument.h"
 
 #include <QComboBox>
+#include <QMenu>
+#include <QMenuBar>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -82,6 +84,9 @@ private slots:
         openSubmission(scene, QStringLiteral("phong.frag"));
         QVERIFY(!QTest::currentTestFailed());
         QVERIFY(waitForChecked());
+        // The box above the editor names the student's shader, not "Phong".
+        QCOMPARE(m_window->shaderDock()->shaderBoxText(),
+                 QStringLiteral("phong.frag (your shader)"));
         const CheckedFrame &result = *lastResult();
         QVERIFY2(result.hasVerdict(), qPrintable(panelText()));
         // Angel's lightPosition is the light in camera coordinates, which
@@ -257,6 +262,36 @@ private slots:
         QCOMPARE(unchecked[0].toObject().value(QStringLiteral("term")).toString(),
                  QStringLiteral("specular"));
         QVERIFY(panelText().contains(QStringLiteral("ks = 0 on every object")));
+    }
+
+    // Item 6: a binding chosen for one project's names is not saved into
+    // the next project's scene; File opens a shader and a project folder.
+    void bindingsBelongToTheirProject()
+    {
+        openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
+        QVERIFY(!QTest::currentTestFailed());
+        const QString lesson = sourcePath(QStringLiteral("tests/data/course/webglfundamentals/"));
+        QVERIFY_OK(m_window->document()->openShaderFiles(
+            {lesson + QStringLiteral("point-light.vert"), lesson + QStringLiteral("point-light.frag")}));
+        QVERIFY(waitForApplied());
+        m_window->viewport()->setBindings(
+            {{QStringLiteral("u_specularColor"), BindingMeaning::SpecularProduct}});
+        QCOMPARE(m_window->viewport()->currentScene().bindings.size(), std::size_t(1));
+        QVERIFY_OK(m_window->document()->openShaderFiles(
+            {angel(QStringLiteral("phong.vert")), angel(QStringLiteral("phong.frag"))}));
+        QVERIFY(waitForApplied());
+        QVERIFY(m_window->viewport()->currentScene().bindings.empty());
+        QTemporaryDir dir;
+        const QString saved = dir.filePath(QStringLiteral("next.json"));
+        QVERIFY_OK(m_window->document()->save(saved));
+        QVERIFY(!readFile(saved).contains("u_specularColor"));
+
+        QStringList actions;
+        for (QAction *a : m_window->menuBar()->actions().front()->menu()->actions())
+            actions << a->text().remove(QLatin1Char('&'));
+        QVERIFY2(actions.contains(QStringLiteral("Open Shader…")), qPrintable(actions.join(u'|')));
+        QVERIFY2(actions.contains(QStringLiteral("Open Project Folder…")),
+                 qPrintable(actions.join(u'|')));
     }
 
     // Item 5: the status bar is cut at a word, never inside one.

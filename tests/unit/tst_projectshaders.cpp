@@ -158,6 +158,28 @@ private slots:
         QVERIFY(error.contains(QStringLiteral("gouraud")));
     }
 
+    // Issue 49: opening shadedSphere2.html of a folder of Angel's pages
+    // offers its own program first, not the folder's first.
+    void thePageChosenChoosesItsProgram()
+    {
+        const QByteArray page = QByteArray("<!DOCTYPE html>\n<html><head>\n"
+                                           "<script id=\"vertex-shader\" type=\"x-shader/x-vertex\">\n")
+            + kPhongVertex + "</script>\n<script id=\"fragment-shader\" type=\"x-shader/x-fragment\">\n"
+            + kPhongFragment
+            + "</script>\n<script>program = initShaders(gl, \"vertex-shader\", "
+              "\"fragment-shader\");</script>\n</head></html>\n";
+        for (const char *name : {"shadedSphere1", "shadedSphere2", "shadedSphere3"})
+            write(m_dir.filePath(QStringLiteral("spheres/%1.html").arg(QLatin1String(name))), page);
+        const Project p = readProject(m_dir.filePath(QStringLiteral("spheres")));
+        const std::vector<const ProjectProgram *> lit = litPrograms(p);
+        QVERIFY2(lit.size() == std::size_t(3), qPrintable(p.notes.join(u'\n') + p.error));
+        const std::size_t chosen =
+            programOfPage(lit, m_dir.filePath(QStringLiteral("spheres/shadedSphere2.html")));
+        QCOMPARE(lit[chosen]->name, QStringLiteral("shadedSphere2"));
+        QVERIFY(lit[chosen]->fragment.file.endsWith(QStringLiteral("shadedSphere2.html")));
+        QCOMPARE(programOfPage(lit, QString()), std::size_t(0));
+    }
+
     void templateLiteralsInAScriptFile()
     {
         // webglfundamentals: WebGL 2 sources in template literals of a .js

@@ -148,9 +148,15 @@ bool mentionsLight(const QByteArray &code)
     return false;
 }
 
-// The shader a call's reference names.
+// The shader a call's reference names: an id of the calling page first
+// (each of Angel's pages in one folder has its own "vertex-shader"), then
+// of any file (a script's call names the ids of the page that loads it).
 int resolve(const std::vector<ProjectShader> &shaders, const JsShaderRef &ref, const QString &file)
 {
+    if (!ref.literalAt && !ref.name.isEmpty())
+        for (std::size_t i = 0; i < shaders.size(); ++i)
+            if (shaders[i].file == file && shaders[i].key == ref.name)
+                return int(i);
     for (std::size_t i = 0; i < shaders.size(); ++i) {
         const ProjectShader &s = shaders[i];
         if (ref.literalAt) {
@@ -289,6 +295,23 @@ std::vector<const ProjectProgram *> litPrograms(const Project &project)
         if (p.lit)
             lit.push_back(&p);
     return lit;
+}
+
+std::size_t programOfPage(const std::vector<const ProjectProgram *> &programs, const QString &page)
+{
+    if (page.isEmpty())
+        return 0;
+    const QFileInfo pageFile(page);
+    const auto inPage = [&](const ProjectShader &s) {
+        return QFileInfo(s.file).canonicalFilePath() == pageFile.canonicalFilePath();
+    };
+    for (std::size_t i = 0; i < programs.size(); ++i)
+        if (inPage(programs[i]->vertex) || inPage(programs[i]->fragment))
+            return i;
+    for (std::size_t i = 0; i < programs.size(); ++i)
+        if (programs[i]->name == pageFile.completeBaseName())
+            return i;
+    return 0;
 }
 
 const ProjectProgram *programNamed(const Project &project, const QString &name, QString *error)

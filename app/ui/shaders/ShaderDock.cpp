@@ -27,6 +27,11 @@
 namespace phonglab {
 
 namespace {
+// The box's entry for the student's own shaders (no method's name).
+const QString kOwnShaders = QStringLiteral("own");
+} // namespace
+
+namespace {
 
 const char kShaderFilter[] = "GLSL shaders (*.vert *.frag *.glsl *.vs *.fs);;All files (*)";
 
@@ -177,6 +182,7 @@ void ShaderDock::connectFiles()
 {
     connect(m_files, &ShaderFileSet::pathChanged, this, [this](ShaderStage stage) {
         updateTab(stage);
+        showWhoseShaders();
         if (!m_settingText)
             emit filesChanged();
     });
@@ -283,8 +289,41 @@ void ShaderDock::offerToApplyAnyway(const QString &text)
     m_applyAnyway->show();
 }
 
+QString ShaderDock::shaderBoxText() const
+{
+    return m_shadingMethods->currentText();
+}
+
+// The box above the editor names what the editor holds: a shading
+// method's shipped shaders, or the student's own by its file.
+void ShaderDock::showWhoseShaders()
+{
+    const QString fragment = m_files->path(ShaderStage::Fragment);
+    const QString vertex = m_files->path(ShaderStage::Vertex);
+    const QString own = !fragment.isEmpty() && !m_files->isShipped(fragment) ? fragment
+        : !vertex.isEmpty() && !m_files->isShipped(vertex)                   ? vertex
+                                                                             : QString();
+    const int ownIndex = m_shadingMethods->findData(kOwnShaders);
+    if (own.isEmpty()) {
+        if (ownIndex >= 0) {
+            m_shadingMethods->removeItem(ownIndex);
+            selectShadingMethod(m_method);
+        }
+        return;
+    }
+    const QString text = tr("%1 (your shader)").arg(QFileInfo(own).fileName());
+    if (ownIndex >= 0)
+        m_shadingMethods->setItemText(ownIndex, text);
+    else
+        m_shadingMethods->insertItem(0, text, kOwnShaders);
+    m_shadingMethods->setCurrentIndex(m_shadingMethods->findData(kOwnShaders));
+}
+
 void ShaderDock::selectShadingMethod(ShadingMethod method)
 {
+    m_method = method;
+    if (m_shadingMethods->findData(kOwnShaders) >= 0)
+        return; // the box names the student's shaders, whatever method the scene says
     const int index = m_shadingMethods->findData(shadingName(method));
     if (index >= 0)
         m_shadingMethods->setCurrentIndex(index); // activated() is for the user's choices only

@@ -56,6 +56,7 @@ public:
     QPushButton *applyAnywayButton() const { return m_applyAnyway; }
     // Selects `method` in the shading method box without emitting shadingMethodRequested().
     void selectShadingMethod(ShadingMethod method);
+    QString shaderBoxText() const; // what the box above the editor says
 
     // Without dialogs (tests, command line). openFiles() takes one file or a
     // .vert/.frag pair; the stage comes from the suffix, else the current tab.
@@ -96,6 +97,7 @@ private:
     QWidget *createToolBar();
     void connectEditor(ShaderStage stage);
     void connectFiles();
+    void showWhoseShaders();
     void setEditorCode(ShaderStage stage, const QByteArray &code);
     void updateTab(ShaderStage stage);
     void warn(const QString &message);
@@ -109,6 +111,7 @@ private:
     QPushButton *m_applyAnyway = nullptr;
     DiagnosticList *m_diagnostics = nullptr;
     ShaderFileSet *m_files = nullptr;
+    ShadingMethod m_method = ShadingMethod::Phong; // the scene's, shown when no own shaders are
     QAction *m_compileAction = nullptr;
     bool m_settingText = false; // our own setCode(): not an edit
 };

@@ -36,7 +36,9 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
     open->setShortcut(QKeySequence::Open);
     QAction *openMesh = menu->addAction(tr("Open &Mesh…"), this, &FileMenu::chooseAndOpenMeshes);
     openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    menu->addAction(tr("Open S&hader…"), this, &FileMenu::chooseAndOpenShaders);
     menu->addAction(tr("Open &Project…"), this, &FileMenu::chooseAndOpenProject);
+    menu->addAction(tr("Open Project &Folder…"), this, &FileMenu::chooseAndOpenProjectFolder);
     m_recentFiles = new RecentFiles(menu->addMenu(tr("&Recent")), this);
     connect(m_recentFiles, &RecentFiles::fileChosen, this,
             [this](const QString &path) { openOrExplain({path}); });
@@ -82,6 +84,18 @@ void FileMenu::chooseAndOpenScene()
         openOrExplain({path});
 }
 
+void FileMenu::chooseAndOpenShaders()
+{
+    const QStringList paths = QFileDialog::getOpenFileNames(
+        m_window, tr("Open Shader"), dialogFolder(),
+        tr("GLSL shaders (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;All files (*)"));
+    if (paths.isEmpty() || !mayDiscardShaderEdits())
+        return;
+    rememberFolderOf(paths.front());
+    if (const Result<> opened = m_window->document()->openShaderFiles(paths); !opened)
+        openWarning(m_window, tr("Cannot open"), opened.error());
+}
+
 void FileMenu::chooseAndOpenProject()
 {
     const QString page =
@@ -91,7 +105,24 @@ void FileMenu::chooseAndOpenProject()
         return;
     rememberFolderOf(page);
     // The page's folder: its scripts and shader files are the project too.
-    const Project project = readProject(QFileInfo(page).absolutePath());
+    openProject(QFileInfo(page).absolutePath(), page);
+}
+
+void FileMenu::chooseAndOpenProjectFolder()
+{
+    const QString folder =
+        QFileDialog::getExistingDirectory(m_window, tr("Open WebGL Project Folder"), dialogFolder());
+    if (folder.isEmpty())
+        return;
+    rememberFolderOf(QDir(folder).filePath(QStringLiteral(".")));
+    openProject(folder, {});
+}
+
+// The project in `folder`; of several programs that light the user picks
+// one, the one `page` holds offered first.
+void FileMenu::openProject(const QString &folder, const QString &page)
+{
+    const Project project = readProject(folder);
     QString name;
     if (const std::vector<const ProjectProgram *> lit = litPrograms(project); lit.size() > 1) {
         QStringList names;
@@ -100,16 +131,12 @@ void FileMenu::chooseAndOpenProject()
         bool ok = false;
         name = QInputDialog::getItem(m_window, tr("Open WebGL Project"),
                                      tr("The project has several programs that light. Which one?"),
-                                     names, 0, false, &ok);
+                                     names, int(programOfPage(lit, page)), false, &ok);
         if (!ok)
             return;
     }
     const Result<ProjectProgram> chosen = chooseProgram(project, name);
-    if (chosen && m_window->shaderDock()->hasUnsavedChanges()
-        && QMessageBox::question(m_window, tr("Unsaved changes"),
-                                 tr("The shaders have unsaved changes. Discard them?"),
-                                 QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel)
-            != QMessageBox::Discard)
+    if (chosen && !mayDiscardShaderEdits())
         return;
     const Result<> opened = chosen ? m_window->document()->openShaders(
                                 shaderLocator(chosen->vertex), shaderLocator(chosen->fragment))
@@ -119,7 +146,18 @@ void FileMenu::chooseAndOpenProject()
         return;
     }
     m_window->statusBar()->showMessage(
-        tr("Opened %1 of %2").arg(chosen->name, QFileInfo(page).fileName()), kMessageTimeoutMs);
+        tr("Opened %1 of %2")
+            .arg(chosen->name, QFileInfo(page.isEmpty() ? folder : page).fileName()),
+        kMessageTimeoutMs);
+}
+
+bool FileMenu::mayDiscardShaderEdits()
+{
+    return !m_window->shaderDock()->hasUnsavedChanges()
+        || QMessageBox::question(m_window, tr("Unsaved changes"),
+                                 tr("The shaders have unsaved changes. Discard them?"),
+                                 QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel)
+        == QMessageBox::Discard;
 }
 
 void FileMenu::chooseAndOpenMeshes()

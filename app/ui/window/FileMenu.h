@@ -31,7 +31,11 @@ private:
     void chooseAndOpenMeshes();
     // A WebGL project's page or script: its program that lights (asked
     // which where there are several) into the Shaders dock.
+    void chooseAndOpenShaders();
     void chooseAndOpenProject();
+    void chooseAndOpenProjectFolder();
+    void openProject(const QString &folder, const QString &page);
+    bool mayDiscardShaderEdits();
     void explainMissingRecentFile(const QString &path);
     void saveToCurrentFile();
     void chooseAndSave();

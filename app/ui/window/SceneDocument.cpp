@@ -130,8 +130,17 @@ Result<> SceneDocument::openSubmission(const QString &scenePath, const QString &
 
 Result<> SceneDocument::openShaders(const QString &vertexPath, const QString &fragmentPath)
 {
-    if (const Result<> opened = m_shaders->openFiles({vertexPath, fragmentPath}); !opened)
+    return openShaderFiles({vertexPath, fragmentPath});
+}
+
+Result<> SceneDocument::openShaderFiles(const QStringList &paths)
+{
+    if (const Result<> opened = m_shaders->openFiles(paths); !opened)
         return opened;
+    // The bindings chosen in the Uniforms dock were for the shaders these
+    // replace: another project's names mean what that project meant.
+    if (!m_viewport->currentScene().bindings.empty())
+        m_viewport->setBindings({});
     m_liveShaders->buildNow();
     return {};
 }

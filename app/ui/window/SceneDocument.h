@@ -70,6 +70,10 @@ public:
     // the current scene (File → Open Project: "index.html#vsSource"
     // locators). Unsaved edits are the caller's to confirm first.
     Result<> openShaders(const QString &vertexPath, const QString &fragmentPath);
+    // One shader (its stage by its suffix) or a vertex and a fragment
+    // shader, in place of the editor's; the scene's explicit bindings go
+    // with the shaders they were made for.
+    Result<> openShaderFiles(const QStringList &paths);
 
     // Writes the scene with the camera as currently orbited. First saves the
     // Shaders dock's unsaved buffers, then names the dock's files as the
