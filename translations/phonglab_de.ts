@@ -1199,6 +1199,26 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
         <source>Opened %1 of %2</source>
         <translation>%1 aus %2 geöffnet</translation>
     </message>
+    <message>
+        <source>Open S&amp;hader…</source>
+        <translation>S&amp;hader öffnen…</translation>
+    </message>
+    <message>
+        <source>Open Project &amp;Folder…</source>
+        <translation>Projekt&amp;ordner öffnen…</translation>
+    </message>
+    <message>
+        <source>Open Shader</source>
+        <translation>Shader öffnen</translation>
+    </message>
+    <message>
+        <source>GLSL shaders (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;All files (*)</source>
+        <translation>GLSL-Shader (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open WebGL Project Folder</source>
+        <translation>WebGL-Projektordner öffnen</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::FrameRedraw</name>
@@ -2558,6 +2578,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <source>I exact  %1 -&gt; 8-bit (%2, %3, %4)</source>
         <translation>I exakt  %1 -&gt; 8 Bit (%2, %3, %4)</translation>
     </message>
+    <message>
+        <source>light %1</source>
+        <translation>Licht %1</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::PlyPrecheck</name>
@@ -3629,6 +3653,10 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
 Shipped with PhongLab: edits go to a user copy.</source>
         <translation>
 Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert.</translation>
+    </message>
+    <message>
+        <source>%1 (your shader)</source>
+        <translation>%1 (eigener Shader)</translation>
     </message>
 </context>
 <context>

@@ -127,6 +127,7 @@ private slots:
     void aboutNamesVersionsAndRenderer();
     void documentationOpensReadmeAndFollowsALink();
     void documentationFolderComesFromTheEnvironment();
+    void germanRunOpensTheGermanPages();
     void linkToAMissingFileSaysSo();
 
 private:
@@ -346,6 +347,26 @@ void TestHelpMenu::documentationFolderComesFromTheEnvironment()
     QCOMPARE(documentationFiles(documentationFolder(first)),
              QStringList{QDir::cleanPath(empty.filePath(QStringLiteral("docs/only.md")))});
     qunsetenv("PHONGLAB_DOC_DIR");
+}
+
+// Issue 49: in a German run F1 opens the German pages, and the contents
+// list both languages' pages.
+void TestHelpMenu::germanRunOpensTheGermanPages()
+{
+    QTemporaryDir folder;
+    writeFile(folder.filePath(QStringLiteral("README.md")), "# Home\n");
+    writeFile(folder.filePath(QStringLiteral("docs/guide.md")), "# Guide\n");
+    writeFile(folder.filePath(QStringLiteral("docs/de/anleitung.md")), "# Anleitung\n");
+    writeFile(folder.filePath(QStringLiteral("docs/de/README.md")), "# Start\n");
+    const QString dir = QDir::cleanPath(folder.path());
+    const QStringList german = documentationFiles(dir, QStringLiteral("de"));
+    QCOMPARE(german, (QStringList{dir + QStringLiteral("/docs/de/README.md"),
+                                  dir + QStringLiteral("/docs/de/anleitung.md"),
+                                  dir + QStringLiteral("/README.md"),
+                                  dir + QStringLiteral("/docs/guide.md")}));
+    const QStringList english = documentationFiles(dir, QStringLiteral("en"));
+    QCOMPARE(english.front(), dir + QStringLiteral("/README.md"));
+    QVERIFY(english.contains(dir + QStringLiteral("/docs/de/README.md")));
 }
 
 // A link to a file the installation lacks says so and stays on the page;

@@ -58,14 +58,22 @@ private slots:
             qunsetenv(name);
         qputenv("LANG", "de_DE.UTF-8");
         QCOMPARE(languageFromEnvironment(), QStringLiteral("de"));
+        // The numbers follow the language, whatever the desktop's locale
+        // says (issue 49: "9,024 Dreiecke" beside "36,2 dB").
+        QLocale::setDefault(QLocale::c());
         useLanguage(languageFromEnvironment());
-        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        QCOMPARE(QLocale().language(), QLocale::German);
+        QCOMPARE(QLocale().toString(9024), QStringLiteral("9024"));
+        QCOMPARE(QLocale().toString(0.95), QStringLiteral("0,95"));
+        bool ok = true;
+        QLocale().toDouble(QStringLiteral("1.5"), &ok);
+        QVERIFY(!ok); // not 15: the field reads it as written (Vec3Field)
     }
 
     void cleanupTestCase()
     {
         useLanguage(QStringLiteral("en"));
-        QLocale::setDefault(QLocale::c());
+        QCOMPARE(QLocale().decimalPoint(), QStringLiteral("."));
     }
 
     void menusAndCheckSpeakGerman()
@@ -77,6 +85,13 @@ private slots:
             menus << plain(action->text());
         for (const char *expected : {"Datei", "Bearbeiten", "Ansicht", "Hilfe"})
             QVERIFY2(menus.contains(QString::fromUtf8(expected)), qPrintable(menus.join(u'|')));
+
+        // The material's fields write German numbers ("0,6", not "0.6").
+        QStringList fields;
+        for (const QLineEdit *f : m_window->docks().material->findChildren<QLineEdit *>())
+            fields << f->text();
+        QVERIFY2(fields.join(u'|').contains(QLatin1Char(',')), qPrintable(fields.join(u'|')));
+        QVERIFY2(!fields.join(u'|').contains(QLatin1Char('.')), qPrintable(fields.join(u'|')));
 
         // The slide's equation taken literally: a pass the status names in words.
         QVERIFY(typeTheSlidesEquationAndCheck(kCheckTimeoutMs));

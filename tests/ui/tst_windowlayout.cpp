@@ -270,6 +270,17 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
           screen.height(), m_window->width(), m_window->height(), shown, viewport()->width(),
           m_window->width());
     QVERIFY2(shown >= lines, qPrintable(QString::number(shown)));
+    // Issue 49: the material under the code shows its rows, not 3 of them.
+    QDockWidget *material = m_window->docks().material;
+    material->raise();
+    QTest::qWait(20);
+    int fieldsInSight = 0;
+    const QRect dockRect = material->rect();
+    for (const QLineEdit *f : material->findChildren<QLineEdit *>())
+        if (f->isVisible() && dockRect.contains(QRect(f->mapTo(material, QPoint()), f->size())))
+            ++fieldsInSight;
+    qInfo("material: %d fields in sight, dock %d px high", fieldsInSight, material->height());
+    QVERIFY2(fieldsInSight >= 6, qPrintable(QString::number(fieldsInSight))); // ka and kd at least
     QVERIFY2(viewport()->width() * 2 >= m_window->width(),
              qPrintable(
                  QStringLiteral("view %1 of %2").arg(viewport()->width()).arg(m_window->width())));

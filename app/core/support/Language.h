@@ -55,5 +55,9 @@ void useLanguage(const QString &language);
 QLocale sentenceLocale();
 // `value` written as the run's sentences write numbers (sentenceLocale()).
 QString sentenceNumber(double value, char format = 'g', int precision = 6);
+// The locale of the window's numbers (useLanguage() makes it the default):
+// the desktop's where it speaks the run's language, else the language's;
+// no group separators.
+QLocale numberLocale();
 
 } // namespace phonglab

@@ -1,5 +1,7 @@
 #include "DocumentationFiles.h"
 
+#include <algorithm>
+
 #include "core/scene/ResourcePaths.h"
 
 #include <QCoreApplication>
@@ -50,16 +52,26 @@ QString documentationFolder(const QString &first)
     return {};
 }
 
-QStringList documentationFiles(const QString &folder)
+QStringList documentationFiles(const QString &folder, const QString &language)
 {
     const QDir dir(folder);
-    QStringList files;
+    QStringList english;
     if (dir.exists(QStringLiteral("README.md")))
-        files << dir.filePath(QStringLiteral("README.md"));
+        english << dir.filePath(QStringLiteral("README.md"));
     const QDir docs(dir.filePath(QStringLiteral("docs")));
     for (const QString &name : docs.entryList({QStringLiteral("*.md")}, QDir::Files, QDir::Name))
-        files << docs.filePath(name);
-    return files;
+        english << docs.filePath(name);
+    // The German pages: their README is their home.
+    QStringList german;
+    const QDir de(docs.filePath(QStringLiteral("de")));
+    for (const QString &name : de.entryList({QStringLiteral("*.md")}, QDir::Files, QDir::Name))
+        german << de.filePath(name);
+    const auto home = std::find_if(german.begin(), german.end(), [](const QString &p) {
+        return QFileInfo(p).fileName() == QLatin1String("README.md");
+    });
+    if (home != german.end())
+        std::rotate(german.begin(), home, home + 1);
+    return language == QLatin1String("de") ? german + english : english + german;
 }
 
 QString documentTitle(const QString &markdownPath)

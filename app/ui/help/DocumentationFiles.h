@@ -1,4 +1,6 @@
 #pragma once
+#include "core/support/Language.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -15,8 +17,10 @@ namespace phonglab {
 QStringList documentationSearchFolders(const QString &first);
 // The first searched folder that holds the docs; empty when none does.
 QString documentationFolder(const QString &first);
-// The Markdown files of `folder`: README.md first, then docs/*.md by name.
-QStringList documentationFiles(const QString &folder);
+// The Markdown files of `folder` in the contents' order: README.md, then
+// docs/*.md by name; the German pages (docs/de/, their README first) before
+// them in a German run, after them in an English one. The first opens with F1.
+QStringList documentationFiles(const QString &folder, const QString &language = currentLanguage());
 // The first "# " heading of a Markdown file, else its file name.
 QString documentTitle(const QString &markdownPath);
 

@@ -14,7 +14,7 @@ namespace {
 // than what leaves the code 640 pixels, down to 22 % of it: the code is
 // what people come for, and a short tab scrolls.
 constexpr double kMostTabsShareOfHeight = 0.4;
-constexpr double kLeastTabsShareOfHeight = 0.22;
+constexpr double kLeastTabsShareOfHeight = 0.25;
 constexpr int kCodeHeight = 610;
 constexpr int kSplitterWidth = 8;
 
@@ -54,7 +54,8 @@ QRect defaultWindowGeometry(const QRect &available)
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWidth)
 {
     const std::initializer_list<QDockWidget *> all = {
-        d.scene, d.object, d.lights, d.shaders, d.material, d.uniforms, d.inspector, d.performance};
+        d.scene,    d.object,    d.lights,      d.shaders, d.material,
+        d.uniforms, d.inspector, d.performance, d.verdict};
     for (QDockWidget *dock : all) {
         dock->setFloating(false); // before leaving the layout: a floating one would stay afloat
         window.removeDockWidget(dock);
@@ -78,13 +79,14 @@ void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWid
     if (sceneColumn) {
         window.addDockWidget(Qt::LeftDockWidgetArea, d.scene);
         tabify(window, {d.scene, d.object, d.lights, d.performance});
-        tabify(window, {d.material, d.uniforms, d.inspector});
+        tabify(window, {d.material, d.uniforms, d.inspector, d.verdict});
     } else {
         tabify(window,
-               {d.material, d.uniforms, d.lights, d.object, d.scene, d.inspector, d.performance});
+               {d.material, d.uniforms, d.lights, d.object, d.scene, d.inspector, d.verdict,
+                d.performance});
     }
     for (QDockWidget *dock : all)
-        dock->setVisible(dock != d.performance && dock != d.inspector);
+        dock->setVisible(dock != d.performance && dock != d.inspector && dock != d.verdict);
     d.scene->raise();
     d.material->raise();
 

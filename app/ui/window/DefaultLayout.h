@@ -21,6 +21,9 @@ struct WindowDocks {
     QDockWidget *inspector = nullptr;
     // Measuring, on demand.
     QDockWidget *performance = nullptr;
+    // The check's whole verdict, when its short form in the status bar is
+    // clicked: a tab beside the material.
+    QDockWidget *verdict = nullptr;
 };
 
 // The window's first geometry: these shares of the screen's available area,
@@ -38,8 +41,9 @@ QRect defaultWindowGeometry(const QRect &available);
 // material needs, the material and the uniforms it is fed. The view keeps
 // at least half the width. Where the window is wide enough for that and a
 // column more, the scene, object and light docks are a column of their own
-// left of the view; otherwise they join the tabs under the code. Performance and the pixel inspector
-// are hidden until asked for (the View menu; Inspect shows the inspector).
+// left of the view; otherwise they join the tabs under the code. Performance, the pixel inspector and
+// the check's verdict are hidden until asked for (the View menu; Inspect shows
+// the inspector, a click on the status bar's verdict the verdict).
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &docks, int editorWidth);
 
 // Puts a dock's contents in a frameless scroll area: a dock in the tabs

@@ -91,7 +91,8 @@ WindowDocks MainWindow::docks() const
             m_editDocks->materialDock(),
             m_uniformsDock,
             m_liveCheck->inspector(),
-            m_performanceDock};
+            m_performanceDock,
+            m_liveCheck->verdictDock()};
 }
 
 void MainWindow::resetLayout()
