@@ -671,7 +671,10 @@ void TestShaderEditor::f5AndPresetBoxEmitRequests()
 
     QSignalSpy preset(&dock, &ShaderDock::shadingMethodRequested);
     QComboBox *box = dock.shadingMethodBox();
-    QCOMPARE(box->count(), shadingNames().size());
+    // Each method, and the shaders in the editor by their file (issue 49:
+    // it said "Phong" for a student's own).
+    QCOMPARE(box->count(), shadingNames().size() + 1);
+    QCOMPARE(box->currentText(), QStringLiteral("a.frag (your shader)"));
     dock.selectShadingMethod(ShadingMethod::Phong);
     QCOMPARE(preset.count(), 0); // only the user's choices are requests
     emit box->activated(box->findData(QStringLiteral("phong")));
