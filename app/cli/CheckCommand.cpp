@@ -1,6 +1,5 @@
 #include "CheckCommand.h"
 
-#include "render/CheckReportOutput.h"
 #include "CheckSteps.h"
 #include "CliCommon.h"
 #include "GradedChild.h"
@@ -8,6 +7,7 @@
 #include "SceneStages.h"
 #include "core/project/ProjectPrograms.h"
 #include "core/scene/SceneJson.h"
+#include "render/CheckReportOutput.h"
 #include "render/QtImages.h"
 
 #include <QFileInfo>

@@ -1,10 +1,10 @@
 #pragma once
-#include "render/CheckReportOutput.h"
 #include "core/check/ShaderCheck.h"
 #include "core/reference/PhongEquation.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
 #include "core/scene/SceneJson.h"
+#include "render/CheckReportOutput.h"
 #include "render/ShaderDiagnostic.h"
 
 #include <QImage>

@@ -1,10 +1,10 @@
 #pragma once
-#include "render/CheckReportOutput.h"
 #include "ClassFolder.h"
 #include "SceneOverrides.h"
 #include "core/reference/PhongEquation.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
+#include "render/CheckReportOutput.h"
 
 #include <QSize>
 #include <QString>

@@ -102,8 +102,8 @@ Result<> FrameRedraw::useProgram(const FrameRecipe &recipe)
 }
 
 PrecisionFinding FrameRedraw::measurePrecision(const FrameRecipe &recipe,
-                                              const std::vector<ShaderStageText> &stages,
-                                              const Scene &checked, const QImage &checkedImage)
+                                               const std::vector<ShaderStageText> &stages,
+                                               const Scene &checked, const QImage &checkedImage)
 {
     PrecisionFinding finding = declaredPrecision(stages, checked);
     if (finding.declared.isEmpty() || finding.checkedAt != PrecisionRule::Highp || !m_offscreen)

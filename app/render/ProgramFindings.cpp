@@ -134,12 +134,13 @@ Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString 
     for (PointLight &l : out.lights)
         if (l.enabled && kept++ >= *capacity)
             l.enabled = false;
-    *note =
-        ProgramFindingsWords::tr("the shader takes %1 %2 (its light uniforms have room for no "
-                             "more) and the scene has %3 enabled: checked with the first %1 alone")
-            .arg(*capacity)
-            .arg(*capacity == 1 ? ProgramFindingsWords::tr("light") : ProgramFindingsWords::tr("lights"))
-            .arg(enabled);
+    *note = ProgramFindingsWords::tr(
+                "the shader takes %1 %2 (its light uniforms have room for no "
+                "more) and the scene has %3 enabled: checked with the first %1 alone")
+                .arg(*capacity)
+                .arg(*capacity == 1 ? ProgramFindingsWords::tr("light")
+                                    : ProgramFindingsWords::tr("lights"))
+                .arg(enabled);
     return out;
 }
 

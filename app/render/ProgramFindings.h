@@ -40,9 +40,10 @@ struct ProgramFindings {
     std::optional<int> lightCapacity; // ProgramBindings::lightCapacity()
     QStringList problems;             // an explicit binding that names nothing here
     std::vector<UnboundUniform> unbound;
-    QStringList conflicts; // two names for one meaning, a value the scene cannot give: bindingConflicts()
-    Scene checked;         // what the program can light of the scene: sceneForCapacity()
-    QString lightsNote;    // which lights were left out of `checked`, or empty
+    QStringList
+        conflicts; // two names for one meaning, a value the scene cannot give: bindingConflicts()
+    Scene checked; // what the program can light of the scene: sceneForCapacity()
+    QString lightsNote; // which lights were left out of `checked`, or empty
 
     bool placesEverything() const
     {
@@ -76,6 +77,7 @@ PrecisionFinding measurePrecision(OffscreenRenderer &offscreen,
                                   const UniformSnapshot *values = nullptr);
 // What measurePrecision() finds without drawing: the lower precisions
 // declared and the rule they were checked by.
-PrecisionFinding declaredPrecision(const std::vector<ShaderStageText> &stages, const Scene &checked);
+PrecisionFinding declaredPrecision(const std::vector<ShaderStageText> &stages,
+                                   const Scene &checked);
 
 } // namespace phonglab

@@ -363,10 +363,11 @@ void TestHelpMenu::germanRunOpensTheGermanPages()
     writeFile(folder.filePath(QStringLiteral("docs/de/README.md")), "# Start\n");
     const QString dir = QDir::cleanPath(folder.path());
     const QStringList german = documentationFiles(dir, QStringLiteral("de"));
-    QCOMPARE(german, (QStringList{dir + QStringLiteral("/docs/de/README.md"),
-                                  dir + QStringLiteral("/docs/de/anleitung.md"),
-                                  dir + QStringLiteral("/README.md"),
-                                  dir + QStringLiteral("/docs/guide.md")}));
+    QCOMPARE(
+        german,
+        (QStringList{dir + QStringLiteral("/docs/de/README.md"),
+                     dir + QStringLiteral("/docs/de/anleitung.md"),
+                     dir + QStringLiteral("/README.md"), dir + QStringLiteral("/docs/guide.md")}));
     const QStringList english = documentationFiles(dir, QStringLiteral("en"));
     QCOMPARE(english.front(), dir + QStringLiteral("/README.md"));
     QVERIFY(english.contains(dir + QStringLiteral("/docs/de/README.md")));

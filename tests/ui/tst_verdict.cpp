@@ -19,13 +19,13 @@
 #include "ui/window/SceneDocument.h"
 
 #include <QComboBox>
-#include <QMenu>
-#include <QMenuBar>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -117,7 +117,8 @@ private slots:
         QTemporaryDir dir;
         const QString scene = courseScene(dir, QStringLiteral("scene.json"), [](auto &) {});
         QByteArray fragment = readFile(angel(QStringLiteral("phong.frag")));
-        fragment.replace("uniform float shininess;", "uniform float shininess;\nuniform vec3 uZork;");
+        fragment.replace("uniform float shininess;",
+                         "uniform float shininess;\nuniform vec3 uZork;");
         fragment.replace("fColor.a = 1.0;", "fColor.rgb += uZork;\n    fColor.a = 1.0;");
         const QString zork = writeFile(dir, QStringLiteral("zork.frag"), fragment);
         openSubmission(scene, zork);
@@ -135,8 +136,8 @@ private slots:
 
         auto *uniforms = static_cast<UniformsDock *>(m_window->docks().uniforms);
         QTRY_VERIFY(uniforms->findChild<QLabel *>(QStringLiteral("unplaced:uZork")));
-        QTRY_VERIFY(uniforms->findChild<QLabel *>(QStringLiteral("unplaced:uZork"))->isVisibleTo(
-            uniforms));
+        QTRY_VERIFY(
+            uniforms->findChild<QLabel *>(QStringLiteral("unplaced:uZork"))->isVisibleTo(uniforms));
         // At its declaration in the editor, as a compile error would be.
         QTRY_COMPARE(fragmentEditor()->checkMarkLines(), QList<int>{7});
         QVERIFY(fragmentEditor()->annotationText(7).contains(QStringLiteral("uZork")));
@@ -213,9 +214,9 @@ private slots:
         QVERIFY(waitForChecked());
         QVERIFY(check()->statusLabel()->verdict().startsWith(QStringLiteral("✓")));
         replaceInFragment(QStringLiteral("void main()"), QStringLiteral("void main() oops"));
-        QTRY_VERIFY_WITH_TIMEOUT(check()->statusLabel()->verdict().startsWith(
-                                     QStringLiteral("last good program: ✓")),
-                                 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            check()->statusLabel()->verdict().startsWith(QStringLiteral("last good program: ✓")),
+            20000);
         QVERIFY(panelText().contains(QStringLiteral("does not compile")));
     }
 
@@ -271,8 +272,9 @@ private slots:
         openWindow(sourcePath(QStringLiteral("assets/scenes/default.json")), {900, 600});
         QVERIFY(!QTest::currentTestFailed());
         const QString lesson = sourcePath(QStringLiteral("tests/data/course/webglfundamentals/"));
-        QVERIFY_OK(m_window->document()->openShaderFiles(
-            {lesson + QStringLiteral("point-light.vert"), lesson + QStringLiteral("point-light.frag")}));
+        QVERIFY_OK(
+            m_window->document()->openShaderFiles({lesson + QStringLiteral("point-light.vert"),
+                                                   lesson + QStringLiteral("point-light.frag")}));
         QVERIFY(waitForApplied());
         m_window->viewport()->setBindings(
             {{QStringLiteral("u_specularColor"), BindingMeaning::SpecularProduct}});
@@ -344,7 +346,8 @@ private:
             [&] {
                 return !check()->isChecking() && lastResult()
                     && lastResult()->generation > m_generation
-                    && lastResult()->scene.fragmentShader == m_window->viewport()->currentScene().fragmentShader
+                    && lastResult()->scene.fragmentShader
+                    == m_window->viewport()->currentScene().fragmentShader
                     && (lastResult()->reference || !lastResult()->unbound.empty());
             },
             kCheckTimeoutMs);
@@ -359,11 +362,11 @@ private:
                                       const QString &fragment) const
     {
         const QSize size = checkedSize();
-        const ProcessRun run = runPhonglab(
-            {QStringLiteral("check"), scene, QStringLiteral("--vertex"), vertex,
-             QStringLiteral("--fragment"), fragment, QStringLiteral("--size"),
-             QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
-             QStringLiteral("--json")});
+        const ProcessRun run =
+            runPhonglab({QStringLiteral("check"), scene, QStringLiteral("--vertex"), vertex,
+                         QStringLiteral("--fragment"), fragment, QStringLiteral("--size"),
+                         QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
+                         QStringLiteral("--json")});
         return QJsonDocument::fromJson(run.out).object();
     }
 

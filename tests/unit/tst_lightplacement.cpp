@@ -30,8 +30,9 @@ private slots:
         for (double aspect : {0.7, 1.0, 1.8})
             for (int index : {0, 1, 2}) {
                 const glm::dvec3 p = visibleLightPosition(camera, index);
-                QVERIFY2(isInView(camera, aspect, p, 0.2),
-                         qPrintable(QStringLiteral("light %1 at aspect %2").arg(index).arg(aspect)));
+                QVERIFY2(
+                    isInView(camera, aspect, p, 0.2),
+                    qPrintable(QStringLiteral("light %1 at aspect %2").arg(index).arg(aspect)));
             }
         // The old placement, target + (2, 3, 2), was out of the course's view.
         if (scene.contains(QStringLiteral("course")))

@@ -162,9 +162,11 @@ private slots:
     // offers its own program first, not the folder's first.
     void thePageChosenChoosesItsProgram()
     {
-        const QByteArray page = QByteArray("<!DOCTYPE html>\n<html><head>\n"
-                                           "<script id=\"vertex-shader\" type=\"x-shader/x-vertex\">\n")
-            + kPhongVertex + "</script>\n<script id=\"fragment-shader\" type=\"x-shader/x-fragment\">\n"
+        const QByteArray page =
+            QByteArray("<!DOCTYPE html>\n<html><head>\n"
+                       "<script id=\"vertex-shader\" type=\"x-shader/x-vertex\">\n")
+            + kPhongVertex
+            + "</script>\n<script id=\"fragment-shader\" type=\"x-shader/x-fragment\">\n"
             + kPhongFragment
             + "</script>\n<script>program = initShaders(gl, \"vertex-shader\", "
               "\"fragment-shader\");</script>\n</head></html>\n";

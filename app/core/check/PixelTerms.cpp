@@ -106,7 +106,8 @@ QString PixelTerms::toText() const
     lines << QStringLiteral("V        %1").arg(vec(V));
     lines << QStringLiteral("Ia·ka    %1").arg(vec(ambient));
     for (const LightTerms &t : lights) {
-        lines << PixelTermsWords::tr("light %1").arg(t.light + 1); // as the Lights dock numbers them
+        lines
+            << PixelTermsWords::tr("light %1").arg(t.light + 1); // as the Lights dock numbers them
         lines << QStringLiteral("  L      %1").arg(vec(t.L));
         lines << QStringLiteral("  R      %1").arg(vec(t.R));
         lines << QStringLiteral("  d      %1").arg(sentenceNumber(t.distance, 'f', 4));

@@ -251,7 +251,8 @@ QString checkStatusLine(const CheckReport &report)
         for (const SilentTerm &t : report.silent)
             silent << equationTermName(t.term);
         if (!silent.isEmpty())
-            line += CheckWords::tr(" — not checked here: %1").arg(silent.join(QStringLiteral(", ")));
+            line +=
+                CheckWords::tr(" — not checked here: %1").arg(silent.join(QStringLiteral(", ")));
         return line;
     }
     const MistakeDiagnosis &d = report.diagnosis;

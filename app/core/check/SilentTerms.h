@@ -23,7 +23,7 @@ struct SilentTerm {
 
 std::vector<SilentTerm> silentTerms(const Scene &scene);
 QString equationTermName(EquationTerm term); // in the run's language
-QString silentTermKey(EquationTerm term);     // "ambient", "diffuse", "specular": --json's
+QString silentTermKey(EquationTerm term);    // "ambient", "diffuse", "specular": --json's
 // "the specular term (ks = 0 on every object)"; terms joined by "; ".
 QString silentTermsText(const std::vector<SilentTerm> &terms);
 

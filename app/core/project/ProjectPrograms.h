@@ -44,8 +44,7 @@ std::vector<const ProjectProgram *> litPrograms(const Project &project);
 // Of `programs`, the one the page `page` holds or loads: its shaders are in
 // that file, else its name is the page's (a folder of Angel's pages, each
 // with its program). 0 where none is, or no page was named.
-std::size_t programOfPage(const std::vector<const ProjectProgram *> &programs,
-                          const QString &page);
+std::size_t programOfPage(const std::vector<const ProjectProgram *> &programs, const QString &page);
 const ProjectProgram *programNamed(const Project &project, const QString &name, QString *error);
 // The program to check or edit: the one named `name`, else the one that
 // lights. An error where the project cannot be read, has no such program,

@@ -186,7 +186,8 @@ QLocale numberLocale()
     const QLocale system = QLocale::system();
     const bool german = currentLanguage() == QLatin1String("de");
     QLocale out = german
-        ? (system.language() == QLocale::German ? system : QLocale(QLocale::German, QLocale::Germany))
+        ? (system.language() == QLocale::German ? system
+                                                : QLocale(QLocale::German, QLocale::Germany))
         : (system.language() == QLocale::English ? system : QLocale::c());
     // "1.5" typed in a German field is not 15: no group separators, read or written.
     out.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);

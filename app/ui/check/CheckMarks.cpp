@@ -58,14 +58,16 @@ CheckMarks checkMarks(const CheckedFrame &result)
         std::vector<ShaderDiagnostic> &into = stage.vertex ? marks.vertex : marks.fragment;
         for (const UnboundUniform &u : result.unbound)
             if (const int line = declarationLine(stage.text, u.name); line > 0)
-                into.push_back(mark(line, QObject::tr("%1: choose what it means in Uniforms")
-                                              .arg(unboundSentence(u))));
+                into.push_back(mark(
+                    line,
+                    QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(u))));
         if (outcome.verdict != CheckOutcome::Verdict::Fail)
             continue;
         for (ShaderMistake m : namedMistakes(outcome.report.diagnosis))
             for (const SourceLine &l : mistakeSourceLines(m, {stage}))
-                into.push_back(mark(l.line, QObject::tr("check: %1 — %2")
-                                                .arg(shaderMistakeKey(m), shaderMistakeRule(m))));
+                into.push_back(mark(
+                    l.line,
+                    QObject::tr("check: %1 — %2").arg(shaderMistakeKey(m), shaderMistakeRule(m))));
     }
     return marks;
 }

@@ -148,11 +148,11 @@ void CheckOverlay::paintArrows(QPainter &painter) const
         arrows.push_back(
             {m_cameraToWorld * l.L, QColor(255, 210, 60), QStringLiteral("L%1").arg(l.light + 1)});
         if (t.shading == ReferenceShading::BlinnPhong)
-            arrows.push_back(
-                {m_cameraToWorld * l.H, QColor(255, 110, 200), QStringLiteral("H%1").arg(l.light + 1)});
+            arrows.push_back({m_cameraToWorld * l.H, QColor(255, 110, 200),
+                              QStringLiteral("H%1").arg(l.light + 1)});
         else
-            arrows.push_back(
-                {m_cameraToWorld * l.R, QColor(255, 110, 200), QStringLiteral("R%1").arg(l.light + 1)});
+            arrows.push_back({m_cameraToWorld * l.R, QColor(255, 110, 200),
+                              QStringLiteral("R%1").arg(l.light + 1)});
     }
     const double length = kArrowLengthFraction * glm::length(t.positionCamera);
     const std::optional<QPointF> origin = project(t.positionWorld);

@@ -120,8 +120,7 @@ std::vector<ShaderStageText> stagesOf(const FrameRecipe &frame)
     if (!frame.sources)
         return {};
     return {{frame.sources->vertex.name, QString::fromUtf8(frame.sources->vertex.code), true},
-            {frame.sources->fragment.name, QString::fromUtf8(frame.sources->fragment.code),
-             false}};
+            {frame.sources->fragment.name, QString::fromUtf8(frame.sources->fragment.code), false}};
 }
 
 // What nothing could place, as check's errors say it, with the window's way
@@ -136,8 +135,8 @@ void addPlacingErrors(CheckOutcome &outcome, const ProgramFindings &found)
     for (const QString &problem : found.problems)
         outcome.errors.push_back(error(problem));
     for (const UnboundUniform &unbound : found.unbound)
-        outcome.errors.push_back(
-            error(QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(unbound))));
+        outcome.errors.push_back(error(
+            QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(unbound))));
     for (const QString &conflict : found.conflicts)
         outcome.errors.push_back(error(conflict));
 }
@@ -196,12 +195,13 @@ CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface
                             request.frame.sources->fragment.code);
     if (!outcome.report.comparable()) {
         ShaderDiagnostic d;
-        d.message = QObject::tr("nothing to compare: no surface away from silhouettes in this view");
+        d.message =
+            QObject::tr("nothing to compare: no surface away from silhouettes in this view");
         outcome.errors.push_back(d);
         return result;
     }
-    outcome.verdict = outcome.report.passed() ? CheckOutcome::Verdict::Pass
-                                              : CheckOutcome::Verdict::Fail;
+    outcome.verdict =
+        outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
     if (request.frame.sources)
         outcome.precision = precisionOf(request.frame, outcome.stages, result.scene, result.yours);
     // The exact image of the equation the frame was checked by: the slide's,

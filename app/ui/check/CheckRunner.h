@@ -1,9 +1,9 @@
 #pragma once
 #include "core/check/ShaderCheck.h"
-#include "render/CheckReportOutput.h"
-#include "render/ProgramFindings.h"
 #include "core/scene/Scene.h"
+#include "render/CheckReportOutput.h"
 #include "render/FrameRedraw.h"
+#include "render/ProgramFindings.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -30,8 +30,8 @@ struct CheckedFrame {
     // could be checked: a uniform nothing places, no surface in view.
     CheckOutcome outcome;
     std::vector<UnboundUniform> unbound; // the uniforms the user is to place, in the dock
-    QString error;             // the check itself could not run (no frame, no reference)
-    double milliseconds = 0.0; // request to result
+    QString error;                       // the check itself could not run (no frame, no reference)
+    double milliseconds = 0.0;           // request to result
 
     const CheckReport &report() const { return outcome.report; }
     bool hasVerdict() const { return outcome.verdict != CheckOutcome::Verdict::Error; }

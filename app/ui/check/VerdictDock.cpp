@@ -55,14 +55,17 @@ QString errorsHtml(const CheckedFrame &result)
 {
     QString html;
     if (!result.error.isEmpty())
-        html += QStringLiteral("<div style=\"color:#c62828\">%1</div>")
-                    .arg(QObject::tr("The check could not run: %1").arg(result.error).toHtmlEscaped());
+        html +=
+            QStringLiteral("<div style=\"color:#c62828\">%1</div>")
+                .arg(QObject::tr("The check could not run: %1").arg(result.error).toHtmlEscaped());
     for (const ShaderDiagnostic &e : result.outcome.errors)
-        html += QStringLiteral("<div style=\"color:#c62828\">%1</div>").arg(e.message.toHtmlEscaped());
+        html +=
+            QStringLiteral("<div style=\"color:#c62828\">%1</div>").arg(e.message.toHtmlEscaped());
     for (const UnboundUniform &u : result.unbound)
-        html += QStringLiteral("<div>→ <a href=\"uniform:%1\">%2</a></div>")
-                    .arg(QString::fromUtf8(QUrl::toPercentEncoding(u.name)),
-                         QObject::tr("choose what %1 means in Uniforms").arg(u.name).toHtmlEscaped());
+        html +=
+            QStringLiteral("<div>→ <a href=\"uniform:%1\">%2</a></div>")
+                .arg(QString::fromUtf8(QUrl::toPercentEncoding(u.name)),
+                     QObject::tr("choose what %1 means in Uniforms").arg(u.name).toHtmlEscaped());
     return html;
 }
 
@@ -100,7 +103,8 @@ VerdictDock::VerdictDock(QWidget *parent)
     setObjectName(QStringLiteral("verdictDock"));
     m_text->setObjectName(QStringLiteral("verdictText"));
     m_text->setOpenLinks(false);
-    m_text->setPlaceholderText(tr("The check's verdict appears here once the first frame is checked."));
+    m_text->setPlaceholderText(
+        tr("The check's verdict appears here once the first frame is checked."));
     setWidget(m_text);
     connect(m_text, &QTextBrowser::anchorClicked, this, [this](const QUrl &url) {
         const QString link = url.toString(QUrl::FullyDecoded);
@@ -118,7 +122,8 @@ VerdictDock::VerdictDock(QWidget *parent)
 
 void VerdictDock::showVerdict(const CheckedFrame &result, bool current)
 {
-    QString html = QStringLiteral("<p><b>%1</b></p>").arg(verdictStatusText(result, current).toHtmlEscaped());
+    QString html =
+        QStringLiteral("<p><b>%1</b></p>").arg(verdictStatusText(result, current).toHtmlEscaped());
     if (!current)
         html += QStringLiteral("<p><i>%1</i></p>")
                     .arg(tr("The code in the editor does not compile: this is the verdict of the "

@@ -42,7 +42,8 @@ void VerdictLabel::setVerdict(const QString &text)
 QSize VerdictLabel::sizeHint() const
 {
     const QSize margins(contentsMargins().left() + contentsMargins().right(), 0);
-    return QSize(fontMetrics().horizontalAdvance(m_full) + 4, QLabel::sizeHint().height()) + margins;
+    return QSize(fontMetrics().horizontalAdvance(m_full) + 4, QLabel::sizeHint().height())
+        + margins;
 }
 
 QSize VerdictLabel::minimumSizeHint() const

@@ -14,9 +14,9 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QScrollArea>
+#include <QStyle>
 #include <QTimer>
 #include <utility>
-#include <QStyle>
 
 namespace phonglab {
 

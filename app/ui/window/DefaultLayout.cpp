@@ -53,9 +53,9 @@ QRect defaultWindowGeometry(const QRect &available)
 
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &d, int editorWidth)
 {
-    const std::initializer_list<QDockWidget *> all = {
-        d.scene,    d.object,    d.lights,      d.shaders, d.material,
-        d.uniforms, d.inspector, d.performance, d.verdict};
+    const std::initializer_list<QDockWidget *> all = {d.scene,     d.object,      d.lights,
+                                                      d.shaders,   d.material,    d.uniforms,
+                                                      d.inspector, d.performance, d.verdict};
     for (QDockWidget *dock : all) {
         dock->setFloating(false); // before leaving the layout: a floating one would stay afloat
         window.removeDockWidget(dock);

@@ -110,8 +110,8 @@ void FileMenu::chooseAndOpenProject()
 
 void FileMenu::chooseAndOpenProjectFolder()
 {
-    const QString folder =
-        QFileDialog::getExistingDirectory(m_window, tr("Open WebGL Project Folder"), dialogFolder());
+    const QString folder = QFileDialog::getExistingDirectory(
+        m_window, tr("Open WebGL Project Folder"), dialogFolder());
     if (folder.isEmpty())
         return;
     rememberFolderOf(QDir(folder).filePath(QStringLiteral(".")));
