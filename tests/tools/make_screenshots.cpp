@@ -7,6 +7,7 @@
 #include "render/GlFormat.h"
 #include "ui/check/CheckOverlay.h"
 #include "ui/check/LiveCheck.h"
+#include "ui/check/VerdictDock.h"
 #include "ui/performance/PerformanceDock.h"
 #include "ui/scene/LightsDock.h"
 #include "ui/scene/SceneEditDockSet.h"
@@ -21,6 +22,10 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
@@ -48,6 +53,91 @@ bool save(QWidget &window, const QDir &out, const char *name)
     const bool ok = windowImage(window).save(path);
     std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
     return ok;
+}
+
+QByteArray readFile(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &text)
+{
+    QFile file(dir.filePath(name));
+    if (!file.open(QIODevice::WriteOnly))
+        return {};
+    file.write(text);
+    return file.fileName();
+}
+
+// Until the live check has a verdict on the program just opened.
+void settleUntilChecked(MainWindow &window, quint64 after)
+{
+    const LiveCheck *check = window.liveCheck();
+    QElapsedTimer clock;
+    clock.start();
+    settle(500);
+    while (clock.elapsed() < 60000
+           && (check->isChecking() || !check->lastResult()
+               || check->lastResult()->generation <= after))
+        settle(200);
+    settle(500);
+}
+
+quint64 lastGeneration(const MainWindow &window)
+{
+    const auto &last = window.liveCheck()->lastResult();
+    return last ? last->generation : 0;
+}
+
+// Angel's shader on the course's scene (one light, his light in camera
+// coordinates), edited two ways: a uniform nothing places, and two
+// mistakes marked in the editor with the whole verdict in the Check dock.
+bool shootCourseVerdicts(MainWindow &window, const QDir &out, const QTemporaryDir &state)
+{
+    const QString angel = QStringLiteral("tests/data/course/angel/");
+    QJsonObject scene =
+        QJsonDocument::fromJson(readFile(QStringLiteral("tests/data/course/scene.json"))).object();
+    QJsonArray lights = scene.value(QStringLiteral("lights")).toArray();
+    lights.removeLast();
+    scene.insert(QStringLiteral("lights"), lights);
+    scene.insert(
+        QStringLiteral("bindings"),
+        QJsonObject{{QStringLiteral("lightPosition"), QStringLiteral("light-position-camera")}});
+    const QString scenePath =
+        writeFile(state, QStringLiteral("course.json"), QJsonDocument(scene).toJson());
+    const QByteArray fragment = readFile(angel + QStringLiteral("phong.frag"));
+    if (scenePath.isEmpty() || fragment.isEmpty())
+        return false;
+
+    QByteArray zork = fragment;
+    zork.replace("uniform float shininess;", "uniform float shininess;\nuniform vec3 uZork;");
+    zork.replace("fColor.a = 1.0;", "fColor.rgb += uZork;\n    fColor.a = 1.0;");
+    quint64 before = lastGeneration(window);
+    if (!window.document()->openSubmission(scenePath, angel + QStringLiteral("phong.vert"),
+                                           writeFile(state, QStringLiteral("zork.frag"), zork)))
+        return false;
+    settleUntilChecked(window, before);
+    window.docks().uniforms->raise();
+    window.liveCheck()->uniformToPlace(QStringLiteral("uZork"));
+    settle(800);
+    bool ok = save(window, out, "verdict-unplaced.png");
+
+    QByteArray wrong = fragment;
+    wrong.replace("ambient + fatt * (diffuse + specular)", "ambient + (diffuse + specular)");
+    wrong.replace("reflect(-l, n)", "reflect(l, n)");
+    before = lastGeneration(window);
+    if (!window.document()->openSubmission(
+            scenePath, angel + QStringLiteral("phong.vert"),
+            writeFile(state, QStringLiteral("mistakes.frag"), wrong)))
+        return false;
+    settleUntilChecked(window, before);
+    VerdictDock *verdict = window.liveCheck()->verdictDock();
+    verdict->show();
+    verdict->raise();
+    window.shaderDock()->editor(ShaderStage::Fragment)->setFirstVisibleLine(10);
+    settle(800);
+    return save(window, out, "verdict-two-mistakes.png") && ok;
 }
 
 } // namespace
@@ -127,6 +217,7 @@ int main(int argc, char **argv)
     ok = save(window, out, "check-inspector.png") && ok;
     fragment->setCode(code);
     window.liveShaders()->buildNow();
+    ok = shootCourseVerdicts(window, out, state) && ok;
 
     // Fit to budget on the sphere scene (the dock measures with the phonglab
     // binary set before the window was made, above).

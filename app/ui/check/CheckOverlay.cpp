@@ -1,5 +1,7 @@
 #include "CheckOverlay.h"
 
+#include <QFontMetrics>
+
 #include <QLinearGradient>
 #include <QPainter>
 #include <QPainterPath>
@@ -111,7 +113,13 @@ void CheckOverlay::paintEvent(QPaintEvent *)
 // exact to 8/255 or more, and what the two flat colours mean.
 void CheckOverlay::paintLegend(QPainter &painter) const
 {
-    const QRect box(width() - 190, height() - 74, 180, 64);
+    // As wide as its words in the run's language and font ("silhouette band,
+    // not checked" was cut at "not chec" in a fixed box).
+    const QFontMetrics metrics(painter.font());
+    const QString band = tr("silhouette band, not checked");
+    const int line = metrics.height();
+    const int width = std::max(180, metrics.horizontalAdvance(band) + 40);
+    const QRect box(this->width() - width - 10, height() - (2 * line + 40), width, 2 * line + 30);
     painter.fillRect(box, QColor(0, 0, 0, 170));
     QLinearGradient ramp(box.left() + 10, 0, box.right() - 10, 0);
     ramp.setColorAt(0.0, QColor(0, 64, 0));
@@ -119,16 +127,16 @@ void CheckOverlay::paintLegend(QPainter &painter) const
     ramp.setColorAt(0.125, QColor(64, 255, 0));
     ramp.setColorAt(0.5, QColor(255, 255, 0));
     ramp.setColorAt(1.0, QColor(255, 0, 0));
-    painter.fillRect(QRect(box.left() + 10, box.top() + 8, box.width() - 20, 12), ramp);
+    const QRect rampRect(box.left() + 10, box.top() + 8, box.width() - 20, 12);
+    painter.fillRect(rampRect, ramp);
     painter.setPen(Qt::white);
-    painter.drawText(QRect(box.left() + 10, box.top() + 22, 40, 16), Qt::AlignLeft, tr("exact"));
-    painter.drawText(QRect(box.center().x() - 20, box.top() + 22, 40, 16), Qt::AlignHCenter,
-                     tr("4/255"));
-    painter.drawText(QRect(box.right() - 70, box.top() + 22, 60, 16), Qt::AlignRight,
-                     tr("≥ 8/255"));
-    painter.fillRect(QRect(box.left() + 10, box.top() + 44, 10, 10), QColor(0, 0, 96));
-    painter.drawText(QRect(box.left() + 24, box.top() + 40, 150, 16), Qt::AlignLeft,
-                     tr("silhouette band, not checked"));
+    const QRect numbers(rampRect.left(), rampRect.bottom() + 3, rampRect.width(), line);
+    painter.drawText(numbers, Qt::AlignLeft, tr("exact"));
+    painter.drawText(numbers, Qt::AlignHCenter, tr("4/255"));
+    painter.drawText(numbers, Qt::AlignRight, tr("≥ 8/255"));
+    const int bandTop = numbers.bottom() + 6;
+    painter.fillRect(QRect(box.left() + 10, bandTop + (line - 10) / 2, 10, 10), QColor(0, 0, 96));
+    painter.drawText(QRect(box.left() + 24, bandTop, box.width() - 30, line), Qt::AlignLeft, band);
 }
 
 void CheckOverlay::paintArrows(QPainter &painter) const

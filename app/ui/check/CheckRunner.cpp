@@ -111,6 +111,10 @@ struct CheckRunner::Cache {
     CheckedFrame check(const Request &request, QOffscreenSurface *surface,
                        const std::atomic<bool> &cancelled,
                        const std::function<void(double)> &progress);
+    bool drawWhatIsChecked(const Request &request, QOffscreenSurface *surface,
+                           const std::atomic<bool> &cancelled, CheckedFrame &result);
+    void compare(const Request &request, const std::atomic<bool> &cancelled,
+                 const std::function<void(double)> &progress, CheckedFrame &result);
 };
 
 namespace {
@@ -153,22 +157,34 @@ CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface
     CheckedFrame result;
     result.generation = request.generation;
     result.scene = request.frame.scene;
-    CheckOutcome &outcome = result.outcome;
-    outcome.stages = stagesOf(request.frame);
+    result.outcome.stages = stagesOf(request.frame);
+    if (drawWhatIsChecked(request, surface, cancelled, result))
+        compare(request, cancelled, progress, result);
+    return result;
+}
+
+// Draws the frame and finds what its program bound; where it takes fewer
+// lights than the scene has, draws those it takes. False where there is
+// nothing to compare: the frame could not be drawn, or something is not
+// placed (no verdict: PhongLab's gap, not the student's mistake).
+bool CheckRunner::Cache::drawWhatIsChecked(const Request &request, QOffscreenSurface *surface,
+                                           const std::atomic<bool> &cancelled, CheckedFrame &result)
+{
     const auto keepGoing = [&] { return !cancelled.load(); };
     const auto keepMeshes = [&](const SceneMeshes &loaded) { keep(loaded); };
     Result<QImage> drawn = redraw.draw(request.frame, surface, keepGoing, keepMeshes);
     if (!drawn) {
         result.error = drawn.error();
-        return result;
+        return false;
     }
+    CheckOutcome &outcome = result.outcome;
     const ProgramFindings found = findProgramFindings(redraw.program(), request.frame.scene);
     outcome.bindings = found.bindings;
     outcome.notes << found.bindings.notes;
     result.unbound = found.unbound;
     addPlacingErrors(outcome, found);
     if (!outcome.errors.empty())
-        return result; // no verdict: PhongLab's gap, not the student's mistake
+        return false;
     result.scene = found.checked;
     if (!found.lightsNote.isEmpty()) {
         outcome.notes << found.lightsNote;
@@ -177,17 +193,26 @@ CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface
         drawn = redraw.draw(lit, surface, keepGoing, keepMeshes);
         if (!drawn) {
             result.error = drawn.error();
-            return result;
+            return false;
         }
     }
     result.yours = *drawn;
+    return true;
+}
+
+// The drawn frame against the exact image of the scene checked: the
+// verdict, the report, the precision, and the pictures of the overlay.
+void CheckRunner::Cache::compare(const Request &request, const std::atomic<bool> &cancelled,
+                                 const std::function<void(double)> &progress, CheckedFrame &result)
+{
     Result<std::shared_ptr<const CheckReference>> made =
         referenceFor(result.scene, request.frame.size, cancelled, progress);
     if (!made) {
         result.error = made.error();
-        return result;
+        return;
     }
     result.reference = *made;
+    CheckOutcome &outcome = result.outcome;
     const RgbImage yours = toRgbImage(result.yours);
     outcome.report = checkRender(yours, *result.reference);
     if (request.frame.sources)
@@ -198,7 +223,7 @@ CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface
         d.message =
             QObject::tr("nothing to compare: no surface away from silhouettes in this view");
         outcome.errors.push_back(d);
-        return result;
+        return;
     }
     outcome.verdict =
         outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
@@ -211,7 +236,6 @@ CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface
         ? toQImage(result.reference->exactImage)
         : toQImage(result.reference->exactOf(equation).toImage(result.scene.background));
     result.heatmap = toQImage(checkHeatmap(yours, *result.reference, equation));
-    return result;
 }
 
 CheckRunner::CheckRunner(QObject *parent)

@@ -133,6 +133,7 @@ QWidget *ShaderDock::createToolBar()
     for (const QString &name : shadingNames())
         m_shadingMethods->addItem(displayName(name), name);
     m_shadingMethods->setToolTip(tr("Load a shading method's shaders"));
+    m_shadingMethods->setSizeAdjustPolicy(QComboBox::AdjustToContents); // a file's whole name
     connect(m_shadingMethods, &QComboBox::activated, this, [this](int index) {
         if (const auto method = shadingFromName(m_shadingMethods->itemData(index).toString()))
             emit shadingMethodRequested(*method);
