@@ -190,6 +190,16 @@ private slots:
             marked += fragmentEditor()->annotationText(line) + QLatin1Char('\n');
         QVERIFY2(marked.contains(QStringLiteral("attenuation")), qPrintable(marked));
         QVERIFY2(marked.contains(QStringLiteral("reflect")), qPrintable(marked));
+        // In the margin, as an arrow: a marker no margin shows is painted as
+        // the line's background, over the code (it hid the marked lines).
+        ShaderEditor *editor = fragmentEditor();
+        long inMargins = 0;
+        for (int margin = 0; margin < editor->margins(); ++margin)
+            inMargins |= editor->SendScintilla(QsciScintillaBase::SCI_GETMARGINMASKN, margin);
+        const long onLine =
+            editor->SendScintilla(QsciScintillaBase::SCI_MARKERGET, lines.front() - 1);
+        QVERIFY(onLine != 0);
+        QCOMPARE(onLine & ~inMargins, 0L);
         QVERIFY2(panelText().contains(QStringLiteral("two-mistakes.frag:")),
                  qPrintable(panelText()));
         // A line in the panel is a link to the editor's line.

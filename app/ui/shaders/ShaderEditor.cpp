@@ -148,7 +148,8 @@ void ShaderEditor::setUpMargins()
 
     setMarginType(kMarkerMargin, SymbolMargin);
     setMarginWidth(kMarkerMargin, lineHeight + 4);
-    setMarginMarkerMask(kMarkerMargin, (1 << m_errorMarker) | (1 << m_warningMarker));
+    setMarginMarkerMask(kMarkerMargin,
+                        (1 << m_errorMarker) | (1 << m_warningMarker) | (1 << m_checkMarker));
 }
 
 void ShaderEditor::setUpDiagnosticStyles()
