@@ -12,6 +12,7 @@
 #include "mesh/import/SceneMeshes.h"
 #include "ui/check/CheckRunner.h"
 #include "ui/check/LiveCheck.h"
+#include "ui/check/PixelInspectorDock.h"
 #include "ui/shaders/DiagnosticList.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
@@ -26,6 +27,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPlainTextEdit>
 #include <QScreen>
 #include <QSettings>
 #include <QTabBar>
@@ -122,6 +124,7 @@ private slots:
     void aWideWindowGivesTheSceneAColumn();
     void anOlderSavedLayoutGivesWayOnce();
     void theFirstLookChecksOut();
+    void inspectGivesTheInspectorRoom();
 
 private:
     // A window as a user gets it: not resized, shown at its default size.
@@ -420,6 +423,40 @@ void TestWindowLayout::theFirstLookChecksOut()
     QTRY_VERIFY_WITH_TIMEOUT(check->lastResult().has_value() && !check->isChecking(), 60000);
     const CheckReport &report = check->lastResult()->report();
     QVERIFY2(report.passed(), qPrintable(check->statusLabel()->verdict()));
+}
+
+// Issue 49: at a laptop's size the inspector showed 5 lines of its terms.
+// Brought forward by Inspect it is in front, and the tabs grow to its text
+// (up to half the column), the code giving the room.
+void TestWindowLayout::inspectGivesTheInspectorRoom()
+{
+    const QRect available(QPoint(), QSize(1366, 768) - QSize(0, 40));
+    m_window->resize(defaultWindowGeometry(available).size());
+    QTRY_COMPARE(m_window->size(), defaultWindowGeometry(available).size());
+    m_window->resetLayout();
+    // The check's ellipsoid fills the view's centre (the default scene's is
+    // background between the tree and the cloud).
+    QVERIFY_OK(
+        m_window->document()->openAndWait(sourcePath(QStringLiteral("assets/scenes/check.json"))));
+    LiveCheck *check = m_window->liveCheck();
+    QTRY_VERIFY_WITH_TIMEOUT(check->lastResult().has_value() && !check->isChecking()
+                                 && check->lastResult()->scene.objects.size() == 2,
+                             60000);
+    QDockWidget *inspector = m_window->docks().inspector;
+    const int before = inspector->isVisible() ? inspector->height() : 0;
+    check->inspect(viewport()->rect().center());
+    QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")), 60000);
+    QVERIFY(inspector->isVisible() && !inspector->visibleRegion().isEmpty());
+    const int column = m_window->shaderDock()->height() + inspector->height();
+    QTRY_VERIFY2(inspector->height() >= int(column * 0.45),
+                 qPrintable(QStringLiteral("inspector %1 px of a %2 px column (before %3)")
+                                .arg(inspector->height())
+                                .arg(column)
+                                .arg(before)));
+    auto *terms = inspector->findChild<QPlainTextEdit *>();
+    QVERIFY(terms);
+    const int linesShown = terms->viewport()->height() / terms->fontMetrics().lineSpacing();
+    QVERIFY2(linesShown >= 12, qPrintable(QString::number(linesShown)));
 }
 
 QTEST_MAIN(TestWindowLayout)

@@ -142,6 +142,7 @@ void LiveCheck::createToolBar(QMainWindow *window)
         if (on) {
             m_inspector->show();
             m_inspector->raise();
+            emit dockBroughtForward(m_inspector);
         }
     });
 }
@@ -237,6 +238,7 @@ void LiveCheck::followStatusClick()
     }
     m_verdict->show();
     m_verdict->raise();
+    emit dockBroughtForward(m_verdict);
 }
 
 void LiveCheck::inspect(QPoint position)
@@ -247,6 +249,7 @@ void LiveCheck::inspect(QPoint position)
                            (position.y() + 0.5) / std::max(1, m_viewport->height()));
     m_inspector->show();
     m_inspector->raise();
+    emit dockBroughtForward(m_inspector);
     if (m_last && isCurrent(*m_last)) {
         showInspected(fraction);
         return;

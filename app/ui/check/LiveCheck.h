@@ -10,6 +10,7 @@
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMainWindow;
 class QMenu;
@@ -63,6 +64,8 @@ signals:
     void checked(const phonglab::CheckedFrame &result);
     // The way on from a verdict that has none: the Uniforms dock's row.
     void uniformToPlace(const QString &name);
+    // The inspector or the verdict was brought to the front to be read.
+    void dockBroughtForward(QDockWidget *dock);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;

@@ -2,6 +2,7 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QPlainTextEdit>
 #include <QScrollArea>
 #include <algorithm>
 
@@ -40,6 +41,41 @@ void scrollWhenShort(QDockWidget *dock)
     scroll->setWidgetResizable(true);
     scroll->setWidget(contents);
     dock->setWidget(scroll);
+}
+
+namespace {
+
+// The height `contents` would show itself in whole: its hint, with each
+// text view as tall as its text (the inspector's terms).
+int wholeHeight(QWidget *contents)
+{
+    int height = contents->sizeHint().height();
+    for (const QPlainTextEdit *text : contents->findChildren<QPlainTextEdit *>()) {
+        const int needed = text->blockCount() * text->fontMetrics().lineSpacing()
+            + 2 * text->frameWidth() + int(2 * text->document()->documentMargin());
+        height += std::max(0, needed - text->sizeHint().height());
+    }
+    return height;
+}
+
+} // namespace
+
+void giveRoomUnderTheCode(QMainWindow &window, const WindowDocks &d, QDockWidget *dock)
+{
+    if (!dock || dock->isFloating() || !dock->isVisible() || !d.shaders->isVisible()
+        || window.dockWidgetArea(dock) != window.dockWidgetArea(d.shaders) || dock == d.shaders)
+        return;
+    const int column = d.shaders->height() + dock->height();
+    QWidget *contents = dock->widget();
+    // A scroll area's own hint is its viewport's: the contents' is wanted.
+    if (auto *scroll = qobject_cast<QScrollArea *>(contents); scroll && scroll->widget())
+        contents = scroll->widget();
+    const int chrome = dock->height() - (dock->widget() ? dock->widget()->height() : 0);
+    const int wanted =
+        std::min(wholeHeight(contents) + chrome, int(column * kMostRoomForAShownDock));
+    if (dock->height() >= wanted)
+        return;
+    window.resizeDocks({d.shaders, dock}, {column - wanted, wanted}, Qt::Vertical);
 }
 
 QRect defaultWindowGeometry(const QRect &available)

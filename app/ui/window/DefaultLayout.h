@@ -46,6 +46,14 @@ QRect defaultWindowGeometry(const QRect &available);
 // the inspector, a click on the status bar's verdict the verdict).
 void applyDefaultLayout(QMainWindow &window, const WindowDocks &docks, int editorWidth);
 
+// A dock in the tabs under the code, just brought to the front for what it
+// shows (Inspect's pixel, the verdict, a uniform to place): the tabs grow to
+// its contents' height, up to half the column, so that it is read rather
+// than scrolled; the code gives the room. A dock elsewhere, or tall enough
+// already, is left as it is.
+inline constexpr double kMostRoomForAShownDock = 0.5;
+void giveRoomUnderTheCode(QMainWindow &window, const WindowDocks &docks, QDockWidget *dock);
+
 // Puts a dock's contents in a frameless scroll area: a dock in the tabs
 // under the code must not make them taller than the tab shown needs (the
 // lights' editor alone asks for ~350 pixels), so that the code keeps its

@@ -31,6 +31,7 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 
 #include <algorithm>
 #include <utility>
@@ -204,6 +205,13 @@ void MainWindow::createUniformsDock()
 void MainWindow::connectCheck()
 {
     connect(m_liveCheck, &LiveCheck::uniformToPlace, m_uniformsDock, &UniformsDock::showUniform);
+    // Once the dock brought forward is laid out at the front.
+    const auto giveRoom = [this](QDockWidget *dock) {
+        QTimer::singleShot(0, dock, [this, dock] { giveRoomUnderTheCode(*this, docks(), dock); });
+    };
+    connect(m_liveCheck, &LiveCheck::dockBroughtForward, this, giveRoom);
+    connect(m_liveCheck, &LiveCheck::uniformToPlace, this,
+            [this, giveRoom] { giveRoom(m_uniformsDock); });
     connect(m_liveCheck->verdictDock(), &VerdictDock::lineChosen, this,
             [this](ShaderStage stage, int line) { m_shaderDock->goTo(stage, line, 0); });
     connect(m_liveCheck, &LiveCheck::checked, this, [this](const CheckedFrame &result) {
