@@ -29,6 +29,7 @@
 #include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QTabBar>
 #include <QTest>
@@ -284,6 +285,24 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
             ++fieldsInSight;
     qInfo("material: %d fields in sight, dock %d px high", fieldsInSight, material->height());
     QVERIFY2(fieldsInSight >= 6, qPrintable(QString::number(fieldsInSight))); // ka and kd at least
+    // Issue 49: the tab the user chooses shows its contents (3 rows of the
+    // material were all a laptop's first window showed, the uniforms 2):
+    // every field in its scroll area's sight, none scrolled away.
+    const int heightAtFirst = material->height();
+    m_window->docks().uniforms->raise(); // as a click on its tab does
+    material->raise();
+    QTest::qWait(50);
+    auto *scroll = qobject_cast<QScrollArea *>(material->widget());
+    QVERIFY(scroll);
+    fieldsInSight = 0;
+    for (const QLineEdit *f : material->findChildren<QLineEdit *>())
+        if (f->isVisible()
+            && scroll->viewport()->rect().contains(
+                QRect(f->mapTo(scroll->viewport(), QPoint()), f->size())))
+            ++fieldsInSight;
+    qInfo("material after its tab was chosen: %d fields in sight, %d px high (first %d)",
+          fieldsInSight, material->height(), heightAtFirst);
+    QVERIFY2(fieldsInSight >= 10, qPrintable(QString::number(fieldsInSight))); // ka, kd, ks, n
     QVERIFY2(viewport()->width() * 2 >= m_window->width(),
              qPrintable(
                  QStringLiteral("view %1 of %2").arg(viewport()->width()).arg(m_window->width())));
