@@ -99,7 +99,9 @@ WindowDocks MainWindow::docks() const
 void MainWindow::resetLayout()
 {
     m_shaderDock->ensurePolished();
+    const bool wasLayingOut = std::exchange(m_layingOut, true);
     applyDefaultLayout(*this, docks(), m_shaderDock->sizeHint().width());
+    m_layingOut = wasLayingOut;
 }
 
 // The default layout is laid out again for the size the window is shown
@@ -172,7 +174,9 @@ bool MainWindow::restoreWindowSettings()
     const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
     const QByteArray state = settings.value(kStateKey).toByteArray();
     const bool geometryOk = !geometry.isEmpty() && restoreGeometry(geometry);
+    const bool wasLayingOut = std::exchange(m_layingOut, true);
     const bool stateOk = !state.isEmpty() && restoreState(state, kWindowStateVersion);
+    m_layingOut = wasLayingOut;
     m_defaultLayoutDue = !stateOk;
     if (!stateOk)
         resetLayout(); // for the restored size
@@ -210,6 +214,13 @@ void MainWindow::connectCheck()
         QTimer::singleShot(0, dock, [this, dock] { giveRoomUnderTheCode(*this, docks(), dock); });
     };
     connect(m_liveCheck, &LiveCheck::dockBroughtForward, this, giveRoom);
+    // A tab under the code chosen by the user shows its contents, not three
+    // rows of them; the layout's own choices leave the code its room.
+    connect(this, &QMainWindow::tabifiedDockWidgetActivated, this,
+            [this, giveRoom](QDockWidget *dock) {
+                if (!m_layingOut)
+                    giveRoom(dock);
+            });
     connect(m_liveCheck, &LiveCheck::uniformToPlace, this,
             [this, giveRoom] { giveRoom(m_uniformsDock); });
     connect(m_liveCheck->verdictDock(), &VerdictDock::lineChosen, this,

@@ -92,6 +92,7 @@ private:
     LoadProgressWidget *m_loadProgress = nullptr;
     QLabel *m_rendererLabel = nullptr;
     bool m_defaultLayoutDue = true; // no saved layout: lay out the default when shown
+    bool m_layingOut = false;       // the layout's own raising of tabs, not the user's
 };
 
 } // namespace phonglab
