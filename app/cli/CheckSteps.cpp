@@ -10,7 +10,6 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
-#include <QRegularExpression>
 
 namespace phonglab::cli {
 
@@ -50,10 +49,8 @@ namespace {
 // fragment's.
 QString declaringFile(const QString &name, const CheckFindings &outcome, const StageFiles &files)
 {
-    const QRegularExpression declared(
-        QStringLiteral(R"(\buniform\b[^;]*\b%1\b)").arg(QRegularExpression::escape(name)));
     const bool inVertex =
-        !outcome.stages.empty() && declared.match(outcome.stages.front().text).hasMatch();
+        !outcome.stages.empty() && uniformDeclarationLine(outcome.stages.front().text, name) > 0;
     return inVertex ? files.vertex : files.fragment;
 }
 

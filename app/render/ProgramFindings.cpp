@@ -6,6 +6,7 @@
 #include "core/program/CoursePrelude.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 #include <algorithm>
 
@@ -74,6 +75,16 @@ std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene 
         out.push_back({b->variable.name, b->variable.type, likelyMeaning(b->variable)});
     }
     return out;
+}
+
+int uniformDeclarationLine(const QString &text, const QString &name)
+{
+    const QRegularExpression declared(
+        QStringLiteral(R"(\buniform\b[^;]*\b%1\b)").arg(QRegularExpression::escape(name)));
+    const QRegularExpressionMatch m = declared.match(text);
+    if (!m.hasMatch())
+        return 0;
+    return int(QStringView(text).left(m.capturedEnd()).count(QLatin1Char('\n'))) + 1;
 }
 
 QString unboundSentence(const UnboundUniform &unbound)

@@ -31,6 +31,9 @@ struct UnboundUniform {
     std::optional<BindingMeaning> likely; // likelyMeaning(): what its name or type suggests
 };
 std::vector<UnboundUniform> unboundUniforms(ShaderProgram &program, const Scene &scene);
+// The 1-based line of `text` that declares uniform `name`, or 0: where
+// `check` and the editor say an unbound uniform is.
+int uniformDeclarationLine(const QString &text, const QString &name);
 // "uniform uZork (vec3) is bound to nothing, so the shader reads zero": what
 // each front end follows with how to bind it there.
 QString unboundSentence(const UnboundUniform &unbound);

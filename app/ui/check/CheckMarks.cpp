@@ -2,8 +2,6 @@
 
 #include "core/check/MistakeSets.h"
 
-#include <QRegularExpression>
-
 namespace phonglab {
 
 namespace {
@@ -37,17 +35,6 @@ std::vector<ShaderMistake> namedMistakes(const MistakeDiagnosis &d)
     return out;
 }
 
-// The 1-based line declaring uniform `name` in `text`, or 0.
-int declarationLine(const QString &text, const QString &name)
-{
-    const QRegularExpression declared(
-        QStringLiteral(R"(\buniform\b[^;]*\b%1\b)").arg(QRegularExpression::escape(name)));
-    const QRegularExpressionMatch m = declared.match(text);
-    if (!m.hasMatch())
-        return 0;
-    return int(QStringView(text).left(m.capturedEnd()).count(QLatin1Char('\n'))) + 1;
-}
-
 } // namespace
 
 CheckMarks checkMarks(const CheckedFrame &result)
@@ -57,7 +44,7 @@ CheckMarks checkMarks(const CheckedFrame &result)
     for (const ShaderStageText &stage : outcome.stages) {
         std::vector<ShaderDiagnostic> &into = stage.vertex ? marks.vertex : marks.fragment;
         for (const UnboundUniform &u : result.unbound)
-            if (const int line = declarationLine(stage.text, u.name); line > 0)
+            if (const int line = uniformDeclarationLine(stage.text, u.name); line > 0)
                 into.push_back(mark(
                     line,
                     QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(u))));
