@@ -53,8 +53,13 @@ set(room_rules
   "core/program" "^(core/(scene|view|reference|check|project)|mesh)/" "program/ is the vocabulary of a shader program, below scene and check"
   "core/check" "^core/scene/(SceneJson[A-Za-z]*|ScenePaths|RecoveryJournal)\\.h$" "check/ does not read scene files"
   "mesh/detail" "^mesh/import/(MeshLoader|MeshImportProcess|MeshCache|SceneMeshes)\\.h$" "detail/ works on meshes already loaded")
+# page/ runs a student's page and reads its capture: it stands on the rest
+# of core, and no other room of core includes it.
+foreach(room support program scene view reference check project)
+  list(APPEND room_rules "core/${room}" "^core/page/" "page/ stands above the other rooms of core")
+endforeach()
 set(known_rooms
-  core/scene core/reference core/check core/view core/support core/project core/program
+  core/scene core/reference core/check core/view core/support core/project core/program core/page
   mesh/import mesh/normals mesh/detail)
 
 set(violations 0)
