@@ -4,7 +4,11 @@
 #include "TestPaths.h"
 #include "core/page/BrowserPipe.h"
 #include "core/page/PageCapture.h"
+#include "core/page/PageFidelity.h"
 #include "core/page/PageRun.h"
+#include "render/GlFormat.h"
+#include "render/OffscreenRenderer.h"
+#include "render/page/PageReplay.h"
 
 #include <QTest>
 
@@ -31,12 +35,35 @@ class TestPageRun : public QObject
 private slots:
     void initTestCase();
     void angelPageIsCaptured();
+    void replayDrawsTheBrowsersPixels();
+    void aChangedUniformIsNotFaithful();
+
+private:
+    PageFidelity replayed(const PageCapture &capture);
+
+    OffscreenRenderer m_offscreen;
+    std::optional<PageCapture> m_angel;
 };
 
 void TestPageRun::initTestCase()
 {
     if (BrowserPipe::executable().isEmpty())
         QSKIP("chromium is not installed (scripts/setup.sh installs it)");
+    QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
+    QVERIFY(m_offscreen.create().ok());
+}
+
+PageFidelity TestPageRun::replayed(const PageCapture &capture)
+{
+    m_offscreen.makeCurrent();
+    const Result<ReplayedFrame> frame = replayCapture(capture);
+    if (!frame) {
+        qWarning("replay failed: %s", qPrintable(frame.error()));
+        return {};
+    }
+    if (!frame->notReplayed.isEmpty())
+        qWarning("not replayed: %s", qPrintable(frame->notReplayed.join(" | ")));
+    return comparePageFrames(capture.pixels, frame->pixels, capture.canvas);
 }
 
 void TestPageRun::angelPageIsCaptured()
@@ -54,7 +81,33 @@ void TestPageRun::angelPageIsCaptured()
     QVERIFY(capture->animated);
     QCOMPARE(capture->draws().size(), std::size_t(1));
     QVERIFY(capture->errors.isEmpty());
+    m_angel = *capture;
 }
 
-QTEST_GUILESS_MAIN(TestPageRun)
+void TestPageRun::replayDrawsTheBrowsersPixels()
+{
+    QVERIFY(m_angel);
+    const PageFidelity fidelity = replayed(*m_angel);
+    qInfo("fidelity: largest difference %d outside edges (%lld edge pixels), %d anywhere",
+          fidelity.largestOutsideEdges, fidelity.edgePixels, fidelity.largestAnywhere);
+    QVERIFY(fidelity.faithful());
+    QVERIFY(fidelity.edgePixels < 512 * 512 / 20);
+}
+
+// The control: the same capture with the shininess the page did not send
+// must fail the same comparison.
+void TestPageRun::aChangedUniformIsNotFaithful()
+{
+    QVERIFY(m_angel);
+    PageCapture changed = *m_angel;
+    for (CapturedOp &op : changed.ops)
+        for (CapturedUniform &u : op.uniforms)
+            if (u.name == QLatin1String("shininess"))
+                u.values = {{4.0}};
+    const PageFidelity fidelity = replayed(changed);
+    qInfo("with shininess 4: largest difference %d outside edges", fidelity.largestOutsideEdges);
+    QVERIFY(!fidelity.faithful());
+}
+
+QTEST_MAIN(TestPageRun)
 #include "tst_pagerun.moc"

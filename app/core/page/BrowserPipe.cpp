@@ -226,11 +226,11 @@ Result<QJsonObject> BrowserPipe::call(const QString &method, const QJsonObject &
         if (message->value(QStringLiteral("id")).toInt() != id)
             continue; // the answer to a command sent without waiting
         if (message->contains(QStringLiteral("error")))
-            return fail(QStringLiteral("%1: %2").arg(
-                method, message->value(QStringLiteral("error"))
-                            .toObject()
-                            .value(QStringLiteral("message"))
-                            .toString()));
+            return fail(QStringLiteral("%1: %2").arg(method,
+                                                     message->value(QStringLiteral("error"))
+                                                         .toObject()
+                                                         .value(QStringLiteral("message"))
+                                                         .toString()));
         return message->value(QStringLiteral("result")).toObject();
     }
 }

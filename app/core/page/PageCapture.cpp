@@ -29,15 +29,16 @@ CallStack readStack(const QJsonValue &value)
     return stack;
 }
 
-template <typename T, std::size_t N> std::array<T, N> readArray(const QJsonValue &value, std::array<T, N> fallback)
+template <typename T, std::size_t N>
+std::array<T, N> readArray(const QJsonValue &value, std::array<T, N> fallback)
 {
     const QJsonArray a = value.toArray();
     if (a.size() != qsizetype(N))
         return fallback;
     std::array<T, N> out{};
     for (std::size_t i = 0; i < N; ++i)
-        out[i] = a[qsizetype(i)].isBool() ? T(a[qsizetype(i)].toBool())
-                                          : T(a[qsizetype(i)].toDouble());
+        out[i] =
+            a[qsizetype(i)].isBool() ? T(a[qsizetype(i)].toBool()) : T(a[qsizetype(i)].toDouble());
     return out;
 }
 
@@ -128,8 +129,9 @@ QString whereText(const QJsonValue &where)
     const QJsonObject o = where.toObject();
     if (o.isEmpty())
         return {};
-    return QStringLiteral("%1:%2: ").arg(o.value(key("file")).toString()).arg(
-        o.value(key("line")).toInt());
+    return QStringLiteral("%1:%2: ")
+        .arg(o.value(key("file")).toString())
+        .arg(o.value(key("line")).toInt());
 }
 
 } // namespace
@@ -212,9 +214,8 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
     for (const QJsonValue &value : o.value(key("programs")).toArray()) {
         const QJsonObject p = value.toObject();
         c.programs.push_back({p.value(key("id")).toInt(), p.value(key("vertex")).toString(),
-                              p.value(key("fragment")).toString(),
-                              p.value(key("linked")).toBool(), p.value(key("drawn")).toBool(),
-                              p.value(key("log")).toString()});
+                              p.value(key("fragment")).toString(), p.value(key("linked")).toBool(),
+                              p.value(key("drawn")).toBool(), p.value(key("log")).toString()});
     }
     const QJsonObject buffers = o.value(key("buffers")).toObject();
     for (auto it = buffers.begin(); it != buffers.end(); ++it) {

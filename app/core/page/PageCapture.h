@@ -36,7 +36,7 @@ struct CapturedUniform {
     int size = 1;
     bool isArray = false;
     std::vector<std::vector<double>> values; // per element, as getUniform read it back
-    CallStack setAt;                          // the last uniform*() call that set it
+    CallStack setAt;                         // the last uniform*() call that set it
 };
 
 struct CapturedAttribute {
@@ -63,7 +63,7 @@ struct CapturedState {
     unsigned depthFunc = 0x0201; // LESS
     bool depthMask = true;
     bool cullFace = false;
-    unsigned cullMode = 0x0405; // BACK
+    unsigned cullMode = 0x0405;  // BACK
     unsigned frontFace = 0x0901; // CCW
     bool blend = false;
     std::array<unsigned, 4> blendFunc{1, 0, 1, 0}; // src rgb, dst rgb, src alpha, dst alpha
@@ -74,7 +74,10 @@ struct CapturedState {
 
 // A clear or a draw to the canvas, in the page's order.
 struct CapturedOp {
-    enum class Kind { Clear, Draw };
+    enum class Kind {
+        Clear,
+        Draw
+    };
     Kind kind = Kind::Draw;
     CapturedState state;
     // Clear:

@@ -29,26 +29,18 @@ QString str(const char *text)
 
 QStringList browserArguments(const PageRunOptions &options, const QString &profile)
 {
-    return {str("--headless=new"),
-            str("--no-sandbox"),
-            str("--use-angle=swiftshader"),
-            str("--enable-unsafe-swiftshader"),
-            str("--no-first-run"),
-            str("--no-default-browser-check"),
-            str("--disable-background-networking"),
-            str("--disable-component-update"),
-            str("--disable-sync"),
-            str("--disable-extensions"),
-            str("--disable-default-apps"),
-            str("--mute-audio"),
+    return {str("--headless=new"), str("--no-sandbox"), str("--use-angle=swiftshader"),
+            str("--enable-unsafe-swiftshader"), str("--no-first-run"),
+            str("--no-default-browser-check"), str("--disable-background-networking"),
+            str("--disable-component-update"), str("--disable-sync"), str("--disable-extensions"),
+            str("--disable-default-apps"), str("--mute-audio"),
             str("--force-device-scale-factor=1"),
             // Nothing resolves: what PageRun does not answer reaches no one.
             str("--host-resolver-rules=MAP * ~NOTFOUND"),
             QStringLiteral("--window-size=%1,%2")
                 .arg(options.window.width())
                 .arg(options.window.height()),
-            str("--user-data-dir=") + profile,
-            str("about:blank")};
+            str("--user-data-dir=") + profile, str("about:blank")};
 }
 
 QString captureScript(const PageRunOptions &options)
@@ -59,7 +51,7 @@ QString captureScript(const PageRunOptions &options)
     const QJsonObject config{{QStringLiteral("seed"), qint64(options.seed)}};
     return QStringLiteral("window.__phonglabConfig = %1;\n")
                .arg(QString::fromUtf8(QJsonDocument(config).toJson(QJsonDocument::Compact)))
-           + QString::fromUtf8(file.readAll());
+        + QString::fromUtf8(file.readAll());
 }
 
 // Answers the page's requests from its folders (core/page/PageServer) and
@@ -76,8 +68,7 @@ public:
     void answer(const QJsonObject &params, const QString &session)
     {
         const QString id = params.value(str("requestId")).toString();
-        const QString url =
-            params.value(str("request")).toObject().value(str("url")).toString();
+        const QString url = params.value(str("request")).toObject().value(str("url")).toString();
         const ServedFile served = serveRequest(m_folders, url);
         QFile file(served.path);
         if (served.served() && file.size() <= kMaxServedBytes && file.open(QIODevice::ReadOnly)) {
@@ -101,7 +92,9 @@ public:
         // The browser asks for a page's icon by itself: not the page's doing.
         if (!url.endsWith(str("/favicon.ico")))
             m_requests.push_back(
-                {url, {}, served.served() ? PageRunWords::tr("larger than 64 MB") : served.refusal});
+                {url,
+                 {},
+                 served.served() ? PageRunWords::tr("larger than 64 MB") : served.refusal});
     }
 
     std::vector<PageRequest> requests() const { return m_requests; }
@@ -151,8 +144,10 @@ Result<> prepareSession(BrowserPipe &pipe, const QString &session, const PageRun
 QString evaluationError(const QJsonObject &result)
 {
     const QJsonObject details = result.value(str("exceptionDetails")).toObject();
-    return details.value(str("exception")).toObject().value(str("description")).toString(
-        details.value(str("text")).toString());
+    return details.value(str("exception"))
+        .toObject()
+        .value(str("description"))
+        .toString(details.value(str("text")).toString());
 }
 
 // A served file as the report names it: relative to the project, or to
@@ -183,9 +178,8 @@ QByteArray withRequests(const QByteArray &capture, const QString &page,
         if (!r.file.isEmpty())
             served.append(servedName(r.file, folders));
         else
-            refused.append(QJsonObject{{str("kind"), str("request")},
-                                       {str("url"), r.url},
-                                       {str("why"), r.refusal}});
+            refused.append(QJsonObject{
+                {str("kind"), str("request")}, {str("url"), r.url}, {str("why"), r.refusal}});
     }
     o.insert(str("served"), served);
     o.insert(str("refused"), refused);
@@ -213,8 +207,7 @@ Result<QString> choosePageFile(const QString &project, const QString &pageFile)
     }
     if (QFileInfo(dir.filePath(str("index.html"))).isFile())
         return str("index.html");
-    const QStringList pages =
-        dir.entryList({str("*.html"), str("*.htm")}, QDir::Files, QDir::Name);
+    const QStringList pages = dir.entryList({str("*.html"), str("*.htm")}, QDir::Files, QDir::Name);
     if (pages.size() == 1)
         return pages.first();
     if (pages.isEmpty())
@@ -241,8 +234,8 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
     if (options.workFolder.isEmpty())
         temporary = std::make_unique<QTemporaryDir>();
     else
-        temporary = std::make_unique<QTemporaryDir>(QDir(options.workFolder)
-                                                        .filePath(str("browser-XXXXXX")));
+        temporary = std::make_unique<QTemporaryDir>(
+            QDir(options.workFolder).filePath(str("browser-XXXXXX")));
     if (!temporary->isValid())
         return fail(PageRunWords::tr("cannot make a folder for the browser's profile"));
     const QString home = temporary->path();
@@ -283,11 +276,11 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
     if (const Result<> waited = pipe.waitUntil([&] { return loaded; }); !waited)
         return failed(waited.error());
 
-    const QString run = QStringLiteral("window.__phonglab ? window.__phonglab.run(%1, %2) : null")
-                            .arg(options.frames)
-                            .arg(QString::fromUtf8(
-                                QJsonDocument(QJsonArray::fromStringList(options.steps))
-                                    .toJson(QJsonDocument::Compact)));
+    const QString run =
+        QStringLiteral("window.__phonglab ? window.__phonglab.run(%1, %2) : null")
+            .arg(options.frames)
+            .arg(QString::fromUtf8(QJsonDocument(QJsonArray::fromStringList(options.steps))
+                                       .toJson(QJsonDocument::Compact)));
     const Result<QJsonObject> evaluated = pipe.call(
         str("Runtime.evaluate"),
         {{str("expression"), run}, {str("awaitPromise"), true}, {str("returnByValue"), true}},
@@ -301,8 +294,8 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
         return failed(PageRunWords::tr("the page's document was replaced before it could be "
                                        "captured"));
     output.requests = answers.requests();
-    output.capture = withRequests(value.toString().toUtf8(), *page, output.requests,
-                                  options.folders);
+    output.capture =
+        withRequests(value.toString().toUtf8(), *page, output.requests, options.folders);
     pipe.stop();
     output.milliseconds = pipe.elapsedMs();
     return output;

@@ -32,8 +32,7 @@ QString fileInLibrary(const QString &library, const QString &relative)
 {
     QStringList parts = relative.split(QLatin1Char('/'), Qt::SkipEmptyParts);
     while (!parts.isEmpty()) {
-        if (const QString path = fileInside(library, parts.join(QLatin1Char('/')));
-            !path.isEmpty())
+        if (const QString path = fileInside(library, parts.join(QLatin1Char('/'))); !path.isEmpty())
             return path;
         parts.removeFirst();
     }
@@ -55,16 +54,26 @@ ServedFile refused(const QString &why)
 QString mimeTypeOfFile(const QString &fileName)
 {
     static const std::pair<const char *, const char *> kTypes[] = {
-        {"html", "text/html"},         {"htm", "text/html"},
-        {"js", "text/javascript"},     {"mjs", "text/javascript"},
-        {"css", "text/css"},           {"json", "application/json"},
-        {"png", "image/png"},          {"jpg", "image/jpeg"},
-        {"jpeg", "image/jpeg"},        {"gif", "image/gif"},
-        {"svg", "image/svg+xml"},      {"webp", "image/webp"},
-        {"wasm", "application/wasm"},  {"glsl", "text/plain"},
-        {"vert", "text/plain"},        {"frag", "text/plain"},
-        {"obj", "text/plain"},         {"mtl", "text/plain"},
-        {"txt", "text/plain"},         {"ply", "application/octet-stream"},
+        {"html", "text/html"},
+        {"htm", "text/html"},
+        {"js", "text/javascript"},
+        {"mjs", "text/javascript"},
+        {"css", "text/css"},
+        {"json", "application/json"},
+        {"png", "image/png"},
+        {"jpg", "image/jpeg"},
+        {"jpeg", "image/jpeg"},
+        {"gif", "image/gif"},
+        {"svg", "image/svg+xml"},
+        {"webp", "image/webp"},
+        {"wasm", "application/wasm"},
+        {"glsl", "text/plain"},
+        {"vert", "text/plain"},
+        {"frag", "text/plain"},
+        {"obj", "text/plain"},
+        {"mtl", "text/plain"},
+        {"txt", "text/plain"},
+        {"ply", "application/octet-stream"},
         {"bin", "application/octet-stream"},
     };
     const QString suffix = QFileInfo(fileName).suffix().toLower();

@@ -25,8 +25,8 @@ struct PageFolders {
 inline const QString kPageOrigin = QStringLiteral("http://student.phonglab.invalid");
 
 struct ServedFile {
-    QString path;   // the local file, canonical; empty when refused
-    QString mime;   // its Content-Type
+    QString path;    // the local file, canonical; empty when refused
+    QString mime;    // its Content-Type
     QString refusal; // why not, for the report ("outside the project and the libraries")
     bool served() const { return !path.isEmpty(); }
 };
