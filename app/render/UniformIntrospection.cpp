@@ -61,18 +61,7 @@ std::vector<ActiveInputInfo> activeInputsOf(QOpenGLExtraFunctions *gl, GLuint pr
 
 GlslType glslTypeOf(GLenum type)
 {
-    switch (type) {
-    case GL_FLOAT: return GlslType::Float;
-    case GL_INT: return GlslType::Int;
-    case GL_UNSIGNED_INT: return GlslType::UInt;
-    case GL_BOOL: return GlslType::Bool;
-    case GL_FLOAT_VEC2: return GlslType::Vec2;
-    case GL_FLOAT_VEC3: return GlslType::Vec3;
-    case GL_FLOAT_VEC4: return GlslType::Vec4;
-    case GL_FLOAT_MAT3: return GlslType::Mat3;
-    case GL_FLOAT_MAT4: return GlslType::Mat4;
-    default: return GlslType::Other;
-    }
+    return glslTypeOfGlEnum(type);
 }
 
 std::vector<ShaderVariable> shaderVariablesOf(QOpenGLExtraFunctions *gl, GLuint program)

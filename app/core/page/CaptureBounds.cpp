@@ -43,8 +43,7 @@ int componentBytes(unsigned glType)
     case 0x1405: // UNSIGNED_INT
     case 0x1406: // FLOAT
         return 4;
-    default:
-        return 0;
+    default: return 0;
     }
 }
 
@@ -68,9 +67,10 @@ std::optional<qint64> largestVertex(const PageCapture &capture, const CapturedOp
     const int bytes = componentBytes(draw.indexType);
     if (!indices || bytes == 0 || draw.offset < 0 || draw.offset % bytes != 0
         || draw.offset + qint64(draw.count) * bytes > indices->bytes.size())
-        return (*problem = CaptureBoundsWords::tr("the index buffer does not hold %1 indices")
-                               .arg(draw.count),
-                std::nullopt);
+        return (
+            *problem =
+                CaptureBoundsWords::tr("the index buffer does not hold %1 indices").arg(draw.count),
+            std::nullopt);
     // WebGL 2 always restarts a primitive at the largest index; WebGL 1 has no restart.
     const bool restart = capture.webgl == 2;
     switch (bytes) {

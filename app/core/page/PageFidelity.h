@@ -24,7 +24,7 @@ struct PageFidelity {
     int largestAnywhere = 0;
     qint64 edgePixels = 0;
     qint64 differingOutsideEdges = 0; // by more than the tolerance
-    QPoint worst{-1, -1}; // outside edges, row 0 at the top; (-1, -1) when none differs
+    QPoint worst{-1, -1};             // outside edges, row 0 at the top; (-1, -1) when none differs
 
     bool faithful() const { return largestOutsideEdges <= kFidelityToleranceSteps; }
 };

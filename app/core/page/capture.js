@@ -458,7 +458,8 @@
 
   // --- the steps a student would take before looking --------------------
   function runStep(step) {
-    const m = /^\s*(click|select|check|uncheck|set)\s+(\S+)(?:\s*=\s*(.*))?$/.exec(step);
+    // The selector ends at the first '=' (select #shading=phong).
+    const m = /^\s*(click|select|check|uncheck|set)\s+(\S+?)(?:\s*=\s*(.*))?$/.exec(step);
     if (!m) return 'not a step (click SELECTOR, select SELECTOR=VALUE, check SELECTOR, '
                    + 'uncheck SELECTOR, set SELECTOR=VALUE)';
     const [, verb, selector, value] = m;

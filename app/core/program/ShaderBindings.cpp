@@ -190,6 +190,22 @@ bool isVertexInput(BindingMeaning meaning)
     return meaning == M::Position || meaning == M::Normal;
 }
 
+GlslType glslTypeOfGlEnum(unsigned glType)
+{
+    switch (glType) {
+    case 0x1406: return GlslType::Float; // GL_FLOAT
+    case 0x1404: return GlslType::Int;   // GL_INT
+    case 0x1405: return GlslType::UInt;  // GL_UNSIGNED_INT
+    case 0x8B56: return GlslType::Bool;  // GL_BOOL
+    case 0x8B50: return GlslType::Vec2;  // GL_FLOAT_VEC2
+    case 0x8B51: return GlslType::Vec3;  // GL_FLOAT_VEC3
+    case 0x8B52: return GlslType::Vec4;  // GL_FLOAT_VEC4
+    case 0x8B5B: return GlslType::Mat3;  // GL_FLOAT_MAT3
+    case 0x8B5C: return GlslType::Mat4;  // GL_FLOAT_MAT4
+    default: return GlslType::Other;
+    }
+}
+
 QString glslTypeSpelling(GlslType type)
 {
     switch (type) {

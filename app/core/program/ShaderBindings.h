@@ -87,6 +87,9 @@ enum class GlslType {
     Other,
 };
 QString glslTypeSpelling(GlslType type);
+// An OpenGL (or WebGL) type enum as bindings see it (GlslType::Other for
+// samplers, int vectors, ...): the driver's, or one a page's capture holds.
+GlslType glslTypeOfGlEnum(unsigned glType);
 
 // One active uniform or vertex input as the driver reports it. An array is
 // one variable named without "[0]"; a member of a struct array is its own

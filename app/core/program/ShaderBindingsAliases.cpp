@@ -55,8 +55,9 @@ const std::vector<Aliases> &aliasTable()
 {
     static const std::vector<Aliases> table = {
         {M::Position,
-         {"position", "pos", "vertexposition", "vertexpos", "vertpos", "vertex", "vpos", "p",
-          "objectposition", "positionobject", "modelposition", "positionos", "point"}},
+         {"position", "pos", "vertexposition", "vertexpos", "vertpos", "vertex", "vpos",
+          "vposition", "p", "objectposition", "positionobject", "modelposition", "positionos",
+          "point"}},
         {M::Normal,
          {"normal", "norm", "vertexnormal", "vertnormal", "vnormal", "n", "objectnormal",
           "normalobject", "normalos"}},

@@ -108,9 +108,12 @@ bool setUniform(QOpenGLExtraFunctions *gl, GLint location, unsigned type,
     case GL_UNSIGNED_INT_VEC2: return enough(2) && (gl->glUniform2uiv(location, 1, u.data()), true);
     case GL_UNSIGNED_INT_VEC3: return enough(3) && (gl->glUniform3uiv(location, 1, u.data()), true);
     case GL_UNSIGNED_INT_VEC4: return enough(4) && (gl->glUniform4uiv(location, 1, u.data()), true);
-    case GL_FLOAT_MAT2: return enough(4) && (gl->glUniformMatrix2fv(location, 1, GL_FALSE, f.data()), true);
-    case GL_FLOAT_MAT3: return enough(9) && (gl->glUniformMatrix3fv(location, 1, GL_FALSE, f.data()), true);
-    case GL_FLOAT_MAT4: return enough(16) && (gl->glUniformMatrix4fv(location, 1, GL_FALSE, f.data()), true);
+    case GL_FLOAT_MAT2:
+        return enough(4) && (gl->glUniformMatrix2fv(location, 1, GL_FALSE, f.data()), true);
+    case GL_FLOAT_MAT3:
+        return enough(9) && (gl->glUniformMatrix3fv(location, 1, GL_FALSE, f.data()), true);
+    case GL_FLOAT_MAT4:
+        return enough(16) && (gl->glUniformMatrix4fv(location, 1, GL_FALSE, f.data()), true);
     default: return false;
     }
 }
@@ -120,8 +123,8 @@ void setUniforms(QOpenGLExtraFunctions *gl, GLuint program, const CapturedOp &dr
 {
     for (const CapturedUniform &u : draw.uniforms) {
         if (u.glType == GL_SAMPLER_2D || u.glType == GL_SAMPLER_CUBE)
-            notes->push_back(PageReplayWords::tr("%1 samples a texture, which is not captured")
-                                 .arg(u.name));
+            notes->push_back(
+                PageReplayWords::tr("%1 samples a texture, which is not captured").arg(u.name));
         for (std::size_t k = 0; k < u.values.size(); ++k) {
             const QByteArray name =
                 (u.isArray ? QStringLiteral("%1[%2]").arg(u.name).arg(k) : u.name).toUtf8();
@@ -156,8 +159,8 @@ void setAttributes(QOpenGLExtraFunctions *gl, GLuint program, const CapturedOp &
         if (a.integer)
             gl->glVertexAttribIPointer(GLuint(location), a.size, a.component, a.stride, offset);
         else
-            gl->glVertexAttribPointer(GLuint(location), a.size, a.component, a.normalized,
-                                      a.stride, offset);
+            gl->glVertexAttribPointer(GLuint(location), a.size, a.component, a.normalized, a.stride,
+                                      offset);
         gl->glVertexAttribDivisor(GLuint(location), GLuint(a.divisor));
         gl->glEnableVertexAttribArray(GLuint(location));
     }
@@ -172,9 +175,9 @@ const BuiltProgram *programFor(const PageCapture &capture, int id, ReplayObjects
     BuiltProgram built;
     if (captured) {
         ProgramBuilder builder;
-        built = builder.build({QStringLiteral("vertex shader %1").arg(id), captured->vertex.toUtf8()},
-                              {QStringLiteral("fragment shader %1").arg(id),
-                               captured->fragment.toUtf8()});
+        built = builder.build(
+            {QStringLiteral("vertex shader %1").arg(id), captured->vertex.toUtf8()},
+            {QStringLiteral("fragment shader %1").arg(id), captured->fragment.toUtf8()});
     }
     if (!built.ok())
         *problem = captured ? PageReplayWords::tr("program %1 does not build here: %2")
@@ -243,7 +246,7 @@ Result<ReplayedFrame> replayCapture(const PageCapture &capture)
                 frame.notReplayed.push_back(callSiteText(op.stack).isEmpty()
                                                 ? problem
                                                 : callSiteText(op.stack) + QStringLiteral(": ")
-                                                      + problem);
+                                                    + problem);
                 continue;
             }
             gl->glUseProgram(program->program.id());

@@ -1,5 +1,5 @@
 "use strict";
-// The JavaScript half of the exercise: the sphere Blender exported, its
+// The JavaScript half of the exercise: the cloud Blender exported, its
 // normals in a VBO, every coefficient a uniform. The selects choose the
 // mistakes PhongLab must find (tests/gl/tst_pagecheck.cpp).
 let gl, program, vertexCount = 0, mesh = null;
@@ -89,7 +89,7 @@ window.onload = function init() {
   gl.uniform1f(gl.getUniformLocation(program, 'shininess'), 40.0);
   gl.uniform3fv(gl.getUniformLocation(program, 'attenuation'), flatten(vec3(1.0, 0.0, 0.0)));
   const request = new XMLHttpRequest();
-  request.open('GET', 'sphere_smooth.obj');
+  request.open('GET', 'cloud.obj');
   request.onload = () => {
     mesh = readObj(request.responseText);
     upload();
