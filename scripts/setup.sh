@@ -17,7 +17,8 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev llvm-14   # sanitized build and fuzzers (test.sh, fuzz.sh)
   clang-format-14                       # the tree's format, checked by .ci/run (scripts/format.sh)
   ccache                                # faster rebuilds (build.sh uses it when found)
-  chromium                              # grade's report test; the browser PhongLab is proved against (gl.tst_browserdifferential)
+  chromium                              # grade's report test; the browser PhongLab is proved against (gl.tst_browserdifferential); check --page
+  libjs-three                           # three.js r111, the library of the ShaderMaterial test page (gl.tst_pagerun)
 )
 
 missing=()

@@ -5,6 +5,7 @@
 #include "GradedChild.h"
 #include "SceneOverrides.h"
 #include "SceneStages.h"
+#include "page/PageCheck.h"
 #include "core/project/ProjectPrograms.h"
 #include "core/scene/SceneJson.h"
 #include "render/CheckReportOutput.h"
@@ -16,6 +17,7 @@
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QJsonDocument>
+#include <QTemporaryDir>
 
 #include <optional>
 #include <variant>
@@ -45,6 +47,7 @@ struct CheckArgs {
     QString drawOnlyPath; // the hidden --draw-only OUT.png of grade's child
     QString projectPath;  // --project: a WebGL project's page, script or folder
     QString programName;  // --program: which of its programs
+    PageRequest page;     // --page or --capture: the page as the browser ran it
 };
 
 const QString &synopsis()
@@ -57,7 +60,15 @@ const QString &synopsis()
                               "[--equation slide|guarded]\n"
                               "                      [--define NAME=VALUE ...] "
                               "[--precision highp|as-written]\n"
-                              "                      [--json] [--diff OUT.png]");
+                              "                      [--json] [--diff OUT.png]\n"
+                              "       phonglab check [SCENE.json] --page PROJECT [--page-file FILE] "
+                              "[--library DIR ...]\n"
+                              "                      [--url-map PREFIX=PATH ...] [--page-step STEP "
+                              "...] [--page-frame N]\n"
+                              "                      [--page-timeout S] [--meshes DIR] "
+                              "[--page-out DIR] [--json]\n"
+                              "       phonglab check [SCENE.json] --capture capture.json [--meshes "
+                              "DIR] [--json]");
     return text;
 }
 
@@ -108,7 +119,8 @@ QString helpText(const StageOptions &stage, const SceneOverrideOptions &override
               .arg(helpLines({stage.vertex, stage.fragment}),
                    helpLines({stage.shading, stage.size}),
                    QString::number(kDefaultCheckToleranceSteps), helpLines(overrides.all()),
-                   shaderMistakeKeys().join(QStringLiteral(", ")));
+                   shaderMistakeKeys().join(QStringLiteral(", ")))
+        + pageOptionsHelp(PageOptions());
 }
 
 // The arguments, or an exit code for usage errors and --help.
@@ -127,6 +139,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                                       QStringLiteral("equation"));
     const QCommandLineOption project(QStringLiteral("project"), QString(), QStringLiteral("path"));
     const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
+    const PageOptions page;
     QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
     drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
     parser.addPositionalArgument(QStringLiteral("scene"),
@@ -139,17 +152,20 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                          stage.all()
                              + QList<QCommandLineOption>{tolerance, json, diff, equation, drawOnly,
                                                          project, program}
-                             + overrides.all(),
-                         SceneOverrideOptions::repeatable()},
+                             + overrides.all() + page.all(),
+                         SceneOverrideOptions::repeatable() + PageOptions::repeatable()},
                         synopsis(), helpText(stage, overrides)))
         return *exit;
+    CheckArgs args;
+    if (const QString wrong = readPageOptions(parser, page, &args.page); !wrong.isEmpty())
+        return usage(wrong);
     const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
+    if (positional.size() > 1 || (positional.isEmpty() && !args.page.wanted))
         return usage(positional.isEmpty()
                          ? CheckCommandWords::tr("missing the scene file")
                          : CheckCommandWords::tr("exactly one scene file expected"));
-    CheckArgs args;
-    args.scenePath = positional.first();
+    args.scenePath = positional.value(0);
+
     for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &args.size),
                                  readShadingOption(parser, stage.shading, &args.shading),
                                  readSceneOverrides(parser, overrides, &args.overrides)})
@@ -174,6 +190,12 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
     args.fragmentPath = parser.value(stage.fragment);
     args.projectPath = parser.value(project);
     args.programName = parser.value(program);
+    if (args.page.wanted && !args.projectPath.isEmpty())
+        return usage(CheckCommandWords::tr("--project reads the shaders from the files, --page "
+                                           "takes them from the browser: give one"));
+    if (args.page.wanted && (parser.isSet(stage.vertex) || parser.isSet(stage.fragment)))
+        return usage(CheckCommandWords::tr("--page takes both stages from the browser; leave out "
+                                           "--vertex and --fragment"));
     if (!args.projectPath.isEmpty() && (parser.isSet(stage.vertex) || parser.isSet(stage.fragment)))
         return usage(CheckCommandWords::tr(
             "--project takes both stages from the project; leave out --vertex and --fragment"));
@@ -295,10 +317,31 @@ int drawOnly(const CheckArgs &args)
     return kExitOk;
 }
 
-int check(const CheckArgs &args)
+int check(CheckArgs args)
 {
     if (!args.drawOnlyPath.isEmpty())
         return drawOnly(args);
+    std::optional<PageCheck> page;
+    const QTemporaryDir compiled;
+    QString pageNote;
+    if (args.page.wanted) {
+        page = checkPage(args.page);
+        if (const QString unwritten = writePageOutputs(*page, args.page.outFolder);
+            !unwritten.isEmpty())
+            printError(unwritten);
+        if (page->ok() && !args.scenePath.isEmpty()) {
+            const PageStages stages =
+                pageStagesForScene(*page, args.page.run.folders.project, compiled);
+            pageNote = stages.note;
+            args.vertexPath = stages.vertexPath;
+            args.fragmentPath = stages.fragmentPath;
+            for (const auto &[name, value] : stages.constants)
+                if (!args.overrides.bindings.count(name))
+                    args.overrides.constants.emplace(name, value);
+        }
+        if (!page->ok() || args.scenePath.isEmpty() || args.vertexPath.isEmpty())
+            return reportPageAlone(*page, args.json, pageNote);
+    }
     const SceneLoadResult loaded = checkedScene(args);
     const Scene scene = loaded.ok() ? *loaded.scene : Scene{};
     CheckOutcome outcome;
@@ -323,12 +366,20 @@ int check(const CheckArgs &args)
             outcome.stages.clear();
         }
     }
+    if (page) {
+        outcome.notes.prepend(pageNote);
+        if (page->javascriptMistakes() && outcome.verdict == CheckOutcome::Verdict::Pass)
+            outcome.verdict = CheckOutcome::Verdict::Fail;
+    }
     if (args.json) {
-        printLine(
-            QString::fromUtf8(
-                QJsonDocument(checkJson(outcome.verdict, outcome)).toJson(QJsonDocument::Indented))
-                .trimmed());
+        QJsonObject json = checkJson(outcome.verdict, outcome);
+        if (page)
+            json.insert(QStringLiteral("page"), pageJson(*page));
+        printLine(QString::fromUtf8(QJsonDocument(json).toJson(QJsonDocument::Indented)).trimmed());
     } else {
+        if (page)
+            for (const QString &line : pageText(*page))
+                printLine(line);
         for (const ShaderDiagnostic &e : outcome.errors)
             // Compile errors with a line were printed as the compiler's; a
             // scene's syntax error has a line too, and its message says it.

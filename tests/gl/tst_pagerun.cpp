@@ -57,7 +57,7 @@ void TestPageRun::initTestCase()
         QSKIP("chromium is not installed (scripts/setup.sh installs it)");
     QSurfaceFormat::setDefaultFormat(phonglabSurfaceFormat(0));
     QVERIFY(m_offscreen.create().ok());
-    for (const QString name : {QStringLiteral("cloud.obj"), QStringLiteral("tree.obj")}) {
+    for (const QString &name : {QStringLiteral("cloud.obj"), QStringLiteral("tree.obj")}) {
         const MeshLoadResult loaded = loadMesh(sourcePath(QStringLiteral("assets/meshes/") + name));
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
         m_courseMeshes.push_back({name, *loaded.mesh});

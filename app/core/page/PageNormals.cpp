@@ -189,22 +189,37 @@ JavaScriptFinding findingFor(const QString &name, const DrawnMesh &drawn)
 std::vector<JavaScriptFinding> checkPageNormals(const PageCapture &capture,
                                                 const std::vector<CourseMesh> &meshes)
 {
+    const std::vector<const CapturedOp *> draws = capture.draws();
+    std::vector<std::optional<DrawnMesh>> drawn(meshes.size());
+    std::vector<std::size_t> drawOf(meshes.size(), 0);
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const MeshNormals normals = normalsByPosition(meshes[m].mesh);
+        for (std::size_t d = 0; d < draws.size() && !drawn[m]; ++d)
+            if ((drawn[m] = drawnAs(capture, *draws[d], normals)))
+                drawOf[m] = d;
+    }
+    const auto exact = [&](std::size_t m) {
+        return drawn[m]->counts[std::size_t(VertexNormal::Exact)];
+    };
     std::vector<JavaScriptFinding> out;
-    for (const CourseMesh &course : meshes) {
-        const MeshNormals normals = normalsByPosition(course.mesh);
-        std::optional<DrawnMesh> drawn;
-        for (const CapturedOp *draw : capture.draws())
-            if ((drawn = drawnAs(capture, *draw, normals)))
-                break;
-        if (drawn) {
-            out.push_back(findingFor(course.name, *drawn));
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        if (!drawn[m]) {
+            out.push_back({QStringLiteral("normals-missing"), meshes[m].name, true,
+                           PageNormalsWords::tr("%1 is not drawn in the captured frame (its "
+                                                "positions are in no draw's buffer)")
+                               .arg(meshes[m].name),
+                           {}});
             continue;
         }
-        out.push_back({QStringLiteral("normals-missing"), course.name, true,
-                       PageNormalsWords::tr("%1 is not drawn in the captured frame (its positions "
-                                            "are in no draw's buffer)")
-                           .arg(course.name),
-                       {}});
+        // Meshes of the same positions (cloud.obj and cloud_flat.obj) are
+        // one drawn mesh: the one whose normals the page sent is it.
+        bool another = false;
+        for (std::size_t o = 0; o < meshes.size(); ++o)
+            if (o != m && drawn[o] && drawOf[o] == drawOf[m]
+                && (exact(o) > exact(m) || (exact(o) == exact(m) && o < m)))
+                another = true;
+        if (!another)
+            out.push_back(findingFor(meshes[m].name, *drawn[m]));
     }
     return out;
 }

@@ -1,0 +1,323 @@
+#include "PageCheck.h"
+
+#include "cli/CliCommon.h"
+#include "core/page/PageMatrices.h"
+#include "core/page/PageProgram.h"
+#include "core/page/PageNormals.h"
+#include "mesh/import/MeshFilePrecheck.h"
+#include "mesh/import/MeshLoader.h"
+#include "render/GlFormat.h"
+#include "render/OffscreenRenderer.h"
+#include "render/page/PageReplay.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+namespace phonglab::cli {
+
+struct PageCheckWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::PageCheck)
+};
+
+namespace {
+
+QString key(const char *name)
+{
+    return QString::fromLatin1(name);
+}
+
+std::vector<CourseMesh> courseMeshes(const QString &folder, QStringList *errors)
+{
+    std::vector<CourseMesh> out;
+    if (folder.isEmpty())
+        return out;
+    const QDir dir(folder);
+    for (const QString &name : dir.entryList(QDir::Files, QDir::Name)) {
+        if (!meshFileFormatForPath(name))
+            continue;
+        const MeshLoadResult loaded = loadMesh(dir.filePath(name));
+        if (loaded.ok())
+            out.push_back({name, *loaded.mesh});
+        else
+            errors->push_back(QStringLiteral("%1: %2").arg(dir.filePath(name), loaded.error));
+    }
+    return out;
+}
+
+void replay(PageCheck *check)
+{
+    OffscreenRenderer offscreen;
+    if (const Result<> made = offscreen.create(); !made) {
+        check->fidelityError = made.error();
+        return;
+    }
+    offscreen.makeCurrent();
+    const Result<ReplayedFrame> frame = replayCapture(check->capture);
+    if (!frame) {
+        check->fidelityError = frame.error();
+        return;
+    }
+    check->notReplayed = frame->notReplayed;
+    check->replayPixels = frame->pixels;
+    check->fidelity = comparePageFrames(check->capture.pixels, frame->pixels, check->capture.canvas);
+}
+
+Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *milliseconds)
+{
+    if (!request.captureFile.isEmpty()) {
+        QFile file(request.captureFile);
+        if (!file.open(QIODevice::ReadOnly))
+            return fail(QStringLiteral("%1: %2").arg(request.captureFile, file.errorString()));
+        return file.readAll();
+    }
+    PageRunOptions options = request.run;
+    options.workFolder = request.outFolder;
+    if (!options.workFolder.isEmpty() && !QDir().mkpath(options.workFolder))
+        return fail(PageCheckWords::tr("%1: cannot make the folder").arg(options.workFolder));
+    const Result<PageRunOutput> run = runPage(options);
+    if (!run)
+        return fail(run.error());
+    *milliseconds = run->milliseconds;
+    return run->capture;
+}
+
+QImage frameImage(const QByteArray &rgba, QSize size)
+{
+    if (rgba.size() != qsizetype(size.width()) * size.height() * 4)
+        return {};
+    // Bottom row first, as readPixels; alpha dropped: a picture of the colours.
+    return QImage(reinterpret_cast<const uchar *>(rgba.constData()), size.width(), size.height(),
+                  QImage::Format_RGBA8888)
+        .mirrored()
+        .convertToFormat(QImage::Format_RGB888);
+}
+
+QImage differenceImage(const PageCheck &check)
+{
+    const QImage a = frameImage(check.capture.pixels, check.capture.canvas);
+    const QImage b = frameImage(check.replayPixels, check.capture.canvas);
+    if (a.isNull() || b.isNull())
+        return {};
+    QImage out(a.size(), QImage::Format_RGB888);
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                                    std::abs(qBlue(p) - qBlue(q))});
+            out.setPixel(x, y, d == 0   ? qRgb(0, 60, 0)
+                               : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
+                               : d < 8  ? qRgb(230, 220, 0)
+                                        : qRgb(230, 30, 30));
+        }
+    return out;
+}
+
+QJsonArray stringArray(const QStringList &list)
+{
+    return QJsonArray::fromStringList(list);
+}
+
+QJsonObject fidelityJson(const PageCheck &check)
+{
+    if (!check.fidelity)
+        return {{key("error"), check.fidelityError}};
+    const PageFidelity &f = *check.fidelity;
+    return {{key("faithful"), f.faithful() && check.notReplayed.isEmpty()},
+            {key("largest_difference"), f.largestOutsideEdges},
+            {key("largest_anywhere"), f.largestAnywhere},
+            {key("edge_pixels"), f.edgePixels},
+            {key("differing_pixels"), f.differingOutsideEdges},
+            {key("tolerance"), kFidelityToleranceSteps},
+            {key("worst"), f.worst.x() < 0 ? QJsonValue() : QJsonArray{f.worst.x(), f.worst.y()}},
+            {key("not_replayed"), stringArray(check.notReplayed)}};
+}
+
+} // namespace
+
+bool PageCheck::javascriptMistakes() const
+{
+    return std::any_of(javascript.begin(), javascript.end(),
+                       [](const JavaScriptFinding &f) { return f.mistake; });
+}
+
+PageCheck checkPage(const PageRequest &request)
+{
+    PageCheck check;
+    const Result<QByteArray> json = obtainCapture(request, &check.milliseconds);
+    if (!json) {
+        check.error = json.error();
+        return check;
+    }
+    Result<PageCapture> capture = readPageCapture(*json);
+    if (!capture) {
+        check.error = request.captureFile.isEmpty()
+            ? capture.error()
+            : QStringLiteral("%1: %2").arg(request.captureFile, capture.error());
+        return check;
+    }
+    check.captureJson = *json;
+    check.capture = std::move(*capture);
+    if (check.capture.pixels.isEmpty())
+        check.fidelityError = PageCheckWords::tr("the page drew nothing to its canvas");
+    else
+        replay(&check);
+    check.javascript = checkPageNormals(check.capture,
+                                        courseMeshes(request.meshesFolder, &check.meshErrors));
+    const std::vector<JavaScriptFinding> matrices = checkPageMatrices(check.capture);
+    check.javascript.insert(check.javascript.end(), matrices.begin(), matrices.end());
+    return check;
+}
+
+PageStages pageStagesForScene(const PageCheck &check, const QString &project,
+                              const QTemporaryDir &compiled)
+{
+    PageStages stages;
+    const std::optional<PageProgram> lit = litPageProgram(check.capture);
+    if (!lit) {
+        stages.note = PageCheckWords::tr("the page drew no program that lights: the course scene "
+                                         "is not checked");
+        return stages;
+    }
+    const Project files = readProject(project);
+    const auto stagePath = [&](ProjectStage stage, const QString &text, const char *name) {
+        const QString locator = stageLocatorInProject(files, stage, text);
+        if (!locator.isEmpty())
+            return locator;
+        const QString path = compiled.filePath(QString::fromLatin1(name));
+        QSaveFile file(path);
+        if (file.open(QIODevice::WriteOnly) && file.write(text.toUtf8()) >= 0)
+            file.commit();
+        return path;
+    };
+    stages.vertexPath = stagePath(ProjectStage::Vertex, lit->program->vertex, "page.vert");
+    stages.fragmentPath = stagePath(ProjectStage::Fragment, lit->program->fragment, "page.frag");
+    stages.constants = lit->constants;
+    stages.note = PageCheckWords::tr("the course scene is checked with program %1 as the page "
+                                     "compiled it: %2 and %3")
+                      .arg(lit->program->id)
+                      .arg(QFileInfo(stages.vertexPath).fileName(),
+                           QFileInfo(stages.fragmentPath).fileName());
+    return stages;
+}
+
+int reportPageAlone(const PageCheck &check, bool json, const QString &note)
+{
+    const bool passed = check.ok() && !check.javascriptMistakes();
+    const QString verdict = !check.ok() ? key("error") : passed ? key("pass") : key("fail");
+    if (json) {
+        QJsonObject out{{key("verdict"), verdict}, {key("page"), pageJson(check)}};
+        if (!note.isEmpty())
+            out.insert(key("notes"), QJsonArray{note});
+        printLine(QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Indented)).trimmed());
+    } else {
+        if (!check.ok())
+            printError(check.error);
+        for (const QString &line : pageText(check) + (note.isEmpty() ? QStringList() : QStringList{note}))
+            printLine(line);
+        printLine(PageCheckWords::tr("verdict: %1").arg(verdict));
+    }
+    return passed ? kExitOk : kExitFailure;
+}
+
+QString writePageOutputs(const PageCheck &check, const QString &folder)
+{
+    if (folder.isEmpty() || !check.ok())
+        return {};
+    const QDir dir(folder);
+    if (!dir.mkpath(key(".")))
+        return PageCheckWords::tr("%1: cannot make the folder").arg(folder);
+    QSaveFile capture(dir.filePath(key("capture.json")));
+    if (!capture.open(QIODevice::WriteOnly) || capture.write(check.captureJson) < 0
+        || !capture.commit())
+        return PageCheckWords::tr("%1: cannot write").arg(capture.fileName());
+    const std::pair<const char *, QImage> pictures[] = {
+        {"browser.png", frameImage(check.capture.pixels, check.capture.canvas)},
+        {"phonglab.png", frameImage(check.replayPixels, check.capture.canvas)},
+        {"difference.png", differenceImage(check)}};
+    for (const auto &[name, image] : pictures)
+        if (!image.isNull() && !image.save(dir.filePath(key(name))))
+            return PageCheckWords::tr("%1: cannot write").arg(dir.filePath(key(name)));
+    return {};
+}
+
+QJsonObject pageJson(const PageCheck &check)
+{
+    if (!check.ok())
+        return {{key("error"), check.error}};
+    const PageCapture &c = check.capture;
+    QJsonArray steps;
+    for (const PageStep &s : c.steps)
+        steps.append(QJsonObject{{key("step"), s.step}, {key("problem"), s.problem}});
+    QJsonArray javascript;
+    for (const JavaScriptFinding &f : check.javascript)
+        javascript.append(QJsonObject{{key("key"), f.key},
+                                      {key("subject"), f.subject},
+                                      {key("mistake"), f.mistake},
+                                      {key("message"), f.message},
+                                      {key("where"), f.where}});
+    return {{key("file"), c.page},
+            {key("webgl"), c.webgl},
+            {key("frame"), c.frame},
+            {key("animated"), c.animated},
+            {key("canvas"), QJsonArray{c.canvas.width(), c.canvas.height()}},
+            {key("milliseconds"), check.milliseconds},
+            {key("steps"), steps},
+            {key("served"), stringArray(c.served)},
+            {key("refused"), stringArray(c.refused)},
+            {key("errors"), stringArray(c.errors)},
+            {key("console_errors"), stringArray(c.consoleErrors)},
+            {key("fidelity"), fidelityJson(check)},
+            {key("javascript"), javascript},
+            {key("mesh_errors"), stringArray(check.meshErrors)}};
+}
+
+QStringList pageText(const PageCheck &check)
+{
+    if (!check.ok())
+        return {PageCheckWords::tr("page: not run: %1").arg(check.error)};
+    const PageCapture &c = check.capture;
+    QStringList lines;
+    lines << PageCheckWords::tr("page: %1, WebGL %2, frame %3 of a %4x%5 canvas%6")
+                 .arg(c.page)
+                 .arg(c.webgl)
+                 .arg(c.frame)
+                 .arg(c.canvas.width())
+                 .arg(c.canvas.height())
+                 .arg(check.milliseconds > 0 ? QStringLiteral(" (%1 s)").arg(check.milliseconds / 1000.0, 0, 'f', 1) : QString());
+    for (const PageStep &s : c.steps)
+        if (!s.problem.isEmpty())
+            lines << PageCheckWords::tr("page step '%1': %2").arg(s.step, s.problem);
+    for (const QString &r : c.refused)
+        lines << PageCheckWords::tr("refused (the page gets no network): %1").arg(r);
+    for (const QString &e : c.errors + c.consoleErrors)
+        lines << PageCheckWords::tr("page error: %1").arg(e);
+    if (check.fidelity)
+        lines << (check.fidelity->faithful() && check.notReplayed.isEmpty()
+                      ? PageCheckWords::tr("fidelity: PhongLab draws the page's frame as the "
+                                           "browser did (largest difference %1 outside edges)")
+                            .arg(check.fidelity->largestOutsideEdges)
+                      : PageCheckWords::tr("fidelity: PhongLab does not draw the page's frame as "
+                                           "the browser did (largest difference %1 outside "
+                                           "edges): what follows may be PhongLab's mistake, "
+                                           "not the student's")
+                            .arg(check.fidelity->largestOutsideEdges));
+    else
+        lines << PageCheckWords::tr("fidelity: not checked: %1").arg(check.fidelityError);
+    for (const QString &n : check.notReplayed)
+        lines << PageCheckWords::tr("not drawn again: %1").arg(n);
+    for (const JavaScriptFinding &f : check.javascript)
+        lines << (f.where.isEmpty() ? QString() : f.where + QStringLiteral(": "))
+                     + (f.mistake ? PageCheckWords::tr("javascript: %1") : PageCheckWords::tr("javascript ok: %1"))
+                           .arg(f.message);
+    for (const QString &e : check.meshErrors)
+        lines << PageCheckWords::tr("course mesh not read: %1").arg(e);
+    return lines;
+}
+
+} // namespace phonglab::cli

@@ -1,0 +1,73 @@
+#pragma once
+#include "PageOptions.h"
+#include "core/page/JavaScriptFinding.h"
+#include "core/page/PageCapture.h"
+#include "core/page/PageFidelity.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QStringList>
+#include <QTemporaryDir>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace phonglab::cli {
+
+// A student's page checked as the browser ran it (phonglab check --page,
+// grade --pages): the capture (core/page), then
+//  - fidelity: PhongLab draws the captured frame again and compares it with
+//    the browser's (a difference is PhongLab's, never the student's);
+//  - the JavaScript half: the normals sent against the course's meshes,
+//    the normal matrix against the model-view sent, the light's w.
+// The course scene checked with the page's program and values is the
+// caller's (CheckCommand), from litPageProgram().
+struct PageCheck {
+    QString error; // the page could not be run or its capture read: nothing checked
+    QByteArray captureJson;
+    PageCapture capture;
+    qint64 milliseconds = 0; // the browser's run, start to stop; 0 for --capture
+    std::optional<PageFidelity> fidelity;
+    QString fidelityError; // why the frame could not be drawn again
+    QStringList notReplayed;
+    QByteArray replayPixels; // RGBA, bottom row first
+    std::vector<JavaScriptFinding> javascript;
+    QStringList meshErrors; // --meshes files that could not be read
+
+    bool ok() const { return error.isEmpty(); }
+    bool javascriptMistakes() const;
+};
+
+PageCheck checkPage(const PageRequest &request);
+
+// --page-out: capture.json, browser.png, phonglab.png and difference.png
+// (green where equal, yellow to red where not, blue the edges left out).
+QString writePageOutputs(const PageCheck &check, const QString &folder);
+
+// For a check of the course scene with the page's program
+// (core/page/PageProgram): its stages as compiled, on the student's own
+// lines ("FILE#KEY") where the page compiled them unchanged, else files in
+// `compiled`; the values the page gave the uniforms no meaning binds (a
+// mode switch: no --bind mode=1 needed). Empty paths, and a note saying
+// why, when the page drew no program that lights.
+struct PageStages {
+    QString vertexPath;
+    QString fragmentPath;
+    std::map<QString, std::vector<double>> constants;
+    QString note;
+};
+PageStages pageStagesForScene(const PageCheck &check, const QString &project,
+                              const QTemporaryDir &compiled);
+
+// `check --page` without a scene (or a page that could not be run): the
+// page's own findings printed, as text or JSON; the exit code.
+int reportPageAlone(const PageCheck &check, bool json, const QString &note);
+
+// The JSON "page" object: {file, webgl, frame, animated, canvas,
+// milliseconds, steps, served, refused, errors, console_errors, fidelity,
+// javascript, own_scene}; and the same as text lines.
+QJsonObject pageJson(const PageCheck &check);
+QStringList pageText(const PageCheck &check);
+
+} // namespace phonglab::cli
