@@ -13,6 +13,8 @@
 #include "render/OffscreenRenderer.h"
 #include "render/page/PageReplay.h"
 
+#include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTest>
 
 using namespace phonglab;
@@ -42,6 +44,12 @@ private slots:
     void aChangedUniformIsNotFaithful();
     void normalsAndNormalMatrixAreNamed_data();
     void normalsAndNormalMatrixAreNamed();
+    void webgl2IndexedDrawnOnce();
+    void threeJsShaderMaterial();
+    void aPageThatNeverDraws();
+    void anEndlessLoopEndsAtTheTimeLimit();
+    void networkAttemptsAreRefusedAndListed();
+    void timersAndClockAreDeterministic();
 
 private:
     PageFidelity replayed(const PageCapture &capture);
@@ -172,6 +180,130 @@ void TestPageRun::normalsAndNormalMatrixAreNamed()
     QCOMPARE(matrices[0].subject, QStringLiteral("normalMatrix"));
     QVERIFY2(matrices[0].where.startsWith(QLatin1String("phong.js:")),
              qPrintable(matrices[0].where));
+}
+
+// webgl2fundamentals' style: WebGL 2, a vertex array and an index buffer,
+// one draw once fetch() has brought the mesh, no animation (frame 0).
+void TestPageRun::webgl2IndexedDrawnOnce()
+{
+    const Result<PageRunOutput> run = runPage(pageOptions(QStringLiteral("webgl2fundamentals")));
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const PageCapture capture = readPageCapture(run->capture).value();
+    QCOMPARE(capture.webgl, 2);
+    QCOMPARE(capture.frame, 0);
+    QVERIFY(!capture.animated);
+    QCOMPARE(capture.draws().size(), std::size_t(1));
+    QVERIFY(capture.draws().front()->indexed());
+    const PageFidelity fidelity = replayed(capture);
+    qInfo("webgl2fundamentals: %lld ms, largest difference %d outside edges", run->milliseconds,
+          fidelity.largestOutsideEdges);
+    QVERIFY(fidelity.faithful());
+    const std::vector<JavaScriptFinding> normals = checkPageNormals(capture, m_courseMeshes);
+    QCOMPARE(normals[1].subject, QStringLiteral("tree.obj"));
+    QCOMPARE(normals[1].key, QStringLiteral("normals-exact"));
+    const std::vector<JavaScriptFinding> matrices = checkPageMatrices(capture);
+    QCOMPARE(matrices.size(), std::size_t(1));
+    QCOMPARE(matrices[0].subject, QStringLiteral("u_worldInverseTranspose"));
+    QCOMPARE(matrices[0].key, QStringLiteral("normal-matrix-right"));
+}
+
+// three.js r111 (Debian's libjs-three) from its CDN address, answered from
+// the library folder by the file's name; the program as three.js compiled
+// it, its prefix and the material's defines in front.
+void TestPageRun::threeJsShaderMaterial()
+{
+    const QString three = QStringLiteral("/usr/share/javascript/three/build");
+    if (!QFileInfo::exists(three + QStringLiteral("/three.min.js")))
+        QSKIP("libjs-three is not installed (scripts/setup.sh installs it)");
+    PageRunOptions options = pageOptions(QStringLiteral("threejs"));
+    options.folders.libraries.push_back(three);
+    const Result<PageRunOutput> run = runPage(options);
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const PageCapture capture = readPageCapture(run->capture).value();
+    QVERIFY2(capture.refused.isEmpty(), qPrintable(capture.refused.join(", ")));
+    QVERIFY2(capture.served.filter(QStringLiteral("three.min.js")).size() == 1,
+             qPrintable(capture.served.join(", ")));
+    QCOMPARE(capture.draws().size(), std::size_t(1));
+    const CapturedProgram *program = capture.program(capture.draws().front()->program);
+    QVERIFY(program);
+    QVERIFY(program->fragment.contains(QLatin1String("#define NUM_LIGHTS 1")));
+    QVERIFY(program->vertex.contains(QLatin1String("uniform mat4 modelViewMatrix")));
+    const PageFidelity fidelity = replayed(capture);
+    qInfo("three.js: %lld ms, largest difference %d outside edges", run->milliseconds,
+          fidelity.largestOutsideEdges);
+    QVERIFY(fidelity.faithful());
+    const std::vector<JavaScriptFinding> matrices = checkPageMatrices(capture);
+    QVERIFY(!matrices.empty());
+    QCOMPARE(matrices[0].key, QStringLiteral("normal-matrix-right"));
+}
+
+void TestPageRun::aPageThatNeverDraws()
+{
+    const Result<PageRunOutput> run = runPage(pageOptions(QStringLiteral("never-draws")));
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const PageCapture capture = readPageCapture(run->capture).value();
+    QCOMPARE(capture.webgl, 1);
+    QVERIFY(capture.draws().empty());
+    QVERIFY(capture.pixels.isEmpty());
+    m_offscreen.makeCurrent();
+    QVERIFY(!replayCapture(capture).ok());
+}
+
+// A script that never ends holds neither the run nor the caller past the
+// time limit.
+void TestPageRun::anEndlessLoopEndsAtTheTimeLimit()
+{
+    PageRunOptions options = pageOptions(QStringLiteral("endless-loop"));
+    options.timeLimitMs = 4000;
+    QElapsedTimer clock;
+    clock.start();
+    const Result<PageRunOutput> run = runPage(options);
+    qInfo("endless loop stopped after %lld ms: %s", clock.elapsed(), qPrintable(run.error()));
+    QVERIFY(!run.ok());
+    QVERIFY(run.error().contains(QLatin1String("did not finish within 4 s")));
+    QVERIFY(clock.elapsed() < 6000);
+}
+
+// Every kind of network access gets nothing and is listed; a path that
+// climbs out of the project is refused; the page still draws.
+void TestPageRun::networkAttemptsAreRefusedAndListed()
+{
+    const Result<PageRunOutput> run = runPage(pageOptions(QStringLiteral("network")));
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const PageCapture capture = readPageCapture(run->capture).value();
+    const QString refused = capture.refused.join(QLatin1Char('\n'));
+    qInfo("refused:\n%s", qPrintable(refused));
+    for (const char *expected :
+         {"request https://scripts.example.com/analytics.js",
+          "request http://styles.example.com/theme.css",
+          "request http://images.example.com/logo.png", "request https://api.example.com/fetch",
+          "request http://api.example.com/xhr", "WebSocket wss://socket.example.com/",
+          "EventSource https://events.example.com/", "sendBeacon https://beacon.example.com/"})
+        QVERIFY2(refused.contains(QLatin1String(expected)), expected);
+    QCOMPARE(capture.served, QStringList{QStringLiteral("index.html")});
+    QVERIFY(!capture.pixels.isEmpty());
+    QCOMPARE(int(quint8(capture.pixels[1])), 128); // the green it cleared to
+}
+
+// Two runs of a page animated by setInterval, coloured by Date.now() and
+// Math.random(): the same frame, byte for byte. It clears only the colour
+// buffer; its triangle shows in frame 5 only because the browser's clear
+// of depth after each frame is kept.
+void TestPageRun::timersAndClockAreDeterministic()
+{
+    const Result<PageRunOutput> first = runPage(pageOptions(QStringLiteral("timers")));
+    const Result<PageRunOutput> second = runPage(pageOptions(QStringLiteral("timers")));
+    QVERIFY2(first.ok() && second.ok(), qPrintable(first.error() + second.error()));
+    const PageCapture a = readPageCapture(first->capture).value();
+    const PageCapture b = readPageCapture(second->capture).value();
+    QCOMPARE(a.frame, 5);
+    QVERIFY(a.animated);
+    QCOMPARE(a.pixels, b.pixels);
+    QCOMPARE(a.draws().front()->uniforms.front().values,
+             b.draws().front()->uniforms.front().values);
+    const qsizetype centre = (qsizetype(32) * 96 + 48) * 4;
+    QVERIFY(quint8(a.pixels[centre + 2]) > 100); // blue 0.5: the triangle, not the clear colour
+    QVERIFY(replayed(a).faithful());
 }
 
 QTEST_MAIN(TestPageRun)

@@ -8,8 +8,14 @@ namespace phonglab {
 
 namespace {
 
-// `relative` inside `folder`, as a canonical path that stays inside it.
-QString fileInside(const QString &folder, const QString &relative)
+// How far a symbolic link may lead: a student's project is untrusted (a
+// link in a zip may point anywhere), a teacher's library folder is not
+// (Debian's libjs-* packages are links into /usr/share/nodejs).
+enum class Links { StayInside, MayLeave };
+
+// `relative` inside `folder`, as a canonical path that stays inside it
+// (or, for a library, whose name stays inside it).
+QString fileInside(const QString &folder, const QString &relative, Links links = Links::StayInside)
 {
     if (folder.isEmpty() || relative.isEmpty())
         return {};
@@ -20,7 +26,9 @@ QString fileInside(const QString &folder, const QString &relative)
     const QString path = file.canonicalFilePath(); // symbolic links followed
     if (path.isEmpty() || !file.isFile())
         return {};
-    if (!path.startsWith(root + QLatin1Char('/')))
+    const QString named = QDir::cleanPath(file.absoluteFilePath());
+    const QString inside = links == Links::StayInside ? path : named;
+    if (!inside.startsWith(root + QLatin1Char('/')))
         return {};
     return path;
 }
@@ -32,7 +40,8 @@ QString fileInLibrary(const QString &library, const QString &relative)
 {
     QStringList parts = relative.split(QLatin1Char('/'), Qt::SkipEmptyParts);
     while (!parts.isEmpty()) {
-        if (const QString path = fileInside(library, parts.join(QLatin1Char('/'))); !path.isEmpty())
+        if (const QString path =
+                fileInside(library, parts.join(QLatin1Char('/')), Links::MayLeave); !path.isEmpty())
             return path;
         parts.removeFirst();
     }
@@ -106,7 +115,7 @@ ServedFile serveRequest(const PageFolders &folders, const QString &url)
         if (QFileInfo(local).isFile())
             return found(QFileInfo(local).canonicalFilePath());
         const QString rest = QUrl(url.mid(prefix.size())).path(QUrl::FullyDecoded);
-        if (const QString file = fileInside(local, rest); !file.isEmpty())
+        if (const QString file = fileInside(local, rest, Links::MayLeave); !file.isEmpty())
             return found(file);
     }
     // A CDN's copy of a course library the teacher holds: the same file name.
