@@ -1,0 +1,150 @@
+// What a student's page is given while it runs (core/page/PageServer) and
+// what a capture file may hold before PhongLab draws it again
+// (core/page/PageCapture, core/page/CaptureBounds). Context-free.
+#include "core/page/CaptureBounds.h"
+#include "core/page/PageCapture.h"
+#include "core/page/PageServer.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace phonglab;
+
+class TestPageServer : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void projectThenLibraries();
+    void nothingOutsideTheFolders();
+    void outsideAddresses();
+    void captureErrorsAreLocated();
+    void drawsPastTheirBuffersAreRefused();
+
+private:
+    void write(const QString &relative, const QByteArray &bytes = "x");
+
+    QTemporaryDir m_dir;
+    PageFolders m_folders;
+};
+
+void TestPageServer::write(const QString &relative, const QByteArray &bytes)
+{
+    const QString path = m_dir.filePath(relative);
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(bytes);
+}
+
+void TestPageServer::initTestCase()
+{
+    write(QStringLiteral("project/index.html"));
+    write(QStringLiteral("project/js/main.js"));
+    write(QStringLiteral("course/Common/initShaders.js"));
+    write(QStringLiteral("course/gl-matrix-min.js"));
+    write(QStringLiteral("secret.txt"));
+    write(QStringLiteral("shared/lib.js"));
+    QVERIFY(QFile::link(m_dir.filePath(QStringLiteral("secret.txt")),
+                        m_dir.filePath(QStringLiteral("project/link.txt"))));
+    QVERIFY(QFile::link(m_dir.filePath(QStringLiteral("shared/lib.js")),
+                        m_dir.filePath(QStringLiteral("course/lib.js"))));
+    m_folders.project = m_dir.filePath(QStringLiteral("project"));
+    m_folders.libraries = {m_dir.filePath(QStringLiteral("course"))};
+    m_folders.urlMap = {{QStringLiteral("https://cdn.example.org/three/"),
+                         m_dir.filePath(QStringLiteral("course"))}};
+}
+
+void TestPageServer::projectThenLibraries()
+{
+    const auto served = [&](const char *path) {
+        return serveRequest(m_folders, kPageOrigin + QLatin1String(path)).path;
+    };
+    QVERIFY(served("/index.html").endsWith(QLatin1String("project/index.html")));
+    QVERIFY(served("/js/main.js").endsWith(QLatin1String("project/js/main.js")));
+    // ../Common/initShaders.js from the page is /Common/initShaders.js
+    QVERIFY(
+        served("/Common/initShaders.js").endsWith(QLatin1String("course/Common/initShaders.js")));
+    // A library's link may lead out of it (Debian's libjs-* are links).
+    QVERIFY(served("/lib.js").endsWith(QLatin1String("shared/lib.js")));
+    QCOMPARE(mimeTypeOfFile(QStringLiteral("a.js")), QStringLiteral("text/javascript"));
+    QCOMPARE(mimeTypeOfFile(QStringLiteral("a.OBJ")), QStringLiteral("text/plain"));
+}
+
+void TestPageServer::nothingOutsideTheFolders()
+{
+    for (const char *path : {"/../secret.txt", "/%2e%2e/secret.txt", "/link.txt", "/missing.js",
+                             "/js/../../secret.txt"}) {
+        const ServedFile f = serveRequest(m_folders, kPageOrigin + QLatin1String(path));
+        QVERIFY2(!f.served(), path);
+        QVERIFY(!f.refusal.isEmpty());
+    }
+}
+
+void TestPageServer::outsideAddresses()
+{
+    QVERIFY(!serveRequest(m_folders, QStringLiteral("https://example.com/data.json")).served());
+    QVERIFY(!serveRequest(m_folders, QStringLiteral("ws://example.com/")).served());
+    // A CDN's copy of a library the teacher holds: by its file name.
+    QVERIFY(
+        serveRequest(m_folders,
+                     QStringLiteral("https://cdnjs.example.net/gl-matrix/2.8.1/gl-matrix-min.js"))
+            .path.endsWith(QLatin1String("course/gl-matrix-min.js")));
+    QVERIFY(serveRequest(m_folders,
+                         QStringLiteral("https://cdn.example.org/three/Common/initShaders.js"))
+                .path.endsWith(QLatin1String("course/Common/initShaders.js")));
+    QVERIFY(!serveRequest(m_folders, QStringLiteral("https://cdn.example.org/three/../secret.txt"))
+                 .served());
+}
+
+void TestPageServer::captureErrorsAreLocated()
+{
+    QVERIFY(readPageCapture("{").error().contains(QLatin1String("not JSON at byte")));
+    QVERIFY(readPageCapture("{\"format\": 7}").error().contains(QLatin1String("format")));
+    const Result<PageCapture> wrong =
+        readPageCapture(R"({"format": 1, "canvas": {"width": 4, "height": 4}, "pixels": "AAAA"})");
+    QVERIFY(!wrong.ok());
+    QVERIFY(wrong.error().contains(QLatin1String("\"pixels\"")));
+    QVERIFY(readPageCapture(R"({"format": 1})").ok()); // nothing drawn is a capture too
+}
+
+// A capture is a file anyone can hand PhongLab: a draw that would read
+// past its buffers never reaches the driver.
+void TestPageServer::drawsPastTheirBuffersAreRefused()
+{
+    PageCapture capture;
+    capture.buffers[QStringLiteral("1:1")] = {QByteArray(3 * 3 * 4, '\0'), {}};
+    capture.buffers[QStringLiteral("2:1")] = {QByteArray("\x00\x00\x01\x00\x07\x00", 6), {}};
+    CapturedOp draw;
+    CapturedAttribute position;
+    position.name = QStringLiteral("p");
+    position.enabled = true;
+    position.buffer = QStringLiteral("1:1");
+    position.size = 3;
+    position.component = 0x1406;
+    draw.attributes = {position};
+    draw.count = 3;
+    QCOMPARE(drawOutOfBounds(capture, draw), QString());
+    draw.count = 4;
+    QVERIFY(drawOutOfBounds(capture, draw).contains(QLatin1String("reads 48 bytes")));
+    draw.count = 3;
+    draw.indices = QStringLiteral("2:1");
+    draw.indexType = 0x1403; // UNSIGNED_SHORT: 0, 1, 7
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.count = 2; // 0, 1
+    QCOMPARE(drawOutOfBounds(capture, draw), QString());
+    draw.offset = 1; // not a multiple of the index size
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.offset = 0;
+    draw.count = 9; // more indices than the buffer holds
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.indices = QStringLiteral("3:1"); // no such buffer
+    draw.count = 1;
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+}
+
+QTEST_GUILESS_MAIN(TestPageServer)
+#include "tst_pageserver.moc"
