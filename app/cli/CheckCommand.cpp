@@ -5,9 +5,9 @@
 #include "GradedChild.h"
 #include "SceneOverrides.h"
 #include "SceneStages.h"
-#include "page/PageCheck.h"
 #include "core/project/ProjectPrograms.h"
 #include "core/scene/SceneJson.h"
+#include "page/PageCheck.h"
 #include "render/CheckReportOutput.h"
 #include "render/QtImages.h"
 
@@ -52,23 +52,23 @@ struct CheckArgs {
 
 const QString &synopsis()
 {
-    static const QString text =
-        CheckCommandWords::tr("usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
-                              "[--shading NAME] [--size WxH]\n"
-                              "                      [--project PATH [--program NAME]]\n"
-                              "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
-                              "[--equation slide|guarded]\n"
-                              "                      [--define NAME=VALUE ...] "
-                              "[--precision highp|as-written]\n"
-                              "                      [--json] [--diff OUT.png]\n"
-                              "       phonglab check [SCENE.json] --page PROJECT [--page-file FILE] "
-                              "[--library DIR ...]\n"
-                              "                      [--url-map PREFIX=PATH ...] [--page-step STEP "
-                              "...] [--page-frame N]\n"
-                              "                      [--page-timeout S] [--meshes DIR] "
-                              "[--page-out DIR] [--json]\n"
-                              "       phonglab check [SCENE.json] --capture capture.json [--meshes "
-                              "DIR] [--json]");
+    static const QString text = CheckCommandWords::tr(
+        "usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] "
+        "[--shading NAME] [--size WxH]\n"
+        "                      [--project PATH [--program NAME]]\n"
+        "                      [--tolerance STEPS] [--bind NAME=MEANING ...] "
+        "[--equation slide|guarded]\n"
+        "                      [--define NAME=VALUE ...] "
+        "[--precision highp|as-written]\n"
+        "                      [--json] [--diff OUT.png]\n"
+        "       phonglab check [SCENE.json] --page PROJECT [--page-file FILE] "
+        "[--library DIR ...]\n"
+        "                      [--url-map PREFIX=PATH ...] [--page-step STEP "
+        "...] [--page-frame N]\n"
+        "                      [--page-timeout S] [--meshes DIR] "
+        "[--page-out DIR] [--json]\n"
+        "       phonglab check [SCENE.json] --capture capture.json [--meshes "
+        "DIR] [--json]");
     return text;
 }
 
@@ -331,7 +331,7 @@ int check(CheckArgs args)
             printError(unwritten);
         if (page->ok() && !args.scenePath.isEmpty()) {
             const PageStages stages =
-                pageStagesForScene(*page, args.page.run.folders.project, compiled);
+                pageStagesForScene(*page, args.page.run.folders.project, compiled.path());
             pageNote = stages.note;
             args.vertexPath = stages.vertexPath;
             args.fragmentPath = stages.fragmentPath;

@@ -1,6 +1,7 @@
 #pragma once
 #include <QString>
 #include <QStringList>
+#include <map>
 #include <vector>
 
 namespace phonglab::cli {
@@ -30,6 +31,9 @@ struct Submission {
     // participant number; empty elsewhere.
     QString student;
     QString participant;
+    // grade --pages: the values the page gave the uniforms no meaning binds
+    // (a mode switch), handed to its checks as --bind NAME=VALUE.
+    std::map<QString, std::vector<double>> pageConstants;
 };
 
 struct ClassFolder {

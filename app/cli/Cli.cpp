@@ -26,6 +26,16 @@ struct CliWords {
 
 namespace {
 
+// grade's parent draws nothing, but with --pages it draws each page's
+// captured frame again (cli/page/GradePages): that takes OpenGL.
+std::unique_ptr<QCoreApplication> makeGradeApplication(int &argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (std::string_view(argv[i]) == "--pages")
+            return makeGuiApplication(argc, argv);
+    return makeCoreApplication(argc, argv);
+}
+
 constexpr Subcommand kSubcommands[] = {
     {"render", QT_TRANSLATE_NOOP("phonglab::cli::Cli", "render a scene offscreen into a PNG"),
      runRender, makeGuiApplication},
@@ -38,7 +48,7 @@ constexpr Subcommand kSubcommands[] = {
      QT_TRANSLATE_NOOP(
          "phonglab::cli::Cli",
          "check a class folder of submissions, each in a process of its own; a report"),
-     runGrade},
+     runGrade, makeGradeApplication},
     {"mesh-info",
      QT_TRANSLATE_NOOP("phonglab::cli::Cli",
                        "load a mesh and report its size, normals, bounds and warnings"),

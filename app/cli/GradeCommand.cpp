@@ -1,5 +1,7 @@
 #include "GradeCommand.h"
 
+#include "page/GradePages.h"
+
 #include "ClassStaging.h"
 #include "CliCommon.h"
 #include "CoursePlatformOutputs.h"
@@ -46,6 +48,7 @@ struct GradeArgs {
     GradePoints points;  // --points, for moodle-grades.csv
     bool resume = false; // --resume: the rows a stopped run finished are kept
     QString program;     // --program: only this program of each WebGL project
+    PageRequest pages;   // --pages: each submission's page run in the browser
 };
 
 const QString &synopsis()
@@ -57,7 +60,10 @@ const QString &synopsis()
         "[--equation slide|guarded]\n"
         "                      [--define NAME=VALUE ...] [--precision highp|as-written]\n"
         "                      [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]\n"
-        "                      [--program NAME]");
+        "                      [--program NAME]\n"
+        "                      [--pages [--library DIR ...] [--url-map PREFIX=PATH ...] "
+        "[--page-step STEP ...]\n"
+        "                       [--page-frame N] [--page-timeout S] [--meshes DIR]]");
     return text;
 }
 
@@ -100,7 +106,8 @@ QString helpText(const StageOptions &stage, const SceneOverrideOptions &override
               "Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,\n"
               "bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, "
               "program,\n"
-              "student, participant), DIR/grades.json (the check's JSON per row), DIR/report.html\n"
+              "student, participant, page_fidelity, page_javascript, page_error), DIR/grades.json\n"
+              "(the check's JSON per row), DIR/report.html "
               "and its DIR/images/, and a table on stdout. From Moodle also DIR/moodle-grades.csv\n"
               "(its offline grading worksheet) and DIR/feedback.zip (a feedback.html per "
               "student).\n"
@@ -110,7 +117,13 @@ QString helpText(const StageOptions &stage, const SceneOverrideOptions &override
               "that does not load, no submissions, DIR not writable), 2 wrong arguments.")
               .arg(QString::number(QThread::idealThreadCount()), QString::number(kDefaultTimeoutS),
                    QString::number(kDefaultMemoryMiB), helpLine(stage.size),
-                   QString::number(kDefaultCheckToleranceSteps), helpLines(overrides.all()));
+                   QString::number(kDefaultCheckToleranceSteps), helpLines(overrides.all()))
+        + GradeCommandWords::tr("\n\nWith --pages each submission's page runs in headless "
+                                "Chromium, as check --page runs it,\n"
+                                "once per project (its capture and frames in DIR/pages/NAME/); "
+                                "the course scenes are then\n"
+                                "checked with the program and the values the page used.\n")
+        + helpLines(PageOptions(PageOptions::Use::Grade).all());
 }
 
 std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
@@ -132,6 +145,7 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     const QCommandLineOption points(QStringLiteral("points"), QString(), QStringLiteral("points"));
     const QCommandLineOption resume(QStringLiteral("resume"), QString());
     const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
+    const PageOptions pages(PageOptions::Use::Grade);
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
 
     const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
@@ -140,8 +154,9 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
                         {help,
                          QList<QCommandLineOption>{scene, out, jobs, timeout, memory, stage.size,
                                                    tolerance, equation, points, resume, program}
-                             + overrides.all(),
-                         QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()},
+                             + overrides.all() + pages.all(),
+                         QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()
+                             + PageOptions::repeatable()},
                         synopsis(), helpText(stage, overrides)))
         return *exit;
     const QStringList positional = parser.positionalArguments();
@@ -159,7 +174,8 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     if (settings.outFolder.isEmpty())
         return usage(GradeCommandWords::tr("--out: missing the folder"));
     for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &settings.size),
-                                 readSceneOverrides(parser, overrides, &settings.overrides)})
+                                 readSceneOverrides(parser, overrides, &settings.overrides),
+                                 readPageOptions(parser, pages, &args.pages)})
         if (!wrong.isEmpty())
             return usage(wrong);
     if (parser.isSet(equation)) {
@@ -351,6 +367,8 @@ int grade(const GradeArgs &args)
         printError(ready.error());
         return kExitFailure;
     }
+    if (args.pages.wanted)
+        runSubmissionPages(results, args.pages, args.jobs);
     const QString executable = importExecutable();
     if (executable.isEmpty()) {
         printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "

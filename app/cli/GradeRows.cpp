@@ -91,4 +91,10 @@ QString shownSubmissionName(const Submission &submission)
                                         : QStringLiteral("%1 · %2").arg(who, submission.program);
 }
 
+const SubmissionPage *GradeResults::pageOf(const GradeRow &row) const
+{
+    const std::size_t i = std::size_t(row.submission);
+    return i < pages.size() && pages[i] ? &*pages[i] : nullptr;
+}
+
 } // namespace phonglab::cli

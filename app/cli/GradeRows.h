@@ -6,8 +6,10 @@
 #include "core/scene/Scene.h"
 #include "render/CheckReportOutput.h"
 
+#include <QJsonObject>
 #include <QSize>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 #include <optional>
@@ -59,11 +61,29 @@ struct GradeRow {
     QString heatmapImage;
 };
 
+// What grade --pages found on a submission's page (cli/page/GradePages):
+// the same for each of its rows.
+struct SubmissionPage {
+    QString error;                        // the page could not be run
+    std::optional<int> largestDifference; // fidelity: outside edges, 8-bit steps
+    bool faithful = false;
+    QStringList mistakes; // the JavaScript half's, "KEY SUBJECT" ("normals-face cloud.obj")
+    QJsonObject json;     // check --json's "page"
+    // Relative to the out folder; empty where there is none.
+    QString browserImage;
+    QString phonglabImage;
+    QString differenceImage;
+};
+
 struct GradeResults {
     GradeSettings settings;
     std::vector<Submission> submissions;
     std::vector<GradeScene> scenes;
     std::vector<GradeRow> rows; // by submission, then scene: the same order on every run
+    // By submission; empty without --pages, nullopt where a submission has no page.
+    std::vector<std::optional<SubmissionPage>> pages;
+
+    const SubmissionPage *pageOf(const GradeRow &row) const;
 };
 
 // The row's first finding, or nullptr (pass, error, unexplained fail).

@@ -161,6 +161,17 @@ QStringList GradeRun::childArguments(const GradeRow &row) const
         args << QStringLiteral("--vertex") << s.vertex;
     if (!s.fragment.isEmpty())
         args << QStringLiteral("--fragment") << s.fragment;
+    // The page's values, where the teacher's --bind says nothing of them.
+    for (const auto &[name, value] : s.pageConstants) {
+        if (m_results.settings.overrides.bindings.count(name)
+            || m_results.settings.overrides.constants.count(name))
+            continue;
+        QStringList numbers;
+        for (double v : value)
+            numbers << QString::number(v, 'g', 17);
+        args << QStringLiteral("--bind")
+             << name + QLatin1Char('=') + numbers.join(QLatin1Char(','));
+    }
     return args + m_results.settings.overrides.arguments();
 }
 

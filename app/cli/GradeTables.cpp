@@ -83,27 +83,43 @@ QString bindingsCell(const GradeRow &row)
     return bindingsText(row.outcome.bindings).replace(QStringLiteral(", "), QStringLiteral(" "));
 }
 
+// grade --pages: the fidelity's largest difference, the JavaScript half's
+// mistakes ("ok" where it has none), and why the page could not be run.
+QStringList pageCells(const SubmissionPage *page)
+{
+    if (!page)
+        return {QString(), QString(), QString()};
+    if (!page->error.isEmpty())
+        return {QString(), QString(), textCell(page->error)};
+    return {page->largestDifference ? QString::number(*page->largestDifference) : QString(),
+            page->mistakes.isEmpty() ? QStringLiteral("ok")
+                                     : textCell(page->mistakes.join(QLatin1Char(' '))),
+            QString()};
+}
+
 QStringList csvRecord(const GradeResults &results, const GradeRow &row)
 {
     const CheckReport &r = row.outcome.report;
     const RowPlace place = rowPlace(row);
-    return {textCell(results.submissions[std::size_t(row.submission)].name),
-            textCell(results.scenes[std::size_t(row.scene)].label),
-            gradeVerdictName(row.verdict),
-            psnrText(row),
-            checked(row) ? QString::number(r.comparison.maxError) : QString(),
-            checked(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
-            rowMistakeKey(row),
-            alsoText(row),
-            textCell(place.file),
-            place.file.isEmpty() || place.line <= 0 ? QString() : QString::number(place.line),
-            checked(row) ? phongEquationKey(r.equation) : QString(),
-            textCell(bindingsCell(row)),
-            QString::number(row.seconds, 'f', 2),
-            rowMistakeKeys(row),
-            textCell(results.submissions[std::size_t(row.submission)].program),
-            textCell(results.submissions[std::size_t(row.submission)].student),
-            textCell(results.submissions[std::size_t(row.submission)].participant)};
+    return QStringList{textCell(results.submissions[std::size_t(row.submission)].name),
+                       textCell(results.scenes[std::size_t(row.scene)].label),
+                       gradeVerdictName(row.verdict),
+                       psnrText(row),
+                       checked(row) ? QString::number(r.comparison.maxError) : QString(),
+                       checked(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
+                       rowMistakeKey(row),
+                       alsoText(row),
+                       textCell(place.file),
+                       place.file.isEmpty() || place.line <= 0 ? QString()
+                                                               : QString::number(place.line),
+                       checked(row) ? phongEquationKey(r.equation) : QString(),
+                       textCell(bindingsCell(row)),
+                       QString::number(row.seconds, 'f', 2),
+                       rowMistakeKeys(row),
+                       textCell(results.submissions[std::size_t(row.submission)].program),
+                       textCell(results.submissions[std::size_t(row.submission)].student),
+                       textCell(results.submissions[std::size_t(row.submission)].participant)}
+    + pageCells(results.pageOf(row));
 }
 
 } // namespace
@@ -134,6 +150,8 @@ QJsonObject gradesJson(const GradeResults &results)
         o.insert(QStringLiteral("participant"), submission.participant);
         o.insert(QStringLiteral("scene"), results.scenes[std::size_t(row.scene)].label);
         o.insert(QStringLiteral("seconds"), row.seconds);
+        if (const SubmissionPage *page = results.pageOf(row))
+            o.insert(QStringLiteral("page"), page->json);
         rows.append(o);
     }
     return {{QStringLiteral("scenes"), scenes}, {QStringLiteral("rows"), rows}};

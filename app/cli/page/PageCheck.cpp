@@ -2,8 +2,8 @@
 
 #include "cli/CliCommon.h"
 #include "core/page/PageMatrices.h"
-#include "core/page/PageProgram.h"
 #include "core/page/PageNormals.h"
+#include "core/page/PageProgram.h"
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/GlFormat.h"
@@ -65,7 +65,8 @@ void replay(PageCheck *check)
     }
     check->notReplayed = frame->notReplayed;
     check->replayPixels = frame->pixels;
-    check->fidelity = comparePageFrames(check->capture.pixels, frame->pixels, check->capture.canvas);
+    check->fidelity =
+        comparePageFrames(check->capture.pixels, frame->pixels, check->capture.canvas);
 }
 
 Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *milliseconds)
@@ -110,10 +111,11 @@ QImage differenceImage(const PageCheck &check)
             const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
             const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
                                     std::abs(qBlue(p) - qBlue(q))});
-            out.setPixel(x, y, d == 0   ? qRgb(0, 60, 0)
-                               : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
-                               : d < 8  ? qRgb(230, 220, 0)
-                                        : qRgb(230, 30, 30));
+            out.setPixel(x, y,
+                         d == 0                             ? qRgb(0, 60, 0)
+                             : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
+                             : d < 8                        ? qRgb(230, 220, 0)
+                                                            : qRgb(230, 30, 30));
         }
     return out;
 }
@@ -146,36 +148,52 @@ bool PageCheck::javascriptMistakes() const
                        [](const JavaScriptFinding &f) { return f.mistake; });
 }
 
-PageCheck checkPage(const PageRequest &request)
+PageCapturing capturePage(const PageRequest &request)
+{
+    PageCapturing out;
+    Result<QByteArray> json = obtainCapture(request, &out.milliseconds);
+    if (json)
+        out.json = std::move(*json);
+    else
+        out.error = json.error();
+    return out;
+}
+
+PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &request)
 {
     PageCheck check;
-    const Result<QByteArray> json = obtainCapture(request, &check.milliseconds);
-    if (!json) {
-        check.error = json.error();
+    check.milliseconds = captured.milliseconds;
+    if (!captured.error.isEmpty()) {
+        check.error = captured.error;
         return check;
     }
-    Result<PageCapture> capture = readPageCapture(*json);
+    Result<PageCapture> capture = readPageCapture(captured.json);
     if (!capture) {
         check.error = request.captureFile.isEmpty()
             ? capture.error()
             : QStringLiteral("%1: %2").arg(request.captureFile, capture.error());
         return check;
     }
-    check.captureJson = *json;
+    check.captureJson = captured.json;
     check.capture = std::move(*capture);
     if (check.capture.pixels.isEmpty())
         check.fidelityError = PageCheckWords::tr("the page drew nothing to its canvas");
     else
         replay(&check);
-    check.javascript = checkPageNormals(check.capture,
-                                        courseMeshes(request.meshesFolder, &check.meshErrors));
+    check.javascript =
+        checkPageNormals(check.capture, courseMeshes(request.meshesFolder, &check.meshErrors));
     const std::vector<JavaScriptFinding> matrices = checkPageMatrices(check.capture);
     check.javascript.insert(check.javascript.end(), matrices.begin(), matrices.end());
     return check;
 }
 
+PageCheck checkPage(const PageRequest &request)
+{
+    return checkCapturedPage(capturePage(request), request);
+}
+
 PageStages pageStagesForScene(const PageCheck &check, const QString &project,
-                              const QTemporaryDir &compiled)
+                              const QString &compiledFolder)
 {
     PageStages stages;
     const std::optional<PageProgram> lit = litPageProgram(check.capture);
@@ -189,7 +207,7 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
         const QString locator = stageLocatorInProject(files, stage, text);
         if (!locator.isEmpty())
             return locator;
-        const QString path = compiled.filePath(QString::fromLatin1(name));
+        const QString path = QDir(compiledFolder).filePath(QString::fromLatin1(name));
         QSaveFile file(path);
         if (file.open(QIODevice::WriteOnly) && file.write(text.toUtf8()) >= 0)
             file.commit();
@@ -218,7 +236,8 @@ int reportPageAlone(const PageCheck &check, bool json, const QString &note)
     } else {
         if (!check.ok())
             printError(check.error);
-        for (const QString &line : pageText(check) + (note.isEmpty() ? QStringList() : QStringList{note}))
+        for (const QString &line :
+             pageText(check) + (note.isEmpty() ? QStringList() : QStringList{note}))
             printLine(line);
         printLine(PageCheckWords::tr("verdict: %1").arg(verdict));
     }
@@ -289,7 +308,9 @@ QStringList pageText(const PageCheck &check)
                  .arg(c.frame)
                  .arg(c.canvas.width())
                  .arg(c.canvas.height())
-                 .arg(check.milliseconds > 0 ? QStringLiteral(" (%1 s)").arg(check.milliseconds / 1000.0, 0, 'f', 1) : QString());
+                 .arg(check.milliseconds > 0
+                          ? QStringLiteral(" (%1 s)").arg(check.milliseconds / 1000.0, 0, 'f', 1)
+                          : QString());
     for (const PageStep &s : c.steps)
         if (!s.problem.isEmpty())
             lines << PageCheckWords::tr("page step '%1': %2").arg(s.step, s.problem);
@@ -313,8 +334,9 @@ QStringList pageText(const PageCheck &check)
         lines << PageCheckWords::tr("not drawn again: %1").arg(n);
     for (const JavaScriptFinding &f : check.javascript)
         lines << (f.where.isEmpty() ? QString() : f.where + QStringLiteral(": "))
-                     + (f.mistake ? PageCheckWords::tr("javascript: %1") : PageCheckWords::tr("javascript ok: %1"))
-                           .arg(f.message);
+                + (f.mistake ? PageCheckWords::tr("javascript: %1")
+                             : PageCheckWords::tr("javascript ok: %1"))
+                      .arg(f.message);
     for (const QString &e : check.meshErrors)
         lines << PageCheckWords::tr("course mesh not read: %1").arg(e);
     return lines;

@@ -7,7 +7,6 @@
 #include <QByteArray>
 #include <QJsonObject>
 #include <QStringList>
-#include <QTemporaryDir>
 
 #include <map>
 #include <optional>
@@ -41,6 +40,17 @@ struct PageCheck {
 
 PageCheck checkPage(const PageRequest &request);
 
+// The same in two halves: the capture (the browser run, or the file read;
+// safe on any thread, so that grade runs several pages at once), then its
+// checks (on the thread that may make GL contexts).
+struct PageCapturing {
+    QByteArray json;
+    qint64 milliseconds = 0;
+    QString error;
+};
+PageCapturing capturePage(const PageRequest &request);
+PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &request);
+
 // --page-out: capture.json, browser.png, phonglab.png and difference.png
 // (green where equal, yellow to red where not, blue the edges left out).
 QString writePageOutputs(const PageCheck &check, const QString &folder);
@@ -48,7 +58,7 @@ QString writePageOutputs(const PageCheck &check, const QString &folder);
 // For a check of the course scene with the page's program
 // (core/page/PageProgram): its stages as compiled, on the student's own
 // lines ("FILE#KEY") where the page compiled them unchanged, else files in
-// `compiled`; the values the page gave the uniforms no meaning binds (a
+// `compiledFolder` (page.vert, page.frag); the values the page gave the uniforms no meaning binds (a
 // mode switch: no --bind mode=1 needed). Empty paths, and a note saying
 // why, when the page drew no program that lights.
 struct PageStages {
@@ -58,7 +68,7 @@ struct PageStages {
     QString note;
 };
 PageStages pageStagesForScene(const PageCheck &check, const QString &project,
-                              const QTemporaryDir &compiled);
+                              const QString &compiledFolder);
 
 // `check --page` without a scene (or a page that could not be run): the
 // page's own findings printed, as text or JSON; the exit code.

@@ -11,11 +11,25 @@ struct PageOptionsWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::cli::PageOptions)
 };
 
-PageOptions::PageOptions()
-    : page(QStringLiteral("page"),
-           PageOptionsWords::tr("run the project's page in headless Chromium and check what it "
-                                "drew"),
-           QStringLiteral("PROJECT"))
+namespace {
+
+QCommandLineOption pageOption(PageOptions::Use use)
+{
+    if (use == PageOptions::Use::Grade)
+        return QCommandLineOption(QStringLiteral("pages"),
+                                  PageOptionsWords::tr("run each submission's page in headless "
+                                                       "Chromium and check what it drew"));
+    return QCommandLineOption(QStringLiteral("page"),
+                              PageOptionsWords::tr("run the project's page in headless Chromium "
+                                                   "and check what it drew"),
+                              QStringLiteral("PROJECT"));
+}
+
+} // namespace
+
+PageOptions::PageOptions(Use use)
+    : use(use)
+    , page(pageOption(use))
     , pageFile(QStringLiteral("page-file"),
                PageOptionsWords::tr("which page of the project, default index.html or its only "
                                     "page"),
@@ -98,20 +112,27 @@ QString readNumber(const QCommandLineParser &parser, const QCommandLineOption &o
 QString readPageOptions(const QCommandLineParser &parser, const PageOptions &options,
                         PageRequest *out)
 {
-    out->wanted = parser.isSet(options.page) || parser.isSet(options.capture);
-    if (parser.isSet(options.page) && parser.isSet(options.capture))
+    const bool check = options.use == PageOptions::Use::Check;
+    out->wanted = parser.isSet(options.page) || (check && parser.isSet(options.capture));
+    if (check && parser.isSet(options.page) && parser.isSet(options.capture))
         return PageOptionsWords::tr("--page runs the page, --capture checks an earlier run: "
                                     "give one");
     for (const QCommandLineOption *o :
-         {&options.pageFile, &options.library, &options.urlMap, &options.step, &options.frame,
-          &options.timeout})
+         {&options.library, &options.urlMap, &options.step, &options.frame, &options.timeout})
         if (parser.isSet(*o) && !parser.isSet(options.page))
-            return PageOptionsWords::tr("--%1 is about the page of --page")
-                .arg(o->names().first());
-    out->run.folders.project = parser.value(options.page);
+            return PageOptionsWords::tr("--%1 is about the page of --%2")
+                .arg(o->names().first(), options.page.names().first());
+    if (options.use == PageOptions::Use::Check)
+        out->run.folders.project = parser.value(options.page);
     if (!out->run.folders.project.isEmpty() && !QFileInfo(out->run.folders.project).isDir())
         return PageOptionsWords::tr("--page: %1 is not a folder").arg(out->run.folders.project);
-    out->run.pageFile = parser.value(options.pageFile);
+    if (check) {
+        if (parser.isSet(options.pageFile) && !parser.isSet(options.page))
+            return PageOptionsWords::tr("--page-file is about the page of --page");
+        out->run.pageFile = parser.value(options.pageFile);
+        out->captureFile = parser.value(options.capture);
+        out->outFolder = parser.value(options.out);
+    }
     for (const QString &library : parser.values(options.library)) {
         if (!QFileInfo(library).isDir())
             return PageOptionsWords::tr("--library: %1 is not a folder").arg(library);
@@ -132,13 +153,13 @@ QString readPageOptions(const QCommandLineParser &parser, const PageOptions &opt
         if (!wrong.isEmpty())
             return wrong;
     out->run.timeLimitMs = qint64(seconds) * 1000;
-    out->captureFile = parser.value(options.capture);
     out->meshesFolder = parser.value(options.meshes);
     if (!out->meshesFolder.isEmpty() && !QFileInfo(out->meshesFolder).isDir())
         return PageOptionsWords::tr("--meshes: %1 is not a folder").arg(out->meshesFolder);
     if (parser.isSet(options.meshes) && !out->wanted)
-        return PageOptionsWords::tr("--meshes compares a page's normals: give --page or --capture");
-    out->outFolder = parser.value(options.out);
+        return PageOptionsWords::tr("--meshes compares a page's normals: give --%1")
+            .arg(options.use == PageOptions::Use::Grade ? QStringLiteral("pages")
+                                                        : QStringLiteral("page or --capture"));
     return {};
 }
 

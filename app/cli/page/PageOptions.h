@@ -20,8 +20,15 @@ namespace phonglab::cli {
 //   --capture FILE        check a capture.json again, without the browser
 //   --meshes DIR          the course's meshes the normals are compared with
 //   --page-out DIR        where capture.json and the frames' pictures go
+// `grade` takes --pages (each submission's page) for --page and no
+// --page-file, --capture or --page-out (each submission's go to its row).
 struct PageOptions {
-    PageOptions();
+    enum class Use {
+        Check,
+        Grade
+    };
+    explicit PageOptions(Use use = Use::Check);
+    Use use;
     QCommandLineOption page;
     QCommandLineOption pageFile;
     QCommandLineOption library;
@@ -35,6 +42,8 @@ struct PageOptions {
 
     QList<QCommandLineOption> all() const
     {
+        if (use == Use::Grade)
+            return {page, library, urlMap, step, frame, timeout, meshes};
         return {page, pageFile, library, urlMap, step, frame, timeout, capture, meshes, out};
     }
     static QStringList repeatable()

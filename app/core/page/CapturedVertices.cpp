@@ -24,7 +24,8 @@ double component(const char *at, unsigned type, bool normalized)
     case 0x1401: return normalized ? read<quint8>(at) / 255.0 : read<quint8>(at);
     case 0x1402: return normalized ? std::max(-1.0, read<qint16>(at) / 32767.0) : read<qint16>(at);
     case 0x1403: return normalized ? read<quint16>(at) / 65535.0 : read<quint16>(at);
-    case 0x1404: return normalized ? std::max(-1.0, read<qint32>(at) / 2147483647.0) : read<qint32>(at);
+    case 0x1404:
+        return normalized ? std::max(-1.0, read<qint32>(at) / 2147483647.0) : read<qint32>(at);
     case 0x1405: return normalized ? read<quint32>(at) / 4294967295.0 : read<quint32>(at);
     default: return 0;
     }
@@ -44,8 +45,7 @@ void appendIndices(const QByteArray &bytes, qint64 offset, int count, T restart,
 
 } // namespace
 
-std::optional<std::vector<qint64>> drawnVertices(const PageCapture &capture,
-                                                 const CapturedOp &draw)
+std::optional<std::vector<qint64>> drawnVertices(const PageCapture &capture, const CapturedOp &draw)
 {
     if (!drawOutOfBounds(capture, draw).isEmpty())
         return std::nullopt;
@@ -63,8 +63,7 @@ std::optional<std::vector<qint64>> drawnVertices(const PageCapture &capture,
     switch (componentBytes(draw.indexType)) {
     case 1: appendIndices<quint8>(bytes, draw.offset, draw.count, 0xFF, restart, &out); break;
     case 2: appendIndices<quint16>(bytes, draw.offset, draw.count, 0xFFFF, restart, &out); break;
-    default:
-        appendIndices<quint32>(bytes, draw.offset, draw.count, 0xFFFFFFFFu, restart, &out);
+    default: appendIndices<quint32>(bytes, draw.offset, draw.count, 0xFFFFFFFFu, restart, &out);
     }
     return out;
 }

@@ -118,12 +118,13 @@ void checkNormalMatrix(const CapturedOp &draw, const ProgramBindings &bindings,
             ofModel ? matrixOf(draw, bindings, BindingMeaning::Model) : modelViewOf(draw, bindings);
         if (!normal || !of)
             continue;
-        JavaScriptFinding f = normalMatrixFinding(*sent, glm::dmat3(*normal), glm::dmat3(*of), ofModel);
+        JavaScriptFinding f =
+            normalMatrixFinding(*sent, glm::dmat3(*normal), glm::dmat3(*of), ofModel);
         // A camera normal matrix that is the model's alone: the view forgotten.
         if (!ofModel && f.key == QLatin1String("normal-matrix-other"))
-            if (const auto model = matrixOf(draw, bindings, BindingMeaning::Model);
-                model && sameUpToScale(glm::dmat3(*normal),
-                                       glm::transpose(glm::inverse(glm::dmat3(*model))))) {
+            if (const auto model = matrixOf(draw, bindings, BindingMeaning::Model); model
+                && sameUpToScale(glm::dmat3(*normal),
+                                 glm::transpose(glm::inverse(glm::dmat3(*model))))) {
                 f.key = QStringLiteral("normal-matrix-model");
                 f.message = PageMatricesWords::tr("%1 is the inverse transpose of the model "
                                                   "matrix alone: the view is left out, so the "
@@ -165,7 +166,8 @@ void checkProducts(const CapturedOp &draw, const ProgramBindings &bindings,
 void checkLightW(const CapturedOp &draw, const ProgramBindings &bindings,
                  std::vector<JavaScriptFinding> *out)
 {
-    for (BindingMeaning meaning : {BindingMeaning::LightPosition, BindingMeaning::LightPositionCamera})
+    for (BindingMeaning meaning :
+         {BindingMeaning::LightPosition, BindingMeaning::LightPositionCamera})
         for (const VariableBinding *b : bindings.bound(meaning)) {
             const CapturedUniform *u = draw.uniform(b->variable.name);
             if (!u || u->glType != 0x8B52) // FLOAT_VEC4

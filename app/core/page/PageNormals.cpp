@@ -24,7 +24,14 @@ constexpr double kSameDirection = 1e-3; // |a - b| of unit vectors
 constexpr double kMatchedShare = 0.9;   // of a draw's vertices found in the mesh
 constexpr double kExactShare = 0.99;
 
-enum class VertexNormal { Exact, Face, NotNormalised, Positions, Other, Count };
+enum class VertexNormal {
+    Exact,
+    Face,
+    NotNormalised,
+    Positions,
+    Other,
+    Count
+};
 
 // A position as a key that JavaScript's double-then-float parse of the
 // file and the mesh reader's float parse both land on.
@@ -135,13 +142,15 @@ std::optional<DrawnMesh> drawnAs(const PageCapture &capture, const CapturedOp &d
 JavaScriptFinding findingFor(const QString &name, const DrawnMesh &drawn)
 {
     const auto share = [&](VertexNormal kind) {
-        return double(drawn.counts[std::size_t(kind)]) / double(std::max<qint64>(1, drawn.vertices));
+        return double(drawn.counts[std::size_t(kind)])
+            / double(std::max<qint64>(1, drawn.vertices));
     };
     JavaScriptFinding f{{}, name, true, {}, drawn.where};
     if (!drawn.hasNormals) {
         f.key = QStringLiteral("normals-missing");
         f.message = PageNormalsWords::tr("%1 is drawn without normals: the shader's normal "
-                                         "input gets no buffer").arg(name);
+                                         "input gets no buffer")
+                        .arg(name);
         return f;
     }
     if (share(VertexNormal::Exact) >= kExactShare) {
@@ -151,8 +160,8 @@ JavaScriptFinding findingFor(const QString &name, const DrawnMesh &drawn)
         return f;
     }
     VertexNormal most = VertexNormal::Face;
-    for (VertexNormal kind : {VertexNormal::NotNormalised, VertexNormal::Positions,
-                              VertexNormal::Other})
+    for (VertexNormal kind :
+         {VertexNormal::NotNormalised, VertexNormal::Positions, VertexNormal::Other})
         if (share(kind) > share(most))
             most = kind;
     const QString percent = QString::number(100.0 * share(most), 'f', 0);
@@ -204,7 +213,9 @@ std::vector<JavaScriptFinding> checkPageNormals(const PageCapture &capture,
     std::vector<JavaScriptFinding> out;
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         if (!drawn[m]) {
-            out.push_back({QStringLiteral("normals-missing"), meshes[m].name, true,
+            out.push_back({QStringLiteral("normals-missing"),
+                           meshes[m].name,
+                           true,
                            PageNormalsWords::tr("%1 is not drawn in the captured frame (its "
                                                 "positions are in no draw's buffer)")
                                .arg(meshes[m].name),

@@ -32,9 +32,9 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture)
         PageProgram chosen{program, draw, {}};
         for (const VariableBinding &b : bindings.variables)
             if (!b.meaning && !b.variable.isInput)
-                if (const CapturedUniform *u = draw->uniform(b.variable.name);
-                    u && !u->isArray && glslTypeOfGlEnum(u->glType) != GlslType::Other
-                    && !u->values.empty() && !u->values.front().empty())
+                if (const CapturedUniform *u = draw->uniform(b.variable.name); u && !u->isArray
+                    && glslTypeOfGlEnum(u->glType) != GlslType::Other && !u->values.empty()
+                    && !u->values.front().empty())
                     chosen.constants[u->name] = u->values.front();
         best = std::move(chosen);
     }

@@ -31,7 +31,6 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture);
 // (core/project/ProjectShader) when the page compiled one of its shaders
 // unchanged, so that every line a check names is the student's; empty
 // when the page rewrote it (a token replaced, a prelude added).
-QString stageLocatorInProject(const Project &project, ProjectStage stage,
-                              const QString &compiled);
+QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled);
 
 } // namespace phonglab

@@ -11,7 +11,10 @@ namespace {
 // How far a symbolic link may lead: a student's project is untrusted (a
 // link in a zip may point anywhere), a teacher's library folder is not
 // (Debian's libjs-* packages are links into /usr/share/nodejs).
-enum class Links { StayInside, MayLeave };
+enum class Links {
+    StayInside,
+    MayLeave
+};
 
 // `relative` inside `folder`, as a canonical path that stays inside it
 // (or, for a library, whose name stays inside it).
@@ -40,8 +43,8 @@ QString fileInLibrary(const QString &library, const QString &relative)
 {
     QStringList parts = relative.split(QLatin1Char('/'), Qt::SkipEmptyParts);
     while (!parts.isEmpty()) {
-        if (const QString path =
-                fileInside(library, parts.join(QLatin1Char('/')), Links::MayLeave); !path.isEmpty())
+        if (const QString path = fileInside(library, parts.join(QLatin1Char('/')), Links::MayLeave);
+            !path.isEmpty())
             return path;
         parts.removeFirst();
     }

@@ -120,11 +120,14 @@
   // Requests the page has in flight (XMLHttpRequest, fetch): a frame waits
   // for them, as a page that loads its mesh first would be seen drawing it.
   let inFlight = 0;
+  const counted = (promise) => { ++inFlight; return promise.finally(() => { --inFlight; }); };
   const realFetch = window.fetch;
-  window.fetch = function (...args) {
-    ++inFlight;
-    return realFetch.apply(this, args).finally(() => { --inFlight; });
-  };
+  window.fetch = function (...args) { return counted(realFetch.apply(this, args)); };
+  // Reading a response's body is the rest of the request.
+  for (const name of ['text', 'json', 'arrayBuffer', 'blob']) {
+    const real = Response.prototype[name];
+    Response.prototype[name] = function (...args) { return counted(real.apply(this, args)); };
+  }
   const realSend = XMLHttpRequest.prototype.send;
   XMLHttpRequest.prototype.send = function (...args) {
     if (this.__phonglabCounted !== true) {
@@ -526,8 +529,8 @@
   }
 
   window.__phonglab = {
-    // Runs the steps, then up to `frames` frames (fewer once nothing is
-    // left to run), and hands back the last frame shown, as JSON text.
+    // Runs the steps, then `frames` frames, and hands back the last frame
+    // shown, as JSON text.
     async run(frames, steps) {
       await settle();
       const done = [];
@@ -537,8 +540,9 @@
         done.push({ step, problem });
         await settle();
       }
+      // Every frame runs, drawing or not: a page that draws once its mesh
+      // has come is seen drawing it.
       for (let k = 0; k < frames; ++k) {
-        if (idle() && state.frame > 0) break;
         frame();
         await settle();
       }
