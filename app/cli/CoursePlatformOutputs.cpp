@@ -125,6 +125,10 @@ GradeResults onlyStudent(const GradeResults &results, const QString &folder)
         if (!copy.student.isEmpty())
             copy.name = copy.student;
         one.submissions.push_back(std::move(copy));
+        if (const std::size_t k = std::size_t(s); k < results.pages.size()) {
+            one.pages.resize(one.submissions.size());
+            one.pages.back() = results.pages[k];
+        }
     }
     for (const GradeRow &row : results.rows)
         if (const auto it = index.find(row.submission); it != index.end()) {
@@ -226,6 +230,15 @@ QByteArray moodleGradesCsv(const GradeResults &results, const GradePoints &point
     return csv.toUtf8();
 }
 
+// The pictures a row's feedback shows: the check's, and the page's frames.
+QStringList rowImages(const GradeResults &results, const GradeRow &row)
+{
+    QStringList images{row.yoursImage, row.exactImage, row.heatmapImage};
+    if (const SubmissionPage *page = results.pageOf(row))
+        images << page->browserImage << page->phonglabImage << page->differenceImage;
+    return images;
+}
+
 Result<> writeFeedbackZip(const GradeResults &results, const QString &zipPath)
 {
     const std::vector<int> students = moodleStudents(results);
@@ -246,7 +259,7 @@ Result<> writeFeedbackZip(const GradeResults &results, const QString &zipPath)
                           gradeReportHtml(one).toUtf8());
         QSet<QString> images;
         for (const GradeRow &row : one.rows)
-            for (const QString &image : {row.yoursImage, row.exactImage, row.heatmapImage})
+            for (const QString &image : rowImages(one, row))
                 if (!image.isEmpty() && !images.contains(image)) {
                     images.insert(image);
                     QFile f(out + image);

@@ -2,6 +2,7 @@
 
 #include "core/support/Language.h"
 #include <QCoreApplication>
+#include <QJsonArray>
 
 #include "core/scene/ResourcePaths.h"
 
@@ -282,6 +283,43 @@ QString figure(const QString &image, const QString &caption)
         .arg(esc(image), esc(caption));
 }
 
+// grade --pages: the browser's frame, PhongLab's drawing of it and their
+// difference, side by side; what the JavaScript half found.
+QString pageFigures(const SubmissionPage *page)
+{
+    if (!page)
+        return {};
+    return figure(page->browserImage, ReportWords::tr("the browser's"))
+        + figure(page->phonglabImage, ReportWords::tr("drawn again"))
+        + figure(page->differenceImage, ReportWords::tr("difference"));
+}
+
+QString pageDetails(const SubmissionPage *page)
+{
+    if (!page)
+        return {};
+    if (!page->error.isEmpty())
+        return QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("The page was not run: %1").arg(page->error)));
+    QString html;
+    if (page->largestDifference && !page->faithful)
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(esc(ReportWords::tr("PhongLab does not draw this page as the browser did "
+                                             "(largest difference %1): its findings may be "
+                                             "PhongLab's mistake.")
+                                 .arg(*page->largestDifference)));
+    for (const QJsonValue &f : page->json.value(QStringLiteral("javascript")).toArray()) {
+        const QJsonObject o = f.toObject();
+        if (!o.value(QStringLiteral("mistake")).toBool())
+            continue;
+        const QString where = o.value(QStringLiteral("where")).toString();
+        html += QStringLiteral("<p><b>%1</b>: %2</p>")
+                    .arg(esc(o.value(QStringLiteral("key")).toString()),
+                         esc((where.isEmpty() ? QString() : where + QStringLiteral(": "))
+                             + o.value(QStringLiteral("message")).toString()));
+    }
+    return html;
+}
+
 QString openCommand(const GradeResults &results, const GradeRow &row)
 {
     const Submission &s = results.submissions[std::size_t(row.submission)];
@@ -318,8 +356,9 @@ QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
                      : QString(),
              figure(row.yoursImage, ReportWords::tr("theirs"))
                  + figure(row.exactImage, ReportWords::tr("exact"))
-                 + figure(row.heatmapImage, ReportWords::tr("heatmap")),
-             details(row),
+                 + figure(row.heatmapImage, ReportWords::tr("heatmap"))
+                 + pageFigures(results.pageOf(row)),
+             details(row) + pageDetails(results.pageOf(row)),
              command.isEmpty()
                  ? QString()
                  : QStringLiteral("<code class=\"command\" title=\"%1\">%2</code>")

@@ -21,13 +21,26 @@ namespace {
 
 const QStringList &csvColumns()
 {
-    static const QStringList columns{
-        QStringLiteral("submission"), QStringLiteral("scene"),      QStringLiteral("verdict"),
-        QStringLiteral("psnr_db"),    QStringLiteral("max_error"),  QStringLiteral("bad_fraction"),
-        QStringLiteral("key"),        QStringLiteral("also"),       QStringLiteral("file"),
-        QStringLiteral("line"),       QStringLiteral("equation"),   QStringLiteral("bindings"),
-        QStringLiteral("seconds"),    QStringLiteral("mistakes"),   QStringLiteral("program"),
-        QStringLiteral("student"),    QStringLiteral("participant")};
+    static const QStringList columns{QStringLiteral("submission"),
+                                     QStringLiteral("scene"),
+                                     QStringLiteral("verdict"),
+                                     QStringLiteral("psnr_db"),
+                                     QStringLiteral("max_error"),
+                                     QStringLiteral("bad_fraction"),
+                                     QStringLiteral("key"),
+                                     QStringLiteral("also"),
+                                     QStringLiteral("file"),
+                                     QStringLiteral("line"),
+                                     QStringLiteral("equation"),
+                                     QStringLiteral("bindings"),
+                                     QStringLiteral("seconds"),
+                                     QStringLiteral("mistakes"),
+                                     QStringLiteral("program"),
+                                     QStringLiteral("student"),
+                                     QStringLiteral("participant"),
+                                     QStringLiteral("page_fidelity"),
+                                     QStringLiteral("page_javascript"),
+                                     QStringLiteral("page_error")};
     return columns;
 }
 

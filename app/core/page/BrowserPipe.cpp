@@ -39,6 +39,11 @@ BrowserPipe::~BrowserPipe()
 
 QString BrowserPipe::executable()
 {
+    // Another browser binary, or none ("" where no browser should be found).
+    if (qEnvironmentVariableIsSet("PHONGLAB_CHROMIUM")) {
+        const QString path = qEnvironmentVariable("PHONGLAB_CHROMIUM");
+        return QFileInfo(path).isExecutable() ? path : QString();
+    }
     for (const QString &path : {QStringLiteral("/usr/lib/chromium/chromium"),
                                 QStandardPaths::findExecutable(QStringLiteral("chromium"))})
         if (!path.isEmpty() && QFileInfo(path).isExecutable())

@@ -31,7 +31,8 @@ public:
     BrowserPipe(const BrowserPipe &) = delete;
     BrowserPipe &operator=(const BrowserPipe &) = delete;
 
-    // Debian's chromium binary (not the /usr/bin wrapper script), or empty.
+    // Debian's chromium binary (not the /usr/bin wrapper script), or empty;
+    // $PHONGLAB_CHROMIUM where set (empty or not executable: none).
     static QString executable();
 
     // Starts `program` with `arguments` (--remote-debugging-pipe added) and
