@@ -581,6 +581,25 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     </message>
 </context>
 <context>
+    <name>phonglab::BrowserPipe</name>
+    <message>
+        <source>cannot make a pipe to the browser</source>
+        <translation>keine Pipe zum Browser möglich</translation>
+    </message>
+    <message>
+        <source>cannot start %1: %2</source>
+        <translation>%1 lässt sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <source>the page did not finish within %1 s (a script that never ends, or a page that waits for something)</source>
+        <translation>die Seite wurde nicht innerhalb von %1 s fertig (ein Skript, das nie endet, oder eine Seite, die auf etwas wartet)</translation>
+    </message>
+    <message>
+        <source>the browser went away</source>
+        <translation>der Browser ist weg</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::BuildStatusText</name>
     <message>
         <source>Compiling…</source>
@@ -696,6 +715,33 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>%1: too large for a camera path</source>
         <translation>%1: zu groß für einen Kamerapfad</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::CaptureBounds</name>
+    <message>
+        <source>a negative first vertex</source>
+        <translation>ein negativer erster Vertex</translation>
+    </message>
+    <message>
+        <source>the index buffer does not hold %1 indices</source>
+        <translation>der Indexpuffer enthält keine %1 Indizes</translation>
+    </message>
+    <message>
+        <source>more vertices than PhongLab draws again</source>
+        <translation>mehr Vertices, als PhongLab erneut zeichnet</translation>
+    </message>
+    <message>
+        <source>attribute %1 has a layout PhongLab does not draw</source>
+        <translation>Attribut %1 hat ein Layout, das PhongLab nicht zeichnet</translation>
+    </message>
+    <message>
+        <source>attribute %1 reads no buffer</source>
+        <translation>Attribut %1 liest aus keinem Puffer</translation>
+    </message>
+    <message>
+        <source>attribute %1 reads %2 bytes of a buffer of %3</source>
+        <translation>Attribut %1 liest %2 Bytes aus einem Puffer von %3</translation>
     </message>
 </context>
 <context>
@@ -2362,6 +2408,165 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>no faces were read</source>
         <translation>es wurden keine Flächen gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageCapture</name>
+    <message>
+        <source>not JSON at byte %1: %2</source>
+        <translation>kein JSON bei Byte %1: %2</translation>
+    </message>
+    <message>
+        <source>not a page capture of format 1 (key &quot;format&quot;)</source>
+        <translation>keine Seitenaufzeichnung im Format 1 (Schlüssel &quot;format&quot;)</translation>
+    </message>
+    <message>
+        <source>key &quot;pixels&quot;: %1 bytes for a canvas of %2x%3</source>
+        <translation>Schlüssel &quot;pixels&quot;: %1 Bytes für eine Zeichenfläche von %2x%3</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageMatrices</name>
+    <message>
+        <source>the model matrix</source>
+        <translation>der Modellmatrix</translation>
+    </message>
+    <message>
+        <source>the model-view</source>
+        <translation>der Model-View-Matrix</translation>
+    </message>
+    <message>
+        <source>%1 is the inverse transpose of %2</source>
+        <translation>%1 ist die inverse Transponierte %2</translation>
+    </message>
+    <message>
+        <source>%1 is the transpose of %2, not its inverse transpose: where it rotates, the normals turn the other way</source>
+        <translation>%1 ist die Transponierte %2, nicht ihre inverse Transponierte: wo sie dreht, drehen sich die Normalen in die andere Richtung</translation>
+    </message>
+    <message>
+        <source>%1 is the inverse of %2, not its inverse transpose</source>
+        <translation>%1 ist die Inverse %2, nicht ihre inverse Transponierte</translation>
+    </message>
+    <message>
+        <source>%1 is %2 itself, not its inverse transpose: under a scaling that is not uniform the normals tilt</source>
+        <translation>%1 ist die Matrix selbst (%2), nicht ihre inverse Transponierte: unter einer ungleichmäßigen Skalierung kippen die Normalen</translation>
+    </message>
+    <message>
+        <source>%1 is not the inverse transpose of %2 sent</source>
+        <translation>%1 ist nicht die inverse Transponierte %2, die gesendet wird</translation>
+    </message>
+    <message>
+        <source>%1 is the inverse transpose of the model matrix alone: the view is left out, so the normals are in world coordinates and the rest in camera coordinates</source>
+        <translation>%1 ist die inverse Transponierte der Modellmatrix allein: die View-Matrix fehlt, die Normalen sind also in Weltkoordinaten und der Rest in Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <source>%1 is not the view matrix times the model matrix the page sends beside it</source>
+        <translation>%1 ist nicht View-Matrix mal Modellmatrix, die die Seite daneben sendet</translation>
+    </message>
+    <message>
+        <source>%1 is not the projection times the model-view the page sends beside it</source>
+        <translation>%1 ist nicht Projektion mal Model-View, die die Seite daneben sendet</translation>
+    </message>
+    <message>
+        <source>%1 is sent with w = 0: a direction, which no matrix moves as a place</source>
+        <translation>%1 wird mit w = 0 gesendet: eine Richtung, die keine Matrix als Ort verschiebt</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageNormals</name>
+    <message>
+        <source>%1 is drawn without normals: the shader&apos;s normal input gets no buffer</source>
+        <translation>%1 wird ohne Normalen gezeichnet: der Normalen-Eingang des Shaders bekommt keinen Puffer</translation>
+    </message>
+    <message>
+        <source>%1: Blender&apos;s normals, exactly</source>
+        <translation>%1: genau die Normalen aus Blender</translation>
+    </message>
+    <message>
+        <source>%1: the faces&apos; normals instead of Blender&apos;s (%2 % of the vertices): the mesh looks faceted</source>
+        <translation>%1: die Flächennormalen statt der aus Blender (%2 % der Vertices): das Mesh wirkt facettiert</translation>
+    </message>
+    <message>
+        <source>%1: Blender&apos;s directions, but not of length 1 (%2 % of the vertices)</source>
+        <translation>%1: die Richtungen aus Blender, aber nicht der Länge 1 (%2 % der Vertices)</translation>
+    </message>
+    <message>
+        <source>%1: the positions sent as normals (%2 % of the vertices)</source>
+        <translation>%1: die Positionen als Normalen gesendet (%2 % der Vertices)</translation>
+    </message>
+    <message>
+        <source>%1: normals that are neither Blender&apos;s nor the faces&apos; (%2 % of the vertices)</source>
+        <translation>%1: Normalen, die weder die aus Blender noch die der Flächen sind (%2 % der Vertices)</translation>
+    </message>
+    <message>
+        <source>%1 is not drawn in the captured frame (its positions are in no draw&apos;s buffer)</source>
+        <translation>%1 wird im aufgezeichneten Bild nicht gezeichnet (seine Positionen stehen in keinem Puffer eines Zeichenaufrufs)</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageReplay</name>
+    <message>
+        <source>%1 samples a texture, which is not captured</source>
+        <translation>%1 tastet eine Textur ab, die nicht aufgezeichnet wird</translation>
+    </message>
+    <message>
+        <source>uniform %1 has a type PhongLab does not set again</source>
+        <translation>Uniform %1 hat einen Typ, den PhongLab nicht erneut setzt</translation>
+    </message>
+    <message>
+        <source>program %1 does not build here: %2</source>
+        <translation>Programm %1 lässt sich hier nicht bauen: %2</translation>
+    </message>
+    <message>
+        <source>program %1 is not in the capture</source>
+        <translation>Programm %1 fehlt in der Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>the page drew nothing to its canvas</source>
+        <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
+    </message>
+    <message>
+        <source>no %1x%2 framebuffer here</source>
+        <translation>hier kein Framebuffer von %1x%2</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageRun</name>
+    <message>
+        <source>larger than 64 MB</source>
+        <translation>größer als 64 MB</translation>
+    </message>
+    <message>
+        <source>running the page needs Chromium, which is not installed (sudo apt install chromium; scripts/setup.sh installs it); the shaders are still read from the files</source>
+        <translation>um die Seite auszuführen, braucht es Chromium, das nicht installiert ist (sudo apt install chromium; scripts/setup.sh installiert es); die Shader werden weiterhin aus den Dateien gelesen</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: kein solcher Ordner</translation>
+    </message>
+    <message>
+        <source>%1: no page %2 in the project</source>
+        <translation>%1: keine Seite %2 im Projekt</translation>
+    </message>
+    <message>
+        <source>%1: no HTML page in the project</source>
+        <translation>%1: keine HTML-Seite im Projekt</translation>
+    </message>
+    <message>
+        <source>%1: which page? it has %2 (choose one with --page-file)</source>
+        <translation>%1: welche Seite? Es gibt %2 (eine mit --page-file wählen)</translation>
+    </message>
+    <message>
+        <source>cannot make a folder for the browser&apos;s profile</source>
+        <translation>kein Ordner für das Profil des Browsers möglich</translation>
+    </message>
+    <message>
+        <source>the capture failed: %1</source>
+        <translation>die Aufzeichnung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>the page&apos;s document was replaced before it could be captured</source>
+        <translation>das Dokument der Seite wurde ersetzt, bevor es aufgezeichnet werden konnte</translation>
     </message>
 </context>
 <context>
@@ -4592,18 +4797,6 @@ Anpassung pro Objekt (%1; jedes Objekt für seine Zeit allein gezeichnet, seine 
         <translation>keine Referenz: %1</translation>
     </message>
     <message>
-        <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
-                      [--project PATH [--program NAME]]
-                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                      [--define NAME=VALUE ...] [--precision highp|as-written]
-                      [--json] [--diff OUT.png]</source>
-        <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
-                       [--project PATH [--program NAME]]
-                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
-                       [--define NAME=VALUE ...] [--precision highp|as-written]
-                       [--json] [--diff OUT.png]</translation>
-    </message>
-    <message>
         <source>--project takes both stages from the project; leave out --vertex and --fragment</source>
         <translation>--project nimmt beide Stufen aus dem Projekt; --vertex und --fragment weglassen</translation>
     </message>
@@ -4679,6 +4872,34 @@ Fehlerschlüssel: %5, unknown.
 Exit-Code: 0 stimmt überein, 1 stimmt nicht überein, kompiliert nicht oder ungültige Eingabe,
 2 falsche Argumente.
 Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translation>
+    </message>
+    <message>
+        <source>usage: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                      [--project PATH [--program NAME]]
+                      [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                      [--define NAME=VALUE ...] [--precision highp|as-written]
+                      [--json] [--diff OUT.png]
+       phonglab check [SCENE.json] --page PROJECT [--page-file FILE] [--library DIR ...]
+                      [--url-map PREFIX=PATH ...] [--page-step STEP ...] [--page-frame N]
+                      [--page-timeout S] [--meshes DIR] [--page-out DIR] [--json]
+       phonglab check [SCENE.json] --capture capture.json [--meshes DIR] [--json]</source>
+        <translation>Aufruf: phonglab check SCENE.json [--vertex FILE] [--fragment FILE] [--shading NAME] [--size WxH]
+                       [--project PATH [--program NAME]]
+                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
+                       [--define NAME=VALUE ...] [--precision highp|as-written]
+                       [--json] [--diff OUT.png]
+       phonglab check [SCENE.json] --page PROJECT [--page-file FILE] [--library DIR ...]
+                       [--url-map PREFIX=PATH ...] [--page-step STEP ...] [--page-frame N]
+                       [--page-timeout S] [--meshes DIR] [--page-out DIR] [--json]
+       phonglab check [SCENE.json] --capture capture.json [--meshes DIR] [--json]</translation>
+    </message>
+    <message>
+        <source>--project reads the shaders from the files, --page takes them from the browser: give one</source>
+        <translation>--project liest die Shader aus den Dateien, --page nimmt sie aus dem Browser: eines angeben</translation>
+    </message>
+    <message>
+        <source>--page takes both stages from the browser; leave out --vertex and --fragment</source>
+        <translation>--page nimmt beide Stufen aus dem Browser; --vertex und --fragment weglassen</translation>
     </message>
 </context>
 <context>
@@ -4894,22 +5115,38 @@ Befehle:
         <translation>grade: %1 fertige Prüfungen des abgebrochenen Laufs behalten</translation>
     </message>
     <message>
+        <source>no program named %1 (there are: %2)</source>
+        <translation>kein Programm namens %1 (vorhanden: %2)</translation>
+    </message>
+    <message>
+        <source>--jobs: expected 1..256, got &apos;%1&apos;</source>
+        <translation>--jobs: 1..256 erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--memory: expected 64..1048576 MiB, got &apos;%1&apos;</source>
+        <translation>--memory: 64..1048576 MiB erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>grade: %1 checks; %2</source>
+        <translation>grade: %1 Prüfungen; %2</translation>
+    </message>
+    <message>
         <source>usage: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                       [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                       [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                       [--define NAME=VALUE ...] [--precision highp|as-written]
                       [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]
-                      [--program NAME]</source>
+                      [--program NAME]
+                      [--pages [--library DIR ...] [--url-map PREFIX=PATH ...] [--page-step STEP ...]
+                       [--page-frame N] [--page-timeout S] [--meshes DIR]]</source>
         <translation>Aufruf: phonglab grade SUBMISSIONS --scene FILE [--scene FILE ...] [--out DIR]
                        [--jobs N] [--timeout SECONDS] [--memory MIB] [--size WxH]
                        [--tolerance STEPS] [--bind NAME=MEANING ...] [--equation slide|guarded]
                        [--define NAME=VALUE ...] [--precision highp|as-written]
                        [--points pass=N,fail=N,error=N,timeout=N,crash=N] [--resume]
-                       [--program NAME]</translation>
-    </message>
-    <message>
-        <source>no program named %1 (there are: %2)</source>
-        <translation>kein Programm namens %1 (vorhanden: %2)</translation>
+                       [--program NAME]
+                       [--pages [--library DIR ...] [--url-map PREFIX=PATH ...] [--page-step STEP ...]
+                        [--page-frame N] [--page-timeout S] [--meshes DIR]]</translation>
     </message>
     <message>
         <source>
@@ -4942,8 +5179,8 @@ that one verdict.
 
 Writes DIR/grades.csv (columns submission, scene, verdict, psnr_db, max_error,
 bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
-student, participant), DIR/grades.json (the check&apos;s JSON per row), DIR/report.html
-and its DIR/images/, and a table on stdout. From Moodle also DIR/moodle-grades.csv
+student, participant, page_fidelity, page_javascript, page_error), DIR/grades.json
+(the check&apos;s JSON per row), DIR/report.html and its DIR/images/, and a table on stdout. From Moodle also DIR/moodle-grades.csv
 (its offline grading worksheet) and DIR/feedback.zip (a feedback.html per student).
 Verdicts: pass, fail, error, timeout, crash.
 
@@ -4982,8 +5219,8 @@ Urteil.
 
 Schreibt DIR/grades.csv (Spalten submission, scene, verdict, psnr_db, max_error,
 bad_fraction, key, also, file, line, equation, bindings, seconds, mistakes, program,
-student, participant), DIR/grades.json (das JSON der Prüfung pro Zeile), DIR/report.html
-mit DIR/images/ sowie eine Tabelle auf stdout. Aus Moodle außerdem DIR/moodle-grades.csv
+student, participant, page_fidelity, page_javascript, page_error), DIR/grades.json
+(das JSON der Prüfung pro Zeile), DIR/report.html mit DIR/images/ sowie eine Tabelle auf stdout. Aus Moodle außerdem DIR/moodle-grades.csv
 (seine Offline-Bewertungstabelle) und DIR/feedback.zip (eine feedback.html pro Person).
 Urteile: pass, fail, error, timeout, crash.
 
@@ -4991,16 +5228,25 @@ Exit-Code: 0 jede Abgabe hat ein Urteil erhalten, 1 der Lauf konnte nicht abgesc
 werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsche Argumente.</translation>
     </message>
     <message>
-        <source>--jobs: expected 1..256, got &apos;%1&apos;</source>
-        <translation>--jobs: 1..256 erwartet, erhalten: &apos;%1&apos;</translation>
+        <source>
+
+With --pages each submission&apos;s page runs in headless Chromium, as check --page runs it,
+once per project (its capture and frames in DIR/pages/NAME/); the course scenes are then
+checked with the program and the values the page used.
+</source>
+        <translation>
+
+Mit --pages läuft die Seite jeder Abgabe in headless Chromium, wie check --page sie ausführt,
+einmal je Projekt (Aufzeichnung und Bilder in DIR/pages/NAME/); die Kursszenen werden dann
+mit dem Programm und den Werten geprüft, die die Seite verwendet hat.
+</translation>
     </message>
+</context>
+<context>
+    <name>phonglab::cli::GradePages</name>
     <message>
-        <source>--memory: expected 64..1048576 MiB, got &apos;%1&apos;</source>
-        <translation>--memory: 64..1048576 MiB erwartet, erhalten: &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>grade: %1 checks; %2</source>
-        <translation>grade: %1 Prüfungen; %2</translation>
+        <source>grade: page %1 of %2 run</source>
+        <translation>grade: Seite %1 von %2 ausgeführt</translation>
     </message>
 </context>
 <context>
@@ -5108,6 +5354,26 @@ werden (eine Szene lädt nicht, keine Abgaben, DIR nicht beschreibbar), 2 falsch
     <message>
         <source>warning:</source>
         <translation>Warnung:</translation>
+    </message>
+    <message>
+        <source>the browser&apos;s</source>
+        <translation>im Browser</translation>
+    </message>
+    <message>
+        <source>drawn again</source>
+        <translation>erneut gezeichnet</translation>
+    </message>
+    <message>
+        <source>difference</source>
+        <translation>Differenz</translation>
+    </message>
+    <message>
+        <source>The page was not run: %1</source>
+        <translation>Die Seite wurde nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <source>PhongLab does not draw this page as the browser did (largest difference %1): its findings may be PhongLab&apos;s mistake.</source>
+        <translation>PhongLab zeichnet diese Seite nicht so, wie der Browser es tat (größte Abweichung %1): die Befunde können PhongLabs Fehler sein.</translation>
     </message>
 </context>
 <context>
@@ -5326,6 +5592,184 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     <message>
         <source>, crease %1°</source>
         <translation>, Knickwinkel %1°</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::PageCheck</name>
+    <message>
+        <source>%1: cannot make the folder</source>
+        <translation>%1: Ordner lässt sich nicht anlegen</translation>
+    </message>
+    <message>
+        <source>the page drew nothing to its canvas</source>
+        <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
+    </message>
+    <message>
+        <source>the page drew no program that lights: the course scene is not checked</source>
+        <translation>die Seite hat kein Programm gezeichnet, das beleuchtet: die Kursszene wird nicht geprüft</translation>
+    </message>
+    <message>
+        <source>the course scene is checked with program %1 as the page compiled it: %2 and %3</source>
+        <translation>die Kursszene wird mit Programm %1 geprüft, wie die Seite es kompiliert hat: %2 und %3</translation>
+    </message>
+    <message>
+        <source>verdict: %1</source>
+        <translation>Urteil: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot write</source>
+        <translation>%1: nicht schreibbar</translation>
+    </message>
+    <message>
+        <source>page: not run: %1</source>
+        <translation>Seite: nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <source>page: %1, WebGL %2, frame %3 of a %4x%5 canvas%6</source>
+        <translation>Seite: %1, WebGL %2, Bild %3 einer Zeichenfläche von %4x%5%6</translation>
+    </message>
+    <message>
+        <source>page step &apos;%1&apos;: %2</source>
+        <translation>Seitenschritt &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>refused (the page gets no network): %1</source>
+        <translation>abgewiesen (die Seite bekommt kein Netzwerk): %1</translation>
+    </message>
+    <message>
+        <source>page error: %1</source>
+        <translation>Fehler der Seite: %1</translation>
+    </message>
+    <message>
+        <source>fidelity: PhongLab draws the page&apos;s frame as the browser did (largest difference %1 outside edges)</source>
+        <translation>Treue: PhongLab zeichnet das Bild der Seite so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten)</translation>
+    </message>
+    <message>
+        <source>fidelity: PhongLab does not draw the page&apos;s frame as the browser did (largest difference %1 outside edges): what follows may be PhongLab&apos;s mistake, not the student&apos;s</source>
+        <translation>Treue: PhongLab zeichnet das Bild der Seite nicht so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten): was folgt, kann PhongLabs Fehler sein, nicht der des Studierenden</translation>
+    </message>
+    <message>
+        <source>fidelity: not checked: %1</source>
+        <translation>Treue: nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <source>not drawn again: %1</source>
+        <translation>nicht erneut gezeichnet: %1</translation>
+    </message>
+    <message>
+        <source>javascript: %1</source>
+        <translation>JavaScript: %1</translation>
+    </message>
+    <message>
+        <source>javascript ok: %1</source>
+        <translation>JavaScript in Ordnung: %1</translation>
+    </message>
+    <message>
+        <source>course mesh not read: %1</source>
+        <translation>Kurs-Mesh nicht gelesen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::PageOptions</name>
+    <message>
+        <source>run each submission&apos;s page in headless Chromium and check what it drew</source>
+        <translation>die Seite jeder Abgabe in headless Chromium ausführen und prüfen, was sie gezeichnet hat</translation>
+    </message>
+    <message>
+        <source>run the project&apos;s page in headless Chromium and check what it drew</source>
+        <translation>die Seite des Projekts in headless Chromium ausführen und prüfen, was sie gezeichnet hat</translation>
+    </message>
+    <message>
+        <source>which page of the project, default index.html or its only page</source>
+        <translation>welche Seite des Projekts, Vorgabe index.html oder seine einzige Seite</translation>
+    </message>
+    <message>
+        <source>a folder of the course&apos;s starter files the page loads (Common/, webgl-utils, gl-matrix); repeatable</source>
+        <translation>ein Ordner mit den Vorlagedateien des Kurses, die die Seite lädt (Common/, webgl-utils, gl-matrix); wiederholbar</translation>
+    </message>
+    <message>
+        <source>answer an outside address (a CDN&apos;s link) from a local file or folder; repeatable</source>
+        <translation>eine externe Adresse (den Link eines CDN) aus einer lokalen Datei oder einem Ordner beantworten; wiederholbar</translation>
+    </message>
+    <message>
+        <source>what a student does before looking: &apos;click SELECTOR&apos;, &apos;select SELECTOR=VALUE&apos;, &apos;check SELECTOR&apos;, &apos;set SELECTOR=VALUE&apos;; repeatable</source>
+        <translation>was ein Studierender vor dem Hinsehen tut: &apos;click SELECTOR&apos;, &apos;select SELECTOR=VALUE&apos;, &apos;check SELECTOR&apos;, &apos;set SELECTOR=VALUE&apos;; wiederholbar</translation>
+    </message>
+    <message>
+        <source>the frame captured, default 5 (fewer when the page stops drawing)</source>
+        <translation>das aufgezeichnete Bild, Vorgabe 5 (früher, wenn die Seite nicht mehr zeichnet)</translation>
+    </message>
+    <message>
+        <source>the time limit of one run of the page, default 20 s</source>
+        <translation>das Zeitlimit eines Laufs der Seite, Vorgabe 20 s</translation>
+    </message>
+    <message>
+        <source>check a capture.json of an earlier run again, without the browser</source>
+        <translation>eine capture.json eines früheren Laufs erneut prüfen, ohne Browser</translation>
+    </message>
+    <message>
+        <source>the course&apos;s meshes (the Blender cloud and tree) the page&apos;s normals are compared with</source>
+        <translation>die Meshes des Kurses (Wolke und Baum aus Blender), mit denen die Normalen der Seite verglichen werden</translation>
+    </message>
+    <message>
+        <source>write capture.json and the browser&apos;s, PhongLab&apos;s and the difference frames here</source>
+        <translation>capture.json und die Bilder des Browsers, von PhongLab und der Differenz hierhin schreiben</translation>
+    </message>
+    <message>
+        <source>
+Running the page (--page): the project&apos;s page runs in headless Chromium (WebGL on SwiftShader,
+a fixed window, a virtual clock, no network), and what it hands WebGL is captured. Then
+PhongLab draws the captured frame again and compares it with the browser&apos;s (fidelity),
+checks the normals and matrices the JavaScript sent, and with SCENE.json checks the course
+scene with the program and the values the page used. JSON adds &quot;page&quot; (keys: file, webgl,
+frame, animated, canvas, milliseconds, steps, served, refused, errors, console_errors,
+fidelity, javascript, mesh_errors).
+</source>
+        <translation>
+Die Seite ausführen (--page): die Seite des Projekts läuft in headless Chromium (WebGL auf SwiftShader,
+festes Fenster, virtuelle Uhr, kein Netzwerk), und was sie WebGL übergibt, wird aufgezeichnet. Dann
+zeichnet PhongLab das aufgezeichnete Bild erneut und vergleicht es mit dem des Browsers (Treue),
+prüft die Normalen und Matrizen, die das JavaScript gesendet hat, und prüft mit SCENE.json die Kursszene
+mit dem Programm und den Werten, die die Seite verwendet hat. JSON enthält zusätzlich &quot;page&quot; (Schlüssel: file, webgl,
+frame, animated, canvas, milliseconds, steps, served, refused, errors, console_errors,
+fidelity, javascript, mesh_errors).
+</translation>
+    </message>
+    <message>
+        <source>--%1: expected %2..%3, got &apos;%4&apos;</source>
+        <translation>--%1: %2..%3 erwartet, erhalten &apos;%4&apos;</translation>
+    </message>
+    <message>
+        <source>--page runs the page, --capture checks an earlier run: give one</source>
+        <translation>--page führt die Seite aus, --capture prüft einen früheren Lauf: eines angeben</translation>
+    </message>
+    <message>
+        <source>--%1 is about the page of --%2</source>
+        <translation>--%1 betrifft die Seite von --%2</translation>
+    </message>
+    <message>
+        <source>--page: %1 is not a folder</source>
+        <translation>--page: %1 ist kein Ordner</translation>
+    </message>
+    <message>
+        <source>--page-file is about the page of --page</source>
+        <translation>--page-file betrifft die Seite von --page</translation>
+    </message>
+    <message>
+        <source>--library: %1 is not a folder</source>
+        <translation>--library: %1 ist kein Ordner</translation>
+    </message>
+    <message>
+        <source>--url-map: expected PREFIX=PATH of an existing file or folder, got &apos;%1&apos;</source>
+        <translation>--url-map: PREFIX=PATH einer vorhandenen Datei oder eines Ordners erwartet, erhalten &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--meshes: %1 is not a folder</source>
+        <translation>--meshes: %1 ist kein Ordner</translation>
+    </message>
+    <message>
+        <source>--meshes compares a page&apos;s normals: give --%1</source>
+        <translation>--meshes vergleicht die Normalen einer Seite: --%1 angeben</translation>
     </message>
 </context>
 <context>

@@ -299,7 +299,8 @@ QString pageDetails(const SubmissionPage *page)
     if (!page)
         return {};
     if (!page->error.isEmpty())
-        return QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("The page was not run: %1").arg(page->error)));
+        return QStringLiteral("<p>%1</p>")
+            .arg(esc(ReportWords::tr("The page was not run: %1").arg(page->error)));
     QString html;
     if (page->largestDifference && !page->faithful)
         html += QStringLiteral("<p>%1</p>")

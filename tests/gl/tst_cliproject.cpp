@@ -170,7 +170,9 @@ private slots:
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         const QByteArray csv = readTestFile(out + QStringLiteral("/grades.csv"));
         QVERIFY(csv.startsWith("submission,scene,verdict,"));
-        QVERIFY(csv.left(csv.indexOf('\n')).endsWith(",mistakes,program,student,participant"));
+        QVERIFY(csv.left(csv.indexOf('\n'))
+                    .endsWith(",mistakes,program,student,participant,page_fidelity,page_javascript,"
+                              "page_error"));
         const QMap<QString, QStringList> rows = rowsByStudentAndProgram(csv);
         QCOMPARE(rows.keys(),
                  (QStringList{QStringLiteral("ada/gouraud"), QStringLiteral("ada/index"),

@@ -87,8 +87,7 @@ void runSubmissionPages(GradeResults &results, const PageRequest &request, int j
     std::vector<std::pair<QString, QString>> runs; // folder, its out folder
     for (const auto &[folder, members] : folders)
         runs.emplace_back(folder,
-                          QStringLiteral("pages/")
-                              + results.submissions[members.front()].name);
+                          QStringLiteral("pages/") + results.submissions[members.front()].name);
     std::vector<PageRequest> requests;
     for (const auto &[folder, out] : runs) {
         PageRequest r = request;
@@ -100,12 +99,14 @@ void runSubmissionPages(GradeResults &results, const PageRequest &request, int j
     pool.setMaxThreadCount(std::max(1, jobs));
     std::atomic<int> done = 0;
     const int total = int(requests.size());
-    const std::vector<PageCapturing> captured = QtConcurrent::blockingMapped<std::vector<PageCapturing>>(
-        &pool, requests, [&done, total](const PageRequest &r) {
-            PageCapturing c = capturePage(r);
-            printErrLine(GradePagesWords::tr("grade: page %1 of %2 run").arg(++done).arg(total));
-            return c;
-        });
+    const std::vector<PageCapturing> captured =
+        QtConcurrent::blockingMapped<std::vector<PageCapturing>>(
+            &pool, requests, [&done, total](const PageRequest &r) {
+                PageCapturing c = capturePage(r);
+                printErrLine(
+                    GradePagesWords::tr("grade: page %1 of %2 run").arg(++done).arg(total));
+                return c;
+            });
     for (std::size_t k = 0; k < requests.size(); ++k) {
         const PageCheck check = checkCapturedPage(captured[k], requests[k]);
         if (const QString unwritten = writePageOutputs(check, requests[k].outFolder);
