@@ -368,7 +368,8 @@ int check(CheckArgs args)
     }
     if (page) {
         outcome.notes.prepend(pageNote);
-        if (page->javascriptMistakes() && outcome.verdict == CheckOutcome::Verdict::Pass)
+        if ((page->javascriptMistakes() || page->ownSceneFails())
+            && outcome.verdict == CheckOutcome::Verdict::Pass)
             outcome.verdict = CheckOutcome::Verdict::Fail;
     }
     if (args.json) {

@@ -8,6 +8,7 @@
 #include "core/page/PageMatrices.h"
 #include "core/page/PageNormals.h"
 #include "core/page/PageRun.h"
+#include "core/page/PageScene.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
@@ -50,12 +51,17 @@ private slots:
     void anEndlessLoopEndsAtTheTimeLimit();
     void networkAttemptsAreRefusedAndListed();
     void timersAndClockAreDeterministic();
+    void theOwnSceneMatchesTheExactImage();
+    void theOwnSceneFailsWhatIsWrong();
+    void anOwnSceneThatCannotBeReadSaysWhy();
 
 private:
     PageFidelity replayed(const PageCapture &capture);
 
     OffscreenRenderer m_offscreen;
     std::optional<PageCapture> m_angel;
+    std::optional<PageCapture> m_webgl2;
+    std::optional<PageCapture> m_three;
     std::vector<CourseMesh> m_courseMeshes;
 };
 
@@ -198,6 +204,7 @@ void TestPageRun::webgl2IndexedDrawnOnce()
     qInfo("webgl2fundamentals: %lld ms, largest difference %d outside edges", run->milliseconds,
           fidelity.largestOutsideEdges);
     QVERIFY(fidelity.faithful());
+    m_webgl2 = capture;
     const std::vector<JavaScriptFinding> normals = checkPageNormals(capture, m_courseMeshes);
     QCOMPARE(normals[1].subject, QStringLiteral("tree.obj"));
     QCOMPARE(normals[1].key, QStringLiteral("normals-exact"));
@@ -232,6 +239,7 @@ void TestPageRun::threeJsShaderMaterial()
     qInfo("three.js: %lld ms, largest difference %d outside edges", run->milliseconds,
           fidelity.largestOutsideEdges);
     QVERIFY(fidelity.faithful());
+    m_three = capture;
     const std::vector<JavaScriptFinding> matrices = checkPageMatrices(capture);
     QVERIFY(!matrices.empty());
     QCOMPARE(matrices[0].key, QStringLiteral("normal-matrix-right"));
@@ -304,6 +312,76 @@ void TestPageRun::timersAndClockAreDeterministic()
     const qsizetype centre = (qsizetype(32) * 96 + 48) * 4;
     QVERIFY(quint8(a.pixels[centre + 2]) > 100); // blue 0.5: the triangle, not the clear colour
     QVERIFY(replayed(a).faithful());
+}
+
+// The student's own scene, read from the capture (meshes from the buffers,
+// camera from the projection, lights and material from the uniforms),
+// against the browser's pixels: the Angel-style page with Blender's normals
+// and with face normals (its own geometry: exact either way), three.js.
+void TestPageRun::theOwnSceneMatchesTheExactImage()
+{
+    QVERIFY(m_angel);
+    const Result<CheckReport> angel = checkPageScene(*m_angel);
+    QVERIFY2(angel.ok(), qPrintable(angel.error()));
+    qInfo("Angel-style page, its own scene: %s", qPrintable(checkSummary(*angel)));
+    QVERIFY(angel->passed());
+    PageRunOptions options = pageOptions(QStringLiteral("angel"));
+    options.steps = {QStringLiteral("select #normals=face")};
+    options.frames = 1;
+    const Result<PageRunOutput> faceted = runPage(options);
+    QVERIFY2(faceted.ok(), qPrintable(faceted.error()));
+    const Result<CheckReport> face = checkPageScene(readPageCapture(faceted->capture).value());
+    QVERIFY2(face.ok(), qPrintable(face.error()));
+    qInfo("with face normals: %s", qPrintable(checkSummary(*face)));
+    QVERIFY(face->passed());
+    if (!m_three)
+        QSKIP("the three.js page did not run");
+    const Result<CheckReport> three = checkPageScene(*m_three);
+    QVERIFY2(three.ok(), qPrintable(three.error()));
+    qInfo("three.js page, its own scene: %s", qPrintable(checkSummary(*three)));
+    QVERIFY(three->passed());
+}
+
+// The controls: a shininess the page did not send, and a normal matrix
+// sent transposed, fail the same comparison.
+void TestPageRun::theOwnSceneFailsWhatIsWrong()
+{
+    QVERIFY(m_angel);
+    PageCapture changed = *m_angel;
+    for (CapturedOp &op : changed.ops)
+        for (CapturedUniform &u : op.uniforms)
+            if (u.name == QLatin1String("shininess"))
+                u.values = {{4.0}};
+    const Result<CheckReport> shininess = checkPageScene(changed);
+    QVERIFY2(shininess.ok(), qPrintable(shininess.error()));
+    qInfo("with shininess 4 read: %s", qPrintable(checkSummary(*shininess)));
+    QVERIFY(!shininess->passed());
+    PageRunOptions options = pageOptions(QStringLiteral("angel"));
+    options.steps = {QStringLiteral("select #normalMatrix=transpose")};
+    options.frames = 1;
+    const Result<PageRunOutput> run = runPage(options);
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const Result<CheckReport> transposed = checkPageScene(readPageCapture(run->capture).value());
+    QVERIFY2(transposed.ok(), qPrintable(transposed.error()));
+    qInfo("with the normal matrix transposed: %s", qPrintable(checkSummary(*transposed)));
+    QVERIFY(!transposed->passed());
+}
+
+void TestPageRun::anOwnSceneThatCannotBeReadSaysWhy()
+{
+    QVERIFY(m_webgl2);
+    const Result<CheckReport> webgl2 = checkPageScene(*m_webgl2);
+    QVERIFY(!webgl2.ok());
+    QVERIFY2(webgl2.error().contains(QLatin1String("no projection of its own")),
+             qPrintable(webgl2.error()));
+    PageCapture unread = *m_angel;
+    for (CapturedOp &op : unread.ops)
+        for (CapturedUniform &u : op.uniforms)
+            if (u.name == QLatin1String("shininess"))
+                u.name = QStringLiteral("zork"); // a float no name or use binds
+    const Result<CheckReport> zork = checkPageScene(unread);
+    QVERIFY(!zork.ok());
+    QVERIFY2(zork.error().contains(QLatin1String("zork")), qPrintable(zork.error()));
 }
 
 QTEST_MAIN(TestPageRun)

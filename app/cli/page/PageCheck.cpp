@@ -4,6 +4,7 @@
 #include "core/page/PageMatrices.h"
 #include "core/page/PageNormals.h"
 #include "core/page/PageProgram.h"
+#include "core/page/PageScene.h"
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/GlFormat.h"
@@ -18,6 +19,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
+
+#include <cmath>
 
 namespace phonglab::cli {
 
@@ -67,6 +70,34 @@ void replay(PageCheck *check)
     check->replayPixels = frame->pixels;
     check->fidelity =
         comparePageFrames(check->capture.pixels, frame->pixels, check->capture.canvas);
+}
+
+void checkOwnScene(PageCheck *check)
+{
+    Result<CheckReport> report = checkPageScene(check->capture);
+    if (report)
+        check->ownScene = std::move(*report);
+    else
+        check->ownSceneWhy = report.error();
+}
+
+QJsonObject ownSceneJson(const PageCheck &check)
+{
+    if (!check.ownScene)
+        return {{key("checked"), false}, {key("why"), check.ownSceneWhy}};
+    const CheckReport &r = *check.ownScene;
+    QJsonArray mistakes;
+    for (const MistakeFinding &f : r.diagnosis.findings)
+        mistakes.append(shaderMistakeKey(f.key));
+    return {
+        {key("checked"), true},
+        {key("verdict"), r.passed() ? key("pass") : key("fail")},
+        {key("psnr_db"),
+         std::isfinite(r.comparison.psnr) ? QJsonValue(r.comparison.psnr) : QJsonValue(key("inf"))},
+        {key("max_error"), r.comparison.maxError},
+        {key("bad_fraction"), r.badFraction()},
+        {key("mistakes"), mistakes},
+        {key("summary"), checkSummary(r)}};
 }
 
 Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *milliseconds)
@@ -142,6 +173,12 @@ QJsonObject fidelityJson(const PageCheck &check)
 
 } // namespace
 
+bool PageCheck::ownSceneFails() const
+{
+    return ownScene && ownScene->comparable() && !ownScene->passed() && fidelity
+        && fidelity->faithful();
+}
+
 bool PageCheck::javascriptMistakes() const
 {
     return std::any_of(javascript.begin(), javascript.end(),
@@ -176,10 +213,13 @@ PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &re
     }
     check.captureJson = captured.json;
     check.capture = std::move(*capture);
-    if (check.capture.pixels.isEmpty())
+    if (check.capture.pixels.isEmpty()) {
         check.fidelityError = PageCheckWords::tr("the page drew nothing to its canvas");
-    else
+        check.ownSceneWhy = check.fidelityError;
+    } else {
         replay(&check);
+        checkOwnScene(&check);
+    }
     check.javascript =
         checkPageNormals(check.capture, courseMeshes(request.meshesFolder, &check.meshErrors));
     const std::vector<JavaScriptFinding> matrices = checkPageMatrices(check.capture);
@@ -226,7 +266,7 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
 
 int reportPageAlone(const PageCheck &check, bool json, const QString &note)
 {
-    const bool passed = check.ok() && !check.javascriptMistakes();
+    const bool passed = check.ok() && !check.javascriptMistakes() && !check.ownSceneFails();
     const QString verdict = !check.ok() ? key("error") : passed ? key("pass") : key("fail");
     if (json) {
         QJsonObject out{{key("verdict"), verdict}, {key("page"), pageJson(check)}};
@@ -293,6 +333,7 @@ QJsonObject pageJson(const PageCheck &check)
             {key("console_errors"), stringArray(c.consoleErrors)},
             {key("fidelity"), fidelityJson(check)},
             {key("javascript"), javascript},
+            {key("own_scene"), ownSceneJson(check)},
             {key("mesh_errors"), stringArray(check.meshErrors)}};
 }
 
@@ -339,6 +380,9 @@ QStringList pageText(const PageCheck &check)
                       .arg(f.message);
     for (const QString &e : check.meshErrors)
         lines << PageCheckWords::tr("course mesh not read: %1").arg(e);
+    lines << (check.ownScene
+                  ? PageCheckWords::tr("own scene: %1").arg(checkSummary(*check.ownScene))
+                  : PageCheckWords::tr("own scene: not checked: %1").arg(check.ownSceneWhy));
     return lines;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include "PageOptions.h"
+#include "core/check/ShaderCheck.h"
 #include "core/page/JavaScriptFinding.h"
 #include "core/page/PageCapture.h"
 #include "core/page/PageFidelity.h"
@@ -33,9 +34,16 @@ struct PageCheck {
     QByteArray replayPixels; // RGBA, bottom row first
     std::vector<JavaScriptFinding> javascript;
     QStringList meshErrors; // --meshes files that could not be read
+    // The student's own scene (core/page/PageScene) against the browser's
+    // pixels; `ownSceneWhy` says why it was not checked.
+    std::optional<CheckReport> ownScene;
+    QString ownSceneWhy;
 
     bool ok() const { return error.isEmpty(); }
     bool javascriptMistakes() const;
+    // The own scene checked and off, where PhongLab draws the page as the
+    // browser did (else the difference may be PhongLab's).
+    bool ownSceneFails() const;
 };
 
 PageCheck checkPage(const PageRequest &request);

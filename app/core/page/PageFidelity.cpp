@@ -31,6 +31,35 @@ std::vector<char> edgeMask(const unsigned char *rgba, int width, int height)
     return mask;
 }
 
+int channelDifference(const unsigned char *a, const unsigned char *b)
+{
+    int d = 0;
+    for (int c = 0; c < 4; ++c)
+        d = std::max(d, std::abs(int(a[c]) - int(b[c])));
+    return d;
+}
+
+// A pixel on a smaller jump (between two facets of face normals): one
+// rasteriser gave it the neighbouring triangle, whose colour the other
+// image has next to it.
+bool onAFacet(const unsigned char *a, const unsigned char *b, QSize size, int x, int y)
+{
+    const auto at = [&](const unsigned char *image, int px, int py) {
+        return image + (std::size_t(py) * size.width() + px) * 4;
+    };
+    for (const auto &[dx, dy] :
+         {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}, std::pair{-1, -1},
+          std::pair{1, -1}, std::pair{-1, 1}, std::pair{1, 1}}) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= size.width() || ny >= size.height())
+            continue;
+        if (channelDifference(at(a, x, y), at(b, nx, ny)) <= kFidelityToleranceSteps
+            || channelDifference(at(b, x, y), at(a, nx, ny)) <= kFidelityToleranceSteps)
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 PageFidelity comparePageFrames(const QByteArray &browser, const QByteArray &here, QSize size)
@@ -53,7 +82,8 @@ PageFidelity comparePageFrames(const QByteArray &browser, const QByteArray &here
             for (int c = 0; c < 4; ++c)
                 difference = std::max(difference, std::abs(int(a[i * 4 + c]) - int(b[i * 4 + c])));
             result.largestAnywhere = std::max(result.largestAnywhere, difference);
-            if (edgesA[i] || edgesB[i]) {
+            if (edgesA[i] || edgesB[i]
+                || (difference > kFidelityToleranceSteps && onAFacet(a, b, size, x, y))) {
                 ++result.edgePixels;
                 continue;
             }

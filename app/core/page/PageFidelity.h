@@ -13,6 +13,9 @@ namespace phonglab {
 // in its 3x3 neighbourhood span more than kEdgeJumpSteps in a channel.
 // Smooth shading changes by a few steps per pixel, so an edge pixel's
 // error is bounded by the jump it sits on, and everything else is compared.
+// A pixel on a smaller jump (between facets of face normals) is an edge
+// pixel too where it has, in one frame, the colour its neighbour has in the
+// other: the same flip of a pixel centre from one triangle to the next.
 inline constexpr int kEdgeJumpSteps = 8;
 // Largest difference, in 8-bit steps, that still means "drawn as the
 // browser drew it": each rasteriser rounds its floats its own way.
