@@ -325,6 +325,9 @@ int check(CheckArgs args)
     const QTemporaryDir compiled;
     QString pageNote;
     if (args.page.wanted) {
+        if (!args.scenePath.isEmpty())
+            if (const SceneLoadResult scene = loadSceneFile(args.scenePath); scene.ok())
+                takeScenePage(&args.page, scene.scene->page, scene.scene->baseDir);
         page = checkPage(args.page);
         if (const QString unwritten = writePageOutputs(*page, args.page.outFolder);
             !unwritten.isEmpty())

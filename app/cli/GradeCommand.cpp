@@ -367,8 +367,13 @@ int grade(const GradeArgs &args)
         printError(ready.error());
         return kExitFailure;
     }
-    if (args.pages.wanted)
-        runSubmissionPages(results, args.pages, args.jobs);
+    if (args.pages.wanted) {
+        PageRequest pages = args.pages;
+        if (!results.scenes.empty()) // the first scene's "page", as the course states it
+            takeScenePage(&pages, results.scenes.front().scene.page,
+                          results.scenes.front().scene.baseDir);
+        runSubmissionPages(results, pages, args.jobs);
+    }
     const QString executable = importExecutable();
     if (executable.isEmpty()) {
         printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "

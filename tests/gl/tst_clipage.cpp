@@ -42,6 +42,7 @@ private slots:
     void aTransposedNormalMatrixFails();
     void aCaptureIsCheckedAgainWithoutTheBrowser();
     void theCourseSceneWithThePagesProgram();
+    void theScenesPageSettingsAreTaken();
     void wrongArgumentsAreUsageErrors();
     void noBrowserSaysHowToInstallOne();
     void gradeRunsEachPage();
@@ -147,6 +148,49 @@ void TestCliPage::theCourseSceneWithThePagesProgram()
         qPrintable(notes));
     QVERIFY2(json.value("verdict").toString() == QLatin1String("pass"),
              qPrintable(QString::fromUtf8(run.out)));
+}
+
+// The teacher states the starter's libraries and a student's step once,
+// in the scene's "page"; the command line names only the project.
+void TestCliPage::theScenesPageSettingsAreTaken()
+{
+    QFile in(sourcePath(QStringLiteral("assets/scenes/default.json")));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QJsonObject scene = QJsonDocument::fromJson(in.readAll()).object();
+    for (const QString &key : {QStringLiteral("objects"), QStringLiteral("mesh")})
+        if (scene.value(key).isString())
+            scene.insert(
+                key, sourcePath(QStringLiteral("assets/scenes/")) + scene.value(key).toString());
+    QJsonArray objects = scene.value("objects").toArray();
+    for (QJsonValueRef o : objects) {
+        QJsonObject object = o.toObject();
+        object.insert(
+            "mesh", sourcePath(QStringLiteral("assets/scenes/")) + object.value("mesh").toString());
+        o = object;
+    }
+    scene.insert("objects", objects);
+    scene.insert("page",
+                 QJsonObject{{"steps", QJsonArray{"select #normalMatrix=transpose"}},
+                             {"libraries",
+                              QJsonArray{testDataPath(QStringLiteral("pages")),
+                                         sourcePath(QStringLiteral("assets/meshes"))}},
+                             {"frame", 1}});
+    const QString path = m_dir.filePath(QStringLiteral("course.json"));
+    QFile out(path);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(scene).toJson());
+    out.close();
+    const ProcessRun run = runPhonglab(
+        {QStringLiteral("check"), path, QStringLiteral("--page"),
+         testDataPath(QStringLiteral("pages/angel")), QStringLiteral("--bind"),
+         QStringLiteral("lightPosition=light-position-camera"), QStringLiteral("--json")});
+    const QJsonObject page = jsonOf(run).value("page").toObject();
+    QVERIFY2(page.value("frame").toInt() == 1, qPrintable(run.err + QString::fromUtf8(run.out)));
+    QCOMPARE(page.value("steps").toArray().size(), 1);
+    QVERIFY2(page.value("refused").toArray().isEmpty(),
+             qPrintable(QJsonDocument(page.value("refused").toArray()).toJson()));
+    QCOMPARE(page.value("javascript").toArray().last().toObject().value("key").toString(),
+             QStringLiteral("normal-matrix-transpose"));
 }
 
 void TestCliPage::wrongArgumentsAreUsageErrors()

@@ -4,6 +4,7 @@
 #include "core/page/CaptureBounds.h"
 #include "core/page/PageCapture.h"
 #include "core/page/PageServer.h"
+#include "core/scene/SceneJson.h"
 
 #include <QDir>
 #include <QFile>
@@ -23,6 +24,7 @@ private slots:
     void outsideAddresses();
     void captureErrorsAreLocated();
     void drawsPastTheirBuffersAreRefused();
+    void aScenesPageSettingsRoundTrip();
 
 private:
     void write(const QString &relative, const QByteArray &bytes = "x");
@@ -144,6 +146,35 @@ void TestPageServer::drawsPastTheirBuffersAreRefused()
     draw.indices = QStringLiteral("3:1"); // no such buffer
     draw.count = 1;
     QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+}
+
+// The scene's "page": what a teacher states once for the starter. Old
+// scenes (none) load as before; every error is located.
+void TestPageServer::aScenesPageSettingsRoundTrip()
+{
+    const QByteArray json = R"({"mesh": "sphere", "lights": [{"position": [1, 2, 3]}],
+        "page": {"steps": ["select #shading=phong", "click #go"], "libraries": ["../course"],
+                 "meshes": "../course/meshes", "frame": 3}})";
+    const SceneLoadResult loaded = parseScene(json, m_dir.path());
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    const PageSettings &page = loaded.scene->page;
+    QCOMPARE(page.steps, (QStringList{"select #shading=phong", "click #go"}));
+    QCOMPARE(page.libraries, QStringList{"../course"});
+    QCOMPARE(page.meshes, QStringLiteral("../course/meshes"));
+    QCOMPARE(page.frame, 3);
+    const SceneLoadResult again = parseScene(sceneToJson(*loaded.scene), m_dir.path());
+    QVERIFY2(again.ok(), qPrintable(again.error));
+    QCOMPARE(again.scene->page, page);
+    QVERIFY(parseScene(R"({"mesh": "sphere"})", m_dir.path()).scene->page.empty());
+    for (const auto &[text, where] :
+         {std::pair{R"({"mesh": "sphere", "page": {"steps": ["a", 2]}})", "page.steps[1]"},
+          std::pair{R"({"mesh": "sphere", "page": {"frame": 0}})", "page.frame"},
+          std::pair{R"({"mesh": "sphere", "page": {"stpes": []}})", "page.stpes"},
+          std::pair{R"({"mesh": "sphere", "page": []})", "page"}}) {
+        const SceneLoadResult wrong = parseScene(text, m_dir.path());
+        QVERIFY(!wrong.ok());
+        QVERIFY2(wrong.error.startsWith(QLatin1String(where)), qPrintable(wrong.error));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestPageServer)

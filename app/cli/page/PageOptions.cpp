@@ -3,6 +3,7 @@
 #include "cli/CliCommon.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileInfo>
 
 namespace phonglab::cli {
@@ -88,6 +89,19 @@ QString pageOptionsHelp(const PageOptions &options)
         + helpLines(options.all());
 }
 
+void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder)
+{
+    const QDir dir(sceneFolder);
+    if (request->run.steps.isEmpty())
+        request->run.steps = settings.steps;
+    for (const QString &library : settings.libraries)
+        request->run.folders.libraries.push_back(QDir::cleanPath(dir.absoluteFilePath(library)));
+    if (request->meshesFolder.isEmpty() && !settings.meshes.isEmpty())
+        request->meshesFolder = QDir::cleanPath(dir.absoluteFilePath(settings.meshes));
+    if (!request->framesGiven && settings.frame > 0)
+        request->run.frames = settings.frame;
+}
+
 namespace {
 
 QString readNumber(const QCommandLineParser &parser, const QCommandLineOption &option, int low,
@@ -153,6 +167,7 @@ QString readPageOptions(const QCommandLineParser &parser, const PageOptions &opt
         if (!wrong.isEmpty())
             return wrong;
     out->run.timeLimitMs = qint64(seconds) * 1000;
+    out->framesGiven = parser.isSet(options.frame);
     out->meshesFolder = parser.value(options.meshes);
     if (!out->meshesFolder.isEmpty() && !QFileInfo(out->meshesFolder).isDir())
         return PageOptionsWords::tr("--meshes: %1 is not a folder").arg(out->meshesFolder);

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/page/PageRun.h"
+#include "core/scene/PageSettings.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -57,13 +58,19 @@ struct PageOptions {
 struct PageRequest {
     bool wanted = false; // --page or --capture given
     PageRunOptions run;
-    QString captureFile;  // --capture
-    QString meshesFolder; // --meshes
-    QString outFolder;    // --page-out
+    QString captureFile;      // --capture
+    QString meshesFolder;     // --meshes
+    QString outFolder;        // --page-out
+    bool framesGiven = false; // --page-frame
 };
 
 // What --help says of running the page, and the options' lines.
 QString pageOptionsHelp(const PageOptions &options);
+
+// The scene's "page" under the command line's: its steps where no
+// --page-step is given, its libraries after --library's, its meshes and
+// frame where the options name none; paths relative to `sceneFolder`.
+void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder);
 
 // Reads them: empty, or the message for usage().
 QString readPageOptions(const QCommandLineParser &parser, const PageOptions &options,

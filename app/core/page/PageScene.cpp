@@ -48,7 +48,8 @@ public:
                 continue;
             if (u->isArray && std::size_t(light) < u->values.size())
                 return u->values[std::size_t(light)];
-            if (!u->isArray && (!isPerLight(meaning) || b->lightIndex == light) && !u->values.empty())
+            if (!u->isArray && (!isPerLight(meaning) || b->lightIndex == light)
+                && !u->values.empty())
                 return u->values.front();
         }
         return std::nullopt;
@@ -172,7 +173,8 @@ Result<MeshData> meshOf(const PageCapture &capture, const CapturedOp &draw, cons
     const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(modelView));
     MeshData mesh;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const glm::dvec4 eye = modelView * glm::dvec4(glm::dvec3(p[i]) / (p[i].w != 0 ? p[i].w : 1.0), 1.0);
+        const glm::dvec4 eye =
+            modelView * glm::dvec4(glm::dvec3(p[i]) / (p[i].w != 0 ? p[i].w : 1.0), 1.0);
         mesh.positions.push_back(glm::vec3(eye));
         // Moved, not normalised: a shader interpolates what its normal matrix
         // gives and normalises per fragment, and the reference does the same.
@@ -209,7 +211,8 @@ Result<Shading> shadingOf(const DrawValues &v, const std::optional<glm::dmat4> &
     const auto shininess = v.number(M::Shininess);
     s.material.shininess = shininess.value_or(1.0);
     const auto lightTerms = v.matrix(M::LightTerms);
-    s.ambient = v.vec3(M::Ambient).value_or(lightTerms ? glm::dvec3((*lightTerms)[0]) : glm::dvec3(0.0));
+    s.ambient =
+        v.vec3(M::Ambient).value_or(lightTerms ? glm::dvec3((*lightTerms)[0]) : glm::dvec3(0.0));
     if (const auto product = v.vec3(M::AmbientProduct)) {
         s.ambient = *product;
         s.material.ka = glm::dvec3(1.0);
@@ -240,14 +243,17 @@ Result<Shading> shadingOf(const DrawValues &v, const std::optional<glm::dmat4> &
         }
         const auto color = v.vec3(M::LightColor, k);
         light.diffuse = v.vec3(diffuseProduct ? M::DiffuseProduct : M::LightDiffuse, k)
-                            .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[1]) : glm::dvec3(1.0)));
+                            .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[1])
+                                                                : glm::dvec3(1.0)));
         light.specular = v.vec3(specularProduct ? M::SpecularProduct : M::LightSpecular, k)
-                             .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[2]) : glm::dvec3(1.0)));
+                             .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[2])
+                                                                 : glm::dvec3(1.0)));
         if (const auto att = v.vec3(M::Attenuation, k))
             light.attenuation = *att;
         else
-            light.attenuation = glm::dvec3(v.number(M::C1, k).value_or(1.0), v.number(M::C2, k).value_or(0.0),
-                                           v.number(M::C3, k).value_or(0.0));
+            light.attenuation =
+                glm::dvec3(v.number(M::C1, k).value_or(1.0), v.number(M::C2, k).value_or(0.0),
+                           v.number(M::C3, k).value_or(0.0));
         s.lights.push_back(light);
     }
     if (s.lights.empty())
@@ -301,12 +307,14 @@ Result<PageScene> pageSceneOf(const PageCapture &capture)
             return fail(PageSceneWords::tr("uniform %1 changes the image but means nothing "
                                            "PhongLab knows")
                             .arg(name));
-        if (draw->state.viewport != std::array<int, 4>{0, 0, capture.canvas.width(), capture.canvas.height()})
+        if (draw->state.viewport
+            != std::array<int, 4>{0, 0, capture.canvas.width(), capture.canvas.height()})
             return fail(PageSceneWords::tr("a draw's viewport is not the whole canvas"));
         const std::optional<glm::dmat4> projection = projectionOf(v);
         if (!projection)
-            return fail(PageSceneWords::tr("the page sends no projection of its own (only a product "
-                                           "of its matrices)"));
+            return fail(
+                PageSceneWords::tr("the page sends no projection of its own (only a product "
+                                   "of its matrices)"));
         const Result<Camera> camera = cameraOf(*projection, capture.canvas);
         if (!camera)
             return fail(camera.error());
@@ -347,11 +355,14 @@ RgbImage withSnappingAllowed(const RgbImage &browser, const RgbImage &exact)
             for (int c = 0; c < 3; ++c) {
                 const auto at = [&](int px, int py) {
                     return int(exact.bytes[(std::size_t(std::clamp(py, 0, h - 1)) * w
-                                            + std::clamp(px, 0, w - 1)) * 3 + c]);
+                                            + std::clamp(px, 0, w - 1))
+                                               * 3
+                                           + c]);
                 };
                 const int e = at(x, y);
-                const int gradient = std::max({std::abs(at(x - 1, y) - e), std::abs(at(x + 1, y) - e),
-                                               std::abs(at(x, y - 1) - e), std::abs(at(x, y + 1) - e)});
+                const int gradient =
+                    std::max({std::abs(at(x - 1, y) - e), std::abs(at(x + 1, y) - e),
+                              std::abs(at(x, y - 1) - e), std::abs(at(x, y + 1) - e)});
                 const int slack = (gradient + kSnapSubpixels - 1) / kSnapSubpixels;
                 std::uint8_t &b = out.bytes[(std::size_t(y) * w + x) * 3 + c];
                 // Across a jump (a crease of face normals, an object's edge
@@ -359,8 +370,9 @@ RgbImage withSnappingAllowed(const RgbImage &browser, const RgbImage &exact)
                 // the neighbour's.
                 const int pixel = int(browser.bytes[(std::size_t(y) * w + x) * 3 + c]);
                 bool neighbours = false;
-                for (const auto &[dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}, std::pair{-1, -1},
-                                      std::pair{1, -1}, std::pair{-1, 1}, std::pair{1, 1}})
+                for (const auto &[dx, dy] :
+                     {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1},
+                      std::pair{-1, -1}, std::pair{1, -1}, std::pair{-1, 1}, std::pair{1, 1}})
                     neighbours = neighbours
                         || (std::abs(at(x + dx, y + dy) - e) > kDefaultCheckToleranceSteps
                             && std::abs(pixel - at(x + dx, y + dy)) <= kDefaultCheckToleranceSteps);
@@ -402,7 +414,8 @@ Result<CheckReport> checkPageScene(const PageCapture &capture)
         makeCheckReference(scene->scene, scene->meshes, browser.width, browser.height);
     if (!reference)
         return fail(reference.error());
-    CheckReport report = checkRender(withSnappingAllowed(browser, reference->exactImage), *reference);
+    CheckReport report =
+        checkRender(withSnappingAllowed(browser, reference->exactImage), *reference);
     if (const CapturedProgram *program = capture.program(scene->program))
         nameWhatTheCodeDoes(report, program->vertex.toUtf8(), program->fragment.toUtf8());
     return report;

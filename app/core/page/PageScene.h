@@ -30,7 +30,7 @@ namespace phonglab {
 struct PageScene {
     Scene scene;
     std::vector<std::shared_ptr<const MeshData>> meshes; // one per scene object
-    int program = 0; // the program whose draws it holds
+    int program = 0;                                     // the program whose draws it holds
 };
 
 Result<PageScene> pageSceneOf(const PageCapture &capture);

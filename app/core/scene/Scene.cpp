@@ -26,7 +26,8 @@ bool Scene::operator==(const Scene &other) const
     return objects == other.objects && camera == other.camera && ambient == other.ambient
         && lights == other.lights && shading == other.shading && background == other.background
         && vertexShader == other.vertexShader && fragmentShader == other.fragmentShader
-        && uniforms == other.uniforms && bindings == other.bindings && course == other.course;
+        && uniforms == other.uniforms && bindings == other.bindings && course == other.course
+        && page == other.page;
 }
 
 } // namespace phonglab

@@ -1,6 +1,7 @@
 #pragma once
 #include "Material.h"
 #include "NormalOptions.h"
+#include "PageSettings.h"
 #include "PointLight.h"
 #include "ShadingMethod.h"
 #include "Transform.h"
@@ -64,6 +65,8 @@ struct Scene {
     // "as-written") and "defines" ({"NUM_POINT_LIGHTS": "2"}: tokens the
     // page's JavaScript replaces).
     CourseOptions course;
+    // "page": how the course's page is run with this scene (core/scene/PageSettings.h).
+    PageSettings page;
 
     // Folder the scene was loaded from; relative mesh paths resolve against it.
     // Not part of the scene's content, so not compared.

@@ -1,6 +1,7 @@
 #include "SceneJson.h"
 
 #include "SceneJsonReader.h"
+#include "ScenePageJson.h"
 #include "ScenePaths.h"
 
 #include <QFile>
@@ -219,7 +220,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
                     {"mesh"_L1, "objects"_L1, "transform"_L1, "material"_L1, "normals"_L1,
                      "detail"_L1, "camera"_L1, "ambient"_L1, "lights"_L1, "shading"_L1,
                      "background"_L1, "shaders"_L1, "uniforms"_L1, "bindings"_L1, "defines"_L1,
-                     "precision"_L1, "format"_L1, "generator"_L1});
+                     "precision"_L1, "page"_L1, "format"_L1, "generator"_L1});
     Scene scene;
     scene.baseDir = baseDir;
     const bool ok = readFormat(root.value("format"_L1), QStringLiteral("format"))
@@ -236,7 +237,9 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
         && take(scenejson::readDefines(root.value("defines"_L1), QStringLiteral("defines")),
                 scene.course.defines)
         && take(scenejson::readPrecision(root.value("precision"_L1), QStringLiteral("precision")),
-                scene.course.precision);
+                scene.course.precision)
+        && take(scenejson::readPageSettings(root.value("page"_L1), QStringLiteral("page")),
+                scene.page);
     if (ok)
         result.scene = std::move(scene);
     else

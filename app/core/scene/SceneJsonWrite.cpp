@@ -1,5 +1,6 @@
 #include "SceneJson.h"
 #include "SceneJsonText.h"
+#include "ScenePageJson.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -131,6 +132,8 @@ QByteArray sceneToJson(const Scene &scene)
         root.insert(QStringLiteral("defines"), scenejson::definesJson(scene.course.defines));
     if (scene.course.precision != PrecisionRule::Highp)
         root.insert(QStringLiteral("precision"), precisionRuleKey(scene.course.precision));
+    if (!scene.page.empty())
+        root.insert(QStringLiteral("page"), scenejson::pageSettingsJson(scene.page));
     if (!scene.vertexShader.isEmpty() || !scene.fragmentShader.isEmpty()) {
         QJsonObject shaders;
         if (!scene.vertexShader.isEmpty())
