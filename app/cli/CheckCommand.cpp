@@ -7,9 +7,11 @@
 #include "SceneStages.h"
 #include "core/project/ProjectPrograms.h"
 #include "core/scene/SceneJson.h"
-#include "page/PageCheck.h"
+#include "page/PageOptions.h"
+#include "page/PageReport.h"
 #include "render/CheckReportOutput.h"
 #include "render/QtImages.h"
+#include "render/page/PageCheckOutput.h"
 
 #include <QFileInfo>
 

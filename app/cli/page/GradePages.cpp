@@ -1,7 +1,7 @@
 #include "GradePages.h"
 
-#include "PageCheck.h"
 #include "cli/CliCommon.h"
+#include "render/page/PageCheckOutput.h"
 
 #include <QCoreApplication>
 #include <QDir>

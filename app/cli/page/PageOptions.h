@@ -1,6 +1,6 @@
 #pragma once
-#include "core/page/PageRun.h"
 #include "core/scene/PageSettings.h"
+#include "render/page/PageCheck.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -51,17 +51,6 @@ struct PageOptions {
     {
         return {QStringLiteral("library"), QStringLiteral("url-map"), QStringLiteral("page-step")};
     }
-};
-
-// What the options asked for. `grade --pages` fills `run.folders.project`
-// per submission.
-struct PageRequest {
-    bool wanted = false; // --page or --capture given
-    PageRunOptions run;
-    QString captureFile;      // --capture
-    QString meshesFolder;     // --meshes
-    QString outFolder;        // --page-out
-    bool framesGiven = false; // --page-frame
 };
 
 // What --help says of running the page, and the options' lines.

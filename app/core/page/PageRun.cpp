@@ -97,12 +97,12 @@ public:
                  served.served() ? PageRunWords::tr("larger than 64 MB") : served.refusal});
     }
 
-    std::vector<PageRequest> requests() const { return m_requests; }
+    std::vector<PageFetch> requests() const { return m_requests; }
 
 private:
     BrowserPipe *m_pipe;
     PageFolders m_folders;
-    std::vector<PageRequest> m_requests;
+    std::vector<PageFetch> m_requests;
 };
 
 Result<QString> openPageSession(BrowserPipe &pipe)
@@ -168,13 +168,13 @@ QString servedName(const QString &file, const PageFolders &folders)
 // The page's capture with what PageRun knows beside it: the page, the files
 // served, the requests refused.
 QByteArray withRequests(const QByteArray &capture, const QString &page,
-                        const std::vector<PageRequest> &requests, const PageFolders &folders)
+                        const std::vector<PageFetch> &requests, const PageFolders &folders)
 {
     QJsonObject o = QJsonDocument::fromJson(capture).object();
     o.insert(str("page"), page);
     QJsonArray served;
     QJsonArray refused = o.value(str("refused")).toArray();
-    for (const PageRequest &r : requests) {
+    for (const PageFetch &r : requests) {
         if (!r.file.isEmpty())
             served.append(servedName(r.file, folders));
         else

@@ -27,8 +27,8 @@ struct PageRunOptions {
     QString workFolder; // the throwaway profile goes under it; empty: a temporary folder
 };
 
-// One request the page made, and what answered it.
-struct PageRequest {
+// One file the page asked for, and what answered it.
+struct PageFetch {
     QString url;
     QString file;    // the file served; empty when refused
     QString refusal; // why not
@@ -37,7 +37,7 @@ struct PageRequest {
 struct PageRunOutput {
     QByteArray capture; // core/page/capture.js's JSON (core/page/PageCapture reads it)
     QString pageFile;   // the page run, relative to the project
-    std::vector<PageRequest> requests;
+    std::vector<PageFetch> requests;
     qint64 milliseconds = 0; // browser start to capture, stop included
 };
 

@@ -14,7 +14,10 @@ struct PageSettings {
     QString meshes;        // the folder of the course's meshes the normals are compared with
     int frame = 0;         // the frame captured; 0: the default (5)
 
-    bool empty() const { return steps.isEmpty() && libraries.isEmpty() && meshes.isEmpty() && frame == 0; }
+    bool empty() const
+    {
+        return steps.isEmpty() && libraries.isEmpty() && meshes.isEmpty() && frame == 0;
+    }
     bool operator==(const PageSettings &) const = default;
 };
 

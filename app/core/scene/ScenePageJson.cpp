@@ -21,8 +21,9 @@ Result<QStringList> readStrings(const QJsonValue &value, const QString &path)
     if (value.isUndefined())
         return QStringList{};
     if (!value.isArray())
-        return fail(path + ScenePageJsonWords::tr(": expected an array of strings (got %1)")
-                               .arg(describeType(value)));
+        return fail(path
+                    + ScenePageJsonWords::tr(": expected an array of strings (got %1)")
+                          .arg(describeType(value)));
     QStringList out;
     const QJsonArray array = value.toArray();
     for (qsizetype i = 0; i < array.size(); ++i) {
@@ -42,8 +43,9 @@ Result<PageSettings> readPageSettings(const QJsonValue &value, const QString &pa
     if (value.isUndefined())
         return PageSettings{};
     if (!value.isObject())
-        return fail(path + ScenePageJsonWords::tr(": expected an object (got %1)")
-                               .arg(describeType(value)));
+        return fail(
+            path
+            + ScenePageJsonWords::tr(": expected an object (got %1)").arg(describeType(value)));
     const QJsonObject o = value.toObject();
     static const QStringList known{QStringLiteral("steps"), QStringLiteral("libraries"),
                                    QStringLiteral("meshes"), QStringLiteral("frame")};
@@ -53,7 +55,8 @@ Result<PageSettings> readPageSettings(const QJsonValue &value, const QString &pa
                         + ScenePageJsonWords::tr(": unknown key (known: %1)")
                               .arg(known.join(QStringLiteral(", "))));
     PageSettings out;
-    Result<QStringList> steps = readStrings(o.value(QStringLiteral("steps")), path + QStringLiteral(".steps"));
+    Result<QStringList> steps =
+        readStrings(o.value(QStringLiteral("steps")), path + QStringLiteral(".steps"));
     if (!steps)
         return fail(steps.error());
     out.steps = *steps;

@@ -1,5 +1,5 @@
 #pragma once
-#include "PageOptions.h"
+#include "core/page/PageRun.h"
 #include "core/check/ShaderCheck.h"
 #include "core/page/JavaScriptFinding.h"
 #include "core/page/PageCapture.h"
@@ -13,10 +13,24 @@
 #include <optional>
 #include <vector>
 
-namespace phonglab::cli {
+namespace phonglab {
+
+// What is run and checked: the page (or a capture file), the course's
+// meshes, where the capture and frames go. cli/page/PageOptions reads it
+// from the command line; `grade --pages` fills `run.folders.project` per
+// submission; the window from its project.
+struct PageRequest {
+    bool wanted = false; // --page or --capture given
+    PageRunOptions run;
+    QString captureFile;      // --capture
+    QString meshesFolder;     // --meshes
+    QString outFolder;        // --page-out
+    bool framesGiven = false; // --page-frame
+};
+
 
 // A student's page checked as the browser ran it (phonglab check --page,
-// grade --pages): the capture (core/page), then
+// grade --pages, the window's Run the Page): the capture (core/page), then
 //  - fidelity: PhongLab draws the captured frame again and compares it with
 //    the browser's (a difference is PhongLab's, never the student's);
 //  - the JavaScript half: the normals sent against the course's meshes,
@@ -78,14 +92,6 @@ struct PageStages {
 PageStages pageStagesForScene(const PageCheck &check, const QString &project,
                               const QString &compiledFolder);
 
-// `check --page` without a scene (or a page that could not be run): the
-// page's own findings printed, as text or JSON; the exit code.
-int reportPageAlone(const PageCheck &check, bool json, const QString &note);
 
-// The JSON "page" object: {file, webgl, frame, animated, canvas,
-// milliseconds, steps, served, refused, errors, console_errors, fidelity,
-// javascript, own_scene}; and the same as text lines.
-QJsonObject pageJson(const PageCheck &check);
-QStringList pageText(const PageCheck &check);
 
-} // namespace phonglab::cli
+} // namespace phonglab

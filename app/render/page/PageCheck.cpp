@@ -1,13 +1,11 @@
 #include "PageCheck.h"
 
-#include "cli/CliCommon.h"
 #include "core/page/PageMatrices.h"
 #include "core/page/PageNormals.h"
 #include "core/page/PageProgram.h"
 #include "core/page/PageScene.h"
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshLoader.h"
-#include "render/GlFormat.h"
 #include "render/OffscreenRenderer.h"
 #include "render/page/PageReplay.h"
 
@@ -16,16 +14,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QSaveFile>
 
-#include <cmath>
-
-namespace phonglab::cli {
+namespace phonglab {
 
 struct PageCheckWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::PageCheck)
+    Q_DECLARE_TR_FUNCTIONS(phonglab::PageCheck)
 };
 
 namespace {
@@ -81,25 +75,6 @@ void checkOwnScene(PageCheck *check)
         check->ownSceneWhy = report.error();
 }
 
-QJsonObject ownSceneJson(const PageCheck &check)
-{
-    if (!check.ownScene)
-        return {{key("checked"), false}, {key("why"), check.ownSceneWhy}};
-    const CheckReport &r = *check.ownScene;
-    QJsonArray mistakes;
-    for (const MistakeFinding &f : r.diagnosis.findings)
-        mistakes.append(shaderMistakeKey(f.key));
-    return {
-        {key("checked"), true},
-        {key("verdict"), r.passed() ? key("pass") : key("fail")},
-        {key("psnr_db"),
-         std::isfinite(r.comparison.psnr) ? QJsonValue(r.comparison.psnr) : QJsonValue(key("inf"))},
-        {key("max_error"), r.comparison.maxError},
-        {key("bad_fraction"), r.badFraction()},
-        {key("mistakes"), mistakes},
-        {key("summary"), checkSummary(r)}};
-}
-
 Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *milliseconds)
 {
     if (!request.captureFile.isEmpty()) {
@@ -149,26 +124,6 @@ QImage differenceImage(const PageCheck &check)
                                                             : qRgb(230, 30, 30));
         }
     return out;
-}
-
-QJsonArray stringArray(const QStringList &list)
-{
-    return QJsonArray::fromStringList(list);
-}
-
-QJsonObject fidelityJson(const PageCheck &check)
-{
-    if (!check.fidelity)
-        return {{key("error"), check.fidelityError}};
-    const PageFidelity &f = *check.fidelity;
-    return {{key("faithful"), f.faithful() && check.notReplayed.isEmpty()},
-            {key("largest_difference"), f.largestOutsideEdges},
-            {key("largest_anywhere"), f.largestAnywhere},
-            {key("edge_pixels"), f.edgePixels},
-            {key("differing_pixels"), f.differingOutsideEdges},
-            {key("tolerance"), kFidelityToleranceSteps},
-            {key("worst"), f.worst.x() < 0 ? QJsonValue() : QJsonArray{f.worst.x(), f.worst.y()}},
-            {key("not_replayed"), stringArray(check.notReplayed)}};
 }
 
 } // namespace
@@ -264,26 +219,6 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
     return stages;
 }
 
-int reportPageAlone(const PageCheck &check, bool json, const QString &note)
-{
-    const bool passed = check.ok() && !check.javascriptMistakes() && !check.ownSceneFails();
-    const QString verdict = !check.ok() ? key("error") : passed ? key("pass") : key("fail");
-    if (json) {
-        QJsonObject out{{key("verdict"), verdict}, {key("page"), pageJson(check)}};
-        if (!note.isEmpty())
-            out.insert(key("notes"), QJsonArray{note});
-        printLine(QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Indented)).trimmed());
-    } else {
-        if (!check.ok())
-            printError(check.error);
-        for (const QString &line :
-             pageText(check) + (note.isEmpty() ? QStringList() : QStringList{note}))
-            printLine(line);
-        printLine(PageCheckWords::tr("verdict: %1").arg(verdict));
-    }
-    return passed ? kExitOk : kExitFailure;
-}
-
 QString writePageOutputs(const PageCheck &check, const QString &folder)
 {
     if (folder.isEmpty() || !check.ok())
@@ -305,85 +240,4 @@ QString writePageOutputs(const PageCheck &check, const QString &folder)
     return {};
 }
 
-QJsonObject pageJson(const PageCheck &check)
-{
-    if (!check.ok())
-        return {{key("error"), check.error}};
-    const PageCapture &c = check.capture;
-    QJsonArray steps;
-    for (const PageStep &s : c.steps)
-        steps.append(QJsonObject{{key("step"), s.step}, {key("problem"), s.problem}});
-    QJsonArray javascript;
-    for (const JavaScriptFinding &f : check.javascript)
-        javascript.append(QJsonObject{{key("key"), f.key},
-                                      {key("subject"), f.subject},
-                                      {key("mistake"), f.mistake},
-                                      {key("message"), f.message},
-                                      {key("where"), f.where}});
-    return {{key("file"), c.page},
-            {key("webgl"), c.webgl},
-            {key("frame"), c.frame},
-            {key("animated"), c.animated},
-            {key("canvas"), QJsonArray{c.canvas.width(), c.canvas.height()}},
-            {key("milliseconds"), check.milliseconds},
-            {key("steps"), steps},
-            {key("served"), stringArray(c.served)},
-            {key("refused"), stringArray(c.refused)},
-            {key("errors"), stringArray(c.errors)},
-            {key("console_errors"), stringArray(c.consoleErrors)},
-            {key("fidelity"), fidelityJson(check)},
-            {key("javascript"), javascript},
-            {key("own_scene"), ownSceneJson(check)},
-            {key("mesh_errors"), stringArray(check.meshErrors)}};
-}
-
-QStringList pageText(const PageCheck &check)
-{
-    if (!check.ok())
-        return {PageCheckWords::tr("page: not run: %1").arg(check.error)};
-    const PageCapture &c = check.capture;
-    QStringList lines;
-    lines << PageCheckWords::tr("page: %1, WebGL %2, frame %3 of a %4x%5 canvas%6")
-                 .arg(c.page)
-                 .arg(c.webgl)
-                 .arg(c.frame)
-                 .arg(c.canvas.width())
-                 .arg(c.canvas.height())
-                 .arg(check.milliseconds > 0
-                          ? QStringLiteral(" (%1 s)").arg(check.milliseconds / 1000.0, 0, 'f', 1)
-                          : QString());
-    for (const PageStep &s : c.steps)
-        if (!s.problem.isEmpty())
-            lines << PageCheckWords::tr("page step '%1': %2").arg(s.step, s.problem);
-    for (const QString &r : c.refused)
-        lines << PageCheckWords::tr("refused (the page gets no network): %1").arg(r);
-    for (const QString &e : c.errors + c.consoleErrors)
-        lines << PageCheckWords::tr("page error: %1").arg(e);
-    if (check.fidelity)
-        lines << (check.fidelity->faithful() && check.notReplayed.isEmpty()
-                      ? PageCheckWords::tr("fidelity: PhongLab draws the page's frame as the "
-                                           "browser did (largest difference %1 outside edges)")
-                            .arg(check.fidelity->largestOutsideEdges)
-                      : PageCheckWords::tr("fidelity: PhongLab does not draw the page's frame as "
-                                           "the browser did (largest difference %1 outside "
-                                           "edges): what follows may be PhongLab's mistake, "
-                                           "not the student's")
-                            .arg(check.fidelity->largestOutsideEdges));
-    else
-        lines << PageCheckWords::tr("fidelity: not checked: %1").arg(check.fidelityError);
-    for (const QString &n : check.notReplayed)
-        lines << PageCheckWords::tr("not drawn again: %1").arg(n);
-    for (const JavaScriptFinding &f : check.javascript)
-        lines << (f.where.isEmpty() ? QString() : f.where + QStringLiteral(": "))
-                + (f.mistake ? PageCheckWords::tr("javascript: %1")
-                             : PageCheckWords::tr("javascript ok: %1"))
-                      .arg(f.message);
-    for (const QString &e : check.meshErrors)
-        lines << PageCheckWords::tr("course mesh not read: %1").arg(e);
-    lines << (check.ownScene
-                  ? PageCheckWords::tr("own scene: %1").arg(checkSummary(*check.ownScene))
-                  : PageCheckWords::tr("own scene: not checked: %1").arg(check.ownSceneWhy));
-    return lines;
-}
-
-} // namespace phonglab::cli
+} // namespace phonglab
