@@ -89,19 +89,6 @@ QString pageOptionsHelp(const PageOptions &options)
         + helpLines(options.all());
 }
 
-void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder)
-{
-    const QDir dir(sceneFolder);
-    if (request->run.steps.isEmpty())
-        request->run.steps = settings.steps;
-    for (const QString &library : settings.libraries)
-        request->run.folders.libraries.push_back(QDir::cleanPath(dir.absoluteFilePath(library)));
-    if (request->meshesFolder.isEmpty() && !settings.meshes.isEmpty())
-        request->meshesFolder = QDir::cleanPath(dir.absoluteFilePath(settings.meshes));
-    if (!request->framesGiven && settings.frame > 0)
-        request->run.frames = settings.frame;
-}
-
 namespace {
 
 QString readNumber(const QCommandLineParser &parser, const QCommandLineOption &option, int low,

@@ -56,11 +56,6 @@ struct PageOptions {
 // What --help says of running the page, and the options' lines.
 QString pageOptionsHelp(const PageOptions &options);
 
-// The scene's "page" under the command line's: its steps where no
-// --page-step is given, its libraries after --library's, its meshes and
-// frame where the options name none; paths relative to `sceneFolder`.
-void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder);
-
 // Reads them: empty, or the message for usage().
 QString readPageOptions(const QCommandLineParser &parser, const PageOptions &options,
                         PageRequest *out);

@@ -182,8 +182,10 @@ Result<> BrowserPipe::readMore()
     const qint64 left = m_limitMs - m_clock.elapsed();
     if (left <= 0)
         return fail(timeLimitMessage());
+    if (cancelled && cancelled())
+        return fail(BrowserPipeWords::tr("cancelled"));
     pollfd fd{m_fromBrowser, POLLIN, 0};
-    const int ready = ::poll(&fd, 1, int(std::min<qint64>(left, 1000)));
+    const int ready = ::poll(&fd, 1, int(std::min<qint64>(left, 100)));
     if (ready < 0 && errno == EINTR)
         return {};
     if (ready <= 0)

@@ -52,6 +52,8 @@ public:
     // Waits until `done` holds, handling events.
     Result<> waitUntil(const std::function<bool()> &done);
 
+    // Asked while waiting: true stops the wait ("cancelled").
+    std::function<bool()> cancelled;
     // Each event: its method, params and session id.
     std::function<void(const QString &, const QJsonObject &, const QString &)> onEvent;
 

@@ -251,6 +251,7 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
                        home + str("/browser.log"), options.timeLimitMs);
         !started)
         return fail(started.error());
+    pipe.cancelled = options.cancelled;
     RequestAnswers answers(&pipe, options.folders);
     bool loaded = false;
     pipe.onEvent = [&](const QString &method, const QJsonObject &params, const QString &session) {

@@ -7,6 +7,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
 #include <vector>
 
 namespace phonglab {
@@ -25,6 +26,8 @@ struct PageRunOptions {
     quint32 seed = 1;
     QString browser;    // empty: BrowserPipe::executable()
     QString workFolder; // the throwaway profile goes under it; empty: a temporary folder
+    // Asked now and then from the run's thread: true stops it ("cancelled").
+    std::function<bool()> cancelled;
 };
 
 // One file the page asked for, and what answered it.

@@ -140,6 +140,19 @@ bool PageCheck::javascriptMistakes() const
                        [](const JavaScriptFinding &f) { return f.mistake; });
 }
 
+void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder)
+{
+    const QDir dir(sceneFolder);
+    if (request->run.steps.isEmpty())
+        request->run.steps = settings.steps;
+    for (const QString &library : settings.libraries)
+        request->run.folders.libraries.push_back(QDir::cleanPath(dir.absoluteFilePath(library)));
+    if (request->meshesFolder.isEmpty() && !settings.meshes.isEmpty())
+        request->meshesFolder = QDir::cleanPath(dir.absoluteFilePath(settings.meshes));
+    if (!request->framesGiven && settings.frame > 0)
+        request->run.frames = settings.frame;
+}
+
 PageCapturing capturePage(const PageRequest &request)
 {
     PageCapturing out;

@@ -1,9 +1,10 @@
 #pragma once
-#include "core/page/PageRun.h"
 #include "core/check/ShaderCheck.h"
 #include "core/page/JavaScriptFinding.h"
 #include "core/page/PageCapture.h"
 #include "core/page/PageFidelity.h"
+#include "core/page/PageRun.h"
+#include "core/scene/PageSettings.h"
 
 #include <QByteArray>
 #include <QJsonObject>
@@ -27,7 +28,6 @@ struct PageRequest {
     QString outFolder;        // --page-out
     bool framesGiven = false; // --page-frame
 };
-
 
 // A student's page checked as the browser ran it (phonglab check --page,
 // grade --pages, the window's Run the Page): the capture (core/page), then
@@ -60,6 +60,11 @@ struct PageCheck {
     bool ownSceneFails() const;
 };
 
+// The scene's "page" under the command line's (or the window's): its steps where no
+// --page-step is given, its libraries after --library's, its meshes and
+// frame where the options name none; paths relative to `sceneFolder`.
+void takeScenePage(PageRequest *request, const PageSettings &settings, const QString &sceneFolder);
+
 PageCheck checkPage(const PageRequest &request);
 
 // The same in two halves: the capture (the browser run, or the file read;
@@ -91,7 +96,5 @@ struct PageStages {
 };
 PageStages pageStagesForScene(const PageCheck &check, const QString &project,
                               const QString &compiledFolder);
-
-
 
 } // namespace phonglab

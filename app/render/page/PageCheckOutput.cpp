@@ -115,13 +115,15 @@ QStringList pageText(const PageCheck &check)
         lines << PageCheckOutputWords::tr("page error: %1").arg(e);
     if (check.fidelity)
         lines << (check.fidelity->faithful() && check.notReplayed.isEmpty()
-                      ? PageCheckOutputWords::tr("fidelity: PhongLab draws the page's frame as the "
-                                           "browser did (largest difference %1 outside edges)")
+                      ? PageCheckOutputWords::tr(
+                            "fidelity: PhongLab draws the page's frame as the "
+                            "browser did (largest difference %1 outside edges)")
                             .arg(check.fidelity->largestOutsideEdges)
-                      : PageCheckOutputWords::tr("fidelity: PhongLab does not draw the page's frame as "
-                                           "the browser did (largest difference %1 outside "
-                                           "edges): what follows may be PhongLab's mistake, "
-                                           "not the student's")
+                      : PageCheckOutputWords::tr(
+                            "fidelity: PhongLab does not draw the page's frame as "
+                            "the browser did (largest difference %1 outside "
+                            "edges): what follows may be PhongLab's mistake, "
+                            "not the student's")
                             .arg(check.fidelity->largestOutsideEdges));
     else
         lines << PageCheckOutputWords::tr("fidelity: not checked: %1").arg(check.fidelityError);

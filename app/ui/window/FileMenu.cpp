@@ -8,7 +8,9 @@
 #include "WarningBox.h"
 #include "core/project/ProjectPrograms.h"
 #include "core/scene/ResourcePaths.h"
+#include "core/scene/SceneJson.h"
 #include "core/scene/ScenePaths.h"
+#include "ui/check/PageRunDialog.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/viewport/Viewport.h"
 
@@ -39,6 +41,8 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
     menu->addAction(tr("Open S&hader…"), this, &FileMenu::chooseAndOpenShaders);
     menu->addAction(tr("Open &Project…"), this, &FileMenu::chooseAndOpenProject);
     menu->addAction(tr("Open Project &Folder…"), this, &FileMenu::chooseAndOpenProjectFolder);
+    menu->addAction(tr("&Run the Page…"), this, &FileMenu::runThePage)
+        ->setObjectName(QStringLiteral("runThePage"));
     m_recentFiles = new RecentFiles(menu->addMenu(tr("&Recent")), this);
     connect(m_recentFiles, &RecentFiles::fileChosen, this,
             [this](const QString &path) { openOrExplain({path}); });
@@ -122,6 +126,8 @@ void FileMenu::chooseAndOpenProjectFolder()
 // one, the one `page` holds offered first.
 void FileMenu::openProject(const QString &folder, const QString &page)
 {
+    m_projectFolder = folder;
+    m_projectPage = page.isEmpty() ? QString() : QFileInfo(page).fileName();
     const Project project = readProject(folder);
     QString name;
     if (const std::vector<const ProjectProgram *> lit = litPrograms(project); lit.size() > 1) {
@@ -149,6 +155,25 @@ void FileMenu::openProject(const QString &folder, const QString &page)
         tr("Opened %1 of %2")
             .arg(chosen->name, QFileInfo(page.isEmpty() ? folder : page).fileName()),
         kMessageTimeoutMs);
+}
+
+void FileMenu::runThePage()
+{
+    QString folder = m_projectFolder;
+    if (folder.isEmpty())
+        folder = QFileDialog::getExistingDirectory(m_window, tr("Run a WebGL Project's Page"),
+                                                   dialogFolder());
+    if (folder.isEmpty())
+        return;
+    PageRequest request;
+    request.run.folders.project = folder;
+    request.run.pageFile = m_projectPage;
+    if (const QString scene = m_window->document()->path(); !scene.isEmpty())
+        if (const SceneLoadResult loaded = loadSceneFile(scene); loaded.ok())
+            takeScenePage(&request, loaded.scene->page, loaded.scene->baseDir);
+    auto *dialog = new PageRunDialog(request, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
 }
 
 bool FileMenu::mayDiscardShaderEdits()

@@ -35,6 +35,9 @@ private:
     void chooseAndOpenProject();
     void chooseAndOpenProjectFolder();
     void openProject(const QString &folder, const QString &page);
+    // File → Run the Page: the project last opened (else one chosen), run
+    // in the browser with the scene's "page" (ui/check/PageRunDialog).
+    void runThePage();
     bool mayDiscardShaderEdits();
     void explainMissingRecentFile(const QString &path);
     void saveToCurrentFile();
@@ -46,6 +49,8 @@ private:
     MainWindow *m_window = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     QString m_lastFolder;
+    QString m_projectFolder; // the WebGL project last opened
+    QString m_projectPage;   // its page, relative; empty: index.html or its only page
 };
 
 } // namespace phonglab
