@@ -598,6 +598,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>the browser went away</source>
         <translation>der Browser ist weg</translation>
     </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BuildStatusText</name>
@@ -1264,6 +1268,14 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
     <message>
         <source>Open WebGL Project Folder</source>
         <translation>WebGL-Projektordner öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Run the Page…</source>
+        <translation>Seite &amp;ausführen…</translation>
+    </message>
+    <message>
+        <source>Run a WebGL Project&apos;s Page</source>
+        <translation>Seite eines WebGL-Projekts ausführen</translation>
     </message>
 </context>
 <context>
@@ -2426,6 +2438,88 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::PageCheck</name>
+    <message>
+        <source>%1: cannot make the folder</source>
+        <translation>%1: Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>the page drew nothing to its canvas</source>
+        <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
+    </message>
+    <message>
+        <source>the page drew no program that lights: the course scene is not checked</source>
+        <translation>die Seite hat kein Programm gezeichnet, das beleuchtet: die Kursszene wird nicht geprüft</translation>
+    </message>
+    <message>
+        <source>the course scene is checked with program %1 as the page compiled it: %2 and %3</source>
+        <translation>die Kursszene wird mit Programm %1 geprüft, wie die Seite es kompiliert hat: %2 und %3</translation>
+    </message>
+    <message>
+        <source>%1: cannot write</source>
+        <translation>%1: nicht schreibbar</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageCheckOutput</name>
+    <message>
+        <source>page: not run: %1</source>
+        <translation>Seite: nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <source>page: %1, WebGL %2, frame %3 of a %4x%5 canvas%6</source>
+        <translation>Seite: %1, WebGL %2, Bild %3 einer Zeichenfläche von %4x%5%6</translation>
+    </message>
+    <message>
+        <source>page step &apos;%1&apos;: %2</source>
+        <translation>Seitenschritt &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>refused (the page gets no network): %1</source>
+        <translation>abgewiesen (die Seite bekommt kein Netzwerk): %1</translation>
+    </message>
+    <message>
+        <source>page error: %1</source>
+        <translation>Fehler der Seite: %1</translation>
+    </message>
+    <message>
+        <source>fidelity: PhongLab draws the page&apos;s frame as the browser did (largest difference %1 outside edges)</source>
+        <translation>Treue: PhongLab zeichnet das Bild der Seite so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten)</translation>
+    </message>
+    <message>
+        <source>fidelity: PhongLab does not draw the page&apos;s frame as the browser did (largest difference %1 outside edges): what follows may be PhongLab&apos;s mistake, not the student&apos;s</source>
+        <translation>Treue: PhongLab zeichnet das Bild der Seite nicht so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten): was folgt, kann PhongLabs Fehler sein, nicht der des Studierenden</translation>
+    </message>
+    <message>
+        <source>fidelity: not checked: %1</source>
+        <translation>Treue: nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <source>not drawn again: %1</source>
+        <translation>nicht erneut gezeichnet: %1</translation>
+    </message>
+    <message>
+        <source>javascript: %1</source>
+        <translation>JavaScript: %1</translation>
+    </message>
+    <message>
+        <source>javascript ok: %1</source>
+        <translation>JavaScript in Ordnung: %1</translation>
+    </message>
+    <message>
+        <source>course mesh not read: %1</source>
+        <translation>Kurs-Mesh nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>own scene: %1</source>
+        <translation>eigene Szene: %1</translation>
+    </message>
+    <message>
+        <source>own scene: not checked: %1</source>
+        <translation>eigene Szene: nicht geprüft: %1</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::PageMatrices</name>
     <message>
         <source>the model matrix</source>
@@ -2567,6 +2661,128 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>the page&apos;s document was replaced before it could be captured</source>
         <translation>das Dokument der Seite wurde ersetzt, bevor es aufgezeichnet werden konnte</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageRunDialog</name>
+    <message>
+        <source>Run the Page</source>
+        <translation>Seite ausführen</translation>
+    </message>
+    <message>
+        <source>the browser</source>
+        <translation>im Browser</translation>
+    </message>
+    <message>
+        <source>PhongLab, drawn again</source>
+        <translation>PhongLab, erneut gezeichnet</translation>
+    </message>
+    <message>
+        <source>difference</source>
+        <translation>Differenz</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Running %1 in Chromium (headless, WebGL on SwiftShader, no network)…</source>
+        <translation>%1 läuft in Chromium (headless, WebGL auf SwiftShader, kein Netzwerk)…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Frame %1 of %2, as the browser drew it.</source>
+        <translation>Bild %1 von %2, wie der Browser es gezeichnet hat.</translation>
+    </message>
+    <message>
+        <source>The page was not run: %1</source>
+        <translation>Die Seite wurde nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::PageScene</name>
+    <message>
+        <source>the projection sent is not a symmetric perspective</source>
+        <translation>die gesendete Projektion ist keine symmetrische Perspektive</translation>
+    </message>
+    <message>
+        <source>the projection&apos;s aspect (%1) is not the canvas&apos;s (%2)</source>
+        <translation>das Seitenverhältnis der Projektion (%1) ist nicht das der Zeichenfläche (%2)</translation>
+    </message>
+    <message>
+        <source>the projection sent has no near and far planes in front</source>
+        <translation>die gesendete Projektion hat keine Near- und Far-Ebene vor der Kamera</translation>
+    </message>
+    <message>
+        <source>a draw that is not one list of triangles</source>
+        <translation>ein Zeichenaufruf, der keine einfache Dreiecksliste ist</translation>
+    </message>
+    <message>
+        <source>no vertex input is the position</source>
+        <translation>kein Vertex-Eingang ist die Position</translation>
+    </message>
+    <message>
+        <source>drawn without normals</source>
+        <translation>ohne Normalen gezeichnet</translation>
+    </message>
+    <message>
+        <source>a draw past its buffers</source>
+        <translation>ein Zeichenaufruf über seine Puffer hinaus</translation>
+    </message>
+    <message>
+        <source>its triangles make no mesh</source>
+        <translation>seine Dreiecke ergeben kein Mesh</translation>
+    </message>
+    <message>
+        <source>the specular term has no shininess sent</source>
+        <translation>der spiegelnde Term hat keine gesendete Glanzzahl</translation>
+    </message>
+    <message>
+        <source>light %1 has no position sent</source>
+        <translation>Licht %1 hat keine gesendete Position</translation>
+    </message>
+    <message>
+        <source>no light is sent</source>
+        <translation>es wird kein Licht gesendet</translation>
+    </message>
+    <message>
+        <source>the page drew no program that lights</source>
+        <translation>die Seite hat kein Programm gezeichnet, das beleuchtet</translation>
+    </message>
+    <message>
+        <source>uniform %1 changes the image but means nothing PhongLab knows</source>
+        <translation>Uniform %1 verändert das Bild, bedeutet aber nichts, was PhongLab kennt</translation>
+    </message>
+    <message>
+        <source>a draw&apos;s viewport is not the whole canvas</source>
+        <translation>der Viewport eines Zeichenaufrufs ist nicht die ganze Zeichenfläche</translation>
+    </message>
+    <message>
+        <source>the page sends no projection of its own (only a product of its matrices)</source>
+        <translation>die Seite sendet keine eigene Projektion (nur ein Produkt ihrer Matrizen)</translation>
+    </message>
+    <message>
+        <source>the page sends no model-view, nor a view and a model</source>
+        <translation>die Seite sendet keine Model-View, auch keine View- und Modellmatrix</translation>
+    </message>
+    <message>
+        <source>two draws send different lights</source>
+        <translation>zwei Zeichenaufrufe senden verschiedene Lichter</translation>
+    </message>
+    <message>
+        <source>the page drew nothing to its canvas</source>
+        <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
     </message>
 </context>
 <context>
@@ -3551,6 +3767,33 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
     <message>
         <source>loading stopped: %1</source>
         <translation>Laden abgebrochen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ScenePageJson</name>
+    <message>
+        <source>: expected an array of strings (got %1)</source>
+        <translation>: ein Array von Zeichenketten erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected a string (got %1)</source>
+        <translation>: eine Zeichenkette erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected an object (got %1)</source>
+        <translation>: ein Objekt erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: unknown key (known: %1)</source>
+        <translation>: unbekannter Schlüssel (bekannt: %1)</translation>
+    </message>
+    <message>
+        <source>: expected a folder&apos;s path (got %1)</source>
+        <translation>: der Pfad eines Ordners erwartet (erhalten: %1)</translation>
+    </message>
+    <message>
+        <source>: expected a frame number 1..600 (got %1)</source>
+        <translation>: eine Bildnummer 1..600 erwartet (erhalten: %1)</translation>
     </message>
 </context>
 <context>
@@ -5595,81 +5838,6 @@ Exit-Code: 0 geladen (eventuell mit Warnungen), 1 kann nicht geladen werden, 2 f
     </message>
 </context>
 <context>
-    <name>phonglab::cli::PageCheck</name>
-    <message>
-        <source>%1: cannot make the folder</source>
-        <translation>%1: Ordner lässt sich nicht anlegen</translation>
-    </message>
-    <message>
-        <source>the page drew nothing to its canvas</source>
-        <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
-    </message>
-    <message>
-        <source>the page drew no program that lights: the course scene is not checked</source>
-        <translation>die Seite hat kein Programm gezeichnet, das beleuchtet: die Kursszene wird nicht geprüft</translation>
-    </message>
-    <message>
-        <source>the course scene is checked with program %1 as the page compiled it: %2 and %3</source>
-        <translation>die Kursszene wird mit Programm %1 geprüft, wie die Seite es kompiliert hat: %2 und %3</translation>
-    </message>
-    <message>
-        <source>verdict: %1</source>
-        <translation>Urteil: %1</translation>
-    </message>
-    <message>
-        <source>%1: cannot write</source>
-        <translation>%1: nicht schreibbar</translation>
-    </message>
-    <message>
-        <source>page: not run: %1</source>
-        <translation>Seite: nicht ausgeführt: %1</translation>
-    </message>
-    <message>
-        <source>page: %1, WebGL %2, frame %3 of a %4x%5 canvas%6</source>
-        <translation>Seite: %1, WebGL %2, Bild %3 einer Zeichenfläche von %4x%5%6</translation>
-    </message>
-    <message>
-        <source>page step &apos;%1&apos;: %2</source>
-        <translation>Seitenschritt &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>refused (the page gets no network): %1</source>
-        <translation>abgewiesen (die Seite bekommt kein Netzwerk): %1</translation>
-    </message>
-    <message>
-        <source>page error: %1</source>
-        <translation>Fehler der Seite: %1</translation>
-    </message>
-    <message>
-        <source>fidelity: PhongLab draws the page&apos;s frame as the browser did (largest difference %1 outside edges)</source>
-        <translation>Treue: PhongLab zeichnet das Bild der Seite so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten)</translation>
-    </message>
-    <message>
-        <source>fidelity: PhongLab does not draw the page&apos;s frame as the browser did (largest difference %1 outside edges): what follows may be PhongLab&apos;s mistake, not the student&apos;s</source>
-        <translation>Treue: PhongLab zeichnet das Bild der Seite nicht so, wie der Browser es tat (größte Abweichung %1 außerhalb von Kanten): was folgt, kann PhongLabs Fehler sein, nicht der des Studierenden</translation>
-    </message>
-    <message>
-        <source>fidelity: not checked: %1</source>
-        <translation>Treue: nicht geprüft: %1</translation>
-    </message>
-    <message>
-        <source>not drawn again: %1</source>
-        <translation>nicht erneut gezeichnet: %1</translation>
-    </message>
-    <message>
-        <source>javascript: %1</source>
-        <translation>JavaScript: %1</translation>
-    </message>
-    <message>
-        <source>javascript ok: %1</source>
-        <translation>JavaScript in Ordnung: %1</translation>
-    </message>
-    <message>
-        <source>course mesh not read: %1</source>
-        <translation>Kurs-Mesh nicht gelesen: %1</translation>
-    </message>
-</context>
-<context>
     <name>phonglab::cli::PageOptions</name>
     <message>
         <source>run each submission&apos;s page in headless Chromium and check what it drew</source>
@@ -5770,6 +5938,13 @@ fidelity, javascript, mesh_errors).
     <message>
         <source>--meshes compares a page&apos;s normals: give --%1</source>
         <translation>--meshes vergleicht die Normalen einer Seite: --%1 angeben</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::cli::PageReport</name>
+    <message>
+        <source>verdict: %1</source>
+        <translation>Urteil: %1</translation>
     </message>
 </context>
 <context>
