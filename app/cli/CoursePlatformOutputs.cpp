@@ -235,7 +235,8 @@ QStringList rowImages(const GradeResults &results, const GradeRow &row)
 {
     QStringList images{row.yoursImage, row.exactImage, row.heatmapImage};
     if (const SubmissionPage *page = results.pageOf(row))
-        images << page->browserImage << page->phonglabImage << page->differenceImage;
+        images << page->browserImage << page->exactImage << page->heatmapImage
+               << page->phonglabImage << page->differenceImage;
     return images;
 }
 

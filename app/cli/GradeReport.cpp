@@ -290,6 +290,8 @@ QString pageFigures(const SubmissionPage *page)
     if (!page)
         return {};
     return figure(page->browserImage, ReportWords::tr("the browser's"))
+        + figure(page->exactImage, ReportWords::tr("exact"))
+        + figure(page->heatmapImage, ReportWords::tr("heatmap"))
         + figure(page->phonglabImage, ReportWords::tr("drawn again"))
         + figure(page->differenceImage, ReportWords::tr("difference"));
 }

@@ -68,11 +68,14 @@ struct SubmissionPage {
     std::optional<int> largestDifference; // fidelity: outside edges, 8-bit steps
     bool faithful = false;
     QStringList mistakes; // the JavaScript half's, "KEY SUBJECT" ("normals-face cloud.obj")
+    QString ownScene;     // the own scene's verdict: "pass", "fail", or empty where not checked
     QJsonObject json;     // check --json's "page"
     // Relative to the out folder; empty where there is none.
     QString browserImage;
     QString phonglabImage;
     QString differenceImage;
+    QString exactImage;   // the own scene's exact image
+    QString heatmapImage; // the browser's frame against it
 };
 
 struct GradeResults {

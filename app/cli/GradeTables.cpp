@@ -96,15 +96,17 @@ QString bindingsCell(const GradeRow &row)
     return bindingsText(row.outcome.bindings).replace(QStringLiteral(", "), QStringLiteral(" "));
 }
 
-// grade --pages: the fidelity's largest difference, the JavaScript half's
-// mistakes ("ok" where it has none), and why the page could not be run.
+// grade --pages: the fidelity's largest difference, the own scene's
+// verdict, the JavaScript half's mistakes ("ok" where it has none), and
+// why the page could not be run.
 QStringList pageCells(const SubmissionPage *page)
 {
     if (!page)
-        return {QString(), QString(), QString()};
+        return {QString(), QString(), QString(), QString()};
     if (!page->error.isEmpty())
-        return {QString(), QString(), textCell(page->error)};
+        return {QString(), QString(), QString(), textCell(page->error)};
     return {page->largestDifference ? QString::number(*page->largestDifference) : QString(),
+            page->ownScene,
             page->mistakes.isEmpty() ? QStringLiteral("ok")
                                      : textCell(page->mistakes.join(QLatin1Char(' '))),
             QString()};

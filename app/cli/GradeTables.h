@@ -12,7 +12,7 @@ namespace phonglab::cli {
 // grades.csv: a header and one record per row, columns submission, scene,
 // verdict, psnr_db, max_error, bad_fraction, key, also, file, line,
 // equation, bindings, seconds, mistakes, program, student, participant,
-// page_fidelity, page_javascript, page_error (an interface: never renamed
+// page_fidelity, page_own_scene, page_javascript, page_error (an interface: never renamed
 // or reordered; new columns go last).
 // The same results give the same bytes, apart from `seconds`. Text a
 // student chose (folder and file names) is quoted for CSV, and a cell that

@@ -209,7 +209,7 @@ private slots:
         QVERIFY(csv.startsWith(
             "submission,scene,verdict,psnr_db,max_error,bad_fraction,key,also,"
             "file,line,equation,bindings,seconds,mistakes,program,student,participant,"
-            "page_fidelity,page_javascript,page_error\n"));
+            "page_fidelity,page_own_scene,page_javascript,page_error\n"));
         const QMap<QString, QStringList> rows = rowsBySubmission(csv);
         QCOMPARE(rows.size(), 12);
         const auto verdict = [&](const QString &who) { return rows.value(who).value(2); };

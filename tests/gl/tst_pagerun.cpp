@@ -321,25 +321,25 @@ void TestPageRun::timersAndClockAreDeterministic()
 void TestPageRun::theOwnSceneMatchesTheExactImage()
 {
     QVERIFY(m_angel);
-    const Result<CheckReport> angel = checkPageScene(*m_angel);
+    const Result<PageSceneCheck> angel = checkPageScene(*m_angel);
     QVERIFY2(angel.ok(), qPrintable(angel.error()));
-    qInfo("Angel-style page, its own scene: %s", qPrintable(checkSummary(*angel)));
-    QVERIFY(angel->passed());
+    qInfo("Angel-style page, its own scene: %s", qPrintable(checkSummary(angel->report)));
+    QVERIFY(angel->report.passed());
     PageRunOptions options = pageOptions(QStringLiteral("angel"));
     options.steps = {QStringLiteral("select #normals=face")};
     options.frames = 1;
     const Result<PageRunOutput> faceted = runPage(options);
     QVERIFY2(faceted.ok(), qPrintable(faceted.error()));
-    const Result<CheckReport> face = checkPageScene(readPageCapture(faceted->capture).value());
+    const Result<PageSceneCheck> face = checkPageScene(readPageCapture(faceted->capture).value());
     QVERIFY2(face.ok(), qPrintable(face.error()));
-    qInfo("with face normals: %s", qPrintable(checkSummary(*face)));
-    QVERIFY(face->passed());
+    qInfo("with face normals: %s", qPrintable(checkSummary(face->report)));
+    QVERIFY(face->report.passed());
     if (!m_three)
         QSKIP("the three.js page did not run");
-    const Result<CheckReport> three = checkPageScene(*m_three);
+    const Result<PageSceneCheck> three = checkPageScene(*m_three);
     QVERIFY2(three.ok(), qPrintable(three.error()));
-    qInfo("three.js page, its own scene: %s", qPrintable(checkSummary(*three)));
-    QVERIFY(three->passed());
+    qInfo("three.js page, its own scene: %s", qPrintable(checkSummary(three->report)));
+    QVERIFY(three->report.passed());
 }
 
 // The controls: a shininess the page did not send, and a normal matrix
@@ -352,25 +352,25 @@ void TestPageRun::theOwnSceneFailsWhatIsWrong()
         for (CapturedUniform &u : op.uniforms)
             if (u.name == QLatin1String("shininess"))
                 u.values = {{4.0}};
-    const Result<CheckReport> shininess = checkPageScene(changed);
+    const Result<PageSceneCheck> shininess = checkPageScene(changed);
     QVERIFY2(shininess.ok(), qPrintable(shininess.error()));
-    qInfo("with shininess 4 read: %s", qPrintable(checkSummary(*shininess)));
-    QVERIFY(!shininess->passed());
+    qInfo("with shininess 4 read: %s", qPrintable(checkSummary(shininess->report)));
+    QVERIFY(!shininess->report.passed());
     PageRunOptions options = pageOptions(QStringLiteral("angel"));
     options.steps = {QStringLiteral("select #normalMatrix=transpose")};
     options.frames = 1;
     const Result<PageRunOutput> run = runPage(options);
     QVERIFY2(run.ok(), qPrintable(run.error()));
-    const Result<CheckReport> transposed = checkPageScene(readPageCapture(run->capture).value());
+    const Result<PageSceneCheck> transposed = checkPageScene(readPageCapture(run->capture).value());
     QVERIFY2(transposed.ok(), qPrintable(transposed.error()));
-    qInfo("with the normal matrix transposed: %s", qPrintable(checkSummary(*transposed)));
-    QVERIFY(!transposed->passed());
+    qInfo("with the normal matrix transposed: %s", qPrintable(checkSummary(transposed->report)));
+    QVERIFY(!transposed->report.passed());
 }
 
 void TestPageRun::anOwnSceneThatCannotBeReadSaysWhy()
 {
     QVERIFY(m_webgl2);
-    const Result<CheckReport> webgl2 = checkPageScene(*m_webgl2);
+    const Result<PageSceneCheck> webgl2 = checkPageScene(*m_webgl2);
     QVERIFY(!webgl2.ok());
     QVERIFY2(webgl2.error().contains(QLatin1String("no projection of its own")),
              qPrintable(webgl2.error()));
@@ -379,7 +379,7 @@ void TestPageRun::anOwnSceneThatCannotBeReadSaysWhy()
         for (CapturedUniform &u : op.uniforms)
             if (u.name == QLatin1String("shininess"))
                 u.name = QStringLiteral("zork"); // a float no name or use binds
-    const Result<CheckReport> zork = checkPageScene(unread);
+    const Result<PageSceneCheck> zork = checkPageScene(unread);
     QVERIFY(!zork.ok());
     QVERIFY2(zork.error().contains(QLatin1String("zork")), qPrintable(zork.error()));
 }

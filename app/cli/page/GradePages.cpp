@@ -45,6 +45,11 @@ SubmissionPage summaryOf(const PageCheck &check, const QString &relativeFolder)
     for (const JavaScriptFinding &f : check.javascript)
         if (f.mistake)
             page.mistakes << f.key + QLatin1Char(' ') + f.subject;
+    if (check.ownScene && check.ownScene->comparable()) {
+        page.ownScene = check.ownScene->passed() ? QStringLiteral("pass") : QStringLiteral("fail");
+        page.exactImage = relativeFolder + QStringLiteral("/exact.png");
+        page.heatmapImage = relativeFolder + QStringLiteral("/heatmap.png");
+    }
     if (!check.capture.pixels.isEmpty()) {
         page.browserImage = relativeFolder + QStringLiteral("/browser.png");
         page.phonglabImage = check.replayPixels.isEmpty()

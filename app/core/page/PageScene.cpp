@@ -402,7 +402,7 @@ RgbImage browserFrame(const PageCapture &capture)
     return image;
 }
 
-Result<CheckReport> checkPageScene(const PageCapture &capture)
+Result<PageSceneCheck> checkPageScene(const PageCapture &capture)
 {
     const Result<PageScene> scene = pageSceneOf(capture);
     if (!scene)
@@ -414,11 +414,12 @@ Result<CheckReport> checkPageScene(const PageCapture &capture)
         makeCheckReference(scene->scene, scene->meshes, browser.width, browser.height);
     if (!reference)
         return fail(reference.error());
-    CheckReport report =
-        checkRender(withSnappingAllowed(browser, reference->exactImage), *reference);
+    const RgbImage allowed = withSnappingAllowed(browser, reference->exactImage);
+    PageSceneCheck out{checkRender(allowed, *reference), reference->exactImage, {}};
+    out.heatmap = checkHeatmap(allowed, *reference, out.report.equation);
     if (const CapturedProgram *program = capture.program(scene->program))
-        nameWhatTheCodeDoes(report, program->vertex.toUtf8(), program->fragment.toUtf8());
-    return report;
+        nameWhatTheCodeDoes(out.report, program->vertex.toUtf8(), program->fragment.toUtf8());
+    return out;
 }
 
 } // namespace phonglab

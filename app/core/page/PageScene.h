@@ -38,7 +38,12 @@ Result<PageScene> pageSceneOf(const PageCapture &capture);
 // The browser's frame against the exact image of the page's own scene
 // (with snapping allowed, below), and what the program's text says; why
 // not where the scene cannot be read.
-Result<CheckReport> checkPageScene(const PageCapture &capture);
+struct PageSceneCheck {
+    CheckReport report;
+    RgbImage exact;   // the own scene's exact image, 8-bit
+    RgbImage heatmap; // the browser's frame against it (checkHeatmap)
+};
+Result<PageSceneCheck> checkPageScene(const PageCapture &capture);
 
 // The browser's frame as the check compares images: RGB, row 0 on top.
 RgbImage browserFrame(const PageCapture &capture);

@@ -7,6 +7,7 @@
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/OffscreenRenderer.h"
+#include "render/QtImages.h"
 #include "render/page/PageReplay.h"
 
 #include <QCoreApplication>
@@ -68,11 +69,14 @@ void replay(PageCheck *check)
 
 void checkOwnScene(PageCheck *check)
 {
-    Result<CheckReport> report = checkPageScene(check->capture);
-    if (report)
-        check->ownScene = std::move(*report);
-    else
-        check->ownSceneWhy = report.error();
+    Result<PageSceneCheck> checked = checkPageScene(check->capture);
+    if (!checked) {
+        check->ownSceneWhy = checked.error();
+        return;
+    }
+    check->ownScene = std::move(checked->report);
+    check->ownSceneExact = std::move(checked->exact);
+    check->ownSceneHeatmap = std::move(checked->heatmap);
 }
 
 Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *milliseconds)
@@ -246,7 +250,9 @@ QString writePageOutputs(const PageCheck &check, const QString &folder)
     const std::pair<const char *, QImage> pictures[] = {
         {"browser.png", frameImage(check.capture.pixels, check.capture.canvas)},
         {"phonglab.png", frameImage(check.replayPixels, check.capture.canvas)},
-        {"difference.png", differenceImage(check)}};
+        {"difference.png", differenceImage(check)},
+        {"exact.png", check.ownSceneExact.isNull() ? QImage() : toQImage(check.ownSceneExact)},
+        {"heatmap.png", check.ownSceneHeatmap.isNull() ? QImage() : toQImage(check.ownSceneHeatmap)}};
     for (const auto &[name, image] : pictures)
         if (!image.isNull() && !image.save(dir.filePath(key(name))))
             return PageCheckWords::tr("%1: cannot write").arg(dir.filePath(key(name)));

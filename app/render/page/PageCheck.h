@@ -52,6 +52,8 @@ struct PageCheck {
     // pixels; `ownSceneWhy` says why it was not checked.
     std::optional<CheckReport> ownScene;
     QString ownSceneWhy;
+    RgbImage ownSceneExact;   // its exact image
+    RgbImage ownSceneHeatmap; // the browser's frame against it
 
     bool ok() const { return error.isEmpty(); }
     bool javascriptMistakes() const;
@@ -79,7 +81,8 @@ PageCapturing capturePage(const PageRequest &request);
 PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &request);
 
 // --page-out: capture.json, browser.png, phonglab.png and difference.png
-// (green where equal, yellow to red where not, blue the edges left out).
+// (the fidelity: green where equal, yellow to red where not), and where the
+// own scene was checked exact.png and heatmap.png (as check --diff draws it).
 QString writePageOutputs(const PageCheck &check, const QString &folder);
 
 // For a check of the course scene with the page's program
