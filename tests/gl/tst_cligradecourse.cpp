@@ -146,8 +146,9 @@ private slots:
             return QStringList();
         };
         QCOMPARE(row("Anna Beck").value(2), QStringLiteral("fail"));
-        QVERIFY(
-            row("Anna Beck").join(QLatin1Char(',')).endsWith(QStringLiteral(",Anna Beck,1001,,,,")));
+        QVERIFY(row("Anna Beck")
+                    .join(QLatin1Char(','))
+                    .endsWith(QStringLiteral(",Anna Beck,1001,,,,")));
         QCOMPARE(row("Ben Cho").value(2), QStringLiteral("pass"));
         QCOMPARE(row("Cem Demir").value(2), QStringLiteral("pass"));
         QCOMPARE(row("Dora Eng").value(2), QStringLiteral("error"));

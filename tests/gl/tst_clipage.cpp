@@ -245,7 +245,8 @@ void TestCliPage::gradeRunsEachPage()
     QVERIFY(csv.open(QIODevice::ReadOnly));
     const QStringList lines =
         QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    QVERIFY(lines.first().endsWith(QLatin1String(",page_fidelity,page_own_scene,page_javascript,page_error")));
+    QVERIFY(lines.first().endsWith(
+        QLatin1String(",page_fidelity,page_own_scene,page_javascript,page_error")));
     QCOMPARE(lines.size(), 3);
     // anna's page draws the cloud with Blender's normals: ok; ben's draws the tree only.
     QVERIFY2(lines[1].startsWith(QLatin1String("anna,"))

@@ -171,7 +171,8 @@ private slots:
         const QByteArray csv = readTestFile(out + QStringLiteral("/grades.csv"));
         QVERIFY(csv.startsWith("submission,scene,verdict,"));
         QVERIFY(csv.left(csv.indexOf('\n'))
-                    .endsWith(",mistakes,program,student,participant,page_fidelity,page_own_scene,page_javascript,"
+                    .endsWith(",mistakes,program,student,participant,page_fidelity,page_own_scene,"
+                              "page_javascript,"
                               "page_error"));
         const QMap<QString, QStringList> rows = rowsByStudentAndProgram(csv);
         QCOMPARE(rows.keys(),

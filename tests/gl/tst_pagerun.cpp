@@ -51,6 +51,7 @@ private slots:
     void anEndlessLoopEndsAtTheTimeLimit();
     void networkAttemptsAreRefusedAndListed();
     void timersAndClockAreDeterministic();
+    void timingTricksOfRealPages();
     void theOwnSceneMatchesTheExactImage();
     void theOwnSceneFailsWhatIsWrong();
     void anOwnSceneThatCannotBeReadSaysWhy();
@@ -312,6 +313,26 @@ void TestPageRun::timersAndClockAreDeterministic()
     const qsizetype centre = (qsizetype(32) * 96 + 48) * 4;
     QVERIFY(quint8(a.pixels[centre + 2]) > 100); // blue 0.5: the triangle, not the clear colour
     QVERIFY(replayed(a).faithful());
+}
+
+// What real pages do and a browser lives with: a probe context on a canvas
+// of its own, an endless chain of zero timeouts, a wait in a loop for the
+// clock, a drawing that starts after the first frames, a script whose file
+// name holds a '%'. The run ends, and the frame is the drawing's.
+void TestPageRun::timingTricksOfRealPages()
+{
+    const Result<PageRunOutput> run = runPage(pageOptions(QStringLiteral("tricky")));
+    QVERIFY2(run.ok(), qPrintable(run.error()));
+    const PageCapture capture = readPageCapture(run->capture).value();
+    QVERIFY2(capture.errors.isEmpty(), qPrintable(capture.errors.join(" | ")));
+    QCOMPARE(capture.extraContexts, 1);
+    QCOMPARE(capture.canvas, QSize(64, 48));
+    QCOMPARE(capture.draws().size(), std::size_t(1));
+    QCOMPARE(callSiteText(capture.draws().front()->stack).section(QLatin1Char(':'), 0, 0),
+             QStringLiteral("50%.js"));
+    QVERIFY(capture.frame > 5); // setTimeout(init, 300): frame 18 or so
+    QCOMPARE(int(quint8(capture.pixels[(qsizetype(24) * 64 + 32) * 4])), 255); // the triangle
+    QVERIFY(replayed(capture).faithful());
 }
 
 // The student's own scene, read from the capture (meshes from the buffers,

@@ -71,8 +71,10 @@ void TestPageRunDialog::aRunShowsTheFramesAndTheFindings()
         auto *label = dialog.findChild<QLabel *>(QLatin1String(name));
         QVERIFY2(label && !label->pixmap().isNull(), name);
     }
-    const QString text = dialog.findChild<QTextBrowser *>(QStringLiteral("pageFindings"))->toPlainText();
-    QVERIFY2(text.contains(QLatin1String("fidelity: PhongLab draws the page's frame as the browser did")),
+    const QString text =
+        dialog.findChild<QTextBrowser *>(QStringLiteral("pageFindings"))->toPlainText();
+    QVERIFY2(text.contains(
+                 QLatin1String("fidelity: PhongLab draws the page's frame as the browser did")),
              qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("own scene: ✓")), qPrintable(text));
     QCOMPARE(dialog.findChild<QPushButton *>(QStringLiteral("pageRunButton"))->text(),
@@ -91,11 +93,13 @@ void TestPageRunDialog::aRunCanBeCancelled()
     QVERIFY(!dialog.finished()); // the browser is starting, or already in the page's loop
     QElapsedTimer clock;
     clock.start();
-    QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("pageRunButton")), Qt::LeftButton);
+    QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("pageRunButton")),
+                      Qt::LeftButton);
     QVERIFY(finished.wait(10000));
     qInfo("cancelled after %lld ms", clock.elapsed());
     QVERIFY(clock.elapsed() < 5000);
-    QCOMPARE(dialog.findChild<QLabel *>(QStringLiteral("pageRunStatus"))->text(), QStringLiteral("Cancelled."));
+    QCOMPARE(dialog.findChild<QLabel *>(QStringLiteral("pageRunStatus"))->text(),
+             QStringLiteral("Cancelled."));
 }
 
 QTEST_MAIN(TestPageRunDialog)

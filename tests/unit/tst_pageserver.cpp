@@ -111,6 +111,21 @@ void TestPageServer::captureErrorsAreLocated()
     QVERIFY(!wrong.ok());
     QVERIFY(wrong.error().contains(QLatin1String("\"pixels\"")));
     QVERIFY(readPageCapture(R"({"format": 1})").ok()); // nothing drawn is a capture too
+    // A number no real capture holds is no offset at all.
+    const Result<PageCapture> huge = readPageCapture(
+        R"({"format": 1, "draws": [{"op": "draw", "kind": "elements", "count": 3,
+            "indexType": 5123, "offset": 9223372036854774784, "indices": "1:1"}]})");
+    QVERIFY(huge.ok());
+    QCOMPARE(huge->ops.front().offset, qint64(-1));
+    QVERIFY(!drawOutOfBounds(*huge, huge->ops.front()).isEmpty());
+    QString many = QStringLiteral(R"({"format": 1, "draws": [)");
+    for (int i = 0; i <= int(kMaxCapturedOps); ++i)
+        many += QStringLiteral(R"({"op": "clear", "mask": 16384},)");
+    many.chop(1);
+    many += QStringLiteral("]}");
+    QVERIFY(readPageCapture(many.toUtf8())
+                .error()
+                .contains(QLatin1String("more than PhongLab checks")));
 }
 
 // A capture is a file anyone can hand PhongLab: a draw that would read
@@ -143,7 +158,20 @@ void TestPageServer::drawsPastTheirBuffersAreRefused()
     draw.offset = 0;
     draw.count = 9; // more indices than the buffer holds
     QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.offset = qint64(1) << 62; // a sum with it would wrap past the check
+    draw.count = 2;
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.offset = 0;
+    draw.indices.clear();
+    draw.indexType = 0;
+    draw.attributes[0].offset = qint64(1) << 62;
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.attributes[0].offset = 0;
+    draw.attributes[0].stride = 1 << 20; // WebGL allows 255
+    QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
+    draw.attributes[0].stride = 0;
     draw.indices = QStringLiteral("3:1"); // no such buffer
+    draw.indexType = 0x1403;
     draw.count = 1;
     QVERIFY(!drawOutOfBounds(capture, draw).isEmpty());
 }

@@ -56,6 +56,7 @@ Result<> BrowserPipe::start(const QString &program, const QStringList &arguments
                             qint64 timeLimitMs)
 {
     m_clock.start();
+    m_total.start();
     m_limitMs = timeLimitMs;
     int toBrowser[2];
     int fromBrowser[2];
@@ -129,6 +130,13 @@ Result<> BrowserPipe::start(const QString &program, const QStringList &arguments
     return {};
 }
 
+void BrowserPipe::restartTimeLimit(qint64 limitMs)
+{
+    m_pageTime = true;
+    m_clock.start();
+    m_limitMs = limitMs;
+}
+
 void BrowserPipe::stop()
 {
     closeFd(m_toBrowser);
@@ -142,6 +150,9 @@ void BrowserPipe::stop()
 
 QString BrowserPipe::timeLimitMessage() const
 {
+    if (!m_pageTime)
+        return BrowserPipeWords::tr("the browser did not start within %1 s")
+            .arg(m_limitMs / 1000.0, 0, 'g', 3);
     return BrowserPipeWords::tr("the page did not finish within %1 s (a script that never "
                                 "ends, or a page that waits for something)")
         .arg(m_limitMs / 1000.0, 0, 'g', 3);

@@ -57,7 +57,10 @@ public:
     // Each event: its method, params and session id.
     std::function<void(const QString &, const QJsonObject &, const QString &)> onEvent;
 
-    qint64 elapsedMs() const { return m_clock.elapsed(); }
+    // From now on the waits have `limitMs` (the page's own time, once the
+    // browser is up: a slow start is not the page's).
+    void restartTimeLimit(qint64 limitMs);
+    qint64 elapsedMs() const { return m_total.elapsed(); }
     bool timedOut() const { return m_clock.elapsed() >= m_limitMs; }
     void stop();
 
@@ -73,8 +76,10 @@ private:
     int m_nextId = 1;
     QByteArray m_pending; // bytes read, not yet a whole message
     std::deque<QJsonObject> m_messages;
-    QElapsedTimer m_clock;
+    QElapsedTimer m_clock; // since the time limit started
+    QElapsedTimer m_total; // since the browser started
     qint64 m_limitMs = 0;
+    bool m_pageTime = false; // the limit is the page's (restartTimeLimit), no longer the start's
 };
 
 } // namespace phonglab

@@ -13,6 +13,7 @@ struct CaptureBoundsWords {
 namespace {
 
 constexpr qint64 kMaxVertices = 64 * 1024 * 1024;
+constexpr int kMaxStride = 255;
 
 template <typename T>
 qint64 largestIndex(const QByteArray &bytes, qint64 offset, qint64 count, T restart)
@@ -65,8 +66,10 @@ std::optional<qint64> largestVertex(const PageCapture &capture, const CapturedOp
     }
     const CapturedBuffer *indices = capture.buffer(draw.indices);
     const int bytes = componentBytes(draw.indexType);
+    // Each side apart: a sum of hostile numbers must not wrap past the check.
     if (!indices || bytes == 0 || draw.offset < 0 || draw.offset % bytes != 0
-        || draw.offset + qint64(draw.count) * bytes > indices->bytes.size())
+        || draw.offset > indices->bytes.size() || draw.count > kMaxVertices
+        || qint64(draw.count) * bytes > indices->bytes.size() - draw.offset)
         return (
             *problem =
                 CaptureBoundsWords::tr("the index buffer does not hold %1 indices").arg(draw.count),
@@ -98,7 +101,9 @@ QString drawOutOfBounds(const PageCapture &capture, const CapturedOp &draw)
         if (!a.enabled)
             continue;
         const int bytes = componentBytes(a.component);
-        if (bytes == 0 || a.size < 1 || a.size > 4 || a.offset < 0 || a.stride < 0)
+        // WebGL allows strides up to 255 bytes; anything else is no capture of it.
+        if (bytes == 0 || a.size < 1 || a.size > 4 || a.offset < 0 || a.stride < 0
+            || a.stride > kMaxStride || a.divisor < 0)
             return CaptureBoundsWords::tr("attribute %1 has a layout PhongLab does not draw")
                 .arg(a.name);
         const CapturedBuffer *buffer = capture.buffer(a.buffer);
@@ -107,6 +112,9 @@ QString drawOutOfBounds(const PageCapture &capture, const CapturedOp &draw)
         const qint64 reads = a.divisor > 0 ? (draw.instances - 1) / a.divisor : *last;
         if (reads < 0)
             continue;
+        if (a.offset > buffer->bytes.size())
+            return CaptureBoundsWords::tr("attribute %1 starts past its buffer").arg(a.name);
+        // reads < 2^26 and the stride <= 255: no product here wraps.
         const qint64 end = a.offset + reads * attributeStride(a) + qint64(a.size) * bytes;
         if (end > buffer->bytes.size())
             return CaptureBoundsWords::tr("attribute %1 reads %2 bytes of a buffer of %3")

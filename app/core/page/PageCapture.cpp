@@ -5,6 +5,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <cmath>
+
 namespace phonglab {
 
 struct PageCaptureWords {
@@ -12,6 +14,17 @@ struct PageCaptureWords {
 };
 
 namespace {
+
+// A JSON number as a byte count or offset: anything a capture of a real
+// page can hold (a buffer is at most 2 GiB), -1 for the rest, so that a
+// hostile file cannot hand a bounds check a number near 2^63.
+qint64 byteNumber(const QJsonValue &value)
+{
+    const double v = value.toDouble(0);
+    if (!(v >= 0 && v <= double(qint64(1) << 31)) || v != std::floor(v))
+        return -1;
+    return qint64(v);
+}
 
 QString key(const char *name)
 {
@@ -89,7 +102,7 @@ CapturedAttribute readAttribute(const QJsonObject &o)
     a.component = unsigned(o.value(key("component")).toInt());
     a.normalized = o.value(key("normalized")).toBool();
     a.stride = o.value(key("stride")).toInt();
-    a.offset = qint64(o.value(key("offset")).toDouble());
+    a.offset = byteNumber(o.value(key("offset")));
     a.integer = o.value(key("integer")).toBool();
     a.divisor = o.value(key("divisor")).toInt();
     const QJsonArray value = o.value(key("value")).toArray();
@@ -113,7 +126,7 @@ CapturedOp readOp(const QJsonObject &o)
     op.first = o.value(key("first")).toInt();
     op.count = o.value(key("count")).toInt();
     op.indexType = unsigned(o.value(key("indexType")).toInt());
-    op.offset = qint64(o.value(key("offset")).toDouble());
+    op.offset = byteNumber(o.value(key("offset")));
     op.indices = o.value(key("indices")).toString();
     op.instances = o.value(key("instances")).toInt(1);
     for (const QJsonValue &u : o.value(key("uniforms")).toArray())
@@ -209,8 +222,22 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
                         .arg(c.pixels.size())
                         .arg(c.canvas.width())
                         .arg(c.canvas.height()));
-    for (const QJsonValue &op : o.value(key("draws")).toArray())
+    const QJsonArray ops = o.value(key("draws")).toArray();
+    if (ops.size() > kMaxCapturedOps)
+        return fail(PageCaptureWords::tr("key \"draws\": %1 clears and draws in one frame, more "
+                                         "than PhongLab checks (%2)")
+                        .arg(ops.size())
+                        .arg(kMaxCapturedOps));
+    qint64 vertices = 0;
+    for (const QJsonValue &op : ops) {
         c.ops.push_back(readOp(op.toObject()));
+        vertices += std::max(0, c.ops.back().count) * qint64(std::max(1, c.ops.back().instances));
+    }
+    if (vertices > kMaxCapturedVertices)
+        return fail(PageCaptureWords::tr("key \"draws\": %1 vertices in one frame, more than "
+                                         "PhongLab checks (%2)")
+                        .arg(vertices)
+                        .arg(kMaxCapturedVertices));
     for (const QJsonValue &value : o.value(key("programs")).toArray()) {
         const QJsonObject p = value.toObject();
         c.programs.push_back({p.value(key("id")).toInt(), p.value(key("vertex")).toString(),

@@ -148,6 +148,11 @@ struct PageCapture {
     std::vector<const CapturedOp *> draws() const;
 };
 
+// What one captured frame may hold for PhongLab to check it (a course's
+// page draws a few objects; a hostile capture must not cost hours).
+inline constexpr qsizetype kMaxCapturedOps = 4096;
+inline constexpr qint64 kMaxCapturedVertices = 32 * 1024 * 1024;
+
 // The capture, or why the JSON is not one (every error located).
 Result<PageCapture> readPageCapture(const QByteArray &json);
 

@@ -174,9 +174,13 @@ void checkLightW(const CapturedOp &draw, const ProgramBindings &bindings,
                 continue;
             for (const std::vector<double> &v : u->values)
                 if (v.size() == 4 && v[3] == 0.0) {
-                    out->push_back({QStringLiteral("light-w-zero"), u->name, true,
+                    // A direction by design (Angel's examples light from
+                    // vec4(1, 1, 1, 0)) where the shader treats it so: said,
+                    // not counted against the page.
+                    out->push_back({QStringLiteral("light-w-zero"), u->name, false,
                                     PageMatricesWords::tr("%1 is sent with w = 0: a direction, "
-                                                          "which no matrix moves as a place")
+                                                          "not a place; right only where the "
+                                                          "shader lights from a direction")
                                         .arg(u->name),
                                     callSiteText(u->setAt)});
                     break;

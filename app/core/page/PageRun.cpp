@@ -9,6 +9,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
+#include <QUrl>
 
 #include <memory>
 
@@ -21,6 +22,9 @@ struct PageRunWords {
 namespace {
 
 constexpr qint64 kMaxServedBytes = 64 * 1024 * 1024;
+// The browser's own start (a cold Chromium on a busy machine); the page's
+// time limit starts once it is up.
+constexpr qint64 kBrowserStartMs = 30000;
 
 QString str(const char *text)
 {
@@ -248,16 +252,26 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
     BrowserPipe pipe;
     if (const Result<> started =
             pipe.start(browser, browserArguments(options, home + str("/profile")), environment,
-                       home + str("/browser.log"), options.timeLimitMs);
+                       home + str("/browser.log"), kBrowserStartMs);
         !started)
         return fail(started.error());
     pipe.cancelled = options.cancelled;
     RequestAnswers answers(&pipe, options.folders);
+    bool navigated = false;
     bool loaded = false;
     pipe.onEvent = [&](const QString &method, const QJsonObject &params, const QString &session) {
         if (method == str("Fetch.requestPaused"))
             answers.answer(params, session);
-        else if (method == str("Page.loadEventFired"))
+        // about:blank's own load may come after Page.enable: only the
+        // student's page, once the main frame has gone to it, counts.
+        else if (method == str("Page.frameNavigated")
+                 && !params.value(str("frame")).toObject().contains(str("parentId")))
+            navigated = params.value(str("frame"))
+                            .toObject()
+                            .value(str("url"))
+                            .toString()
+                            .startsWith(kPageOrigin);
+        else if (method == str("Page.loadEventFired") && navigated)
             loaded = true;
     };
     const auto failed = [&](const QString &why) -> Result<PageRunOutput> {
@@ -269,11 +283,19 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
         return failed(session.error());
     if (const Result<> ready = prepareSession(pipe, *session, options, script); !ready)
         return failed(ready.error());
-    const QString url = kPageOrigin + QLatin1Char('/') + *page;
-    if (const Result<QJsonObject> navigated =
-            pipe.call(str("Page.navigate"), {{str("url"), url}}, *session);
-        !navigated)
-        return failed(navigated.error());
+    // Each part of the page's path percent-encoded: a page named "50%.html"
+    // or "a#b.html" is a file, not a fragment.
+    QStringList parts;
+    for (const QString &part : page->split(QLatin1Char('/')))
+        parts << QString::fromLatin1(QUrl::toPercentEncoding(part));
+    const QString url = kPageOrigin + QLatin1Char('/') + parts.join(QLatin1Char('/'));
+    pipe.restartTimeLimit(options.timeLimitMs);
+    const Result<QJsonObject> navigation =
+        pipe.call(str("Page.navigate"), {{str("url"), url}}, *session);
+    if (!navigation)
+        return failed(navigation.error());
+    if (const QString error = navigation->value(str("errorText")).toString(); !error.isEmpty())
+        return failed(PageRunWords::tr("the page %1 could not be opened: %2").arg(*page, error));
     if (const Result<> waited = pipe.waitUntil([&] { return loaded; }); !waited)
         return failed(waited.error());
 

@@ -231,6 +231,12 @@ Result<Shading> shadingOf(const DrawValues &v, const std::optional<glm::dmat4> &
         return fail(PageSceneWords::tr("the specular term has no shininess sent"));
     for (int k = 0; k < v.lightCount(); ++k) {
         PointLight light;
+        for (const M meaning : {M::LightPosition, M::LightPositionCamera})
+            if (const auto sent = v.value(meaning, k);
+                sent && sent->size() == 4 && (*sent)[3] == 0.0)
+                return fail(PageSceneWords::tr("light %1 is a direction (w = 0): the exact image "
+                                               "here lights from points")
+                                .arg(k + 1));
         if (const auto world = v.vec3(M::LightPosition, k)) {
             // A page that sends no view (a model-view alone) gives its
             // shader no world coordinates: its light is in the only space

@@ -29,8 +29,9 @@
   window.addEventListener('unhandledrejection', (e) => note(problems.errors, {
     message: 'unhandled promise rejection: ' + String(e.reason), where: null }));
   const realConsoleError = console.error;
+  const text = (value) => { try { return String(value); } catch (e) { return '[object]'; } };
   console.error = function (...args) {
-    note(problems.console, args.map(String).join(' '));
+    note(problems.console, args.map(text).join(' '));
     return realConsoleError.apply(this, args);
   };
   function refuse(kind, url) {
@@ -54,8 +55,10 @@
   // --- the stack of the page's call, outside this script ----------------
   function where(file, line, column) {
     if (!file) return null;
-    const path = file.startsWith(origin) ? file.slice(origin.length + 1) : file;
-    return { file: decodeURIComponent(path.split('?')[0]), line: line | 0, column: column | 0 };
+    const path = (file.startsWith(origin) ? file.slice(origin.length + 1) : file).split('?')[0];
+    let name = path;
+    try { name = decodeURIComponent(path); } catch (e) { /* a name like 50%.js stays as it is */ }
+    return { file: name, line: line | 0, column: column | 0 };
   }
   function callStack() {
     const frames = [];
@@ -79,14 +82,17 @@
   const RealDate = Date;
   function FixedDate(...args) {
     if (!new.target) return new RealDate(kEpoch + now).toString();
-    return args.length ? new RealDate(...args) : new RealDate(kEpoch + now);
+    return args.length ? new RealDate(...args) : new RealDate(kEpoch + read());
   }
   FixedDate.prototype = RealDate.prototype;
-  FixedDate.now = () => kEpoch + now;
+  // Each reading moves the clock on by a microsecond, the same on every run:
+  // a page that waits in a loop for the time to pass gets there.
+  const read = () => (now += 0.001);
+  FixedDate.now = () => kEpoch + read();
   FixedDate.parse = RealDate.parse;
   FixedDate.UTC = RealDate.UTC;
   window.Date = FixedDate;
-  Object.defineProperty(performance, 'now', { value: () => now, configurable: true });
+  Object.defineProperty(performance, 'now', { value: () => read(), configurable: true });
   let seed = (config.seed >>> 0) || 1;
   Math.random = () => { // mulberry32
     seed = (seed + 0x6d2b79f5) >>> 0;
@@ -128,12 +134,15 @@
     const real = Response.prototype[name];
     Response.prototype[name] = function (...args) { return counted(real.apply(this, args)); };
   }
+  const pending = new Set(); // XMLHttpRequests sent and not yet ended
   const realSend = XMLHttpRequest.prototype.send;
   XMLHttpRequest.prototype.send = function (...args) {
-    if (this.__phonglabCounted !== true) {
-      this.__phonglabCounted = true;
+    if (!pending.has(this)) {
+      pending.add(this);
       ++inFlight;
-      this.addEventListener('loadend', () => { --inFlight; });
+      const done = () => { if (pending.delete(this)) --inFlight; };
+      this.addEventListener('loadend', done, { once: true });
+      try { return realSend.apply(this, args); } catch (e) { done(); throw e; }
     }
     return realSend.apply(this, args);
   };
@@ -156,19 +165,25 @@
     draws: [], drewThisFrame: false, frame: 0, shown: null,
   };
 
+  const instrumented = new WeakSet();
+  const contexts = new WeakMap(); // context -> {canvas, version}
+  function adopt(gl, canvas, version) {
+    state.gl = gl; state.canvas = canvas; state.version = version;
+  }
   const realGetContext = HTMLCanvasElement.prototype.getContext;
   HTMLCanvasElement.prototype.getContext = function (type, attributes) {
     const webgl = /^(webgl2?|experimental-webgl)$/.test(String(type));
     const wanted = webgl ? Object.assign({}, attributes || {},
       { preserveDrawingBuffer: true, antialias: false }) : attributes;
     const context = realGetContext.call(this, type, wanted);
-    if (webgl && context) {
-      if (!state.gl) {
-        state.gl = context; state.canvas = this; state.version = type === 'webgl2' ? 2 : 1;
-        instrument(context);
-      } else if (context !== state.gl) {
-        ++state.extraContexts;
-      }
+    if (webgl && context && !instrumented.has(context)) {
+      // three.js and others probe WebGL on a canvas of their own first:
+      // every context is recorded, and the capture follows the one that draws.
+      instrumented.add(context);
+      if (state.gl) ++state.extraContexts;
+      else adopt(context, this, type === 'webgl2' ? 2 : 1);
+      contexts.set(context, { canvas: this, version: type === 'webgl2' ? 2 : 1 });
+      instrument(context);
     }
     return context;
   };
@@ -250,12 +265,15 @@
       });
     }
     wrap('clear', ([mask]) => {
-      if (drawsToCanvas()) startDrawing().push({ op: 'clear', mask,
+      if (drawsToCanvas() && owns()) startDrawing().push({ op: 'clear', mask,
         color: Array.from(call('getParameter', gl.COLOR_CLEAR_VALUE)),
         depth: call('getParameter', gl.DEPTH_CLEAR_VALUE),
         state: drawState() });
     });
-    const draw = (kind) => (args) => { if (drawsToCanvas()) recordDraw(kind, args); };
+    const draw = (kind) => (args) => { if (drawsToCanvas() && owns()) recordDraw(kind, args); };
+    // The frame is one context's: the first that draws (a probe that only
+    // asks for a context never does).
+    function owns() { return state.gl === gl || (!state.shown && !state.drewThisFrame); }
     wrap('drawArrays', draw('arrays'));
     wrap('drawElements', draw('elements'));
     wrap('drawArraysInstanced', draw('arrays-instanced'));
@@ -266,6 +284,10 @@
       return !call('getParameter', gl.FRAMEBUFFER_BINDING);
     }
     function startDrawing() {
+      if (state.gl !== gl && !state.shown && !state.drewThisFrame) {
+        const c = contexts.get(gl);
+        adopt(gl, c.canvas, c.version);
+      }
       if (!state.drewThisFrame) { state.draws = []; state.drewThisFrame = true; }
       return state.draws;
     }
@@ -425,13 +447,14 @@
     state.drewThisFrame = false;
     clearAsTheBrowserDoes();
   }
+  // The timers due when the frame starts, in order; one a timer sets for
+  // now waits for the next frame (a chain of setTimeout(f, 0) moves one step
+  // a frame instead of never letting the frame end).
   function runTimersDue() {
-    for (;;) {
-      let next = null;
-      for (const [id, t] of timers) if (t.due <= now && (!next || t.due < next[1].due)) next = [id, t];
-      if (!next) return;
-      const [id, t] = next;
-      if (t.every) t.due += t.every; else timers.delete(id);
+    const due = [...timers].filter(([, t]) => t.due <= now).sort((a, b) => a[1].due - b[1].due || a[0] - b[0]);
+    for (const [id, t] of due) {
+      if (!timers.has(id)) continue; // cleared by an earlier one
+      if (t.every) t.due = Math.max(t.due + t.every, now + 0.001); else timers.delete(id);
       try { t.fn(...t.args); } catch (e) { reportException(e); }
     }
   }
@@ -444,7 +467,7 @@
   function frame() {
     showFrame();
     state.frame += 1;
-    now += kFrameMs;
+    now = Math.max(now, state.frame * kFrameMs);
     runTimersDue();
     const callbacks = frameCallbacks;
     frameCallbacks = new Map();
@@ -542,7 +565,11 @@
       }
       // Every frame runs, drawing or not: a page that draws once its mesh
       // has come is seen drawing it.
-      for (let k = 0; k < frames; ++k) {
+      // A page that has not drawn after them (setTimeout(init, 500)) gets up
+      // to ten seconds of frames more, until it draws or has nothing left.
+      const kMoreFrames = 600;
+      for (let k = 0; k < frames || (k < frames + kMoreFrames && !state.shown
+                                       && !state.drewThisFrame && !idle()); ++k) {
         frame();
         await settle();
       }

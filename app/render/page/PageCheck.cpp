@@ -252,7 +252,8 @@ QString writePageOutputs(const PageCheck &check, const QString &folder)
         {"phonglab.png", frameImage(check.replayPixels, check.capture.canvas)},
         {"difference.png", differenceImage(check)},
         {"exact.png", check.ownSceneExact.isNull() ? QImage() : toQImage(check.ownSceneExact)},
-        {"heatmap.png", check.ownSceneHeatmap.isNull() ? QImage() : toQImage(check.ownSceneHeatmap)}};
+        {"heatmap.png",
+         check.ownSceneHeatmap.isNull() ? QImage() : toQImage(check.ownSceneHeatmap)}};
     for (const auto &[name, image] : pictures)
         if (!image.isNull() && !image.save(dir.filePath(key(name))))
             return PageCheckWords::tr("%1: cannot write").arg(dir.filePath(key(name)));

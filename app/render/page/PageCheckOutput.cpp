@@ -18,6 +18,16 @@ QString key(const char *name)
     return QString::fromLatin1(name);
 }
 
+// What a page said, for a terminal or a text box: its control characters
+// (an escape sequence, a carriage return) as spaces.
+QString plain(QString text)
+{
+    for (QChar &c : text)
+        if (c.category() == QChar::Other_Control)
+            c = QLatin1Char(' ');
+    return text;
+}
+
 QJsonArray stringArray(const QStringList &list)
 {
     return QJsonArray::fromStringList(list);
@@ -108,11 +118,12 @@ QStringList pageText(const PageCheck &check)
                           : QString());
     for (const PageStep &s : c.steps)
         if (!s.problem.isEmpty())
-            lines << PageCheckOutputWords::tr("page step '%1': %2").arg(s.step, s.problem);
+            lines << PageCheckOutputWords::tr("page step '%1': %2")
+                         .arg(plain(s.step), plain(s.problem));
     for (const QString &r : c.refused)
-        lines << PageCheckOutputWords::tr("refused (the page gets no network): %1").arg(r);
+        lines << PageCheckOutputWords::tr("refused (the page gets no network): %1").arg(plain(r));
     for (const QString &e : c.errors + c.consoleErrors)
-        lines << PageCheckOutputWords::tr("page error: %1").arg(e);
+        lines << PageCheckOutputWords::tr("page error: %1").arg(plain(e));
     if (check.fidelity)
         lines << (check.fidelity->faithful() && check.notReplayed.isEmpty()
                       ? PageCheckOutputWords::tr(
@@ -130,7 +141,7 @@ QStringList pageText(const PageCheck &check)
     for (const QString &n : check.notReplayed)
         lines << PageCheckOutputWords::tr("not drawn again: %1").arg(n);
     for (const JavaScriptFinding &f : check.javascript)
-        lines << (f.where.isEmpty() ? QString() : f.where + QStringLiteral(": "))
+        lines << (f.where.isEmpty() ? QString() : plain(f.where) + QStringLiteral(": "))
                 + (f.mistake ? PageCheckOutputWords::tr("javascript: %1")
                              : PageCheckOutputWords::tr("javascript ok: %1"))
                       .arg(f.message);

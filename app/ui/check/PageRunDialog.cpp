@@ -27,8 +27,8 @@ QPixmap framePixmap(const QByteArray &rgba, QSize size)
                                 size.height(), QImage::Format_RGBA8888)
                              .mirrored()
                              .convertToFormat(QImage::Format_RGB888);
-    return QPixmap::fromImage(image.scaled(kFrameSide, kFrameSide, Qt::KeepAspectRatio,
-                                           Qt::SmoothTransformation));
+    return QPixmap::fromImage(
+        image.scaled(kFrameSide, kFrameSide, Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
 
 // |browser − drawn again| per pixel: dark green equal, green within the
@@ -40,7 +40,7 @@ QByteArray differencePixels(const QByteArray &a, const QByteArray &b)
         int d = 0;
         for (int c = 0; c < 3; ++c)
             d = std::max(d, std::abs(int(quint8(a[i + c])) - int(quint8(b[i + c]))));
-        const QRgb rgb = d == 0 ? qRgb(0, 60, 0)
+        const QRgb rgb = d == 0            ? qRgb(0, 60, 0)
             : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
             : d < 8                        ? qRgb(230, 220, 0)
                                            : qRgb(230, 30, 30);
@@ -63,6 +63,7 @@ PageRunDialog::PageRunDialog(const PageRequest &request, QWidget *parent)
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("pageRunStatus"));
     m_status->setWordWrap(true);
+    m_status->setTextFormat(Qt::PlainText); // a page's own words are data
     layout->addWidget(m_status);
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 0); // a browser run says nothing of how far it is
