@@ -602,6 +602,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
+    <message>
+        <source>the browser did not start within %1 s</source>
+        <translation>der Browser ist nicht innerhalb von %1 s gestartet</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::BuildStatusText</name>
@@ -746,6 +750,10 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>attribute %1 reads %2 bytes of a buffer of %3</source>
         <translation>Attribut %1 liest %2 Bytes aus einem Puffer von %3</translation>
+    </message>
+    <message>
+        <source>attribute %1 starts past its buffer</source>
+        <translation>Attribut %1 beginnt hinter seinem Puffer</translation>
     </message>
 </context>
 <context>
@@ -2436,6 +2444,14 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <source>key &quot;pixels&quot;: %1 bytes for a canvas of %2x%3</source>
         <translation>Schlüssel &quot;pixels&quot;: %1 Bytes für eine Zeichenfläche von %2x%3</translation>
     </message>
+    <message>
+        <source>key &quot;draws&quot;: %1 clears and draws in one frame, more than PhongLab checks (%2)</source>
+        <translation>Schlüssel &quot;draws&quot;: %1 Löschungen und Zeichenaufrufe in einem Bild, mehr als PhongLab prüft (%2)</translation>
+    </message>
+    <message>
+        <source>key &quot;draws&quot;: %1 vertices in one frame, more than PhongLab checks (%2)</source>
+        <translation>Schlüssel &quot;draws&quot;: %1 Vertices in einem Bild, mehr als PhongLab prüft (%2)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::PageCheck</name>
@@ -2562,8 +2578,8 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <translation>%1 ist nicht Projektion mal Model-View, die die Seite daneben sendet</translation>
     </message>
     <message>
-        <source>%1 is sent with w = 0: a direction, which no matrix moves as a place</source>
-        <translation>%1 wird mit w = 0 gesendet: eine Richtung, die keine Matrix als Ort verschiebt</translation>
+        <source>%1 is sent with w = 0: a direction, not a place; right only where the shader lights from a direction</source>
+        <translation>%1 wird mit w = 0 gesendet: eine Richtung, kein Ort; richtig nur, wo der Shader aus einer Richtung beleuchtet</translation>
     </message>
 </context>
 <context>
@@ -2661,6 +2677,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>the page&apos;s document was replaced before it could be captured</source>
         <translation>das Dokument der Seite wurde ersetzt, bevor es aufgezeichnet werden konnte</translation>
+    </message>
+    <message>
+        <source>the page %1 could not be opened: %2</source>
+        <translation>die Seite %1 ließ sich nicht öffnen: %2</translation>
     </message>
 </context>
 <context>
@@ -2783,6 +2803,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     <message>
         <source>the page drew nothing to its canvas</source>
         <translation>die Seite hat nichts auf ihre Zeichenfläche gezeichnet</translation>
+    </message>
+    <message>
+        <source>light %1 is a direction (w = 0): the exact image here lights from points</source>
+        <translation>Licht %1 ist eine Richtung (w = 0): das exakte Bild hier beleuchtet von Punkten aus</translation>
     </message>
 </context>
 <context>
