@@ -2581,6 +2581,10 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
         <source>%1 is sent with w = 0: a direction, not a place; right only where the shader lights from a direction</source>
         <translation>%1 wird mit w = 0 gesendet: eine Richtung, kein Ort; richtig nur, wo der Shader aus einer Richtung beleuchtet</translation>
     </message>
+    <message>
+        <source>%1 is not %2 · %3, which the page sends beside it</source>
+        <translation>%1 ist nicht %2 · %3, die die Seite daneben sendet</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::PageNormals</name>

@@ -39,6 +39,7 @@ const QStringList &csvColumns()
                                      QStringLiteral("student"),
                                      QStringLiteral("participant"),
                                      QStringLiteral("page_fidelity"),
+                                     QStringLiteral("page_own_scene"),
                                      QStringLiteral("page_javascript"),
                                      QStringLiteral("page_error")};
     return columns;

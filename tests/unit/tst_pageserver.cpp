@@ -3,6 +3,7 @@
 // (core/page/PageCapture, core/page/CaptureBounds). Context-free.
 #include "core/page/CaptureBounds.h"
 #include "core/page/PageCapture.h"
+#include "core/page/PageMatrices.h"
 #include "core/page/PageServer.h"
 #include "core/scene/SceneJson.h"
 
@@ -25,6 +26,7 @@ private slots:
     void captureErrorsAreLocated();
     void drawsPastTheirBuffersAreRefused();
     void aScenesPageSettingsRoundTrip();
+    void aProductMustBeItsFactors();
 
 private:
     void write(const QString &relative, const QByteArray &bytes = "x");
@@ -203,6 +205,29 @@ void TestPageServer::aScenesPageSettingsRoundTrip()
         QVERIFY(!wrong.ok());
         QVERIFY2(wrong.error.startsWith(QLatin1String(where)), qPrintable(wrong.error));
     }
+}
+
+// The page sends Ia·ka and, beside it, Ia and ka: the product must be theirs.
+void TestPageServer::aProductMustBeItsFactors()
+{
+    PageCapture capture;
+    CapturedOp draw;
+    const auto uniform = [](const char *name, unsigned type, std::vector<double> value) {
+        CapturedUniform u;
+        u.name = QString::fromLatin1(name);
+        u.glType = type;
+        u.values = {std::move(value)};
+        return u;
+    };
+    draw.uniforms = {uniform("ambientProduct", 0x8B52, {0.2, 0.2, 0.2, 1.0}),
+                     uniform("Ia", 0x8B51, {0.5, 0.5, 0.5}), uniform("ka", 0x8B51, {0.4, 0.4, 0.4})};
+    capture.ops = {draw};
+    QVERIFY(checkPageMatrices(capture).empty());
+    capture.ops.front().uniforms[2].values = {{0.3, 0.4, 0.4}};
+    const std::vector<JavaScriptFinding> found = checkPageMatrices(capture);
+    QCOMPARE(found.size(), std::size_t(1));
+    QCOMPARE(found.front().key, QStringLiteral("product-not-of-its-factors"));
+    QVERIFY(found.front().mistake);
 }
 
 QTEST_GUILESS_MAIN(TestPageServer)

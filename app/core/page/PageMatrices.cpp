@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <set>
+#include <tuple>
 
 namespace phonglab {
 
@@ -188,6 +189,34 @@ void checkLightW(const CapturedOp &draw, const ProgramBindings &bindings,
         }
 }
 
+// A product the page sends beside its factors (ambientProduct beside the
+// light's ambient and the material's ka): the product must be theirs.
+void checkProductsAgainstFactors(const CapturedOp &draw, const ProgramBindings &bindings,
+                                 std::vector<JavaScriptFinding> *out)
+{
+    const std::tuple<BindingMeaning, BindingMeaning, BindingMeaning> products[] = {
+        {BindingMeaning::AmbientProduct, BindingMeaning::Ambient, BindingMeaning::Ka},
+        {BindingMeaning::DiffuseProduct, BindingMeaning::LightDiffuse, BindingMeaning::Kd},
+        {BindingMeaning::SpecularProduct, BindingMeaning::LightSpecular, BindingMeaning::Ks}};
+    for (const auto &[product, light, material] : products) {
+        const CapturedUniform *p = uniformMeaning(draw, bindings, product);
+        const CapturedUniform *l = uniformMeaning(draw, bindings, light);
+        const CapturedUniform *m = uniformMeaning(draw, bindings, material);
+        if (!p || !l || !m || p->values.empty() || l->values.empty() || m->values.empty())
+            continue;
+        const std::vector<double> &pv = p->values.front(), &lv = l->values.front(),
+                                  &mv = m->values.front();
+        bool same = true;
+        for (std::size_t c = 0; c < 3 && c < pv.size() && c < lv.size() && c < mv.size(); ++c)
+            same = same && std::abs(pv[c] - lv[c] * mv[c]) <= 1e-4 * std::max(1.0, std::abs(pv[c]));
+        if (!same)
+            out->push_back({QStringLiteral("product-not-of-its-factors"), p->name, true,
+                            PageMatricesWords::tr("%1 is not %2 · %3, which the page sends beside it")
+                                .arg(p->name, l->name, m->name),
+                            callSiteText(p->setAt)});
+    }
+}
+
 } // namespace
 
 std::vector<JavaScriptFinding> checkPageMatrices(const PageCapture &capture,
@@ -202,6 +231,7 @@ std::vector<JavaScriptFinding> checkPageMatrices(const PageCapture &capture,
         checkNormalMatrix(*draw, bindings, &out);
         checkProducts(*draw, bindings, &out);
         checkLightW(*draw, bindings, &out);
+        checkProductsAgainstFactors(*draw, bindings, &out);
     }
     return out;
 }

@@ -15,10 +15,12 @@ namespace phonglab {
 //    rotation), the inverse, the model-view itself, or the model's alone;
 //  - the model-view against view·model, and the model-view-projection
 //    against projection·model-view, where the page sends those too;
-//  - a light position sent with w = 0 (a direction, not a place).
+//  - a light position sent with w = 0 (a direction, not a place);
+//  - a product sent beside its factors (ambientProduct beside the light's
+//    ambient and ka) that is not theirs.
 // Keys: normal-matrix-right, normal-matrix-transpose,
 // normal-matrix-inverse, normal-matrix-model-view, normal-matrix-model,
-// normal-matrix-other, matrices-disagree, light-w-zero.
+// normal-matrix-other, matrices-disagree, light-w-zero, product-not-of-its-factors.
 std::vector<JavaScriptFinding> checkPageMatrices(const PageCapture &capture,
                                                  const ExplicitBindings &explicitBindings = {});
 
