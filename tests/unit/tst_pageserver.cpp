@@ -220,7 +220,8 @@ void TestPageServer::aProductMustBeItsFactors()
         return u;
     };
     draw.uniforms = {uniform("ambientProduct", 0x8B52, {0.2, 0.2, 0.2, 1.0}),
-                     uniform("Ia", 0x8B51, {0.5, 0.5, 0.5}), uniform("ka", 0x8B51, {0.4, 0.4, 0.4})};
+                     uniform("Ia", 0x8B51, {0.5, 0.5, 0.5}),
+                     uniform("ka", 0x8B51, {0.4, 0.4, 0.4})};
     capture.ops = {draw};
     QVERIFY(checkPageMatrices(capture).empty());
     capture.ops.front().uniforms[2].values = {{0.3, 0.4, 0.4}};

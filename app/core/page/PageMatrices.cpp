@@ -210,10 +210,11 @@ void checkProductsAgainstFactors(const CapturedOp &draw, const ProgramBindings &
         for (std::size_t c = 0; c < 3 && c < pv.size() && c < lv.size() && c < mv.size(); ++c)
             same = same && std::abs(pv[c] - lv[c] * mv[c]) <= 1e-4 * std::max(1.0, std::abs(pv[c]));
         if (!same)
-            out->push_back({QStringLiteral("product-not-of-its-factors"), p->name, true,
-                            PageMatricesWords::tr("%1 is not %2 · %3, which the page sends beside it")
-                                .arg(p->name, l->name, m->name),
-                            callSiteText(p->setAt)});
+            out->push_back(
+                {QStringLiteral("product-not-of-its-factors"), p->name, true,
+                 PageMatricesWords::tr("%1 is not %2 · %3, which the page sends beside it")
+                     .arg(p->name, l->name, m->name),
+                 callSiteText(p->setAt)});
     }
 }
 
