@@ -41,6 +41,7 @@ private slots:
     void aRightPagePasses();
     void aTransposedNormalMatrixFails();
     void aCaptureIsCheckedAgainWithoutTheBrowser();
+    void theOwnScenesMistakeIsOnTheStudentsLine();
     void theCourseSceneWithThePagesProgram();
     void theScenesPageSettingsAreTaken();
     void wrongArgumentsAreUsageErrors();
@@ -127,6 +128,24 @@ void TestCliPage::aCaptureIsCheckedAgainWithoutTheBrowser()
                                            out + QStringLiteral("/browser.png")});
     QCOMPARE(broken.exitCode, 1);
     QVERIFY2(broken.err.contains(QLatin1String("browser.png: not JSON")), qPrintable(broken.err));
+}
+
+// The student's own scene, drawn with reflect(l, n): the mistake named, on
+// the line of the page handed in.
+void TestCliPage::theOwnScenesMistakeIsOnTheStudentsLine()
+{
+    const ProcessRun run = runPhonglab(QStringList{QStringLiteral("check")}
+                                       + pageArguments(QStringLiteral("angel-reflect"))
+                                       + QStringList{QStringLiteral("--json")});
+    QCOMPARE(run.exitCode, 1);
+    const QJsonObject own = jsonOf(run).value("page").toObject().value("own_scene").toObject();
+    QCOMPARE(own.value("verdict").toString(), QStringLiteral("fail"));
+    QCOMPARE(own.value("mistakes").toArray().first().toString(),
+             QStringLiteral("reflect-incident"));
+    const QJsonObject line = own.value("lines").toArray().first().toObject();
+    QCOMPARE(line.value("file").toString(), QStringLiteral("index.html"));
+    QCOMPARE(line.value("line").toInt(), 47);
+    QCOMPARE(line.value("text").toString(), QStringLiteral("vec3 r = reflect(l, n);"));
 }
 
 // With a scene: the course scene checked with the program the page drew,

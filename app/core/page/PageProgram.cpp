@@ -41,14 +41,21 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture)
     return best;
 }
 
-QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled)
+const ProjectShader *stageInProject(const Project &project, ProjectStage stage,
+                                    const QString &compiled)
 {
     const QByteArray text = compiled.toUtf8().trimmed();
     for (const ProjectProgram &p : project.programs)
         for (const ProjectShader *s : {&p.vertex, &p.fragment})
             if (s->stage == stage && s->text.trimmed() == text)
-                return shaderLocator(*s);
-    return {};
+                return s;
+    return nullptr;
+}
+
+QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled)
+{
+    const ProjectShader *shader = stageInProject(project, stage, compiled);
+    return shader ? shaderLocator(*shader) : QString();
 }
 
 } // namespace phonglab

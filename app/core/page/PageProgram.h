@@ -32,5 +32,8 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture);
 // unchanged, so that every line a check names is the student's; empty
 // when the page rewrote it (a token replaced, a prelude added).
 QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled);
+// The same shader itself (its file and first line), or null.
+const ProjectShader *stageInProject(const Project &project, ProjectStage stage,
+                                    const QString &compiled);
 
 } // namespace phonglab

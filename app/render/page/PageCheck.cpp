@@ -4,6 +4,7 @@
 #include "core/page/PageNormals.h"
 #include "core/page/PageProgram.h"
 #include "core/page/PageScene.h"
+#include "core/project/ProjectPrograms.h"
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshLoader.h"
 #include "render/OffscreenRenderer.h"
@@ -16,6 +17,8 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QSaveFile>
+
+#include <tuple>
 
 namespace phonglab {
 
@@ -67,7 +70,44 @@ void replay(PageCheck *check)
         comparePageFrames(check->capture.pixels, frame->pixels, check->capture.canvas);
 }
 
-void checkOwnScene(PageCheck *check)
+// Each stage of the own scene's program as the student wrote it: in its
+// file where the page compiled it unchanged, else the compiled text itself,
+// under the stage's name.
+std::vector<ShaderStageText> stagesAsHandedIn(const PageCheck &check, const Project &project)
+{
+    std::vector<ShaderStageText> out;
+    const std::optional<PageProgram> lit = litPageProgram(check.capture);
+    if (!lit)
+        return out;
+    for (const auto &[stage, text] : {std::pair{ProjectStage::Vertex, lit->program->vertex},
+                                      std::pair{ProjectStage::Fragment, lit->program->fragment}}) {
+        const ProjectShader *shader = stageInProject(project, stage, text);
+        const bool vertex = stage == ProjectStage::Vertex;
+        // A project's shader laid out as in its file (ProjectShader::code):
+        // every line a finding names is the file's.
+        out.push_back({shader
+                           ? QFileInfo(shader->file).fileName()
+                           : (vertex ? QStringLiteral("page.vert") : QStringLiteral("page.frag")),
+                       shader ? QString::fromUtf8(shader->code) : text, vertex});
+    }
+    return out;
+}
+
+std::vector<std::pair<QString, SourceLine>> ownSceneLines(const PageCheck &check,
+                                                          const PageRequest &request)
+{
+    std::vector<std::pair<QString, SourceLine>> out;
+    if (!check.ownScene || check.ownScene->passed() || request.run.folders.project.isEmpty())
+        return out;
+    const std::vector<ShaderStageText> stages =
+        stagesAsHandedIn(check, readProject(request.run.folders.project));
+    for (const MistakeFinding &f : check.ownScene->diagnosis.findings)
+        for (const SourceLine &line : mistakeSourceLines(f.key, stages))
+            out.emplace_back(shaderMistakeKey(f.key), line);
+    return out;
+}
+
+void checkOwnScene(PageCheck *check, const PageRequest &request)
 {
     Result<PageSceneCheck> checked = checkPageScene(check->capture);
     if (!checked) {
@@ -75,6 +115,7 @@ void checkOwnScene(PageCheck *check)
         return;
     }
     check->ownScene = std::move(checked->report);
+    check->ownSceneLines = ownSceneLines(*check, request);
     check->ownSceneExact = std::move(checked->exact);
     check->ownSceneHeatmap = std::move(checked->heatmap);
 }
@@ -190,7 +231,7 @@ PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &re
         check.ownSceneWhy = check.fidelityError;
     } else {
         replay(&check);
-        checkOwnScene(&check);
+        checkOwnScene(&check, request);
     }
     check.javascript =
         checkPageNormals(check.capture, courseMeshes(request.meshesFolder, &check.meshErrors));

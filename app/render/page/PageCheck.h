@@ -1,4 +1,5 @@
 #pragma once
+#include "core/check/MistakeSourceLines.h"
 #include "core/check/ShaderCheck.h"
 #include "core/page/JavaScriptFinding.h"
 #include "core/page/PageCapture.h"
@@ -54,6 +55,9 @@ struct PageCheck {
     QString ownSceneWhy;
     RgbImage ownSceneExact;   // its exact image
     RgbImage ownSceneHeatmap; // the browser's frame against it
+    // The lines of the files handed in that compute what the own scene's
+    // mistakes break (core/check/MistakeSourceLines), by mistake key.
+    std::vector<std::pair<QString, SourceLine>> ownSceneLines;
 
     bool ok() const { return error.isEmpty(); }
     bool javascriptMistakes() const;

@@ -48,6 +48,17 @@ QJsonObject fidelityJson(const PageCheck &check)
             {key("not_replayed"), stringArray(check.notReplayed)}};
 }
 
+QJsonArray linesJson(const PageCheck &check)
+{
+    QJsonArray out;
+    for (const auto &[mistake, line] : check.ownSceneLines)
+        out.append(QJsonObject{{key("mistake"), mistake},
+                               {key("file"), line.file},
+                               {key("line"), line.line},
+                               {key("text"), line.text}});
+    return out;
+}
+
 QJsonObject ownSceneJson(const PageCheck &check)
 {
     if (!check.ownScene)
@@ -64,6 +75,7 @@ QJsonObject ownSceneJson(const PageCheck &check)
         {key("max_error"), r.comparison.maxError},
         {key("bad_fraction"), r.badFraction()},
         {key("mistakes"), mistakes},
+        {key("lines"), linesJson(check)},
         {key("summary"), checkSummary(r)}};
 }
 
@@ -150,6 +162,11 @@ QStringList pageText(const PageCheck &check)
     lines << (check.ownScene
                   ? PageCheckOutputWords::tr("own scene: %1").arg(checkSummary(*check.ownScene))
                   : PageCheckOutputWords::tr("own scene: not checked: %1").arg(check.ownSceneWhy));
+    for (const auto &[mistake, line] : check.ownSceneLines)
+        lines << QStringLiteral("  %1:%2: %3 (%4)")
+                     .arg(line.file)
+                     .arg(line.line)
+                     .arg(plain(line.text), mistake);
     return lines;
 }
 
