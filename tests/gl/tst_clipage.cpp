@@ -134,8 +134,22 @@ void TestCliPage::aCaptureIsCheckedAgainWithoutTheBrowser()
 // the line of the page handed in.
 void TestCliPage::theOwnScenesMistakeIsOnTheStudentsLine()
 {
-    const ProcessRun run = runPhonglab(QStringList{QStringLiteral("check")}
-                                       + pageArguments(QStringLiteral("angel-reflect"))
+    // The Angel-style project with the one mistake made in its page.
+    const QString project = m_dir.filePath(QStringLiteral("angel-reflect"));
+    QVERIFY(QDir().mkpath(project));
+    QFile page(testDataPath(QStringLiteral("pages/angel/index.html")));
+    QVERIFY(page.open(QIODevice::ReadOnly));
+    QByteArray html = page.readAll();
+    QVERIFY(html.contains("vec3 r = reflect(-l, n);"));
+    html.replace("vec3 r = reflect(-l, n);", "vec3 r = reflect(l, n);");
+    QFile mistaken(project + QStringLiteral("/index.html"));
+    QVERIFY(mistaken.open(QIODevice::WriteOnly) && mistaken.write(html) == html.size());
+    mistaken.close();
+    QVERIFY(QFile::copy(testDataPath(QStringLiteral("pages/angel/phong.js")),
+                        project + QStringLiteral("/phong.js")));
+    QStringList arguments = pageArguments(QStringLiteral("angel"));
+    arguments[1] = project;
+    const ProcessRun run = runPhonglab(QStringList{QStringLiteral("check")} + arguments
                                        + QStringList{QStringLiteral("--json")});
     QCOMPARE(run.exitCode, 1);
     const QJsonObject own = jsonOf(run).value("page").toObject().value("own_scene").toObject();

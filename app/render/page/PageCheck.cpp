@@ -139,38 +139,6 @@ Result<QByteArray> obtainCapture(const PageRequest &request, qint64 *millisecond
     return run->capture;
 }
 
-QImage frameImage(const QByteArray &rgba, QSize size)
-{
-    if (rgba.size() != qsizetype(size.width()) * size.height() * 4)
-        return {};
-    // Bottom row first, as readPixels; alpha dropped: a picture of the colours.
-    return QImage(reinterpret_cast<const uchar *>(rgba.constData()), size.width(), size.height(),
-                  QImage::Format_RGBA8888)
-        .mirrored()
-        .convertToFormat(QImage::Format_RGB888);
-}
-
-QImage differenceImage(const PageCheck &check)
-{
-    const QImage a = frameImage(check.capture.pixels, check.capture.canvas);
-    const QImage b = frameImage(check.replayPixels, check.capture.canvas);
-    if (a.isNull() || b.isNull())
-        return {};
-    QImage out(a.size(), QImage::Format_RGB888);
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-            const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
-                                    std::abs(qBlue(p) - qBlue(q))});
-            out.setPixel(x, y,
-                         d == 0                             ? qRgb(0, 60, 0)
-                             : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
-                             : d < 8                        ? qRgb(230, 220, 0)
-                                                            : qRgb(230, 30, 30));
-        }
-    return out;
-}
-
 } // namespace
 
 bool PageCheck::ownSceneFails() const
@@ -277,6 +245,38 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
     return stages;
 }
 
+QImage pageFrameImage(const QByteArray &rgba, QSize size)
+{
+    if (rgba.size() != qsizetype(size.width()) * size.height() * 4)
+        return {};
+    // Bottom row first, as readPixels; alpha dropped: a picture of the colours.
+    return QImage(reinterpret_cast<const uchar *>(rgba.constData()), size.width(), size.height(),
+                  QImage::Format_RGBA8888)
+        .mirrored()
+        .convertToFormat(QImage::Format_RGB888);
+}
+
+QImage pageDifferenceImage(const PageCheck &check)
+{
+    const QImage a = pageFrameImage(check.capture.pixels, check.capture.canvas);
+    const QImage b = pageFrameImage(check.replayPixels, check.capture.canvas);
+    if (a.isNull() || b.isNull())
+        return {};
+    QImage out(a.size(), QImage::Format_RGB888);
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                                    std::abs(qBlue(p) - qBlue(q))});
+            out.setPixel(x, y,
+                         d == 0                             ? qRgb(0, 60, 0)
+                             : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
+                             : d < 8                        ? qRgb(230, 220, 0)
+                                                            : qRgb(230, 30, 30));
+        }
+    return out;
+}
+
 QString writePageOutputs(const PageCheck &check, const QString &folder)
 {
     if (folder.isEmpty() || !check.ok())
@@ -289,9 +289,9 @@ QString writePageOutputs(const PageCheck &check, const QString &folder)
         || !capture.commit())
         return PageCheckWords::tr("%1: cannot write").arg(capture.fileName());
     const std::pair<const char *, QImage> pictures[] = {
-        {"browser.png", frameImage(check.capture.pixels, check.capture.canvas)},
-        {"phonglab.png", frameImage(check.replayPixels, check.capture.canvas)},
-        {"difference.png", differenceImage(check)},
+        {"browser.png", pageFrameImage(check.capture.pixels, check.capture.canvas)},
+        {"phonglab.png", pageFrameImage(check.replayPixels, check.capture.canvas)},
+        {"difference.png", pageDifferenceImage(check)},
         {"exact.png", check.ownSceneExact.isNull() ? QImage() : toQImage(check.ownSceneExact)},
         {"heatmap.png",
          check.ownSceneHeatmap.isNull() ? QImage() : toQImage(check.ownSceneHeatmap)}};

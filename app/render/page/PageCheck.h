@@ -8,6 +8,7 @@
 #include "core/scene/PageSettings.h"
 
 #include <QByteArray>
+#include <QImage>
 #include <QJsonObject>
 #include <QStringList>
 
@@ -83,6 +84,12 @@ struct PageCapturing {
 };
 PageCapturing capturePage(const PageRequest &request);
 PageCheck checkCapturedPage(const PageCapturing &captured, const PageRequest &request);
+
+// A captured RGBA frame (bottom row first) as a picture, row 0 on top;
+// null when the bytes are not the size's. And the fidelity's difference:
+// dark green equal, green within its tolerance, yellow to red beyond.
+QImage pageFrameImage(const QByteArray &rgba, QSize size);
+QImage pageDifferenceImage(const PageCheck &check);
 
 // --page-out: capture.json, browser.png, phonglab.png and difference.png
 // (the fidelity: green where equal, yellow to red where not), and where the

@@ -19,36 +19,12 @@ namespace {
 
 constexpr int kFrameSide = 280; // each picture's larger side on screen
 
-QPixmap framePixmap(const QByteArray &rgba, QSize size)
+QPixmap shown(const QImage &image)
 {
-    if (rgba.size() != qsizetype(size.width()) * size.height() * 4)
+    if (image.isNull())
         return {};
-    const QImage image = QImage(reinterpret_cast<const uchar *>(rgba.constData()), size.width(),
-                                size.height(), QImage::Format_RGBA8888)
-                             .mirrored()
-                             .convertToFormat(QImage::Format_RGB888);
     return QPixmap::fromImage(
         image.scaled(kFrameSide, kFrameSide, Qt::KeepAspectRatio, Qt::SmoothTransformation));
-}
-
-// |browser − drawn again| per pixel: dark green equal, green within the
-// fidelity's tolerance, yellow to red beyond.
-QByteArray differencePixels(const QByteArray &a, const QByteArray &b)
-{
-    QByteArray out(a.size(), '\xff');
-    for (qsizetype i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4) {
-        int d = 0;
-        for (int c = 0; c < 3; ++c)
-            d = std::max(d, std::abs(int(quint8(a[i + c])) - int(quint8(b[i + c]))));
-        const QRgb rgb = d == 0            ? qRgb(0, 60, 0)
-            : d <= kFidelityToleranceSteps ? qRgb(0, 200, 0)
-            : d < 8                        ? qRgb(230, 220, 0)
-                                           : qRgb(230, 30, 30);
-        out[i] = char(qRed(rgb));
-        out[i + 1] = char(qGreen(rgb));
-        out[i + 2] = char(qBlue(rgb));
-    }
-    return out;
 }
 
 } // namespace
@@ -135,11 +111,9 @@ void PageRunDialog::showResult()
                                          .arg(m_check.capture.page)
                                    : tr("The page was not run: %1").arg(m_check.error));
     const QSize size = m_check.capture.canvas;
-    m_browser->setPixmap(framePixmap(m_check.capture.pixels, size));
-    m_drawn->setPixmap(framePixmap(m_check.replayPixels, size));
-    if (!m_check.replayPixels.isEmpty())
-        m_difference->setPixmap(
-            framePixmap(differencePixels(m_check.capture.pixels, m_check.replayPixels), size));
+    m_browser->setPixmap(shown(pageFrameImage(m_check.capture.pixels, size)));
+    m_drawn->setPixmap(shown(pageFrameImage(m_check.replayPixels, size)));
+    m_difference->setPixmap(shown(pageDifferenceImage(m_check)));
     m_findings->setPlainText(findingsText());
     emit runFinished();
 }
