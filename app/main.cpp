@@ -1,7 +1,7 @@
 #include "benchcli/BenchCommand.h"
-#include "cli/Cli.h"
-#include "cli/CliCommon.h"
-#include "core/check/ProgramSynopsis.h"
+#include "cli/common/CliCommon.h"
+#include "cli/common/ProgramSynopsis.h"
+#include "cli/dispatch/Cli.h"
 #include "core/support/Language.h"
 #include "core/support/RuntimeDirectory.h"
 #include "ui/window/GuiMain.h"
@@ -19,5 +19,5 @@ int main(int argc, char **argv)
     const phonglab::cli::Subcommand more[] = {phonglab::cli::kBenchSubcommand};
     if (const auto exitCode = phonglab::cli::dispatch(argc, argv, more))
         return *exitCode;
-    return phonglab::runGui(argc, argv);
+    return phonglab::runGui(argc, argv, phonglab::programSynopsis());
 }

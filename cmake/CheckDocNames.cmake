@@ -75,12 +75,12 @@ foreach(span IN LISTS spans)
     endif()
   endforeach()
 endforeach()
-# Rooms: every folder of app/core and app/mesh is named as `LAYER/ROOM/`,
-# every folder of app/ui as `ROOM/`; and every header of app/ is named, by
+# Rooms: every room cmake/Layers.cmake lists is named as `LAYER/ROOM/`
+# (those of app/ui as `ROOM/`), and so is every folder of app/; and every header of app/ is named, by
 # itself (`Viewport`) or at the end of a path (`ui/viewport/Viewport`). A
 # room or a class a newcomer cannot find on the page is one nobody keeps
 # tidy.
-file(GLOB rooms LIST_DIRECTORIES true "${ROOT}/app/core/*" "${ROOT}/app/mesh/*" "${ROOT}/app/ui/*")
+file(GLOB rooms LIST_DIRECTORIES true "${ROOT}/app/*/*")
 foreach(room IN LISTS rooms)
   if(NOT IS_DIRECTORY "${room}")
     continue()

@@ -1,137 +1,153 @@
-# Checks that app/'s layers point one way: every #include "LAYER/..." in a
-# file of app/<layer>/ names a layer that layer may use.
+# Checks that app/'s layers and the rooms inside them point the way
+# cmake/Layers.cmake says:
 #
-#   cmake -P cmake/CheckLayers.cmake          (from the source tree's root)
+#   cmake -P cmake/CheckLayers.cmake               (the source tree)
+#   cmake -DROOT=DIR -P cmake/CheckLayers.cmake    (a copy of it: DIR/app)
 #
-# Prints each upward edge as FILE:LINE: includes LAYER/... and fails when
-# there is one. core and mesh use Qt Core alone: any <Q...> header they
-# include must be one of QtCore's (pass -DQT_CORE_INCLUDE_DIR=... where Qt
-# is not under /usr/include/<triplet>/qt6). Below charts no file includes a
-# header of Qt Widgets, Qt Charts or Qt OpenGL Widgets. Registered with CTest as unit.layers. The libraries enforce
-# the same order at link time (app/CMakeLists.txt): a layer links only the
-# ones listed here for it.
-#
-# Inside core and mesh the rooms (docs/architecture.md) have rules of their
-# own: support/ is the floor and includes no other room; program/ (the
-# vocabulary of a shader program: stages, dialect, bindings, the course's
-# prelude, tokens, lint) stands on support/ alone; check/ judges
-# images and programs and does not read scene files (scene/SceneJson*,
-# ScenePaths, RecoveryJournal): a check gets its scene already read, which
-# is what lets the window, the CLI and the grader hand it the same Scene.
-cmake_minimum_required(VERSION 3.16)
-get_filename_component(root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
-
-set(allowed_headless headless)
-set(allowed_core   core)
-set(allowed_mesh   core mesh)
-set(allowed_render headless core mesh render)
-set(allowed_bench  core mesh render bench)
-set(allowed_charts core mesh render bench charts)
-set(allowed_ui     core mesh render bench charts ui)
-set(allowed_cli    headless core mesh render bench cli)
-set(allowed_benchcli core mesh render bench charts cli benchcli)
-set(layers headless core mesh render bench charts ui cli benchcli)
+# Every quoted include of a file of app/ names a file of the same folder
+# (no slash) or a path from app/ ("core/scene/Scene.h"), and that path:
+#   - is in the file's layer or a layer it may use (PHONGLAB_USES_*);
+#   - inside its own layer, is in its own room or a room before it
+#     (PHONGLAB_ROOMS_*), and keeps the room's own rules;
+# a layer of Qt Core alone includes only Qt Core's headers (pass
+# -DQT_CORE_INCLUDE_DIR=... where Qt is not under /usr/include/<triplet>/qt6),
+# and a layer without widgets no header of Qt Widgets, Qt Charts or Qt OpenGL
+# Widgets. A layer with rooms has no file outside them and no room the list
+# lacks. Prints each breach as FILE:LINE: WHAT and fails when there is one.
+# Registered with CTest as unit.layers; unit.layersplanted plants breaches in
+# a copy and expects each to be caught.
+cmake_minimum_required(VERSION 3.19)
+if(NOT ROOT)
+  set(ROOT "${CMAKE_CURRENT_LIST_DIR}/..")
+endif()
+get_filename_component(root "${ROOT}" ABSOLUTE)
+include("${CMAKE_CURRENT_LIST_DIR}/Layers.cmake")
 
 if(NOT QT_CORE_INCLUDE_DIR)
   file(GLOB QT_CORE_INCLUDE_DIR /usr/include/*/qt6/QtCore /usr/include/qt6/QtCore)
   list(GET QT_CORE_INCLUDE_DIR 0 QT_CORE_INCLUDE_DIR)
 endif()
-set(qt_core_only core mesh)
-# Only charts, ui and benchcli may draw with widgets (Qt Widgets, Qt Charts).
 get_filename_component(qt_include_root "${QT_CORE_INCLUDE_DIR}" DIRECTORY)
 set(widget_modules QtWidgets QtCharts QtOpenGLWidgets)
-set(no_widgets headless core mesh render bench cli)
 if(NOT EXISTS "${qt_include_root}/QtWidgets")
   message(FATAL_ERROR "Qt Widgets' headers are not at ${qt_include_root}/QtWidgets: "
                       "cannot tell a widget header (pass -DQT_CORE_INCLUDE_DIR=...)")
 endif()
 
-# ROOM "INCLUDE REGEX" "WHY": an include of a file of app/ROOM/ matching
-# the regex is refused.
-set(room_rules
-  "core/support" "^(core/(scene|view|reference|check|project|program)|mesh)/" "support/ is the floor of core"
-  "core/program" "^(core/(scene|view|reference|check|project)|mesh)/" "program/ is the vocabulary of a shader program, below scene and check"
-  "core/check" "^core/scene/(SceneJson[A-Za-z]*|ScenePaths|RecoveryJournal)\\.h$" "check/ does not read scene files"
-  "mesh/detail" "^mesh/import/(MeshLoader|MeshImportProcess|MeshCache|SceneMeshes)\\.h$" "detail/ works on meshes already loaded")
-# page/ runs a student's page and reads its capture: it stands on the rest
-# of core, and no other room of core includes it.
-foreach(room support program scene view reference check project)
-  list(APPEND room_rules "core/${room}" "^core/page/" "page/ stands above the other rooms of core")
-endforeach()
-set(known_rooms
-  core/scene core/reference core/check core/view core/support core/project core/program core/page
-  mesh/import mesh/normals mesh/detail)
-
 set(violations 0)
-foreach(layer core mesh)
+macro(breach text)
+  message("${text}")
+  math(EXPR violations "${violations} + 1")
+endmacro()
+
+# A layer with rooms: every entry of app/<layer>/ is one of them.
+function(check_rooms_known layer)
   file(GLOB entries LIST_DIRECTORIES true "${root}/app/${layer}/*")
   foreach(entry IN LISTS entries)
     get_filename_component(name "${entry}" NAME)
-    if(IS_DIRECTORY "${entry}" AND NOT "${layer}/${name}" IN_LIST known_rooms)
-      message("app/${layer}/${name}/: a room CheckLayers.cmake does not know (add it to known_rooms and to docs/architecture.md)")
-      math(EXPR violations "${violations} + 1")
-    elseif(NOT IS_DIRECTORY "${entry}")
-      message("app/${layer}/${name}: outside the rooms of ${layer} (docs/architecture.md)")
-      math(EXPR violations "${violations} + 1")
+    if(NOT IS_DIRECTORY "${entry}")
+      message("app/${layer}/${name}: outside the rooms of ${layer} (cmake/Layers.cmake)")
+      set(found TRUE)
+    elseif(NOT name IN_LIST PHONGLAB_ROOMS_${layer})
+      message("app/${layer}/${name}/: a room cmake/Layers.cmake does not list for ${layer}")
+      set(found TRUE)
     endif()
   endforeach()
-endforeach()
-list(LENGTH room_rules rule_fields)
-math(EXPR last_rule "${rule_fields} - 1")
-foreach(at RANGE 0 ${last_rule} 3)
-  math(EXPR at_regex "${at} + 1")
-  math(EXPR at_why "${at} + 2")
-  list(GET room_rules ${at} room)
-  list(GET room_rules ${at_regex} refused)
-  list(GET room_rules ${at_why} why)
-  file(GLOB_RECURSE files "${root}/app/${room}/*.h" "${root}/app/${room}/*.cpp")
-  foreach(file IN LISTS files)
-    file(STRINGS "${file}" lines REGEX "^#include \"")
-    foreach(line IN LISTS lines)
-      string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
-      if(included MATCHES "${refused}")
-        file(RELATIVE_PATH relative "${root}" "${file}")
-        message("${relative}: includes ${included}: ${why}")
-        math(EXPR violations "${violations} + 1")
+  set(room_breach ${found} PARENT_SCOPE)
+endfunction()
+
+# What is wrong with `included` (a path from app/) in a file of `layer`,
+# room `room` ("" in a layer without rooms): "" when nothing.
+function(include_breach layer room included out_var)
+  set(why "")
+  string(REGEX MATCH "^[a-z]+" target "${included}")
+  phonglab_layer_reach(${layer} reach)
+  if(NOT target IN_LIST PHONGLAB_LAYERS)
+    set(why "includes ${included}: neither a file of this folder nor a path from app/")
+  elseif(NOT target IN_LIST reach)
+    set(why "includes ${included}: the ${target} layer is not below ${layer}")
+  elseif(target STREQUAL layer AND PHONGLAB_ROOMS_${layer})
+    string(REGEX MATCH "^${layer}/([a-z]+)/" matched "${included}")
+    set(target_room "${CMAKE_MATCH_1}")
+    list(FIND PHONGLAB_ROOMS_${layer} "${target_room}" there)
+    list(FIND PHONGLAB_ROOMS_${layer} "${room}" here)
+    if(there EQUAL -1)
+      set(why "includes ${included}: in no room of ${layer}")
+    elseif(there GREATER here)
+      set(why "includes ${included}: ${layer}/${target_room}/ stands above ${layer}/${room}/")
+    endif()
+  endif()
+  set(${out_var} "${why}" PARENT_SCOPE)
+endfunction()
+
+# The Qt header `included` (<QFoo>) in a file of `layer`: "" when allowed.
+function(qt_breach layer included out_var)
+  set(why "")
+  if(PHONGLAB_QT_${layer} STREQUAL "core" AND included MATCHES "^Q[A-Za-z/]+$")
+    string(REGEX REPLACE "^QtCore/" "" header "${included}")
+    if(NOT EXISTS "${QT_CORE_INCLUDE_DIR}/${header}")
+      set(why "includes <${included}>, not Qt Core: the ${layer} layer has no Qt GUI")
+    endif()
+  endif()
+  if(NOT PHONGLAB_QT_${layer} STREQUAL "widgets")
+    foreach(module IN LISTS widget_modules)
+      string(REGEX REPLACE "^${module}/" "" header "${included}")
+      if(EXISTS "${qt_include_root}/${module}/${header}")
+        set(why "includes <${included}> (${module}): the ${layer} layer draws no widgets")
       endif()
     endforeach()
-  endforeach()
-endforeach()
-foreach(layer IN LISTS layers)
+  endif()
+  set(${out_var} "${why}" PARENT_SCOPE)
+endfunction()
+
+foreach(layer IN LISTS PHONGLAB_LAYERS)
+  if(PHONGLAB_ROOMS_${layer})
+    check_rooms_known(${layer})
+    if(room_breach)
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endif()
   file(GLOB_RECURSE files "${root}/app/${layer}/*.h" "${root}/app/${layer}/*.cpp")
   foreach(file IN LISTS files)
-    file(STRINGS "${file}" lines)
+    file(RELATIVE_PATH relative "${root}" "${file}")
+    set(room "")
+    if(relative MATCHES "^app/${layer}/([a-z]+)/")
+      set(room "${CMAKE_MATCH_1}")
+    endif()
+    # One list element per line: what CMake would read as list syntax
+    # (";", "[" and "]", "\\") is blunted first, none of it in a header's name.
+    file(READ "${file}" text)
+    string(REGEX REPLACE "[][;\\]" "_" text "${text}")
+    string(REPLACE "\n" ";" lines "${text}")
     set(number 0)
     foreach(line IN LISTS lines)
       math(EXPR number "${number} + 1")
-      if(line MATCHES "^#include \"([a-z]+)/")
-        set(target "${CMAKE_MATCH_1}")
-        list(FIND layers "${target}" known)
-        list(FIND allowed_${layer} "${target}" ok)
-        if(known GREATER -1 AND ok EQUAL -1)
-          file(RELATIVE_PATH relative "${root}" "${file}")
-          message("${relative}:${number}: includes ${target}/..., above the ${layer} layer")
-          math(EXPR violations "${violations} + 1")
-        endif()
-      endif()
-      if(layer IN_LIST qt_core_only AND line MATCHES "^#include <(Q[A-Za-z/]+)>")
-        set(included "${CMAKE_MATCH_1}")
-        string(REGEX REPLACE "^QtCore/" "" header "${included}")
-        if(NOT EXISTS "${QT_CORE_INCLUDE_DIR}/${header}")
-          file(RELATIVE_PATH relative "${root}" "${file}")
-          message("${relative}:${number}: includes <${included}>, not Qt Core: the ${layer} layer has no Qt GUI")
-          math(EXPR violations "${violations} + 1")
-        endif()
+      if(NOT line MATCHES "^#include")
+        continue()
       endif()
       # <QWidget>, <QtWidgets/QWidget> and the lower-case <qwidget.h> alike.
-      if(layer IN_LIST no_widgets AND line MATCHES "^#include [<\"]((Q[A-Za-z/]+)|(q[a-z0-9_]+\\.h))[>\"]")
+      if(line MATCHES "^#include [<\"]((Q[A-Za-z/]+)|(q[a-z0-9_]+\\.h))[>\"]")
+        qt_breach(${layer} "${CMAKE_MATCH_1}" why)
+        if(why)
+          breach("${relative}:${number}: ${why}")
+        endif()
+      endif()
+      if(line MATCHES "^#include \"([^\"]+/[^\"]+)\"")
         set(included "${CMAKE_MATCH_1}")
-        foreach(module IN LISTS widget_modules)
-          string(REGEX REPLACE "^${module}/" "" header "${included}")
-          if(EXISTS "${qt_include_root}/${module}/${header}")
-            file(RELATIVE_PATH relative "${root}" "${file}")
-            message("${relative}:${number}: includes <${included}> (${module}): the ${layer} layer draws no widgets")
-            math(EXPR violations "${violations} + 1")
+        include_breach(${layer} "${room}" "${included}" why)
+        if(why)
+          breach("${relative}:${number}: ${why}")
+        endif()
+        list(LENGTH PHONGLAB_ROOM_RULES fields)
+        math(EXPR last "${fields} - 1")
+        foreach(at RANGE 0 ${last} 3)
+          math(EXPR at_regex "${at} + 1")
+          math(EXPR at_why "${at} + 2")
+          list(GET PHONGLAB_ROOM_RULES ${at} rule_room)
+          list(GET PHONGLAB_ROOM_RULES ${at_regex} refused)
+          list(GET PHONGLAB_ROOM_RULES ${at_why} rule_why)
+          if("${layer}/${room}" STREQUAL rule_room AND included MATCHES "${refused}")
+            breach("${relative}:${number}: includes ${included}: ${rule_why}")
           endif()
         endforeach()
       endif()
@@ -139,7 +155,18 @@ foreach(layer IN LISTS layers)
   endforeach()
 endforeach()
 
+set(order "")
+foreach(layer IN LISTS PHONGLAB_LAYERS)
+  if(PHONGLAB_ROOMS_${layer})
+    string(REPLACE ";" " <- " rooms "${PHONGLAB_ROOMS_${layer}}")
+    string(APPEND order "\n  ${layer}: ${rooms}")
+  endif()
+  if(PHONGLAB_USES_${layer})
+    string(REPLACE ";" ", " uses "${PHONGLAB_USES_${layer}}")
+    string(APPEND order "\n  ${layer} uses ${uses}")
+  endif()
+endforeach()
 if(violations GREATER 0)
-  message(FATAL_ERROR "${violations} include(s) point up the layers (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli), reach past Qt Core, draw widgets below charts, or break a room's rule")
+  message(FATAL_ERROR "${violations} breach(es) of the direction cmake/Layers.cmake gives:${order}")
 endif()
-message(STATUS "layers: every include points down and every room keeps its rules (core <- mesh <- render <- bench <- charts <- ui; headless <- render; headless, bench <- cli <- benchcli; charts <- benchcli); core and mesh use Qt Core alone; only charts, ui and benchcli use widgets")
+message(STATUS "layers: every include points the way cmake/Layers.cmake gives:${order}")

@@ -1428,6 +1428,17 @@ Bitte PHONGLAB_DOC_DIR auf den Ordner setzen, der sie enthält.</translation>
     </message>
 </context>
 <context>
+    <name>phonglab::JsonText</name>
+    <message>
+        <source>JSON syntax error at line %1, column %2 (byte offset %3): %4</source>
+        <translation>JSON-Syntaxfehler in Zeile %1, Spalte %2 (Byte-Offset %3): %4</translation>
+    </message>
+    <message>
+        <source>out-of-range number %1</source>
+        <translation>Zahl außerhalb des Wertebereichs %1</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::LabelledChart</name>
     <message>
         <source>log; 0 drawn at %1</source>
@@ -3698,14 +3709,6 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
 </context>
 <context>
     <name>phonglab::SceneJsonText</name>
-    <message>
-        <source>JSON syntax error at line %1, column %2 (byte offset %3): %4</source>
-        <translation>JSON-Syntaxfehler in Zeile %1, Spalte %2 (Byte-Offset %3): %4</translation>
-    </message>
-    <message>
-        <source>out-of-range number %1</source>
-        <translation>Zahl außerhalb des Wertebereichs %1</translation>
-    </message>
     <message>
         <source>expected a string (got %1)</source>
         <translation>Zeichenkette erwartet (erhalten: %1)</translation>

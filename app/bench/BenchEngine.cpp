@@ -3,16 +3,16 @@
 #include "BenchPictures.h"
 #include "LightSetups.h"
 #include "ObjectFit.h"
-#include "core/check/ImageMetrics.h"
 #include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
 #include "core/reference/SceneHits.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QCoreApplication>
 #include <QDir>

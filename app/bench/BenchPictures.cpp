@@ -1,7 +1,7 @@
 #include "BenchPictures.h"
 
-#include "core/check/ImageMetrics.h"
-#include "render/QtImages.h"
+#include "core/reference/ImageMetrics.h"
+#include "render/gl/QtImages.h"
 
 #include <QCoreApplication>
 #include <QPainter>

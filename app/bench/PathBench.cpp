@@ -2,14 +2,14 @@
 
 #include "BenchPictures.h"
 #include "BenchResult.h"
-#include "core/check/ImageMetrics.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,6 +1,6 @@
 #include "BenchArgs.h"
 
-#include "cli/CliCommon.h"
+#include "cli/common/CliCommon.h"
 #include "core/scene/PointLight.h"
 #include "core/scene/ResourcePaths.h"
 

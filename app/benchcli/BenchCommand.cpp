@@ -8,7 +8,7 @@
 #include "charts/NormalStudyOutput.h"
 #include "charts/PathChart.h"
 #include "charts/SpeedAccuracyChart.h"
-#include "cli/CliCommon.h"
+#include "cli/common/CliCommon.h"
 #include "core/scene/ResourcePaths.h"
 
 #include <QApplication>

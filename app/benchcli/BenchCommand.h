@@ -1,5 +1,5 @@
 #pragma once
-#include "cli/Cli.h"
+#include "cli/dispatch/Cli.h"
 #include <QtGlobal>
 
 namespace phonglab::cli {
@@ -13,7 +13,7 @@ std::unique_ptr<QCoreApplication> makeWidgetsApplication(int &argc, char **argv)
 
 inline constexpr Subcommand kBenchSubcommand{
     "bench",
-    // Translated where `phonglab --help` prints it (cli/Cli.cpp).
+    // Translated where `phonglab --help` prints it (cli/dispatch/Cli.cpp).
     QT_TRANSLATE_NOOP("phonglab::cli::Cli",
                       "measure speed against accuracy of every shading method and detail"),
     runBench, makeWidgetsApplication};

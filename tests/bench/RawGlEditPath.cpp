@@ -6,7 +6,7 @@
 #include "RawGlCalls.h"
 
 #include "core/scene/ResourcePaths.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 #pragma once
 #include "RawGlCalls.h"
 #include "core/scene/Scene.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QMainWindow>
 #include <QOpenGLContext>

@@ -1,7 +1,7 @@
 #pragma once
 #include "BenchHelpers.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 #include "BenchHelpers.h"
 #include "EditSample.h"
 #include "RawGlFramePath.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/GuiMain.h"

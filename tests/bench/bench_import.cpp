@@ -5,8 +5,8 @@
 // memory is its own. Prints a table; not a test.
 //
 //   bench_import FILE_WITH_NORMALS.obj [FILE_WITHOUT_NORMALS.obj] [--runs N]
-#include "mesh/import/MeshCache.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshCache.h"
+#include "mesh/loading/MeshLoader.h"
 #include "mesh/normals/NormalComputation.h"
 
 #include "ChildMeasure.h"

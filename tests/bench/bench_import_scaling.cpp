@@ -11,7 +11,7 @@
 #include "ChartCsv.h"
 #include "LogLogFit.h"
 #include "ScalingMeshes.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include "ChildMeasure.h"
 #include "TinyObjLoad.h"

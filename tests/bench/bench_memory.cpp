@@ -21,7 +21,7 @@
 #include "core/reference/MeshBvh.h"
 #include "headless/HeadlessPlatform.h"
 #include "mesh/detail/DetailLevels.h"
-#include "render/OffscreenRenderer.h"
+#include "render/draw/OffscreenRenderer.h"
 
 #include <QGuiApplication>
 #include <cmath>

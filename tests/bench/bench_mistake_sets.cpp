@@ -14,8 +14,8 @@
 #include "ShaderMutations.h"
 #include "core/check/MistakeSets.h"
 #include "headless/HeadlessPlatform.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QCommandLineParser>
 #include <QElapsedTimer>

@@ -12,7 +12,7 @@
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

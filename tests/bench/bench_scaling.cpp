@@ -21,8 +21,8 @@
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
 #include "headless/HeadlessPlatform.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ShaderSource.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/program/ShaderSource.h"
 
 #include <QCommandLineParser>
 #include <QDate>

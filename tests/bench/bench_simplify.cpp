@@ -18,7 +18,7 @@
 #include "core/scene/SceneJson.h"
 #include "mesh/detail/MeshDecimation.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -20,12 +20,12 @@
 #include "core/project/HtmlShaders.h"
 #include "core/project/ProjectSave.h"
 #include "core/project/ProjectShader.h"
-#include "core/scene/RecoveryJournal.h"
 #include "core/scene/SceneJson.h"
+#include "core/session/RecoveryJournal.h"
 #include "core/view/CameraPath.h"
-#include "mesh/import/MeshCache.h"
-#include "mesh/import/MeshLoader.h"
-#include "render/ShaderDiagnostic.h"
+#include "mesh/loading/MeshCache.h"
+#include "mesh/loading/MeshLoader.h"
+#include "render/program/ShaderDiagnostic.h"
 
 #include <QBuffer>
 #include <QByteArray>

@@ -3,8 +3,8 @@
 // (MeshCache::encode). The text seeds are checked in as they are.
 //   build-sanitize/tests/fuzz/fuzz_make_seeds tests/fuzz/corpus
 // (scripts/fuzz.sh --make-seeds). The output is deterministic.
-#include "mesh/import/MeshCache.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshCache.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>

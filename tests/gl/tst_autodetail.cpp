@@ -3,11 +3,11 @@
 // close), the level moves with the camera without flickering, and flat
 // shading draws from the level's own face layout.
 #include "RenderCheck.h"
-#include "core/check/ImageMetrics.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/view/DetailSelection.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/QtImages.h"
 
 #include <QTest>
 

@@ -8,7 +8,7 @@
 #include "ResultChecks.h"
 #include "ShaderMutations.h"
 #include "core/check/ShaderCheck.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 
 #include <QRegularExpression>
 #include <QTest>

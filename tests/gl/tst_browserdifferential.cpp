@@ -1,7 +1,7 @@
 // PhongLab draws a WebGL shader as the student's browser drew it: probe
 // shaders (tests/data/browser/probes.json) are drawn by headless Chromium
 // (Debian's chromium, WebGL 1 and 2 on SwiftShader, through ANGLE) and by
-// PhongLab's own build path (render/ProgramBuilder: the course prelude and
+// PhongLab's own build path (render/program/ProgramBuilder: the course prelude and
 // core/program/BrowserRules) on this machine's driver, and their pixels are
 // compared. The probes hold what GLSL leaves undefined and browsers define:
 // unset locals, outputs, parameters and varyings, mediump arithmetic,
@@ -13,9 +13,9 @@
 #include "RenderCheck.h"
 #include "ResultChecks.h"
 #include "TestPaths.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ProgramBuilder.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/program/ProgramBuilder.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -6,8 +6,8 @@
 #include "CheckScene.h"
 #include "ResultChecks.h"
 #include "ShaderMutations.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QTest>
 

@@ -9,7 +9,7 @@
 #include "ShaderMutations.h"
 #include "TestFiles.h"
 #include "TestPaths.h"
-#include "cli/SubmissionArchive.h"
+#include "cli/grade/SubmissionArchive.h"
 
 #include <QDir>
 #include <QDirIterator>

@@ -11,11 +11,11 @@
 #include "core/reference/SceneHits.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 #include "mesh/normals/FaceLayout.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/QtImages.h"
 
 #include <QTest>
 #include <set>

@@ -4,12 +4,12 @@
 // allowance, in 8-bit steps, and the same comparison fails when a light
 // that is seen is dropped (an allowance far above the bound's).
 #include "RenderCheck.h"
-#include "core/check/ImageMetrics.h"
-#include "core/view/LightBound.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "core/reference/ImageMetrics.h"
+#include "core/reference/LightBound.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/QtImages.h"
 
 #include <QTest>
 

@@ -7,10 +7,10 @@
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/ReferenceEdges.h"
 #include "core/scene/SceneJson.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/QtImages.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

@@ -2,7 +2,7 @@
 // Blender cube must render with exactly one normal per face, which a
 // per-vertex (OpenMesh-style) normal import would smear.
 #include "RenderCheck.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 
 #include <QTest>
 

@@ -5,7 +5,7 @@
 // depth buffer into an empty or scrambled frame.
 #include "RenderCheck.h"
 #include "core/view/DepthRange.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 
 #include <QGuiApplication>
 #include <QTest>

@@ -15,8 +15,8 @@
 #include "ShaderMutations.h"
 #include "core/check/MistakeSets.h"
 #include "core/reference/SceneHits.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QTest>
 

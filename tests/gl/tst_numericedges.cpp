@@ -13,8 +13,8 @@
 #include "TestPaths.h"
 #include "core/reference/PhongReference.h"
 #include "core/scene/SceneJson.h"
-#include "mesh/import/MeshLoader.h"
-#include "render/GlFormat.h"
+#include "mesh/loading/MeshLoader.h"
+#include "render/gl/GlFormat.h"
 
 #include <QFile>
 #include <QGuiApplication>

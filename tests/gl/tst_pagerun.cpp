@@ -9,9 +9,9 @@
 #include "core/page/PageNormals.h"
 #include "core/page/PageRun.h"
 #include "core/page/PageScene.h"
-#include "mesh/import/MeshLoader.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
+#include "mesh/loading/MeshLoader.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
 #include "render/page/PageReplay.h"
 
 #include <QElapsedTimer>

@@ -2,7 +2,7 @@
 // surfaces). Prints the figures per scene; deliberately wrong shaders must fail
 // the very same comparison.
 #include "RenderCheck.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 
 #include <QGuiApplication>
 #include <QTest>

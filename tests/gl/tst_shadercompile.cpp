@@ -2,9 +2,9 @@
 // user wrote, and a failed build never replaces the program that works.
 #include "RenderCheck.h"
 #include "ResultChecks.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ShaderProgram.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/program/ShaderProgram.h"
 
 #include <QTest>
 

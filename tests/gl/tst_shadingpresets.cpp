@@ -8,10 +8,10 @@
 #include "core/reference/PhongReference.h"
 #include "core/scene/ShadingMethod.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ShaderProgram.h"
-#include "render/UniformIntrospection.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/program/ShaderProgram.h"
+#include "render/program/UniformIntrospection.h"
 
 #include <QFileInfo>
 #include <QJsonDocument>

@@ -1,8 +1,8 @@
 // SharedGlObject frees a program exactly once, through a context of the
 // program's own share group, and never through another group's context,
 // where the same number names another program.
-#include "render/GlFormat.h"
-#include "render/SharedGlObject.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/SharedGlObject.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

@@ -4,10 +4,10 @@
 // (// @range lo hi, @color, @step s).
 #include "ResultChecks.h"
 #include "core/program/UniformAnnotations.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ShaderProgram.h"
-#include "render/UniformIntrospection.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/program/ShaderProgram.h"
+#include "render/program/UniformIntrospection.h"
 
 #include <QFile>
 #include <QOpenGLContext>

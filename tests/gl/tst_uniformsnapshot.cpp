@@ -2,10 +2,10 @@
 // active uniform through the driver, restore() sets them on a new program
 // where name and type match, and nothing else.
 #include "ResultChecks.h"
-#include "render/GlFormat.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ProgramBuilder.h"
-#include "render/ShaderProgram.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/GlFormat.h"
+#include "render/program/ProgramBuilder.h"
+#include "render/program/ShaderProgram.h"
 
 #include <QTest>
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "core/check/ShaderCheck.h"
 #include "core/scene/SceneJson.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include "TestPaths.h"
 

@@ -3,9 +3,9 @@
 #include "core/reference/MeshRaycaster.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QDir>
 

@@ -1,10 +1,10 @@
 #pragma once
-#include "core/check/ImageMetrics.h"
 #include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/scene/MeshData.h"
 #include "core/scene/Scene.h"
-#include "render/BuildReport.h"
-#include "render/ShaderSource.h"
+#include "render/program/BuildReport.h"
+#include "render/program/ShaderSource.h"
 
 #include <QHash>
 #include <QImage>

@@ -1,7 +1,7 @@
 #include "ShaderMutations.h"
 
 #include "TestPaths.h"
-#include "render/QtImages.h"
+#include "render/gl/QtImages.h"
 
 #include <QtGlobal>
 

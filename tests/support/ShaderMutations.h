@@ -1,9 +1,9 @@
 #pragma once
-#include "core/check/ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
+#include "core/reference/ShaderMistake.h"
 #include "core/support/RgbImage.h"
-#include "render/OffscreenRenderer.h"
-#include "render/ShaderSource.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/program/ShaderSource.h"
 
 #include <vector>
 

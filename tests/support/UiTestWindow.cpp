@@ -1,7 +1,7 @@
 #include "UiTestWindow.h"
 
 #include "ResultChecks.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"

@@ -1,6 +1,6 @@
 #pragma once
 #include "core/scene/Scene.h"
-#include "render/UniformSnapshot.h"
+#include "render/program/UniformSnapshot.h"
 #include "ui/window/MainWindow.h"
 
 #include <QByteArray>

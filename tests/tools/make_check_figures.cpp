@@ -8,8 +8,8 @@
 // labelled, plus the verdict line the check prints.
 #include "CheckScene.h"
 #include "ShaderMutations.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 
 #include <QDir>
 #include <QGuiApplication>

@@ -4,7 +4,7 @@
 // on the sphere scene (it runs build/app/phonglab bench). Run under Xvfb:
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/tests/tools/make_screenshots docs/images
 #include "core/scene/ResourcePaths.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 #include "ui/check/CheckOverlay.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/VerdictDock.h"

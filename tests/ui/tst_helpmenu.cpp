@@ -9,10 +9,10 @@
 #include "ui/help/DocumentView.h"
 #include "ui/help/DocumentationBrowser.h"
 #include "ui/help/DocumentationFiles.h"
-#include "ui/help/HelpMenu.h"
 #include "ui/help/ShortcutsDialog.h"
 #include "ui/viewport/CurrentContext.h"
 #include "ui/viewport/Viewport.h"
+#include "ui/window/HelpMenu.h"
 #include "ui/window/MainWindow.h"
 #include "ui/window/StartupOptions.h"
 

@@ -11,7 +11,7 @@
 #include "core/reference/MeshRaycaster.h"
 #include "core/reference/PhongReference.h"
 #include "core/scene/MaterialPresets.h"
-#include "render/QtImages.h"
+#include "render/gl/QtImages.h"
 #include "ui/scene/LightsDock.h"
 #include "ui/scene/MaterialDock.h"
 #include "ui/scene/ObjectDock.h"

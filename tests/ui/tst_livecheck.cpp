@@ -10,7 +10,7 @@
 #include "core/check/MistakeSets.h"
 #include "core/check/ShaderCheck.h"
 #include "core/project/ProjectPrograms.h"
-#include "render/QtImages.h"
+#include "render/gl/QtImages.h"
 #include "ui/check/CheckOverlay.h"
 #include "ui/check/CheckRunner.h"
 #include "ui/check/LiveCheck.h"

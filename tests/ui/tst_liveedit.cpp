@@ -8,7 +8,7 @@
 #include "ResultChecks.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
-#include "core/scene/RecoveryJournal.h"
+#include "core/session/RecoveryJournal.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ProgramTrial.h"

@@ -10,7 +10,7 @@
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/scene/SceneJson.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshLoader.h"
 #include "ui/scene/MeshPlacement.h"
 #include "ui/scene/MeshStatsText.h"
 #include "ui/scene/NormalsEditor.h"

@@ -9,7 +9,7 @@
 #include "UiTestWindow.h"
 #include "core/scene/SceneJson.h"
 #include "core/view/CameraFraming.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 #include "ui/check/CheckRunner.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"

@@ -4,9 +4,9 @@
 // cache decoder walk such files first and refuse them with a located
 // message, quickly; files OpenMesh itself writes still load.
 #include "MeshFiles.h"
-#include "mesh/import/MeshCache.h"
 #include "mesh/import/MeshFilePrecheck.h"
 #include "mesh/import/MeshFileReader.h"
+#include "mesh/loading/MeshCache.h"
 
 #include <QBuffer>
 #include <QTemporaryDir>

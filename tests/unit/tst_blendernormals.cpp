@@ -1,7 +1,7 @@
 // Blender's exports through the importer: the file's normals arrive exactly,
 // per face corner; without normals each method gets close to the analytic
 // sphere normal within a stated angle.
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include <QFile>
 #include <QTest>

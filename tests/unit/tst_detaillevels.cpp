@@ -7,7 +7,7 @@
 #include "core/view/DetailSelection.h"
 #include "mesh/detail/DetailLevels.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include <QRandomGenerator>
 #include <QtTest>

@@ -3,8 +3,8 @@
 // until the user moves it (and what Save writes then), the headlight added
 // only where a light is free, and dock edits that change parameters but not
 // the objects.
-#include "mesh/import/SceneMeshes.h"
-#include "ui/viewport/GpuScene.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/GpuScene.h"
 
 #include <QTest>
 

@@ -2,9 +2,9 @@
 // exact bytes (columns, number formats, quoting, formulas defused), the
 // class folder as read (stages by suffix and content, two files for a stage,
 // order), shell quoting and HTML escaping of what students named.
-#include "cli/ClassFolder.h"
-#include "cli/GradeReport.h"
-#include "cli/GradeTables.h"
+#include "cli/grade/ClassFolder.h"
+#include "cli/grade/GradeReport.h"
+#include "cli/grade/GradeTables.h"
 
 #include <QDir>
 #include <QFile>

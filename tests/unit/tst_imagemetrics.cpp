@@ -1,8 +1,8 @@
 // Image comparison: PSNR/RMSE worked out by hand, the silhouette band, and
 // inputs that do not fit together.
 
-#include "core/check/ImageMetrics.h"
-#include "render/QtImages.h"
+#include "core/reference/ImageMetrics.h"
+#include "render/gl/QtImages.h"
 
 #include <QtTest>
 #include <cmath>

@@ -3,8 +3,8 @@
 // normal and view, and a light that could change a pixel by the allowance
 // is never left out, alone or together with others.
 
+#include "core/reference/LightBound.h"
 #include "core/reference/PhongReference.h"
-#include "core/view/LightBound.h"
 
 #include <QRandomGenerator>
 #include <QtTest>

@@ -2,7 +2,7 @@
 // frame-timing statistics: pure functions, no GL.
 
 #include "bench/LightSetups.h"
-#include "render/FrameTiming.h"
+#include "render/draw/FrameTiming.h"
 
 #include <QtTest>
 

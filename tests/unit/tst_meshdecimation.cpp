@@ -3,8 +3,8 @@
 // loadSceneMeshes. The mesh's own normals must survive exactly.
 #include "mesh/detail/MeshDecimation.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/MeshLoader.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/MeshLoader.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QFileInfo>
 #include <QTest>

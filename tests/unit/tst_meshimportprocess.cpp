@@ -3,9 +3,9 @@
 // a clear message, and this process goes on. Cancel ends the child at once.
 #include "ImportChildren.h"
 #include "TestPaths.h"
-#include "mesh/import/MeshCache.h"
-#include "mesh/import/MeshImportProcess.h"
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshCache.h"
+#include "mesh/loading/MeshImportProcess.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include <QElapsedTimer>
 #include <QFile>

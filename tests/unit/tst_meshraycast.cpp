@@ -1,14 +1,14 @@
 // The mesh reference: the BVH against a brute-force loop over every triangle,
 // the mesh ray caster against the analytic one on a finely tessellated sphere,
 // the specular channel, bad input, and the time a default-scene frame takes.
-#include "core/check/ImageMetrics.h"
 #include "core/reference/AnalyticRaycaster.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/MeshLoader.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/MeshLoader.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QtTest>
 #include <random>

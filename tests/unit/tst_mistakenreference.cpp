@@ -2,8 +2,8 @@
 // changes the image where it should and nowhere else, and one that cannot
 // show in a scene (normal-matrix under uniform scale) changes nothing there.
 #include "MistakeScenes.h"
-#include "core/check/ShaderMistake.h"
 #include "core/reference/MeshRaycaster.h"
+#include "core/reference/ShaderMistake.h"
 
 #include <QTest>
 

@@ -2,7 +2,7 @@
 // exactly, a write cut short never replaces a good journal, clearing forgets
 // it, and a session that died is told apart from one that still runs.
 
-#include "core/scene/RecoveryJournal.h"
+#include "core/session/RecoveryJournal.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -9,7 +9,7 @@
 #include "core/reference/ReferenceEdges.h"
 #include "core/scene/SceneJson.h"
 #include "mesh/import/BuiltinMeshes.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QtTest>
 #include <thread>

@@ -1,8 +1,8 @@
 // What render, check and grade say over a scene's words on the student's
-// program (cli/SceneOverrides): --bind meanings and constants, --define,
+// program (cli/common/SceneOverrides): --bind meanings and constants, --define,
 // --precision, read the one way, applied name by name, and handed to
 // grade's children as the same words.
-#include "cli/SceneOverrides.h"
+#include "cli/common/SceneOverrides.h"
 
 #include <QTest>
 

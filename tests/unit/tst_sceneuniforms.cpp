@@ -1,7 +1,7 @@
 // The scene's "uniforms": values of the shader's own uniforms, and which of
-// a running program's values a saved scene keeps (render/SceneUniforms).
+// a running program's values a saved scene keeps (render/program/SceneUniforms).
 #include "core/scene/SceneJson.h"
-#include "render/SceneUniforms.h"
+#include "render/program/SceneUniforms.h"
 
 #include <QTest>
 

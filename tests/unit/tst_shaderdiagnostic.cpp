@@ -1,6 +1,6 @@
 // Driver logs to diagnostics, and the prologue that #line maps back; no GL.
-#include "render/ShaderDiagnostic.h"
-#include "render/ShaderSource.h"
+#include "render/program/ShaderDiagnostic.h"
+#include "render/program/ShaderSource.h"
 
 #include <QTest>
 

@@ -1,8 +1,8 @@
 // The classic shader mistakes: their stable keys, and the illumination
 // equation with each pointwise mistake made, against values worked out by
 // hand at points chosen so that the mistake shows.
-#include "core/check/ShaderMistake.h"
 #include "core/reference/PhongReference.h"
+#include "core/reference/ShaderMistake.h"
 
 #include <QTest>
 

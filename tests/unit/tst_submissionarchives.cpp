@@ -1,9 +1,9 @@
 // Archives as students and course platforms hand them in (issue 42, C;
-// cli/SubmissionArchive, cli/ClassStaging): read with libarchive; every
+// cli/grade/SubmissionArchive, cli/grade/ClassStaging): read with libarchive; every
 // hostile form refused whole with its reason, nothing written outside the
 // folder it is unpacked in; names in UTF-8 and CP437; Moodle's two layouts.
-#include "cli/ClassStaging.h"
-#include "cli/SubmissionArchive.h"
+#include "cli/grade/ClassStaging.h"
+#include "cli/grade/SubmissionArchive.h"
 
 #include <QDir>
 #include <QDirIterator>

@@ -1,6 +1,6 @@
 #include "PageOptions.h"
 
-#include "cli/CliCommon.h"
+#include "cli/common/CliCommon.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,6 +1,6 @@
 #include "PageReport.h"
 
-#include "cli/CliCommon.h"
+#include "cli/common/CliCommon.h"
 #include "render/page/PageCheckOutput.h"
 
 #include <QCoreApplication>

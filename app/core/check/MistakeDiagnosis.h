@@ -1,6 +1,6 @@
 #pragma once
-#include "core/check/ShaderMistake.h"
 #include "core/reference/ReferenceImage.h"
+#include "core/reference/ShaderMistake.h"
 #include "core/support/RgbImage.h"
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/check/ShaderMistake.h"
+#include "core/reference/ShaderMistake.h"
 
 #include <QString>
 #include <vector>

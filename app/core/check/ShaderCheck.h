@@ -1,7 +1,7 @@
 #pragma once
-#include "ImageMetrics.h"
 #include "core/check/MistakeDiagnosis.h"
 #include "core/check/SilentTerms.h"
+#include "core/reference/ImageMetrics.h"
 #include "core/reference/PhongEquation.h"
 #include "core/reference/SceneHits.h"
 

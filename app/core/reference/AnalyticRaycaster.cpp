@@ -1,7 +1,7 @@
 #include "core/reference/AnalyticRaycaster.h"
 
-#include "core/reference/AnalyticShapes.h"
 #include "core/reference/PhongReference.h"
+#include "core/scene/AnalyticShapes.h"
 
 #include <algorithm>
 #include <array>

@@ -1,9 +1,9 @@
 #include "core/reference/MeshRaycaster.h"
 
-#include "core/reference/AnalyticShapes.h"
 #include "core/reference/MeshBvh.h"
 #include "core/reference/ReferenceSample.h"
 #include "core/reference/SceneHits.h"
+#include "core/scene/AnalyticShapes.h"
 #include "core/support/ParallelRows.h"
 #include "core/view/ObjectMatrices.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/check/ShaderMistake.h"
+#include "ShaderMistake.h"
 #include "core/reference/PhongEquation.h"
 #include "core/scene/Material.h"
 #include "core/scene/PointLight.h"

@@ -1,6 +1,6 @@
 #include "core/reference/ReferenceEdges.h"
 
-#include "core/check/ImageMetrics.h"
+#include "ImageMetrics.h"
 #include "core/reference/MeshRaycaster.h"
 #include "core/support/ParallelRows.h"
 

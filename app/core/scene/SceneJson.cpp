@@ -253,8 +253,7 @@ SceneLoadResult SceneReader::read(const QJsonDocument &doc, const QString &baseD
 SceneLoadResult parseScene(const QByteArray &json, const QString &baseDir)
 {
     SceneLoadResult result;
-    const Result<QJsonDocument> doc =
-        scenejson::parseJsonText(json, &result.errorLine, &result.errorColumn);
+    const Result<QJsonDocument> doc = parseJsonText(json, &result.errorLine, &result.errorColumn);
     if (!doc) {
         result.error = doc.error();
         return result;

@@ -4,7 +4,7 @@
 // SceneJson.cpp, which walks the document these sit in.
 #include "SceneJsonReader.h"
 
-#include "core/reference/AnalyticShapes.h"
+#include "AnalyticShapes.h"
 #include "core/support/NearestSpelling.h"
 
 #include <QJsonArray>

@@ -8,7 +8,7 @@ namespace phonglab {
 // An 8-bit RGB picture as the GPU writes a framebuffer: rows top to bottom,
 // three bytes a pixel, packed (no row padding). What the reference, the
 // image comparison and the shader check work on, so core needs no Qt GUI;
-// render/QtImages.h converts to and from QImage.
+// render/gl/QtImages.h converts to and from QImage.
 struct RgbImage {
     int width = 0;
     int height = 0;

@@ -1,6 +1,6 @@
 #include "CameraPath.h"
 
-#include "core/scene/SceneJsonText.h"
+#include "core/support/JsonText.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -88,7 +88,7 @@ class PathReader
 public:
     Result<CameraPath> read(const QByteArray &json, const Camera &start, const QString &name)
     {
-        const Result<QJsonDocument> doc = scenejson::parseJsonText(json);
+        const Result<QJsonDocument> doc = parseJsonText(json);
         if (!doc)
             return fail(doc.error());
         if (!doc->isObject())

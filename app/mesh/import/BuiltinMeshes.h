@@ -1,5 +1,5 @@
 #pragma once
-#include "core/reference/AnalyticShapes.h"
+#include "core/scene/AnalyticShapes.h"
 #include "core/scene/MeshData.h"
 
 #include <QString>

@@ -6,9 +6,9 @@
 #include "core/page/PageScene.h"
 #include "core/project/ProjectPrograms.h"
 #include "mesh/import/MeshFilePrecheck.h"
-#include "mesh/import/MeshLoader.h"
-#include "render/OffscreenRenderer.h"
-#include "render/QtImages.h"
+#include "mesh/loading/MeshLoader.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
 #include "render/page/PageReplay.h"
 
 #include <QCoreApplication>

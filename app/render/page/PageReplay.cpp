@@ -1,7 +1,7 @@
 #include "PageReplay.h"
 
 #include "core/page/CaptureBounds.h"
-#include "render/ProgramBuilder.h"
+#include "render/program/ProgramBuilder.h"
 
 #include <QCoreApplication>
 #include <QOpenGLContext>

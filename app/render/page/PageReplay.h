@@ -8,7 +8,7 @@
 namespace phonglab {
 
 // The captured frame drawn again here: each program built as PhongLab
-// builds a student's (render/ProgramBuilder: the browser's rules on this
+// builds a student's (render/program/ProgramBuilder: the browser's rules on this
 // driver), each clear and draw with the state, uniforms and buffers the
 // browser had. Its pixels against the browser's say whether PhongLab runs
 // the page's code as the browser did (the fidelity check, core/page/PageFidelity):

@@ -1,6 +1,6 @@
 #pragma once
 #include "CheckRunner.h"
-#include "render/ShaderDiagnostic.h"
+#include "render/program/ShaderDiagnostic.h"
 
 #include <vector>
 

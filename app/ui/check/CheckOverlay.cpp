@@ -109,7 +109,7 @@ void CheckOverlay::paintEvent(QPaintEvent *)
         paintArrows(painter);
 }
 
-// The heatmap's colours (errorHeatmap() in core/check/ImageMetrics): a ramp from
+// The heatmap's colours (errorHeatmap() in core/reference/ImageMetrics): a ramp from
 // exact to 8/255 or more, and what the two flat colours mean.
 void CheckOverlay::paintLegend(QPainter &painter) const
 {

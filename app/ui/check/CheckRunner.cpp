@@ -1,9 +1,9 @@
 #include "CheckRunner.h"
 
 #include "CheckPriority.h"
-#include "mesh/import/SceneMeshes.h"
-#include "render/GlFormat.h"
-#include "render/QtImages.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/gl/GlFormat.h"
+#include "render/gl/QtImages.h"
 
 #include <QOffscreenSurface>
 #include <QThread>
@@ -147,7 +147,7 @@ void addPlacingErrors(CheckOutcome &outcome, const ProgramFindings &found)
 
 } // namespace
 
-// The steps of drawForCheck() and checkDrawing() (cli/CheckSteps), on the
+// The steps of drawForCheck() and checkDrawing() (cli/check/CheckSteps), on the
 // window's frame: draw, find what the program bound, draw the lights it
 // takes, compare, name what the code does.
 CheckedFrame CheckRunner::Cache::check(const Request &request, QOffscreenSurface *surface,

@@ -1,9 +1,9 @@
 #pragma once
 #include "core/check/ShaderCheck.h"
 #include "core/scene/Scene.h"
-#include "render/CheckReportOutput.h"
-#include "render/FrameRedraw.h"
-#include "render/ProgramFindings.h"
+#include "render/check/CheckReportOutput.h"
+#include "render/check/FrameRedraw.h"
+#include "render/check/ProgramFindings.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -18,7 +18,7 @@ namespace phonglab {
 
 // One finished check of the window's frame against the exact image: the
 // verdict `phonglab check` gives on the same scene and files, found by the
-// same steps (render/ProgramFindings, checkRender, nameWhatTheCodeDoes).
+// same steps (render/check/ProgramFindings, checkRender, nameWhatTheCodeDoes).
 struct CheckedFrame {
     quint64 generation = 0; // of the request it answers
     Scene scene;            // as checked: the headlight included, the lights the program takes

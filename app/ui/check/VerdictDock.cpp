@@ -1,6 +1,6 @@
 #include "VerdictDock.h"
 
-#include "render/CheckReportOutput.h"
+#include "render/check/CheckReportOutput.h"
 
 #include <QRegularExpression>
 #include <QTextBrowser>

@@ -9,7 +9,7 @@ class QTextBrowser;
 namespace phonglab {
 
 // The check's whole verdict, as `phonglab check` prints it on the same scene
-// and files (render/CheckReportOutput): what nothing could place, the
+// and files (render/check/CheckReportOutput): what nothing could place, the
 // bindings and the notes, each mistake with its lines and what it explains,
 // the terms this scene cannot check. The status bar carries its short form.
 // A uniform to place and a line of code are links: to the Uniforms dock's

@@ -1,6 +1,6 @@
 #pragma once
 #include "core/scene/Scene.h"
-#include "mesh/import/SceneMeshes.h"
+#include "mesh/loading/SceneMeshes.h"
 
 #include <QStringList>
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "mesh/import/MeshLoader.h"
+#include "mesh/loading/MeshLoader.h"
 
 #include <QString>
 

@@ -1,8 +1,8 @@
 #include "SceneLoadRequests.h"
 
+#include "FileTypes.h"
 #include "MeshPlacement.h"
 #include "bench/BenchResult.h"
-#include "ui/window/FileTypes.h"
 
 #include <QFileInfo>
 

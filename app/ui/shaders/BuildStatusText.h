@@ -1,6 +1,6 @@
 #pragma once
 #include "core/scene/ShadingMethod.h"
-#include "render/BuildWorker.h"
+#include "render/program/BuildWorker.h"
 
 #include <QCoreApplication>
 #include <QString>

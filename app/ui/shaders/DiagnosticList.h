@@ -1,5 +1,5 @@
 #pragma once
-#include "render/ShaderDiagnostic.h"
+#include "render/program/ShaderDiagnostic.h"
 
 #include <QListWidget>
 #include <vector>

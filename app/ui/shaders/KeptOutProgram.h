@@ -1,8 +1,8 @@
 #pragma once
-#include "render/BuildReport.h"
-#include "render/BuildWorker.h"
-#include "render/ShaderSource.h"
-#include "render/SharedGlObject.h"
+#include "render/gl/SharedGlObject.h"
+#include "render/program/BuildReport.h"
+#include "render/program/BuildWorker.h"
+#include "render/program/ShaderSource.h"
 
 #include <QByteArray>
 #include <QString>

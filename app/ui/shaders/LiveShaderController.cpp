@@ -5,9 +5,9 @@
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
-#include "core/scene/RecoveryJournal.h"
 #include "core/scene/ResourcePaths.h"
-#include "render/BuildThread.h"
+#include "core/session/RecoveryJournal.h"
+#include "render/program/BuildThread.h"
 #include "ui/viewport/Viewport.h"
 
 #include <QSettings>

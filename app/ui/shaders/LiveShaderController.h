@@ -3,8 +3,8 @@
 #include "KeptOutProgram.h"
 #include "ShaderRecovery.h"
 #include "core/scene/ShadingMethod.h"
-#include "render/BuildWorker.h"
-#include "render/ShaderSource.h"
+#include "render/program/BuildWorker.h"
+#include "render/program/ShaderSource.h"
 
 #include <QElapsedTimer>
 #include <QObject>

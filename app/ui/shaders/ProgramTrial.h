@@ -1,6 +1,6 @@
 #pragma once
-#include "render/LentContext.h"
-#include "render/SharedGlObject.h"
+#include "render/gl/LentContext.h"
+#include "render/gl/SharedGlObject.h"
 
 #include <QSize>
 #include <memory>

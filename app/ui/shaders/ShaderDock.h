@@ -1,8 +1,8 @@
 #pragma once
 #include "core/scene/ShadingMethod.h"
 #include "core/support/Result.h"
-#include "render/ShaderDiagnostic.h"
-#include "render/ShaderSource.h"
+#include "render/program/ShaderDiagnostic.h"
+#include "render/program/ShaderSource.h"
 
 #include <QDockWidget>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 #include "core/program/ShaderDialect.h"
-#include "render/ShaderDiagnostic.h"
+#include "render/program/ShaderDiagnostic.h"
 
 #include <Qsci/qsciscintilla.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 #include "core/support/Result.h"
-#include "render/ShaderDiagnostic.h"
+#include "render/program/ShaderDiagnostic.h"
 
 #include <QByteArray>
 #include <QObject>

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/scene/RecoveryJournal.h"
+#include "core/session/RecoveryJournal.h"
 
 #include <QElapsedTimer>
 #include <QObject>

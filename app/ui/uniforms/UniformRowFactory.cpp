@@ -4,7 +4,7 @@
 #include "UniformFloatRow.h"
 #include "UniformIntRow.h"
 #include "UniformVectorRow.h"
-#include "render/UniformIntrospection.h"
+#include "render/program/UniformIntrospection.h"
 
 #include <QLabel>
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
 #include "core/program/UniformAnnotations.h"
 #include "core/program/UniformOwner.h"
-#include "render/UniformSnapshot.h"
+#include "render/program/UniformSnapshot.h"
 
 #include <QWidget>
 

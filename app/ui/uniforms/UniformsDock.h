@@ -1,8 +1,8 @@
 #pragma once
 #include "core/program/UniformAnnotations.h"
 #include "core/program/UniformOwner.h"
-#include "render/UniformIntrospection.h"
-#include "render/UniformSnapshot.h"
+#include "render/program/UniformIntrospection.h"
+#include "render/program/UniformSnapshot.h"
 
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -44,7 +44,7 @@ public:
     QWidget *row(const QString &element) const { return m_rows.value(element); }
     QStringList inactiveNames() const { return m_inactive; }
 
-    // The uniforms the check found nothing to place (render/ProgramFindings):
+    // The uniforms the check found nothing to place (render/check/ProgramFindings):
     // their rows in red, "bound to nothing: choose what it is", until the
     // next check says otherwise.
     void markUnplaced(const QStringList &names);

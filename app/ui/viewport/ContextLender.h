@@ -1,5 +1,5 @@
 #pragma once
-#include "render/LentContext.h"
+#include "render/gl/LentContext.h"
 
 #include <optional>
 

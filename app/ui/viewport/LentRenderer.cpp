@@ -1,7 +1,7 @@
 #include "LentRenderer.h"
 
-#include "render/FrameEstimate.h"
-#include "render/Renderer.h"
+#include "render/draw/FrameEstimate.h"
+#include "render/draw/Renderer.h"
 
 namespace phonglab {
 

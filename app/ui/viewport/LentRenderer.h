@@ -1,5 +1,5 @@
 #pragma once
-#include "render/SharedGlObject.h"
+#include "render/gl/SharedGlObject.h"
 
 #include <QSize>
 

@@ -1,7 +1,7 @@
 #include "ViewProgram.h"
 
 #include "CurrentContext.h"
-#include "GpuScene.h"
+#include "render/draw/GpuScene.h"
 
 #include <QOpenGLContext>
 

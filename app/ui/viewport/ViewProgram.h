@@ -1,7 +1,7 @@
 #pragma once
 #include "core/program/ShaderBindings.h"
-#include "render/UniformIntrospection.h"
-#include "render/UniformSnapshot.h"
+#include "render/program/UniformIntrospection.h"
+#include "render/program/UniformSnapshot.h"
 
 #include <optional>
 #include <vector>

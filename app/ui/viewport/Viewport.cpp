@@ -6,7 +6,7 @@
 #include "CurrentContext.h"
 #include "ViewportInput.h"
 #include "WidgetOverlay.h"
-#include "render/FramebufferImage.h"
+#include "render/draw/FramebufferImage.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

@@ -1,10 +1,10 @@
 #pragma once
-#include "GpuScene.h"
 #include "LentRenderer.h"
 #include "ViewProgram.h"
 #include "ViewportSurface.h"
-#include "render/LentContext.h"
-#include "render/SharedGlObject.h"
+#include "render/draw/GpuScene.h"
+#include "render/gl/LentContext.h"
+#include "render/gl/SharedGlObject.h"
 
 #include <QImage>
 #include <QOpenGLContext>

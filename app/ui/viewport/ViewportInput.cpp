@@ -1,7 +1,7 @@
 #include "ViewportInput.h"
 
-#include "GpuScene.h"
 #include "LightPicking.h"
+#include "render/draw/GpuScene.h"
 
 #include <QAction>
 #include <QDragEnterEvent>

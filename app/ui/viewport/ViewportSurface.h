@@ -1,8 +1,8 @@
 #pragma once
 #include "ContextLender.h"
 #include "core/support/FrameTimeWindow.h"
-#include "render/LentContext.h"
-#include "render/WarmUpDraw.h"
+#include "render/gl/LentContext.h"
+#include "render/program/WarmUpDraw.h"
 
 #include <QImage>
 #include <QObject>

@@ -1,5 +1,5 @@
 #pragma once
-#include "render/ImageLayer.h"
+#include "render/gl/ImageLayer.h"
 
 #include <QImage>
 #include <QList>

@@ -1,7 +1,6 @@
 #include "FileMenu.h"
 
 #include "ExamplesMenu.h"
-#include "FileTypes.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
 #include "SceneDocument.h"
@@ -11,6 +10,7 @@
 #include "core/scene/SceneJson.h"
 #include "core/scene/ScenePaths.h"
 #include "ui/check/PageRunDialog.h"
+#include "ui/scene/FileTypes.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/viewport/Viewport.h"
 

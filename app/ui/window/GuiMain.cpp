@@ -6,10 +6,9 @@
 #include "LanguageMenu.h"
 #include "MainWindow.h"
 #include "SceneDocument.h"
-#include "core/check/ProgramSynopsis.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/support/Language.h"
-#include "render/GlFormat.h"
+#include "render/gl/GlFormat.h"
 #include "ui/viewport/Viewport.h"
 
 #include <QApplication>
@@ -123,7 +122,7 @@ void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples)
     QSurfaceFormat::setDefaultFormat(single);
 }
 
-int runGui(int argc, char **argv)
+int runGui(int argc, char **argv, const QString &synopsis)
 {
     // A slip in the arguments is a usage error with or without a display.
     GuiArguments requested;
@@ -132,7 +131,7 @@ int runGui(int argc, char **argv)
         requested = parseGuiArguments(QCoreApplication::arguments().mid(1));
         if (!requested.error.isEmpty()) {
             printError(requested.error);
-            std::fprintf(stderr, "%s\n", programSynopsis().toLocal8Bit().constData());
+            std::fprintf(stderr, "%s\n", synopsis.toLocal8Bit().constData());
             return kExitUsage;
         }
         if (!displayConfigured()) {

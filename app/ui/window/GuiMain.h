@@ -1,11 +1,14 @@
 #pragma once
+#include <QString>
 
 namespace phonglab {
 
 // Runs the editor on the default scene; the files on its command line, when
 // given, are then opened in the background, as File → Open does. Returns the
-// process exit code.
-int runGui(int argc, char **argv);
+// process exit code. `synopsis` is how phonglab is called, printed after a
+// usage error of the window's arguments: main() passes the commands' own
+// (cli/common/ProgramSynopsis), which the window does not know.
+int runGui(int argc, char **argv, const QString &synopsis);
 
 class MainWindow;
 

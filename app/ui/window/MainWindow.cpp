@@ -2,6 +2,7 @@
 
 #include "DefaultLayout.h"
 #include "FileMenu.h"
+#include "HelpMenu.h"
 #include "LoadProgressWidget.h"
 #include "SceneDocument.h"
 #include "ViewMenu.h"
@@ -10,7 +11,6 @@
 #include "ui/check/CheckMarks.h"
 #include "ui/check/LiveCheck.h"
 #include "ui/check/PixelInspectorDock.h"
-#include "ui/help/HelpMenu.h"
 #include "ui/performance/PerformanceDock.h"
 #include "ui/scene/LightsDock.h"
 #include "ui/scene/MaterialDock.h"

@@ -1,0 +1,274 @@
+#include "CheckSteps.h"
+
+#include "cli/common/SceneStages.h"
+#include "core/project/ProjectShader.h"
+#include "core/reference/ImageMetrics.h"
+#include "mesh/loading/SceneMeshes.h"
+#include "render/draw/OffscreenRenderer.h"
+#include "render/gl/QtImages.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonArray>
+
+namespace phonglab::cli {
+
+// Messages a user reads, in the language the run speaks (core/support/Language).
+struct CheckStepsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::CheckSteps)
+};
+
+ShaderDiagnostic inputError(const QString &file, const QString &message)
+{
+    ShaderDiagnostic d;
+    d.file = file;
+    d.message = message;
+    return d;
+}
+
+QStringList buildWarnings(const std::vector<ShaderDiagnostic> &compilerMessages)
+{
+    QStringList out;
+    for (const ShaderDiagnostic &d : compilerMessages)
+        if (!d.isError())
+            out << d.format();
+    return out;
+}
+
+ShaderDiagnostic sceneError(const QString &path, const SceneLoadResult &loaded)
+{
+    ShaderDiagnostic d = inputError(path, loaded.error);
+    d.line = loaded.errorLine;
+    d.column = loaded.errorColumn;
+    return d;
+}
+
+namespace {
+
+// The file that declares uniform `name`: the vertex stage's, else the
+// fragment's.
+QString declaringFile(const QString &name, const CheckFindings &outcome, const StageFiles &files)
+{
+    const bool inVertex =
+        !outcome.stages.empty() && uniformDeclarationLine(outcome.stages.front().text, name) > 0;
+    return inVertex ? files.vertex : files.fragment;
+}
+
+} // namespace
+
+CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
+{
+    CheckDrawing drawing;
+    CheckFindings &outcome = drawing.outcome;
+    const auto fail = [&](const QString &file, const QString &message) {
+        outcome.errors.push_back(inputError(file, message));
+        return std::move(drawing);
+    };
+    SceneMeshes meshes = loadSceneMeshes(scene);
+    if (!meshes.ok())
+        return fail(input.scenePath, meshes.error);
+    // Builtins too: the reference casts the triangles the GPU draws.
+    for (const SceneObject &object : scene.objects)
+        drawing.objectMeshes.push_back(meshes.entries.value(meshKey(scene, object)).mesh);
+
+    OffscreenRenderer offscreen;
+    if (const Result<> created = offscreen.create(); !created)
+        return fail(QString(), created.error());
+    Renderer &renderer = offscreen.renderer();
+    if (const Result<> set = renderer.setScene(scene, std::move(meshes)); !set)
+        return fail(input.scenePath, set.error());
+    const StageFiles files =
+        chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
+    // A stage that cannot be read is that file's error (check --json's "file").
+    for (const QString &path : {files.vertex, files.fragment}) {
+        if (isShaderLocator(path)) {
+            if (const Result<ProjectShader> shader = shaderAtLocator(path); !shader)
+                return fail(path.left(path.lastIndexOf(QLatin1Char('#'))), shader.error());
+            continue;
+        }
+        if (QFile file(path); !file.open(QIODevice::ReadOnly))
+            return fail(path,
+                        CheckStepsWords::tr("cannot read shader: %1").arg(file.errorString()));
+    }
+    const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
+    if (!built)
+        return fail(QString(), built.error());
+    const BuildReport &program = *built;
+    drawing.compilerMessages = program.diagnostics;
+    outcome.warnings << buildWarnings(drawing.compilerMessages);
+    if (!program.ok) {
+        for (const ShaderDiagnostic &d : program.diagnostics)
+            if (d.isError())
+                outcome.errors.push_back(d);
+        if (outcome.errors.empty())
+            outcome.errors.push_back(
+                inputError(files.fragment, CheckStepsWords::tr("the shaders did not compile")));
+        return drawing;
+    }
+    // Nothing PhongLab could not bind may decide the verdict: the student's
+    // names are PhongLab's gap, never the student's mistake.
+    const ProgramFindings found = findProgramFindings(renderer.program(), scene);
+    outcome.bindings = found.bindings;
+    drawing.lightCapacity = found.lightCapacity;
+    outcome.notes << found.bindings.notes;
+    for (const QString &problem : found.problems)
+        outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
+    for (const UnboundUniform &unbound : found.unbound)
+        outcome.errors.push_back(
+            inputError(declaringFile(unbound.name, outcome, files), unboundMessage(unbound)));
+    for (const QString &conflict : found.conflicts)
+        outcome.errors.push_back(inputError(QStringLiteral("--bind"), conflict));
+    if (!outcome.errors.empty())
+        return drawing;
+    const Scene &checked = found.checked;
+    if (!found.lightsNote.isEmpty()) {
+        outcome.notes << found.lightsNote;
+        renderer.updateSceneParameters(checked);
+    }
+    drawing.image = offscreen.renderImage(input.size);
+    if (drawing.image.isNull())
+        return fail(QString(), CheckStepsWords::tr("rendering failed"));
+    outcome.precision =
+        measurePrecision(offscreen, outcome.stages, checked, input.size, drawing.image);
+    return drawing;
+}
+
+Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity)
+{
+    QString unused;
+    return sceneForCapacity(scene, lightCapacity, &unused);
+}
+
+namespace {
+
+QByteArray stageText(const std::vector<ShaderStageText> &stages, bool vertex)
+{
+    for (const ShaderStageText &s : stages)
+        if (s.vertex == vertex)
+            return s.text.toUtf8();
+    return {};
+}
+
+} // namespace
+
+CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
+                                   const CheckReference &reference, int toleranceSteps,
+                                   std::optional<PhongEquation> equation, const QString &scenePath)
+{
+    findings->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
+    nameWhatTheCodeDoes(findings->report, stageText(findings->stages, true),
+                        stageText(findings->stages, false));
+    if (!findings->report.comparable()) {
+        findings->errors.push_back(inputError(
+            scenePath,
+            CheckStepsWords::tr("nothing to compare: no surface away from silhouettes in "
+                                "this view at %1x%2")
+                .arg(image.width())
+                .arg(image.height())));
+        return CheckOutcome::Verdict::Error;
+    }
+    return findings->report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+}
+
+// --- the child's answer ----------------------------------------------------
+
+namespace {
+
+QJsonObject diagnosticJson(const ShaderDiagnostic &d)
+{
+    return {{QStringLiteral("step"), int(d.step)}, {QStringLiteral("error"), d.isError()},
+            {QStringLiteral("file"), d.file},      {QStringLiteral("line"), d.line},
+            {QStringLiteral("column"), d.column},  {QStringLiteral("message"), d.message}};
+}
+
+ShaderDiagnostic diagnosticFromJson(const QJsonObject &o)
+{
+    ShaderDiagnostic d;
+    d.step =
+        BuildStep(std::clamp(o.value(QStringLiteral("step")).toInt(), 0, int(BuildStep::Link)));
+    d.severity = o.value(QStringLiteral("error")).toBool(true)
+        ? ShaderDiagnostic::Severity::Error
+        : ShaderDiagnostic::Severity::Warning;
+    d.file = o.value(QStringLiteral("file")).toString();
+    d.line = o.value(QStringLiteral("line")).toInt();
+    d.column = o.value(QStringLiteral("column")).toInt();
+    d.message = o.value(QStringLiteral("message")).toString();
+    return d;
+}
+
+QJsonArray diagnosticsJson(const std::vector<ShaderDiagnostic> &list)
+{
+    QJsonArray out;
+    for (const ShaderDiagnostic &d : list)
+        out.append(diagnosticJson(d));
+    return out;
+}
+
+std::vector<ShaderDiagnostic> diagnosticsFromJson(const QJsonValue &value)
+{
+    std::vector<ShaderDiagnostic> out;
+    for (const QJsonValue &d : value.toArray())
+        out.push_back(diagnosticFromJson(d.toObject()));
+    return out;
+}
+
+} // namespace
+
+QJsonObject drawingJson(const CheckDrawing &drawing)
+{
+    const CheckFindings &o = drawing.outcome;
+    QJsonArray stages;
+    for (const ShaderStageText &s : o.stages)
+        stages.append(QJsonObject{{QStringLiteral("path"), s.path},
+                                  {QStringLiteral("text"), s.text},
+                                  {QStringLiteral("vertex"), s.vertex}});
+    // Only what the verdict and its report read: the bound and the
+    // explicitly unbound variables (the type decides nothing after binding).
+    QJsonArray variables;
+    for (const VariableBinding &b : o.bindings.variables)
+        if (b.meaning || b.isExplicit)
+            variables.append(
+                QJsonObject{{QStringLiteral("name"), b.variable.name},
+                            {QStringLiteral("meaning"),
+                             b.meaning ? QJsonValue(bindingMeaningKey(*b.meaning)) : QJsonValue()},
+                            {QStringLiteral("explicit"), b.isExplicit}});
+    return {{QStringLiteral("errors"), diagnosticsJson(o.errors)},
+            {QStringLiteral("compiler"), diagnosticsJson(drawing.compilerMessages)},
+            {QStringLiteral("stages"), stages},
+            {QStringLiteral("variables"), variables},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(o.notes)},
+            {QStringLiteral("precision"), precisionJson(o.precision)},
+            {QStringLiteral("light_capacity"),
+             drawing.lightCapacity ? QJsonValue(*drawing.lightCapacity) : QJsonValue()}};
+}
+
+CheckDrawing drawingFromJson(const QJsonObject &json)
+{
+    CheckDrawing drawing;
+    CheckFindings &o = drawing.outcome;
+    o.errors = diagnosticsFromJson(json.value(QStringLiteral("errors")));
+    drawing.compilerMessages = diagnosticsFromJson(json.value(QStringLiteral("compiler")));
+    o.warnings << buildWarnings(drawing.compilerMessages);
+    for (const QJsonValue &v : json.value(QStringLiteral("stages")).toArray()) {
+        const QJsonObject s = v.toObject();
+        o.stages.push_back({s.value(QStringLiteral("path")).toString(),
+                            s.value(QStringLiteral("text")).toString(),
+                            s.value(QStringLiteral("vertex")).toBool()});
+    }
+    for (const QJsonValue &v : json.value(QStringLiteral("variables")).toArray()) {
+        const QJsonObject b = v.toObject();
+        VariableBinding binding;
+        binding.variable.name = b.value(QStringLiteral("name")).toString();
+        binding.meaning = bindingMeaningFromKey(b.value(QStringLiteral("meaning")).toString());
+        binding.isExplicit = b.value(QStringLiteral("explicit")).toBool();
+        o.bindings.variables.push_back(binding);
+    }
+    for (const QJsonValue &v : json.value(QStringLiteral("notes")).toArray())
+        o.notes << v.toString();
+    o.precision = precisionFromJson(json.value(QStringLiteral("precision")).toObject());
+    if (const QJsonValue c = json.value(QStringLiteral("light_capacity")); c.isDouble())
+        drawing.lightCapacity = c.toInt();
+    return drawing;
+}
+
+} // namespace phonglab::cli
