@@ -64,6 +64,19 @@ int styleAt(ShaderEditor &editor, int line, int index)
                                     editor.positionFromLineIndex(line, index)));
 }
 
+// Whether the cursor's line is among those the editor shows, counted as
+// Scintilla counts them (a box under a line takes lines of its own).
+bool cursorLineInView(ShaderEditor &editor)
+{
+    int line = 0;
+    int index = 0;
+    editor.getCursorPosition(&line, &index);
+    const long display = editor.SendScintilla(QsciScintilla::SCI_VISIBLEFROMDOCLINE, line);
+    const long first = editor.SendScintilla(QsciScintilla::SCI_GETFIRSTVISIBLELINE);
+    const long shown = editor.SendScintilla(QsciScintilla::SCI_LINESONSCREEN);
+    return display >= first && display < first + shown;
+}
+
 QString currentCompletion(ShaderEditor &editor)
 {
     QByteArray buffer(256, '\0');
@@ -116,6 +129,7 @@ private slots:
     void openPairAssignsStagesByName();
     void f5AndPresetBoxEmitRequests();
     void dockShowsErrorAnnotation();
+    void cursorLineStaysInViewAsTheErrorListComesAndGoes();
 
 private:
     QString shippedPath(const QString &name) const
@@ -712,6 +726,45 @@ void TestShaderEditor::dockShowsErrorAnnotation()
     const QString folder = qEnvironmentVariable("PHONGLAB_TEST_SCREENSHOT_DIR");
     if (!folder.isEmpty())
         QVERIFY(shot.save(QDir(folder).filePath(QStringLiteral("shader-dock.png"))));
+}
+
+// Typing at the end of phong.frag, an error appears: the list under the code
+// takes its room from the editor, which must keep the line being typed in
+// view (it fell out of view: lines 15-52 shown with the cursor on 57).
+void TestShaderEditor::cursorLineStaysInViewAsTheErrorListComesAndGoes()
+{
+    ShaderDock dock;
+    loadShipped(dock);
+    dock.resize(720, 640);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    ShaderEditor *editor = dock.editor(ShaderStage::Fragment);
+    const int lastLine = editor->lines();
+    dock.goTo(ShaderStage::Fragment, lastLine, 0);
+    QTRY_VERIFY(cursorLineInView(*editor));
+    const int heightBefore = editor->height();
+
+    std::vector<ShaderDiagnostic> errors;
+    for (int i = 0; i < 6; ++i) // without lines: in the list alone
+        errors.push_back(diagnostic(BuildStep::CompileFragment, Severity::Error, 0, 0,
+                                    QStringLiteral("error %1").arg(i)));
+    dock.showDiagnostics(errors);
+    QTRY_VERIFY(editor->height() < heightBefore); // the list took its room
+    QVERIFY2(cursorLineInView(*editor), "the line being typed left the view as the list came");
+
+    dock.showDiagnostics({});
+    QTRY_COMPARE(editor->height(), heightBefore);
+    QVERIFY2(cursorLineInView(*editor), "the line being typed left the view as the list went");
+
+    // A cursor the user scrolled away from is left where it is.
+    dock.showDiagnostics({});
+    QTRY_COMPARE(editor->height(), heightBefore);
+    editor->setCursorPosition(lastLine - 1, 0);
+    editor->setFirstVisibleLine(0);
+    QVERIFY(!cursorLineInView(*editor));
+    dock.showDiagnostics(errors);
+    QTRY_VERIFY(editor->height() < heightBefore);
+    QCOMPARE(editor->firstVisibleLine(), 0);
 }
 
 QTEST_MAIN(TestShaderEditor)

@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
+#include <QResizeEvent>
 #include <QScrollBar>
 #include <QShortcut>
 #include <QTimer>
@@ -253,6 +254,35 @@ void ShaderEditor::setDiagnostics(const std::vector<ShaderDiagnostic> &diagnosti
 {
     m_diagnostics = diagnostics;
     showMarks();
+}
+
+int ShaderEditor::cursorLine() const
+{
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    return line;
+}
+
+// In display lines, which count the boxes under lines and folded lines.
+bool ShaderEditor::lineInView(int line, long shownLines) const
+{
+    const long display = SendScintilla(SCI_VISIBLEFROMDOCLINE, line);
+    const long first = SendScintilla(SCI_GETFIRSTVISIBLELINE);
+    return display >= first && display < first + std::max(shownLines, 1L);
+}
+
+void ShaderEditor::resizeEvent(QResizeEvent *event)
+{
+    // The event is the text area's own, which already has its new height:
+    // the lines it showed before are those of its old height.
+    const int lineHeight = std::max(1, textHeight(0));
+    const int line = cursorLine();
+    const bool wasInView =
+        event->oldSize().isValid() && lineInView(line, event->oldSize().height() / lineHeight);
+    QsciScintilla::resizeEvent(event);
+    if (wasInView && !lineInView(line, SendScintilla(SCI_LINESONSCREEN)))
+        ensureLineVisible(line);
 }
 
 void ShaderEditor::setCheckMarks(const std::vector<ShaderDiagnostic> &marks)

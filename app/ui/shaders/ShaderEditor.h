@@ -70,7 +70,15 @@ public:
     // shortly after typing pauses; call it to have them at once.
     void refreshDeclaredNames();
 
+protected:
+    // The line being typed stays in view when the editor shrinks (the error
+    // list appearing under it) or grows, if it was in view before.
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
+    // Whether 0-based `line` is among the lines shown when `shownLines` fit.
+    bool lineInView(int line, long shownLines) const;
+    int cursorLine() const;
     void followDialect(ShaderDialect dialect);
     double characterWidth() const;
     int textAreaOffset() const; // margins and padding left and right of the text
