@@ -28,7 +28,7 @@ set(phonglab_plain_build FALSE)
 if(PHONGLAB_SANITIZE STREQUAL "" AND PHONGLAB_DEBUG_INFO STREQUAL "lines"
    AND CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo")
   set(phonglab_plain_build TRUE)
-  set(CMAKE_CXX_FLAGS_RELWITHDEBINFO "-O2 -g1 -DNDEBUG")
+  set(CMAKE_CXX_FLAGS_RELWITHDEBINFO "-O2 -g1") # asserts live: they guard invariants
 endif()
 
 set(PHONGLAB_PCH_CORE

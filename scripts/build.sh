@@ -6,36 +6,31 @@
 #       everywhere, libFuzzer targets added (PHONGLAB_FUZZ=ON, see
 #       cmake/Sanitizers.cmake); only TARGETs (and what they need) when given.
 #       scripts/test.sh --sanitize and scripts/fuzz.sh build here.
+#   scripts/build.sh --thread [TARGET...]   ./build-tsan: clang 14, ThreadSanitizer
+#       (scripts/test.sh --thread).
+# Asserts are live in every build; the project's own code builds with -Werror.
 # Uses ccache when it is installed (scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 
-launcher=()
-if command -v ccache >/dev/null; then
-  # The sloppiness ccache needs to cache files compiled with a precompiled
-  # header (cmake/BuildSpeed.cmake); without it every such call is
-  # "uncacheable".
-  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime;ccache")
-fi
-
-if [ "${1:-}" = "--sanitize" ]; then
+# Every build is a preset of CMakePresets.json: plain (./build), sanitize
+# (./build-sanitize), thread (./build-tsan). ccache, when installed, is
+# chosen by CMakeLists.txt itself.
+if [ "${1:-}" = "--sanitize" ] || [ "${1:-}" = "--thread" ]; then
+  preset=sanitize
+  [ "$1" = "--thread" ] && preset=thread
   shift
   targets=()
   for t in "$@"; do targets+=(--target "$t"); done
-  # -O1 and line tables only: what libFuzzer recommends, with readable
-  # stack traces and no full debug info to build (CI builds this too).
-  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
-    -DCMAKE_CXX_COMPILER=clang++-14 -DPHONGLAB_FUZZ=ON -DPHONGLAB_SANITIZE=address,undefined \
-    "${launcher[@]}" >/dev/null
-  cmake --build build-sanitize --parallel "$(nproc)" "${targets[@]}"
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" --parallel "$(nproc)" "${targets[@]}"
   exit 0
 fi
 
-targets=()
+cmake --preset plain
 if [ "${1:-}" = "--app" ]; then
-  targets=(--target phonglab)
+  cmake --build --preset app --parallel "$(nproc)"
+else
+  cmake --build --preset plain --parallel "$(nproc)"
 fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}"
-cmake --build build --parallel "$(nproc)" "${targets[@]}"

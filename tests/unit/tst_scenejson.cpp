@@ -14,6 +14,14 @@ using namespace phonglab;
 
 namespace {
 
+// A scene object of `mesh`, the rest as a new object has it.
+SceneObject objectOf(const QString &mesh)
+{
+    SceneObject object;
+    object.mesh = mesh;
+    return object;
+}
+
 const QString kSceneDataDir = QStringLiteral(PHONGLAB_TEST_DATA_DIR "/scenes");
 
 // Every field away from its default, awkward doubles included, so a field
@@ -66,7 +74,7 @@ Scene fullScene()
 Scene sphereScene()
 {
     Scene scene;
-    scene.objects = {SceneObject{QStringLiteral("builtin:sphere"), {}, {}, {}}};
+    scene.objects = {objectOf(QStringLiteral("builtin:sphere"))};
     return scene;
 }
 

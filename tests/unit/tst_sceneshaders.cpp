@@ -11,6 +11,14 @@ using namespace phonglab;
 
 namespace {
 
+// A scene object of `mesh`, the rest as a new object has it.
+SceneObject objectOf(const QString &mesh)
+{
+    SceneObject object;
+    object.mesh = mesh;
+    return object;
+}
+
 QByteArray sceneWith(const QByteArray &shadersJson)
 {
     return R"({"mesh": "builtin:sphere", "shaders": )" + shadersJson + "}";
@@ -57,7 +65,7 @@ private slots:
     void roundTrip()
     {
         Scene scene;
-        scene.objects = {SceneObject{QStringLiteral("builtin:torus"), {}, {}, {}}};
+        scene.objects = {objectOf(QStringLiteral("builtin:torus"))};
         scene.vertexShader = QStringLiteral("shaders/my.vert");
         scene.fragmentShader = QStringLiteral("../elsewhere/my.frag");
         const SceneLoadResult back = parseScene(sceneToJson(scene));
@@ -81,7 +89,7 @@ private slots:
     void differentShadersCompareUnequal()
     {
         Scene a;
-        a.objects = {SceneObject{QStringLiteral("builtin:sphere"), {}, {}, {}}};
+        a.objects = {objectOf(QStringLiteral("builtin:sphere"))};
         Scene b = a;
         b.fragmentShader = QStringLiteral("x.frag");
         QVERIFY(!(a == b));
