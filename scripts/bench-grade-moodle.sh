@@ -14,6 +14,7 @@
 #   scripts/bench-grade-moodle.sh [--students N] [--size WxH] [--jobs N]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/bench-class.sh
 students=40
 size=800x600
 jobs=$(nproc)
@@ -39,12 +40,7 @@ for i in $(seq 1 "$students"); do
   dir="$work/folders/$name"
   mkdir -p "$dir"
   cp "$vert" "$dir/phong.vert"
-  case $((i % 4)) in
-    0) cp "$frag" "$dir/phong.frag" ;;
-    1) sed 's/reflect(-L, N)/reflect(L, N)/' "$frag" > "$dir/phong.frag" ;;
-    2) sed 's|vec3 L = toLight / d;|vec3 L = toLight;|' "$frag" > "$dir/phong.frag" ;;
-    3) sed 's|I += fatt \* (|I += uAmbientLight * uKa + fatt * (|' "$frag" > "$dir/phong.frag" ;;
-  esac
+  bench_student_fragment "$i" "$frag" "uAmbientLight * uKa" "$dir/phong.frag"
   {
     printf '<!DOCTYPE html>\n<html><head><title>Lab 3</title></head><body>\n<canvas id="c"></canvas>\n<script>\n'
     printf 'const vsSource = `'; cat "$dir/phong.vert"; printf '`;\n'

@@ -7,10 +7,13 @@
 #                per scene, --jobs 1 and --jobs <cores>
 # The class: N submissions (default 40), a quarter each correct, reflect(L, N),
 # L not normalised, the ambient term once per light; 2 scenes (check.json,
-# default.json) at 800x600.
+# default.json) at 800x600. Each way prints its wall time, its ratio to the
+# loop, and the CPU it and its children used (user + system): over the cores,
+# the floor no number of jobs goes below.
 #   scripts/bench-grade.sh [--students N] [--size WxH]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/bench-class.sh
 students=40
 size=800x600
 while [ $# -gt 0 ]; do
@@ -29,42 +32,45 @@ frag=shaders/phong.frag
 for i in $(seq 1 "$students"); do
   dir="$work/class/student$(printf %02d "$i")"
   mkdir -p "$dir"
-  case $((i % 4)) in
-    0) cp "$frag" "$dir/phong.frag" ;;
-    1) sed 's/reflect(-L, N)/reflect(L, N)/' "$frag" > "$dir/phong.frag" ;;
-    2) sed 's|vec3 L = toLight / d;|vec3 L = toLight;|' "$frag" > "$dir/phong.frag" ;;
-    3) sed 's|I += fatt \* (|I += Ia * ka + fatt * (|' "$frag" > "$dir/phong.frag" ;;
-  esac
+  bench_student_fragment "$i" "$frag" "Ia * ka" "$dir/phong.frag"
 done
 checks=$((students * ${#scenes[@]}))
 cores=$(nproc)
 export PHONGLAB_CACHE_DIR="$work/cache" # the same cold mesh cache for each way
 unset DISPLAY
 
-now() { date +%s%N; }
-since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.2f", (b - a) / 1e9 }'; }
-
-start=$(now)
-for dir in "$work"/class/*/; do
-  for scene in "${scenes[@]}"; do
-    "$exe" check "$scene" --fragment "$dir/phong.frag" --size "$size" --json >/dev/null 2>&1 || true
+# WAY COMMAND...: runs it, sets $WAY (wall seconds) and $WAY_cpu (user + system
+# seconds of it and its children: what the cores had to do, whatever the jobs).
+measure() {
+  local way="$1" t
+  shift
+  t="$( { TIMEFORMAT='%R %U %S'; time "$@" >/dev/null 2>&1; } 2>&1 )"
+  printf -v "$way" '%.2f' "$(echo "$t" | awk '{print $1}')"
+  printf -v "${way}_cpu" '%.2f' "$(echo "$t" | awk '{print $2 + $3}')"
+}
+check_loop() {
+  for dir in "$work"/class/*/; do
+    for scene in "${scenes[@]}"; do
+      "$exe" check "$scene" --fragment "$dir/phong.frag" --size "$size" --json || true
+    done
   done
-done
-loop=$(since "$start")
+}
 
-start=$(now)
-"$exe" grade "$work/class" "${scenes[@]/#/--scene=}" --size "$size" --jobs 1 --out "$work/g1" >/dev/null 2>&1
-grade1=$(since "$start")
-
-start=$(now)
-"$exe" grade "$work/class" "${scenes[@]/#/--scene=}" --size "$size" --jobs "$cores" --out "$work/gn" >/dev/null 2>&1
-graden=$(since "$start")
+measure loop check_loop
+measure grade1 "$exe" grade "$work/class" "${scenes[@]/#/--scene=}" --size "$size" --jobs 1 --out "$work/g1"
+measure graden "$exe" grade "$work/class" "${scenes[@]/#/--scene=}" --size "$size" --jobs "$cores" --out "$work/gn"
 
 cmp -s <(cut -d, -f1-12,14- "$work/g1/grades.csv") <(cut -d, -f1-12,14- "$work/gn/grades.csv") \
   || { echo "bench-grade: --jobs 1 and --jobs $cores disagree" >&2; exit 1; }
 passes=$(grep -c ',pass,' "$work/gn/grades.csv" || true)
 echo "bench-grade: $students submissions x ${#scenes[@]} scenes = $checks checks at $size, $cores cores ($passes pass)"
-printf '  %-28s %8s s  %6s\n' "way" "wall" "ratio"
-printf '  %-28s %8s s  %6s\n' "check loop ($checks runs)" "$loop" "1.00"
-printf '  %-28s %8s s  %6.2f\n' "grade --jobs 1" "$grade1" "$(awk -v a="$grade1" -v b="$loop" 'BEGIN{print a/b}')"
-printf '  %-28s %8s s  %6.2f\n' "grade --jobs $cores" "$graden" "$(awk -v a="$graden" -v b="$loop" 'BEGIN{print a/b}')"
+# cpu/cores is the floor no number of jobs goes below on this machine.
+printf '  %-28s %8s s  %6s  %8s s  %9s s\n' "way" "wall" "ratio" "cpu" "cpu/cores"
+row() {
+  printf '  %-28s %8s s  %6.2f  %8s s  %9.2f s\n' "$1" "$2" \
+    "$(awk -v a="$2" -v b="$loop" 'BEGIN{print a/b}')" "$3" "$(awk -v c="$3" -v n="$cores" 'BEGIN{print c/n}')"
+}
+row "check loop ($checks runs)" "$loop" "$loop_cpu"
+row "grade --jobs 1" "$grade1" "$grade1_cpu"
+row "grade --jobs $cores" "$graden" "$graden_cpu"
+printf '  grade --jobs %s / --jobs 1: %.2f\n' "$cores" "$(awk -v a="$graden" -v b="$grade1" 'BEGIN{print a/b}')"

@@ -110,10 +110,6 @@
         <translation>Fragment</translation>
     </message>
     <message>
-        <source>%1: cannot save: %2</source>
-        <translation>%1: Speichern nicht möglich: %2</translation>
-    </message>
-    <message>
         <source>(not editable here)</source>
         <translation>(hier nicht bearbeitbar)</translation>
     </message>
@@ -365,6 +361,13 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>Copy the versions, for a bug report</source>
         <translation>Versionen kopieren, für einen Fehlerbericht</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::AtomicFile</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: Schreiben nicht möglich: %2</translation>
     </message>
 </context>
 <context>
@@ -1268,10 +1271,6 @@ Die Datei existiert nicht mehr; sie wurde aus der Liste der zuletzt geöffneten 
     <message>
         <source>Open Shader</source>
         <translation>Shader öffnen</translation>
-    </message>
-    <message>
-        <source>GLSL shaders (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;All files (*)</source>
-        <translation>GLSL-Shader (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Open WebGL Project Folder</source>
@@ -4191,6 +4190,10 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
         <source>Keep mine</source>
         <translation>Eigene behalten</translation>
     </message>
+    <message>
+        <source>GLSL shaders (%1);;All files (*)</source>
+        <translation>GLSL-Shader (%1);;Alle Dateien (*)</translation>
+    </message>
 </context>
 <context>
     <name>phonglab::ShaderLint</name>
@@ -4960,10 +4963,6 @@ Exit-Code: 0 Erfolg, 1 eine Szene konnte nicht geladen oder gerendert werden, 2 
 <context>
     <name>phonglab::cli::BenchCommand</name>
     <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: Schreiben nicht möglich: %2</translation>
-    </message>
-    <message>
         <source>
 fit to budget (%1, the scene&apos;s own lights, %2 px silhouette band left out):</source>
         <translation>
@@ -5369,10 +5368,6 @@ Befehle:
         <translation>--timeout: Sekunden in (0, 86400] erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: Schreiben nicht möglich: %2</translation>
-    </message>
-    <message>
         <source>%1: cannot make the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
     </message>
@@ -5524,6 +5519,17 @@ mit dem Programm und den Werten geprüft, die die Seite verwendet hat.
     </message>
 </context>
 <context>
+    <name>phonglab::cli::GradeReferences</name>
+    <message>
+        <source>%1: no exact image: %2</source>
+        <translation>%1: kein exaktes Bild: %2</translation>
+    </message>
+    <message>
+        <source>grade: the exact image of %1, %2 %</source>
+        <translation>grade: das exakte Bild von %1, %2 %</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::GradeReport</name>
     <message>
         <source>Passes per scene</source>
@@ -5651,23 +5657,18 @@ mit dem Programm und den Werten geprüft, die die Seite verwendet hat.
     </message>
 </context>
 <context>
-    <name>phonglab::cli::GradeRun</name>
-    <message>
-        <source>%1: no exact image: %2</source>
-        <translation>%1: kein exaktes Bild: %2</translation>
-    </message>
-    <message>
-        <source>the check drew no image (%1)</source>
-        <translation>die Prüfung hat kein Bild gezeichnet (%1)</translation>
-    </message>
+    <name>phonglab::cli::GradeRowCheck</name>
     <message>
         <source>no reference: %1</source>
         <translation>keine Referenz: %1</translation>
     </message>
     <message>
-        <source>grade: the exact image of %1, %2 %</source>
-        <translation>grade: das exakte Bild von %1, %2 %</translation>
+        <source>the check drew no image (%1)</source>
+        <translation>die Prüfung hat kein Bild gezeichnet (%1)</translation>
     </message>
+</context>
+<context>
+    <name>phonglab::cli::GradeRun</name>
     <message>
         <source>grade: %1 of %2 checked</source>
         <translation>grade: %1 von %2 geprüft</translation>

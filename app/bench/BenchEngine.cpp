@@ -153,7 +153,7 @@ Result<> BenchEngine::run(const BenchOptions &options, std::vector<BenchRow> *ro
         SceneRun &state = runs[std::size_t(i)];
         state.name = QFileInfo(path).completeBaseName();
         state.scene = *loaded.scene;
-        state.ownLights = enabledLightCount(state.scene);
+        state.ownLights = state.scene.enabledLightCount();
         state.lightCounts = benchLightCounts(options, state.ownLights);
         own.push_back(state.ownLights);
     }

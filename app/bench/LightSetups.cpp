@@ -41,12 +41,6 @@ PointLight generatedLight(const Scene &scene, int slot, int slotCount, const Poi
 
 } // namespace
 
-int enabledLightCount(const Scene &scene)
-{
-    return int(std::count_if(scene.lights.begin(), scene.lights.end(),
-                             [](const PointLight &l) { return l.enabled; }));
-}
-
 std::vector<PointLight> lightsForCount(const Scene &scene, int count)
 {
     std::vector<PointLight> own;

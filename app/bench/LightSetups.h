@@ -19,7 +19,4 @@ namespace phonglab {
 // exactly the scene's lights (no scaling).
 std::vector<PointLight> lightsForCount(const Scene &scene, int count);
 
-// The scene's enabled lights (what the shader and the reference see).
-int enabledLightCount(const Scene &scene);
-
 } // namespace phonglab

@@ -1,4 +1,5 @@
 #include "BenchCommand.h"
+#include "core/support/AtomicFile.h"
 #include "core/support/Language.h"
 
 #include "BenchArgs.h"
@@ -9,6 +10,7 @@
 #include "charts/PathChart.h"
 #include "charts/SpeedAccuracyChart.h"
 #include "cli/common/CliCommon.h"
+#include "cli/common/ProgressLine.h"
 #include "core/scene/ResourcePaths.h"
 
 #include <QApplication>
@@ -17,10 +19,8 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <cstdio>
-#include <unistd.h>
 
 namespace phonglab::cli {
 
@@ -31,62 +31,42 @@ struct BenchCommandWords {
 
 namespace {
 
-Result<> writeText(const QString &path, const QString &text)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(text.toUtf8()) < 0
-        || !file.commit())
-        return fail(BenchCommandWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
-    return {};
-}
-
-// Progress on stderr: one line rewritten in place on a terminal, a line per
-// step otherwise (logs, and the Performance dock, which reads them).
+// Progress on stderr, a line per step off a terminal (logs, and the
+// Performance dock, which reads them); each finished row on stdout.
 class ProgressPrinter
 {
 public:
     bool operator()(const BenchProgress &p)
     {
-        const QString line = QStringLiteral("[%1/%2] %3").arg(p.done).arg(p.total).arg(p.stage);
-        if (m_tty) {
-            std::fprintf(stderr, "\r\033[K%s", qPrintable(line));
-            std::fflush(stderr);
-        } else {
-            printErrLine(line);
-        }
+        m_line.show(QStringLiteral("[%1/%2] %3").arg(p.done).arg(p.total).arg(p.stage));
         if (!p.rows.empty()) {
-            if (m_tty)
-                std::fprintf(stderr, "\r\033[K");
+            m_line.clear();
             for (const BenchRow &row : p.rows)
                 printLine(benchTableLine(row));
             std::fflush(stdout);
         }
         return true;
     }
-    void finish()
-    {
-        if (m_tty)
-            std::fprintf(stderr, "\r\033[K");
-    }
+    void finish() { m_line.clear(); }
 
 private:
-    bool m_tty = isatty(fileno(stderr)) != 0;
+    ProgressLine m_line{ProgressLine::Elsewhere::Lines};
 };
 
 int writeOutputs(const BenchArgs &args, const std::vector<BenchRow> &rows, bool writeResults = true)
 {
     const QDir out(args.outDir);
     if (writeResults) {
-        if (const Result<> written =
-                writeText(out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows));
+        if (const Result<> written = writeFileAtomically(
+                out.filePath(QStringLiteral("results.csv")), benchRowsToCsv(rows).toUtf8());
             !written) {
             printError(written.error());
             return kExitFailure;
         }
     }
     const std::vector<SceneFit> fits = fitScenes(rows, args.budget);
-    if (const Result<> written =
-            writeText(out.filePath(QStringLiteral("fit.csv")), sceneFitsToCsv(fits, args.budget));
+    if (const Result<> written = writeFileAtomically(out.filePath(QStringLiteral("fit.csv")),
+                                                     sceneFitsToCsv(fits, args.budget).toUtf8());
         !written) {
         printError(written.error());
         return kExitFailure;
@@ -263,7 +243,7 @@ int benchPath(const BenchArgs &args)
     const QString csv = out.filePath(QStringLiteral("path.csv"));
     const QString png = out.filePath(QStringLiteral("path.png"));
     const QString svg = out.filePath(QStringLiteral("path.svg"));
-    if (const Result<> written = writeText(csv, pathRunsToCsv(runs)); !written) {
+    if (const Result<> written = writeFileAtomically(csv, pathRunsToCsv(runs).toUtf8()); !written) {
         printError(written.error());
         return kExitFailure;
     }

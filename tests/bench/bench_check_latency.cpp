@@ -164,7 +164,8 @@ int main(int argc, char **argv)
     }
     Viewport *viewport = window.viewport();
     if (!QTest::qWaitFor(
-            [&] { return viewport->isRenderReady() && viewport->framesRendered() > 0; }, 60000)) {
+            [&] { return viewport->isRenderReady() && viewport->frameStats().rendered > 0; },
+            60000)) {
         std::fprintf(stderr, "the view did not come up\n");
         return 1;
     }

@@ -104,9 +104,9 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, B
     m_window->show();
     QElapsedTimer wait;
     wait.start();
-    while (m_window->viewport()->framesRendered() == 0 && wait.elapsed() < 10000)
+    while (m_window->viewport()->frameStats().rendered == 0 && wait.elapsed() < 10000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    m_ready = m_window->viewport()->framesRendered() > 0;
+    m_ready = m_window->viewport()->frameStats().rendered > 0;
     if (!m_ready || builder == Builder::App || builder == Builder::GuiThread)
         return;
     m_buildThread = std::make_unique<BuildThread>();
@@ -188,7 +188,7 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     // The pixel: when the frame was handed to the window system (the
     // presenting thread's swapBuffers returned), as the raw path's.
     std::chrono::steady_clock::time_point start;
-    const qint64 fromLoansBefore = viewport->framesFromLoans();
+    const qint64 fromLoansBefore = viewport->frameStats().fromLoans;
     auto framed = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
             frameAt = std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -232,7 +232,7 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     s.warmMs = ms(timings.warmNs);
     // Presented by the trial, the frame reached the window before the
     // program was said to be applied: the GUI thread drew none.
-    s.frameFromLoan = viewport->framesFromLoans() > fromLoansBefore;
+    s.frameFromLoan = viewport->frameStats().fromLoans > fromLoansBefore;
     s.frameMs = s.frameFromLoan ? 0.0 : ms(frameAt - appliedAt);
     s.otherMs = s.totalMs - s.compileMs - s.linkMs - s.warmMs - s.frameMs;
     s.stallMs = ms(maxGap);

@@ -71,7 +71,7 @@ public:
         m_window->show();
         QElapsedTimer wait;
         wait.start();
-        while (m_window->viewport()->framesRendered() == 0 && wait.elapsed() < 10000)
+        while (m_window->viewport()->frameStats().rendered == 0 && wait.elapsed() < 10000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
         // The start's check of the frame against the exact image draws the
         // reference on the CPU, where llvmpipe rasterises too: frames drawn
@@ -84,7 +84,7 @@ public:
     }
     // How long the start's check ran after the first frame (ms).
     double checkMs() const { return m_checkMs; }
-    bool isReady() const { return m_window->viewport()->framesRendered() > 0; }
+    bool isReady() const { return m_window->viewport()->frameStats().rendered > 0; }
     int samples() const { return m_window->viewport()->framebufferSamples(); }
     QSize pixels() const
     {

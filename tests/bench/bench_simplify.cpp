@@ -1,4 +1,4 @@
-// Which simplifier should make the levels of detail (issue 14 C): OpenMesh's
+// Which simplifier should make the levels of detail: OpenMesh's
 // Decimater (quadrics, what decimateMesh uses today) against meshoptimizer's
 // meshopt_simplify, on the same meshes at the same triangle targets, in one
 // run. Prints figures; not a test.

@@ -104,7 +104,7 @@ private slots:
               qPrintable(table.join(QLatin1Char('\n'))));
     }
 
-    // Every form of every mistake (issue 30, E), on turnedScene(): each
+    // Every form of every mistake, on turnedScene(): each
     // variant, made in GLSL as a student writes it, is named by its key
     // first and alone; the table says which form was found.
     void variantConfusionMatrix()
@@ -136,8 +136,7 @@ private slots:
     }
 
     // A student who writes the slide's equation makes the same mistakes:
-    // each is named by its key first, as in the guarded one (issue 30, C
-    // and E); the table says which equation checked it (the guarded one where
+    // each is named by its key first, as in the guarded one; the table says which equation checked it (the guarded one where
     // a mistake leaves no highlight behind a surface to tell the two apart).
     void mistakesInTheSlidesEquation()
     {

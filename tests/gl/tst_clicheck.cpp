@@ -86,7 +86,7 @@ private slots:
         QCOMPARE(german.exitCode, english.exitCode);
     }
 
-    // Issue 33: under a German locale the verdict and the diagnosis are
+    // Under a German locale the verdict and the diagnosis are
     // German, in the slide's words; --json keeps its keys and key values.
     void germanLocaleSpeaksGermanButJsonKeepsItsKeys()
     {

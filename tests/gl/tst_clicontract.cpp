@@ -1,4 +1,4 @@
-// What a script reads from `phonglab`, and a newcomer's slips (issue 34):
+// What a script reads from `phonglab`, and a newcomer's slips:
 // one wording for what is not known, with the nearest suggested; exit 2 for
 // a slip; a path named once; stderr silent unless something is wrong; what
 // `check` says about the file it checks.

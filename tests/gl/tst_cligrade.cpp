@@ -246,7 +246,7 @@ private slots:
         QCOMPARE(verdict(QLatin1Char('\'') + kHostileName), QStringLiteral("fail"));
     }
 
-    // Issue 42, C: a link to a file of the teacher's, or a submission that
+    // A link to a file of the teacher's, or a submission that
     // is a link, is never read: its text is in no table, page or log.
     void noFileOutsideTheClassIsRead()
     {
@@ -383,7 +383,7 @@ private slots:
         QCOMPARE(parseCsv(QString::fromUtf8(csvA)).size(), 5);
     }
 
-    // Issue 33: --lang de makes the report German; the CSV a script reads
+    // --lang de makes the report German; the CSV a script reads
     // (columns, keys, verdicts) is the same byte for byte.
     void germanReportSameCsv()
     {

@@ -1,5 +1,4 @@
-// A course platform's download in, grades and feedback back out (issue 42,
-// D and E): Moodle's "download all submissions" zip in both layouts, with
+// A course platform's download in, grades and feedback back out: Moodle's "download all submissions" zip in both layouts, with
 // WebGL projects, a student's own zip and a hostile one; the `student` and
 // `participant` columns; moodle-grades.csv byte for byte with --points;
 // feedback.zip with each participant's folder named as in the download and

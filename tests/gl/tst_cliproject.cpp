@@ -1,4 +1,4 @@
-// WebGL projects as students hand them in (issue 42, A and B): `check
+// WebGL projects as students hand them in: `check
 // --project` and `grade` find the shaders in pages, inline scripts, script
 // files and files of their own, check each program that lights on its own
 // (the `program` column), leave out an unlit one with a note, and report

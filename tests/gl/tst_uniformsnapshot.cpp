@@ -102,15 +102,16 @@ void TestUniformSnapshot::build(ShaderProgram &program, const QByteArray &fragme
 void TestUniformSnapshot::setFirstValues()
 {
     m_first.bind();
-    m_first.setUniform("gain", 0.75f);
-    m_first.setUniform("tint", glm::vec3(0.1f, 0.2f, 0.3f));
-    m_first.setUniform("mode", 7);
+    glUniform1f(m_first.uniformLocation("gain"), 0.75f);
+    glUniform3f(m_first.uniformLocation("tint"), 0.1f, 0.2f, 0.3f);
+    glUniform1i(m_first.uniformLocation("mode"), 7);
     glUniform1ui(m_first.uniformLocation("mask"), 5u);
     glUniform1i(m_first.uniformLocation("flag"), 1);
-    m_first.setUniform("basis", glm::mat3(1, 2, 3, 4, 5, 6, 7, 8, 9));
+    const glm::mat3 basis(1, 2, 3, 4, 5, 6, 7, 8, 9);
+    glUniformMatrix3fv(m_first.uniformLocation("basis"), 1, GL_FALSE, &basis[0][0]);
     const GLfloat offsets[6] = {0.5f, 1.5f, 2.5f, 3.5f, 4.5f, 5.5f};
     glUniform2fv(m_first.uniformLocation("offsets"), 3, offsets);
-    m_first.setUniform("image", 3);
+    glUniform1i(m_first.uniformLocation("image"), 3);
     glUseProgram(0);
 }
 

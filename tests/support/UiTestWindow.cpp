@@ -48,7 +48,7 @@ void showAndWaitForFrame(MainWindow &window, QSize size)
     window.resize(size);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QTRY_VERIFY(window.viewport()->framesRendered() > 0);
+    QTRY_VERIFY(window.viewport()->frameStats().rendered > 0);
     QVERIFY(window.viewport()->isRenderReady());
 }
 

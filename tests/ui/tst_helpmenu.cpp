@@ -352,7 +352,7 @@ void TestHelpMenu::documentationFolderComesFromTheEnvironment()
     qunsetenv("PHONGLAB_DOC_DIR");
 }
 
-// Issue 49: in a German run F1 opens the German pages, and the contents
+// In a German run F1 opens the German pages, and the contents
 // list both languages' pages.
 void TestHelpMenu::germanRunOpensTheGermanPages()
 {

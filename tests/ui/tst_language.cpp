@@ -1,4 +1,4 @@
-// Issue 33: PhongLab under a German desktop (LANG=de_DE.UTF-8). The menus
+// PhongLab under a German desktop (LANG=de_DE.UTF-8). The menus
 // read Datei / Bearbeiten / Ansicht / Hilfe, the live check's status is
 // German, View → Language offers both languages and remembers a choice,
 // and a value typed the German way ("0,5") is saved as 0.5: the scene loads
@@ -59,7 +59,7 @@ private slots:
         qputenv("LANG", "de_DE.UTF-8");
         QCOMPARE(languageFromEnvironment(), QStringLiteral("de"));
         // The numbers follow the language, whatever the desktop's locale
-        // says (issue 49: "9,024 Dreiecke" beside "36,2 dB").
+        // says ("9,024 Dreiecke" beside "36,2 dB").
         QLocale::setDefault(QLocale::c());
         useLanguage(languageFromEnvironment());
         QCOMPARE(QLocale().language(), QLocale::German);

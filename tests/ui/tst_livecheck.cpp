@@ -135,7 +135,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(check->inspector()->text().contains(QStringLiteral("f_att")),
                                  kCheckTimeoutMs);
         QVERIFY(check->inspector()->text().contains(QStringLiteral("N·L")));
-        // Issue 49: the lights as the Lights dock numbers them, from 1; and
+        // The lights as the Lights dock numbers them, from 1; and
         // the inspector in front, not a tab behind another dock.
         QVERIFY(check->inspector()->text().contains(QStringLiteral("\nlight 1\n")));
         QVERIFY(!check->inspector()->text().contains(QStringLiteral("light 0")));
@@ -164,7 +164,7 @@ private slots:
         QVERIFY(check->lastResult()->report().passed());
     }
 
-    // Issue 30, C: the slide's equation taken literally (no N·L guard on
+    // The slide's equation taken literally (no N·L guard on
     // the highlight) is right too; the window says which it matched, and its
     // pictures are of that equation: the heatmap shows no error.
     // The first check of a view makes its exact image: the status says how
@@ -214,7 +214,7 @@ private slots:
         QCOMPARE(result.exact, toQImage(result.reference->slide.toImage(result.scene.background)));
     }
 
-    // Issue 30, B: the scene's "bindings" name vertex inputs no name gives
+    // The scene's "bindings" name vertex inputs no name gives
     // away, also where the window builds (on its worker thread): the frame
     // the window shows is the one the check drew from the same recipe.
     // Without them Mesa puts the normal, declared first, at location 0 (on a
@@ -267,7 +267,7 @@ private slots:
                                 .arg(worst)));
     }
 
-    // Issue 31, B: `phonglab SCENE.json --vertex FILE --fragment FILE` opens
+    // `phonglab SCENE.json --vertex FILE --fragment FILE` opens
     // the scene with a student's shaders in the editor, checked live.
     void opensASubmission()
     {
@@ -363,7 +363,7 @@ private slots:
         QVERIFY(cube.findings.front().fromCode);
     }
 
-    // Issue 42, B: a WebGL project's program opens from its page, is
+    // A WebGL project's program opens from its page, is
     // checked live, and saves back into the page with only its bytes changed;
     // a shader built from several strings offers Save As instead.
     void opensAWebGlProject()
@@ -437,7 +437,7 @@ private slots:
             dock->openFiles({sourcePath(QStringLiteral("assets/shaders/webgl2/phong.frag"))}));
     }
 
-    // Issue 30, D: the view's 4 samples blend each silhouette with the
+    // The view's 4 samples blend each silhouette with the
     // background; a check of that frame said ✗ (57 dB) at first launch.
     void shippedScenesPassAsTheAppDraws_data()
     {

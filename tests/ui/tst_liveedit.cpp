@@ -228,7 +228,7 @@ void TestLiveEdit::typingChangesTheFrame()
     QVERIFY(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error).isEmpty());
 }
 
-// Issue 41, 2: the frame the trial of a new program drew in the lent context
+// The frame the trial of a new program drew in the lent context
 // is presented there, and is the one the window shows; the GUI thread does
 // not draw it again.
 void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
@@ -237,20 +237,20 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
     if (QTest::currentTestFailed())
         return;
     QTest::qWait(300); // the check's pictures and labels have come and settled
-    const qint64 fromLoans = viewport()->framesFromLoans();
+    const qint64 fromLoans = viewport()->frameStats().fromLoans;
     qint64 drawnAtApply = -1;
     connect(live(), &LiveShaderController::programApplied, this,
-            [&] { drawnAtApply = viewport()->framesRendered(); });
+            [&] { drawnAtApply = viewport()->frameStats().rendered; });
     QSignalSpy swapped(viewport(), &Viewport::frameSwapped);
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.25"));
     QVERIFY(waitForApplied());
     QTRY_VERIFY(swapped.count() > 0);
-    QCOMPARE(viewport()->framesFromLoans(), fromLoans + 1);
+    QCOMPARE(viewport()->frameStats().fromLoans, fromLoans + 1);
     // Booked as the one frame since the program was applied, and no other
     // follows before the check (kCheckDebounceMs) has something to show.
-    QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
+    QCOMPARE(viewport()->frameStats().rendered, drawnAtApply + 1);
     QTest::qWait(kCheckDebounceMs / 2);
-    QCOMPARE(viewport()->framesRendered(), drawnAtApply + 1);
+    QCOMPARE(viewport()->frameStats().rendered, drawnAtApply + 1);
     const QImage shown = shownInWindow();
     // frame() draws the new program again here, on this thread: the
     // trial's frame must be that very picture (exact: single-sampled view).
@@ -262,7 +262,7 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
               QStringLiteral(" for (int k = 0; k < 20000; ++k) I += 1e-7 * sin(I * float(k));"));
     QSignalSpy keptOut(live(), &LiveShaderController::programKeptOut);
     QTRY_VERIFY_WITH_TIMEOUT(keptOut.count() == 1, 60000);
-    QCOMPARE(viewport()->framesFromLoans(), fromLoans + 1);
+    QCOMPARE(viewport()->frameStats().fromLoans, fromLoans + 1);
     QTRY_VERIFY(!viewport()->isContextLent());
     QTest::qWait(100);
     const QImage after = shownInWindow();
@@ -519,7 +519,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QTRY_VERIFY(frame() != shipped);
 }
 
-// Issue 31, C: a loop typed into phong.frag that makes one frame take far
+// A loop typed into phong.frag that makes one frame take far
 // longer than a few frames' worth (~1 s here) is not applied: the last good
 // program keeps drawing, the GUI thread never waits for a frame of it, and
 // "Apply anyway" is offered, which applies it; after its first, long frame
@@ -592,18 +592,18 @@ void TestLiveEdit::slowProgramIsKeptOut()
 
     // Its first frame runs long (off the GUI thread): the view then draws
     // nothing by itself, until the user acts on it.
-    QTRY_VERIFY_WITH_TIMEOUT(viewport()->framesHeld(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frameStats().held, 30000);
     // A frame on its way when the long one ended is booked once the
     // presenting thread gives the context back.
     QTRY_VERIFY(!viewport()->isContextLent());
-    const qint64 drawn = viewport()->framesRendered();
-    const qint64 refused = viewport()->framesRefused();
+    const qint64 drawn = viewport()->frameStats().rendered;
+    const qint64 refused = viewport()->frameStats().refused;
     viewport()->requestFrame();
-    QTRY_VERIFY(viewport()->framesRefused() > refused); // asked for, and not drawn
-    QCOMPARE(viewport()->framesRendered(), drawn);
-    QVERIFY(viewport()->framesHeld());
+    QTRY_VERIFY(viewport()->frameStats().refused > refused); // asked for, and not drawn
+    QCOMPARE(viewport()->frameStats().rendered, drawn);
+    QVERIFY(viewport()->frameStats().held);
     QTest::mouseClick(viewport(), Qt::LeftButton, {}, viewport()->rect().center());
-    QTRY_VERIFY_WITH_TIMEOUT(viewport()->framesRendered() > drawn, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frameStats().rendered > drawn, 30000);
 }
 
 QTEST_MAIN(TestLiveEdit)

@@ -41,13 +41,13 @@ QRgb toRgb(const glm::dvec3 &c)
     return qRgb(qRound(c.r * 255.0), qRound(c.g * 255.0), qRound(c.b * 255.0));
 }
 
-struct FrameStats {
+struct FrameColours {
     double foregroundFraction = 0.0; // pixels that are not background
     double warmFraction = 0.0;       // red clearly above blue
     double coolFraction = 0.0;       // blue clearly above red
 };
 
-FrameStats analyse(const QImage &frame, QRgb background)
+FrameColours analyse(const QImage &frame, QRgb background)
 {
     const QImage image = frame.convertToFormat(QImage::Format_RGB32);
     qint64 foreground = 0, warm = 0, cool = 0;
@@ -178,7 +178,7 @@ void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
     saveArtifact(QStringLiteral("mainwindow-viewport.png"), image);
     saveArtifact(QStringLiteral("mainwindow-window.png"), windowImage(*m_window));
 
-    const FrameStats stats = analyse(image, toRgb(m_loaded.background));
+    const FrameColours stats = analyse(image, toRgb(m_loaded.background));
     QVERIFY2(stats.foregroundFraction > 0.05,
              qPrintable(QString::number(stats.foregroundFraction)));
     QVERIFY(viewport()->showLightMarkers());
@@ -235,7 +235,7 @@ void TestMainWindow::lightMarkersCanBeHidden()
     viewport()->setShowLightMarkers(false);
     const QImage unmarked = frame();
     saveArtifact(QStringLiteral("mainwindow-no-markers.png"), unmarked);
-    const FrameStats stats = analyse(unmarked, toRgb(m_loaded.background));
+    const FrameColours stats = analyse(unmarked, toRgb(m_loaded.background));
     QVERIFY2(stats.foregroundFraction > 0.05,
              qPrintable(QString::number(stats.foregroundFraction)));
     QVERIFY2(stats.warmFraction > 0.005, qPrintable(QString::number(stats.warmFraction)));

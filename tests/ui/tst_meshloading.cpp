@@ -372,7 +372,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
         ticks += m_window->document()->loadJob()->isRunning();
     });
     bool progressShown = false;
-    const qint64 framesBefore = viewport()->framesRendered();
+    const qint64 framesBefore = viewport()->frameStats().rendered;
     QSignalSpy progress(m_window->document()->loadJob(), &SceneLoadJob::progressChanged);
     QElapsedTimer loadTime;
     const bool ok = waitForLoad([&] {
@@ -394,7 +394,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     QVERIFY(progressShown);
     QVERIFY(!m_window->loadProgress()->isVisible());
     QVERIFY(ticks >= 3);
-    QVERIFY(viewport()->framesRendered() > framesBefore);
+    QVERIFY(viewport()->frameStats().rendered > framesBefore);
     QCOMPARE(viewport()
                  ->meshInfo()
                  .value(meshKey(viewport()->currentScene(), viewport()->currentScene().objects[0]))

@@ -197,9 +197,9 @@ void TestPerformanceDock::frameReadoutOnlyWhileSeen()
     readout->setText(QStringLiteral("Frame: stale"));
     nowMs += ReadoutPace::kIntervalMs; // a readout in sight would be due now
     for (int i = 0; i < 5; ++i) {
-        const int frames = viewport()->framesRendered();
+        const int frames = viewport()->frameStats().rendered;
         viewport()->requestFrame();
-        QTRY_VERIFY(viewport()->framesRendered() > frames);
+        QTRY_VERIFY(viewport()->frameStats().rendered > frames);
     }
     QCOMPARE(readout->text(), QStringLiteral("Frame: stale"));
 

@@ -326,7 +326,7 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     QCOMPARE(index, int(qstrlen("uniform vec3 kd;")));
 }
 
-// Issue 30, A: a WebGL 1 shader (no #version line) is GLSL ES 1.00, whose
+// A WebGL 1 shader (no #version line) is GLSL ES 1.00, whose
 // own words are attribute, varying, texture2D and gl_FragColor; a WebGL 2
 // one (#version 300 es) has texture() and inverse(), and no attribute.
 void TestShaderEditor::highlightingAndCompletionFollowTheDialect()
@@ -685,8 +685,8 @@ void TestShaderEditor::f5AndPresetBoxEmitRequests()
 
     QSignalSpy preset(&dock, &ShaderDock::shadingMethodRequested);
     QComboBox *box = dock.shadingMethodBox();
-    // Each method, and the shaders in the editor by their file (issue 49:
-    // it said "Phong" for a student's own).
+    // Each method, and the shaders in the editor by their file (it said
+    // "Phong" for a student's own).
     QCOMPARE(box->count(), shadingNames().size() + 1);
     QCOMPARE(box->currentText(), QStringLiteral("a.frag (your shader)"));
     dock.selectShadingMethod(ShadingMethod::Phong);

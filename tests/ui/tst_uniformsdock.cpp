@@ -223,7 +223,7 @@ void TestUniformsDock::userUniformIsSavedWithTheScene()
     QTRY_VERIFY_WITH_TIMEOUT(gainRow() && programValue("gain") == 0.5f, 10000);
 }
 
-// Issue 30, B: the dock's "bound to" choice binds a uniform to a meaning
+// The dock's "bound to" choice binds a uniform to a meaning
 // whatever its name, goes into the scene's "bindings", and comes back with it.
 void TestUniformsDock::boundToChoiceIsSavedWithTheScene()
 {

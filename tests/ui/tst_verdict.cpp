@@ -1,4 +1,4 @@
-// Issue 49: the window tells a student the same truth as `phonglab check`,
+// The window tells a student the same truth as `phonglab check`,
 // on the same scene and files, and shows the way to a verdict: what nothing
 // places is no mistake of the student's, a found mistake is marked on its
 // line, a pass never claims what the scene cannot show, and the status bar

@@ -1,4 +1,4 @@
-// The first look (issue 18): the window opens at a share of the screen with
+// The first look: the window opens at a share of the screen with
 // the code beside the view, 80 columns of it, its error list under it; no
 // tab label is cut short; every dock is in the View menu; the view frames
 // every object at that size and after a resize; View > Reset Layout brings
@@ -274,7 +274,7 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
           screen.height(), m_window->width(), m_window->height(), shown, viewport()->width(),
           m_window->width());
     QVERIFY2(shown >= lines, qPrintable(QString::number(shown)));
-    // Issue 49: the material under the code shows its rows, not 3 of them.
+    // The material under the code shows its rows, not 3 of them.
     QDockWidget *material = m_window->docks().material;
     material->raise();
     QTest::qWait(20);
@@ -285,7 +285,7 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
             ++fieldsInSight;
     qInfo("material: %d fields in sight, dock %d px high", fieldsInSight, material->height());
     QVERIFY2(fieldsInSight >= 6, qPrintable(QString::number(fieldsInSight))); // ka and kd at least
-    // Issue 49: the tab the user chooses shows its contents (3 rows of the
+    // The tab the user chooses shows its contents (3 rows of the
     // material were all a laptop's first window showed, the uniforms 2):
     // every field in its scroll area's sight, none scrolled away.
     const int heightAtFirst = material->height();
@@ -362,11 +362,11 @@ void TestWindowLayout::theViewFramesEveryObjectAtItsSizeAndAfterAResize()
     QTest::mouseMove(viewport(), centre + QPoint(30, 10));
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, centre + QPoint(30, 10));
     const Camera moved = viewport()->camera();
-    const int framesBefore = viewport()->framesRendered();
+    const int framesBefore = viewport()->frameStats().rendered;
     m_window->resize(m_window->width() * 2 / 3, m_window->height());
     // A frame at the new size: the resize has been dealt with in full.
     QTRY_VERIFY(viewport()->width() < m_window->width()
-                && viewport()->framesRendered() > framesBefore);
+                && viewport()->frameStats().rendered > framesBefore);
     QCOMPARE(viewport()->camera(), moved);
 }
 
@@ -444,7 +444,7 @@ void TestWindowLayout::theFirstLookChecksOut()
     QVERIFY2(report.passed(), qPrintable(check->statusLabel()->verdict()));
 }
 
-// Issue 49: at a laptop's size the inspector showed 5 lines of its terms.
+// At a laptop's size the inspector showed 5 lines of its terms.
 // Brought forward by Inspect it is in front, and the tabs grow to its text
 // (up to half the column), the code giving the room.
 void TestWindowLayout::inspectGivesTheInspectorRoom()

@@ -270,7 +270,7 @@ void TestBindingsByUse::aGainOfTheWholeColourStaysTheUsers()
 
 void TestBindingsByUse::aColourAddedBesideTheAmbientStaysTheUsers()
 {
-    // Issue 49: `+= uZork` beside a named ambientProduct is no factor of the
+    // `+= uZork` beside a named ambientProduct is no factor of the
     // ambient term (it was bound as its gain, 1, and whitened the image
     // into a fail); nothing places it, which check says.
     const QByteArray fragment =

@@ -40,7 +40,7 @@ private slots:
         QVERIFY(report.diagnosis.findings.empty());
     }
 
-    // Over every form of every mistake (issue 30, E): each is named by its
+    // Over every form of every mistake: each is named by its
     // key, first, and the form found is its own.
     void confusionMatrix_data()
     {
@@ -133,7 +133,7 @@ private slots:
         QVERIFY(centre && centre->toText().contains(QStringLiteral("f_att")));
     }
 
-    // The slide's equation (issue 30, C): its terms add up to its own image,
+    // The slide's equation: its terms add up to its own image,
     // which differs from the guarded one where a light behind leaves a
     // highlight, and the text says which equation they are of.
     void pixelTermsOfTheSlidesEquation()

@@ -1,4 +1,4 @@
-// Issue 49: the lights are seen in the first view, and a new one lands
+// The lights are seen in the first view, and a new one lands
 // where it is seen (Add Light put it outside the course scene's view).
 #include "TestPaths.h"
 #include "core/scene/SceneJson.h"

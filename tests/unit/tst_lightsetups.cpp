@@ -38,7 +38,7 @@ private slots:
     void sceneCountIsTheScenesOwnLights()
     {
         const Scene scene = twoLightScene();
-        QCOMPARE(enabledLightCount(scene), 2);
+        QCOMPARE(scene.enabledLightCount(), 2);
         const std::vector<PointLight> lights = lightsForCount(scene, 2);
         QCOMPARE(lights.size(), std::size_t(2));
         QCOMPARE(lights[0], scene.lights[0]);

@@ -3,6 +3,7 @@
 // a clear message, and this process goes on. Cancel ends the child at once.
 #include "ImportChildren.h"
 #include "TestPaths.h"
+#include "core/support/PhonglabExecutable.h"
 #include "mesh/loading/MeshCache.h"
 #include "mesh/loading/MeshImportProcess.h"
 #include "mesh/loading/MeshLoader.h"
@@ -47,7 +48,7 @@ void TestMeshImportProcess::initTestCase()
 {
     QVERIFY(m_dir.isValid());
     qputenv("PHONGLAB_CACHE_DIR", QFile::encodeName(m_dir.filePath(QStringLiteral("cache"))));
-    QVERIFY2(!importExecutable().isEmpty(), "no phonglab executable to import with");
+    QVERIFY2(!phonglabExecutable().isEmpty(), "no phonglab executable to import with");
 }
 
 void TestMeshImportProcess::init()

@@ -1,4 +1,4 @@
-// Save into the page or script a shader came from (issue 42, B;
+// Save into the page or script a shader came from (
 // core/project/ProjectSave): only the shader's bytes change, escaped as
 // their container escapes them, and read back they are the text saved; a
 // shader built from several strings is refused with Save As as the way out.

@@ -1,8 +1,8 @@
-// Shaders as WebGL projects hold them (issue 42, A; core/project): in script
+// Shaders as WebGL projects hold them (core/project): in script
 // elements of any type and id, hidden textareas, JavaScript template
 // literals, concatenations and joined arrays, createTextNode, and files of
 // their own; paired by the project's own calls, by names, or as the one pair
-// left; every line where the file has it. Issue 48, D: what the page
+// left; every line where the file has it. What the page
 // computes between pieces stands as a placeholder token, a student's own
 // file named like a library is read, and a shader file that is in fact
 // JavaScript is read as its strings.
@@ -158,7 +158,7 @@ private slots:
         QVERIFY(error.contains(QStringLiteral("gouraud")));
     }
 
-    // Issue 49: opening shadedSphere2.html of a folder of Angel's pages
+    // Opening shadedSphere2.html of a folder of Angel's pages
     // offers its own program first, not the folder's first.
     void thePageChosenChoosesItsProgram()
     {
@@ -296,7 +296,7 @@ private slots:
         QVERIFY(!isShaderLocator(page));
         const Result<ProjectShader> s = shaderAtLocator(page + QStringLiteral("#fragment-shader"));
         QVERIFY(s);
-        QCOMPARE(s->stage, ProjectStage::Fragment);
+        QCOMPARE(s->stage, ShaderStage::Fragment);
         QVERIFY(!shaderAtLocator(page + QStringLiteral("#nosuch")));
     }
 
@@ -334,7 +334,7 @@ private slots:
         QCOMPARE(p.programs.size(), std::size_t(1)); // paired by initShaderProgram
         const ProjectShader &vertex = p.programs.front().vertex;
         QCOMPARE(vertex.key, QStringLiteral("vs"));
-        QCOMPARE(vertex.stage, ProjectStage::Vertex);
+        QCOMPARE(vertex.stage, ShaderStage::Vertex);
         QVERIFY2(vertex.text.contains(expected), vertex.text.constData());
         QVERIFY(!vertex.writable); // the page computes part of it
         // Every piece on the file's line; the placeholder on its expression's.
@@ -422,7 +422,7 @@ private slots:
         QCOMPARE(QFileInfo(program.vertex.file).fileName(), fileName);
         QCOMPARE(program.vertex.key, QStringLiteral("vertexShader"));
         QCOMPARE(program.fragment.key, QStringLiteral("fragmentShader"));
-        QCOMPARE(program.fragment.stage, ProjectStage::Fragment);
+        QCOMPARE(program.fragment.stage, ShaderStage::Fragment);
         QVERIFY(program.lit);
         QCOMPARE(lineOf(program.vertex.code, "gl_Position"), lineOf(js, "gl_Position"));
         QCOMPARE(lineOf(program.fragment.code, "gl_FragColor"), lineOf(js, "gl_FragColor"));
@@ -516,7 +516,7 @@ private slots:
         QCOMPARE(program.fragment.key, QStringLiteral("phongFS"));
         QCOMPARE(QFileInfo(program.vertex.file).fileName(), vertexFile);
         QCOMPARE(QFileInfo(program.fragment.file).fileName(), fragmentFile);
-        QCOMPARE(program.vertex.stage, ProjectStage::Vertex);
+        QCOMPARE(program.vertex.stage, ShaderStage::Vertex);
         QVERIFY(!program.vertex.code.contains("phongVS"));
         QVERIFY(program.vertex.text.startsWith("attribute vec4 vPosition;"));
         QCOMPARE(lineOf(program.vertex.code, "gl_Position"), lineOf(vertexJs, "gl_Position"));

@@ -111,7 +111,7 @@ private slots:
                  kAmbientPart + kDiffusePart + kSpecularPart);
     }
 
-    // The other forms of the pointwise mistakes (issue 30, E).
+    // The other forms of the pointwise mistakes.
     void lightVectorUnnormalized()
     {
         // L = light - P = (3, 0, 4): N·L = 4, R = (-3, 0, 4), R·V = 4.

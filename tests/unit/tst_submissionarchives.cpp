@@ -1,4 +1,4 @@
-// Archives as students and course platforms hand them in (issue 42, C;
+// Archives as students and course platforms hand them in (
 // cli/grade/SubmissionArchive, cli/grade/ClassStaging): read with libarchive; every
 // hostile form refused whole with its reason, nothing written outside the
 // folder it is unpacked in; names in UTF-8 and CP437; Moodle's two layouts.

@@ -33,8 +33,6 @@ struct CheckCommandWords {
 
 namespace {
 
-constexpr int kMaxImageSide = 4096;
-
 struct CheckArgs {
     QString scenePath;
     QSize size{800, 600};
@@ -168,7 +166,7 @@ std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
                          : CheckCommandWords::tr("exactly one scene file expected"));
     args.scenePath = positional.value(0);
 
-    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &args.size),
+    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxCheckedSide, &args.size),
                                  readShadingOption(parser, stage.shading, &args.shading),
                                  readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())

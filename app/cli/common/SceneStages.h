@@ -38,6 +38,11 @@ struct StageOptions {
     QList<QCommandLineOption> all() const { return {size, vertex, fragment, shading}; }
 };
 
+// The largest side --size takes: `render` draws into a GL framebuffer alone;
+// a check also holds the exact reference, a hit and doubles per pixel.
+inline constexpr int kMaxRenderedSide = 16384;
+inline constexpr int kMaxCheckedSide = 4096;
+
 // --size and --shading, read the one way every command takes them.
 // Each leaves its output alone when the option is not given and returns an
 // empty string, or the message for usage() when the value is wrong.

@@ -1,6 +1,8 @@
 #include "ClassFolder.h"
 
+#include "core/program/ShaderStage.h"
 #include "core/project/ProjectPrograms.h"
+#include "core/project/ProjectShader.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -30,14 +32,9 @@ enum class StageGuess {
 
 StageGuess stageOf(const QFileInfo &file)
 {
-    const QString suffix = file.suffix().toLower();
-    for (const char *s : {"vert", "vs", "vsh"})
-        if (suffix == QLatin1String(s))
-            return StageGuess::Vertex;
-    for (const char *s : {"frag", "fs", "fsh"})
-        if (suffix == QLatin1String(s))
-            return StageGuess::Fragment;
-    if (suffix != QLatin1String("glsl"))
+    if (const std::optional<ShaderStage> stage = stageOfSuffix(file.fileName()))
+        return *stage == ShaderStage::Vertex ? StageGuess::Vertex : StageGuess::Fragment;
+    if (!hasShaderFileSuffix(file.fileName()))
         return StageGuess::None;
     QFile f(file.filePath());
     if (!f.open(QIODevice::ReadOnly))
@@ -53,11 +50,7 @@ QString relativeTo(const QDir &dir, const QString &path)
 // A file a shader could be read from, by its name alone (nothing is read).
 bool looksLikeShader(const QFileInfo &file)
 {
-    const QString suffix = file.suffix().toLower();
-    for (const char *s : {"vert", "vs", "vsh", "frag", "fs", "fsh", "glsl"})
-        if (suffix == QLatin1String(s))
-            return true;
-    return false;
+    return hasShaderFileSuffix(file.fileName());
 }
 
 // Whether `file` is the submission's own: not a symbolic link, and its real
@@ -74,11 +67,7 @@ bool isOwnFile(const QFileInfo &file, const QString &realFolder)
 
 bool isPageOrScript(const QFileInfo &file)
 {
-    const QString suffix = file.suffix().toLower();
-    for (const char *s : {"html", "htm", "xhtml", "js", "mjs"})
-        if (suffix == QLatin1String(s))
-            return true;
-    return false;
+    return isPageFile(file.fileName()) || isScriptFile(file.fileName());
 }
 
 Submission readSubmission(const QFileInfo &folder, bool *isProject)

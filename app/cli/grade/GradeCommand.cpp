@@ -10,6 +10,8 @@
 #include "cli/common/CliCommon.h"
 #include "cli/common/SceneStages.h"
 #include "core/scene/SceneJson.h"
+#include "core/support/AtomicFile.h"
+#include "core/support/PhonglabExecutable.h"
 #include "mesh/loading/MeshImportProcess.h"
 #include "mesh/loading/SceneMeshes.h"
 
@@ -19,7 +21,6 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <QTemporaryFile>
 #include <QThread>
 
@@ -36,7 +37,6 @@ struct GradeCommandWords {
 
 namespace {
 
-constexpr int kMaxImageSide = 4096;
 constexpr double kDefaultTimeoutS = 20.0;
 constexpr int kDefaultMemoryMiB = 2048;
 
@@ -173,9 +173,10 @@ std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
     settings.outFolder = parser.isSet(out) ? parser.value(out) : QStringLiteral("grades");
     if (settings.outFolder.isEmpty())
         return usage(GradeCommandWords::tr("--out: missing the folder"));
-    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &settings.size),
-                                 readSceneOverrides(parser, overrides, &settings.overrides),
-                                 readPageOptions(parser, pages, &args.pages)})
+    for (const QString &wrong :
+         {readSizeOption(parser, stage.size, kMaxCheckedSide, &settings.size),
+          readSceneOverrides(parser, overrides, &settings.overrides),
+          readPageOptions(parser, pages, &args.pages)})
         if (!wrong.isEmpty())
             return usage(wrong);
     if (parser.isSet(equation)) {
@@ -250,14 +251,6 @@ Result<std::vector<GradeScene>> loadScenes(const GradeArgs &args)
     return scenes;
 }
 
-Result<> writeFile(const QString &path, const QByteArray &bytes)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        return fail(GradeCommandWords::tr("%1: cannot write: %2").arg(path, file.errorString()));
-    return {};
-}
-
 Result<> prepareOutFolder(const QString &folder)
 {
     if (!QDir().mkpath(folder + QStringLiteral("/images")))
@@ -273,15 +266,17 @@ Result<> writeOutputs(const GradeResults &results, const GradePoints &points)
 {
     const QString dir = results.settings.outFolder + QLatin1Char('/');
     for (const Result<> &written :
-         {writeFile(dir + QStringLiteral("grades.csv"), gradesCsv(results)),
-          writeFile(dir + QStringLiteral("grades.json"),
-                    QJsonDocument(gradesJson(results)).toJson(QJsonDocument::Indented)),
-          writeFile(dir + QStringLiteral("report.html"), gradeReportHtml(results).toUtf8())})
+         {writeFileAtomically(dir + QStringLiteral("grades.csv"), gradesCsv(results)),
+          writeFileAtomically(dir + QStringLiteral("grades.json"),
+                              QJsonDocument(gradesJson(results)).toJson(QJsonDocument::Indented)),
+          writeFileAtomically(dir + QStringLiteral("report.html"),
+                              gradeReportHtml(results).toUtf8())})
         if (!written)
             return written;
     // Back to Moodle, where the submissions came from it.
     if (const QByteArray moodle = moodleGradesCsv(results, points); !moodle.isEmpty())
-        if (const Result<> written = writeFile(dir + QStringLiteral("moodle-grades.csv"), moodle);
+        if (const Result<> written =
+                writeFileAtomically(dir + QStringLiteral("moodle-grades.csv"), moodle);
             !written)
             return written;
     return writeFeedbackZip(results, dir + QStringLiteral("feedback.zip"));
@@ -374,7 +369,7 @@ int grade(const GradeArgs &args)
                           results.scenes.front().scene.baseDir);
         runSubmissionPages(results, pages, args.jobs);
     }
-    const QString executable = importExecutable();
+    const QString executable = phonglabExecutable();
     if (executable.isEmpty()) {
         printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "
                                          "(set PHONGLAB_EXE)"));

@@ -1,28 +1,30 @@
 #pragma once
 #include "GradeJournal.h"
+#include "GradeReferences.h"
 #include "GradeRows.h"
 #include "cli/check/GradedChild.h"
-#include "core/check/ShaderCheck.h"
+#include "cli/common/ProgressLine.h"
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QThreadPool>
 
 #include <deque>
-#include <map>
 
 namespace phonglab::cli {
 
-// The checks of `grade`: one child per submission × scene, `jobs` at once,
-// each checked here as it ends against the exact image of its scene, made
-// once (once per number of lights a shader can take, where one takes fewer
-// than the scene has). Fills results.rows; writes each student's image and
-// heatmap under the out folder's images/. A progress line on a terminal.
+// The checks of `grade`, as a pool: one child per submission × scene, `jobs`
+// at once, and each row checked (checkRow) on a thread of its own as its
+// child ends, while the next child already draws; the exact images come
+// from one GradeReferences. Fills results.rows. A progress line on a
+// terminal.
 class GradeRun : public QObject
 {
     Q_OBJECT
 
 public:
     GradeRun(GradeResults &results, QString executable, int jobs, GradedChildLimits limits);
+    ~GradeRun() override;
 
     // The exact images of every scene, before any child starts (they use
     // every core). Errors name the scene.
@@ -36,31 +38,26 @@ public:
     QString rowKey(const GradeRow &row) const;
 
 private:
-    struct Job {
-        int row;
-    };
     void startNext();
     void onEnded(int row, const GradedChildEnd &end);
-    void check(GradeRow &row, const GradedChildEnd &end);
-    const CheckReference *referenceFor(int scene, const Scene &checked, QString *error);
-    QString exactImageFor(int scene, int lights, PhongEquation equation,
-                          const CheckReference &reference);
+    // checkRow() on the checking threads; the row counts as done when it returns.
+    void checkInBackground(int row, const GradedChildEnd &end);
+    void startChildren();
     QStringList childArguments(const GradeRow &row) const;
     void showProgress();
 
     GradeResults &m_results;
+    GradeReferences m_references{m_results};
     QString m_executable;
     int m_jobs = 1;
     GradedChildLimits m_limits;
-    std::deque<Job> m_waiting;
-    int m_running = 0;
+    std::deque<int> m_waiting; // rows whose child has not started
+    int m_running = 0;         // children drawing
+    int m_checking = 0;        // rows being checked
     int m_done = 0;
-    double m_childSeconds = 0.0;
     QElapsedTimer m_clock;
-    bool m_tty = false;
-    // By scene, then the number of lights it is checked with.
-    std::map<std::pair<int, int>, CheckReference> m_references;
-    std::map<QString, QString> m_exactImages; // written once each
+    ProgressLine m_progress{ProgressLine::Elsewhere::Nothing};
+    QThreadPool m_checkers; // as many threads as jobs: a check beside each child
     GradeJournal *m_journal = nullptr;
     QHash<QString, GradedChildEnd> m_finished;
 };

@@ -25,8 +25,6 @@ struct RenderCommandWords {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
-
 struct RenderArgs {
     QString scenePath;
     QString outputPath;
@@ -89,7 +87,7 @@ std::variant<RenderArgs, int> parseArgs(const QStringList &arguments)
     if (const QString problem = pngNameProblem(QStringLiteral("-o"), args.outputPath);
         !problem.isEmpty())
         return usage(problem);
-    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxImageSide, &args.size),
+    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxRenderedSide, &args.size),
                                  readShadingOption(parser, stage.shading, &args.shading),
                                  readSceneOverrides(parser, overrides, &args.overrides)})
         if (!wrong.isEmpty())

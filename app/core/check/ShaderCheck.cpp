@@ -64,24 +64,27 @@ double CheckReport::badFraction() const
 namespace {
 
 // The reference checked against: the guarded one as made, or the slide's
-// with the guarded image taking backface-specular's place among the mistakes.
+// with the guarded image taking backface-specular's place among the mistakes
+// (shaded once per reference, when a render first needs them).
 struct CheckedAgainst {
     const ReferenceImage *exact;
     RgbImage exactImage;
-    MistakeImages mistaken;
+    const MistakeImages *mistaken = nullptr;
 };
+
+MistakeImages slideMistakes(const CheckReference &reference);
 
 CheckedAgainst checkedAgainst(const CheckReference &reference, PhongEquation equation)
 {
     if (equation == PhongEquation::Guarded || reference.slide.color.empty())
-        return {&reference.exact, reference.exactImage, reference.mistaken};
-    return {&reference.slide, reference.slide.toImage(reference.background), {}};
+        return {&reference.exact, reference.exactImage, &reference.mistaken};
+    return {&reference.slide, reference.slide.toImage(reference.background), nullptr};
 }
 
 // Every mistake made in the slide's equation, as a student who writes the
 // slide's form makes it (the reference holds them in the guarded one only):
-// shaded from the kept hits when a render checked by the slide's equation
-// fails, which is rare enough not to keep them. Backface-specular's place
+// shaded from the kept hits the first time a render checked by the slide's
+// equation fails, and kept (ShadedMistakes). Backface-specular's place
 // goes to the guarded equation: against the slide's, that is its mistake.
 MistakeImages slideMistakes(const CheckReference &reference)
 {
@@ -138,19 +141,22 @@ CheckReport checkAgainstEquation(const RgbImage &yours, const CheckReference &re
     if (!report.comparable())
         return report;
     if (!report.passed()) {
-        if (against.exact == &reference.slide)
-            against.mistaken = slideMistakes(reference);
-        report.diagnosis = diagnoseMistakes(yours, against.exactImage, against.mistaken,
+        if (!against.mistaken)
+            against.mistaken =
+                &reference.shaded->slideMistakes([&] { return slideMistakes(reference); });
+        report.diagnosis = diagnoseMistakes(yours, against.exactImage, *against.mistaken,
                                             reference.compared, toleranceSteps);
         if (reference.shader.shading == ReferenceShading::Phong)
-            report.diagnosis.together =
-                findMistakeSet(yours, against.exactImage, against.mistaken, reference.compared,
-                               toleranceSteps, [&](const std::vector<MistakeVariant> &set) {
-                                   ReferenceShader shader(ReferenceShading::Phong, set);
-                                   shader.equation = equation;
-                                   return shadeSceneHits(reference.hits, reference.scene, shader)
-                                       .toImage(reference.background);
-                               });
+            report.diagnosis.together = findMistakeSet(
+                yours, against.exactImage, *against.mistaken, reference.compared, toleranceSteps,
+                [&](const std::vector<MistakeVariant> &set) {
+                    return reference.shaded->setImage(equation, set, [&] {
+                        ReferenceShader shader(ReferenceShading::Phong, set);
+                        shader.equation = equation;
+                        return shadeSceneHits(reference.hits, reference.scene, shader)
+                            .toImage(reference.background);
+                    });
+                });
     }
     // What cannot show is the scene's and the size's, whatever --tolerance
     // says: the mistakes whose image is the exact one at the default

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/check/MistakeDiagnosis.h"
+#include "core/check/ShadedMistakes.h"
 #include "core/check/SilentTerms.h"
 #include "core/reference/ImageMetrics.h"
 #include "core/reference/PhongEquation.h"
@@ -24,7 +25,8 @@ inline constexpr int kCheckBandPx = 2; // the render tests' silhouette band
 
 // Everything a check needs that depends on the scene and the size alone, not
 // on the shader: computed once, then any number of renders are checked
-// against it.
+// against it, from any number of threads (it is read only, and `shaded`
+// locks).
 struct CheckReference {
     Scene scene; // as cast and shaded
     SceneHits hits;
@@ -42,6 +44,9 @@ struct CheckReference {
     std::vector<std::uint8_t> compared; // covered pixels away from every silhouette
     glm::dvec3 background{0.0};
     std::vector<ShaderMistake> undetectable; // mistakes whose image is the exact one here
+    // What checks of renders shade beyond this: shared by the reference's
+    // copies, safe to use from several threads at once.
+    std::shared_ptr<ShadedMistakes> shaded = std::make_shared<ShadedMistakes>();
 
     // The exact image of `equation`: the slide's where there is one.
     const ReferenceImage &exactOf(PhongEquation equation) const

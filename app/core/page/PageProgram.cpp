@@ -41,7 +41,7 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture)
     return best;
 }
 
-const ProjectShader *stageInProject(const Project &project, ProjectStage stage,
+const ProjectShader *stageInProject(const Project &project, ShaderStage stage,
                                     const QString &compiled)
 {
     const QByteArray text = compiled.toUtf8().trimmed();
@@ -52,7 +52,7 @@ const ProjectShader *stageInProject(const Project &project, ProjectStage stage,
     return nullptr;
 }
 
-QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled)
+QString stageLocatorInProject(const Project &project, ShaderStage stage, const QString &compiled)
 {
     const ProjectShader *shader = stageInProject(project, stage, compiled);
     return shader ? shaderLocator(*shader) : QString();

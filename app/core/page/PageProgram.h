@@ -31,9 +31,9 @@ std::optional<PageProgram> litPageProgram(const PageCapture &capture);
 // (core/project/ProjectShader) when the page compiled one of its shaders
 // unchanged, so that every line a check names is the student's; empty
 // when the page rewrote it (a token replaced, a prelude added).
-QString stageLocatorInProject(const Project &project, ProjectStage stage, const QString &compiled);
+QString stageLocatorInProject(const Project &project, ShaderStage stage, const QString &compiled);
 // The same shader itself (its file and first line), or null.
-const ProjectShader *stageInProject(const Project &project, ProjectStage stage,
+const ProjectShader *stageInProject(const Project &project, ShaderStage stage,
                                     const QString &compiled);
 
 } // namespace phonglab

@@ -25,19 +25,9 @@ constexpr qint64 kMaxProjectFileBytes = 8 * 1024 * 1024; // as shadersInFile rea
 // Past this, a script with no shader in it is no student's (a library, a bundle).
 constexpr qint64 kLargestStudentScript = 512 * 1024;
 
-const QStringList &shaderSuffixes()
-{
-    static const QStringList suffixes{
-        QStringLiteral("vert"), QStringLiteral("frag"), QStringLiteral("vs"),  QStringLiteral("fs"),
-        QStringLiteral("vsh"),  QStringLiteral("fsh"),  QStringLiteral("glsl")};
-    return suffixes;
-}
-
 bool isScript(const QFileInfo &file)
 {
-    const QString suffix = file.suffix().toLower();
-    return suffix == QLatin1String("js") || suffix == QLatin1String("mjs")
-        || suffix == QLatin1String("cjs");
+    return isScriptFile(file.fileName());
 }
 
 // A library's bundle by its name: it holds its own shaders (three.module.js),
@@ -56,12 +46,9 @@ bool isKnownBundle(const QString &fileName)
 
 bool isProjectFile(const QFileInfo &file)
 {
-    static const QStringList pages{QStringLiteral("html"), QStringLiteral("htm"),
-                                   QStringLiteral("xhtml")};
-    const QString suffix = file.suffix().toLower();
     if (isKnownBundle(file.fileName()))
         return false;
-    return pages.contains(suffix) || isScript(file) || shaderSuffixes().contains(suffix);
+    return isPageFile(file.fileName()) || isScript(file) || hasShaderFileSuffix(file.fileName());
 }
 
 // Minified: lines far longer than anyone writes by hand, all through the file.
@@ -116,7 +103,7 @@ QString stemOf(const QString &name)
 {
     QString n = QFileInfo(name).fileName();
     static const QRegularExpression shaderSuffix(
-        QStringLiteral("\\.(vert|frag|vs|fs|vsh|fsh|glsl)$"),
+        QStringLiteral("\\.(%1)$").arg(shaderFileSuffixes().join(QLatin1Char('|'))),
         QRegularExpression::CaseInsensitiveOption);
     n.remove(shaderSuffix);
     // camelCase and separators into words
@@ -232,8 +219,8 @@ Project readProject(const QString &path)
     std::vector<bool> taken(shaders.size(), false);
     const auto pair = [&](int v, int f) {
         if (v < 0 || f < 0 || v == f || taken[std::size_t(v)] || taken[std::size_t(f)]
-            || shaders[std::size_t(v)].stage != ProjectStage::Vertex
-            || shaders[std::size_t(f)].stage != ProjectStage::Fragment)
+            || shaders[std::size_t(v)].stage != ShaderStage::Vertex
+            || shaders[std::size_t(f)].stage != ShaderStage::Fragment)
             return;
         taken[std::size_t(v)] = taken[std::size_t(f)] = true;
         ProjectProgram program;
@@ -257,14 +244,14 @@ Project readProject(const QString &path)
     std::vector<int> vertices, fragments;
     for (std::size_t i = 0; i < shaders.size(); ++i)
         if (!taken[i])
-            (shaders[i].stage == ProjectStage::Vertex ? vertices : fragments).push_back(int(i));
+            (shaders[i].stage == ShaderStage::Vertex ? vertices : fragments).push_back(int(i));
     if (vertices.size() == 1 && fragments.size() == 1)
         pair(vertices.front(), fragments.front());
     for (std::size_t i = 0; i < shaders.size(); ++i)
         if (!taken[i])
             project.notes << ProjectProgramsWords::tr("%1 (%2): a %3 shader no program takes")
                                  .arg(QFileInfo(shaders[i].file).fileName(), shaders[i].key,
-                                      shaders[i].stage == ProjectStage::Vertex
+                                      shaders[i].stage == ShaderStage::Vertex
                                           ? ProjectProgramsWords::tr("vertex")
                                           : ProjectProgramsWords::tr("fragment"));
     // Unique names, in a stable order.

@@ -20,13 +20,9 @@ namespace {
 
 constexpr qint64 kMaxProjectFileBytes = 8 * 1024 * 1024; // a page or script, not a data file
 
-bool suffixIn(const QString &path, std::initializer_list<const char *> suffixes)
+bool suffixIn(const QString &path, const QStringList &suffixes)
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    for (const char *s : suffixes)
-        if (suffix == QLatin1String(s))
-            return true;
-    return false;
+    return suffixes.contains(QFileInfo(path).suffix().toLower());
 }
 
 // GLSL without its comments: a comment naming gl_Position decides nothing.
@@ -51,17 +47,17 @@ QByteArray withoutComments(const QByteArray &text)
 
 } // namespace
 
-std::optional<ProjectStage> stageOfShaderText(const QByteArray &text)
+std::optional<ShaderStage> stageOfShaderText(const QByteArray &text)
 {
     const QByteArray code = withoutComments(text);
     if (!code.contains("main"))
         return std::nullopt;
     if (code.contains("gl_Position"))
-        return ProjectStage::Vertex;
+        return ShaderStage::Vertex;
     static const QRegularExpression out(QStringLiteral("\\bout\\s+(\\w+\\s+)*[iu]?vec4\\b"));
     if (code.contains("gl_FragColor") || code.contains("gl_FragData")
         || out.match(QString::fromUtf8(code)).hasMatch())
-        return ProjectStage::Fragment;
+        return ShaderStage::Fragment;
     return std::nullopt;
 }
 
@@ -113,7 +109,7 @@ QByteArray laidOutAsInFile(const QByteArray &file, const QByteArray &value,
 void addFound(std::vector<ProjectShader> &out, const QString &path, const QByteArray &file,
               const FoundText &text)
 {
-    const std::optional<ProjectStage> stage = stageOfShaderText(text.value);
+    const std::optional<ShaderStage> stage = stageOfShaderText(text.value);
     if (!stage)
         return;
     ProjectShader shader;
@@ -145,17 +141,31 @@ std::vector<ProjectShader> shadersInFile(const QString &path)
     return shadersInText(path, f.readAll());
 }
 
+bool isPageFile(const QString &path)
+{
+    static const QStringList suffixes{QStringLiteral("html"), QStringLiteral("htm"),
+                                      QStringLiteral("xhtml")};
+    return suffixIn(path, suffixes);
+}
+
+bool isScriptFile(const QString &path)
+{
+    static const QStringList suffixes{QStringLiteral("js"), QStringLiteral("mjs"),
+                                      QStringLiteral("cjs")};
+    return suffixIn(path, suffixes);
+}
+
 std::vector<ProjectShader> shadersInText(const QString &path, const QByteArray &file)
 {
     std::vector<ProjectShader> out;
     std::vector<FoundText> texts;
-    if (suffixIn(path, {"html", "htm", "xhtml"}))
+    if (isPageFile(path))
         texts = shaderTextsInHtml(file);
-    else if (suffixIn(path, {"js", "mjs", "cjs", "ts"})
-             || (suffixIn(path, {"vert", "frag", "vs", "fs", "vsh", "fsh", "glsl"})
+    else if (isScriptFile(path)
+             || (hasShaderFileSuffix(path)
                  && holdsShaderStrings(file))) // a course's "shader file" that is JavaScript
         texts = foundInJs(file, 0);
-    else if (suffixIn(path, {"vert", "frag", "vs", "fs", "vsh", "fsh", "glsl"})) {
+    else if (hasShaderFileSuffix(path)) {
         FoundText whole;
         whole.value = file;
         whole.from.resize(std::size_t(file.size()));

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/program/ShaderStage.h"
 #include "core/support/Result.h"
 
 #include <QByteArray>
@@ -12,11 +13,6 @@ namespace phonglab {
 // A shader as a WebGL project holds it: in a <script> or <textarea> of an
 // HTML page, in a JavaScript string (a template literal, a concatenation,
 // an array joined), or in a file of its own.
-
-enum class ProjectStage {
-    Vertex,
-    Fragment
-};
 
 // What holds a shader's text in its file, which decides how it is written
 // back (ProjectSave).
@@ -34,7 +30,7 @@ struct ProjectShader {
     // What names it in its file: the element's id, the variable or property
     // holding it, a file's name; "line N" where nothing names it.
     QString key;
-    ProjectStage stage = ProjectStage::Vertex;
+    ShaderStage stage = ShaderStage::Vertex;
     QByteArray text; // as written, the way the page hands it to WebGL
     // Its text laid out as in the file: blank lines before it and spaces
     // before each line's first character, so that every line and column a
@@ -63,14 +59,20 @@ QString shaderLocator(const ProjectShader &shader);
 bool isShaderLocator(const QString &path);
 Result<ProjectShader> shaderAtLocator(const QString &locator);
 
-// Every shader in one file: .html/.htm, .js/.mjs, or a shader file of its
-// own (.vert .frag .vs .fs .vsh .fsh .glsl). Texts without `main` or whose
+// A page (.html .htm .xhtml) and a script (.js .mjs .cjs) by their names'
+// suffixes, in any case: with shader files (core/program/ShaderStage), the
+// files a project's shaders are read from.
+bool isPageFile(const QString &path);
+bool isScriptFile(const QString &path);
+
+// Every shader in one file: a page, a script, or a shader file of its own
+// (shaderFileSuffixes()). Texts without `main` or whose
 // stage cannot be told are left out.
 std::vector<ProjectShader> shadersInFile(const QString &path);
 // The same for a file's bytes already read (`path` names it and its kind).
 std::vector<ProjectShader> shadersInText(const QString &path, const QByteArray &file);
 // The stage a text's content gives: gl_Position writes a vertex shader,
 // gl_FragColor, gl_FragData or an `out vec4` a fragment shader.
-std::optional<ProjectStage> stageOfShaderText(const QByteArray &text);
+std::optional<ShaderStage> stageOfShaderText(const QByteArray &text);
 
 } // namespace phonglab

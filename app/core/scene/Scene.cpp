@@ -1,5 +1,7 @@
 #include "Scene.h"
 
+#include <algorithm>
+
 #include <QDir>
 
 namespace phonglab {
@@ -12,6 +14,12 @@ QString Scene::resolveMeshPath(const QString &mesh) const
     // cleanPath folds "scenes/../meshes": Qt resource paths (":/assets/...")
     // do not resolve ".." themselves.
     return QDir::cleanPath(QDir(baseDir).filePath(mesh));
+}
+
+int Scene::enabledLightCount() const
+{
+    return int(
+        std::count_if(lights.begin(), lights.end(), [](const PointLight &l) { return l.enabled; }));
 }
 
 QString Scene::resolveShaderPath(const QString &shader) const

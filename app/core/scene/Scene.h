@@ -75,6 +75,8 @@ struct Scene {
     QString resolveMeshPath(const QString &mesh) const;
     QString resolveShaderPath(const QString &shader) const;
     bool operator==(const Scene &other) const;
+    // The lights switched on: what the shader and the reference see.
+    int enabledLightCount() const;
 
     // What `object` is drawn with: its own method, else the scene's.
     ShadingMethod shadingOf(const SceneObject &object) const

@@ -1,4 +1,5 @@
 #include "MeshImportProcess.h"
+#include "core/support/PhonglabExecutable.h"
 
 #include "core/support/Language.h"
 
@@ -182,24 +183,6 @@ MeshImportLimits MeshImportLimits::forFile(qint64 fileBytes)
     return limits;
 }
 
-QString importExecutable()
-{
-    const QString fromEnv = qEnvironmentVariable("PHONGLAB_EXE");
-    if (!fromEnv.isEmpty())
-        return QFileInfo(fromEnv).isExecutable() ? fromEnv : QString();
-    const QFileInfo self(QFile::symLinkTarget(QStringLiteral("/proc/self/exe")));
-    if (self.fileName() == QLatin1String("phonglab"))
-        return self.absoluteFilePath();
-    const QFileInfo beside(self.absoluteDir().filePath(QStringLiteral("phonglab")));
-    if (beside.isExecutable())
-        return beside.absoluteFilePath();
-#ifdef PHONGLAB_BUILD_EXE
-    if (QFileInfo(QStringLiteral(PHONGLAB_BUILD_EXE)).isExecutable())
-        return QStringLiteral(PHONGLAB_BUILD_EXE);
-#endif
-    return {};
-}
-
 MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &normals,
                                   const LoadProgress &progress)
 {
@@ -208,7 +191,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         result.error = QStringLiteral("%1: %2").arg(path, why);
         return result;
     };
-    const QString executable = importExecutable();
+    const QString executable = phonglabExecutable();
     if (executable.isEmpty())
         return fail(MeshImportProcessWords::tr(
             "cannot find the phonglab executable that imports meshes (set PHONGLAB_EXE)"));

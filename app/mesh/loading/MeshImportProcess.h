@@ -27,11 +27,6 @@ struct MeshImportLimits {
 // Exit statuses of `phonglab __import-mesh` beyond the CLI's 0/1/2.
 inline constexpr int kImportExitOutOfMemory = 3;
 
-// The `phonglab` binary that runs the import: $PHONGLAB_EXE, else this
-// process when it is phonglab, else `phonglab` beside it, else the one this
-// build made. Empty when none exists.
-QString importExecutable();
-
 // Runs the child and waits for it, calling progress() with what it reports
 // (false cancels: the child is killed at once). Errors name the file and say
 // what happened: a load error as the reader put it, "the reader stopped

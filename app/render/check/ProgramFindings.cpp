@@ -136,8 +136,7 @@ QStringList bindingsByUseText(const ProgramBindings &bindings)
 
 Scene sceneForCapacity(const Scene &scene, std::optional<int> capacity, QString *note)
 {
-    const auto enabled = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                       [](const PointLight &l) { return l.enabled; });
+    const int enabled = scene.enabledLightCount();
     if (!capacity || enabled <= *capacity)
         return scene;
     Scene out = scene;

@@ -106,8 +106,7 @@ Scene GpuScene::renderedScene() const
 {
     Scene scene = currentScene();
     // Disabled lights are not sent to the shader, so they leave room for it.
-    const auto enabledLights = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                             [](const PointLight &l) { return l.enabled; });
+    const int enabledLights = scene.enabledLightCount();
     if (m_headlight && enabledLights < kMaxLights) {
         PointLight head;
         head.position = scene.camera.eye; // moves with every orbit, pan and zoom

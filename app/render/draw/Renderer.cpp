@@ -28,6 +28,10 @@ Result<> Renderer::initialize()
         shaderPath(QStringLiteral("marker.vert")), shaderPath(QStringLiteral("marker.frag")));
     if (!markerFiles)
         return fail(markerFiles.error());
+    // Set as every program's uniforms are: by what they mean.
+    m_markerProgram.setExplicitBindings(
+        {{QStringLiteral("mvpMatrix"), BindingMeaning::ModelViewProjection},
+         {QStringLiteral("color"), BindingMeaning::MaterialColor}});
     const BuildReport marker = m_markerProgram.build(markerFiles->vertex, markerFiles->fragment);
     if (!marker.ok)
         return fail(RendererWords::tr("cannot build the light-marker program:\n")
@@ -264,11 +268,11 @@ void Renderer::drawLightMarkers(const glm::dmat4 &view, const glm::dmat4 &projec
                                             light.position.y, light.position.z, 1);
         // Show the light's hue even when its intensity is above 1 or very dim.
         const double peak = std::max({light.diffuse.r, light.diffuse.g, light.diffuse.b, 1e-6});
-        m_markerProgram.setUniform("mvpMatrix", glm::mat4(projection * view * model));
+        m_markerProgram.setMatrix(BindingMeaning::ModelViewProjection, projection * view * model);
         // A disabled light keeps its marker (it can still be picked and
         // dragged), drawn dimmed to a quarter of its hue.
         const double dim = light.enabled ? 1.0 : 0.25;
-        m_markerProgram.setUniform("color", glm::vec3(dim * light.diffuse / peak));
+        m_markerProgram.setVector(BindingMeaning::MaterialColor, dim * light.diffuse / peak);
         m_markerMesh.draw();
     }
 }

@@ -79,10 +79,10 @@ std::vector<ShaderStageText> stagesAsHandedIn(const PageCheck &check, const Proj
     const std::optional<PageProgram> lit = litPageProgram(check.capture);
     if (!lit)
         return out;
-    for (const auto &[stage, text] : {std::pair{ProjectStage::Vertex, lit->program->vertex},
-                                      std::pair{ProjectStage::Fragment, lit->program->fragment}}) {
+    for (const auto &[stage, text] : {std::pair{ShaderStage::Vertex, lit->program->vertex},
+                                      std::pair{ShaderStage::Fragment, lit->program->fragment}}) {
         const ProjectShader *shader = stageInProject(project, stage, text);
-        const bool vertex = stage == ProjectStage::Vertex;
+        const bool vertex = stage == ShaderStage::Vertex;
         // A project's shader laid out as in its file (ProjectShader::code):
         // every line a finding names is the file's.
         out.push_back({shader
@@ -224,7 +224,7 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
         return stages;
     }
     const Project files = readProject(project);
-    const auto stagePath = [&](ProjectStage stage, const QString &text, const char *name) {
+    const auto stagePath = [&](ShaderStage stage, const QString &text, const char *name) {
         const QString locator = stageLocatorInProject(files, stage, text);
         if (!locator.isEmpty())
             return locator;
@@ -234,8 +234,8 @@ PageStages pageStagesForScene(const PageCheck &check, const QString &project,
             file.commit();
         return path;
     };
-    stages.vertexPath = stagePath(ProjectStage::Vertex, lit->program->vertex, "page.vert");
-    stages.fragmentPath = stagePath(ProjectStage::Fragment, lit->program->fragment, "page.frag");
+    stages.vertexPath = stagePath(ShaderStage::Vertex, lit->program->vertex, "page.vert");
+    stages.fragmentPath = stagePath(ShaderStage::Fragment, lit->program->fragment, "page.frag");
     stages.constants = lit->constants;
     stages.note = PageCheckWords::tr("the course scene is checked with program %1 as the page "
                                      "compiled it: %2 and %3")

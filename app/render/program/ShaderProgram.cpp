@@ -360,35 +360,4 @@ GLint ShaderProgram::uniformLocation(const char *name)
 
 // A uniform the user's shader does not declare (or the compiler optimised
 // away) has location -1; glUniform* ignores it, which is what we want.
-void ShaderProgram::setUniform(const char *name, const glm::mat4 &m)
-{
-    glUniformMatrix4fv(uniformLocation(name), 1, GL_FALSE, glm::value_ptr(m));
-}
-
-void ShaderProgram::setUniform(const char *name, const glm::mat3 &m)
-{
-    glUniformMatrix3fv(uniformLocation(name), 1, GL_FALSE, glm::value_ptr(m));
-}
-
-void ShaderProgram::setUniform(const char *name, const glm::vec3 &v)
-{
-    glUniform3fv(uniformLocation(name), 1, glm::value_ptr(v));
-}
-
-void ShaderProgram::setUniform(const char *name, float f)
-{
-    glUniform1f(uniformLocation(name), f);
-}
-
-void ShaderProgram::setUniform(const char *name, int i)
-{
-    glUniform1i(uniformLocation(name), i);
-}
-
-void ShaderProgram::setUniformArray(const char *name, const glm::vec3 *values, int count)
-{
-    if (count > 0)
-        glUniform3fv(uniformLocation(name), count, glm::value_ptr(values[0]));
-}
-
 } // namespace phonglab

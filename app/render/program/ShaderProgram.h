@@ -76,13 +76,9 @@ public:
     void setPerLight(BindingMeaning meaning, std::span<const glm::dvec3> values, double w = 1.0);
     void setPerLight(BindingMeaning meaning, std::span<const double> values);
 
+    // Where `name` is (-1: not an active uniform), looked up once: for what
+    // no meaning covers, such as tests setting a program's own uniforms.
     GLint uniformLocation(const char *name);
-    void setUniform(const char *name, const glm::mat4 &m);
-    void setUniform(const char *name, const glm::mat3 &m);
-    void setUniform(const char *name, const glm::vec3 &v);
-    void setUniform(const char *name, float f);
-    void setUniform(const char *name, int i);
-    void setUniformArray(const char *name, const glm::vec3 *values, int count);
 
 private:
     void ensureInitialized();

@@ -1,6 +1,7 @@
 #include "BenchProcess.h"
 
 #include "core/support/Language.h"
+#include "core/support/PhonglabExecutable.h"
 
 #include "core/scene/SceneJson.h"
 
@@ -54,7 +55,7 @@ std::vector<double> BenchProcess::detailLevels()
 
 QString BenchProcess::executable() const
 {
-    return m_program.isEmpty() ? QCoreApplication::applicationFilePath() : m_program;
+    return m_program.isEmpty() ? phonglabExecutable() : m_program;
 }
 
 bool BenchProcess::isRunning() const

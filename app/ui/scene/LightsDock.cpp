@@ -162,8 +162,7 @@ bool LightsDock::setLightEnabled(int index, bool on)
 
 int LightsDock::switchedOffCount() const
 {
-    return int(std::count_if(scene().lights.begin(), scene().lights.end(),
-                             [](const PointLight &l) { return !l.enabled; }));
+    return int(scene().lights.size()) - scene().enabledLightCount();
 }
 
 bool LightsDock::renameLight(int index, const QString &name)

@@ -49,6 +49,7 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     , m_slowBuildNote(new QTimer(this))
     , m_hangNote(new QTimer(this))
 {
+    m_keptOut = std::make_unique<KeptOutProgram>(m_dock, m_recovery);
     setUpTimers();
     m_buildThread->setReceiver([this](BuildReply reply) { onBuilt(std::move(reply)); });
     connect(m_viewport, &Viewport::glInitialized, this, &LiveShaderController::onGlInitialized);
@@ -277,7 +278,7 @@ void LiveShaderController::dispatch(const QByteArray &hash)
     // warm-up draw, then leaves the text in the journal and marked suspect.
     m_recovery->writeNow();
     m_recovery->buildStarted(hash);
-    if (GlProgram superseded = m_keptOut.supersede())
+    if (GlProgram superseded = m_keptOut->supersede())
         m_buildThread->release(std::move(superseded));
     m_queue->setLastBuilt(hash);
     const ShaderSource vertex{m_dock->filePath(ShaderStage::Vertex),
@@ -368,9 +369,9 @@ void LiveShaderController::warmed(const WarmUp &warmUp, const Result<qint64> &wa
     m_viewport->takeBackContext();
     const ProgramTrial &trial = *warmUp.trial;
     if (trial.keptOut()) {
-        const QString text = m_keptOut.keep({warmUp.hash, std::move(*warmUp.program), warmUp.report,
-                                             warmUp.timings, m_buildSources},
-                                            trial.frameMs, trial.budgetMs);
+        const QString text = m_keptOut->keep({warmUp.hash, std::move(*warmUp.program),
+                                              warmUp.report, warmUp.timings, m_buildSources},
+                                             trial.frameMs, trial.budgetMs);
         emit programKeptOut(trial.frameMs);
         emit statusMessage(text, kStatusTimeoutMs);
         startQueuedBuild();
@@ -394,7 +395,7 @@ void LiveShaderController::applyKeptOut()
 {
     if (m_state != State::Idle)
         return;
-    std::optional<KeptOutProgram::Built> kept = m_keptOut.take();
+    std::optional<KeptOutProgram::Built> kept = m_keptOut->take();
     if (!kept)
         return;
     m_viewport->adoptProgram(std::move(kept->program));

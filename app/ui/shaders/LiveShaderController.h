@@ -95,7 +95,7 @@ public:
     ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
     // A program kept out for its frame time, waiting for "Apply anyway".
-    bool hasKeptOutProgram() const { return m_keptOut.isWaiting(); }
+    bool hasKeptOutProgram() const { return m_keptOut->isWaiting(); }
     // Applies the program kept out (the dock's "Apply anyway").
     void applyKeptOut();
 
@@ -161,8 +161,11 @@ private:
     QByteArray m_buildHash;      // while Building or Warming: the text on its way
     StageSources m_buildSources; // ... and the sources it was built from
     std::optional<StageSources> m_appliedSources;
-    KeptOutProgram m_keptOut{m_dock, m_recovery}; // freed by the next build, or applied anyway
-    QElapsedTimer m_buildClock;                   // from dispatch to reply, for the status
+    // Freed by the next build, or applied anyway. Made in the constructor's
+    // body, once the dock and the recovery it works with exist, whatever
+    // order the members are declared in.
+    std::unique_ptr<KeptOutProgram> m_keptOut;
+    QElapsedTimer m_buildClock; // from dispatch to reply, for the status
 };
 
 } // namespace phonglab

@@ -33,8 +33,6 @@ const QString kOwnShaders = QStringLiteral("own");
 
 namespace {
 
-const char kShaderFilter[] = "GLSL shaders (*.vert *.frag *.glsl *.vs *.fs);;All files (*)";
-
 std::optional<ShaderStage> stageFromSuffix(const QString &path)
 {
     // A WebGL project's shader: its stage is its content's.
@@ -42,16 +40,9 @@ std::optional<ShaderStage> stageFromSuffix(const QString &path)
         const Result<ProjectShader> shader = shaderAtLocator(path);
         if (!shader)
             return std::nullopt;
-        return shader->stage == ProjectStage::Vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
+        return shader->stage == ShaderStage::Vertex ? ShaderStage::Vertex : ShaderStage::Fragment;
     }
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("vert") || suffix == QLatin1String("vs")
-        || suffix == QLatin1String("vsh"))
-        return ShaderStage::Vertex;
-    if (suffix == QLatin1String("frag") || suffix == QLatin1String("fs")
-        || suffix == QLatin1String("fsh"))
-        return ShaderStage::Fragment;
-    return std::nullopt;
+    return stageOfSuffix(path);
 }
 
 // "blinn-phong" -> "Blinn-Phong" for the shading method box.
@@ -396,7 +387,7 @@ void ShaderDock::chooseAndOpen()
     const QString folder = QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath()
                                                            : ShaderFileSet::userFolder();
     const QStringList paths =
-        QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, tr(kShaderFilter));
+        QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, shaderFileFilter());
     if (paths.isEmpty())
         return;
     QList<ShaderStage> replaced;
@@ -439,7 +430,7 @@ void ShaderDock::chooseAndSaveAsCurrent()
                                                 : QFileInfo(path0).fileName();
     const QString suggested = QDir(ShaderFileSet::userFolder()).filePath(name);
     const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, tr(kShaderFilter));
+        QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, shaderFileFilter());
     if (path.isEmpty())
         return;
     if (const Result<> saved = saveAs(stage, path); !saved)

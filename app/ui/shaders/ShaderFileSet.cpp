@@ -1,9 +1,11 @@
 #include "ShaderFileSet.h"
 
+#include "core/program/ShaderStage.h"
 #include "core/project/ProjectSave.h"
 
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/ShadingMethod.h"
+#include "core/support/AtomicFile.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -12,7 +14,6 @@
 #include <QFileSystemWatcher>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSet>
 #include <QStandardPaths>
 #include <QTimer>
@@ -39,15 +40,6 @@ QString canonical(const QString &path)
     const QString folder = QDir(info.absolutePath()).canonicalPath();
     return folder.isEmpty() ? QDir::cleanPath(info.absoluteFilePath())
                             : folder + QLatin1Char('/') + info.fileName();
-}
-
-Result<> writeAtomically(const QString &path, const QByteArray &code)
-{
-    QSaveFile out(path);
-    if (out.open(QIODevice::WriteOnly) && out.write(code) == code.size() && out.commit())
-        return {};
-    return fail(
-        QObject::tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), out.errorString()));
 }
 
 QString defaultFileName(ShaderStage stage)
@@ -173,7 +165,7 @@ Result<> ShaderFileSet::moveToUserCopy(ShaderStage stage, const QByteArray &cont
     File &f = file(stage);
     const QString name = f.path.isEmpty() ? defaultFileName(stage) : QFileInfo(f.path).fileName();
     const QString copy = unusedPath(folder, name);
-    if (Result<> done = writeAtomically(copy, content); !done)
+    if (Result<> done = writeFileAtomically(copy, content); !done)
         return done;
     f.path = copy;
     f.diskCode = content;
@@ -210,7 +202,7 @@ Result<> saveIntoProjectFile(const QString &locator, const QByteArray &code)
     const Result<QByteArray> saved = withShaderText(in.readAll(), *shader, code);
     if (!saved)
         return fail(saved.error());
-    return writeAtomically(shader->file, *saved);
+    return writeFileAtomically(shader->file, *saved);
 }
 
 } // namespace
@@ -226,7 +218,7 @@ Result<> ShaderFileSet::save(ShaderStage stage, const QByteArray &code)
         if (Result<> done = moveToUserCopy(stage, code); !done)
             return done;
     } else {
-        if (Result<> done = writeAtomically(f.path, code); !done)
+        if (Result<> done = writeFileAtomically(f.path, code); !done)
             return done;
         f.diskCode = code; // so the watcher does not take our own write for someone else's
     }
@@ -240,7 +232,7 @@ Result<> ShaderFileSet::saveAs(ShaderStage stage, const QString &path, const QBy
         return fail(tr("%1 is a shader shipped with PhongLab and is never overwritten; "
                        "save under another name or folder.")
                         .arg(QDir::toNativeSeparators(path)));
-    if (Result<> done = writeAtomically(path, code); !done)
+    if (Result<> done = writeFileAtomically(path, code); !done)
         return done;
     File &f = file(stage);
     f.path = path;
@@ -328,6 +320,11 @@ bool ShaderFileSet::askToReload(ShaderStage stage)
         m_recheckTimer->start();
     }
     return box.clickedButton() == reload;
+}
+
+QString shaderFileFilter()
+{
+    return ShaderFileSet::tr("GLSL shaders (%1);;All files (*)").arg(shaderFilePatterns());
 }
 
 } // namespace phonglab

@@ -108,4 +108,8 @@ private:
     bool m_recheckWhileAsking = false;
 };
 
+// The file dialogs' filter for shaders: "GLSL shaders (*.vert … *.glsl)",
+// then all files.
+QString shaderFileFilter();
+
 } // namespace phonglab

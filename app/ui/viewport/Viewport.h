@@ -156,16 +156,7 @@ public:
     void setReductionAllowance(double allowance, bool leaveOutLights);
 
     bool isRenderReady() const { return m_gpu.isReady(); }
-    // After a frame longer than kHoldFramesAfterMs the view draws nothing
-    // until a click, a wheel turn or a key in it, a new program or a new
-    // scene: such a frame is never repeated by itself.
-    bool framesHeld() const { return m_surface->framesHeld(); }
-    // Frames asked for while held, and not drawn.
-    qint64 framesRefused() const { return m_surface->framesRefused(); }
-    qint64 framesRendered() const { return m_surface->framesRendered(); }
-    // Of those, the first frames of new programs that their trial drew and
-    // presented in the lent context (the GUI thread drew them no more).
-    qint64 framesFromLoans() const { return m_surface->framesFromLoans(); }
+    FrameStats frameStats() const { return m_surface->frameStats(); }
     // The draw times behind frameRendered()'s figure.
     const FrameTimeWindow &frameTimes() const { return m_surface->frameTimes(); }
     QString glRendererName() const { return m_glRendererName; }

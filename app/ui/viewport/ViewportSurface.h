@@ -1,5 +1,6 @@
 #pragma once
 #include "ContextLender.h"
+#include "FrameStats.h"
 #include "core/support/FrameTimeWindow.h"
 #include "render/gl/LentContext.h"
 #include "render/program/WarmUpDraw.h"
@@ -100,12 +101,11 @@ public:
     int framebufferSamples() const { return m_framebufferSamples; }
     std::chrono::steady_clock::time_point lastPresentedAt() const { return m_lastPresentedAt; }
     const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
-    qint64 framesRendered() const { return m_framesRendered; }
-    // Of those, the frames a borrower presented (LoanFrame): a new
-    // program's first, drawn by its trial.
-    qint64 framesFromLoans() const { return m_framesFromLoans; }
+    FrameStats frameStats() const
+    {
+        return {m_framesRendered, m_framesFromLoans, m_framesHeld, m_framesRefused};
+    }
     bool framesHeld() const { return m_framesHeld; }
-    qint64 framesRefused() const { return m_framesRefused; }
     void resumeFrames();
     // A new scene or program is drawn once at least, even while frames are held.
     void releaseHold() { m_framesHeld = false; }

@@ -1,4 +1,5 @@
 #include "FileMenu.h"
+#include "ui/shaders/ShaderFileSet.h"
 
 #include "ExamplesMenu.h"
 #include "MainWindow.h"
@@ -90,9 +91,8 @@ void FileMenu::chooseAndOpenScene()
 
 void FileMenu::chooseAndOpenShaders()
 {
-    const QStringList paths = QFileDialog::getOpenFileNames(
-        m_window, tr("Open Shader"), dialogFolder(),
-        tr("GLSL shaders (*.vert *.frag *.vs *.fs *.vsh *.fsh *.glsl);;All files (*)"));
+    const QStringList paths = QFileDialog::getOpenFileNames(m_window, tr("Open Shader"),
+                                                            dialogFolder(), shaderFileFilter());
     if (paths.isEmpty() || !mayDiscardShaderEdits())
         return;
     rememberFolderOf(paths.front());

@@ -22,7 +22,6 @@ StartupOptions StartupOptions::fromEnvironment()
     else if (answer == QLatin1String("discard"))
         o.recoveryAnswer = ShaderRecovery::Answer::Discard;
     o.presentOnGuiThread = qEnvironmentVariableIsSet("PHONGLAB_PRESENT_ON_GUI_THREAD");
-    o.benchExecutable = qEnvironmentVariable("PHONGLAB_EXE");
     o.documentationFolder = qEnvironmentVariable("PHONGLAB_DOC_DIR");
     o.typeAfterStart = qEnvironmentVariable("PHONGLAB_TEST_TYPE_AFTER_START");
     return o;

@@ -17,9 +17,6 @@ struct StartupOptions {
     // thread (the benchmark's comparison; drivers without threaded GL do so
     // anyway).
     bool presentOnGuiThread = false;
-    // $PHONGLAB_EXE: the phonglab program the Performance dock measures with
-    // (tests name the build's); empty: this program.
-    QString benchExecutable;
     // $PHONGLAB_DOC_DIR: searched first for the documentation.
     QString documentationFolder;
     // $PHONGLAB_TEST_TYPE_AFTER_START=TEXT: typed into the fragment editor once
