@@ -35,9 +35,8 @@ Result<const CheckReference *> GradeReferences::referenceFor(int scene, const Sc
     return make(scene, checked, {});
 }
 
-Result<const CheckReference *>
-GradeReferences::make(int scene, const Scene &checked,
-                      const std::function<void(const QString &)> &progress)
+Result<const CheckReference *> GradeReferences::make(
+    int scene, const Scene &checked, const std::function<void(const QString &)> &progress)
 {
     const std::pair key{scene, checked.enabledLightCount()};
     if (const auto found = m_references.find(key); found != m_references.end())
