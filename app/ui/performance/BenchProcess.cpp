@@ -55,7 +55,7 @@ std::vector<double> BenchProcess::detailLevels()
 
 QString BenchProcess::executable() const
 {
-    return m_program.isEmpty() ? phonglabExecutable() : m_program;
+    return phonglabExecutable();
 }
 
 bool BenchProcess::isRunning() const

@@ -35,9 +35,7 @@ public:
     bool isRunning() const;
     void cancel();
 
-    // The `phonglab` program that measures: `program` (StartupOptions::
-    // benchExecutable), else this program itself.
-    void setProgram(const QString &program) { m_program = program; }
+    // The `phonglab` program that measures: phonglabExecutable().
     QString executable() const;
 
 signals:
@@ -46,7 +44,6 @@ signals:
     void finished(const std::vector<phonglab::BenchRow> &rows, const QString &error);
 
 private:
-    QString m_program;
     void readProgress();
     void processFinished(int exitCode, QProcess::ExitStatus status);
 

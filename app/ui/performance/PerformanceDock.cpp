@@ -27,12 +27,11 @@ constexpr int kPsnrIndex = 1;
 
 } // namespace
 
-PerformanceDock::PerformanceDock(Viewport *viewport, const QString &program, QWidget *parent)
+PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     : QDockWidget(tr("Performance"), parent)
     , m_viewport(viewport)
     , m_process(new BenchProcess(this))
 {
-    m_process->setProgram(program);
     setObjectName(QStringLiteral("PerformanceDock"));
     auto *body = new QWidget(this);
     auto *layout = new QVBoxLayout(body);

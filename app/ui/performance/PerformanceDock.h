@@ -31,9 +31,8 @@ class PerformanceDock : public QDockWidget
     Q_OBJECT
 
 public:
-    // `program`: the phonglab that measures (StartupOptions::benchExecutable;
-    // empty: this program).
-    PerformanceDock(Viewport *viewport, const QString &program, QWidget *parent = nullptr);
+    // The bench runs in phonglabExecutable() (core/support/PhonglabExecutable).
+    explicit PerformanceDock(Viewport *viewport, QWidget *parent = nullptr);
     ~PerformanceDock() override;
 
     ErrorBudget budget() const;

@@ -241,7 +241,7 @@ void MainWindow::connectCheck()
 
 void MainWindow::createPerformanceDock()
 {
-    m_performanceDock = new PerformanceDock(m_viewport, QString(), this);
+    m_performanceDock = new PerformanceDock(m_viewport, this);
     addDockWidget(Qt::LeftDockWidgetArea, m_performanceDock);
     connect(m_performanceDock, &PerformanceDock::applyFitRequested, m_document,
             &SceneDocument::applyFit);
