@@ -13,11 +13,26 @@
 #       only the context-free tests (ctest -L unit) under the sanitizers,
 #       then every fuzz seed and past find replayed (scripts/fuzz.sh
 #       --replay): what CI adds to the plain run (.ci/run).
+#   scripts/test.sh --thread [ctest args]
+#       the tests that start threads or lend a context (CTest label
+#       "threads") built with clang 14 under ThreadSanitizer (build-tsan/);
+#       a race fails its test. Suppressions: tests/sanitizer/tsan.supp, each
+#       with its reason.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build=build
 preload=()
+if [ "${1:-}" = "--thread" ]; then
+  shift
+  export TSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/tsan.supp:halt_on_error=1:second_deadlock_stack=1:${TSAN_OPTIONS:-}"
+  bash scripts/build.sh --thread
+  env -u DISPLAY -u WAYLAND_DISPLAY \
+    ctest --test-dir build-tsan --output-on-failure --timeout 1800 -L threads -LE ui "$@" || status=$?
+  xvfb-run -a -s "-screen 0 1280x1024x24" \
+    ctest --test-dir build-tsan --output-on-failure --timeout 1800 -L threads -L ui "$@" || status=$?
+  exit "${status:-0}"
+fi
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   build=build-sanitize
