@@ -90,7 +90,7 @@ void leaveDeadSession(const QString &dir, const RecoveryRecord &record, bool wit
     if (withSentinel) {
         QFile sentinel(QDir(dir).filePath(id + ".running"));
         QVERIFY(sentinel.open(QIODevice::WriteOnly));
-        sentinel.write(recoveryTextHash(record.vertex.text, record.fragment.text) + '\n');
+        sentinel.write(programTextHash(record.vertex.text, record.fragment.text) + '\n');
     }
 }
 
@@ -506,7 +506,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QTRY_VERIFY_WITH_TIMEOUT(!live()->isWaitingToBuild(), kBuildTimeoutMs); // nothing scheduled ...
     QVERIFY(!live()->isBuilding());                                         // ... and nothing built
     QVERIFY(live()->appliedHash() != live()->currentHash());                // not compiled
-    QCOMPARE(live()->appliedHash(), recoveryTextHash(record.vertex.text, shippedFragment));
+    QCOMPARE(live()->appliedHash(), programTextHash(record.vertex.text, shippedFragment));
     QCOMPARE(frame(), shipped);
 
     // F5 is a window shortcut: it needs the window active, as it is for a user.

@@ -176,7 +176,7 @@ void TestRecoveryJournal::sentinelRoundTrip()
 {
     RecoveryJournal journal(m_dir->path());
     QVERIFY(!journal.runningHash());
-    const QByteArray hash = recoveryTextHash("v", "f");
+    const QByteArray hash = programTextHash("v", "f");
     QVERIFY(journal.markRunning(hash));
     QCOMPARE(journal.runningHash().value_or(QByteArray()), hash);
     journal.clearRunning();
@@ -197,7 +197,7 @@ void TestRecoveryJournal::deadSessionIsAnOrphanWithItsSentinel()
 {
     RecoveryRecord record = sampleRecord();
     leaveOrphan(m_dir->path(), QStringLiteral("100-5"), record);
-    const QByteArray hash = recoveryTextHash(record.vertex.text, record.fragment.text);
+    const QByteArray hash = programTextHash(record.vertex.text, record.fragment.text);
     writeFile(QDir(m_dir->path()).filePath(QStringLiteral("100-5.running")), hash + '\n');
 
     RecoveryJournal journal(m_dir->path());
@@ -243,9 +243,9 @@ void TestRecoveryJournal::orphansNewestFirstAndDiscard()
 
 void TestRecoveryJournal::hashSeparatesStages()
 {
-    QCOMPARE(recoveryTextHash("ab", "c"), recoveryTextHash("ab", "c"));
-    QVERIFY(recoveryTextHash("ab", "c") != recoveryTextHash("a", "bc"));
-    QVERIFY(recoveryTextHash("ab", "c") != recoveryTextHash("ab", "d"));
+    QCOMPARE(programTextHash("ab", "c"), programTextHash("ab", "c"));
+    QVERIFY(programTextHash("ab", "c") != programTextHash("a", "bc"));
+    QVERIFY(programTextHash("ab", "c") != programTextHash("ab", "d"));
 }
 
 void TestRecoveryJournal::directoryFromEnvironment()

@@ -74,18 +74,7 @@ QString newSessionId()
 
 bool OrphanedSession::isSuspect() const
 {
-    return runningHash
-        && *runningHash == recoveryTextHash(record.vertex.text, record.fragment.text);
-}
-
-QByteArray recoveryTextHash(const QByteArray &vertex, const QByteArray &fragment)
-{
-    QCryptographicHash hash(QCryptographicHash::Sha1);
-    hash.addData(QByteArray::number(vertex.size()) + ':');
-    hash.addData(vertex);
-    hash.addData(QByteArray::number(fragment.size()) + ':');
-    hash.addData(fragment);
-    return hash.result().toHex();
+    return runningHash && *runningHash == programTextHash(record.vertex.text, record.fragment.text);
 }
 
 RecoveryJournal::RecoveryJournal(const QString &directory)

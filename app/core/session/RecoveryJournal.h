@@ -1,4 +1,5 @@
 #pragma once
+#include "core/program/ProgramTextHash.h"
 #include "core/support/Result.h"
 #include <QByteArray>
 #include <QDateTime>
@@ -35,16 +36,12 @@ struct OrphanedSession {
     QString id;
     RecoveryRecord record;
     // Set when the session died while a new program was running: the hash
-    // (recoveryTextHash) of the text that program was built from.
+    // (programTextHash) of the text that program was built from.
     std::optional<QByteArray> runningHash;
 
     // The recovered text is the text that was running when the session died.
     bool isSuspect() const;
 };
-
-// The hash identifying a pair of shader texts (hex SHA-1, stages separated
-// so that moving text from one stage to the other changes it).
-QByteArray recoveryTextHash(const QByteArray &vertex, const QByteArray &fragment);
 
 // Crash-safe journal of the shader editors, one per running session, in
 // recovery/ under the app's data folder ($PHONGLAB_RECOVERY_DIR overrides it).

@@ -287,7 +287,7 @@ void PerformanceDock::showChart()
 }
 
 // Only while the label can be seen, at the status bar's pace.
-void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
+void PerformanceDock::showFrame(double meanMsOfLastSecond, qint64 triangles)
 {
     if (!m_frameLabel->isVisible()) {
         m_framePace.forget();
@@ -299,7 +299,7 @@ void PerformanceDock::showFrame(double milliseconds, qint64 triangles)
     const QLocale locale;
     m_frameLabel->setText(
         tr("Frame: %1 ms · %2 triangles")
-            .arg(locale.toString(milliseconds, 'f', 2), locale.toString(triangles)));
+            .arg(locale.toString(meanMsOfLastSecond, 'f', 2), locale.toString(triangles)));
 }
 
 void PerformanceDock::setRunning(bool running)

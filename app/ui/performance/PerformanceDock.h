@@ -71,7 +71,7 @@ private:
     void measurementFinished(const std::vector<BenchRow> &rows, const QString &error);
     void applyFit();
     void showChart();
-    void showFrame(double milliseconds, qint64 triangles);
+    void showFrame(double meanMsOfLastSecond, qint64 triangles);
     void setRunning(bool running);
 
     Viewport *m_viewport = nullptr;

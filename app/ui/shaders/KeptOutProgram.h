@@ -23,7 +23,7 @@ class KeptOutProgram
 public:
     // A program built and tried, with what it was built from.
     struct Built {
-        QByteArray hash; // of the text (recoveryTextHash)
+        QByteArray hash; // of the text (programTextHash)
         GlProgram program;
         BuildReport report;
         BuildTimings timings;

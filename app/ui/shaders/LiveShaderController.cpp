@@ -33,7 +33,7 @@ Result<StageSources> shippedSources(ShadingMethod method)
 QByteArray shippedHash(ShadingMethod method)
 {
     const StageSources shipped = shippedSources(method).valueOr(StageSources{});
-    return recoveryTextHash(shipped.vertex.code, shipped.fragment.code);
+    return programTextHash(shipped.vertex.code, shipped.fragment.code);
 }
 
 } // namespace
@@ -101,7 +101,7 @@ void LiveShaderController::connectDock()
 
 QByteArray LiveShaderController::currentHash() const
 {
-    return recoveryTextHash(m_dock->text(ShaderStage::Vertex), m_dock->text(ShaderStage::Fragment));
+    return programTextHash(m_dock->text(ShaderStage::Vertex), m_dock->text(ShaderStage::Fragment));
 }
 
 bool LiveShaderController::buildsOnWorker() const

@@ -21,7 +21,7 @@ FrameStatsLabel::FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar)
     connect(viewport, &Viewport::frameRendered, this, &FrameStatsLabel::showFrame);
 }
 
-void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
+void FrameStatsLabel::showFrame(double meanMsOfLastSecond, qint64 triangles)
 {
     // A new triangle count or a depth warning that comes or goes shows at
     // once: only the milliseconds may lag.
@@ -30,7 +30,7 @@ void FrameStatsLabel::showFrame(double milliseconds, qint64 triangles)
         return;
     m_pace.shown(triangles);
     setText(tr("draw %1 ms · %2 triangles%3")
-                .arg(sentenceNumber(milliseconds, 'f', 2))
+                .arg(sentenceNumber(meanMsOfLastSecond, 'f', 2))
                 .arg(QLocale().toString(triangles))
                 .arg(depth ? tr(" · low depth precision") : QString()));
     const QString explained =

@@ -23,7 +23,7 @@ class FrameStatsLabel : public QLabel
 public:
     FrameStatsLabel(Viewport *viewport, QStatusBar *statusBar);
 
-    void showFrame(double milliseconds, qint64 triangles);
+    void showFrame(double meanMsOfLastSecond, qint64 triangles);
     void setReadoutClock(ReadoutPace::Clock clock) { m_pace.setClock(std::move(clock)); }
 
 private:

@@ -169,10 +169,10 @@ signals:
     void renderError(const QString &message);
     // A frame reached the window (after swapBuffers).
     void frameSwapped();
-    // After every frame: the draw time (first GL call to glFinish, the
-    // window's composition not included), the mean of the frames of the last
-    // second (FrameTimeWindow), and the triangles drawn.
-    void frameRendered(double milliseconds, qint64 triangles);
+    // After every frame: the mean draw time of the last second's frames
+    // (FrameTimeWindow; first GL call to glFinish, the window's composition
+    // not included), not this frame's own, and the triangles drawn.
+    void frameRendered(double meanMsOfLastSecond, qint64 triangles);
     void glRendererChanged(const QString &name);
     void cameraChanged();
     // A new scene (or a new mesh of it) is shown: objects or meshInfo() changed.
