@@ -113,179 +113,217 @@ QStringList defaultScenes(bool quick)
     return paths;
 }
 
-} // namespace
+// Every option of `bench`, declared once.
+struct BenchOptionSet {
+    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")},
+                            BenchArgsWords::tr("Show help.")};
+    QCommandLineOption scene{QStringLiteral("scene"), BenchArgsWords::tr("Scene file."),
+                             QStringLiteral("file")};
+    QCommandLineOption quick{QStringLiteral("quick"), BenchArgsWords::tr("Short run.")};
+    QCommandLineOption out{QStringLiteral("out"), BenchArgsWords::tr("Output folder."),
+                           QStringLiteral("dir")};
+    QCommandLineOption budget{QStringLiteral("budget"), BenchArgsWords::tr("Error budget."),
+                              QStringLiteral("spec")};
+    QCommandLineOption size{QStringLiteral("size"), BenchArgsWords::tr("Frame size."),
+                            QStringLiteral("WxH")};
+    QCommandLineOption frames{QStringLiteral("frames"), BenchArgsWords::tr("Timed frames."),
+                              QStringLiteral("n")};
+    QCommandLineOption lights{QStringLiteral("lights"), BenchArgsWords::tr("Light counts."),
+                              QStringLiteral("list")};
+    QCommandLineOption methods{QStringLiteral("methods"), QStringLiteral("Methods."),
+                               QStringLiteral("list")};
+    QCommandLineOption details{QStringLiteral("details"), BenchArgsWords::tr("Detail fractions."),
+                               QStringLiteral("list")};
+    QCommandLineOption images{QStringLiteral("images"), BenchArgsWords::tr("Write pictures.")};
+    QCommandLineOption normals{QStringLiteral("normals"),
+                               BenchArgsWords::tr("Normal-method study.")};
+    QCommandLineOption from{QStringLiteral("from"), BenchArgsWords::tr("Earlier results."),
+                            QStringLiteral("csv")};
+    QCommandLineOption path{QStringLiteral("path"), BenchArgsWords::tr("Camera path."),
+                            QStringLiteral("spec")};
+    QCommandLineOption pathFrames{QStringLiteral("path-frames"), BenchArgsWords::tr("Path frames."),
+                                  QStringLiteral("n")};
+};
 
-std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
+// Each reader below fills its part of `args` from `parser` and returns the
+// usage error of a wrong value, or an empty string.
+
+// --from and --path: what the run measures, and what may not go with it.
+QString readWhatIsMeasured(const QCommandLineParser &parser, const BenchOptionSet &o,
+                           BenchArgs &args)
 {
-    QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  BenchArgsWords::tr("Show help."));
-    const QCommandLineOption scene(QStringLiteral("scene"), BenchArgsWords::tr("Scene file."),
-                                   QStringLiteral("file"));
-    const QCommandLineOption quick(QStringLiteral("quick"), BenchArgsWords::tr("Short run."));
-    const QCommandLineOption out(QStringLiteral("out"), BenchArgsWords::tr("Output folder."),
-                                 QStringLiteral("dir"));
-    const QCommandLineOption budget(QStringLiteral("budget"), BenchArgsWords::tr("Error budget."),
-                                    QStringLiteral("spec"));
-    const QCommandLineOption size(QStringLiteral("size"), BenchArgsWords::tr("Frame size."),
-                                  QStringLiteral("WxH"));
-    const QCommandLineOption frames(QStringLiteral("frames"), BenchArgsWords::tr("Timed frames."),
-                                    QStringLiteral("n"));
-    const QCommandLineOption lights(QStringLiteral("lights"), BenchArgsWords::tr("Light counts."),
-                                    QStringLiteral("list"));
-    const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("Methods."),
-                                     QStringLiteral("list"));
-    const QCommandLineOption details(
-        QStringLiteral("details"), BenchArgsWords::tr("Detail fractions."), QStringLiteral("list"));
-    const QCommandLineOption images(QStringLiteral("images"),
-                                    BenchArgsWords::tr("Write pictures."));
-    const QCommandLineOption normals(QStringLiteral("normals"),
-                                     BenchArgsWords::tr("Normal-method study."));
-    const QCommandLineOption from(QStringLiteral("from"), BenchArgsWords::tr("Earlier results."),
-                                  QStringLiteral("csv"));
-    const QCommandLineOption path(QStringLiteral("path"), BenchArgsWords::tr("Camera path."),
-                                  QStringLiteral("spec"));
-    const QCommandLineOption pathFrames(QStringLiteral("path-frames"),
-                                        BenchArgsWords::tr("Path frames."), QStringLiteral("n"));
-
-    const auto usage = [](const QString &message) { return usageError(message, kSynopsis); };
-    if (const std::optional<int> exit =
-            parseOrExit(parser, arguments,
-                        {help,
-                         {scene, quick, out, budget, size, frames, lights, methods, details, images,
-                          normals, from, path, pathFrames},
-                         {QStringLiteral("scene")}},
-                        kSynopsis, helpText()))
-        return *exit;
-    if (!parser.positionalArguments().isEmpty())
-        return usage(BenchArgsWords::tr("unexpected argument '%1' (scenes go after --scene)")
-                         .arg(parser.positionalArguments().first()));
-
-    BenchArgs args;
-    args.fromCsv = parser.value(from);
-    if (parser.isSet(from)) {
+    args.fromCsv = parser.value(o.from);
+    if (parser.isSet(o.from)) {
         for (const QCommandLineOption *measuring :
-             {&scene, &quick, &size, &frames, &lights, &methods, &details, &images, &normals})
+             {&o.scene, &o.quick, &o.size, &o.frames, &o.lights, &o.methods, &o.details, &o.images,
+              &o.normals})
             if (parser.isSet(*measuring))
-                return usage(BenchArgsWords::tr("--from measures nothing: --%1 does not go with it")
-                                 .arg(measuring->names().constLast()));
+                return BenchArgsWords::tr("--from measures nothing: --%1 does not go with it")
+                    .arg(measuring->names().constLast());
         if (args.fromCsv.isEmpty())
-            return usage(BenchArgsWords::tr("--from: empty file name"));
+            return BenchArgsWords::tr("--from: empty file name");
     }
-    args.path = parser.value(path);
-    if (parser.isSet(path)) {
+    args.path = parser.value(o.path);
+    if (parser.isSet(o.path)) {
         for (const QCommandLineOption *sweep :
-             {&quick, &lights, &methods, &details, &normals, &from})
+             {&o.quick, &o.lights, &o.methods, &o.details, &o.normals, &o.from})
             if (parser.isSet(*sweep))
-                return usage(
-                    BenchArgsWords::tr("--path measures a camera path: --%1 does not go with it")
-                        .arg(sweep->names().constLast()));
+                return BenchArgsWords::tr("--path measures a camera path: --%1 does not go with it")
+                    .arg(sweep->names().constLast());
         if (args.path.isEmpty())
-            return usage(BenchArgsWords::tr("--path: expected orbit, dolly or a keyframe file"));
+            return BenchArgsWords::tr("--path: expected orbit, dolly or a keyframe file");
     }
-    if (parser.isSet(pathFrames)) {
+    if (parser.isSet(o.pathFrames)) {
         bool ok = false;
-        const int n = parser.value(pathFrames).toInt(&ok);
-        if (!parser.isSet(path))
-            return usage(
-                BenchArgsWords::tr("--path-frames goes with --path orbit or --path dolly"));
+        const int n = parser.value(o.pathFrames).toInt(&ok);
+        if (!parser.isSet(o.path))
+            return BenchArgsWords::tr("--path-frames goes with --path orbit or --path dolly");
         if (!ok || n < 2 || n > 10000)
-            return usage(BenchArgsWords::tr(
-                             "--path-frames: expected a whole number from 2 to 10000, got '%1'")
-                             .arg(parser.value(pathFrames)));
+            return BenchArgsWords::tr(
+                       "--path-frames: expected a whole number from 2 to 10000, got '%1'")
+                .arg(parser.value(o.pathFrames));
         args.pathFrames = n;
     }
-    args.sizeGiven = parser.isSet(size);
-    args.framesGiven = parser.isSet(frames);
-    args.quick = parser.isSet(quick);
-    args.options = args.quick ? BenchOptions::quick() : BenchOptions::full();
-    args.options.scenes = parser.isSet(scene) ? parser.values(scene)
-                                              : defaultScenes(args.quick || parser.isSet(path));
-    args.outDir = parser.isSet(out) ? parser.value(out) : QStringLiteral("phonglab-bench");
-    if (args.outDir.isEmpty())
-        return usage(BenchArgsWords::tr("--out: empty folder name"));
-    args.normalStudy = args.fromCsv.isEmpty() && (parser.isSet(normals) || !args.quick);
-    if (parser.isSet(images))
-        args.options.imageDir = QDir(args.outDir).filePath(QStringLiteral("images"));
+    return {};
+}
 
-    if (parser.isSet(budget)) {
-        const auto parsed = ErrorBudget::parse(parser.value(budget));
+// --quick, --scene, --out, --normals, --images.
+QString readRunAndOutputs(const QCommandLineParser &parser, const BenchOptionSet &o,
+                          BenchArgs &args)
+{
+    args.sizeGiven = parser.isSet(o.size);
+    args.framesGiven = parser.isSet(o.frames);
+    args.quick = parser.isSet(o.quick);
+    args.options = args.quick ? BenchOptions::quick() : BenchOptions::full();
+    args.options.scenes = parser.isSet(o.scene) ? parser.values(o.scene)
+                                                : defaultScenes(args.quick || parser.isSet(o.path));
+    args.outDir = parser.isSet(o.out) ? parser.value(o.out) : QStringLiteral("phonglab-bench");
+    if (args.outDir.isEmpty())
+        return BenchArgsWords::tr("--out: empty folder name");
+    args.normalStudy = args.fromCsv.isEmpty() && (parser.isSet(o.normals) || !args.quick);
+    if (parser.isSet(o.images))
+        args.options.imageDir = QDir(args.outDir).filePath(QStringLiteral("images"));
+    return {};
+}
+
+// --budget, --size, --frames.
+QString readBudgetAndFrames(const QCommandLineParser &parser, const BenchOptionSet &o,
+                            BenchArgs &args)
+{
+    if (parser.isSet(o.budget)) {
+        const auto parsed = ErrorBudget::parse(parser.value(o.budget));
         if (!parsed)
-            return usage(
-                BenchArgsWords::tr("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
-                    .arg(parser.value(budget)));
+            return BenchArgsWords::tr("--budget: expected N (max error N/255) or psnr:DB, got '%1'")
+                .arg(parser.value(o.budget));
         args.budget = *parsed;
     }
-    if (parser.isSet(size)) {
-        const auto parsed = parseSizeArgument(parser.value(size), 16, 8192);
+    if (parser.isSet(o.size)) {
+        const auto parsed = parseSizeArgument(parser.value(o.size), 16, 8192);
         if (!parsed)
-            return usage(
-                BenchArgsWords::tr("--size: expected WxH with 16..8192 pixels per side, got '%1'")
-                    .arg(parser.value(size)));
+            return BenchArgsWords::tr(
+                       "--size: expected WxH with 16..8192 pixels per side, got '%1'")
+                .arg(parser.value(o.size));
         args.options.size = *parsed;
     }
-    if (parser.isSet(frames)) {
+    if (parser.isSet(o.frames)) {
         bool ok = false;
-        const int n = parser.value(frames).toInt(&ok);
+        const int n = parser.value(o.frames).toInt(&ok);
         // A path times every one of its frames: fewer per frame are enough.
-        const int least = parser.isSet(path) ? 3 : 20;
+        const int least = parser.isSet(o.path) ? 3 : 20;
         if (!ok || n < least || n > 10000)
-            return usage(
-                BenchArgsWords::tr("--frames: expected a whole number from %1 to 10000, got '%2'")
-                    .arg(least)
-                    .arg(parser.value(frames)));
+            return BenchArgsWords::tr(
+                       "--frames: expected a whole number from %1 to 10000, got '%2'")
+                .arg(least)
+                .arg(parser.value(o.frames));
         args.options.frames = n;
     }
-    if (parser.isSet(lights)) {
-        bool sceneOwn = false;
-        const auto counts =
-            parseList<int>(parser.value(lights), [&](const QString &s) -> std::optional<int> {
-                if (s == QLatin1String("scene")) {
-                    sceneOwn = true;
-                    return 0; // removed below
-                }
-                bool ok = false;
-                const int n = s.toInt(&ok);
-                return ok && n >= 1 && n <= kMaxLights ? std::optional<int>(n) : std::nullopt;
-            });
-        if (!counts)
-            return usage(
-                BenchArgsWords::tr(
-                    "--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
-                    .arg(kMaxLights)
-                    .arg(parser.value(lights)));
-        args.options.lightCounts.clear();
-        for (int n : *counts)
-            if (n > 0)
-                args.options.lightCounts.push_back(n);
-        args.options.sceneLights = sceneOwn;
-    }
-    if (parser.isSet(methods)) {
-        const auto parsed = parseList<ShadingMethod>(parser.value(methods), [](const QString &s) {
+    return {};
+}
+
+// --lights: counts 1..kMaxLights and/or the scene's own.
+QString readLights(const QCommandLineParser &parser, const BenchOptionSet &o, BenchArgs &args)
+{
+    if (!parser.isSet(o.lights))
+        return {};
+    bool sceneOwn = false;
+    const auto counts =
+        parseList<int>(parser.value(o.lights), [&](const QString &s) -> std::optional<int> {
+            if (s == QLatin1String("scene")) {
+                sceneOwn = true;
+                return 0; // removed below
+            }
+            bool ok = false;
+            const int n = s.toInt(&ok);
+            return ok && n >= 1 && n <= kMaxLights ? std::optional<int>(n) : std::nullopt;
+        });
+    if (!counts)
+        return BenchArgsWords::tr(
+                   "--lights: expected counts 1..%1 and/or 'scene', comma separated, got '%2'")
+            .arg(kMaxLights)
+            .arg(parser.value(o.lights));
+    args.options.lightCounts.clear();
+    for (int n : *counts)
+        if (n > 0)
+            args.options.lightCounts.push_back(n);
+    args.options.sceneLights = sceneOwn;
+    return {};
+}
+
+// --methods and --details: what the sweep draws.
+QString readMethodsAndDetails(const QCommandLineParser &parser, const BenchOptionSet &o,
+                              BenchArgs &args)
+{
+    if (parser.isSet(o.methods)) {
+        const auto parsed = parseList<ShadingMethod>(parser.value(o.methods), [](const QString &s) {
             const auto m = shadingFromName(s);
             return m && *m != ShadingMethod::Normals ? m : std::nullopt;
         });
         if (!parsed)
-            return usage(
-                BenchArgsWords::tr(
-                    "--methods: expected names from flat, gouraud, faceted, blinn-phong, phong, "
-                    "got '%1'")
-                    .arg(parser.value(methods)));
+            return BenchArgsWords::tr(
+                       "--methods: expected names from flat, gouraud, faceted, blinn-phong, phong, "
+                       "got '%1'")
+                .arg(parser.value(o.methods));
         args.options.methods = *parsed;
     }
-    if (parser.isSet(details)) {
-        const auto parsed =
-            parseList<double>(parser.value(details), [](const QString &s) -> std::optional<double> {
+    if (parser.isSet(o.details)) {
+        const auto parsed = parseList<double>(
+            parser.value(o.details), [](const QString &s) -> std::optional<double> {
                 bool ok = false;
                 const double d = s.toDouble(&ok);
                 return ok && d > 0.0 && d <= 1.0 ? std::optional<double>(d) : std::nullopt;
             });
         if (!parsed)
-            return usage(BenchArgsWords::tr(
-                             "--details: expected fractions in (0, 1], comma separated, got '%1'")
-                             .arg(parser.value(details)));
+            return BenchArgsWords::tr(
+                       "--details: expected fractions in (0, 1], comma separated, got '%1'")
+                .arg(parser.value(o.details));
         args.options.details = *parsed;
     }
+    return {};
+}
+
+} // namespace
+
+std::variant<BenchArgs, int> parseBenchArgs(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    const BenchOptionSet o;
+    if (const std::optional<int> exit =
+            parseOrExit(parser, arguments,
+                        {o.help,
+                         {o.scene, o.quick, o.out, o.budget, o.size, o.frames, o.lights, o.methods,
+                          o.details, o.images, o.normals, o.from, o.path, o.pathFrames},
+                         {QStringLiteral("scene")}},
+                        kSynopsis, helpText()))
+        return *exit;
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(BenchArgsWords::tr("unexpected argument '%1' (scenes go after --scene)")
+                              .arg(parser.positionalArguments().first()),
+                          kSynopsis);
+    BenchArgs args;
+    for (const auto read : {readWhatIsMeasured, readRunAndOutputs, readBudgetAndFrames, readLights,
+                            readMethodsAndDetails})
+        if (const QString wrong = read(parser, o, args); !wrong.isEmpty())
+            return usageError(wrong, kSynopsis);
     return args;
 }
 
