@@ -126,99 +126,134 @@ QString helpText(const StageOptions &stage, const SceneOverrideOptions &override
         + helpLines(PageOptions(PageOptions::Use::Grade).all());
 }
 
+// Every option of `grade`, declared once.
+struct GradeOptionSet {
+    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")},
+                            GradeCommandWords::tr("Show help.")};
+    QCommandLineOption scene{QStringLiteral("scene"), QString(), QStringLiteral("file")};
+    QCommandLineOption out{QStringLiteral("out"), QString(), QStringLiteral("dir")};
+    QCommandLineOption jobs{QStringLiteral("jobs"), QString(), QStringLiteral("n")};
+    QCommandLineOption timeout{QStringLiteral("timeout"), QString(), QStringLiteral("s")};
+    QCommandLineOption memory{QStringLiteral("memory"), QString(), QStringLiteral("mib")};
+    StageOptions stage; // --size alone: each submission brings its own stages
+    QCommandLineOption tolerance{QStringLiteral("tolerance"), QString(), QStringLiteral("steps")};
+    SceneOverrideOptions overrides{SceneOverrideOptions::Use::Check};
+    QCommandLineOption equation{QStringLiteral("equation"), QString(), QStringLiteral("equation")};
+    QCommandLineOption points{QStringLiteral("points"), QString(), QStringLiteral("points")};
+    QCommandLineOption resume{QStringLiteral("resume"), QString()};
+    QCommandLineOption program{QStringLiteral("program"), QString(), QStringLiteral("name")};
+    PageOptions pages{PageOptions::Use::Grade};
+
+    QList<QCommandLineOption> valued() const
+    {
+        return QList<QCommandLineOption>{scene,     out,      jobs,   timeout, memory, stage.size,
+                                         tolerance, equation, points, resume,  program}
+        + overrides.all() + pages.all();
+    }
+};
+
+// Each reader below fills its part of `args` from `parser` and returns the
+// usage error of a wrong value, or an empty string.
+
+// SUBMISSIONS, --scene and --out.
+QString readClassAndScenes(const QCommandLineParser &parser, const GradeOptionSet &o,
+                           GradeArgs &args)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1)
+        return positional.isEmpty()
+            ? GradeCommandWords::tr("missing the submissions folder")
+            : GradeCommandWords::tr("exactly one submissions folder expected");
+    GradeSettings &settings = args.settings;
+    settings.classFolder = positional.first();
+    args.scenePaths = parser.values(o.scene);
+    if (args.scenePaths.isEmpty())
+        return GradeCommandWords::tr("--scene: at least one scene expected");
+    settings.outFolder = parser.isSet(o.out) ? parser.value(o.out) : QStringLiteral("grades");
+    if (settings.outFolder.isEmpty())
+        return GradeCommandWords::tr("--out: missing the folder");
+    return {};
+}
+
+// How each row is checked: --size, --bind and the rest of the scene's
+// overrides, the page's options, --equation, --points, --resume, --program
+// and --tolerance.
+QString readCheckSettings(const QCommandLineParser &parser, const GradeOptionSet &o,
+                          GradeArgs &args)
+{
+    GradeSettings &settings = args.settings;
+    for (const QString &wrong :
+         {readSizeOption(parser, o.stage.size, kMaxCheckedSide, &settings.size),
+          readSceneOverrides(parser, o.overrides, &settings.overrides),
+          readPageOptions(parser, o.pages, &args.pages)})
+        if (!wrong.isEmpty())
+            return wrong;
+    if (parser.isSet(o.equation)) {
+        settings.equation = phongEquationFromKey(parser.value(o.equation));
+        if (!settings.equation)
+            return GradeCommandWords::tr("--equation: expected slide or guarded, got '%1'")
+                .arg(parser.value(o.equation));
+    }
+    if (parser.isSet(o.points)) {
+        const Result<GradePoints> parsed = parseGradePoints(parser.value(o.points));
+        if (!parsed)
+            return parsed.error();
+        args.points = *parsed;
+    }
+    args.resume = parser.isSet(o.resume);
+    args.program = parser.value(o.program);
+    if (parser.isSet(o.tolerance)) {
+        bool ok = false;
+        settings.toleranceSteps = parser.value(o.tolerance).toInt(&ok);
+        if (!ok || settings.toleranceSteps < 0 || settings.toleranceSteps > 255)
+            return GradeCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
+                .arg(parser.value(o.tolerance));
+    }
+    return {};
+}
+
+// What the children may use: --jobs, --timeout and --memory.
+QString readChildLimits(const QCommandLineParser &parser, const GradeOptionSet &o, GradeArgs &args)
+{
+    bool ok = true;
+    args.jobs = QThread::idealThreadCount();
+    if (parser.isSet(o.jobs)) {
+        args.jobs = parser.value(o.jobs).toInt(&ok);
+        if (!ok || args.jobs < 1 || args.jobs > 256)
+            return GradeCommandWords::tr("--jobs: expected 1..256, got '%1'")
+                .arg(parser.value(o.jobs));
+    }
+    const double seconds =
+        parser.isSet(o.timeout) ? parser.value(o.timeout).toDouble(&ok) : kDefaultTimeoutS;
+    if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400)
+        return GradeCommandWords::tr("--timeout: expected seconds in (0, 86400], got '%1'")
+            .arg(parser.value(o.timeout));
+    args.limits.wallClockMs = int(std::lround(seconds * 1000));
+    const qint64 mib =
+        parser.isSet(o.memory) ? parser.value(o.memory).toLongLong(&ok) : qint64(kDefaultMemoryMiB);
+    if (!ok || mib < 64 || mib > 1024 * 1024)
+        return GradeCommandWords::tr("--memory: expected 64..1048576 MiB, got '%1'")
+            .arg(parser.value(o.memory));
+    args.limits.memoryBytes = mib * 1024 * 1024;
+    return {};
+}
+
 std::variant<GradeArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  GradeCommandWords::tr("Show help."));
-    const QCommandLineOption scene(QStringLiteral("scene"), QString(), QStringLiteral("file"));
-    const QCommandLineOption out(QStringLiteral("out"), QString(), QStringLiteral("dir"));
-    const QCommandLineOption jobs(QStringLiteral("jobs"), QString(), QStringLiteral("n"));
-    const QCommandLineOption timeout(QStringLiteral("timeout"), QString(), QStringLiteral("s"));
-    const QCommandLineOption memory(QStringLiteral("memory"), QString(), QStringLiteral("mib"));
-    const StageOptions stage; // --size alone: each submission brings its own stages
-    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
-                                       QStringLiteral("steps"));
-    const SceneOverrideOptions overrides(SceneOverrideOptions::Use::Check);
-    const QCommandLineOption equation(QStringLiteral("equation"), QString(),
-                                      QStringLiteral("equation"));
-    const QCommandLineOption points(QStringLiteral("points"), QString(), QStringLiteral("points"));
-    const QCommandLineOption resume(QStringLiteral("resume"), QString());
-    const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
-    const PageOptions pages(PageOptions::Use::Grade);
+    const GradeOptionSet o;
     parser.addPositionalArgument(QStringLiteral("submissions"), QString());
-
-    const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
     if (const std::optional<int> exit =
             parseOrExit(parser, arguments,
-                        {help,
-                         QList<QCommandLineOption>{scene, out, jobs, timeout, memory, stage.size,
-                                                   tolerance, equation, points, resume, program}
-                             + overrides.all() + pages.all(),
+                        {o.help, o.valued(),
                          QStringList{QStringLiteral("scene")} + SceneOverrideOptions::repeatable()
                              + PageOptions::repeatable()},
-                        synopsis(), helpText(stage, overrides)))
+                        synopsis(), helpText(o.stage, o.overrides)))
         return *exit;
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
-        return usage(positional.isEmpty() ? GradeCommandWords::tr("missing the submissions folder")
-                                          : GradeCommandWords::tr("exactly one submissions folder "
-                                                                  "expected"));
     GradeArgs args;
-    GradeSettings &settings = args.settings;
-    settings.classFolder = positional.first();
-    args.scenePaths = parser.values(scene);
-    if (args.scenePaths.isEmpty())
-        return usage(GradeCommandWords::tr("--scene: at least one scene expected"));
-    settings.outFolder = parser.isSet(out) ? parser.value(out) : QStringLiteral("grades");
-    if (settings.outFolder.isEmpty())
-        return usage(GradeCommandWords::tr("--out: missing the folder"));
-    for (const QString &wrong :
-         {readSizeOption(parser, stage.size, kMaxCheckedSide, &settings.size),
-          readSceneOverrides(parser, overrides, &settings.overrides),
-          readPageOptions(parser, pages, &args.pages)})
-        if (!wrong.isEmpty())
-            return usage(wrong);
-    if (parser.isSet(equation)) {
-        settings.equation = phongEquationFromKey(parser.value(equation));
-        if (!settings.equation)
-            return usage(GradeCommandWords::tr("--equation: expected slide or guarded, got '%1'")
-                             .arg(parser.value(equation)));
-    }
-    if (parser.isSet(points)) {
-        const Result<GradePoints> parsed = parseGradePoints(parser.value(points));
-        if (!parsed)
-            return usage(parsed.error());
-        args.points = *parsed;
-    }
-    args.resume = parser.isSet(resume);
-    args.program = parser.value(program);
-    bool ok = true;
-    if (parser.isSet(tolerance)) {
-        settings.toleranceSteps = parser.value(tolerance).toInt(&ok);
-        if (!ok || settings.toleranceSteps < 0 || settings.toleranceSteps > 255)
-            return usage(GradeCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
-                             .arg(parser.value(tolerance)));
-    }
-    args.jobs = QThread::idealThreadCount();
-    if (parser.isSet(jobs)) {
-        args.jobs = parser.value(jobs).toInt(&ok);
-        if (!ok || args.jobs < 1 || args.jobs > 256)
-            return usage(
-                GradeCommandWords::tr("--jobs: expected 1..256, got '%1'").arg(parser.value(jobs)));
-    }
-    const double seconds =
-        parser.isSet(timeout) ? parser.value(timeout).toDouble(&ok) : kDefaultTimeoutS;
-    if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400)
-        return usage(GradeCommandWords::tr("--timeout: expected seconds in (0, 86400], got '%1'")
-                         .arg(parser.value(timeout)));
-    args.limits.wallClockMs = int(std::lround(seconds * 1000));
-    const qint64 mib =
-        parser.isSet(memory) ? parser.value(memory).toLongLong(&ok) : qint64(kDefaultMemoryMiB);
-    if (!ok || mib < 64 || mib > 1024 * 1024)
-        return usage(GradeCommandWords::tr("--memory: expected 64..1048576 MiB, got '%1'")
-                         .arg(parser.value(memory)));
-    args.limits.memoryBytes = mib * 1024 * 1024;
+    for (const auto read : {readClassAndScenes, readCheckSettings, readChildLimits})
+        if (const QString wrong = read(parser, o, args); !wrong.isEmpty())
+            return usageError(wrong, synopsis());
     return args;
 }
 
