@@ -83,14 +83,13 @@ QFont sizedFont(QFont font, double pointSize, bool bold = false)
     return font;
 }
 
-} // namespace
-
-QChart *buildChart(const ChartSpec &spec)
+// An empty chart with the look every chart of the bench has.
+QChart *styledChart(const QString &title)
 {
     auto *chart = new QChart;
     chart->setLocalizeNumbers(true); // axis labels write numbers as the sentences do
     chart->setLocale(sentenceLocale());
-    chart->setTitle(spec.title);
+    chart->setTitle(title);
     chart->setTitleFont(sizedFont(chart->titleFont(), 11, true));
     chart->setAnimationOptions(QChart::NoAnimation);
     chart->setDropShadowEnabled(false);
@@ -99,22 +98,18 @@ QChart *buildChart(const ChartSpec &spec)
     chart->legend()->setAlignment(Qt::AlignBottom);
     chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
     chart->legend()->setFont(sizedFont(chart->legend()->font(), 8.5));
+    return chart;
+}
 
-    std::vector<double> xs, ys;
-    for (const LabelledSeries &s : spec.series)
-        for (const LabelledPoint &p : s.points)
-            if (std::isfinite(p.x) && std::isfinite(p.y)) {
-                xs.push_back(p.x);
-                ys.push_back(p.y);
-            }
-    const YScale yScale = chooseYScale(ys);
-
-    // Axes.
-    auto *xAxis = new QValueAxis;
-    xAxis->setTitleText(spec.xTitle);
-    xAxis->setTitleFont(sizedFont(xAxis->titleFont(), 9));
-    xAxis->setLabelsFont(sizedFont(xAxis->labelsFont(), 8));
-    xAxis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
+// The x axis over `xs`, from 0 or a little below their least, with room on
+// the right for labels.
+QValueAxis *xAxisFor(const std::vector<double> &xs, const QString &title)
+{
+    auto *axis = new QValueAxis;
+    axis->setTitleText(title);
+    axis->setTitleFont(sizedFont(axis->titleFont(), 9));
+    axis->setLabelsFont(sizedFont(axis->labelsFont(), 8));
+    axis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
     double xMin = 0, xMax = 1;
     if (!xs.empty()) {
         xMin = *std::min_element(xs.begin(), xs.end());
@@ -122,130 +117,168 @@ QChart *buildChart(const ChartSpec &spec)
         const double span = xMax - xMin;
         const double pad = span > 0 ? span * 0.1 : std::max(std::abs(xMax) * 0.1, 0.1);
         xMin = std::max(0.0, xMin - pad);
-        xMax = xMax + pad * 1.5; // room on the right for labels
+        xMax = xMax + pad * 1.5;
     }
-    xAxis->setRange(xMin, xMax);
-    xAxis->setTickCount(6);
-    xAxis->applyNiceNumbers();
-    chart->addAxis(xAxis, Qt::AlignBottom);
+    axis->setRange(xMin, xMax);
+    axis->setTickCount(6);
+    axis->applyNiceNumbers();
+    return axis;
+}
 
+// The y axis of `scale`: logarithmic where chooseYScale() chose it, its
+// title saying so and where 0 is drawn.
+QAbstractAxis *yAxisFor(const YScale &scale, const ChartSpec &spec)
+{
     QAbstractAxis *yAxis = nullptr;
-    QStringList yNotes;
+    QStringList notes;
     if (!spec.yUnit.isEmpty())
-        yNotes << spec.yUnit;
-    if (yScale.log) {
+        notes << spec.yUnit;
+    if (scale.log) {
         auto *axis = new QLogValueAxis;
         axis->setBase(10);
         axis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
         axis->setMinorTickCount(8);
         axis->setMinorGridLineColor(QColor(238, 238, 238));
-        axis->setRange(yScale.min, yScale.max);
-        yNotes
-            << (yScale.hasZero
-                    ? LabelledChartWords::tr("log; 0 drawn at %1").arg(trimmedNumber(yScale.floor))
-                    : QStringLiteral("log"));
+        axis->setRange(scale.min, scale.max);
+        notes << (scale.hasZero
+                      ? LabelledChartWords::tr("log; 0 drawn at %1").arg(trimmedNumber(scale.floor))
+                      : QStringLiteral("log"));
         yAxis = axis;
     } else {
         auto *axis = new QValueAxis;
         axis->setLabelFormat(QStringLiteral("%.6g")); // localized labels need a precision
-        axis->setRange(yScale.min, yScale.max);
+        axis->setRange(scale.min, scale.max);
         axis->setTickCount(6);
         axis->applyNiceNumbers();
         yAxis = axis;
     }
-    yAxis->setTitleText(yNotes.isEmpty() ? spec.yTitle
-                                         : QStringLiteral("%1 (%2)").arg(
-                                             spec.yTitle, yNotes.join(QStringLiteral(", "))));
+    yAxis->setTitleText(notes.isEmpty() ? spec.yTitle
+                                        : QStringLiteral("%1 (%2)").arg(
+                                            spec.yTitle, notes.join(QStringLiteral(", "))));
     yAxis->setTitleFont(sizedFont(yAxis->titleFont(), 9));
     yAxis->setLabelsFont(sizedFont(yAxis->labelsFont(), 8));
-    chart->addAxis(yAxis, Qt::AlignLeft);
+    return yAxis;
+}
 
-    auto attach = [&](QAbstractSeries *series) {
+// A chart with its axes: what a series is added to.
+struct ChartAxes {
+    QChart *chart = nullptr;
+    QValueAxis *x = nullptr;
+    QAbstractAxis *y = nullptr;
+    YScale scale;
+
+    void attach(QAbstractSeries *series) const
+    {
         chart->addSeries(series);
-        series->attachAxis(xAxis);
-        series->attachAxis(yAxis);
-    };
-    auto hideLegend = [&](QAbstractSeries *series) {
+        series->attachAxis(x);
+        series->attachAxis(y);
+    }
+    void hideFromLegend(QAbstractSeries *series) const
+    {
         for (QLegendMarker *marker : chart->legend()->markers(series))
             marker->setVisible(false);
-    };
+    }
+};
 
+// One method's points: a line through them, markers on them, and each
+// point's label for the placer to keep beside it.
+void addSeries(const ChartAxes &axes, const LabelledSeries &s, LabelPlacer &placer)
+{
+    auto *line = new QLineSeries;
+    line->setName(s.name);
+    line->setPen(QPen(s.color, 1.8));
+    auto *markers = new QScatterSeries;
+    markers->setName(s.name);
+    markers->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+    markers->setMarkerSize(8);
+    markers->setColor(s.color);
+    markers->setBorderColor(s.color.darker(140));
+    std::vector<const LabelledPoint *> drawn;
+    for (const LabelledPoint &p : s.points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            continue;
+        const QPointF value(p.x, axes.scale.map(p.y));
+        line->append(value);
+        markers->append(value);
+        drawn.push_back(&p);
+    }
+    axes.attach(line);
+    axes.attach(markers);
+    axes.hideFromLegend(line);
+    placer.lines.push_back(line);
+    for (const QPointF &value : markers->points())
+        placer.markers.emplace_back(value, markers);
+    const QFont labelFont = sizedFont(axes.chart->titleFont(), 7.5, false);
+    for (std::size_t index = 0; index < drawn.size(); ++index) {
+        if (drawn[index]->label.isEmpty())
+            continue;
+        auto *item = new QGraphicsSimpleTextItem(drawn[index]->label, axes.chart);
+        item->setFont(labelFont);
+        item->setBrush(s.color.darker(150));
+        item->setZValue(1000);
+        placer.labels.push_back({item, markers->at(int(index)), markers});
+    }
+}
+
+// The front after the methods, so the legend lists it last: a dashed step
+// line (everything above and right of it is beaten) and rings.
+void addFront(const ChartAxes &axes, const std::vector<QPointF> &front, LabelPlacer &placer)
+{
     const QColor frontColor(110, 110, 110);
+    auto *step = new QLineSeries;
+    step->setName(LabelledChartWords::tr("Pareto front"));
+    step->setPen(QPen(frontColor, 1.4, Qt::DashLine));
+    for (size_t i = 0; i < front.size(); ++i) {
+        const QPointF p(front[i].x(), axes.scale.map(front[i].y()));
+        if (i > 0)
+            step->append(p.x(), axes.scale.map(front[i - 1].y()));
+        step->append(p);
+    }
+    axes.attach(step);
+    placer.lines.push_back(step);
+
+    auto *rings = new QScatterSeries;
+    rings->setName(LabelledChartWords::tr("Pareto front (points)"));
+    rings->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+    rings->setMarkerSize(15);
+    rings->setBrush(Qt::NoBrush);
+    rings->setPen(QPen(frontColor, 1.6));
+    for (const QPointF &p : front)
+        rings->append(p.x(), axes.scale.map(p.y()));
+    axes.attach(rings);
+    axes.hideFromLegend(rings);
+    for (const QPointF &value : rings->points())
+        placer.markers.emplace_back(value, rings);
+}
+
+} // namespace
+
+QChart *buildChart(const ChartSpec &spec)
+{
+    std::vector<double> xs, ys;
+    for (const LabelledSeries &s : spec.series)
+        for (const LabelledPoint &p : s.points)
+            if (std::isfinite(p.x) && std::isfinite(p.y)) {
+                xs.push_back(p.x);
+                ys.push_back(p.y);
+            }
+    ChartAxes axes;
+    axes.chart = styledChart(spec.title);
+    axes.scale = chooseYScale(ys);
+    axes.x = xAxisFor(xs, spec.xTitle);
+    axes.chart->addAxis(axes.x, Qt::AlignBottom);
+    axes.y = yAxisFor(axes.scale, spec);
+    axes.chart->addAxis(axes.y, Qt::AlignLeft);
 
     auto placer = std::make_shared<LabelPlacer>();
-    placer->chart = chart;
-    const QFont labelFont = sizedFont(chart->titleFont(), 7.5, false);
-
-    for (const LabelledSeries &s : spec.series) {
-        auto *line = new QLineSeries;
-        line->setName(s.name);
-        line->setPen(QPen(s.color, 1.8));
-        auto *markers = new QScatterSeries;
-        markers->setName(s.name);
-        markers->setMarkerShape(QScatterSeries::MarkerShapeCircle);
-        markers->setMarkerSize(8);
-        markers->setColor(s.color);
-        markers->setBorderColor(s.color.darker(140));
-        for (const LabelledPoint &p : s.points) {
-            if (!std::isfinite(p.x) || !std::isfinite(p.y))
-                continue;
-            const QPointF value(p.x, yScale.map(p.y));
-            line->append(value);
-            markers->append(value);
-        }
-        attach(line);
-        attach(markers);
-        hideLegend(line);
-        placer->lines.push_back(line);
-        for (const QPointF &value : markers->points())
-            placer->markers.emplace_back(value, markers);
-        int index = 0;
-        for (const LabelledPoint &p : s.points) {
-            if (!std::isfinite(p.x) || !std::isfinite(p.y))
-                continue;
-            const QPointF value = markers->at(index++);
-            if (p.label.isEmpty())
-                continue;
-            auto *item = new QGraphicsSimpleTextItem(p.label, chart);
-            item->setFont(labelFont);
-            item->setBrush(s.color.darker(150));
-            item->setZValue(1000);
-            placer->labels.push_back({item, value, markers});
-        }
-    }
-
-    // The front after the methods, so the legend lists it last: a dashed
-    // step line (everything above and right of it is beaten) and rings.
-    if (!spec.front.empty()) {
-        auto *step = new QLineSeries;
-        step->setName(LabelledChartWords::tr("Pareto front"));
-        step->setPen(QPen(frontColor, 1.4, Qt::DashLine));
-        for (size_t i = 0; i < spec.front.size(); ++i) {
-            const QPointF p(spec.front[i].x(), yScale.map(spec.front[i].y()));
-            if (i > 0)
-                step->append(p.x(), yScale.map(spec.front[i - 1].y()));
-            step->append(p);
-        }
-        attach(step);
-        placer->lines.push_back(step);
-
-        auto *rings = new QScatterSeries;
-        rings->setName(LabelledChartWords::tr("Pareto front (points)"));
-        rings->setMarkerShape(QScatterSeries::MarkerShapeCircle);
-        rings->setMarkerSize(15);
-        rings->setBrush(Qt::NoBrush);
-        rings->setPen(QPen(frontColor, 1.6));
-        for (const QPointF &p : spec.front)
-            rings->append(p.x(), yScale.map(p.y()));
-        attach(rings);
-        hideLegend(rings);
-        for (const QPointF &value : rings->points())
-            placer->markers.emplace_back(value, rings);
-    }
-
+    placer->chart = axes.chart;
+    for (const LabelledSeries &s : spec.series)
+        addSeries(axes, s, *placer);
+    if (!spec.front.empty())
+        addFront(axes, spec.front, *placer);
     // Keep the labels beside their points through resizes and zooms.
-    keepLabelsPlaced(placer, xAxis, yAxis);
-    return chart;
+    keepLabelsPlaced(placer, axes.x, axes.y);
+    return axes.chart;
 }
 
 QChart *createLabelledChart(const std::vector<LabelledSeries> &series, const QString &title,
