@@ -124,89 +124,128 @@ QString helpText(const StageOptions &stage, const SceneOverrideOptions &override
 }
 
 // The arguments, or an exit code for usage errors and --help.
+// Every option of `check`, declared once.
+struct CheckOptionSet {
+    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")},
+                            CheckCommandWords::tr("Show help.")};
+    StageOptions stage;
+    QCommandLineOption tolerance{QStringLiteral("tolerance"), QString(), QStringLiteral("steps")};
+    QCommandLineOption json{QStringLiteral("json"), QString()};
+    QCommandLineOption diff{QStringLiteral("diff"), QString(), QStringLiteral("file")};
+    SceneOverrideOptions overrides{SceneOverrideOptions::Use::Check};
+    QCommandLineOption equation{QStringLiteral("equation"), QString(), QStringLiteral("equation")};
+    QCommandLineOption project{QStringLiteral("project"), QString(), QStringLiteral("path")};
+    QCommandLineOption program{QStringLiteral("program"), QString(), QStringLiteral("name")};
+    PageOptions page;
+    QCommandLineOption drawOnly = hiddenOption(QStringLiteral("draw-only"), QStringLiteral("file"));
+
+    // grade's child, not for people
+    static QCommandLineOption hiddenOption(const QString &name, const QString &value)
+    {
+        QCommandLineOption option(name, QString(), value);
+        option.setFlags(QCommandLineOption::HiddenFromHelp);
+        return option;
+    }
+    QList<QCommandLineOption> valued() const
+    {
+        return stage.all()
+            + QList<QCommandLineOption>{tolerance, json, diff, equation, drawOnly, project, program}
+        + overrides.all() + page.all();
+    }
+};
+
+// Each reader below fills its part of `args` from `parser` and returns the
+// usage error of a wrong value, or an empty string.
+
+// The scene file, or the page run instead of one.
+QString readSceneOrPage(const QCommandLineParser &parser, const CheckOptionSet &o, CheckArgs &args)
+{
+    if (const QString wrong = readPageOptions(parser, o.page, &args.page); !wrong.isEmpty())
+        return wrong;
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1 || (positional.isEmpty() && !args.page.wanted))
+        return positional.isEmpty() ? CheckCommandWords::tr("missing the scene file")
+                                    : CheckCommandWords::tr("exactly one scene file expected");
+    args.scenePath = positional.value(0);
+    return {};
+}
+
+// How the frame is drawn and checked: --size, --shading, the scene's
+// overrides, --equation and --tolerance.
+QString readDrawingAndCheck(const QCommandLineParser &parser, const CheckOptionSet &o,
+                            CheckArgs &args)
+{
+    for (const QString &wrong : {readSizeOption(parser, o.stage.size, kMaxCheckedSide, &args.size),
+                                 readShadingOption(parser, o.stage.shading, &args.shading),
+                                 readSceneOverrides(parser, o.overrides, &args.overrides)})
+        if (!wrong.isEmpty())
+            return wrong;
+    if (parser.isSet(o.equation)) {
+        args.equation = phongEquationFromKey(parser.value(o.equation));
+        if (!args.equation)
+            return CheckCommandWords::tr("--equation: expected slide or guarded, got '%1'")
+                .arg(parser.value(o.equation));
+    }
+    if (parser.isSet(o.tolerance)) {
+        bool ok = false;
+        args.toleranceSteps = parser.value(o.tolerance).toInt(&ok);
+        if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
+            return CheckCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
+                .arg(parser.value(o.tolerance));
+    }
+    return {};
+}
+
+// Where the shaders come from: --vertex and --fragment, --project and
+// --program, or the page, one of them.
+QString readShaderSources(const QCommandLineParser &parser, const CheckOptionSet &o,
+                          CheckArgs &args)
+{
+    args.vertexPath = parser.value(o.stage.vertex);
+    args.fragmentPath = parser.value(o.stage.fragment);
+    args.projectPath = parser.value(o.project);
+    args.programName = parser.value(o.program);
+    const bool stageGiven = parser.isSet(o.stage.vertex) || parser.isSet(o.stage.fragment);
+    if (args.page.wanted && !args.projectPath.isEmpty())
+        return CheckCommandWords::tr("--project reads the shaders from the files, --page "
+                                     "takes them from the browser: give one");
+    if (args.page.wanted && stageGiven)
+        return CheckCommandWords::tr("--page takes both stages from the browser; leave out "
+                                     "--vertex and --fragment");
+    if (!args.projectPath.isEmpty() && stageGiven)
+        return CheckCommandWords::tr(
+            "--project takes both stages from the project; leave out --vertex and --fragment");
+    if (parser.isSet(o.program) && args.projectPath.isEmpty())
+        return CheckCommandWords::tr("--program names a program of --project");
+    return {};
+}
+
+// What is written: --json, --diff and grade's --draw-only.
+QString readOutputs(const QCommandLineParser &parser, const CheckOptionSet &o, CheckArgs &args)
+{
+    if (parser.isSet(o.diff) && parser.value(o.diff).isEmpty())
+        return CheckCommandWords::tr("--diff: missing the output file");
+    args.json = parser.isSet(o.json);
+    args.diffPath = parser.value(o.diff);
+    args.drawOnlyPath = parser.value(o.drawOnly);
+    return pngNameProblem(QStringLiteral("--diff"), args.diffPath);
+}
+
 std::variant<CheckArgs, int> parseArgs(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  CheckCommandWords::tr("Show help."));
-    const StageOptions stage;
-    const QCommandLineOption tolerance(QStringLiteral("tolerance"), QString(),
-                                       QStringLiteral("steps"));
-    const QCommandLineOption json(QStringLiteral("json"), QString());
-    const QCommandLineOption diff(QStringLiteral("diff"), QString(), QStringLiteral("file"));
-    const SceneOverrideOptions overrides(SceneOverrideOptions::Use::Check);
-    const QCommandLineOption equation(QStringLiteral("equation"), QString(),
-                                      QStringLiteral("equation"));
-    const QCommandLineOption project(QStringLiteral("project"), QString(), QStringLiteral("path"));
-    const QCommandLineOption program(QStringLiteral("program"), QString(), QStringLiteral("name"));
-    const PageOptions page;
-    QCommandLineOption drawOnly(QStringLiteral("draw-only"), QString(), QStringLiteral("file"));
-    drawOnly.setFlags(QCommandLineOption::HiddenFromHelp); // grade's child, not for people
+    const CheckOptionSet o;
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  CheckCommandWords::tr("Scene file (JSON)."));
-
-    const auto usage = [](const QString &message) { return usageError(message, synopsis()); };
-    if (const std::optional<int> exit =
-            parseOrExit(parser, arguments,
-                        {help,
-                         stage.all()
-                             + QList<QCommandLineOption>{tolerance, json, diff, equation, drawOnly,
-                                                         project, program}
-                             + overrides.all() + page.all(),
-                         SceneOverrideOptions::repeatable() + PageOptions::repeatable()},
-                        synopsis(), helpText(stage, overrides)))
+    if (const std::optional<int> exit = parseOrExit(
+            parser, arguments,
+            {o.help, o.valued(), SceneOverrideOptions::repeatable() + PageOptions::repeatable()},
+            synopsis(), helpText(o.stage, o.overrides)))
         return *exit;
     CheckArgs args;
-    if (const QString wrong = readPageOptions(parser, page, &args.page); !wrong.isEmpty())
-        return usage(wrong);
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() > 1 || (positional.isEmpty() && !args.page.wanted))
-        return usage(positional.isEmpty()
-                         ? CheckCommandWords::tr("missing the scene file")
-                         : CheckCommandWords::tr("exactly one scene file expected"));
-    args.scenePath = positional.value(0);
-
-    for (const QString &wrong : {readSizeOption(parser, stage.size, kMaxCheckedSide, &args.size),
-                                 readShadingOption(parser, stage.shading, &args.shading),
-                                 readSceneOverrides(parser, overrides, &args.overrides)})
-        if (!wrong.isEmpty())
-            return usage(wrong);
-    if (parser.isSet(equation)) {
-        args.equation = phongEquationFromKey(parser.value(equation));
-        if (!args.equation)
-            return usage(CheckCommandWords::tr("--equation: expected slide or guarded, got '%1'")
-                             .arg(parser.value(equation)));
-    }
-    if (parser.isSet(tolerance)) {
-        bool ok = false;
-        args.toleranceSteps = parser.value(tolerance).toInt(&ok);
-        if (!ok || args.toleranceSteps < 0 || args.toleranceSteps > 255)
-            return usage(CheckCommandWords::tr("--tolerance: expected 0..255 8-bit steps, got '%1'")
-                             .arg(parser.value(tolerance)));
-    }
-    if (parser.isSet(diff) && parser.value(diff).isEmpty())
-        return usage(CheckCommandWords::tr("--diff: missing the output file"));
-    args.vertexPath = parser.value(stage.vertex);
-    args.fragmentPath = parser.value(stage.fragment);
-    args.projectPath = parser.value(project);
-    args.programName = parser.value(program);
-    if (args.page.wanted && !args.projectPath.isEmpty())
-        return usage(CheckCommandWords::tr("--project reads the shaders from the files, --page "
-                                           "takes them from the browser: give one"));
-    if (args.page.wanted && (parser.isSet(stage.vertex) || parser.isSet(stage.fragment)))
-        return usage(CheckCommandWords::tr("--page takes both stages from the browser; leave out "
-                                           "--vertex and --fragment"));
-    if (!args.projectPath.isEmpty() && (parser.isSet(stage.vertex) || parser.isSet(stage.fragment)))
-        return usage(CheckCommandWords::tr(
-            "--project takes both stages from the project; leave out --vertex and --fragment"));
-    if (parser.isSet(program) && args.projectPath.isEmpty())
-        return usage(CheckCommandWords::tr("--program names a program of --project"));
-    args.json = parser.isSet(json);
-    args.diffPath = parser.value(diff);
-    args.drawOnlyPath = parser.value(drawOnly);
-    if (const QString problem = pngNameProblem(QStringLiteral("--diff"), args.diffPath);
-        !problem.isEmpty())
-        return usage(problem);
+    for (const auto read : {readSceneOrPage, readDrawingAndCheck, readShaderSources, readOutputs})
+        if (const QString wrong = read(parser, o, args); !wrong.isEmpty())
+            return usageError(wrong, synopsis());
     return args;
 }
 
