@@ -6,10 +6,13 @@
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
 #include "ui/shaders/ShaderEditor.h"
+#include "ui/shaders/ShaderFileSet.h"
 #include "ui/viewport/Viewport.h"
 #include "ui/window/GuiMain.h"
 #include "ui/window/MainWindow.h"
+
 #include "ui/window/SceneDocument.h"
+#include <QDir>
 
 #include <QElapsedTimer>
 #include <QStandardPaths>
@@ -124,6 +127,11 @@ bool UiTestWindow::typeTheSlidesEquationAndCheck(int timeoutMs) const
                 && check->lastResult()->report().equation == PhongEquation::Slide;
         },
         timeoutMs);
+}
+
+void WindowPerTest::cleanupTestCase()
+{
+    QDir(ShaderFileSet::userFolder()).removeRecursively();
 }
 
 } // namespace phonglab::test

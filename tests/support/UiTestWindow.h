@@ -5,6 +5,7 @@
 
 #include <QByteArray>
 #include <QImage>
+#include <QObject>
 #include <QSize>
 #include <QString>
 #include <QTemporaryDir>
@@ -110,6 +111,18 @@ protected:
 
     UiTestEnvironment m_env; // unused unless the test calls it
     std::unique_ptr<MainWindow> m_window;
+};
+
+// The base of a UI test class that opens a new window in its test cases:
+// the window goes after each one, and the shader copies the app wrote for
+// the user (ShaderFileSet::userFolder()) after the last.
+class WindowPerTest : public QObject, public UiTestWindow
+{
+    Q_OBJECT
+
+private slots:
+    void cleanup() { m_window.reset(); }
+    void cleanupTestCase();
 };
 
 } // namespace phonglab::test

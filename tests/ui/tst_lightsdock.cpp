@@ -95,14 +95,13 @@ QString compareWithReference(const QImage &grab, const Scene &scene)
 
 } // namespace
 
-class TestLightsDock : public QObject, private test::UiTestWindow
+class TestLightsDock : public test::WindowPerTest
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
     void init();
-    void cleanup();
 
     void kdEditChangesFrameAndMatchesReference();
     void dockLightStaysFixedInWorldWhileOrbiting();
@@ -134,11 +133,6 @@ void TestLightsDock::init()
     if (QTest::currentTestFailed())
         return;
     viewport()->setShowLightMarkers(false); // the reference has no markers
-}
-
-void TestLightsDock::cleanup()
-{
-    m_window.reset();
 }
 
 void TestLightsDock::orbit(QPoint by)

@@ -84,14 +84,13 @@ void writeFile(const QString &path, const QByteArray &contents)
 
 } // namespace
 
-class TestMainWindow : public QObject, private test::UiTestWindow
+class TestMainWindow : public test::WindowPerTest
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
     void init();
-    void cleanup();
 
     void opensDefaultSceneAndDrawsLitObject();
     void showsFrameStatsAndRenderer();
@@ -133,11 +132,6 @@ void TestMainWindow::init()
     m_shown.camera =
         framedCamera(m_loaded.camera, objectBoundsCorners(m_loaded, viewport()->meshInfo()),
                      double(pixels.width()) / pixels.height());
-}
-
-void TestMainWindow::cleanup()
-{
-    m_window.reset();
 }
 
 void TestMainWindow::drag(Qt::MouseButton button, QPoint by)

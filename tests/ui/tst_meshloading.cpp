@@ -121,14 +121,13 @@ QString dockField(SceneDock *dock, int index, const QString &name)
 
 } // namespace
 
-class TestMeshLoading : public QObject, private test::UiTestWindow
+class TestMeshLoading : public test::WindowPerTest
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
     void init();
-    void cleanup();
 
     void openedMeshIsDrawnFittedAndListed();
     void brokenMeshFileKeepsScene_data();
@@ -186,11 +185,6 @@ void TestMeshLoading::init()
     QVERIFY_OK(m_window->document()->openAndWait(
         sourcePath(QStringLiteral("assets/scenes/default.json"))));
     test::showAndWaitForFrame(*m_window, {1000, 640});
-}
-
-void TestMeshLoading::cleanup()
-{
-    m_window.reset();
 }
 
 bool TestMeshLoading::waitForLoad(const std::function<void()> &start)

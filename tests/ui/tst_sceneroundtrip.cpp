@@ -38,15 +38,13 @@ QByteArray readFile(const QString &path)
 
 } // namespace
 
-class TestSceneRoundTrip : public QObject, private test::UiTestWindow
+class TestSceneRoundTrip : public test::WindowPerTest
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
     void init();
-    void cleanup();
-    void cleanupTestCase();
 
     void saveThenOpenGivesIdenticalRender();
     void missingShaderFallsBackToShipped();
@@ -70,16 +68,6 @@ void TestSceneRoundTrip::initTestCase()
 void TestSceneRoundTrip::init()
 {
     m_env.useFreshRecoveryDir("discard");
-}
-
-void TestSceneRoundTrip::cleanup()
-{
-    m_window.reset();
-}
-
-void TestSceneRoundTrip::cleanupTestCase()
-{
-    QDir(ShaderFileSet::userFolder()).removeRecursively();
 }
 
 void TestSceneRoundTrip::openWindow()

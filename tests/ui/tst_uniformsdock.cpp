@@ -42,15 +42,13 @@ namespace {
 
 } // namespace
 
-class TestUniformsDock : public QObject, private test::UiTestWindow
+class TestUniformsDock : public test::WindowPerTest
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
     void init();
-    void cleanup();
-    void cleanupTestCase();
 
     void drivenUniformsAreReadOnly();
     void userUniformIsEditedAndKept();
@@ -81,16 +79,6 @@ void TestUniformsDock::initTestCase()
 void TestUniformsDock::init()
 {
     m_env.useFreshRecoveryDir(nullptr);
-}
-
-void TestUniformsDock::cleanup()
-{
-    m_window.reset();
-}
-
-void TestUniformsDock::cleanupTestCase()
-{
-    QDir(ShaderFileSet::userFolder()).removeRecursively();
 }
 
 void TestUniformsDock::openWindow()
