@@ -5980,6 +5980,21 @@ fidelity, javascript, mesh_errors).
     </message>
 </context>
 <context>
+    <name>phonglab::cli::PngFiles</name>
+    <message>
+        <source>%1 %2: PhongLab writes PNG images only; give a name that ends in .png</source>
+        <translation>%1 %2: PhongLab schreibt nur PNG-Bilder; einen Namen mit der Endung .png angeben</translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>PNG encoding failed</source>
+        <translation>PNG-Kodierung fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
     <name>phonglab::cli::RenderCommand</name>
     <message>
         <source>Show help.</source>
@@ -6078,35 +6093,7 @@ rechnet)</translation>
     </message>
 </context>
 <context>
-    <name>phonglab::cli::SceneStages</name>
-    <message>
-        <source>--size: expected WxH with 1..%1 pixels per side, got &apos;%2&apos;</source>
-        <translation>--size: WxH mit 1..%1 Pixeln pro Seite erwartet, erhalten: &apos;%2&apos;</translation>
-    </message>
-    <message>
-        <source>--shading: unknown method &apos;%1&apos; (known: %2)</source>
-        <translation>--shading: unbekanntes Verfahren &apos;%1&apos; (bekannt: %2)</translation>
-    </message>
-    <message>
-        <source>; if it is %1, add --bind %2=%3 (or &quot;bindings&quot; in the scene)</source>
-        <translation>; falls es sich um %1 handelt, --bind %2=%3 angeben (oder &quot;bindings&quot; in der Szene)</translation>
-    </message>
-    <message>
-        <source>; bind it with --bind %1=MEANING (meanings: %2), or give it a value in the scene&apos;s &quot;uniforms&quot;</source>
-        <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
-    </message>
-    <message>
-        <source>%1 %2: PhongLab writes PNG images only; give a name that ends in .png</source>
-        <translation>%1 %2: PhongLab schreibt nur PNG-Bilder; einen Namen mit der Endung .png angeben</translation>
-    </message>
-    <message>
-        <source>cannot write: %1</source>
-        <translation>kann nicht geschrieben werden: %1</translation>
-    </message>
-    <message>
-        <source>PNG encoding failed</source>
-        <translation>PNG-Kodierung fehlgeschlagen</translation>
-    </message>
+    <name>phonglab::cli::StageOptions</name>
     <message>
         <source>image size in pixels, default 800x600</source>
         <translation>Bildgröße in Pixeln, Standard 800x600</translation>
@@ -6124,6 +6111,22 @@ rechnet)</translation>
 %1</source>
         <translation>Schattierungsverfahren statt &quot;shading&quot; der Szene; eines von
 %1</translation>
+    </message>
+    <message>
+        <source>--size: expected WxH with 1..%1 pixels per side, got &apos;%2&apos;</source>
+        <translation>--size: WxH mit 1..%1 Pixeln pro Seite erwartet, erhalten: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--shading: unknown method &apos;%1&apos; (known: %2)</source>
+        <translation>--shading: unbekanntes Verfahren &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>; if it is %1, add --bind %2=%3 (or &quot;bindings&quot; in the scene)</source>
+        <translation>; falls es sich um %1 handelt, --bind %2=%3 angeben (oder &quot;bindings&quot; in der Szene)</translation>
+    </message>
+    <message>
+        <source>; bind it with --bind %1=MEANING (meanings: %2), or give it a value in the scene&apos;s &quot;uniforms&quot;</source>
+        <translation>; mit --bind %1=MEANING binden (Bedeutungen: %2) oder ihr einen Wert in &quot;uniforms&quot; der Szene geben</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,6 @@
 #include "CheckSteps.h"
 
-#include "cli/common/SceneStages.h"
+#include "cli/common/StageOptions.h"
 #include "core/project/ProjectShader.h"
 #include "core/reference/ImageMetrics.h"
 #include "mesh/loading/SceneMeshes.h"

@@ -8,7 +8,7 @@
 #include "GradeRun.h"
 #include "GradeTables.h"
 #include "cli/common/CliCommon.h"
-#include "cli/common/SceneStages.h"
+#include "cli/common/StageOptions.h"
 #include "core/scene/SceneJson.h"
 #include "core/support/AtomicFile.h"
 #include "core/support/PhonglabExecutable.h"

@@ -1,6 +1,6 @@
 #include "GradeReferences.h"
 
-#include "cli/common/SceneStages.h"
+#include "cli/common/PngFiles.h"
 #include "render/gl/QtImages.h"
 
 #include <QCoreApplication>

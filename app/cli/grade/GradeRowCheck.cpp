@@ -1,7 +1,7 @@
 #include "GradeRowCheck.h"
 
 #include "cli/check/CheckSteps.h"
-#include "cli/common/SceneStages.h"
+#include "cli/common/PngFiles.h"
 #include "render/gl/QtImages.h"
 
 #include <QCoreApplication>

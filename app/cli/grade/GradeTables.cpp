@@ -3,7 +3,7 @@
 #include <QHash>
 
 #include "bench/BenchResult.h"
-#include "cli/common/SceneStages.h"
+#include "render/check/ProgramFindings.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,8 +1,9 @@
 #include "RenderCommand.h"
 
 #include "cli/common/CliCommon.h"
+#include "cli/common/PngFiles.h"
 #include "cli/common/SceneOverrides.h"
-#include "cli/common/SceneStages.h"
+#include "cli/common/StageOptions.h"
 #include "core/scene/ResourcePaths.h"
 #include "core/scene/SceneJson.h"
 #include "core/scene/ShadingMethod.h"

@@ -1,4 +1,4 @@
-#include "SceneStages.h"
+#include "StageOptions.h"
 
 #include "CliCommon.h"
 #include "core/scene/ResourcePaths.h"
@@ -6,16 +6,14 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QImageWriter>
-#include <QSaveFile>
 
 #include <algorithm>
 
 namespace phonglab::cli {
 
 // Messages a user reads, in the language the run speaks (core/support/Language).
-struct SceneStagesWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::SceneStages)
+struct StageOptionsWords {
+    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::StageOptions)
 };
 
 namespace {
@@ -42,17 +40,17 @@ StageFiles chooseStageFiles(const Scene &scene, const QString &vertexArg,
 }
 
 StageOptions::StageOptions()
-    : size(QStringLiteral("size"), SceneStagesWords::tr("image size in pixels, default 800x600"),
+    : size(QStringLiteral("size"), StageOptionsWords::tr("image size in pixels, default 800x600"),
            QStringLiteral("WxH"))
     , vertex(QStringLiteral("vertex"),
-             SceneStagesWords::tr("vertex shader instead of the scene's or the shading method's"),
+             StageOptionsWords::tr("vertex shader instead of the scene's or the shading method's"),
              QStringLiteral("FILE"))
     , fragment(QStringLiteral("fragment"),
-               SceneStagesWords::tr("fragment shader instead of the scene's or the shading "
-                                    "method's"),
+               StageOptionsWords::tr("fragment shader instead of the scene's or the shading "
+                                     "method's"),
                QStringLiteral("FILE"))
     , shading(QStringLiteral("shading"),
-              SceneStagesWords::tr("shading method instead of the scene's \"shading\"; one of\n%1")
+              StageOptionsWords::tr("shading method instead of the scene's \"shading\"; one of\n%1")
                   .arg(shadingNames().join(QStringLiteral(", "))),
               QStringLiteral("NAME"))
 {
@@ -65,7 +63,7 @@ QString readSizeOption(const QCommandLineParser &parser, const QCommandLineOptio
         return {};
     const auto parsed = parseSizeArgument(parser.value(option), 1, maxSide);
     if (!parsed)
-        return SceneStagesWords::tr("--size: expected WxH with 1..%1 pixels per side, got '%2'")
+        return StageOptionsWords::tr("--size: expected WxH with 1..%1 pixels per side, got '%2'")
             .arg(maxSide)
             .arg(parser.value(option));
     *size = *parsed;
@@ -79,7 +77,7 @@ QString readShadingOption(const QCommandLineParser &parser, const QCommandLineOp
         return {};
     *shading = shadingFromName(parser.value(option));
     if (!*shading)
-        return SceneStagesWords::tr("--shading: unknown method '%1' (known: %2)")
+        return StageOptionsWords::tr("--shading: unknown method '%1' (known: %2)")
             .arg(parser.value(option), shadingNames().join(QStringLiteral(", ")));
     return {};
 }
@@ -102,56 +100,14 @@ QString unboundMessage(const UnboundUniform &unbound)
 {
     if (unbound.likely)
         return unboundSentence(unbound)
-            + SceneStagesWords::tr("; if it is %1, add --bind %2=%3 (or \"bindings\" in the scene)")
+            + StageOptionsWords::tr(
+                  "; if it is %1, add --bind %2=%3 (or \"bindings\" in the scene)")
                   .arg(bindingMeaningDescription(*unbound.likely), unbound.name,
                        bindingMeaningKey(*unbound.likely));
     return unboundSentence(unbound)
-        + SceneStagesWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give it a "
-                               "value in the scene's \"uniforms\"")
+        + StageOptionsWords::tr("; bind it with --bind %1=MEANING (meanings: %2), or give it a "
+                                "value in the scene's \"uniforms\"")
               .arg(unbound.name, bindingMeaningKeys().join(QStringLiteral(", ")));
-}
-
-QString pngNameProblem(const QString &option, const QString &path)
-{
-    const QByteArray suffix = QFileInfo(path).suffix().toLower().toUtf8();
-    if (suffix.isEmpty() || suffix == "png")
-        return {};
-    static const QList<QByteArray> others = [] {
-        QList<QByteArray> formats = QImageWriter::supportedImageFormats();
-        formats << "jpg"
-                << "jpeg"
-                << "gif"
-                << "webp"
-                << "tif"
-                << "tiff"
-                << "bmp"
-                << "svg"
-                << "exr"
-                << "tga"
-                << "heic"
-                << "avif"
-                << "jxl";
-        return formats;
-    }();
-    if (!others.contains(suffix))
-        return {};
-    return SceneStagesWords::tr("%1 %2: PhongLab writes PNG images only; give a name that ends "
-                                "in .png")
-        .arg(option, path);
-}
-
-Result<> writePng(const QImage &image, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(SceneStagesWords::tr("cannot write: %1").arg(file.errorString()));
-    if (!image.save(&file, "PNG")) {
-        file.cancelWriting();
-        return fail(SceneStagesWords::tr("PNG encoding failed"));
-    }
-    if (!file.commit())
-        return fail(SceneStagesWords::tr("cannot write: %1").arg(file.errorString()));
-    return {};
 }
 
 } // namespace phonglab::cli
