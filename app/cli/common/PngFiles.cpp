@@ -37,7 +37,7 @@ QString pngNameProblem(const QString &option, const QString &path)
     if (!others.contains(suffix))
         return {};
     return PngFilesWords::tr("%1 %2: PhongLab writes PNG images only; give a name that ends "
-                                "in .png")
+                             "in .png")
         .arg(option, path);
 }
 

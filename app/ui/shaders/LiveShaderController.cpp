@@ -13,6 +13,7 @@
 #include <QSettings>
 #include <QTimer>
 #include <atomic>
+#include <cassert>
 
 namespace phonglab {
 
@@ -232,8 +233,23 @@ void LiveShaderController::takeBackContextNow()
     m_viewport->takeBackContext(0);
 }
 
+// The machine's transitions: WaitingForGl is entered from anywhere (the
+// view's context goes) and left only to Idle; a build starts from Idle and
+// ends in Idle; a first draw starts from Idle and ends in Idle.
+bool LiveShaderController::mayGo(State from, State to)
+{
+    switch (to) {
+    case State::WaitingForGl: return true;
+    case State::Idle: return true;
+    case State::Building: return from == State::Idle;
+    case State::Warming: return from == State::Idle;
+    }
+    return false;
+}
+
 void LiveShaderController::setState(State state)
 {
+    assert(mayGo(m_state, state));
     if (std::exchange(m_state, state) != state)
         emit stateChanged(state);
 }

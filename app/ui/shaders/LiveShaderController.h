@@ -117,6 +117,7 @@ private:
     void onGlInitialized();
     void onGlAboutToBeReleased();
     void onShippedProgramLoaded(ShadingMethod method);
+    static bool mayGo(State from, State to);
     void setState(State state);
     bool startWorker();
     using BuildRequest = BuildQueue::Request;

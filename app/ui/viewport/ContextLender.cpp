@@ -1,6 +1,9 @@
 #include "ContextLender.h"
 
 #include <QOpenGLContext>
+#include <QThread>
+
+#include <cassert>
 
 namespace phonglab {
 
@@ -9,8 +12,12 @@ std::optional<LentContext> ContextLender::lend(QOpenGLContext *context, QSurface
 {
     if (!context || m_returned)
         return std::nullopt;
+    // Only the thread a context lives in may lend it.
+    assert(context->thread() == QThread::currentThread());
     if (QOpenGLContext::currentContext() == context)
         context->doneCurrent(); // a context changes threads only when current nowhere
+    m_owner = QThread::currentThread();
+    m_lent = context;
     context->moveToThread(borrower);
     m_returned = std::make_shared<QSemaphore>(0);
     m_borrower = borrower;
@@ -23,8 +30,11 @@ bool ContextLender::end(int timeoutMs)
         return true;
     if (!m_returned->tryAcquire(1, timeoutMs))
         return false;
+    // The borrower moves the context back before it says it is done.
+    assert(m_lent->thread() == m_owner);
     m_returned.reset();
     m_borrower = nullptr;
+    m_lent = nullptr;
     return true;
 }
 

@@ -29,6 +29,8 @@ public:
 private:
     std::shared_ptr<QSemaphore> m_returned; // set while lent
     QThread *m_borrower = nullptr;
+    QOpenGLContext *m_lent = nullptr; // the context while lent
+    QThread *m_owner = nullptr;       // the thread it was lent from, and comes back to
 };
 
 } // namespace phonglab
