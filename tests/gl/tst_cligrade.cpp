@@ -311,6 +311,19 @@ private slots:
         }
     }
 
+    // A submission that drew nothing (dave's error, frank's timeout) leaves
+    // no empty folder under images/, and one that drew keeps its images.
+    void noImageFolderLeftEmpty()
+    {
+        const QDir images(m_out + QStringLiteral("/images"));
+        int folders = 0;
+        for (const QFileInfo &folder : images.entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+            ++folders;
+            QVERIFY2(!QDir(folder.filePath()).isEmpty(), qPrintable(folder.filePath()));
+        }
+        QVERIFY(folders > 0);
+    }
+
     void stdoutTableNamesEveryStudent()
     {
         const QString table = QString::fromUtf8(m_run.out);

@@ -43,12 +43,11 @@ void failRow(GradeRow &row, GradeVerdict verdict, const QString &message)
     row.outcome.errors.push_back(inputError(QString(), message));
 }
 
-// No image of a row that drew none (and no folder left empty for it).
+// No image of a row that drew none. Its folder stays: the submission's
+// other scenes may still draw into it (GradeRun removes it if it ends empty).
 void dropImage(GradeRow &row, const QString &outFolder)
 {
-    QDir out(outFolder);
-    out.remove(row.yoursImage);
-    out.rmdir(QFileInfo(row.yoursImage).path());
+    QDir(outFolder).remove(row.yoursImage);
     row.yoursImage.clear();
 }
 

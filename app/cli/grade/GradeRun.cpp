@@ -144,6 +144,9 @@ void GradeRun::run()
     while (m_running > 0 || m_checking > 0)
         loop.processEvents(QEventLoop::WaitForMoreEvents);
     assert(m_waiting.empty() && m_done == int(rows.size()));
+    // No folder left empty for a submission none of whose rows drew.
+    for (std::size_t s = 0; s < m_results.submissions.size(); ++s)
+        QDir(m_results.settings.outFolder).rmdir(submissionFolder(m_results, int(s)));
     m_progress.clear();
 }
 
