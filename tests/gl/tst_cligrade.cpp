@@ -140,9 +140,14 @@ void writeClass(const QString &root, bool everyFailure)
     writeFile(root + QStringLiteral("/dave/one.frag"), shipped(QStringLiteral("phong.frag")));
     writeFile(root + QStringLiteral("/dave/two.frag"), shipped(QStringLiteral("phong.frag")));
     writeFile(root + QStringLiteral("/erin/notes.txt"), "no shader here");
-    // A heavy body in a long loop: minutes per frame on llvmpipe.
+    // A child that never answers. A heavy loop alone is not enough: on this
+    // 2-core machine llvmpipe drew a million iterations of sin() per pixel
+    // at 160x120 in under the 3 s limit, so the verdict came down to the
+    // machine's load. The child's own hang (PHONGLAB_GRADE_FAULTS) is what
+    // --timeout must end, every time.
     writeFile(root + QStringLiteral("/frank/slow.frag"),
-              fragmentWith("for (int k = 0; k < 1000000; ++k) I += 1e-9 * sin(I * float(k));"));
+              fragmentWith("for (int k = 0; k < 1000000; ++k) I += 1e-9 * sin(I * float(k));\n"
+                           "// PHONGLAB_FAULT: hang"));
     writeFile(root + QStringLiteral("/grace/crash.frag"), fragmentWith("// PHONGLAB_FAULT: crash"));
     writeFile(root + QStringLiteral("/ivan/hungry.frag"), fragmentWith("// PHONGLAB_FAULT: oom"));
     // mallory: links to a file of the teacher's (outside the class) and a
