@@ -164,7 +164,9 @@ int main(int argc, char **argv)
     }
     Viewport *viewport = window.viewport();
     if (!QTest::qWaitFor(
-            [&] { return viewport->isRenderReady() && viewport->frameStats().rendered > 0; },
+            [&] {
+                return viewport->isRenderReady() && viewport->frames().frameStats().rendered > 0;
+            },
             60000)) {
         std::fprintf(stderr, "the view did not come up\n");
         return 1;

@@ -99,23 +99,24 @@ PhongLabPath::PhongLabPath(const Scene &scene, const QSize &size, int samples, B
         std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(done.error()));
         return;
     }
-    m_window->viewport()->setShowLightMarkers(false); // the same single draw as the raw path
-    m_window->viewport()->setFixedSize(size);         // the raw path's framebuffer size
+    m_window->viewport()->drawing().setShowLightMarkers(
+        false);                               // the same single draw as the raw path
+    m_window->viewport()->setFixedSize(size); // the raw path's framebuffer size
     m_window->show();
     QElapsedTimer wait;
     wait.start();
-    while (m_window->viewport()->frameStats().rendered == 0 && wait.elapsed() < 10000)
+    while (m_window->viewport()->frames().frameStats().rendered == 0 && wait.elapsed() < 10000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    m_ready = m_window->viewport()->frameStats().rendered > 0;
+    m_ready = m_window->viewport()->frames().frameStats().rendered > 0;
     if (!m_ready || builder == Builder::App || builder == Builder::GuiThread)
         return;
     m_buildThread = std::make_unique<BuildThread>();
     m_buildThread->setWarmUp(builder == Builder::WorkerWarmsItself);
     m_buildThread->setReceiver([this](BuildReply reply) {
-        m_window->viewport()->adoptProgram(std::move(reply.program));
+        m_window->viewport()->program().adopt(std::move(reply.program));
         m_applied(reply.timings);
     });
-    m_ready = bool(m_buildThread->start(m_window->viewport()->context()));
+    m_ready = bool(m_buildThread->start(m_window->viewport()->glContext().context()));
 }
 
 void PhongLabPath::startBuild(const QByteArray &fragment, Applied applied)
@@ -141,7 +142,7 @@ void PhongLabPath::startBuild(const QByteArray &fragment, Applied applied)
     case Builder::WorkerOnly:
         m_applied = std::move(applied);
         m_buildThread->build(vertexSource, fragmentSource,
-                             std::max(0, viewport->framebufferSamples()),
+                             std::max(0, viewport->frames().framebufferSamples()),
                              viewport->currentScene().bindings);
         return;
     case Builder::GuiThread: {
@@ -151,7 +152,7 @@ void PhongLabPath::startBuild(const QByteArray &fragment, Applied applied)
             built = ProgramBuilder().build(vertexSource, fragmentSource, {},
                                            viewport->currentScene().bindings);
         }
-        viewport->adoptProgram(std::move(built.program));
+        viewport->program().adopt(std::move(built.program));
         BuildTimings timings;
         timings.compileNs = built.compileNs;
         timings.linkNs = built.linkNs;
@@ -188,11 +189,11 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     // The pixel: when the frame was handed to the window system (the
     // presenting thread's swapBuffers returned), as the raw path's.
     std::chrono::steady_clock::time_point start;
-    const qint64 fromLoansBefore = viewport->frameStats().fromLoans;
+    const qint64 fromLoansBefore = viewport->frames().frameStats().fromLoans;
     auto framed = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
         if (appliedAt >= 0 && frameAt < 0) {
             frameAt = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                          viewport->lastPresentedAt() - start)
+                          viewport->frames().lastPresentedAt() - start)
                           .count();
             loop.quit();
         }
@@ -232,7 +233,7 @@ EditSample PhongLabPath::edit(const QByteArray &fragment)
     s.warmMs = ms(timings.warmNs);
     // Presented by the trial, the frame reached the window before the
     // program was said to be applied: the GUI thread drew none.
-    s.frameFromLoan = viewport->frameStats().fromLoans > fromLoansBefore;
+    s.frameFromLoan = viewport->frames().frameStats().fromLoans > fromLoansBefore;
     s.frameMs = s.frameFromLoan ? 0.0 : ms(frameAt - appliedAt);
     s.otherMs = s.totalMs - s.compileMs - s.linkMs - s.warmMs - s.frameMs;
     s.stallMs = ms(maxGap);
@@ -254,7 +255,7 @@ double PhongLabPath::steadyFrameMs()
     });
     QTimer::singleShot(5000, &loop, &QEventLoop::quit);
     clock.start();
-    viewport->requestFrame();
+    viewport->frames().requestFrame();
     loop.exec();
     QObject::disconnect(framed);
     return doneAt < 0 ? 0.0 : ms(doneAt);

@@ -65,13 +65,13 @@ public:
         useMultisamplingInViewOnly(*m_window, samples); // as the app (GuiMain)
         if (fixedSize)
             m_window->viewport()->setFixedSize(*fixedSize);
-        m_window->viewport()->setShowLightMarkers(false); // the raw path draws none
+        m_window->viewport()->drawing().setShowLightMarkers(false); // the raw path draws none
         if (const Result<> set = m_window->viewport()->setScene(scene); !set)
             std::fprintf(stderr, "cannot show the scene: %s\n", qPrintable(set.error()));
         m_window->show();
         QElapsedTimer wait;
         wait.start();
-        while (m_window->viewport()->frameStats().rendered == 0 && wait.elapsed() < 10000)
+        while (m_window->viewport()->frames().frameStats().rendered == 0 && wait.elapsed() < 10000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
         // The start's check of the frame against the exact image draws the
         // reference on the CPU, where llvmpipe rasterises too: frames drawn
@@ -84,8 +84,8 @@ public:
     }
     // How long the start's check ran after the first frame (ms).
     double checkMs() const { return m_checkMs; }
-    bool isReady() const { return m_window->viewport()->frameStats().rendered > 0; }
-    int samples() const { return m_window->viewport()->framebufferSamples(); }
+    bool isReady() const { return m_window->viewport()->frames().frameStats().rendered > 0; }
+    int samples() const { return m_window->viewport()->frames().framebufferSamples(); }
     QSize pixels() const
     {
         return m_window->viewport()->size() * m_window->viewport()->devicePixelRatioF();
@@ -108,7 +108,7 @@ public:
         int seen = -1; // the first swap starts the clock
         double lastDraw = 0, paintEnd = 0;
         auto drawn = QObject::connect(viewport, &Viewport::frameRendered, [&] {
-            lastDraw = viewport->frameTimes().latestMs();
+            lastDraw = viewport->frames().frameTimes().latestMs();
             paintEnd = ms(clock.nsecsElapsed());
         });
         auto swapped = QObject::connect(viewport, &Viewport::frameSwapped, [&] {
@@ -123,11 +123,11 @@ public:
             if (++seen >= count)
                 loop.quit();
             else
-                viewport->requestFrame();
+                viewport->frames().requestFrame();
         });
         QTimer::singleShot(60000, &loop, &QEventLoop::quit);
         settle();
-        viewport->requestFrame();
+        viewport->frames().requestFrame();
         loop.exec();
         QObject::disconnect(drawn);
         QObject::disconnect(swapped);

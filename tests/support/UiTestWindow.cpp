@@ -51,7 +51,7 @@ void showAndWaitForFrame(MainWindow &window, QSize size)
     window.resize(size);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QTRY_VERIFY(window.viewport()->frameStats().rendered > 0);
+    QTRY_VERIFY(window.viewport()->frames().frameStats().rendered > 0);
     QVERIFY(window.viewport()->isRenderReady());
 }
 

@@ -154,7 +154,7 @@ int main(int argc, char **argv)
     window.resize(900, 600);
     window.show();
     if (!QTest::qWaitForWindowExposed(&window)
-        || !waitFor([&] { return window.viewport()->frameStats().rendered > 0; }, 20000)) {
+        || !waitFor([&] { return window.viewport()->frames().frameStats().rendered > 0; }, 20000)) {
         std::fprintf(stderr, "soak: the window never drew a frame\n");
         return 1;
     }

@@ -247,7 +247,7 @@ void TestHelpMenu::aboutNamesVersionsAndRenderer()
     QString renderer, version;
     {
         const CurrentContext current(*viewport());
-        QOpenGLFunctions *gl = viewport()->context()->functions();
+        QOpenGLFunctions *gl = viewport()->glContext().context()->functions();
         renderer =
             QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)));
         version = QString::fromLatin1(reinterpret_cast<const char *>(gl->glGetString(GL_VERSION)));

@@ -132,7 +132,7 @@ void TestLightsDock::init()
     openWindow(sphereScenePath(), {900, 600});
     if (QTest::currentTestFailed())
         return;
-    viewport()->setShowLightMarkers(false); // the reference has no markers
+    viewport()->drawing().setShowLightMarkers(false); // the reference has no markers
 }
 
 void TestLightsDock::orbit(QPoint by)
@@ -270,7 +270,7 @@ void TestLightsDock::addAndRemoveLights()
 
 void TestLightsDock::markerDragIsOneUndoStep()
 {
-    viewport()->setShowLightMarkers(true);
+    viewport()->drawing().setShowLightMarkers(true);
     // The file's light sits level with the eye (view depth 0): bring it into view first.
     type(docks()->lightsDock()->field(LightField::Position), {1.5, 1.0, 1.0});
     const int stepsBefore = docks()->undoStack()->count();

@@ -154,7 +154,7 @@ private slots:
         // The headlight changes the frame, not the scene: checked again, with it.
         const quint64 before = check->lastResult()->generation;
         const std::size_t lights = check->lastResult()->scene.lights.size();
-        m_window->viewport()->setHeadlight(true);
+        m_window->viewport()->drawing().setHeadlight(true);
         QVERIFY(QTest::qWaitFor(
             [&] {
                 return !check->isChecking() && check->lastResult()->generation > before
@@ -250,7 +250,7 @@ private slots:
 
         openWindow(sceneOut.fileName(), {900, 600});
         QVERIFY(!QTest::currentTestFailed());
-        viewport()->setShowLightMarkers(false); // the check's frame has none
+        viewport()->drawing().setShowLightMarkers(false); // the check's frame has none
         QVERIFY(waitForApplied());
         QVERIFY(fragmentEditor()->text().contains(QStringLiteral("uLightPosition")));
         QVERIFY(waitForVerdict(true));
@@ -458,9 +458,9 @@ private slots:
         QFETCH(QSize, size);
         openWindow(scene, size, kViewportSamples);
         QVERIFY(!QTest::currentTestFailed());
-        QVERIFY2(viewport()->framebufferSamples() > 1,
+        QVERIFY2(viewport()->frames().framebufferSamples() > 1,
                  qPrintable(QStringLiteral("the view draws with %1 samples")
-                                .arg(viewport()->framebufferSamples())));
+                                .arg(viewport()->frames().framebufferSamples())));
         LiveCheck *check = m_window->liveCheck();
         QVERIFY(QTest::qWaitFor(
             [&] {

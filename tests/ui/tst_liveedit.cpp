@@ -163,7 +163,7 @@ void TestLiveEdit::openWindow()
 QImage TestLiveEdit::shownInWindow() const
 {
     return QGuiApplication::primaryScreen()
-        ->grabWindow(viewport()->frameWindow()->winId())
+        ->grabWindow(viewport()->frames().window()->winId())
         .toImage()
         .convertToFormat(QImage::Format_RGB32);
 }
@@ -174,7 +174,7 @@ void TestLiveEdit::openIdleWindow()
     QTRY_VERIFY(live()->buildsOnWorker());
     QVERIFY(waitForApplied());
     QTRY_VERIFY(live()->state() == LiveShaderController::State::Idle
-                && !viewport()->isContextLent());
+                && !viewport()->glContext().isContextLent());
 }
 
 // As a user would: cursor just after `anchor` in the fragment editor, then keys.
@@ -209,7 +209,7 @@ void TestLiveEdit::typingChangesTheFrame()
     // The new program's first frame is presented from a thread other than
     // this one (its trial's, or the presenter's); what the window system
     // shows must be that frame.
-    QTRY_VERIFY(viewport()->lastPresentedAt() > typedAt);
+    QTRY_VERIFY(viewport()->frames().lastPresentedAt() > typedAt);
     const QImage shown = shownInWindow();
     QCOMPARE(test::differingPixels(shown, frame()), 0);
     QVERIFY(frame() != before);
@@ -237,20 +237,20 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
     if (QTest::currentTestFailed())
         return;
     QTest::qWait(300); // the check's pictures and labels have come and settled
-    const qint64 fromLoans = viewport()->frameStats().fromLoans;
+    const qint64 fromLoans = viewport()->frames().frameStats().fromLoans;
     qint64 drawnAtApply = -1;
     connect(live(), &LiveShaderController::programApplied, this,
-            [&] { drawnAtApply = viewport()->frameStats().rendered; });
+            [&] { drawnAtApply = viewport()->frames().frameStats().rendered; });
     QSignalSpy swapped(viewport(), &Viewport::frameSwapped);
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.25"));
     QVERIFY(waitForApplied());
     QTRY_VERIFY(swapped.count() > 0);
-    QCOMPARE(viewport()->frameStats().fromLoans, fromLoans + 1);
+    QCOMPARE(viewport()->frames().frameStats().fromLoans, fromLoans + 1);
     // Booked as the one frame since the program was applied, and no other
     // follows before the check (kCheckDebounceMs) has something to show.
-    QCOMPARE(viewport()->frameStats().rendered, drawnAtApply + 1);
+    QCOMPARE(viewport()->frames().frameStats().rendered, drawnAtApply + 1);
     QTest::qWait(kCheckDebounceMs / 2);
-    QCOMPARE(viewport()->frameStats().rendered, drawnAtApply + 1);
+    QCOMPARE(viewport()->frames().frameStats().rendered, drawnAtApply + 1);
     const QImage shown = shownInWindow();
     // frame() draws the new program again here, on this thread: the
     // trial's frame must be that very picture (exact: single-sampled view).
@@ -262,8 +262,8 @@ void TestLiveEdit::theTrialsFrameIsShownAndNotDrawnAgain()
               QStringLiteral(" for (int k = 0; k < 20000; ++k) I += 1e-7 * sin(I * float(k));"));
     QSignalSpy keptOut(live(), &LiveShaderController::programKeptOut);
     QTRY_VERIFY_WITH_TIMEOUT(keptOut.count() == 1, 60000);
-    QCOMPARE(viewport()->frameStats().fromLoans, fromLoans + 1);
-    QTRY_VERIFY(!viewport()->isContextLent());
+    QCOMPARE(viewport()->frames().frameStats().fromLoans, fromLoans + 1);
+    QTRY_VERIFY(!viewport()->glContext().isContextLent());
     QTest::qWait(100);
     const QImage after = shownInWindow();
     QCOMPARE(test::differingPixels(after, lastGood), 0);
@@ -282,7 +282,7 @@ void TestLiveEdit::aChangeWhileTheContextIsLentIsDrawnAfter()
             [&](LiveShaderController::State state) {
                 if (state != LiveShaderController::State::Warming || changedWhileLent)
                     return;
-                changedWhileLent = viewport()->isContextLent();
+                changedWhileLent = viewport()->glContext().isContextLent();
                 Scene scene = viewport()->currentScene();
                 scene.ambient = glm::dvec3(0.6, 0.1, 0.1);
                 viewport()->setSceneParameters(scene);
@@ -290,7 +290,7 @@ void TestLiveEdit::aChangeWhileTheContextIsLentIsDrawnAfter()
     typeAfter(QStringLiteral("vec4(I"), QStringLiteral(" * 0.75"));
     QVERIFY(waitForApplied());
     QVERIFY2(changedWhileLent, "the change was not made while the context was lent");
-    QTRY_VERIFY(!viewport()->isContextLent());
+    QTRY_VERIFY(!viewport()->glContext().isContextLent());
     QTest::qWait(100);
     const QImage shown = shownInWindow();
     QCOMPARE(test::differingPixels(shown, frame()), 0);
@@ -341,7 +341,7 @@ void TestLiveEdit::userUniformSurvivesRebuild()
     UniformValue half = *gain;
     half.floats[0] = 0.5f;
     QVERIFY(viewport()->program().set(half)); // as the Uniforms dock sets it
-    viewport()->requestFrame();
+    viewport()->frames().requestFrame();
     QTRY_VERIFY(frame() != black);
     const QImage withGain = frame();
 
@@ -592,18 +592,18 @@ void TestLiveEdit::slowProgramIsKeptOut()
 
     // Its first frame runs long (off the GUI thread): the view then draws
     // nothing by itself, until the user acts on it.
-    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frameStats().held, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frames().frameStats().held, 30000);
     // A frame on its way when the long one ended is booked once the
     // presenting thread gives the context back.
-    QTRY_VERIFY(!viewport()->isContextLent());
-    const qint64 drawn = viewport()->frameStats().rendered;
-    const qint64 refused = viewport()->frameStats().refused;
-    viewport()->requestFrame();
-    QTRY_VERIFY(viewport()->frameStats().refused > refused); // asked for, and not drawn
-    QCOMPARE(viewport()->frameStats().rendered, drawn);
-    QVERIFY(viewport()->frameStats().held);
+    QTRY_VERIFY(!viewport()->glContext().isContextLent());
+    const qint64 drawn = viewport()->frames().frameStats().rendered;
+    const qint64 refused = viewport()->frames().frameStats().refused;
+    viewport()->frames().requestFrame();
+    QTRY_VERIFY(viewport()->frames().frameStats().refused > refused); // asked for, and not drawn
+    QCOMPARE(viewport()->frames().frameStats().rendered, drawn);
+    QVERIFY(viewport()->frames().frameStats().held);
     QTest::mouseClick(viewport(), Qt::LeftButton, {}, viewport()->rect().center());
-    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frameStats().rendered > drawn, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->frames().frameStats().rendered > drawn, 30000);
 }
 
 QTEST_MAIN(TestLiveEdit)

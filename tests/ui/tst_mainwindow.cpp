@@ -175,7 +175,7 @@ void TestMainWindow::opensDefaultSceneAndDrawsLitObject()
     const FrameColours stats = analyse(image, toRgb(m_loaded.background));
     QVERIFY2(stats.foregroundFraction > 0.05,
              qPrintable(QString::number(stats.foregroundFraction)));
-    QVERIFY(viewport()->showLightMarkers());
+    QVERIFY(viewport()->drawing().showLightMarkers());
 }
 
 void TestMainWindow::showsFrameStatsAndRenderer()
@@ -189,7 +189,7 @@ void TestMainWindow::showsFrameStatsAndRenderer()
             && texts.join(u'|').contains(QStringLiteral("triangles"));
     }());
     QVERIFY2(texts.join(u'|').contains(QStringLiteral("OpenGL")), qPrintable(texts.join(u'|')));
-    QVERIFY(viewport()->glRendererName().startsWith(QStringLiteral("OpenGL")));
+    QVERIFY(viewport()->glContext().glRendererName().startsWith(QStringLiteral("OpenGL")));
 }
 
 // The readout names its figure and averages it; it changes at most every
@@ -226,7 +226,7 @@ void TestMainWindow::lightMarkersCanBeHidden()
 {
     // Without markers every tinted pixel belongs to a lit object: the first
     // light is reddish, the second bluish, and each lights part of the scene.
-    viewport()->setShowLightMarkers(false);
+    viewport()->drawing().setShowLightMarkers(false);
     const QImage unmarked = frame();
     saveArtifact(QStringLiteral("mainwindow-no-markers.png"), unmarked);
     const FrameColours stats = analyse(unmarked, toRgb(m_loaded.background));
@@ -239,7 +239,7 @@ void TestMainWindow::lightMarkersCanBeHidden()
     // outside the edge of the view; step back until they are in it.
     zoom(-7);
     const QImage withoutMarkers = frame();
-    viewport()->setShowLightMarkers(true);
+    viewport()->drawing().setShowLightMarkers(true);
     const QImage withMarkers = frame();
     saveArtifact(QStringLiteral("mainwindow-markers.png"), withMarkers);
     QVERIFY(differingPixels(withMarkers, withoutMarkers) > 0);
@@ -352,7 +352,7 @@ void TestMainWindow::resetRestoresOriginalCamera()
 // the camera as the widget's own events do.
 void TestMainWindow::inputOnTheViewsOwnWindowReachesTheView()
 {
-    QWindow *window = viewport()->frameWindow();
+    QWindow *window = viewport()->frames().window();
     QVERIFY(window && window->isExposed());
     QCOMPARE(window->size(), viewport()->size());
     const QImage originalFrame = frame();

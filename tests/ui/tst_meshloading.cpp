@@ -366,7 +366,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
         ticks += m_window->document()->loadJob()->isRunning();
     });
     bool progressShown = false;
-    const qint64 framesBefore = viewport()->frameStats().rendered;
+    const qint64 framesBefore = viewport()->frames().frameStats().rendered;
     QSignalSpy progress(m_window->document()->loadJob(), &SceneLoadJob::progressChanged);
     QElapsedTimer loadTime;
     const bool ok = waitForLoad([&] {
@@ -374,7 +374,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
         QVERIFY_OK(m_window->document()->openFiles({m_largeObj}));
         progressShown = m_window->loadProgress()->progressBar()->isVisible();
         QVERIFY(m_window->loadProgress()->isVisible());
-        viewport()->requestFrame(); // a frame of the old scene while loading
+        viewport()->frames().requestFrame(); // a frame of the old scene while loading
         saveArtifact(QStringLiteral("meshloading-loading.png"), windowImage(*m_window));
         loadTime.start();
         sinceTick.start();
@@ -388,7 +388,7 @@ void TestMeshLoading::staysResponsiveWhileLoading()
     QVERIFY(progressShown);
     QVERIFY(!m_window->loadProgress()->isVisible());
     QVERIFY(ticks >= 3);
-    QVERIFY(viewport()->frameStats().rendered > framesBefore);
+    QVERIFY(viewport()->frames().frameStats().rendered > framesBefore);
     QCOMPARE(viewport()
                  ->meshInfo()
                  .value(meshKey(viewport()->currentScene(), viewport()->currentScene().objects[0]))

@@ -73,7 +73,7 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
         viewport(), &Viewport::frameRendered, this,
         [&trianglesBefore](double, qint64 triangles) { trianglesBefore = triangles; },
         Qt::SingleShotConnection);
-    viewport()->requestFrame();
+    viewport()->frames().requestFrame();
     QTRY_VERIFY(trianglesBefore > 0);
 
     QSignalSpy applied(dock(), &PerformanceDock::fitApplied);
@@ -100,7 +100,7 @@ void TestPerformanceDock::fitsDefaultSceneToBudget()
     qint64 trianglesAfter = 0;
     connect(viewport(), &Viewport::frameRendered, this,
             [&trianglesAfter](double, qint64 triangles) { trianglesAfter = triangles; });
-    viewport()->requestFrame();
+    viewport()->frames().requestFrame();
     QTRY_VERIFY(trianglesAfter > 0);
     QVERIFY(trianglesAfter <= trianglesBefore);
     QCOMPARE(trianglesAfter, chosen.triangles);
@@ -159,19 +159,19 @@ void TestPerformanceDock::autoDetailToggleShowsTheLevels()
     QTRY_VERIFY_WITH_TIMEOUT(viewport()->currentScene().objects.front().autoDetail, 60000);
     for (const SceneObject &object : viewport()->currentScene().objects)
         QVERIFY(object.autoDetail);
-    viewport()->requestFrame();
+    viewport()->frames().requestFrame();
     QTRY_VERIFY(label->isVisible());
     QVERIFY2(label->text().contains(QStringLiteral("tree.obj: level ")), qPrintable(label->text()));
     QVERIFY2(label->text().contains(QStringLiteral("cloud.obj: level ")),
              qPrintable(label->text()));
-    QVERIFY(viewport()->objectDraws().front().levels > 1);
+    QVERIFY(viewport()->drawing().objectDraws().front().levels > 1);
     QVERIFY(toggle->isChecked());
 
     toggle->click();
     QTRY_VERIFY_WITH_TIMEOUT(!viewport()->currentScene().objects.front().autoDetail, 60000);
-    viewport()->requestFrame();
+    viewport()->frames().requestFrame();
     QTRY_VERIFY(!label->isVisible());
-    QCOMPARE(viewport()->objectDraws().front().levels, 1);
+    QCOMPARE(viewport()->drawing().objectDraws().front().levels, 1);
 }
 
 // The dock's frame readout is written only while it can be seen (a label
@@ -197,9 +197,9 @@ void TestPerformanceDock::frameReadoutOnlyWhileSeen()
     readout->setText(QStringLiteral("Frame: stale"));
     nowMs += ReadoutPace::kIntervalMs; // a readout in sight would be due now
     for (int i = 0; i < 5; ++i) {
-        const int frames = viewport()->frameStats().rendered;
-        viewport()->requestFrame();
-        QTRY_VERIFY(viewport()->frameStats().rendered > frames);
+        const int frames = viewport()->frames().frameStats().rendered;
+        viewport()->frames().requestFrame();
+        QTRY_VERIFY(viewport()->frames().frameStats().rendered > frames);
     }
     QCOMPARE(readout->text(), QStringLiteral("Frame: stale"));
 

@@ -117,7 +117,7 @@ void TestSceneRoundTrip::saveThenOpenGivesIdenticalRender()
     // Another scene, and the shipped shaders back in the dock.
     QVERIFY_OK(
         m_window->document()->openAndWait(sourcePath(QStringLiteral("assets/scenes/torus.json"))));
-    live()->switchShadingMethod(ShadingMethod::Phong);
+    live()->shading()->choose(ShadingMethod::Phong);
     QVERIFY(waitForApplied());
     QVERIFY(!fragmentEditor()->text().contains(QStringLiteral("vec4(I * 0.5")));
     QVERIFY(frame() != before);

@@ -285,7 +285,7 @@ private slots:
             m_window->document()->openShaderFiles({lesson + QStringLiteral("point-light.vert"),
                                                    lesson + QStringLiteral("point-light.frag")}));
         QVERIFY(waitForApplied());
-        m_window->viewport()->setBindings(
+        m_window->viewport()->program().setBindings(
             {{QStringLiteral("u_specularColor"), BindingMeaning::SpecularProduct}});
         QCOMPARE(m_window->viewport()->currentScene().bindings.size(), std::size_t(1));
         QVERIFY_OK(m_window->document()->openShaderFiles(

@@ -336,7 +336,8 @@ void TestWindowLayout::everyDockIsInTheViewMenu()
 void TestWindowLayout::theViewFramesEveryObjectAtItsSizeAndAfterAResize()
 {
     const Scene loaded = *loadSceneFile(defaultScenePathInSource()).scene;
-    viewport()->setShowLightMarkers(false); // the lights need not be in view, the objects must
+    viewport()->drawing().setShowLightMarkers(
+        false); // the lights need not be in view, the objects must
     QVERIFY2(largestNdc(*viewport()) <= 1.0, qPrintable(QString::number(largestNdc(*viewport()))));
     QVERIFY(edgesAreBackground(frame(), loaded.background));
 
@@ -345,7 +346,7 @@ void TestWindowLayout::theViewFramesEveryObjectAtItsSizeAndAfterAResize()
         m_window->resize(size);
         QTRY_VERIFY(largestNdc(*viewport()) <= 1.0);
         // The view's native window follows the widget a moment later.
-        QTRY_COMPARE(viewport()->frameWindow()->size(), viewport()->size());
+        QTRY_COMPARE(viewport()->frames().window()->size(), viewport()->size());
         QVERIFY(edgesAreBackground(frame(), loaded.background));
     }
     // The camera is the scene's, only moved back: the framing keeps its line of sight.
@@ -362,11 +363,11 @@ void TestWindowLayout::theViewFramesEveryObjectAtItsSizeAndAfterAResize()
     QTest::mouseMove(viewport(), centre + QPoint(30, 10));
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, centre + QPoint(30, 10));
     const Camera moved = viewport()->camera();
-    const int framesBefore = viewport()->frameStats().rendered;
+    const int framesBefore = viewport()->frames().frameStats().rendered;
     m_window->resize(m_window->width() * 2 / 3, m_window->height());
     // A frame at the new size: the resize has been dealt with in full.
     QTRY_VERIFY(viewport()->width() < m_window->width()
-                && viewport()->frameStats().rendered > framesBefore);
+                && viewport()->frames().frameStats().rendered > framesBefore);
     QCOMPARE(viewport()->camera(), moved);
 }
 

@@ -133,9 +133,7 @@ BuildReport Renderer::loadShading(ShadingMethod method)
 
 BuildReport Renderer::buildShipped(ShaderProgram &program, ShadingMethod method)
 {
-    const Result<StageSources> shipped =
-        readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
-                       shippedShaderPath(method, ShaderStage::Fragment));
+    const Result<StageSources> shipped = readShippedStages(method);
     if (!shipped) {
         BuildReport failed;
         failed.diagnostics.push_back(

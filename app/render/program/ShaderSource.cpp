@@ -2,6 +2,7 @@
 
 #include "core/program/ShaderDialect.h"
 #include "core/project/ProjectShader.h"
+#include "core/scene/ResourcePaths.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -50,6 +51,12 @@ Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fr
     if (!fragment)
         return fail(fragment.error());
     return StageSources{std::move(*vertex), std::move(*fragment)};
+}
+
+Result<StageSources> readShippedStages(ShadingMethod method)
+{
+    return readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
+                          shippedShaderPath(method, ShaderStage::Fragment));
 }
 
 namespace {

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/scene/ShadingMethod.h"
 #include "core/support/Result.h"
 
 #include <QByteArray>
@@ -32,6 +33,8 @@ struct StageSources {
 };
 // Both files read, or the first one's failure.
 Result<StageSources> readStageFiles(const QString &vertexPath, const QString &fragmentPath);
+// The shaders PhongLab ships for `method` (shippedShaderPath).
+Result<StageSources> readShippedStages(ShadingMethod method);
 
 // The text handed to the driver: the user's #version line first (GLSL needs
 // it there), then the injected `#define`s, then `#line` so that every line

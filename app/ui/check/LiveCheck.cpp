@@ -168,15 +168,16 @@ void LiveCheck::schedule(int delayMs)
 
 void LiveCheck::run()
 {
-    if (!m_viewport->isRenderReady() || m_viewport->isContextLent() || !m_viewport->isVisible()
-        || (m_loadJob && m_loadJob->isRunning())) {
+    if (!m_viewport->isRenderReady() || m_viewport->glContext().isContextLent()
+        || !m_viewport->isVisible() || (m_loadJob && m_loadJob->isRunning())) {
         m_debounce->start(kCheckDebounceMs); // the frame cannot be had now: try again shortly
         return;
     }
     m_pending = false;
     // No drawing here: the checker's thread draws this frame again itself.
     FrameRecipe frame{m_viewport->renderedScene(), m_live->appliedSources(),
-                      m_viewport->program().values(), m_viewport->renderOptions(), checkSize()};
+                      m_viewport->program().values(), m_viewport->drawing().renderOptions(),
+                      checkSize()};
     if (frame.size.isEmpty())
         return;
     m_checkingPrefix = m_last && m_last->hasVerdict()

@@ -119,7 +119,7 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     // view for a frame, whose figures it shows (the view may be still).
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible)
-            m_viewport->requestFrame();
+            m_viewport->frames().requestFrame();
     });
 }
 
@@ -127,7 +127,8 @@ PerformanceDock::~PerformanceDock() = default;
 
 void PerformanceDock::sendReductionAllowance()
 {
-    m_viewport->setReductionAllowance(budget().reductionAllowance(), m_autoDetail->isChecked());
+    m_viewport->drawing().setReductionAllowance(budget().reductionAllowance(),
+                                                m_autoDetail->isChecked());
 }
 
 void PerformanceDock::showAutoDetail(bool on)

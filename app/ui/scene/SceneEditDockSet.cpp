@@ -32,8 +32,11 @@ SceneEditDockSet::SceneEditDockSet(QMainWindow *window, Viewport *viewport)
     connect(m_viewport, &Viewport::sceneParametersChanged, this, &SceneEditDockSet::refresh);
     connect(m_viewport, &Viewport::lightDragged, this, &SceneEditDockSet::pushDrag);
     connect(m_viewport, &Viewport::lightPicked, m_lights, &LightsDock::selectLight);
-    connect(m_lights, &LightsDock::lightSelected, m_viewport, &Viewport::setSelectedLight);
-    connect(m_lights, &LightsDock::headlightToggled, m_viewport, &Viewport::setHeadlight);
+    ViewDrawing &drawing = m_viewport->drawing();
+    connect(m_lights, &LightsDock::lightSelected, m_viewport,
+            [&drawing](int index) { drawing.setSelectedLight(index); });
+    connect(m_lights, &LightsDock::headlightToggled, m_viewport,
+            [&drawing](bool on) { drawing.setHeadlight(on); });
     refresh();
 }
 

@@ -5,7 +5,6 @@
 #include "ShaderDock.h"
 #include "ShaderFileSet.h"
 #include "ShaderRecovery.h"
-#include "core/scene/ResourcePaths.h"
 #include "core/session/RecoveryJournal.h"
 #include "render/program/BuildThread.h"
 #include "ui/viewport/Viewport.h"
@@ -24,16 +23,10 @@ constexpr int kStatusTimeoutMs = 8000;
 constexpr int kSlowBuildNoteMs = 250;
 constexpr int kHangNoteMs = 5000;
 
-Result<StageSources> shippedSources(ShadingMethod method)
-{
-    return readStageFiles(shippedShaderPath(method, ShaderStage::Vertex),
-                          shippedShaderPath(method, ShaderStage::Fragment));
-}
-
 // The text hash of what the viewport builds for `method` by itself.
 QByteArray shippedHash(ShadingMethod method)
 {
-    const StageSources shipped = shippedSources(method).valueOr(StageSources{});
+    const StageSources shipped = readShippedStages(method).valueOr(StageSources{});
     return programTextHash(shipped.vertex.code, shipped.fragment.code);
 }
 
@@ -60,7 +53,10 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     connect(m_viewport, &Viewport::shippedProgramLoaded, this,
             &LiveShaderController::onShippedProgramLoaded);
     connectDock();
-    showShippedShaders(m_viewport->currentScene().shading);
+    // After the dock's connections: showing the scene's shipped shaders
+    // tells the journal which files the dock holds.
+    m_shading = new ShadingChoice(m_dock, m_recovery, m_viewport, this);
+    connectShadingChoice();
 }
 
 void LiveShaderController::setUpTimers()
@@ -92,8 +88,6 @@ void LiveShaderController::connectDock()
 {
     connect(m_dock, &ShaderDock::textEdited, this, &LiveShaderController::onTextEdited);
     connect(m_dock, &ShaderDock::compileRequested, this, &LiveShaderController::buildNow);
-    connect(m_dock, &ShaderDock::shadingMethodRequested, this,
-            &LiveShaderController::switchShadingMethod);
     connect(m_dock, &ShaderDock::applyAnywayRequested, this, &LiveShaderController::applyKeptOut);
     connect(m_dock, &ShaderDock::filesChanged, m_recovery, &ShaderRecovery::noteFilesChanged);
     connect(m_dock->files(), &ShaderFileSet::dirtyChanged, m_recovery,
@@ -110,44 +104,22 @@ bool LiveShaderController::buildsOnWorker() const
     return m_buildThread->isRunning();
 }
 
-void LiveShaderController::showShippedShaders(ShadingMethod method)
+void LiveShaderController::connectShadingChoice()
 {
-    const Result<StageSources> shipped = shippedSources(method);
-    if (!shipped) {
-        m_dock->setCompileStatus(shipped.error(), false);
-        return;
-    }
-    m_dock->setSources(shipped->vertex, shipped->fragment);
-    m_dock->selectShadingMethod(method);
-    m_shading = method;
-    m_recovery->setShading(shadingName(method));
-}
-
-void LiveShaderController::switchShadingMethod(ShadingMethod method)
-{
-    showShippedShaders(method);
-    m_viewport->setShading(method); // so Save writes the method in use
-    m_autoBuild = AutoBuild::AfterPause;
-    requestBuild(BuildRequest::Always);
-}
-
-void LiveShaderController::followSceneShading(ShadingMethod method)
-{
-    if (method == m_shading)
-        return;
-    if (!m_dock->hasUnsavedChanges()) {
-        showShippedShaders(method); // what the viewport has just loaded
+    connect(m_shading, &ShadingChoice::chosen, this, [this] {
+        m_autoBuild = AutoBuild::AfterPause;
+        requestBuild(BuildRequest::Always);
+    });
+    connect(m_shading, &ShadingChoice::followedScene, this, [this] {
         m_appliedHash = currentHash();
         m_queue->setLastBuilt(m_appliedHash);
         m_appliedSources.reset();
-        return;
-    }
-    // Unsaved edits are never replaced behind the user's back: they stay,
-    // are built again over the scene's program, and the scene follows them.
-    m_viewport->setShading(m_shading);
-    emit statusMessage(BuildStatusText::keptUnsavedEdits(method), kStatusTimeoutMs);
-    if (m_autoBuild == AutoBuild::AfterPause)
-        requestBuild(BuildRequest::Always);
+    });
+    connect(m_shading, &ShadingChoice::editsKept, this, [this](ShadingMethod sceneMethod) {
+        emit statusMessage(BuildStatusText::keptUnsavedEdits(sceneMethod), kStatusTimeoutMs);
+        if (m_autoBuild == AutoBuild::AfterPause)
+            requestBuild(BuildRequest::Always);
+    });
 }
 
 void LiveShaderController::buildNow()
@@ -165,10 +137,8 @@ bool LiveShaderController::isWaitingToBuild() const
 void LiveShaderController::takeRestoredText(std::optional<ShadingMethod> method,
                                             AutoBuild autoBuild)
 {
-    if (method) {
-        m_shading = *method; // the method the restored buffers came from
-        m_dock->selectShadingMethod(*method);
-    }
+    if (method)
+        m_shading->takeRestored(*method); // the method the restored buffers came from
     m_autoBuild = autoBuild;
     m_queue->stopPause(); // restoring typed the text in again; build it once, below
     if (autoBuild == AutoBuild::AfterPause)
@@ -199,7 +169,7 @@ void LiveShaderController::onGlInitialized()
 }
 
 // The viewport replaced the program with a shipped one. For another
-// method (a scene was opened) followSceneShading() comes next and decides;
+// method (a scene was opened) ShadingChoice::followScene() comes next and decides;
 // for the dock's own method (a failed open put it back) the dock's text is
 // built again if it differs.
 void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
@@ -207,7 +177,7 @@ void LiveShaderController::onShippedProgramLoaded(ShadingMethod method)
     m_appliedHash = shippedHash(method);
     m_queue->setLastBuilt(m_appliedHash);
     m_appliedSources.reset();
-    if (method == m_shading && m_autoBuild == AutoBuild::AfterPause
+    if (method == m_shading->method() && m_autoBuild == AutoBuild::AfterPause
         && currentHash() != m_appliedHash)
         requestBuild(BuildRequest::NewText);
 }
@@ -230,7 +200,7 @@ void LiveShaderController::takeBackContextNow()
     if (m_state != State::Warming)
         return;
     setState(State::Idle);
-    m_viewport->takeBackContext(0);
+    m_viewport->glContext().takeBackContext(0);
 }
 
 // The machine's transitions: WaitingForGl is entered from anywhere (the
@@ -258,7 +228,8 @@ void LiveShaderController::setState(State state)
 // keeps drawing the scene's shipped program.
 bool LiveShaderController::startWorker()
 {
-    if (const Result<> started = m_buildThread->start(m_viewport->context()); !started) {
+    if (const Result<> started = m_buildThread->start(m_viewport->glContext().context());
+        !started) {
         qWarning("phonglab: shaders cannot be built off the GUI thread: %s",
                  qPrintable(started.error()));
         const QString text = BuildStatusText::liveEditingOff(started.error());
@@ -340,7 +311,7 @@ void LiveShaderController::finish(const QByteArray &hash, BuildReply reply)
     if (warmInViewport(hash, reply))
         return; // the hang note now waits for the draw in the lent context
     m_hangNote->stop();
-    m_viewport->adoptProgram(std::move(reply.program));
+    m_viewport->program().adopt(std::move(reply.program));
     announce(hash, reply.report, reply.timings);
 }
 
@@ -353,7 +324,8 @@ bool LiveShaderController::warmInViewport(const QByteArray &hash, BuildReply &re
 {
     if (!m_warmInViewport)
         return false;
-    std::optional<LentContext> lent = m_viewport->lendContext(m_buildThread->workerThread());
+    std::optional<LentContext> lent =
+        m_viewport->glContext().lendContext(m_buildThread->workerThread());
     if (!lent)
         return false;
     // The GUI thread leaves the renderer alone while the context is lent.
@@ -382,7 +354,7 @@ void LiveShaderController::warmed(const WarmUp &warmUp, const Result<qint64> &wa
         return;
     setState(State::Idle);
     m_hangNote->stop();
-    m_viewport->takeBackContext();
+    m_viewport->glContext().takeBackContext();
     const ProgramTrial &trial = *warmUp.trial;
     if (trial.keptOut()) {
         const QString text = m_keptOut->keep({warmUp.hash, std::move(*warmUp.program),
@@ -394,7 +366,7 @@ void LiveShaderController::warmed(const WarmUp &warmUp, const Result<qint64> &wa
         return;
     }
     if (*warmUp.program) // the trial never ran: the context could not be had there
-        m_viewport->adoptProgram(std::move(*warmUp.program));
+        m_viewport->program().adopt(std::move(*warmUp.program));
     BuildTimings timings = warmUp.timings;
     if (warmNs) {
         timings.warmNs = *warmNs;
@@ -414,7 +386,7 @@ void LiveShaderController::applyKeptOut()
     std::optional<KeptOutProgram::Built> kept = m_keptOut->take();
     if (!kept)
         return;
-    m_viewport->adoptProgram(std::move(kept->program));
+    m_viewport->program().adopt(std::move(kept->program));
     m_buildSources = kept->sources;
     announce(kept->hash, kept->report, kept->timings);
 }

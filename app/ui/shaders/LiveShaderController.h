@@ -2,6 +2,7 @@
 #include "BuildQueue.h"
 #include "KeptOutProgram.h"
 #include "ShaderRecovery.h"
+#include "ShadingChoice.h"
 #include "core/scene/ShadingMethod.h"
 #include "render/program/BuildWorker.h"
 #include "render/program/ShaderSource.h"
@@ -58,14 +59,9 @@ public:
     LiveShaderController(ShaderDock *dock, Viewport *viewport, QObject *parent = nullptr);
     ~LiveShaderController() override; // a clean exit: stops the worker, clears the journal
 
-    // Puts `method`'s shipped shaders into the dock without building them
-    // (the viewport builds its scene's program itself).
-    void showShippedShaders(ShadingMethod method);
-    // The user chose a shading method: its shipped shaders load and build at
-    // once, and the scene follows.
-    void switchShadingMethod(ShadingMethod method);
-    // The viewport's scene changed its shading method (a scene was opened).
-    void followSceneShading(ShadingMethod method);
+    // The method the dock's text is of, chosen by the user or followed from
+    // the scene; its changes ask this controller for builds.
+    ShadingChoice *shading() const { return m_shading; }
     // F5: builds now, even unchanged or suspect text.
     void buildNow();
 
@@ -92,7 +88,6 @@ public:
     // Timings of the program in use (warmNs > 0: warmed before it was shown).
     const BuildTimings &lastApplied() const { return m_lastApplied; }
     QByteArray currentHash() const;
-    ShadingMethod shading() const { return m_shading; }
     ShaderRecovery *recovery() const { return m_recovery; }
     // A program kept out for its frame time, waiting for "Apply anyway".
     bool hasKeptOutProgram() const { return m_keptOut->isWaiting(); }
@@ -113,6 +108,7 @@ signals:
 private:
     void setUpTimers();
     void connectDock();
+    void connectShadingChoice();
     void onTextEdited();
     void onGlInitialized();
     void onGlAboutToBeReleased();
@@ -148,7 +144,7 @@ private:
     BuildQueue *m_queue = nullptr; // the debounce, the text last built, the request waiting
     QTimer *m_slowBuildNote = nullptr;
     QTimer *m_hangNote = nullptr; // a build or first draw that does not come back
-    ShadingMethod m_shading = ShadingMethod::Phong;
+    ShadingChoice *m_shading = nullptr;
 
     State m_state = State::WaitingForGl;
     AutoBuild m_autoBuild = AutoBuild::AfterPause;

@@ -6,21 +6,21 @@
 
 namespace phonglab {
 
-double frameBudgetMs(const Viewport &viewport)
+double frameBudgetMs(const ViewFrames &frames)
 {
     // A program merely slower than the last is no reason to refuse it.
-    return std::max(kMinFrameBudgetMs, 4.0 * viewport.frameTimes().meanMs());
+    return std::max(kMinFrameBudgetMs, 4.0 * frames.frameTimes().meanMs());
 }
 
 std::shared_ptr<ProgramTrial> ProgramTrial::arm(LentContext &lent, Viewport *viewport,
                                                 const std::shared_ptr<GlProgram> &program)
 {
     auto trial = std::make_shared<ProgramTrial>();
-    trial->budgetMs = frameBudgetMs(*viewport);
+    trial->budgetMs = frameBudgetMs(viewport->frames());
     trial->pixels = viewport->size() * viewport->devicePixelRatioF();
     // On the worker thread, with the lent context current: the view's
     // renderer only as its borrower may use it.
-    const LentRenderer renderer = viewport->lentRenderer();
+    const LentRenderer renderer = viewport->glContext().lentRenderer();
     lent.whileCurrent = [renderer, program] { renderer.exchangeProgram(*program); };
     lent.afterWarm = [renderer, program, trial](const LentContext &loan) {
         trial->frameMs = renderer.trialFrameMs(loan, trial->pixels, trial->budgetMs);

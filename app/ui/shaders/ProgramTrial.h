@@ -8,6 +8,7 @@
 namespace phonglab {
 
 class Viewport;
+class ViewFrames;
 
 // A new program whose frame would take longer than a few frames of the view,
 // and at least this, is kept out (docs/first-five-minutes.md).
@@ -15,7 +16,7 @@ inline constexpr double kMinFrameBudgetMs = 250.0;
 
 // The budget for the view as it draws now: 4 frames of it, at least
 // kMinFrameBudgetMs.
-double frameBudgetMs(const Viewport &viewport);
+double frameBudgetMs(const ViewFrames &frames);
 
 // One new program tried in the viewport's lent context before the view
 // takes it: armed on a loan, it puts the program in the renderer while the

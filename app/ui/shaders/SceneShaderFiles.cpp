@@ -60,7 +60,7 @@ SceneShaderFiles::Opened SceneShaderFiles::open(const Scene &scene)
     }
     // The shading method's shipped shaders, shown and built, under whatever is missing.
     if (!missing.isEmpty())
-        m_liveShaders->switchShadingMethod(scene.shading);
+        m_liveShaders->shading()->choose(scene.shading);
     bool opened = false;
     for (const auto &[stage, name] : files) {
         const QString path = scene.resolveShaderPath(name);

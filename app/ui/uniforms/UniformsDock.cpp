@@ -64,8 +64,8 @@ void UniformsDock::scheduleRebuild()
     m_rebuildPending = true;
     // A frame already on its way (a new program's first, presented by its
     // trial) brings the rebuild as well as one asked for.
-    if (m_viewport && !m_viewport->isFrameComing())
-        m_viewport->requestFrame();
+    if (m_viewport && !m_viewport->frames().isFrameComing())
+        m_viewport->frames().requestFrame();
 }
 
 void UniformsDock::onFrameRendered()
@@ -74,7 +74,7 @@ void UniformsDock::onFrameRendered()
         rebuild();
         return;
     }
-    if (m_sinceRefresh.elapsed() >= kDrivenRefreshMs && !m_viewport->isContextLent())
+    if (m_sinceRefresh.elapsed() >= kDrivenRefreshMs && !m_viewport->glContext().isContextLent())
         refreshDrivenValues();
 }
 
@@ -240,8 +240,8 @@ QWidget *UniformsDock::labelWithChoice(const QString &name, const Program &progr
     layout->addWidget(unplaced);
     showUnplaced(name);
     connect(choice, &BindingChoice::chosen, this, [this, choice](const QString &variableName) {
-        m_viewport->setBindings(withBinding(m_viewport->currentScene().bindings, variableName,
-                                            choice->explicitBinding()));
+        m_viewport->program().setBindings(withBinding(m_viewport->currentScene().bindings,
+                                                      variableName, choice->explicitBinding()));
         scheduleRebuild(); // the rows follow once the next frame is drawn with it
     });
     return label;
@@ -359,7 +359,7 @@ void UniformsDock::write(const UniformValue &value)
     for (UniformValue &kept : m_values.values)
         if (kept.name == value.name)
             kept = value;
-    m_viewport->requestFrame();
+    m_viewport->frames().requestFrame();
     emit valueWritten();
 }
 

@@ -7,7 +7,7 @@ namespace phonglab {
 CurrentContext::CurrentContext(Viewport &viewport)
     : m_viewport(viewport)
 {
-    m_viewport.takeBackContext();
+    m_viewport.glContext().takeBackContext();
     m_viewport.makeCurrent();
 }
 

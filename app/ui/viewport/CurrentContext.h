@@ -5,7 +5,7 @@ namespace phonglab {
 class Viewport;
 
 // The viewport's GL context current on this thread for one scope: taken back
-// first if it is lent (Viewport::lendContext), released at the end. The one
+// first if it is lent (ViewContext::lendContext), released at the end. The one
 // way code outside a frame uses that context, so no caller can forget the
 // loan or leave the context current.
 class CurrentContext

@@ -21,10 +21,10 @@ DetailLevelLabel::DetailLevelLabel(Viewport *viewport)
     connect(viewport, &Viewport::frameRendered, this, &DetailLevelLabel::refresh);
 }
 
-QString DetailLevelLabel::describe(const Viewport &viewport)
+QString DetailLevelLabel::describe(Viewport &viewport)
 {
     const Scene &scene = viewport.currentScene();
-    const std::vector<Renderer::ObjectDraw> &draws = viewport.objectDraws();
+    const std::vector<Renderer::ObjectDraw> &draws = viewport.drawing().objectDraws();
     QStringList lines;
     const QLocale locale;
     for (std::size_t i = 0; i < scene.objects.size() && i < draws.size(); ++i) {

@@ -17,7 +17,7 @@ public:
     explicit DetailLevelLabel(Viewport *viewport);
 
     // What the last frame drew, as the label says it (empty: hidden).
-    static QString describe(const Viewport &viewport);
+    static QString describe(Viewport &viewport);
 
 private:
     void refresh();

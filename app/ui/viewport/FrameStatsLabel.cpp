@@ -25,7 +25,7 @@ void FrameStatsLabel::showFrame(double meanMsOfLastSecond, qint64 triangles)
 {
     // A new triangle count or a depth warning that comes or goes shows at
     // once: only the milliseconds may lag.
-    const std::optional<QString> depth = depthPrecisionWarning(m_viewport->depthRange());
+    const std::optional<QString> depth = depthPrecisionWarning(m_viewport->drawing().depthRange());
     if (!m_pace.isDue(triangles, depth.has_value() != m_depthWarningShown))
         return;
     m_pace.shown(triangles);
@@ -38,7 +38,7 @@ void FrameStatsLabel::showFrame(double meanMsOfLastSecond, qint64 triangles)
            "anything drawn over it (presenting the frame is not included); the mean of the %n "
            "frame(s) of the last "
            "second.",
-           nullptr, m_viewport->frameTimes().frames());
+           nullptr, m_viewport->frames().frameTimes().frames());
     setToolTip(depth ? explained + QStringLiteral("\n\n") + *depth : explained);
     if (depth && !m_depthWarningShown)
         m_statusBar->showMessage(*depth, kDepthWarningTimeoutMs);

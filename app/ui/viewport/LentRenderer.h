@@ -9,9 +9,9 @@ class Renderer;
 struct LentContext;
 
 // The view's renderer as a borrower of the view's context may use it
-// (Viewport::lendContext): on the borrowing thread, while the loan lasts,
+// (ViewContext::lendContext): on the borrowing thread, while the loan lasts,
 // when the GUI thread leaves the renderer alone. Only what a new program's
-// trial needs (ProgramTrial); handed out by Viewport::lentRenderer().
+// trial needs (ProgramTrial); handed out by ViewContext::lentRenderer().
 class LentRenderer
 {
 public:

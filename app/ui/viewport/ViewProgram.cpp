@@ -1,6 +1,7 @@
 #include "ViewProgram.h"
 
 #include "CurrentContext.h"
+#include "Viewport.h"
 #include "render/draw/GpuScene.h"
 
 #include <QOpenGLContext>
@@ -44,6 +45,33 @@ bool ViewProgram::set(const UniformValue &value)
 const ProgramBindings &ViewProgram::bindings() const
 {
     return m_gpu->renderer().program().bindings();
+}
+
+void ViewProgram::adopt(GlProgram program)
+{
+    if (!m_gpu->isInitialized())
+        return; // no context to free it with either; it goes with its share group
+    {
+        const CurrentContext current(*m_viewport);
+        m_gpu->renderer().adoptProgram(std::move(program));
+    }
+    ViewportSurface &surface = *m_viewport->m_surface;
+    surface.presentNextOffThread(); // the frame after an edit: typing goes on meanwhile
+    surface.releaseHold();          // a new program is drawn once at least
+    surface.requestFrame();
+}
+
+void ViewProgram::setShading(ShadingMethod method)
+{
+    m_gpu->setShading(method);
+    m_viewport->cameraMoved(); // the parameters changed; repaint
+}
+
+void ViewProgram::setBindings(const ExplicitBindings &bindings)
+{
+    m_gpu->setBindings(bindings);
+    m_viewport->parametersChanged();
+    emit m_viewport->sceneParametersChanged();
 }
 
 GLuint ViewProgram::id() const

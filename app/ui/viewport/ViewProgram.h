@@ -1,5 +1,7 @@
 #pragma once
 #include "core/program/ShaderBindings.h"
+#include "core/scene/ShadingMethod.h"
+#include "render/gl/SharedGlObject.h"
 #include "render/program/UniformIntrospection.h"
 #include "render/program/UniformSnapshot.h"
 
@@ -37,6 +39,17 @@ public:
     bool set(const UniformValue &value);
     // What each of the program's variables is bound to (core/program/ShaderBindings.h).
     const ProgramBindings &bindings() const;
+    // Switches to a program linked on a context sharing the view's objects
+    // (the build thread's) and owns it from then on; uniforms the user set
+    // carry over. Does nothing before GL is up (Viewport::glInitialized()).
+    void adopt(GlProgram program);
+    // The scene's shading method changes without touching the program: the
+    // live shader controller builds it (so Save writes the method in use).
+    void setShading(ShadingMethod method);
+    // The scene's explicit bindings (its "bindings"): the uniforms' new
+    // meanings apply from the next frame; vertex inputs keep theirs until
+    // the program is linked again.
+    void setBindings(const ExplicitBindings &bindings);
     // The program's GL name, which tells one program from the next (0 before GL).
     GLuint id() const;
 

@@ -76,21 +76,6 @@ void Viewport::doneCurrent()
     m_surface->doneCurrent();
 }
 
-void Viewport::setFormat(const QSurfaceFormat &format)
-{
-    m_surface->setFormat(format);
-}
-
-void Viewport::requestFrame()
-{
-    m_surface->requestFrame();
-}
-
-QWindow *Viewport::frameWindow() const
-{
-    return m_surface->window();
-}
-
 std::optional<LentContext> Viewport::lendContext(QThread *borrower)
 {
     return m_gpu.isInitialized() ? m_surface->lendContext(borrower) : std::nullopt;
@@ -187,31 +172,12 @@ Scene Viewport::renderedScene() const
     return m_gpu.renderedScene();
 }
 
-void Viewport::setShading(ShadingMethod method)
-{
-    m_gpu.setShading(method);
-    cameraMoved(); // the parameters changed; repaint
-}
-
-void Viewport::adoptProgram(GlProgram program)
-{
-    if (!m_gpu.isInitialized())
-        return; // no context to free it with either; it goes with its share group
-    {
-        const CurrentContext current(*this);
-        m_gpu.renderer().adoptProgram(std::move(program));
-    }
-    m_surface->presentNextOffThread(); // the frame after an edit: typing goes on meanwhile
-    m_surface->releaseHold();          // a new program is drawn once at least
-    requestFrame();
-}
-
 // The frame window covers this widget, so the cursor shown over the view
 // is that window's.
 bool Viewport::event(QEvent *event)
 {
     if (event->type() == QEvent::CursorChange)
-        frameWindow()->setCursor(cursor());
+        m_surface->window()->setCursor(cursor());
     return QWidget::event(event);
 }
 
@@ -231,13 +197,6 @@ void Viewport::setSceneParameters(const Scene &scene)
     const int lights = int(scene.lights.size());
     if (selectedLight() >= lights)
         setSelectedLight(lights - 1);
-    parametersChanged();
-    emit sceneParametersChanged();
-}
-
-void Viewport::setBindings(const ExplicitBindings &bindings)
-{
-    m_gpu.setBindings(bindings);
     parametersChanged();
     emit sceneParametersChanged();
 }
@@ -295,7 +254,7 @@ QImage Viewport::renderImage(const QSize &pixelSize, bool lightMarkers)
     // export): a framebuffer object with the view's samples.
     if (!m_surface->backBufferHolds(pixelSize))
         return m_gpu.drawWith(options, [&](Renderer &renderer) {
-            return drawIntoImage(renderer, pixelSize, framebufferSamples());
+            return drawIntoImage(renderer, pixelSize, m_surface->framebufferSamples());
         });
     QOpenGLContext *gl = context();
     return m_gpu.drawWith(options, [&](Renderer &renderer) {

@@ -1,5 +1,7 @@
 #pragma once
-#include "LentRenderer.h"
+#include "ViewContext.h"
+#include "ViewDrawing.h"
+#include "ViewFrames.h"
 #include "ViewProgram.h"
 #include "ViewportSurface.h"
 #include "render/draw/GpuScene.h"
@@ -29,14 +31,17 @@ class WidgetOverlay;
 // widgets of the view (the check's pictures, the detail label) are drawn
 // over each frame in GL.
 //
-// The view is three rooms behind this one face: ViewportSurface (the window,
+// The view is three rooms behind this face: ViewportSurface (the window,
 // the context, its loans, presenting and timing frames), ViewportInput
 // (mouse, keys, drops) and GpuScene (the scene, camera and renderer), with
 // WidgetOverlay drawing the children. This class ties them together and is
-// what the rest of the window talks to; the renderer itself it keeps: the
-// window reaches the program it draws with through ViewProgram, and a
-// borrower of its context through LentRenderer.
-class Viewport : public QWidget, private ViewportSurface::Content
+// what the rest of the window talks to: the scene and its camera here, the
+// rest through narrow faces (ViewProgram, ViewDrawing, ViewFrames,
+// ViewContext), so that nothing outside the view reaches its renderer.
+class Viewport : public QWidget,
+                 private ViewportSurface::Content,
+                 private ViewDrawing,
+                 private ViewContext
 {
     Q_OBJECT
 
@@ -66,100 +71,34 @@ public:
     // the moved one after, marked as a shot to keep (frameObjects false).
     Camera cameraToSave() const;
 
-    // The scene's shading method changes without touching the program: the
-    // live shader controller builds it (so Save writes the method in use).
-    void setShading(ShadingMethod method);
-
-    // Switches to a program linked on a context sharing this one's objects
-    // (the build thread's) and owns it from then on; uniforms the user set
-    // carry over. Needs GL to be up (glInitialized()).
-    void adoptProgram(GlProgram program);
-    // The program the view draws with: its uniforms, its bindings.
-    ViewProgram &program() { return m_program; }
-    // The near/far planes of the last frame (no GL call; any time).
-    const DepthRange &depthRange() const { return m_gpu.renderer().depthRange(); }
-
-    // Lends the GL context to `borrower` (see LentContext), so that a new
-    // program's draw-time compile happens in this very context but off the
-    // GUI thread. Until takeBackContext() the view does not paint, and anything that
-    // needs the context on this thread first waits for it to come back.
-    // Waits for a frame being presented first. Refused (nullopt) before GL
-    // is up: the caller then does the work itself.
-    std::optional<LentContext> lendContext(QThread *borrower);
-    // The renderer as the borrower may use it while the loan lasts.
-    LentRenderer lentRenderer() { return LentRenderer(&m_gpu.renderer()); }
-    // Waits for a lent context (at most timeoutMs; -1: as long as it takes)
-    // and paints again. False if it did not come back in time.
-    bool takeBackContext(int timeoutMs = -1);
-    bool isContextLent() const { return m_surface->isContextLent(); }
-    // Samples of the framebuffer the view draws into (-1 before the first frame).
-    int framebufferSamples() const { return m_surface->framebufferSamples(); }
-    // A frame drawn now (overlays included) and read back, once a lent
-    // context is back; null before the window was first shown.
-    QImage grabFramebuffer();
-
-    // The view's GL context (null before the window was first shown), made
-    // current on this thread by CurrentContext only.
-    QOpenGLContext *context() const { return m_surface->context(); }
-    // The format the view's window asks for (samples, depth); set before the
-    // window is first shown.
-    void setFormat(const QSurfaceFormat &format);
-    // A new frame at the next turn of the event loop (QWidget::update()
-    // repaints only the widget around the view's window).
-    void requestFrame();
-    // A frame is on its way (frameRendered will come) without asking for one.
-    bool isFrameComing() const { return m_surface->isFrameComing(); }
-    // The native window the frames go to; its input reaches this widget.
-    QWindow *frameWindow() const;
-    // When the last frame was handed to the window system (swapBuffers
-    // returned), on whichever thread presented it.
-    std::chrono::steady_clock::time_point lastPresentedAt() const
-    {
-        return m_surface->lastPresentedAt();
-    }
-
+    // currentScene() plus the headlight: what the renderer draws.
+    Scene renderedScene() const;
+    void resetCamera();
     // The cheap path for dock edits: takes lights, ambient, materials and
     // transforms from `scene` (same objects and meshes as shown) without
     // reloading anything; the camera as orbited stays.
     void setSceneParameters(const Scene &scene);
+
     // The current frame rendered again at `pixelSize` with this view's
     // renderer, program and samples (File → Export Image; the live check
     // draws its own, single-sampled: FrameRedraw).
     // Null when GL is not up or the size cannot be allocated. Without
     // `lightMarkers` the frame is the scene alone (what a check compares).
     QImage renderImage(const QSize &pixelSize, bool lightMarkers = true);
-    // How the view draws (light markers, detail, lights left out).
-    const Renderer::Options &renderOptions() const { return m_gpu.options(); }
-    // The scene's explicit bindings (its "bindings"): the uniforms' new
-    // meanings apply from the next frame; vertex inputs keep theirs until
-    // the program is linked again.
-    void setBindings(const ExplicitBindings &bindings);
-    // A white light at the eye that follows the camera: the one light not in
-    // world space. A view setting, not part of the scene (currentScene() has
-    // no trace of it); added only while fewer than kMaxLights are in use.
-    void setHeadlight(bool on);
-    // currentScene() plus the headlight: what the renderer draws.
-    Scene renderedScene() const;
-    // The light whose marker is drawn highlighted (-1: none).
-    void setSelectedLight(int index);
-
-    void resetCamera();
-    void setShowLightMarkers(bool show);
-    bool showLightMarkers() const { return m_gpu.options().drawLightMarkers; }
-    // How the last frame drew each object (level of detail, lights left out).
-    const std::vector<Renderer::ObjectDraw> &objectDraws() const
-    {
-        return m_gpu.renderer().objectDraws();
-    }
-    // What auto detail and, when `leaveOutLights`, leaving out unseen
-    // lights may each change a pixel by (linear intensity; Renderer::Options).
-    void setReductionAllowance(double allowance, bool leaveOutLights);
-
+    // A frame drawn now (overlays included) and read back, once a lent
+    // context is back; null before the window was first shown.
+    QImage grabFramebuffer();
     bool isRenderReady() const { return m_gpu.isReady(); }
-    FrameStats frameStats() const { return m_surface->frameStats(); }
-    // The draw times behind frameRendered()'s figure.
-    const FrameTimeWindow &frameTimes() const { return m_surface->frameTimes(); }
-    QString glRendererName() const { return m_glRendererName; }
+
+    // The view's narrow faces, each for what its users need of it:
+    // the program it draws with (its uniforms, bindings, a new one adopted),
+    ViewProgram &program() { return m_program; }
+    // how it draws beside the scene (markers, headlight, detail),
+    ViewDrawing &drawing() { return *this; }
+    // its frames (asking for one, their times and counts),
+    ViewFrames &frames() { return *m_surface; }
+    // and its GL context as another thread borrows it.
+    ViewContext &glContext() { return *this; }
 
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
@@ -207,6 +146,28 @@ protected:
 
 private:
     friend class CurrentContext; // the one way to make the context current
+    // A new program, the bindings and the method change the frame and its hold.
+    friend class ViewProgram;
+
+    // ViewDrawing
+    const Renderer::Options &renderOptions() const override { return m_gpu.options(); }
+    void setShowLightMarkers(bool show) override;
+    bool showLightMarkers() const override { return m_gpu.options().drawLightMarkers; }
+    void setSelectedLight(int index) override;
+    void setHeadlight(bool on) override;
+    void setReductionAllowance(double allowance, bool leaveOutLights) override;
+    const std::vector<Renderer::ObjectDraw> &objectDraws() const override
+    {
+        return m_gpu.renderer().objectDraws();
+    }
+    const DepthRange &depthRange() const override { return m_gpu.renderer().depthRange(); }
+    // ViewContext
+    std::optional<LentContext> lendContext(QThread *borrower) override;
+    LentRenderer lentRenderer() override { return LentRenderer(&m_gpu.renderer()); }
+    bool takeBackContext(int timeoutMs) override;
+    bool isContextLent() const override { return m_surface->isContextLent(); }
+    QOpenGLContext *context() const override { return m_surface->context(); }
+    QString glRendererName() const override { return m_glRendererName; }
 
     // As QOpenGLWidget's: CurrentContext's, and the view's own.
     void makeCurrent();
@@ -219,6 +180,7 @@ private:
     void initializeGl();
     void cleanup();
     void resumeFrames();
+    void requestFrame() { m_surface->requestFrame(); }
     int selectedLight() const { return m_gpu.options().selectedLight; }
     QSize pixelSize() const;
     void showUploaded(const Scene &scene);

@@ -131,7 +131,7 @@ std::optional<LentContext> ViewportSurface::lendContext(QThread *borrower)
 std::shared_ptr<LoanFrame> ViewportSurface::offerLoanFrame()
 {
     const QSize frame = pixels();
-    if (!m_presenter || m_framesHeld || !backBufferHolds(frame))
+    if (!m_presenter || m_ledger.isHeld() || !backBufferHolds(frame))
         return nullptr;
     std::function<void(const QSize &)> draw = m_content->drawForBorrower(frame);
     if (!draw)
@@ -164,8 +164,8 @@ bool ViewportSurface::takeBackContext(int timeoutMs)
             this,
             [this, loanFrame] {
                 --m_loanFramesToBook;
-                ++m_framesFromLoans;
-                bookPresented(loanFrame->drawMs, loanFrame->swappedAt, loanFrame->windowPixels);
+                bookPresented(loanFrame->drawMs, loanFrame->swappedAt, loanFrame->windowPixels,
+                              /*fromLoan=*/true);
             },
             Qt::QueuedConnection);
     }
@@ -198,10 +198,8 @@ void ViewportSurface::start()
 
 void ViewportSurface::drawFrame()
 {
-    if (m_framesHeld) {
-        ++m_framesRefused;
+    if (!m_ledger.mayDraw())
         return; // resumeFrames() asks for the frame
-    }
     if (m_lender.isActive()) {
         m_frameMissed = true;
         return;
@@ -261,20 +259,20 @@ void ViewportSurface::framePresented(quint64 loan, double drawMs, qint64 swapped
     bookPresented(
         drawMs,
         std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(swappedNs)),
-        windowPixels());
+        windowPixels(), /*fromLoan=*/false);
 }
 
 // A frame another thread drew and swapped (the presenter, or a borrower
 // with a LoanFrame), booked as this thread's own are.
 void ViewportSurface::bookPresented(double drawMs, std::chrono::steady_clock::time_point swappedAt,
-                                    const QSize &backBuffer)
+                                    const QSize &backBuffer, bool fromLoan)
 {
     // A frame this thread presented meanwhile is the newer one.
     if (swappedAt > m_lastPresentedAt) {
         m_lastPresentedAt = swappedAt;
         m_presentedSize = backBuffer;
     }
-    frameDrawn(drawMs);
+    frameDrawn(drawMs, fromLoan);
     emit frameSwapped();
 }
 
@@ -316,24 +314,19 @@ QImage ViewportSurface::readBackBuffer(const QSize &pixels)
     return image.mirrored();
 }
 
-void ViewportSurface::frameDrawn(double drawMs)
+void ViewportSurface::frameDrawn(double drawMs, bool fromLoan)
 {
     const auto now = std::chrono::steady_clock::now().time_since_epoch();
-    m_frameTimes.add(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), drawMs);
-    ++m_framesRendered;
-    if (drawMs > kHoldFramesAfterMs && !m_framesHeld) {
-        m_framesHeld = true;
+    if (m_ledger.book(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), drawMs,
+                      fromLoan))
         emit framesHeldAfter(drawMs);
-    }
-    emit frameTimed(m_frameTimes.meanMs());
+    emit frameTimed(m_ledger.times().meanMs());
 }
 
 void ViewportSurface::resumeFrames()
 {
-    if (!m_framesHeld)
-        return;
-    m_framesHeld = false;
-    requestFrame();
+    if (m_ledger.resume())
+        requestFrame();
 }
 
 } // namespace phonglab

@@ -1,7 +1,7 @@
 #pragma once
 #include "ContextLender.h"
-#include "FrameStats.h"
-#include "core/support/FrameTimeWindow.h"
+#include "ViewFrames.h"
+#include "core/support/FrameLedger.h"
 #include "render/gl/LentContext.h"
 #include "render/program/WarmUpDraw.h"
 
@@ -22,16 +22,12 @@ namespace phonglab {
 class FramePresenter;
 class ViewportWindow;
 
-// A frame that took longer than this is not drawn again by itself: the view
-// waits until the user acts on it.
-inline constexpr double kHoldFramesAfterMs = 250.0;
-
 // Where the viewport's frames go: its native window (ViewportWindow), the GL
 // context made for it, lending that context to other threads, presenting
 // (here or on FramePresenter's thread) and timing the frames. What a frame
 // shows is the Content's: the surface only knows when to draw, where, and
-// how long it took.
-class ViewportSurface : public QObject
+// how long it took (its FrameLedger books them).
+class ViewportSurface : public QObject, public ViewFrames
 {
     Q_OBJECT
 
@@ -59,7 +55,7 @@ public:
     ViewportSurface(QWidget *view, Content *content, bool presentOffThread);
     ~ViewportSurface() override;
 
-    QWindow *window() const;
+    QWindow *window() const override;
     // The widget holding the window, filling the view (a child of it).
     QWidget *container() const { return m_container; }
     // Null before the window was first exposed; invalid when it could not be made.
@@ -67,20 +63,20 @@ public:
     bool isStarted() const { return m_context && m_context->isValid(); }
     void makeCurrent();
     void doneCurrent();
-    void setFormat(const QSurfaceFormat &format);
+    void setFormat(const QSurfaceFormat &format) override;
     QSurfaceFormat format() const;
     // A frame at the next turn of the event loop.
-    void requestFrame();
+    void requestFrame() override;
     // A frame will be booked (frameTimed) without anyone asking for one:
     // one is asked for, drawn or presented elsewhere, or missed while the
     // context was lent (frames held back are not counted on).
-    bool isFrameComing() const;
+    bool isFrameComing() const override;
     // The next frame is presented off this thread (it follows an edit, and
     // typing goes on meanwhile). Other frames (an orbit's stream) are
     // presented here: handing the context over costs ~3 ms a frame.
     void presentNextOffThread() { m_presentOffThread = true; }
 
-    // See Viewport::lendContext / takeBackContext.
+    // See ViewContext::lendContext / takeBackContext.
     std::optional<LentContext> lendContext(QThread *borrower);
     bool takeBackContext(int timeoutMs = -1);
     bool isContextLent() const { return m_lender.isActive(); }
@@ -98,17 +94,16 @@ public:
     // that size may be drawn into its corner and read back.
     bool backBufferHolds(const QSize &pixels) const;
 
-    int framebufferSamples() const { return m_framebufferSamples; }
-    std::chrono::steady_clock::time_point lastPresentedAt() const { return m_lastPresentedAt; }
-    const FrameTimeWindow &frameTimes() const { return m_frameTimes; }
-    FrameStats frameStats() const
+    int framebufferSamples() const override { return m_framebufferSamples; }
+    std::chrono::steady_clock::time_point lastPresentedAt() const override
     {
-        return {m_framesRendered, m_framesFromLoans, m_framesHeld, m_framesRefused};
+        return m_lastPresentedAt;
     }
-    bool framesHeld() const { return m_framesHeld; }
+    const FrameTimeWindow &frameTimes() const override { return m_ledger.times(); }
+    FrameStats frameStats() const override { return m_ledger.stats(); }
     void resumeFrames();
     // A new scene or program is drawn once at least, even while frames are held.
-    void releaseHold() { m_framesHeld = false; }
+    void releaseHold() { m_ledger.releaseHold(); }
 
     // Frees the surface's own GL objects; the context must be current.
     void destroyGlObjects() { m_warmer.destroy(); }
@@ -125,11 +120,11 @@ signals:
 
 private:
     void start();
-    void frameDrawn(double drawMs);
+    void frameDrawn(double drawMs, bool fromLoan = false);
     void framePresented(quint64 loan, double drawMs, qint64 swappedNs, bool ok);
     std::shared_ptr<LoanFrame> offerLoanFrame();
     void bookPresented(double drawMs, std::chrono::steady_clock::time_point swappedAt,
-                       const QSize &backBuffer);
+                       const QSize &backBuffer, bool fromLoan);
     QSize pixels() const; // the view's size in device pixels
     QSize windowPixels() const;
 
@@ -158,11 +153,7 @@ private:
     std::chrono::steady_clock::time_point m_lastPresentedAt;
     WarmUpDraw m_warmer;             // created in this context by a borrower
     GLint m_framebufferSamples = -1; // of the window's framebuffer; -1: not known yet
-    FrameTimeWindow m_frameTimes;    // draw times of the last second
-    qint64 m_framesRendered = 0;
-    qint64 m_framesFromLoans = 0;
-    bool m_framesHeld = false; // a frame ran long: none until the user acts
-    qint64 m_framesRefused = 0;
+    FrameLedger m_ledger;
 };
 
 } // namespace phonglab

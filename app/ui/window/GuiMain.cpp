@@ -116,7 +116,7 @@ void openSubmission(MainWindow &window, const GuiArguments &requested)
 
 void useMultisamplingInViewOnly(MainWindow &window, int viewportSamples)
 {
-    window.viewport()->setFormat(phonglabSurfaceFormat(viewportSamples));
+    window.viewport()->frames().setFormat(phonglabSurfaceFormat(viewportSamples));
     QSurfaceFormat single = QSurfaceFormat::defaultFormat();
     single.setSamples(0);
     QSurfaceFormat::setDefaultFormat(single);

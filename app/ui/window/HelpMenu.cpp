@@ -97,7 +97,7 @@ void HelpMenu::showAbout()
 {
     delete m_aboutDialog;
     showOrRaise(m_aboutDialog, [this] {
-        return new AboutDialog(m_window->viewport()->glRendererName(), m_window);
+        return new AboutDialog(m_window->viewport()->glContext().glRendererName(), m_window);
     });
 }
 

@@ -126,7 +126,7 @@ void MainWindow::createShaderDock()
     connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
     connect(m_viewport, &Viewport::sceneChanged, this,
-            [this] { m_liveShaders->followSceneShading(m_viewport->currentScene().shading); });
+            [this] { m_liveShaders->shading()->followScene(m_viewport->currentScene().shading); });
 }
 
 // The File menu first, in the menu bar as on the screen: the document

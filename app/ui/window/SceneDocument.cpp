@@ -140,7 +140,7 @@ Result<> SceneDocument::openShaderFiles(const QStringList &paths)
     // The bindings chosen in the Uniforms dock were for the shaders these
     // replace: another project's names mean what that project meant.
     if (!m_viewport->currentScene().bindings.empty())
-        m_viewport->setBindings({});
+        m_viewport->program().setBindings({});
     m_liveShaders->buildNow();
     return {};
 }

@@ -39,8 +39,10 @@ ViewMenu::ViewMenu(MainWindow *window, QMenu *menu)
 
     QAction *lightMarkers = menu->addAction(tr("Show &Light Markers"));
     lightMarkers->setCheckable(true);
-    lightMarkers->setChecked(viewport->showLightMarkers());
-    connect(lightMarkers, &QAction::toggled, viewport, &Viewport::setShowLightMarkers);
+    ViewDrawing &drawing = viewport->drawing();
+    lightMarkers->setChecked(drawing.showLightMarkers());
+    connect(lightMarkers, &QAction::toggled, viewport,
+            [&drawing](bool show) { drawing.setShowLightMarkers(show); });
 
     menu->addSeparator();
     const auto addDockToggle = [menu](QDockWidget *dock, const QString &text) {
