@@ -53,8 +53,8 @@ LiveShaderController::LiveShaderController(ShaderDock *dock, Viewport *viewport,
     connect(m_viewport, &Viewport::shippedProgramLoaded, this,
             &LiveShaderController::onShippedProgramLoaded);
     connectDock();
-    // After the dock's connections: showing the scene's shipped shaders
-    // tells the journal which files the dock holds.
+    // After the dock's connections: the scene's shipped shaders it shows
+    // reach the journal as the dock's files (ShaderFileSet::dirtyChanged).
     m_shading = new ShadingChoice(m_dock, m_recovery, m_viewport, this);
     connectShadingChoice();
 }

@@ -47,7 +47,8 @@ void ShadingChoice::followScene(ShadingMethod method)
         emit followedScene();
         return;
     }
-    // Unsaved edits are never replaced behind the user's back.
+    // Unsaved edits are never replaced behind the user's back: they stay,
+    // are built again over the scene's program, and the scene follows them.
     m_viewport->program().setShading(m_method);
     emit editsKept(method);
 }
