@@ -2,13 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
-    <name>CheckStepsWords</name>
-    <message>
-        <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
-        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
-    </message>
-</context>
-<context>
     <name>ObjectChoice</name>
     <message>
         <source>%1: %2</source>
@@ -938,6 +931,14 @@ Die Befehle render, check, grade, mesh-info und bench laufen ohne (phonglab --he
     <message>
         <source>not checked in this scene: %1</source>
         <translation>in dieser Szene nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>crash</source>
+        <translation>Absturz</translation>
     </message>
 </context>
 <context>
@@ -4103,26 +4104,6 @@ Die aktuelle Szene wird weiterhin angezeigt.</translation>
         <translation>Beide Dateien sind %1-Shader.</translation>
     </message>
     <message>
-        <source>Open Shaders</source>
-        <translation>Shader öffnen</translation>
-    </message>
-    <message>
-        <source>Save Shader As</source>
-        <translation>Shader speichern unter</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <source>%1 has unsaved changes. Discard them?</source>
-        <translation>%1 enthält ungespeicherte Änderungen. Sollen sie verworfen werden?</translation>
-    </message>
-    <message>
-        <source> and </source>
-        <translation> und </translation>
-    </message>
-    <message>
         <source>%1 shader</source>
         <translation>%1-Shader</translation>
     </message>
@@ -4158,6 +4139,21 @@ Mit PhongLab mitgeliefert: Änderungen werden in einer Benutzerkopie gespeichert
     <message>
         <source>Check annotation</source>
         <translation>Prüfungshinweis</translation>
+    </message>
+</context>
+<context>
+    <name>phonglab::ShaderFileDialogs</name>
+    <message>
+        <source>Shaders</source>
+        <translation>Shader</translation>
+    </message>
+    <message>
+        <source>Save As…</source>
+        <translation>Speichern unter…</translation>
+    </message>
+    <message>
+        <source>Save Shader As</source>
+        <translation>Shader speichern unter</translation>
     </message>
 </context>
 <context>
@@ -5188,6 +5184,10 @@ Kompilierfehler werden als FILE:LINE:COL: error: MESSAGE ausgegeben.</translatio
     <message>
         <source>cannot read shader: %1</source>
         <translation>Shader kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>nothing to compare: no surface away from silhouettes in this view at %1x%2</source>
+        <translation>nichts zu vergleichen: keine Oberfläche abseits der Silhouetten in dieser Ansicht bei %1x%2</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 
 #include "PixelDiff.h"
 #include "ResultChecks.h"
+#include "ShaderDockParts.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/session/RecoveryJournal.h"
@@ -313,7 +314,7 @@ void TestLiveEdit::errorStaysOnItsLineAndFixClearsIt()
         kBuildTimeoutMs);
     QCOMPARE(fragmentEditor()->markerLines(ShaderDiagnostic::Severity::Error), QList<int>{line});
     QVERIFY2(!fragmentEditor()->annotationText(line).isEmpty(), "no boxed message under the line");
-    QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("last good program")));
+    QVERIFY(test::shaderStatus(dock())->text().contains(QStringLiteral("last good program")));
     QVERIFY(!live()->isBuilding());
     QCOMPARE(frame(), good); // the last good program still draws, exactly
 
@@ -368,7 +369,7 @@ void TestLiveEdit::unchangedTextIsNotRebuilt()
     QVERIFY(!live()->isBuilding());
     QCOMPARE(applied.count(), 0);
     // F5 builds even unchanged text.
-    dock()->compileAction()->trigger();
+    test::compileAction(dock())->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(applied.count(), 1, kBuildTimeoutMs);
 }
 
@@ -501,7 +502,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     openWindow();
     QCOMPARE(dock()->text(ShaderStage::Fragment), suspect);
     QVERIFY(live()->isAutoBuildHeld());
-    QVERIFY(dock()->statusLabel()->text().contains(QStringLiteral("F5")));
+    QVERIFY(test::shaderStatus(dock())->text().contains(QStringLiteral("F5")));
     const QImage shipped = frame();
     QTRY_VERIFY_WITH_TIMEOUT(!live()->isWaitingToBuild(), kBuildTimeoutMs); // nothing scheduled ...
     QVERIFY(!live()->isBuilding());                                         // ... and nothing built
@@ -514,7 +515,7 @@ void TestLiveEdit::suspectShaderWaitsForF5()
     QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
     fragmentEditor()->setFocus();
     QTest::keyClick(fragmentEditor(), Qt::Key_F5);
-    QVERIFY2(waitForApplied(), qPrintable(dock()->statusLabel()->text()));
+    QVERIFY2(waitForApplied(), qPrintable(test::shaderStatus(dock())->text()));
     QVERIFY(!live()->isAutoBuildHeld());
     QTRY_VERIFY(frame() != shipped);
 }
@@ -563,7 +564,7 @@ void TestLiveEdit::slowProgramIsKeptOut()
         });
         clock.start();
         ticker.start();
-        dock()->compileAction()->trigger();
+        test::compileAction(dock())->trigger();
         if (!QTest::qWaitFor([&] { return keptOut.count() > 0; }, 60000))
             return -1.0;
         ticker.stop();
@@ -578,17 +579,17 @@ void TestLiveEdit::slowProgramIsKeptOut()
         stall = longestStallKeepingOut(10001); // a second loop before the first: new text
     QVERIFY2(stall >= 0.0 && stall < kStallBoundMs, qPrintable(QString::number(stall)));
     QCOMPARE(frame(), lastGoodPicture); // the last good one still draws
-    QVERIFY(dock()->applyAnywayButton()->isVisible());
+    QVERIFY(test::applyAnywayButton(dock())->isVisible());
     QVERIFY(live()->hasKeptOutProgram());
     QCOMPARE(viewport()->program().id(), lastGood);
 
     // Apply anyway: it draws now, and the status no longer offers it.
     QSignalSpy applied(live(), &LiveShaderController::programApplied);
-    dock()->applyAnywayButton()->click();
+    test::applyAnywayButton(dock())->click();
     QCOMPARE(applied.count(), 1);
     QVERIFY(viewport()->program().id() != lastGood);
     QVERIFY(!live()->hasKeptOutProgram());
-    QVERIFY(!dock()->applyAnywayButton()->isVisible());
+    QVERIFY(!test::applyAnywayButton(dock())->isVisible());
 
     // Its first frame runs long (off the GUI thread): the view then draws
     // nothing by itself, until the user acts on it.

@@ -4,6 +4,7 @@
 // to user copies, and changes made on disk by others are reloaded or kept.
 
 #include "ResultChecks.h"
+#include "ShaderDockParts.h"
 #include "ui/shaders/DiagnosticList.h"
 #include "ui/shaders/GlslApi.h"
 #include "ui/shaders/GlslLexer.h"
@@ -127,6 +128,8 @@ private slots:
     void externalChangeReloadPolicy();
     void externalChangeAsksTheUser();
     void openPairAssignsStagesByName();
+    void openFileTakesTheStageItIsGiven();
+    void toolBarFileButtonsAreRequests();
     void f5AndPresetBoxEmitRequests();
     void dockShowsErrorAnnotation();
     void cursorLineStaysInViewAsTheErrorListComesAndGoes();
@@ -269,8 +272,8 @@ void TestShaderEditor::diagnosticsWithoutLineOnlyInList()
     dock.showDiagnostics({diagnostic(BuildStep::CompileFragment, Severity::Error, 0, 0,
                                      QStringLiteral("out of memory"))});
     QVERIFY(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error).isEmpty());
-    QCOMPARE(dock.diagnosticList()->count(), 1);
-    QCOMPARE(dock.diagnosticList()->item(0)->text(),
+    QCOMPARE(test::diagnosticList(&dock)->count(), 1);
+    QCOMPARE(test::diagnosticList(&dock)->item(0)->text(),
              QStringLiteral("phong.frag: error: out of memory"));
 }
 
@@ -283,8 +286,8 @@ void TestShaderEditor::linkErrorsGoToFragmentEditor()
         {diagnostic(BuildStep::Link, Severity::Error, 0, 0, QStringLiteral("no main")),
          diagnostic(BuildStep::Link, Severity::Error, 4, 0, QStringLiteral("type mismatch")),
          diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 0, QStringLiteral("unused"))});
-    QCOMPARE(dock.diagnosticList()->count(), 3);
-    QCOMPARE(dock.diagnosticList()->errorCount(), 2);
+    QCOMPARE(test::diagnosticList(&dock)->count(), 3);
+    QCOMPARE(test::diagnosticList(&dock)->errorCount(), 2);
     QCOMPARE(dock.editor(ShaderStage::Fragment)->markerLines(Severity::Error), QList<int>{4});
     QVERIFY(dock.editor(ShaderStage::Vertex)->markerLines(Severity::Error).isEmpty());
     QCOMPARE(dock.editor(ShaderStage::Vertex)->markerLines(Severity::Warning), QList<int>{3});
@@ -296,15 +299,15 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     dock.resize(600, 500);
     dock.setSources({QStringLiteral("a.vert"), kSmallShader},
                     {QStringLiteral("a.frag"), kSmallShader});
-    dock.tabs()->setCurrentIndex(0);
+    test::shaderTabs(&dock)->setCurrentIndex(0);
     dock.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dock));
     dock.showDiagnostics(
         {diagnostic(BuildStep::CompileVertex, Severity::Warning, 3, 2, QStringLiteral("w")),
          diagnostic(BuildStep::CompileFragment, Severity::Error, 9, 17, QStringLiteral("e"))});
-    QSignalSpy spy(dock.diagnosticList(), &DiagnosticList::diagnosticActivated);
+    QSignalSpy spy(test::diagnosticList(&dock), &DiagnosticList::diagnosticActivated);
 
-    DiagnosticList *list = dock.diagnosticList();
+    DiagnosticList *list = test::diagnosticList(&dock);
     const QRect rect = list->visualItemRect(list->item(1));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, rect.center());
 
@@ -312,7 +315,7 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     QCOMPARE(spy.first().at(0).value<ShaderStage>(), ShaderStage::Fragment);
     QCOMPARE(spy.first().at(1).toInt(), 9);
     QCOMPARE(spy.first().at(2).toInt(), 17);
-    QCOMPARE(dock.tabs()->currentWidget(), dock.editor(ShaderStage::Fragment));
+    QCOMPARE(test::shaderTabs(&dock)->currentWidget(), dock.editor(ShaderStage::Fragment));
     int line = -1;
     int index = -1;
     dock.editor(ShaderStage::Fragment)->getCursorPosition(&line, &index);
@@ -320,7 +323,7 @@ void TestShaderEditor::clickingADiagnosticMovesTheCursor()
     QCOMPARE(index, 16);
 
     dock.goTo(ShaderStage::Vertex, 3, 99); // a column past the end stays on its line
-    QCOMPARE(dock.tabs()->currentWidget(), dock.editor(ShaderStage::Vertex));
+    QCOMPARE(test::shaderTabs(&dock)->currentWidget(), dock.editor(ShaderStage::Vertex));
     dock.editor(ShaderStage::Vertex)->getCursorPosition(&line, &index);
     QCOMPARE(line, 2);
     QCOMPARE(index, int(qstrlen("uniform vec3 kd;")));
@@ -535,7 +538,7 @@ void TestShaderEditor::dirtyMarkerFollowsEditsAndSaves()
     ShaderDock dock;
     configure(dock);
     dock.setSources({QStringLiteral("a.vert"), kSmallShader}, ShaderSource::fromFile(path).value());
-    QTabWidget *tabs = dock.tabs();
+    QTabWidget *tabs = test::shaderTabs(&dock);
     const int tab = tabs->indexOf(dock.editor(ShaderStage::Fragment));
     QCOMPARE(tabs->tabText(tab), QStringLiteral("dirty.frag"));
     QSignalSpy edited(&dock, &ShaderDock::textEdited);
@@ -669,6 +672,52 @@ void TestShaderEditor::openPairAssignsStagesByName()
     QCOMPARE(dock.filePath(ShaderStage::Fragment), frag); // failures change nothing
 }
 
+// A scene's shaders.vertex may be any file: it goes to the vertex stage
+// whatever its suffix says, and the tab shown does not decide.
+void TestShaderEditor::openFileTakesTheStageItIsGiven()
+{
+    const QString odd = ownPath(QStringLiteral("lighting.frag"));
+    writeExternally(odd, "// really a vertex shader\n");
+    ShaderDock dock;
+    configure(dock);
+    dock.setSources({QStringLiteral("a.vert"), kSmallShader},
+                    {QStringLiteral("a.frag"), kSmallShader});
+    QCOMPARE(dock.currentStage(), ShaderStage::Fragment);
+    QSignalSpy edited(&dock, &ShaderDock::textEdited);
+    QVERIFY_OK(dock.openFile(ShaderStage::Vertex, odd));
+    QCOMPARE(dock.text(ShaderStage::Vertex), QByteArray("// really a vertex shader\n"));
+    QCOMPARE(dock.text(ShaderStage::Fragment), kSmallShader);
+    QCOMPARE(dock.filePath(ShaderStage::Vertex), odd);
+    QCOMPARE(dock.currentStage(), ShaderStage::Vertex);
+    QCOMPARE(edited.count(), 1);
+    QVERIFY(!dock.openFile(ShaderStage::Vertex, ownPath(QStringLiteral("missing.vert"))));
+    QCOMPARE(dock.filePath(ShaderStage::Vertex), odd); // a failure changes nothing
+}
+
+// The dock opens no dialog: its Open…, Save and Save As… ask whoever owns
+// it (the File menu and ShaderFileDialogs in the window).
+void TestShaderEditor::toolBarFileButtonsAreRequests()
+{
+    ShaderDock dock;
+    configure(dock);
+    QSignalSpy open(&dock, &ShaderDock::openRequested);
+    QSignalSpy save(&dock, &ShaderDock::saveRequested);
+    QSignalSpy saveAs(&dock, &ShaderDock::saveAsRequested);
+    const auto trigger = [&dock](const QString &text) {
+        for (QAction *action : dock.findChildren<QAction *>())
+            if (action->text() == text)
+                return action->trigger(), true;
+        return false;
+    };
+    QVERIFY(trigger(QStringLiteral("Open…")));
+    QVERIFY(trigger(QStringLiteral("Save")));
+    QVERIFY(trigger(QStringLiteral("Save As…")));
+    QCOMPARE(open.count(), 1);
+    QCOMPARE(save.count(), 1);
+    QCOMPARE(saveAs.count(), 1);
+    QVERIFY(QApplication::activeModalWidget() == nullptr);
+}
+
 void TestShaderEditor::f5AndPresetBoxEmitRequests()
 {
     ShaderDock dock;
@@ -684,7 +733,7 @@ void TestShaderEditor::f5AndPresetBoxEmitRequests()
     QCOMPARE(dock.text(ShaderStage::Fragment), kSmallShader); // F5 typed nothing
 
     QSignalSpy preset(&dock, &ShaderDock::shadingMethodRequested);
-    QComboBox *box = dock.shadingMethodBox();
+    QComboBox *box = test::shadingMethodBox(&dock);
     // Each method, and the shaders in the editor by their file (it said
     // "Phong" for a student's own).
     QCOMPARE(box->count(), shadingNames().size() + 1);

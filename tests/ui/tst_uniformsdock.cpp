@@ -2,6 +2,7 @@
 // Xvfb): rows come from the linked program after every build; what the scene
 // or the renderer sets is read-only; a user uniform is edited through the
 // dock, changes the frame, survives a recompile; bad input is refused.
+#include "ShaderDockParts.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "ui/shaders/LiveShaderController.h"
@@ -98,7 +99,7 @@ void TestUniformsDock::addGain()
     editor->insertAt(QStringLiteral("uniform float gain; // @range 0 2\n"), 1, 0);
     QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
     editor->replace(QStringLiteral("vec4(I * gain,"));
-    m_window->shaderDock()->compileAction()->trigger();
+    test::compileAction(m_window->shaderDock())->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(gainRow());
 }
@@ -162,7 +163,7 @@ void TestUniformsDock::userUniformIsEditedAndKept()
     QSignalSpy rebuilt(dock(), &UniformsDock::rebuilt);
     const QPointer<UniformFloatRow> before = gainRow();
     fragmentEditor()->append(QStringLiteral("// an unrelated edit\n"));
-    m_window->shaderDock()->compileAction()->trigger();
+    test::compileAction(m_window->shaderDock())->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(rebuilt.count() > 0);
     QVERIFY(gainRow());
@@ -176,7 +177,7 @@ void TestUniformsDock::userUniformIsEditedAndKept()
                                         true, 0, 0));
     fragmentEditor()->replace(QStringLiteral("@range 0 4"));
     rebuilt.clear();
-    m_window->shaderDock()->compileAction()->trigger();
+    test::compileAction(m_window->shaderDock())->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(rebuilt.count() > 0);
     QVERIFY(gainRow() && gainRow() != before.data());
@@ -293,7 +294,7 @@ void TestUniformsDock::optimisedAwayUniformIsFlagged()
 {
     openWindow();
     fragmentEditor()->insertAt(QStringLiteral("uniform float unusedGain; // @range 0 1\n"), 1, 0);
-    m_window->shaderDock()->compileAction()->trigger();
+    test::compileAction(m_window->shaderDock())->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(dock()->inactiveNames().contains(QStringLiteral("unusedGain")));
     QWidget *row = dock()->row(QStringLiteral("unusedGain"));
@@ -316,7 +317,7 @@ void TestUniformsDock::colourIntAndBoolRows()
         1, 0);
     QVERIFY(editor->findFirst(QStringLiteral("vec4(I,"), false, true, false, false, true, 0, 0));
     editor->replace(QStringLiteral("vec4(I * tint * float(steps) * (flip ? 0.5 : 1.0),"));
-    m_window->shaderDock()->compileAction()->trigger();
+    test::compileAction(m_window->shaderDock())->trigger();
     QVERIFY(waitForApplied());
     QTRY_VERIFY(dock()->row(QStringLiteral("tint")));
 

@@ -5,6 +5,7 @@
 // is a short form of the check's panel, cut at words.
 #include "PhonglabProcess.h"
 #include "ResultChecks.h"
+#include "ShaderDockParts.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/check/MistakeSets.h"
@@ -85,7 +86,7 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         QVERIFY(waitForChecked());
         // The box above the editor names the student's shader, not "Phong".
-        QCOMPARE(m_window->shaderDock()->shaderBoxText(),
+        QCOMPARE(test::shadingMethodBox(m_window->shaderDock())->currentText(),
                  QStringLiteral("phong.frag (your shader)"));
         const CheckedFrame &result = *lastResult();
         QVERIFY2(result.hasVerdict(), qPrintable(panelText()));
@@ -98,7 +99,8 @@ private slots:
                  qPrintable(panelText()));
 
         const QJsonObject cli = checkOnTheCommandLine(scene, m_vertex, m_fragment);
-        QCOMPARE(verdictWord(result), cli.value(QStringLiteral("verdict")).toString());
+        QCOMPARE(verdictName(result.outcome.verdict),
+                 cli.value(QStringLiteral("verdict")).toString());
         QCOMPARE(diagnosisKeys(result), diagnosisKeys(cli));
         // The view's shape frames the camera its own way in the window (a
         // narrow view keeps the width in sight): the numbers may differ, the
@@ -176,7 +178,7 @@ private slots:
         QVERIFY(!QTest::currentTestFailed());
         QVERIFY(waitForChecked());
         const CheckedFrame &result = *lastResult();
-        QCOMPARE(result.outcome.verdict, CheckOutcome::Verdict::Fail);
+        QCOMPARE(result.outcome.verdict, Verdict::Fail);
         const QJsonObject cli = checkOnTheCommandLine(scene, m_vertex, wrong);
         QCOMPARE(cli.value(QStringLiteral("verdict")).toString(), QStringLiteral("fail"));
         QCOMPARE(diagnosisKeys(result), diagnosisKeys(cli));
@@ -377,16 +379,6 @@ private:
                          QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
                          QStringLiteral("--json")});
         return QJsonDocument::fromJson(run.out).object();
-    }
-
-    static QString verdictWord(const CheckedFrame &result)
-    {
-        switch (result.outcome.verdict) {
-        case CheckOutcome::Verdict::Pass: return QStringLiteral("pass");
-        case CheckOutcome::Verdict::Fail: return QStringLiteral("fail");
-        case CheckOutcome::Verdict::Error: break;
-        }
-        return QStringLiteral("error");
     }
 
     // The keys the verdict names: the set that explains it together, else

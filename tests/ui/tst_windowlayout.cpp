@@ -5,6 +5,7 @@
 // the default back, and a layout saved under an older version gives way to
 // the new default once.
 #include "ResultChecks.h"
+#include "ShaderDockParts.h"
 #include "TestPaths.h"
 #include "UiTestWindow.h"
 #include "core/scene/SceneJson.h"
@@ -235,7 +236,7 @@ void TestWindowLayout::theCodeHas80ColumnsBesideTheView()
     const QRect editorRect(code->mapTo(m_window.get(), QPoint()), code->size());
     QVERIFY(editorRect.left() >= view.right()); // beside the view, right of it
     // The error list shows under the code when there is something to say.
-    DiagnosticList *errors = m_window->shaderDock()->diagnosticList();
+    DiagnosticList *errors = test::diagnosticList(m_window->shaderDock());
     QVERIFY(!errors->isVisible());
     errors->setDiagnostics(
         {ShaderDiagnostic{BuildStep::CompileFragment, ShaderDiagnostic::Severity::Error,
@@ -309,7 +310,7 @@ void TestWindowLayout::theCodeGetsRoomAtCommonScreenSizes()
     if (screen.width() >= 1600)
         QVERIFY(code->visibleColumns() >= 80);
     // No error: the error list takes no room.
-    QVERIFY(!m_window->shaderDock()->diagnosticList()->isVisible());
+    QVERIFY(!test::diagnosticList(m_window->shaderDock())->isVisible());
     // The material's fields, in a scroll area now, are there to edit.
     const QList<QLineEdit *> fields = m_window->docks().material->findChildren<QLineEdit *>();
     QVERIFY(!fields.isEmpty());

@@ -31,14 +31,14 @@ GradeResults twoRows()
 
     GradeRow pass;
     pass.submission = 0;
-    pass.verdict = GradeVerdict::Pass;
+    pass.verdict = Verdict::Pass;
     pass.outcome.report.comparison.psnr = std::numeric_limits<double>::infinity();
     pass.outcome.report.comparison.pixelsCompared = 100;
     pass.seconds = 0.5;
 
     GradeRow fail;
     fail.submission = 1;
-    fail.verdict = GradeVerdict::Fail;
+    fail.verdict = Verdict::Fail;
     fail.outcome.report.comparison.psnr = 23.456;
     fail.outcome.report.comparison.maxError = 145;
     fail.outcome.report.comparison.pixelsCompared = 1000;

@@ -399,12 +399,12 @@ int check(CheckArgs args)
     for (const QString &w : loaded.warnings)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
-    if (outcome.verdict != CheckOutcome::Verdict::Error && !args.diffPath.isEmpty()) {
+    if (outcome.verdict != Verdict::Error && !args.diffPath.isEmpty()) {
         const Result<> written =
             writePng(toQImage(checkHeatmap(toRgbImage(yours), reference, outcome.report.equation)),
                      args.diffPath);
         if (!written) {
-            outcome.verdict = CheckOutcome::Verdict::Error;
+            outcome.verdict = Verdict::Error;
             outcome.errors = {inputError(args.diffPath, written.error())};
             outcome.stages.clear();
         }
@@ -412,8 +412,8 @@ int check(CheckArgs args)
     if (page) {
         outcome.notes.prepend(pageNote);
         if ((page->javascriptMistakes() || page->ownSceneFails())
-            && outcome.verdict == CheckOutcome::Verdict::Pass)
-            outcome.verdict = CheckOutcome::Verdict::Fail;
+            && outcome.verdict == Verdict::Pass)
+            outcome.verdict = Verdict::Fail;
     }
     if (args.json) {
         QJsonObject json = checkJson(outcome.verdict, outcome);
@@ -432,7 +432,7 @@ int check(CheckArgs args)
                                             : QStringLiteral("%1: %2").arg(e.file, e.message));
         printLine(checkText(outcome, scene));
     }
-    return outcome.verdict == CheckOutcome::Verdict::Pass ? kExitOk : kExitFailure;
+    return outcome.verdict == Verdict::Pass ? kExitOk : kExitFailure;
 }
 
 } // namespace

@@ -151,9 +151,9 @@ QByteArray stageText(const std::vector<ShaderStageText> &stages, bool vertex)
 
 } // namespace
 
-CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
-                                   const CheckReference &reference, int toleranceSteps,
-                                   std::optional<PhongEquation> equation, const QString &scenePath)
+Verdict checkDrawing(CheckFindings *findings, const QImage &image, const CheckReference &reference,
+                     int toleranceSteps, std::optional<PhongEquation> equation,
+                     const QString &scenePath)
 {
     findings->report = checkRender(toRgbImage(image), reference, toleranceSteps, equation);
     nameWhatTheCodeDoes(findings->report, stageText(findings->stages, true),
@@ -165,9 +165,9 @@ CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
                                 "this view at %1x%2")
                 .arg(image.width())
                 .arg(image.height())));
-        return CheckOutcome::Verdict::Error;
+        return Verdict::Error;
     }
-    return findings->report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    return findings->report.passed() ? Verdict::Pass : Verdict::Fail;
 }
 
 // --- the child's answer ----------------------------------------------------

@@ -57,9 +57,9 @@ Scene sceneForCheck(const Scene &scene, std::optional<int> lightCapacity);
 
 // Checks a drawn image: sets the findings' report and returns the verdict;
 // Error, with an error added, when no pixel could be compared.
-CheckOutcome::Verdict checkDrawing(CheckFindings *findings, const QImage &image,
-                                   const CheckReference &reference, int toleranceSteps,
-                                   std::optional<PhongEquation> equation, const QString &scenePath);
+Verdict checkDrawing(CheckFindings *findings, const QImage &image, const CheckReference &reference,
+                     int toleranceSteps, std::optional<PhongEquation> equation,
+                     const QString &scenePath);
 
 // An error not from the compiler: bad input, no GL, a file not read.
 ShaderDiagnostic inputError(const QString &file, const QString &message);

@@ -70,9 +70,8 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
     if (namePrograms && !s.program.isEmpty())
         where += QStringLiteral(" (%1)").arg(s.program);
     switch (row.verdict) {
-    case GradeVerdict::Pass:
-        return CoursePlatformWords::tr("%1: matches the exact image.").arg(where);
-    case GradeVerdict::Fail: {
+    case Verdict::Pass: return CoursePlatformWords::tr("%1: matches the exact image.").arg(where);
+    case Verdict::Fail: {
         const QString key = rowMistakeKey(row);
         return key.isEmpty() || key == QLatin1String("unknown")
             ? CoursePlatformWords::tr("%1: differs from the exact image; no classic mistake "
@@ -81,7 +80,7 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
             : CoursePlatformWords::tr("%1: differs from the exact image, most likely %2.")
                   .arg(where, key);
     }
-    case GradeVerdict::Error: {
+    case Verdict::Error: {
         const RowPlace place = rowPlace(row);
         QString message =
             row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
@@ -97,9 +96,9 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
                                     .arg(message)
                               : CoursePlatformWords::tr("%1: not checked: %2").arg(where, message);
     }
-    case GradeVerdict::Timeout:
+    case Verdict::Timeout:
         return CoursePlatformWords::tr("%1: took longer than the time allowed.").arg(where);
-    case GradeVerdict::Crash:
+    case Verdict::Crash:
         return CoursePlatformWords::tr("%1: the check crashed or ran out of memory.").arg(where);
     }
     return {};
@@ -162,14 +161,14 @@ bool addFile(archive *a, const QString &name, const QByteArray &bytes)
 
 } // namespace
 
-double GradePoints::of(GradeVerdict verdict) const
+double GradePoints::of(Verdict verdict) const
 {
     switch (verdict) {
-    case GradeVerdict::Pass: return pass;
-    case GradeVerdict::Fail: return fail;
-    case GradeVerdict::Error: return error;
-    case GradeVerdict::Timeout: return timeout;
-    case GradeVerdict::Crash: return crash;
+    case Verdict::Pass: return pass;
+    case Verdict::Fail: return fail;
+    case Verdict::Error: return error;
+    case Verdict::Timeout: return timeout;
+    case Verdict::Crash: return crash;
     }
     return 0.0;
 }

@@ -20,7 +20,7 @@ struct GradePoints {
     double error = 0.0;
     double timeout = 0.0;
     double crash = 0.0;
-    double of(GradeVerdict verdict) const;
+    double of(Verdict verdict) const;
 };
 // "pass=2,fail=0.5"; the verdicts not named keep their default. An error
 // names what is wrong.

@@ -28,29 +28,29 @@ QString esc(const QString &text)
 }
 
 // Worst first: what a teacher looks at before the passes.
-int verdictRank(GradeVerdict v)
+int verdictRank(Verdict v)
 {
     switch (v) {
-    case GradeVerdict::Crash: return 0;
-    case GradeVerdict::Timeout: return 1;
-    case GradeVerdict::Error: return 2;
-    case GradeVerdict::Fail: return 3;
-    case GradeVerdict::Pass: return 4;
+    case Verdict::Crash: return 0;
+    case Verdict::Timeout: return 1;
+    case Verdict::Error: return 2;
+    case Verdict::Fail: return 3;
+    case Verdict::Pass: return 4;
     }
     return 2;
 }
 
-constexpr GradeVerdict kVerdicts[] = {GradeVerdict::Pass, GradeVerdict::Fail, GradeVerdict::Error,
-                                      GradeVerdict::Timeout, GradeVerdict::Crash};
+constexpr Verdict kVerdicts[] = {Verdict::Pass, Verdict::Fail, Verdict::Error, Verdict::Timeout,
+                                 Verdict::Crash};
 
-QString verdictColour(GradeVerdict v)
+QString verdictColour(Verdict v)
 {
     switch (v) {
-    case GradeVerdict::Pass: return QStringLiteral("#2e7d32");
-    case GradeVerdict::Fail: return QStringLiteral("#c62828");
-    case GradeVerdict::Error: return QStringLiteral("#ef6c00");
-    case GradeVerdict::Timeout: return QStringLiteral("#6a1b9a");
-    case GradeVerdict::Crash: return QStringLiteral("#37474f");
+    case Verdict::Pass: return QStringLiteral("#2e7d32");
+    case Verdict::Fail: return QStringLiteral("#c62828");
+    case Verdict::Error: return QStringLiteral("#ef6c00");
+    case Verdict::Timeout: return QStringLiteral("#6a1b9a");
+    case Verdict::Crash: return QStringLiteral("#37474f");
     }
     return QStringLiteral("#000");
 }
@@ -106,10 +106,10 @@ QString bar(double fraction, const QString &colour, int width = 300)
         .arg(colour);
 }
 
-QString verdictBadge(GradeVerdict v)
+QString verdictBadge(Verdict v)
 {
     return QStringLiteral("<span class=\"verdict\" style=\"background:%1\">%2</span>")
-        .arg(verdictColour(v), gradeVerdictName(v));
+        .arg(verdictColour(v), verdictName(v));
 }
 
 QString summary(const GradeResults &results)
@@ -118,14 +118,14 @@ QString summary(const GradeResults &results)
         QStringLiteral("<h2>%1</h2><table>").arg(esc(ReportWords::tr("Passes per scene")));
     const int students = int(results.submissions.size());
     for (std::size_t s = 0; s < results.scenes.size(); ++s) {
-        std::map<GradeVerdict, int> counts;
+        std::map<Verdict, int> counts;
         for (const GradeRow &row : results.rows)
             if (row.scene == int(s))
                 ++counts[row.verdict];
         QString rects;
         double x = 0;
         QStringList parts;
-        for (GradeVerdict v : kVerdicts) {
+        for (Verdict v : kVerdicts) {
             const int n = counts[v];
             if (n == 0)
                 continue;
@@ -137,21 +137,21 @@ QString summary(const GradeResults &results)
                     .arg(w, 0, 'f', 1)
                     .arg(verdictColour(v))
                     .arg(n)
-                    .arg(gradeVerdictName(v));
+                    .arg(verdictName(v));
             x += w;
-            parts << QStringLiteral("%1 %2").arg(n).arg(gradeVerdictName(v));
+            parts << QStringLiteral("%1 %2").arg(n).arg(verdictName(v));
         }
         const QString passes =
-            ReportWords::tr("%1 of %2 pass").arg(counts[GradeVerdict::Pass]).arg(students);
+            ReportWords::tr("%1 of %2 pass").arg(counts[Verdict::Pass]).arg(students);
         html += QStringLiteral("<tr><td>%1</td><td><svg width=\"400\" height=\"16\" role=\"img\" "
                                "aria-label=\"%2\">%3</svg></td><td>%4 · %2</td></tr>")
                     .arg(esc(results.scenes[s].label), esc(parts.join(QStringLiteral(", "))), rects,
                          esc(passes));
     }
     html += QStringLiteral("</table><p class=\"legend\">");
-    for (GradeVerdict v : kVerdicts)
+    for (Verdict v : kVerdicts)
         html += QStringLiteral("<span style=\"background:%1\"></span>%2")
-                    .arg(verdictColour(v), gradeVerdictName(v));
+                    .arg(verdictColour(v), verdictName(v));
     html += QStringLiteral("</p>");
 
     std::map<QString, int> mistakes;
@@ -213,9 +213,9 @@ QString details(const GradeRow &row)
 {
     QString html;
     const CheckFindings &o = row.outcome;
-    if (row.verdict == GradeVerdict::Pass)
+    if (row.verdict == Verdict::Pass)
         html += QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("Matches the exact image.")));
-    if (row.verdict == GradeVerdict::Fail) {
+    if (row.verdict == Verdict::Fail) {
         const MistakeDiagnosis &d = o.report.diagnosis;
         if (d.unexplained())
             html += QStringLiteral("<p><b>unknown</b>: %1</p>")
@@ -344,7 +344,7 @@ QString openCommand(const GradeResults &results, const GradeRow &row)
 QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
 {
     const CheckReport &r = row.outcome.report;
-    const bool checked = row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+    const bool checked = row.verdict == Verdict::Pass || row.verdict == Verdict::Fail;
     const double psnr = checked ? r.comparison.psnr : -1.0;
     const QString student = shownSubmissionName(results.submissions[std::size_t(row.submission)]);
     const QString command = openCommand(results, row);

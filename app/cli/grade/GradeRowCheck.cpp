@@ -37,7 +37,7 @@ void makeRelative(CheckFindings *outcome, const QString &classRoot)
             text.replace(classRoot + QLatin1Char('/'), QString());
 }
 
-void failRow(GradeRow &row, GradeVerdict verdict, const QString &message)
+void failRow(GradeRow &row, Verdict verdict, const QString &message)
 {
     row.verdict = verdict;
     row.outcome.errors.push_back(inputError(QString(), message));
@@ -62,7 +62,7 @@ bool takeFindings(GradeRow &row, const CheckDrawing &drawing, const GradeResults
     // What the project said beside (an unlit program left out) goes with it.
     row.outcome.notes = results.submissions[std::size_t(row.submission)].notes + row.outcome.notes;
     makeRelative(&row.outcome, classRoot);
-    row.verdict = GradeVerdict::Error;
+    row.verdict = Verdict::Error;
     return row.outcome.errors.empty();
 }
 
@@ -75,18 +75,18 @@ void judge(GradeRow &row, const QImage &image, std::optional<int> lightCapacity,
     const Scene checked = sceneForCheck(scene.scene, lightCapacity);
     const Result<const CheckReference *> found = references.referenceFor(row.scene, checked);
     if (!found) {
-        row.verdict = GradeVerdict::Error;
+        row.verdict = Verdict::Error;
         row.outcome.errors.push_back(
             inputError(scene.path, GradeRowCheckWords::tr("no reference: %1").arg(found.error())));
         return;
     }
     const CheckReference *reference = *found;
     const GradeSettings &settings = results.settings;
-    const CheckOutcome::Verdict verdict = checkDrawing(
-        &row.outcome, image, *reference, settings.toleranceSteps, settings.equation, scene.path);
-    if (verdict == CheckOutcome::Verdict::Error)
+    const Verdict verdict = checkDrawing(&row.outcome, image, *reference, settings.toleranceSteps,
+                                         settings.equation, scene.path);
+    if (verdict == Verdict::Error)
         return;
-    row.verdict = verdict == CheckOutcome::Verdict::Pass ? GradeVerdict::Pass : GradeVerdict::Fail;
+    row.verdict = verdict == Verdict::Pass ? Verdict::Pass : Verdict::Fail;
     const PhongEquation equation = row.outcome.report.equation;
     row.exactImage =
         references.exactImageFor(row.scene, checked.enabledLightCount(), equation, *reference);
@@ -104,9 +104,7 @@ void checkRow(GradeRow &row, const GradedChildEnd &end, const GradeResults &resu
 {
     const QString outFolder = results.settings.outFolder;
     if (end.kind != GradedChildEnd::Kind::Answered) {
-        failRow(row,
-                end.kind == GradedChildEnd::Kind::TimedOut ? GradeVerdict::Timeout
-                                                           : GradeVerdict::Crash,
+        failRow(row, end.kind == GradedChildEnd::Kind::TimedOut ? Verdict::Timeout : Verdict::Crash,
                 end.message);
         dropImage(row, outFolder);
         return;
@@ -119,7 +117,7 @@ void checkRow(GradeRow &row, const GradedChildEnd &end, const GradeResults &resu
     QImageReader reader(outFolder + QLatin1Char('/') + row.yoursImage);
     const QImage image = reader.read();
     if (image.isNull() || image.size() != results.settings.size) {
-        failRow(row, GradeVerdict::Crash,
+        failRow(row, Verdict::Crash,
                 GradeRowCheckWords::tr("the check drew no image (%1)").arg(reader.errorString()));
         dropImage(row, outFolder);
         return;

@@ -4,21 +4,9 @@
 
 namespace phonglab::cli {
 
-QString gradeVerdictName(GradeVerdict verdict)
-{
-    switch (verdict) {
-    case GradeVerdict::Pass: return QStringLiteral("pass");
-    case GradeVerdict::Fail: return QStringLiteral("fail");
-    case GradeVerdict::Error: return QStringLiteral("error");
-    case GradeVerdict::Timeout: return QStringLiteral("timeout");
-    case GradeVerdict::Crash: return QStringLiteral("crash");
-    }
-    return QStringLiteral("error");
-}
-
 const MistakeFinding *topFinding(const GradeRow &row)
 {
-    if (row.verdict != GradeVerdict::Fail)
+    if (row.verdict != Verdict::Fail)
         return nullptr;
     const auto &findings = row.outcome.report.diagnosis.findings;
     return findings.empty() ? nullptr : &findings.front();
@@ -28,12 +16,12 @@ QString rowMistakeKey(const GradeRow &row)
 {
     if (const MistakeFinding *f = topFinding(row))
         return shaderMistakeKey(f->key);
-    return row.verdict == GradeVerdict::Fail ? QStringLiteral("unknown") : QString();
+    return row.verdict == Verdict::Fail ? QStringLiteral("unknown") : QString();
 }
 
 QString rowMistakeKeys(const GradeRow &row)
 {
-    if (row.verdict != GradeVerdict::Fail)
+    if (row.verdict != Verdict::Fail)
         return {};
     const MistakeDiagnosis &d = row.outcome.report.diagnosis;
     if (!d.together.variants.empty() && d.together.explains >= kExplainedConfidence)

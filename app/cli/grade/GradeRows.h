@@ -38,19 +38,10 @@ struct GradeScene {
     std::vector<std::shared_ptr<const MeshData>> objectMeshes;
 };
 
-enum class GradeVerdict {
-    Pass,
-    Fail,
-    Error,   // the check's own error: compile error, unbound name, two files for a stage
-    Timeout, // the child ran past --timeout
-    Crash    // the child died, or used more memory than allowed
-};
-QString gradeVerdictName(GradeVerdict verdict); // pass, fail, error, timeout, crash
-
 struct GradeRow {
-    int submission = 0;                         // index into the submissions
-    int scene = 0;                              // index into the scenes
-    GradeVerdict verdict = GradeVerdict::Error; // the row's one verdict
+    int submission = 0;               // index into the submissions
+    int scene = 0;                    // index into the scenes
+    Verdict verdict = Verdict::Error; // the row's one verdict
     // What the check found, as `check` reports it but for the verdict;
     // paths in the class folder relative to it.
     CheckFindings outcome;

@@ -57,20 +57,20 @@ QString textCell(const QString &text)
 
 bool checked(const GradeRow &row)
 {
-    return row.verdict == GradeVerdict::Pass || row.verdict == GradeVerdict::Fail;
+    return row.verdict == Verdict::Pass || row.verdict == Verdict::Fail;
 }
 
 // The check's verdict the row's stands for: a timeout or a crash checked nothing.
-CheckOutcome::Verdict checkVerdict(GradeVerdict verdict)
+Verdict checkVerdict(Verdict verdict)
 {
     switch (verdict) {
-    case GradeVerdict::Pass: return CheckOutcome::Verdict::Pass;
-    case GradeVerdict::Fail: return CheckOutcome::Verdict::Fail;
-    case GradeVerdict::Error:
-    case GradeVerdict::Timeout:
-    case GradeVerdict::Crash: break;
+    case Verdict::Pass: return Verdict::Pass;
+    case Verdict::Fail: return Verdict::Fail;
+    case Verdict::Error:
+    case Verdict::Timeout:
+    case Verdict::Crash: break;
     }
-    return CheckOutcome::Verdict::Error;
+    return Verdict::Error;
 }
 
 QString psnrText(const GradeRow &row)
@@ -119,7 +119,7 @@ QStringList csvRecord(const GradeResults &results, const GradeRow &row)
     const RowPlace place = rowPlace(row);
     return QStringList{textCell(results.submissions[std::size_t(row.submission)].name),
                        textCell(results.scenes[std::size_t(row.scene)].label),
-                       gradeVerdictName(row.verdict),
+                       verdictName(row.verdict),
                        psnrText(row),
                        checked(row) ? QString::number(r.comparison.maxError) : QString(),
                        checked(row) ? QString::number(r.badFraction(), 'f', 6) : QString(),
@@ -157,7 +157,7 @@ QJsonObject gradesJson(const GradeResults &results)
     QJsonArray rows;
     for (const GradeRow &row : results.rows) {
         QJsonObject o = checkJson(checkVerdict(row.verdict), row.outcome);
-        o.insert(QStringLiteral("verdict"), gradeVerdictName(row.verdict));
+        o.insert(QStringLiteral("verdict"), verdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
         const Submission &submission = results.submissions[std::size_t(row.submission)];
@@ -229,7 +229,7 @@ QString gradesTable(const GradeResults &results)
             what += (what.isEmpty() ? QString() : QStringLiteral("  ")) + cut(place.file, 40)
                 + (place.line > 0 ? QStringLiteral(":") + QString::number(place.line) : QString());
         lines << line(name, cut(results.scenes[std::size_t(row.scene)].label, sceneWidth),
-                      gradeVerdictName(row.verdict), psnrText(row), what);
+                      verdictName(row.verdict), psnrText(row), what);
     }
     return lines.join(QLatin1Char('\n'));
 }

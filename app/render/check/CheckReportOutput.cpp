@@ -20,24 +20,15 @@ struct CheckWords {
     Q_DECLARE_TR_FUNCTIONS(phonglab::CheckReportOutput)
 };
 
-// The verdict as JSON says it ("pass", "fail", "error").
-QString verdictName(CheckOutcome::Verdict v)
-{
-    switch (v) {
-    case CheckOutcome::Verdict::Pass: return QStringLiteral("pass");
-    case CheckOutcome::Verdict::Fail: return QStringLiteral("fail");
-    case CheckOutcome::Verdict::Error: break;
-    }
-    return QStringLiteral("error");
-}
-
 // The verdict as the text output says it.
-QString verdictWord(CheckOutcome::Verdict v)
+QString verdictWord(Verdict v)
 {
     switch (v) {
-    case CheckOutcome::Verdict::Pass: return CheckWords::tr("pass");
-    case CheckOutcome::Verdict::Fail: return CheckWords::tr("fail");
-    case CheckOutcome::Verdict::Error: break;
+    case Verdict::Pass: return CheckWords::tr("pass");
+    case Verdict::Fail: return CheckWords::tr("fail");
+    case Verdict::Error: break;
+    case Verdict::Timeout: return CheckWords::tr("timeout");
+    case Verdict::Crash: return CheckWords::tr("crash");
     }
     return CheckWords::tr("error");
 }
@@ -129,12 +120,11 @@ QJsonArray diagnosisJson(const CheckFindings &outcome)
 // likely lines: `together` {keys, explains, forms, lines, beyond_limit},
 // where it explains enough (MistakeDiagnosis::togetherExplains); below that
 // the closest set is `partial`, of the same shape, and `together` is null.
-QJsonValue setJson(CheckOutcome::Verdict verdict, const CheckFindings &outcome, bool explaining)
+QJsonValue setJson(Verdict verdict, const CheckFindings &outcome, bool explaining)
 {
     const MistakeDiagnosis &d = outcome.report.diagnosis;
     const MistakeSet &set = d.together;
-    if (verdict != CheckOutcome::Verdict::Fail || set.variants.empty()
-        || d.togetherExplains() != explaining)
+    if (verdict != Verdict::Fail || set.variants.empty() || d.togetherExplains() != explaining)
         return QJsonValue();
     QJsonArray keys, forms, lines;
     for (MistakeVariant v : set.variants) {
@@ -226,9 +216,9 @@ QString precisionText(const PrecisionFinding &p)
                                             : QStringLiteral("∞"));
 }
 
-QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findings)
+QJsonObject checkJson(Verdict verdict, const CheckFindings &findings)
 {
-    const bool checked = verdict != CheckOutcome::Verdict::Error;
+    const bool checked = verdict != Verdict::Error;
     const ImageComparison &c = findings.report.comparison;
     QJsonObject o;
     o.insert(QStringLiteral("verdict"), verdictName(verdict));
@@ -296,7 +286,7 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
         out << CheckWords::tr("note: %1").arg(note);
     if (const QString precision = precisionText(outcome.precision); !precision.isEmpty())
         out << precision;
-    if (outcome.verdict == CheckOutcome::Verdict::Error) {
+    if (outcome.verdict == Verdict::Error) {
         out << CheckWords::tr("check: error");
         return out.join(QLatin1Char('\n'));
     }
@@ -312,7 +302,7 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
                .arg(r.toleranceSteps)
                .arg(sentenceNumber(100.0 * r.badFraction(), 'f', 2))
                .arg(c.pixelsCompared);
-    if (outcome.verdict == CheckOutcome::Verdict::Pass && r.equation == PhongEquation::Slide)
+    if (outcome.verdict == Verdict::Pass && r.equation == PhongEquation::Slide)
         out << CheckWords::tr("equation: the slide's, taken literally (a highlight even where "
                               "N·L <= 0), which is right too");
     if (c.pixelsCompared > 0 && c.maxError > 0)
@@ -321,7 +311,7 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
                    .arg(c.worstPixel.y())
                    .arg(objectLabel(scene, r.worstObject));
     const MistakeDiagnosis &d = r.diagnosis;
-    if (outcome.verdict == CheckOutcome::Verdict::Fail) {
+    if (outcome.verdict == Verdict::Fail) {
         out << CheckWords::tr("diagnosis:");
         if (d.unexplained()) {
             out << CheckWords::tr(

@@ -1,6 +1,7 @@
 #pragma once
 #include "core/check/MistakeSourceLines.h"
 #include "core/check/ShaderCheck.h"
+#include "core/check/Verdict.h"
 #include "core/scene/Scene.h"
 #include "render/program/ShaderDiagnostic.h"
 
@@ -52,15 +53,10 @@ struct CheckFindings {
 
 // `check`'s: the findings and their verdict.
 struct CheckOutcome : CheckFindings {
-    enum class Verdict {
-        Pass,
-        Fail,
-        Error
-    };
-    Verdict verdict = Verdict::Error;
+    Verdict verdict = Verdict::Error; // Pass, Fail or Error
 };
 
-QJsonObject checkJson(CheckOutcome::Verdict verdict, const CheckFindings &findings);
+QJsonObject checkJson(Verdict verdict, const CheckFindings &findings);
 // `precision`, and read back (grade's child hands it to its parent).
 QJsonObject precisionJson(const PrecisionFinding &precision);
 PrecisionFinding precisionFromJson(const QJsonObject &json);

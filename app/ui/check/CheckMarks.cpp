@@ -48,7 +48,7 @@ CheckMarks checkMarks(const CheckedFrame &result)
                 into.push_back(mark(
                     line,
                     QObject::tr("%1: choose what it means in Uniforms").arg(unboundSentence(u))));
-        if (outcome.verdict != CheckOutcome::Verdict::Fail)
+        if (outcome.verdict != Verdict::Fail)
             continue;
         for (ShaderMistake m : namedMistakes(outcome.report.diagnosis))
             for (const SourceLine &l : mistakeSourceLines(m, {stage}))

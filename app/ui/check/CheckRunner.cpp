@@ -225,8 +225,7 @@ void CheckRunner::Cache::compare(const Request &request, const std::atomic<bool>
         outcome.errors.push_back(d);
         return;
     }
-    outcome.verdict =
-        outcome.report.passed() ? CheckOutcome::Verdict::Pass : CheckOutcome::Verdict::Fail;
+    outcome.verdict = outcome.report.passed() ? Verdict::Pass : Verdict::Fail;
     if (request.frame.sources)
         outcome.precision = precisionOf(request.frame, outcome.stages, result.scene, result.yours);
     // The exact image of the equation the frame was checked by: the slide's,

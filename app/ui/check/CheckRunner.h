@@ -34,7 +34,7 @@ struct CheckedFrame {
     double milliseconds = 0.0;           // request to result
 
     const CheckReport &report() const { return outcome.report; }
-    bool hasVerdict() const { return outcome.verdict != CheckOutcome::Verdict::Error; }
+    bool hasVerdict() const { return outcome.verdict != Verdict::Error; }
 };
 
 // Runs checks off the GUI thread, one at a time; while one runs only the

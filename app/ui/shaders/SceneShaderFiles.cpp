@@ -66,9 +66,8 @@ SceneShaderFiles::Opened SceneShaderFiles::open(const Scene &scene)
         const QString path = scene.resolveShaderPath(name);
         if (name.isEmpty() || (!QFileInfo(path).isFile() && !isShaderLocator(path)))
             continue;
-        // One at a time, on its stage's tab, so any suffix goes to the right stage.
-        m_dock->tabs()->setCurrentWidget(m_dock->editor(stage));
-        if (const Result<> read = m_dock->openFiles({path}))
+        // One at a time, each into its stage, whatever its suffix.
+        if (const Result<> read = m_dock->openFile(stage, path))
             opened = true;
         else
             missing << tr("shaders.%1: %2").arg(stageName(stage), read.error());

@@ -9,11 +9,9 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStyle>
@@ -78,6 +76,10 @@ ShaderDock::ShaderDock(QWidget *parent)
     m_tabs->addTab(m_vertex, stageTitle(ShaderStage::Vertex));
     m_tabs->addTab(m_fragment, stageTitle(ShaderStage::Fragment));
     m_tabs->setCurrentWidget(m_fragment); // where most of the lighting lives
+    m_tabs->setObjectName(QStringLiteral("shaderTabs"));
+    m_shadingMethods->setObjectName(QStringLiteral("shadingMethodBox"));
+    m_status->setObjectName(QStringLiteral("shaderStatus"));
+    m_diagnostics->setObjectName(QStringLiteral("diagnosticList"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_status->setWordWrap(true);
     m_files->setDialogParent(this);
@@ -133,26 +135,27 @@ QWidget *ShaderDock::createToolBar()
 
     // The shortcut works wherever the focus is inside the dock, the editors
     // included (QScintilla does not bind F5).
-    m_compileAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Compile"), this);
-    m_compileAction->setShortcut(QKeySequence(Qt::Key_F5));
-    m_compileAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    m_compileAction->setToolTip(tr("Compile and link both stages (F5)"));
-    connect(m_compileAction, &QAction::triggered, this, &ShaderDock::compileRequested);
-    addAction(m_compileAction);
-    bar->addAction(m_compileAction);
-    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_compileAction)))
+    auto *compile = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Compile"), this);
+    compile->setObjectName(QStringLiteral("compileAction"));
+    compile->setShortcut(QKeySequence(Qt::Key_F5));
+    compile->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    compile->setToolTip(tr("Compile and link both stages (F5)"));
+    connect(compile, &QAction::triggered, this, &ShaderDock::compileRequested);
+    addAction(compile);
+    bar->addAction(compile);
+    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(compile)))
         button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     bar->addSeparator();
 
     // Open and Save have no shortcuts: Ctrl+O / Ctrl+S belong to the window's
     // scene commands, and the same keys in two contexts would be ambiguous.
     bar->addAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("Open…"), this,
-                   &ShaderDock::chooseAndOpen)
+                   &ShaderDock::openRequested)
         ->setToolTip(tr("Open a shader, or a .vert/.frag pair"));
     bar->addAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("Save"), this,
-                   &ShaderDock::saveCurrent)
+                   &ShaderDock::saveRequested)
         ->setToolTip(tr("Save the current tab (shipped shaders are saved as a user copy)"));
-    bar->addAction(tr("Save As…"), this, &ShaderDock::chooseAndSaveAsCurrent)
+    bar->addAction(tr("Save As…"), this, &ShaderDock::saveAsRequested)
         ->setToolTip(tr("Save the current tab under another name"));
     return bar;
 }
@@ -281,11 +284,6 @@ void ShaderDock::offerToApplyAnyway(const QString &text)
     m_applyAnyway->show();
 }
 
-QString ShaderDock::shaderBoxText() const
-{
-    return m_shadingMethods->currentText();
-}
-
 // The box above the editor names what the editor holds: a shading
 // method's shipped shaders, or the student's own by its file.
 void ShaderDock::showWhoseShaders()
@@ -347,7 +345,21 @@ Result<> ShaderDock::openFiles(const QStringList &paths)
     }
     if (opened.size() == 2 && opened[0].first == opened[1].first)
         return fail(tr("Both files are %1 shaders.").arg(stageName(opened[0].first)));
+    showOpened(opened);
+    return {};
+}
 
+Result<> ShaderDock::openFile(ShaderStage stage, const QString &path)
+{
+    Result<ShaderSource> source = ShaderSource::forEditing(path);
+    if (!source)
+        return fail(source.error());
+    showOpened({{stage, *source}});
+    return {};
+}
+
+void ShaderDock::showOpened(const QList<std::pair<ShaderStage, ShaderSource>> &opened)
+{
     const bool wasSetting = std::exchange(m_settingText, true);
     for (const auto &[stage, source] : opened) {
         editor(stage)->clearDiagnostics();
@@ -362,7 +374,6 @@ Result<> ShaderDock::openFiles(const QStringList &paths)
     for (const auto &entry : opened)
         emit textEdited(entry.first);
     emit filesChanged();
-    return {};
 }
 
 Result<> ShaderDock::save(ShaderStage stage)
@@ -381,77 +392,6 @@ Result<> ShaderDock::saveAs(ShaderStage stage, const QString &path)
     return saved;
 }
 
-void ShaderDock::chooseAndOpen()
-{
-    const QString current = filePath(currentStage());
-    const QString folder = QFileInfo(current).isAbsolute() ? QFileInfo(current).absolutePath()
-                                                           : ShaderFileSet::userFolder();
-    const QStringList paths =
-        QFileDialog::getOpenFileNames(this, tr("Open Shaders"), folder, shaderFileFilter());
-    if (paths.isEmpty())
-        return;
-    QList<ShaderStage> replaced;
-    for (const QString &path : paths)
-        replaced << stageFromSuffix(path).value_or(currentStage());
-    if (!confirmDiscard(replaced))
-        return;
-    if (const Result<> opened = openFiles(paths); !opened)
-        warn(opened.error());
-}
-
-void ShaderDock::saveCurrent()
-{
-    const ShaderStage stage = currentStage();
-    const Result<> saved = save(stage);
-    if (saved)
-        return;
-    if (!isShaderLocator(filePath(stage))) {
-        warn(saved.error());
-        return;
-    }
-    // A shader the page or script cannot take back as it is: say why, and
-    // offer a file of its own.
-    QMessageBox box(QMessageBox::Warning, tr("Shaders"), saved.error(), QMessageBox::Cancel, this);
-    QPushButton *saveAs = box.addButton(tr("Save As…"), QMessageBox::AcceptRole);
-    box.setDefaultButton(saveAs);
-    box.exec();
-    if (box.clickedButton() == saveAs)
-        chooseAndSaveAsCurrent();
-}
-
-void ShaderDock::chooseAndSaveAsCurrent()
-{
-    const ShaderStage stage = currentStage();
-    QDir().mkpath(ShaderFileSet::userFolder());
-    // A project's shader ("index.html#vsSource") suggests a file of its own.
-    const QString path0 = filePath(stage);
-    const QString name = isShaderLocator(path0) ? path0.section(QLatin1Char('#'), -1)
-            + (stage == ShaderStage::Vertex ? QStringLiteral(".vert") : QStringLiteral(".frag"))
-                                                : QFileInfo(path0).fileName();
-    const QString suggested = QDir(ShaderFileSet::userFolder()).filePath(name);
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Shader As"), suggested, shaderFileFilter());
-    if (path.isEmpty())
-        return;
-    if (const Result<> saved = saveAs(stage, path); !saved)
-        warn(saved.error());
-}
-
-bool ShaderDock::confirmDiscard(const QList<ShaderStage> &stages)
-{
-    QStringList dirty;
-    for (ShaderStage stage : stages)
-        if (isDirty(stage))
-            dirty << QFileInfo(filePath(stage)).fileName();
-    if (dirty.isEmpty())
-        return true;
-    const auto answer = QMessageBox::question(
-        this, tr("Unsaved changes"),
-        tr("%1 has unsaved changes. Discard them?").arg(dirty.join(tr(" and "))),
-        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
-    return answer == QMessageBox::Discard;
-}
-
 void ShaderDock::updateTab(ShaderStage stage)
 {
     const QString path = filePath(stage);
@@ -464,11 +404,6 @@ void ShaderDock::updateTab(ShaderStage stage)
     if (m_files->isShipped(path))
         tip += tr("\nShipped with PhongLab: edits go to a user copy.");
     m_tabs->setTabToolTip(index, tip);
-}
-
-void ShaderDock::warn(const QString &message)
-{
-    QMessageBox::warning(this, tr("Shaders"), message);
 }
 
 } // namespace phonglab

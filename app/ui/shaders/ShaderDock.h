@@ -5,9 +5,9 @@
 #include "render/program/ShaderSource.h"
 
 #include <QDockWidget>
+#include <utility>
 #include <vector>
 
-class QAction;
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -24,6 +24,9 @@ class ShaderFileSet;
 // compiler's messages. It compiles nothing itself: it reports edits and
 // requests, and shows what the owner sends back. Nothing here does work
 // per keystroke beyond the editor's own; the owner debounces compiles.
+// It opens no dialog either: Open, Save and Save As are requests, answered
+// by the File menu and ShaderFileDialogs, so tests drive the dock without one.
+// Tests reach its widgets by their object names (see the constructor).
 class ShaderDock : public QDockWidget
 {
     Q_OBJECT
@@ -53,14 +56,14 @@ public:
     // A program kept out for its frame time: `text` as a failed status,
     // with an "Apply anyway" button beside it (until the next status).
     void offerToApplyAnyway(const QString &text);
-    QPushButton *applyAnywayButton() const { return m_applyAnyway; }
     // Selects `method` in the shading method box without emitting shadingMethodRequested().
     void selectShadingMethod(ShadingMethod method);
-    QString shaderBoxText() const; // what the box above the editor says
 
     // Without dialogs (tests, command line). openFiles() takes one file or a
     // .vert/.frag pair; the stage comes from the suffix, else the current tab.
     Result<> openFiles(const QStringList &paths);
+    // `path` into `stage`'s editor, whatever its suffix says.
+    Result<> openFile(ShaderStage stage, const QString &path);
     Result<> save(ShaderStage stage);
     Result<> saveAs(ShaderStage stage, const QString &path);
     // Shows `stage`'s editor with the cursor at the
@@ -70,22 +73,16 @@ public:
     ShaderEditor *editor(ShaderStage stage) const;
     ShaderStage currentStage() const;
     ShaderFileSet *files() const { return m_files; }
-    DiagnosticList *diagnosticList() const { return m_diagnostics; }
-    QTabWidget *tabs() const { return m_tabs; }
-    QComboBox *shadingMethodBox() const { return m_shadingMethods; }
-    QLabel *statusLabel() const { return m_status; }
-    QAction *compileAction() const { return m_compileAction; }
-
-public slots:
-    void chooseAndOpen();
-    void saveCurrent();
-    void chooseAndSaveAsCurrent();
 
 signals:
     // A stage's text changed other than through setSources(): typing, a
     // reload from disk, Open. Emitted per change; debounce before compiling.
     void textEdited(phonglab::ShaderStage stage);
     void compileRequested();
+    // The tool bar's Open…, Save and Save As… (the current tab's stage).
+    void openRequested();
+    void saveRequested();
+    void saveAsRequested();
     void shadingMethodRequested(phonglab::ShadingMethod method);
     // A stage now shows another file (Open, Save As, a user copy of a
     // shipped shader) or its file was reloaded from disk.
@@ -99,9 +96,8 @@ private:
     void connectFiles();
     void showWhoseShaders();
     void setEditorCode(ShaderStage stage, const QByteArray &code);
+    void showOpened(const QList<std::pair<ShaderStage, ShaderSource>> &opened);
     void updateTab(ShaderStage stage);
-    void warn(const QString &message);
-    bool confirmDiscard(const QList<ShaderStage> &stages);
 
     ShaderEditor *m_vertex = nullptr;
     ShaderEditor *m_fragment = nullptr;
@@ -112,8 +108,7 @@ private:
     DiagnosticList *m_diagnostics = nullptr;
     ShaderFileSet *m_files = nullptr;
     ShadingMethod m_method = ShadingMethod::Phong; // the scene's, shown when no own shaders are
-    QAction *m_compileAction = nullptr;
-    bool m_settingText = false; // our own setCode(): not an edit
+    bool m_settingText = false;                    // our own setCode(): not an edit
 };
 
 } // namespace phonglab

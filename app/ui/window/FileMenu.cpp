@@ -40,6 +40,8 @@ FileMenu::FileMenu(MainWindow *window, QMenu *menu)
     QAction *openMesh = menu->addAction(tr("Open &Mesh…"), this, &FileMenu::chooseAndOpenMeshes);
     openMesh->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
     menu->addAction(tr("Open S&hader…"), this, &FileMenu::chooseAndOpenShaders);
+    connect(window->shaderDock(), &ShaderDock::openRequested, this,
+            &FileMenu::chooseAndOpenShaders);
     menu->addAction(tr("Open &Project…"), this, &FileMenu::chooseAndOpenProject);
     menu->addAction(tr("Open Project &Folder…"), this, &FileMenu::chooseAndOpenProjectFolder);
     menu->addAction(tr("&Run the Page…"), this, &FileMenu::runThePage)

@@ -30,7 +30,8 @@ private:
     void chooseAndOpenScene();
     void chooseAndOpenMeshes();
     // A WebGL project's page or script: its program that lights (asked
-    // which where there are several) into the Shaders dock.
+    // which where there are several) into the Shaders dock. The dock's own
+    // Open… comes here too: one way to open shaders.
     void chooseAndOpenShaders();
     void chooseAndOpenProject();
     void chooseAndOpenProjectFolder();

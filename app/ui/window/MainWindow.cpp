@@ -20,6 +20,7 @@
 #include "ui/scene/SceneLoadJob.h"
 #include "ui/shaders/LiveShaderController.h"
 #include "ui/shaders/ShaderDock.h"
+#include "ui/shaders/ShaderFileDialogs.h"
 #include "ui/uniforms/UniformsDock.h"
 #include "ui/viewport/DetailLevelLabel.h"
 #include "ui/viewport/FrameStatsLabel.h"
@@ -123,6 +124,7 @@ MainWindow::~MainWindow()
 void MainWindow::createShaderDock()
 {
     m_liveShaders = new LiveShaderController(m_shaderDock, m_viewport, this);
+    new ShaderFileDialogs(m_shaderDock);
     connect(m_liveShaders, &LiveShaderController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
     connect(m_viewport, &Viewport::sceneChanged, this,
