@@ -13,8 +13,7 @@
 // getters for tests.
 namespace phonglab::test {
 
-template <class Part>
-Part *partNamed(const QObject *owner, const char *name)
+template <class Part> Part *partNamed(const QObject *owner, const char *name)
 {
     Part *part = owner->findChild<Part *>(QLatin1String(name));
     if (!part)
