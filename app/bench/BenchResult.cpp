@@ -98,61 +98,78 @@ struct Record {
     QStringList fields;
 };
 
+// Where splitRecords() has got to in the text.
+struct CsvCursor {
+    const QString &text;
+    qsizetype i = 0;
+    int line = 1;
+};
+
+// One step inside a quoted field: "" is a quote, a lone " ends the quoting.
+// Returns whether the field is still quoted.
+bool readQuotedChar(CsvCursor &at, QString &field)
+{
+    const QString &text = at.text;
+    const qsizetype n = text.size();
+    const QChar c = text.at(at.i);
+    if (c == QLatin1Char('"')) {
+        if (at.i + 1 < n && text.at(at.i + 1) == QLatin1Char('"')) {
+            field += QLatin1Char('"');
+            at.i += 2;
+            return true;
+        }
+        ++at.i;
+        return false;
+    }
+    if (c == QLatin1Char('\n'))
+        ++at.line;
+    field += c;
+    ++at.i;
+    return true;
+}
+
 // RFC 4180: fields separated by commas, records by \n or \r\n, quoted fields
 // may hold commas, quotes ("") and line breaks. Blank lines are skipped.
 bool splitRecords(const QString &text, std::vector<Record> *records, int *badLine)
 {
-    int line = 1;
-    qsizetype i = 0;
+    CsvCursor at{text};
     const qsizetype n = text.size();
-    while (i < n) {
+    while (at.i < n) {
         Record record;
-        record.line = line;
+        record.line = at.line;
         QString field;
         bool quoted = false;
         bool recordDone = false;
         bool structure = false; // saw a comma or a quote: not a blank line
-        while (i < n && !recordDone) {
-            const QChar c = text.at(i);
+        while (at.i < n && !recordDone) {
             if (quoted) {
-                if (c == QLatin1Char('"')) {
-                    if (i + 1 < n && text.at(i + 1) == QLatin1Char('"')) {
-                        field += QLatin1Char('"');
-                        i += 2;
-                    } else {
-                        quoted = false;
-                        ++i;
-                    }
-                } else {
-                    if (c == QLatin1Char('\n'))
-                        ++line;
-                    field += c;
-                    ++i;
-                }
+                quoted = readQuotedChar(at, field);
                 continue;
             }
+            const QChar c = text.at(at.i);
             if (c == QLatin1Char('"')) {
                 if (!field.isEmpty()) { // a quote inside an unquoted field
-                    *badLine = line;
+                    *badLine = at.line;
                     return false;
                 }
                 quoted = true;
                 structure = true;
-                ++i;
+                ++at.i;
             } else if (c == QLatin1Char(',')) {
                 record.fields.append(field);
                 field.clear();
                 structure = true;
-                ++i;
+                ++at.i;
             } else if (c == QLatin1Char('\r') || c == QLatin1Char('\n')) {
-                if (c == QLatin1Char('\r') && i + 1 < n && text.at(i + 1) == QLatin1Char('\n'))
-                    ++i;
-                ++i;
-                ++line;
+                if (c == QLatin1Char('\r') && at.i + 1 < n
+                    && text.at(at.i + 1) == QLatin1Char('\n'))
+                    ++at.i;
+                ++at.i;
+                ++at.line;
                 recordDone = true;
             } else {
                 field += c;
-                ++i;
+                ++at.i;
             }
         }
         if (quoted) { // an opening quote never closed
@@ -310,6 +327,88 @@ QString benchRowsToCsv(const std::vector<BenchRow> &rows)
     return out;
 }
 
+namespace {
+
+// Per known column, the field it is in (-1: not in the file).
+struct ColumnIndex {
+    int at[ColumnCount];
+};
+
+// Header: find each known column by name; unknown ones are skipped.
+Result<ColumnIndex> findColumns(const Record &header, const QString &sourceName)
+{
+    ColumnIndex index;
+    std::fill(std::begin(index.at), std::end(index.at), -1);
+    for (int f = 0; f < header.fields.size(); ++f) {
+        const QString name = header.fields.at(f).trimmed();
+        for (int c = 0; c < ColumnCount; ++c) {
+            if (name == QLatin1String(kColumnNames[c])) {
+                if (index.at[c] != -1)
+                    return fail(BenchResultWords::tr("%1 line %2: column '%3' appears twice")
+                                    .arg(sourceName)
+                                    .arg(header.line)
+                                    .arg(name));
+                index.at[c] = f;
+            }
+        }
+    }
+    QStringList missing;
+    for (int c = 0; c < ColumnCount; ++c)
+        if (index.at[c] == -1 && c != ColObject)
+            missing.append(QString::fromLatin1(kColumnNames[c]));
+    if (!missing.isEmpty())
+        return fail((missing.size() == 1 ? BenchResultWords::tr("%1 line %2: missing column %3")
+                                         : BenchResultWords::tr("%1 line %2: missing columns %3"))
+                        .arg(sourceName)
+                        .arg(header.line)
+                        .arg(missing.join(QStringLiteral(", "))));
+    return index;
+}
+
+Result<BenchRow> parseRow(const Record &record, const Record &header, const ColumnIndex &index,
+                          const QString &sourceName)
+{
+    const FieldReader reader(sourceName, record.line);
+    if (record.fields.size() != header.fields.size())
+        return fail(BenchResultWords::tr("%1: expected %2 fields as in the header, found %3")
+                        .arg(reader.where())
+                        .arg(header.fields.size())
+                        .arg(record.fields.size()));
+    auto field = [&](Column c) { return record.fields.at(index.at[c]); };
+    auto name = [](Column c) { return QString::fromLatin1(kColumnNames[c]); };
+
+    BenchRow row;
+    row.scene = field(ColScene);
+    row.method = field(ColMethod).trimmed();
+    if (index.at[ColObject] != -1)
+        row.object = field(ColObject);
+    const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail)
+        && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles)
+        && reader.readInt(name(ColLights), field(ColLights), &row.lights)
+        && reader.readBool(name(ColSceneLights), field(ColSceneLights), &row.sceneLights)
+        && reader.readDouble(name(ColFrameMs), field(ColFrameMs), &row.frameMs)
+        && reader.readDouble(name(ColFrameMsP90), field(ColFrameMsP90), &row.frameMsP90)
+        && reader.readDouble(name(ColCpuSubmitMs), field(ColCpuSubmitMs), &row.cpuSubmitMs)
+        && reader.readDouble(name(ColGpuMs), field(ColGpuMs), &row.gpuMs)
+        && reader.readInt(name(ColFrames), field(ColFrames), &row.frames)
+        && reader.readDouble(name(ColPsnr), field(ColPsnr), &row.psnr)
+        && reader.readDouble(name(ColRmse), field(ColRmse), &row.rmse)
+        && reader.readInt(name(ColMaxError), field(ColMaxError), &row.maxError)
+        && reader.readDouble(name(ColSpecPsnr), field(ColSpecPsnr), &row.specularPsnr)
+        && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse)
+        && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError)
+        && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels)
+        && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared), &row.pixelsCompared)
+        && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors), &row.coverageErrors);
+    if (!ok)
+        return fail(reader.error());
+    if (row.method.isEmpty())
+        return fail(BenchResultWords::tr("%1: method is empty").arg(reader.where()));
+    return row;
+}
+
+} // namespace
+
 Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QString &sourceName)
 {
     QString body = text;
@@ -326,77 +425,18 @@ Result<std::vector<BenchRow>> benchRowsFromCsv(const QString &text, const QStrin
             BenchResultWords::tr("%1: empty file, expected a header line starting with '%2'")
                 .arg(sourceName, QString::fromLatin1(kColumnNames[0])));
 
-    // Header: find each known column by name; unknown ones are skipped.
     const Record &header = records.front();
-    int index[ColumnCount];
-    std::fill(std::begin(index), std::end(index), -1);
-    for (int f = 0; f < header.fields.size(); ++f) {
-        const QString name = header.fields.at(f).trimmed();
-        for (int c = 0; c < ColumnCount; ++c) {
-            if (name == QLatin1String(kColumnNames[c])) {
-                if (index[c] != -1)
-                    return fail(BenchResultWords::tr("%1 line %2: column '%3' appears twice")
-                                    .arg(sourceName)
-                                    .arg(header.line)
-                                    .arg(name));
-                index[c] = f;
-            }
-        }
-    }
-    QStringList missing;
-    for (int c = 0; c < ColumnCount; ++c)
-        if (index[c] == -1 && c != ColObject)
-            missing.append(QString::fromLatin1(kColumnNames[c]));
-    if (!missing.isEmpty())
-        return fail((missing.size() == 1 ? BenchResultWords::tr("%1 line %2: missing column %3")
-                                         : BenchResultWords::tr("%1 line %2: missing columns %3"))
-                        .arg(sourceName)
-                        .arg(header.line)
-                        .arg(missing.join(QStringLiteral(", "))));
+    const Result<ColumnIndex> index = findColumns(header, sourceName);
+    if (!index)
+        return fail(index.error());
 
     std::vector<BenchRow> parsed;
     parsed.reserve(records.size() - 1);
     for (size_t r = 1; r < records.size(); ++r) {
-        const Record &record = records[r];
-        const FieldReader reader(sourceName, record.line);
-        if (record.fields.size() != header.fields.size())
-            return fail(BenchResultWords::tr("%1: expected %2 fields as in the header, found %3")
-                            .arg(reader.where())
-                            .arg(header.fields.size())
-                            .arg(record.fields.size()));
-        auto field = [&](Column c) { return record.fields.at(index[c]); };
-        auto name = [](Column c) { return QString::fromLatin1(kColumnNames[c]); };
-
-        BenchRow row;
-        row.scene = field(ColScene);
-        row.method = field(ColMethod).trimmed();
-        if (index[ColObject] != -1)
-            row.object = field(ColObject);
-        const bool ok = reader.readDouble(name(ColDetail), field(ColDetail), &row.detail)
-            && reader.readInt64(name(ColTriangles), field(ColTriangles), &row.triangles)
-            && reader.readInt(name(ColLights), field(ColLights), &row.lights)
-            && reader.readBool(name(ColSceneLights), field(ColSceneLights), &row.sceneLights)
-            && reader.readDouble(name(ColFrameMs), field(ColFrameMs), &row.frameMs)
-            && reader.readDouble(name(ColFrameMsP90), field(ColFrameMsP90), &row.frameMsP90)
-            && reader.readDouble(name(ColCpuSubmitMs), field(ColCpuSubmitMs), &row.cpuSubmitMs)
-            && reader.readDouble(name(ColGpuMs), field(ColGpuMs), &row.gpuMs)
-            && reader.readInt(name(ColFrames), field(ColFrames), &row.frames)
-            && reader.readDouble(name(ColPsnr), field(ColPsnr), &row.psnr)
-            && reader.readDouble(name(ColRmse), field(ColRmse), &row.rmse)
-            && reader.readInt(name(ColMaxError), field(ColMaxError), &row.maxError)
-            && reader.readDouble(name(ColSpecPsnr), field(ColSpecPsnr), &row.specularPsnr)
-            && reader.readDouble(name(ColSpecRmse), field(ColSpecRmse), &row.specularRmse)
-            && reader.readInt(name(ColSpecMaxError), field(ColSpecMaxError), &row.specularMaxError)
-            && reader.readInt64(name(ColSpecPixels), field(ColSpecPixels), &row.specularPixels)
-            && reader.readInt64(name(ColPixelsCompared), field(ColPixelsCompared),
-                                &row.pixelsCompared)
-            && reader.readInt64(name(ColCoverageErrors), field(ColCoverageErrors),
-                                &row.coverageErrors);
-        if (!ok)
-            return fail(reader.error());
-        if (row.method.isEmpty())
-            return fail(BenchResultWords::tr("%1: method is empty").arg(reader.where()));
-        parsed.push_back(std::move(row));
+        Result<BenchRow> row = parseRow(records[r], header, *index, sourceName);
+        if (!row)
+            return fail(row.error());
+        parsed.push_back(std::move(*row));
     }
     return parsed;
 }

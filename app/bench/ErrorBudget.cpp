@@ -158,105 +158,98 @@ std::optional<ErrorBudget> ErrorBudget::parse(const QString &text)
     return std::nullopt;
 }
 
-BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+namespace {
+
+int baselineIndex(const std::vector<BenchRow> &rows)
 {
-    BudgetFit fit;
     const int n = int(rows.size());
+    for (int i = 0; i < n; ++i)
+        if (rows[i].isBaseline())
+            return i;
+    return -1;
+}
 
-    for (int i = 0; i < n; ++i) {
-        if (rows[i].isBaseline()) {
-            fit.baseline = i;
-            break;
-        }
-    }
+// One object's rows (the per-object fit's) are no choice for the scene.
+bool isCandidate(const BenchRow &row, const ErrorBudget &budget)
+{
+    return row.isWholeScene() && budget.accepts(row) && std::isfinite(row.frameMs);
+}
 
+// Between two rows equally fast: the fewer triangles, then the lower error,
+// then the cheaper method.
+bool isBetterChoice(const BenchRow &row, const BenchRow &best)
+{
+    if (row.triangles != best.triangles)
+        return row.triangles < best.triangles;
+    if (row.rmse != best.rmse && !std::isnan(row.rmse) && !std::isnan(best.rmse))
+        return row.rmse < best.rmse; // as cheap either way: the accuracy is free
+    if (methodCost(row.method) != methodCost(best.method))
+        return methodCost(row.method) < methodCost(best.method);
+    if (row.method != best.method)
+        return row.method < best.method;
+    return row.frameMs < best.frameMs;
+}
+
+// The index of the chosen row, -1 when no row meets the budget.
+int chooseCheapest(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+{
+    const int n = int(rows.size());
     // The fastest accepted time; every accepted row within kTimeTieFraction
     // of it counts as equally fast.
     double fastest = std::numeric_limits<double>::infinity();
-    // One object's rows (the per-object fit's) are no choice for the scene.
-    const auto candidate = [&](const BenchRow &row) {
-        return row.isWholeScene() && budget.accepts(row) && std::isfinite(row.frameMs);
-    };
     for (int i = 0; i < n; ++i)
-        if (candidate(rows[i]))
+        if (isCandidate(rows[i], budget))
             fastest = std::min(fastest, rows[i].frameMs);
+    if (!std::isfinite(fastest))
+        return -1;
 
-    if (std::isfinite(fastest)) {
-        const double tieLimit = fastest + std::abs(fastest) * kTimeTieFraction;
-        for (int i = 0; i < n; ++i) {
-            const BenchRow &row = rows[i];
-            if (!candidate(row) || row.frameMs > tieLimit)
+    int chosen = -1;
+    const double tieLimit = fastest + std::abs(fastest) * kTimeTieFraction;
+    for (int i = 0; i < n; ++i) {
+        const BenchRow &row = rows[i];
+        if (!isCandidate(row, budget) || row.frameMs > tieLimit)
+            continue;
+        if (chosen < 0 || isBetterChoice(row, rows[chosen]))
+            chosen = i;
+    }
+    return chosen;
+}
+
+// The row that came closest to the budget, -1 when no row was measured.
+int closestToBudget(const std::vector<BenchRow> &rows, ErrorBudget::Kind kind)
+{
+    int bestIndex = -1;
+    const int n = int(rows.size());
+    for (int i = 0; i < n; ++i) {
+        const BenchRow &row = rows[i];
+        if (kind == ErrorBudget::Kind::MaxError) {
+            if (row.maxError < 0)
                 continue;
-            if (fit.chosen < 0) {
-                fit.chosen = i;
+            if (bestIndex < 0 || row.maxError < rows[bestIndex].maxError)
+                bestIndex = i;
+        } else {
+            if (std::isnan(row.psnr))
                 continue;
-            }
-            const BenchRow &best = rows[fit.chosen];
-            bool better = false;
-            if (row.triangles != best.triangles)
-                better = row.triangles < best.triangles;
-            else if (row.rmse != best.rmse && !std::isnan(row.rmse) && !std::isnan(best.rmse))
-                better = row.rmse < best.rmse; // as cheap either way: the accuracy is free
-            else if (methodCost(row.method) != methodCost(best.method))
-                better = methodCost(row.method) < methodCost(best.method);
-            else if (row.method != best.method)
-                better = row.method < best.method;
-            else
-                better = row.frameMs < best.frameMs;
-            if (better)
-                fit.chosen = i;
+            if (bestIndex < 0 || row.psnr > rows[bestIndex].psnr)
+                bestIndex = i;
         }
     }
+    return bestIndex;
+}
 
-    if (fit.chosen < 0) {
-        // Nothing fits: say so, and how close the best measurement came.
-        int bestIndex = -1;
-        for (int i = 0; i < n; ++i) {
-            const BenchRow &row = rows[i];
-            if (budget.kind == ErrorBudget::Kind::MaxError) {
-                if (row.maxError < 0)
-                    continue;
-                if (bestIndex < 0 || row.maxError < rows[bestIndex].maxError)
-                    bestIndex = i;
-            } else {
-                if (std::isnan(row.psnr))
-                    continue;
-                if (bestIndex < 0 || row.psnr > rows[bestIndex].psnr)
-                    bestIndex = i;
-            }
-        }
-        if (bestIndex < 0)
-            fit.summary =
-                ErrorBudgetWords::tr("nothing meets %1: no measured rows").arg(budget.describe());
-        else
-            fit.summary = ErrorBudgetWords::tr("nothing meets %1: the best measured was %2 (%3)")
-                              .arg(budget.describe(), rowError(rows[bestIndex], budget.kind),
-                                   rowLabel(rows[bestIndex]));
-        return fit;
-    }
+// Nothing fits: say so, and how close the best measurement came.
+QString nothingFitsSummary(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+{
+    const int bestIndex = closestToBudget(rows, budget.kind);
+    if (bestIndex < 0)
+        return ErrorBudgetWords::tr("nothing meets %1: no measured rows").arg(budget.describe());
+    return ErrorBudgetWords::tr("nothing meets %1: the best measured was %2 (%3)")
+        .arg(budget.describe(), rowError(rows[bestIndex], budget.kind), rowLabel(rows[bestIndex]));
+}
 
-    const BenchRow &chosen = rows[fit.chosen];
-    const QString error = rowError(chosen, budget.kind);
-
-    if (fit.baseline < 0) {
-        fit.summary = ErrorBudgetWords::tr(
-                          "%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
-                          .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
-        return fit;
-    }
-
-    const BenchRow &base = rows[fit.baseline];
-    fit.trianglesSaved = base.triangles - chosen.triangles;
-    fit.msSaved = base.frameMs - chosen.frameMs;
-    const QString baseText =
-        ErrorBudgetWords::tr("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
-
-    if (fit.chosen == fit.baseline) {
-        fit.summary = ErrorBudgetWords::tr("%1 is the cheapest that meets %2; %3")
-                          .arg(baseText, budget.describe(), error);
-        return fit;
-    }
-
+// "saves 3 412 triangles and 1.9 ms (40 %)", "costs 0.2 ms more", "saves nothing"
+QString savingsText(const BudgetFit &fit, const BenchRow &base)
+{
     QStringList parts;
     if (fit.trianglesSaved > 0)
         parts << ErrorBudgetWords::tr("%1 triangles").arg(groupedNumber(fit.trianglesSaved));
@@ -282,9 +275,46 @@ BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budg
             + costs.join(ErrorBudgetWords::tr(" and "));
     if (effect.isEmpty())
         effect = ErrorBudgetWords::tr("saves nothing");
+    return effect;
+}
 
-    fit.summary = QStringLiteral("%1 (%2): %3 against %4; %5")
-                      .arg(rowLabel(chosen), rowCost(chosen), effect, baseText, error);
+} // namespace
+
+BudgetFit fitToBudget(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+{
+    BudgetFit fit;
+    fit.baseline = baselineIndex(rows);
+    fit.chosen = chooseCheapest(rows, budget);
+    if (fit.chosen < 0) {
+        fit.summary = nothingFitsSummary(rows, budget);
+        return fit;
+    }
+
+    const BenchRow &chosen = rows[fit.chosen];
+    const QString error = rowError(chosen, budget.kind);
+
+    if (fit.baseline < 0) {
+        fit.summary = ErrorBudgetWords::tr(
+                          "%1 (%2) meets %3; %4; no full-detail Phong row to compare against")
+                          .arg(rowLabel(chosen), rowCost(chosen), budget.describe(), error);
+        return fit;
+    }
+
+    const BenchRow &base = rows[fit.baseline];
+    fit.trianglesSaved = base.triangles - chosen.triangles;
+    fit.msSaved = base.frameMs - chosen.frameMs;
+    const QString baseText =
+        ErrorBudgetWords::tr("full-detail %1 (%2)").arg(methodTitle(base.method), rowCost(base));
+
+    if (fit.chosen == fit.baseline) {
+        fit.summary = ErrorBudgetWords::tr("%1 is the cheapest that meets %2; %3")
+                          .arg(baseText, budget.describe(), error);
+        return fit;
+    }
+
+    fit.summary =
+        QStringLiteral("%1 (%2): %3 against %4; %5")
+            .arg(rowLabel(chosen), rowCost(chosen), savingsText(fit, base), baseText, error);
     return fit;
 }
 

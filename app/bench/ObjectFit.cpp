@@ -116,12 +116,17 @@ QString choiceText(const BenchRow &row)
         .arg(row.maxError);
 }
 
-} // namespace
+// The single-object rows of each object in fit.choices, by the same index.
+struct ObjectRows {
+    std::vector<std::vector<int>> all;      // every row with a finite time
+    std::vector<std::vector<int>> accepted; // those the budget accepts
+};
 
-ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+// Fills fit.choices (in order of first appearance) and fit.baselineMs.
+ObjectRows collectObjectRows(const std::vector<BenchRow> &rows, const ErrorBudget &budget,
+                             ObjectFit &fit)
 {
-    ObjectFit fit;
-    std::vector<std::vector<int>> all, accepted;
+    ObjectRows grouped;
     for (int i = 0; i < int(rows.size()); ++i) {
         const BenchRow &row = rows[std::size_t(i)];
         if (row.isWholeScene() || !std::isfinite(row.frameMs))
@@ -130,54 +135,59 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
                                [&](const ObjectChoice &c) { return c.object == row.object; });
         if (it == fit.choices.end()) {
             fit.choices.push_back({row.object, -1, -1});
-            all.emplace_back();
-            accepted.emplace_back();
+            grouped.all.emplace_back();
+            grouped.accepted.emplace_back();
             it = std::prev(fit.choices.end());
         }
         const std::size_t o = std::size_t(it - fit.choices.begin());
-        all[o].push_back(i);
+        grouped.all[o].push_back(i);
         if (budget.accepts(row))
-            accepted[o].push_back(i);
+            grouped.accepted[o].push_back(i);
         if (row.method == QLatin1String("phong") && row.detail >= 1.0)
             fit.baselineMs += row.frameMs;
     }
-    if (fit.choices.empty()) {
-        fit.summary = ObjectFitWords::tr("no per-object rows: nothing to fit object by object");
-        return fit;
-    }
-    for (std::size_t o = 0; o < fit.choices.size(); ++o)
-        fit.choices[o].fastest = *std::min_element(all[o].begin(), all[o].end(), [&](int a, int b) {
-            return cheaper(rows[std::size_t(a)], rows[std::size_t(b)]);
-        });
+    return grouped;
+}
 
+int cheapestRow(const std::vector<BenchRow> &rows, const std::vector<int> &indices)
+{
+    return *std::min_element(indices.begin(), indices.end(), [&](int a, int b) {
+        return cheaper(rows[std::size_t(a)], rows[std::size_t(b)]);
+    });
+}
+
+// The image's max error is the largest object's: each object alone. Empty
+// when some object has no accepted row.
+std::vector<int> fitEachAlone(const std::vector<BenchRow> &rows,
+                              const std::vector<std::vector<int>> &accepted)
+{
     std::vector<int> pick;
-    if (budget.kind == ErrorBudget::Kind::MaxError) {
-        // The image's max error is the largest object's: each object alone.
-        for (std::size_t o = 0; o < fit.choices.size(); ++o) {
-            if (accepted[o].empty()) {
-                pick.clear();
-                break;
-            }
-            pick.push_back(
-                *std::min_element(accepted[o].begin(), accepted[o].end(), [&](int a, int b) {
-                    return cheaper(rows[std::size_t(a)], rows[std::size_t(b)]);
-                }));
-        }
-    } else {
-        pick = fitShared(rows, all, budget);
+    for (const std::vector<int> &objectRows : accepted) {
+        if (objectRows.empty())
+            return {};
+        pick.push_back(cheapestRow(rows, objectRows));
     }
-    if (pick.empty()) {
-        QStringList none;
-        for (std::size_t o = 0; o < fit.choices.size(); ++o)
-            if (accepted[o].empty())
-                none << fit.choices[o].object;
-        fit.summary = none.isEmpty()
-            ? ObjectFitWords::tr("no combination of the objects' rows meets %1")
-                  .arg(budget.describe())
-            : ObjectFitWords::tr("nothing meets %1 for %2")
-                  .arg(budget.describe(), none.join(QStringLiteral(", ")));
-        return fit;
-    }
+    return pick;
+}
+
+QString nothingFitsSummary(const ObjectFit &fit, const ObjectRows &grouped,
+                           const ErrorBudget &budget)
+{
+    QStringList none;
+    for (std::size_t o = 0; o < fit.choices.size(); ++o)
+        if (grouped.accepted[o].empty())
+            none << fit.choices[o].object;
+    return none.isEmpty()
+        ? ObjectFitWords::tr("no combination of the objects' rows meets %1").arg(budget.describe())
+        : ObjectFitWords::tr("nothing meets %1 for %2")
+              .arg(budget.describe(), none.join(QStringLiteral(", ")));
+}
+
+// Sets each choice's row, the summed time and the limiting object; returns
+// the choices as text, in order.
+QStringList applyPick(const std::vector<BenchRow> &rows, const std::vector<int> &pick,
+                      ObjectFit &fit)
+{
     double worstCost = 0.0;
     QStringList parts;
     for (std::size_t o = 0; o < fit.choices.size(); ++o) {
@@ -192,6 +202,42 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
             fit.limiting = choice.object;
         }
     }
+    return parts;
+}
+
+QString limitingText(const std::vector<BenchRow> &rows, const ObjectFit &fit)
+{
+    if (fit.limiting.isEmpty())
+        return ObjectFitWords::tr("; every object at its fastest");
+    const auto it = std::find_if(fit.choices.begin(), fit.choices.end(),
+                                 [&](const ObjectChoice &c) { return c.object == fit.limiting; });
+    const BenchRow &fastest = rows[std::size_t(it->fastest)];
+    return ObjectFitWords::tr("; %1 limits the saving (its fastest, %2 at %3, errs %4/255)")
+        .arg(fit.limiting, fastest.method, detailPercent(fastest.detail))
+        .arg(fastest.maxError);
+}
+
+} // namespace
+
+ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budget)
+{
+    ObjectFit fit;
+    const ObjectRows grouped = collectObjectRows(rows, budget, fit);
+    if (fit.choices.empty()) {
+        fit.summary = ObjectFitWords::tr("no per-object rows: nothing to fit object by object");
+        return fit;
+    }
+    for (std::size_t o = 0; o < fit.choices.size(); ++o)
+        fit.choices[o].fastest = cheapestRow(rows, grouped.all[o]);
+
+    const std::vector<int> pick = budget.kind == ErrorBudget::Kind::MaxError
+        ? fitEachAlone(rows, grouped.accepted)
+        : fitShared(rows, grouped.all, budget);
+    if (pick.empty()) {
+        fit.summary = nothingFitsSummary(fit, grouped, budget);
+        return fit;
+    }
+    const QStringList parts = applyPick(rows, pick, fit);
     const CombinedError combined = combineObjectErrors(rows, pick);
     fit.maxError = combined.maxError;
     fit.psnr = combined.psnr;
@@ -201,18 +247,7 @@ ObjectFit fitObjects(const std::vector<BenchRow> &rows, const ErrorBudget &budge
         + (fit.baselineMs > 0 ? ObjectFitWords::tr(" against %1 ms at full-detail Phong")
                                     .arg(sentenceNumber(fit.baselineMs, 'f', 2))
                               : QString());
-    if (!fit.limiting.isEmpty()) {
-        const auto it =
-            std::find_if(fit.choices.begin(), fit.choices.end(),
-                         [&](const ObjectChoice &c) { return c.object == fit.limiting; });
-        const BenchRow &fastest = rows[std::size_t(it->fastest)];
-        fit.summary +=
-            ObjectFitWords::tr("; %1 limits the saving (its fastest, %2 at %3, errs %4/255)")
-                .arg(fit.limiting, fastest.method, detailPercent(fastest.detail))
-                .arg(fastest.maxError);
-    } else {
-        fit.summary += ObjectFitWords::tr("; every object at its fastest");
-    }
+    fit.summary += limitingText(rows, fit);
     return fit;
 }
 

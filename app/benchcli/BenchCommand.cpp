@@ -136,9 +136,7 @@ QString percentSaved(double part, double whole)
     return QStringLiteral("%1 %").arg(sentenceNumber(100.0 * (1.0 - part / whole), 'f', 1));
 }
 
-// --path: every scene along the camera path; the one line scripts read is
-// "frames over budget: K of N" over all of them.
-int benchPath(const BenchArgs &args)
+PathOptions pathOptionsFrom(const BenchArgs &args)
 {
     PathOptions options;
     options.budget = args.budget;
@@ -149,11 +147,12 @@ int benchPath(const BenchArgs &args)
         options.size = args.options.size;
     if (args.framesGiven)
         options.frames = args.options.frames;
-    PathBench bench;
-    if (const Result<> initialized = bench.initialize(); !initialized) {
-        printError(initialized.error());
-        return kExitFailure;
-    }
+    return options;
+}
+
+void printPathHeading(const BenchArgs &args, const PathOptions &options,
+                      const QString &glRendererName)
+{
     printLine(BenchCommandWords::tr(
                   "phonglab bench --path %1: %2 scene(s), %3x%4 px, %5 timed frames per "
                   "path frame, budget %6, GL: %7")
@@ -162,36 +161,128 @@ int benchPath(const BenchArgs &args)
                   .arg(options.size.width())
                   .arg(options.size.height())
                   .arg(options.frames)
-                  .arg(args.budget.describe(), bench.glRendererName()));
+                  .arg(args.budget.describe(), glRendererName));
     printLine(
         BenchCommandWords::tr("every object at \"detail\": \"auto\" (%1 px, shading within %2 "
                               "steps), lights left out below %2 steps; against the exact Phong "
                               "image and the same frame at full detail with every light\n")
             .arg(options.detailPixels)
             .arg(sentenceNumber(255.0 * args.budget.reductionAllowance(), 'g', 3)));
+}
+
+void printPathFrame(const QString &scene, int done, int total, const PathFrame &f)
+{
+    printLine(BenchCommandWords::tr("  %1 frame %2/%3: distance %4, levels %5, %6 triangles "
+                                    "(full %7), %8 lights left out, max error %9/255%10 "
+                                    "(full detail %13/255), %11 ms (full %12 ms)")
+                  .arg(QFileInfo(scene).completeBaseName())
+                  .arg(done)
+                  .arg(total)
+                  .arg(sentenceNumber(f.distance, 'f', 2))
+                  .arg(f.levels)
+                  .arg(f.triangles)
+                  .arg(f.fullTriangles)
+                  .arg(f.lightsLeftOut)
+                  .arg(f.maxError)
+                  .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
+                  .arg(sentenceNumber(f.frameMs, 'f', 2))
+                  .arg(sentenceNumber(f.fullFrameMs, 'f', 2))
+                  .arg(f.fullMaxError));
+    std::fflush(stdout);
+}
+
+void printPathRun(const PathRun &run)
+{
+    printLine(BenchCommandWords::tr("%1, %2: %3 of %4 frames over budget (at full detail: %7); "
+                                    "triangles %5 saved, time %6 saved against full detail")
+                  .arg(run.scene, run.path)
+                  .arg(run.overBudget())
+                  .arg(run.frames.size())
+                  .arg(percentSaved(double(run.triangles()), double(run.fullTriangles())),
+                       percentSaved(run.frameMs(), run.fullFrameMs()))
+                  .arg(run.fullOverBudget()));
+}
+
+// Every scene's path runs summed.
+struct PathTotals {
+    int over = 0, frames = 0, fullOver = 0;
+    qint64 triangles = 0, fullTriangles = 0;
+    double ms = 0, fullMs = 0;
+};
+
+PathTotals sumPathRuns(const std::vector<PathRun> &runs)
+{
+    PathTotals t;
+    for (const PathRun &run : runs) {
+        t.over += run.overBudget();
+        t.fullOver += run.fullOverBudget();
+        t.frames += int(run.frames.size());
+        t.triangles += run.triangles();
+        t.fullTriangles += run.fullTriangles();
+        t.ms += run.frameMs();
+        t.fullMs += run.fullFrameMs();
+    }
+    return t;
+}
+
+void printPathTotals(const PathTotals &t)
+{
+    printLine(
+        QStringLiteral(
+            "\nframes over budget: %1 of %2") /* scripts read it: never translated */.arg(t.over)
+            .arg(t.frames));
+    printLine(
+        BenchCommandWords::tr("over budget at full detail with every light: %1 of %2 (what the "
+                              "method itself misses; no model can do better there)")
+            .arg(t.fullOver)
+            .arg(t.frames));
+    printLine(BenchCommandWords::tr(
+                  "triangles drawn: %1 against %2 at full detail (%3 saved); frame time: "
+                  "%4 ms against %5 ms (%6 saved), summed over the frames")
+                  .arg(t.triangles)
+                  .arg(t.fullTriangles)
+                  .arg(percentSaved(double(t.triangles), double(t.fullTriangles)))
+                  .arg(sentenceNumber(t.ms, 'f', 1))
+                  .arg(sentenceNumber(t.fullMs, 'f', 1))
+                  .arg(percentSaved(t.ms, t.fullMs)));
+}
+
+// path.csv and the path charts; false (the error printed) when one cannot be written.
+bool writePathOutputs(const BenchArgs &args, const std::vector<PathRun> &runs)
+{
+    const QDir out(args.outDir);
+    const QString csv = out.filePath(QStringLiteral("path.csv"));
+    const QString png = out.filePath(QStringLiteral("path.png"));
+    const QString svg = out.filePath(QStringLiteral("path.svg"));
+    if (const Result<> written = writeFileAtomically(csv, pathRunsToCsv(runs).toUtf8()); !written) {
+        printError(written.error());
+        return false;
+    }
+    if (const Result<> chart = writePathCharts(runs, args.budget, png, svg); !chart) {
+        printError(chart.error());
+        return false;
+    }
+    printLine(QStringLiteral("wrote %1, %2, %3").arg(csv, png, svg));
+    return true;
+}
+
+// --path: every scene along the camera path; the one line scripts read is
+// "frames over budget: K of N" over all of them.
+int benchPath(const BenchArgs &args)
+{
+    const PathOptions options = pathOptionsFrom(args);
+    PathBench bench;
+    if (const Result<> initialized = bench.initialize(); !initialized) {
+        printError(initialized.error());
+        return kExitFailure;
+    }
+    printPathHeading(args, options, bench.glRendererName());
     QElapsedTimer clock;
     clock.start();
     std::vector<PathRun> runs;
     for (const QString &scene : args.options.scenes) {
         const auto progress = [&](int done, int total, const PathFrame &f) {
-            printLine(
-                BenchCommandWords::tr("  %1 frame %2/%3: distance %4, levels %5, %6 triangles "
-                                      "(full %7), %8 lights left out, max error %9/255%10 "
-                                      "(full detail %13/255), %11 ms (full %12 ms)")
-                    .arg(QFileInfo(scene).completeBaseName())
-                    .arg(done)
-                    .arg(total)
-                    .arg(sentenceNumber(f.distance, 'f', 2))
-                    .arg(f.levels)
-                    .arg(f.triangles)
-                    .arg(f.fullTriangles)
-                    .arg(f.lightsLeftOut)
-                    .arg(f.maxError)
-                    .arg(f.overBudget ? QStringLiteral(" OVER BUDGET") : QString())
-                    .arg(sentenceNumber(f.frameMs, 'f', 2))
-                    .arg(sentenceNumber(f.fullFrameMs, 'f', 2))
-                    .arg(f.fullMaxError));
-            std::fflush(stdout);
+            printPathFrame(scene, done, total, f);
             return true;
         };
         Result<PathRun> run = bench.run(scene, args.path, options, progress);
@@ -199,62 +290,53 @@ int benchPath(const BenchArgs &args)
             printError(run.error());
             return kExitFailure;
         }
-        printLine(BenchCommandWords::tr("%1, %2: %3 of %4 frames over budget (at full detail: %7); "
-                                        "triangles %5 saved, time %6 saved against full detail")
-                      .arg(run->scene, run->path)
-                      .arg(run->overBudget())
-                      .arg(run->frames.size())
-                      .arg(percentSaved(double(run->triangles()), double(run->fullTriangles())),
-                           percentSaved(run->frameMs(), run->fullFrameMs()))
-                      .arg(run->fullOverBudget()));
+        printPathRun(*run);
         runs.push_back(std::move(*run));
     }
-    int over = 0, frames = 0, fullOver = 0;
-    qint64 triangles = 0, fullTriangles = 0;
-    double ms = 0, fullMs = 0;
-    for (const PathRun &run : runs) {
-        over += run.overBudget();
-        fullOver += run.fullOverBudget();
-        frames += int(run.frames.size());
-        triangles += run.triangles();
-        fullTriangles += run.fullTriangles();
-        ms += run.frameMs();
-        fullMs += run.fullFrameMs();
-    }
-    printLine(
-        QStringLiteral(
-            "\nframes over budget: %1 of %2") /* scripts read it: never translated */.arg(over)
-            .arg(frames));
-    printLine(
-        BenchCommandWords::tr("over budget at full detail with every light: %1 of %2 (what the "
-                              "method itself misses; no model can do better there)")
-            .arg(fullOver)
-            .arg(frames));
-    printLine(BenchCommandWords::tr(
-                  "triangles drawn: %1 against %2 at full detail (%3 saved); frame time: "
-                  "%4 ms against %5 ms (%6 saved), summed over the frames")
-                  .arg(triangles)
-                  .arg(fullTriangles)
-                  .arg(percentSaved(double(triangles), double(fullTriangles)))
-                  .arg(sentenceNumber(ms, 'f', 1))
-                  .arg(sentenceNumber(fullMs, 'f', 1))
-                  .arg(percentSaved(ms, fullMs)));
-    const QDir out(args.outDir);
-    const QString csv = out.filePath(QStringLiteral("path.csv"));
-    const QString png = out.filePath(QStringLiteral("path.png"));
-    const QString svg = out.filePath(QStringLiteral("path.svg"));
-    if (const Result<> written = writeFileAtomically(csv, pathRunsToCsv(runs).toUtf8()); !written) {
-        printError(written.error());
+    printPathTotals(sumPathRuns(runs));
+    if (!writePathOutputs(args, runs))
         return kExitFailure;
-    }
-    if (const Result<> chart = writePathCharts(runs, args.budget, png, svg); !chart) {
-        printError(chart.error());
-        return kExitFailure;
-    }
-    printLine(QStringLiteral("wrote %1, %2, %3").arg(csv, png, svg));
     printLine(BenchCommandWords::tr("done in %1 s")
                   .arg(sentenceNumber(clock.elapsed() / 1000.0, 'f', 1)));
     return kExitOk;
+}
+
+void printBenchHeading(const BenchArgs &args, const QString &glRendererName)
+{
+    printLine(
+        BenchCommandWords::tr(
+            "phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
+            .arg(args.quick ? QStringLiteral(" --quick") : QString())
+            .arg(args.options.scenes.size())
+            .arg(args.options.size.width())
+            .arg(args.options.size.height())
+            .arg(args.options.frames)
+            .arg(args.options.warmupFrames)
+            .arg(glRendererName));
+    printLine(BenchCommandWords::tr(
+        "frame ms = median wall time of render + glFinish; cpu ms = submission; "
+        "errors in 8-bit steps against the CPU reference; hl = inside the specular "
+        "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
+    printLine(benchTableHeader());
+}
+
+// Each scene's per-object fit, and how its choices measured when drawn whole.
+void printObjectFitChecks(const std::vector<ObjectFitCheck> &checks, const ErrorBudget &budget)
+{
+    if (!checks.empty())
+        printObjectFitHeading(budget);
+    for (const ObjectFitCheck &check : checks) {
+        printLine(QStringLiteral("  %1: %2").arg(check.scene, check.fit.summary));
+        if (check.measured)
+            printLine(BenchCommandWords::tr("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
+                          .arg(check.scene)
+                          .arg(sentenceNumber(check.measured->frameMs, 'f', 2))
+                          .arg(check.measured->maxError)
+                          .arg(sentenceNumber(check.measured->psnr, 'f', 1))
+                          .arg(budget.accepts(*check.measured)
+                                   ? BenchCommandWords::tr("within budget")
+                                   : QStringLiteral("OVER BUDGET")));
+    }
 }
 
 int bench(const BenchArgs &args)
@@ -272,21 +354,7 @@ int bench(const BenchArgs &args)
         printError(initialized.error());
         return kExitFailure;
     }
-    printLine(
-        BenchCommandWords::tr(
-            "phonglab bench%1: %2 scene(s), %3x%4 px, %5 timed frames after %6 warm-up, GL: %7")
-            .arg(args.quick ? QStringLiteral(" --quick") : QString())
-            .arg(args.options.scenes.size())
-            .arg(args.options.size.width())
-            .arg(args.options.size.height())
-            .arg(args.options.frames)
-            .arg(args.options.warmupFrames)
-            .arg(engine.glRendererName()));
-    printLine(BenchCommandWords::tr(
-        "frame ms = median wall time of render + glFinish; cpu ms = submission; "
-        "errors in 8-bit steps against the CPU reference; hl = inside the specular "
-        "highlight; * = the scene's own lights; blinn-phong uses the matched exponent 4n\n"));
-    printLine(benchTableHeader());
+    printBenchHeading(args, engine.glRendererName());
     QElapsedTimer clock;
     clock.start();
     std::vector<BenchRow> rows;
@@ -306,20 +374,7 @@ int bench(const BenchArgs &args)
         }
     }
     const int written = writeOutputs(args, rows);
-    if (!engine.objectFits().empty())
-        printObjectFitHeading(args.budget);
-    for (const ObjectFitCheck &check : engine.objectFits()) {
-        printLine(QStringLiteral("  %1: %2").arg(check.scene, check.fit.summary));
-        if (check.measured)
-            printLine(BenchCommandWords::tr("  %1: drawn whole: %2 ms, max %3/255, PSNR %4 dB (%5)")
-                          .arg(check.scene)
-                          .arg(sentenceNumber(check.measured->frameMs, 'f', 2))
-                          .arg(check.measured->maxError)
-                          .arg(sentenceNumber(check.measured->psnr, 'f', 1))
-                          .arg(args.budget.accepts(*check.measured)
-                                   ? BenchCommandWords::tr("within budget")
-                                   : QStringLiteral("OVER BUDGET")));
-    }
+    printObjectFitChecks(engine.objectFits(), args.budget);
     printLine(BenchCommandWords::tr("done in %1 s")
                   .arg(sentenceNumber(clock.elapsed() / 1000.0, 'f', 1)));
     return written;

@@ -12,23 +12,29 @@
 
 namespace phonglab {
 
-void LabelPlacer::place() const
+namespace {
+
+double overlapArea(const QRectF &a, const QRectF &b)
 {
-    const QRectF plot = chart->plotArea();
-    if (plot.isEmpty())
-        return;
-    const QRectF inside = plot.adjusted(-0.5, -0.5, 0.5, 0.5);
-    std::vector<QRectF> taken;
+    const QRectF i = a.intersected(b);
+    return i.isEmpty() ? 0.0 : i.width() * i.height();
+}
+
+std::vector<QRectF> markerSquares(QChart *chart,
+                                  const std::vector<std::pair<QPointF, QAbstractSeries *>> &markers)
+{
+    std::vector<QRectF> squares;
     for (const auto &[value, series] : markers) {
         const QPointF p = chart->mapToPosition(value, series);
-        taken.emplace_back(p.x() - 5, p.y() - 5, 10, 10);
+        squares.emplace_back(p.x() - 5, p.y() - 5, 10, 10);
     }
-    auto overlap = [](const QRectF &a, const QRectF &b) {
-        const QRectF i = a.intersected(b);
-        return i.isEmpty() ? 0.0 : i.width() * i.height();
-    };
-    // Lines as small squares every few pixels along them.
-    std::vector<QRectF> lineDots;
+    return squares;
+}
+
+// Lines as small squares every few pixels along them.
+std::vector<QRectF> lineDots(QChart *chart, const std::vector<QXYSeries *> &lines)
+{
+    std::vector<QRectF> dots;
     for (QXYSeries *line : lines) {
         const QList<QPointF> points = line->points();
         for (qsizetype i = 1; i < points.size(); ++i) {
@@ -38,10 +44,65 @@ void LabelPlacer::place() const
             const int steps = std::clamp(int(length / 4.0), 1, 2000);
             for (int k = 0; k <= steps; ++k) {
                 const QPointF p = a + (b - a) * (double(k) / steps);
-                lineDots.emplace_back(p.x() - 1.5, p.y() - 1.5, 3, 3);
+                dots.emplace_back(p.x() - 1.5, p.y() - 1.5, 3, 3);
             }
         }
     }
+    return dots;
+}
+
+// The first of the candidate spots around `p` (in order of preference) that
+// covers least of what is taken, half as much of the lines, and twice as
+// much of what lies outside the plot.
+QRectF bestSpot(const QPointF &p, const QSizeF &s, const QRectF &plot,
+                const std::vector<QRectF> &taken, const std::vector<QRectF> &dots)
+{
+    const double w = s.width(), h = s.height();
+    const QPointF offsets[] = {
+        {7, -h / 2},       // right
+        {5, -h - 1},       // above right
+        {-w / 2, -h - 6},  // above
+        {5, 1},            // below right
+        {-w / 2, 6},       // below
+        {-7 - w, -h / 2},  // left
+        {-5 - w, -h - 1},  // above left
+        {-5 - w, 1},       // below left
+        {12, -h / 2},      // further right
+        {-w / 2, -h - 14}, // further above
+        {-w / 2, 14},      // further below
+        {-12 - w, -h / 2}, // further left
+    };
+    QRectF best;
+    double bestScore = std::numeric_limits<double>::infinity();
+    for (const QPointF &offset : offsets) {
+        const QRectF r(p + offset, s);
+        double score = 0;
+        for (const QRectF &t : taken)
+            score += overlapArea(r, t);
+        for (const QRectF &t : dots)
+            score += 0.5 * overlapArea(r, t);
+        const double outside = w * h - overlapArea(r, plot);
+        score += outside * 2.0;
+        if (score < bestScore - 1e-9) {
+            bestScore = score;
+            best = r;
+            if (score <= 0)
+                break;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+void LabelPlacer::place() const
+{
+    const QRectF plot = chart->plotArea();
+    if (plot.isEmpty())
+        return;
+    const QRectF inside = plot.adjusted(-0.5, -0.5, 0.5, 0.5);
+    std::vector<QRectF> taken = markerSquares(chart, markers);
+    const std::vector<QRectF> dots = lineDots(chart, lines);
     for (const PointLabel &label : labels) {
         const QPointF p = chart->mapToPosition(label.value, label.series);
         if (!inside.contains(p)) {
@@ -49,40 +110,7 @@ void LabelPlacer::place() const
             continue;
         }
         label.item->setVisible(true);
-        const QSizeF s = label.item->boundingRect().size();
-        const double w = s.width(), h = s.height();
-        const QPointF offsets[] = {
-            {7, -h / 2},       // right
-            {5, -h - 1},       // above right
-            {-w / 2, -h - 6},  // above
-            {5, 1},            // below right
-            {-w / 2, 6},       // below
-            {-7 - w, -h / 2},  // left
-            {-5 - w, -h - 1},  // above left
-            {-5 - w, 1},       // below left
-            {12, -h / 2},      // further right
-            {-w / 2, -h - 14}, // further above
-            {-w / 2, 14},      // further below
-            {-12 - w, -h / 2}, // further left
-        };
-        QRectF best;
-        double bestScore = std::numeric_limits<double>::infinity();
-        for (const QPointF &offset : offsets) {
-            const QRectF r(p + offset, s);
-            double score = 0;
-            for (const QRectF &t : taken)
-                score += overlap(r, t);
-            for (const QRectF &t : lineDots)
-                score += 0.5 * overlap(r, t);
-            const double outside = w * h - overlap(r, plot);
-            score += outside * 2.0;
-            if (score < bestScore - 1e-9) {
-                bestScore = score;
-                best = r;
-                if (score <= 0)
-                    break;
-            }
-        }
+        const QRectF best = bestSpot(p, label.item->boundingRect().size(), plot, taken, dots);
         label.item->setPos(best.topLeft());
         taken.push_back(best);
     }

@@ -34,6 +34,31 @@ QLineSeries *line(const QString &name, const QColor &color, Qt::PenStyle style =
     return series;
 }
 
+// Frames 0..last (the last frame's index), whole frames at about a dozen ticks.
+QValueAxis *frameAxis(double last)
+{
+    auto *x = new QValueAxis;
+    x->setTitleText(PathChartWords::tr("frame along the path"));
+    x->setRange(0.0, std::max(1.0, last));
+    x->setTickType(QValueAxis::TicksDynamic);
+    x->setTickAnchor(0.0);
+    x->setTickInterval(std::max(1.0, std::ceil(last / 12.0)));
+    x->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
+    return x;
+}
+
+// An axis from 0 to just above `top` 8-bit steps.
+void setErrorTicks(QValueAxis *errorAxis, double top)
+{
+    // Whole steps at whole ticks: "%d" on ticks between them would lie.
+    const double step = std::max(1.0, std::ceil((top + 1.0) / 8.0));
+    errorAxis->setRange(0.0, step * std::ceil((top + 1.0) / step));
+    errorAxis->setTickType(QValueAxis::TicksDynamic);
+    errorAxis->setTickAnchor(0.0);
+    errorAxis->setTickInterval(step);
+    errorAxis->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
+}
+
 QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
 {
     auto *chart = new QChart;
@@ -63,13 +88,7 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
     for (QLineSeries *s : {error, fast, full})
         chart->addSeries(s);
 
-    auto *x = new QValueAxis;
-    x->setTitleText(PathChartWords::tr("frame along the path"));
-    x->setRange(0.0, std::max(1.0, last));
-    x->setTickType(QValueAxis::TicksDynamic);
-    x->setTickAnchor(0.0);
-    x->setTickInterval(std::max(1.0, std::ceil(last / 12.0)));
-    x->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
+    QValueAxis *x = frameAxis(last);
     auto *errorAxis = new QValueAxis;
     errorAxis->setTitleText(PathChartWords::tr("max error, 8-bit steps"));
     auto *msAxis = new QValueAxis;
@@ -87,13 +106,7 @@ QChart *createPathChart(const PathRun &run, const ErrorBudget &budget)
         limit->attachAxis(errorAxis);
         top = std::max(top, double(budget.maxError));
     }
-    // Whole steps at whole ticks: "%d" on ticks between them would lie.
-    const double step = std::max(1.0, std::ceil((top + 1.0) / 8.0));
-    errorAxis->setRange(0.0, step * std::ceil((top + 1.0) / step));
-    errorAxis->setTickType(QValueAxis::TicksDynamic);
-    errorAxis->setTickAnchor(0.0);
-    errorAxis->setTickInterval(step);
-    errorAxis->setLabelFormat(QStringLiteral("%.0f")); // localized labels need a precision
+    setErrorTicks(errorAxis, top);
     for (QLineSeries *s : {error, fast, full})
         s->attachAxis(x);
     error->attachAxis(errorAxis);

@@ -357,34 +357,85 @@ int drawOnly(const CheckArgs &args)
     return kExitOk;
 }
 
+// The page `--page` or `--capture` names, checked before the scene.
+struct PageStep {
+    std::optional<PageCheck> page;
+    QString note;
+};
+
+// Checks the page and, where it has a scene to check against, puts the
+// page's shaders and constants in `args`. The exit code where the page is
+// all there is to report.
+std::optional<int> checkPageFirst(CheckArgs *args, const QTemporaryDir &compiled, PageStep *step)
+{
+    if (!args->scenePath.isEmpty())
+        if (const SceneLoadResult scene = loadSceneFile(args->scenePath); scene.ok())
+            takeScenePage(&args->page, scene.scene->page, scene.scene->baseDir);
+    step->page = checkPage(args->page);
+    const PageCheck &page = *step->page;
+    if (const QString unwritten = writePageOutputs(page, args->page.outFolder);
+        !unwritten.isEmpty())
+        printError(unwritten);
+    if (page.ok() && !args->scenePath.isEmpty()) {
+        const PageStages stages =
+            pageStagesForScene(page, args->page.run.folders.project, compiled.path());
+        step->note = stages.note;
+        args->vertexPath = stages.vertexPath;
+        args->fragmentPath = stages.fragmentPath;
+        for (const auto &[name, value] : stages.constants)
+            if (!args->overrides.bindings.count(name))
+                args->overrides.constants.emplace(name, value);
+    }
+    if (!page.ok() || args->scenePath.isEmpty() || args->vertexPath.isEmpty())
+        return reportPageAlone(page, args->json, step->note);
+    return std::nullopt;
+}
+
+// --diff: the heatmap of a checked render; a file that cannot be written
+// turns the verdict into an error.
+void writeDiff(CheckOutcome *outcome, const QImage &yours, const CheckReference &reference,
+               const QString &diffPath)
+{
+    const Result<> written = writePng(
+        toQImage(checkHeatmap(toRgbImage(yours), reference, outcome->report.equation)), diffPath);
+    if (!written) {
+        outcome->verdict = Verdict::Error;
+        outcome->errors = {inputError(diffPath, written.error())};
+        outcome->stages.clear();
+    }
+}
+
+void printOutcome(const CheckOutcome &outcome, const std::optional<PageCheck> &page,
+                  const Scene &scene, bool sceneLoaded, bool json)
+{
+    if (json) {
+        QJsonObject out = checkJson(outcome.verdict, outcome);
+        if (page)
+            out.insert(QStringLiteral("page"), pageJson(*page));
+        printLine(QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Indented)).trimmed());
+        return;
+    }
+    if (page)
+        for (const QString &line : pageText(*page))
+            printLine(line);
+    for (const ShaderDiagnostic &e : outcome.errors)
+        // Compile errors with a line were printed as the compiler's; a
+        // scene's syntax error has a line too, and its message says it.
+        if (e.line == 0 || !sceneLoaded)
+            printError(e.file.isEmpty() ? e.message
+                                        : QStringLiteral("%1: %2").arg(e.file, e.message));
+    printLine(checkText(outcome, scene));
+}
+
 int check(CheckArgs args)
 {
     if (!args.drawOnlyPath.isEmpty())
         return drawOnly(args);
-    std::optional<PageCheck> page;
+    PageStep page;
     const QTemporaryDir compiled;
-    QString pageNote;
-    if (args.page.wanted) {
-        if (!args.scenePath.isEmpty())
-            if (const SceneLoadResult scene = loadSceneFile(args.scenePath); scene.ok())
-                takeScenePage(&args.page, scene.scene->page, scene.scene->baseDir);
-        page = checkPage(args.page);
-        if (const QString unwritten = writePageOutputs(*page, args.page.outFolder);
-            !unwritten.isEmpty())
-            printError(unwritten);
-        if (page->ok() && !args.scenePath.isEmpty()) {
-            const PageStages stages =
-                pageStagesForScene(*page, args.page.run.folders.project, compiled.path());
-            pageNote = stages.note;
-            args.vertexPath = stages.vertexPath;
-            args.fragmentPath = stages.fragmentPath;
-            for (const auto &[name, value] : stages.constants)
-                if (!args.overrides.bindings.count(name))
-                    args.overrides.constants.emplace(name, value);
-        }
-        if (!page->ok() || args.scenePath.isEmpty() || args.vertexPath.isEmpty())
-            return reportPageAlone(*page, args.json, pageNote);
-    }
+    if (args.page.wanted)
+        if (const std::optional<int> code = checkPageFirst(&args, compiled, &page))
+            return *code;
     const SceneLoadResult loaded = checkedScene(args);
     const Scene scene = loaded.ok() ? *loaded.scene : Scene{};
     CheckOutcome outcome;
@@ -399,39 +450,15 @@ int check(CheckArgs args)
     for (const QString &w : loaded.warnings)
         printErrLine(QStringLiteral("phonglab: warning: %1: %2").arg(args.scenePath, w));
 
-    if (outcome.verdict != Verdict::Error && !args.diffPath.isEmpty()) {
-        const Result<> written =
-            writePng(toQImage(checkHeatmap(toRgbImage(yours), reference, outcome.report.equation)),
-                     args.diffPath);
-        if (!written) {
-            outcome.verdict = Verdict::Error;
-            outcome.errors = {inputError(args.diffPath, written.error())};
-            outcome.stages.clear();
-        }
-    }
-    if (page) {
-        outcome.notes.prepend(pageNote);
-        if ((page->javascriptMistakes() || page->ownSceneFails())
+    if (outcome.verdict != Verdict::Error && !args.diffPath.isEmpty())
+        writeDiff(&outcome, yours, reference, args.diffPath);
+    if (page.page) {
+        outcome.notes.prepend(page.note);
+        if ((page.page->javascriptMistakes() || page.page->ownSceneFails())
             && outcome.verdict == Verdict::Pass)
             outcome.verdict = Verdict::Fail;
     }
-    if (args.json) {
-        QJsonObject json = checkJson(outcome.verdict, outcome);
-        if (page)
-            json.insert(QStringLiteral("page"), pageJson(*page));
-        printLine(QString::fromUtf8(QJsonDocument(json).toJson(QJsonDocument::Indented)).trimmed());
-    } else {
-        if (page)
-            for (const QString &line : pageText(*page))
-                printLine(line);
-        for (const ShaderDiagnostic &e : outcome.errors)
-            // Compile errors with a line were printed as the compiler's; a
-            // scene's syntax error has a line too, and its message says it.
-            if (e.line == 0 || !loaded.ok())
-                printError(e.file.isEmpty() ? e.message
-                                            : QStringLiteral("%1: %2").arg(e.file, e.message));
-        printLine(checkText(outcome, scene));
-    }
+    printOutcome(outcome, page.page, scene, loaded.ok(), args.json);
     return outcome.verdict == Verdict::Pass ? kExitOk : kExitFailure;
 }
 

@@ -54,6 +54,47 @@ QString declaringFile(const QString &name, const CheckFindings &outcome, const S
     return inVertex ? files.vertex : files.fragment;
 }
 
+// The first stage file that cannot be read, as that file's error (check
+// --json's "file"); none where both can.
+std::optional<ShaderDiagnostic> unreadableStage(const StageFiles &files)
+{
+    for (const QString &path : {files.vertex, files.fragment}) {
+        if (isShaderLocator(path)) {
+            if (const Result<ProjectShader> shader = shaderAtLocator(path); !shader)
+                return inputError(path.left(path.lastIndexOf(QLatin1Char('#'))), shader.error());
+            continue;
+        }
+        if (QFile file(path); !file.open(QIODevice::ReadOnly))
+            return inputError(
+                path, CheckStepsWords::tr("cannot read shader: %1").arg(file.errorString()));
+    }
+    return std::nullopt;
+}
+
+// A program that did not build: its compile errors, or one saying so.
+void addCompileErrors(const BuildReport &program, const StageFiles &files, CheckFindings *outcome)
+{
+    for (const ShaderDiagnostic &d : program.diagnostics)
+        if (d.isError())
+            outcome->errors.push_back(d);
+    if (outcome->errors.empty())
+        outcome->errors.push_back(
+            inputError(files.fragment, CheckStepsWords::tr("the shaders did not compile")));
+}
+
+// Nothing PhongLab could not bind may decide the verdict: the student's
+// names are PhongLab's gap, never the student's mistake.
+void addBindingErrors(const ProgramFindings &found, const StageFiles &files, CheckFindings *outcome)
+{
+    for (const QString &problem : found.problems)
+        outcome->errors.push_back(inputError(QStringLiteral("--bind"), problem));
+    for (const UnboundUniform &unbound : found.unbound)
+        outcome->errors.push_back(
+            inputError(declaringFile(unbound.name, *outcome, files), unboundMessage(unbound)));
+    for (const QString &conflict : found.conflicts)
+        outcome->errors.push_back(inputError(QStringLiteral("--bind"), conflict));
+}
+
 } // namespace
 
 CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
@@ -79,17 +120,8 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
         return fail(input.scenePath, set.error());
     const StageFiles files =
         chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
-    // A stage that cannot be read is that file's error (check --json's "file").
-    for (const QString &path : {files.vertex, files.fragment}) {
-        if (isShaderLocator(path)) {
-            if (const Result<ProjectShader> shader = shaderAtLocator(path); !shader)
-                return fail(path.left(path.lastIndexOf(QLatin1Char('#'))), shader.error());
-            continue;
-        }
-        if (QFile file(path); !file.open(QIODevice::ReadOnly))
-            return fail(path,
-                        CheckStepsWords::tr("cannot read shader: %1").arg(file.errorString()));
-    }
+    if (const std::optional<ShaderDiagnostic> unreadable = unreadableStage(files))
+        return fail(unreadable->file, unreadable->message);
     const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
     if (!built)
         return fail(QString(), built.error());
@@ -97,27 +129,14 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
     drawing.compilerMessages = program.diagnostics;
     outcome.warnings << buildWarnings(drawing.compilerMessages);
     if (!program.ok) {
-        for (const ShaderDiagnostic &d : program.diagnostics)
-            if (d.isError())
-                outcome.errors.push_back(d);
-        if (outcome.errors.empty())
-            outcome.errors.push_back(
-                inputError(files.fragment, CheckStepsWords::tr("the shaders did not compile")));
+        addCompileErrors(program, files, &outcome);
         return drawing;
     }
-    // Nothing PhongLab could not bind may decide the verdict: the student's
-    // names are PhongLab's gap, never the student's mistake.
     const ProgramFindings found = findProgramFindings(renderer.program(), scene);
     outcome.bindings = found.bindings;
     drawing.lightCapacity = found.lightCapacity;
     outcome.notes << found.bindings.notes;
-    for (const QString &problem : found.problems)
-        outcome.errors.push_back(inputError(QStringLiteral("--bind"), problem));
-    for (const UnboundUniform &unbound : found.unbound)
-        outcome.errors.push_back(
-            inputError(declaringFile(unbound.name, outcome, files), unboundMessage(unbound)));
-    for (const QString &conflict : found.conflicts)
-        outcome.errors.push_back(inputError(QStringLiteral("--bind"), conflict));
+    addBindingErrors(found, files, &outcome);
     if (!outcome.errors.empty())
         return drawing;
     const Scene &checked = found.checked;

@@ -96,6 +96,25 @@ bool regroup(const QString &from, const QString &to, int *budget)
     return true;
 }
 
+// A student's own archives, once: what they hold is not opened again (the
+// list is made before any is unpacked). A refused one is that student's error.
+void unpackStudentArchives(const QFileInfo &folder, const ArchiveLimits &limits,
+                           StagedClass *staged)
+{
+    QStringList archives;
+    QDirIterator it(folder.filePath(), QDir::Files | QDir::NoDotAndDotDot,
+                    QDirIterator::Subdirectories);
+    for (int seen = 0; it.hasNext() && seen < kMaxFilesCopied; ++seen)
+        if (isArchivePath(it.next()) && !it.fileInfo().isSymLink())
+            archives << it.filePath();
+    for (const QString &archive : archives) {
+        const Result<UnpackedArchive> done =
+            unpackArchive(archive, archive + QStringLiteral(".unpacked"), limits);
+        if (!done)
+            staged->refused.insert(folder.fileName(), done.error());
+    }
+}
+
 } // namespace
 
 QString MoodleName::folder() const
@@ -165,19 +184,7 @@ StagedClass stageClass(const QString &submissions, const QString &outFolder,
             staged.origins.insert(folder.fileName(), {m->student, m->participant});
         if (!ours)
             continue;
-        // A student's own archive, once: what it holds is not opened again.
-        QStringList archives;
-        QDirIterator it(folder.filePath(), QDir::Files | QDir::NoDotAndDotDot,
-                        QDirIterator::Subdirectories);
-        for (int seen = 0; it.hasNext() && seen < kMaxFilesCopied; ++seen)
-            if (isArchivePath(it.next()) && !it.fileInfo().isSymLink())
-                archives << it.filePath();
-        for (const QString &archive : archives) {
-            const Result<UnpackedArchive> done =
-                unpackArchive(archive, archive + QStringLiteral(".unpacked"), limits);
-            if (!done)
-                staged.refused.insert(folder.fileName(), done.error());
-        }
+        unpackStudentArchives(folder, limits, &staged);
     }
     return staged;
 }

@@ -362,30 +362,61 @@ QByteArray runFingerprint(const GradeArgs &args, const GradeResults &results)
         .toHex();
 }
 
-int grade(const GradeArgs &args)
+// The class as submissions: an archive or Moodle's flat files become
+// folders under the out folder first, and a refused archive is its
+// student's error.
+Result<> readSubmissions(const GradeArgs &args, GradeResults *results)
 {
-    GradeResults results;
-    results.settings = args.settings;
-    // An archive or Moodle's flat files become folders under the out folder.
     const StagedClass staged = stageClass(args.settings.classFolder, args.settings.outFolder);
-    if (!staged.error.isEmpty()) {
-        printError(staged.error);
-        return kExitFailure;
-    }
-    results.settings.classRoot = staged.root;
+    if (!staged.error.isEmpty())
+        return fail(staged.error);
+    results->settings.classRoot = staged.root;
     const ClassFolder folder = readClassFolder(staged.root);
-    if (!folder.error.isEmpty()) {
-        printError(folder.error);
-        return kExitFailure;
-    }
-    results.submissions =
+    if (!folder.error.isEmpty())
+        return fail(folder.error);
+    results->submissions =
         args.program.isEmpty() ? folder.submissions : onlyProgram(folder.submissions, args.program);
-    for (Submission &s : results.submissions) {
+    for (Submission &s : results->submissions) {
         const SubmissionOrigin origin = staged.origins.value(s.name);
         s.student = origin.student;
         s.participant = origin.participant;
         if (staged.refused.contains(s.name)) // an archive of theirs was refused: that is the error
             s.error = staged.refused.value(s.name);
+    }
+    return {};
+}
+
+// --pages: each submission's page, with the first scene's "page", as the
+// course states it.
+void runPages(const GradeArgs &args, GradeResults &results)
+{
+    PageRequest pages = args.pages;
+    if (!results.scenes.empty())
+        takeScenePage(&pages, results.scenes.front().scene.page,
+                      results.scenes.front().scene.baseDir);
+    runSubmissionPages(results, pages, args.jobs);
+}
+
+// --resume: the checks the stopped run finished; else a new journal.
+QHash<QString, GradedChildEnd> resumeOrStart(GradeJournal &journal, bool resume)
+{
+    QHash<QString, GradedChildEnd> finished;
+    if (resume) {
+        finished = journal.resume();
+        printErrLine(GradeCommandWords::tr("grade: kept %1 finished checks of the stopped run")
+                         .arg(finished.size()));
+    } else
+        journal.start();
+    return finished;
+}
+
+int grade(const GradeArgs &args)
+{
+    GradeResults results;
+    results.settings = args.settings;
+    if (const Result<> read = readSubmissions(args, &results); !read) {
+        printError(read.error());
+        return kExitFailure;
     }
     Result<std::vector<GradeScene>> scenes = loadScenes(args);
     if (!scenes) {
@@ -397,13 +428,8 @@ int grade(const GradeArgs &args)
         printError(ready.error());
         return kExitFailure;
     }
-    if (args.pages.wanted) {
-        PageRequest pages = args.pages;
-        if (!results.scenes.empty()) // the first scene's "page", as the course states it
-            takeScenePage(&pages, results.scenes.front().scene.page,
-                          results.scenes.front().scene.baseDir);
-        runSubmissionPages(results, pages, args.jobs);
-    }
+    if (args.pages.wanted)
+        runPages(args, results);
     const QString executable = phonglabExecutable();
     if (executable.isEmpty()) {
         printError(GradeCommandWords::tr("cannot find the phonglab program to run the checks with "
@@ -416,14 +442,7 @@ int grade(const GradeArgs &args)
         return kExitFailure;
     }
     GradeJournal journal(args.settings.outFolder, runFingerprint(args, results));
-    QHash<QString, GradedChildEnd> finished;
-    if (args.resume) {
-        finished = journal.resume();
-        printErrLine(GradeCommandWords::tr("grade: kept %1 finished checks of the stopped run")
-                         .arg(finished.size()));
-    } else
-        journal.start();
-    run.setJournal(&journal, std::move(finished));
+    run.setJournal(&journal, resumeOrStart(journal, args.resume));
     run.run();
     if (const Result<> written = writeOutputs(results, args.points); !written) {
         printError(written.error());

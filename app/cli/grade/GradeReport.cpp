@@ -209,51 +209,59 @@ QString linesInContext(const GradeRow &row, const QString &file, int line)
     return html + QStringLiteral("</pre>");
 }
 
+// A failed row's diagnosis: the set of mistakes that explains it together
+// where there is one, else each mistake alone, with their lines.
+QString diagnosisHtml(const GradeRow &row)
+{
+    QString html;
+    const CheckFindings &o = row.outcome;
+    const MistakeDiagnosis &d = o.report.diagnosis;
+    if (d.unexplained())
+        html += QStringLiteral("<p><b>unknown</b>: %1</p>")
+                    .arg(esc(ReportWords::tr("no classic mistake explains the difference; the "
+                                             "heatmap shows where it is.")));
+    if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence) {
+        html += QStringLiteral("<p>%1</p><ul>")
+                    .arg(esc(ReportWords::tr("%1 mistakes together explain %2 % of the "
+                                             "difference:")
+                                 .arg(d.together.variants.size())
+                                 .arg(qRound(100.0 * d.together.explains))));
+        for (MistakeVariant v : d.together.variants) {
+            html += QStringLiteral("<li><b>%1</b>: %2")
+                        .arg(esc(shaderMistakeKey(v.key)),
+                             esc(mistakeFormSummary(v) + QStringLiteral(" — ")
+                                 + shaderMistakeRule(v.key)));
+            for (const SourceLine &l : mistakeSourceLines(v.key, o.stages))
+                html += linesInContext(row, l.file, l.line);
+            html += QStringLiteral("</li>");
+        }
+        html += QStringLiteral("</ul>");
+    }
+    for (const MistakeFinding &f : d.findings) {
+        if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence)
+            break; // each alone explains less than the set above
+        // The sentence is escaped whole, then the key made bold in it.
+        const QString key = esc(shaderMistakeKey(f.key));
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(esc(ReportWords::tr("%1 explains %2 % of the difference: %3")
+                                 .arg(QStringLiteral("\x01"),
+                                      QString::number(qRound(100.0 * f.confidence)),
+                                      shaderMistakeRule(f.key)))
+                             .replace(QLatin1Char('\x01'), QStringLiteral("<b>%1</b>").arg(key)));
+        for (const SourceLine &l : mistakeSourceLines(f.key, o.stages))
+            html += linesInContext(row, l.file, l.line);
+    }
+    return html;
+}
+
 QString details(const GradeRow &row)
 {
     QString html;
     const CheckFindings &o = row.outcome;
     if (row.verdict == Verdict::Pass)
         html += QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("Matches the exact image.")));
-    if (row.verdict == Verdict::Fail) {
-        const MistakeDiagnosis &d = o.report.diagnosis;
-        if (d.unexplained())
-            html += QStringLiteral("<p><b>unknown</b>: %1</p>")
-                        .arg(esc(ReportWords::tr("no classic mistake explains the difference; the "
-                                                 "heatmap shows where it is.")));
-        if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence) {
-            html += QStringLiteral("<p>%1</p><ul>")
-                        .arg(esc(ReportWords::tr("%1 mistakes together explain %2 % of the "
-                                                 "difference:")
-                                     .arg(d.together.variants.size())
-                                     .arg(qRound(100.0 * d.together.explains))));
-            for (MistakeVariant v : d.together.variants) {
-                html += QStringLiteral("<li><b>%1</b>: %2")
-                            .arg(esc(shaderMistakeKey(v.key)),
-                                 esc(mistakeFormSummary(v) + QStringLiteral(" — ")
-                                     + shaderMistakeRule(v.key)));
-                for (const SourceLine &l : mistakeSourceLines(v.key, o.stages))
-                    html += linesInContext(row, l.file, l.line);
-                html += QStringLiteral("</li>");
-            }
-            html += QStringLiteral("</ul>");
-        }
-        for (const MistakeFinding &f : d.findings) {
-            if (d.together.variants.size() > 1 && d.together.explains >= kExplainedConfidence)
-                break; // each alone explains less than the set above
-            // The sentence is escaped whole, then the key made bold in it.
-            const QString key = esc(shaderMistakeKey(f.key));
-            html +=
-                QStringLiteral("<p>%1</p>")
-                    .arg(esc(ReportWords::tr("%1 explains %2 % of the difference: %3")
-                                 .arg(QStringLiteral("\x01"),
-                                      QString::number(qRound(100.0 * f.confidence)),
-                                      shaderMistakeRule(f.key)))
-                             .replace(QLatin1Char('\x01'), QStringLiteral("<b>%1</b>").arg(key)));
-            for (const SourceLine &l : mistakeSourceLines(f.key, o.stages))
-                html += linesInContext(row, l.file, l.line);
-        }
-    }
+    if (row.verdict == Verdict::Fail)
+        html += diagnosisHtml(row);
     for (const ShaderDiagnostic &e : o.errors) {
         html += QStringLiteral("<p>%1%2</p>")
                     .arg(e.file.isEmpty()

@@ -10,6 +10,7 @@
 #include <archive_entry.h>
 
 #include <memory>
+#include <optional>
 
 namespace phonglab::cli {
 
@@ -90,6 +91,81 @@ QString archiveNameText(const QByteArray &raw)
     return cp437;
 }
 
+namespace {
+
+// What an entry asks for: refused (why), nothing left to write (the folder
+// itself, or a folder now made), or the plain file `file` (relative, its
+// folder made).
+struct EntryTarget {
+    std::optional<QString> refusal;
+    QString file;
+};
+
+// The checks on an entry's name and type, in the order they refuse; makes
+// the folders it needs inside `root`.
+EntryTarget entryTarget(archive_entry *entry, const QDir &root)
+{
+    const QString raw = entryName(entry);
+    const QString relative = safeRelativeName(raw);
+    const mode_t type = archive_entry_filetype(entry);
+    if (relative.isEmpty() && type == AE_IFDIR && !raw.contains(QLatin1String("..")))
+        return {}; // "./": the folder itself
+    if (relative.isEmpty())
+        return {
+            SubmissionArchiveWords::tr("the name %1 leaves the folder it is unpacked in").arg(raw),
+            {}};
+    if (archive_entry_hardlink(entry) || type == AE_IFLNK)
+        return {SubmissionArchiveWords::tr("%1 is a link").arg(relative), {}};
+    if (type == AE_IFDIR) {
+        if (!root.mkpath(relative))
+            return {SubmissionArchiveWords::tr("cannot make %1").arg(relative), {}};
+        return {};
+    }
+    if (type != AE_IFREG)
+        return {SubmissionArchiveWords::tr("%1 is not a plain file").arg(relative), {}};
+    if (!root.mkpath(QFileInfo(relative).path()))
+        return {SubmissionArchiveWords::tr("cannot make %1").arg(relative), {}};
+    return {std::nullopt, relative};
+}
+
+// One archive being read, and what it has unpacked so far against its limits.
+struct Unpacking {
+    archive *a = nullptr;
+    const ArchiveLimits &limits;
+    qint64 archiveBytes = 1;
+    std::vector<char> buffer;
+    UnpackedArchive done;
+};
+
+// The current entry's bytes into `out`; why it is refused, if it is. The
+// limits are checked before each block is written, so a bomb stops early.
+std::optional<QString> copyEntryData(Unpacking &u, QFile &out, const QString &relative)
+{
+    for (;;) {
+        const la_ssize_t n = archive_read_data(u.a, u.buffer.data(), u.buffer.size());
+        if (n == 0)
+            break;
+        if (n < 0)
+            return SubmissionArchiveWords::tr("it is damaged at %1 (%2)")
+                .arg(relative, QString::fromLocal8Bit(archive_error_string(u.a)));
+        u.done.bytes += n;
+        if (u.done.bytes > u.limits.maxBytes)
+            return SubmissionArchiveWords::tr("more than %1 MiB unpacked")
+                .arg(u.limits.maxBytes >> 20);
+        if (u.done.bytes > u.limits.minBombBytes
+            && u.done.bytes / u.archiveBytes > u.limits.maxRatio)
+            return SubmissionArchiveWords::tr(
+                       "a zip bomb: %1 MiB unpacked from %2 KiB and still going")
+                .arg(u.done.bytes >> 20)
+                .arg(u.archiveBytes >> 10);
+        if (out.write(u.buffer.data(), n) != n)
+            return SubmissionArchiveWords::tr("cannot write %1").arg(relative);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
 Result<UnpackedArchive> unpackArchive(const QString &archivePath, const QString &folder,
                                       const ArchiveLimits &limits)
 {
@@ -110,8 +186,7 @@ Result<UnpackedArchive> unpackArchive(const QString &archivePath, const QString 
         return fail(SubmissionArchiveWords::tr("%1: cannot make the folder %2").arg(name, folder));
     const QDir root(folder);
     const qint64 archiveBytes = std::max<qint64>(1, QFileInfo(archivePath).size());
-    UnpackedArchive done;
-    std::vector<char> buffer(64 * 1024);
+    Unpacking u{a.get(), limits, archiveBytes, std::vector<char>(64 * 1024), UnpackedArchive()};
     archive_entry *entry = nullptr;
     for (;;) {
         const int header = archive_read_next_header(a.get(), &entry);
@@ -120,57 +195,25 @@ Result<UnpackedArchive> unpackArchive(const QString &archivePath, const QString 
         if (header != ARCHIVE_OK && header != ARCHIVE_WARN)
             return refuse(SubmissionArchiveWords::tr("it is damaged (%1)")
                               .arg(QString::fromLocal8Bit(archive_error_string(a.get()))));
-        if (++done.entries > limits.maxEntries)
+        if (++u.done.entries > limits.maxEntries)
             return refuse(
                 SubmissionArchiveWords::tr("more than %1 entries").arg(limits.maxEntries));
-        const QString raw = entryName(entry);
-        const QString relative = safeRelativeName(raw);
-        const mode_t type = archive_entry_filetype(entry);
-        if (relative.isEmpty() && type == AE_IFDIR && !raw.contains(QLatin1String("..")))
-            continue; // "./": the folder itself
-        if (relative.isEmpty())
-            return refuse(
-                SubmissionArchiveWords::tr("the name %1 leaves the folder it is unpacked in")
-                    .arg(raw));
-        if (archive_entry_hardlink(entry) || type == AE_IFLNK)
-            return refuse(SubmissionArchiveWords::tr("%1 is a link").arg(relative));
-        if (type == AE_IFDIR) {
-            if (!root.mkpath(relative))
-                return refuse(SubmissionArchiveWords::tr("cannot make %1").arg(relative));
+        const EntryTarget t = entryTarget(entry, root);
+        if (t.refusal)
+            return refuse(*t.refusal);
+        if (t.file.isEmpty())
             continue;
-        }
-        if (type != AE_IFREG)
-            return refuse(SubmissionArchiveWords::tr("%1 is not a plain file").arg(relative));
-        const QString target = root.filePath(relative);
-        if (!root.mkpath(QFileInfo(relative).path()))
-            return refuse(SubmissionArchiveWords::tr("cannot make %1").arg(relative));
+        const QString target = root.filePath(t.file);
         // A folder made above may never be a link: the archive has none, and
         // the folder was PhongLab's own and empty.
         QFile out(target);
         if (QFileInfo(target).isSymLink() || !out.open(QIODevice::WriteOnly | QIODevice::Truncate))
-            return refuse(SubmissionArchiveWords::tr("cannot write %1").arg(relative));
-        for (;;) {
-            const la_ssize_t n = archive_read_data(a.get(), buffer.data(), buffer.size());
-            if (n == 0)
-                break;
-            if (n < 0)
-                return refuse(
-                    SubmissionArchiveWords::tr("it is damaged at %1 (%2)")
-                        .arg(relative, QString::fromLocal8Bit(archive_error_string(a.get()))));
-            done.bytes += n;
-            if (done.bytes > limits.maxBytes)
-                return refuse(SubmissionArchiveWords::tr("more than %1 MiB unpacked")
-                                  .arg(limits.maxBytes >> 20));
-            if (done.bytes > limits.minBombBytes && done.bytes / archiveBytes > limits.maxRatio)
-                return refuse(SubmissionArchiveWords::tr(
-                                  "a zip bomb: %1 MiB unpacked from %2 KiB and still going")
-                                  .arg(done.bytes >> 20)
-                                  .arg(archiveBytes >> 10));
-            if (out.write(buffer.data(), n) != n)
-                return refuse(SubmissionArchiveWords::tr("cannot write %1").arg(relative));
-        }
+            return refuse(SubmissionArchiveWords::tr("cannot write %1").arg(t.file));
+        // `out` stays open until a refusal has removed the folder, as before the split.
+        if (const std::optional<QString> why = copyEntryData(u, out, t.file))
+            return refuse(*why);
     }
-    return done;
+    return u.done;
 }
 
 } // namespace phonglab::cli

@@ -73,6 +73,58 @@ std::vector<MistakeFinding> bestFormOfEachKey(std::vector<MistakeFinding> findin
     return out;
 }
 
+using OrderedImages = std::vector<std::pair<MistakeVariant, const RgbImage *>>;
+
+// Mistakes in ShaderMistake's order, so the first of a group of equal
+// images is the one named.
+OrderedImages inMistakeOrder(const MistakeImages &mistaken)
+{
+    OrderedImages images;
+    for (const auto &[mistake, image] : mistaken)
+        images.emplace_back(mistake, &image);
+    std::sort(images.begin(), images.end(),
+              [](const auto &a, const auto &b) { return a.first < b.first; });
+    return images;
+}
+
+// Which mistakes are already in a group of equal images, and the keys with
+// a form that shows here.
+struct ImageGroups {
+    std::vector<bool> grouped;
+    std::vector<ShaderMistake> detectable;
+};
+
+// Groups the later mistakes whose image is image `m`'s with it: their keys
+// go beside `finding`'s.
+void groupSameImages(ImageGroups &groups, const OrderedImages &images, std::size_t m,
+                     const std::vector<std::uint8_t> &compared, MistakeFinding &finding)
+{
+    const RgbImage &image = *images[m].second;
+    for (std::size_t other = m + 1; other < images.size(); ++other) {
+        if (!groups.grouped[other] && sameImage(image, *images[other].second, compared)) {
+            groups.grouped[other] = true;
+            const ShaderMistake key = images[other].first.key;
+            groups.detectable.push_back(key);
+            if (key != finding.key
+                && std::find(finding.also.begin(), finding.also.end(), key) == finding.also.end())
+                finding.also.push_back(key);
+        }
+    }
+}
+
+// The keys none of whose forms shows here, each once.
+std::vector<ShaderMistake> undetectableKeys(const OrderedImages &images,
+                                            const std::vector<ShaderMistake> &detectable)
+{
+    std::vector<ShaderMistake> undetectable;
+    for (const auto &[variant, image] : images)
+        if (std::find(detectable.begin(), detectable.end(), variant.key) == detectable.end()
+            && std::find(undetectable.begin(), undetectable.end(), variant.key)
+                == undetectable.end())
+            undetectable.push_back(variant.key);
+    return undetectable;
+}
+
 } // namespace
 
 bool MistakeDiagnosis::unexplained() const
@@ -131,19 +183,11 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
     const std::vector<std::uint8_t> userDiffers = differing(yours, exact, compared, toleranceSteps);
     diagnosis.differingPixels = std::count(userDiffers.begin(), userDiffers.end(), std::uint8_t(1));
 
-    // Mistakes in ShaderMistake's order, so the first of a group of equal
-    // images is the one named.
-    std::vector<std::pair<MistakeVariant, const RgbImage *>> images;
-    for (const auto &[mistake, image] : mistaken)
-        images.emplace_back(mistake, &image);
-    std::sort(images.begin(), images.end(),
-              [](const auto &a, const auto &b) { return a.first < b.first; });
-
-    std::vector<bool> grouped(images.size(), false);
-    std::vector<ShaderMistake> detectable; // keys with a form that shows here
+    const OrderedImages images = inMistakeOrder(mistaken);
+    ImageGroups groups{std::vector<bool>(images.size(), false), {}};
     std::vector<MistakeFinding> findings;
     for (std::size_t m = 0; m < images.size(); ++m) {
-        if (grouped[m])
+        if (groups.grouped[m])
             continue;
         const RgbImage &image = *images[m].second;
         const std::vector<std::uint8_t> mistakeDiffers =
@@ -154,18 +198,8 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
         MistakeFinding finding;
         finding.key = images[m].first.key;
         finding.form = images[m].first.form;
-        detectable.push_back(finding.key);
-        for (std::size_t other = m + 1; other < images.size(); ++other) {
-            if (!grouped[other] && sameImage(image, *images[other].second, compared)) {
-                grouped[other] = true;
-                const ShaderMistake key = images[other].first.key;
-                detectable.push_back(key);
-                if (key != finding.key
-                    && std::find(finding.also.begin(), finding.also.end(), key)
-                        == finding.also.end())
-                    finding.also.push_back(key);
-            }
-        }
+        groups.detectable.push_back(finding.key);
+        groupSameImages(groups, images, m, compared, finding);
         if (diagnosis.differingPixels == 0)
             continue;
         finding.confidence =
@@ -173,11 +207,7 @@ MistakeDiagnosis diagnoseMistakes(const RgbImage &yours, const RgbImage &exact,
         if (finding.confidence >= kMinListedConfidence)
             findings.push_back(std::move(finding));
     }
-    for (const auto &[variant, image] : images)
-        if (std::find(detectable.begin(), detectable.end(), variant.key) == detectable.end()
-            && std::find(diagnosis.undetectable.begin(), diagnosis.undetectable.end(), variant.key)
-                == diagnosis.undetectable.end())
-            diagnosis.undetectable.push_back(variant.key);
+    diagnosis.undetectable = undetectableKeys(images, groups.detectable);
     diagnosis.findings = bestFormOfEachKey(std::move(findings));
     return diagnosis;
 }

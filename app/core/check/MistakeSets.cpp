@@ -161,6 +161,87 @@ std::vector<Option> nextOptions(const std::vector<MistakeVariant> &set,
     return out;
 }
 
+// The mistakes that can join a set, and the one whose image comes closest
+// (none: no mistake comes closer than the exact image).
+struct FirstMistake {
+    std::vector<Candidate> candidates;
+    const RgbImage *image = nullptr;
+    MistakeVariant variant;
+    double distance = 0.0;
+};
+
+FirstMistake firstMistake(const RgbImage &yours, const RgbImage &exact,
+                          const MistakeImages &singles, const std::vector<std::uint8_t> &compared,
+                          const std::vector<std::size_t> &pixels, const Estimator &estimate)
+{
+    FirstMistake first;
+    first.distance = distance(yours, exact, pixels);
+    for (const auto &[variant, image] : singles) {
+        // A mistake that changes nothing here cannot be told in a set either.
+        if (!combinable(variant.key) || !image.sameSize(exact)
+            || differing(image, exact, compared, 0) == std::vector<std::uint8_t>(compared.size()))
+            continue;
+        first.candidates.push_back({variant, &image, estimate.changeOf(image)});
+        if (const double d = distance(yours, image, pixels); d < first.distance) {
+            first.image = &image;
+            first.variant = variant;
+            first.distance = d;
+        }
+    }
+    return first;
+}
+
+// A set with its image and that image's distance from the render.
+struct ShadedSet {
+    MistakeSet set;
+    RgbImage image;
+    double distance = 0.0;
+};
+
+// How the search shades a set and measures it against the render.
+struct SetShading {
+    const RgbImage &yours;
+    const std::vector<std::size_t> &pixels;
+    const ShadeMistakes &shade;
+};
+
+// Of the sets one step from `current`, the one that shades closest, if any
+// comes closer than `current` (else an empty set).
+ShadedSet closestNextSet(const ShadedSet &current, const std::vector<Candidate> &candidates,
+                         const Estimator &estimate, const SetShading &s)
+{
+    ShadedSet best;
+    best.distance = current.distance;
+    for (Option &option : nextOptions(current.set.variants, candidates, estimate)) {
+        RgbImage image = s.shade(option.set);
+        if (const double d = distance(s.yours, image, s.pixels); d < best.distance) {
+            best.set = {std::move(option.set), 0.0};
+            best.image = std::move(image);
+            best.distance = d;
+        }
+    }
+    return best;
+}
+
+// Two added where one does as well: the one (a mistake must earn its
+// place in the set).
+void preferOneAdded(ShadedSet &best, const std::vector<MistakeVariant> &current,
+                    const SetShading &s)
+{
+    for (std::size_t k = best.set.variants.size() - 2; k < best.set.variants.size(); ++k) {
+        std::vector<MistakeVariant> one = current;
+        one.push_back(best.set.variants[k]);
+        RgbImage image = s.shade(one);
+        if (const double d = distance(s.yours, image, s.pixels);
+            d <= best.distance * (1.0 + kSetDistanceCut / 10.0)) {
+            best.set.variants = std::move(one);
+            best.image = std::move(image);
+            best.distance = d;
+            break;
+        }
+    }
+}
+
 } // namespace
 
 MistakeSet findMistakeSet(const RgbImage &yours, const RgbImage &exact,
@@ -180,63 +261,25 @@ MistakeSet findMistakeSet(const RgbImage &yours, const RgbImage &exact,
     Estimator estimate(yours, exact, evenSample(pixels, kEstimateSamples));
 
     // The set starts with the mistake whose image comes closest.
-    std::vector<Candidate> candidates;
-    const RgbImage *first = nullptr;
-    MistakeVariant firstVariant;
-    double setDistance = distance(yours, exact, pixels);
-    for (const auto &[variant, image] : singles) {
-        // A mistake that changes nothing here cannot be told in a set either.
-        if (!combinable(variant.key) || !image.sameSize(exact)
-            || differing(image, exact, compared, 0) == std::vector<std::uint8_t>(compared.size()))
-            continue;
-        candidates.push_back({variant, &image, estimate.changeOf(image)});
-        if (const double d = distance(yours, image, pixels); d < setDistance) {
-            first = &image;
-            firstVariant = variant;
-            setDistance = d;
-        }
-    }
-    if (!first)
+    const FirstMistake first = firstMistake(yours, exact, singles, compared, pixels, estimate);
+    if (!first.image)
         return {};
-    MistakeSet set{{firstVariant}, explains(*first)};
-    RgbImage setImage = *first;
+    ShadedSet current{{{first.variant}, explains(*first.image)}, *first.image, first.distance};
+    const SetShading shading{yours, pixels, shade};
     // Each step adds a mistake or two, or puts another form of one in its
     // place, while that takes kSetDistanceCut off the distance.
-    for (int step = 0; step < 2 * kMaxMistakesTogether && set.explains < kSetExplains; ++step) {
-        estimate.setBase(setImage);
-        MistakeSet best;
-        RgbImage bestImage;
-        double bestDistance = setDistance;
-        for (Option &option : nextOptions(set.variants, candidates, estimate)) {
-            RgbImage image = shade(option.set);
-            if (const double d = distance(yours, image, pixels); d < bestDistance) {
-                best = {std::move(option.set), 0.0};
-                bestImage = std::move(image);
-                bestDistance = d;
-            }
-        }
-        if (best.variants.empty() || bestDistance > (1.0 - kSetDistanceCut) * setDistance)
+    for (int step = 0; step < 2 * kMaxMistakesTogether && current.set.explains < kSetExplains;
+         ++step) {
+        estimate.setBase(current.image);
+        ShadedSet best = closestNextSet(current, first.candidates, estimate, shading);
+        if (best.set.variants.empty() || best.distance > (1.0 - kSetDistanceCut) * current.distance)
             break;
-        // Two added where one does as well: the one (a mistake must earn its
-        // place in the set).
-        if (best.variants.size() == set.variants.size() + 2)
-            for (std::size_t k = best.variants.size() - 2; k < best.variants.size(); ++k) {
-                std::vector<MistakeVariant> one = set.variants;
-                one.push_back(best.variants[k]);
-                RgbImage image = shade(one);
-                if (const double d = distance(yours, image, pixels);
-                    d <= bestDistance * (1.0 + kSetDistanceCut / 10.0)) {
-                    best.variants = std::move(one);
-                    bestImage = std::move(image);
-                    bestDistance = d;
-                    break;
-                }
-            }
-        best.explains = explains(bestImage);
-        set = std::move(best);
-        setImage = std::move(bestImage);
-        setDistance = bestDistance;
+        if (best.set.variants.size() == current.set.variants.size() + 2)
+            preferOneAdded(best, current.set.variants, shading);
+        best.set.explains = explains(best.image);
+        current = std::move(best);
     }
+    MistakeSet set = std::move(current.set);
     std::sort(set.variants.begin(), set.variants.end());
     set.beyondLimit =
         int(set.variants.size()) >= kMaxMistakesTogether && set.explains < kSetWellExplained;

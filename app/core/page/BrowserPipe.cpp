@@ -30,6 +30,65 @@ void closeFd(int &fd)
     fd = -1;
 }
 
+Result<> makePipes(int toBrowser[2], int fromBrowser[2])
+{
+    if (::pipe2(toBrowser, O_CLOEXEC) != 0)
+        return fail(BrowserPipeWords::tr("cannot make a pipe to the browser"));
+    if (::pipe2(fromBrowser, O_CLOEXEC) != 0) {
+        ::close(toBrowser[0]);
+        ::close(toBrowser[1]);
+        return fail(BrowserPipeWords::tr("cannot make a pipe to the browser"));
+    }
+    return {};
+}
+
+// The pipe's ends must not be fds 3 or 4 themselves: the dup2 in the
+// spawn would overwrite one with the other.
+void moveAboveFd4(int *toBrowserRead, int *fromBrowserWrite)
+{
+    for (int *fd : {toBrowserRead, fromBrowserWrite})
+        if (*fd <= 4) {
+            const int high = ::fcntl(*fd, F_DUPFD_CLOEXEC, 10);
+            ::close(*fd);
+            *fd = high;
+        }
+}
+
+QList<QByteArray> argumentBytes(const QString &program, const QStringList &arguments)
+{
+    QList<QByteArray> argv8{program.toLocal8Bit()};
+    for (const QString &a : arguments + QStringList{QStringLiteral("--remote-debugging-pipe")})
+        argv8.push_back(a.toLocal8Bit());
+    return argv8;
+}
+
+// The environment with the caller's changes: the browser's home and
+// caches go where the run may write.
+QList<QByteArray> environmentBytes(const QMap<QString, QString> &environment)
+{
+    QList<QByteArray> env8;
+    for (char **e = environ; *e; ++e) {
+        const QByteArray entry(*e);
+        const QByteArray name = entry.left(entry.indexOf('='));
+        if (!environment.contains(QString::fromLocal8Bit(name)))
+            env8.push_back(entry);
+    }
+    for (auto it = environment.cbegin(); it != environment.cend(); ++it)
+        env8.push_back((it.key() + QLatin1Char('=') + it.value()).toLocal8Bit());
+    return env8;
+}
+
+// The char* array execve wants, pointing into `strings` (which must outlive
+// it), ended by a null pointer.
+std::vector<char *> nullTerminated(QList<QByteArray> &strings)
+{
+    std::vector<char *> pointers;
+    for (QByteArray &s : strings)
+        pointers.push_back(s.data());
+    pointers.push_back(nullptr);
+    return pointers;
+}
+
 } // namespace
 
 BrowserPipe::~BrowserPipe()
@@ -60,44 +119,14 @@ Result<> BrowserPipe::start(const QString &program, const QStringList &arguments
     m_limitMs = timeLimitMs;
     int toBrowser[2];
     int fromBrowser[2];
-    if (::pipe2(toBrowser, O_CLOEXEC) != 0)
-        return fail(BrowserPipeWords::tr("cannot make a pipe to the browser"));
-    if (::pipe2(fromBrowser, O_CLOEXEC) != 0) {
-        ::close(toBrowser[0]);
-        ::close(toBrowser[1]);
-        return fail(BrowserPipeWords::tr("cannot make a pipe to the browser"));
-    }
-    // The pipe's ends must not be fds 3 or 4 themselves: the dup2 below
-    // would overwrite one with the other.
-    for (int *fd : {&toBrowser[0], &fromBrowser[1]})
-        if (*fd <= 4) {
-            const int high = ::fcntl(*fd, F_DUPFD_CLOEXEC, 10);
-            ::close(*fd);
-            *fd = high;
-        }
-    QList<QByteArray> argv8{program.toLocal8Bit()};
-    for (const QString &a : arguments + QStringList{QStringLiteral("--remote-debugging-pipe")})
-        argv8.push_back(a.toLocal8Bit());
-    std::vector<char *> argv;
-    for (QByteArray &a : argv8)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
+    if (Result<> made = makePipes(toBrowser, fromBrowser); !made)
+        return made;
+    moveAboveFd4(&toBrowser[0], &fromBrowser[1]);
+    QList<QByteArray> argv8 = argumentBytes(program, arguments);
+    const std::vector<char *> argv = nullTerminated(argv8);
     const QByteArray log = logFile.toLocal8Bit();
-    // The environment with the caller's changes: the browser's home and
-    // caches go where the run may write.
-    QList<QByteArray> env8;
-    for (char **e = environ; *e; ++e) {
-        const QByteArray entry(*e);
-        const QByteArray name = entry.left(entry.indexOf('='));
-        if (!environment.contains(QString::fromLocal8Bit(name)))
-            env8.push_back(entry);
-    }
-    for (auto it = environment.cbegin(); it != environment.cend(); ++it)
-        env8.push_back((it.key() + QLatin1Char('=') + it.value()).toLocal8Bit());
-    std::vector<char *> envp;
-    for (QByteArray &e : env8)
-        envp.push_back(e.data());
-    envp.push_back(nullptr);
+    QList<QByteArray> env8 = environmentBytes(environment);
+    const std::vector<char *> envp = nullTerminated(env8);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);

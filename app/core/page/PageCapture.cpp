@@ -195,18 +195,11 @@ std::vector<const CapturedOp *> PageCapture::draws() const
     return out;
 }
 
-Result<PageCapture> readPageCapture(const QByteArray &json)
+namespace {
+
+// The page, its frame and the canvas's pixels, checked against its size.
+Result<> readCanvas(const QJsonObject &o, PageCapture &c)
 {
-    QJsonParseError error{};
-    const QJsonDocument document = QJsonDocument::fromJson(json, &error);
-    if (error.error != QJsonParseError::NoError)
-        return fail(PageCaptureWords::tr("not JSON at byte %1: %2")
-                        .arg(error.offset)
-                        .arg(error.errorString()));
-    const QJsonObject o = document.object();
-    if (o.value(key("format")).toInt() != 1)
-        return fail(PageCaptureWords::tr("not a page capture of format 1 (key \"format\")"));
-    PageCapture c;
     c.webgl = o.value(key("webgl")).toInt();
     c.page = o.value(key("page")).toString();
     c.frame = o.value(key("frame")).toInt();
@@ -222,6 +215,12 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
                         .arg(c.pixels.size())
                         .arg(c.canvas.width())
                         .arg(c.canvas.height()));
+    return {};
+}
+
+// The frame's clears and draws, within what PhongLab checks.
+Result<> readOps(const QJsonObject &o, PageCapture &c)
+{
     const QJsonArray ops = o.value(key("draws")).toArray();
     if (ops.size() > kMaxCapturedOps)
         return fail(PageCaptureWords::tr("key \"draws\": %1 clears and draws in one frame, more "
@@ -238,6 +237,11 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
                                          "PhongLab checks (%2)")
                         .arg(vertices)
                         .arg(kMaxCapturedVertices));
+    return {};
+}
+
+void readProgramsAndBuffers(const QJsonObject &o, PageCapture &c)
+{
     for (const QJsonValue &value : o.value(key("programs")).toArray()) {
         const QJsonObject p = value.toObject();
         c.programs.push_back({p.value(key("id")).toInt(), p.value(key("vertex")).toString(),
@@ -250,6 +254,12 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
         c.buffers[it.key()] = {QByteArray::fromBase64(b.value(key("bytes")).toString().toLatin1()),
                                readStack(b.value(key("set_at")))};
     }
+}
+
+// What the run met besides the drawing: the steps, errors, and the files
+// served and refused.
+void readRunNotes(const QJsonObject &o, PageCapture &c)
+{
     for (const QJsonValue &value : o.value(key("steps")).toArray())
         c.steps.push_back({value.toObject().value(key("step")).toString(),
                            value.toObject().value(key("problem")).toString()});
@@ -264,6 +274,28 @@ Result<PageCapture> readPageCapture(const QByteArray &json)
                             + value.toObject().value(key("url")).toString());
     for (const QJsonValue &value : o.value(key("served")).toArray())
         c.served.push_back(value.toString());
+}
+
+} // namespace
+
+Result<PageCapture> readPageCapture(const QByteArray &json)
+{
+    QJsonParseError error{};
+    const QJsonDocument document = QJsonDocument::fromJson(json, &error);
+    if (error.error != QJsonParseError::NoError)
+        return fail(PageCaptureWords::tr("not JSON at byte %1: %2")
+                        .arg(error.offset)
+                        .arg(error.errorString()));
+    const QJsonObject o = document.object();
+    if (o.value(key("format")).toInt() != 1)
+        return fail(PageCaptureWords::tr("not a page capture of format 1 (key \"format\")"));
+    PageCapture c;
+    if (const Result<> canvas = readCanvas(o, c); !canvas)
+        return fail(canvas.error());
+    if (const Result<> ops = readOps(o, c); !ops)
+        return fail(ops.error());
+    readProgramsAndBuffers(o, c);
+    readRunNotes(o, c);
     return c;
 }
 

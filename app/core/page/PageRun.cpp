@@ -190,6 +190,96 @@ QByteArray withRequests(const QByteArray &capture, const QString &page,
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
+// The throwaway profile's folder: under the run's work folder where it has
+// one.
+std::unique_ptr<QTemporaryDir> makeProfileFolder(const QString &workFolder)
+{
+    if (workFolder.isEmpty())
+        return std::make_unique<QTemporaryDir>();
+    return std::make_unique<QTemporaryDir>(QDir(workFolder).filePath(str("browser-XXXXXX")));
+}
+
+QMap<QString, QString> browserEnvironment(const QString &home)
+{
+    return {{str("HOME"), home},
+            {str("XDG_CONFIG_HOME"), home + str("/config")},
+            {str("XDG_CACHE_HOME"), home + str("/cache")},
+            {str("TZ"), str("UTC")},
+            {str("LANG"), str("C.UTF-8")}};
+}
+
+// Whether the student's page has loaded, from the browser's page events.
+struct PageLoad {
+    bool navigated = false;
+    bool loaded = false;
+
+    void see(const QString &method, const QJsonObject &params)
+    {
+        // about:blank's own load may come after Page.enable: only the
+        // student's page, once the main frame has gone to it, counts.
+        if (method == str("Page.frameNavigated")
+            && !params.value(str("frame")).toObject().contains(str("parentId")))
+            navigated = params.value(str("frame"))
+                            .toObject()
+                            .value(str("url"))
+                            .toString()
+                            .startsWith(kPageOrigin);
+        else if (method == str("Page.loadEventFired") && navigated)
+            loaded = true;
+    }
+};
+
+// Each part of the page's path percent-encoded: a page named "50%.html"
+// or "a#b.html" is a file, not a fragment.
+QString pageUrl(const QString &page)
+{
+    QStringList parts;
+    for (const QString &part : page.split(QLatin1Char('/')))
+        parts << QString::fromLatin1(QUrl::toPercentEncoding(part));
+    return kPageOrigin + QLatin1Char('/') + parts.join(QLatin1Char('/'));
+}
+
+// Navigates to the page, its time limit starting now, and waits for its load.
+Result<> openPage(BrowserPipe &pipe, const QString &session, const PageRunOptions &options,
+                  const QString &page, const PageLoad &load)
+{
+    const QString url = pageUrl(page);
+    pipe.restartTimeLimit(options.timeLimitMs);
+    const Result<QJsonObject> navigation =
+        pipe.call(str("Page.navigate"), {{str("url"), url}}, session);
+    if (!navigation)
+        return fail(navigation.error());
+    if (const QString error = navigation->value(str("errorText")).toString(); !error.isEmpty())
+        return fail(PageRunWords::tr("the page %1 could not be opened: %2").arg(page, error));
+    if (const Result<> waited = pipe.waitUntil([&] { return load.loaded; }); !waited)
+        return fail(waited.error());
+    return {};
+}
+
+// Runs capture.js's steps and frames in the page; its JSON text.
+Result<QString> evaluateCapture(BrowserPipe &pipe, const QString &session,
+                                const PageRunOptions &options)
+{
+    const QString run =
+        QStringLiteral("window.__phonglab ? window.__phonglab.run(%1, %2) : null")
+            .arg(options.frames)
+            .arg(QString::fromUtf8(QJsonDocument(QJsonArray::fromStringList(options.steps))
+                                       .toJson(QJsonDocument::Compact)));
+    const Result<QJsonObject> evaluated = pipe.call(
+        str("Runtime.evaluate"),
+        {{str("expression"), run}, {str("awaitPromise"), true}, {str("returnByValue"), true}},
+        session);
+    if (!evaluated)
+        return fail(evaluated.error());
+    if (evaluated->contains(str("exceptionDetails")))
+        return fail(PageRunWords::tr("the capture failed: %1").arg(evaluationError(*evaluated)));
+    const QJsonValue value = evaluated->value(str("result")).toObject().value(str("value"));
+    if (!value.isString())
+        return fail(PageRunWords::tr("the page's document was replaced before it could be "
+                                     "captured"));
+    return value.toString();
+}
+
 } // namespace
 
 QString browserMissingMessage()
@@ -234,20 +324,11 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
     if (script.isEmpty())
         return fail(str("capture.js is missing from the build"));
 
-    std::unique_ptr<QTemporaryDir> temporary;
-    if (options.workFolder.isEmpty())
-        temporary = std::make_unique<QTemporaryDir>();
-    else
-        temporary = std::make_unique<QTemporaryDir>(
-            QDir(options.workFolder).filePath(str("browser-XXXXXX")));
+    const std::unique_ptr<QTemporaryDir> temporary = makeProfileFolder(options.workFolder);
     if (!temporary->isValid())
         return fail(PageRunWords::tr("cannot make a folder for the browser's profile"));
     const QString home = temporary->path();
-    const QMap<QString, QString> environment{{str("HOME"), home},
-                                             {str("XDG_CONFIG_HOME"), home + str("/config")},
-                                             {str("XDG_CACHE_HOME"), home + str("/cache")},
-                                             {str("TZ"), str("UTC")},
-                                             {str("LANG"), str("C.UTF-8")}};
+    const QMap<QString, QString> environment = browserEnvironment(home);
 
     BrowserPipe pipe;
     if (const Result<> started =
@@ -257,22 +338,12 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
         return fail(started.error());
     pipe.cancelled = options.cancelled;
     RequestAnswers answers(&pipe, options.folders);
-    bool navigated = false;
-    bool loaded = false;
+    PageLoad load;
     pipe.onEvent = [&](const QString &method, const QJsonObject &params, const QString &session) {
         if (method == str("Fetch.requestPaused"))
             answers.answer(params, session);
-        // about:blank's own load may come after Page.enable: only the
-        // student's page, once the main frame has gone to it, counts.
-        else if (method == str("Page.frameNavigated")
-                 && !params.value(str("frame")).toObject().contains(str("parentId")))
-            navigated = params.value(str("frame"))
-                            .toObject()
-                            .value(str("url"))
-                            .toString()
-                            .startsWith(kPageOrigin);
-        else if (method == str("Page.loadEventFired") && navigated)
-            loaded = true;
+        else
+            load.see(method, params);
     };
     const auto failed = [&](const QString &why) -> Result<PageRunOutput> {
         pipe.stop();
@@ -283,42 +354,13 @@ Result<PageRunOutput> runPage(const PageRunOptions &options)
         return failed(session.error());
     if (const Result<> ready = prepareSession(pipe, *session, options, script); !ready)
         return failed(ready.error());
-    // Each part of the page's path percent-encoded: a page named "50%.html"
-    // or "a#b.html" is a file, not a fragment.
-    QStringList parts;
-    for (const QString &part : page->split(QLatin1Char('/')))
-        parts << QString::fromLatin1(QUrl::toPercentEncoding(part));
-    const QString url = kPageOrigin + QLatin1Char('/') + parts.join(QLatin1Char('/'));
-    pipe.restartTimeLimit(options.timeLimitMs);
-    const Result<QJsonObject> navigation =
-        pipe.call(str("Page.navigate"), {{str("url"), url}}, *session);
-    if (!navigation)
-        return failed(navigation.error());
-    if (const QString error = navigation->value(str("errorText")).toString(); !error.isEmpty())
-        return failed(PageRunWords::tr("the page %1 could not be opened: %2").arg(*page, error));
-    if (const Result<> waited = pipe.waitUntil([&] { return loaded; }); !waited)
-        return failed(waited.error());
-
-    const QString run =
-        QStringLiteral("window.__phonglab ? window.__phonglab.run(%1, %2) : null")
-            .arg(options.frames)
-            .arg(QString::fromUtf8(QJsonDocument(QJsonArray::fromStringList(options.steps))
-                                       .toJson(QJsonDocument::Compact)));
-    const Result<QJsonObject> evaluated = pipe.call(
-        str("Runtime.evaluate"),
-        {{str("expression"), run}, {str("awaitPromise"), true}, {str("returnByValue"), true}},
-        *session);
-    if (!evaluated)
-        return failed(evaluated.error());
-    if (evaluated->contains(str("exceptionDetails")))
-        return failed(PageRunWords::tr("the capture failed: %1").arg(evaluationError(*evaluated)));
-    const QJsonValue value = evaluated->value(str("result")).toObject().value(str("value"));
-    if (!value.isString())
-        return failed(PageRunWords::tr("the page's document was replaced before it could be "
-                                       "captured"));
+    if (const Result<> opened = openPage(pipe, *session, options, *page, load); !opened)
+        return failed(opened.error());
+    const Result<QString> capture = evaluateCapture(pipe, *session, options);
+    if (!capture)
+        return failed(capture.error());
     output.requests = answers.requests();
-    output.capture =
-        withRequests(value.toString().toUtf8(), *page, output.requests, options.folders);
+    output.capture = withRequests(capture->toUtf8(), *page, output.requests, options.folders);
     pipe.stop();
     output.milliseconds = pipe.elapsedMs();
     return output;

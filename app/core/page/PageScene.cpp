@@ -195,72 +195,104 @@ struct Shading {
     Material material;
 };
 
+// The material's colours as sent: its own factors, a single colour, or one
+// matrix of all three.
+Material sentMaterial(const DrawValues &v)
+{
+    Material material;
+    material.ka = v.vec3(M::Ka).value_or(glm::dvec3(1.0));
+    material.kd = v.vec3(M::Kd).value_or(v.vec3(M::MaterialColor).value_or(glm::dvec3(1.0)));
+    material.ks = v.vec3(M::Ks).value_or(glm::dvec3(1.0));
+    if (const auto color = v.vec3(M::MaterialColor); color && !v.vec3(M::Ka))
+        material.ka = *color;
+    if (const auto terms = v.matrix(M::MaterialTerms)) {
+        material.ka = glm::dvec3((*terms)[0]);
+        material.kd = glm::dvec3((*terms)[1]);
+        material.ks = glm::dvec3((*terms)[2]);
+    }
+    return material;
+}
+
+// How the lights' colours are sent: as products with the material's, or
+// as one matrix of ambient, diffuse and specular.
+struct LightFactors {
+    bool diffuseProduct = false;
+    bool specularProduct = false;
+    std::optional<glm::dmat4> lightTerms;
+};
+
+Result<glm::dvec3> sentLightPosition(const DrawValues &v, int k,
+                                     const std::optional<glm::dmat4> &view)
+{
+    for (const M meaning : {M::LightPosition, M::LightPositionCamera})
+        if (const auto sent = v.value(meaning, k); sent && sent->size() == 4 && (*sent)[3] == 0.0)
+            return fail(PageSceneWords::tr("light %1 is a direction (w = 0): the exact image "
+                                           "here lights from points")
+                            .arg(k + 1));
+    if (const auto world = v.vec3(M::LightPosition, k)) {
+        // A page that sends no view (a model-view alone) gives its
+        // shader no world coordinates: its light is in the only space
+        // the shader has, the camera's (Angel's lightPosition).
+        return view ? glm::dvec3(*view * glm::dvec4(*world, 1.0)) : *world;
+    }
+    if (const auto camera = v.vec3(M::LightPositionCamera, k))
+        return *camera;
+    return fail(PageSceneWords::tr("light %1 has no position sent").arg(k + 1));
+}
+
+Result<PointLight> sentLight(const DrawValues &v, int k, const std::optional<glm::dmat4> &view,
+                             const LightFactors &f)
+{
+    PointLight light;
+    const Result<glm::dvec3> position = sentLightPosition(v, k, view);
+    if (!position)
+        return fail(position.error());
+    light.position = *position;
+    const auto color = v.vec3(M::LightColor, k);
+    light.diffuse = v.vec3(f.diffuseProduct ? M::DiffuseProduct : M::LightDiffuse, k)
+                        .value_or(color.value_or(f.lightTerms ? glm::dvec3((*f.lightTerms)[1])
+                                                              : glm::dvec3(1.0)));
+    light.specular = v.vec3(f.specularProduct ? M::SpecularProduct : M::LightSpecular, k)
+                         .value_or(color.value_or(f.lightTerms ? glm::dvec3((*f.lightTerms)[2])
+                                                               : glm::dvec3(1.0)));
+    if (const auto att = v.vec3(M::Attenuation, k))
+        light.attenuation = *att;
+    else
+        light.attenuation =
+            glm::dvec3(v.number(M::C1, k).value_or(1.0), v.number(M::C2, k).value_or(0.0),
+                       v.number(M::C3, k).value_or(0.0));
+    return light;
+}
+
 Result<Shading> shadingOf(const DrawValues &v, const std::optional<glm::dmat4> &view)
 {
     Shading s;
-    s.material.ka = v.vec3(M::Ka).value_or(glm::dvec3(1.0));
-    s.material.kd = v.vec3(M::Kd).value_or(v.vec3(M::MaterialColor).value_or(glm::dvec3(1.0)));
-    s.material.ks = v.vec3(M::Ks).value_or(glm::dvec3(1.0));
-    if (const auto color = v.vec3(M::MaterialColor); color && !v.vec3(M::Ka))
-        s.material.ka = *color;
-    if (const auto terms = v.matrix(M::MaterialTerms)) {
-        s.material.ka = glm::dvec3((*terms)[0]);
-        s.material.kd = glm::dvec3((*terms)[1]);
-        s.material.ks = glm::dvec3((*terms)[2]);
-    }
+    s.material = sentMaterial(v);
     const auto shininess = v.number(M::Shininess);
     s.material.shininess = shininess.value_or(1.0);
-    const auto lightTerms = v.matrix(M::LightTerms);
-    s.ambient =
-        v.vec3(M::Ambient).value_or(lightTerms ? glm::dvec3((*lightTerms)[0]) : glm::dvec3(0.0));
+    const LightFactors f{v.value(M::DiffuseProduct).has_value(),
+                         v.value(M::SpecularProduct).has_value(), v.matrix(M::LightTerms)};
+    s.ambient = v.vec3(M::Ambient)
+                    .value_or(f.lightTerms ? glm::dvec3((*f.lightTerms)[0]) : glm::dvec3(0.0));
     if (const auto product = v.vec3(M::AmbientProduct)) {
         s.ambient = *product;
         s.material.ka = glm::dvec3(1.0);
     }
-    const bool diffuseProduct = v.value(M::DiffuseProduct).has_value();
-    const bool specularProduct = v.value(M::SpecularProduct).has_value();
-    if (diffuseProduct)
+    if (f.diffuseProduct)
         s.material.kd = glm::dvec3(1.0);
-    if (specularProduct)
+    if (f.specularProduct)
         s.material.ks = glm::dvec3(1.0);
-    const bool anySpecular = specularProduct || v.value(M::LightSpecular) || v.value(M::Ks)
-        || v.value(M::LightColor) || lightTerms;
+    const bool anySpecular = f.specularProduct || v.value(M::LightSpecular) || v.value(M::Ks)
+        || v.value(M::LightColor) || f.lightTerms;
     if (!anySpecular)
         s.material.ks = glm::dvec3(0.0);
     else if (!shininess)
         return fail(PageSceneWords::tr("the specular term has no shininess sent"));
     for (int k = 0; k < v.lightCount(); ++k) {
-        PointLight light;
-        for (const M meaning : {M::LightPosition, M::LightPositionCamera})
-            if (const auto sent = v.value(meaning, k);
-                sent && sent->size() == 4 && (*sent)[3] == 0.0)
-                return fail(PageSceneWords::tr("light %1 is a direction (w = 0): the exact image "
-                                               "here lights from points")
-                                .arg(k + 1));
-        if (const auto world = v.vec3(M::LightPosition, k)) {
-            // A page that sends no view (a model-view alone) gives its
-            // shader no world coordinates: its light is in the only space
-            // the shader has, the camera's (Angel's lightPosition).
-            light.position = view ? glm::dvec3(*view * glm::dvec4(*world, 1.0)) : *world;
-        } else if (const auto camera = v.vec3(M::LightPositionCamera, k)) {
-            light.position = *camera;
-        } else {
-            return fail(PageSceneWords::tr("light %1 has no position sent").arg(k + 1));
-        }
-        const auto color = v.vec3(M::LightColor, k);
-        light.diffuse = v.vec3(diffuseProduct ? M::DiffuseProduct : M::LightDiffuse, k)
-                            .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[1])
-                                                                : glm::dvec3(1.0)));
-        light.specular = v.vec3(specularProduct ? M::SpecularProduct : M::LightSpecular, k)
-                             .value_or(color.value_or(lightTerms ? glm::dvec3((*lightTerms)[2])
-                                                                 : glm::dvec3(1.0)));
-        if (const auto att = v.vec3(M::Attenuation, k))
-            light.attenuation = *att;
-        else
-            light.attenuation =
-                glm::dvec3(v.number(M::C1, k).value_or(1.0), v.number(M::C2, k).value_or(0.0),
-                           v.number(M::C3, k).value_or(0.0));
-        s.lights.push_back(light);
+        const Result<PointLight> light = sentLight(v, k, view, f);
+        if (!light)
+            return fail(light.error());
+        s.lights.push_back(*light);
     }
     if (s.lights.empty())
         return fail(PageSceneWords::tr("no light is sent"));

@@ -51,9 +51,11 @@ struct Aliases {
     BindingMeaning meaning;
     std::vector<const char *> names;
 };
-const std::vector<Aliases> &aliasTable()
+
+// Vertex inputs: the attributes of the mesh.
+std::vector<Aliases> vertexInputAliases()
 {
-    static const std::vector<Aliases> table = {
+    return {
         {M::Position,
          {"position", "pos", "vertexposition", "vertexpos", "vertpos", "vertex", "vpos",
           "vposition", "p", "objectposition", "positionobject", "modelposition", "positionos",
@@ -61,6 +63,13 @@ const std::vector<Aliases> &aliasTable()
         {M::Normal,
          {"normal", "norm", "vertexnormal", "vertnormal", "vnormal", "n", "objectnormal",
           "normalobject", "normalos"}},
+    };
+}
+
+// The matrices a scene object and the camera give.
+std::vector<Aliases> transformAliases()
+{
+    return {
         {M::Model, {"model", "world", "modelworld", "objecttoworld", "modeltoworld", "m", "obj"}},
         {M::View,
          {"view", "camera", "cam", "lookat", "worldtoview", "worldtocamera", "v", "viewing"}},
@@ -80,6 +89,13 @@ const std::vector<Aliases> &aliasTable()
          {"modelnormal", "normalmodel", "normalworld", "worldnormal", "modelinversetranspose",
           "modelit", "mit", "inversetransposemodel", "worldinversetranspose", "normalm",
           "normalobjecttoworld"}},
+    };
+}
+
+// The camera's position.
+std::vector<Aliases> cameraAliases()
+{
+    return {
         {M::Eye,
          {"eye",
           "eyeposition",
@@ -102,6 +118,13 @@ const std::vector<Aliases> &aliasTable()
           "cameraworldpos",
           "eyeworldposition",
           "eyeworldpos"}},
+    };
+}
+
+// The lights of the scene, and its ambient light.
+std::vector<Aliases> lightAliases()
+{
+    return {
         {M::LightPosition,
          {"light",
           "lightposition",
@@ -155,6 +178,13 @@ const std::vector<Aliases> &aliasTable()
          {"ia", "ambientintensity", "ambientlight", "ambientcolor", "ambientcolour", "lightambient",
           "globalambient", "iambient", "ambientlightcolor", "ambientlightcolour",
           "ambientlightintensity", "intensityambient", "sceneambient"}},
+    };
+}
+
+// The material of the object.
+std::vector<Aliases> materialAliases()
+{
+    return {
         {M::Ka,
          {"ka", "ambientreflection", "ambientreflectance", "ambientreflectivity",
           "ambientcoefficient", "ambientcoeff", "materialambient", "matambient", "kambient",
@@ -171,6 +201,16 @@ const std::vector<Aliases> &aliasTable()
          {"shininess", "n", "shine", "shininessexponent", "specularexponent", "exponent",
           "phongexponent", "specularpower", "materialshininess", "matshininess", "glossiness",
           "specexp", "specularshininess", "ns", "specexponent", "phongn", "power"}},
+    };
+}
+
+// What shaders written to other conventions than PhongLab's pass instead:
+// light and material premultiplied (ambientProduct = Ia·ka, as in Angel's
+// textbook), one colour per light or per material, or the light position
+// already in camera space.
+std::vector<Aliases> otherConventionAliases()
+{
+    return {
         {M::AmbientProduct, {"ambientproduct", "ambientprod", "productambient"}},
         {M::DiffuseProduct, {"diffuseproduct", "diffuseprod", "productdiffuse"}},
         {M::SpecularProduct, {"specularproduct", "specularprod", "productspecular"}},
@@ -187,6 +227,20 @@ const std::vector<Aliases> &aliasTable()
           "lightpositioncamera", "lightposcam", "lightposec", "lightpositionec", "lightposvs",
           "lightpositionvs", "lightposes", "lightpositiones", "lightposcs", "lightpositioncs"}},
     };
+}
+
+// Every alias, in the order lookUp() and likelyMeaning() try them: an
+// earlier entry wins a name two entries share.
+const std::vector<Aliases> &aliasTable()
+{
+    static const std::vector<Aliases> table = [] {
+        std::vector<Aliases> all;
+        for (const std::vector<Aliases> &group :
+             {vertexInputAliases(), transformAliases(), cameraAliases(), lightAliases(),
+              materialAliases(), otherConventionAliases()})
+            all.insert(all.end(), group.begin(), group.end());
+        return all;
+    }();
     return table;
 }
 

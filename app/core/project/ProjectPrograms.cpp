@@ -204,6 +204,82 @@ QStringList readProjectFiles(const QString &path, QStringList *notes,
     return read;
 }
 
+// Pairs the shaders into programs, each shader into one program at most, by
+// ever weaker evidence: the project's own calls, then stems, then what is left.
+struct ShaderPairing {
+    const std::vector<ProjectShader> &shaders;
+    std::vector<ProjectProgram> &programs;
+    std::vector<bool> taken = std::vector<bool>(shaders.size(), false);
+
+    // Makes a program of vertex shader v and fragment shader f where both
+    // are shaders of their stage that no program has taken.
+    void pair(int v, int f)
+    {
+        if (v < 0 || f < 0 || v == f || taken[std::size_t(v)] || taken[std::size_t(f)]
+            || shaders[std::size_t(v)].stage != ShaderStage::Vertex
+            || shaders[std::size_t(f)].stage != ShaderStage::Fragment)
+            return;
+        taken[std::size_t(v)] = taken[std::size_t(f)] = true;
+        ProjectProgram program;
+        program.vertex = shaders[std::size_t(v)];
+        program.fragment = shaders[std::size_t(f)];
+        program.name = programName(program.vertex, program.fragment);
+        program.lit = mentionsLight(program.vertex.code) || mentionsLight(program.fragment.code);
+        programs.push_back(std::move(program));
+    }
+
+    // 1. The project's own calls.
+    void pairByCalls(const QStringList &files)
+    {
+        for (const QString &file : files)
+            for (const JsProgramCall &call : programCallsInFile(file))
+                pair(resolve(shaders, call.vertex, file), resolve(shaders, call.fragment, file));
+    }
+
+    // 2. Names that differ only in a stage word (non-empty stems).
+    void pairByStems()
+    {
+        for (std::size_t v = 0; v < shaders.size(); ++v)
+            for (std::size_t f = 0; f < shaders.size(); ++f)
+                if (!taken[v] && !taken[f] && !stemOf(shaders[v].key).isEmpty()
+                    && stemOf(shaders[v].key) == stemOf(shaders[f].key))
+                    pair(int(v), int(f));
+    }
+
+    // 3. The one vertex and one fragment shader left.
+    void pairTheLastTwo()
+    {
+        std::vector<int> vertices, fragments;
+        for (std::size_t i = 0; i < shaders.size(); ++i)
+            if (!taken[i])
+                (shaders[i].stage == ShaderStage::Vertex ? vertices : fragments).push_back(int(i));
+        if (vertices.size() == 1 && fragments.size() == 1)
+            pair(vertices.front(), fragments.front());
+    }
+
+    void noteUntaken(QStringList &notes) const
+    {
+        for (std::size_t i = 0; i < shaders.size(); ++i)
+            if (!taken[i])
+                notes << ProjectProgramsWords::tr("%1 (%2): a %3 shader no program takes")
+                             .arg(QFileInfo(shaders[i].file).fileName(), shaders[i].key,
+                                  shaders[i].stage == ShaderStage::Vertex
+                                      ? ProjectProgramsWords::tr("vertex")
+                                      : ProjectProgramsWords::tr("fragment"));
+    }
+};
+
+// Unique names, in a stable order.
+void sortAndNameUniquely(std::vector<ProjectProgram> &programs)
+{
+    std::stable_sort(
+        programs.begin(), programs.end(),
+        [](const ProjectProgram &a, const ProjectProgram &b) { return a.name < b.name; });
+    for (std::size_t i = 1; i < programs.size(); ++i)
+        if (programs[i].name == programs[i - 1].name)
+            programs[i].name += QStringLiteral("-%1").arg(i + 1);
+}
+
 } // namespace
 
 Project readProject(const QString &path)
@@ -216,51 +292,12 @@ Project readProject(const QString &path)
     }
     std::vector<ProjectShader> shaders;
     const QStringList files = readProjectFiles(path, &project.notes, &shaders);
-    std::vector<bool> taken(shaders.size(), false);
-    const auto pair = [&](int v, int f) {
-        if (v < 0 || f < 0 || v == f || taken[std::size_t(v)] || taken[std::size_t(f)]
-            || shaders[std::size_t(v)].stage != ShaderStage::Vertex
-            || shaders[std::size_t(f)].stage != ShaderStage::Fragment)
-            return;
-        taken[std::size_t(v)] = taken[std::size_t(f)] = true;
-        ProjectProgram program;
-        program.vertex = shaders[std::size_t(v)];
-        program.fragment = shaders[std::size_t(f)];
-        program.name = programName(program.vertex, program.fragment);
-        program.lit = mentionsLight(program.vertex.code) || mentionsLight(program.fragment.code);
-        project.programs.push_back(std::move(program));
-    };
-    // 1. The project's own calls.
-    for (const QString &file : files)
-        for (const JsProgramCall &call : programCallsInFile(file))
-            pair(resolve(shaders, call.vertex, file), resolve(shaders, call.fragment, file));
-    // 2. Names that differ only in a stage word (non-empty stems).
-    for (std::size_t v = 0; v < shaders.size(); ++v)
-        for (std::size_t f = 0; f < shaders.size(); ++f)
-            if (!taken[v] && !taken[f] && !stemOf(shaders[v].key).isEmpty()
-                && stemOf(shaders[v].key) == stemOf(shaders[f].key))
-                pair(int(v), int(f));
-    // 3. The one vertex and one fragment shader left.
-    std::vector<int> vertices, fragments;
-    for (std::size_t i = 0; i < shaders.size(); ++i)
-        if (!taken[i])
-            (shaders[i].stage == ShaderStage::Vertex ? vertices : fragments).push_back(int(i));
-    if (vertices.size() == 1 && fragments.size() == 1)
-        pair(vertices.front(), fragments.front());
-    for (std::size_t i = 0; i < shaders.size(); ++i)
-        if (!taken[i])
-            project.notes << ProjectProgramsWords::tr("%1 (%2): a %3 shader no program takes")
-                                 .arg(QFileInfo(shaders[i].file).fileName(), shaders[i].key,
-                                      shaders[i].stage == ShaderStage::Vertex
-                                          ? ProjectProgramsWords::tr("vertex")
-                                          : ProjectProgramsWords::tr("fragment"));
-    // Unique names, in a stable order.
-    std::stable_sort(
-        project.programs.begin(), project.programs.end(),
-        [](const ProjectProgram &a, const ProjectProgram &b) { return a.name < b.name; });
-    for (std::size_t i = 1; i < project.programs.size(); ++i)
-        if (project.programs[i].name == project.programs[i - 1].name)
-            project.programs[i].name += QStringLiteral("-%1").arg(i + 1);
+    ShaderPairing pairing{shaders, project.programs};
+    pairing.pairByCalls(files);
+    pairing.pairByStems();
+    pairing.pairTheLastTwo();
+    pairing.noteUntaken(project.notes);
+    sortAndNameUniquely(project.programs);
     for (const ProjectProgram &p : project.programs)
         if (!p.lit)
             project.notes << ProjectProgramsWords::tr(

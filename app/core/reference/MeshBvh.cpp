@@ -180,6 +180,154 @@ Split bestSahSplit(const std::vector<std::uint32_t> &order, std::uint32_t begin,
     return best;
 }
 
+// The per-triangle input of the build, indexed by mesh triangle; `order`
+// is the permutation the build sorts into the BVH's triangle order.
+struct BuildInput {
+    std::vector<Box> boxes;
+    std::vector<glm::vec3> centroids;
+    std::vector<std::uint32_t> order;
+};
+
+BuildInput triangleBounds(const MeshData &mesh, std::uint32_t n)
+{
+    BuildInput in{std::vector<Box>(n), std::vector<glm::vec3>(n), std::vector<std::uint32_t>(n)};
+    for (std::uint32_t tri = 0; tri < n; ++tri) {
+        for (int k = 0; k < 3; ++k)
+            in.boxes[tri].grow(mesh.positions[mesh.indices[3 * std::size_t(tri) + k]]);
+        in.centroids[tri] = 0.5f * (in.boxes[tri].lo + in.boxes[tri].hi);
+        in.order[tri] = tri;
+    }
+    return in;
+}
+
+// Moves the triangles of bins [0, split.bin] to the front of the range and
+// returns where the rest begins. The bin of a triangle is recomputed exactly
+// as bestSahSplit() computed it.
+std::uint32_t partitionAtSahSplit(BuildInput &in, const BuildTask &task, const Box &centroidBounds,
+                                  const Split &split)
+{
+    const int axis = split.axis;
+    const double lo = centroidBounds.lo[axis];
+    const double scale = kBins / (double(centroidBounds.hi[axis]) - lo);
+    return std::uint32_t(
+        std::partition(in.order.begin() + task.begin, in.order.begin() + task.end,
+                       [&](std::uint32_t tri) {
+                           return std::min(int((in.centroids[tri][axis] - lo) * scale), kBins - 1)
+                               <= split.bin;
+                       })
+        - in.order.begin());
+}
+
+// No usable SAH split (identical centroids, or too deep): halve the range
+// along the widest centroid axis.
+std::uint32_t partitionAtMedian(BuildInput &in, const BuildTask &task, const Box &centroidBounds)
+{
+    const std::uint32_t count = task.end - task.begin;
+    const glm::vec3 extent = centroidBounds.hi - centroidBounds.lo;
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::uint32_t middle = task.begin + count / 2;
+    std::nth_element(in.order.begin() + task.begin, in.order.begin() + middle,
+                     in.order.begin() + task.end, [&](std::uint32_t a, std::uint32_t b) {
+                         return in.centroids[a][axis] < in.centroids[b][axis];
+                     });
+    return middle;
+}
+
+// Where to split the range of `task` (more than two triangles), after
+// reordering it so; std::nullopt when it stays a leaf.
+std::optional<std::uint32_t> splitRange(BuildInput &in, const BuildTask &task, const Box &bounds,
+                                        const Box &centroidBounds)
+{
+    const std::uint32_t count = task.end - task.begin;
+    std::uint32_t middle = task.begin;
+    const Split split = task.depth < kSahDepth
+        ? bestSahSplit(in.order, task.begin, task.end, in.boxes, in.centroids, centroidBounds,
+                       bounds.halfArea())
+        : Split{};
+    if (split.axis >= 0 && (split.cost < double(count) || count > kMaxLeafSize))
+        middle = partitionAtSahSplit(in, task, centroidBounds, split);
+    else if (count > kMaxLeafSize)
+        middle = partitionAtMedian(in, task, centroidBounds);
+    else
+        return std::nullopt; // a leaf: no split pays for its extra traversal
+    if (middle == task.begin || middle == task.end)
+        middle = task.begin + count / 2; // never an empty child (float bins can round so)
+    return middle;
+}
+
+// --- Query -------------------------------------------------------------------
+
+// The slab distances round; widening them by a relative 1e-12 (far more
+// than the few ulps of error) keeps a box from being missed by a ray
+// that hits a triangle inside it, in particular on exact ties in t.
+constexpr double kSlack = 1e-12;
+
+// The per-ray part of the slab test per node. An axis the ray runs parallel
+// to bounds nothing but must contain the origin (dividing by zero there
+// would give NaN for an origin on the slab's plane).
+struct RaySlabs {
+    glm::dvec3 origin{0.0};
+    std::array<bool, 3> parallel{};
+    glm::dvec3 inverse{0.0};
+    double tMin = 0.0;
+
+    RaySlabs(const Ray &ray, double tMin_)
+        : origin(ray.origin)
+        , tMin(tMin_)
+    {
+        for (int a = 0; a < 3; ++a) {
+            parallel[a] = ray.direction[a] == 0.0;
+            inverse[a] = parallel[a] ? 0.0 : 1.0 / ray.direction[a];
+        }
+    }
+
+    // The t at which the ray enters the node's box, or infinity when it
+    // misses the box within [tMin, limit].
+    double enter(const MeshBvh::Node &node, double limit) const
+    {
+        double tNear = tMin, tFar = limit;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = node.boundsMin[a], hi = node.boundsMax[a];
+            if (parallel[a]) {
+                if (origin[a] < lo || origin[a] > hi)
+                    return std::numeric_limits<double>::infinity();
+                continue;
+            }
+            double t0 = (lo - origin[a]) * inverse[a], t1 = (hi - origin[a]) * inverse[a];
+            if (t0 > t1)
+                std::swap(t0, t1);
+            tNear = std::max(tNear, t0 - kSlack * std::abs(t0));
+            tFar = std::min(tFar, t1 + kSlack * std::abs(t1));
+        }
+        return tNear <= tFar ? tNear : std::numeric_limits<double>::infinity();
+    }
+};
+
+// The farthest a box may begin and still hold a hit that could win.
+double boxLimit(const std::optional<TriangleHit> &best, double tMax)
+{
+    return best ? best->t + kSlack * std::abs(best->t) : tMax;
+}
+
+// Tests `count` triangles of BVH order (3 vertices and 1 id each) and keeps
+// the winner in `best`.
+void intersectLeaf(const ShearedRay &sheared, const glm::vec3 *vertices, const std::uint32_t *ids,
+                   std::uint32_t count, double tMin, double tMax, std::optional<TriangleHit> &best)
+{
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const glm::vec3 *v = &vertices[3 * std::size_t(i)];
+        std::optional<TriangleHit> hit =
+            intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]), glm::dvec3(v[2]), tMin,
+                             best ? best->t : tMax);
+        if (!hit)
+            continue;
+        hit->triangle = ids[i];
+        if (better(*hit, best))
+            best = hit;
+    }
+}
+
 } // namespace
 
 std::optional<TriangleHit> closestHitBruteForce(const MeshData &mesh, const Ray &ray, double tMin,
@@ -210,15 +358,7 @@ MeshBvh::MeshBvh(const MeshData &mesh)
 void MeshBvh::build(const MeshData &mesh)
 {
     const std::uint32_t n = std::uint32_t(mesh.triangleCount());
-    std::vector<Box> boxes(n);
-    std::vector<glm::vec3> centroids(n);
-    std::vector<std::uint32_t> order(n);
-    for (std::uint32_t tri = 0; tri < n; ++tri) {
-        for (int k = 0; k < 3; ++k)
-            boxes[tri].grow(mesh.positions[mesh.indices[3 * std::size_t(tri) + k]]);
-        centroids[tri] = 0.5f * (boxes[tri].lo + boxes[tri].hi);
-        order[tri] = tri;
-    }
+    BuildInput in = triangleBounds(mesh, n);
 
     m_nodes.reserve(n > 0 ? 2 * std::size_t(n) : 1);
     m_nodes.emplace_back();
@@ -229,8 +369,8 @@ void MeshBvh::build(const MeshData &mesh)
         m_depth = std::max(m_depth, task.depth);
         Box bounds, centroidBounds;
         for (std::uint32_t i = task.begin; i < task.end; ++i) {
-            bounds.grow(boxes[order[i]]);
-            centroidBounds.grow(centroids[order[i]]);
+            bounds.grow(in.boxes[in.order[i]]);
+            centroidBounds.grow(in.centroids[in.order[i]]);
         }
         Node &node = m_nodes[task.node];
         node.boundsMin = bounds.empty() ? glm::vec3(0.0f) : bounds.lo;
@@ -241,47 +381,16 @@ void MeshBvh::build(const MeshData &mesh)
         if (count <= 2)
             continue; // a leaf: splitting two triangles saves nothing
 
-        std::uint32_t middle = task.begin;
-        const Split split = task.depth < kSahDepth
-            ? bestSahSplit(order, task.begin, task.end, boxes, centroids, centroidBounds,
-                           bounds.halfArea())
-            : Split{};
-        if (split.axis >= 0 && (split.cost < double(count) || count > kMaxLeafSize)) {
-            const int axis = split.axis;
-            const double lo = centroidBounds.lo[axis];
-            const double scale = kBins / (double(centroidBounds.hi[axis]) - lo);
-            middle = std::uint32_t(
-                std::partition(order.begin() + task.begin, order.begin() + task.end,
-                               [&](std::uint32_t tri) {
-                                   return std::min(int((centroids[tri][axis] - lo) * scale),
-                                                   kBins - 1)
-                                       <= split.bin;
-                               })
-                - order.begin());
-        } else if (count > kMaxLeafSize) {
-            // No usable SAH split (identical centroids, or too deep): halve
-            // the range along the widest centroid axis.
-            const glm::vec3 extent = centroidBounds.hi - centroidBounds.lo;
-            const int axis =
-                extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-            middle = task.begin + count / 2;
-            std::nth_element(order.begin() + task.begin, order.begin() + middle,
-                             order.begin() + task.end, [&](std::uint32_t a, std::uint32_t b) {
-                                 return centroids[a][axis] < centroids[b][axis];
-                             });
-        } else {
-            continue; // a leaf: no split pays for its extra traversal
-        }
-        if (middle == task.begin || middle == task.end)
-            middle = task.begin + count / 2; // never an empty child (float bins can round so)
-
+        const std::optional<std::uint32_t> middle = splitRange(in, task, bounds, centroidBounds);
+        if (!middle)
+            continue;
         const std::uint32_t left = std::uint32_t(m_nodes.size());
         m_nodes[task.node].first = left; // `node` may dangle after emplace_back
         m_nodes[task.node].count = 0;
         m_nodes.emplace_back();
         m_nodes.emplace_back();
-        tasks.push_back(BuildTask{left + 1, middle, task.end, task.depth + 1});
-        tasks.push_back(BuildTask{left, task.begin, middle, task.depth + 1});
+        tasks.push_back(BuildTask{left + 1, *middle, task.end, task.depth + 1});
+        tasks.push_back(BuildTask{left, task.begin, *middle, task.depth + 1});
     }
     Q_ASSERT(m_depth <= kMaxDepth);
 
@@ -289,8 +398,8 @@ void MeshBvh::build(const MeshData &mesh)
     for (std::uint32_t i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k)
             m_vertices[3 * std::size_t(i) + k] =
-                mesh.positions[mesh.indices[3 * std::size_t(order[i]) + k]];
-    m_triangleIds = std::move(order);
+                mesh.positions[mesh.indices[3 * std::size_t(in.order[i]) + k]];
+    m_triangleIds = std::move(in.order);
 }
 
 std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, double tMax) const
@@ -300,43 +409,10 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
     const ShearedRay sheared(ray);
     if (!sheared.valid)
         return std::nullopt;
-
-    // Slab test per node. An axis the ray runs parallel to bounds nothing
-    // but must contain the origin (dividing by zero there would give NaN
-    // for an origin on the slab's plane).
-    std::array<bool, 3> parallel{};
-    glm::dvec3 inverse(0.0);
-    for (int a = 0; a < 3; ++a) {
-        parallel[a] = ray.direction[a] == 0.0;
-        inverse[a] = parallel[a] ? 0.0 : 1.0 / ray.direction[a];
-    }
-    // The slab distances round; widening them by a relative 1e-12 (far more
-    // than the few ulps of error) keeps a box from being missed by a ray
-    // that hits a triangle inside it, in particular on exact ties in t.
-    constexpr double kSlack = 1e-12;
-    const auto enter = [&](const Node &node, double limit) -> double {
-        double tNear = tMin, tFar = limit;
-        for (int a = 0; a < 3; ++a) {
-            const double lo = node.boundsMin[a], hi = node.boundsMax[a];
-            if (parallel[a]) {
-                if (ray.origin[a] < lo || ray.origin[a] > hi)
-                    return std::numeric_limits<double>::infinity();
-                continue;
-            }
-            double t0 = (lo - ray.origin[a]) * inverse[a], t1 = (hi - ray.origin[a]) * inverse[a];
-            if (t0 > t1)
-                std::swap(t0, t1);
-            tNear = std::max(tNear, t0 - kSlack * std::abs(t0));
-            tFar = std::min(tFar, t1 + kSlack * std::abs(t1));
-        }
-        return tNear <= tFar ? tNear : std::numeric_limits<double>::infinity();
-    };
-    const auto limit = [&](const std::optional<TriangleHit> &best) {
-        return best ? best->t + kSlack * std::abs(best->t) : tMax;
-    };
+    const RaySlabs slabs(ray, tMin);
 
     std::optional<TriangleHit> best;
-    if (enter(m_nodes[0], tMax) == std::numeric_limits<double>::infinity())
+    if (slabs.enter(m_nodes[0], tMax) == std::numeric_limits<double>::infinity())
         return std::nullopt;
     std::array<std::uint32_t, kMaxDepth + 2> stack{};
     int top = 0;
@@ -344,22 +420,13 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
     for (;;) {
         const Node &node = m_nodes[current];
         if (node.count > 0) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                const glm::vec3 *v = &m_vertices[3 * std::size_t(i)];
-                std::optional<TriangleHit> hit =
-                    intersectSheared(sheared, glm::dvec3(v[0]), glm::dvec3(v[1]), glm::dvec3(v[2]),
-                                     tMin, best ? best->t : tMax);
-                if (!hit)
-                    continue;
-                hit->triangle = m_triangleIds[i];
-                if (better(*hit, best))
-                    best = hit;
-            }
+            intersectLeaf(sheared, &m_vertices[3 * std::size_t(node.first)],
+                          &m_triangleIds[node.first], node.count, tMin, tMax, best);
         } else {
             // Nearer child first: its hits shrink the limit the other is tested with.
-            const double l = limit(best);
-            double tLeft = enter(m_nodes[node.first], l),
-                   tRight = enter(m_nodes[node.first + 1], l);
+            const double l = boxLimit(best, tMax);
+            double tLeft = slabs.enter(m_nodes[node.first], l),
+                   tRight = slabs.enter(m_nodes[node.first + 1], l);
             std::uint32_t nearChild = node.first, farChild = node.first + 1;
             if (tRight < tLeft) {
                 std::swap(tLeft, tRight);
@@ -376,7 +443,8 @@ std::optional<TriangleHit> MeshBvh::closestHit(const Ray &ray, double tMin, doub
         bool found = false;
         while (top > 0) {
             const std::uint32_t candidate = stack[--top];
-            if (enter(m_nodes[candidate], limit(best)) != std::numeric_limits<double>::infinity()) {
+            if (slabs.enter(m_nodes[candidate], boxLimit(best, tMax))
+                != std::numeric_limits<double>::infinity()) {
                 current = candidate;
                 found = true;
                 break;

@@ -57,20 +57,23 @@ std::optional<Surface> builtinSurface(const QString &spec)
     return std::nullopt;
 }
 
-// Checks the inputs, builds one BVH per distinct mesh (reporting the first
-// tenth of the progress) and prepares the objects. A failure on bad input,
-// or "cancelled".
-Result<> prepareObjects(const Scene &scene,
-                        const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
-                        double aspect, std::vector<PreparedObject> &prepared,
-                        const std::function<bool(double)> &progress)
+// The BVH of each distinct mesh (null until built) and the triangles all of
+// them hold, the measure of the build's progress.
+struct MeshBvhs {
+    std::unordered_map<const MeshData *, std::shared_ptr<const MeshBvh>> byMesh;
+    std::size_t trianglesToBuild = 0;
+};
+
+// A failure on a size mismatch, or an object with neither a valid mesh nor
+// an analytic surface; otherwise every distinct mesh is entered in `bvhs`.
+Result<> checkObjectMeshes(const Scene &scene,
+                           const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                           MeshBvhs &bvhs)
 {
     if (objectMeshes.size() != scene.objects.size())
         return fail(MeshRaycasterWords::tr("The scene has %1 objects but %2 meshes were given")
                         .arg(scene.objects.size())
                         .arg(objectMeshes.size()));
-    std::size_t trianglesToBuild = 0;
-    std::unordered_map<const MeshData *, std::shared_ptr<const MeshBvh>> bvhs;
     for (std::size_t i = 0; i < objectMeshes.size(); ++i) {
         const MeshData *mesh = objectMeshes[i].get();
         if (!mesh) {
@@ -85,10 +88,35 @@ Result<> prepareObjects(const Scene &scene,
                 MeshRaycasterWords::tr("Object %1: the triangle mesh for \"%2\" is not valid")
                     .arg(i)
                     .arg(scene.objects[i].mesh));
-        } else if (bvhs.emplace(mesh, nullptr).second) {
-            trianglesToBuild += mesh->triangleCount();
+        } else if (bvhs.byMesh.emplace(mesh, nullptr).second) {
+            bvhs.trianglesToBuild += mesh->triangleCount();
         }
     }
+    return {};
+}
+
+// The per-ray transforms of an object from its matrices.
+void setTransforms(PreparedObject &p, const ObjectMatrices &matrices)
+{
+    const glm::dmat4 inverse = glm::inverse(matrices.modelView);
+    p.modelView = matrices.modelView;
+    p.normalMatrix = matrices.normalMatrix;
+    p.model = matrices.model;
+    p.inverseLinear = glm::dmat3(inverse);
+    p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+}
+
+// Checks the inputs, builds one BVH per distinct mesh (reporting the first
+// tenth of the progress) and prepares the objects. A failure on bad input,
+// or "cancelled".
+Result<> prepareObjects(const Scene &scene,
+                        const std::vector<std::shared_ptr<const MeshData>> &objectMeshes,
+                        double aspect, std::vector<PreparedObject> &prepared,
+                        const std::function<bool(double)> &progress)
+{
+    MeshBvhs bvhs;
+    if (Result<> checked = checkObjectMeshes(scene, objectMeshes, bvhs); !checked)
+        return checked;
 
     const glm::dmat4 view = scene.camera.viewMatrix();
     const glm::dmat4 projection = scene.camera.projectionMatrix(aspect);
@@ -105,11 +133,11 @@ Result<> prepareObjects(const Scene &scene,
         PreparedObject p;
         p.index = int(i);
         if (const MeshData *mesh = objectMeshes[i].get()) {
-            std::shared_ptr<const MeshBvh> &bvh = bvhs[mesh];
+            std::shared_ptr<const MeshBvh> &bvh = bvhs.byMesh[mesh];
             if (!bvh) {
                 if (progress
                     && !progress(0.1 * double(trianglesBuilt)
-                                 / double(std::max<std::size_t>(trianglesToBuild, 1))))
+                                 / double(std::max<std::size_t>(bvhs.trianglesToBuild, 1))))
                     return fail(QStringLiteral("cancelled"));
                 bvh = std::make_shared<const MeshBvh>(*mesh);
                 trianglesBuilt += mesh->triangleCount();
@@ -120,12 +148,7 @@ Result<> prepareObjects(const Scene &scene,
         } else {
             p.surface = *builtinSurface(object.mesh);
         }
-        const glm::dmat4 inverse = glm::inverse(matrices.modelView);
-        p.modelView = matrices.modelView;
-        p.normalMatrix = matrices.normalMatrix;
-        p.model = matrices.model;
-        p.inverseLinear = glm::dmat3(inverse);
-        p.eyeInObject = glm::dvec3(inverse * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        setTransforms(p, matrices);
         p.material = &object.material;
         prepared.push_back(std::move(p));
     }

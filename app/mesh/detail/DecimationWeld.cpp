@@ -138,6 +138,26 @@ glm::vec3 closestNormal(const MeshData &mesh, const Weld &w, std::uint32_t welde
     return mesh.normals[best];
 }
 
+// One normal for the whole face of a faceted mesh: an original one if the
+// face still lies in an original facet's plane, else its own. `length` is
+// that of the face's unnormalised cross product (0: no area, no own normal).
+glm::vec3 facetNormal(const MeshData &input, const Weld &w, const std::uint32_t (&v)[3],
+                      const glm::dvec3 &faceNormal, double length, double keepCos)
+{
+    glm::vec3 best(0.0f);
+    double bestDot = -2.0;
+    for (int c = 0; c < 3; ++c) {
+        const glm::vec3 n = closestNormal(input, w, v[c], faceNormal);
+        const double d = glm::dot(glm::dvec3(n), faceNormal);
+        if (d > bestDot) {
+            bestDot = d;
+            best = n;
+        }
+    }
+    const glm::vec3 own(faceNormal);
+    return (bestDot >= keepCos || length == 0.0) ? best : own;
+}
+
 } // namespace
 
 MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om,
@@ -178,20 +198,7 @@ MeshData rebuild(const MeshData &input, const Weld &w, const OmMesh &om,
             for (int c = 0; c < 3; ++c)
                 normal[c] = input.normals[originalCorner(v[c])];
         } else if (faceted) {
-            // One normal for the whole face: an original one if the face
-            // still lies in an original facet's plane, else its own.
-            glm::vec3 best(0.0f);
-            double bestDot = -2.0;
-            for (int c = 0; c < 3; ++c) {
-                const glm::vec3 n = closestNormal(input, w, v[c], faceNormal);
-                const double d = glm::dot(glm::dvec3(n), faceNormal);
-                if (d > bestDot) {
-                    bestDot = d;
-                    best = n;
-                }
-            }
-            const glm::vec3 own(faceNormal);
-            const glm::vec3 chosen = (bestDot >= keepCos || length == 0.0) ? best : own;
+            const glm::vec3 chosen = facetNormal(input, w, v, faceNormal, length, keepCos);
             normal[0] = normal[1] = normal[2] = chosen;
         } else {
             for (int c = 0; c < 3; ++c) {

@@ -149,14 +149,13 @@ private:
     bool m_cancelled = false;
 };
 
-} // namespace
-
-DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
-                                   const DecimationProgress &progress)
+// Sorts out the levels that need no decimation: a fraction out of range (said
+// in a note), 1, or nothing to decimate get the mesh as it is. Returns the
+// indices of the others.
+std::vector<std::size_t> levelsToDecimate(const MeshData &mesh,
+                                          const std::vector<double> &fractions,
+                                          std::vector<MeshData> &levels, QStringList &notes)
 {
-    std::vector<MeshData> levels(fractions.size());
-    QStringList notes;
-    // Levels that need no decimation: out of range (said), 1, nothing to decimate.
     std::vector<std::size_t> todo;
     for (std::size_t i = 0; i < fractions.size(); ++i) {
         const double fraction = fractions[i];
@@ -171,6 +170,106 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
             todo.push_back(i);
         }
     }
+    return todo;
+}
+
+void noteLeftOut(const AddReport &added, QStringList &notes)
+{
+    if (added.nonManifold > 0)
+        notes << MeshDecimationWords::tr(
+                     "%1 non-manifold triangles (an edge with more than two faces, or a "
+                     "vertex joining "
+                     "separate fans) could not be decimated and were left out")
+                     .arg(count(added.nonManifold));
+    if (added.nonFinite > 0)
+        notes << MeshDecimationWords::tr("%1 triangles with non-finite corners left out")
+                     .arg(count(added.nonFinite));
+}
+
+// The quadric module picks the collapses, the flip guard refuses those that
+// would fold a face. False when the Decimater could not start.
+bool setUpModules(OpenMesh::Decimater::DecimaterT<OmMesh> &decimater)
+{
+    OpenMesh::Decimater::ModQuadricT<OmMesh>::Handle quadric;
+    ModFlipGuardT<OmMesh>::Handle flipGuard;
+    decimater.add(quadric);
+    decimater.module(quadric).unset_max_err(); // the face budget decides, not an error bound
+    decimater.add(flipGuard);
+    decimater.module(flipGuard).set_max_normal_deviation(kMaxFaceTurnDeg);
+    return decimater.initialize();
+}
+
+// What one decimation run, from the input down to the coarsest level, works on.
+struct LevelRun {
+    const MeshData &mesh;
+    const Weld &weld;
+    OmMesh &om;
+    const std::vector<std::uint32_t> &faceTriangle;
+    const std::vector<double> &fractions;
+    const DecimationProgress &progress;
+};
+
+// Decimates run.om level by level and fills levels[i] for each i in todo.
+// False when the caller cancelled through progress (levels then partly set).
+bool decimateLevels(const LevelRun &run, std::vector<std::size_t> todo,
+                    std::vector<MeshData> &levels, QStringList &notes)
+{
+    const std::vector<double> &fractions = run.fractions;
+    OmMesh &om = run.om;
+    prepareForDecimation(om);
+    OpenMesh::Decimater::DecimaterT<OmMesh> decimater(om);
+    const bool ready = setUpModules(decimater);
+
+    // Finest first: each coarser level goes on from the one before (the
+    // quadrics carry over), so all levels cost one run to the coarsest.
+    std::stable_sort(todo.begin(), todo.end(),
+                     [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
+    const bool faceted = isFaceted(run.mesh);
+    std::size_t faces = run.faceTriangle.size();
+    // Each collapse removes about two faces: that many to reach the coarsest level.
+    const double coarsest = fractions[todo.back()];
+    std::unique_ptr<ProgressObserver> observer;
+    if (run.progress) {
+        const auto collapses = std::size_t(double(faces) * (1.0 - coarsest) / 2.0);
+        observer = std::make_unique<ProgressObserver>(run.progress, collapses);
+        decimater.set_observer(observer.get());
+    }
+    for (std::size_t i : todo) {
+        const std::size_t target = std::max<std::size_t>(
+            1, std::size_t(std::llround(fractions[i] * double(run.mesh.triangleCount()))));
+        if (ready && target < faces) {
+            // The decimater counts the faces deleted so far (no garbage
+            // collection here: face handles index faceTriangle) as present.
+            decimater.decimate_to_faces(0, target + (om.n_faces() - faces));
+            faces = liveFaces(om);
+            if (observer && observer->cancelled()) {
+                decimater.set_observer(nullptr);
+                return false;
+            }
+        }
+        // Some slack: collapses remove two faces at a time, and closed
+        // pieces cannot shrink below a tetrahedron.
+        if (faces > target + target / 20 + 4)
+            notes << MeshDecimationWords::tr(
+                         "decimation stopped at %1 triangles (asked for %2): every "
+                         "further collapse would "
+                         "fold a face or break the surface")
+                         .arg(count(faces), count(target));
+        levels[i] = rebuild(run.mesh, run.weld, om, run.faceTriangle, faceted);
+    }
+    if (observer)
+        decimater.set_observer(nullptr);
+    return true;
+}
+
+} // namespace
+
+DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<double> &fractions,
+                                   const DecimationProgress &progress)
+{
+    std::vector<MeshData> levels(fractions.size());
+    QStringList notes;
+    std::vector<std::size_t> todo = levelsToDecimate(mesh, fractions, levels, notes);
     const auto finish = [&] {
         return DecimatedLevels{std::move(levels), notes.join(QStringLiteral("; "))};
     };
@@ -196,67 +295,13 @@ DecimatedLevels decimateMeshLevels(const MeshData &mesh, const std::vector<doubl
             levels[i] = mesh;
         return finish();
     }
-    if (added.nonManifold > 0)
-        notes << MeshDecimationWords::tr(
-                     "%1 non-manifold triangles (an edge with more than two faces, or a "
-                     "vertex joining "
-                     "separate fans) could not be decimated and were left out")
-                     .arg(count(added.nonManifold));
-    if (added.nonFinite > 0)
-        notes << MeshDecimationWords::tr("%1 triangles with non-finite corners left out")
-                     .arg(count(added.nonFinite));
+    noteLeftOut(added, notes);
 
-    prepareForDecimation(om);
-    OpenMesh::Decimater::DecimaterT<OmMesh> decimater(om);
-    OpenMesh::Decimater::ModQuadricT<OmMesh>::Handle quadric;
-    ModFlipGuardT<OmMesh>::Handle flipGuard;
-    decimater.add(quadric);
-    decimater.module(quadric).unset_max_err(); // the face budget decides, not an error bound
-    decimater.add(flipGuard);
-    decimater.module(flipGuard).set_max_normal_deviation(kMaxFaceTurnDeg);
-    const bool ready = decimater.initialize();
-
-    // Finest first: each coarser level goes on from the one before (the
-    // quadrics carry over), so all levels cost one run to the coarsest.
-    std::stable_sort(todo.begin(), todo.end(),
-                     [&](std::size_t a, std::size_t b) { return fractions[a] > fractions[b]; });
-    const bool faceted = isFaceted(mesh);
-    std::size_t faces = faceTriangle.size();
-    // Each collapse removes about two faces: that many to reach the coarsest level.
-    const double coarsest = fractions[todo.back()];
-    std::unique_ptr<ProgressObserver> observer;
-    if (progress) {
-        const auto collapses = std::size_t(double(faces) * (1.0 - coarsest) / 2.0);
-        observer = std::make_unique<ProgressObserver>(progress, collapses);
-        decimater.set_observer(observer.get());
+    const LevelRun run{mesh, weld, om, faceTriangle, fractions, progress};
+    if (!decimateLevels(run, std::move(todo), levels, notes)) {
+        notes = QStringList{QStringLiteral("cancelled")};
+        levels.assign(fractions.size(), MeshData{});
     }
-    for (std::size_t i : todo) {
-        const std::size_t target = std::max<std::size_t>(
-            1, std::size_t(std::llround(fractions[i] * double(mesh.triangleCount()))));
-        if (ready && target < faces) {
-            // The decimater counts the faces deleted so far (no garbage
-            // collection here: face handles index faceTriangle) as present.
-            decimater.decimate_to_faces(0, target + (om.n_faces() - faces));
-            faces = liveFaces(om);
-            if (observer && observer->cancelled()) {
-                decimater.set_observer(nullptr);
-                notes = QStringList{QStringLiteral("cancelled")};
-                levels.assign(fractions.size(), MeshData{});
-                return finish();
-            }
-        }
-        // Some slack: collapses remove two faces at a time, and closed
-        // pieces cannot shrink below a tetrahedron.
-        if (faces > target + target / 20 + 4)
-            notes << MeshDecimationWords::tr(
-                         "decimation stopped at %1 triangles (asked for %2): every "
-                         "further collapse would "
-                         "fold a face or break the surface")
-                         .arg(count(faces), count(target));
-        levels[i] = rebuild(mesh, weld, om, faceTriangle, faceted);
-    }
-    if (observer)
-        decimater.set_observer(nullptr);
     return finish();
 }
 

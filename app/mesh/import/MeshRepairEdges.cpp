@@ -47,6 +47,109 @@ std::uint32_t findRoot(std::vector<std::uint32_t> &parent, std::uint32_t x)
     return x;
 }
 
+// Neighbours across manifold edges, per face (CSR: links[start[f]..start[f+1])),
+// and whether the two faces run the edge the same way (then one of them must turn).
+struct FaceLinks {
+    std::vector<std::uint32_t> start;
+    std::vector<std::pair<std::uint32_t, bool>> links;
+};
+
+FaceLinks buildFaceLinks(const Adjacency &adj, std::size_t faces)
+{
+    FaceLinks out;
+    std::vector<std::uint32_t> &start = out.start;
+    start.assign(faces + 1, 0);
+    forEachEdge(adj, [&](std::size_t i, std::size_t n) {
+        if (n == 2 && adj.sides[i].face != adj.sides[i + 1].face) {
+            ++start[adj.sides[i].face + 1];
+            ++start[adj.sides[i + 1].face + 1];
+        }
+    });
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::pair<std::uint32_t, bool>> &links = out.links;
+    links.resize(start.back());
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    forEachEdge(adj, [&](std::size_t i, std::size_t n) {
+        if (n != 2 || adj.sides[i].face == adj.sides[i + 1].face)
+            return;
+        const Side &a = adj.sides[i];
+        const Side &b = adj.sides[i + 1];
+        const bool same = a.forward == b.forward;
+        links[fill[a.face]++] = {b.face, same};
+        links[fill[b.face]++] = {a.face, same};
+    });
+    return out;
+}
+
+// A face on the boundary has a side (two distinct ends) with no link.
+// Counted face by face, not side by side: one pass in memory order.
+std::vector<char> allSidesPaired(const PolygonMesh &mesh, const std::vector<std::uint32_t> &start)
+{
+    const std::size_t faces = mesh.faceCount();
+    std::vector<char> paired(faces);
+    for (std::size_t f = 0; f < faces; ++f) {
+        std::uint32_t sides = 0;
+        const std::uint32_t begin = mesh.faceStart[f], end = mesh.faceStart[f + 1];
+        for (std::uint32_t c = begin; c < end; ++c)
+            sides += mesh.cornerPosition[c] != mesh.cornerPosition[c + 1 < end ? c + 1 : begin];
+        paired[f] = sides == start[f + 1] - start[f];
+    }
+    return paired;
+}
+
+// The per-face state windingFlips carries from one component to the next;
+// `component` is only scratch space reused to save allocations.
+struct OrientState {
+    std::vector<char> &flip;
+    std::vector<char> &seen;
+    std::vector<std::uint32_t> &component;
+};
+
+// Flood-fills the component of `seed`, choosing each face's flip so the
+// winding agrees with its neighbours; then turns the whole component if
+// that makes it face outwards (closed and consistent) or flips fewer faces.
+void orientComponent(const PolygonMesh &mesh, const FaceLinks &links,
+                     const std::vector<char> &closedFaces, std::uint32_t seed,
+                     const OrientState &state, RepairReport &report)
+{
+    std::vector<char> &flip = state.flip;
+    std::vector<char> &seen = state.seen;
+    std::vector<std::uint32_t> &component = state.component;
+    component.clear();
+    component.push_back(seed);
+    seen[seed] = 1;
+    bool closed = true;
+    int conflicts = 0;
+    for (std::size_t q = 0; q < component.size(); ++q) {
+        const std::uint32_t f = component[q];
+        closed = closed && closedFaces[f];
+        for (std::uint32_t l = links.start[f]; l < links.start[f + 1]; ++l) {
+            const auto [g, same] = links.links[l];
+            const char want = char(flip[f] ^ char(same));
+            if (!seen[g]) {
+                seen[g] = 1;
+                flip[g] = want;
+                component.push_back(g);
+            } else if (flip[g] != want) {
+                ++conflicts; // seen from both faces of the edge
+            }
+        }
+    }
+    report.orientationConflicts += conflicts / 2;
+    std::size_t flipped = 0;
+    for (std::uint32_t f : component)
+        flipped += flip[f];
+    bool invert = 2 * flipped > component.size();
+    if (closed && conflicts == 0) {
+        const double volume = signedVolume(mesh, component, flip);
+        if (volume != 0.0)
+            invert = volume < 0.0;
+    }
+    if (invert)
+        for (std::uint32_t f : component)
+            flip[f] = char(!flip[f]);
+}
+
 } // namespace
 
 Adjacency buildAdjacency(const PolygonMesh &mesh)
@@ -88,37 +191,8 @@ Adjacency buildAdjacency(const PolygonMesh &mesh)
 std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, RepairReport &report)
 {
     const std::size_t faces = mesh.faceCount();
-    // Neighbours across manifold edges, and whether the two faces run the
-    // edge the same way (then one of them must turn).
-    std::vector<std::uint32_t> start(faces + 1, 0);
-    forEachEdge(adj, [&](std::size_t i, std::size_t n) {
-        if (n == 2 && adj.sides[i].face != adj.sides[i + 1].face) {
-            ++start[adj.sides[i].face + 1];
-            ++start[adj.sides[i + 1].face + 1];
-        }
-    });
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<std::pair<std::uint32_t, bool>> links(start.back());
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    forEachEdge(adj, [&](std::size_t i, std::size_t n) {
-        if (n != 2 || adj.sides[i].face == adj.sides[i + 1].face)
-            return;
-        const Side &a = adj.sides[i];
-        const Side &b = adj.sides[i + 1];
-        const bool same = a.forward == b.forward;
-        links[fill[a.face]++] = {b.face, same};
-        links[fill[b.face]++] = {a.face, same};
-    });
-    // A face on the boundary has a side (two distinct ends) with no link.
-    // Counted face by face, not side by side: one pass in memory order.
-    std::vector<char> allSidesPaired(faces);
-    for (std::size_t f = 0; f < faces; ++f) {
-        std::uint32_t sides = 0;
-        const std::uint32_t begin = mesh.faceStart[f], end = mesh.faceStart[f + 1];
-        for (std::uint32_t c = begin; c < end; ++c)
-            sides += mesh.cornerPosition[c] != mesh.cornerPosition[c + 1 < end ? c + 1 : begin];
-        allSidesPaired[f] = sides == start[f + 1] - start[f];
-    }
+    const FaceLinks links = buildFaceLinks(adj, faces);
+    const std::vector<char> closedFaces = allSidesPaired(mesh, links.start);
 
     std::vector<char> flip(faces, 0);
     std::vector<char> seen(faces, 0);
@@ -126,39 +200,7 @@ std::vector<char> windingFlips(const PolygonMesh &mesh, const Adjacency &adj, Re
     for (std::uint32_t seed = 0; seed < faces; ++seed) {
         if (seen[seed])
             continue;
-        component.clear();
-        component.push_back(seed);
-        seen[seed] = 1;
-        bool closed = true;
-        int conflicts = 0;
-        for (std::size_t q = 0; q < component.size(); ++q) {
-            const std::uint32_t f = component[q];
-            closed = closed && allSidesPaired[f];
-            for (std::uint32_t l = start[f]; l < start[f + 1]; ++l) {
-                const auto [g, same] = links[l];
-                const char want = char(flip[f] ^ char(same));
-                if (!seen[g]) {
-                    seen[g] = 1;
-                    flip[g] = want;
-                    component.push_back(g);
-                } else if (flip[g] != want) {
-                    ++conflicts; // seen from both faces of the edge
-                }
-            }
-        }
-        report.orientationConflicts += conflicts / 2;
-        std::size_t flipped = 0;
-        for (std::uint32_t f : component)
-            flipped += flip[f];
-        bool invert = 2 * flipped > component.size();
-        if (closed && conflicts == 0) {
-            const double volume = signedVolume(mesh, component, flip);
-            if (volume != 0.0)
-                invert = volume < 0.0;
-        }
-        if (invert)
-            for (std::uint32_t f : component)
-                flip[f] = char(!flip[f]);
+        orientComponent(mesh, links, closedFaces, seed, {flip, seen, component}, report);
     }
     return flip;
 }

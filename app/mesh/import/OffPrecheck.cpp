@@ -127,6 +127,175 @@ void appendLine(std::string &out, const std::vector<std::string_view> &tokens, s
     out += '\n';
 }
 
+struct OffCounts {
+    std::int64_t values[3] = {}; // vertices, faces, edges
+    bool onHeaderLine = false;   // a count shares the header keyword's line
+};
+
+// The counts come from the rest of the keyword token ("OFF1234", as
+// ModelNet writes it) or the words after it, on any line.
+QString readCounts(meshtext::TextTokens &tokens, const OffKeyword &k, std::size_t headerLine,
+                   OffCounts &counts)
+{
+    for (int i = 0; i < 3; ++i) {
+        const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
+        std::int64_t &count = counts.values[i];
+        if (!meshtext::parseInteger(t, count) || count < 0 || count > UINT32_MAX)
+            return OffPrecheckWords::tr(
+                       "line %1: expected the vertex, face and edge counts, found %2")
+                .arg(tokens.line())
+                .arg(quoted(t));
+        counts.onHeaderLine = counts.onHeaderLine || tokens.line() == headerLine;
+    }
+    if (!tokens.lineIsEmpty())
+        return OffPrecheckWords::tr("line %1: unexpected text after the counts").arg(tokens.line());
+    return {};
+}
+
+QString checkDeclaredCounts(std::size_t fileSize, const MeshFilePrecheck &check)
+{
+    // At the least "0 0 0\n" a vertex and "3 0 0 0\n" a face.
+    const quint64 needed = 6 * check.declaredVertices + 8 * check.declaredFaces;
+    if (needed > fileSize)
+        return OffPrecheckWords::tr(
+                   "the OFF header declares %1 vertices and %2 faces, which need at least %3 "
+                   "bytes, but the file has %4 (truncated or corrupt)")
+            .arg(check.declaredVertices)
+            .arg(check.declaredFaces)
+            .arg(needed)
+            .arg(fileSize);
+    if (check.declaredFaces == 0)
+        return OffPrecheckWords::tr("the OFF file has no faces");
+    return {};
+}
+
+// The cleaned copy puts the keyword and the counts on lines of their own,
+// the only header layout the reader takes.
+std::string startCleanCopy(const OffKeyword &k, const OffCounts &counts, std::size_t fileSize)
+{
+    std::string out;
+    out.reserve(fileSize);
+    out.append(k.keyword).append("\n");
+    out.append(std::to_string(counts.values[0]))
+        .append(" ")
+        .append(std::to_string(counts.values[1]))
+        .append(" ")
+        .append(std::to_string(counts.values[2]))
+        .append("\n");
+    return out;
+}
+
+// The body read one non-blank line at a time, as the reader takes it.
+struct OffLines {
+    meshtext::TextTokens &tokens;
+    std::vector<std::string_view> line; // the current line's tokens
+
+    // Moves to the next line with a token; false at the end of the file.
+    bool readLine()
+    {
+        tokens.nextLine();
+        while (!tokens.atEnd() && tokens.lineIsEmpty())
+            tokens.nextLine();
+        line.clear();
+        for (std::string_view t = tokens.nextOnLine(); !t.empty(); t = tokens.nextOnLine())
+            line.push_back(t);
+        return !line.empty();
+    }
+
+    QString atLine(const QString &message) const
+    {
+        return QStringLiteral("line %1: %2").arg(tokens.line()).arg(message);
+    }
+};
+
+QString readVertices(OffLines &lines, const OffKeyword &k, std::int64_t declared, std::string &out)
+{
+    const std::size_t vertexNumbers = k.normals ? 6 : 3;
+    for (quint64 v = 0; v < quint64(declared); ++v) {
+        if (!lines.readLine())
+            return OffPrecheckWords::tr("the file ends after %1 of %2 vertices (truncated?)")
+                .arg(v)
+                .arg(declared);
+        const std::vector<std::string_view> &line = lines.line;
+        if (line.size() < vertexNumbers)
+            return lines.atLine(OffPrecheckWords::tr("vertex %1 needs %2 numbers, found %3")
+                                    .arg(v + 1)
+                                    .arg(vertexNumbers)
+                                    .arg(line.size()));
+        for (std::string_view t : line)
+            if (!meshtext::isReal(t))
+                return lines.atLine(
+                    OffPrecheckWords::tr("expected a number, found %1").arg(quoted(t)));
+        appendLine(out, line, line.size());
+    }
+    return {};
+}
+
+// What is wrong with face `f`'s line, if anything: its corner count, then
+// each index and each value after them. Sets indicesEnd, the position after
+// the last index.
+QString checkFaceLine(const std::vector<std::string_view> &line, quint64 f, std::size_t &indicesEnd)
+{
+    std::int64_t corners = -1;
+    if (!meshtext::parseInteger(line[0], corners) || corners < 0)
+        return OffPrecheckWords::tr("expected the corner count of face %1, found %2")
+            .arg(f + 1)
+            .arg(quoted(line[0]));
+    if (std::size_t(corners) > line.size() - 1)
+        return OffPrecheckWords::tr("face %1 has %2 corners but only %3 indices")
+            .arg(f + 1)
+            .arg(corners)
+            .arg(line.size() - 1);
+    indicesEnd = std::size_t(corners) + 1;
+    for (std::size_t i = 1; i < line.size(); ++i) {
+        const bool index = i < indicesEnd;
+        if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
+            return OffPrecheckWords::tr("expected %1, found %2")
+                .arg(index ? OffPrecheckWords::tr("a vertex index")
+                           : OffPrecheckWords::tr("a number"),
+                     quoted(line[i]));
+    }
+    return {};
+}
+
+// Counts in strayLines the face lines with values after their indices.
+QString readFaces(OffLines &lines, const OffKeyword &k, std::int64_t declared, std::string &out,
+                  std::size_t &strayLines)
+{
+    for (quint64 f = 0; f < quint64(declared); ++f) {
+        if (!lines.readLine())
+            return OffPrecheckWords::tr("the file ends after %1 of %2 faces (truncated?)")
+                .arg(f)
+                .arg(declared);
+        std::size_t indicesEnd = 0;
+        if (const QString problem = checkFaceLine(lines.line, f, indicesEnd); !problem.isEmpty())
+            return lines.atLine(problem);
+        // Values after the indices are a colour, which the reader only takes
+        // from the rest of the line under a COFF header; otherwise it would
+        // read them as the next face.
+        if (lines.line.size() > indicesEnd && !k.colors)
+            ++strayLines;
+        appendLine(out, lines.line, k.colors ? lines.line.size() : indicesEnd);
+    }
+    return {};
+}
+
+void warnAboutIgnoredText(meshtext::TextTokens &tokens, std::size_t strayLines,
+                          MeshFilePrecheck &check)
+{
+    if (strayLines)
+        check.warnings << OffPrecheckWords::tr("ignored the values after the vertex indices on %1 "
+                                               "(face colours need a COFF header)")
+                              .arg(meshtext::counted(
+                                  strayLines, QT_TRANSLATE_NOOP("phonglab::MeshText", "face line"),
+                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "face lines")));
+    tokens.nextLine();
+    if (!tokens.next().empty())
+        check.warnings << OffPrecheckWords::tr(
+                              "ignored the text after the last face (from line %1)")
+                              .arg(tokens.line());
+}
+
 } // namespace
 
 bool offHeaderAt(std::string_view head)
@@ -160,136 +329,35 @@ void precheckOff(const QString &path, MeshFilePrecheck &check)
     if (!check.ok())
         return;
 
-    // The reader takes the header from line 1 and drops the rest of it.
-    bool rewrite = headerLine != 1;
-    std::int64_t counts[3] = {};
+    OffCounts counts;
     tokens = afterHeader; // the token looked at for BINARY may be a count
-    for (int i = 0; i < 3; ++i) {
-        const std::string_view t = (i == 0 && !k.rest.empty()) ? k.rest : tokens.next();
-        if (!meshtext::parseInteger(t, counts[i]) || counts[i] < 0 || counts[i] > UINT32_MAX) {
-            check.error =
-                OffPrecheckWords::tr("line %1: expected the vertex, face and edge counts, found %2")
-                    .arg(tokens.line())
-                    .arg(quoted(t));
-            return;
-        }
-        rewrite = rewrite || tokens.line() == headerLine;
-    }
-    if (!tokens.lineIsEmpty()) {
-        check.error =
-            OffPrecheckWords::tr("line %1: unexpected text after the counts").arg(tokens.line());
+    if (const QString error = readCounts(tokens, k, headerLine, counts); !error.isEmpty()) {
+        check.error = error;
         return;
     }
-    check.declaredVertices = quint64(counts[0]);
-    check.declaredFaces = quint64(counts[1]);
-    // At the least "0 0 0\n" a vertex and "3 0 0 0\n" a face.
-    const quint64 needed = 6 * check.declaredVertices + 8 * check.declaredFaces;
-    if (needed > text.size()) {
-        check.error =
-            OffPrecheckWords::tr(
-                "the OFF header declares %1 vertices and %2 faces, which need at least %3 "
-                "bytes, but the file has %4 (truncated or corrupt)")
-                .arg(check.declaredVertices)
-                .arg(check.declaredFaces)
-                .arg(needed)
-                .arg(text.size());
-        return;
-    }
-    if (check.declaredFaces == 0) {
-        check.error = OffPrecheckWords::tr("the OFF file has no faces");
+    // The reader takes the header from line 1 and drops the rest of it.
+    bool rewrite = headerLine != 1 || counts.onHeaderLine;
+    check.declaredVertices = quint64(counts.values[0]);
+    check.declaredFaces = quint64(counts.values[1]);
+    if (const QString error = checkDeclaredCounts(text.size(), check); !error.isEmpty()) {
+        check.error = error;
         return;
     }
 
-    std::string out;
-    out.reserve(text.size());
-    out.append(k.keyword).append("\n");
-    out.append(std::to_string(counts[0]))
-        .append(" ")
-        .append(std::to_string(counts[1]))
-        .append(" ")
-        .append(std::to_string(counts[2]))
-        .append("\n");
-
-    std::vector<std::string_view> line;
-    auto readLine = [&] {
-        tokens.nextLine();
-        while (!tokens.atEnd() && tokens.lineIsEmpty())
-            tokens.nextLine();
-        line.clear();
-        for (std::string_view t = tokens.nextOnLine(); !t.empty(); t = tokens.nextOnLine())
-            line.push_back(t);
-        return !line.empty();
-    };
-    auto fail = [&](const QString &message) {
-        check.error = QStringLiteral("line %1: %2").arg(tokens.line()).arg(message);
-    };
-
-    const std::size_t vertexNumbers = k.normals ? 6 : 3;
-    for (quint64 v = 0; v < check.declaredVertices; ++v) {
-        if (!readLine()) {
-            check.error = OffPrecheckWords::tr("the file ends after %1 of %2 vertices (truncated?)")
-                              .arg(v)
-                              .arg(counts[0]);
-            return;
-        }
-        if (line.size() < vertexNumbers)
-            return fail(OffPrecheckWords::tr("vertex %1 needs %2 numbers, found %3")
-                            .arg(v + 1)
-                            .arg(vertexNumbers)
-                            .arg(line.size()));
-        for (std::string_view t : line)
-            if (!meshtext::isReal(t))
-                return fail(OffPrecheckWords::tr("expected a number, found %1").arg(quoted(t)));
-        appendLine(out, line, line.size());
+    std::string out = startCleanCopy(k, counts, text.size());
+    OffLines lines{tokens, {}};
+    if (const QString error = readVertices(lines, k, counts.values[0], out); !error.isEmpty()) {
+        check.error = error;
+        return;
     }
-
     std::size_t strayLines = 0;
-    for (quint64 f = 0; f < check.declaredFaces; ++f) {
-        if (!readLine()) {
-            check.error = OffPrecheckWords::tr("the file ends after %1 of %2 faces (truncated?)")
-                              .arg(f)
-                              .arg(counts[1]);
-            return;
-        }
-        std::int64_t corners = -1;
-        if (!meshtext::parseInteger(line[0], corners) || corners < 0)
-            return fail(OffPrecheckWords::tr("expected the corner count of face %1, found %2")
-                            .arg(f + 1)
-                            .arg(quoted(line[0])));
-        if (std::size_t(corners) > line.size() - 1)
-            return fail(OffPrecheckWords::tr("face %1 has %2 corners but only %3 indices")
-                            .arg(f + 1)
-                            .arg(corners)
-                            .arg(line.size() - 1));
-        const std::size_t indicesEnd = std::size_t(corners) + 1;
-        for (std::size_t i = 1; i < line.size(); ++i) {
-            const bool index = i < indicesEnd;
-            if (!(index ? meshtext::isIndex(line[i]) : meshtext::isReal(line[i])))
-                return fail(OffPrecheckWords::tr("expected %1, found %2")
-                                .arg(index ? OffPrecheckWords::tr("a vertex index")
-                                           : OffPrecheckWords::tr("a number"),
-                                     quoted(line[i])));
-        }
-        // Values after the indices are a colour, which the reader only takes
-        // from the rest of the line under a COFF header; otherwise it would
-        // read them as the next face.
-        if (line.size() > indicesEnd && !k.colors) {
-            ++strayLines;
-            rewrite = true;
-        }
-        appendLine(out, line, k.colors ? line.size() : indicesEnd);
+    if (const QString error = readFaces(lines, k, counts.values[1], out, strayLines);
+        !error.isEmpty()) {
+        check.error = error;
+        return;
     }
-    if (strayLines)
-        check.warnings << OffPrecheckWords::tr("ignored the values after the vertex indices on %1 "
-                                               "(face colours need a COFF header)")
-                              .arg(meshtext::counted(
-                                  strayLines, QT_TRANSLATE_NOOP("phonglab::MeshText", "face line"),
-                                  QT_TRANSLATE_NOOP("phonglab::MeshText", "face lines")));
-    tokens.nextLine();
-    if (!tokens.next().empty())
-        check.warnings << OffPrecheckWords::tr(
-                              "ignored the text after the last face (from line %1)")
-                              .arg(tokens.line());
+    rewrite = rewrite || strayLines;
+    warnAboutIgnoredText(tokens, strayLines, check);
     if (rewrite || tokens.sawComment())
         check.rewritten = std::move(out);
 }

@@ -141,6 +141,77 @@ bool readInto(PolygonSoupImporter &importer, const QString &path, const MeshFile
     return io.read(QFile::encodeName(path).toStdString(), importer, options);
 }
 
+struct ReaderRun {
+    bool ok = false;
+    QStringList messages; // the distinct lines OpenMesh wrote to omerr
+};
+
+// Runs the reader with its console captured. Any exception becomes `error`:
+// a hostile file costs a message, never the app.
+ReaderRun runReader(PolygonSoupImporter &importer, const QString &path,
+                    const MeshFilePrecheck &check, OpenMesh::IO::Options options, QString &error)
+{
+    ReaderRun run;
+    ConsoleCapture capture;
+    try {
+        run.ok = readInto(importer, path, check, options, error);
+    } catch (const PolygonSoupImporter::Cancelled &) {
+        error = QStringLiteral("cancelled");
+    } catch (const std::bad_alloc &) {
+        error = OpenMeshReaderWords::tr("out of memory while reading the file");
+    } catch (const std::exception &e) {
+        error =
+            OpenMeshReaderWords::tr("the reader failed: %1").arg(QString::fromLocal8Bit(e.what()));
+    } catch (...) {
+        error = OpenMeshReaderWords::tr("the reader failed");
+    }
+    run.messages = capture.errorLines();
+    return run;
+}
+
+// The reader's complaints after a successful read, the first few of them.
+void addReaderMessages(const QStringList &messages, QStringList &warnings)
+{
+    constexpr int kMaxMessages = 5;
+    for (int i = 0; i < messages.size() && i < kMaxMessages; ++i)
+        warnings << QStringLiteral("OpenMesh: %1").arg(messages[i]);
+    if (messages.size() > kMaxMessages)
+        warnings << QStringLiteral("OpenMesh: %1 more")
+                        .arg(
+                            meshtext::counted(messages.size() - kMaxMessages,
+                                              QT_TRANSLATE_NOOP("phonglab::MeshText", "message"),
+                                              QT_TRANSLATE_NOOP("phonglab::MeshText", "messages")));
+}
+
+// What was read against what the header (or the precheck) declared.
+void addCountWarnings(const MeshFilePrecheck &check, std::size_t vertices, std::size_t faceCalls,
+                      QStringList &warnings)
+{
+    if (check.declaredVertices && vertices != check.declaredVertices
+        && check.format != MeshFileFormat::Stl)
+        warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
+                        .arg(vertices)
+                        .arg(
+                            meshtext::counted(check.declaredVertices,
+                                              QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
+                                              QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
+    if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
+        // OpenMesh's STL reader merges corners by position and skips
+        // triangles left with a repeated corner.
+        warnings << OpenMeshReaderWords::tr("dropped %1 with two corners at the same position")
+                        .arg(meshtext::counted(
+                            check.declaredFaces - faceCalls,
+                            QT_TRANSLATE_NOOP("phonglab::MeshText", "triangle"),
+                            QT_TRANSLATE_NOOP("phonglab::MeshText", "triangles")));
+    } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
+        warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
+                        .arg(faceCalls)
+                        .arg(meshtext::counted(check.declaredFaces,
+                                               QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
+                                               QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
+    }
+}
+
 } // namespace
 
 MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &check,
@@ -164,68 +235,21 @@ MeshReadResult readWithOpenMesh(const QString &path, const MeshFilePrecheck &che
     if (check.format == MeshFileFormat::Stl)
         options += OpenMesh::IO::Options::FaceNormal;
 
-    bool ok = false;
-    QStringList messages;
-    {
-        ConsoleCapture capture;
-        try {
-            ok = readInto(importer, path, check, options, result.error);
-        } catch (const PolygonSoupImporter::Cancelled &) {
-            result.error = QStringLiteral("cancelled");
-        } catch (const std::bad_alloc &) {
-            result.error = OpenMeshReaderWords::tr("out of memory while reading the file");
-        } catch (const std::exception &e) {
-            result.error = OpenMeshReaderWords::tr("the reader failed: %1")
-                               .arg(QString::fromLocal8Bit(e.what()));
-        } catch (...) {
-            result.error = OpenMeshReaderWords::tr("the reader failed");
-        }
-        messages = capture.errorLines();
-    }
+    const ReaderRun run = runReader(importer, path, check, options, result.error);
     if (!result.error.isEmpty())
         return result;
-    if (!ok) {
-        result.error = messages.isEmpty()
+    if (!run.ok) {
+        result.error = run.messages.isEmpty()
             ? OpenMeshReaderWords::tr("OpenMesh could not read the file")
-            : OpenMeshReaderWords::tr("OpenMesh could not read the file: %1").arg(messages.first());
+            : OpenMeshReaderWords::tr("OpenMesh could not read the file: %1")
+                  .arg(run.messages.first());
         return result;
     }
-    constexpr int kMaxMessages = 5;
-    for (int i = 0; i < messages.size() && i < kMaxMessages; ++i)
-        result.warnings << QStringLiteral("OpenMesh: %1").arg(messages[i]);
-    if (messages.size() > kMaxMessages)
-        result.warnings << QStringLiteral("OpenMesh: %1 more")
-                               .arg(meshtext::counted(
-                                   messages.size() - kMaxMessages,
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "message"),
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "messages")));
+    addReaderMessages(run.messages, result.warnings);
 
     const std::size_t faceCalls = importer.faceCallCount();
     PolygonMesh mesh = importer.takeMesh(result.warnings);
-    if (check.declaredVertices && mesh.positions.size() != check.declaredVertices
-        && check.format != MeshFileFormat::Stl)
-        result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
-                               .arg(mesh.positions.size())
-                               .arg(meshtext::counted(
-                                   check.declaredVertices,
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "vertex"),
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "vertices")));
-    if (check.format == MeshFileFormat::Stl && faceCalls < check.declaredFaces) {
-        // OpenMesh's STL reader merges corners by position and skips
-        // triangles left with a repeated corner.
-        result.warnings
-            << OpenMeshReaderWords::tr("dropped %1 with two corners at the same position")
-                   .arg(meshtext::counted(check.declaredFaces - faceCalls,
-                                          QT_TRANSLATE_NOOP("phonglab::MeshText", "triangle"),
-                                          QT_TRANSLATE_NOOP("phonglab::MeshText", "triangles")));
-    } else if (check.declaredFaces && faceCalls != check.declaredFaces) {
-        result.warnings << OpenMeshReaderWords::tr("read %1 of the %2 the header declares")
-                               .arg(faceCalls)
-                               .arg(meshtext::counted(
-                                   check.declaredFaces,
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "face"),
-                                   QT_TRANSLATE_NOOP("phonglab::MeshText", "faces")));
-    }
+    addCountWarnings(check, mesh.positions.size(), faceCalls, result.warnings);
     if (mesh.faceCount() == 0) {
         result.error = OpenMeshReaderWords::tr("no faces were read");
         return result;

@@ -81,6 +81,80 @@ bool isPlainVersion(std::string_view v)
     return i == v.size();
 }
 
+// OpenMesh splits header words at any whitespace (form feeds and vertical
+// tabs too) and reads counts with operator>>; a header word it cannot read
+// sends it round its header loop forever. The header lines other than
+// comments are text: the first control or non-ASCII byte is refused.
+QString nonTextByteError(std::string_view line)
+{
+    const auto odd = std::find_if(line.begin(), line.end(), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return (u < 0x20 && c != '\t') || u > 0x7e;
+    });
+    if (odd == line.end())
+        return {};
+    return PlyPrecheckWords::tr(
+               ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
+        .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
+        .arg(odd - line.begin() + 1);
+}
+
+// The errors below go after "PLY header line N".
+
+QString parseFormatLine(const std::vector<std::string_view> &w, PlyHeader &h)
+{
+    if (h.format != PlyHeader::Unknown)
+        return QStringLiteral(": a second 'format' line");
+    if (w.size() < 2)
+        return PlyPrecheckWords::tr(": 'format' without a format");
+    if (w[1] == "ascii")
+        h.format = PlyHeader::Ascii;
+    else if (w[1] == "binary_little_endian")
+        h.format = PlyHeader::LittleEndian;
+    else if (w[1] == "binary_big_endian")
+        h.format = PlyHeader::BigEndian;
+    else
+        return PlyPrecheckWords::tr(": unknown format %1").arg(quoted(w[1]));
+    // OpenMesh reads the version with operator>>(float) and, on a failed read,
+    // loops over the header forever; so accept only a plain number here.
+    if (w.size() != 3 || !isPlainVersion(w[2]))
+        return QStringLiteral(": expected 'format %1 1.0'")
+            .arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
+    return {};
+}
+
+QString parseElementLine(const std::vector<std::string_view> &w, PlyHeader &h)
+{
+    std::int64_t count = -1;
+    if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0 || count > UINT32_MAX)
+        return QStringLiteral(": expected 'element <name> <count>'");
+    h.elements.push_back({std::string(w[1]), quint64(count), {}});
+    return {};
+}
+
+QString parsePropertyLine(const std::vector<std::string_view> &w, PlyHeader &h)
+{
+    if (h.elements.empty())
+        return PlyPrecheckWords::tr(": a property before any element");
+    PlyProperty p;
+    if (w.size() == 5 && w[1] == "list") {
+        const auto countType = plyType(w[2]);
+        const auto itemType = plyType(w[3]);
+        if (!countType || !itemType || !countType->integer)
+            return PlyPrecheckWords::tr(": unknown or unusable list types");
+        p = {std::string(w[4]), *itemType, true, *countType};
+    } else if (w.size() == 3) {
+        const auto type = plyType(w[1]);
+        if (!type)
+            return PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
+        p = {std::string(w[2]), *type, false, {}};
+    } else {
+        return QStringLiteral(": expected 'property <type> <name>'");
+    }
+    h.elements.back().properties.push_back(std::move(p));
+    return {};
+}
+
 QString parseHeader(std::string_view text, PlyHeader &h)
 {
     std::size_t pos = 0;
@@ -103,65 +177,15 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         const std::vector<std::string_view> w = words(line);
         if (w.empty() || w[0] == "comment" || w[0] == "obj_info")
             continue; // OpenMesh skips the rest of these lines, whatever they hold
-        // OpenMesh splits header words at any whitespace (form feeds and
-        // vertical tabs too) and reads counts with operator>>; a header
-        // word it cannot read sends it round its header loop forever. The
-        // other header lines are text: control and non-ASCII bytes are refused.
-        const auto odd = std::find_if(line.begin(), line.end(), [](char c) {
-            const auto u = static_cast<unsigned char>(c);
-            return (u < 0x20 && c != '\t') || u > 0x7e;
-        });
-        if (odd != line.end())
-            return where
-                + PlyPrecheckWords::tr(
-                      ": byte 0x%1 at column %2 is not text (a binary body before 'end_header'?)")
-                      .arg(static_cast<unsigned char>(*odd), 2, 16, QLatin1Char('0'))
-                      .arg(odd - line.begin() + 1);
+        if (const QString odd = nonTextByteError(line); !odd.isEmpty())
+            return where + odd;
+        QString error;
         if (w[0] == "format") {
-            if (h.format != PlyHeader::Unknown)
-                return where + QStringLiteral(": a second 'format' line");
-            if (w.size() < 2)
-                return where + PlyPrecheckWords::tr(": 'format' without a format");
-            if (w[1] == "ascii")
-                h.format = PlyHeader::Ascii;
-            else if (w[1] == "binary_little_endian")
-                h.format = PlyHeader::LittleEndian;
-            else if (w[1] == "binary_big_endian")
-                h.format = PlyHeader::BigEndian;
-            else
-                return where + PlyPrecheckWords::tr(": unknown format %1").arg(quoted(w[1]));
-            // OpenMesh reads the version with operator>>(float) and, on a failed read,
-            // loops over the header forever; so accept only a plain number here.
-            if (w.size() != 3 || !isPlainVersion(w[2]))
-                return where
-                    + QStringLiteral(": expected 'format %1 1.0'")
-                          .arg(QString::fromLatin1(w[1].data(), int(w[1].size())));
+            error = parseFormatLine(w, h);
         } else if (w[0] == "element") {
-            std::int64_t count = -1;
-            if (w.size() != 3 || !meshtext::parseInteger(w[2], count) || count < 0
-                || count > UINT32_MAX)
-                return where + QStringLiteral(": expected 'element <name> <count>'");
-            h.elements.push_back({std::string(w[1]), quint64(count), {}});
+            error = parseElementLine(w, h);
         } else if (w[0] == "property") {
-            if (h.elements.empty())
-                return where + PlyPrecheckWords::tr(": a property before any element");
-            PlyProperty p;
-            if (w.size() == 5 && w[1] == "list") {
-                const auto countType = plyType(w[2]);
-                const auto itemType = plyType(w[3]);
-                if (!countType || !itemType || !countType->integer)
-                    return where + PlyPrecheckWords::tr(": unknown or unusable list types");
-                p = {std::string(w[4]), *itemType, true, *countType};
-            } else if (w.size() == 3) {
-                const auto type = plyType(w[1]);
-                if (!type)
-                    return where
-                        + PlyPrecheckWords::tr(": unknown property type %1").arg(quoted(w[1]));
-                p = {std::string(w[2]), *type, false, {}};
-            } else {
-                return where + QStringLiteral(": expected 'property <type> <name>'");
-            }
-            h.elements.back().properties.push_back(std::move(p));
+            error = parsePropertyLine(w, h);
         } else if (w[0] == "end_header") {
             if (w.size() != 1)
                 return where + PlyPrecheckWords::tr(": words after 'end_header'");
@@ -173,6 +197,8 @@ QString parseHeader(std::string_view text, PlyHeader &h)
         } else {
             return where + PlyPrecheckWords::tr(": unknown keyword %1").arg(quoted(w[0]));
         }
+        if (!error.isEmpty())
+            return where + error;
     }
     return PlyPrecheckWords::tr(
         "the PLY header has no 'end_header' line (truncated or not a PLY file)");
@@ -200,6 +226,29 @@ bool hasFaceIndices(const PlyElement &e)
         if (p.isList && (p.name == "vertex_indices" || p.name == "vertex_index"))
             return true;
     return false;
+}
+
+// What each element needs at the least: its scalars and list lengths in
+// binary, a digit and a separator per value in ascii. A header claiming more
+// than the file can hold is refused here, before any allocation.
+QString checkElementsFit(const PlyHeader &h, bool binary, quint64 bodyBytes)
+{
+    quint64 needed = 0;
+    for (const PlyElement &e : h.elements) {
+        quint64 perElement = 0;
+        for (const PlyProperty &p : e.properties)
+            perElement += binary ? quint64(p.isList ? p.countType.size : p.type.size) : 2;
+        needed += e.count * perElement;
+        if (needed > bodyBytes + 1)
+            return PlyPrecheckWords::tr(
+                       "the header declares %1 %2 elements, which need at least %3 bytes, "
+                       "but the file has %4 bytes after the header (truncated or corrupt)")
+                .arg(e.count)
+                .arg(QString::fromStdString(e.name))
+                .arg(needed)
+                .arg(bodyBytes);
+    }
+    return {};
 }
 
 } // namespace
@@ -232,27 +281,9 @@ void precheckPly(const QString &path, MeshFilePrecheck &check)
     check.declaredVertices = vertex->count;
     check.declaredFaces = face->count;
 
-    // What each element needs at the least: its scalars and list lengths in
-    // binary, a digit and a separator per value in ascii. A header claiming
-    // more than the file can hold is refused here, before any allocation.
-    const quint64 bodyBytes = quint64(check.fileSize - h.bodyOffset);
-    quint64 needed = 0;
-    for (const PlyElement &e : h.elements) {
-        quint64 perElement = 0;
-        for (const PlyProperty &p : e.properties)
-            perElement += check.binary ? quint64(p.isList ? p.countType.size : p.type.size) : 2;
-        needed += e.count * perElement;
-        if (needed > bodyBytes + 1) {
-            check.error = PlyPrecheckWords::tr(
-                              "the header declares %1 %2 elements, which need at least %3 bytes, "
-                              "but the file has %4 bytes after the header (truncated or corrupt)")
-                              .arg(e.count)
-                              .arg(QString::fromStdString(e.name))
-                              .arg(needed)
-                              .arg(bodyBytes);
-            return;
-        }
-    }
+    check.error = checkElementsFit(h, check.binary, quint64(check.fileSize - h.bodyOffset));
+    if (!check.ok())
+        return;
 
     if (check.binary) {
         walkBinary(file, h, check);

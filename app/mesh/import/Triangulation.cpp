@@ -65,6 +65,7 @@ private:
         m_out->insert(m_out->end(), {m_first + a, m_first + b, m_first + c});
     }
     void fanFrom(std::uint32_t start);
+    bool clipEars(std::uint32_t n);
 
     std::vector<Point2> m_points;
     std::vector<std::uint32_t> m_prev, m_next;
@@ -167,7 +168,13 @@ bool PolygonTriangulator::run(std::span<const glm::vec3> positions,
         fanFrom(0);
         return true;
     }
+    return clipEars(n);
+}
 
+// Ear clipping of the projected polygon of n corners; false when it had to
+// give up and fan the rest.
+bool PolygonTriangulator::clipEars(std::uint32_t n)
+{
     m_reflex.resize(n);
     int reflexCount = 0;
     for (std::uint32_t i = 0; i < n; ++i) {

@@ -162,6 +162,54 @@ QString temporaryEntryFile()
     return reserve.fileName();
 }
 
+// A looping reader can log megabytes a second (OpenMesh's does): its
+// stderr goes nowhere unless asked for. Our own errors come on stdout.
+void routeChildStderr(QProcess &child)
+{
+    if (qEnvironmentVariableIsSet("PHONGLAB_IMPORT_STDERR"))
+        child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    else
+        child.setStandardErrorFile(QProcess::nullDevice());
+}
+
+// Waits for the child to exit, passing on its progress. Returns why it was
+// killed instead (cancelled, or past the wall clock); empty when it exited.
+QString waitForChild(QProcess &child, ChildReport &report, const MeshImportLimits &limits,
+                     const QString &path, const LoadProgress &progress)
+{
+    QElapsedTimer clock;
+    clock.start();
+    QString stopped;
+    while (!child.waitForFinished(kPollMs)) {
+        report.read(child);
+        if (progress && !progress(report.progress)) {
+            stopped = QStringLiteral("cancelled");
+        } else if (clock.elapsed() > limits.wallClockMs) {
+            stopped = MeshImportProcessWords::tr(
+                          "%1: the reader stopped answering after %2 s and was stopped; "
+                          "the file is probably malformed")
+                          .arg(path)
+                          .arg(sentenceNumber(limits.wallClockMs / 1000.0, 'g', 3));
+        }
+        if (!stopped.isEmpty()) {
+            child.kill();
+            child.waitForFinished(-1);
+            return stopped;
+        }
+    }
+    return {};
+}
+
+std::optional<MeshLoadResult> readEntryFile(const QString &entryFile)
+{
+    QFile entry(entryFile);
+    std::optional<MeshLoadResult> answer;
+    if (entry.open(QIODevice::ReadOnly))
+        answer = MeshCache::decode(entry, std::nullopt);
+    entry.close();
+    return answer;
+}
+
 } // namespace
 
 MeshImportLimits MeshImportLimits::forFile(qint64 fileBytes)
@@ -201,12 +249,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
     const MeshImportLimits limits = MeshImportLimits::forFile(QFileInfo(path).size());
 
     QProcess child;
-    // A looping reader can log megabytes a second (OpenMesh's does): its
-    // stderr goes nowhere unless asked for. Our own errors come on stdout.
-    if (qEnvironmentVariableIsSet("PHONGLAB_IMPORT_STDERR"))
-        child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    else
-        child.setStandardErrorFile(QProcess::nullDevice());
+    routeChildStderr(child);
     child.start(executable, childArguments(path, normals, entryFile, limits), QIODevice::ReadOnly);
     if (!child.waitForStarted(10'000)) {
         QFile::remove(entryFile);
@@ -214,27 +257,11 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
                         .arg(executable, child.errorString()));
     }
     ChildReport report;
-    QElapsedTimer clock;
-    clock.start();
-    QString stopped;
-    while (!child.waitForFinished(kPollMs)) {
-        report.read(child);
-        if (progress && !progress(report.progress)) {
-            stopped = QStringLiteral("cancelled");
-        } else if (clock.elapsed() > limits.wallClockMs) {
-            stopped = MeshImportProcessWords::tr(
-                          "%1: the reader stopped answering after %2 s and was stopped; "
-                          "the file is probably malformed")
-                          .arg(path)
-                          .arg(sentenceNumber(limits.wallClockMs / 1000.0, 'g', 3));
-        }
-        if (!stopped.isEmpty()) {
-            child.kill();
-            child.waitForFinished(-1);
-            QFile::remove(entryFile);
-            result.error = stopped;
-            return result;
-        }
+    const QString stopped = waitForChild(child, report, limits, path, progress);
+    if (!stopped.isEmpty()) {
+        QFile::remove(entryFile);
+        result.error = stopped;
+        return result;
     }
     report.read(child);
     if (child.exitStatus() != QProcess::NormalExit || child.exitCode() != 0) {
@@ -244,11 +271,7 @@ MeshLoadResult importMeshIsolated(const QString &path, const NormalOptions &norm
         result.error = why.startsWith(path) ? why : QStringLiteral("%1: %2").arg(path, why);
         return result;
     }
-    QFile entry(entryFile);
-    std::optional<MeshLoadResult> answer;
-    if (entry.open(QIODevice::ReadOnly))
-        answer = MeshCache::decode(entry, std::nullopt);
-    entry.close();
+    std::optional<MeshLoadResult> answer = readEntryFile(entryFile);
     if (!answer) {
         QFile::remove(entryFile);
         return fail(MeshImportProcessWords::tr("the import process gave no readable result"));

@@ -143,6 +143,55 @@ std::size_t weldPerPosition(std::span<const glm::vec3> positions,
     return out.positions.size();
 }
 
+constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+struct WeldKey {
+    std::uint32_t position;
+    Vec3Key normal;
+    bool operator==(const WeldKey &) const = default;
+};
+struct WeldKeyHash {
+    std::size_t operator()(const WeldKey &k) const
+    {
+        const std::uint64_t h =
+            k.position * 0x9E3779B97F4A7C15ull ^ Vec3KeyHash()(k.normal) * 0xC2B2AE3D27D4EB4Full;
+        return std::size_t(h ^ h >> 29);
+    }
+};
+
+// The vertices weld() has made so far, found by position: a chain per
+// position, newest first, or a hash map for the few crowded positions.
+struct VertexChains {
+    std::vector<std::uint32_t> head; // newest vertex of each position
+    std::vector<std::uint32_t> next; // the vertex made before it, per vertex
+    std::vector<char> crowded;
+    std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> crowdedVertex;
+};
+
+// The vertex already made at position p with normal n, or kNoVertex. A
+// position whose chain grows past the limit moves to the hash map.
+std::uint32_t findVertex(VertexChains &chains, const std::vector<glm::vec3> &vertexNormals,
+                         std::uint32_t p, const glm::vec3 &n)
+{
+    constexpr int kChainLimit = 32;
+    std::uint32_t v = kNoVertex;
+    if (chains.crowded[p]) {
+        const auto found = chains.crowdedVertex.find({p, vec3Key(n)});
+        v = found != chains.crowdedVertex.end() ? found->second : kNoVertex;
+    } else {
+        int steps = 0;
+        for (v = chains.head[p]; v != kNoVertex && !sameNormal(vertexNormals[v], n);
+             v = chains.next[v])
+            ++steps;
+        if (v == kNoVertex && steps >= kChainLimit) {
+            chains.crowded[p] = 1;
+            for (std::uint32_t w = chains.head[p]; w != kNoVertex; w = chains.next[w])
+                chains.crowdedVertex.emplace(WeldKey{p, vec3Key(vertexNormals[w])}, w);
+        }
+    }
+    return v;
+}
+
 // One GPU vertex per distinct (position index, normal's Vec3Key), in order of
 // first use (which suits the GPU's vertex cache). Each position keeps a
 // chain of the vertices made for it, newest first; a corner walks its
@@ -156,26 +205,9 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     if (normals.indexing == CornerNormals::Indexing::PerPosition)
         return weldPerPosition(positions, triPositions, normals, out);
 
-    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    constexpr int kChainLimit = 32;
-    struct Key {
-        std::uint32_t position;
-        Vec3Key normal;
-        bool operator==(const Key &) const = default;
-    };
-    struct KeyHash {
-        std::size_t operator()(const Key &k) const
-        {
-            const std::uint64_t h = k.position * 0x9E3779B97F4A7C15ull
-                ^ Vec3KeyHash()(k.normal) * 0xC2B2AE3D27D4EB4Full;
-            return std::size_t(h ^ h >> 29);
-        }
-    };
-
-    std::vector<std::uint32_t> head(positions.size(), kNone); // newest vertex of each position
-    std::vector<std::uint32_t> next; // the vertex made before it, per vertex
-    std::vector<char> crowded(positions.size(), 0);
-    std::unordered_map<Key, std::uint32_t, KeyHash> crowdedVertex;
+    VertexChains chains;
+    chains.head.assign(positions.size(), kNoVertex);
+    chains.crowded.assign(positions.size(), 0);
     // Room for every vertex up front: growing 100 MB of vertices by doubling
     // costs more in copies and fresh pages than the welding itself. Flat
     // shading gives about one vertex per corner; otherwise each normal
@@ -183,7 +215,7 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     const std::size_t expected = normals.indexing == CornerNormals::Indexing::PerTriangle
         ? triPositions.size()
         : std::min(triPositions.size(), std::max(positions.size(), normals.normals.size()));
-    next.reserve(expected);
+    chains.next.reserve(expected);
     out.positions.reserve(expected);
     out.normals.reserve(expected);
     out.indices.resize(triPositions.size());
@@ -192,33 +224,43 @@ std::size_t weld(std::span<const glm::vec3> positions, std::span<const std::uint
     for (std::size_t c = 0; c < triPositions.size(); ++c) {
         const std::uint32_t p = triPositions[c];
         const glm::vec3 &n = normals.at(c, triPositions);
-        std::uint32_t v = kNone;
-        if (crowded[p]) {
-            const auto found = crowdedVertex.find({p, vec3Key(n)});
-            v = found != crowdedVertex.end() ? found->second : kNone;
-        } else {
-            int steps = 0;
-            for (v = head[p]; v != kNone && !sameNormal(out.normals[v], n); v = next[v])
-                ++steps;
-            if (v == kNone && steps >= kChainLimit) {
-                crowded[p] = 1;
-                for (std::uint32_t w = head[p]; w != kNone; w = next[w])
-                    crowdedVertex.emplace(Key{p, vec3Key(out.normals[w])}, w);
-            }
-        }
-        if (v == kNone) {
+        std::uint32_t v = findVertex(chains, out.normals, p, n);
+        if (v == kNoVertex) {
             v = std::uint32_t(out.positions.size());
-            positionsUsed += head[p] == kNone;
+            positionsUsed += chains.head[p] == kNoVertex;
             out.positions.push_back(positions[p]);
             out.normals.push_back(n);
-            next.push_back(head[p]);
-            head[p] = v;
-            if (crowded[p])
-                crowdedVertex.emplace(Key{p, vec3Key(n)}, v);
+            chains.next.push_back(chains.head[p]);
+            chains.head[p] = v;
+            if (chains.crowded[p])
+                chains.crowdedVertex.emplace(WeldKey{p, vec3Key(n)}, v);
         }
         out.indices[c] = v;
     }
     return positionsUsed;
+}
+
+// Corners without a usable file normal: all of them when the file has none.
+std::size_t missingFileNormals(const PolygonMesh &mesh)
+{
+    std::size_t missingNormals = mesh.cornerPosition.size();
+    if (mesh.hasNormals()) {
+        missingNormals = 0;
+        for (std::uint32_t n : mesh.cornerNormal)
+            missingNormals += n == PolygonMesh::kNoNormal || n >= mesh.normals.size();
+    }
+    return missingNormals;
+}
+
+void setBounds(MeshStats &stats, const MeshData &data)
+{
+    if (!data.positions.empty()) {
+        stats.boundsMin = stats.boundsMax = data.positions.front();
+        for (const glm::vec3 &p : data.positions) {
+            stats.boundsMin = glm::min(stats.boundsMin, p);
+            stats.boundsMax = glm::max(stats.boundsMax, p);
+        }
+    }
 }
 
 } // namespace
@@ -253,12 +295,7 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
                         "%1 polygons cross or fold onto themselves; they were split as fans")
                         .arg(qint64(triangles.fanFallbacks));
 
-    std::size_t missingNormals = mesh.cornerPosition.size();
-    if (mesh.hasNormals()) {
-        missingNormals = 0;
-        for (std::uint32_t n : mesh.cornerNormal)
-            missingNormals += n == PolygonMesh::kNoNormal || n >= mesh.normals.size();
-    }
+    const std::size_t missingNormals = missingFileNormals(mesh);
     const bool fromFile = options.method == NormalMethod::Auto && missingNormals == 0;
     const NormalMethod method = fromFile       ? NormalMethod::Auto
         : options.method == NormalMethod::Auto ? NormalMethod::AngleWeighted
@@ -282,13 +319,7 @@ BuiltMesh buildMeshData(const PolygonMesh &mesh, const NormalOptions &options)
     stats.triangles = qint64(data.triangleCount());
     stats.normalsFromFile = fromFile;
     stats.normalMethod = method;
-    if (!data.positions.empty()) {
-        stats.boundsMin = stats.boundsMax = data.positions.front();
-        for (const glm::vec3 &p : data.positions) {
-            stats.boundsMin = glm::min(stats.boundsMin, p);
-            stats.boundsMax = glm::max(stats.boundsMax, p);
-        }
-    }
+    setBounds(stats, data);
     stats.splitVertices = stats.vertices - qint64(positionsUsed);
     return built;
 }

@@ -275,7 +275,10 @@ QJsonObject checkJson(Verdict verdict, const CheckFindings &findings)
     return o;
 }
 
-QString checkText(const CheckOutcome &outcome, const Scene &scene)
+namespace {
+
+// What the verdict rests on: how the names were bound, the notes, precision.
+QStringList groundsLines(const CheckOutcome &outcome)
 {
     QStringList out;
     if (const QString bound = bindingsText(outcome.bindings); !bound.isEmpty())
@@ -286,10 +289,12 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
         out << CheckWords::tr("note: %1").arg(note);
     if (const QString precision = precisionText(outcome.precision); !precision.isEmpty())
         out << precision;
-    if (outcome.verdict == Verdict::Error) {
-        out << CheckWords::tr("check: error");
-        return out.join(QLatin1Char('\n'));
-    }
+    return out;
+}
+
+QStringList comparisonLines(const CheckOutcome &outcome, const Scene &scene)
+{
+    QStringList out;
     const CheckReport &r = outcome.report;
     const ImageComparison &c = r.comparison;
     out << CheckWords::tr("check: %1").arg(verdictWord(outcome.verdict));
@@ -310,42 +315,60 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
                    .arg(c.worstPixel.x())
                    .arg(c.worstPixel.y())
                    .arg(objectLabel(scene, r.worstObject));
-    const MistakeDiagnosis &d = r.diagnosis;
-    if (outcome.verdict == Verdict::Fail) {
-        out << CheckWords::tr("diagnosis:");
-        if (d.unexplained()) {
-            out << CheckWords::tr(
-                "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
-                "shows where it is");
-            if (!d.together.variants.empty())
-                out << CheckWords::tr("  closest, partial: %1 explain %2 % of the difference")
-                           .arg(mistakeSetName(d.together))
-                           .arg(qRound(100.0 * d.together.explains));
-        }
-        if (d.together.beyondLimit)
-            out << CheckWords::tr("  more than %1 deviations would be needed to explain all of "
-                                  "it: the heatmap shows the rest")
-                       .arg(kMaxMistakesTogether);
-        if (d.together.variants.size() > 1 && d.togetherExplains()) {
-            out << CheckWords::tr("  together: %1 explain %2 % of the difference")
+    return out;
+}
+
+// The set of mistakes that explains the render together, each with its lines.
+QStringList togetherLines(const MistakeDiagnosis &d, const std::vector<ShaderStageText> &stages)
+{
+    QStringList out;
+    out << CheckWords::tr("  together: %1 explain %2 % of the difference")
+               .arg(mistakeSetName(d.together))
+               .arg(qRound(100.0 * d.together.explains));
+    for (MistakeVariant v : d.together.variants) {
+        out << QStringLiteral("    %1 (%2): %3")
+                   .arg(shaderMistakeKey(v.key), mistakeFormSummary(v), shaderMistakeRule(v.key));
+        for (const SourceLine &l : mistakeSourceLines(v.key, stages))
+            out << QStringLiteral("      %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
+    }
+    if (!d.findings.empty())
+        out << CheckWords::tr("  each alone:");
+    return out;
+}
+
+// A failed check's diagnosis: what explains the difference, or that nothing does.
+QStringList diagnosisLines(const MistakeDiagnosis &d, const std::vector<ShaderStageText> &stages)
+{
+    QStringList out;
+    out << CheckWords::tr("diagnosis:");
+    if (d.unexplained()) {
+        out << CheckWords::tr(
+            "  unknown: no classic mistake explains the difference; the heatmap (--diff) "
+            "shows where it is");
+        if (!d.together.variants.empty())
+            out << CheckWords::tr("  closest, partial: %1 explain %2 % of the difference")
                        .arg(mistakeSetName(d.together))
                        .arg(qRound(100.0 * d.together.explains));
-            for (MistakeVariant v : d.together.variants) {
-                out << QStringLiteral("    %1 (%2): %3")
-                           .arg(shaderMistakeKey(v.key), mistakeFormSummary(v),
-                                shaderMistakeRule(v.key));
-                for (const SourceLine &l : mistakeSourceLines(v.key, outcome.stages))
-                    out << QStringLiteral("      %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
-            }
-            if (!d.findings.empty())
-                out << CheckWords::tr("  each alone:");
-        }
-        for (const MistakeFinding &f : d.findings) {
-            out << QStringLiteral("  ") + findingMessage(f);
-            for (const SourceLine &l : findingLines(f, outcome.stages))
-                out << QStringLiteral("    %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
-        }
     }
+    if (d.together.beyondLimit)
+        out << CheckWords::tr("  more than %1 deviations would be needed to explain all of "
+                              "it: the heatmap shows the rest")
+                   .arg(kMaxMistakesTogether);
+    if (d.together.variants.size() > 1 && d.togetherExplains())
+        out << togetherLines(d, stages);
+    for (const MistakeFinding &f : d.findings) {
+        out << QStringLiteral("  ") + findingMessage(f);
+        for (const SourceLine &l : findingLines(f, stages))
+            out << QStringLiteral("    %1:%2: %3").arg(l.file).arg(l.line).arg(l.text);
+    }
+    return out;
+}
+
+// What this scene cannot judge: mistakes it cannot show, terms it does not check.
+QStringList unseenLines(const CheckReport &r)
+{
+    QStringList out;
+    const MistakeDiagnosis &d = r.diagnosis;
     if (!d.undetectable.empty()) {
         QStringList keys;
         for (ShaderMistake m : d.undetectable)
@@ -354,6 +377,22 @@ QString checkText(const CheckOutcome &outcome, const Scene &scene)
     }
     if (!r.silent.empty())
         out << CheckWords::tr("not checked in this scene: %1").arg(silentTermsText(r.silent));
+    return out;
+}
+
+} // namespace
+
+QString checkText(const CheckOutcome &outcome, const Scene &scene)
+{
+    QStringList out = groundsLines(outcome);
+    if (outcome.verdict == Verdict::Error) {
+        out << CheckWords::tr("check: error");
+        return out.join(QLatin1Char('\n'));
+    }
+    out << comparisonLines(outcome, scene);
+    if (outcome.verdict == Verdict::Fail)
+        out << diagnosisLines(outcome.report.diagnosis, outcome.stages);
+    out << unseenLines(outcome.report);
     return out.join(QLatin1Char('\n'));
 }
 

@@ -199,6 +199,52 @@ void draw(QOpenGLExtraFunctions *gl, const CapturedOp &op, const PageCapture &ca
     }
 }
 
+void clear(QOpenGLExtraFunctions *gl, const CapturedOp &op)
+{
+    gl->glClearColor(GLfloat(op.clearColor[0]), GLfloat(op.clearColor[1]),
+                     GLfloat(op.clearColor[2]), GLfloat(op.clearColor[3]));
+    gl->glClearDepthf(GLfloat(op.clearDepth));
+    gl->glClear(op.clearMask & (GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT));
+}
+
+// Every captured clear and draw on the bound framebuffer; what cannot be
+// drawn goes to `notReplayed`. The GL objects made for it are gone on return.
+void replayOps(QOpenGLExtraFunctions *gl, const PageCapture &capture, QStringList *notReplayed)
+{
+    ReplayObjects objects(gl);
+    // The drawing buffer as the browser hands it: transparent black, depth 1.
+    gl->glDisable(GL_SCISSOR_TEST);
+    gl->glColorMask(true, true, true, true);
+    gl->glDepthMask(true);
+    gl->glClearColor(0, 0, 0, 0);
+    gl->glClearDepthf(1);
+    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    if (capture.webgl == 2)
+        gl->glEnable(kPrimitiveRestartFixedIndex);
+    for (const CapturedOp &op : capture.ops) {
+        applyState(gl, op.state);
+        if (op.kind == CapturedOp::Kind::Clear) {
+            clear(gl, op);
+            continue;
+        }
+        QString problem = drawOutOfBounds(capture, op);
+        const BuiltProgram *program =
+            problem.isEmpty() ? programFor(capture, op.program, &objects, &problem) : nullptr;
+        if (!program) {
+            notReplayed->push_back(callSiteText(op.stack).isEmpty()
+                                       ? problem
+                                       : callSiteText(op.stack) + QStringLiteral(": ") + problem);
+            continue;
+        }
+        gl->glUseProgram(program->program.id());
+        setUniforms(gl, program->program.id(), op, notReplayed);
+        setAttributes(gl, program->program.id(), op, capture, &objects);
+        draw(gl, op, capture, &objects);
+    }
+    gl->glDisable(kPrimitiveRestartFixedIndex);
+    gl->glUseProgram(0);
+}
+
 } // namespace
 
 Result<ReplayedFrame> replayCapture(const PageCapture &capture)
@@ -218,45 +264,7 @@ Result<ReplayedFrame> replayCapture(const PageCapture &capture)
                         .arg(capture.canvas.width())
                         .arg(capture.canvas.height()));
     ReplayedFrame frame;
-    {
-        ReplayObjects objects(gl);
-        // The drawing buffer as the browser hands it: transparent black, depth 1.
-        gl->glDisable(GL_SCISSOR_TEST);
-        gl->glColorMask(true, true, true, true);
-        gl->glDepthMask(true);
-        gl->glClearColor(0, 0, 0, 0);
-        gl->glClearDepthf(1);
-        gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        if (capture.webgl == 2)
-            gl->glEnable(kPrimitiveRestartFixedIndex);
-        for (const CapturedOp &op : capture.ops) {
-            applyState(gl, op.state);
-            if (op.kind == CapturedOp::Kind::Clear) {
-                gl->glClearColor(GLfloat(op.clearColor[0]), GLfloat(op.clearColor[1]),
-                                 GLfloat(op.clearColor[2]), GLfloat(op.clearColor[3]));
-                gl->glClearDepthf(GLfloat(op.clearDepth));
-                gl->glClear(op.clearMask
-                            & (GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT));
-                continue;
-            }
-            QString problem = drawOutOfBounds(capture, op);
-            const BuiltProgram *program =
-                problem.isEmpty() ? programFor(capture, op.program, &objects, &problem) : nullptr;
-            if (!program) {
-                frame.notReplayed.push_back(callSiteText(op.stack).isEmpty()
-                                                ? problem
-                                                : callSiteText(op.stack) + QStringLiteral(": ")
-                                                    + problem);
-                continue;
-            }
-            gl->glUseProgram(program->program.id());
-            setUniforms(gl, program->program.id(), op, &frame.notReplayed);
-            setAttributes(gl, program->program.id(), op, capture, &objects);
-            draw(gl, op, capture, &objects);
-        }
-        gl->glDisable(kPrimitiveRestartFixedIndex);
-        gl->glUseProgram(0);
-    }
+    replayOps(gl, capture, &frame.notReplayed);
     frame.pixels.resize(qsizetype(capture.canvas.width()) * capture.canvas.height() * 4);
     gl->glPixelStorei(GL_PACK_ALIGNMENT, 1);
     gl->glReadPixels(0, 0, capture.canvas.width(), capture.canvas.height(), GL_RGBA,

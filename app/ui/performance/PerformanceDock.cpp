@@ -42,6 +42,17 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
            "second's frames, and the triangles drawn."));
     layout->addWidget(m_frameLabel);
 
+    addBudgetRow(body, layout);
+    addAutoDetailToggle(body, layout);
+    addButtons(body, layout);
+    addResultsArea(body, layout);
+    layout->addStretch(0);
+    setWidget(body);
+    connectActions();
+}
+
+void PerformanceDock::addBudgetRow(QWidget *body, QVBoxLayout *layout)
+{
     auto *budgetRow = new QHBoxLayout;
     budgetRow->addWidget(new QLabel(tr("Error budget:"), body));
     m_budgetKind = new QComboBox(body);
@@ -54,7 +65,11 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     layout->addLayout(budgetRow);
     connect(m_budgetKind, &QComboBox::currentIndexChanged, this, &PerformanceDock::setBudgetKind);
     setBudget(ErrorBudget{});
+}
 
+// Needs the budget widgets: the allowance it sends is read from them.
+void PerformanceDock::addAutoDetailToggle(QWidget *body, QVBoxLayout *layout)
+{
     m_autoDetail = new QCheckBox(tr("Model only what the view needs"), body);
     m_autoDetail->setObjectName(QStringLiteral("autoDetail"));
     m_autoDetail->setToolTip(
@@ -71,7 +86,10 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     connect(m_budgetValue, &QDoubleSpinBox::valueChanged, this,
             &PerformanceDock::sendReductionAllowance);
     sendReductionAllowance();
+}
 
+void PerformanceDock::addButtons(QWidget *body, QVBoxLayout *layout)
+{
     auto *buttons = new QHBoxLayout;
     m_measureButton = new QPushButton(tr("Measure"), body);
     m_measureButton->setToolTip(
@@ -89,7 +107,11 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     for (QPushButton *b : {m_measureButton, m_fitButton, m_fullButton, m_cancelButton})
         buttons->addWidget(b);
     layout->addLayout(buttons);
+}
 
+// The progress bar, the chart and the report under it.
+void PerformanceDock::addResultsArea(QWidget *body, QVBoxLayout *layout)
+{
     m_progress = new QProgressBar(body);
     m_progress->setVisible(false);
     layout->addWidget(m_progress);
@@ -105,9 +127,10 @@ PerformanceDock::PerformanceDock(Viewport *viewport, QWidget *parent)
     m_report->setWordWrap(true);
     m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_report);
-    layout->addStretch(0);
-    setWidget(body);
+}
 
+void PerformanceDock::connectActions()
+{
     connect(m_measureButton, &QPushButton::clicked, this, &PerformanceDock::measure);
     connect(m_fitButton, &QPushButton::clicked, this, &PerformanceDock::fitToBudget);
     connect(m_fullButton, &QPushButton::clicked, this, &PerformanceDock::restoreFullDetail);

@@ -14,6 +14,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QVBoxLayout;
 
 namespace phonglab {
 
@@ -64,6 +65,12 @@ signals:
     void fitApplied(); // the fit was handed to applyFitRequested
 
 private:
+    // The constructor's widgets, top to bottom, then the buttons' and the view's signals.
+    void addBudgetRow(QWidget *body, QVBoxLayout *layout);
+    void addAutoDetailToggle(QWidget *body, QVBoxLayout *layout);
+    void addButtons(QWidget *body, QVBoxLayout *layout);
+    void addResultsArea(QWidget *body, QVBoxLayout *layout);
+    void connectActions();
     void setBudgetKind(int index);
     void sendReductionAllowance();
     void startMeasurement(bool thenFit);
