@@ -32,25 +32,25 @@ GradeResults twoRows()
     GradeRow pass;
     pass.submission = 0;
     pass.verdict = Verdict::Pass;
-    pass.outcome.report.comparison.psnr = std::numeric_limits<double>::infinity();
-    pass.outcome.report.comparison.pixelsCompared = 100;
+    pass.findings.report.comparison.psnr = std::numeric_limits<double>::infinity();
+    pass.findings.report.comparison.pixelsCompared = 100;
     pass.seconds = 0.5;
 
     GradeRow fail;
     fail.submission = 1;
     fail.verdict = Verdict::Fail;
-    fail.outcome.report.comparison.psnr = 23.456;
-    fail.outcome.report.comparison.maxError = 145;
-    fail.outcome.report.comparison.pixelsCompared = 1000;
-    fail.outcome.report.badPixels = 250;
+    fail.findings.report.comparison.psnr = 23.456;
+    fail.findings.report.comparison.maxError = 145;
+    fail.findings.report.comparison.pixelsCompared = 1000;
+    fail.findings.report.badPixels = 250;
     MistakeFinding finding;
     finding.key = ShaderMistake::ReflectIncident;
     finding.also = {ShaderMistake::ViewVector};
     finding.confidence = 1.0;
-    fail.outcome.report.diagnosis.findings = {finding};
-    fail.outcome.stages = {{QStringLiteral("x/a.frag"),
-                            QStringLiteral("void main()\n{\n    vec3 R = reflect(L, N);\n}\n"),
-                            false}};
+    fail.findings.report.diagnosis.findings = {finding};
+    fail.findings.stages = {{QStringLiteral("x/a.frag"),
+                             QStringLiteral("void main()\n{\n    vec3 R = reflect(L, N);\n}\n"),
+                             false}};
     fail.seconds = 1.25;
     r.rows = {pass, fail};
     return r;

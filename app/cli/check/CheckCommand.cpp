@@ -296,12 +296,12 @@ CheckOutcome runCheckOn(CheckArgs args, const Scene &scene, CheckReference *refe
         projectNotes = *chosen;
     }
     CheckDrawing drawing = drawForCheck(inputOf(args), scene);
-    drawing.outcome.notes = projectNotes + drawing.outcome.notes;
+    drawing.findings.notes = projectNotes + drawing.findings.notes;
     for (const ShaderDiagnostic &d : drawing.compilerMessages)
         if (d.isError() || !args.json)
             printErrLine(d.format());
     const bool drawn = drawing.drawn();
-    CheckOutcome outcome{std::move(drawing.outcome)}; // Error until checked
+    CheckOutcome outcome{std::move(drawing.findings)}; // Error until checked
     if (!drawn)
         return outcome;
     Result<CheckReference> made =
@@ -342,7 +342,7 @@ int drawOnly(const CheckArgs &args)
     const SceneLoadResult loaded = checkedScene(args);
     if (!loaded.ok()) {
         CheckDrawing failed;
-        failed.outcome.errors.push_back(sceneError(args.scenePath, loaded));
+        failed.findings.errors.push_back(sceneError(args.scenePath, loaded));
         printLine(
             QString::fromUtf8(QJsonDocument(drawingJson(failed)).toJson(QJsonDocument::Compact)));
         return kExitOk;
@@ -350,7 +350,7 @@ int drawOnly(const CheckArgs &args)
     CheckDrawing drawing = drawForCheck(inputOf(args), *loaded.scene);
     if (drawing.drawn()) {
         if (const Result<> written = writePng(drawing.image, args.drawOnlyPath); !written)
-            drawing.outcome.errors.push_back(inputError(args.drawOnlyPath, written.error()));
+            drawing.findings.errors.push_back(inputError(args.drawOnlyPath, written.error()));
     }
     printLine(
         QString::fromUtf8(QJsonDocument(drawingJson(drawing)).toJson(QJsonDocument::Compact)));

@@ -47,10 +47,10 @@ namespace {
 
 // The file that declares uniform `name`: the vertex stage's, else the
 // fragment's.
-QString declaringFile(const QString &name, const CheckFindings &outcome, const StageFiles &files)
+QString declaringFile(const QString &name, const CheckFindings &findings, const StageFiles &files)
 {
     const bool inVertex =
-        !outcome.stages.empty() && uniformDeclarationLine(outcome.stages.front().text, name) > 0;
+        !findings.stages.empty() && uniformDeclarationLine(findings.stages.front().text, name) > 0;
     return inVertex ? files.vertex : files.fragment;
 }
 
@@ -72,27 +72,28 @@ std::optional<ShaderDiagnostic> unreadableStage(const StageFiles &files)
 }
 
 // A program that did not build: its compile errors, or one saying so.
-void addCompileErrors(const BuildReport &program, const StageFiles &files, CheckFindings *outcome)
+void addCompileErrors(const BuildReport &program, const StageFiles &files, CheckFindings *findings)
 {
     for (const ShaderDiagnostic &d : program.diagnostics)
         if (d.isError())
-            outcome->errors.push_back(d);
-    if (outcome->errors.empty())
-        outcome->errors.push_back(
+            findings->errors.push_back(d);
+    if (findings->errors.empty())
+        findings->errors.push_back(
             inputError(files.fragment, CheckStepsWords::tr("the shaders did not compile")));
 }
 
 // Nothing PhongLab could not bind may decide the verdict: the student's
 // names are PhongLab's gap, never the student's mistake.
-void addBindingErrors(const ProgramFindings &found, const StageFiles &files, CheckFindings *outcome)
+void addBindingErrors(const ProgramFindings &found, const StageFiles &files,
+                      CheckFindings *findings)
 {
     for (const QString &problem : found.problems)
-        outcome->errors.push_back(inputError(QStringLiteral("--bind"), problem));
+        findings->errors.push_back(inputError(QStringLiteral("--bind"), problem));
     for (const UnboundUniform &unbound : found.unbound)
-        outcome->errors.push_back(
-            inputError(declaringFile(unbound.name, *outcome, files), unboundMessage(unbound)));
+        findings->errors.push_back(
+            inputError(declaringFile(unbound.name, *findings, files), unboundMessage(unbound)));
     for (const QString &conflict : found.conflicts)
-        outcome->errors.push_back(inputError(QStringLiteral("--bind"), conflict));
+        findings->errors.push_back(inputError(QStringLiteral("--bind"), conflict));
 }
 
 } // namespace
@@ -100,9 +101,9 @@ void addBindingErrors(const ProgramFindings &found, const StageFiles &files, Che
 CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
 {
     CheckDrawing drawing;
-    CheckFindings &outcome = drawing.outcome;
+    CheckFindings &findings = drawing.findings;
     const auto fail = [&](const QString &file, const QString &message) {
-        outcome.errors.push_back(inputError(file, message));
+        findings.errors.push_back(inputError(file, message));
         return std::move(drawing);
     };
     SceneMeshes meshes = loadSceneMeshes(scene);
@@ -122,33 +123,33 @@ CheckDrawing drawForCheck(const CheckInput &input, const Scene &scene)
         chooseStageFiles(scene, input.vertexPath, input.fragmentPath, input.methodChosen);
     if (const std::optional<ShaderDiagnostic> unreadable = unreadableStage(files))
         return fail(unreadable->file, unreadable->message);
-    const Result<BuildReport> built = buildStages(renderer, files, &outcome.stages);
+    const Result<BuildReport> built = buildStages(renderer, files, &findings.stages);
     if (!built)
         return fail(QString(), built.error());
     const BuildReport &program = *built;
     drawing.compilerMessages = program.diagnostics;
-    outcome.warnings << buildWarnings(drawing.compilerMessages);
+    findings.warnings << buildWarnings(drawing.compilerMessages);
     if (!program.ok) {
-        addCompileErrors(program, files, &outcome);
+        addCompileErrors(program, files, &findings);
         return drawing;
     }
     const ProgramFindings found = findProgramFindings(renderer.program(), scene);
-    outcome.bindings = found.bindings;
+    findings.bindings = found.bindings;
     drawing.lightCapacity = found.lightCapacity;
-    outcome.notes << found.bindings.notes;
-    addBindingErrors(found, files, &outcome);
-    if (!outcome.errors.empty())
+    findings.notes << found.bindings.notes;
+    addBindingErrors(found, files, &findings);
+    if (!findings.errors.empty())
         return drawing;
     const Scene &checked = found.checked;
     if (!found.lightsNote.isEmpty()) {
-        outcome.notes << found.lightsNote;
+        findings.notes << found.lightsNote;
         renderer.updateSceneParameters(checked);
     }
     drawing.image = offscreen.renderImage(input.size);
     if (drawing.image.isNull())
         return fail(QString(), CheckStepsWords::tr("rendering failed"));
-    outcome.precision =
-        measurePrecision(offscreen, outcome.stages, checked, input.size, drawing.image);
+    findings.precision =
+        measurePrecision(offscreen, findings.stages, checked, input.size, drawing.image);
     return drawing;
 }
 
@@ -235,7 +236,7 @@ std::vector<ShaderDiagnostic> diagnosticsFromJson(const QJsonValue &value)
 
 QJsonObject drawingJson(const CheckDrawing &drawing)
 {
-    const CheckFindings &o = drawing.outcome;
+    const CheckFindings &o = drawing.findings;
     QJsonArray stages;
     for (const ShaderStageText &s : o.stages)
         stages.append(QJsonObject{{QStringLiteral("path"), s.path},
@@ -264,7 +265,7 @@ QJsonObject drawingJson(const CheckDrawing &drawing)
 CheckDrawing drawingFromJson(const QJsonObject &json)
 {
     CheckDrawing drawing;
-    CheckFindings &o = drawing.outcome;
+    CheckFindings &o = drawing.findings;
     o.errors = diagnosticsFromJson(json.value(QStringLiteral("errors")));
     drawing.compilerMessages = diagnosticsFromJson(json.value(QStringLiteral("compiler")));
     o.warnings << buildWarnings(drawing.compilerMessages);

@@ -37,14 +37,14 @@ struct CheckInput {
 struct CheckDrawing {
     // errors, stages, bindings and notes; no verdict (nothing checked yet).
     // Errors, when there are any, end the check.
-    CheckFindings outcome;
+    CheckFindings findings;
     std::optional<int> lightCapacity;               // ProgramBindings::lightCapacity()
     QImage image;                                   // the render; null where there are errors
     std::vector<ShaderDiagnostic> compilerMessages; // errors and warnings, for stderr
     std::vector<std::shared_ptr<const MeshData>>
         objectMeshes; // per scene object, for the reference
 
-    bool drawn() const { return outcome.errors.empty() && !image.isNull(); }
+    bool drawn() const { return findings.errors.empty() && !image.isNull(); }
 };
 
 // Loads the meshes, builds the program, binds it and draws `scene` (already

@@ -83,7 +83,7 @@ QString sentence(const GradeResults &results, const GradeRow &row, bool nameProg
     case Verdict::Error: {
         const RowPlace place = rowPlace(row);
         QString message =
-            row.outcome.errors.empty() ? QString() : row.outcome.errors.front().message;
+            row.findings.errors.empty() ? QString() : row.findings.errors.front().message;
         if (!message.endsWith(QLatin1Char('.')))
             message += QLatin1Char('.');
         // The student's own file, as they named it, not the download's folder.

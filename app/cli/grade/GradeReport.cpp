@@ -181,7 +181,7 @@ QString summary(const GradeResults &results)
 const ShaderStageText *stageText(const GradeRow &row, const QString &file, int line)
 {
     const ShaderStageText *found = nullptr;
-    for (const ShaderStageText &s : row.outcome.stages) {
+    for (const ShaderStageText &s : row.findings.stages) {
         if (s.path != file)
             continue;
         if (!found)
@@ -214,7 +214,7 @@ QString linesInContext(const GradeRow &row, const QString &file, int line)
 QString diagnosisHtml(const GradeRow &row)
 {
     QString html;
-    const CheckFindings &o = row.outcome;
+    const CheckFindings &o = row.findings;
     const MistakeDiagnosis &d = o.report.diagnosis;
     if (d.unexplained())
         html += QStringLiteral("<p><b>unknown</b>: %1</p>")
@@ -257,7 +257,7 @@ QString diagnosisHtml(const GradeRow &row)
 QString details(const GradeRow &row)
 {
     QString html;
-    const CheckFindings &o = row.outcome;
+    const CheckFindings &o = row.findings;
     if (row.verdict == Verdict::Pass)
         html += QStringLiteral("<p>%1</p>").arg(esc(ReportWords::tr("Matches the exact image.")));
     if (row.verdict == Verdict::Fail)
@@ -351,7 +351,7 @@ QString openCommand(const GradeResults &results, const GradeRow &row)
 
 QString rowHtml(const GradeResults &results, const GradeRow &row, int order)
 {
-    const CheckReport &r = row.outcome.report;
+    const CheckReport &r = row.findings.report;
     const bool checked = row.verdict == Verdict::Pass || row.verdict == Verdict::Fail;
     const double psnr = checked ? r.comparison.psnr : -1.0;
     const QString student = shownSubmissionName(results.submissions[std::size_t(row.submission)]);

@@ -40,7 +40,7 @@ void makeRelative(CheckFindings *outcome, const QString &classRoot)
 void failRow(GradeRow &row, Verdict verdict, const QString &message)
 {
     row.verdict = verdict;
-    row.outcome.errors.push_back(inputError(QString(), message));
+    row.findings.errors.push_back(inputError(QString(), message));
 }
 
 // No image of a row that drew none. Its folder stays: the submission's
@@ -58,12 +58,13 @@ bool takeFindings(GradeRow &row, const CheckDrawing &drawing, const GradeResults
     // cleanPath: "class/" as typed would leave "class//alice" unmatched.
     const QString classRoot =
         QDir::cleanPath(QFileInfo(results.settings.classRoot).absoluteFilePath());
-    row.outcome = drawing.outcome;
+    row.findings = drawing.findings;
     // What the project said beside (an unlit program left out) goes with it.
-    row.outcome.notes = results.submissions[std::size_t(row.submission)].notes + row.outcome.notes;
-    makeRelative(&row.outcome, classRoot);
+    row.findings.notes =
+        results.submissions[std::size_t(row.submission)].notes + row.findings.notes;
+    makeRelative(&row.findings, classRoot);
     row.verdict = Verdict::Error;
-    return row.outcome.errors.empty();
+    return row.findings.errors.empty();
 }
 
 // The verdict of the drawn `image` against its scene, and the exact image
@@ -76,18 +77,18 @@ void judge(GradeRow &row, const QImage &image, std::optional<int> lightCapacity,
     const Result<const CheckReference *> found = references.referenceFor(row.scene, checked);
     if (!found) {
         row.verdict = Verdict::Error;
-        row.outcome.errors.push_back(
+        row.findings.errors.push_back(
             inputError(scene.path, GradeRowCheckWords::tr("no reference: %1").arg(found.error())));
         return;
     }
     const CheckReference *reference = *found;
     const GradeSettings &settings = results.settings;
-    const Verdict verdict = checkDrawing(&row.outcome, image, *reference, settings.toleranceSteps,
+    const Verdict verdict = checkDrawing(&row.findings, image, *reference, settings.toleranceSteps,
                                          settings.equation, scene.path);
     if (verdict == Verdict::Error)
         return;
     row.verdict = verdict == Verdict::Pass ? Verdict::Pass : Verdict::Fail;
-    const PhongEquation equation = row.outcome.report.equation;
+    const PhongEquation equation = row.findings.report.equation;
     row.exactImage =
         references.exactImageFor(row.scene, checked.enabledLightCount(), equation, *reference);
     const QString heatmap =

@@ -8,7 +8,7 @@ const MistakeFinding *topFinding(const GradeRow &row)
 {
     if (row.verdict != Verdict::Fail)
         return nullptr;
-    const auto &findings = row.outcome.report.diagnosis.findings;
+    const auto &findings = row.findings.report.diagnosis.findings;
     return findings.empty() ? nullptr : &findings.front();
 }
 
@@ -23,7 +23,7 @@ QString rowMistakeKeys(const GradeRow &row)
 {
     if (row.verdict != Verdict::Fail)
         return {};
-    const MistakeDiagnosis &d = row.outcome.report.diagnosis;
+    const MistakeDiagnosis &d = row.findings.report.diagnosis;
     if (!d.together.variants.empty() && d.together.explains >= kExplainedConfidence)
         return mistakeSetKeys(d.together);
     return rowMistakeKey(row);
@@ -32,13 +32,13 @@ QString rowMistakeKeys(const GradeRow &row)
 RowPlace rowPlace(const GradeRow &row)
 {
     if (const MistakeFinding *f = topFinding(row)) {
-        const std::vector<SourceLine> lines = mistakeSourceLines(f->key, row.outcome.stages);
+        const std::vector<SourceLine> lines = mistakeSourceLines(f->key, row.findings.stages);
         if (!lines.empty())
             return {lines.front().file, lines.front().line};
         return {};
     }
-    if (!row.outcome.errors.empty())
-        return {row.outcome.errors.front().file, row.outcome.errors.front().line};
+    if (!row.findings.errors.empty())
+        return {row.findings.errors.front().file, row.findings.errors.front().line};
     return {};
 }
 
@@ -60,11 +60,11 @@ void nameFilesWithin(GradeRow &row, const QString &folder)
         if (path.startsWith(prefix))
             path.remove(0, prefix.size());
     };
-    for (ShaderDiagnostic &e : row.outcome.errors)
+    for (ShaderDiagnostic &e : row.findings.errors)
         own(e.file);
-    for (ShaderStageText &t : row.outcome.stages)
+    for (ShaderStageText &t : row.findings.stages)
         own(t.path);
-    for (QStringList *texts : {&row.outcome.warnings, &row.outcome.notes})
+    for (QStringList *texts : {&row.findings.warnings, &row.findings.notes})
         for (QString &text : *texts)
             text.replace(prefix, QString());
 }

@@ -44,7 +44,7 @@ struct GradeRow {
     Verdict verdict = Verdict::Error; // the row's one verdict
     // What the check found, as `check` reports it but for the verdict;
     // paths in the class folder relative to it.
-    CheckFindings outcome;
+    CheckFindings findings;
     double seconds = 0.0; // the child's wall time
     // Relative to the out folder; empty where there is none.
     QString yoursImage;

@@ -116,7 +116,7 @@ void GradeRun::run()
             const Submission &submission = m_results.submissions[s];
             const int index = int(rows.size());
             if (!submission.error.isEmpty()) {
-                row.outcome.errors.push_back(inputError(submission.name, submission.error));
+                row.findings.errors.push_back(inputError(submission.name, submission.error));
                 ++m_done;
             } else {
                 const QString folder = submissionFolder(m_results, int(s));

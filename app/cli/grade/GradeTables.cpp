@@ -77,7 +77,7 @@ QString psnrText(const GradeRow &row)
 {
     if (!checked(row))
         return {};
-    const double psnr = row.outcome.report.comparison.psnr;
+    const double psnr = row.findings.report.comparison.psnr;
     return std::isfinite(psnr) ? QString::number(psnr, 'f', 2) : QStringLiteral("inf");
 }
 
@@ -94,7 +94,7 @@ QString alsoText(const GradeRow &row)
 // every binding, so a teacher sees how a student's names were read.
 QString bindingsCell(const GradeRow &row)
 {
-    return bindingsText(row.outcome.bindings).replace(QStringLiteral(", "), QStringLiteral(" "));
+    return bindingsText(row.findings.bindings).replace(QStringLiteral(", "), QStringLiteral(" "));
 }
 
 // grade --pages: the fidelity's largest difference, the own scene's
@@ -115,7 +115,7 @@ QStringList pageCells(const SubmissionPage *page)
 
 QStringList csvRecord(const GradeResults &results, const GradeRow &row)
 {
-    const CheckReport &r = row.outcome.report;
+    const CheckReport &r = row.findings.report;
     const RowPlace place = rowPlace(row);
     return QStringList{textCell(results.submissions[std::size_t(row.submission)].name),
                        textCell(results.scenes[std::size_t(row.scene)].label),
@@ -156,7 +156,7 @@ QJsonObject gradesJson(const GradeResults &results)
             QJsonObject{{QStringLiteral("label"), s.label}, {QStringLiteral("path"), s.path}});
     QJsonArray rows;
     for (const GradeRow &row : results.rows) {
-        QJsonObject o = checkJson(checkVerdict(row.verdict), row.outcome);
+        QJsonObject o = checkJson(checkVerdict(row.verdict), row.findings);
         o.insert(QStringLiteral("verdict"), verdictName(row.verdict));
         o.insert(QStringLiteral("submission"),
                  results.submissions[std::size_t(row.submission)].name);
@@ -222,8 +222,8 @@ QString gradesTable(const GradeResults &results)
             : cut(shownName(results.submissions[std::size_t(row.submission)]), nameWidth);
         previous = row.submission;
         QString what = rowMistakeKeys(row).replace(QLatin1Char(' '), QLatin1Char('+'));
-        if (!checked(row) && !row.outcome.errors.empty())
-            what = cut(row.outcome.errors.front().message, 60);
+        if (!checked(row) && !row.findings.errors.empty())
+            what = cut(row.findings.errors.front().message, 60);
         const RowPlace place = rowPlace(row);
         if (!place.file.isEmpty())
             what += (what.isEmpty() ? QString() : QStringLiteral("  ")) + cut(place.file, 40)
