@@ -115,12 +115,10 @@ LightTerm lightTerm(const ShadedPoint &p, const CameraSpaceLight &light, const M
     const bool behind = NdotL <= 0.0;
     if (behind && !made(ShaderMistake::NegativeLight) && !made(ShaderMistake::BackfaceSpecular))
         return term;
-    double specular = 0.0;
-    if (behind && !made(ShaderMistake::BackfaceSpecular)) {
-        // max(0, N·L) missing: the diffuse term goes negative; still no highlight.
-    } else {
-        specular = specularFactor(p, L, made);
-    }
+    // With max(0, N·L) missing behind the surface the diffuse term goes
+    // negative, and there is still no highlight.
+    const bool highlight = !behind || made(ShaderMistake::BackfaceSpecular);
+    const double specular = highlight ? specularFactor(p, L, made) : 0.0;
     const double diffuseFactor = behind && !made(ShaderMistake::NegativeLight) ? 0.0 : NdotL;
     term.lit = true;
     term.diffuse = light.diffuse * material.kd * diffuseFactor;
