@@ -6,7 +6,7 @@
 #       everywhere, libFuzzer targets added (PHONGLAB_FUZZ=ON, see
 #       cmake/Sanitizers.cmake); only TARGETs (and what they need) when given.
 #       scripts/test.sh --sanitize and scripts/fuzz.sh build here.
-#   scripts/build.sh --thread [TARGET...]   ./build-tsan: clang 14, ThreadSanitizer
+#   scripts/build.sh --thread [TARGET...]   ./build-tsan: g++ 12, ThreadSanitizer
 #       (scripts/test.sh --thread).
 # Asserts are live in every build; the project's own code builds with -Werror.
 # Uses ccache when it is installed (scripts/setup.sh installs it).

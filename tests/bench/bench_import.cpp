@@ -12,8 +12,7 @@
 #include "ChildMeasure.h"
 #include "TinyObjLoad.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include "mesh/import/OpenMeshHeaders.h"
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>

@@ -6,8 +6,7 @@
 #include "mesh/loading/MeshCache.h"
 #include "mesh/loading/MeshLoader.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include "mesh/import/OpenMeshHeaders.h"
 
 #include <QBuffer>
 #include <QDir>

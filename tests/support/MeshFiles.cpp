@@ -1,8 +1,5 @@
 #include "MeshFiles.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/System/omstream.hh>
-
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,6 +1,5 @@
 #pragma once
-#include <OpenMesh/Core/IO/Options.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include "mesh/import/OpenMeshHeaders.h"
 
 #include <QByteArray>
 #include <QString>

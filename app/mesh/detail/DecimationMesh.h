@@ -2,8 +2,7 @@
 // Internal to MeshDecimation.cpp (and DecimationWeld.cpp, which reads the
 // result back): the OpenMesh mesh type it decimates and its flip guard
 // module, kept apart so each file stays one topic.
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
+#include "mesh/import/OpenMeshHeaders.h"
 
 #include <glm/glm.hpp>
 

@@ -4,13 +4,7 @@
 
 #include "DecimationWeld.h"
 
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/Observer.hh>
 #include <QCoreApplication>
-
-#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
-#include <memory>
-
 #include <QLocale>
 #include <QStringList>
 
@@ -19,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace phonglab {
 

@@ -1,11 +1,9 @@
 #include "OpenMeshReader.h"
 
 #include "MeshTextTokens.h"
+#include "OpenMeshHeaders.h"
 #include "PolygonSoupImporter.h"
 
-#include <OpenMesh/Core/IO/IOManager.hh>
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 #include <QCoreApplication>
 
 #include <QFile>

@@ -1,8 +1,7 @@
 #pragma once
 #include "PolygonMesh.h"
 
-#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
-#include <OpenMesh/Core/Mesh/BaseKernel.hh>
+#include "OpenMeshHeaders.h"
 
 #include <QStringList>
 #include <functional>
