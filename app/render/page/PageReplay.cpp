@@ -1,6 +1,7 @@
 #include "PageReplay.h"
 
 #include "core/page/CaptureBounds.h"
+#include "core/page/WebIdlNumbers.h"
 #include "render/program/ProgramBuilder.h"
 
 #include <QCoreApplication>
@@ -8,6 +9,7 @@
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFramebufferObject>
 
+#include <algorithm>
 #include <map>
 
 namespace phonglab {
@@ -81,13 +83,21 @@ void applyState(QOpenGLExtraFunctions *gl, const CapturedState &s)
     gl->glScissor(s.scissor[0], s.scissor[1], s.scissor[2], s.scissor[3]);
 }
 
+// The captured numbers as GL takes them, converted as WebGL converted them.
+template <typename T> std::vector<T> asGl(const std::vector<double> &v, T (*convert)(double))
+{
+    std::vector<T> out(v.size());
+    std::transform(v.begin(), v.end(), out.begin(), convert);
+    return out;
+}
+
 // One element of a uniform, by its WebGL type; false for a type not replayed.
 bool setUniform(QOpenGLExtraFunctions *gl, GLint location, unsigned type,
                 const std::vector<double> &v)
 {
-    std::vector<GLfloat> f(v.begin(), v.end());
-    std::vector<GLint> i(v.begin(), v.end());
-    std::vector<GLuint> u(v.begin(), v.end());
+    const std::vector<GLfloat> f = asGl<GLfloat>(v, webIdlFloat);
+    const std::vector<GLint> i = asGl<GLint>(v, webIdlLong);
+    const std::vector<GLuint> u = asGl<GLuint>(v, webIdlUnsignedLong);
     const auto enough = [&v](std::size_t n) { return v.size() >= n; };
     switch (type) {
     case GL_FLOAT: return enough(1) && (gl->glUniform1fv(location, 1, f.data()), true);
