@@ -12,6 +12,7 @@
 #include <new>
 #include <sys/prctl.h>
 #include <unistd.h>
+#include <vector>
 
 namespace phonglab::cli {
 
@@ -179,11 +180,16 @@ void injectGradedChildFault(const QString &fragmentPath)
         std::raise(SIGSEGV);
     } else if (text.contains("PHONGLAB_FAULT: oom")) {
         constexpr std::size_t kBlock = 64u << 20;
+        // Kept where the program can reach them: an allocation nobody reads
+        // may be dropped with its memset (clang does), and the child would
+        // sleep here at its first size until the timeout.
+        static std::vector<char *> kept;
         for (;;) {
             char *block = static_cast<char *>(std::malloc(kBlock)); // never freed: on purpose
             if (!block)
                 ::_exit(kGradedChildOutOfMemory);
             std::memset(block, 1, kBlock); // touched: resident
+            kept.push_back(block);
             ::usleep(10'000);
         }
     } else if (text.contains("PHONGLAB_FAULT: hang")) {
