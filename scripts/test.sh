@@ -12,7 +12,11 @@
 #   scripts/test.sh --sanitize --context-free
 #       only the context-free tests (ctest -L unit) under the sanitizers,
 #       then every fuzz seed and past find replayed (scripts/fuzz.sh
-#       --replay): what CI adds to the plain run (.ci/run).
+#       --replay).
+#   scripts/test.sh --sanitize --headless
+#       the same with the GL tests (ctest -L gl) beside the context-free
+#       ones: every test that needs no window; what CI adds to the plain
+#       run (.ci/run), with --thread.
 #   scripts/test.sh --thread [ctest args]
 #       the tests that start threads or lend a context (CTest label
 #       "threads") without a window, built with g++ 12 under
@@ -38,27 +42,34 @@ fi
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   build=build-sanitize
-  context_free=0
-  if [ "${1:-}" = "--context-free" ]; then
-    context_free=1
+  windowless="" # context-free: the unit tests; headless: the GL ones too
+  if [ "${1:-}" = "--context-free" ] || [ "${1:-}" = "--headless" ]; then
+    windowless="${1#--}"
     shift
   fi
   supp="$PWD/tests/sanitizer"
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_stack_use_after_return=0:${ASAN_OPTIONS:-}"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
   export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0:${LSAN_OPTIONS:-}"
-  if [ "$context_free" = 1 ]; then
-    bash scripts/build.sh --sanitize phonglab_unit_tests phonglab_fuzzers
-    ctest --test-dir "$build" --output-on-failure --parallel 2 --timeout 900 -L unit "$@"
-    FUZZ_NO_BUILD=1 exec bash scripts/fuzz.sh --replay all
-  fi
-  bash scripts/build.sh --sanitize
   # Mesa's DRI driver is opened by libGL and closed at exit; what it keeps
   # in its globals then looks leaked, from a module LeakSanitizer can no
   # longer name (so no suppression can match it). Loaded from the start it
   # is never unloaded, and that memory stays reachable.
   dri="$(find /usr/lib/*/dri -name swrast_dri.so 2>/dev/null | head -n 1)"
   preload=(env "LD_PRELOAD=$dri")
+  if [ "$windowless" != "" ]; then
+    targets=(phonglab_unit_tests phonglab_fuzzers)
+    labels='^unit$'
+    if [ "$windowless" = headless ]; then
+      targets+=(phonglab_gl_tests)
+      labels='^(unit|gl)$'
+    fi
+    bash scripts/build.sh --sanitize "${targets[@]}"
+    env -u DISPLAY -u WAYLAND_DISPLAY "${preload[@]}" \
+      ctest --test-dir "$build" --output-on-failure --parallel 2 --timeout 900 -L "$labels" "$@"
+    FUZZ_NO_BUILD=1 exec bash scripts/fuzz.sh --replay all
+  fi
+  bash scripts/build.sh --sanitize
 else
   bash scripts/build.sh
 fi
