@@ -16,11 +16,6 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct GradedChildWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradedChild)
-};
-
 namespace {
 
 constexpr int kPollMs = 25; // how late a limit can be noticed
@@ -69,11 +64,10 @@ GradedChild::GradedChild(const QString &executable, const QStringList &arguments
     connect(&m_process, &QProcess::finished, this, &GradedChild::onFinished);
     connect(&m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart)
-            finish(
-                {GradedChildEnd::Kind::Crashed,
-                 {},
-                 GradedChildWords::tr("the check could not start: %1").arg(m_process.errorString()),
-                 0.0});
+            finish({GradedChildEnd::Kind::Crashed,
+                    {},
+                    GradedChild::tr("the check could not start: %1").arg(m_process.errorString()),
+                    0.0});
     });
 }
 
@@ -106,18 +100,17 @@ void GradedChild::poll()
     const double seconds = m_clock.elapsed() / 1000.0;
     if (m_clock.elapsed() > m_limits.wallClockMs) {
         m_process.kill();
-        finish(
-            {GradedChildEnd::Kind::TimedOut,
-             {},
-             GradedChildWords::tr("ran past the %1 s limit and was stopped (a loop that runs too "
-                                  "long, or a frame the GPU cannot finish)")
-                 .arg(sentenceNumber(m_limits.wallClockMs / 1000.0)),
-             seconds});
+        finish({GradedChildEnd::Kind::TimedOut,
+                {},
+                GradedChild::tr("ran past the %1 s limit and was stopped (a loop that runs too "
+                                "long, or a frame the GPU cannot finish)")
+                    .arg(sentenceNumber(m_limits.wallClockMs / 1000.0)),
+                seconds});
     } else if (const qint64 bytes = residentBytes(); bytes > m_limits.memoryBytes) {
         m_process.kill();
         finish({GradedChildEnd::Kind::Crashed,
                 {},
-                GradedChildWords::tr("used more than %1 MiB of memory and was stopped")
+                GradedChild::tr("used more than %1 MiB of memory and was stopped")
                     .arg(m_limits.memoryBytes / (1024 * 1024)),
                 seconds});
     }
@@ -127,27 +120,27 @@ void GradedChild::onFinished(int exitCode, QProcess::ExitStatus status)
 {
     const double seconds = m_clock.elapsed() / 1000.0;
     if (status == QProcess::CrashExit) {
-        QString message = GradedChildWords::tr("the check crashed with signal %1 (%2)")
+        QString message = GradedChild::tr("the check crashed with signal %1 (%2)")
                               .arg(exitCode)
                               .arg(signalName(exitCode));
         if (const QString said = lastLine(m_process.readAllStandardError()); !said.isEmpty())
-            message += GradedChildWords::tr("; it said: ") + said;
+            message += GradedChild::tr("; it said: ") + said;
         finish({GradedChildEnd::Kind::Crashed, {}, message, seconds});
         return;
     }
     if (exitCode == kGradedChildOutOfMemory) {
         finish({GradedChildEnd::Kind::Crashed,
                 {},
-                GradedChildWords::tr("the check ran out of memory"),
+                GradedChild::tr("the check ran out of memory"),
                 seconds});
         return;
     }
     const QJsonObject answer = answerIn(m_process.readAllStandardOutput());
     if (answer.isEmpty()) {
         QString message =
-            GradedChildWords::tr("the check exited with status %1 without an answer").arg(exitCode);
+            GradedChild::tr("the check exited with status %1 without an answer").arg(exitCode);
         if (const QString said = lastLine(m_process.readAllStandardError()); !said.isEmpty())
-            message += GradedChildWords::tr("; it said: ") + said;
+            message += GradedChild::tr("; it said: ") + said;
         finish({GradedChildEnd::Kind::Crashed, {}, message, seconds});
         return;
     }

@@ -15,11 +15,6 @@
 
 namespace phonglab::cli {
 
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct GradeRunWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::cli::GradeRun)
-};
-
 namespace {
 
 QString submissionFolder(const GradeResults &results, int submission)
@@ -206,10 +201,10 @@ void GradeRun::showProgress()
         return;
     const int total = int(m_results.rows.size());
     const int checked = m_done;
-    QString text = GradeRunWords::tr("grade: %1 of %2 checked").arg(checked).arg(total);
+    QString text = GradeRun::tr("grade: %1 of %2 checked").arg(checked).arg(total);
     if (checked > 0 && checked < total) {
         const double perCheck = m_clock.elapsed() / 1000.0 / checked;
-        text += GradeRunWords::tr(", about %1 s left").arg(qRound(perCheck * (total - checked)));
+        text += GradeRun::tr(", about %1 s left").arg(qRound(perCheck * (total - checked)));
     }
     m_progress.show(text);
 }

@@ -9,11 +9,6 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct BuildThreadWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::BuildThread)
-};
-
 namespace {
 
 // How long stop() waits for the worker. A shader stuck in an endless loop
@@ -43,20 +38,19 @@ Result<> BuildThread::start(QOpenGLContext *shareContext)
 {
     stop();
     if (!shareContext)
-        return fail(BuildThreadWords::tr("the viewport has no OpenGL context yet"));
+        return fail(BuildThread::tr("the viewport has no OpenGL context yet"));
     auto context = std::make_unique<QOpenGLContext>();
     context->setFormat(shareContext->format());
     context->setShareContext(shareContext);
     if (!context->create() || !QOpenGLContext::areSharing(context.get(), shareContext))
-        return fail(BuildThreadWords::tr(
-            "the driver cannot create an OpenGL context sharing the viewport's"));
+        return fail(
+            BuildThread::tr("the driver cannot create an OpenGL context sharing the viewport's"));
     // QOffscreenSurface must be created (and destroyed) on the GUI thread.
     auto surface = std::make_unique<QOffscreenSurface>();
     surface->setFormat(context->format());
     surface->create();
     if (!surface->isValid())
-        return fail(
-            BuildThreadWords::tr("cannot create an offscreen surface for the compile thread"));
+        return fail(BuildThread::tr("cannot create an offscreen surface for the compile thread"));
     // For the viewport's own context when it is lent: a surface of its format.
     auto lentSurface = std::make_unique<QOffscreenSurface>();
     lentSurface->setFormat(shareContext->format());
@@ -178,7 +172,7 @@ void BuildThread::deliver(BuildReply reply, quint64 generation)
 void BuildThread::warmInLentContext(const LentContext &lent, GLuint program, WarmDone done)
 {
     if (!m_worker) {
-        done(fail(BuildThreadWords::tr("the build thread is not running")));
+        done(fail(BuildThread::tr("the build thread is not running")));
         return;
     }
     BuildWorker *worker = m_worker;

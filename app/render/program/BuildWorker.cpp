@@ -9,11 +9,6 @@
 
 namespace phonglab {
 
-// Messages a user reads, in the language the run speaks (core/support/Language).
-struct BuildWorkerWords {
-    Q_DECLARE_TR_FUNCTIONS(phonglab::BuildWorker)
-};
-
 BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
     : m_context(context)
     , m_surface(surface)
@@ -23,7 +18,7 @@ BuildWorker::BuildWorker(QOpenGLContext *context, QOffscreenSurface *surface)
 Result<> BuildWorker::initialize()
 {
     if (!m_context->makeCurrent(m_surface))
-        return fail(BuildWorkerWords::tr(
+        return fail(BuildWorker::tr(
             "the shared OpenGL context cannot be made current on the compile thread"));
     m_parallelShaderCompile =
         m_context->hasExtension(QByteArrayLiteral("GL_KHR_parallel_shader_compile"))
@@ -68,8 +63,8 @@ Result<qint64> BuildWorker::warmInLentContext(const LentContext &lent, QOffscree
     // whose shader variant the viewport's next frame needs.
     Result<> ready = lent.context->makeCurrent(lent.surface ? lent.surface : surface)
         ? Result<>()
-        : fail(BuildWorkerWords::tr(
-            "the viewport's context cannot be made current on the build thread"));
+        : fail(
+            BuildWorker::tr("the viewport's context cannot be made current on the build thread"));
     if (ready && lent.whileCurrent)
         lent.whileCurrent();
     if (ready && !lent.warmer->isCreated())
