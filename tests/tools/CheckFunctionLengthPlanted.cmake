@@ -26,17 +26,7 @@ file(REMOVE_RECURSE "${WORK}")
 # atTheLimit's brace on line 4, Long's on 68, oneOver's on 153.
 file(WRITE "${WORK}/app/planted/Long.cpp"
      "// planted\n${at_limit}\n${long_class}\n${one_over}")
-execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${WORK}
-                        -P ${ROOT}/cmake/CheckFunctionLength.cmake
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-set(text "${out}${err}")
-if(rc EQUAL 0)
-  message(FATAL_ERROR "a function of 61 lines was not caught:\n${text}")
-endif()
-foreach(expected "1 function(s) over 60 lines" "app/planted/Long.cpp:153: 61 lines, int oneOver")
-  string(FIND "${text}" "${expected}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "the check did not say \"${expected}\":\n${text}")
-  endif()
-endforeach()
-message(STATUS "caught: ${text}")
+include(${CMAKE_CURRENT_LIST_DIR}/ExpectCaught.cmake)
+expect_caught(${ROOT}/cmake/CheckFunctionLength.cmake "a function of 61 lines"
+              "1 function(s) over 60 lines"
+              "app/planted/Long.cpp:153: 61 lines, int oneOver")
